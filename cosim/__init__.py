@@ -1,0 +1,29 @@
+"""cosim: the coupler, the participant protocol, scenes, outputs and the CLI.
+
+Kept light on import: the solver packages import :mod:`cosim.errors` from here,
+so nothing heavy (MuJoCo, the fluid) is loaded by ``import cosim``.
+"""
+
+from cosim.errors import (
+    ConfigurationError,
+    ConvergenceError,
+    CosimError,
+    InputError,
+    InstabilityError,
+    ProtocolError,
+    SolverError,
+    TautLineError,
+)
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "ConfigurationError",
+    "ConvergenceError",
+    "CosimError",
+    "InputError",
+    "InstabilityError",
+    "ProtocolError",
+    "SolverError",
+    "TautLineError",
+]

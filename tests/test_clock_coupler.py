@@ -1,0 +1,111 @@
+"""The coupler's clock and step loop."""
+
+import math
+
+import pytest
+
+from cosim.clock import Clock, to_ticks
+from cosim.coupler import Coupler
+from cosim.errors import ConfigurationError, InputError, InstabilityError, ProtocolError
+
+
+class Recorder:
+    """A participant that records every (t, dt) it is advanced with."""
+
+    def __init__(self, name="rec", max_dt=math.inf, record=True):
+        self.name, self._max_dt, self.record = name, max_dt, record
+        self.calls, self.t_init, self.value = [], None, 0.0
+
+    def initialize(self, t0):
+        self.t_init = t0
+
+    def max_dt(self):
+        return self._max_dt
+
+    def advance(self, t, dt):
+        self.value += dt
+        if self.record:
+            self.calls.append((t, dt))
+
+    def save_state(self):
+        return (self.value, len(self.calls))
+
+    def load_state(self, state):
+        self.value = state[0]
+        del self.calls[state[1]:]
+
+
+def test_million_steps_land_on_100_s():
+    c = Coupler([Recorder(record=False)], dt=1e-4)
+    assert c.run(100.0) == 1_000_000
+    assert abs(c.t - 100.0) <= 1e-12
+    # naive accumulation drifts by far more than the clock allows
+    t = 0.0
+    for _ in range(1_000_000):
+        t += 1e-4
+    assert abs(t - 100.0) > 1e-10
+
+
+def test_clock_nonzero_start_and_ticks():
+    clk = Clock(t0=3.25)
+    for _ in range(1000):
+        clk.advance(to_ticks(1e-3))
+    assert clk.t == 4.25
+    assert to_ticks(1e-4) == 100_000_000
+    assert to_ticks(2.5e-12) == 2
+
+
+def test_every_participant_sees_the_same_clock_and_the_end_time_exactly():
+    a, b = Recorder("a", max_dt=0.3), Recorder("b", max_dt=0.7)
+    c = Coupler([a, b])
+    infos = []
+    c.run(1.0, callback=infos.append)
+    assert a.calls == b.calls
+    assert [round(t, 12) for t, _ in a.calls] == [0.0, 0.3, 0.6, 0.9]
+    assert a.calls[-1][1] == pytest.approx(0.1, abs=1e-15)
+    assert c.t == 1.0
+    assert [i.limiter for i in infos] == ["a", "a", "a", "end time"]
+    assert a.t_init == 0.0
+
+
+def test_user_dt_and_participant_limit_take_the_smaller():
+    c = Coupler([Recorder("fluid", max_dt=1e-3)], dt=1e-2)
+    info = c.step(1.0)
+    assert info.dt == 1e-3 and info.limiter == "fluid"
+    c = Coupler([Recorder("fluid", max_dt=1.0)], dt=1e-2)
+    info = c.step(1.0)
+    assert info.dt == 1e-2 and info.limiter == "user dt"
+
+
+def test_checkpoint_restores_clock_and_participants():
+    p = Recorder(max_dt=0.1)
+    c = Coupler([p])
+    c.run(0.5)
+    cp = c.save_state()
+    c.run(1.0)
+    assert c.steps == 10
+    c.load_state(cp)
+    assert c.t == 0.5 and c.steps == 5 and len(p.calls) == 5
+    assert p.value == pytest.approx(0.5)
+
+
+def test_bad_participant_and_bad_input_are_refused():
+    class NoAdvance:
+        name = "x"
+
+        def initialize(self, t0): ...
+
+    with pytest.raises(ProtocolError, match="advance.*load_state.*max_dt"):
+        Coupler([NoAdvance()])
+    with pytest.raises(ConfigurationError, match="repeated: a"):
+        Coupler([Recorder("a"), Recorder("a")])
+    with pytest.raises(InputError, match="positive"):
+        Coupler([Recorder()], dt=-1.0)
+    with pytest.raises(InputError, match="resolution"):
+        Coupler([Recorder()], dt=1e-14)
+
+
+def test_invalid_stable_step_stops_with_the_participant_named():
+    c = Coupler([Recorder("fluid", max_dt=float("nan"))])
+    with pytest.raises(InstabilityError, match="step 1.*'fluid'"):
+        c.run(1.0)
