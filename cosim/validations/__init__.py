@@ -1,0 +1,1 @@
+"""Validation cases, one module per family; see :mod:`cosim.validation`."""
