@@ -1,12 +1,27 @@
 """moorings: mooring models behind one interface (``cosim.protocol.Mooring``).
 
-- :mod:`moorings.catenary`: the quasi-static catenary law (seed 004 §3) and the
-  mooring system built on it.
-- :class:`moorings.line.MooringLine`: the model-independent description of a line.
+- :class:`MooringLine`: the model-independent description of a line.
+- :mod:`moorings.catenary`: the quasi-static catenary law (seed 004 §3),
+  ``solve(X, h, L, w, EA=None)``.
+- :class:`CatenaryMooring`: a mooring system of catenary lines.
 
-Never imports MuJoCo or the coupler (only ``cosim.errors``).
+Swapping models is one constructor call: every model takes the same list of
+``MooringLine``. Models are imported on first use, so a scene loads (and
+compiles) only the ones it uses. Never imports MuJoCo or the coupler (only
+``cosim.errors``).
 """
+
+from importlib import import_module
 
 from moorings.line import MooringLine, named_lines
 
-__all__ = ["MooringLine", "named_lines"]
+_LAZY = {"CatenaryMooring": "moorings.catenary_mooring"}
+
+
+def __getattr__(name):
+    if name in _LAZY:
+        return getattr(import_module(_LAZY[name]), name)
+    raise AttributeError(f"module 'moorings' has no attribute {name!r}")
+
+
+__all__ = ["MooringLine", "named_lines", *_LAZY]

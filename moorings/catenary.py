@@ -1,0 +1,500 @@
+r"""The quasi-static catenary mooring law, inextensible and elastic, with a seabed.
+
+Public entry point: :func:`solve` (``solve(X, h, L, w, EA=None)``), a pure
+function of the line geometry; :func:`shape` gives the line's coordinates.
+
+Geometry (seed 004, Fig. 3): the anchor lies on a flat seabed; the fairlead is at
+horizontal distance ``X`` and height ``h`` above it. The line has unstretched
+length ``L``, submerged weight ``w`` per unit length and axial stiffness ``EA``
+(``None``: inextensible). No current, no seabed friction, no bending stiffness.
+
+States (seed 004 Fig. 5), with boundaries along X at fixed h:
+
+====================  ==============================================================
+``RESTING``           ``X <= L - h``: the line hangs straight down from the fairlead
+                      and the rest lies slack on the seabed: ``H = 0``, ``V = w h``
+                      (elastic: ``V = w l_s`` with ``l_s (1 + w l_s / 2EA) = h``).
+``PARTLY_LIFTED``     a catenary from a touchdown point (horizontal tangent) to the
+                      fairlead; ``touchdown`` > 0 m of line lies on the seabed.
+``FULLY_LIFTED``      from the lift-off point on (touchdown = 0, the tangent at the
+                      anchor horizontal), the whole line hangs and pulls the anchor
+                      up as well as sideways; up to the taut point.
+``TAUT``              the anchor–fairlead distance is at least the unstretched
+                      length: ``sqrt(X^2 + h^2) >= L``. An elastic line carries it by
+                      stretching (``H``, ``V`` finite, solved as usual); an
+                      inextensible one cannot, and there is no catenary solution:
+                      :func:`solve` returns ``H = V = inf`` (the limit from below) and
+                      ``touchdown = 0`` rather than raising, so that arrays of lines
+                      stay solvable; :class:`CatenaryMooring` turns it into a
+                      :class:`~cosim.errors.TautLineError` naming the line (the
+                      coupler will hold such lines with a length constraint instead
+                      of seed 004 Eq. 40's proportional split of the load).
+====================  ==============================================================
+
+Boundaries are exact: ``X = L - h`` is ``RESTING``; the lift-off point
+``X_lift = (L^2 - h^2)/h * atanh(h/L)`` (inextensible; seed 004 Eq. 37 with
+``l_s = L`` in Eq. 39) is ``FULLY_LIFTED``; the taut point ``X = sqrt(L^2 - h^2)``
+is ``TAUT``. ``H`` and ``V`` are continuous across the first two and tend to
+infinity at the third (inextensible).
+
+Method
+------
+The inextensible law is seed 004 Eq. 35-39 (Faltinsen 1993): with ``a = H/w``
+(Eq. 34) the lifted length ``l_s`` obeys ``l_s^2 = h^2 + 2 h a`` (Eq. 37) and
+``X = L - l_s + a acosh(1 + h/a)`` (Eq. 39). The elastic law with seabed contact
+and no friction is the one of Jonkman (2007, NREL/TP-500-41958, §4.1, Eq. 4-1/4-2
+with C_B = 0), also used by MAP++ (Masciola et al. 2013) and MoorPy. With ``V``
+the vertical tension at the fairlead, on the seabed (``V < w L``)::
+
+    X = L - V/w + (H/w) asinh(V/H) + H L / EA
+    h = (H/w) (sqrt(1 + (V/H)^2) - 1) + V^2 / (2 EA w)
+
+and fully suspended (``V >= w L``), with ``V_a = V - w L`` at the anchor::
+
+    X = (H/w) (asinh(V/H) - asinh(V_a/H)) + H L / EA
+    h = (H/w) (sqrt(1 + (V/H)^2) - sqrt(1 + (V_a/H)^2)) + (V L - w L^2 / 2) / EA
+
+For ``EA -> inf`` both reduce to seed 004 Eq. 28-29 and 35-39.
+
+Each regime is reduced here to one equation in one unknown, solved with a
+bracketed (Brent) root finder in the logarithm of that unknown, so it cannot
+diverge. In units of ``L`` (lengths) and ``w L`` (forces), with ``ε = w L / EA``:
+
+* on the seabed, the unknown is the fairlead angle ``t = asinh(V/H)``; the ``h``
+  equation is a quadratic in ``H`` with the stable root
+  ``V = 2 h coth(t/2) / (1 + sqrt(1 + 2 ε h coth(t/2)^2))``, ``H = V / sinh t``,
+  and ``X(t)`` decreases from the lift-off point (``t = 2 atanh(h - ε/2)``) to
+  the resting point (``t -> inf``);
+* fully suspended, the unknown is ``u`` = half the angle range, ``asinh(V/H) =
+  m + u``, ``asinh(V_a/H) = m - u``; the ``h`` equation gives
+  ``tanh m = h / (1 + (ε/2) coth u)``, then ``H = sqrt(1 - tanh^2 m)/(2 sinh u)``,
+  ``V = 1/2 + tanh m / (2 tanh u)`` and ``X = (2u + ε) H``, decreasing in ``u``
+  up to the lift-off point ``u = atanh(h - ε/2)``.
+
+Neither form evaluates a hyperbolic function of a large argument times a small
+one, so tiny ``w`` and huge ``EA`` neither overflow nor lose the answer.
+"""
+
+from __future__ import annotations
+
+import math
+from enum import IntEnum
+from typing import NamedTuple
+
+import numba as nb
+import numpy as np
+
+from cosim.errors import InputError
+
+
+class LineState(IntEnum):
+    """State of a catenary line (seed 004 Fig. 5 a-d)."""
+
+    RESTING = 0
+    PARTLY_LIFTED = 1
+    FULLY_LIFTED = 2
+    TAUT = 3
+
+
+RESTING = LineState.RESTING
+PARTLY_LIFTED = LineState.PARTLY_LIFTED
+FULLY_LIFTED = LineState.FULLY_LIFTED
+TAUT = LineState.TAUT
+_STATES = tuple(LineState)
+
+
+class LineSolution(NamedTuple):
+    """Result of :func:`solve`; arrays of the broadcast input shape for array input.
+
+    ``state`` is a :class:`LineState` for a scalar call and an integer array of
+    :class:`LineState` values otherwise (``res.state == TAUT`` works for both).
+    """
+
+    H: float | np.ndarray  #: horizontal tension at the fairlead [N]
+    V: float | np.ndarray  #: vertical tension at the fairlead [N]
+    touchdown: float | np.ndarray  #: unstretched length lying on the seabed [m]
+    state: LineState | np.ndarray
+
+
+# ---------------------------------------------------------------------------
+# compiled core (units of L for lengths, w L for forces, eps = w L / EA)
+# ---------------------------------------------------------------------------
+
+_JIT = dict(cache=True, nogil=True, error_model="numpy")
+_U_CAP = 350.0  # sinh(350) ~ 1e152: far from overflow, far past any physical angle
+_T_CAP = 700.0
+
+
+@nb.njit(**_JIT)
+def _x_seabed(t, z, eps):
+    """Seabed-contact regime at fairlead angle t: returns (X, H, V)."""
+    q = math.tanh(0.5 * t)
+    V = 2.0 * z / (q + math.sqrt(q * q + 2.0 * eps * z))
+    H = V / math.sinh(t)
+    return 1.0 - V + H * t + eps * H, H, V
+
+
+@nb.njit(**_JIT)
+def _x_suspended(u, z, eps):
+    """Fully suspended regime at half angle range u: returns (X, H, V)."""
+    tu = math.tanh(u)
+    tau = z * tu / (tu + 0.5 * eps)  # tanh m
+    H = math.sqrt((1.0 - tau) * (1.0 + tau)) / (2.0 * math.sinh(u))
+    V = 0.5 + 0.5 * z / (tu + 0.5 * eps)
+    return (2.0 * u + eps) * H, H, V
+
+
+@nb.njit(**_JIT)
+def _residual(regime, p, z, eps, x):
+    if regime == 0:
+        return _x_seabed(math.exp(p), z, eps)[0] - x
+    return _x_suspended(math.exp(p), z, eps)[0] - x
+
+
+@nb.njit(**_JIT)
+def _brent(regime, a, b, fa, fb, z, eps, x):
+    """Brent's method on [a, b] with f(a) * f(b) <= 0 (in the log variable p).
+
+    If rounding left both ends with the same sign, the root sits at the end
+    with the smaller residual: return it (the answer is then exact to rounding).
+    """
+    if fa == 0.0:
+        return a
+    if fb == 0.0:
+        return b
+    if (fa > 0.0) == (fb > 0.0):
+        return a if abs(fa) < abs(fb) else b
+    c, fc = a, fa
+    d = e = b - a
+    for _ in range(200):
+        if (fb > 0.0) == (fc > 0.0):
+            c, fc = a, fa
+            d = e = b - a
+        if abs(fc) < abs(fb):
+            a, b, c = b, c, b
+            fa, fb, fc = fb, fc, fb
+        tol = 2.0e-16 * abs(b) + 1.0e-15
+        m = 0.5 * (c - b)
+        if abs(m) <= tol or fb == 0.0:
+            return b
+        if abs(e) >= tol and abs(fa) > abs(fb):
+            s = fb / fa
+            if a == c:
+                pp = 2.0 * m * s
+                q = 1.0 - s
+            else:
+                q = fa / fc
+                r = fb / fc
+                pp = s * (2.0 * m * q * (q - r) - (b - a) * (r - 1.0))
+                q = (q - 1.0) * (r - 1.0) * (s - 1.0)
+            if pp > 0.0:
+                q = -q
+            else:
+                pp = -pp
+            if 2.0 * pp < min(3.0 * m * q - abs(tol * q), abs(e * q)):
+                e = d
+                d = pp / q
+            else:
+                d = m
+                e = m
+        else:
+            d = m
+            e = m
+        a, fa = b, fb
+        b = b + d if abs(d) > tol else b + (tol if m > 0.0 else -tol)
+        fb = _residual(regime, b, z, eps, x)
+    return b
+
+
+@nb.njit(**_JIT)
+def _taut_x(h, L):
+    """X [m] at which the anchor-fairlead distance equals L."""
+    return math.sqrt((L - h) * (L + h)) if h < L else 0.0
+
+
+@nb.njit(**_JIT)
+def _lift_x(h, L):
+    """X [m] of the inextensible lift-off point (seed 004 Eq. 37, 39 with l_s = L)."""
+    if h <= 0.0:
+        return L
+    r = h / L
+    return (L - h) * (L + h) / L * (math.atanh(r) / r)
+
+
+@nb.njit(**_JIT)
+def _seabed_root(x, z, eps, d, u_lift):
+    """Unknown t of the seabed regime, between lift-off and the resting point."""
+    if d > 0.0:
+        p_lo = math.log(2.0 * u_lift)  # the lift-off angle
+        f_lo = _residual(0, p_lo, z, eps, x)
+    else:  # no lift-off point: X -> inf as t -> 0, where X ~ sqrt(2 z eps) / t
+        p_lo = math.log(math.sqrt(2.0 * z * eps) / x) - 1.0
+        f_lo = _residual(0, p_lo, z, eps, x)
+        while f_lo < 0.0 and p_lo > -700.0:
+            p_lo -= 2.0
+            f_lo = _residual(0, p_lo, z, eps, x)
+    p_hi = max(p_lo + 1.0, 1.0)
+    f_hi = _residual(0, p_hi, z, eps, x)
+    while f_hi > 0.0 and p_hi < math.log(_T_CAP):
+        p_hi = min(p_hi + 1.0, math.log(_T_CAP))
+        f_hi = _residual(0, p_hi, z, eps, x)
+    return math.exp(_brent(0, p_lo, p_hi, f_lo, f_hi, z, eps, x))
+
+
+@nb.njit(**_JIT)
+def _suspended_root(x, z, eps, u_max):
+    """Unknown u of the fully suspended regime, in (0, u_max]."""
+    p_hi = math.log(u_max)
+    f_hi = _residual(1, p_hi, z, eps, x)
+    if eps == 0.0:
+        # near the taut point u/sinh(u) -> 1 - u^2/6: start where that misses x
+        chord = math.sqrt((1.0 - z) * (1.0 + z))
+        gap = (chord - x) / chord  # > 0: x < chord here
+        p_lo = min(0.5 * math.log(6.0 * max(gap, 1e-300)) - 1.0, p_hi - 1.0)
+    else:
+        p_lo = min(math.log(0.25 * eps / max(x, 1e-300)), p_hi - 1.0)
+    f_lo = _residual(1, p_lo, z, eps, x)
+    while f_lo < 0.0 and p_lo > -700.0:
+        p_lo -= 2.0
+        f_lo = _residual(1, p_lo, z, eps, x)
+    return math.exp(_brent(1, p_lo, p_hi, f_lo, f_hi, z, eps, x))
+
+
+@nb.njit(**_JIT)
+def _solve_dim(X, h, L, w, EA):
+    """One line, inputs already checked. Returns (H, V, touchdown, state).
+
+    State decisions compare dimensional X with the same expressions as
+    lift_off_distance() and taut_distance(), so the boundaries are exact.
+    """
+    inf = math.inf
+    # RESTING: straight down, hanging length l_s with l_s (1 + w l_s / 2 EA) = h
+    ls = 2.0 * h / (1.0 + math.sqrt(1.0 + 2.0 * w * h / EA))
+    if ls <= L and X <= L - ls:
+        return 0.0, w * ls, L - ls, 0
+    taut = X >= _taut_x(h, L)
+    wl = w * L
+    eps = wl / EA
+    x, z = X / L, h / L
+    if eps == 0.0:
+        if taut:
+            return inf, inf, 0.0, 3
+        X_lift = _lift_x(h, L)
+        if X == X_lift:  # exactly at lift-off: Eq. 37 with l_s = L
+            return w * (L - h) * (L + h) / (2.0 * h), wl, 0.0, 2
+        if X < X_lift:
+            _, H, V = _x_seabed(_seabed_root(x, z, 0.0, z, math.atanh(z)), z, 0.0)
+            return H * wl, V * wl, max(1.0 - V, 0.0) * L, 1
+        _, H, V = _x_suspended(_suspended_root(x, z, 0.0, math.atanh(z)), z, 0.0)
+        return H * wl, V * wl, 0.0, 2
+    if h == 0.0:  # flat on the seabed and stretched
+        return EA * (x - 1.0), 0.0, L, 3
+    d = z - 0.5 * eps  # tanh of the half angle range at lift-off
+    if 0.0 < d < 1.0:
+        u_lift = math.atanh(d)
+        x_lift = _x_suspended(u_lift, z, eps)[0]
+    else:
+        u_lift = _U_CAP
+        x_lift = inf if d <= 0.0 else 0.0
+    if x < x_lift:
+        _, H, V = _x_seabed(_seabed_root(x, z, eps, d, u_lift), z, eps)
+        return H * wl, V * wl, max(1.0 - V, 0.0) * L, (3 if taut else 1)
+    if d >= 1.0:  # hangs clear of the seabed at any X; X -> 0 as tanh m -> 1
+        u_max = min(math.atanh(min(0.5 * eps / (z - 1.0), 1.0)), _U_CAP)
+    else:
+        u_max = u_lift
+    _, H, V = _x_suspended(_suspended_root(x, z, eps, u_max), z, eps)
+    return H * wl, V * wl, 0.0, (3 if taut else 2)
+
+
+@nb.njit(**_JIT)
+def _check(X, h, L, w, EA):
+    """0 if the inputs are valid, else the number of the first bad parameter."""
+    if not (math.isfinite(X) and X >= 0.0):
+        return 1
+    if not (math.isfinite(h) and h >= 0.0):
+        return 2
+    if not (math.isfinite(L) and L > 0.0):
+        return 3
+    if not (math.isfinite(w) and w > 0.0):
+        return 4
+    if not (EA > 0.0):  # inf is allowed: inextensible
+        return 5
+    return 0
+
+
+@nb.njit("Tuple((f8, f8, f8, i8, i8))(f8, f8, f8, f8, f8)", **_JIT)
+def _solve_scalar(X, h, L, w, EA):
+    err = _check(X, h, L, w, EA)
+    if err:
+        return 0.0, 0.0, 0.0, 0, err
+    H, V, td, state = _solve_dim(X, h, L, w, EA)
+    return H, V, td, state, 0
+
+
+@nb.njit(parallel=True, **_JIT)
+def _solve_batch(X, h, L, w, EA, H, V, td, state):
+    for i in nb.prange(X.size):
+        H[i], V[i], td[i], state[i] = _solve_dim(X[i], h[i], L[i], w[i], EA[i])
+
+
+# ---------------------------------------------------------------------------
+# public API
+# ---------------------------------------------------------------------------
+
+_PARAMS = (
+    None,
+    ("X", "m", "the horizontal anchor-fairlead distance must be finite and >= 0"),
+    ("h", "m", "the fairlead must not be below the seabed (h >= 0, finite)"),
+    ("L", "m", "the unstretched length must be finite and > 0"),
+    ("w", "N/m", "the submerged weight per unit length must be finite and > 0 (buoyant lines are not supported)"),
+    ("EA", "N", "the axial stiffness must be > 0; use EA=None for an inextensible line"),
+)
+
+
+def _input_error(code: int, value, where: str) -> InputError:
+    name, unit, why = _PARAMS[code]
+    return InputError(f"{where}: {name} = {value!r} {unit}; {why}")
+
+
+def solve(X, h, L, w, EA=None) -> LineSolution:
+    """Solve the quasi-static catenary of one line or of an array of lines.
+
+    Parameters
+    ----------
+    X : float or array_like
+        Horizontal anchor–fairlead distance [m], >= 0.
+    h : float or array_like
+        Fairlead height above the anchor and seabed [m], >= 0.
+    L : float or array_like
+        Unstretched line length [m], > 0.
+    w : float or array_like
+        Submerged weight per unit length [N/m], > 0.
+    EA : float, array_like or None
+        Axial stiffness [N], > 0; ``None`` (or ``inf``) for an inextensible line
+        (seed 004 Eq. 35-39), otherwise the elastic catenary with seabed contact
+        and no friction (see the module docstring).
+
+    Returns
+    -------
+    LineSolution
+        ``H`` and ``V`` [N], the horizontal and vertical tension at the fairlead
+        (the line pulls the fairlead towards the anchor with ``H`` and down with
+        ``V``); ``touchdown`` [m], the unstretched length lying on the seabed;
+        ``state``, a :class:`LineState`. An inextensible line asked to span more
+        than its length is ``TAUT`` with ``H = V = inf`` (no solution exists;
+        this function does not raise for it). Arrays broadcast together and are
+        solved in one compiled, parallel call.
+
+    Raises
+    ------
+    cosim.errors.InputError
+        For NaN, negative or zero inputs, naming the parameter (and the index
+        of the first bad line for arrays), before anything is solved.
+    """
+    try:  # the scalar fast path: the compiled signature rejects anything but numbers
+        H, V, td, state, err = _solve_scalar(X, h, L, w, math.inf if EA is None else EA)
+    except TypeError:
+        return _solve_array(X, h, L, w, EA)
+    if err:
+        raise _input_error(err, (X, h, L, w, EA)[err - 1], "catenary line")
+    return LineSolution(H, V, td, _STATES[state])
+
+
+def _solve_array(X, h, L, w, EA) -> LineSolution:
+    try:
+        arrays = np.broadcast_arrays(
+            *(np.asarray(a, dtype=float) for a in (X, h, L, w, math.inf if EA is None else EA))
+        )
+    except (TypeError, ValueError) as exc:
+        raise InputError(f"catenary: X, h, L, w and EA must be numbers or arrays that broadcast together ({exc})")
+    shape = arrays[0].shape
+    flat = [np.ascontiguousarray(a).ravel() for a in arrays]
+    bad = _first_bad(*flat)
+    if bad is not None:
+        i, code = bad
+        idx = np.unravel_index(i, shape) if shape else ()
+        where = f"catenary line {idx[0] if len(idx) == 1 else idx}"
+        raise _input_error(code, float(flat[code - 1][i]), where)
+    n = flat[0].size
+    H, V, td = np.empty(n), np.empty(n), np.empty(n)
+    state = np.empty(n, dtype=np.int64)
+    if n:
+        _solve_batch(*flat, H, V, td, state)
+    state = state.astype(np.int8)
+    if not shape:
+        return LineSolution(float(H[0]), float(V[0]), float(td[0]), _STATES[state[0]])
+    return LineSolution(H.reshape(shape), V.reshape(shape), td.reshape(shape), state.reshape(shape))
+
+
+def _first_bad(X, h, L, w, EA):
+    checks = (
+        ~(np.isfinite(X) & (X >= 0)),
+        ~(np.isfinite(h) & (h >= 0)),
+        ~(np.isfinite(L) & (L > 0)),
+        ~(np.isfinite(w) & (w > 0)),
+        ~(EA > 0),
+    )
+    firsts = [(int(np.argmax(c)), k + 1) for k, c in enumerate(checks) if c.any()]
+    return min(firsts) if firsts else None
+
+
+def lift_off_distance(h: float, L: float) -> float:
+    """X [m] at which an inextensible line lifts off entirely (seed 004 Eq. 37, 39
+    with ``l_s = L``): ``(L^2 - h^2)/h * atanh(h/L)``; ``L`` when ``h = 0``.
+    :func:`solve` returns ``FULLY_LIFTED`` exactly here."""
+    return _lift_x(float(h), float(L))
+
+
+def taut_distance(h: float, L: float) -> float:
+    """X [m] at which an inextensible line becomes a straight bar: ``sqrt(L^2 - h^2)``.
+    :func:`solve` returns ``TAUT`` exactly here."""
+    return _taut_x(float(h), float(L))
+
+
+def shape(X: float, h: float, L: float, w: float, EA: float | None = None, n: int = 101):
+    """Coordinates of the line, anchor to fairlead, at ``n`` points evenly spaced
+    in unstretched arc length: returns ``(s, x, z)`` [m] with the anchor at
+    (0, 0). Raises :class:`~cosim.errors.TautLineError` for a taut inextensible line.
+
+    Uses the closed-form profile of the solved line (seed 004 Eq. 28-29 on the
+    suspended part; Jonkman 2007 Eq. 4-3/4-4 with the elastic terms).
+    """
+    from cosim.errors import TautLineError
+
+    sol = solve(float(X), float(h), float(L), float(w), EA)
+    if math.isinf(sol.H):
+        raise TautLineError(
+            f"an inextensible line of length {L} m cannot span X = {X} m, h = {h} m "
+            f"(distance {math.hypot(X, h):.6g} m): no catenary shape exists"
+        )
+    ea = math.inf if EA is None else float(EA)
+    s = np.linspace(0.0, L, n)
+    H, Va = sol.H, sol.V - w * L  # Va < 0: part of the line lies on the seabed
+    lb = sol.touchdown
+    on_bed = s <= lb
+    sus = np.clip(s - lb, 0.0, None)  # arc length along the suspended part
+    V0 = max(Va, 0.0)
+    Vs = V0 + w * sus
+    x = np.where(on_bed, s * (1.0 + H / ea), lb * (1.0 + H / ea))
+    z = np.zeros_like(s)
+    if H > 0.0:
+        x = x + (H / w) * (np.arcsinh(Vs / H) - np.arcsinh(V0 / H)) + H * sus / ea
+        z = (np.hypot(H, Vs) - math.hypot(H, V0)) / w + (V0 * sus + 0.5 * w * sus**2) / ea
+    else:  # resting: the hanging part is vertical
+        z = sus + 0.5 * w * sus**2 / ea
+    return s, x, z
+
+
+__all__ = [
+    "FULLY_LIFTED",
+    "PARTLY_LIFTED",
+    "RESTING",
+    "TAUT",
+    "LineSolution",
+    "LineState",
+    "lift_off_distance",
+    "shape",
+    "solve",
+    "taut_distance",
+]
