@@ -77,12 +77,13 @@ class CatenaryMooring:
     def set_fairlead_motion(self, positions, velocities=None) -> None:
         """Fairlead positions [m], ``(n_lines, dim)``, world frame; velocities are
         ignored (quasi-static). Solves every line at once."""
-        pos = np.asarray(positions, dtype=float)
+        want = f"shape ({self.n_lines}, {self.dim}) (one row per line, {'x, z' if self.dim == 2 else 'x, y, z'})"
+        try:
+            pos = np.asarray(positions, dtype=float)
+        except (TypeError, ValueError):
+            raise InputError(f"{self.name}: fairlead positions must be numbers of {want}") from None
         if pos.shape != (self.n_lines, self.dim):
-            raise InputError(
-                f"{self.name}: fairlead positions must have shape ({self.n_lines}, {self.dim}) "
-                f"(one row per line, {'x, z' if self.dim == 2 else 'x, y, z'}), got {pos.shape}"
-            )
+            raise InputError(f"{self.name}: fairlead positions must have {want}, got shape {pos.shape}")
         bad = ~np.all(np.isfinite(pos), axis=1)
         if bad.any():
             i = int(np.argmax(bad))

@@ -80,10 +80,11 @@ def test_continuity_across_the_seabed_boundaries(L, hr, w, EA, which):
 
 
 @SETTINGS
-@given(L=lengths, hr=st.floats(0.01, 0.99), w=weights, f=st.floats(0.0, 1.0))
+@given(L=lengths, hr=st.floats(0.01, 0.99), w=weights, f=st.floats(1e-3, 1.0))
 def test_elastic_law_tends_to_the_inextensible_one(L, hr, w, f):
     """The difference shrinks like 1/EA (1000 times stiffer: 1000 times closer;
-    asserted 300) down to round-off. Near the taut point the geometric stiffness
+    asserted 300) down to round-off (1e-10: H -> 0 at the resting point, so start
+    1e-3 of the way from it). Near the taut point the geometric stiffness
     amplifies the stretch: at h/L = 0.01 it is still 4e-6 at EA = 1e12 w L."""
     h = hr * L
     # from slack to halfway between lift-off and taut
@@ -95,7 +96,7 @@ def test_elastic_law_tends_to_the_inextensible_one(L, hr, w, f):
         r = solve(X, h, L, w, EA=w * L * 10.0**k)
         errs.append(max(abs(r.H - ref.H) / ref.H, abs(r.V - ref.V) / ref.V))
     for a, b in zip(errs, errs[1:]):
-        assert b <= max(a / 300.0, 1e-11)
+        assert b <= max(a / 300.0, 1e-10)
     assert errs[-1] < 1e-7
 
 

@@ -1,0 +1,209 @@
+"""The ``cosim`` command.
+
+``cosim line``      tabulate (and plot) one catenary mooring line against X
+``cosim validate``  run validation cases, one JSON object per case
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+
+from cosim.errors import CosimError
+
+#: seed 004 Tables 1 and 2 (Johanning et al. 2007, 2006)
+LINE_PRESETS = {
+    "johanning-2007": dict(length=6.98, weight=1.036, height=2.651, x_range=(5.50, 6.40)),
+    "johanning-2006": dict(length=150.0, weight=918.75, height=50.0, x_range=(102.0, 140.0)),
+}
+
+
+def _line_parser(sub):
+    p = sub.add_parser(
+        "line",
+        help="tabulate and plot one catenary line: H, V, touchdown and state against X",
+        description="Solve one quasi-static catenary line (seed 004 §3) over a range of horizontal "
+        "anchor-fairlead distances X and print X, H, V, fairlead tension, touchdown length and state. "
+        "Give the line with --length/--weight/--height (and --EA for an elastic line), or --preset.",
+    )
+    p.add_argument("--preset", choices=sorted(LINE_PRESETS), help="a line of seed 004 Tables 1-2")
+    p.add_argument("--length", type=float, help="unstretched line length L [m]")
+    p.add_argument("--weight", type=float, help="submerged weight per unit length w [N/m]")
+    p.add_argument("--height", type=float, help="fairlead height above the anchor/seabed h [m]")
+    p.add_argument("--EA", type=float, default=None, help="axial stiffness [N]; omit for an inextensible line")
+    p.add_argument("--x-range", type=float, nargs=2, metavar=("START", "STOP"), help="range of X [m]")
+    p.add_argument("--points", type=int, default=19, help="number of X values (default 19)")
+    p.add_argument("--csv", metavar="FILE", help="also write the table as CSV")
+    p.add_argument("--png", metavar="FILE", help="also plot H and V against X, state changes marked")
+    return p
+
+
+def _validate_parser(sub):
+    p = sub.add_parser(
+        "validate",
+        help="run validation cases (one JSON object per case)",
+        description="Run validation cases of ../shared/VALIDATION.md; each prints one JSON object "
+        "with name, passed, metrics, tolerances, particles, steps and wall_s. Exit status 1 if any fails.",
+    )
+    p.add_argument("names", nargs="*", help="case names, or 'all'")
+    p.add_argument("--list", action="store_true", help="list the cases and exit")
+    p.add_argument("--quick", action="store_true", help="coarse variant (what CI runs)")
+    return p
+
+
+def _line_args(args, parser):
+    preset = LINE_PRESETS.get(args.preset, {})
+    vals = {}
+    for key in ("length", "weight", "height", "x_range"):
+        v = getattr(args, key)
+        vals[key] = v if v is not None else preset.get(key)
+        if vals[key] is None:
+            parser.error(f"--{key.replace('_', '-')} is required (or give --preset)")
+    if args.points < 2:
+        parser.error("--points must be at least 2")
+    return vals
+
+
+def state_changes(X, states, h, L, w, EA):
+    """Exact X [m] of each state change within the sampled range, found by
+    bisecting on the state that :func:`moorings.catenary.solve` reports (several
+    changes between two samples included)."""
+    from moorings.catenary import LineState, solve
+
+    out = []
+    for i in range(len(X) - 1):
+        a, b = float(X[i]), float(X[i + 1])
+        current = LineState(states[i])
+        while current != states[i + 1]:
+            lo, hi = a, b  # first X in (lo, hi] where the state is no longer `current`
+            while True:
+                m = 0.5 * (lo + hi)
+                if m in (lo, hi):
+                    break
+                lo, hi = (m, hi) if solve(m, h, L, w, EA).state == current else (lo, m)
+            new = solve(hi, h, L, w, EA).state
+            out.append((hi, current, new))
+            a, current = hi, new
+    return out
+
+
+def _plot_line(path, X, r, changes, title, line):
+    """H and V against X: a dense curve, the table's points, the state changes."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    from moorings.catenary import solve
+
+    Xd = np.linspace(X[0], X[-1], 600)
+    d = solve(Xd, *line)
+    fin, find = np.isfinite(r.H), np.isfinite(d.H)
+    peak = max(np.max(d.H[find], initial=0.0), np.max(d.V[find], initial=0.0))
+    unit, scale = next((u, s) for u, s in (("MN", 1e6), ("kN", 1e3), ("N", 1.0)) if peak >= 10 * s or s == 1.0)
+    fig, ax = plt.subplots(figsize=(7, 4.2), dpi=120)
+    ax.plot(Xd[find], d.H[find] / scale, "-", color="C0", label=f"H (horizontal) [{unit}]")
+    ax.plot(Xd[find], d.V[find] / scale, "--", color="C1", label=f"V (vertical) [{unit}]")
+    ax.plot(X[fin], r.H[fin] / scale, "o", color="C0", ms=3)
+    ax.plot(X[fin], r.V[fin] / scale, "o", color="C1", ms=3)
+    for x, _, new in changes:
+        ax.axvline(x, color="0.5", lw=0.8, ls=":")
+        ax.annotate(f"{new.name.lower().replace('_', ' ')} at {x:.4g} m", (x, 0.98),
+                    xycoords=("data", "axes fraction"), rotation=90, va="top", ha="right", fontsize=8, color="0.3")
+    ax.set_xlabel("X, horizontal anchor–fairlead distance [m]")
+    ax.set_ylabel(f"tension at the fairlead [{unit}]")
+    ax.set_title(title, fontsize=10)
+    ax.grid(alpha=0.3)
+    ax.legend(loc="upper left", fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+
+
+def cmd_line(args, parser) -> int:
+    import numpy as np
+
+    from moorings.catenary import LineState, solve
+
+    v = _line_args(args, parser)
+    L, w, h, EA = v["length"], v["weight"], v["height"], args.EA
+    X = np.linspace(*v["x_range"], args.points)
+    r = solve(X, h, L, w, EA)
+    T = np.hypot(r.H, r.V)
+    kind = "inextensible" if EA is None else f"EA = {EA:g} N"
+    title = f"catenary line: L = {L:g} m, w = {w:g} N/m, h = {h:g} m, {kind}"
+    print(title)
+    print(f"{'X [m]':>12} {'H [N]':>14} {'V [N]':>14} {'T [N]':>14} {'touchdown [m]':>14}  state")
+    for i in range(X.size):
+        print(f"{X[i]:12.6g} {r.H[i]:14.6g} {r.V[i]:14.6g} {T[i]:14.6g} {r.touchdown[i]:14.6g}  "
+              f"{LineState(r.state[i]).name}")
+    changes = state_changes(X, r.state, h, L, w, EA)
+    for x, old, new in changes:
+        print(f"state change {old.name} -> {new.name} at X = {x:.9g} m")
+    if (r.state == LineState.TAUT).any() and EA is None:
+        print("TAUT inextensible line: no catenary exists (H = V = inf); give --EA for an elastic line")
+    if args.csv:
+        with open(args.csv, "w") as f:
+            f.write("X_m,H_N,V_N,T_N,touchdown_m,state\n")
+            for i in range(X.size):
+                nums = (X[i], r.H[i], r.V[i], T[i], r.touchdown[i])
+                f.write(",".join(repr(float(v)) for v in nums) + f",{LineState(r.state[i]).name}\n")
+        print(f"wrote {args.csv}")
+    if args.png:
+        _plot_line(args.png, X, r, changes, title, (h, L, w, EA))
+        print(f"wrote {args.png}")
+    return 0
+
+
+def cmd_validate(args, parser) -> int:
+    from cosim import validation
+
+    known = validation.cases()
+    if args.list:
+        for c in known.values():
+            print(f"{c.name:28s} {c.description}")
+        return 0
+    names = list(known) if args.names == ["all"] else args.names
+    if not names:
+        parser.error("name a case (see --list), or 'all'")
+    unknown = [n for n in names if n not in known]
+    if unknown:
+        parser.error(f"unknown case(s) {', '.join(unknown)}; known: {', '.join(known)}")
+    ok = True
+    for name in names:
+        rec = validation.run(name, quick=args.quick)
+        ok &= rec["passed"]
+        print(json.dumps(rec, default=_json_default), flush=True)
+    return 0 if ok else 1
+
+
+def _json_default(o):
+    import numpy as np
+
+    if isinstance(o, np.generic):
+        return o.item()
+    if isinstance(o, np.ndarray):
+        return o.tolist()
+    if isinstance(o, float) and not math.isfinite(o):
+        return str(o)
+    raise TypeError(f"not JSON serialisable: {type(o).__name__}")
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(prog="cosim", description=__doc__.strip().splitlines()[0])
+    sub = parser.add_subparsers(dest="command", required=True)
+    parsers = {"line": _line_parser(sub), "validate": _validate_parser(sub)}
+    args = parser.parse_args(argv)
+    handler = {"line": cmd_line, "validate": cmd_validate}[args.command]
+    try:
+        return handler(args, parsers[args.command])
+    except CosimError as exc:
+        print(f"cosim {args.command}: error: {exc}", file=sys.stderr)
+        return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,59 @@
+"""The `cosim` command line."""
+
+import csv
+import json
+
+import numpy as np
+import pytest
+
+from cosim.cli import main
+from moorings.catenary import solve
+
+
+def test_line_table_csv_and_png(tmp_path, capsys):
+    out_csv, out_png = tmp_path / "line.csv", tmp_path / "line.png"
+    args = ["line", "--length", "6.98", "--weight", "1.036", "--height", "2.651", "--x-range", "4", "6.5",
+            "--points", "6", "--csv", str(out_csv), "--png", str(out_png)]
+    assert main(args) == 0
+    text = capsys.readouterr().out
+    assert "state change RESTING -> PARTLY_LIFTED at X = 4.329" in text
+    assert "state change PARTLY_LIFTED -> FULLY_LIFTED at X = 6.2881002" in text
+    assert "state change FULLY_LIFTED -> TAUT at X = 6.4569806" in text
+    rows = list(csv.DictReader(out_csv.open()))
+    # no sample falls between lift-off (6.288 m) and taut (6.457 m): both changes are still reported
+    assert [r["state"] for r in rows] == ["RESTING", "PARTLY_LIFTED", "PARTLY_LIFTED", "PARTLY_LIFTED",
+                                          "PARTLY_LIFTED", "TAUT"]
+    X = np.array([float(r["X_m"]) for r in rows])
+    ref = solve(X, 2.651, 6.98, 1.036)
+    np.testing.assert_array_equal([float(r["H_N"]) for r in rows], ref.H)
+    assert out_png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_line_preset_and_elastic(capsys):
+    assert main(["line", "--preset", "johanning-2006", "--EA", "1e9", "--points", "3"]) == 0
+    text = capsys.readouterr().out
+    assert "L = 150 m, w = 918.75 N/m, h = 50 m, EA = 1e+09 N" in text
+    assert "102" in text and "140" in text
+
+
+def test_line_bad_input_is_a_clear_error(capsys):
+    assert main(["line", "--length", "5", "--weight", "-1", "--height", "1", "--x-range", "0", "4"]) == 2
+    assert "w = -1.0 N/m" in capsys.readouterr().err
+    with pytest.raises(SystemExit):
+        main(["line", "--weight", "1", "--height", "1", "--x-range", "0", "4"])
+    assert "--length is required" in capsys.readouterr().err
+
+
+def test_validate_list_and_run(capsys):
+    assert main(["validate", "--list"]) == 0
+    listed = capsys.readouterr().out
+    for name in ("catenary-limits", "catenary-johanning-2007", "catenary-johanning-2006", "catenary-two-lines"):
+        assert name in listed
+    assert main(["validate", "catenary-limits", "--quick"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["name"] == "catenary-limits" and rec["passed"] is True and rec["quick"] is True
+    for key in ("metrics", "tolerances", "particles", "steps", "wall_s"):
+        assert key in rec
+    with pytest.raises(SystemExit):
+        main(["validate", "no-such-case"])
+    assert "unknown case" in capsys.readouterr().err
