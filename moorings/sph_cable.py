@@ -1,0 +1,558 @@
+"""The SPH cable of seed 000 (Dinçer & Demir 2020): a 1-D chain of SPH particles with
+axial stiffness in tension only, as a stand-alone solver (:class:`SPHCable`) and as a
+mooring model (:class:`SPHCableMooring`, the ``cosim.protocol.Mooring`` interface).
+
+Equations (``000_7d114ab96e048b26.txt`` Eq. 1-12) and how they are read here
+-----------------------------------------------------------------------------
+The cable is a 1-D continuum: the cross-section is integrated out, so density is the
+line density ``lam = rho A`` [kg/m] and stress is the tension ``T = sigma A`` [N]; the
+kernel is the 1-D Wendland C2 kernel (support 2h) of the *arc distance* ``xi`` between
+particles measured along the current cable (sum of the segment lengths between them).
+The seed evaluates kernels on the straight-line distance; along a bent cable that
+distance shortens without any stretch, which the continuity equation would read as
+compression (at the 0.4 rad kink of Case 1 the chord across it is 2 % short, ten times
+the real strain). The arc distance is the cable's own 1-D coordinate and is objective:
+rigid motion and pure bending leave it unchanged.
+
+* Continuity, Eq. 1-4. ``dlam_a/dt = -lam_a D_a + 0.1 h c0 sum_b V_b psi_ab dW_ab``
+  with ``D_a = L_a sum_b V_b (dxi_ab/dt / xi_ab) xi_ab |W'_ab|`` and the renormalisation
+  of Eq. 4 in 1-D, ``L_a = [sum_b V_b xi_ab |W'_ab|]^-1`` (Eq. 4 as printed is a 2x2/3x3
+  matrix, singular for particles on a line; its 1-D form is this scalar). ``D_a`` is exact
+  for any uniform stretch. Over one step it is integrated exactly:
+  ``lam <- lam exp(-sum w ln(xi^{n+1}/xi^n))``, so a uniformly stretched cable has exactly
+  ``lam = lam0 / (1 + strain)``. Kernels and weights are taken in the reference
+  (unstretched) configuration, total-Lagrangian SPH: on the current distance the pair
+  force grows as neighbours approach in tension (|W'| peaks at q = 2/3), the SPH tensile
+  instability, which we saw grow at ~10/s in a hanging cable. With fixed weights the
+  increments telescope: ``lam_a = lam0 exp(-sum_b w_ab ln(xi_ab/xi0_ab))``, a function of
+  the current geometry alone.
+  The δ-SPH term (Eq. 1-3, psi_ab in 1-D with the renormalised gradient of Eq. 3) is
+  implemented (``delta``) but off by default: it diffuses density independently of the
+  positions, which in a solid is creep -- it erases the tension gradient a hanging cable
+  needs in a diffusion time h/(delta c0) (10 ms in seed 000 Case 1, where delta = 0.1
+  made the sag grow without bound). The density noise it is meant to remove in a fluid
+  cannot arise here, since the density follows the geometry exactly.
+* Stress, Eq. 6-9. In the cable's local frame only the axial component exists. Summing
+  Eq. 7 (pressure, bulk modulus K) and Eq. 8 (deviator, ``2/3 E D``) along the axis gives
+  ``dsigma/dt = (K + 2E/3) D``, which is Hooke's law of a cable (``E D``, uniaxial stress,
+  free lateral contraction) only for one particular K; the physics requires
+  ``dsigma/dt = E D_ss``. With ``D = -dln(lam)/dt`` this integrates to
+  ``sigma = E (lam0/lam - 1)`` (engineering strain on the unstretched length, the
+  convention of the elastic catenary and of ``MooringLine.EA``); tension only:
+  ``T = EA max(0, lam0/lam - 1)`` -- a compressed cable carries no force.
+* Momentum, Eq. 5. The stress tensor reduced to the axis is ``T e (x) e``; for a pair the
+  axis is the chord ``e_ab``, so the pair term is central:
+  ``m_a dv_a/dt = sum_b mk_a mk_b (T_a L_a/lam_a^2 + T_b L_b/lam_b^2 - Pi_ab) |W'_ab| e_ab``
+  (``e_ab`` from a to b). Eq. 5's indices read ``sigma^ij ... dW/dx^j``; with ``T e e``
+  that is ``T e (e . grad W)`` = ``T |W'| e`` for nearest neighbours. The pair form is
+  antisymmetric: linear and angular momentum are conserved. With the renormalisation a
+  uniformly stressed cable gets pair forces exactly equal to T (any kernel, any h).
+  The end particles are mirrored (a ghost segment beyond the end) in the kernel sums,
+  so the force between an end and its neighbour is ``(T_a + T_b)/2`` as in the interior.
+* Artificial viscosity, Eq. 10-11: ``Pi = (phi mu^2 - varphi mu c0)/lam_ab``,
+  ``mu = h v_ab.r_ab/(r^2 + 0.001 h^2)`` for approaching pairs, phi = 0.2, varphi = 1,
+  ``c0 = sqrt(E/rho) = sqrt(EA/mass_per_length)``. Eq. 5 prints ``+pi_ab``; with the
+  tension-positive stress of Eq. 6 the viscous pressure must enter with a minus sign to
+  dissipate (as in Monaghan's form), so ``-Pi`` is used.
+* Damping, Eq. 12. As printed, ``sum_b m_b (omega/A) C_ab grad W_ab`` with
+  ``C_ab = m_a v_a/rho_a^2 + m_b v_b/rho_b^2`` is an SPH *gradient* of ``m v/rho`` along
+  the cable (it vanishes for a cable swinging as a whole, which Fig. 15 damps) and
+  ``omega`` must be in 1/s for the units to close. Section 4 states the intent: Rayleigh
+  damping proportional to mass, "mass times velocity". Implemented as that:
+  ``f_a = -omega m_a v_a`` with ``omega`` [1/s] (default 0.04, the seed's 0.03-0.05). It
+  leaves every equilibrium unchanged, so a larger ``omega`` is a legitimate way to settle
+  a static case (each underdamped mode decays at omega/2).
+* Time stepping: leap-frog in kick-drift form (velocities staggered half a step),
+  ``dt = cfl * min segment / (c0 + max speed)``; the whole sub-cycling loop runs in
+  compiled code (:func:`moorings.sph_cable_kernels.advance`).
+
+Discretisation: ``n_particles`` nodes at material (unstretched arc) coordinates ``s``,
+the two ends included (they sit on the supports). A node's inertial mass is the mass of
+half of each adjacent segment; ``nodes_at`` forces nodes at given ``s`` (a point load
+between two nodes would cut the corner of its kink by ~ds sin(angle)/4). Point loads or
+masses off a node are split linearly between the two nearest nodes.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import brentq
+
+from cosim.errors import InputError, InstabilityError
+from moorings import sph_cable_kernels as _k
+from moorings.line import MooringLine, named_lines
+
+log = logging.getLogger(__name__)
+
+G_STANDARD = 9.80665
+
+
+def material_coordinates(length: float, n_particles: int, nodes_at=()) -> np.ndarray:
+    """Unstretched arc coordinates [m] of ``n_particles`` nodes from 0 to ``length``,
+    uniformly spaced between the breakpoints ``nodes_at`` [m], which become nodes too."""
+    bps = sorted({0.0, float(length), *[float(s) for s in nodes_at]})
+    n_seg = n_particles - 1
+    if n_seg < len(bps) - 1:
+        raise InputError(f"n_particles = {n_particles} is too few for {len(bps) - 2} nodes_at points")
+    lengths = np.diff(bps)
+    # distribute segments in proportion to the piece lengths, at least one per piece
+    counts = np.maximum(1, np.floor(lengths / length * n_seg).astype(int))
+    while counts.sum() < n_seg:
+        counts[np.argmax(lengths / counts)] += 1
+    while counts.sum() > n_seg:
+        i = np.argmin(np.where(counts > 1, lengths / counts, np.inf))
+        counts[i] -= 1
+    s = [0.0]
+    for a, b, c in zip(bps[:-1], bps[1:], counts):
+        s.extend(np.linspace(a, b, c + 1)[1:])
+    return np.asarray(s)
+
+
+def catenary_points(a, b, length: float, s) -> np.ndarray:
+    """Points at arc coordinates ``s`` [m] of the inextensible catenary of ``length`` [m]
+    hanging from ``a`` to ``b`` (z up, in the vertical plane through both); a straight
+    line if the supports are ``length`` or more apart."""
+    a = np.asarray(a, float)
+    b = np.asarray(b, float)
+    s = np.asarray(s, float)
+    dim = a.size
+    d = b - a
+    horiz = d.copy()
+    horiz[-1] = 0.0
+    X = float(np.linalg.norm(horiz))
+    Z = float(d[-1])
+    chord = float(np.linalg.norm(d))
+    if chord >= length * (1 - 1e-12):
+        return a + np.outer(s / length, d)
+    eh = horiz / X if X > 1e-12 * length else np.eye(dim)[0]
+    if X <= 1e-9 * length:  # vertical: hang down and back up
+        raise InputError("supports on one vertical line: give the initial positions explicitly")
+    target = math.sqrt(length * length - Z * Z)
+    f = lambda c: 2 * c * math.sinh(X / (2 * c)) - target  # noqa: E731
+    lo, hi = X * 1e-3, X * 1e6
+    while f(lo) == math.inf or not math.isfinite(f(lo)):
+        lo *= 2
+    c = brentq(f, lo, hi, xtol=1e-14 * X, rtol=1e-15)
+    x0 = X / 2 - c * math.asinh(Z / (2 * c * math.sinh(X / (2 * c))))
+    xs = x0 + c * np.arcsinh(s / c + math.sinh(-x0 / c))
+    zs = c * (np.cosh((xs - x0) / c) - math.cosh(x0 / c))
+    zaxis = np.zeros(dim)
+    zaxis[-1] = 1.0
+    return a + np.outer(xs, eh) + np.outer(zs, zaxis)
+
+
+@dataclass
+class _Load:
+    s: float
+    force: np.ndarray  # [N]
+    mass: float  # [kg]
+
+
+class SPHCable:
+    """One cable of SPH particles between two ends (000_7d114ab96e048b26.txt Eq. 1-12).
+
+    Parameters
+    ----------
+    length : unstretched length [m].
+    n_particles : number of SPH particles (nodes), ends included; at least 3.
+    EA : axial stiffness E·A [N] (tension only).
+    mass_per_length : mass per unit length [kg/m] (in air; add added mass yourself).
+    end_a, end_b : positions [m] of the two ends, 2 values (x, z) or 3 (x, y, z).
+    weight_per_length : weight per unit length [N/m] acting in -z (submerged weight for a
+        line in water); default ``mass_per_length * gravity``.
+    free_end : None (both ends held), ``"a"``, ``"b"`` (that end hangs free) or ``"both"``.
+    positions : optional initial positions (n_particles, dim) [m]; default the
+        inextensible catenary through the ends (a straight line if taut). The initial
+        line density follows the initial segment stretch, so a stretched start is stressed.
+    nodes_at : material coordinates [m] that must be nodes (point loads, probes).
+    h_factor : smoothing length h over the largest unstretched spacing [-] (0.75-3;
+        1 keeps the kernel on the nearest neighbours, which represents kinks at nodes).
+    cfl : Courant number on the axial wave speed sqrt(EA/mass_per_length) [-].
+    omega : mass-proportional damping rate of 000 Eq. 12 [1/s].
+    visc_alpha, visc_beta : artificial viscosity coefficients varphi, phi of 000 Eq. 10 [-].
+    delta : δ-SPH diffusion coefficient of 000 Eq. 1 [-] (0.1 in the seed; 0 by default,
+        see the module docstring: in a solid it makes the cable creep).
+    max_strain : largest strain the cable takes elastically [-]; supports farther apart
+        than ``length * (1 + max_strain)`` are rejected.
+    seabed_z : height [m] of a horizontal seabed the particles cannot penetrate; None.
+    gravity : gravitational acceleration [m/s²], used for point masses and the default weight.
+    name : label used in messages.
+    """
+
+    def __init__(self, length, n_particles, EA, mass_per_length, end_a, end_b, weight_per_length=None,
+                 free_end=None, positions=None, nodes_at=(), h_factor=1.0, cfl=0.4, omega=0.04,
+                 visc_alpha=1.0, visc_beta=0.2, delta=0.0, max_strain=0.1, seabed_z=None,
+                 gravity=G_STANDARD, name="cable"):
+        self.name = name
+        lab = f"SPH cable '{name}'"
+
+        def pos(val, what, unit):
+            try:
+                v = float(val)
+            except (TypeError, ValueError):
+                raise InputError(f"{lab}: {what} must be a number [{unit}], got {val!r}") from None
+            if not (math.isfinite(v) and v > 0):
+                raise InputError(f"{lab}: {what} = {val!r} {unit}; it must be finite and > 0")
+            return v
+
+        if isinstance(n_particles, bool) or not isinstance(n_particles, (int, np.integer)):
+            raise InputError(f"{lab}: n_particles must be an integer, got {n_particles!r}")
+        if n_particles < 3:
+            raise InputError(f"{lab}: n_particles = {n_particles}; a cable needs at least 3 particles")
+        self.length = pos(length, "length", "m")
+        self.EA = pos(EA, "EA", "N")
+        self.mass_per_length = pos(mass_per_length, "mass_per_length", "kg/m")
+        self.gravity = pos(gravity, "gravity", "m/s^2")
+        self.max_strain = pos(max_strain, "max_strain", "-")
+        self.cfl = pos(cfl, "cfl", "-")
+        if self.cfl > 1.0:
+            raise InputError(f"{lab}: cfl = {cfl}; use a Courant number <= 1 (0.4 is the default)")
+        self.h_factor = pos(h_factor, "h_factor", "-")
+        if not 0.75 <= self.h_factor <= 3.0:
+            raise InputError(f"{lab}: h_factor = {h_factor}; it must lie in [0.75, 3]")
+        if omega is None or not math.isfinite(float(omega)) or float(omega) < 0:
+            raise InputError(f"{lab}: omega = {omega!r} 1/s; the damping rate must be >= 0")
+        self.omega = float(omega)
+        self.visc_alpha, self.visc_beta, self.delta = float(visc_alpha), float(visc_beta), float(delta)
+        if min(self.visc_alpha, self.visc_beta, self.delta) < 0:
+            raise InputError(f"{lab}: visc_alpha, visc_beta and delta must be >= 0")
+        if weight_per_length is None:
+            weight_per_length = self.mass_per_length * self.gravity
+        w = float(weight_per_length)
+        if not math.isfinite(w):
+            raise InputError(f"{lab}: weight_per_length = {weight_per_length!r} N/m must be finite")
+        self.weight_per_length = w
+        if free_end not in (None, "a", "b", "both"):
+            raise InputError(f"{lab}: free_end = {free_end!r}; use None, 'a', 'b' or 'both'")
+        self.free_end = free_end
+        ea = np.asarray(end_a, float).ravel()
+        eb = np.asarray(end_b, float).ravel()
+        if ea.size not in (2, 3) or eb.size != ea.size or not (np.all(np.isfinite(ea)) and np.all(np.isfinite(eb))):
+            raise InputError(f"{lab}: end_a and end_b must be finite points of equal dimension 2 or 3 [m]")
+        self.dim = ea.size
+        reach = self.length * (1.0 + self.max_strain)
+        span = float(np.linalg.norm(eb - ea))
+        if free_end is None and span > reach:
+            raise InputError(
+                f"{lab}: the supports are {span:.6g} m apart but the cable of length {self.length:.6g} m reaches "
+                f"only {reach:.6g} m within max_strain = {self.max_strain:g}; move the supports closer or "
+                "lengthen the cable")
+        for sv in nodes_at:
+            if not 0.0 < float(sv) < self.length:
+                raise InputError(f"{lab}: nodes_at value {sv!r} m is not inside the cable (0, {self.length:g})")
+        self.s = material_coordinates(self.length, int(n_particles), nodes_at)
+        n = self.n = self.s.size
+        ds = np.diff(self.s)
+        self.h = self.h_factor * float(ds.max())
+        self.K = int(math.ceil(2.0 * self.h / ds.min()))
+        self.c0 = math.sqrt(self.EA / self.mass_per_length)
+        # masses: inertial (half segments at the ends), kernel (mirrored: full at the ends)
+        half = np.zeros(n)
+        half[:-1] += 0.5 * ds
+        half[1:] += 0.5 * ds
+        self._seg_len = half
+        kern = half.copy()
+        kern[0], kern[-1] = ds[0], ds[-1]
+        self.mk = self.mass_per_length * kern
+        self._m_line = self.mass_per_length * half
+        self.lam0 = np.full(n, self.mass_per_length)
+        if positions is None:
+            x = catenary_points(ea, eb, self.length, self.s)
+        else:
+            x = np.array(positions, float)
+            if x.shape != (n, self.dim) or not np.all(np.isfinite(x)):
+                raise InputError(f"{lab}: positions must be a finite array of shape ({n}, {self.dim}) [m]")
+        self.seabed_z = -math.inf if seabed_z is None else float(seabed_z)
+        if seabed_z is not None:
+            x[:, -1] = np.maximum(x[:, -1], self.seabed_z)
+        self.x = np.ascontiguousarray(x)
+        self.v = np.zeros_like(self.x)
+        seg = np.linalg.norm(np.diff(self.x, axis=0), axis=1)
+        stretch = seg / ds
+        st = np.empty(n)
+        st[1:-1] = 0.5 * (stretch[:-1] + stretch[1:])
+        st[0], st[-1] = stretch[0], stretch[-1]
+        self.lam = self.lam0 / st
+        self.t = 0.0
+        held = [i for i, e in ((0, "a"), (n - 1, "b")) if free_end not in (e, "both")]
+        self._pidx = np.array(held, dtype=np.int64)
+        npr = len(held)
+        self._free = np.ones(n)
+        self._free[self._pidx] = 0.0
+        self._p0 = self.x[self._pidx].copy()
+        self._v0 = np.zeros((npr, self.dim))
+        self._p1 = self._p0.copy()
+        self._v1 = np.zeros((npr, self.dim))
+        self._amp = np.zeros((npr, self.dim))
+        self._om = np.zeros(npr)
+        self._ton = np.zeros(npr)
+        self._toff = np.full(npr, -1.0)
+        self._fend_mean = np.zeros((npr, self.dim))
+        self._fend_last = np.zeros((npr, self.dim))
+        self._tension = np.zeros(n)
+        self._loads: dict[int, _Load] = {}
+        self._next_handle = 0
+        self._rebuild_external()
+        self.steps = 0
+
+    # ------------------------------------------------------------------ set-up
+    def _end_slot(self, end):
+        idx = {"a": 0, "b": self.n - 1}.get(end)
+        if idx is None or idx not in self._pidx:
+            raise InputError(f"SPH cable '{self.name}': end {end!r} is not a held end (held: "
+                             f"{[('a' if i == 0 else 'b') for i in self._pidx]})")
+        return int(np.nonzero(self._pidx == idx)[0][0])
+
+    def _split(self, s):
+        s = float(s)
+        if not 0.0 <= s <= self.length:
+            raise InputError(f"SPH cable '{self.name}': position s = {s} m is not on the cable [0, {self.length:g}]")
+        i = int(np.clip(np.searchsorted(self.s, s, side="right") - 1, 0, self.n - 2))
+        f = (s - self.s[i]) / (self.s[i + 1] - self.s[i])
+        return i, f
+
+    def _rebuild_external(self):
+        n, dim = self.n, self.dim
+        fext = np.zeros((n, dim))
+        fext[:, -1] = -self.weight_per_length * self._seg_len
+        m = self._m_line.copy()
+        for ld in self._loads.values():
+            i, f = self._split(ld.s)
+            for j, wj in ((i, 1.0 - f), (i + 1, f)):
+                fext[j] += wj * ld.force
+                fext[j, -1] -= wj * ld.mass * self.gravity
+                m[j] += wj * ld.mass
+        self.fext, self.m = fext, m
+
+    def add_point_load(self, s, force) -> int:
+        """Apply a constant force [N] (dim values, world frame) at material coordinate ``s`` [m]
+        from the next :meth:`advance` on; returns a handle for :meth:`remove`."""
+        f = np.asarray(force, float).ravel()
+        if f.size != self.dim or not np.all(np.isfinite(f)):
+            raise InputError(f"SPH cable '{self.name}': force must be {self.dim} finite values [N]")
+        self._split(s)
+        return self._add(_Load(float(s), f, 0.0))
+
+    def add_point_mass(self, s, mass) -> int:
+        """Attach a point mass [kg] (its inertia and its weight mass·gravity) at ``s`` [m]."""
+        mass = float(mass)
+        if not (math.isfinite(mass) and mass > 0):
+            raise InputError(f"SPH cable '{self.name}': point mass = {mass!r} kg must be > 0")
+        self._split(s)
+        return self._add(_Load(float(s), np.zeros(self.dim), mass))
+
+    def _add(self, ld):
+        h = self._next_handle
+        self._next_handle += 1
+        self._loads[h] = ld
+        self._rebuild_external()
+        return h
+
+    def remove(self, handle: int) -> None:
+        """Remove a point load or mass added earlier (it acts no more from the next advance)."""
+        if handle not in self._loads:
+            raise InputError(f"SPH cable '{self.name}': no point load or mass with handle {handle!r}")
+        del self._loads[handle]
+        self._rebuild_external()
+
+    def set_end_motion(self, end, position, velocity=None) -> None:
+        """Where held end ``end`` ("a"/"b") is at the end of the next :meth:`advance`: position [m]
+        and velocity [m/s]; in between it follows a cubic Hermite curve from its current state."""
+        i = self._end_slot(end)
+        p = np.asarray(position, float).ravel()
+        vv = np.zeros(self.dim) if velocity is None else np.asarray(velocity, float).ravel()
+        if p.size != self.dim or vv.size != self.dim or not (np.all(np.isfinite(p)) and np.all(np.isfinite(vv))):
+            raise InputError(f"SPH cable '{self.name}': end position/velocity must be {self.dim} finite values")
+        self._p1[i], self._v1[i] = p, vv
+
+    def set_harmonic(self, end, amplitude, frequency, t_on=0.0, cycles=None) -> None:
+        """Superpose amplitude·sin(2π frequency (t - t_on)) on held end ``end``: ``amplitude``
+        [m] (dim values), ``frequency`` [Hz], start ``t_on`` [s], for ``cycles`` whole cycles
+        (None: forever)."""
+        i = self._end_slot(end)
+        amp = np.asarray(amplitude, float).ravel()
+        fr = float(frequency)
+        if amp.size != self.dim or not np.all(np.isfinite(amp)) or not (math.isfinite(fr) and fr > 0):
+            raise InputError(f"SPH cable '{self.name}': amplitude needs {self.dim} values [m], frequency > 0 [Hz]")
+        self._amp[i] = amp
+        self._om[i] = 2 * math.pi * fr
+        self._ton[i] = float(t_on)
+        self._toff[i] = math.inf if cycles is None else float(t_on) + float(cycles) / fr
+
+    # ------------------------------------------------------------------ stepping
+    def stable_dt(self) -> float:
+        """The cable's own stable step [s]: cfl · shortest segment / (c0 + fastest particle)."""
+        seg = np.linalg.norm(np.diff(self.x, axis=0), axis=1)
+        vmax = float(np.sqrt((self.v ** 2).sum(axis=1)).max()) + float(
+            np.max(np.linalg.norm(self._amp, axis=1) * self._om, initial=0.0))
+        return self.cfl * float(min(seg.min(), np.diff(self.s).min())) / (self.c0 + vmax)
+
+    def advance(self, t: float, dt: float) -> int:
+        """Advance from ``t`` to ``t + dt`` [s] in compiled sub-steps; returns their number."""
+        if not dt > 0:
+            raise InputError(f"SPH cable '{self.name}': dt = {dt!r} s must be > 0")
+        n_sub = max(1, int(math.ceil(dt / self.stable_dt() - 1e-9)))
+        status, step, part = _k.advance(
+            self.x, self.v, self.lam, self.s, float(t), float(t + dt), n_sub, self.m, self.mk, self.lam0, self.EA,
+            self.c0, self.h, self.K, self.delta, self.visc_alpha, self.visc_beta, self.omega, self.fext,
+            self._free, self._pidx, self._p0, self._v0, self._p1, self._v1, self._amp, self._om, self._ton,
+            self._toff, self.seabed_z, self._fend_mean, self._fend_last, self._tension)
+        if status != _k.OK:
+            what = "non-finite position or velocity" if status == _k.NONFINITE else "non-positive density"
+            raise InstabilityError(
+                f"SPH cable '{self.name}': {what} at particle {part} (s = {self.s[part]:.6g} m) in sub-step "
+                f"{step} of {n_sub} after t = {t:.9g} s (dt = {dt / n_sub:.3g} s); lower cfl (now {self.cfl}) "
+                "or check the loads and the end motion")
+        self._p0[:] = self._p1
+        self._v0[:] = self._v1
+        self.t = float(t + dt)
+        self.steps += n_sub
+        return n_sub
+
+    # ------------------------------------------------------------------ outputs
+    @property
+    def positions(self) -> np.ndarray:
+        """Particle positions [m], (n, dim)."""
+        return self.x.copy()
+
+    @property
+    def velocities(self) -> np.ndarray:
+        return self.v.copy()
+
+    @property
+    def tension(self) -> np.ndarray:
+        """Axial tension [N] of each particle at the end of the last advance."""
+        return self._tension.copy()
+
+    def end_forces(self, mean=False) -> np.ndarray:
+        """Force [N] the cable exerts on each held end's support, (n_held, dim), ends in order
+        a, b; at the end of the last advance, or its mean over the sub-steps (``mean=True``)."""
+        return (self._fend_mean if mean else self._fend_last).copy()
+
+    def position_at(self, s) -> np.ndarray:
+        """Position [m] of material point ``s`` [m] (linear between nodes)."""
+        i, f = self._split(s)
+        return (1 - f) * self.x[i] + f * self.x[i + 1]
+
+    def kinetic_energy(self) -> float:
+        return 0.5 * float((self.m * (self.v ** 2).sum(axis=1)).sum())
+
+    def max_speed(self) -> float:
+        return float(np.sqrt((self.v ** 2).sum(axis=1)).max())
+
+    def save_state(self):
+        return (self.x.copy(), self.v.copy(), self.lam.copy(), self.t, self._p0.copy(), self._v0.copy(),
+                self._p1.copy(), self._v1.copy(), dict(self._loads), self._tension.copy(),
+                self._fend_last.copy(), self._fend_mean.copy(), self.steps)
+
+    def load_state(self, state) -> None:
+        (x, v, lam, self.t, p0, v0, p1, v1, loads, ten, fl, fm, self.steps) = state
+        self.x[:], self.v[:], self.lam[:] = x, v, lam
+        self._p0[:], self._v0[:], self._p1[:], self._v1[:] = p0, v0, p1, v1
+        self._loads = dict(loads)
+        self._tension[:], self._fend_last[:], self._fend_mean[:] = ten, fl, fm
+        self._rebuild_external()
+
+
+class SPHCableMooring:
+    """Mooring lines as SPH cables, behind the ``cosim.protocol.Mooring`` interface.
+
+    Each :class:`~moorings.line.MooringLine` becomes an :class:`SPHCable` from its anchor
+    (fixed; the seabed is the horizontal plane through it) to the fairlead given by
+    :meth:`set_fairlead_motion` (prescribed; between two coupling times it follows a cubic
+    Hermite curve through the given positions and velocities). Weight per length is the
+    line's submerged ``weight``, inertia its ``mass_per_length``, stiffness its ``EA``.
+
+    Parameters
+    ----------
+    lines : the mooring lines.
+    n_particles : SPH particles per line (ends included).
+    seabed : keep particles above the seabed plane through each anchor (no penetration).
+    **cable_options : passed to :class:`SPHCable` (``omega`` [1/s], ``cfl``, ``h_factor``, ...).
+    """
+
+    def __init__(self, lines: list[MooringLine], n_particles: int = 40, seabed: bool = True, name="sph_cable",
+                 **cable_options):
+        self.lines = named_lines(lines)
+        self.name = name
+        self.n_lines = len(self.lines)
+        self.dim = self.lines[0].dim
+        for ln in self.lines:
+            if ln.mass_per_length is None:
+                raise InputError(f"mooring line '{ln.name}': the SPH cable needs mass_per_length [kg/m]")
+            if ln.inextensible:
+                raise InputError(f"mooring line '{ln.name}': the SPH cable needs a finite EA [N] (axial stiffness)")
+        self.n_particles = n_particles
+        self.seabed = seabed
+        self._opts = cable_options
+        self.cables: list[SPHCable] = []
+        self._fpos = None
+        self._fvel = None
+
+    def set_fairlead_motion(self, positions, velocities=None) -> None:
+        p = np.asarray(positions, float)
+        if p.shape != (self.n_lines, self.dim) or not np.all(np.isfinite(p)):
+            raise InputError(f"{self.name}: fairlead positions must be finite, shape ({self.n_lines}, {self.dim}) [m]")
+        vv = np.zeros_like(p) if velocities is None else np.asarray(velocities, float)
+        if vv.shape != p.shape or not np.all(np.isfinite(vv)):
+            raise InputError(f"{self.name}: fairlead velocities must be finite, shape {p.shape} [m/s]")
+        self._fpos, self._fvel = p.copy(), vv.copy()
+        for c, pi, vi in zip(self.cables, p, vv):
+            c.set_end_motion("b", pi, vi)
+
+    def initialize(self, t0: float) -> None:
+        if self._fpos is None:
+            raise InputError(f"{self.name}: call set_fairlead_motion before initialize (fairlead positions)")
+        self.cables = []
+        for ln, fp in zip(self.lines, self._fpos):
+            c = SPHCable(ln.length, self.n_particles, ln.EA, ln.mass_per_length, ln.anchor, fp,
+                         weight_per_length=ln.weight, seabed_z=ln.anchor[-1] if self.seabed else None,
+                         name=ln.name, **self._opts)
+            c.t = float(t0)
+            self.cables.append(c)
+        self.set_fairlead_motion(self._fpos, self._fvel)
+
+    def max_dt(self) -> float:
+        """No limit: each cable sub-cycles to the coupling time (see :meth:`stable_dt`)."""
+        return math.inf
+
+    def stable_dt(self) -> float:
+        """The smallest stable sub-step [s] of the lines."""
+        return min(c.stable_dt() for c in self.cables)
+
+    def advance(self, t: float, dt: float) -> None:
+        for c in self.cables:
+            c.advance(t, dt)
+
+    def fairlead_forces(self) -> np.ndarray:
+        """Force [N] each line exerts on its fairlead, (n_lines, dim)."""
+        return np.array([c.end_forces()[1] for c in self.cables])
+
+    def anchor_forces(self) -> np.ndarray:
+        """Force [N] each line exerts on its anchor, (n_lines, dim)."""
+        return np.array([c.end_forces()[0] for c in self.cables])
+
+    def fairlead_tension(self) -> np.ndarray:
+        """Magnitude [N] of the fairlead force of each line."""
+        return np.linalg.norm(self.fairlead_forces(), axis=1)
+
+    def anchor_tension(self) -> np.ndarray:
+        return np.linalg.norm(self.anchor_forces(), axis=1)
+
+    def shapes(self) -> list[np.ndarray]:
+        """Particle positions [m] of each line."""
+        return [c.positions for c in self.cables]
+
+    def save_state(self):
+        return [c.save_state() for c in self.cables]
+
+    def load_state(self, state) -> None:
+        for c, s in zip(self.cables, state):
+            c.load_state(s)
+
+
+__all__ = ["SPHCable", "SPHCableMooring", "material_coordinates", "catenary_points"]
