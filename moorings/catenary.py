@@ -57,12 +57,13 @@ and fully suspended (``V >= w L``), with ``V_a = V - w L`` at the anchor::
 For ``EA -> inf`` both reduce to seed 004 Eq. 28-29 and 35-39.
 
 Each regime is reduced here to one equation in one unknown, solved with a
-bracketed (Brent) root finder in the logarithm of that unknown, so it cannot
-diverge. In units of ``L`` (lengths) and ``w L`` (forces), with ``ε = w L / EA``:
+bracketed, safeguarded Newton iteration (bisection whenever a Newton step
+would leave the bracket) in the logarithm of that unknown, so it cannot
+diverge; 4-6 evaluations are typical. In units of ``L`` (lengths) and ``w L`` (forces), with ``ε = w L / EA``:
 
 * on the seabed, the unknown is the fairlead angle ``t = asinh(V/H)``; the ``h``
   equation is a quadratic in ``H`` with the stable root
-  ``V = 2 h coth(t/2) / (1 + sqrt(1 + 2 ε h coth(t/2)^2))``, ``H = V / sinh t``,
+  ``V = 2 h / (tanh(t/2) + sqrt(tanh(t/2)^2 + 2 ε h))``, ``H = V / sinh t``,
   and ``X(t)`` decreases from the lift-off point (``t = 2 atanh(h - ε/2)``) to
   the resting point (``t -> inf``);
 * fully suspended, the unknown is ``u`` = half the angle range, ``asinh(V/H) =
@@ -101,6 +102,7 @@ PARTLY_LIFTED = LineState.PARTLY_LIFTED
 FULLY_LIFTED = LineState.FULLY_LIFTED
 TAUT = LineState.TAUT
 _STATES = tuple(LineState)
+_new_tuple = tuple.__new__  # builds a LineSolution without NamedTuple.__new__'s call overhead
 
 
 class LineSolution(NamedTuple):
@@ -122,41 +124,53 @@ class LineSolution(NamedTuple):
 
 _JIT = dict(cache=True, nogil=True, error_model="numpy")
 _U_CAP = 350.0  # sinh(350) ~ 1e152: far from overflow, far past any physical angle
-_T_CAP = 700.0
+_LOG_T_CAP = math.log(700.0)  # sinh(700) ~ 5e303 still finite
 
 
 @nb.njit(**_JIT)
-def _x_seabed(t, z, eps):
-    """Seabed-contact regime at fairlead angle t: returns (X, H, V)."""
+def _seabed(t, z, eps):
+    """Seabed-contact regime at fairlead angle t: returns (X, H, V, dX/dt)."""
     q = math.tanh(0.5 * t)
-    V = 2.0 * z / (q + math.sqrt(q * q + 2.0 * eps * z))
-    H = V / math.sinh(t)
-    return 1.0 - V + H * t + eps * H, H, V
+    S = math.sqrt(q * q + 2.0 * eps * z)
+    V = 2.0 * z / (q + S)
+    st = math.sinh(t)
+    H = V / st
+    dV = -V * (1.0 + q / S) / (q + S) * 0.5 * (1.0 - q * q)
+    dH = (dV - H * math.cosh(t)) / st
+    return 1.0 - V + H * t + eps * H, H, V, -dV + H + (t + eps) * dH
 
 
 @nb.njit(**_JIT)
-def _x_suspended(u, z, eps):
-    """Fully suspended regime at half angle range u: returns (X, H, V)."""
+def _suspended(u, z, eps):
+    """Fully suspended regime at half angle range u: returns (X, H, V, dX/du)."""
     tu = math.tanh(u)
-    tau = z * tu / (tu + 0.5 * eps)  # tanh m
-    H = math.sqrt((1.0 - tau) * (1.0 + tau)) / (2.0 * math.sinh(u))
-    V = 0.5 + 0.5 * z / (tu + 0.5 * eps)
-    return (2.0 * u + eps) * H, H, V
+    a = tu + 0.5 * eps
+    tau = z * tu / a  # tanh m
+    dtau = 0.5 * z * eps * (1.0 - tu * tu) / (a * a)
+    c = math.sqrt((1.0 - tau) * (1.0 + tau))
+    su = math.sinh(u)
+    H = c / (2.0 * su)
+    V = 0.5 + 0.5 * z / a
+    dH = (-0.5 * tau * dtau / c - H * math.cosh(u)) / su
+    return (2.0 * u + eps) * H, H, V, 2.0 * H + (2.0 * u + eps) * dH
 
 
 @nb.njit(**_JIT)
-def _residual(regime, p, z, eps, x):
-    if regime == 0:
-        return _x_seabed(math.exp(p), z, eps)[0] - x
-    return _x_suspended(math.exp(p), z, eps)[0] - x
+def _f(regime, p, z, eps, x):
+    """Residual X(e^p) - x of a regime and its derivative in p."""
+    t = math.exp(p)
+    X, _, _, dX = _seabed(t, z, eps) if regime == 0 else _suspended(t, z, eps)
+    return X - x, dX * t
 
 
 @nb.njit(**_JIT)
-def _brent(regime, a, b, fa, fb, z, eps, x):
-    """Brent's method on [a, b] with f(a) * f(b) <= 0 (in the log variable p).
+def _newton(regime, a, b, fa, fb, z, eps, x):
+    """Safeguarded Newton on a bracket [a, b] with f(a) f(b) <= 0 (log variable p).
 
-    If rounding left both ends with the same sign, the root sits at the end
-    with the smaller residual: return it (the answer is then exact to rounding).
+    Starts at the regula-falsi point of the bracket; a step that would leave the
+    bracket or shrink it too slowly is replaced by bisection, so it cannot
+    diverge. If rounding left both ends with the same sign, the root sits at
+    the end with the smaller residual: return it (exact to rounding).
     """
     if fa == 0.0:
         return a
@@ -164,46 +178,30 @@ def _brent(regime, a, b, fa, fb, z, eps, x):
         return b
     if (fa > 0.0) == (fb > 0.0):
         return a if abs(fa) < abs(fb) else b
-    c, fc = a, fa
-    d = e = b - a
-    for _ in range(200):
-        if (fb > 0.0) == (fc > 0.0):
-            c, fc = a, fa
-            d = e = b - a
-        if abs(fc) < abs(fb):
-            a, b, c = b, c, b
-            fa, fb, fc = fb, fc, fb
-        tol = 2.0e-16 * abs(b) + 1.0e-15
-        m = 0.5 * (c - b)
-        if abs(m) <= tol or fb == 0.0:
-            return b
-        if abs(e) >= tol and abs(fa) > abs(fb):
-            s = fb / fa
-            if a == c:
-                pp = 2.0 * m * s
-                q = 1.0 - s
-            else:
-                q = fa / fc
-                r = fb / fc
-                pp = s * (2.0 * m * q * (q - r) - (b - a) * (r - 1.0))
-                q = (q - 1.0) * (r - 1.0) * (s - 1.0)
-            if pp > 0.0:
-                q = -q
-            else:
-                pp = -pp
-            if 2.0 * pp < min(3.0 * m * q - abs(tol * q), abs(e * q)):
-                e = d
-                d = pp / q
-            else:
-                d = m
-                e = m
+    lo, hi = (a, b) if fa < 0.0 else (b, a)  # f(lo) < 0 < f(hi)
+    p = a - fa * (b - a) / (fb - fa)
+    step = step_old = abs(b - a)
+    f, df = _f(regime, p, z, eps, x)
+    for _ in range(100):
+        if ((p - hi) * df - f) * ((p - lo) * df - f) > 0.0 or abs(2.0 * f) > abs(step_old * df):
+            step_old, step = step, 0.5 * (hi - lo)
+            p = lo + step
+            if p == lo:
+                return p
         else:
-            d = m
-            e = m
-        a, fa = b, fb
-        b = b + d if abs(d) > tol else b + (tol if m > 0.0 else -tol)
-        fb = _residual(regime, b, z, eps, x)
-    return b
+            step_old, step = step, f / df
+            p_prev = p
+            p -= step
+            if p == p_prev:
+                return p
+        if abs(step) < 1e-14 * max(1.0, abs(p)):
+            return p
+        f, df = _f(regime, p, z, eps, x)
+        if f < 0.0:
+            lo = p
+        else:
+            hi = p
+    return p
 
 
 @nb.njit(**_JIT)
@@ -223,41 +221,48 @@ def _lift_x(h, L):
 
 @nb.njit(**_JIT)
 def _seabed_root(x, z, eps, d, u_lift):
-    """Unknown t of the seabed regime, between lift-off and the resting point."""
+    """Unknown t of the seabed regime, between lift-off and the resting point.
+
+    X(t) decreases in t; the bracket is walked in unit steps of log t from the
+    lift-off angle (or, where there is none, down from where X ~ sqrt(2 z eps)/t
+    exceeds x) so that it ends one step wide around the root.
+    """
     if d > 0.0:
-        p_lo = math.log(2.0 * u_lift)  # the lift-off angle
-        f_lo = _residual(0, p_lo, z, eps, x)
-    else:  # no lift-off point: X -> inf as t -> 0, where X ~ sqrt(2 z eps) / t
-        p_lo = math.log(math.sqrt(2.0 * z * eps) / x) - 1.0
-        f_lo = _residual(0, p_lo, z, eps, x)
-        while f_lo < 0.0 and p_lo > -700.0:
-            p_lo -= 2.0
-            f_lo = _residual(0, p_lo, z, eps, x)
-    p_hi = max(p_lo + 1.0, 1.0)
-    f_hi = _residual(0, p_hi, z, eps, x)
-    while f_hi > 0.0 and p_hi < math.log(_T_CAP):
-        p_hi = min(p_hi + 1.0, math.log(_T_CAP))
-        f_hi = _residual(0, p_hi, z, eps, x)
-    return math.exp(_brent(0, p_lo, p_hi, f_lo, f_hi, z, eps, x))
+        a = math.log(2.0 * u_lift)  # the lift-off angle
+        fa = _f(0, a, z, eps, x)[0]
+    else:
+        a = math.log(math.sqrt(2.0 * z * eps) / x) - 1.0
+        fa = _f(0, a, z, eps, x)[0]
+        while fa < 0.0 and a > -700.0:
+            a -= 2.0
+            fa = _f(0, a, z, eps, x)[0]
+    b = max(a + 1.0, 1.0)
+    fb = _f(0, b, z, eps, x)[0]
+    while fb > 0.0 and b < _LOG_T_CAP:
+        a, fa = b, fb
+        b = min(b + 1.0, _LOG_T_CAP)
+        fb = _f(0, b, z, eps, x)[0]
+    return math.exp(_newton(0, a, b, fa, fb, z, eps, x))
 
 
 @nb.njit(**_JIT)
 def _suspended_root(x, z, eps, u_max):
-    """Unknown u of the fully suspended regime, in (0, u_max]."""
-    p_hi = math.log(u_max)
-    f_hi = _residual(1, p_hi, z, eps, x)
+    """Unknown u of the fully suspended regime, in (0, u_max]; X(u) decreases."""
+    b = math.log(u_max)
+    fb = _f(1, b, z, eps, x)[0]
     if eps == 0.0:
         # near the taut point u/sinh(u) -> 1 - u^2/6: start where that misses x
         chord = math.sqrt((1.0 - z) * (1.0 + z))
         gap = (chord - x) / chord  # > 0: x < chord here
-        p_lo = min(0.5 * math.log(6.0 * max(gap, 1e-300)) - 1.0, p_hi - 1.0)
+        a = min(0.5 * math.log(6.0 * max(gap, 1e-300)) - 1.0, b - 1.0)
     else:
-        p_lo = min(math.log(0.25 * eps / max(x, 1e-300)), p_hi - 1.0)
-    f_lo = _residual(1, p_lo, z, eps, x)
-    while f_lo < 0.0 and p_lo > -700.0:
-        p_lo -= 2.0
-        f_lo = _residual(1, p_lo, z, eps, x)
-    return math.exp(_brent(1, p_lo, p_hi, f_lo, f_hi, z, eps, x))
+        a = min(math.log(0.25 * eps / max(x, 1e-300)), b - 1.0)
+    fa = _f(1, a, z, eps, x)[0]
+    while fa < 0.0 and a > -700.0:
+        b, fb = a, fa
+        a -= 2.0
+        fa = _f(1, a, z, eps, x)[0]
+    return math.exp(_newton(1, a, b, fa, fb, z, eps, x))
 
 
 @nb.njit(**_JIT)
@@ -283,27 +288,27 @@ def _solve_dim(X, h, L, w, EA):
         if X == X_lift:  # exactly at lift-off: Eq. 37 with l_s = L
             return w * (L - h) * (L + h) / (2.0 * h), wl, 0.0, 2
         if X < X_lift:
-            _, H, V = _x_seabed(_seabed_root(x, z, 0.0, z, math.atanh(z)), z, 0.0)
+            _, H, V, _ = _seabed(_seabed_root(x, z, 0.0, z, math.atanh(z)), z, 0.0)
             return H * wl, V * wl, max(1.0 - V, 0.0) * L, 1
-        _, H, V = _x_suspended(_suspended_root(x, z, 0.0, math.atanh(z)), z, 0.0)
+        _, H, V, _ = _suspended(_suspended_root(x, z, 0.0, math.atanh(z)), z, 0.0)
         return H * wl, V * wl, 0.0, 2
     if h == 0.0:  # flat on the seabed and stretched
         return EA * (x - 1.0), 0.0, L, 3
     d = z - 0.5 * eps  # tanh of the half angle range at lift-off
     if 0.0 < d < 1.0:
         u_lift = math.atanh(d)
-        x_lift = _x_suspended(u_lift, z, eps)[0]
+        x_lift = _suspended(u_lift, z, eps)[0]
     else:
         u_lift = _U_CAP
         x_lift = inf if d <= 0.0 else 0.0
     if x < x_lift:
-        _, H, V = _x_seabed(_seabed_root(x, z, eps, d, u_lift), z, eps)
+        _, H, V, _ = _seabed(_seabed_root(x, z, eps, d, u_lift), z, eps)
         return H * wl, V * wl, max(1.0 - V, 0.0) * L, (3 if taut else 1)
     if d >= 1.0:  # hangs clear of the seabed at any X; X -> 0 as tanh m -> 1
         u_max = min(math.atanh(min(0.5 * eps / (z - 1.0), 1.0)), _U_CAP)
     else:
         u_max = u_lift
-    _, H, V = _x_suspended(_suspended_root(x, z, eps, u_max), z, eps)
+    _, H, V, _ = _suspended(_suspended_root(x, z, eps, u_max), z, eps)
     return H * wl, V * wl, 0.0, (3 if taut else 2)
 
 
@@ -398,7 +403,7 @@ def solve(X, h, L, w, EA=None) -> LineSolution:
         return _solve_array(X, h, L, w, EA)
     if err:
         raise _input_error(err, (X, h, L, w, EA)[err - 1], "catenary line")
-    return LineSolution(H, V, td, _STATES[state])
+    return _new_tuple(LineSolution, (H, V, td, _STATES[state]))
 
 
 def _solve_array(X, h, L, w, EA) -> LineSolution:
