@@ -5,50 +5,54 @@ mooring model (:class:`SPHCableMooring`, the ``cosim.protocol.Mooring`` interfac
 Equations (``000_7d114ab96e048b26.txt`` Eq. 1-12) and how they are read here
 -----------------------------------------------------------------------------
 The cable is a 1-D continuum: the cross-section is integrated out, so density is the
-line density ``lam = rho A`` [kg/m] and stress is the tension ``T = sigma A`` [N]; the
-kernel is the 1-D Wendland C2 kernel (support 2h) of the *arc distance* ``xi`` between
-particles measured along the current cable (sum of the segment lengths between them).
-The seed evaluates kernels on the straight-line distance; along a bent cable that
-distance shortens without any stretch, which the continuity equation would read as
-compression (at the 0.4 rad kink of Case 1 the chord across it is 2 % short, ten times
-the real strain). The arc distance is the cable's own 1-D coordinate and is objective:
-rigid motion and pure bending leave it unchanged.
+line density ``lam = rho A`` [kg/m] and stress is the tension ``T = sigma A`` [N]. The
+Wendland C2 kernel (000 Section 2, support 2h) is taken with h = ds in the cable's own
+1-D coordinate, the unstretched arc length ``s`` (total-Lagrangian SPH), so every SPH
+sum runs over a particle's two neighbours. Why each choice (all measured on seed 000
+Case 1 and Experiment 2 while building this):
 
-* Continuity, Eq. 1-4. ``dlam_a/dt = -lam_a D_a + 0.1 h c0 sum_b V_b psi_ab dW_ab``
-  with ``D_a = L_a sum_b V_b (dxi_ab/dt / xi_ab) xi_ab |W'_ab|`` and the renormalisation
-  of Eq. 4 in 1-D, ``L_a = [sum_b V_b xi_ab |W'_ab|]^-1`` (Eq. 4 as printed is a 2x2/3x3
-  matrix, singular for particles on a line; its 1-D form is this scalar). ``D_a`` is exact
-  for any uniform stretch. Over one step it is integrated exactly:
-  ``lam <- lam exp(-sum w ln(xi^{n+1}/xi^n))``, so a uniformly stretched cable has exactly
-  ``lam = lam0 / (1 + strain)``. Kernels and weights are taken in the reference
-  (unstretched) configuration, total-Lagrangian SPH: on the current distance the pair
-  force grows as neighbours approach in tension (|W'| peaks at q = 2/3), the SPH tensile
-  instability, which we saw grow at ~10/s in a hanging cable. With fixed weights the
-  increments telescope: ``lam_a = lam0 exp(-sum_b w_ab ln(xi_ab/xi0_ab))``, a function of
-  the current geometry alone.
-  The δ-SPH term (Eq. 1-3, psi_ab in 1-D with the renormalised gradient of Eq. 3) is
-  implemented (``delta``) but off by default: it diffuses density independently of the
-  positions, which in a solid is creep -- it erases the tension gradient a hanging cable
-  needs in a diffusion time h/(delta c0) (10 ms in seed 000 Case 1, where delta = 0.1
-  made the sag grow without bound). The density noise it is meant to remove in a fluid
-  cannot arise here, since the density follows the geometry exactly.
+- Kernel on the current straight-line distance (as the seed does): the pair force grows
+  as neighbours approach in tension (|W'| peaks at q = 2/3), the SPH tensile
+  instability; a hanging cable blew up at ~10/s. Across a bend the chord also shortens
+  without stretch (2 % across the 0.4 rad kink of Case 1, ten times the real strain),
+  which the continuity equation reads as compression.
+- Wider supports (h > ds) smear a point-load kink over 2h: the corner is cut by
+  ~theta·h/8, 0.05-0.1 m at the seed's 312 particles, against a 0.028 m tolerance.
+
+* Continuity, Eq. 1-4 (particles). In 1-D the velocity divergence is d ln(l)/dt of the
+  neighbouring segments; Eq. 4's renormalisation (a 2x2/3x3 matrix as printed, singular
+  for particles on a line) is in 1-D the scalar that makes the weights ``wl, wr`` of the
+  two neighbours sum to 1 (they are the half-segment shares, which is the Wendland sum
+  on a uniform spacing and stays exact where ``nodes_at`` changes it). Integrated
+  exactly over a step, ``lam <- lam exp(-(wl ln(l'/l)_left + wr ln(l'/l)_right))``, so
+  ``lam`` is a function of the current geometry: a uniform stretch gives exactly
+  ``lam = lam0/(1 + strain)``. The δ-SPH term (Eq. 1-3, psi_ab with the renormalised
+  gradient of Eq. 3) is implemented (``delta``) but off by default: it diffuses density
+  independently of the positions, which in a solid is creep -- it erases the tension
+  gradient a hanging cable needs within h/(delta c0) (10 ms in Case 1, where
+  delta = 0.1 made the sag grow without bound while the kernel read the particle
+  density). The density noise it removes in a fluid does not arise here.
 * Stress, Eq. 6-9. In the cable's local frame only the axial component exists. Summing
-  Eq. 7 (pressure, bulk modulus K) and Eq. 8 (deviator, ``2/3 E D``) along the axis gives
-  ``dsigma/dt = (K + 2E/3) D``, which is Hooke's law of a cable (``E D``, uniaxial stress,
-  free lateral contraction) only for one particular K; the physics requires
+  Eq. 7 (pressure, bulk modulus K) and Eq. 8 (deviator, ``2/3 E D``) along the axis
+  gives ``dsigma/dt = (K + 2E/3) D``, Hooke's law of a cable only for one particular K;
+  the physics (uniaxial stress, free lateral contraction) requires
   ``dsigma/dt = E D_ss``. With ``D = -dln(lam)/dt`` this integrates to
-  ``sigma = E (lam0/lam - 1)`` (engineering strain on the unstretched length, the
+  ``sigma = E (lam0/lam - 1)``, engineering strain on the unstretched length (the
   convention of the elastic catenary and of ``MooringLine.EA``); tension only:
   ``T = EA max(0, lam0/lam - 1)`` -- a compressed cable carries no force.
-* Momentum, Eq. 5. The stress tensor reduced to the axis is ``T e (x) e``; for a pair the
-  axis is the chord ``e_ab``, so the pair term is central:
-  ``m_a dv_a/dt = sum_b mk_a mk_b (T_a L_a/lam_a^2 + T_b L_b/lam_b^2 - Pi_ab) |W'_ab| e_ab``
-  (``e_ab`` from a to b). Eq. 5's indices read ``sigma^ij ... dW/dx^j``; with ``T e e``
-  that is ``T e (e . grad W)`` = ``T |W'| e`` for nearest neighbours. The pair form is
-  antisymmetric: linear and angular momentum are conserved. With the renormalisation a
-  uniformly stressed cable gets pair forces exactly equal to T (any kernel, any h).
-  The end particles are mirrored (a ghost segment beyond the end) in the kernel sums,
-  so the force between an end and its neighbour is ``(T_a + T_b)/2`` as in the interior.
+  The stress is evaluated at *stress points* midway between neighbouring particles
+  (Dyka & Ingel 1995; Randles & Libersky 2000), where the same continuity gives
+  ``lam_k = lam0 ds_k/l_k`` exactly, so ``T_k = EA max(0, l_k/ds_k - 1)``. Stress at the
+  particles themselves averages the two neighbouring segment strains into the pair
+  force, ``(eps_{k-1} + 2 eps_k + eps_{k+1})/4``, which is blind to an alternating strain
+  pattern (a zero-energy mode): in Case 1 it left a 2 mm, resolution-independent error in
+  the horizontal displacement of L. The particle tension reported is the renormalised
+  mean of its two stress points.
+* Momentum, Eq. 5. The stress tensor reduced to the axis is ``T e (x) e``; contracted
+  with the kernel gradient of a pair (Eq. 5's ``sigma^ij dW/dx^j``) it is the tension
+  along the pair's chord ``e_ab``: ``m_a dv_a/dt = T_k e_k - T_{k-1} e_{k-1} - (viscous)
+  + weight + loads``. Pair forces are central and antisymmetric: linear and angular
+  momentum are conserved; a uniformly stretched cable is in exact equilibrium.
 * Artificial viscosity, Eq. 10-11: ``Pi = (phi mu^2 - varphi mu c0)/lam_ab``,
   ``mu = h v_ab.r_ab/(r^2 + 0.001 h^2)`` for approaching pairs, phi = 0.2, varphi = 1,
   ``c0 = sqrt(E/rho) = sqrt(EA/mass_per_length)``. Eq. 5 prints ``+pi_ab``; with the
@@ -169,8 +173,6 @@ class SPHCable:
         inextensible catenary through the ends (a straight line if taut). The initial
         line density follows the initial segment stretch, so a stretched start is stressed.
     nodes_at : material coordinates [m] that must be nodes (point loads, probes).
-    h_factor : smoothing length h over the largest unstretched spacing [-] (0.75-3;
-        1 keeps the kernel on the nearest neighbours, which represents kinks at nodes).
     cfl : Courant number on the axial wave speed sqrt(EA/mass_per_length) [-].
     omega : mass-proportional damping rate of 000 Eq. 12 [1/s].
     visc_alpha, visc_beta : artificial viscosity coefficients varphi, phi of 000 Eq. 10 [-].
@@ -184,7 +186,7 @@ class SPHCable:
     """
 
     def __init__(self, length, n_particles, EA, mass_per_length, end_a, end_b, weight_per_length=None,
-                 free_end=None, positions=None, nodes_at=(), h_factor=1.0, cfl=0.4, omega=0.04,
+                 free_end=None, positions=None, nodes_at=(), cfl=0.4, omega=0.04,
                  visc_alpha=1.0, visc_beta=0.2, delta=0.0, max_strain=0.1, seabed_z=None,
                  gravity=G_STANDARD, name="cable"):
         self.name = name
@@ -211,9 +213,6 @@ class SPHCable:
         self.cfl = pos(cfl, "cfl", "-")
         if self.cfl > 1.0:
             raise InputError(f"{lab}: cfl = {cfl}; use a Courant number <= 1 (0.4 is the default)")
-        self.h_factor = pos(h_factor, "h_factor", "-")
-        if not 0.75 <= self.h_factor <= 3.0:
-            raise InputError(f"{lab}: h_factor = {h_factor}; it must lie in [0.75, 3]")
         if omega is None or not math.isfinite(float(omega)) or float(omega) < 0:
             raise InputError(f"{lab}: omega = {omega!r} 1/s; the damping rate must be >= 0")
         self.omega = float(omega)
@@ -247,8 +246,14 @@ class SPHCable:
         self.s = material_coordinates(self.length, int(n_particles), nodes_at)
         n = self.n = self.s.size
         ds = np.diff(self.s)
-        self.h = self.h_factor * float(ds.max())
-        self.K = int(math.ceil(2.0 * self.h / ds.min()))
+        self.ds = np.ascontiguousarray(ds)
+        # renormalised (000 Eq. 4) neighbour weights: the half-segment shares, mirrored ends
+        self._wl = np.zeros(n)
+        self._wr = np.zeros(n)
+        self._wl[1:-1] = ds[:-1] / (ds[:-1] + ds[1:])
+        self._wr[1:-1] = ds[1:] / (ds[:-1] + ds[1:])
+        self._wr[0] = 1.0
+        self._wl[-1] = 1.0
         self.c0 = math.sqrt(self.EA / self.mass_per_length)
         # masses: inertial (half segments at the ends), kernel (mirrored: full at the ends)
         half = np.zeros(n)
@@ -397,8 +402,8 @@ class SPHCable:
             raise InputError(f"SPH cable '{self.name}': dt = {dt!r} s must be > 0")
         n_sub = max(1, int(math.ceil(dt / self.stable_dt() - 1e-9)))
         status, step, part = _k.advance(
-            self.x, self.v, self.lam, self.s, float(t), float(t + dt), n_sub, self.m, self.mk, self.lam0, self.EA,
-            self.c0, self.h, self.K, self.delta, self.visc_alpha, self.visc_beta, self.omega, self.fext,
+            self.x, self.v, self.lam, self.ds, float(t), float(t + dt), n_sub, self.m, self.mk, self.lam0, self.EA,
+            self.c0, self.delta, self.visc_alpha, self.visc_beta, self.omega, self.fext, self._wl, self._wr,
             self._free, self._pidx, self._p0, self._v0, self._p1, self._v1, self._amp, self._om, self._ton,
             self._toff, self.seabed_z, self._fend_mean, self._fend_last, self._tension)
         if status != _k.OK:
@@ -472,7 +477,7 @@ class SPHCableMooring:
     lines : the mooring lines.
     n_particles : SPH particles per line (ends included).
     seabed : keep particles above the seabed plane through each anchor (no penetration).
-    **cable_options : passed to :class:`SPHCable` (``omega`` [1/s], ``cfl``, ``h_factor``, ...).
+    **cable_options : passed to :class:`SPHCable` (``omega`` [1/s], ``cfl``, ...).
     """
 
     def __init__(self, lines: list[MooringLine], n_particles: int = 40, seabed: bool = True, name="sph_cable",

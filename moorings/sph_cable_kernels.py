@@ -5,11 +5,13 @@ derivations of the seed's ambiguous equations and the units are documented in
 :mod:`moorings.sph_cable`. One call of :func:`advance` runs the whole sub-cycling
 loop from ``t0`` to ``t1`` inside compiled code.
 
-Notation (1-D cable embedded in 2-D or 3-D, cross-section integrated):
-``lam`` line density [kg/m], ``T`` axial tension [N], ``mk`` kernel mass of a
-particle [kg] (its full segment, also at the ends), ``m`` inertial mass [kg] (half a
-segment at the ends, plus point masses), arc distance ``xi`` [m] along the current
-(stretched) cable, 1-D Wendland C2 kernel with support ``2h``.
+Notation (1-D cable embedded in 2-D or 3-D, cross-section integrated): particle ``a``
+has line density ``lam`` [kg/m], tension ``T`` [N], kernel mass ``mk`` [kg] (its full
+segment, mirrored at the ends) and inertial mass ``m`` [kg]; segment ``k`` joins
+particles ``k`` and ``k+1`` and has unstretched length ``ds[k]`` [m]. The Wendland C2
+kernel with support 2h, h = ds, reaches the two neighbours of each particle, so every
+SPH sum runs over the two segments next to a particle; ``wl``/``wr`` are the
+renormalised (000 Eq. 4) weights of its left and right neighbour (they sum to 1).
 """
 
 from __future__ import annotations
@@ -27,108 +29,82 @@ OK = 0
 NONFINITE = 1
 COLLAPSED = 2
 
-
-@njit(cache=True, fastmath=_FM, error_model="numpy", inline="always")
-def dw_abs(xi, h):
-    """|dW/dxi| [1/m²] of the 1-D Wendland C2 kernel W = 5/(8h) (1-q/2)^3 (1+3q/2),
-    q = xi/h, support 2h (000_7d114ab96e048b26.txt, Section 2: Wendland C2, support 2h).
-    Branch-free: zero beyond the support."""
-    q = xi / h
-    t = max(0.0, 1.0 - 0.5 * q)
-    return 15.0 / (8.0 * h * h) * q * t * t
+#: |dW/dr| h^2 of the 1-D Wendland C2 kernel W = 5/(8h) (1-q/2)^3 (1+3q/2) at q = 1
+DW1 = 15.0 / 32.0
 
 
 @njit(cache=True, fastmath=_FM, error_model="numpy")
-def arc_coordinates(x, S):
-    """Cumulative current arc length S[a] [m] of the polyline through the particles."""
+def segments(x, e, ell):
+    """Unit vectors ``e`` (n-1, dim) from particle k to k+1 and segment lengths ``ell`` [m]."""
     n, dim = x.shape
-    S[0] = 0.0
     for k in range(n - 1):
         r2 = 0.0
         for d in range(dim):
             dx = x[k + 1, d] - x[k, d]
+            e[k, d] = dx
             r2 += dx * dx
-        S[k + 1] = S[k] + math.sqrt(r2)
+        r = math.sqrt(r2)
+        ell[k] = r
+        inv = 1.0 / (r + 1e-300)
+        for d in range(dim):
+            e[k, d] *= inv
 
 
 @njit(cache=True, fastmath=_FM, error_model="numpy")
-def renormalisation(s, mk, lam0, h, K, Bn, Bn1):
-    """The 1-D renormalisation factor of 000 Eq. 4 in the reference configuration:
-    ``Bn1[a] = 1/sum_b V0_b |s_ab| |W'(s_ab)|`` (one-sided at the ends) and ``Bn`` the same
-    with the end particles mirrored (their sum doubled). Constant in time (total Lagrangian)."""
-    n = s.shape[0]
-    for a in range(n):
-        B = 0.0
-        for b in range(max(0, a - K), min(n, a + K + 1)):
-            if b != a:
-                xi0 = abs(s[b] - s[a])
-                B += mk[b] / lam0[b] * xi0 * dw_abs(xi0, h)
-        Bn1[a] = 1.0 / B if B > 0.0 else 0.0
-        if a == 0 or a == n - 1:
-            B *= 2.0
-        Bn[a] = 1.0 / B if B > 0.0 else 0.0
+def forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, wl, wr,
+           e, ell, T, fseg, Tseg, grad, F, acc, dlam_diff):
+    """Internal forces ``F`` [N], accelerations ``acc`` [m/s²], particle tension ``T`` [N]
+    (renormalised mean of the two stress points), segment force ``fseg`` [N] and δ-SPH
+    diffusion ``dlam_diff`` [kg/(m s)] of the state; ``e``/``ell`` must hold the segments of
+    ``x``; ``Tseg`` (n-1,) gets the stress-point tensions [N].
 
-
-@njit(cache=True, fastmath=_FM, error_model="numpy")
-def forces(x, v, lam, s, m, mk, lam0, EA, c0, h, K, delta, alpha, beta, omega, fext,
-           Bn, Bn1, T, grad, F, acc, dlam_diff):
-    """Internal pair forces ``F`` [N], accelerations ``acc`` [m/s²], the tension ``T`` [N]
-    (000 Eq. 6-9 in 1-D, tension only) and the δ-SPH density diffusion ``dlam_diff``
-    [kg/(m s)] (000 Eq. 1-3) of the current state. Kernels are evaluated on the material
-    distance ``|s_a - s_b|`` (total Lagrangian); directions on the current chords."""
+    - 000 Eq. 6-9 on the axis, at the stress point midway between neighbours:
+      ``T_k = EA max(0, l_k/ds_k - 1)``.
+    - 000 Eq. 5: the pair term of neighbours a, b is the stress-point tension along the chord.
+    - 000 Eq. 10-11: ``Pi_ab`` with mu from the chord; pair force ``mk_a mk_b Pi |W'|``.
+    - 000 Eq. 12 as mass-proportional damping ``-omega v``.
+    """
     n, dim = x.shape
-    # pass 1: tension and renormalised density gradient (000 Eq. 3)
+    # renormalised density gradient (000 Eq. 3) for the δ-SPH term
     for a in range(n):
-        G = 0.0
-        for b in range(max(0, a - K), min(n, a + K + 1)):
-            if b != a:
-                xi0 = abs(s[b] - s[a])
-                sgn = 1.0 if b > a else -1.0
-                G += mk[b] / lam0[b] * (lam[b] - lam[a]) * dw_abs(xi0, h) * sgn
-        grad[a] = G * Bn1[a]
-        # 000 Eq. 6-9 reduced to the axis: sigma = E (rho0/rho - 1), tension only
-        T[a] = EA * max(0.0, lam0[a] / lam[a] - 1.0)
-    # pass 2: momentum (000 Eq. 5, 10-12) and δ-SPH diffusion (000 Eq. 1-2); gather only
+        g = 0.0
+        if a > 0:
+            g += wl[a] * (lam[a] - lam[a - 1]) / ds[a - 1]
+        if a < n - 1:
+            g += wr[a] * (lam[a + 1] - lam[a]) / ds[a]
+        grad[a] = g
+    for k in range(n - 1):
+        # stress point of segment k: its own continuity gives lam_k = lam0 ds/l exactly, so
+        # 000 Eq. 6-9 on the axis read T_k = EA max(0, l/ds - 1) (tension only)
+        Tk = EA * max(0.0, ell[k] / ds[k] - 1.0)
+        h = ds[k]
+        vr = 0.0
+        for d in range(dim):
+            vr += (v[k, d] - v[k + 1, d]) * e[k, d]
+        vr *= -ell[k]  # v_ab . r_ab with a = k, b = k+1, r_ab = x_k - x_{k+1}
+        mu = h * min(vr, 0.0) / (ell[k] * ell[k] + 0.001 * h * h)
+        pi_ab = (beta * mu * mu - alpha * mu * c0) / (0.5 * (lam[k] + lam[k + 1]))
+        fseg[k] = Tk - mk[k] * mk[k + 1] * pi_ab * DW1 / (h * h)
+        Tseg[k] = Tk
     for a in range(n):
-        fa0 = 0.0
-        fa1 = 0.0
-        fa2 = 0.0
+        T[a] = (wl[a] * Tseg[a - 1] if a > 0 else 0.0) + (wr[a] * Tseg[a] if a < n - 1 else 0.0)
+    for a in range(n):
+        fl = fseg[a - 1] if a > 0 else 0.0
+        fr = fseg[a] if a < n - 1 else 0.0
         dd = 0.0
-        Pa = T[a] * Bn[a] / (lam0[a] * lam0[a])
-        for b in range(max(0, a - K), min(n, a + K + 1)):
-            if b == a:
-                continue
-            xi0 = abs(s[b] - s[a])
-            sgn = 1.0 if b > a else -1.0
-            w = dw_abs(xi0, h)
-            # chord b - a and v_ab . r_ab (r_ab = x_a - x_b)
-            r2 = 0.0
-            vr = 0.0
-            for d in range(dim):
-                dx = x[b, d] - x[a, d]
-                r2 += dx * dx
-                vr -= (v[a, d] - v[b, d]) * dx
-            rn = math.sqrt(r2) + 1e-12 * h
-            # 000 Eq. 10-11 (Monaghan viscosity, only for approaching particles)
-            mu = h * min(vr, 0.0) / (r2 + 0.001 * h * h)
-            pi_ab = (beta * mu * mu - alpha * mu * c0) / (0.5 * (lam[a] + lam[b]))
-            Pb = T[b] * Bn[b] / (lam0[b] * lam0[b])
-            coef = mk[a] * mk[b] * (Pa + Pb - pi_ab) * w / rn
-            fa0 += coef * (x[b, 0] - x[a, 0])
-            fa1 += coef * (x[b, 1] - x[a, 1])
-            if dim == 3:
-                fa2 += coef * (x[b, 2] - x[a, 2])
-            # δ-SPH (000 Eq. 1-2 in 1-D): psi_ab . grad_a W_ab
-            psi = 2.0 * (lam[b] - lam[a]) / xi0 - (grad[a] + grad[b]) * sgn
-            dd += mk[b] / lam0[b] * psi * w
-        F[a, 0] = fa0
-        F[a, 1] = fa1
-        if dim == 3:
-            F[a, 2] = fa2
-        dlam_diff[a] = delta * h * c0 * dd
+        # δ-SPH (000 Eq. 1-2): sum_b V_b psi_ab . grad W_ab, with V_b |W'| ds = weight
+        if a > 0:
+            psi = 2.0 * (lam[a - 1] - lam[a]) / ds[a - 1] + (grad[a] + grad[a - 1])
+            dd += wl[a] * psi / ds[a - 1]
+        if a < n - 1:
+            psi = 2.0 * (lam[a + 1] - lam[a]) / ds[a] - (grad[a] + grad[a + 1])
+            dd += wr[a] * psi / ds[a]
+        dlam_diff[a] = delta * ds[min(a, n - 2)] * c0 * dd
         inv_m = 1.0 / m[a]
         for d in range(dim):
-            # 000 Eq. 12 read as mass-proportional (Rayleigh) damping: f = -omega m v
+            el = e[a - 1, d] if a > 0 else 0.0
+            er = e[a, d] if a < n - 1 else 0.0
+            F[a, d] = fr * er - fl * el
             acc[a, d] = (F[a, d] + fext[a, d]) * inv_m - omega * v[a, d]
 
 
@@ -160,15 +136,15 @@ def prescribed_state(t, t0, t1, p0, v0, p1, v1, amp, om, t_on, t_off, pos, vel, 
 
 
 @njit(cache=True, fastmath=_FM, error_model="numpy")
-def advance(x, v, lam, s, t0, t1, n_sub, m, mk, lam0, EA, c0, h, K, delta, alpha, beta, omega, fext,
+def advance(x, v, lam, ds, t0, t1, n_sub, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, wl, wr,
             free, pidx, p0, v0, p1, v1, amp, om, t_on, t_off, seabed_z, fend_mean, fend_last, tension):
     """Leap-frog from ``t0`` to ``t1`` [s] in ``n_sub`` equal sub-steps (000 Section 2).
 
     Per sub-step: forces at (x^n, v^n, lam^n); kick v^{n+1} = v^n + dt a^n (free particles);
     drift x^{n+1} = x^n + dt v^{n+1}; prescribed particles placed at t^{n+1}; continuity
     (000 Eq. 1) integrated exactly over the step: lam^{n+1} = lam^n exp(-D dt) + dt·δ-term,
-    with D dt the kernel-weighted mean of ln(xi^{n+1}/xi^n) (in 1-D the velocity divergence
-    is d ln(xi)/dt). Returns (status, step, particle); status 0 is success.
+    with D dt = wl ln(l^{n+1}/l^n)_left + wr ln(l^{n+1}/l^n)_right (in 1-D the velocity
+    divergence is d ln(l)/dt). Returns (status, step, particle); status 0 is success.
 
     ``seabed_z`` [m]: free particles are kept at or above this height (no penetration: the
     position is projected onto the seabed and a downward velocity removed); ``-inf`` for none.
@@ -179,12 +155,13 @@ def advance(x, v, lam, s, t0, t1, n_sub, m, mk, lam0, EA, c0, h, K, delta, alpha
     n, dim = x.shape
     npr = pidx.shape[0]
     dt = (t1 - t0) / n_sub
-    S = np.empty(n)
-    S1 = np.empty(n)
-    Bn = np.empty(n)
-    Bn1 = np.empty(n)
-    renormalisation(s, mk, lam0, h, K, Bn, Bn1)
+    e = np.empty((n - 1, dim))
+    ell = np.empty(n - 1)
+    ell1 = np.empty(n - 1)
+    lnr = np.empty(n - 1)
+    Tseg = np.empty(n - 1)
     T = np.empty(n)
+    fseg = np.empty(n - 1)
     grad = np.empty(n)
     F = np.empty((n, dim))
     acc = np.empty((n, dim))
@@ -200,10 +177,11 @@ def advance(x, v, lam, s, t0, t1, n_sub, m, mk, lam0, EA, c0, h, K, delta, alpha
         for d in range(dim):
             x[pidx[i], d] = ppos[i, d]
             v[pidx[i], d] = pvel[i, d]
-    arc_coordinates(x, S)
+    segments(x, e, ell)
     for step in range(n_sub):
         t = t0 + step * dt
-        forces(x, v, lam, s, m, mk, lam0, EA, c0, h, K, delta, alpha, beta, omega, fext, Bn, Bn1, T, grad, F, acc, dld)
+        forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, wl, wr,
+               e, ell, T, fseg, Tseg, grad, F, acc, dld)
         if step > 0:
             prescribed_state(t, t0, t1, p0, v0, p1, v1, amp, om, t_on, t_off, ppos, pvel, pacc)
         for i in range(npr):
@@ -228,32 +206,25 @@ def advance(x, v, lam, s, t0, t1, n_sub, m, mk, lam0, EA, c0, h, K, delta, alpha
             for d in range(dim):
                 x[pidx[i], d] = ppos[i, d]
                 v[pidx[i], d] = pvel[i, d]
-        arc_coordinates(x, S1)
+        segments(x, e, ell1)
+        for k in range(n - 1):
+            lnr[k] = math.log(max(ell1[k], 1e-300) / max(ell[k], 1e-300))
+            ell[k] = ell1[k]
         # continuity, 000 Eq. 1, exact increment over the step
         for a in range(n):
-            b0 = max(0, a - K)
-            b1 = min(n, a + K + 1)
-            num = 0.0
-            den = 0.0
-            for b in range(b0, b1):
-                if b == a:
-                    continue
-                xi0 = abs(s[b] - s[a])
-                xi = max(abs(S[b] - S[a]), 1e-12 * h)
-                xi1 = max(abs(S1[b] - S1[a]), 1e-12 * h)
-                wgt = mk[b] / lam0[b] * xi0 * dw_abs(xi0, h)
-                num += wgt * math.log(xi1 / xi)
-                den += wgt
-            Ddt = num / den if den > 0.0 else 0.0
+            Ddt = 0.0
+            if a > 0:
+                Ddt += wl[a] * lnr[a - 1]
+            if a < n - 1:
+                Ddt += wr[a] * lnr[a]
             lam[a] = lam[a] * math.exp(-Ddt) + dt * dld[a]
             if not lam[a] > 0.0:
                 return COLLAPSED, step, a
-        for a in range(n):
-            S[a] = S1[a]
     for i in range(npr):
         for d in range(dim):
             fend_mean[i, d] /= n_sub
-    forces(x, v, lam, s, m, mk, lam0, EA, c0, h, K, delta, alpha, beta, omega, fext, Bn, Bn1, T, grad, F, acc, dld)
+    forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, wl, wr,
+           e, ell, T, fseg, Tseg, grad, F, acc, dld)
     prescribed_state(t1, t0, t1, p0, v0, p1, v1, amp, om, t_on, t_off, ppos, pvel, pacc)
     for i in range(npr):
         a = pidx[i]

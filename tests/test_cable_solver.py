@@ -167,7 +167,7 @@ def test_bad_input_is_rejected_before_any_work():
     ok = dict(length=1.0, n_particles=11, EA=1e4, mass_per_length=0.1, end_a=(0, 0), end_b=(0.9, 0))
     for key, bad, word in [("n_particles", 0, "n_particles"), ("n_particles", 2, "at least 3"),
                            ("EA", 0.0, "EA"), ("EA", -1.0, "EA"), ("mass_per_length", 0.0, "mass_per_length"),
-                           ("end_b", (1.2, 0), "supports"), ("cfl", 2.0, "cfl"), ("h_factor", 0.3, "h_factor")]:
+                           ("end_b", (1.2, 0), "supports"), ("cfl", 2.0, "cfl")]:
         with pytest.raises(InputError, match=word):
             SPHCable(**{**ok, key: bad})
     with pytest.raises(InputError, match="nodes_at"):
