@@ -1,0 +1,374 @@
+"""The SPH fluid as a co-simulation participant (structurally a
+``cosim.protocol.Participant``; this package never imports the coupler).
+
+One :class:`FluidConfig` holds every setting with its unit and default and is validated on
+construction. :class:`Fluid` owns a :class:`~fluid.particles.ParticleSet`, keeps it sorted
+by cell, steps it with the symplectic scheme of :mod:`fluid.integrator` and sub-cycles
+inside :meth:`Fluid.advance` to reach the coupler's time exactly.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from cosim.errors import InputError, InstabilityError
+from fluid import equations as eq
+from fluid.integrator import StepLimit, corrector, first_non_finite, predictor, stable_dt
+from fluid.kernels import alpha_d, kernel_id
+from fluid.neighbours import Grid, sort_by_cell
+from fluid.particles import Kind, ParticleSet
+
+log = logging.getLogger(__name__)
+
+
+def _bad(what: str, fix: str):
+    return InputError(f"FluidConfig: {what}; {fix}")
+
+
+@dataclass(frozen=True)
+class FluidConfig:
+    """Every setting of the SPH fluid, with its unit. Validated on construction."""
+
+    #: 2 (runs in the x-z plane) or 3
+    dim: int = 2
+    #: particle spacing dx [m]
+    dx: float = 0.01
+    #: reference density rho0 [kg/m^3]
+    rho0: float = 1000.0
+    #: smoothing length h = h_coef * dx [-] (sqrt(2): DualSPHysics' 2-D default, coefh = 1)
+    h_coef: float = math.sqrt(2.0)
+    #: "wendland" (C2) or "cubic"
+    kernel: str = "wendland"
+    #: speed of sound c0 [m/s]; if None it is c0_factor * u_max
+    c0: float | None = None
+    #: expected maximum flow speed [m/s], used when c0 is None
+    u_max: float | None = None
+    #: c0 / u_max [-], at least 10 (004_1657bd4a51d29840.txt §2.5, Monaghan 1994)
+    c0_factor: float = 10.0
+    #: Tait polytropic exponent gamma [-] (004_1657bd4a51d29840.txt Eq. 8)
+    gamma: float = 7.0
+    #: artificial viscosity alpha [-] (001_14936b82710365b2.txt Eq. 6; 0.01 as in 003)
+    alpha: float = 0.01
+    #: density diffusion: "fourtakas" (default, see fluid.equations), "molteni" or "none"
+    diffusion: str = "fourtakas"
+    #: density diffusion coefficient delta [-] (000_7d114ab96e048b26.txt Eq. 1 uses 0.1)
+    delta: float = 0.1
+    #: gravitational acceleration g [m/s^2], acting along -z
+    g: float = 9.81
+    #: CFL factor of the variable time step [-] (001_14936b82710365b2.txt Eq. 14)
+    cfl: float = 0.2
+    #: upper bound of the fluid step [s]
+    dt_max: float = math.inf
+    #: domain box [m]; particles leaving it are removed and counted. None: the box of the
+    #: initial particles grown by max(10 % of its size, 4 h) on every side
+    domain_lo: tuple | None = None
+    domain_hi: tuple | None = None
+    #: participant name
+    name: str = "fluid"
+
+    def __post_init__(self):
+        num = lambda v: isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
+        if self.dim not in (2, 3):
+            raise _bad(f"dim={self.dim!r}", "use 2 (x-z plane) or 3")
+        if not num(self.dx) or self.dx <= 0:
+            raise _bad(f"dx={self.dx!r} m", "give the particle spacing as a positive number of metres")
+        if not num(self.rho0) or self.rho0 <= 0:
+            raise _bad(f"rho0={self.rho0!r} kg/m^3", "give a positive reference density (1000 for water)")
+        if not num(self.h_coef) or not 1.0 <= self.h_coef <= 3.0:
+            raise _bad(f"h_coef={self.h_coef!r}", "use 1.0 ... 3.0 (h = h_coef * dx; 1.2 ... 2 is usual)")
+        kernel_id(self.kernel)
+        if (self.c0 is None) == (self.u_max is None):
+            raise _bad("give exactly one of c0 [m/s] and u_max [m/s]",
+                       "set c0, or set u_max (the expected maximum flow speed) and let c0 = c0_factor*u_max")
+        if self.c0 is not None and (not num(self.c0) or self.c0 <= 0):
+            raise _bad(f"c0={self.c0!r} m/s", "give a positive speed of sound")
+        if self.u_max is not None and (not num(self.u_max) or self.u_max <= 0):
+            raise _bad(f"u_max={self.u_max!r} m/s", "give a positive expected maximum speed, e.g. sqrt(2 g H)")
+        if not num(self.c0_factor) or self.c0_factor < 10:
+            raise _bad(f"c0_factor={self.c0_factor!r}",
+                       "use at least 10 so that density varies by less than 1 % (004 §2.5)")
+        if not num(self.gamma) or self.gamma < 1:
+            raise _bad(f"gamma={self.gamma!r}", "use a polytropic exponent >= 1 (7 for water)")
+        if not num(self.alpha) or not 0 <= self.alpha <= 1:
+            raise _bad(f"alpha={self.alpha!r}", "use an artificial viscosity in [0, 1] (0.01 ... 0.1 usual)")
+        if self.diffusion not in eq.DIFFUSION:
+            raise _bad(f"diffusion={self.diffusion!r}", f"choose one of {eq.DIFFUSION}")
+        if not num(self.delta) or not 0 <= self.delta <= 1:
+            raise _bad(f"delta={self.delta!r}", "use a density diffusion coefficient in [0, 1] (0.1 usual)")
+        if not num(self.g) or self.g < 0:
+            raise _bad(f"g={self.g!r} m/s^2", "give the magnitude of gravity (>= 0), it acts along -z")
+        if not num(self.cfl) or not 0 < self.cfl <= 0.4:
+            raise _bad(f"cfl={self.cfl!r}", "the stable range of this scheme is 0 < cfl <= 0.4 (0.2 default)")
+        if not (isinstance(self.dt_max, (int, float)) and self.dt_max > 0):
+            raise _bad(f"dt_max={self.dt_max!r} s", "give a positive upper bound or math.inf")
+        if (self.domain_lo is None) != (self.domain_hi is None):
+            raise _bad("only one domain corner given", "give both domain_lo and domain_hi, or neither")
+        if self.domain_lo is not None:
+            lo, hi = np.asarray(self.domain_lo, float), np.asarray(self.domain_hi, float)
+            if lo.shape != (self.dim,) or hi.shape != (self.dim,) or not (hi > lo).all():
+                raise _bad(f"domain {self.domain_lo} .. {self.domain_hi}",
+                           f"give two corners of {self.dim} components with hi > lo")
+
+    @property
+    def h(self) -> float:
+        """Smoothing length [m]."""
+        return self.h_coef * self.dx
+
+    @property
+    def speed_of_sound(self) -> float:
+        """c0 [m/s], given or c0_factor * u_max."""
+        return self.c0 if self.c0 is not None else self.c0_factor * self.u_max
+
+    @property
+    def gravity(self) -> np.ndarray:
+        """Gravity vector [m/s^2] of length dim, along -z."""
+        g = np.zeros(self.dim)
+        g[-1] = -self.g
+        return g
+
+
+@dataclass
+class _Counters:
+    steps: int = 0
+    removed: dict = field(default_factory=lambda: {k.name: 0 for k in Kind})
+    limiter: str = ""
+
+
+class Fluid:
+    """Weakly-compressible SPH fluid participant.
+
+    ``Fluid(config, particles)``; then ``initialize(t0)``, ``max_dt()``, ``advance(t, dt)``.
+    After :meth:`advance`, :meth:`group_loads` gives per boundary group the force and moment
+    the fluid exerted on it, averaged over the interval (impulse / dt).
+    """
+
+    def __init__(self, config: FluidConfig, particles: ParticleSet):
+        if not isinstance(config, FluidConfig):
+            raise InputError("Fluid needs a FluidConfig as its first argument")
+        particles.check()
+        if particles.dim != config.dim:
+            raise InputError(f"particles are {particles.dim}-D but the config says dim={config.dim}")
+        if particles.n == 0 or not (particles.kind == Kind.FLUID).any():
+            raise InputError("the particle set holds no fluid particle")
+        self.config = config
+        self.name = config.name
+        self.ps = particles.copy()
+        self.t = math.nan
+        self.counters = _Counters()
+        self.n_groups = int(particles.group.max()) + 1 if particles.group.max() >= 0 else 0
+        self.moment_points = np.zeros((self.n_groups, config.dim))
+        c = config
+        self._kernel = kernel_id(c.kernel)
+        self._prm = eq.params(c.h, alpha_d(self._kernel, c.dim, c.h), c.alpha, c.delta, c.diffusion,
+                              c.rho0, c.speed_of_sound, c.gravity)
+        self._grid = None
+        self._limit: StepLimit | None = None
+        self._loads = (np.zeros((self.n_groups, c.dim)), np.zeros((self.n_groups, 3 if c.dim == 3 else 1)))
+
+    # ------------------------------------------------------------------ protocol
+    def initialize(self, t0: float) -> None:
+        c = self.config
+        pos = self.ps.pos
+        if c.domain_lo is None:
+            lo, hi = pos.min(axis=0), pos.max(axis=0)
+            grow = np.maximum(0.1 * (hi - lo), 4 * c.h)
+            lo, hi = lo - grow, hi + grow
+        else:
+            lo, hi = np.asarray(c.domain_lo, float), np.asarray(c.domain_hi, float)
+        self._grid = Grid.covering(lo, hi, 2.0 * c.h)
+        out = ~np.all((pos >= lo) & (pos < hi), axis=1)
+        if out.any():
+            i = int(np.argmax(out))
+            raise InputError(f"particle {self.ps.ids[i]} at {pos[i]} lies outside the domain {lo} .. {hi} m; "
+                             "enlarge domain_lo/domain_hi")
+        self.t = float(t0)
+        self._aux = {k: np.empty_like(getattr(self.ps, k)) for k in ("pos", "vel", "rho")}
+        self._sort()
+        self._rates()
+        self._check_finite()
+        if not (self._limit.dt > 0 and math.isfinite(self._limit.dt)):
+            raise InputError(f"fluid: the initial state gives no finite stable step ({self._limit}); "
+                             "give the fluid gravity, motion or a dt_max")
+
+    def max_dt(self) -> float:
+        return self._limit.dt
+
+    @property
+    def limiter(self) -> str:
+        """Which condition limited the last step: force, courant_viscous, dt_max or coupling."""
+        return self.counters.limiter
+
+    def advance(self, t: float, dt: float) -> None:
+        if self._limit is None:
+            raise InputError("Fluid.advance called before initialize")
+        if not (dt > 0 and math.isfinite(dt)):
+            raise InputError(f"fluid: cannot advance by dt={dt} s")
+        if abs(t - self.t) > 1e-9 * max(1.0, abs(t)):
+            log.warning("fluid: coupler time %.12g s differs from the fluid's %.12g s; taking the coupler's", t, self.t)
+        t_end = t + dt
+        self.t = t
+        F = np.zeros_like(self._loads[0])
+        M = np.zeros_like(self._loads[1])
+        first = True
+        while True:
+            remaining = t_end - self.t
+            if remaining <= 1e-12 * max(1.0, abs(t_end)):
+                break
+            lim = self._limit
+            nsub = max(1, math.ceil(remaining / lim.dt * (1 - 1e-12)))
+            h = remaining / nsub
+            if first:  # the interval was cut into sub-steps by the stable step, or not
+                self.counters.limiter = lim.limiter if nsub > 1 else "coupling"
+                first = False
+            fk, mk = self.step(h)
+            F += fk * h
+            M += mk * h
+        self.t = t_end
+        self._loads = (F / dt, M / dt)
+
+    def save_state(self):
+        return {"ps": self.ps.copy(), "t": self.t, "steps": self.counters.steps,
+                "removed": dict(self.counters.removed)}
+
+    def load_state(self, state) -> None:
+        self.ps = state["ps"].copy()
+        self.t = state["t"]
+        self.counters.steps = state["steps"]
+        self.counters.removed = dict(state["removed"])
+        self._aux = {k: np.empty_like(getattr(self.ps, k)) for k in ("pos", "vel", "rho")}
+        self._sort()
+        self._rates()
+
+    # ------------------------------------------------------------------ outputs
+    def group_loads(self):
+        """(forces (G, dim) [N], moments [N m]) the fluid exerted on each boundary group over
+        the last advance, about ``moment_points[k]``; moments are (G, 1) about +y in 2-D
+        (``M_y = z F_x - x F_z``) and (G, 3) in 3-D."""
+        return self._loads
+
+    def group_forces_now(self):
+        """Force (G, dim) [N] and moment on each boundary group from the rates of the current
+        state (no time average)."""
+        return self._group_sums()
+
+    def fluid_force_from_groups(self):
+        """The force the boundary particles exert on the fluid at the current state (total
+        rate of fluid momentum minus gravity) [N]; equal and opposite to the sum of
+        :meth:`group_forces_now` (pair antisymmetry)."""
+        ps = self.ps
+        fl = ps.kind == Kind.FLUID
+        return (ps.mass[fl, None] * (self._acc[fl] - self.config.gravity)).sum(axis=0)
+
+    @property
+    def limit(self) -> StepLimit:
+        return self._limit
+
+    # ------------------------------------------------------------------ internals
+    def step(self, dt: float):
+        """One symplectic step of ``dt`` [s] from the current state (rates already known).
+        Returns the group forces and moments at the half step."""
+        c = self.config
+        ps, aux = self.ps, self._aux
+        predictor(ps.pos, ps.vel, ps.rho, self._drho, self._acc, ps.kind, c.rho0, dt,
+                  aux["pos"], aux["vel"], aux["rho"])
+        self._sort()
+        self._rates()
+        loads = self._group_sums()
+        ps, aux = self.ps, self._aux
+        corrector(ps.pos, ps.vel, ps.rho, self._drho, self._acc, ps.kind, c.rho0, dt,
+                  aux["pos"], aux["vel"], aux["rho"])
+        self.counters.steps += 1
+        self.t += dt
+        self._check_finite()
+        self._sort()
+        self._rates()
+        return loads
+
+    def _sort(self):
+        """Sort particles (and the saved n state) by cell; remove those outside the domain."""
+        ps = self.ps
+        perm, start, outside = sort_by_cell(ps.pos, self._grid)
+        n = ps.n - outside
+        if outside:
+            gone = perm[n:]
+            bad = ~(np.isfinite(ps.pos[gone]).all(axis=1) & np.isfinite(ps.vel[gone]).all(axis=1)
+                    & np.isfinite(ps.rho[gone]))
+            if bad.any():
+                self._raise_non_finite(int(gone[np.argmax(bad)]))
+            kinds, counts = np.unique(ps.kind[gone], return_counts=True)
+            for k, cnt in zip(kinds, counts):
+                self.counters.removed[Kind(k).name] += int(cnt)
+            log.warning("fluid: %d particles left the domain at t=%.6g s and were removed (total %s)",
+                        outside, self.t, self.counters.removed)
+            perm = perm[:n]
+            if not (ps.kind[perm] == Kind.FLUID).any():
+                raise InstabilityError(f"fluid: every fluid particle has left the domain by t={self.t:.6g} s")
+        ps.permute(perm)
+        for k in self._aux:
+            self._aux[k] = self._aux[k][perm]
+        self._start = start
+
+    def _rates(self):
+        c = self.config
+        ps = self.ps
+        n = ps.n
+        self._cs = np.empty(n)
+        eq.equation_of_state(ps.rho, c.rho0, c.speed_of_sound, c.gamma, ps.p, self._cs)
+        self._drho = np.empty(n)
+        self._acc = np.empty((n, c.dim))
+        visc = np.empty(n)
+        g = self._grid
+        eq.interact(ps.pos, ps.vel, ps.rho, ps.mass, ps.p, self._cs, ps.kind, self._start, g.lo,
+                    1.0 / g.cell, g.shape[0], g.shape[1], g.shape[2], self._kernel, self._prm,
+                    self._drho, self._acc, visc)
+        self._limit = stable_dt(self._acc, visc, self._cs, ps.kind, c.h, c.cfl, c.dt_max)
+
+    def _group_sums(self):
+        ps = self.ps
+        G = self.n_groups
+        dim = self.config.dim
+        F = np.zeros((G, dim))
+        M = np.zeros((G, 3 if dim == 3 else 1))
+        if G == 0:
+            return F, M
+        b = ps.group >= 0
+        grp = ps.group[b]
+        f = ps.mass[b, None] * self._acc[b]
+        r = ps.pos[b] - self.moment_points[grp]
+        for k in range(dim):
+            F[:, k] = np.bincount(grp, weights=f[:, k], minlength=G)
+        if dim == 2:
+            M[:, 0] = np.bincount(grp, weights=r[:, 1] * f[:, 0] - r[:, 0] * f[:, 1], minlength=G)
+        else:
+            m = np.cross(r, f)
+            for k in range(3):
+                M[:, k] = np.bincount(grp, weights=m[:, k], minlength=G)
+        return F, M
+
+    def _check_finite(self):
+        ps = self.ps
+        i = first_non_finite(ps.pos, ps.vel, ps.rho)
+        if i >= 0:
+            self._raise_non_finite(i)
+
+    def _raise_non_finite(self, i: int):
+        ps = self.ps
+        where = ps.pos[i] if np.isfinite(ps.pos[i]).all() else self._aux["pos"][i]
+        raise InstabilityError(
+            f"fluid: non-finite state at step {self.counters.steps}, t={self.t:.9g} s: particle id "
+            f"{int(ps.ids[i])} (kind {Kind(int(ps.kind[i])).name}) at {np.array2string(where, precision=5)} m "
+            f"(pos {ps.pos[i]}, vel {ps.vel[i]}, rho {ps.rho[i]}). Remedies: a smaller cfl, a larger c0, "
+            "more artificial viscosity, or check the set-up for overlapping particles.")
+
+    # ------------------------------------------------------------------ diagnostics
+    def kinetic_energy(self) -> float:
+        fl = self.ps.kind == Kind.FLUID
+        return 0.5 * float((self.ps.mass[fl] * (self.ps.vel[fl] ** 2).sum(axis=1)).sum())
+
+    def max_speed(self) -> float:
+        fl = self.ps.kind == Kind.FLUID
+        return float(np.sqrt((self.ps.vel[fl] ** 2).sum(axis=1).max()))

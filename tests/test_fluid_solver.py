@@ -1,0 +1,162 @@
+"""The Fluid participant: configuration checks, time stepping, guards, state round trip."""
+
+import math
+
+import numpy as np
+import pytest
+
+from cosim.errors import InputError, InstabilityError
+from cosim.protocol import Participant, check_participant
+from fluid.geometry import set_hydrostatic, tank_with_water
+from fluid.integrator import stable_dt
+from fluid.particles import Kind, ParticleSet
+from fluid.solver import Fluid, FluidConfig
+
+
+@pytest.mark.parametrize("bad, word", [
+    (dict(cfl=0.6), "cfl"),
+    (dict(cfl=0.0), "cfl"),
+    (dict(c0=30.0, u_max=1.0), "exactly one"),
+    (dict(c0=None, u_max=None), "exactly one"),
+    (dict(c0=None, u_max=1.0, c0_factor=5.0), "c0_factor"),
+    (dict(dx=-0.01), "dx"),
+    (dict(dim=4), "dim"),
+    (dict(kernel="gauss"), "kernel"),
+    (dict(diffusion="antuono"), "diffusion"),
+    (dict(alpha=-0.1), "alpha"),
+    (dict(domain_lo=(0.0, 0.0)), "domain"),
+])
+def test_bad_configuration_is_refused_with_the_reason(bad, word):
+    args = dict(c0=30.0)
+    args.update(bad)
+    with pytest.raises(InputError, match=word):
+        FluidConfig(**args)
+
+
+def test_c0_from_expected_speed():
+    assert FluidConfig(u_max=2.0).speed_of_sound == 20.0
+    assert FluidConfig(u_max=2.0, c0_factor=15).speed_of_sound == 30.0
+
+
+def one_particle(dim=2, vel=None):
+    pos = np.zeros((1, dim))
+    return ParticleSet.create(pos, 1000.0, 0.1, vel=vel)
+
+
+def test_is_a_participant():
+    f = Fluid(FluidConfig(c0=30.0), one_particle())
+    check_participant(f, Participant)
+    assert isinstance(f, Participant) and f.name == "fluid"
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_free_fall_is_exact_and_time_is_reached_exactly(dim):
+    """A lone particle has no neighbours: the symplectic scheme integrates constant gravity
+    exactly, whatever the sub-steps."""
+    v0 = np.zeros(dim)
+    v0[0] = 0.5
+    cfg = FluidConfig(dim=dim, c0=30.0, domain_lo=(-1.0,) * dim, domain_hi=(1.0,) * dim)
+    f = Fluid(cfg, one_particle(dim, v0))
+    f.initialize(0.0)
+    assert f.limit.limiter == "courant_viscous"
+    np.testing.assert_allclose(f.max_dt(), 0.2 * cfg.h / 30.0, rtol=1e-12)
+    t = 0.0
+    for dt in (0.01, 0.037, 0.003):
+        f.advance(t, dt)
+        t += dt
+    assert f.t == t
+    assert f.counters.steps > 3
+    z = f.ps.pos[0, -1]
+    np.testing.assert_allclose(z, -0.5 * 9.81 * t * t, rtol=1e-12)
+    np.testing.assert_allclose(f.ps.pos[0, 0], 0.5 * t, rtol=1e-12)
+    np.testing.assert_allclose(f.ps.vel[0, -1], -9.81 * t, rtol=1e-12)
+
+
+def test_step_limit_reports_its_condition():
+    h, cfl = 0.014, 0.2
+    kind = np.zeros(3, np.int8)
+    cs = np.full(3, 30.0)
+    acc = np.zeros((3, 2))
+    visc = np.array([0.0, 2.0, 1.0])
+    lim = stable_dt(acc, visc, cs, kind, h, cfl)
+    assert lim.limiter == "courant_viscous"
+    np.testing.assert_allclose(lim.dt, cfl * h / 32.0, rtol=1e-14)
+    acc[1] = (0.0, 1e6)
+    lim = stable_dt(acc, visc, cs, kind, h, cfl)
+    assert lim.limiter == "force"
+    np.testing.assert_allclose(lim.dt, cfl * math.sqrt(h / 1e6), rtol=1e-14)
+    assert stable_dt(acc, visc, cs, kind, h, cfl, dt_max=1e-7).limiter == "dt_max"
+
+
+def test_coupling_step_shorter_than_stable_step_is_reported():
+    f = Fluid(FluidConfig(c0=30.0, domain_lo=(-1, -1), domain_hi=(1, 1)), one_particle())
+    f.initialize(0.0)
+    f.advance(0.0, 0.1 * f.max_dt())
+    assert f.limiter == "coupling" and f.counters.steps == 1
+    f.advance(f.t, 3.5 * f.max_dt())
+    assert f.limiter == "courant_viscous" and f.counters.steps == 5
+
+
+def small_tank(dx=0.02):
+    b = tank_with_water(2, dx, 0.2, 0.1, 0.14)
+    cfg = FluidConfig(dx=dx, u_max=1.0, c0_factor=20)
+    set_hydrostatic(b.particles, 0.1, cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g)
+    return cfg, b.particles
+
+
+def test_nan_stops_the_run_naming_the_particle():
+    cfg, ps = small_tank()
+    f = Fluid(cfg, ps)
+    f.initialize(0.0)
+    i = int(np.flatnonzero(f.ps.kind == Kind.FLUID)[7])
+    pid = int(f.ps.ids[i])
+    f.ps.vel[i, 0] = np.nan
+    with pytest.raises(InstabilityError, match=rf"step \d+, t=.*particle id {pid} \(kind FLUID\) at \[") as e:
+        f.advance(0.0, 0.01)
+    assert "Remedies" in str(e.value)
+
+
+def test_particles_leaving_the_domain_are_removed_and_counted():
+    cfg, ps = small_tank()
+    # a droplet well above the surface, thrown upwards out of the domain
+    drop = ParticleSet.create([[0.1, 0.2]], 1000.0, ps.mass[0], vel=[[0.0, 5.0]])
+    ps = ParticleSet.concatenate([ps, drop])
+    f = Fluid(FluidConfig(dx=cfg.dx, c0=30.0, domain_lo=(-0.1, -0.1), domain_hi=(0.3, 0.25)), ps)
+    f.initialize(0.0)
+    n0 = f.ps.n
+    f.advance(0.0, 0.03)
+    assert f.counters.removed["FLUID"] == 1 and f.ps.n == n0 - 1
+    assert ps.n - 1 not in f.ps.ids
+    f.advance(0.03, 0.01)  # and the run goes on
+
+
+def test_save_and_load_state_repeat_a_run_exactly():
+    cfg, ps = small_tank()
+    f = Fluid(cfg, ps)
+    f.initialize(0.0)
+    f.advance(0.0, 0.01)
+    s = f.save_state()
+    f.advance(0.01, 0.01)
+    a = f.ps.copy()
+    f.load_state(s)
+    assert f.t == 0.01
+    f.advance(0.01, 0.01)
+    o1, o2 = np.argsort(a.ids), np.argsort(f.ps.ids)
+    assert np.array_equal(a.pos[o1], f.ps.pos[o2]) and np.array_equal(a.rho[o1], f.ps.rho[o2])
+
+
+def test_wall_load_of_fluid_at_rest_is_its_weight():
+    """The time-averaged force of the fluid on its tank equals the fluid's weight (2 %,
+    the short run still carries the start-up pressure waves)."""
+    cfg, ps = small_tank()
+    f = Fluid(cfg, ps)
+    f.initialize(0.0)
+    t, F = 0.0, []
+    for _ in range(10):
+        f.advance(t, 0.02)
+        t += 0.02
+        F.append(f.group_loads()[0][0])
+    F = np.mean(F, axis=0)
+    weight = f.ps.mass[f.ps.kind == Kind.FLUID].sum() * cfg.g
+    assert abs(F[0]) < 1e-9 * weight
+    np.testing.assert_allclose(F[1], -weight, rtol=0.02)
