@@ -1,0 +1,219 @@
+"""MuJoCo bodies as a co-simulation participant.
+
+MuJoCo integrates the bodies (joints, contacts, constraints, gravity); the
+coupler hands them external loads once per coupling step as a world-frame wrench
+per body — force, and torque about the body's centre of mass — which this
+participant writes to ``xfrc_applied`` (MuJoCo applies it at the centre of mass)
+and clears after the step, so it is the only writer and nothing persists
+silently. Within a coupling step MuJoCo sub-steps so that its own step never
+exceeds the model's ``timestep``; the loads are held constant over the step.
+
+2-D scenes live in the x-z plane: bodies slide in x and z and hinge about y
+(see :mod:`bodies.builders`), and are 1 m thick so that forces per metre of depth
+from a 2-D fluid are forces on the body.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import NamedTuple, Sequence
+
+import mujoco
+import numpy as np
+
+from cosim.errors import InputError, InstabilityError
+
+
+class BodyKinematics(NamedTuple):
+    """World-frame state of the coupled bodies, arrays with one row per body."""
+
+    com: np.ndarray  #: centre of mass [m], (n, 3)
+    origin: np.ndarray  #: body frame origin [m], (n, 3)
+    rotation: np.ndarray  #: body frame orientation, (n, 3, 3): p_w = origin + R p_b
+    velocity: np.ndarray  #: velocity of the centre of mass [m/s], (n, 3)
+    omega: np.ndarray  #: angular velocity [rad/s], (n, 3)
+
+
+def load_model(mjcf) -> mujoco.MjModel:
+    """A MuJoCo model from an MJCF string, a path to an MJCF file, or a model."""
+    if isinstance(mjcf, mujoco.MjModel):
+        return mjcf
+    try:
+        if isinstance(mjcf, str) and mjcf.lstrip().startswith("<"):
+            return mujoco.MjModel.from_xml_string(mjcf)
+        path = Path(mjcf)
+        if not path.is_file():
+            raise InputError(f"MJCF file {str(path)!r} does not exist; give an MJCF string or an existing file")
+        return mujoco.MjModel.from_xml_path(str(path))
+    except ValueError as exc:  # MuJoCo's own parse and compile errors
+        raise InputError(f"MuJoCo could not load the MJCF: {exc}") from None
+
+
+class MujocoBodies:
+    """A MuJoCo model whose bodies exchange loads and kinematics with the coupler.
+
+    Parameters
+    ----------
+    mjcf:
+        MJCF string, path to an MJCF file, or a ``mujoco.MjModel``.
+    bodies:
+        Names of the bodies that take part in the coupling (receive fluid and
+        mooring loads). Default: every body that has degrees of freedom.
+    name:
+        Participant name.
+    """
+
+    def __init__(self, mjcf, bodies: Sequence[str] | None = None, name: str = "bodies"):
+        self.model = load_model(mjcf)
+        self.data = mujoco.MjData(self.model)
+        self.name = name
+        m = self.model
+        if bodies is None:
+            ids = [b for b in range(1, m.nbody) if m.body_dofnum[b] > 0]
+        else:
+            ids = []
+            for b in bodies:
+                i = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_BODY, b)
+                if i < 0:
+                    known = [mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_BODY, k) for k in range(1, m.nbody)]
+                    raise InputError(f"{name}: no body named {b!r} in the MJCF; bodies: {known}")
+                ids.append(i)
+        if not ids:
+            raise InputError(f"{name}: the model has no movable body to couple (add a joint, e.g. <freejoint/>)")
+        self.body_ids = np.array(ids)
+        self.body_names = [mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_BODY, i) for i in ids]
+        self.n_bodies = len(ids)
+        self.dt_mujoco = float(m.opt.timestep)
+        self._force = np.zeros((self.n_bodies, 3))
+        self._torque = np.zeros((self.n_bodies, 3))
+        self._state_spec = mujoco.mjtState.mjSTATE_INTEGRATION
+        self.substeps = 0  #: MuJoCo steps taken in the last advance
+        mujoco.mj_forward(m, self.data)
+
+    # -- participant protocol ------------------------------------------------
+    def initialize(self, t0: float) -> None:
+        self.data.time = t0
+        mujoco.mj_forward(self.model, self.data)
+        self._check_finite(0)
+
+    def max_dt(self) -> float:
+        """Unlimited: MuJoCo sub-steps within a coupling step (at most ``timestep``)."""
+        return math.inf
+
+    def advance(self, t: float, dt: float) -> None:
+        """Step MuJoCo from ``t`` to ``t + dt`` with the wrenches last set, held
+        constant; ``xfrc_applied`` is cleared afterwards."""
+        m, d = self.model, self.data
+        n = max(1, math.ceil(dt / self.dt_mujoco * (1 - 1e-12)))
+        d.xfrc_applied[:] = 0.0
+        d.xfrc_applied[self.body_ids, :3] = self._force
+        d.xfrc_applied[self.body_ids, 3:] = self._torque
+        m.opt.timestep = dt / n
+        try:
+            for k in range(n):
+                mujoco.mj_step(m, d)
+        finally:
+            m.opt.timestep = self.dt_mujoco
+            d.xfrc_applied[:] = 0.0
+            self._force[:] = 0.0
+            self._torque[:] = 0.0
+        d.time = t + dt  # the coupler's clock, not n accumulated sub-steps
+        self.substeps = n
+        self._check_finite(n)
+
+    def save_state(self):
+        buf = np.empty(mujoco.mj_stateSize(self.model, self._state_spec))
+        mujoco.mj_getState(self.model, self.data, buf, self._state_spec)
+        return buf
+
+    def load_state(self, state) -> None:
+        mujoco.mj_setState(self.model, self.data, np.asarray(state, dtype=float), self._state_spec)
+        mujoco.mj_forward(self.model, self.data)
+
+    # -- exchange ------------------------------------------------------------
+    def set_wrenches(self, force, torque) -> None:
+        """External loads for the next step: force [N] and torque about the centre of
+        mass [N m], world frame, ``(n_bodies, 3)`` each. Replaces earlier values."""
+        f, tq = np.asarray(force, dtype=float), np.asarray(torque, dtype=float)
+        for arr, what in ((f, "force"), (tq, "torque")):
+            if arr.shape != (self.n_bodies, 3):
+                raise InputError(f"{self.name}: {what} must have shape ({self.n_bodies}, 3), got {arr.shape}")
+            if not np.isfinite(arr).all():
+                i = int(np.argmax(~np.isfinite(arr).all(axis=1)))
+                raise InstabilityError(
+                    f"{self.name}: non-finite {what} {arr[i]} given for body '{self.body_names[i]}' at "
+                    f"t = {self.data.time:.9g} s; the participant that produced it went unstable"
+                )
+        self._force[:] = f
+        self._torque[:] = tq
+
+    def kinematics(self) -> BodyKinematics:
+        """Current world-frame state of the coupled bodies."""
+        m, d = self.model, self.data
+        vel = np.empty((self.n_bodies, 6))
+        for k, b in enumerate(self.body_ids):
+            mujoco.mj_objectVelocity(m, d, mujoco.mjtObj.mjOBJ_BODY, b, vel[k], 0)
+        return BodyKinematics(
+            com=d.xipos[self.body_ids].copy(),
+            origin=d.xpos[self.body_ids].copy(),
+            rotation=d.xmat[self.body_ids].reshape(-1, 3, 3).copy(),
+            velocity=vel[:, 3:].copy(),
+            omega=vel[:, :3].copy(),
+        )
+
+    def masses(self) -> np.ndarray:
+        """Mass of each coupled body [kg], from MuJoCo's geometry or the MJCF's values."""
+        return self.model.body_mass[self.body_ids].copy()
+
+    def gravity_forces(self) -> np.ndarray:
+        """Weight of each coupled body [N], world frame, ``(n_bodies, 3)``."""
+        return self.masses()[:, None] * self.model.opt.gravity[None, :]
+
+    def site(self, name: str) -> tuple[int, int]:
+        """(site id, index of its coupled body) for a site name; raises if the site
+        is missing or not on a coupled body."""
+        m = self.model
+        sid = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_SITE, name)
+        if sid < 0:
+            known = [mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_SITE, k) for k in range(m.nsite)]
+            raise InputError(f"{self.name}: no site named {name!r} in the MJCF; sites: {known}")
+        hits = np.flatnonzero(self.body_ids == m.site_bodyid[sid])
+        if not hits.size:
+            raise InputError(f"{self.name}: site {name!r} is not on one of the coupled bodies {self.body_names}")
+        return sid, int(hits[0])
+
+    def site_positions(self, site_ids) -> np.ndarray:
+        """World positions [m] of sites, ``(n, 3)``."""
+        return self.data.site_xpos[np.asarray(site_ids)].copy()
+
+    def add_armature(self, body: int, added: Sequence[float]) -> None:
+        """Add inertia to the degrees of freedom of a coupled body's joints (MuJoCo
+        ``dof_armature``): for a free joint 3 translational values [kg] along the
+        world axes then 3 rotational [kg m^2] about the body axes; for the planar
+        2-D joints (slide x, slide z, hinge y) one value per joint. Used to move an
+        added-mass estimate into the implicit inertia: it adds inertia without weight."""
+        b = self.body_ids[body]
+        m = self.model
+        start, n = m.body_dofadr[b], m.body_dofnum[b]
+        added = np.asarray(added, dtype=float)
+        if added.shape != (n,) or (added < 0).any() or not np.isfinite(added).all():
+            raise InputError(f"{self.name}: body '{self.body_names[body]}' has {n} degrees of freedom; give {n} "
+                             f"finite added inertias >= 0, got {added}")
+        m.dof_armature[start:start + n] += added
+        # MuJoCo caches inertia-derived constants: recompute them (on scratch data,
+        # which mj_setConst overwrites) and refresh the derived state
+        mujoco.mj_setConst(m, mujoco.MjData(m))
+        mujoco.mj_forward(m, self.data)
+
+    def _check_finite(self, n_steps: int) -> None:
+        d = self.data
+        if np.isfinite(d.qpos).all() and np.isfinite(d.qvel).all():
+            return
+        bad = [self.body_names[k] for k, b in enumerate(self.body_ids)
+               if not np.isfinite(d.xpos[b]).all() or not np.isfinite(d.cvel[b]).all()]
+        raise InstabilityError(
+            f"{self.name}: MuJoCo state became non-finite at t = {d.time:.9g} s after {n_steps} sub-steps "
+            f"(bodies: {', '.join(bad) or 'unknown'}); reduce the coupling step or the MJCF timestep, "
+            f"or check the loads given to these bodies"
+        )
