@@ -180,7 +180,17 @@ class SPHCable:
         see the module docstring: in a solid it makes the cable creep).
     max_strain : largest strain the cable takes elastically [-]; supports farther apart
         than ``length * (1 + max_strain)`` are rejected.
-    seabed_z : height [m] of a horizontal seabed the particles cannot penetrate; None.
+    seabed_z : height [m] of a horizontal seabed the particles cannot penetrate (the
+        position is projected onto it and a downward velocity removed; no friction); None.
+    diameter : hydrodynamic diameter [m] for Morison drag and added mass in still water;
+        None: no hydrodynamic loads. Per particle of unstretched length l (half of each
+        adjacent segment): normal drag ``-1/2 rho cd_normal d l |v_n| v_n``, tangential
+        ``-1/2 rho cd_tangential pi d l |v_t| v_t``, added mass ``ca_normal rho pi d^2/4 l``
+        across and ``ca_tangential rho pi d^2/4 l`` along the tangent (as in MoorDyn).
+    rho_water : water density [kg/m^3].
+    cd_normal, cd_tangential, ca_normal, ca_tangential : Morison coefficients [-].
+    water_z : height [m] of the still water surface; particles above it get no
+        hydrodynamic load (default: all submerged).
     gravity : gravitational acceleration [m/s²], used for point masses and the default weight.
     name : label used in messages.
     """
@@ -188,7 +198,8 @@ class SPHCable:
     def __init__(self, length, n_particles, EA, mass_per_length, end_a, end_b, weight_per_length=None,
                  free_end=None, positions=None, nodes_at=(), cfl=0.4, omega=0.04,
                  visc_alpha=1.0, visc_beta=0.2, delta=0.0, max_strain=0.1, seabed_z=None,
-                 gravity=G_STANDARD, name="cable"):
+                 diameter=None, rho_water=1025.0, cd_normal=1.2, cd_tangential=0.008, ca_normal=1.0,
+                 ca_tangential=0.0, water_z=math.inf, gravity=G_STANDARD, name="cable"):
         self.name = name
         lab = f"SPH cable '{name}'"
 
@@ -265,6 +276,18 @@ class SPHCable:
         self.mk = self.mass_per_length * kern
         self._m_line = self.mass_per_length * half
         self.lam0 = np.full(n, self.mass_per_length)
+        self.hyd = np.zeros((n, 4))
+        if diameter is not None:
+            d = pos(diameter, "diameter", "m")
+            rw = pos(rho_water, "rho_water", "kg/m^3")
+            for j, (cname, cval) in enumerate((("cd_normal", cd_normal), ("cd_tangential", cd_tangential),
+                                               ("ca_normal", ca_normal), ("ca_tangential", ca_tangential))):
+                cval = float(cval)
+                if not (math.isfinite(cval) and cval >= 0):
+                    raise InputError(f"{lab}: {cname} = {cval!r}; Morison coefficients must be >= 0")
+                fac = (0.5 * rw * d, 0.5 * rw * math.pi * d, rw * math.pi * d * d / 4, rw * math.pi * d * d / 4)[j]
+                self.hyd[:, j] = fac * cval * half
+        self.water_z = float(water_z)
         if positions is None:
             x = catenary_points(ea, eb, self.length, self.s)
         else:
@@ -404,7 +427,7 @@ class SPHCable:
         status, step, part = _k.advance(
             self.x, self.v, self.lam, self.ds, float(t), float(t + dt), n_sub, self.m, self.mk, self.lam0, self.EA,
             self.c0, self.delta, self.visc_alpha, self.visc_beta, self.omega, self.fext, self._wl, self._wr,
-            self._free, self._pidx, self._p0, self._v0, self._p1, self._v1, self._amp, self._om, self._ton,
+            self.hyd, self.water_z, self._free, self._pidx, self._p0, self._v0, self._p1, self._v1, self._amp, self._om, self._ton,
             self._toff, self.seabed_z, self._fend_mean, self._fend_last, self._tension)
         if status != _k.OK:
             what = "non-finite position or velocity" if status == _k.NONFINITE else "non-positive density"
@@ -470,17 +493,23 @@ class SPHCableMooring:
     (fixed; the seabed is the horizontal plane through it) to the fairlead given by
     :meth:`set_fairlead_motion` (prescribed; between two coupling times it follows a cubic
     Hermite curve through the given positions and velocities). Weight per length is the
-    line's submerged ``weight``, inertia its ``mass_per_length``, stiffness its ``EA``.
+    line's submerged ``weight``, inertia its ``mass_per_length``, stiffness its ``EA``;
+    a line with a ``diameter`` gets Morison drag and added mass (still water).
+    It starts from the inextensible catenary through anchor and fairlead, cut off at the
+    seabed: let it settle (advance with the fairlead at rest) before measuring.
 
     Parameters
     ----------
-    lines : the mooring lines.
+    lines : the mooring lines (all 2-D or all 3-D).
+    fairleads : optional initial fairlead positions [m], ``(n_lines, dim)``.
     n_particles : SPH particles per line (ends included).
     seabed : keep particles above the seabed plane through each anchor (no penetration).
-    **cable_options : passed to :class:`SPHCable` (``omega`` [1/s], ``cfl``, ...).
+    name : participant name used in messages.
+    **cable_options : passed to :class:`SPHCable` (``omega`` [1/s], ``cfl``, Morison
+        coefficients, ``water_z`` [m], ...).
     """
 
-    def __init__(self, lines: list[MooringLine], n_particles: int = 40, seabed: bool = True, name="sph_cable",
+    def __init__(self, lines, fairleads=None, n_particles: int = 40, seabed: bool = True, name="sph_cable",
                  **cable_options):
         self.lines = named_lines(lines)
         self.name = name
@@ -488,37 +517,57 @@ class SPHCableMooring:
         self.dim = self.lines[0].dim
         for ln in self.lines:
             if ln.mass_per_length is None:
-                raise InputError(f"mooring line '{ln.name}': the SPH cable needs mass_per_length [kg/m]")
+                raise InputError(f"{name}, line '{ln.name}': the SPH cable needs mass_per_length [kg/m]")
             if ln.inextensible:
-                raise InputError(f"mooring line '{ln.name}': the SPH cable needs a finite EA [N] (axial stiffness)")
+                raise InputError(f"{name}, line '{ln.name}': the SPH cable needs a finite EA [N] (axial stiffness)")
+        self.anchors = np.array([ln.anchor for ln in self.lines], dtype=float)
         self.n_particles = n_particles
         self.seabed = seabed
         self._opts = cable_options
         self.cables: list[SPHCable] = []
         self._fpos = None
         self._fvel = None
+        self.t = 0.0
+        if fairleads is not None:
+            self.set_fairlead_motion(fairleads)
 
     def set_fairlead_motion(self, positions, velocities=None) -> None:
-        p = np.asarray(positions, float)
+        """Fairlead positions [m] and velocities [m/s], ``(n_lines, dim)``, reached at the end
+        of the next :meth:`advance`."""
+        try:
+            p = np.asarray(positions, float)
+            vv = np.zeros_like(p) if velocities is None else np.asarray(velocities, float)
+        except (TypeError, ValueError):
+            raise InputError(f"{self.name}: fairlead positions/velocities must be numbers") from None
         if p.shape != (self.n_lines, self.dim) or not np.all(np.isfinite(p)):
             raise InputError(f"{self.name}: fairlead positions must be finite, shape ({self.n_lines}, {self.dim}) [m]")
-        vv = np.zeros_like(p) if velocities is None else np.asarray(velocities, float)
         if vv.shape != p.shape or not np.all(np.isfinite(vv)):
             raise InputError(f"{self.name}: fairlead velocities must be finite, shape {p.shape} [m/s]")
+        if self.seabed and (p[:, -1] < self.anchors[:, -1]).any():
+            i = int(np.argmax(p[:, -1] < self.anchors[:, -1]))
+            raise InputError(f"{self.name}, line '{self.lines[i].name}': fairlead at z = {p[i, -1]:.6g} m is below "
+                             f"the seabed through its anchor (z = {self.anchors[i, -1]:.6g} m)")
         self._fpos, self._fvel = p.copy(), vv.copy()
         for c, pi, vi in zip(self.cables, p, vv):
             c.set_end_motion("b", pi, vi)
 
     def initialize(self, t0: float) -> None:
+        """Build the cables (checks every line before any work)."""
         if self._fpos is None:
-            raise InputError(f"{self.name}: call set_fairlead_motion before initialize (fairlead positions)")
-        self.cables = []
+            raise InputError(f"{self.name}: fairlead positions are not set; call set_fairlead_motion() "
+                             "or pass fairleads= before the run")
+        cables = []
         for ln, fp in zip(self.lines, self._fpos):
+            opts = dict(self._opts)
+            if ln.diameter is not None:
+                opts.setdefault("diameter", ln.diameter)
             c = SPHCable(ln.length, self.n_particles, ln.EA, ln.mass_per_length, ln.anchor, fp,
                          weight_per_length=ln.weight, seabed_z=ln.anchor[-1] if self.seabed else None,
-                         name=ln.name, **self._opts)
+                         name=ln.name, **opts)
             c.t = float(t0)
-            self.cables.append(c)
+            cables.append(c)
+        self.cables = cables
+        self.t = float(t0)
         self.set_fairlead_motion(self._fpos, self._fvel)
 
     def max_dt(self) -> float:
@@ -526,37 +575,52 @@ class SPHCableMooring:
         return math.inf
 
     def stable_dt(self) -> float:
-        """The smallest stable sub-step [s] of the lines."""
+        """The smallest stable sub-step [s] of the lines now."""
         return min(c.stable_dt() for c in self.cables)
 
     def advance(self, t: float, dt: float) -> None:
         for c in self.cables:
             c.advance(t, dt)
+        self.t = float(t + dt)
 
     def fairlead_forces(self) -> np.ndarray:
-        """Force [N] each line exerts on its fairlead, (n_lines, dim)."""
+        """Force [N] each line exerts on its fairlead, ``(n_lines, dim)``, world frame."""
+        if not self.cables:
+            raise InputError(f"{self.name}: not initialised; call initialize() first")
         return np.array([c.end_forces()[1] for c in self.cables])
 
     def anchor_forces(self) -> np.ndarray:
-        """Force [N] each line exerts on its anchor, (n_lines, dim)."""
+        """Force [N] each line exerts on its anchor, ``(n_lines, dim)``."""
         return np.array([c.end_forces()[0] for c in self.cables])
 
-    def fairlead_tension(self) -> np.ndarray:
+    def fairlead_tensions(self) -> np.ndarray:
         """Magnitude [N] of the fairlead force of each line."""
         return np.linalg.norm(self.fairlead_forces(), axis=1)
 
-    def anchor_tension(self) -> np.ndarray:
+    def anchor_tensions(self) -> np.ndarray:
+        """Magnitude [N] of the anchor force of each line."""
         return np.linalg.norm(self.anchor_forces(), axis=1)
 
     def shapes(self) -> list[np.ndarray]:
         """Particle positions [m] of each line."""
         return [c.positions for c in self.cables]
 
+    def total_wrench(self, point):
+        """Total mooring force [N] and its moment [N m] about ``point`` [m] (3-D: a 3-vector;
+        2-D: ``M_y = r_z F_x - r_x F_z``)."""
+        f = self.fairlead_forces()
+        r = self._fpos - np.asarray(point, dtype=float)
+        if self.dim == 3:
+            return f.sum(axis=0), np.cross(r, f).sum(axis=0)
+        return f.sum(axis=0), float(np.sum(r[:, 1] * f[:, 0] - r[:, 0] * f[:, 1]))
+
     def save_state(self):
-        return [c.save_state() for c in self.cables]
+        return ([c.save_state() for c in self.cables], None if self._fpos is None else self._fpos.copy(),
+                None if self._fvel is None else self._fvel.copy(), self.t)
 
     def load_state(self, state) -> None:
-        for c, s in zip(self.cables, state):
+        cs, self._fpos, self._fvel, self.t = state
+        for c, s in zip(self.cables, cs):
             c.load_state(s)
 
 

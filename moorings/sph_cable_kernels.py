@@ -51,7 +51,7 @@ def segments(x, e, ell):
 
 
 @njit(cache=True, fastmath=_FM, error_model="numpy")
-def forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, wl, wr,
+def forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, wl, wr, hyd, water_z,
            e, ell, T, fseg, Tseg, grad, F, acc, dlam_diff):
     """Internal forces ``F`` [N], accelerations ``acc`` [m/s²], particle tension ``T`` [N]
     (renormalised mean of the two stress points), segment force ``fseg`` [N] and δ-SPH
@@ -63,6 +63,9 @@ def forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, 
     - 000 Eq. 5: the pair term of neighbours a, b is the stress-point tension along the chord.
     - 000 Eq. 10-11: ``Pi_ab`` with mu from the chord; pair force ``mk_a mk_b Pi |W'|``.
     - 000 Eq. 12 as mass-proportional damping ``-omega v``.
+    - Morison drag and added mass in still water below ``water_z`` [m], per particle
+      ``hyd[a] = (kn, kt, ma_n, ma_t)``: drag ``-kn |v_n| v_n - kt |v_t| v_t`` [N] and the
+      mass matrix ``m I + ma_n (I - t t) + ma_t t t`` (t: the particle's tangent).
     """
     n, dim = x.shape
     # renormalised density gradient (000 Eq. 3) for the δ-SPH term
@@ -100,12 +103,52 @@ def forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, 
             psi = 2.0 * (lam[a + 1] - lam[a]) / ds[a] - (grad[a] + grad[a + 1])
             dd += wr[a] * psi / ds[a]
         dlam_diff[a] = delta * ds[min(a, n - 2)] * c0 * dd
-        inv_m = 1.0 / m[a]
+        # tangent of the particle (chord of its two neighbours; the segment at the ends)
+        tx0 = 0.0
+        tx1 = 0.0
+        tx2 = 0.0
+        vt = 0.0
         for d in range(dim):
             el = e[a - 1, d] if a > 0 else 0.0
             er = e[a, d] if a < n - 1 else 0.0
             F[a, d] = fr * er - fl * el
-            acc[a, d] = (F[a, d] + fext[a, d]) * inv_m - omega * v[a, d]
+        wet = 1.0 if x[a, dim - 1] < water_z else 0.0
+        kn = hyd[a, 0] * wet
+        kt = hyd[a, 1] * wet
+        man = hyd[a, 2] * wet
+        mat = hyd[a, 3] * wet
+        a0 = max(a - 1, 0)
+        a1 = min(a + 1, n - 1)
+        tn2 = 0.0
+        for d in range(dim):
+            td = x[a1, d] - x[a0, d]
+            tn2 += td * td
+        tinv = 1.0 / (math.sqrt(tn2) + 1e-300)
+        tx0 = (x[a1, 0] - x[a0, 0]) * tinv
+        tx1 = (x[a1, 1] - x[a0, 1]) * tinv
+        if dim == 3:
+            tx2 = (x[a1, 2] - x[a0, 2]) * tinv
+        vt = v[a, 0] * tx0 + v[a, 1] * tx1 + (v[a, 2] * tx2 if dim == 3 else 0.0)
+        vn2 = 0.0
+        for d in range(dim):
+            td = tx0 if d == 0 else (tx1 if d == 1 else tx2)
+            vnd = v[a, d] - vt * td
+            vn2 += vnd * vnd
+        vn = math.sqrt(vn2)
+        ftot_t = 0.0
+        for d in range(dim):
+            td = tx0 if d == 0 else (tx1 if d == 1 else tx2)
+            vnd = v[a, d] - vt * td
+            F[a, d] += -kn * vn * vnd - kt * abs(vt) * vt * td
+        for d in range(dim):
+            td = tx0 if d == 0 else (tx1 if d == 1 else tx2)
+            ftot_t += (F[a, d] + fext[a, d]) * td
+        inv_n = 1.0 / (m[a] + man)
+        inv_t = 1.0 / (m[a] + mat)
+        for d in range(dim):
+            td = tx0 if d == 0 else (tx1 if d == 1 else tx2)
+            ftd = F[a, d] + fext[a, d]
+            acc[a, d] = (ftd - ftot_t * td) * inv_n + ftot_t * td * inv_t - omega * v[a, d]
 
 
 @njit(cache=True, fastmath=_FM, error_model="numpy")
@@ -137,7 +180,7 @@ def prescribed_state(t, t0, t1, p0, v0, p1, v1, amp, om, t_on, t_off, pos, vel, 
 
 @njit(cache=True, fastmath=_FM, error_model="numpy")
 def advance(x, v, lam, ds, t0, t1, n_sub, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, wl, wr,
-            free, pidx, p0, v0, p1, v1, amp, om, t_on, t_off, seabed_z, fend_mean, fend_last, tension):
+            hyd, water_z, free, pidx, p0, v0, p1, v1, amp, om, t_on, t_off, seabed_z, fend_mean, fend_last, tension):
     """Leap-frog from ``t0`` to ``t1`` [s] in ``n_sub`` equal sub-steps (000 Section 2).
 
     Per sub-step: forces at (x^n, v^n, lam^n); kick v^{n+1} = v^n + dt a^n (free particles);
@@ -180,7 +223,7 @@ def advance(x, v, lam, ds, t0, t1, n_sub, m, mk, lam0, EA, c0, delta, alpha, bet
     segments(x, e, ell)
     for step in range(n_sub):
         t = t0 + step * dt
-        forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, wl, wr,
+        forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, wl, wr, hyd, water_z,
                e, ell, T, fseg, Tseg, grad, F, acc, dld)
         if step > 0:
             prescribed_state(t, t0, t1, p0, v0, p1, v1, amp, om, t_on, t_off, ppos, pvel, pacc)
@@ -223,7 +266,7 @@ def advance(x, v, lam, ds, t0, t1, n_sub, m, mk, lam0, EA, c0, delta, alpha, bet
     for i in range(npr):
         for d in range(dim):
             fend_mean[i, d] /= n_sub
-    forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, wl, wr,
+    forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, wl, wr, hyd, water_z,
            e, ell, T, fseg, Tseg, grad, F, acc, dld)
     prescribed_state(t1, t0, t1, p0, v0, p1, v1, amp, om, t_on, t_off, ppos, pvel, pacc)
     for i in range(npr):

@@ -1,0 +1,111 @@
+"""The SPH cable in water and as a mooring model (cosim.protocol.Mooring)."""
+
+import math
+
+import numpy as np
+import pytest
+
+from cosim.errors import InputError
+from cosim.protocol import Mooring, check_participant
+from moorings.catenary import solve
+from moorings.line import MooringLine
+from moorings.sph_cable import SPHCable, SPHCableMooring
+
+RHO = 1025.0
+
+
+def _falling(axis_vertical):
+    n, L, mu, w, d = 21, 2.0, 1.0, 5.0, 0.05
+    s = np.linspace(0.0, L, n)
+    pos = np.stack([np.zeros(n), -s], 1) if axis_vertical else np.stack([s, np.zeros(n)], 1)
+    c = SPHCable(L, n, 1e4, mu, pos[0], pos[-1], weight_per_length=w, free_end="both", positions=pos, omega=0.0,
+                 diameter=d, rho_water=RHO)
+    return c, mu, w, d
+
+
+def test_morison_normal_added_mass_and_terminal_velocity():
+    c, mu, w, d = _falling(axis_vertical=False)
+    ma = RHO * math.pi * d * d / 4  # ca_normal = 1
+    c.advance(0.0, 1e-3)
+    np.testing.assert_allclose(c.v[:, 1] / c.t, -w / (mu + ma), rtol=2e-3)
+    while c.t < 3.0:
+        c.advance(c.t, 0.1)
+    np.testing.assert_allclose(c.v[:, 1], -math.sqrt(2 * w / (RHO * 1.2 * d)), rtol=1e-3)
+    np.testing.assert_allclose(c.v[:, 0], 0.0, atol=1e-9)
+
+
+def test_morison_tangential_drag_terminal_velocity():
+    c, mu, w, d = _falling(axis_vertical=True)
+    c.advance(0.0, 1e-3)
+    np.testing.assert_allclose(c.v[:, 1] / c.t, -w / mu, rtol=2e-3)  # no tangential added mass
+    while c.t < 5.0:
+        c.advance(c.t, 0.1)
+    np.testing.assert_allclose(c.v[:, 1], -math.sqrt(2 * w / (RHO * 0.008 * math.pi * d)), rtol=1e-3)
+
+
+def test_seabed_is_not_penetrated():
+    L, n = 10.0, 21
+    pos = np.stack([np.linspace(0, L, n), np.full(n, 1.0)], 1)
+    c = SPHCable(L, n, 1e5, 2.0, pos[0], pos[-1], free_end="both", positions=pos, seabed_z=0.0, omega=0.5)
+    z_min = np.inf
+    for _ in range(60):
+        c.advance(c.t, 0.05)
+        z_min = min(z_min, c.x[:, 1].min())
+    assert z_min >= 0.0
+    np.testing.assert_allclose(c.x[:, 1], 0.0, atol=1e-12)  # it came to rest on the seabed
+    assert c.max_speed() < 1e-6
+
+
+def _line(**kw):
+    return MooringLine(anchor=(0.0, -50.0), length=150.0, weight=918.75, EA=1e9, mass_per_length=107.7, **kw)
+
+
+def test_protocol_and_input_checks():
+    m = SPHCableMooring([_line()], fairleads=[[130.0, 0.0]], n_particles=20)
+    check_participant(m, Mooring)
+    with pytest.raises(InputError, match="mass_per_length"):
+        SPHCableMooring([MooringLine(anchor=(0, -50), length=150, weight=900, EA=1e9)])
+    with pytest.raises(InputError, match="EA"):
+        SPHCableMooring([MooringLine(anchor=(0, -50), length=150, weight=900, mass_per_length=100)])
+    with pytest.raises(InputError, match="not set"):
+        SPHCableMooring([_line()]).initialize(0.0)
+    with pytest.raises(InputError, match="below"):
+        SPHCableMooring([_line()], fairleads=[[130.0, -60.0]])
+    with pytest.raises(InputError, match="supports"):
+        SPHCableMooring([_line()], fairleads=[[200.0, 0.0]], n_particles=20).initialize(0.0)
+
+
+@pytest.mark.parametrize("X", [115.0, 130.0, 140.0])
+def test_settled_line_matches_the_elastic_catenary_with_seabed(X):
+    """At rest the SPH mooring line pulls the fairlead as the quasi-static elastic
+    catenary with seabed contact does (moorings.catenary.solve)."""
+    m = SPHCableMooring([_line()], fairleads=[[X, 0.0]], n_particles=40, omega=1.0)
+    m.initialize(0.0)
+    check_participant(m, Mooring)
+    assert m.max_dt() == math.inf and 0 < m.stable_dt() < 1e-3
+    for _ in range(60):
+        m.advance(m.t, 1.0)
+    r = solve(X, 50.0, 150.0, 918.75, 1e9)
+    F = m.fairlead_forces()[0]
+    assert np.hypot(*F) == pytest.approx(math.hypot(r.H, r.V), rel=0.01)
+    assert F[0] == pytest.approx(-r.H, rel=0.03)
+    assert F[1] == pytest.approx(-r.V, rel=0.01)
+    # the anchor is pulled towards the fairlead; line weight closes the vertical balance
+    Fa = m.anchor_forces()[0]
+    assert Fa[0] == pytest.approx(-F[0], rel=1e-6)
+    shape = m.shapes()[0]
+    assert shape[:, 1].min() >= -50.0
+
+
+def test_save_and_load_state_replays_exactly():
+    m = SPHCableMooring([_line()], fairleads=[[130.0, 0.0]], n_particles=20, omega=0.04)
+    m.initialize(0.0)
+    m.advance(0.0, 0.5)
+    snap = m.save_state()
+    m.set_fairlead_motion([[131.0, 0.5]], [[1.0, 0.0]])
+    m.advance(0.5, 0.5)
+    a = m.fairlead_forces()
+    m.load_state(snap)
+    m.set_fairlead_motion([[131.0, 0.5]], [[1.0, 0.0]])
+    m.advance(0.5, 0.5)
+    np.testing.assert_array_equal(m.fairlead_forces(), a)
