@@ -2,6 +2,7 @@
 
 ``cosim line``      tabulate (and plot) one catenary mooring line against X
 ``cosim validate``  run validation cases, one JSON object per case
+``cosim export-fmu`` write a catenary mooring system as an FMI 2.0 co-simulation FMU
 """
 
 from __future__ import annotations
@@ -51,6 +52,89 @@ def _validate_parser(sub):
     p.add_argument("--list", action="store_true", help="list the cases and exit")
     p.add_argument("--quick", action="store_true", help="coarse variant (what CI runs)")
     return p
+
+
+def _export_fmu_parser(sub):
+    p = sub.add_parser(
+        "export-fmu",
+        help="write a catenary mooring system as a standalone FMI 2.0 co-simulation FMU",
+        description="Write the quasi-static catenary law (compiled C, no Python needed to run it) as an "
+        "FMI 2.0 co-simulation FMU: fairlead positions in, fairlead forces, total force and moment, "
+        "tensions and line states out; anchors, lengths, weights and EA are tunable parameters. "
+        "The lines come from a TOML or JSON file: a list 'line' of tables with anchor [m] (x, z or "
+        "x, y, z), length [m], weight [N/m], optional EA [N] (omit: inextensible), name and fairlead "
+        "[m] (the input's start value).",
+    )
+    p.add_argument("output", help="the .fmu file to write")
+    p.add_argument("--lines", required=True, metavar="FILE", help="TOML or JSON file with the lines")
+    p.add_argument("--model-identifier", default="catenary_mooring", help="FMU model identifier (a C identifier)")
+    p.add_argument("--reference", type=float, nargs="+", metavar="C",
+                   help="point of the total moment [m] (2 or 3 coordinates; default the origin)")
+    p.add_argument("--sources-only", action="store_true", help="ship the C sources without compiling a binary")
+    p.add_argument("--cc", help="C compiler (default $CC, cc, gcc or clang)")
+    return p
+
+
+def _read_lines_file(path):
+    """MooringLine records and fairlead start values from a TOML or JSON file."""
+    from pathlib import Path
+
+    from cosim.errors import InputError
+    from moorings.line import MooringLine
+
+    p = Path(path)
+    if not p.is_file():
+        raise InputError(f"--lines: no file {path!r}")
+    try:
+        if p.suffix.lower() == ".toml":
+            import tomllib
+
+            data = tomllib.loads(p.read_text())
+        else:
+            data = json.loads(p.read_text())
+    except ValueError as exc:
+        raise InputError(f"--lines: cannot parse {path!r}: {exc}") from None
+    items = data.get("line", data.get("lines")) if isinstance(data, dict) else data
+    if not isinstance(items, list) or not items:
+        raise InputError(f"--lines: {path!r} must hold a non-empty list 'line' of tables")
+    lines, fairleads = [], []
+    allowed = {"anchor", "length", "weight", "EA", "mass_per_length", "diameter", "name", "fairlead"}
+    for i, it in enumerate(items):
+        if not isinstance(it, dict):
+            raise InputError(f"--lines: line {i} must be a table of anchor, length, weight, ...")
+        unknown = set(it) - allowed
+        if unknown:
+            raise InputError(f"--lines: line {i}: unknown key(s) {sorted(unknown)}; known: {sorted(allowed)}")
+        missing = {"anchor", "length", "weight"} - set(it)
+        if missing:
+            raise InputError(f"--lines: line {i}: missing {sorted(missing)}")
+        fairleads.append(it.get("fairlead"))
+        lines.append(MooringLine(**{k: v for k, v in it.items() if k != "fairlead"}))
+    if any(f is None for f in fairleads):
+        if any(f is not None for f in fairleads):
+            raise InputError("--lines: give a fairlead for every line or for none")
+        fairleads = None
+    return lines, fairleads
+
+
+def cmd_export_fmu(args, parser) -> int:
+    import os
+
+    from fmpy.validation import validate_fmu
+
+    from moorings.fmu_export import export_catenary_fmu
+
+    lines, fairleads = _read_lines_file(args.lines)
+    path = export_catenary_fmu(lines, args.output, fairleads=fairleads, reference_point=args.reference,
+                               model_identifier=args.model_identifier, compile_binary=not args.sources_only,
+                               cc=args.cc)
+    problems = validate_fmu(str(path))
+    kind = "sources only" if args.sources_only else "sources and a linux64 binary"
+    print(f"wrote {path} ({os.path.getsize(path)} bytes, {len(lines)} line(s), {lines[0].dim}-D, {kind})")
+    for pr in problems:
+        print(f"validation problem: {pr}")
+    print("fmpy.validate_fmu: " + ("passed" if not problems else f"{len(problems)} problem(s)"))
+    return 1 if problems else 0
 
 
 def _line_args(args, parser):
@@ -195,9 +279,9 @@ def _json_default(o):
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="cosim", description=__doc__.strip().splitlines()[0])
     sub = parser.add_subparsers(dest="command", required=True)
-    parsers = {"line": _line_parser(sub), "validate": _validate_parser(sub)}
+    parsers = {"line": _line_parser(sub), "validate": _validate_parser(sub), "export-fmu": _export_fmu_parser(sub)}
     args = parser.parse_args(argv)
-    handler = {"line": cmd_line, "validate": cmd_validate}[args.command]
+    handler = {"line": cmd_line, "validate": cmd_validate, "export-fmu": cmd_export_fmu}[args.command]
     try:
         return handler(args, parsers[args.command])
     except CosimError as exc:
