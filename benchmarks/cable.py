@@ -1,0 +1,100 @@
+"""Cost of the SPH cable (seed 000) -- a benchmark, not a test.
+
+Prints
+1. compile time of the compiled kernels (in a fresh process with an empty numba cache)
+   and the cache-load time of a warm start;
+2. microseconds per particle-step and wall time per simulated second at several particle
+   counts, for a line in air (seed 000 Experiment 2) and for a 100-particle mooring line
+   in water (Morison drag, added mass, seabed), next to the cost of one quasi-static
+   catenary evaluation (moorings.catenary.solve) for the same line;
+3. the speed/accuracy trade of seed 000 Case 1: error of the displacement of L against
+   the exact elastic catenary, and wall time, at several particle counts.
+
+Run: ``.venv/bin/python benchmarks/cable.py`` (``--quick`` for fewer sizes).
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+from moorings.line import MooringLine
+from moorings.sph_cable import SPHCable, SPHCableMooring
+
+_FIRST_CALL = """
+import time
+t = time.perf_counter()
+from moorings.sph_cable import SPHCable
+c = SPHCable(1.0, 11, 1e4, 0.1, (0, 0), (0.9, 0))
+c.advance(0.0, 1e-3)
+print(time.perf_counter() - t)
+"""
+
+
+def first_call_seconds(empty_cache: bool) -> float:
+    env = dict(os.environ)
+    with tempfile.TemporaryDirectory() as d:
+        if empty_cache:
+            env["NUMBA_CACHE_DIR"] = d
+        out = subprocess.run([sys.executable, "-c", _FIRST_CALL], env=env, capture_output=True, text=True, check=True)
+    return float(out.stdout.strip().splitlines()[-1])
+
+
+def per_particle_step(c, seconds: float, chunk: float) -> tuple[float, float]:
+    """(microseconds per particle-step, wall seconds per simulated second)."""
+    c.advance(c.t, chunk)  # warm
+    s0, t0, w0 = c.steps, c.t, time.perf_counter()
+    while c.t < t0 + seconds - 1e-12:
+        c.advance(c.t, chunk)
+    wall = time.perf_counter() - w0
+    return 1e6 * wall / ((c.steps - s0) * c.n), wall / (c.t - t0)
+
+
+def main(quick: bool = False) -> None:
+    print("compile (empty numba cache): %.2f s; warm start (cache load): %.2f s"
+          % (first_call_seconds(True), first_call_seconds(False)))
+
+    print("\nline in air, seed 000 Experiment 2 (EA = 21.4 kN, l = 1.272 m), cfl 0.4")
+    print(f"{'particles':>10} {'stable dt [s]':>14} {'us/particle-step':>17} {'wall s per sim s':>17}")
+    for n in ([25, 100, 400] if quick else [25, 100, 400, 1600]):
+        c = SPHCable(1.272, n, 2.14e4, 0.02708, (0, 0), (1.2, -0.22), weight_per_length=0.2656)
+        c.set_harmonic("a", (0.025, 0.0), 1.0)
+        us, ws = per_particle_step(c, 0.02 if n >= 400 else 0.1, 0.01)
+        print(f"{n:>10} {c.stable_dt():>14.3g} {us:>17.4f} {ws:>17.3g}")
+
+    print("\n100-particle mooring line in water (l = 150 m, h = 50 m, EA = 1 GN, chain 107.7 kg/m, d = 0.15 m)")
+    line = MooringLine(anchor=(0.0, -50.0), length=150.0, weight=918.75, EA=1e9, mass_per_length=107.7, diameter=0.15)
+    m = SPHCableMooring([line], fairleads=[[130.0, 0.0]], n_particles=100)
+    m.initialize(0.0)
+    c = m.cables[0]
+    us, ws = per_particle_step(c, 2.0, 0.1)
+    print(f"SPH cable: {us:.4f} us per particle-step, {ws:.3g} s wall per simulated second "
+          f"(stable dt {c.stable_dt():.3g} s)")
+    from moorings.catenary import solve
+
+    solve(130.0, 50.0, 150.0, 918.75, 1e9)
+    k = 20000
+    w0 = time.perf_counter()
+    for i in range(k):
+        solve(130.0 + 1e-4 * (i % 7), 50.0, 150.0, 918.75, 1e9)
+    print(f"catenary law: {1e6 * (time.perf_counter() - w0) / k:.2f} us per evaluation (quasi-static: one per "
+          "coupling step)")
+
+    from cosim.validations.cable import run_case1
+
+    print("\nseed 000 Case 1 (35.586 kN at L): error of the displacement of L against the exact catenary")
+    print(f"{'particles':>10} {'err dz':>10} {'err dx':>10} {'err dz vs Table 2':>18} {'wall [s]':>9}")
+    for n in ([20, 40, 80] if quick else [20, 40, 80, 160, 313]):
+        w0 = time.perf_counter()
+        mm, c = run_case1(n)
+        print(f"{n:>10} {mm['err_dz_vs_exact']:>10.2e} {mm['err_dx_vs_exact']:>10.2e} "
+              f"{mm['err_dz_vs_table2']:>18.2e} {time.perf_counter() - w0:>9.2f}")
+
+
+if __name__ == "__main__":
+    main(quick="--quick" in sys.argv)
