@@ -43,15 +43,19 @@ def _body(name, geom, pos, density, mass, planar, sites, euler) -> str:
         joints = f'<freejoint name="{name}_free"/>'
     site_xml = "".join(f'<site name="{s}" pos="{_fmt(p)}" size="0.01"/>' for s, p in (sites or {}).items())
     rot = f' euler="{_fmt(euler)}"' if euler is not None else ""
-    return (f'<body name="{name}" pos="{_fmt(pos)}"{rot}>{joints}'
-            f'<geom name="{name}_geom" {geom} {inertial}/>{site_xml}</body>')
+    # a planar body's frame stays aligned with the world so that its joint axes
+    # are the world's x, z and y: an orientation turns the geom instead
+    body_rot, geom_rot = ("", rot) if planar else (rot, "")
+    return (f'<body name="{name}" pos="{_fmt(pos)}"{body_rot}>{joints}'
+            f'<geom name="{name}_geom" {geom}{geom_rot} {inertial}/>{site_xml}</body>')
 
 
 def box(name: str, size: Vec, pos: Vec, *, density: float | None = None, mass: float | None = None,
         planar: bool = False, sites: Mapping[str, Vec] | None = None, euler: Vec | None = None) -> str:
     """A box body. ``size``: full edge lengths [m], (x, y, z) in 3-D or (x, z) for a
     planar body (1 m thick in y). ``sites``: named points in the body frame [m]
-    (fairleads). ``euler``: initial orientation [deg]."""
+    (fairleads). ``euler``: initial orientation [deg] (planar bodies: turns the geom
+    in the body frame, whose axes stay the world's)."""
     size = list(size)
     if planar:
         if len(size) != 2:

@@ -25,6 +25,24 @@ import numpy as np
 from cosim.errors import InputError, InstabilityError
 
 
+class GeomShape(NamedTuple):
+    """A geom in its body's frame (the frame of ``BodyKinematics.origin``)."""
+
+    kind: str  #: "box", "sphere", "cylinder", "capsule", "ellipsoid" (others are skipped)
+    size: np.ndarray  #: MuJoCo size [m]: box half-sizes, sphere radius, cylinder/capsule radius and half-length
+    pos: np.ndarray  #: centre [m], (3,)
+    rot: np.ndarray  #: orientation, (3, 3): p_body = pos + rot p_geom
+
+
+_GEOM_KINDS = {
+    mujoco.mjtGeom.mjGEOM_BOX: "box",
+    mujoco.mjtGeom.mjGEOM_SPHERE: "sphere",
+    mujoco.mjtGeom.mjGEOM_CYLINDER: "cylinder",
+    mujoco.mjtGeom.mjGEOM_CAPSULE: "capsule",
+    mujoco.mjtGeom.mjGEOM_ELLIPSOID: "ellipsoid",
+}
+
+
 class BodyKinematics(NamedTuple):
     """World-frame state of the coupled bodies, arrays with one row per body."""
 
@@ -161,6 +179,24 @@ class MujocoBodies:
             velocity=vel[:, 3:].copy(),
             omega=vel[:, :3].copy(),
         )
+
+    def geoms(self) -> list[list[GeomShape]]:
+        """The solid geoms of each coupled body, in the body frame, as plain arrays
+        (so that a fluid can use them without MuJoCo). Planes, meshes and height
+        fields are left out."""
+        m = self.model
+        out = []
+        for b in self.body_ids:
+            shapes = []
+            for g in np.flatnonzero(m.geom_bodyid == b):
+                kind = _GEOM_KINDS.get(int(m.geom_type[g]))
+                if kind is None:
+                    continue
+                rot = np.empty(9)
+                mujoco.mju_quat2Mat(rot, m.geom_quat[g])
+                shapes.append(GeomShape(kind, m.geom_size[g].copy(), m.geom_pos[g].copy(), rot.reshape(3, 3)))
+            out.append(shapes)
+        return out
 
     def masses(self) -> np.ndarray:
         """Mass of each coupled body [kg], from MuJoCo's geometry or the MJCF's values."""

@@ -1,18 +1,23 @@
 """The coupler: keeps every participant on one clock and runs the coupling steps.
 
-One coupling step (``Coupler.step``), in this order (``../shared/DESIGN.md``):
+One coupling step (:meth:`Coupler.step`), in this order (``../shared/DESIGN.md``):
 
 1. the step size: the smallest ``max_dt()`` of all participants (or the fixed
    step the user asked for, if smaller), rounded down to whole clock ticks and
    clipped so that the run lands exactly on its end time;
-2. data exchange (fluid -> body forces, moorings -> fairlead forces, bodies ->
-   kinematics): filled in by the coupling issue; until then participants exchange
-   nothing;
-3. every participant advances from ``t`` to ``t + dt``, in the order given;
-4. the clock advances by an integer number of ticks (no drift).
+2. the fluid's loads on each body, for the bodies' current kinematics (force,
+   and torque about the centre of mass; world frame);
+3. each mooring's force on its fairleads (for the fairlead motion it was last
+   given), turned into a force and a torque about each body's centre of mass;
+4. the bodies advance with the sum of 2 and 3 (MuJoCo adds gravity, joints and
+   contacts, and sub-steps as it needs);
+5. the fluid gets the new body kinematics and advances; each mooring gets the new
+   fairlead motion and advances (a dynamic line sub-cycles towards it);
+6. any other participant advances; the clock advances by whole ticks (no drift).
 
 The coupler is the only owner of time: participants get ``t`` and ``dt`` with
-every ``advance`` and never accumulate time themselves.
+every ``advance`` and never accumulate time themselves. It is also the only
+writer of body loads, and it books them per body and step in :attr:`ledger`.
 """
 
 from __future__ import annotations
@@ -21,9 +26,12 @@ import math
 from dataclasses import dataclass
 from typing import Any, Callable, Sequence
 
+import numpy as np
+
 from cosim.clock import TICKS_PER_SECOND, Clock, to_ticks
-from cosim.errors import ConfigurationError, InputError, InstabilityError
-from cosim.protocol import Participant, check_participant
+from cosim.errors import ConfigurationError, InputError, InstabilityError, SolverError
+from cosim.ledger import Ledger
+from cosim.protocol import Mooring, Participant, check_participant
 
 
 @dataclass(frozen=True)
@@ -36,13 +44,33 @@ class StepInfo:
     limiter: str  #: what set dt: a participant's name, "user dt" or "end time"
 
 
+@dataclass(frozen=True)
+class MooringAttachment:
+    """A mooring system whose lines end on body sites.
+
+    ``sites`` names, for each line in order, the MJCF site of its fairlead. A 2-D
+    mooring (lines in the x-z plane) sees the sites' (x, z) and returns (F_x, F_z).
+    """
+
+    mooring: Mooring
+    sites: tuple[str, ...]
+
+
 class Coupler:
-    """Runs participants on one drift-free clock.
+    """Runs participants on one drift-free clock and exchanges their data.
 
     Parameters
     ----------
     participants:
-        Objects satisfying :class:`cosim.protocol.Participant`, advanced in this order.
+        Participants with no data exchange (advanced last, in this order).
+    bodies:
+        The bodies participant (``bodies.MujocoBodies``), if the scene has bodies.
+    fluid:
+        A fluid that loads the bodies: besides the participant protocol it has
+        ``attach_bodies(bodies)``, ``set_body_kinematics(kinematics)`` and
+        ``body_wrenches() -> (force, torque)``.
+    moorings:
+        :class:`MooringAttachment` records (or ``(mooring, sites)`` pairs).
     dt:
         Fixed coupling step [s]; ``None`` lets the participants' ``max_dt()`` decide.
         Participants that need less still get less.
@@ -50,10 +78,26 @@ class Coupler:
         Start time [s].
     """
 
-    def __init__(self, participants: Sequence[Participant], *, dt: float | None = None, t0: float = 0.0):
-        for p in participants:
+    def __init__(self, participants: Sequence[Participant] = (), *, bodies=None, fluid=None,
+                 moorings: Sequence = (), dt: float | None = None, t0: float = 0.0):
+        self.bodies, self.fluid = bodies, fluid
+        self.moorings = [m if isinstance(m, MooringAttachment) else MooringAttachment(m[0], tuple(m[1]))
+                         for m in moorings]
+        if (self.moorings or fluid is not None) and bodies is None:
+            raise ConfigurationError("moorings and a fluid attach to bodies: pass bodies= as well")
+        for a in self.moorings:
+            check_participant(a.mooring, Mooring)
+            if len(a.sites) != a.mooring.n_lines:
+                raise ConfigurationError(
+                    f"mooring '{a.mooring.name}' has {a.mooring.n_lines} lines but {len(a.sites)} fairlead sites "
+                    f"were given; name one MJCF site per line, in line order"
+                )
+        self.others = list(participants)
+        roles = [p for p in (fluid, bodies) if p is not None] + [a.mooring for a in self.moorings]
+        self.participants = roles + self.others
+        for p in self.participants:
             check_participant(p)
-        names = [p.name for p in participants]
+        names = [p.name for p in self.participants]
         dup = sorted({n for n in names if names.count(n) > 1})
         if dup:
             raise ConfigurationError(f"participant names must be unique; repeated: {', '.join(dup)}. Rename them.")
@@ -61,10 +105,11 @@ class Coupler:
             raise InputError(f"coupling step dt must be a positive finite number of seconds, got {dt!r}")
         if dt is not None and to_ticks(dt) < 1:
             raise InputError(f"coupling step dt={dt!r} s is below the clock resolution of 1e-12 s")
-        self.participants = list(participants)
         self.dt = dt
         self.clock = Clock(t0)
         self.steps = 0
+        self.ledger = Ledger(bodies.body_names if bodies is not None else [])
+        self._sites: list[tuple[np.ndarray, np.ndarray]] = []  # per attachment: site ids, body index
         self._initialized = False
 
     @property
@@ -73,9 +118,24 @@ class Coupler:
         return self.clock.t
 
     def initialize(self) -> None:
-        """Initialise every participant at the start time (each checks its own inputs)."""
+        """Resolve attachments and initialise every participant at the start time
+        (each checks its own inputs before any step is taken)."""
+        t0 = self.clock.t
+        if self.bodies is not None:
+            self.bodies.initialize(t0)
+            self._sites = []
+            for a in self.moorings:
+                ids = [self.bodies.site(s) for s in a.sites]
+                self._sites.append((np.array([i for i, _ in ids]), np.array([b for _, b in ids])))
+            kin = self.bodies.kinematics()
+            for a, sites in zip(self.moorings, self._sites):
+                a.mooring.set_fairlead_motion(*self._fairlead_motion(a, sites, kin))
+            if self.fluid is not None:
+                self.fluid.attach_bodies(self.bodies)
+                self.fluid.set_body_kinematics(kin)
         for p in self.participants:
-            p.initialize(self.clock.t)
+            if p is not self.bodies:
+                p.initialize(t0)
         self._initialized = True
 
     def _step_size(self, ticks_left: int) -> tuple[int, str]:
@@ -101,6 +161,31 @@ class Coupler:
             )
         return n, limiter
 
+    def _fairlead_motion(self, a: MooringAttachment, sites, kin):
+        ids, body = sites
+        pos = self.bodies.site_positions(ids)
+        vel = kin.velocity[body] + np.cross(kin.omega[body], pos - kin.com[body])
+        if a.mooring.dim == 2:
+            return pos[:, [0, 2]], vel[:, [0, 2]]
+        return pos, vel
+
+    def _mooring_wrenches(self, kin):
+        n = self.bodies.n_bodies
+        F, T = np.zeros((n, 3)), np.zeros((n, 3))
+        for a, (ids, body) in zip(self.moorings, self._sites):
+            f = np.asarray(a.mooring.fairlead_forces(), dtype=float)
+            if not np.isfinite(f).all():
+                i = int(np.argmax(~np.isfinite(f).all(axis=1)))
+                raise InstabilityError(
+                    f"step {self.steps + 1}, t = {self.t:.9g} s: mooring '{a.mooring.name}' returned a non-finite "
+                    f"force {f[i]} on the fairlead of its line {i} (site '{a.sites[i]}')"
+                )
+            f3 = f if a.mooring.dim == 3 else np.stack([f[:, 0], np.zeros(len(f)), f[:, 1]], axis=1)
+            r = self.bodies.site_positions(ids) - kin.com[body]
+            np.add.at(F, body, f3)
+            np.add.at(T, body, np.cross(r, f3))
+        return F, T
+
     def step(self, t_end: float) -> StepInfo:
         """Advance every participant by one coupling step, not past ``t_end``."""
         if not self._initialized:
@@ -110,11 +195,33 @@ class Coupler:
             raise InputError(f"t_end = {t_end!r} s is not after the current time {self.t!r} s")
         n, limiter = self._step_size(ticks_left)
         t, dt = self.clock.t, n / TICKS_PER_SECOND
-        for p in self.participants:
-            p.advance(t, dt)
+        try:
+            if self.bodies is not None:
+                self._exchange_and_advance(t, dt)
+            for p in self.others:
+                p.advance(t, dt)
+        except SolverError as exc:
+            raise type(exc)(f"step {self.steps + 1}, t = {t:.9g} s: {exc}") from exc
         self.clock.advance(n)
         self.steps += 1
         return StepInfo(self.steps, self.clock.t, dt, limiter)
+
+    def _exchange_and_advance(self, t: float, dt: float) -> None:
+        b = self.bodies
+        kin = b.kinematics()
+        zeros = np.zeros((b.n_bodies, 3))
+        F_fluid, T_fluid = self.fluid.body_wrenches() if self.fluid is not None else (zeros, zeros)
+        F_moor, T_moor = self._mooring_wrenches(kin) if self.moorings else (zeros, zeros)
+        b.set_wrenches(F_fluid + F_moor, T_fluid + T_moor)
+        self.ledger.record(t, F_fluid, T_fluid, F_moor, T_moor, b.gravity_forces())
+        b.advance(t, dt)
+        kin = b.kinematics()
+        if self.fluid is not None:
+            self.fluid.set_body_kinematics(kin)
+            self.fluid.advance(t, dt)
+        for a, sites in zip(self.moorings, self._sites):
+            a.mooring.set_fairlead_motion(*self._fairlead_motion(a, sites, kin))
+            a.mooring.advance(t, dt)
 
     def run(self, t_end: float, callback: Callable[[StepInfo], Any] | None = None) -> int:
         """Step until ``t_end`` [s] exactly; returns the number of steps taken."""
@@ -132,6 +239,7 @@ class Coupler:
         return {
             "ticks": self.clock.ticks,
             "steps": self.steps,
+            "ledger": len(self.ledger),
             "participants": {p.name: p.save_state() for p in self.participants},
         }
 
@@ -141,3 +249,8 @@ class Coupler:
             p.load_state(state["participants"][p.name])
         self.clock.ticks = state["ticks"]
         self.steps = state["steps"]
+        self.ledger.truncate(state["ledger"])
+        if self.bodies is not None and self._initialized:
+            kin = self.bodies.kinematics()
+            if self.fluid is not None:
+                self.fluid.set_body_kinematics(kin)

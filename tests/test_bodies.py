@@ -64,6 +64,19 @@ def test_planar_body_moves_only_in_the_xz_plane_and_is_one_metre_thick():
     assert k.velocity[0, 0] > 0 and k.velocity[0, 2] > 0
 
 
+def test_planar_cylinder_is_a_disc_in_the_xz_plane_and_keeps_its_joint_axes():
+    b = MujocoBodies(builders.scene(builders.cylinder("c", 0.5, 3.0, (0, 0, 0), density=1000.0, planar=True),
+                                    gravity=0.0))
+    assert b.masses()[0] == pytest.approx(1000.0 * math.pi * 0.25 * 1.0)  # 1 m thick
+    g = b.geoms()[0][0]
+    np.testing.assert_allclose(g.rot[:, 2], [0.0, -1.0, 0.0], atol=1e-12)  # geom axis along y
+    np.testing.assert_allclose(b.model.jnt_axis, [[1, 0, 0], [0, 0, 1], [0, 1, 0]])
+    b.set_wrenches([[0.0, 0.0, 10.0]], [[0.0, 1.0, 0.0]])
+    b.advance(0.0, 0.1)
+    k = b.kinematics()
+    assert k.velocity[0, 2] > 0 and k.velocity[0, 1] == 0.0 and k.omega[0, 1] > 0
+
+
 def test_mass_and_inertia_come_from_the_geometry():
     b = MujocoBodies(builders.scene(builders.cylinder("c", 0.5, 2.0, (0, 0, 0), density=1000.0)))
     assert b.masses()[0] == pytest.approx(1000.0 * math.pi * 0.25 * 2.0, rel=1e-12)

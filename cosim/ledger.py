@@ -1,0 +1,50 @@
+"""The per-step book of the loads the coupler put on each body."""
+
+from __future__ import annotations
+
+import numpy as np
+
+#: the quantities booked for each body and step, world frame (torques about the CoM)
+FIELDS = ("fluid_force", "fluid_torque", "mooring_force", "mooring_torque", "gravity")
+
+
+class Ledger:
+    """Loads on each body at the start of each coupling step [N, N m]."""
+
+    def __init__(self, body_names):
+        self.body_names = list(body_names)
+        self._t: list[float] = []
+        self._rows: dict[str, list[np.ndarray]] = {f: [] for f in FIELDS}
+
+    def __len__(self) -> int:
+        return len(self._t)
+
+    def record(self, t, fluid_force, fluid_torque, mooring_force, mooring_torque, gravity) -> None:
+        self._t.append(float(t))
+        for f, v in zip(FIELDS, (fluid_force, fluid_torque, mooring_force, mooring_torque, gravity)):
+            self._rows[f].append(np.array(v, dtype=float))
+
+    def truncate(self, n: int) -> None:
+        """Forget the steps after the first ``n`` (a checkpoint was restored)."""
+        del self._t[n:]
+        for rows in self._rows.values():
+            del rows[n:]
+
+    def arrays(self) -> dict[str, np.ndarray]:
+        """``t`` (n_steps,) and each field as (n_steps, n_bodies, 3)."""
+        n_b = len(self.body_names)
+        out = {"t": np.array(self._t)}
+        for f, rows in self._rows.items():
+            out[f] = np.array(rows).reshape(len(rows), n_b, 3)
+        return out
+
+    def write_csv(self, path) -> None:
+        """One row per step and body: t, body, then the x, y, z of each field."""
+        a = self.arrays()
+        cols = [f"{f}_{c}" for f in FIELDS for c in "xyz"]
+        with open(path, "w") as fh:
+            fh.write("t_s,body," + ",".join(cols) + "\n")
+            for k, t in enumerate(a["t"]):
+                for j, name in enumerate(self.body_names):
+                    vals = np.concatenate([a[f][k, j] for f in FIELDS])
+                    fh.write(f"{t!r},{name}," + ",".join(repr(float(v)) for v in vals) + "\n")
