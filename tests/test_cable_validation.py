@@ -48,8 +48,14 @@ def test_cable_exp2_static_quick():
     assert all(0.010 < d < 0.025 for d in m["dist_to_measured_P1_P5_m"])
 
 
+def test_cable_vs_catenary_quick():
+    r = validation.run("cable-vs-catenary", quick=True)
+    assert r["passed"], r["metrics"]
+    assert r["metrics"]["max_abs_err_tension"] < 0.02
+
+
 @pytest.mark.slow
-@pytest.mark.parametrize("name", ["cable-case1", "cable-exp2-static"])
+@pytest.mark.parametrize("name", ["cable-case1", "cable-exp2-static", "cable-vs-catenary"])
 def test_cable_full(name):
     r = validation.run(name, quick=False)
     assert r["passed"], r["metrics"]
