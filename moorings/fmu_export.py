@@ -88,10 +88,15 @@ def fmu_line_names(lines) -> list[str]:
     return names
 
 
-def catenary_fmu_variable_map(lines) -> dict[str, str]:
-    """The ``variable_map`` that :class:`moorings.fmu_mooring.FMUMooring` needs
-    for an FMU written by :func:`export_catenary_fmu` from the same lines."""
-    return {"positions": "{line}.fairlead.{axis}", "forces": "{line}.force.{axis}"}
+def catenary_fmu_variable_map(lines) -> dict[str, list[list[str]]]:
+    """The ``variable_map`` with which :class:`moorings.fmu_mooring.FMUMooring`
+    drives an FMU written by :func:`export_catenary_fmu` from the same lines:
+    ``{"positions": [[<line>.fairlead.<axis>, ...], ...], "forces": [[<line>.force.<axis>, ...], ...]}``."""
+    lines = named_lines(lines)
+    ax = _axes(lines[0].dim)
+    names = fmu_line_names(lines)
+    return {key: [[f"{n}.{var}.{a}" for a in ax] for n in names]
+            for key, var in (("positions", "fairlead"), ("forces", "force"))}
 
 
 class _Var:
