@@ -90,6 +90,26 @@ def test_transverse_string_frequency(dim):
     assert 4.0 * t0 == pytest.approx(period, rel=0.01)
 
 
+def test_mass_proportional_damping_decays_every_mode_at_omega_over_2():
+    """000 Eq. 12 as implemented (f = -omega m v): a string mode decays as exp(-omega t/2)."""
+    L, EA, mu, strain, n, omega = 10.0, 1.0e5, 0.5, 0.01, 41, 0.6
+    span = L * (1 + strain)
+    c = SPHCable(L, n, EA, mu, (0, 0), (span, 0), weight_per_length=0.0, omega=omega, visc_alpha=0.0,
+                 visc_beta=0.0)
+    c.v[:, -1] = 0.05 * np.sin(np.pi * c.s / L)
+    period = 2 * span / math.sqrt(EA * strain / (mu / (1 + strain)))
+    amps = []
+    for _ in range(4):  # amplitude of the midpoint over successive periods
+        peak = 0.0
+        t_end = c.t + period
+        while c.t < t_end - 1e-12:
+            c.advance(c.t, period / 200)
+            peak = max(peak, abs(c.x[n // 2, 1]))
+        amps.append(peak)
+    ratio = amps[3] / amps[0]
+    assert ratio == pytest.approx(math.exp(-0.5 * omega * 3 * period), rel=0.01)
+
+
 def test_free_cable_conserves_momentum():
     rng = np.random.default_rng(1)
     n = 25

@@ -55,7 +55,7 @@ def test_cable_vs_catenary_quick():
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("name", ["cable-case1", "cable-exp2-static", "cable-vs-catenary"])
+@pytest.mark.parametrize("name", ["cable-case1", "cable-exp2-static", "cable-vs-catenary", "cable-exp2-shake"])
 def test_cable_full(name):
     r = validation.run(name, quick=False)
     assert r["passed"], r["metrics"]

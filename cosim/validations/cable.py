@@ -263,3 +263,96 @@ def cable_vs_catenary(quick: bool) -> dict:
     tol = 0.02
     return {"passed": m["max_abs_err_tension"] < tol, "metrics": m, "tolerances": {"max_abs_err_tension": tol},
             "particles": n, "steps": moor.cables[0].steps}
+
+
+def fit_length_to_measured_shape() -> float:
+    """Unstretched length [m] whose exact catenary passes closest (RMS) to the measured
+    P1-P5 of seed 000 Table 5, with the markers at the same fractions of the length."""
+    from scipy.optimize import minimize_scalar
+
+    p = EXP2
+    EA = p["E"] * math.pi / 4 * p["d_wire"] ** 2
+    meas = np.array([q[1:] for q in EXP2_POINTS])
+    s = np.array([q[0] for q in EXP2_POINTS])
+
+    def rms(L):
+        pts = elastic_catenary(*p["support_b"], L, p["w"], EA, s=s * L / p["length"])[2]
+        return float(np.sqrt(((pts - meas) ** 2).sum(axis=1).mean()))
+
+    return float(minimize_scalar(rms, bounds=(p["length"], 1.05 * p["length"]), method="bounded",
+                                 options={"xatol": 1e-6}).x)
+
+
+def run_exp2_shake(n_particles: int, frequency: float, length: float, omega: float = 0.04, cycles: int = 3,
+                   free_time: float = 8.0):
+    """Shake P0 of Experiment 2 by 25 mm in x at ``frequency`` [Hz] for ``cycles`` cycles, then
+    let the cable oscillate freely for ``free_time`` [s]. Returns (fundamental free period [s],
+    amplitude of P1-P5 in the first and the last second of the free phase [m], cable)."""
+    saved = EXP2["length"]
+    EXP2["length"] = length
+    try:
+        _, c = run_exp2_static(n_particles)
+    finally:
+        EXP2["length"] = saved
+    c.omega = omega
+    t0 = c.t
+    c.set_harmonic("a", (0.025, 0.0), frequency, t_on=t0, cycles=cycles)
+    s_pts = [q[0] * length / saved for q in EXP2_POINTS]
+    ref = np.array([c.position_at(s) for s in s_pts])
+    t_free = t0 + cycles / frequency
+    ts, zs = [], []
+    dt_out = 0.0025
+    while c.t < t_free + free_time - 1e-9:
+        c.advance(c.t, dt_out)
+        if c.t > t_free + 0.5:
+            ts.append(c.t)
+            zs.append([c.position_at(s)[1] for s in s_pts])
+    z = np.array(zs) - ref[:, 1]
+    z = z - z.mean(axis=0)
+    nfft = 1 << 16
+    spec = (np.abs(np.fft.rfft(z * np.hanning(len(z))[:, None], n=nfft, axis=0)) ** 2).sum(axis=1)
+    f = np.fft.rfftfreq(nfft, dt_out)
+    # the fundamental: the lowest-frequency spectral peak above 0.5 Hz holding >= 20 % of the
+    # largest peak's power (which mode dominates depends on the excitation frequency)
+    band = f > 0.5
+    peaks = np.nonzero(band[1:-1] & (spec[1:-1] > spec[:-2]) & (spec[1:-1] >= spec[2:])
+                       & (spec[1:-1] >= 0.2 * spec[band].max()))[0] + 1
+    period = 1.0 / f[peaks[0]]
+    k = int(round(1.0 / dt_out))
+    return period, float(np.abs(z[:k]).max()), float(np.abs(z[-k:]).max()), c
+
+
+#: seed 000 §3.3.2: free oscillation period after the excitation [s]
+EXP2_PERIOD = 0.42
+
+
+@case("cable-exp2-shake", "SPH cable, seed 000 Experiment 2: free oscillation period after 1.0/1.5 Hz shaking")
+def cable_exp2_shake(quick: bool) -> dict:
+    """Seed 000 Experiment 2, Type1 (1.0 Hz) and Type2 (1.5 Hz), 25 mm at P0 in x (3 cycles
+    assumed: the paper does not give the duration), then free oscillation; the dominant
+    free period -- the fundamental, lowest significant peak of the summed spectra of the
+    vertical motion of P1-P5 (which mode dominates depends on the excitation) -- against
+    the measured 0.42 s
+    (the paper's SPH: 0.45 s). Target: within 7 %.
+
+    Run for two lengths: the stated 1.272 m, and the length whose exact catenary fits the
+    measured static shape of Table 5 (about 1.286 m; the measured points lie 15-19 mm below
+    the 1.272 m catenary). The period is very sensitive to the sag here, so the case passes
+    on the measured geometry and reports the stated-length period beside it. Also reported:
+    the free amplitude decays faster with omega = 0.04 1/s than without damping."""
+    n = 31 if quick else 61
+    L_fit = fit_length_to_measured_shape()
+    m, ok = {"length_fit_m": L_fit}, True
+    for label, fr in (("type1", 1.0), ("type2", 1.5)):
+        for lname, L in (("measured_shape", L_fit), ("stated", EXP2["length"])):
+            T, a0, a1, c = run_exp2_shake(n, fr, L)
+            m[f"period_{label}_{lname}_s"] = float(T)
+            m[f"err_period_{label}_{lname}"] = float(T / EXP2_PERIOD - 1)
+            m[f"decay_{label}_{lname}"] = a1 / a0
+            if lname == "measured_shape":
+                ok = ok and bool(abs(T / EXP2_PERIOD - 1) < 0.07)
+    T, a0, a1, _ = run_exp2_shake(n, 1.0, L_fit, omega=0.0)
+    m["decay_type1_measured_shape_undamped"] = a1 / a0
+    ok = ok and m["decay_type1_measured_shape"] < m["decay_type1_measured_shape_undamped"]
+    return {"passed": ok, "metrics": m, "tolerances": {"err_period_measured_shape": 0.07}, "particles": n,
+            "steps": c.steps}
