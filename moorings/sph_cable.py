@@ -55,6 +55,8 @@ Case 1 and Experiment 2 while building this):
   momentum are conserved; a uniformly stretched cable is in exact equilibrium.
 * Artificial viscosity, Eq. 10-11: ``Pi = (phi mu^2 - varphi mu c0)/lam_ab``,
   ``mu = h v_ab.r_ab/(r^2 + 0.001 h^2)`` for approaching pairs, phi = 0.2, varphi = 1,
+  on taut segments only (with varphi c0 it is a dashpot ~ lam c0 per pair, 500 times a
+  particle's weight in Experiment 1: on slack segments it stops a cable from folding),
   ``c0 = sqrt(E/rho) = sqrt(EA/mass_per_length)``. Eq. 5 prints ``+pi_ab``; with the
   tension-positive stress of Eq. 6 the viscous pressure must enter with a minus sign to
   dissipate (as in Monaghan's form), so ``-Pi`` is used.
@@ -423,7 +425,14 @@ class SPHCable:
         """Advance from ``t`` to ``t + dt`` [s] in compiled sub-steps; returns their number."""
         if not dt > 0:
             raise InputError(f"SPH cable '{self.name}': dt = {dt!r} s must be > 0")
-        n_sub = max(1, int(math.ceil(dt / self.stable_dt() - 1e-9)))
+        sdt = self.stable_dt()
+        if not (math.isfinite(sdt) and sdt > 0 and dt / sdt < 1e9):
+            a = int(np.argmax(np.nan_to_num(np.linalg.norm(self.v, axis=1), nan=np.inf)))
+            raise InstabilityError(
+                f"SPH cable '{self.name}': runaway state at t = {t:.9g} s: particle {a} (s = {self.s[a]:.6g} m) "
+                f"moves at {np.linalg.norm(self.v[a]):.3g} m/s (stable step {sdt:.3g} s); lower cfl (now "
+                f"{self.cfl}) or check the loads and the end motion")
+        n_sub = max(1, int(math.ceil(dt / sdt - 1e-9)))
         status, step, part = _k.advance(
             self.x, self.v, self.lam, self.ds, float(t), float(t + dt), n_sub, self.m, self.mk, self.lam0, self.EA,
             self.c0, self.delta, self.visc_alpha, self.visc_beta, self.omega, self.fext, self._wl, self._wr,

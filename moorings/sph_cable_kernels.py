@@ -61,7 +61,10 @@ def forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, 
     - 000 Eq. 6-9 on the axis, at the stress point midway between neighbours:
       ``T_k = EA max(0, l_k/ds_k - 1)``.
     - 000 Eq. 5: the pair term of neighbours a, b is the stress-point tension along the chord.
-    - 000 Eq. 10-11: ``Pi_ab`` with mu from the chord; pair force ``mk_a mk_b Pi |W'|``.
+    - 000 Eq. 10-11: ``Pi_ab`` with mu from the chord; pair force ``mk_a mk_b Pi |W'|``;
+      only on taut segments (the viscosity damps the stiff axial response; a slack cable
+      has none, and a viscosity there would stop it folding -- the paper's varphi = 1
+      made a slack cable fall ~100 times too slowly).
     - 000 Eq. 12 as mass-proportional damping ``-omega v``.
     - Morison drag and added mass in still water below ``water_z`` [m], per particle
       ``hyd[a] = (kn, kt, ma_n, ma_t)``: drag ``-kn |v_n| v_n - kt |v_t| v_t`` [N] and the
@@ -85,7 +88,9 @@ def forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, 
         for d in range(dim):
             vr += (v[k, d] - v[k + 1, d]) * e[k, d]
         vr *= -ell[k]  # v_ab . r_ab with a = k, b = k+1, r_ab = x_k - x_{k+1}
-        mu = h * min(vr, 0.0) / (ell[k] * ell[k] + 0.001 * h * h)
+        # only where the stress point is taut: a slack cable folds freely, with no wave to damp
+        taut = 1.0 if ell[k] > ds[k] else 0.0
+        mu = taut * h * min(vr, 0.0) / (ell[k] * ell[k] + 0.001 * h * h)
         pi_ab = (beta * mu * mu - alpha * mu * c0) / (0.5 * (lam[k] + lam[k + 1]))
         fseg[k] = Tk - mk[k] * mk[k + 1] * pi_ab * DW1 / (h * h)
         Tseg[k] = Tk
