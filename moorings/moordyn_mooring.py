@@ -1,0 +1,421 @@
+"""MoorDyn v2 (the ``moordyn`` package, a lumped-mass dynamic line model) behind
+the mooring interface (``cosim.protocol.Mooring``).
+
+The MoorDyn input file is written from the :class:`~moorings.line.MooringLine`
+records: one line type and one line per record (``EA``, ``mass_per_length``
+and the volume-equivalent ``diameter`` from the record), a fixed point at each
+anchor and a coupled point at each fairlead. MoorDyn has one flat seabed, at
+``z = water_level - depth``: all anchors must lie at one height, which becomes
+the seabed (the catenary law's "seabed through the anchor").
+
+Our coupler owns the clock: :meth:`MoorDynMooring.advance` hands MoorDyn the
+fairlead positions at the step's start time ``t`` and their velocities (given,
+or estimated by a backward difference of the positions of the last two
+steps), and MoorDyn integrates from ``t`` to ``t + dt`` with its own internal
+step ``dt_internal`` (it sub-cycles; the coupling step can be any size).
+MoorDyn's failures (input file, NaN in a line) become
+:class:`~cosim.errors.InputError` / :class:`~cosim.errors.SolverError` naming
+our line, with MoorDyn's own log lines attached.
+
+Optional: ``pip install .[moordyn]``. Importing this module works without it;
+constructing a :class:`MoorDynMooring` then raises an ``InputError`` that says
+how to install it.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import logging
+import math
+import os
+import re
+import shutil
+import sys
+import tempfile
+import weakref
+from pathlib import Path
+
+import numpy as np
+
+from cosim.errors import InputError, SolverError
+from moorings.line import named_lines
+
+log = logging.getLogger(__name__)
+
+
+def moordyn_available() -> bool:
+    """Whether the optional ``moordyn`` package can be imported."""
+    try:
+        import moordyn  # noqa: F401
+    except ImportError:
+        return False
+    return True
+
+
+@contextlib.contextmanager
+def _captured_stdio(sink: Path):
+    """Send the C library's console output (fd 1 and 2) to ``sink`` for the duration."""
+    sys.stdout.flush()
+    sys.stderr.flush()
+    saved = [os.dup(1), os.dup(2)]
+    with open(sink, "ab") as f:
+        try:
+            os.dup2(f.fileno(), 1)
+            os.dup2(f.fileno(), 2)
+            yield
+        finally:
+            os.dup2(saved[0], 1)
+            os.dup2(saved[1], 2)
+            for fd in saved:
+                os.close(fd)
+
+
+def _num(x) -> str:
+    """A number as MoorDyn reads it, exactly (shortest round-trip repr of the double)."""
+    return repr(float(x))
+
+
+def _close(box, tmpdir, keep_dir=False):
+    """Close the MoorDyn system in ``box`` (its console output goes to the folder's
+    console.txt) and, unless ``keep_dir``, remove the folder."""
+    system = box.pop("system", None)
+    if system is not None:
+        import moordyn
+
+        with contextlib.suppress(Exception):
+            with _captured_stdio(Path(tmpdir) / "console.txt"):
+                moordyn.Close(system)
+    if not keep_dir:
+        shutil.rmtree(tmpdir, ignore_errors=True)
+
+
+class MoorDynMooring:
+    """Lumped-mass dynamic mooring lines solved by MoorDyn v2; satisfies ``cosim.protocol.Mooring``.
+
+    Parameters
+    ----------
+    lines:
+        The :class:`~moorings.line.MooringLine` records (2-D lines run in MoorDyn
+        at y = 0). Each needs ``EA`` [N] (MoorDyn lines are elastic) and
+        ``mass_per_length`` [kg/m] or ``diameter`` [m]: the other one follows
+        from the submerged weight, ``w = (m - rho pi d^2 / 4) g``; if both are
+        given they must agree with ``weight`` to 0.1 %.
+    fairleads:
+        Optional initial fairlead positions [m], ``(n_lines, dim)``.
+    water_level:
+        Height of the free surface in our world frame [m] (MoorDyn's z = 0).
+    rho:
+        Water density [kg/m^3].
+    g:
+        Gravity [m/s^2].
+    segments:
+        Number of segments per line (MoorDyn's NumSegs).
+    dt_internal:
+        MoorDyn's internal time step dtM [s]; default half the smallest axial
+        wave transit time of a segment, ``0.5 min(l_seg sqrt(m / EA))``.
+    damping_ratio:
+        Axial internal damping as a fraction of the critical damping of a
+        segment (MoorDyn's negative BA) [-].
+    cd_normal, ca_normal, cd_axial, ca_axial:
+        Drag and added-mass coefficients, normal and axial [-].
+    seabed_stiffness, seabed_damping:
+        MoorDyn's kbot [Pa/m] and cbot [Pa s/m].
+    ic_time, ic_threshold, ic_drag_scale:
+        MoorDyn's initial-condition relaxation: TmaxIC [s], threshIC [-],
+        CdScaleIC [-].
+    name:
+        Participant name used in messages.
+    """
+
+    def __init__(self, lines, fairleads=None, *, water_level: float = 0.0, rho: float = 1025.0, g: float = 9.81,
+                 segments: int = 20, dt_internal: float | None = None, damping_ratio: float = 0.8,
+                 cd_normal: float = 1.2, ca_normal: float = 1.0, cd_axial: float = 0.2, ca_axial: float = 0.0,
+                 seabed_stiffness: float = 3.0e6, seabed_damping: float = 3.0e5, ic_time: float = 20.0,
+                 ic_threshold: float = 1e-3, ic_drag_scale: float = 4.0, name: str = "moordyn"):
+        self.name = name
+        self.lines = named_lines(lines)
+        self.n_lines = len(self.lines)
+        self.dim = self.lines[0].dim
+        if not moordyn_available():
+            raise InputError(f"{name}: the optional 'moordyn' package is not installed; "
+                             f"pip install 'cosim-sph[moordyn]' (or pip install moordyn)")
+        nums = dict(water_level=water_level, rho=rho, g=g, damping_ratio=damping_ratio, cd_normal=cd_normal,
+                    ca_normal=ca_normal, cd_axial=cd_axial, ca_axial=ca_axial, seabed_stiffness=seabed_stiffness,
+                    seabed_damping=seabed_damping, ic_time=ic_time, ic_threshold=ic_threshold,
+                    ic_drag_scale=ic_drag_scale)
+        for key, v in nums.items():
+            if not isinstance(v, (int, float)) or not math.isfinite(v):
+                raise InputError(f"{name}: {key} = {v!r} must be a finite number")
+        for key in ("rho", "g", "ic_threshold", "ic_drag_scale"):
+            if nums[key] <= 0:
+                raise InputError(f"{name}: {key} = {nums[key]!r} must be > 0")
+        for key in ("damping_ratio", "cd_normal", "ca_normal", "cd_axial", "ca_axial", "seabed_stiffness",
+                    "seabed_damping", "ic_time"):
+            if nums[key] < 0:
+                raise InputError(f"{name}: {key} = {nums[key]!r} must be >= 0")
+        if not isinstance(segments, int) or segments < 1:
+            raise InputError(f"{name}: segments = {segments!r} must be an integer >= 1")
+        self.water_level, self.rho, self.g, self.segments = float(water_level), float(rho), float(g), segments
+        self.anchors = np.array([ln.anchor for ln in self.lines], dtype=float)
+        z = self.anchors[:, -1]
+        span = float(np.max(np.abs(self.anchors))) + 1.0
+        if np.ptp(z) > 1e-9 * span:
+            raise InputError(f"{name}: MoorDyn has one flat seabed, but the anchors lie at z = "
+                             f"{', '.join(f'{v:.6g}' for v in z)} m; put all anchors at one height")
+        self.depth = self.water_level - float(z[0])
+        if not self.depth > 0:
+            raise InputError(f"{name}: the anchors (z = {z[0]:.6g} m) must lie below the water level "
+                             f"({self.water_level:.6g} m)")
+        self._mass, self._diam = [], []
+        for ln in self.lines:
+            m, d = self._mass_and_diameter(ln)
+            self._mass.append(m)
+            self._diam.append(d)
+        if dt_internal is None:
+            dt_internal = 0.5 * min(ln.length / segments * math.sqrt(m / ln.EA) for ln, m in zip(self.lines, self._mass))
+        if not (isinstance(dt_internal, (int, float)) and math.isfinite(dt_internal) and dt_internal > 0):
+            raise InputError(f"{name}: dt_internal = {dt_internal!r} s must be > 0")
+        self.dt_internal = float(dt_internal)
+        self._options = nums
+        self._pos = None
+        self._vel = None
+        if fairleads is not None:
+            self.set_fairlead_motion(fairleads)
+        self._prev = None  # (t, positions) at the last step's start, for the velocity estimate
+        self._forces = None
+        self.t = 0.0
+        self._tmp = Path(tempfile.mkdtemp(prefix="cosim_moordyn_"))
+        self._box = {}
+        self._finalizer = weakref.finalize(self, _close, self._box, str(self._tmp))
+
+    # -- set-up ------------------------------------------------------------------
+    def _mass_and_diameter(self, ln):
+        label = f"{self.name}, line '{ln.name}'"
+        if ln.inextensible:
+            raise InputError(f"{label}: MoorDyn models elastic lines only; give the line an axial stiffness EA [N]")
+        m, d, w = ln.mass_per_length, ln.diameter, ln.weight
+        buoy = self.rho * math.pi / 4.0 * self.g  # buoyancy per unit length per d^2 [N/m^3]
+        if m is None and d is None:
+            raise InputError(f"{label}: MoorDyn needs the mass per length [kg/m] or the volume-equivalent "
+                             f"diameter [m] of the line (MooringLine mass_per_length= or diameter=)")
+        if m is None:
+            m = (w + buoy * d * d) / self.g
+        elif d is None:
+            vol = (m * self.g - w) / buoy
+            if vol <= 0:
+                raise InputError(f"{label}: mass_per_length = {m:g} kg/m weighs {m * self.g:g} N/m in air, not more "
+                                 f"than the submerged weight {w:g} N/m; the line would need negative volume")
+            d = math.sqrt(vol)
+        else:
+            w_md = (m - self.rho * math.pi / 4.0 * d * d) * self.g
+            if abs(w_md - w) > 1e-3 * w:
+                raise InputError(f"{label}: weight = {w:g} N/m disagrees with mass_per_length = {m:g} kg/m and "
+                                 f"diameter = {d:g} m, which give (m - rho pi d^2/4) g = {w_md:g} N/m; drop one "
+                                 f"of mass_per_length and diameter, or make them agree")
+        return m, d
+
+    def _md(self, p):
+        """Our world-frame point(s) (n, dim) -> MoorDyn's 3-D frame (z from the water level)."""
+        p = np.atleast_2d(p)
+        if self.dim == 2:
+            p = np.stack([p[:, 0], np.zeros(len(p)), p[:, 1]], axis=1)
+        q = np.array(p, dtype=float)
+        q[:, 2] -= self.water_level
+        return q
+
+    def _input_file(self, fairleads) -> str:
+        o = self._options
+        rows_types, rows_points, rows_lines = [], [], []
+        a_md, f_md = self._md(self.anchors), self._md(fairleads)
+        for i, ln in enumerate(self.lines):
+            nums = (self._diam[i], self._mass[i], ln.EA, -o["damping_ratio"], 0.0, o["cd_normal"], o["ca_normal"],
+                    o["cd_axial"], o["ca_axial"])
+            rows_types.append(f"lt{i + 1} " + " ".join(_num(v) for v in nums))
+        for i in range(self.n_lines):
+            rows_points.append(f"{i + 1} Fixed {' '.join(_num(c) for c in a_md[i])} 0 0 0 0")
+        for i in range(self.n_lines):
+            rows_points.append(f"{self.n_lines + i + 1} Coupled {' '.join(_num(c) for c in f_md[i])} 0 0 0 0")
+        for i, ln in enumerate(self.lines):
+            rows_lines.append(f"{i + 1} lt{i + 1} {i + 1} {self.n_lines + i + 1} {_num(ln.length)} {self.segments} -")
+        opts = [(self.dt_internal, "dtM"), (o["seabed_stiffness"], "kbot"), (o["seabed_damping"], "cbot"),
+                (self.rho, "WtrDnsty"), (self.depth, "WtrDpth"), (self.g, "g"), (o["ic_time"], "TmaxIC"),
+                (o["ic_drag_scale"], "CdScaleIC"), (o["ic_threshold"], "threshIC")]
+        return "\n".join([
+            "--------------------- MoorDyn Input File ------------------------------------",
+            f"written by moorings.moordyn_mooring for {self.name}: lines {', '.join(ln.name for ln in self.lines)}",
+            "----------------------- LINE TYPES ------------------------------------------",
+            "TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx",
+            "(name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)",
+            *rows_types,
+            "---------------------- POINTS --------------------------------",
+            "ID Attachment X Y Z Mass Volume CdA Ca",
+            "(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)",
+            *rows_points,
+            "---------------------- LINES --------------------------------------",
+            "ID LineType AttachA AttachB UnstrLen NumSegs Outputs",
+            "(#) (name) (#) (#) (m) (-) (-)",
+            *rows_lines,
+            "---------------------- OPTIONS -----------------------------------------",
+            *[f"{_num(v)} {k}" for v, k in opts],
+            "1 disableOutput",
+            "1 disableOutTime",
+            "--------------------- need this line ------------------",
+            "",
+        ])
+
+    def _log_text(self) -> str:
+        text = ""
+        for f in ("moordyn.log", "console.txt"):
+            p = self._tmp / f
+            if p.exists():
+                text += p.read_text(errors="replace")
+        return text
+
+    def _error(self, what: str, exc: Exception, cls=SolverError):
+        text = self._log_text()
+        errs = [ln.strip() for ln in text.splitlines() if ln.strip() and ("ERR" in ln or "rror" in ln
+                                                                           or re.match(r"Line \d+", ln.strip()))]
+        culprits = sorted({int(k) for k in re.findall(r"Line (\d+)", " ".join(errs))})
+        named = [f"line '{self.lines[k - 1].name}' (MoorDyn line {k})" for k in culprits if 1 <= k <= self.n_lines]
+        where = f" in {', '.join(named)}" if named else ""
+        detail = " | ".join(errs[-4:]) if errs else str(exc)
+        hint = ("; try a smaller dt_internal, more damping, or check the fairlead motion (a line pulled far "
+                "beyond its length)") if cls is SolverError else ""
+        return cls(f"{self.name} at t = {self.t:.6g} s: MoorDyn failed {what}{where}: {detail}{hint}")
+
+    # -- participant protocol ------------------------------------------------
+    def initialize(self, t0: float) -> None:
+        """Write the input file, create the MoorDyn system and let MoorDyn find its
+        initial (static) state at the current fairlead positions."""
+        import moordyn
+
+        if self._pos is None:
+            raise InputError(f"{self.name}: fairlead positions are not set; call set_fairlead_motion() "
+                             f"or pass fairleads= before the run")
+        _close(self._box, self._tmp, keep_dir=True)  # a second initialize() starts afresh
+        path = self._tmp / "lines.txt"
+        path.write_text(self._input_file(self._pos))
+        console = self._tmp / "console.txt"
+        try:
+            with _captured_stdio(console):
+                system = moordyn.Create(str(path))
+        except Exception as exc:  # noqa: BLE001 - cmoordyn raises RuntimeError
+            raise self._error("to read the input file it was given", exc, InputError) from None
+        self._box["system"] = system
+        moordyn.SetVerbosity(system, moordyn.LEVEL_NONE)
+        moordyn.SetLogFile(system, str(self._tmp / "moordyn.log"))
+        moordyn.SetLogLevel(system, moordyn.LEVEL_WRN)
+        x, v = self._md(self._pos).ravel(), np.zeros(3 * self.n_lines)
+        if self._vel is not None:
+            v = self._md_vec(self._vel).ravel()
+        self.t = float(t0)
+        try:
+            with _captured_stdio(console):
+                err = moordyn.Init(system, x.tolist(), v.tolist())
+        except Exception as exc:  # noqa: BLE001
+            raise self._error("to find the initial state", exc) from None
+        if err != 0:
+            raise self._error(f"to find the initial state (error code {err})", RuntimeError(err))
+        log.debug("%s: MoorDyn console output:\n%s", self.name, console.read_text(errors="replace"))
+        f = [moordyn.GetPointForce(moordyn.GetPoint(system, self.n_lines + i + 1)) for i in range(self.n_lines)]
+        self._forces = self._ours(np.asarray(f, dtype=float))
+        self._prev = None
+
+    def max_dt(self) -> float:
+        """Unlimited: MoorDyn sub-cycles each coupling step with ``dt_internal``."""
+        return math.inf
+
+    def advance(self, t: float, dt: float) -> None:
+        """Integrate from ``t`` to ``t + dt`` [s], the fairleads starting from the
+        positions last set and moving with their velocities."""
+        import moordyn
+
+        system = self._system()
+        self.t = float(t)
+        if self._vel is not None:
+            vel = self._vel
+        elif self._prev is not None and t > self._prev[0]:
+            vel = (self._pos - self._prev[1]) / (t - self._prev[0])
+        else:
+            vel = np.zeros_like(self._pos)
+        x, v = self._md(self._pos).ravel().tolist(), self._md_vec(vel).ravel().tolist()
+        try:
+            f = moordyn.Step(system, x, v, float(t), float(dt))
+        except Exception as exc:  # noqa: BLE001
+            raise self._error(f"between t = {t:.6g} s and {t + dt:.6g} s", exc) from None
+        f = np.asarray(f, dtype=float).reshape(self.n_lines, 3)
+        if not np.all(np.isfinite(f)):
+            raise self._error(f"between t = {t:.6g} s and {t + dt:.6g} s (non-finite fairlead forces)",
+                              RuntimeError("NaN"))
+        self._forces = self._ours(f)
+        self._prev = (float(t), self._pos.copy())
+        self.t = float(t) + float(dt)
+
+    def save_state(self):
+        import moordyn
+
+        return (moordyn.Serialize(self._system()), self._pos.copy(), None if self._vel is None else self._vel.copy(),
+                self._prev, self._forces.copy(), self.t)
+
+    def load_state(self, state) -> None:
+        import moordyn
+
+        blob, pos, vel, prev, forces, t = state
+        moordyn.Deserialize(self._system(), blob)
+        self._pos, self._vel, self._prev, self._forces, self.t = pos.copy(), vel, prev, forces.copy(), t
+
+    # -- mooring interface ---------------------------------------------------
+    def set_fairlead_motion(self, positions, velocities=None) -> None:
+        """Fairlead positions [m] and velocities [m/s] (``None``: estimated from the
+        positions of consecutive steps), ``(n_lines, dim)``, world frame."""
+        self._pos = self._check(positions, "fairlead positions")
+        self._vel = None if velocities is None else self._check(velocities, "fairlead velocities")
+
+    def fairlead_forces(self) -> np.ndarray:
+        """Force [N] each line exerts on its fairlead at the end of the last step
+        (after :meth:`initialize`: in the initial state), ``(n_lines, dim)``."""
+        if self._forces is None:
+            raise InputError(f"{self.name}: call initialize(t0) first")
+        return self._forces.copy()
+
+    def fairlead_tensions(self) -> np.ndarray:
+        """Magnitude of each fairlead force [N] (the catenary's ``sqrt(H^2 + V^2)``; MoorDyn's
+        own GetLineFairTen is the tension of the last segment, without the end node's weight)."""
+        return np.linalg.norm(self.fairlead_forces(), axis=1)
+
+    def close(self) -> None:
+        """Free MoorDyn and its files (also done at garbage collection)."""
+        self._finalizer()
+
+    # -- helpers ---------------------------------------------------------------
+    def _system(self):
+        s = self._box.get("system")
+        if s is None:
+            raise InputError(f"{self.name}: call initialize(t0) first (or the mooring was closed)")
+        return s
+
+    def _md_vec(self, v):
+        v = np.atleast_2d(v)
+        if self.dim == 2:
+            return np.stack([v[:, 0], np.zeros(len(v)), v[:, 1]], axis=1)
+        return np.array(v, dtype=float)
+
+    def _ours(self, f3):
+        return f3[:, [0, 2]].copy() if self.dim == 2 else f3
+
+    def _check(self, values, what):
+        want = f"shape ({self.n_lines}, {self.dim})"
+        try:
+            a = np.asarray(values, dtype=float)
+        except (TypeError, ValueError):
+            raise InputError(f"{self.name}: {what} must be numbers of {want}") from None
+        if a.shape != (self.n_lines, self.dim):
+            raise InputError(f"{self.name}: {what} must have {want}, got shape {a.shape}")
+        bad = ~np.all(np.isfinite(a), axis=1)
+        if bad.any():
+            i = int(np.argmax(bad))
+            raise InputError(f"{self.name}, line '{self.lines[i].name}': {what[:-1]} {a[i]} is not finite")
+        return a.copy()
+
+
+__all__ = ["MoorDynMooring", "moordyn_available"]
