@@ -287,7 +287,8 @@ def run_exp2_shake(n_particles: int, frequency: float, length: float, omega: flo
                    free_time: float = 8.0):
     """Shake P0 of Experiment 2 by 25 mm in x at ``frequency`` [Hz] for ``cycles`` cycles, then
     let the cable oscillate freely for ``free_time`` [s]. Returns (fundamental free period [s],
-    amplitude of P1-P5 in the first and the last second of the free phase [m], cable)."""
+    RMS vertical displacement of P1-P5 in the first and the last 2 s of the free phase [m],
+    cable)."""
     saved = EXP2["length"]
     EXP2["length"] = length
     try:
@@ -318,8 +319,8 @@ def run_exp2_shake(n_particles: int, frequency: float, length: float, omega: flo
     peaks = np.nonzero(band[1:-1] & (spec[1:-1] > spec[:-2]) & (spec[1:-1] >= spec[2:])
                        & (spec[1:-1] >= 0.2 * spec[band].max()))[0] + 1
     period = 1.0 / f[peaks[0]]
-    k = int(round(1.0 / dt_out))
-    return period, float(np.abs(z[:k]).max()), float(np.abs(z[-k:]).max()), c
+    k = int(round(2.0 / dt_out))
+    return period, float(np.sqrt((z[:k] ** 2).mean())), float(np.sqrt((z[-k:] ** 2).mean())), c
 
 
 #: seed 000 §3.3.2: free oscillation period after the excitation [s]
@@ -338,8 +339,9 @@ def cable_exp2_shake(quick: bool) -> dict:
     Run for two lengths: the stated 1.272 m, and the length whose exact catenary fits the
     measured static shape of Table 5 (about 1.286 m; the measured points lie 15-19 mm below
     the 1.272 m catenary). The period is very sensitive to the sag here, so the case passes
-    on the measured geometry and reports the stated-length period beside it. Also reported:
-    the free amplitude decays faster with omega = 0.04 1/s than without damping."""
+    on the measured geometry and reports the stated-length period beside it. Also checked:
+    with omega = 0.04 1/s the RMS motion late in the free phase is smaller than without
+    damping, by about exp(-omega t/2) (reported beside that expectation)."""
     n = 31 if quick else 61
     L_fit = fit_length_to_measured_shape()
     m, ok = {"length_fit_m": L_fit}, True
@@ -348,11 +350,15 @@ def cable_exp2_shake(quick: bool) -> dict:
             T, a0, a1, c = run_exp2_shake(n, fr, L)
             m[f"period_{label}_{lname}_s"] = float(T)
             m[f"err_period_{label}_{lname}"] = float(T / EXP2_PERIOD - 1)
-            m[f"decay_{label}_{lname}"] = a1 / a0
             if lname == "measured_shape":
                 ok = ok and bool(abs(T / EXP2_PERIOD - 1) < 0.07)
-    T, a0, a1, _ = run_exp2_shake(n, 1.0, L_fit, omega=0.0)
-    m["decay_type1_measured_shape_undamped"] = a1 / a0
-    ok = ok and m["decay_type1_measured_shape"] < m["decay_type1_measured_shape_undamped"]
+                if label == "type1":
+                    rms_damped = a1
+    # damping: the same run without it; mass-proportional damping scales every mode by
+    # exp(-omega t/2), t from the start of the shaking to the middle of the last 2 s
+    _, _, rms_free, _ = run_exp2_shake(n, 1.0, L_fit, omega=0.0)
+    m["rms_last2s_damped_over_undamped"] = rms_damped / rms_free
+    m["expected_exp(-omega t/2)"] = math.exp(-0.02 * (3.0 + 8.0 - 1.0))
+    ok = ok and rms_damped < rms_free
     return {"passed": ok, "metrics": m, "tolerances": {"err_period_measured_shape": 0.07}, "particles": n,
             "steps": c.steps}
