@@ -87,11 +87,15 @@ def sphere(name: str, radius: float, pos: Vec, *, density: float | None = None, 
     return _body(name, f'type="sphere" size="{float(radius)!r}"', pos, density, mass, False, sites, None)
 
 
-def scene(*bodies: str, gravity: float = 9.81, timestep: float = 1e-3, integrator: str = "implicitfast",
+def scene(*bodies: str, gravity: float = 9.81, timestep: float = 1e-3, integrator: str = "RK4",
           floor_z: float | None = None) -> str:
     """An MJCF model with the given bodies. ``gravity`` [m/s^2] acts along −z;
     ``timestep`` [s] is MuJoCo's largest step; ``floor_z`` [m] adds a fixed floor
-    plane (contacts) at that height."""
+    plane (contacts) at that height. ``integrator``: RK4 by default, because the
+    coupler holds loads over a coupling step and RK4 integrates them without the
+    O(timestep) energy gain that semi-implicit Euler gives an undamped oscillation
+    (+4.5 % heave amplitude over 8 periods at 2 ms, measured); "implicitfast" suits
+    stiff contacts and damping better."""
     _check_positive("scene", "timestep", [timestep])
     floor = ("" if floor_z is None else
              f'<geom name="floor" type="plane" size="0 0 1" pos="0 0 {float(floor_z)!r}"/>')

@@ -10,7 +10,8 @@ One coupling step (:meth:`Coupler.step`), in this order (``../shared/DESIGN.md``
 3. each mooring's force on its fairleads (for the fairlead motion it was last
    given), turned into a force and a torque about each body's centre of mass;
 4. the bodies advance with the sum of 2 and 3 (MuJoCo adds gravity, joints and
-   contacts, and sub-steps as it needs);
+   contacts, and sub-steps as it needs); with the predictor-corrector scheme the
+   loads are first re-taken at the predicted pose and averaged (see ``scheme``);
 5. the fluid gets the new body kinematics and advances; each mooring gets the new
    fairlead motion and advances (a dynamic line sub-cycles towards it);
 6. any other participant advances; the clock advances by whole ticks (no drift).
@@ -32,6 +33,9 @@ from cosim.clock import TICKS_PER_SECOND, Clock, to_ticks
 from cosim.errors import ConfigurationError, InputError, InstabilityError, SolverError
 from cosim.ledger import Ledger
 from cosim.protocol import Mooring, Participant, check_participant
+
+
+SCHEMES = ("explicit", "predictor-corrector")
 
 
 @dataclass(frozen=True)
@@ -76,10 +80,19 @@ class Coupler:
         Participants that need less still get less.
     t0:
         Start time [s].
+    scheme:
+        How body loads are taken over a step. ``"explicit"``: the loads at the
+        start of the step, held (one evaluation; for a load stiffness k on a mass m
+        it adds energy, amplitude growth ~ (ω dt)²/4 per step with ω² = k/m).
+        ``"predictor-corrector"`` (default): the bodies advance with the start
+        loads, the loads are taken at the predicted pose, every exchanging
+        participant is rolled back (``save_state``/``load_state``) and the bodies
+        advance with the mean of both (second order; growth ~ (ω dt)⁴).
     """
 
     def __init__(self, participants: Sequence[Participant] = (), *, bodies=None, fluid=None,
-                 moorings: Sequence = (), dt: float | None = None, t0: float = 0.0):
+                 moorings: Sequence = (), dt: float | None = None, t0: float = 0.0,
+                 scheme: str = "predictor-corrector"):
         self.bodies, self.fluid = bodies, fluid
         self.moorings = [m if isinstance(m, MooringAttachment) else MooringAttachment(m[0], tuple(m[1]))
                          for m in moorings]
@@ -105,6 +118,10 @@ class Coupler:
             raise InputError(f"coupling step dt must be a positive finite number of seconds, got {dt!r}")
         if dt is not None and to_ticks(dt) < 1:
             raise InputError(f"coupling step dt={dt!r} s is below the clock resolution of 1e-12 s")
+        if scheme not in SCHEMES:
+            raise InputError(f"coupling scheme {scheme!r} is not one of {', '.join(SCHEMES)}")
+        self.scheme = scheme
+        self._exchanging = roles
         self.dt = dt
         self.clock = Clock(t0)
         self.steps = 0
@@ -206,21 +223,45 @@ class Coupler:
         self.steps += 1
         return StepInfo(self.steps, self.clock.t, dt, limiter)
 
-    def _exchange_and_advance(self, t: float, dt: float) -> None:
-        b = self.bodies
-        kin = b.kinematics()
-        zeros = np.zeros((b.n_bodies, 3))
+    def _loads(self, kin) -> tuple[np.ndarray, ...]:
+        """Fluid force and torque, mooring force and torque on each body, for the
+        kinematics the fluid and the moorings were last given."""
+        zeros = np.zeros((self.bodies.n_bodies, 3))
         F_fluid, T_fluid = self.fluid.body_wrenches() if self.fluid is not None else (zeros, zeros)
         F_moor, T_moor = self._mooring_wrenches(kin) if self.moorings else (zeros, zeros)
+        return F_fluid, T_fluid, F_moor, T_moor
+
+    def _give_kinematics(self, kin) -> None:
+        if self.fluid is not None:
+            self.fluid.set_body_kinematics(kin)
+        for a, sites in zip(self.moorings, self._sites):
+            a.mooring.set_fairlead_motion(*self._fairlead_motion(a, sites, kin))
+
+    def _exchange_and_advance(self, t: float, dt: float) -> None:
+        b = self.bodies
+        kin0 = b.kinematics()
+        loads = self._loads(kin0)
+        if self.scheme == "predictor-corrector":
+            # predict the bodies' motion with the start loads, take the loads there,
+            # go back and advance with the mean of both
+            saved = [(p, p.save_state()) for p in self.participants if p in self._exchanging]
+            b.set_wrenches(loads[0] + loads[2], loads[1] + loads[3])
+            b.advance(t, dt)
+            kin1 = b.kinematics()
+            self._give_kinematics(kin1)
+            end = self._loads(kin1)
+            for p, st in saved:
+                p.load_state(st)
+            self._give_kinematics(kin0)
+            loads = tuple(0.5 * (a + c) for a, c in zip(loads, end))
+        F_fluid, T_fluid, F_moor, T_moor = loads
         b.set_wrenches(F_fluid + F_moor, T_fluid + T_moor)
         self.ledger.record(t, F_fluid, T_fluid, F_moor, T_moor, b.gravity_forces())
         b.advance(t, dt)
-        kin = b.kinematics()
+        self._give_kinematics(b.kinematics())
         if self.fluid is not None:
-            self.fluid.set_body_kinematics(kin)
             self.fluid.advance(t, dt)
-        for a, sites in zip(self.moorings, self._sites):
-            a.mooring.set_fairlead_motion(*self._fairlead_motion(a, sites, kin))
+        for a in self.moorings:
             a.mooring.advance(t, dt)
 
     def run(self, t_end: float, callback: Callable[[StepInfo], Any] | None = None) -> int:

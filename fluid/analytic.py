@@ -59,6 +59,18 @@ def _unit_cells(kind: str, size: np.ndarray, n: int):
     return p, vol, 2.0 * half / counts
 
 
+def _bounding_radius(kind: str, size: np.ndarray) -> float:
+    if kind == "box":
+        return float(np.linalg.norm(size[:3]))
+    if kind in ("sphere",):
+        return float(size[0])
+    if kind == "ellipsoid":
+        return float(size[:3].max())
+    if kind == "cylinder":
+        return float(math.hypot(size[0], size[1]))
+    return float(size[0] + size[1])  # capsule
+
+
 class AnalyticFluid:
     """Hydrostatics plus damping and added mass for the bodies of a scene.
 
@@ -123,6 +135,13 @@ class AnalyticFluid:
                 w.append(np.full(len(p), vol / len(p)))
                 axes.append(np.broadcast_to(g.rot * cell[None, :], (len(p), 3, 3)))  # cell edges, body frame
                 owner.append(np.full(len(p), i))
+        # a bound on the waterplane area at any pose: the central section of each
+        # geom's bounding sphere (the stable step must hold when the body crosses
+        # the surface, not only where it is now)
+        self._waterplane_bound = np.zeros(len(names))
+        for i, shapes in enumerate(bodies.geoms()):
+            for g in shapes:
+                self._waterplane_bound[i] += math.pi * _bounding_radius(g.kind, np.asarray(g.size, float)) ** 2
         self._pts, self._w = np.concatenate(pts), np.concatenate(w)
         self._cell_axes, self._owner = np.concatenate(axes), np.concatenate(owner)
         self.n_bodies = len(names)
@@ -148,8 +167,6 @@ class AnalyticFluid:
         frac = np.clip((self.eta - p_w[:, 2]) / height + 0.5, 0.0, 1.0)  # exact for cells level with the surface
         wv = self._w * frac
         vsub = np.bincount(self._owner, wv, minlength=self.n_bodies)
-        cut = (frac > 0.0) & (frac < 1.0)  # cells the surface passes through
-        self._waterplane = np.bincount(self._owner[cut], (self._w / height)[cut], minlength=self.n_bodies)
         moment = np.stack([np.bincount(self._owner, wv * p_w[:, k], minlength=self.n_bodies) for k in range(3)], 1)
         centre = np.divide(moment, vsub[:, None], out=kin.com.copy(), where=vsub[:, None] > 0)
         F = np.zeros((self.n_bodies, 3))
@@ -173,19 +190,20 @@ class AnalyticFluid:
         self.t = t0
 
     def max_dt(self) -> float:
-        """The explicit coupling's stable step: loads are held over a step, so
-        damping needs dt < m / B (taken with a factor 2 margin) and the hydrostatic
-        spring k = ρ g A_wp at least 50 steps per heave period 2π sqrt(m / k) (the
-        load held over a step lengthens the period by ~1 % at 20 steps, ~0.2 % at 50).
+        """The stable step of loads held over a coupling step. Damping needs
+        dt < m / B (taken with a factor 2 margin) and the hydrostatic spring
+        k = ρ g A_wp at least 50 steps per heave period 2π sqrt(m / k) (held loads
+        lengthen the period by ~1 % at 20 steps, ~0.2 % at 50). Both use bounds
+        valid at any pose (full submergence, the largest waterplane), since a body
+        out of or under the water now may cross the surface within the step.
         :attr:`dt_limit` says which one limits."""
         if self._kin is None:
             return math.inf
-        frac = self.submerged_volume / self.volume
-        B = frac[:, None] * (self._lin[:, :3] + self._quad[:, :3] * np.abs(self._kin.velocity))
+        B = self._lin[:, :3] + self._quad[:, :3] * np.abs(self._kin.velocity)
         with np.errstate(divide="ignore"):
             dt_damp = np.min(np.where(B > 0, self._mass[:, None] / B, math.inf))
-            k = self.rho * self.g * self._waterplane
-            dt_hydro = np.min(np.where(k > 0, 0.02 * 2.0 * math.pi * np.sqrt(self._mass / k), math.inf))
+            k = self.rho * self.g * self._waterplane_bound
+            dt_hydro = np.min(0.02 * 2.0 * math.pi * np.sqrt(self._mass / k))
         self.dt_limit = "damping" if dt_damp < dt_hydro else "hydrostatic stiffness"
         return float(min(dt_damp, dt_hydro))
 

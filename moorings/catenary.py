@@ -343,6 +343,28 @@ def _solve_batch(X, h, L, w, EA, H, V, td, state):
         H[i], V[i], td[i], state[i] = _solve_dim(X[i], h[i], L[i], w[i], EA[i])
 
 
+@nb.njit(**_JIT)
+def _solve_batch_serial(X, h, L, w, EA, H, V, td, state):
+    for i in range(X.size):
+        H[i], V[i], td[i], state[i] = _solve_dim(X[i], h[i], L[i], w[i], EA[i])
+
+
+# below this many lines, waking the thread pool costs more than it saves
+_PARALLEL_MIN = 512
+
+
+@nb.njit(**_JIT)
+def solve_packed(P, out):
+    """The law for lines packed as rows ``P[i] = (X, h, L, w, EA)`` (float64,
+    ``EA = inf`` for inextensible), written to ``out[i] = (H, V, touchdown,
+    state)``. No checks: for callers that validated their lines once (a mooring
+    system inside a coupling loop), where the checks and array handling of
+    :func:`solve` would cost more than the solve."""
+    for i in range(P.shape[0]):
+        H, V, td, state = _solve_dim(P[i, 0], P[i, 1], P[i, 2], P[i, 3], P[i, 4])
+        out[i, 0], out[i, 1], out[i, 2], out[i, 3] = H, V, td, state
+
+
 # ---------------------------------------------------------------------------
 # public API
 # ---------------------------------------------------------------------------
@@ -425,7 +447,7 @@ def _solve_array(X, h, L, w, EA) -> LineSolution:
     H, V, td = np.empty(n), np.empty(n), np.empty(n)
     state = np.empty(n, dtype=np.int64)
     if n:
-        _solve_batch(*flat, H, V, td, state)
+        (_solve_batch if n >= _PARALLEL_MIN else _solve_batch_serial)(*flat, H, V, td, state)
     state = state.astype(np.int8)
     if not shape:
         return LineSolution(float(H[0]), float(V[0]), float(td[0]), _STATES[state[0]])
@@ -492,6 +514,7 @@ def shape(X: float, h: float, L: float, w: float, EA: float | None = None, n: in
 
 
 __all__ = [
+    "solve_packed",
     "FULLY_LIFTED",
     "PARTLY_LIFTED",
     "RESTING",

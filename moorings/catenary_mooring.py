@@ -16,7 +16,7 @@ import math
 import numpy as np
 
 from cosim.errors import InputError, TautLineError
-from moorings.catenary import TAUT, LineSolution, solve
+from moorings.catenary import TAUT, LineSolution, solve_packed
 from moorings.line import MooringLine, named_lines
 
 
@@ -42,6 +42,9 @@ class CatenaryMooring:
         self._L = np.array([ln.length for ln in self.lines])
         self._w = np.array([ln.weight for ln in self.lines])
         self._EA = np.array([math.inf if ln.inextensible else ln.EA for ln in self.lines])
+        # rows (X, h, L, w, EA) for catenary.solve_packed: the lines were checked above
+        self._packed = np.column_stack([np.zeros(self.n_lines), np.zeros(self.n_lines), self._L, self._w, self._EA])
+        self._out = np.empty((self.n_lines, 4))
         self.t = 0.0
         self._pos: np.ndarray | None = None
         self.solution: LineSolution | None = None  #: per-line H, V, touchdown, state
@@ -99,7 +102,10 @@ class CatenaryMooring:
             )
         horiz = d[:, :-1]
         X = np.sqrt(np.sum(horiz**2, axis=1))
-        sol = solve(X, h, self._L, self._w, self._EA)
+        self._packed[:, 0], self._packed[:, 1] = X, h
+        solve_packed(self._packed, self._out)
+        o = self._out
+        sol = LineSolution(o[:, 0].copy(), o[:, 1].copy(), o[:, 2].copy(), o[:, 3].astype(np.int8))
         taut = (sol.state == TAUT) & np.isinf(sol.H)
         if taut.any():
             i = int(np.argmax(taut))
