@@ -109,3 +109,22 @@ def test_save_and_load_state_replays_exactly():
     m.set_fairlead_motion([[131.0, 0.5]], [[1.0, 0.0]])
     m.advance(0.5, 0.5)
     np.testing.assert_array_equal(m.fairlead_forces(), a)
+
+
+def test_swaps_for_the_catenary_in_a_coupled_scene():
+    """The same MooringLine list drives either model through the coupler; with a (nearly)
+    fixed body the settled SPH line pulls the fairlead as the catenary does."""
+    from bodies import builders
+    from bodies.mujoco_bodies import MujocoBodies
+    from cosim.coupler import Coupler
+    from moorings.catenary_mooring import CatenaryMooring
+
+    xml = builders.scene(builders.box("b", (2.0, 1.0), (0, 0, 0), mass=1e9, planar=True,
+                                      sites={"fl": (1.0, 0.0, -0.5)}), gravity=0.0)
+    lines = [MooringLine((30.0, -20.0), 40.0, 100.0, EA=1e7, mass_per_length=12.0)]
+    forces = []
+    for model in (CatenaryMooring(lines), SPHCableMooring(lines, n_particles=30, omega=2.0)):
+        c = Coupler(bodies=MujocoBodies(xml), moorings=[(model, ["fl"])], dt=0.25, scheme="explicit")
+        c.run(40.0)
+        forces.append(c.ledger.arrays()["mooring_force"][-1, 0])
+    np.testing.assert_allclose(forces[1], forces[0], rtol=0.01, atol=1e-3 * np.abs(forces[0]).max())
