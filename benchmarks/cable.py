@@ -7,8 +7,9 @@ Prints
    counts, for a line in air (seed 000 Experiment 2) and for a 100-particle mooring line
    in water (Morison drag, added mass, seabed), next to the cost of one quasi-static
    catenary evaluation (moorings.catenary.solve) for the same line;
-3. the speed/accuracy trade of seed 000 Case 1: error of the displacement of L against
-   the exact elastic catenary, and wall time, at several particle counts.
+3. the speed/accuracy trade (error and wall time at several particle counts) of seed 000
+   Case 1 (displacement of L against the exact elastic catenary), Experiment 2 at rest
+   (shape and reactions) and the mooring line against the quasi-static catenary.
 
 Run: ``.venv/bin/python benchmarks/cable.py`` (``--quick`` for fewer sizes).
 """
@@ -23,8 +24,12 @@ import time
 
 import numpy as np
 
-from moorings.line import MooringLine
-from moorings.sph_cable import SPHCable, SPHCableMooring
+# a script's folder comes first on sys.path; benchmarks/moorings.py would shadow the package
+_HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path[:] = [p for p in sys.path if os.path.abspath(p or os.curdir) != _HERE]
+
+from moorings.line import MooringLine  # noqa: E402
+from moorings.sph_cable import SPHCable, SPHCableMooring  # noqa: E402
 
 _FIRST_CALL = """
 import time
@@ -85,7 +90,7 @@ def main(quick: bool = False) -> None:
     print(f"catenary law: {1e6 * (time.perf_counter() - w0) / k:.2f} us per evaluation (quasi-static: one per "
           "coupling step)")
 
-    from cosim.validations.cable import run_case1
+    from cosim.validations.cable import run_case1, run_exp2_static, run_vs_catenary
 
     print("\nseed 000 Case 1 (35.586 kN at L): error of the displacement of L against the exact catenary")
     print(f"{'particles':>10} {'err dz':>10} {'err dx':>10} {'err dz vs Table 2':>18} {'wall [s]':>9}")
@@ -94,6 +99,21 @@ def main(quick: bool = False) -> None:
         mm, c = run_case1(n)
         print(f"{n:>10} {mm['err_dz_vs_exact']:>10.2e} {mm['err_dx_vs_exact']:>10.2e} "
               f"{mm['err_dz_vs_table2']:>18.2e} {time.perf_counter() - w0:>9.2f}")
+
+    print("\nseed 000 Experiment 2 at rest: shape and reactions against the exact catenary")
+    print(f"{'particles':>10} {'max shape err [m]':>18} {'err H vs exact':>15} {'err weight':>11} {'wall [s]':>9}")
+    for n in ([16, 31, 61] if quick else [16, 31, 61, 121]):
+        w0 = time.perf_counter()
+        mm, c = run_exp2_static(n)
+        print(f"{n:>10} {mm['shape_max_err_m']:>18.2e} {mm['err_H_vs_exact']:>15.2e} {mm['err_weight']:>11.2e} "
+              f"{time.perf_counter() - w0:>9.2f}")
+
+    print("\nmooring line with seabed, fairlead moved at 0.05 m/s: fairlead tension vs the quasi-static catenary")
+    print(f"{'particles':>10} {'max |err T|':>12} {'wall [s]':>9}")
+    for n in ([10, 20, 40] if quick else [10, 20, 40, 80]):
+        w0 = time.perf_counter()
+        mm, _ = run_vs_catenary(n, 0.05)
+        print(f"{n:>10} {mm['max_abs_err_tension']:>12.2e} {time.perf_counter() - w0:>9.2f}")
 
 
 if __name__ == "__main__":
