@@ -17,21 +17,13 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
-from typing import NamedTuple, Sequence
+from typing import Sequence
 
 import mujoco
 import numpy as np
 
+from bodies.sampling import BodyKinematics, GeomShape, sample_geoms
 from cosim.errors import InputError, InstabilityError
-
-
-class GeomShape(NamedTuple):
-    """A geom in its body's frame (the frame of ``BodyKinematics.origin``)."""
-
-    kind: str  #: "box", "sphere", "cylinder", "capsule", "ellipsoid" (others are skipped)
-    size: np.ndarray  #: MuJoCo size [m]: box half-sizes, sphere radius, cylinder/capsule radius and half-length
-    pos: np.ndarray  #: centre [m], (3,)
-    rot: np.ndarray  #: orientation, (3, 3): p_body = pos + rot p_geom
 
 
 _GEOM_KINDS = {
@@ -41,16 +33,6 @@ _GEOM_KINDS = {
     mujoco.mjtGeom.mjGEOM_CAPSULE: "capsule",
     mujoco.mjtGeom.mjGEOM_ELLIPSOID: "ellipsoid",
 }
-
-
-class BodyKinematics(NamedTuple):
-    """World-frame state of the coupled bodies, arrays with one row per body."""
-
-    com: np.ndarray  #: centre of mass [m], (n, 3)
-    origin: np.ndarray  #: body frame origin [m], (n, 3)
-    rotation: np.ndarray  #: body frame orientation, (n, 3, 3): p_w = origin + R p_b
-    velocity: np.ndarray  #: velocity of the centre of mass [m/s], (n, 3)
-    omega: np.ndarray  #: angular velocity [rad/s], (n, 3)
 
 
 def load_model(mjcf) -> mujoco.MjModel:
@@ -197,6 +179,17 @@ class MujocoBodies:
                 shapes.append(GeomShape(kind, m.geom_size[g].copy(), m.geom_pos[g].copy(), rot.reshape(3, 3)))
             out.append(shapes)
         return out
+
+    def boundary_particles(self, dx: float, layers: int, dim: int = 3):
+        """Boundary particles of every coupled body (see :mod:`bodies.sampling`):
+        positions [m] in body coordinates ``(n, 3)`` and the coupled-body index of
+        each particle."""
+        pts, owner = [], []
+        for k, shapes in enumerate(self.geoms()):
+            p, _ = sample_geoms(shapes, dx, layers, dim)  # the lattice keeps at least each geom's centre
+            pts.append(p)
+            owner.append(np.full(len(p), k))
+        return np.concatenate(pts), np.concatenate(owner)
 
     def masses(self) -> np.ndarray:
         """Mass of each coupled body [kg], from MuJoCo's geometry or the MJCF's values."""

@@ -1,0 +1,94 @@
+"""Boundary particles sampled from geoms and placed from the body pose."""
+
+import math
+
+import numpy as np
+import pytest
+
+from bodies import builders
+from bodies.mujoco_bodies import MujocoBodies
+from bodies.sampling import GeomShape, place, sample_geoms, signed_distance
+from cosim.errors import InputError
+
+I3 = np.eye(3)
+
+
+def test_box_band_has_the_lattice_count_and_depth():
+    g = GeomShape("box", np.array([0.5, 0.3, 0.2]), np.zeros(3), I3)
+    dx, layers = 0.05, 2
+    p, owner = sample_geoms([g], dx, layers)
+    n = (20, 12, 8)  # cells along each axis
+    inner = (20 - 4, 12 - 4, 8 - 4)
+    assert len(p) == np.prod(n) - np.prod(inner)
+    sd = signed_distance("box", g.size, p)
+    assert sd.max() == pytest.approx(-dx / 2) and sd.min() == pytest.approx(-1.5 * dx)
+    assert (owner == 0).all()
+
+
+@pytest.mark.parametrize("kind, size", [("sphere", [0.3]), ("cylinder", [0.2, 0.4]), ("capsule", [0.15, 0.3]),
+                                        ("ellipsoid", [0.3, 0.2, 0.25])])
+def test_curved_geoms_fill_a_band_inside_the_surface(kind, size):
+    size = np.array(size + [0.0] * (3 - len(size)))
+    dx, layers = 0.02, 3
+    p, _ = sample_geoms([GeomShape(kind, size, np.zeros(3), I3)], dx, layers)
+    sd = signed_distance(kind, size, p)
+    assert len(p) > 100 and sd.max() <= 0 and sd.min() > -layers * dx
+    # the band is full: its volume over dx^3 matches the particle count within 10 %
+    if kind == "sphere":
+        r = size[0]
+        band = 4 / 3 * math.pi * (r**3 - (r - layers * dx) ** 3)
+        assert len(p) == pytest.approx(band / dx**3, rel=0.1)
+
+
+def test_planar_sections_of_a_box_and_an_end_on_cylinder():
+    dx = 0.05
+    b = MujocoBodies(builders.scene(builders.box("box", (1.0, 0.5), (0, 0, 0), mass=1.0, planar=True),
+                                    builders.cylinder("cyl", 0.5, 1.0, (3, 0, 0), mass=1.0, planar=True)))
+    p, owner = b.boundary_particles(dx, 3, dim=2)
+    assert (p[:, 1] == 0).all()
+    box = p[owner == 0]
+    assert len(box) == 20 * 10 - 14 * 4  # a 3-layer rectangle ring
+    cyl = p[owner == 1]
+    r = np.hypot(cyl[:, 0], cyl[:, 2])
+    assert r.max() < 0.5 and r.min() > 0.5 - 3 * dx
+    band = math.pi * (0.5**2 - (0.5 - 3 * dx) ** 2)
+    assert len(cyl) == pytest.approx(band / dx**2, rel=0.05)
+
+
+def test_placement_is_rigid_and_velocities_follow_eq13():
+    xml = builders.scene(builders.box("b", (1.0, 0.6, 0.4), (0.5, -0.2, 1.0), density=700.0, euler=(10, 20, 30)),
+                         gravity=0.0)
+    b = MujocoBodies(xml)
+    b.data.qvel[:] = [0.3, -0.1, 0.2, 0.7, -0.4, 0.5]
+    b.initialize(0.0)
+    pb, owner = b.boundary_particles(0.05, 2)
+    x0, u0 = place(pb, owner, b.kinematics())
+    dt = 1e-6
+    b.advance(0.0, dt)
+    x1, _ = place(pb, owner, b.kinematics())
+    np.testing.assert_allclose((x1 - x0) / dt, u0, atol=1e-5)
+    d0 = np.linalg.norm(x0[::37] - x0[0], axis=1)
+    d1 = np.linalg.norm(x1[::37] - x1[0], axis=1)
+    np.testing.assert_allclose(d1, d0, atol=1e-12)  # rigid: no drift, no stretch
+
+
+def test_sampling_errors():
+    g = GeomShape("box", np.array([0.5, 0.5, 0.5]), np.zeros(3), I3)
+    with pytest.raises(InputError, match="dx must be"):
+        sample_geoms([g], 0.0, 2)
+    with pytest.raises(InputError, match="layers must be"):
+        sample_geoms([g], 0.1, 0)
+    tilted = GeomShape("box", np.array([0.5, 0.5, 0.5]), np.zeros(3),
+                       np.array([[1, 0, 0], [0, math.cos(0.3), -math.sin(0.3)], [0, math.sin(0.3), math.cos(0.3)]]))
+    with pytest.raises(InputError, match="no axis along y"):
+        sample_geoms([tilted], 0.1, 2, dim=2)
+
+
+
+def test_very_coarse_and_very_thin_bodies_still_get_particles():
+    b = MujocoBodies(builders.scene(builders.box("coarse", (0.3, 0.3), (0, 0, 0), mass=1.0, planar=True),
+                                    builders.box("plate", (1.0, 0.01), (2, 0, 0), mass=1.0, planar=True)))
+    p, owner = b.boundary_particles(0.1, 2, dim=2)
+    assert (owner == 0).sum() == 9  # 3 particles across, all within two layers
+    plate = p[owner == 1]
+    assert len(plate) == 10 and np.allclose(plate[:, 2], 0.0)  # one row along the mid-line
