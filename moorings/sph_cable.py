@@ -325,6 +325,7 @@ class SPHCable:
         self._fend_last = np.zeros((npr, self.dim))
         self._tension = np.zeros(n)
         self._loads: dict[int, _Load] = {}
+        self._tables: dict[int, tuple] = {}
         self._next_handle = 0
         self._rebuild_external()
         self.steps = 0
@@ -421,10 +422,61 @@ class SPHCable:
             np.max(np.linalg.norm(self._amp, axis=1) * self._om, initial=0.0))
         return self.cfl * float(min(seg.min(), np.diff(self.s).min())) / (self.c0 + vmax)
 
+    def set_end_table(self, end, times, positions) -> None:
+        """Make held end ``end`` follow a table of ``times`` [s] (increasing) and ``positions``
+        [m] (len(times), dim): piecewise cubic Hermite through the samples with velocities
+        from finite differences; before the first / after the last sample the end rests
+        there. :meth:`advance` splits its interval at the samples. ``None`` removes it."""
+        i = self._end_slot(end)
+        if times is None:
+            self._tables.pop(i, None)
+            return
+        tt = np.asarray(times, float).ravel()
+        pp = np.asarray(positions, float)
+        if (tt.size < 2 or pp.shape != (tt.size, self.dim) or not np.all(np.isfinite(tt))
+                or not np.all(np.isfinite(pp)) or not np.all(np.diff(tt) > 0)):
+            raise InputError(f"SPH cable '{self.name}': an end table needs >= 2 increasing finite times [s] and "
+                             f"positions of shape (len(times), {self.dim}) [m]")
+        self._tables[i] = (tt, pp, np.gradient(pp, tt, axis=0))
+
+    def _table_state(self, i, t):
+        tt, pp, vv = self._tables[i]
+        if t <= tt[0]:
+            return pp[0].copy(), np.zeros(self.dim)
+        if t >= tt[-1]:
+            return pp[-1].copy(), np.zeros(self.dim)
+        return (np.array([np.interp(t, tt, pp[:, d]) for d in range(self.dim)]),
+                np.array([np.interp(t, tt, vv[:, d]) for d in range(self.dim)]))
+
     def advance(self, t: float, dt: float) -> int:
         """Advance from ``t`` to ``t + dt`` [s] in compiled sub-steps; returns their number."""
         if not dt > 0:
             raise InputError(f"SPH cable '{self.name}': dt = {dt!r} s must be > 0")
+        if not self._tables:
+            return self._advance_span(t, dt)
+        t1 = t + dt
+        cuts = sorted({float(x) for tab in self._tables.values() for x in tab[0] if t + 1e-12 < x < t1 - 1e-12})
+        knots = [t, *cuts, t1]
+        # the other held ends keep their Hermite curve over the whole interval
+        npr = self._pidx.size
+        P0, V0, P1, V1 = self._p0.copy(), self._v0.copy(), self._p1.copy(), self._v1.copy()
+        zero = np.zeros((npr, self.dim))
+        pos, vel, acc = np.empty((npr, self.dim)), np.empty((npr, self.dim)), np.empty((npr, self.dim))
+        n_tot = 0
+        fmean = np.zeros_like(self._fend_mean)
+        for ta, tb in zip(knots[:-1], knots[1:]):
+            _k.prescribed_state(tb, t, t1, P0, V0, P1, V1, zero, np.zeros(npr), np.zeros(npr), np.full(npr, -1.0),
+                                pos, vel, acc)
+            self._p1[:], self._v1[:] = pos, vel
+            for i in self._tables:
+                self._p1[i], self._v1[i] = self._table_state(i, tb)
+            n_tot += self._advance_span(ta, tb - ta)
+            fmean += self._fend_mean * (tb - ta) / dt
+        self._fend_mean[:] = fmean
+        self.t = float(t1)
+        return n_tot
+
+    def _advance_span(self, t: float, dt: float) -> int:
         sdt = self.stable_dt()
         if not (math.isfinite(sdt) and sdt > 0 and dt / sdt < 1e9):
             a = int(np.argmax(np.nan_to_num(np.linalg.norm(self.v, axis=1), nan=np.inf)))
@@ -633,4 +685,19 @@ class SPHCableMooring:
             c.load_state(s)
 
 
-__all__ = ["SPHCable", "SPHCableMooring", "material_coordinates", "catenary_points"]
+def load_end_motion(path):
+    """Read a prescribed end motion from a text/CSV file: columns t [s] and the position
+    [m] (x, z or x, y, z), comma- or space-separated, ``#`` comments. Returns
+    (times, positions) for :meth:`SPHCable.set_end_table`."""
+    try:
+        with open(path) as fh:
+            rows = [ln.replace(",", " ").split() for ln in fh if ln.strip() and not ln.lstrip().startswith("#")]
+        data = np.array([[float(v) for v in r] for r in rows])
+    except (OSError, ValueError) as exc:
+        raise InputError(f"end motion file {path!r}: {exc}") from None
+    if data.ndim != 2 or data.shape[1] not in (3, 4) or data.shape[0] < 2:
+        raise InputError(f"end motion file {path!r}: need >= 2 rows of t, x, z (or t, x, y, z)")
+    return data[:, 0], data[:, 1:]
+
+
+__all__ = ["SPHCable", "SPHCableMooring", "material_coordinates", "catenary_points", "load_end_motion"]

@@ -204,3 +204,26 @@ def test_3d_hanging_cable_equals_the_2d_one():
         c2.advance(c2.t, 0.1)
         c3.advance(c3.t, 0.1)
     np.testing.assert_allclose(c3.positions, _rot3(c2.positions), atol=1e-9)
+
+
+def test_end_motion_from_a_file_follows_the_table(tmp_path):
+    from moorings.sph_cable import load_end_motion
+
+    f, amp = 1.5, 0.02
+    tt = np.linspace(0.0, 1.0, 401)
+    path = tmp_path / "motion.csv"
+    path.write_text("# t, x, z\n" + "\n".join(f"{t},{amp * math.sin(2 * math.pi * f * t)},0.0" for t in tt))
+    times, pos = load_end_motion(path)
+    c = SPHCable(1.0, 11, 1e4, 0.1, (0, 0), (0.0, -1.0), free_end="b",
+                 positions=np.stack([np.zeros(11), -np.linspace(0, 1, 11)], axis=1), omega=0.0)
+    c.set_end_table("a", times, pos)
+    ref = SPHCable(1.0, 11, 1e4, 0.1, (0, 0), (0.0, -1.0), free_end="b",
+                   positions=np.stack([np.zeros(11), -np.linspace(0, 1, 11)], axis=1), omega=0.0)
+    ref.set_harmonic("a", (amp, 0.0), f, t_on=0.0)
+    for k in range(40):  # coupling steps of 0.02 s, table samples every 0.0025 s
+        c.advance(0.02 * k, 0.02)
+        ref.advance(0.02 * k, 0.02)
+        assert c.x[0, 0] == pytest.approx(amp * math.sin(2 * math.pi * f * c.t), abs=1e-9)
+    assert np.abs(c.x - ref.x).max() < 0.01 * amp
+    with pytest.raises(InputError, match="increasing"):
+        c.set_end_table("a", [0.0, 0.0], [[0, 0], [0, 0]])
