@@ -28,6 +28,14 @@ the line's name made an identifier):
 ``moment.<axis>`` (2-D: ``moment.y``)  output  total moment about the reference [N m]
 =================================  ==========  ======================================
 
+With ``body_pose=True`` the fairleads follow a rigid body instead: the inputs
+are the body pose (3-D ``body.x``, ``body.y``, ``body.z`` [m] and a unit
+quaternion ``body.qw``, ``body.qx``, ``body.qy``, ``body.qz`` [-], normalised
+by the FMU; 2-D ``body.x``, ``body.z`` [m] and ``body.theta`` [rad] about +y),
+the body-frame fairleads are parameters ``<line>.fairlead_body.<axis>`` [m],
+``<line>.fairlead.<axis>`` become outputs (world frame) and ``reference.<axis>``
+is given in the body frame.
+
 The outputs are a pure function of the parameters and inputs (direct
 feedthrough, valid as soon as the inputs are set); ``fmi2DoStep`` only moves
 the clock. The FMU declares ``canGetAndSetFMUstate`` and
@@ -114,17 +122,25 @@ class _Var:
             self.initial = "calculated"
 
 
-def _layout(names, dim, starts):
+def _pose_names(dim):
+    return ("body.x", "body.y", "body.z", "body.qw", "body.qx", "body.qy", "body.qz") if dim == 3 else \
+        ("body.x", "body.z", "body.theta")
+
+
+def _layout(names, dim, starts, body_pose=False):
     """The variables in value-reference order, matching fmi2_catenary.c's layout.
 
     ``starts`` holds, per line, (anchor, length, weight, EA or 0, fairlead) and
-    the reference point under key ``"reference"``."""
+    the reference point under key ``"reference"`` (and the pose under ``"pose"``).
+    With ``body_pose`` the fairleads are outputs placed by the body pose (inputs)
+    from body-frame parameters, and the reference point is in the body frame."""
     ax = _axes(dim)
     v = []
     vr = 0
+    frame = "body frame" if body_pose else "world frame"
     for k, a in enumerate(ax):
-        v.append(_Var(f"reference.{a}", vr, "parameter", "m", f"reference point of the total moment, {a} [m]",
-                      starts["reference"][k]))
+        v.append(_Var(f"reference.{a}", vr, "parameter", "m",
+                      f"reference point of the total moment, {a}, {frame} [m]", starts["reference"][k]))
         vr += 1
     for i, n in enumerate(names):
         anchor, L, w, EA, fair = starts["lines"][i]
@@ -137,7 +153,11 @@ def _layout(names, dim, starts):
         v.append(_Var(f"{n}.EA", vr + 2, "parameter", "N", f"axial stiffness of line {n} [N]; 0 = inextensible", EA))
         vr += 3
         for k, a in enumerate(ax):
-            v.append(_Var(f"{n}.fairlead.{a}", vr, "input", "m", f"fairlead {a} of line {n}, world frame [m]", fair[k]))
+            if body_pose:
+                v.append(_Var(f"{n}.fairlead.{a}", vr, "output", "m", f"fairlead {a} of line {n}, world frame [m]"))
+            else:
+                v.append(_Var(f"{n}.fairlead.{a}", vr, "input", "m", f"fairlead {a} of line {n}, world frame [m]",
+                              fair[k]))
             vr += 1
         for k, a in enumerate(ax):
             v.append(_Var(f"{n}.force.{a}", vr, "output", "N", f"force of line {n} on its fairlead, {a}, world frame [N]"))
@@ -154,6 +174,19 @@ def _layout(names, dim, starts):
     for a in (ax if dim == 3 else ("y",)):
         v.append(_Var(f"moment.{a}", vr, "output", "N.m", f"total moment of the lines about the reference point, {a} [N m]"))
         vr += 1
+    if body_pose:
+        for i, n in enumerate(names):
+            for k, a in enumerate(ax):
+                v.append(_Var(f"{n}.fairlead_body.{a}", vr, "parameter", "m",
+                              f"fairlead {a} of line {n} in the body frame [m]", starts["lines"][i][4][k]))
+                vr += 1
+        units = ("m", "m", "m", None, None, None, None) if dim == 3 else ("m", "m", "rad")
+        what = ("position x", "position y", "position z", "orientation quaternion w (normalised by the FMU)",
+                "orientation quaternion x", "orientation quaternion y", "orientation quaternion z") if dim == 3 else \
+            ("position x", "position z", "pitch angle about +y (x' = x cos + z sin)")
+        for pname, unit, desc, start in zip(_pose_names(dim), units, what, starts["pose"]):
+            v.append(_Var(pname, vr, "input", unit, f"body {desc}" + (f" [{unit}]" if unit else " [-]"), start))
+            vr += 1
     n_real = vr
     for i, n in enumerate(names):
         v.append(_Var(f"{n}.state", n_real + i, "output", None,
@@ -166,7 +199,8 @@ def _fmt(x: float) -> str:
 
 
 def _model_description(model_identifier, guid, description, variables, names, dim):
-    units = {"m": 'm="1"', "N": 'kg="1" m="1" s="-2"', "N/m": 'kg="1" s="-2"', "N.m": 'kg="1" m="2" s="-2"'}
+    units = {"m": 'm="1"', "N": 'kg="1" m="1" s="-2"', "N/m": 'kg="1" s="-2"', "N.m": 'kg="1" m="2" s="-2"',
+             "rad": 'rad="1"'}
     out = [
         '<?xml version="1.0" encoding="UTF-8"?>',
         f'<fmiModelDescription fmiVersion="2.0" modelName={quoteattr(model_identifier)} guid="{guid}"',
@@ -209,8 +243,12 @@ def _model_description(model_identifier, guid, description, variables, names, di
                    .replace(" />", "/>"))
     out.append("  </ModelVariables>")
     ax = _axes(dim)
-    inputs_of = {n: " ".join(str(index[f"{n}.fairlead.{a}"]) for a in ax) for n in names}
-    all_inputs = " ".join(inputs_of[n] for n in names)
+    inputs = [v for v in variables if v.causality == "input"]
+    all_inputs = " ".join(str(index[v.name]) for v in inputs)
+    if any(v.name.startswith("body.") for v in inputs):  # body pose: every output depends on the whole pose
+        inputs_of = {n: all_inputs for n in names}
+    else:
+        inputs_of = {n: " ".join(str(index[f"{n}.fairlead.{a}"]) for a in ax) for n in names}
     outs = [v for v in variables if v.causality == "output"]
     out.append("  <ModelStructure>")
     out.append("    <Outputs>")
@@ -229,7 +267,7 @@ def _model_description(model_identifier, guid, description, variables, names, di
     return "\n".join(out) + "\n"
 
 
-def _config_header(model_identifier, guid, n, dim, n_real, starts, names):
+def _config_header(model_identifier, guid, n, dim, n_real, starts, names, body_pose=False):
     vals = ",\n    ".join(_fmt(x) for x in starts)
     cnames = ", ".join('"' + s + '"' for s in names)
     return (
@@ -237,7 +275,7 @@ def _config_header(model_identifier, guid, n, dim, n_real, starts, names):
         "#ifndef MODEL_CONFIG_H\n#define MODEL_CONFIG_H\n"
         f'#define MODEL_IDENTIFIER "{model_identifier}"\n'
         f'#define MODEL_GUID "{guid}"\n'
-        f"#define N_LINES {n}\n#define DIM {dim}\n#define N_REAL {n_real}\n"
+        f"#define N_LINES {n}\n#define DIM {dim}\n#define N_REAL {n_real}\n#define BODY_POSE {int(body_pose)}\n"
         f"static const double START_VALUES[N_REAL] = {{\n    {vals}\n}};\n"
         f"static const char *const LINE_NAMES[N_LINES] = {{{cnames}}};\n"
         "#endif\n"
@@ -307,6 +345,8 @@ def export_catenary_fmu(
     *,
     fairleads=None,
     reference_point=None,
+    body_pose: bool = False,
+    pose=None,
     model_identifier: str = "catenary_mooring",
     description: str | None = None,
     compile_binary: bool = True,
@@ -325,10 +365,20 @@ def export_catenary_fmu(
     fairleads:
         Start values of the fairlead inputs [m], ``(n_lines, dim)``, world frame;
         default: each fairlead straight above its anchor at half the line's
-        length (a resting line).
+        length (a resting line). With ``body_pose``: the fairleads in the body
+        frame (required), parameters ``<line>.fairlead_body.<axis>``.
     reference_point:
         Start value of the point about which the total moment is taken [m]
-        (``dim`` values, world frame); default the origin.
+        (``dim`` values, world frame; body frame with ``body_pose``); default
+        the origin.
+    body_pose:
+        Make the body pose the input instead of the fairlead positions: 3-D
+        ``body.x, body.y, body.z`` [m] and a unit quaternion ``body.qw, body.qx,
+        body.qy, body.qz`` [-]; 2-D ``body.x, body.z`` [m] and ``body.theta``
+        [rad] about +y. The fairleads (world frame) become outputs.
+    pose:
+        Start value of the pose with ``body_pose`` (the values above in that
+        order); default the identity at the origin.
     model_identifier:
         The FMU's model identifier (a C identifier; names the binary).
     description:
@@ -354,6 +404,18 @@ def export_catenary_fmu(
         raise InputError(f"export_catenary_fmu: folder {str(path.parent)!r} does not exist")
     if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", model_identifier or ""):
         raise InputError(f"export_catenary_fmu: model_identifier {model_identifier!r} must be a C identifier")
+    if body_pose and fairleads is None:
+        raise InputError("export_catenary_fmu: body_pose=True needs fairleads= (body-frame fairlead coordinates [m])")
+    if pose is not None and not body_pose:
+        raise InputError("export_catenary_fmu: pose= is the start pose of body_pose=True; set body_pose=True")
+    n_pose = 7 if dim == 3 else 3
+    pose0 = np.array([0, 0, 0, 1, 0, 0, 0] if dim == 3 else [0, 0, 0], dtype=float) if pose is None else \
+        np.asarray(pose, dtype=float)
+    if pose0.shape != (n_pose,) or not np.all(np.isfinite(pose0)):
+        raise InputError(f"export_catenary_fmu: pose must be {n_pose} finite numbers "
+                         f"({', '.join(_pose_names(dim))}); got {pose!r}")
+    if dim == 3 and not np.linalg.norm(pose0[3:]) > 0:
+        raise InputError("export_catenary_fmu: the pose quaternion (qw, qx, qy, qz) must not be zero")
     fair = _fairlead_starts(lines, fairleads)
     ref = np.zeros(dim) if reference_point is None else np.asarray(reference_point, dtype=float)
     if ref.shape != (dim,) or not np.all(np.isfinite(ref)):
@@ -368,16 +430,19 @@ def export_catenary_fmu(
     names = fmu_line_names(lines)
     starts = {
         "reference": ref,
+        "pose": pose0,
         "lines": [(ln.anchor, ln.length, ln.weight, 0.0 if ln.inextensible else ln.EA, fair[i])
                   for i, ln in enumerate(lines)],
     }
-    variables, n_real = _layout(names, dim, starts)
+    variables, n_real = _layout(names, dim, starts, body_pose)
     real_starts = [0.0 if v.start is None else v.start for v in variables if v.type == "Real"]
     if description is None:
         description = (f"Quasi-static catenary mooring system of {n} line(s) ({', '.join(names)}) in "
-                       f"{'3-D (x, y, z)' if dim == 3 else '2-D (x, z)'}; moorings.catenary exported as C")
+                       f"{'3-D (x, y, z)' if dim == 3 else '2-D (x, z)'}"
+                       f"{', fairleads on a body whose pose is the input' if body_pose else ''}; "
+                       f"moorings.catenary exported as C")
     # the GUID is a hash of everything that defines the model, so the same export gives the same GUID
-    guid = "{" + str(uuid.uuid5(uuid.NAMESPACE_URL, repr((model_identifier, dim, names, real_starts,
+    guid = "{" + str(uuid.uuid5(uuid.NAMESPACE_URL, repr((model_identifier, dim, bool(body_pose), names, real_starts,
                                                           (C_DIR / "fmi2_catenary.c").read_bytes(),
                                                           (C_DIR / "catenary.c").read_bytes())))) + "}"
     md = _model_description(model_identifier, guid, description, variables, names, dim)
@@ -391,7 +456,8 @@ def export_catenary_fmu(
             shutil.copyfile(C_DIR / f, src / f)
         for f in FMI_HEADERS:
             shutil.copyfile(fmi_headers / f, src / f)
-        (src / "model_config.h").write_text(_config_header(model_identifier, guid, n, dim, n_real, real_starts, names))
+        (src / "model_config.h").write_text(_config_header(model_identifier, guid, n, dim, n_real, real_starts, names,
+                                                                     body_pose))
         (src / "buildDescription.xml").write_text(_build_description(model_identifier))
         if compile_binary:
             bdir = root / "binaries" / plat

@@ -39,10 +39,51 @@ log = logging.getLogger(__name__)
 
 _STATUS = ("OK", "WARNING", "DISCARD", "ERROR", "FATAL", "PENDING")
 
+# fmpy's native logger proxy (it formats the FMU's printf-style message) keeps ONE
+# Python logger per process. All FMUMooring instances share one dispatcher that
+# routes each message by the componentEnvironment its instance was given, and
+# re-arm it before every FMI call, in case other fmpy users replaced it meanwhile.
+_SINKS: dict[int, tuple[list, str]] = {}
+_KEYS = iter(range(1, 1 << 62))
+_LOGGER = {}
 
-def _cleanup(fmu_box, unzip_dir):
+
+def _dispatch(env, instance, status, category, message):
+    text = message.decode("utf-8", "replace") if message else ""
+    st = _STATUS[status] if 0 <= status < len(_STATUS) else str(status)
+    sink = _SINKS.get(env or 0)
+    level = logging.DEBUG if status == 0 else logging.WARNING if status in (1, 2) else logging.ERROR
+    if sink is None:
+        name = instance.decode("utf-8", "replace") if instance else "?"
+        log.log(level, "FMU %s (not an FMUMooring): %s: %s", name, st, text)
+        return
+    messages, label = sink
+    messages.append((st, text))
+    del messages[:-20]
+    log.log(level, "%s: FMU %s: %s", label, st, text)
+
+
+def _arm():
+    """Make the shared dispatcher the process's FMU logger again; returns its C proxy."""
+    from ctypes import byref
+
+    from fmpy.fmi2 import fmi2CallbackFunctions, fmi2CallbackLoggerTYPE
+    from fmpy.logging import addLoggerProxy
+
+    if "py" not in _LOGGER:
+        _LOGGER["py"] = fmi2CallbackLoggerTYPE(_dispatch)
+    a = fmi2CallbackFunctions()
+    a.logger = _LOGGER["py"]
+    addLoggerProxy(byref(a))  # now a.logger is the formatting proxy that calls _dispatch
+    _LOGGER["proxy"] = a.logger
+    return a.logger
+
+
+def _cleanup(fmu_box, unzip_dir, key):
     """Free the FMU instance and its extracted files (runs at close() or garbage collection)."""
     fmu = fmu_box.pop("fmu", None)
+    if fmu is not None:
+        _arm()
     if fmu is not None:
         try:
             fmu.terminate()
@@ -52,6 +93,7 @@ def _cleanup(fmu_box, unzip_dir):
             fmu.freeInstance()
         except Exception:  # noqa: BLE001
             pass
+    _SINKS.pop(key, None)
     shutil.rmtree(unzip_dir, ignore_errors=True)
 
 
@@ -146,33 +188,22 @@ class FMUMooring:
         self.messages: list[tuple[str, str]] = []  #: the FMU's recent log messages (status, text)
 
         # load and instantiate now: a broken binary or GUID shows up at construction
-        from ctypes import byref
-
         from fmpy.fmi1 import calloc, free
         from fmpy.fmi2 import FMU2Slave, fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE
-        from fmpy.fmi2 import fmi2CallbackFunctions, fmi2CallbackLoggerTYPE
-        from fmpy.logging import addLoggerProxy
+        from fmpy.fmi2 import fmi2CallbackFunctions
 
-        messages = self.messages
         label = f"{name} ({self.path.name})"
-
-        def logger(env, instance, status, category, message):
-            text = message.decode("utf-8", "replace")
-            st = _STATUS[status] if 0 <= status < len(_STATUS) else str(status)
-            messages.append((st, text))
-            del messages[:-20]
-            level = logging.DEBUG if status == 0 else logging.WARNING if status in (1, 2) else logging.ERROR
-            log.log(level, "%s: FMU %s: %s", label, st, text)
-
+        key = next(_KEYS)
+        _SINKS[key] = (self.messages, label)
         cb = fmi2CallbackFunctions()
-        cb.logger = fmi2CallbackLoggerTYPE(logger)
+        cb.logger = _arm()
         cb.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
         cb.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
-        addLoggerProxy(byref(cb))
-        self._callbacks = (cb, logger)
+        cb.componentEnvironment = key  # routes this instance's messages to self.messages
+        self._callbacks = cb
         unzip_dir = fmpy.extract(str(self.path))
-        self._box = {}
-        self._finalizer = weakref.finalize(self, _cleanup, self._box, unzip_dir)
+        self._box = {"cb": cb}
+        self._finalizer = weakref.finalize(self, _cleanup, self._box, unzip_dir, key)
         try:
             fmu = FMU2Slave(guid=md.guid, unzipDirectory=unzip_dir, modelIdentifier=md.coSimulation.modelIdentifier,
                             instanceName=name)
@@ -238,6 +269,7 @@ class FMUMooring:
         from fmpy.fmi1 import FMICallException
 
         n0 = len(self.messages)
+        _arm()
         try:
             return fn(*args, **kwargs)
         except FMICallException as exc:

@@ -119,11 +119,19 @@ class Host:
             self.messages.append((status, category.decode(), message.decode()))
 
         cb = fmi2CallbackFunctions()
-        cb.logger = fmi2CallbackLoggerTYPE(logger)
+        self._pylogger = fmi2CallbackLoggerTYPE(logger)
+        cb.logger = self._pylogger
         cb.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
         cb.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
-        addLoggerProxy(byref(cb))
+        addLoggerProxy(byref(cb))  # fmpy's proxy formats the message; it keeps ONE Python logger per process
         self._keep = (cb, logger)
+
+        def arm():  # make this host's logger the process's one again
+            a = fmi2CallbackFunctions()
+            a.logger = self._pylogger
+            addLoggerProxy(byref(a))
+
+        self._arm = arm
         self.dir = fmpy.extract(path)
         self.fmu = FMU2Slave(guid=self.md.guid, unzipDirectory=self.dir,
                              modelIdentifier=self.md.coSimulation.modelIdentifier, instanceName=instance_name)
@@ -136,12 +144,15 @@ class Host:
         return [self.vars[n].valueReference for n in names]
 
     def set(self, names, values):
+        self._arm()
         self.fmu.setReal(self.vr(names), [float(v) for v in values])
 
     def get(self, names):
+        self._arm()
         return self.fmu.getReal(self.vr(names))
 
     def get_int(self, names):
+        self._arm()
         return self.fmu.getInteger(self.vr(names))
 
 
@@ -480,3 +491,85 @@ def test_cli_export_fmu(tmp_path, capsys):
     assert main(["export-fmu", str(tmp_path / "n.fmu"), "--lines", str(bad)]) == 2
     assert "missing ['weight']" in capsys.readouterr().err
     assert not (tmp_path / "n.fmu").exists()
+
+
+def pose_lines():
+    az = [0.3, 1.9, 3.5, 5.0]
+    lines = [MooringLine((100 * math.cos(a), 100 * math.sin(a), -50.0), 130.0, 900.0,
+                         EA=None if i % 2 else 1e8, name=f"m{i}") for i, a in enumerate(az)]
+    fb = np.array([[6 * math.cos(a), 6 * math.sin(a), 2.0] for a in az])
+    return lines, fb
+
+
+def _quat_matrix(q):
+    w, x, y, z = np.asarray(q) / np.linalg.norm(q)
+    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+                     [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+                     [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+
+
+def _case_body_pose(path3, path2):
+    from moorings.catenary_mooring import CatenaryMooring
+
+    rng = np.random.default_rng(6)
+    worst = 0.0
+    # 3-D: position and a (deliberately not normalised) quaternion
+    lines, fb = pose_lines()
+    h = Host(path3)
+    ref_b = np.array([0.5, -0.2, 1.0])
+    for _ in range(40):
+        p = rng.uniform(-5, 5, 3)
+        q = np.concatenate([[1.0], rng.uniform(-0.15, 0.15, 3)]) * rng.uniform(0.5, 2.0)
+        h.set(["body.x", "body.y", "body.z", "body.qw", "body.qx", "body.qy", "body.qz"], [*p, *q])
+        R = _quat_matrix(q)
+        fl = p + fb @ R.T
+        got_fl = np.reshape(h.get(_names(lines, "fairlead")), fl.shape)
+        worst = max(worst, float(np.max(np.abs(got_fl - fl)) / 100.0))
+        py = CatenaryMooring(lines, fairleads=got_fl)  # the law at the FMU's own fairlead positions
+        f = py.fairlead_forces()
+        got_f = np.reshape(h.get(_names(lines, "force")), f.shape)
+        worst = max(worst, float(np.max(np.abs(got_f - f)) / np.max(np.abs(f))))
+        tot, mom = py.total_wrench(p + R @ ref_b)
+        got_m = np.array(h.get(["moment.x", "moment.y", "moment.z"]))
+        worst = max(worst, float(np.max(np.abs(got_m - mom)) / (100 * np.max(np.abs(f)))))
+    # 2-D: x, z and the pitch angle
+    lines2, fb2 = lines2d(), np.array([[-2.0, 1.0], [2.0, 1.5]])
+    h2 = Host(path2)
+    for _ in range(40):
+        x, z, th = rng.uniform(-3, 3), rng.uniform(0, 2), rng.uniform(-0.2, 0.2)
+        h2.set(["body.x", "body.z", "body.theta"], [x, z, th])
+        c, s = math.cos(th), math.sin(th)
+        fl = np.array([x, z]) + fb2 @ np.array([[c, s], [-s, c]]).T
+        got_fl = np.reshape(h2.get(_names(lines2, "fairlead")), fl.shape)
+        worst = max(worst, float(np.max(np.abs(got_fl - fl)) / 30.0))
+        py = CatenaryMooring(lines2, fairleads=got_fl)
+        f = py.fairlead_forces()
+        worst = max(worst, float(np.max(np.abs(np.reshape(h2.get(_names(lines2, "force")), f.shape) - f))
+                                 / np.max(np.abs(f))))
+    # a zero quaternion is an error, not a crash
+    from fmpy.fmi1 import FMICallException
+
+    h.set(["body.qw", "body.qx", "body.qy", "body.qz"], [0.0, 0.0, 0.0, 0.0])
+    with pytest.raises(FMICallException):
+        h.get(["force.x"])
+    return {"worst": worst, "msg": h.messages[-1][2]}
+
+
+def test_body_pose_moves_the_fairleads(tmp_path):
+    from fmpy.validation import validate_fmu
+
+    lines, fb = pose_lines()
+    p3 = export_catenary_fmu(lines, tmp_path / "pose3.fmu", fairleads=fb, body_pose=True,
+                             reference_point=(0.5, -0.2, 1.0), model_identifier="pose3")
+    p2 = export_catenary_fmu(lines2d(), tmp_path / "pose2.fmu", fairleads=[[-2.0, 1.0], [2.0, 1.5]],
+                             body_pose=True, pose=(0.0, 1.0, 0.0), model_identifier="pose2")
+    assert validate_fmu(str(p3)) == [] and validate_fmu(str(p2)) == []
+    r = isolated("_case_body_pose", p3, p2)
+    assert r["worst"] <= 1e-12, r
+    assert "quaternion" in r["msg"]
+    from cosim.errors import InputError
+
+    with pytest.raises(InputError, match="needs fairleads"):
+        export_catenary_fmu(lines, tmp_path / "x.fmu", body_pose=True)
+    with pytest.raises(InputError, match="quaternion"):
+        export_catenary_fmu(lines, tmp_path / "x.fmu", fairleads=fb, body_pose=True, pose=(0, 0, 0, 0, 0, 0, 0))

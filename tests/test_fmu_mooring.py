@@ -141,3 +141,27 @@ def test_errors_are_clear(fmu3, caplog):
     with pytest.raises(SolverError, match="leg_2.*below the seabed"):
         m.advance(0.0, 0.1)
     m.close()
+
+
+def test_messages_reach_the_right_instance(fmu3, tmp_path):
+    """fmpy keeps one logger per process: each FMUMooring still gets its own FMU's messages."""
+    from moorings.fmu_mooring import FMUMooring
+
+    lines, fb = spread_mooring()
+    a = FMUMooring(fmu3, lines, catenary_fmu_variable_map(lines), fairleads=fb, name="first")
+    a.initialize(0.0)
+    lines2 = [MooringLine((-40.0, -10.0), 50.0, 80.0, name="solo")]
+    b = FMUMooring(export_catenary_fmu(lines2, tmp_path / "solo.fmu"), lines2, catenary_fmu_variable_map(lines2),
+                   fairleads=[[0.0, 0.0]], name="second")
+    b.initialize(0.0)
+    far = fb.copy()
+    far[0] = (120 - 170.0, 0.0, -5.0)
+    a.set_fairlead_motion(far)
+    with pytest.raises(TautLineError, match="first.*leg_0"):
+        a.fairlead_forces()
+    b.set_fairlead_motion([[-40.0 + 60.0, 0.0]])  # 'solo' (inextensible, 50 m) asked to span 60 m
+    with pytest.raises(TautLineError, match="second.*solo"):
+        b.fairlead_forces()
+    assert all("leg_0" in t for _, t in a.messages) and all("solo" in t for _, t in b.messages)
+    a.close()
+    b.close()

@@ -26,6 +26,13 @@
  * Integer: VR_STATE + i, the state of line i (0 resting, 1 partly lifted,
  * 2 fully lifted, 3 taut).
  *
+ * With BODY_POSE defined to 1 the fairleads follow a rigid body: the pose is
+ * the input (VR_POSE: 3-D x, y, z [m] and a unit quaternion qw, qx, qy, qz
+ * [-], normalised here; 2-D x, z [m] and the pitch angle theta [rad] about +y),
+ * the body-frame fairlead coordinates are parameters (VR_FB + i DIM + k) [m],
+ * the world-frame fairlead positions become outputs, and the reference point
+ * of the moment is given in the body frame.
+ *
  * Errors (an invalid parameter, a NaN input, a fairlead below the seabed, a
  * taut inextensible line) are reported through the logger and an fmi2Error
  * status; the host decides what to do, nothing aborts.
@@ -55,7 +62,13 @@
 #define VR_FTOT (DIM + N_LINES * LINE_STRIDE)
 #define VR_MOM (VR_FTOT + DIM)
 #define N_MOM (DIM == 3 ? 3 : 1)
-#define N_REAL_LAYOUT (VR_MOM + N_MOM)
+#ifndef BODY_POSE
+#define BODY_POSE 0
+#endif
+#define VR_FB (VR_MOM + N_MOM)
+#define VR_POSE (VR_FB + (BODY_POSE ? N_LINES * DIM : 0))
+#define N_POSE (BODY_POSE ? (DIM == 3 ? 7 : 3) : 0)
+#define N_REAL_LAYOUT (VR_POSE + N_POSE)
 #define VR_STATE N_REAL
 
 typedef char layout_matches_config[(N_REAL_LAYOUT == N_REAL) ? 1 : -1];
@@ -98,16 +111,62 @@ static int is_parameter(fmi2ValueReference vr)
         return 1;
     if (vr < VR_FTOT)
         return (vr - DIM) % LINE_STRIDE < O_FAIR;
-    return 0;
+    return BODY_POSE && vr >= VR_FB && vr < VR_POSE;
 }
 
 static int is_input(fmi2ValueReference vr)
 {
     unsigned k;
+    if (BODY_POSE)
+        return vr >= VR_POSE && vr < VR_POSE + N_POSE;
     if (vr < DIM || vr >= VR_FTOT)
         return 0;
     k = (vr - DIM) % LINE_STRIDE;
     return k >= O_FAIR && k < O_FAIR + DIM;
+}
+
+/* Body pose mode: world fairleads = p + R r_b; the reference point likewise.
+ * Returns 0, or 1 for a quaternion of zero length. */
+static int place_fairleads(double *r, double ref[3])
+{
+    const double *P = r + VR_POSE;
+    double R[3][3];
+    int i, j, k;
+    if (DIM == 3) {
+        double w = P[3], x = P[4], y = P[5], z = P[6], n = sqrt(w * w + x * x + y * y + z * z);
+        if (!(n > 0.0))
+            return 1;
+        w /= n;
+        x /= n;
+        y /= n;
+        z /= n;
+        R[0][0] = 1.0 - 2.0 * (y * y + z * z);
+        R[0][1] = 2.0 * (x * y - w * z);
+        R[0][2] = 2.0 * (x * z + w * y);
+        R[1][0] = 2.0 * (x * y + w * z);
+        R[1][1] = 1.0 - 2.0 * (x * x + z * z);
+        R[1][2] = 2.0 * (y * z - w * x);
+        R[2][0] = 2.0 * (x * z - w * y);
+        R[2][1] = 2.0 * (y * z + w * x);
+        R[2][2] = 1.0 - 2.0 * (x * x + y * y);
+    } else { /* (x, z) rotated by theta about +y: x' = c x + s z, z' = -s x + c z */
+        double c = cos(P[2]), s = sin(P[2]);
+        R[0][0] = c;
+        R[0][1] = s;
+        R[1][0] = -s;
+        R[1][1] = c;
+    }
+    for (i = 0; i <= N_LINES; i++) {
+        const double *b = i < N_LINES ? r + VR_FB + i * DIM : r; /* the last one: the reference point */
+        double *out = i < N_LINES ? r + LINE_BASE(i) + O_FAIR : ref;
+        for (j = 0; j < DIM; j++) {
+            double acc = P[j];
+            for (k = 0; k < DIM; k++)
+                acc += R[j][k] * b[k];
+            out[j] = acc;
+        }
+    }
+    return 0;
 }
 
 static const char *axis(int k) { return DIM == 2 ? (k == 0 ? "x" : "z") : (k == 0 ? "x" : k == 1 ? "y" : "z"); }
@@ -115,12 +174,17 @@ static const char *axis(int k) { return DIM == 2 ? (k == 0 ? "x" : "z") : (k == 
 /* Evaluate every line; the first error is logged and returned, the rest solved. */
 static fmi2Status evaluate(instance *c)
 {
-    double *r = c->s.r, ftot[3] = {0, 0, 0}, mom[3] = {0, 0, 0};
+    double *r = c->s.r, ftot[3] = {0, 0, 0}, mom[3] = {0, 0, 0}, ref[3] = {0, 0, 0};
     fmi2Status status = fmi2OK;
     int i, k;
+    for (k = 0; k < DIM; k++)
+        ref[k] = r[k];
+    if (BODY_POSE && place_fairleads(r, ref)) {
+        logmsg(c, fmi2Error, "logStatusError", "the body orientation quaternion has zero length");
+        status = fmi2Error;
+    }
     for (i = 0; i < N_LINES; i++) {
         double *p = r + LINE_BASE(i), d[3], X2 = 0.0, X, h, EA;
-        const double *ref = r;
         cat_solution sol;
         int err;
         const char *bad = NULL;
@@ -415,9 +479,14 @@ FMI2_Export fmi2Status fmi2SetReal(fmi2Component comp, const fmi2ValueReference 
         }
         if (isnan(value[i])) {
             if (is_input(vr[i])) {
-                unsigned k = (vr[i] - DIM) % LINE_STRIDE - O_FAIR;
-                logmsg(c, fmi2Error, "logStatusError", "fmi2SetReal: line '%s': fairlead %s is NaN",
-                       LINE_NAMES[(vr[i] - DIM) / LINE_STRIDE], axis((int)k));
+                if (BODY_POSE) {
+                    logmsg(c, fmi2Error, "logStatusError", "fmi2SetReal: body pose component %u is NaN",
+                           (unsigned)(vr[i] - VR_POSE));
+                } else {
+                    unsigned k = (vr[i] - DIM) % LINE_STRIDE - O_FAIR;
+                    logmsg(c, fmi2Error, "logStatusError", "fmi2SetReal: line '%s': fairlead %s is NaN",
+                           LINE_NAMES[(vr[i] - DIM) / LINE_STRIDE], axis((int)k));
+                }
             } else {
                 logmsg(c, fmi2Error, "logStatusError", "fmi2SetReal: parameter (value reference %u) is NaN",
                        (unsigned)vr[i]);
