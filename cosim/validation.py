@@ -18,7 +18,7 @@ from typing import Callable
 from cosim.errors import InputError
 
 #: modules that register cases; a new family adds its module here
-CASE_MODULES = ("cosim.validations.catenary", "cosim.validations.cable", "cosim.validations.coupling")
+CASE_MODULES = ("cosim.validations.catenary", "cosim.validations.cable", "cosim.validations.fluid", "cosim.validations.coupling")
 
 
 @dataclass(frozen=True)

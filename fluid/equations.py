@@ -102,6 +102,19 @@ def equation_of_state(rho, rho0, c0, gamma, p, cs):
         cs[i] = c0 * x ** e
 
 
+@njit(parallel=True, **_OPTS)
+def pair_terms(rho, mass, p, cs, kind, aux):
+    """Per-particle factors the pair loop reads, so that it divides only once per pair:
+    ``aux[:, 0] = p / rho^2``, ``aux[:, 1] = m / rho``, ``aux[:, 2] = rho / c^2``,
+    ``aux[:, 3] = 1`` for fluid, 0 for boundary particles."""
+    for i in prange(rho.shape[0]):
+        r = rho[i]
+        aux[i, 0] = p[i] / (r * r)
+        aux[i, 1] = mass[i] / r
+        aux[i, 2] = r / (cs[i] * cs[i])
+        aux[i, 3] = 1.0 if kind[i] == 0 else 0.0
+
+
 def hydrostatic_density(depth, rho0: float, c0: float, gamma: float, g: float) -> np.ndarray:
     """Density [kg/m^3] whose Tait pressure is ``rho0 g depth`` (depth [m] below the free
     surface, clipped at 0): the rest state a hydrostatic set-up starts from."""
@@ -110,7 +123,7 @@ def hydrostatic_density(depth, rho0: float, c0: float, gamma: float, g: float) -
 
 
 @njit(parallel=True, **_OPTS)
-def interact(pos, vel, rho, mass, p, cs, kind, start, lo, inv_cell, nx, ny, nz, kernel, prm,
+def interact(pos, vel, rho, mass, cs, aux, start, lo, inv_cell, nx, ny, nz, kernel, prm,
              drho, acc, visc):
     """One pass over all pairs; writes, for every particle a,
 
@@ -118,7 +131,7 @@ def interact(pos, vel, rho, mass, p, cs, kind, start, lo, inv_cell, nx, ny, nz, 
     momentum rate (Eq. 6; gravity added for fluid only, see module docstring) and
     ``visc[a]`` [m/s] = max_b |h v_ab.r_ab / (r_ab^2 + eta^2)| for the time step
     (001_14936b82710365b2.txt Eq. 14). Particles must be sorted by cell (``start`` from
-    :func:`fluid.neighbours.sort_by_cell`).
+    :func:`fluid.neighbours.sort_by_cell`); ``aux`` comes from :func:`pair_terms`.
     """
     n = pos.shape[0]
     dim = pos.shape[1]
@@ -130,8 +143,6 @@ def interact(pos, vel, rho, mass, p, cs, kind, start, lo, inv_cell, nx, ny, nz, 
     alpha = prm[P_ALPHA]
     ddt = prm[P_DDT]
     hydro = prm[P_HYDRO]
-    rho0 = prm[P_RHO0]
-    c0 = prm[P_C0]
     gx = prm[P_G]
     gy = prm[P_G + 1] if three else 0.0
     gz = prm[P_G + zc]
@@ -144,9 +155,10 @@ def interact(pos, vel, rho, mass, p, cs, kind, start, lo, inv_cell, nx, ny, nz, 
         uz = vel[a, zc]
         uy = vel[a, 1] if three else 0.0
         rhoa = rho[a]
-        pa = p[a] / (rhoa * rhoa)
+        pa = aux[a, 0]
+        ka = aux[a, 2]
+        fa = aux[a, 3]
         ca = cs[a]
-        fa = 1.0 if kind[a] == 0 else 0.0
         cx, cy, cz = cell_coords(xa, ya, za, lo, inv_cell, three, nx, ny, nz)
         sd = 0.0
         sdd = 0.0
@@ -165,7 +177,7 @@ def interact(pos, vel, rho, mass, p, cs, kind, start, lo, inv_cell, nx, ny, nz, 
                     r2 = rx * rx + ry * ry + rz * rz
                     q = math.sqrt(r2) / h
                     F = grad_factor(kernel, q, ad, h)
-                    fb = 1.0 if kind[b] == 0 else 0.0
+                    fb = aux[b, 3]
                     mask = max(fa, fb)  # boundary-boundary pairs do not interact
                     vx = ux - vel[b, 0]
                     vz = uz - vel[b, zc]
@@ -177,13 +189,12 @@ def interact(pos, vel, rho, mass, p, cs, kind, start, lo, inv_cell, nx, ny, nz, 
                     # continuity (Eq. 7)
                     sd += mb * vr * F
                     # density diffusion, fluid-fluid pairs: psi_ab . grad W = -2 drho F r^2/(r^2+eta^2)
-                    kH = 0.5 * hydro * (rhoa / (ca * ca) + rhob / (cs[b] * cs[b]))
-                    rhoH = -kH * (gx * rx + gy * ry + gz * rz)
-                    sdd += (fa * fb * mb / rhob) * (rhob - rhoa - rhoH) * F * r2 * inv
+                    rhoH = -0.5 * hydro * (ka + aux[b, 2]) * (gx * rx + gy * ry + gz * rz)
+                    sdd += (fa * fb * aux[b, 1]) * (rhob - rhoa - rhoH) * F * r2 * inv
                     # momentum (Eq. 6) with artificial viscosity (001 Eq. 6)
                     mu = h * min(vr, 0.0) * inv
                     Pi = -alpha * (ca + cs[b]) * mu / (rhoa + rhob)
-                    coef = -mb * (pa + p[b] / (rhob * rhob) + Pi) * F
+                    coef = -mb * (pa + aux[b, 0] + Pi) * F
                     sx += coef * rx
                     sy += coef * ry
                     sz += coef * rz

@@ -13,6 +13,7 @@ import logging
 import math
 from dataclasses import dataclass, field
 
+import numba
 import numpy as np
 
 from cosim.errors import InputError, InstabilityError
@@ -67,6 +68,12 @@ class FluidConfig:
     #: initial particles grown by max(10 % of its size, 4 h) on every side
     domain_lo: tuple | None = None
     domain_hi: tuple | None = None
+    #: numba threads for this fluid [-]; None: one thread below ``parallel_min_particles``
+    #: particles (where waking threads costs more than it gains, and much more on a busy
+    #: machine), all of numba's threads above
+    threads: int | None = None
+    #: particle count from which the default ``threads`` uses all threads [-]
+    parallel_min_particles: int = 20000
     #: participant name
     name: str = "fluid"
 
@@ -105,6 +112,8 @@ class FluidConfig:
             raise _bad(f"cfl={self.cfl!r}", "the stable range of this scheme is 0 < cfl <= 0.4 (0.2 default)")
         if not (isinstance(self.dt_max, (int, float)) and self.dt_max > 0):
             raise _bad(f"dt_max={self.dt_max!r} s", "give a positive upper bound or math.inf")
+        if self.threads is not None and (not isinstance(self.threads, int) or self.threads < 1):
+            raise _bad(f"threads={self.threads!r}", "give a positive number of threads or None")
         if (self.domain_lo is None) != (self.domain_hi is None):
             raise _bad("only one domain corner given", "give both domain_lo and domain_hi, or neither")
         if self.domain_lo is not None:
@@ -170,7 +179,21 @@ class Fluid:
         self._loads = (np.zeros((self.n_groups, c.dim)), np.zeros((self.n_groups, 3 if c.dim == 3 else 1)))
 
     # ------------------------------------------------------------------ protocol
+    def _threads(self) -> int:
+        c = self.config
+        if c.threads is not None:
+            return min(c.threads, numba.config.NUMBA_NUM_THREADS)
+        return numba.config.NUMBA_NUM_THREADS if self.ps.n >= c.parallel_min_particles else 1
+
     def initialize(self, t0: float) -> None:
+        saved = numba.get_num_threads()
+        numba.set_num_threads(self._threads())
+        try:
+            self._initialize(t0)
+        finally:
+            numba.set_num_threads(saved)
+
+    def _initialize(self, t0: float) -> None:
         c = self.config
         pos = self.ps.pos
         if c.domain_lo is None:
@@ -203,6 +226,14 @@ class Fluid:
         return self.counters.limiter
 
     def advance(self, t: float, dt: float) -> None:
+        saved = numba.get_num_threads()
+        numba.set_num_threads(self._threads())
+        try:
+            self._advance(t, dt)
+        finally:
+            numba.set_num_threads(saved)
+
+    def _advance(self, t: float, dt: float) -> None:
         if self._limit is None:
             raise InputError("Fluid.advance called before initialize")
         if not (dt > 0 and math.isfinite(dt)):
@@ -318,11 +349,13 @@ class Fluid:
         n = ps.n
         self._cs = np.empty(n)
         eq.equation_of_state(ps.rho, c.rho0, c.speed_of_sound, c.gamma, ps.p, self._cs)
+        aux = np.empty((n, 4))
+        eq.pair_terms(ps.rho, ps.mass, ps.p, self._cs, ps.kind, aux)
         self._drho = np.empty(n)
         self._acc = np.empty((n, c.dim))
         visc = np.empty(n)
         g = self._grid
-        eq.interact(ps.pos, ps.vel, ps.rho, ps.mass, ps.p, self._cs, ps.kind, self._start, g.lo,
+        eq.interact(ps.pos, ps.vel, ps.rho, ps.mass, self._cs, aux, self._start, g.lo,
                     1.0 / g.cell, g.shape[0], g.shape[1], g.shape[2], self._kernel, self._prm,
                     self._drho, self._acc, visc)
         self._limit = stable_dt(self._acc, visc, self._cs, ps.kind, c.h, c.cfl, c.dt_max)

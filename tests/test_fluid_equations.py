@@ -31,7 +31,9 @@ def rates(pos, vel, rho, kind=None, h_coef=math.sqrt(2), dx=0.01, g=(0.0, 0.0), 
     k = kernel_id(kernel)
     prm = eq.params(h, alpha_d(k, dim, h), alpha, delta, diffusion, RHO0, c0, np.asarray(g, float))
     drho, acc, visc = np.empty(n), np.empty((n, dim)), np.empty(n)
-    eq.interact(P, V, R, m, p, cs, K, start, grid.lo, 1 / grid.cell, *grid.shape, k, prm, drho, acc, visc)
+    aux = np.empty((n, 4))
+    eq.pair_terms(R, m, p, cs, K, aux)
+    eq.interact(P, V, R, m, cs, aux, start, grid.lo, 1 / grid.cell, *grid.shape, k, prm, drho, acc, visc)
     inv = np.empty(n, np.int64)
     inv[perm] = np.arange(n)
     return drho[inv], acc[inv], visc[inv], p[inv]

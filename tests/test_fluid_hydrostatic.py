@@ -1,0 +1,35 @@
+"""The hydrostatic validation (VALIDATION.md, Fluid): quick 2-D variant here, the full
+resolutions and 3-D marked slow (also `cosim validate hydrostatic[-3d]`)."""
+
+import pytest
+
+from cosim.validation import cases, run
+
+
+def check(rec):
+    m, tol = rec["metrics"], rec["tolerances"]
+    assert tol == {"p_rms_err_time_avg": 0.01, "max_speed_over_sqrt_gH": 1e-3}
+    assert m["p_rms_err_time_avg"] < 0.01
+    assert m["max_speed_over_sqrt_gH"] < 1e-3
+    # the instantaneous profile at the end is as good (no tuning by the averaging window)
+    assert m["p_rms_err_final"] < 0.01
+    assert rec["passed"] is True and rec["steps"] > 1000
+
+
+def test_registered():
+    assert {"hydrostatic", "hydrostatic-3d"} <= set(cases())
+
+
+def test_hydrostatic_2d_quick():
+    check(run("hydrostatic", quick=True))
+
+
+@pytest.mark.slow
+def test_hydrostatic_2d_full():
+    check(run("hydrostatic", quick=False))
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("quick", [True, False])
+def test_hydrostatic_3d(quick):
+    check(run("hydrostatic-3d", quick=quick))
