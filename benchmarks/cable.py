@@ -22,7 +22,6 @@ import sys
 import tempfile
 import time
 
-import numpy as np
 
 # a script's folder comes first on sys.path; benchmarks/moorings.py would shadow the package
 _HERE = os.path.dirname(os.path.abspath(__file__))

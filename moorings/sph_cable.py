@@ -485,6 +485,8 @@ class SPHCable:
                 f"moves at {np.linalg.norm(self.v[a]):.3g} m/s (stable step {sdt:.3g} s); lower cfl (now "
                 f"{self.cfl}) or check the loads and the end motion")
         n_sub = max(1, int(math.ceil(dt / sdt - 1e-9)))
+        log.debug("SPH cable '%s': t = %.9g s, dt = %.3g s in %d sub-steps of %.3g s", self.name, t, dt, n_sub,
+                  dt / n_sub)
         status, step, part = _k.advance(
             self.x, self.v, self.lam, self.ds, float(t), float(t + dt), n_sub, self.m, self.mk, self.lam0, self.EA,
             self.c0, self.delta, self.visc_alpha, self.visc_beta, self.omega, self.fext, self._wl, self._wr,
@@ -570,7 +572,8 @@ class SPHCableMooring:
         coefficients, ``water_z`` [m], ...).
     """
 
-    def __init__(self, lines, fairleads=None, n_particles: int = 40, seabed: bool = True, name="sph_cable",
+    def __init__(self, lines: list[MooringLine], fairleads=None, n_particles: int = 40, seabed: bool = True,
+                 name="sph_cable",
                  **cable_options):
         self.lines = named_lines(lines)
         self.name = name
