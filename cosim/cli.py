@@ -70,6 +70,9 @@ def _export_fmu_parser(sub):
     p.add_argument("--model-identifier", default="catenary_mooring", help="FMU model identifier (a C identifier)")
     p.add_argument("--reference", type=float, nargs="+", metavar="C",
                    help="point of the total moment [m] (2 or 3 coordinates; default the origin)")
+    p.add_argument("--body-pose", action="store_true",
+                   help="inputs are a body pose (3-D x, y, z and quaternion qw, qx, qy, qz; 2-D x, z, theta) and "
+                   "each line's 'fairlead' is in the body frame (required); the fairleads become outputs")
     p.add_argument("--sources-only", action="store_true", help="ship the C sources without compiling a binary")
     p.add_argument("--cc", help="C compiler (default $CC, cc, gcc or clang)")
     return p
@@ -126,8 +129,8 @@ def cmd_export_fmu(args, parser) -> int:
 
     lines, fairleads = _read_lines_file(args.lines)
     path = export_catenary_fmu(lines, args.output, fairleads=fairleads, reference_point=args.reference,
-                               model_identifier=args.model_identifier, compile_binary=not args.sources_only,
-                               cc=args.cc)
+                               body_pose=args.body_pose, model_identifier=args.model_identifier,
+                               compile_binary=not args.sources_only, cc=args.cc)
     problems = validate_fmu(str(path))
     kind = "sources only" if args.sources_only else "sources and a linux64 binary"
     print(f"wrote {path} ({os.path.getsize(path)} bytes, {len(lines)} line(s), {lines[0].dim}-D, {kind})")

@@ -190,7 +190,8 @@ def _layout(names, dim, starts, body_pose=False):
     n_real = vr
     for i, n in enumerate(names):
         v.append(_Var(f"{n}.state", n_real + i, "output", None,
-                      f"state of line {n}: 0 resting, 1 partly lifted, 2 fully lifted, 3 taut", type_="Integer"))
+                      f"state of line {n}: 0 resting, 1 partly lifted, 2 fully lifted, 3 taut, "
+                      f"-1 invalid input (reported as an error)", type_="Integer"))
     return v, n_real
 
 

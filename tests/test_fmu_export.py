@@ -485,6 +485,13 @@ def test_cli_export_fmu(tmp_path, capsys):
     assert float(v["starboard.EA"].start) == 1e5 and float(v["port.EA"].start) == 0.0
     assert float(v["port.fairlead.x"].start) == -2.0 and float(v["reference.z"].start) == 1.0
     assert "binaries/linux64/twolines.so" in zipfile.ZipFile(out).namelist()
+    # --body-pose: the same file's fairleads are body-frame parameters, the pose is the input
+    posed = tmp_path / "p.fmu"
+    assert main(["export-fmu", str(posed), "--lines", str(spec), "--body-pose"]) == 0
+    capsys.readouterr()
+    v = {x.name: x for x in read_model_description(str(posed)).modelVariables}
+    assert v["body.theta"].causality == "input" and v["port.fairlead.x"].causality == "output"
+    assert float(v["starboard.fairlead_body.z"].start) == 1.0
     # a bad file is a clear error, exit status 2, nothing written
     bad = tmp_path / "bad.json"
     bad.write_text(json.dumps({"line": [{"anchor": [0, 0], "length": 10}]}))
