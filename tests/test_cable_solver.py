@@ -227,3 +227,38 @@ def test_end_motion_from_a_file_follows_the_table(tmp_path):
     assert np.abs(c.x - ref.x).max() < 0.01 * amp
     with pytest.raises(InputError, match="increasing"):
         c.set_end_table("a", [0.0, 0.0], [[0, 0], [0, 0]])
+
+
+def _first_period(c, idx, comp, t_max, dt):
+    ts, ys = [], []
+    y0, t0 = c.x[idx, comp], c.t
+    while c.t < t0 + t_max:
+        c.advance(c.t, dt)
+        ts.append(c.t)
+        ys.append(c.x[idx, comp] - y0)
+    ys = np.array(ys)
+    k = np.nonzero((ys[:-1] > 0) & (ys[1:] <= 0))[0][0]  # displacement starts > 0: first down-crossing
+    return 2.0 * (ts[k] - ys[k] * (ts[k + 1] - ts[k]) / (ys[k + 1] - ys[k]) - t0)
+
+
+def test_suspended_cable_modes_match_irvine():
+    """Flat-sag suspended cable (Irvine & Caughey 1974; refdata/cable_static_dynamic item 3):
+    out-of-plane mode 1 at omega = pi c/l, in-plane antisymmetric mode 1 at 2 pi c/l,
+    c = sqrt(H/m) with H the settled horizontal tension."""
+    span, w = 100.0, 10.0
+    mu = w / 9.80665
+    L = 100.1067  # sag about 2 m (d/l = 0.02)
+    res = {}
+    modes = (("out", 1, lambda s: np.sin(np.pi * s / L)), ("anti", 2, lambda s: np.sin(2 * np.pi * s / L)))
+    for name, comp, shape in modes:
+        c = SPHCable(L, 41, 1e7, mu, (0, 0, 0), (span, 0, 0), weight_per_length=w, omega=3.0)
+        while c.t < 20.0:
+            c.advance(c.t, 1.0)
+        H = -c.end_forces()[1, 0]
+        c.omega = 0.0
+        c.v[:, comp] = 0.01 * shape(c.s)
+        idx = 10  # a quarter span: moves in both modes
+        T_exact = (2.0 if name == "out" else 1.0) * span / math.sqrt(H / mu)
+        res[name] = (_first_period(c, idx, comp, 0.8 * T_exact, T_exact / 200), T_exact)
+    for name, (T_num, T_exact) in res.items():
+        assert T_num == pytest.approx(T_exact, rel=0.02), name
