@@ -128,3 +128,28 @@ def test_swaps_for_the_catenary_in_a_coupled_scene():
         c.run(40.0)
         forces.append(c.ledger.arrays()["mooring_force"][-1, 0])
     np.testing.assert_allclose(forces[1], forces[0], rtol=0.01, atol=1e-3 * np.abs(forces[0]).max())
+
+
+def test_three_line_spread_mooring_in_3d():
+    """Three 3-D lines at 120° around a fixed fairlead triangle: each settled line pulls its
+    fairlead like the elastic catenary with seabed, in its own vertical plane."""
+    lines, fair = [], []
+    for k in range(3):
+        a = 2 * math.pi * k / 3 + 0.3
+        e = np.array([math.cos(a), math.sin(a), 0.0])
+        lines.append(MooringLine(anchor=tuple(125.0 * e + [0, 0, -50.0]), length=150.0, weight=918.75, EA=1e9,
+                                 mass_per_length=107.7, name=f"l{k}"))
+        fair.append(-5.0 * e)
+    m = SPHCableMooring(lines, fairleads=fair, n_particles=30, omega=1.0)
+    m.initialize(0.0)
+    for _ in range(60):
+        m.advance(m.t, 1.0)
+    F = m.fairlead_forces()
+    r = solve(130.0, 50.0, 150.0, 918.75, 1e9)
+    for k, ln in enumerate(lines):
+        horiz = (np.array(ln.anchor) - fair[k])[:2]
+        e = horiz / np.linalg.norm(horiz)
+        np.testing.assert_allclose(F[k, :2], r.H * e, rtol=0.01, atol=0.01 * r.H)
+        assert F[k, 2] == pytest.approx(-r.V, rel=0.01)
+    # symmetric spread: the horizontal forces cancel
+    assert np.abs(F[:, :2].sum(axis=0)).max() < 1e-3 * r.H
