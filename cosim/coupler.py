@@ -32,6 +32,7 @@ import numpy as np
 from cosim.clock import TICKS_PER_SECOND, Clock, to_ticks
 from cosim.errors import ConfigurationError, InputError, InstabilityError, SolverError
 from cosim.ledger import Ledger
+from cosim.progress import Progress
 from cosim.protocol import Mooring, Participant, check_participant
 
 
@@ -264,15 +265,23 @@ class Coupler:
         for a in self.moorings:
             a.mooring.advance(t, dt)
 
-    def run(self, t_end: float, callback: Callable[[StepInfo], Any] | None = None) -> int:
-        """Step until ``t_end`` [s] exactly; returns the number of steps taken."""
+    def run(self, t_end: float, callback: Callable[[StepInfo], Any] | None = None,
+            progress: bool | None = None) -> int:
+        """Step until ``t_end`` [s] exactly; returns the number of steps taken.
+        ``progress``: a one-line progress display on stderr (default: only when
+        stderr is a terminal)."""
         if not math.isfinite(t_end):
             raise InputError(f"t_end must be finite, got {t_end!r}")
         n0 = self.steps
-        while self.clock.ticks_until(t_end) > 0:
-            info = self.step(t_end)
-            if callback is not None:
-                callback(info)
+        bar = Progress(self.t, t_end, enabled=progress)
+        try:
+            while self.clock.ticks_until(t_end) > 0:
+                info = self.step(t_end)
+                bar.update(info.t)
+                if callback is not None:
+                    callback(info)
+        finally:
+            bar.close(self.t)
         return self.steps - n0
 
     def save_state(self) -> dict:

@@ -109,3 +109,21 @@ def test_invalid_stable_step_stops_with_the_participant_named():
     c = Coupler([Recorder("fluid", max_dt=float("nan"))])
     with pytest.raises(InstabilityError, match="step 1.*'fluid'"):
         c.run(1.0)
+
+
+def test_progress_line_is_shown_on_request_and_silent_otherwise():
+    import io
+
+    from cosim.progress import Progress
+
+    buf = io.StringIO()
+    c = Coupler([Recorder(max_dt=0.001, record=False)])
+    c.run(0.5, progress=False)
+    bar = Progress(0.0, 2.0, stream=buf, enabled=True, every_s=0.0)
+    for k in range(1, 5):
+        bar.update(0.5 * k)
+    bar.close(2.0)
+    text = buf.getvalue()
+    assert "t = 2 / 2 s (100.0 %)  4 steps" in text and text.endswith("\n")
+    quiet = io.StringIO()
+    assert not Progress(0.0, 1.0, stream=quiet).enabled  # a StringIO is no terminal
