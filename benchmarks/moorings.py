@@ -10,7 +10,10 @@ that surges slowly; one coupling step is ``set_fairlead_motion`` +
 - moordyn: :class:`MoorDynMooring` (lumped mass, 20 segments per line, its internal
   step sub-cycling each coupling step), when the ``moordyn`` package is installed
 
-    python benchmarks/moorings.py [--steps 2000] [--dt 0.01]
+    python benchmarks/moorings.py [--steps 2000] [--dt 0.01] [--png tensions.png]
+
+``--png`` also plots the fairlead tension of each line against time for every
+model on one figure (the body surges 4 m over 20 s from rest).
 
 Prints figures; asserts nothing. Set-up (export + compile, MoorDyn's initial
 state) is reported apart from the per-step cost.
@@ -52,8 +55,8 @@ def motion(t, fb):
     return fb + np.array([4.0 * (1 - math.cos(w * t)), 0, 0]), np.tile([4.0 * w * math.sin(w * t), 0, 0], (3, 1))
 
 
-def run(model, fb, steps, dt):
-    """Seconds per coupling step, and the last forces."""
+def run(model, fb, steps, dt, record=None):
+    """Seconds per coupling step, and the last forces; ``record`` collects (t, tensions)."""
     model.initialize(0.0)
     t0 = time.perf_counter()
     for k in range(steps):
@@ -62,13 +65,39 @@ def run(model, fb, steps, dt):
         model.set_fairlead_motion(pos, vel)
         model.advance(t, dt)
         f = model.fairlead_forces()
+        if record is not None:
+            record.append((t + dt, np.linalg.norm(f, axis=1)))
     return (time.perf_counter() - t0) / steps, f
+
+
+def plot(path, records):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(7.5, 4.2), dpi=120)
+    styles = {"native": "-", "fmu": "--", "moordyn": ":"}
+    for name, rec in records.items():
+        t = np.array([r[0] for r in rec])
+        T = np.array([r[1] for r in rec]) / 1e3
+        for i in range(T.shape[1]):
+            ax.plot(t, T[:, i], styles.get(name, "-"), color=f"C{i}", lw=1.4, label=f"{name}, leg{i}")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("fairlead tension [kN]")
+    ax.set_title("Same mooring, three models: native catenary, its FMU (on top of it), MoorDyn", fontsize=10)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7, ncol=3)
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--steps", type=int, default=2000, help="coupling steps per model")
     ap.add_argument("--dt", type=float, default=0.01, help="coupling step [s]")
+    ap.add_argument("--png", help="also plot the fairlead tensions of every model (a separate, recorded run)")
     args = ap.parse_args()
     lines, fb = system()
     print(f"# {platform.processor() or platform.machine()}, Python {platform.python_version()}; "
@@ -120,6 +149,22 @@ def main():
 
     for name, cost, setup, note in rows:
         print(f"{name:10s} {cost * 1e6:10.1f} {setup:9.3f}  {note}")
+
+    if args.png:  # recorded runs, apart from the timed ones
+        steps = int(round(20.0 / args.dt))
+        records = {}
+        with tempfile.TemporaryDirectory() as tmp:
+            models = {"native": CatenaryMooring(lines, fairleads=fb)}
+            path = export_catenary_fmu(lines, Path(tmp) / "plot.fmu", fairleads=fb)
+            models["fmu"] = FMUMooring(path, lines, catenary_fmu_variable_map(lines), fairleads=fb)
+            if moordyn_available():
+                models["moordyn"] = MoorDynMooring(lines, fairleads=fb)
+            for name, model in models.items():
+                records[name] = []
+                run(model, fb, steps, args.dt, records[name])
+            models["fmu"].close()
+        plot(args.png, records)
+        print(f"wrote {args.png}")
 
 
 if __name__ == "__main__":
