@@ -1,0 +1,118 @@
+"""Throughput of the SPH fluid: particle-steps per second (particles x steps / wall s) for
+2-D and 3-D dam breaks at a few sizes, compilation reported apart. Not a test.
+
+Reference case of issue 3 (2-D): water column 1 m wide, 2 m high in a tank 4 m x 3 m,
+Wendland h = sqrt(2) dp, alpha = 0.02, Fourtakas delta = 0.1, c0 = 20 sqrt(2 g) m/s, CFL 0.2.
+This solver steps with the symplectic predictor-corrector (two pair loops per step), where
+the DualSPHysics figure quoted in the issue uses Verlet (one pair loop per step): compare
+``pair_loops_per_s`` too.
+
+    .venv/bin/python benchmarks/fluid.py                 # default sizes, warm numba cache
+    .venv/bin/python benchmarks/fluid.py --cold          # compile from scratch (empty cache)
+    .venv/bin/python benchmarks/fluid.py --case 2d --dp 0.01 --steps 200 --threads 2
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import sys
+import tempfile
+import time
+
+# run as a script, this file's folder comes first on sys.path and its name would shadow the
+# ``fluid`` package: drop that folder
+_here = os.path.dirname(os.path.abspath(__file__))
+sys.path[:] = [p for p in sys.path if os.path.abspath(p or os.curdir) != _here]
+
+
+def build(case: str, dp: float):
+    import numpy as np
+
+    from fluid.geometry import assemble, block, set_hydrostatic, tank_walls
+    from fluid.particles import Kind
+    from fluid.solver import FluidConfig
+
+    g = 9.81
+    if case == "2d":
+        inner_lo, inner_hi = np.zeros(2), np.array([4.0, 3.0])
+        col = block([0.0, 0.0], [1.0, 2.0], dp)
+        H = 2.0
+    else:  # 3-D dam break: column 0.5 x 0.5 x 1 m in a tank 2 x 0.5 x 1.5 m
+        inner_lo, inner_hi = np.zeros(3), np.array([2.0, 0.5, 1.5])
+        col = block([0.0, 0.0, 0.0], [0.5, 0.5, 1.0], dp)
+        H = 1.0
+    walls = tank_walls(inner_lo, inner_hi, dp, layers=2)
+    b = assemble(len(inner_lo), dp, 1000.0, col, [(walls, Kind.FIXED_WALL, 0)])
+    cfg = FluidConfig(dim=len(inner_lo), dx=dp, c0=20 * math.sqrt(g * H), alpha=0.02, delta=0.1,
+                      diffusion="fourtakas", cfl=0.2,
+                      domain_lo=tuple(inner_lo - 0.1), domain_hi=tuple(inner_hi + 0.5))
+    set_hydrostatic(b.particles, H, 1000.0, cfg.speed_of_sound, cfg.gamma, g)
+    return cfg, b.particles
+
+
+def run(case: str, dp: float, steps: int) -> dict:
+    import numpy as np
+
+    from fluid.particles import Kind
+    from fluid.solver import Fluid
+
+    cfg, ps = build(case, dp)
+    t0 = time.perf_counter()
+    f = Fluid(cfg, ps)
+    f.initialize(0.0)
+    f.step(f.max_dt())  # the first step compiles (or loads from the cache) whatever is left
+    t_first = time.perf_counter() - t0
+    t1, c1 = time.perf_counter(), time.process_time()
+    for _ in range(steps):
+        f.step(f.max_dt())
+    wall = time.perf_counter() - t1
+    cpu = time.process_time() - c1
+    n = f.ps.n
+    per_step = wall / steps
+    arrays = [f.ps.pos, f.ps.vel, f.ps.rho, f.ps.mass, f.ps.p, f.ps.kind, f.ps.group, f.ps.ids,
+              f._cs, f._drho, f._acc, *f._aux.values()]
+    mem = sum(a.nbytes for a in arrays) + n * (4 * 8 + 8 + 8)  # + pair_terms, visc, cell index
+    return {
+        "case": case, "dp_m": dp, "particles": n,
+        "fluid": int((f.ps.kind == Kind.FLUID).sum()), "steps": steps,
+        "dt_s": f.max_dt(), "limiter": f.limit.limiter,
+        "first_step_s": round(t_first - per_step, 3),
+        "ms_per_step": round(per_step * 1e3, 3),
+        "particle_steps_per_s": round(n * steps / wall),
+        "pair_loops_per_s": round(2 * n * steps / wall),
+        "cpu_s_per_wall_s": round(cpu / wall, 2),  # < threads: the machine is shared
+        "bytes_per_particle": round(mem / n),
+        "threads": __import__("numba").get_num_threads(),
+    }
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--case", choices=["2d", "3d", "all"], default="all")
+    ap.add_argument("--dp", type=float, action="append", help="particle spacing [m] (repeatable)")
+    ap.add_argument("--steps", type=int, default=50, help="timed steps per size")
+    ap.add_argument("--threads", type=int, default=None, help="numba threads (default: all)")
+    ap.add_argument("--cold", action="store_true", help="compile from scratch in an empty numba cache")
+    a = ap.parse_args(argv)
+    if a.cold:
+        os.environ["NUMBA_CACHE_DIR"] = tempfile.mkdtemp(prefix="numba_cold_")
+    import numba
+
+    if a.threads:
+        numba.set_num_threads(a.threads)
+    t0 = time.perf_counter()
+    import fluid.solver  # noqa: F401  (imports numba modules; compilation is lazy)
+    print(f"import: {time.perf_counter() - t0:.2f} s; numba cache {'cold' if a.cold else 'as found'}")
+    sizes = {"2d": a.dp or [0.02, 0.01], "3d": a.dp or [0.04, 0.025]}
+    cases = ["2d", "3d"] if a.case == "all" else [a.case]
+    for c in cases:
+        for dp in sizes[c]:
+            r = run(c, dp, a.steps)
+            print(" ".join(f"{k}={v}" for k, v in r.items()))
+            sys.stdout.flush()
+
+
+if __name__ == "__main__":
+    main()
