@@ -184,6 +184,8 @@ class SPHCable:
         than ``length * (1 + max_strain)`` are rejected.
     seabed_z : height [m] of a horizontal seabed the particles cannot penetrate (the
         position is projected onto it and a downward velocity removed; no friction); None.
+    seabed_friction : Coulomb friction coefficient [-] between the seabed and the line (0:
+        frictionless); regularised below 1 mm/s, so a line at rest on a slope creeps slowly.
     diameter : hydrodynamic diameter [m] for Morison drag and added mass in still water;
         None: no hydrodynamic loads. Per particle of unstretched length l (half of each
         adjacent segment): normal drag ``-1/2 rho cd_normal d l |v_n| v_n``, tangential
@@ -200,7 +202,7 @@ class SPHCable:
     def __init__(self, length, n_particles, EA, mass_per_length, end_a, end_b, weight_per_length=None,
                  free_end=None, positions=None, nodes_at=(), cfl=0.4, omega=0.04,
                  visc_alpha=1.0, visc_beta=0.2, delta=0.0, max_strain=0.1, seabed_z=None,
-                 diameter=None, rho_water=1025.0, cd_normal=1.2, cd_tangential=0.008, ca_normal=1.0,
+                 seabed_friction=0.0, diameter=None, rho_water=1025.0, cd_normal=1.2, cd_tangential=0.008, ca_normal=1.0,
                  ca_tangential=0.0, water_z=math.inf, gravity=G_STANDARD, name="cable"):
         self.name = name
         lab = f"SPH cable '{name}'"
@@ -297,6 +299,11 @@ class SPHCable:
             if x.shape != (n, self.dim) or not np.all(np.isfinite(x)):
                 raise InputError(f"{lab}: positions must be a finite array of shape ({n}, {self.dim}) [m]")
         self.seabed_z = -math.inf if seabed_z is None else float(seabed_z)
+        mu_f = float(seabed_friction)
+        if not (math.isfinite(mu_f) and mu_f >= 0):
+            raise InputError(f"{lab}: seabed_friction = {seabed_friction!r}; the friction coefficient must be >= 0")
+        #: seabed height [m], Coulomb coefficient [-], regularisation speed [m/s]
+        self._bed = np.array([self.seabed_z, mu_f, 1e-3])
         if seabed_z is not None:
             x[:, -1] = np.maximum(x[:, -1], self.seabed_z)
         self.x = np.ascontiguousarray(x)
@@ -491,7 +498,7 @@ class SPHCable:
             self.x, self.v, self.lam, self.ds, float(t), float(t + dt), n_sub, self.m, self.mk, self.lam0, self.EA,
             self.c0, self.delta, self.visc_alpha, self.visc_beta, self.omega, self.fext, self._wl, self._wr,
             self.hyd, self.water_z, self._free, self._pidx, self._p0, self._v0, self._p1, self._v1, self._amp, self._om, self._ton,
-            self._toff, self.seabed_z, self._fend_mean, self._fend_last, self._tension)
+            self._toff, self._bed, self._fend_mean, self._fend_last, self._tension)
         if status != _k.OK:
             what = "non-finite position or velocity" if status == _k.NONFINITE else "non-positive density"
             raise InstabilityError(

@@ -51,8 +51,8 @@ def segments(x, e, ell):
 
 
 @njit(cache=True, fastmath=_FM, error_model="numpy")
-def forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, wl, wr, hyd, water_z,
-           e, ell, T, fseg, Tseg, grad, F, acc, dlam_diff):
+def forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, wl, wr, hyd, water_z, bed,
+           e, ell, T, fseg, Tseg, grad, F, acc, dlam_diff, kfr):
     """Internal forces ``F`` [N], accelerations ``acc`` [m/s²], particle tension ``T`` [N]
     (renormalised mean of the two stress points), segment force ``fseg`` [N] and δ-SPH
     diffusion ``dlam_diff`` [kg/(m s)] of the state; ``e``/``ell`` must hold the segments of
@@ -69,6 +69,9 @@ def forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, 
     - Morison drag and added mass in still water below ``water_z`` [m], per particle
       ``hyd[a] = (kn, kt, ma_n, ma_t)``: drag ``-kn |v_n| v_n - kt |v_t| v_t`` [N] and the
       mass matrix ``m I + ma_n (I - t t) + ma_t t t`` (t: the particle's tangent).
+    - Seabed friction ``bed = (z_bed, mu, v_eps)``: a particle on the seabed pressed down by
+      N gets ``-mu N v_h / max(|v_h|, v_eps)`` horizontally (Coulomb, regularised below
+      ``v_eps`` [m/s]).
     """
     n, dim = x.shape
     # renormalised density gradient (000 Eq. 3) for the δ-SPH term
@@ -117,6 +120,15 @@ def forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, 
             el = e[a - 1, d] if a > 0 else 0.0
             er = e[a, d] if a < n - 1 else 0.0
             F[a, d] = fr * er - fl * el
+        # seabed friction (regularised Coulomb) on particles resting on the seabed: the
+        # coefficient kfr [N s/m] is applied implicitly in the kick (stable at any step)
+        kfr[a] = 0.0
+        if bed[1] > 0.0 and x[a, dim - 1] <= bed[0] + 1e-9 * ds[min(a, n - 2)]:
+            N = max(0.0, -(F[a, dim - 1] + fext[a, dim - 1]))
+            vh2 = 0.0
+            for d in range(dim - 1):
+                vh2 += v[a, d] * v[a, d]
+            kfr[a] = bed[1] * N / max(math.sqrt(vh2), bed[2])
         wet = 1.0 if x[a, dim - 1] < water_z else 0.0
         kn = hyd[a, 0] * wet
         kt = hyd[a, 1] * wet
@@ -185,7 +197,7 @@ def prescribed_state(t, t0, t1, p0, v0, p1, v1, amp, om, t_on, t_off, pos, vel, 
 
 @njit(cache=True, fastmath=_FM, error_model="numpy")
 def advance(x, v, lam, ds, t0, t1, n_sub, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, wl, wr,
-            hyd, water_z, free, pidx, p0, v0, p1, v1, amp, om, t_on, t_off, seabed_z, fend_mean, fend_last, tension):
+            hyd, water_z, free, pidx, p0, v0, p1, v1, amp, om, t_on, t_off, bed, fend_mean, fend_last, tension):
     """Leap-frog from ``t0`` to ``t1`` [s] in ``n_sub`` equal sub-steps (000 Section 2).
 
     Per sub-step: forces at (x^n, v^n, lam^n); kick v^{n+1} = v^n + dt a^n (free particles);
@@ -194,8 +206,9 @@ def advance(x, v, lam, ds, t0, t1, n_sub, m, mk, lam0, EA, c0, delta, alpha, bet
     with D dt = wl ln(l^{n+1}/l^n)_left + wr ln(l^{n+1}/l^n)_right (in 1-D the velocity
     divergence is d ln(l)/dt). Returns (status, step, particle); status 0 is success.
 
-    ``seabed_z`` [m]: free particles are kept at or above this height (no penetration: the
-    position is projected onto the seabed and a downward velocity removed); ``-inf`` for none.
+    ``bed = (seabed_z, mu, v_eps)``: free particles are kept at or above ``seabed_z`` [m]
+    (no penetration: the position is projected onto the seabed and a downward velocity
+    removed; ``-inf`` for none), with friction coefficient ``mu`` [-] (see :func:`forces`).
 
     ``fend_mean``/``fend_last`` (n_presc, dim): force [N] the cable exerts on each prescribed
     particle's support, averaged over the sub-steps / at t1. ``tension`` (n,) gets T at t1.
@@ -214,6 +227,7 @@ def advance(x, v, lam, ds, t0, t1, n_sub, m, mk, lam0, EA, c0, delta, alpha, bet
     F = np.empty((n, dim))
     acc = np.empty((n, dim))
     dld = np.empty(n)
+    kfr = np.zeros(n)
     ppos = np.empty((npr, dim))
     pvel = np.empty((npr, dim))
     pacc = np.empty((npr, dim))
@@ -228,8 +242,8 @@ def advance(x, v, lam, ds, t0, t1, n_sub, m, mk, lam0, EA, c0, delta, alpha, bet
     segments(x, e, ell)
     for step in range(n_sub):
         t = t0 + step * dt
-        forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, wl, wr, hyd, water_z,
-               e, ell, T, fseg, Tseg, grad, F, acc, dld)
+        forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, wl, wr, hyd, water_z, bed,
+               e, ell, T, fseg, Tseg, grad, F, acc, dld, kfr)
         if step > 0:
             prescribed_state(t, t0, t1, p0, v0, p1, v1, amp, om, t_on, t_off, ppos, pvel, pacc)
         for i in range(npr):
@@ -239,11 +253,20 @@ def advance(x, v, lam, ds, t0, t1, n_sub, m, mk, lam0, EA, c0, delta, alpha, bet
         bad = -1
         for a in range(n):
             fa = free[a]
+            # friction: the exact Coulomb decrement while sliding (never reversing the motion),
+            # implicit linear damping in the regularised range
+            r = dt * kfr[a] / m[a]
+            vh2 = 0.0
+            for d in range(dim - 1):
+                vh2 += v[a, d] * v[a, d]
+            fr = max(0.0, 1.0 - r) if vh2 > bed[2] * bed[2] else 1.0 / (1.0 + r)
             for d in range(dim):
                 v[a, d] += dt * acc[a, d] * fa
+                if d < dim - 1:
+                    v[a, d] *= fr
                 x[a, d] += dt * v[a, d] * fa
-            if x[a, dim - 1] < seabed_z and fa > 0.0:
-                x[a, dim - 1] = seabed_z
+            if x[a, dim - 1] < bed[0] and fa > 0.0:
+                x[a, dim - 1] = bed[0]
                 v[a, dim - 1] = max(v[a, dim - 1], 0.0)
             if not (math.isfinite(x[a, 0]) and math.isfinite(v[a, 0]) and math.isfinite(lam[a])):
                 bad = a
@@ -271,8 +294,8 @@ def advance(x, v, lam, ds, t0, t1, n_sub, m, mk, lam0, EA, c0, delta, alpha, bet
     for i in range(npr):
         for d in range(dim):
             fend_mean[i, d] /= n_sub
-    forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, wl, wr, hyd, water_z,
-           e, ell, T, fseg, Tseg, grad, F, acc, dld)
+    forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, wl, wr, hyd, water_z, bed,
+           e, ell, T, fseg, Tseg, grad, F, acc, dld, kfr)
     prescribed_state(t1, t0, t1, p0, v0, p1, v1, amp, om, t_on, t_off, ppos, pvel, pacc)
     for i in range(npr):
         a = pidx[i]

@@ -153,3 +153,17 @@ def test_three_line_spread_mooring_in_3d():
         assert F[k, 2] == pytest.approx(-r.V, rel=0.01)
     # symmetric spread: the horizontal forces cancel
     assert np.abs(F[:, :2].sum(axis=0)).max() < 1e-3 * r.H
+
+
+def test_seabed_friction_decelerates_a_sliding_line_at_mu_g():
+    L, n, mu_f, g = 10.0, 21, 0.3, 9.80665
+    pos = np.stack([np.linspace(0, L, n), np.zeros(n)], 1)
+    c = SPHCable(L, n, 1e5, 2.0, pos[0], pos[-1], free_end="both", positions=pos, seabed_z=0.0, seabed_friction=mu_f,
+                 omega=0.0)
+    c.v[:, 0] = 1.0
+    c.advance(0.0, 0.2)
+    np.testing.assert_allclose(c.v[:, 0], 1.0 - mu_f * g * 0.2, rtol=2e-3)
+    c.advance(0.2, 0.3)
+    assert np.abs(c.v).max() < 1e-3  # stopped (after 1/(mu g) = 0.34 s)
+    # stopping distance v0^2 / (2 mu g)
+    assert c.x[0, 0] == pytest.approx(1.0 / (2 * mu_f * g), rel=0.01)
