@@ -30,8 +30,14 @@ import tempfile
 import time
 from pathlib import Path
 
-# this file is named like the package it measures: keep its folder off the import path
+# this file is named like the package it measures: keep its folder off the import path, and if a
+# script in this folder imported it as "moorings", hand that import over to the real package
 sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != Path(__file__).resolve().parent]
+if __name__ == "moorings":
+    import importlib
+
+    del sys.modules["moorings"]
+    sys.modules["moorings"] = importlib.import_module("moorings")
 
 import numpy as np  # noqa: E402
 
