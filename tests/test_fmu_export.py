@@ -680,3 +680,19 @@ def test_fmu_builds_from_its_sources_and_runs_in_a_c_host(tmp_path):
         f = py.fairlead_forces()
         worst = max(worst, float(np.max(np.abs(row.reshape(f.shape) - f) / py.fairlead_tensions()[:, None])))
     assert worst <= 1e-12, worst
+
+
+def test_c_sources_compile_without_warnings(tmp_path):
+    """The shipped C (law + FMI wrapper, both layouts) is clean under -Wall -Wextra -pedantic -Werror."""
+    cc = find_compiler()
+    for body_pose in (False, True):
+        lines, fb = pose_lines()
+        fmu = export_catenary_fmu(lines, tmp_path / f"w{int(body_pose)}.fmu", fairleads=fb, body_pose=body_pose,
+                                  compile_binary=False)
+        src = tmp_path / f"w{int(body_pose)}"
+        zipfile.ZipFile(fmu).extractall(src)
+        res = subprocess.run([cc, "-std=c99", "-O2", "-Wall", "-Wextra", "-pedantic", "-Werror", "-ffp-contract=off",
+                              "-fPIC", "-shared", "-I", str(src / "sources"), str(src / "sources" / "catenary.c"),
+                              str(src / "sources" / "fmi2_catenary.c"), "-o", str(src / "x.so"), "-lm"],
+                             capture_output=True, text=True)
+        assert res.returncode == 0, res.stderr

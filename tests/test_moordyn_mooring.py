@@ -147,3 +147,28 @@ def test_missing_moordyn_is_a_clear_error(monkeypatch):
     lines, _ = spread()
     with pytest.raises(InputError, match=r"pip install"):
         mm.MoorDynMooring(lines)
+
+
+@needs_moordyn
+def test_two_systems_in_one_process_are_independent():
+    lines, fb = spread()
+    other = [MooringLine((-60.0, -40.0), 70.0, 400.0, EA=3e7, mass_per_length=50.0, name="solo")]
+
+    def run(models, steps=20):
+        out = {}
+        for m in models:
+            m.initialize(0.0)
+        for k in range(steps):
+            for m in models:
+                m.advance(0.05 * k, 0.05)
+        for m in models:
+            out[m.name] = m.fairlead_forces()
+            m.close()
+        return out
+
+    alone_a = run([MoorDynMooring(lines, fairleads=fb, name="a")])
+    alone_b = run([MoorDynMooring(other, fairleads=[[0.0, 0.0]], name="b")])
+    both = run([MoorDynMooring(lines, fairleads=fb, name="a"), MoorDynMooring(other, fairleads=[[0.0, 0.0]], name="b")])
+    np.testing.assert_array_equal(both["a"], alone_a["a"])
+    np.testing.assert_array_equal(both["b"], alone_b["b"])
+    assert both["b"].shape == (1, 2) and both["b"][0, 0] < 0 and both["b"][0, 1] < 0

@@ -504,6 +504,7 @@ FMI2_Export fmi2Status fmi2SetReal(fmi2Component comp, const fmi2ValueReference 
 FMI2_Export fmi2Status fmi2SetInteger(fmi2Component comp, const fmi2ValueReference vr[], size_t nvr,
                                       const fmi2Integer value[])
 {
+    (void)vr;
     (void)value;
     if (!nvr)
         return fmi2OK;
