@@ -35,17 +35,21 @@ _GEOM_KINDS = {
 }
 
 
-def load_model(mjcf) -> mujoco.MjModel:
-    """A MuJoCo model from an MJCF string, a path to an MJCF file, or a model."""
+def load_spec(mjcf) -> tuple[mujoco.MjSpec | None, mujoco.MjModel]:
+    """A model spec and its compiled model from an MJCF string or the path to an
+    MJCF file; a ready ``mujoco.MjModel`` comes without a spec (it cannot be
+    edited, e.g. to add tethers)."""
     if isinstance(mjcf, mujoco.MjModel):
-        return mjcf
+        return None, mjcf
     try:
         if isinstance(mjcf, str) and mjcf.lstrip().startswith("<"):
-            return mujoco.MjModel.from_xml_string(mjcf)
-        path = Path(mjcf)
-        if not path.is_file():
-            raise InputError(f"MJCF file {str(path)!r} does not exist; give an MJCF string or an existing file")
-        return mujoco.MjModel.from_xml_path(str(path))
+            spec = mujoco.MjSpec.from_string(mjcf)
+        else:
+            path = Path(mjcf)
+            if not path.is_file():
+                raise InputError(f"MJCF file {str(path)!r} does not exist; give an MJCF string or an existing file")
+            spec = mujoco.MjSpec.from_file(str(path))
+        return spec, spec.compile()
     except ValueError as exc:  # MuJoCo's own parse and compile errors
         raise InputError(f"MuJoCo could not load the MJCF: {exc}") from None
 
@@ -65,8 +69,9 @@ class MujocoBodies:
     """
 
     def __init__(self, mjcf, bodies: Sequence[str] | None = None, name: str = "bodies"):
-        self.model = load_model(mjcf)
+        self._spec, self.model = load_spec(mjcf)
         self.data = mujoco.MjData(self.model)
+        self.tethers: list[str] = []  #: names of the tendons added by add_tethers, in order
         self.name = name
         m = self.model
         if bodies is None:
@@ -190,6 +195,49 @@ class MujocoBodies:
             pts.append(p)
             owner.append(np.full(len(p), k))
         return np.concatenate(pts), np.concatenate(owner)
+
+    def add_tethers(self, tethers) -> None:
+        """Hold points of bodies within a length of fixed points: each tether is
+        ``(name, anchor, site, length)`` with the anchor [m] in the world, the name
+        of a site on a coupled body, and the length [m]. It becomes a spatial
+        tendon with a length limit (a unilateral constraint: slack below the
+        length, pulling along the chord at it), so several taut tethers share a
+        load as statics says. The model is recompiled; the state is kept."""
+        if self._spec is None:
+            raise InputError(f"{self.name}: tethers need a model given as MJCF (string or file), not an MjModel")
+        for name, anchor, site, length in tethers:
+            self.site(site)  # exists and is on a coupled body
+            if not (math.isfinite(length) and length > 0):
+                raise InputError(f"{self.name}: tether '{name}' needs a length > 0 m, got {length!r}")
+            self._spec.worldbody.add_site(name=f"{name}.anchor", pos=[float(c) for c in anchor])
+            t = self._spec.add_tendon(name=name, limited=True, range=[0.0, float(length)])
+            t.wrap_site(f"{name}.anchor")
+            t.wrap_site(site)
+            self.tethers.append(name)
+        armature = self.model.dof_armature.copy()  # runtime additions (added mass) survive the recompile
+        state = self.save_state()
+        try:
+            self.model = self._spec.compile()
+        except ValueError as exc:
+            raise InputError(f"{self.name}: MuJoCo could not add the tethers: {exc}") from None
+        self.model.dof_armature[:] = armature
+        mujoco.mj_setConst(self.model, mujoco.MjData(self.model))
+        self.data = mujoco.MjData(self.model)
+        self.dt_mujoco = float(self.model.opt.timestep)
+        self.load_state(state)
+
+    def tether_tensions(self) -> np.ndarray:
+        """Tension [N] in each tether (0 when slack), in the order added, from the
+        constraint forces of the last MuJoCo step."""
+        m, d = self.model, self.data
+        out = np.zeros(len(self.tethers))
+        rows = np.flatnonzero(d.efc_type[: d.nefc] == mujoco.mjtConstraint.mjCNSTR_LIMIT_TENDON)
+        ids = {mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_TENDON, n): k for k, n in enumerate(self.tethers)}
+        for r in rows:
+            k = ids.get(int(d.efc_id[r]))
+            if k is not None:
+                out[k] += d.efc_force[r]
+        return out
 
     def masses(self) -> np.ndarray:
         """Mass of each coupled body [kg], from MuJoCo's geometry or the MJCF's values."""

@@ -140,6 +140,7 @@ class Coupler:
         (each checks its own inputs before any step is taken)."""
         t0 = self.clock.t
         if self.bodies is not None:
+            self._attach_tethers()
             self.bodies.initialize(t0)
             self._sites = []
             for a in self.moorings:
@@ -155,6 +156,27 @@ class Coupler:
             if p is not self.bodies:
                 p.initialize(t0)
         self._initialized = True
+
+    def _attach_tethers(self) -> None:
+        """Length constraints (MuJoCo tendons) for the mooring lines that ask for
+        them (inextensible catenary lines), between each anchor and fairlead site."""
+        for a in self.moorings:
+            wanted = getattr(a.mooring, "tethers", lambda: [])()
+            if not wanted:
+                continue
+            spec = []
+            for i, anchor, length in wanted:
+                anchor3 = anchor if a.mooring.dim == 3 else np.array([anchor[0], 0.0, anchor[1]])
+                spec.append((f"{a.mooring.name}.{i}", anchor3, a.sites[i], length))
+            self.bodies.add_tethers(spec)
+            a.mooring.set_tethered(True)
+
+    def tether_tensions(self) -> dict[str, float]:
+        """Tension [N] in each mooring length constraint after the last step, by
+        ``"<mooring>.<line index>"`` (0 when the line is slack)."""
+        if self.bodies is None or not self.bodies.tethers:
+            return {}
+        return dict(zip(self.bodies.tethers, self.bodies.tether_tensions().tolist()))
 
     def _step_size(self, ticks_left: int) -> tuple[int, str]:
         best, limiter = math.inf, "user dt"

@@ -31,11 +31,29 @@ class CatenaryMooring:
         Optional initial fairlead positions [m], ``(n_lines, dim)``; checked at once.
     name:
         Participant name used in messages and outputs.
+    taut:
+        What an inextensible line does at its length. ``"tether"`` (default): the
+        coupler adds a length constraint between anchor and fairlead to the
+        bodies (see :meth:`tethers`) and the catenary force is capped at the
+        geometry of ``slack`` (its stiffness diverges at taut, which no explicit
+        exchange survives): the constraint then carries the rest, and several taut
+        lines share a load as statics says. Without a coupler (no constraint
+        attached), or beyond the length by more than 1 %, a taut line raises
+        :class:`~cosim.errors.TautLineError`. ``"raise"``: always raise at taut.
+    slack:
+        Relative slack ``1 - chord / L`` below which an inextensible line's force is
+        capped in ``"tether"`` mode (default 1e-3: there the tension is ~6.5 w L).
     """
 
-    def __init__(self, lines, fairleads=None, name: str = "moorings"):
+    def __init__(self, lines, fairleads=None, name: str = "moorings", taut: str = "tether", slack: float = 1e-3):
         self.lines = named_lines(lines)
         self.name = name
+        if taut not in ("tether", "raise"):
+            raise InputError(f"{name}: taut must be 'tether' or 'raise', got {taut!r}")
+        if not (0.0 < slack < 0.5):
+            raise InputError(f"{name}: slack must be between 0 and 0.5, got {slack!r}")
+        self.taut, self.slack = taut, float(slack)
+        self._tethered = False
         self.n_lines = len(self.lines)
         self.dim = self.lines[0].dim
         self.anchors = np.array([ln.anchor for ln in self.lines], dtype=float)
@@ -102,20 +120,29 @@ class CatenaryMooring:
             )
         horiz = d[:, :-1]
         X = np.sqrt(np.sum(horiz**2, axis=1))
-        self._packed[:, 0], self._packed[:, 1] = X, h
-        solve_packed(self._packed, self._out)
-        o = self._out
-        sol = LineSolution(o[:, 0].copy(), o[:, 1].copy(), o[:, 2].copy(), o[:, 3].astype(np.int8))
-        taut = (sol.state == TAUT) & np.isinf(sol.H)
-        if taut.any():
-            i = int(np.argmax(taut))
-            dist = math.hypot(X[i], h[i])
+        chord = np.hypot(X, h)
+        inext = np.isinf(self._EA)
+        over = inext & (chord >= self._L * (1.0 + (0.01 if self._tethered else 0.0)))
+        if over.any():
+            i = int(np.argmax(over))
+            why = ("its length constraint lets it stretch more than 1 %: the load is too large for the "
+                   "constraint, or the coupling step too long" if self._tethered else
+                   "no catenary exists; give the line an axial stiffness EA, lengthen it, limit the body's "
+                   "offset, or attach the mooring to bodies through a Coupler, which holds it taut")
             raise TautLineError(
                 f"{self.name}, line '{self.lines[i].name}': the inextensible line of length "
-                f"{self._L[i]:.6g} m would have to span {dist:.6g} m (X = {X[i]:.6g} m, h = {h[i]:.6g} m); "
-                f"no catenary exists. Give the line an axial stiffness EA, lengthen it, or limit the "
-                f"body's offset."
+                f"{self._L[i]:.6g} m would have to span {chord[i]:.6g} m (X = {X[i]:.6g} m, h = {h[i]:.6g} m); "
+                f"{why}."
             )
+        # capped: solve at the point of the chord where the slack is `slack`
+        capped = inext & self._tethered & (chord > self._L * (1.0 - self.slack))
+        scale = np.ones(self.n_lines)
+        scale[capped] = self._L[capped] * (1.0 - self.slack) / chord[capped]
+        self._packed[:, 0], self._packed[:, 1] = X * scale, h * scale
+        solve_packed(self._packed, self._out)
+        o = self._out
+        state = np.where(capped, int(TAUT), o[:, 3]).astype(np.int8)
+        sol = LineSolution(o[:, 0].copy(), o[:, 1].copy(), o[:, 2].copy(), state)
         e = np.divide(horiz, X[:, None], out=np.zeros_like(horiz), where=X[:, None] > 0)
         self._forces = np.concatenate([-sol.H[:, None] * e, -sol.V[:, None]], axis=1)
         self._pos = pos.copy()
@@ -126,6 +153,20 @@ class CatenaryMooring:
         if self.solution is None:
             raise InputError(f"{self.name}: fairlead positions are not set; call set_fairlead_motion() first")
         return self._forces.copy()
+
+    # -- length constraints ----------------------------------------------------
+    def tethers(self) -> list[tuple[int, np.ndarray, float]]:
+        """``(line index, anchor [m], length [m])`` of the lines that need a length
+        constraint: the inextensible ones, in ``"tether"`` mode."""
+        if self.taut != "tether":
+            return []
+        return [(i, self.anchors[i].copy(), float(self._L[i])) for i in range(self.n_lines) if np.isinf(self._EA[i])]
+
+    def set_tethered(self, tethered: bool = True) -> None:
+        """Told by the coupler once the length constraints of :meth:`tethers` exist."""
+        self._tethered = bool(tethered)
+        if self._pos is not None:
+            self.set_fairlead_motion(self._pos)
 
     # -- reporting -----------------------------------------------------------
     def fairlead_tensions(self) -> np.ndarray:

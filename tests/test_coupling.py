@@ -71,10 +71,96 @@ def test_a_taut_line_stops_the_run_naming_step_time_and_line():
                          gravity=0.0)
     b = MujocoBodies(xml)
     b.data.qvel[0] = -5.0  # drifting away from the anchor
-    m = CatenaryMooring([MooringLine((10.0, 0.0, -5.0), 12.0, 1.0, name="stern")])
+    m = CatenaryMooring([MooringLine((10.0, 0.0, -5.0), 12.0, 1.0, name="stern")], taut="raise")
     c = Coupler(bodies=b, moorings=[(m, ["fl"])], dt=0.01)
     with pytest.raises(TautLineError, match=r"step \d+, t = [0-9.]+ s: moorings, line 'stern'"):
         c.run(2.0)
+
+
+class ConstantLoad:
+    """A stand-in fluid that pushes every body with one constant force [N]."""
+
+    name = "push"
+
+    def __init__(self, force):
+        self.force = np.asarray(force, float)
+
+    def attach_bodies(self, bodies):
+        self.n = bodies.n_bodies
+
+    def set_body_kinematics(self, kin):
+        pass
+
+    def body_wrenches(self):
+        return np.tile(self.force, (self.n, 1)), np.zeros((self.n, 3))
+
+    def initialize(self, t0):
+        pass
+
+    def max_dt(self):
+        return math.inf
+
+    def advance(self, t, dt):
+        pass
+
+    def save_state(self):
+        return None
+
+    def load_state(self, state):
+        pass
+
+
+def tethered_body(lines, sites, force, t_end=6.0):
+    xml = builders.scene(builders.box("b", (1.0, 1.0, 1.0), (0, 0, 0), mass=50.0, sites=sites), gravity=0.0)
+    b = MujocoBodies(xml)
+    # heavy damping through a stand-in: MuJoCo joint damping via the model
+    b.model.dof_damping[:] = 200.0
+    m = CatenaryMooring(lines)
+    c = Coupler(bodies=b, fluid=ConstantLoad(force), moorings=[(m, list(sites))], dt=0.005)
+    c.run(t_end)
+    return b, m, c
+
+
+def test_a_pulled_body_is_held_at_the_line_length():
+    """Inextensible, nearly weightless line: the body stops with the chord at L
+    (to the constraint's softness) and the tether carries the pull."""
+    L, F = 10.0, 400.0
+    line = MooringLine((-8.0, 0.0, -6.0), L, 1e-3, name="l")
+    pull = F * np.array([0.8, 0.0, 0.6])  # along the chord, away from the anchor
+    b, m, c = tethered_body([line], {"fl": (0.0, 0.0, 0.0)}, pull)
+    fl = b.site_positions([b.site("fl")[0]])[0]
+    chord = np.linalg.norm(fl - np.array([-8.0, 0.0, -6.0]))
+    assert chord == pytest.approx(L, rel=1e-3)
+    assert m.solution.state[0] == 3  # TAUT
+    T = c.tether_tensions()["moorings.0"]
+    # statics: tether along the chord balances F plus the (tiny) capped catenary pull
+    e = (np.array([-8.0, 0.0, -6.0]) - fl) / chord
+    total = T * e + m.fairlead_forces()[0]
+    np.testing.assert_allclose(total + pull, 0.0, atol=2e-3 * F)
+
+
+def test_two_taut_lines_share_a_load_as_statics_says():
+    """A buoyant pull F up on a body held by two taut lines at different angles:
+    T1 e1 + T2 e2 = -F (a two-bar truss), not seed 004 Eq. 40's proportional split."""
+    F = np.array([0.0, 0.0, 1000.0])
+    a1, a2 = np.array([-6.0, 0.0, -8.0]), np.array([4.0, 0.0, -3.0])
+    L1, L2 = 10.0, 5.0  # taut with the fairlead at the origin: T1 = 800 N, T2 = 600 N
+    lines = [MooringLine(tuple(a1), L1, 1e-3, name="a"), MooringLine(tuple(a2), L2, 1e-3, name="b")]
+    b, m, c = tethered_body(lines, {"f1": (0.0, 0.0, 0.0), "f2": (0.0, 0.0, 0.0)}, F)
+    e1, e2 = -a1 / L1, -a2 / L2  # unit vectors anchor -> fairlead
+    # T1 (-e1) + T2 (-e2) + F = 0 in the x-z plane
+    A = -np.array([[e1[0], e2[0]], [e1[2], e2[2]]])
+    T_exact = np.linalg.solve(A, -F[[0, 2]])
+    T = c.tether_tensions()
+    got = np.array([T["moorings.0"], T["moorings.1"]]) + m.fairlead_tensions()
+    np.testing.assert_allclose(T_exact, [800.0, 600.0], rtol=1e-12)
+    np.testing.assert_allclose(got, T_exact, rtol=5e-3)
+
+
+def test_an_untethered_mooring_still_raises_at_taut():
+    m = CatenaryMooring([MooringLine((0.0, -5.0), 6.0, 1.0)])
+    with pytest.raises(TautLineError, match="attach the mooring to bodies through a Coupler"):
+        m.set_fairlead_motion([[4.0, 0.0]])
 
 
 def test_attachment_errors():
