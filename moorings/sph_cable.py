@@ -565,8 +565,9 @@ class SPHCableMooring:
     Hermite curve through the given positions and velocities). Weight per length is the
     line's submerged ``weight``, inertia its ``mass_per_length``, stiffness its ``EA``;
     a line with a ``diameter`` gets Morison drag and added mass (still water).
-    It starts from the inextensible catenary through anchor and fairlead, cut off at the
-    seabed: let it settle (advance with the fairlead at rest) before measuring.
+    With ``seabed`` a line starts on its quasi-static elastic catenary with seabed contact
+    (moorings.catenary), stretched accordingly, so it starts (nearly) in equilibrium;
+    without, on the inextensible catenary through anchor and fairlead.
 
     Parameters
     ----------
@@ -632,6 +633,8 @@ class SPHCableMooring:
             opts = dict(self._opts)
             if ln.diameter is not None:
                 opts.setdefault("diameter", ln.diameter)
+            if self.seabed and "positions" not in opts:
+                opts["positions"] = self._quasi_static_shape(ln, fp)
             c = SPHCable(ln.length, self.n_particles, ln.EA, ln.mass_per_length, ln.anchor, fp,
                          weight_per_length=ln.weight, seabed_z=ln.anchor[-1] if self.seabed else None,
                          name=ln.name, **opts)
@@ -640,6 +643,25 @@ class SPHCableMooring:
         self.cables = cables
         self.t = float(t0)
         self.set_fairlead_motion(self._fpos, self._fvel)
+
+    def _quasi_static_shape(self, ln: MooringLine, fairlead) -> np.ndarray:
+        """Particle positions [m] on the elastic catenary with seabed (moorings.catenary) of
+        the line, in the vertical plane through anchor and fairlead: the line starts at its
+        quasi-static equilibrium, with the matching stretch, instead of settling into it."""
+        from moorings.catenary import shape
+
+        a = np.asarray(ln.anchor, float)
+        d = np.asarray(fairlead, float) - a
+        horiz = d.copy()
+        horiz[-1] = 0.0
+        X = float(np.linalg.norm(horiz))
+        eh = horiz / X if X > 0 else np.eye(self.dim)[0]
+        _, xs, zs = shape(X, float(d[-1]), ln.length, ln.weight, ln.EA, n=self.n_particles)
+        ez = np.zeros(self.dim)
+        ez[-1] = 1.0
+        pos = a + np.outer(xs, eh) + np.outer(zs, ez)
+        pos[-1] = fairlead  # exactly on the fairlead (round-off of the closed form)
+        return pos
 
     def max_dt(self) -> float:
         """No limit: each cable sub-cycles to the coupling time (see :meth:`stable_dt`)."""
