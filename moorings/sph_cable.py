@@ -333,6 +333,7 @@ class SPHCable:
         self._tension = np.zeros(n)
         self._loads: dict[int, _Load] = {}
         self._tables: dict[int, tuple] = {}
+        self._warned_strain = False
         self._next_handle = 0
         self._rebuild_external()
         self.steps = 0
@@ -509,6 +510,14 @@ class SPHCable:
         self._v0[:] = self._v1
         self.t = float(t + dt)
         self.steps += n_sub
+        if not self._warned_strain:
+            eps = np.linalg.norm(np.diff(self.x, axis=0), axis=1) / self.ds - 1.0
+            k = int(np.argmax(eps))
+            if eps[k] > self.max_strain:
+                self._warned_strain = True
+                log.warning("SPH cable '%s': segment %d (s = %.6g-%.6g m) is stretched %.3g at t = %.9g s, beyond "
+                            "max_strain = %g; the linear elastic law is extrapolated (warned once)", self.name, k,
+                            self.s[k], self.s[k + 1], eps[k], self.t, self.max_strain)
         return n_sub
 
     # ------------------------------------------------------------------ outputs

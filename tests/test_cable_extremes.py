@@ -69,3 +69,13 @@ def test_blow_up_is_reported_with_particle_and_step():
     with pytest.raises(InstabilityError, match=r"particle \d+ .*cfl"):
         for _ in range(200):
             c.advance(c.t, 0.01)
+
+
+def test_overstretching_is_warned_once(caplog):
+    c = SPHCable(1.0, 11, 1e4, 0.1, (0, 0), (1.0, 0), weight_per_length=0.0, max_strain=0.05)
+    c.set_end_motion("b", (1.2, 0.0))
+    with caplog.at_level("WARNING", logger="moorings.sph_cable"):
+        c.advance(0.0, 0.5)
+        c.advance(0.5, 0.5)
+    msgs = [r.getMessage() for r in caplog.records if "max_strain" in r.getMessage()]
+    assert len(msgs) == 1 and "segment" in msgs[0]
