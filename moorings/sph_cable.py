@@ -72,6 +72,18 @@ Case 1 and Experiment 2 while building this):
   ``dt = cfl * min segment / (c0 + max speed)``; the whole sub-cycling loop runs in
   compiled code (:func:`moorings.sph_cable_kernels.advance`).
 
+Usage::
+
+    from moorings.sph_cable import SPHCable, SPHCableMooring
+    c = SPHCable(312.73, 313, 7.184e7, 4.703, (0, 0), (304.8, 0), weight_per_length=46.12,
+                 omega=2.5, nodes_at=(125.88,))          # seed 000 Case 1
+    c.advance(0.0, 30.0)                                 # one call, compiled sub-steps
+    c.add_point_load(125.88, (0.0, -35586.0)); c.advance(30.0, 30.0)
+    c.position_at(125.88), c.end_forces(), c.tension
+
+    moor = SPHCableMooring(lines, fairleads=fairleads, n_particles=40)  # same lines as
+    # CatenaryMooring(lines, fairleads): the coupler swaps one for the other
+
 Discretisation: ``n_particles`` nodes at material (unstretched arc) coordinates ``s``,
 the two ends included (they sit on the supports). A node's inertial mass is the mass of
 half of each adjacent segment; ``nodes_at`` forces nodes at given ``s`` (a point load

@@ -14,24 +14,28 @@ from moorings.sph_cable import SPHCable, SPHCableMooring
 RHO = 1025.0
 
 
-def _falling(axis_vertical):
+def _falling(axis_vertical, dim=2):
     n, L, mu, w, d = 21, 2.0, 1.0, 5.0, 0.05
     s = np.linspace(0.0, L, n)
     pos = np.stack([np.zeros(n), -s], 1) if axis_vertical else np.stack([s, np.zeros(n)], 1)
+    if dim == 3:  # the same line in 3-D, its axis turned 40° about z
+        c, sn = math.cos(0.7), math.sin(0.7)
+        pos = np.stack([c * pos[:, 0], sn * pos[:, 0], pos[:, 1]], 1)
     c = SPHCable(L, n, 1e4, mu, pos[0], pos[-1], weight_per_length=w, free_end="both", positions=pos, omega=0.0,
                  diameter=d, rho_water=RHO)
     return c, mu, w, d
 
 
-def test_morison_normal_added_mass_and_terminal_velocity():
-    c, mu, w, d = _falling(axis_vertical=False)
+@pytest.mark.parametrize("dim", [2, 3])
+def test_morison_normal_added_mass_and_terminal_velocity(dim):
+    c, mu, w, d = _falling(axis_vertical=False, dim=dim)
     ma = RHO * math.pi * d * d / 4  # ca_normal = 1
     c.advance(0.0, 1e-3)
-    np.testing.assert_allclose(c.v[:, 1] / c.t, -w / (mu + ma), rtol=2e-3)
+    np.testing.assert_allclose(c.v[:, -1] / c.t, -w / (mu + ma), rtol=2e-3)
     while c.t < 3.0:
         c.advance(c.t, 0.1)
-    np.testing.assert_allclose(c.v[:, 1], -math.sqrt(2 * w / (RHO * 1.2 * d)), rtol=1e-3)
-    np.testing.assert_allclose(c.v[:, 0], 0.0, atol=1e-9)
+    np.testing.assert_allclose(c.v[:, -1], -math.sqrt(2 * w / (RHO * 1.2 * d)), rtol=1e-3)
+    np.testing.assert_allclose(c.v[:, :-1], 0.0, atol=1e-9)
 
 
 def test_morison_tangential_drag_terminal_velocity():
