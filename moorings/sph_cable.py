@@ -168,6 +168,11 @@ class _Load:
     s: float
     force: np.ndarray  # [N]
     mass: float  # [kg]
+    t_on: float = -math.inf  # [s]
+    t_off: float = math.inf  # [s]
+
+    def active(self, t: float) -> bool:
+        return self.t_on <= t + 1e-12 < self.t_off
 
 
 class SPHCable:
@@ -366,12 +371,17 @@ class SPHCable:
         f = (s - self.s[i]) / (self.s[i + 1] - self.s[i])
         return i, f
 
-    def _rebuild_external(self):
+    def _rebuild_external(self, t=None):
+        """External forces and inertial masses with the point loads/masses active at ``t``
+        [s] (default: the cable's time)."""
+        t = self.t if t is None else t
         n, dim = self.n, self.dim
         fext = np.zeros((n, dim))
         fext[:, -1] = -self.weight_per_length * self._seg_len
         m = self._m_line.copy()
         for ld in self._loads.values():
+            if not ld.active(t):
+                continue
             i, f = self._split(ld.s)
             for j, wj in ((i, 1.0 - f), (i + 1, f)):
                 fext[j] += wj * ld.force
@@ -379,22 +389,33 @@ class SPHCable:
                 m[j] += wj * ld.mass
         self.fext, self.m = fext, m
 
-    def add_point_load(self, s, force) -> int:
-        """Apply a constant force [N] (dim values, world frame) at material coordinate ``s`` [m]
-        from the next :meth:`advance` on; returns a handle for :meth:`remove`."""
+    def add_point_load(self, s, force, t_on=None, t_off=None) -> int:
+        """Apply a constant force [N] (dim values, world frame) at material coordinate ``s`` [m],
+        from ``t_on`` to ``t_off`` [s] (None: from the next :meth:`advance` on / for ever;
+        :meth:`advance` splits its interval at these times); returns a handle for
+        :meth:`remove`."""
         f = np.asarray(force, float).ravel()
         if f.size != self.dim or not np.all(np.isfinite(f)):
             raise InputError(f"SPH cable '{self.name}': force must be {self.dim} finite values [N]")
         self._split(s)
-        return self._add(_Load(float(s), f, 0.0))
+        return self._add(_Load(float(s), f, 0.0, *self._window(t_on, t_off)))
 
-    def add_point_mass(self, s, mass) -> int:
-        """Attach a point mass [kg] (its inertia and its weight mass·gravity) at ``s`` [m]."""
+    def add_point_mass(self, s, mass, t_on=None, t_off=None) -> int:
+        """Attach a point mass [kg] (its inertia and its weight mass·gravity) at ``s`` [m],
+        from ``t_on`` to ``t_off`` [s] as for :meth:`add_point_load` (seed 000 Case 2
+        removes one at a given time)."""
         mass = float(mass)
         if not (math.isfinite(mass) and mass > 0):
             raise InputError(f"SPH cable '{self.name}': point mass = {mass!r} kg must be > 0")
         self._split(s)
-        return self._add(_Load(float(s), np.zeros(self.dim), mass))
+        return self._add(_Load(float(s), np.zeros(self.dim), mass, *self._window(t_on, t_off)))
+
+    def _window(self, t_on, t_off):
+        a = -math.inf if t_on is None else float(t_on)
+        b = math.inf if t_off is None else float(t_off)
+        if math.isnan(a) or math.isnan(b) or not a < b:
+            raise InputError(f"SPH cable '{self.name}': t_on = {t_on!r} s must come before t_off = {t_off!r} s")
+        return a, b
 
     def _add(self, ld):
         h = self._next_handle
@@ -472,11 +493,17 @@ class SPHCable:
         """Advance from ``t`` to ``t + dt`` [s] in compiled sub-steps; returns their number."""
         if not dt > 0:
             raise InputError(f"SPH cable '{self.name}': dt = {dt!r} s must be > 0")
-        if not self._tables:
-            return self._advance_span(t, dt)
         t1 = t + dt
-        cuts = sorted({float(x) for tab in self._tables.values() for x in tab[0] if t + 1e-12 < x < t1 - 1e-12})
-        knots = [t, *cuts, t1]
+        timed = [ld for ld in self._loads.values() if math.isfinite(ld.t_on) or math.isfinite(ld.t_off)]
+        if timed:
+            self._rebuild_external(t)
+        if not self._tables and not timed:
+            return self._advance_span(t, dt)
+        cuts = {float(x) for tab in self._tables.values() for x in tab[0]}
+        cuts |= {x for ld in timed for x in (ld.t_on, ld.t_off)}
+        knots = [t, *sorted(x for x in cuts if t + 1e-12 < x < t1 - 1e-12), t1]
+        if len(knots) == 2 and not self._tables:
+            return self._advance_span(t, dt)
         # the other held ends keep their Hermite curve over the whole interval
         npr = self._pidx.size
         P0, V0, P1, V1 = self._p0.copy(), self._v0.copy(), self._p1.copy(), self._v1.copy()
@@ -490,6 +517,8 @@ class SPHCable:
             self._p1[:], self._v1[:] = pos, vel
             for i in self._tables:
                 self._p1[i], self._v1[i] = self._table_state(i, tb)
+            if timed:
+                self._rebuild_external(ta)
             n_tot += self._advance_span(ta, tb - ta)
             fmean += self._fend_mean * (tb - ta) / dt
         self._fend_mean[:] = fmean

@@ -262,3 +262,21 @@ def test_suspended_cable_modes_match_irvine():
         res[name] = (_first_period(c, idx, comp, 0.8 * T_exact, T_exact / 200), T_exact)
     for name, (T_num, T_exact) in res.items():
         assert T_num == pytest.approx(T_exact, rel=0.02), name
+
+
+def test_point_mass_removed_at_a_given_time_inside_one_advance():
+    """Seed 000 Case 2 style: a mass at midspan is released at t = 0.3 s; one advance call
+    over [0, 0.6] equals stopping at 0.3 s and removing it by hand."""
+    def make():
+        return SPHCable(10.0, 21, 2e5, 1.0, (0, 0), (9.9, 0), omega=0.0)
+
+    a = make()
+    a.add_point_mass(5.0, 20.0, t_off=0.3)
+    a.advance(0.0, 0.6)
+    b = make()
+    h = b.add_point_mass(5.0, 20.0)
+    b.advance(0.0, 0.3)
+    b.remove(h)
+    b.advance(0.3, 0.3)
+    np.testing.assert_allclose(a.positions, b.positions, rtol=0, atol=1e-12)
+    assert a.m.sum() == pytest.approx(10.0)  # the mass is gone afterwards
