@@ -1,4 +1,4 @@
-"""The ``cosim`` command.
+"""cosim: couple an SPH fluid, MuJoCo bodies and mooring models.
 
 ``cosim line``      tabulate (and plot) one catenary mooring line against X
 ``cosim validate``  run validation cases, one JSON object per case
