@@ -4,6 +4,10 @@
 - :mod:`moorings.catenary`: the quasi-static catenary law (seed 004 §3),
   ``solve(X, h, L, w, EA=None)``.
 - :class:`CatenaryMooring`: a mooring system of catenary lines.
+- :class:`SPHCableMooring`: dynamic lines as SPH cables (seed 000).
+- :class:`FMUMooring`: any co-simulation FMU with fairlead positions in and
+  forces out; :func:`export_catenary_fmu` writes the catenary law as one.
+- :class:`MoorDynMooring`: MoorDyn v2 lines (optional ``moordyn`` package).
 
 Swapping models is one constructor call: every model takes the same list of
 ``MooringLine``. Models are imported on first use, so a scene loads (and
@@ -15,7 +19,14 @@ from importlib import import_module
 
 from moorings.line import MooringLine, named_lines
 
-_LAZY = {"CatenaryMooring": "moorings.catenary_mooring"}
+_LAZY = {
+    "CatenaryMooring": "moorings.catenary_mooring",
+    "SPHCableMooring": "moorings.sph_cable",
+    "FMUMooring": "moorings.fmu_mooring",
+    "MoorDynMooring": "moorings.moordyn_mooring",
+    "export_catenary_fmu": "moorings.fmu_export",
+    "catenary_fmu_variable_map": "moorings.fmu_export",
+}
 
 
 def __getattr__(name):

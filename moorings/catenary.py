@@ -156,9 +156,34 @@ def _suspended(u, z, eps):
 
 
 @nb.njit(**_JIT)
+def _one_minus_sinhc(u):
+    """g(u) = 1 - u / sinh(u) and g'(u), without cancellation at small u:
+    g = (sinh u - u) / sinh u with sinh u - u summed as its series below 1."""
+    if u >= 1.0:
+        s = math.sinh(u)
+        return (s - u) / s, (u * math.cosh(u) - s) / (s * s)
+    u2 = u * u
+    term = u * u2 / 6.0  # u^3/3!
+    excess = term
+    k = 1
+    while term > 1e-17 * excess:
+        term *= u2 / ((2 * k + 2) * (2 * k + 3))
+        excess += term
+        k += 1
+    s = u + excess
+    # u cosh u - sinh u = sum 2k u^(2k+1) / (2k+1)!, the leading terms suffice for Newton
+    return excess / s, (u2 * u / 3.0) * (1.0 + u2 / 10.0) / (s * s)
+
+
+@nb.njit(**_JIT)
 def _f(regime, p, z, eps, x):
-    """Residual X(e^p) - x of a regime and its derivative in p."""
+    """Residual of a regime at e^p and its derivative in p: X(e^p) - x for the
+    seabed (0) and suspended (1) regimes; for the inextensible suspended regime
+    near taut (2), 1 - u/sinh(u) - x, where x is then the relative gap to taut."""
     t = math.exp(p)
+    if regime == 2:
+        g, dg = _one_minus_sinhc(t)
+        return g - x, dg * t
     X, _, _, dX = _seabed(t, z, eps) if regime == 0 else _suspended(t, z, eps)
     return X - x, dX * t
 
@@ -247,22 +272,32 @@ def _seabed_root(x, z, eps, d, u_lift):
 
 @nb.njit(**_JIT)
 def _suspended_root(x, z, eps, u_max):
-    """Unknown u of the fully suspended regime, in (0, u_max]; X(u) decreases."""
+    """Unknown u of the elastic fully suspended regime, in (0, u_max]; X(u) decreases."""
     b = math.log(u_max)
     fb = _f(1, b, z, eps, x)[0]
-    if eps == 0.0:
-        # near the taut point u/sinh(u) -> 1 - u^2/6: start where that misses x
-        chord = math.sqrt((1.0 - z) * (1.0 + z))
-        gap = (chord - x) / chord  # > 0: x < chord here
-        a = min(0.5 * math.log(6.0 * max(gap, 1e-300)) - 1.0, b - 1.0)
-    else:
-        a = min(math.log(0.25 * eps / max(x, 1e-300)), b - 1.0)
+    a = min(math.log(0.25 * eps / max(x, 1e-300)), b - 1.0)  # X ~ 1 + eps / 2u there
     fa = _f(1, a, z, eps, x)[0]
     while fa < 0.0 and a > -700.0:
         b, fb = a, fa
         a -= 2.0
         fa = _f(1, a, z, eps, x)[0]
     return math.exp(_newton(1, a, b, fa, fb, z, eps, x))
+
+
+@nb.njit(**_JIT)
+def _taut_gap_root(gap, u_lift):
+    """Unknown u of the inextensible fully suspended regime: X = X_taut u/sinh(u),
+    i.e. 1 - u/sinh(u) = gap with gap = 1 - X/X_taut > 0 taken from the
+    dimensional values, so that even one ulp below taut gives a finite answer."""
+    b = math.log(u_lift)
+    fb = _f(2, b, 0.0, 0.0, gap)[0]
+    a = min(0.5 * math.log(6.0 * gap) - 1.0, b - 1.0)  # 1 - u/sinh(u) ~ u^2/6
+    fa = _f(2, a, 0.0, 0.0, gap)[0]
+    while fa > 0.0 and a > -700.0:
+        b, fb = a, fa
+        a -= 2.0
+        fa = _f(2, a, 0.0, 0.0, gap)[0]
+    return math.exp(_newton(2, a, b, fa, fb, 0.0, 0.0, gap))
 
 
 @nb.njit(**_JIT)
@@ -290,7 +325,9 @@ def _solve_dim(X, h, L, w, EA):
         if X < X_lift:
             _, H, V, _ = _seabed(_seabed_root(x, z, 0.0, z, math.atanh(z)), z, 0.0)
             return H * wl, V * wl, max(1.0 - V, 0.0) * L, 1
-        _, H, V, _ = _suspended(_suspended_root(x, z, 0.0, math.atanh(z)), z, 0.0)
+        X_taut = _taut_x(h, L)
+        u = _taut_gap_root((X_taut - X) / X_taut, math.atanh(z))
+        _, H, V, _ = _suspended(u, z, 0.0)
         return H * wl, V * wl, 0.0, 2
     if h == 0.0:  # flat on the seabed and stretched
         return EA * (x - 1.0), 0.0, L, 3

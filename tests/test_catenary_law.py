@@ -217,6 +217,21 @@ def test_states_on_either_side_of_the_boundaries():
     assert solve(xt * (1 + eps), H1, L1, W1).state is TAUT
 
 
+@pytest.mark.parametrize("h, L", [(H1, L1), (9.0, 10.0), (50.0, 150.0), (1e-3, 1.0), (0.999, 1.0)])
+def test_one_ulp_below_taut_is_finite_and_steep(h, L):
+    """Regression: the relative gap to taut is taken from dimensional values, so
+    even the last double below the taut point gives a finite, huge tension
+    (~ w X sqrt(X / (24 gap)) from the flat-catenary expansion) and no NaN."""
+    xt = taut_distance(h, L)
+    prev = 0.0
+    for X in (xt * (1 - 1e-8), xt * (1 - 1e-11), xt * (1 - 1e-14), float(np.nextafter(xt, 0))):
+        r = solve(X, h, L, W1)
+        assert r.state is FULLY_LIFTED and math.isfinite(r.H) and math.isfinite(r.V)
+        assert r.H > prev
+        prev = r.H
+    assert prev > 1e5 * W1 * L
+
+
 def test_h_to_zero_and_L_to_h():
     # fairlead on the seabed: flat line, slack up to X = L then taut
     r = solve(L1, 0.0, L1, W1)

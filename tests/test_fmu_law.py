@@ -62,8 +62,7 @@ def sweep_cases():
         for EA in (None, 1e3 * w * L, 50.0 * w * L, 1e9 * w * L, 1.5 * w * L):
             xt = taut_distance(h, L)
             Xs = list(np.linspace(0.0, 1.2 * max(xt, L), 61))
-            # (1 ulp below the taut point the Python law itself returns NaN for an inextensible line; not swept)
-            Xs += [max(L - h, 0.0), lift_off_distance(h, L), xt, np.nextafter(xt, 2 * xt + 1),
+            Xs += [max(L - h, 0.0), lift_off_distance(h, L), xt, np.nextafter(xt, 2 * xt + 1), np.nextafter(xt, 0),
                    0.5 * (lift_off_distance(h, L) + xt), xt * (1 - 1e-9)]
             cases += [(float(X), h, L, w, EA) for X in Xs if X >= 0.0]
     # tiny weight and huge stiffness (no overflow, same answer)

@@ -49,10 +49,44 @@ static void suspended(double u, double z, double eps, double *X, double *H, doub
     *dX = 2.0 * h + (2.0 * u + eps) * dH;
 }
 
-/* Residual X(e^p) - x of a regime and its derivative in p. */
+/* g(u) = 1 - u / sinh(u) and g'(u), without cancellation at small u. */
+static void one_minus_sinhc(double u, double *g, double *dg)
+{
+    double s, u2, term, excess;
+    int k;
+    if (u >= 1.0) {
+        s = sinh(u);
+        *g = (s - u) / s;
+        *dg = (u * cosh(u) - s) / (s * s);
+        return;
+    }
+    u2 = u * u;
+    term = u * u2 / 6.0; /* u^3/3! */
+    excess = term;
+    k = 1;
+    while (term > 1e-17 * excess) {
+        term *= u2 / ((2 * k + 2) * (2 * k + 3));
+        excess += term;
+        k += 1;
+    }
+    s = u + excess;
+    *g = excess / s;
+    *dg = (u2 * u / 3.0) * (1.0 + u2 / 10.0) / (s * s);
+}
+
+/* Residual of a regime at e^p and its derivative in p: X(e^p) - x for the seabed (0)
+ * and suspended (1) regimes; 1 - u/sinh(u) - x for the inextensible suspended regime
+ * near taut (2), where x is the relative gap to taut. */
 static double f(int regime, double p, double z, double eps, double x, double *df)
 {
     double t = exp(p), X, H, V, dX;
+    if (regime == 2) {
+        double g, dg;
+        one_minus_sinhc(t, &g, &dg);
+        if (df)
+            *df = dg * t;
+        return g - x;
+    }
     if (regime == 0)
         seabed(t, z, eps, &X, &H, &V, &dX);
     else
@@ -149,20 +183,13 @@ static double seabed_root(double x, double z, double eps, double d, double u_lif
     return exp(newton(0, a, b, fa, fb, z, eps, x));
 }
 
-/* Unknown u of the fully suspended regime, in (0, u_max]; X(u) decreases. */
+/* Unknown u of the elastic fully suspended regime, in (0, u_max]; X(u) decreases. */
 static double suspended_root(double x, double z, double eps, double u_max)
 {
     double a, fa, b, fb;
     b = log(u_max);
     fb = f(1, b, z, eps, x, 0);
-    if (eps == 0.0) {
-        /* near the taut point u/sinh(u) -> 1 - u^2/6: start where that misses x */
-        double chord = sqrt((1.0 - z) * (1.0 + z));
-        double gap = (chord - x) / chord;
-        a = pmin(0.5 * log(6.0 * pmax(gap, 1e-300)) - 1.0, b - 1.0);
-    } else {
-        a = pmin(log(0.25 * eps / pmax(x, 1e-300)), b - 1.0);
-    }
+    a = pmin(log(0.25 * eps / pmax(x, 1e-300)), b - 1.0); /* X ~ 1 + eps / 2u there */
     fa = f(1, a, z, eps, x, 0);
     while (fa < 0.0 && a > -700.0) {
         b = a;
@@ -171,6 +198,24 @@ static double suspended_root(double x, double z, double eps, double u_max)
         fa = f(1, a, z, eps, x, 0);
     }
     return exp(newton(1, a, b, fa, fb, z, eps, x));
+}
+
+/* Unknown u of the inextensible fully suspended regime: 1 - u/sinh(u) = gap, with
+ * gap = 1 - X/X_taut > 0 from the dimensional values (finite even one ulp below taut). */
+static double taut_gap_root(double gap, double u_lift)
+{
+    double a, fa, b, fb;
+    b = log(u_lift);
+    fb = f(2, b, 0.0, 0.0, gap, 0);
+    a = pmin(0.5 * log(6.0 * gap) - 1.0, b - 1.0); /* 1 - u/sinh(u) ~ u^2/6 */
+    fa = f(2, a, 0.0, 0.0, gap, 0);
+    while (fa > 0.0 && a > -700.0) {
+        b = a;
+        fb = fa;
+        a -= 2.0;
+        fa = f(2, a, 0.0, 0.0, gap, 0);
+    }
+    return exp(newton(2, a, b, fa, fb, 0.0, 0.0, gap));
 }
 
 static void put(cat_solution *out, double H, double V, double td, int state)
@@ -213,7 +258,10 @@ static void solve_dim(double X, double h, double L, double w, double EA, cat_sol
             put(out, H * wl, V * wl, pmax(1.0 - V, 0.0) * L, CAT_PARTLY_LIFTED);
             return;
         }
-        suspended(suspended_root(x, z, 0.0, atanh(z)), z, 0.0, &Xr, &H, &V, &dX);
+        {
+            double X_taut = cat_taut_x(h, L);
+            suspended(taut_gap_root((X_taut - X) / X_taut, atanh(z)), z, 0.0, &Xr, &H, &V, &dX);
+        }
         put(out, H * wl, V * wl, 0.0, CAT_FULLY_LIFTED);
         return;
     }
