@@ -57,7 +57,7 @@ import numpy as np
 from numba import njit, prange
 
 from fluid.kernels import WENDLAND, grad_factor
-from fluid.neighbours import cell_coords, row_range
+from fluid.neighbours import row_range
 
 _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 
@@ -102,17 +102,44 @@ def equation_of_state(rho, rho0, c0, gamma, p, cs):
         cs[i] = c0 * x ** e
 
 
+#: rows of the packed particle table :func:`pack` fills and :func:`interact` reads
+X, Y, Z, VX, VY, VZ, RHO, MASS, CS, PR2, VOL, KAP, ISF = range(13)
+N_ROWS = 13
+#: rows of the rates table :func:`interact` writes
+DRHO, AX, AY, AZ, VISC = range(5)
+
+
 @njit(parallel=True, **_OPTS)
-def pair_terms(rho, mass, p, cs, kind, aux):
-    """Per-particle factors the pair loop reads, so that it divides only once per pair:
-    ``aux[:, 0] = p / rho^2``, ``aux[:, 1] = m / rho``, ``aux[:, 2] = rho / c^2``,
-    ``aux[:, 3] = 1`` for fluid, 0 for boundary particles."""
+def pack(pos, vel, rho, mass, kind, rho0, c0, gamma, p, S):
+    """Tait EOS (004_1657bd4a51d29840.txt Eq. 8) into ``p`` [Pa], and the packed table
+    ``S`` (N_ROWS, N) the pair loop reads: one contiguous row per quantity (positions and
+    velocities per component, y = 0 in 2-D, density, mass, sound speed
+    ``c = c0 (rho/rho0)^((gamma-1)/2)``, ``p/rho^2``, ``m/rho``, ``rho/c^2`` and 1 for fluid,
+    0 for boundary particles), so that a neighbour range is a contiguous slice of each row
+    and the pair loop vectorises."""
+    B = c0 * c0 * rho0 / gamma
+    e = 0.5 * (gamma - 1.0)
+    three = pos.shape[1] == 3
+    zc = pos.shape[1] - 1
     for i in prange(rho.shape[0]):
         r = rho[i]
-        aux[i, 0] = p[i] / (r * r)
-        aux[i, 1] = mass[i] / r
-        aux[i, 2] = r / (cs[i] * cs[i])
-        aux[i, 3] = 1.0 if kind[i] == 0 else 0.0
+        x = r / rho0
+        pi = B * (x ** gamma - 1.0)
+        c = c0 * x ** e
+        p[i] = pi
+        S[X, i] = pos[i, 0]
+        S[Y, i] = pos[i, 1] if three else 0.0
+        S[Z, i] = pos[i, zc]
+        S[VX, i] = vel[i, 0]
+        S[VY, i] = vel[i, 1] if three else 0.0
+        S[VZ, i] = vel[i, zc]
+        S[RHO, i] = r
+        S[MASS, i] = mass[i]
+        S[CS, i] = c
+        S[PR2, i] = pi / (r * r)
+        S[VOL, i] = mass[i] / r
+        S[KAP, i] = r / (c * c)
+        S[ISF, i] = 1.0 if kind[i] == 0 else 0.0
 
 
 def hydrostatic_density(depth, rho0: float, c0: float, gamma: float, g: float) -> np.ndarray:
@@ -123,21 +150,26 @@ def hydrostatic_density(depth, rho0: float, c0: float, gamma: float, g: float) -
 
 
 @njit(parallel=True, **_OPTS)
-def interact(pos, vel, rho, mass, cs, aux, start, lo, inv_cell, nx, ny, nz, kernel, prm,
-             drho, acc, visc):
-    """One pass over all pairs; writes, for every particle a,
+def interact(S, start, lo, inv_cell, nx, ny, nz, reach, kernel, prm, out):
+    """One pass over all pairs; writes, for every particle a, into ``out`` (5, N):
 
-    ``drho[a]`` [kg/m^3/s] continuity rate (Eq. 7 plus diffusion), ``acc[a]`` [m/s^2]
-    momentum rate (Eq. 6; gravity added for fluid only, see module docstring) and
-    ``visc[a]`` [m/s] = max_b |h v_ab.r_ab / (r_ab^2 + eta^2)| for the time step
+    ``out[DRHO, a]`` [kg/m^3/s] continuity rate (Eq. 7 plus diffusion), ``out[AX..AZ, a]``
+    [m/s^2] momentum rate (Eq. 6; gravity added for fluid only, see module docstring) and
+    ``out[VISC, a]`` [m/s] ~ max_b |h v_ab.r_ab / (r_ab^2 + eta^2)| for the time step
     (001_14936b82710365b2.txt Eq. 14). Particles must be sorted by cell (``start`` from
-    :func:`fluid.neighbours.sort_by_cell`); ``aux`` comes from :func:`pair_terms`.
+    :func:`fluid.neighbours.sort_by_cell`); ``S`` comes from :func:`pack`; ``lo`` has 3
+    components (x, y, z; y = 0 and ``ny = 1`` in 2-D).
+
+    The inner loop runs over slices of contiguous rows, from 0 (numba then drops the
+    negative-index wrap-around), and holds no max-reduction: the largest viscous term
+    ``max_b |mu_ab|`` of Eq. 14 is taken as the 8-norm ``(sum_b mu_ab^8)^(1/8)``, an upper
+    bound within a factor ``N_b^(1/8)`` (< 1.6 for 40 neighbours, and close to 1 when one
+    pair dominates): a slightly conservative step, for a loop that measured 2.8 times faster
+    than with ``max`` inside it.
     """
-    n = pos.shape[0]
-    dim = pos.shape[1]
-    three = dim == 3
-    zc = dim - 1
-    dys = 3 if three else 1
+    n = S.shape[1]
+    three = ny > 1
+    dys = 2 * reach + 1 if three else 1
     h = prm[P_H]
     ad = prm[P_AD]
     alpha = prm[P_ALPHA]
@@ -145,63 +177,97 @@ def interact(pos, vel, rho, mass, cs, aux, start, lo, inv_cell, nx, ny, nz, kern
     hydro = prm[P_HYDRO]
     gx = prm[P_G]
     gy = prm[P_G + 1] if three else 0.0
-    gz = prm[P_G + zc]
+    gz = prm[P_G + 2] if three else prm[P_G + 1]
     eta2 = 0.01 * h * h
+    ih = 1.0 / h
     for a in prange(n):
-        xa = pos[a, 0]
-        za = pos[a, zc]
-        ya = pos[a, 1] if three else 0.0
-        ux = vel[a, 0]
-        uz = vel[a, zc]
-        uy = vel[a, 1] if three else 0.0
-        rhoa = rho[a]
-        pa = aux[a, 0]
-        ka = aux[a, 2]
-        fa = aux[a, 3]
-        ca = cs[a]
-        cx, cy, cz = cell_coords(xa, ya, za, lo, inv_cell, three, nx, ny, nz)
+        xa = S[X, a]
+        ya = S[Y, a]
+        za = S[Z, a]
+        ux = S[VX, a]
+        uy = S[VY, a]
+        uz = S[VZ, a]
+        rhoa = S[RHO, a]
+        pa = S[PR2, a]
+        ka = S[KAP, a]
+        fa = S[ISF, a]
+        ca = S[CS, a]
+        cx = min(max(int((xa - lo[0]) * inv_cell), 0), nx - 1)
+        cy = min(max(int((ya - lo[1]) * inv_cell), 0), ny - 1)
+        cz = min(max(int((za - lo[2]) * inv_cell), 0), nz - 1)
         sd = 0.0
         sdd = 0.0
         sx = 0.0
         sy = 0.0
         sz = 0.0
         vmax = 0.0
-        for dz in range(-1, 2):
+        for dz in range(-reach, reach + 1):
             for k in range(dys):
-                dy = k - 1 if three else 0
-                j0, j1 = row_range(cx, cy, cz, dy, dz, nx, ny, nz, start)
-                for b in range(j0, j1):
-                    rx = xa - pos[b, 0]
-                    rz = za - pos[b, zc]
-                    ry = (ya - pos[b, 1]) if three else 0.0
+                dy = k - reach if three else 0
+                j0, j1 = row_range(cx, cy, cz, dy, dz, nx, ny, nz, start, reach)
+                bx = S[X, j0:j1]
+                by = S[Y, j0:j1]
+                bz = S[Z, j0:j1]
+                bvx = S[VX, j0:j1]
+                bvy = S[VY, j0:j1]
+                bvz = S[VZ, j0:j1]
+                brho = S[RHO, j0:j1]
+                bm = S[MASS, j0:j1]
+                bc = S[CS, j0:j1]
+                bp = S[PR2, j0:j1]
+                bvol = S[VOL, j0:j1]
+                bk = S[KAP, j0:j1]
+                bf = S[ISF, j0:j1]
+                for b in range(j1 - j0):
+                    rx = xa - bx[b]
+                    ry = ya - by[b]
+                    rz = za - bz[b]
                     r2 = rx * rx + ry * ry + rz * rz
-                    q = math.sqrt(r2) / h
-                    F = grad_factor(kernel, q, ad, h)
-                    fb = aux[b, 3]
+                    F = grad_factor(kernel, math.sqrt(r2) * ih, ad, h)
+                    fb = bf[b]
                     mask = max(fa, fb)  # boundary-boundary pairs do not interact
-                    vx = ux - vel[b, 0]
-                    vz = uz - vel[b, zc]
-                    vy = (uy - vel[b, 1]) if three else 0.0
-                    vr = vx * rx + vy * ry + vz * rz
-                    mb = mass[b] * mask
-                    rhob = rho[b]
+                    vr = (ux - bvx[b]) * rx + (uy - bvy[b]) * ry + (uz - bvz[b]) * rz
+                    mb = bm[b] * mask
+                    rhob = brho[b]
                     inv = 1.0 / (r2 + eta2)
                     # continuity (Eq. 7)
                     sd += mb * vr * F
                     # density diffusion, fluid-fluid pairs: psi_ab . grad W = -2 drho F r^2/(r^2+eta^2)
-                    rhoH = -0.5 * hydro * (ka + aux[b, 2]) * (gx * rx + gy * ry + gz * rz)
-                    sdd += (fa * fb * aux[b, 1]) * (rhob - rhoa - rhoH) * F * r2 * inv
+                    rhoH = -0.5 * hydro * (ka + bk[b]) * (gx * rx + gy * ry + gz * rz)
+                    sdd += (fa * fb * bvol[b]) * (rhob - rhoa - rhoH) * F * r2 * inv
                     # momentum (Eq. 6) with artificial viscosity (001 Eq. 6)
                     mu = h * min(vr, 0.0) * inv
-                    Pi = -alpha * (ca + cs[b]) * mu / (rhoa + rhob)
-                    coef = -mb * (pa + aux[b, 0] + Pi) * F
+                    Pi = -alpha * (ca + bc[b]) * mu / (rhoa + rhob)
+                    coef = -mb * (pa + bp[b] + Pi) * F
                     sx += coef * rx
                     sy += coef * ry
                     sz += coef * rz
-                    vmax = max(vmax, mask * abs(h * vr * inv))
-        drho[a] = sd - ddt * sdd
-        acc[a, 0] = sx + fa * gx
-        acc[a, zc] = sz + fa * gz
-        if three:
-            acc[a, 1] = sy + fa * gy
-        visc[a] = vmax
+                    # the largest |mu_ab| of Eq. 14, through its 8-norm (see docstring)
+                    m2 = mask * h * vr * inv
+                    m2 = m2 * m2
+                    m4 = m2 * m2
+                    vmax += m4 * m4
+        out[DRHO, a] = sd - ddt * sdd
+        out[AX, a] = sx + fa * gx
+        out[AY, a] = sy + fa * gy
+        out[AZ, a] = sz + fa * gz
+        out[VISC, a] = vmax ** 0.125
+
+
+def evaluate(pos, vel, rho, mass, kind, start, grid, kernel: int, prm, rho0: float, c0: float,
+             gamma: float, p):
+    """EOS and all pair rates of particles sorted by cell on ``grid``. Writes the pressure
+    into ``p`` [Pa]; returns ``(drho (N,), acc (N, dim), visc (N,), cs (N,))``."""
+    n, dim = pos.shape
+    S = np.empty((N_ROWS, n))
+    pack(pos, vel, rho, mass, kind, rho0, c0, gamma, p, S)
+    out = np.empty((5, n))
+    lo = np.zeros(3)
+    if dim == 3:
+        lo[:] = grid.lo
+    else:
+        lo[0], lo[2] = grid.lo
+    nx, ny, nz = grid.shape
+    interact(S, start, lo, 1.0 / grid.cell, nx, ny, nz, grid.reach, kernel, prm, out)
+    acc = np.ascontiguousarray(out[AX:AZ + 1].T if dim == 3 else out[[AX, AZ]].T)
+    return out[DRHO], acc, out[VISC], S[CS]

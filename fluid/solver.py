@@ -202,7 +202,9 @@ class Fluid:
             lo, hi = lo - grow, hi + grow
         else:
             lo, hi = np.asarray(c.domain_lo, float), np.asarray(c.domain_hi, float)
-        self._grid = Grid.covering(lo, hi, 2.0 * c.h)
+        # reach 1 (cells of the support 2h): fewer, longer contiguous rows vectorise
+        # better; reach 2 scans 30 % fewer pairs but measured 1.4 times slower
+        self._grid = Grid.covering(lo, hi, 2.0 * c.h, reach=1)
         out = ~np.all((pos >= lo) & (pos < hi), axis=1)
         if out.any():
             i = int(np.argmax(out))
@@ -347,17 +349,9 @@ class Fluid:
         c = self.config
         ps = self.ps
         n = ps.n
-        self._cs = np.empty(n)
-        eq.equation_of_state(ps.rho, c.rho0, c.speed_of_sound, c.gamma, ps.p, self._cs)
-        aux = np.empty((n, 4))
-        eq.pair_terms(ps.rho, ps.mass, ps.p, self._cs, ps.kind, aux)
-        self._drho = np.empty(n)
-        self._acc = np.empty((n, c.dim))
-        visc = np.empty(n)
-        g = self._grid
-        eq.interact(ps.pos, ps.vel, ps.rho, ps.mass, self._cs, aux, self._start, g.lo,
-                    1.0 / g.cell, g.shape[0], g.shape[1], g.shape[2], self._kernel, self._prm,
-                    self._drho, self._acc, visc)
+        self._drho, self._acc, visc, self._cs = eq.evaluate(
+            ps.pos, ps.vel, ps.rho, ps.mass, ps.kind, self._start, self._grid, self._kernel,
+            self._prm, c.rho0, c.speed_of_sound, c.gamma, ps.p)
         self._limit = stable_dt(self._acc, visc, self._cs, ps.kind, c.h, c.cfl, c.dt_max)
 
     def _group_sums(self):

@@ -26,14 +26,10 @@ def rates(pos, vel, rho, kind=None, h_coef=math.sqrt(2), dx=0.01, g=(0.0, 0.0), 
     assert out == 0
     P, V, R, K = pos[perm], vel[perm], rho[perm], kind[perm]
     m = np.full(n, RHO0 * dx**dim)
-    p, cs = np.empty(n), np.empty(n)
-    eq.equation_of_state(R, RHO0, c0, GAMMA, p, cs)
+    p = np.empty(n)
     k = kernel_id(kernel)
     prm = eq.params(h, alpha_d(k, dim, h), alpha, delta, diffusion, RHO0, c0, np.asarray(g, float))
-    drho, acc, visc = np.empty(n), np.empty((n, dim)), np.empty(n)
-    aux = np.empty((n, 4))
-    eq.pair_terms(R, m, p, cs, K, aux)
-    eq.interact(P, V, R, m, cs, aux, start, grid.lo, 1 / grid.cell, *grid.shape, k, prm, drho, acc, visc)
+    drho, acc, visc, cs = eq.evaluate(P, V, R, m, K, start, grid, k, prm, RHO0, c0, GAMMA, p)
     inv = np.empty(n, np.int64)
     inv[perm] = np.arange(n)
     return drho[inv], acc[inv], visc[inv], p[inv]
@@ -43,6 +39,10 @@ def test_tait_equation_of_state():
     rho = np.array([RHO0, 1.01 * RHO0, 0.99 * RHO0])
     p, cs = np.empty(3), np.empty(3)
     eq.equation_of_state(rho, RHO0, C0, GAMMA, p, cs)
+    S = np.empty((eq.N_ROWS, 3))
+    p2 = np.empty(3)
+    eq.pack(np.zeros((3, 2)), np.zeros((3, 2)), rho, np.ones(3), np.zeros(3, np.int8), RHO0, C0, GAMMA, p2, S)
+    assert np.array_equal(p, p2) and np.array_equal(cs, S[eq.CS])
     B = C0**2 * RHO0 / GAMMA
     np.testing.assert_allclose(p, B * ((rho / RHO0) ** 7 - 1), rtol=1e-12, atol=1e-9)
     assert p[0] == 0.0 and cs[0] == C0

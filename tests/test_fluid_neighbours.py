@@ -15,25 +15,27 @@ def brute(pos, radius):
     return pairs[np.lexsort((pairs[:, 1], pairs[:, 0]))]
 
 
+@pytest.mark.parametrize("reach", [1, 2])
 @pytest.mark.parametrize("dim", [2, 3])
-def test_random_cloud_equals_brute_force(dim):
+def test_random_cloud_equals_brute_force(dim, reach):
     rng = np.random.default_rng(dim)
     pos = rng.uniform(0, 1, (1500 if dim == 2 else 2500, dim))
     for radius in (0.03, 0.11):
-        got = neighbour_pairs(pos, radius)
+        got = neighbour_pairs(pos, radius, reach=reach)
         assert len(got) > 0
         assert np.array_equal(got, brute(pos, radius))
 
 
+@pytest.mark.parametrize("reach", [1, 2])
 @pytest.mark.parametrize("dim", [2, 3])
-def test_particles_on_cell_edges(dim):
+def test_particles_on_cell_edges(dim, reach):
     """A lattice whose spacing divides the cell side: many particles lie exactly on cell
     faces and many pairs exactly at the search radius (which are not neighbours)."""
     radius = 0.2
     ax = np.arange(0, 11) * 0.1  # 0.0 ... 1.0, every second point on a cell face
     g = np.meshgrid(*([ax] * dim), indexing="ij")
     pos = np.stack([a.ravel() for a in g], 1)
-    got = neighbour_pairs(pos, radius, lo=np.zeros(dim), hi=np.ones(dim))
+    got = neighbour_pairs(pos, radius, lo=np.zeros(dim), hi=np.ones(dim), reach=reach)
     assert np.array_equal(got, brute(pos, radius))
     # the neighbour count of an interior particle of the lattice, by hand:
     # 2-D: 8 within sqrt(2)*0.1 plus 4 at 0.2 (excluded, r == radius up to rounding)
