@@ -17,7 +17,7 @@ import numpy as np
 
 from cosim.errors import InputError, TautLineError
 from moorings.catenary import TAUT, LineSolution, solve_packed
-from moorings.line import MooringLine, named_lines
+from moorings.line import MooringLine, named_lines, per_line
 
 
 class CatenaryMooring:
@@ -98,17 +98,7 @@ class CatenaryMooring:
     def set_fairlead_motion(self, positions, velocities=None) -> None:
         """Fairlead positions [m], ``(n_lines, dim)``, world frame; velocities are
         ignored (quasi-static). Solves every line at once."""
-        want = f"shape ({self.n_lines}, {self.dim}) (one row per line, {'x, z' if self.dim == 2 else 'x, y, z'})"
-        try:
-            pos = np.asarray(positions, dtype=float)
-        except (TypeError, ValueError):
-            raise InputError(f"{self.name}: fairlead positions must be numbers of {want}") from None
-        if pos.shape != (self.n_lines, self.dim):
-            raise InputError(f"{self.name}: fairlead positions must have {want}, got shape {pos.shape}")
-        bad = ~np.all(np.isfinite(pos), axis=1)
-        if bad.any():
-            i = int(np.argmax(bad))
-            raise InputError(f"{self.name}, line '{self.lines[i].name}': fairlead position {pos[i]} is not finite")
+        pos = per_line(positions, [ln.name for ln in self.lines], self.dim, self.name, "fairlead positions")
         d = pos - self.anchors
         h = d[:, -1]
         if (h < 0).any():
@@ -145,7 +135,7 @@ class CatenaryMooring:
         sol = LineSolution(o[:, 0].copy(), o[:, 1].copy(), o[:, 2].copy(), state)
         e = np.divide(horiz, X[:, None], out=np.zeros_like(horiz), where=X[:, None] > 0)
         self._forces = np.concatenate([-sol.H[:, None] * e, -sol.V[:, None]], axis=1)
-        self._pos = pos.copy()
+        self._pos = pos
         self.solution = sol
 
     def fairlead_forces(self) -> np.ndarray:

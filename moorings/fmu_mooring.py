@@ -33,7 +33,7 @@ from pathlib import Path
 import numpy as np
 
 from cosim.errors import InputError, SolverError, TautLineError
-from moorings.line import MooringLine, named_lines
+from moorings.line import MooringLine, named_lines, per_line
 
 log = logging.getLogger(__name__)
 
@@ -248,18 +248,7 @@ class FMUMooring:
         return vrs
 
     def _check_array(self, values, what):
-        want = f"shape ({self.n_lines}, {self.dim})"
-        try:
-            a = np.asarray(values, dtype=float)
-        except (TypeError, ValueError):
-            raise InputError(f"{self.name}: {what} must be numbers of {want}") from None
-        if a.shape != (self.n_lines, self.dim):
-            raise InputError(f"{self.name}: {what} must have {want}, got shape {a.shape}")
-        bad = ~np.all(np.isfinite(a), axis=1)
-        if bad.any():
-            i = int(np.argmax(bad))
-            raise InputError(f"{self.name}, line '{self.line_names[i]}': {what[:-1]} {a[i]} is not finite")
-        return a.copy()
+        return per_line(values, self.line_names, self.dim, self.name, what)
 
     def _log_tail(self) -> str:
         bad = [t for s, t in self.messages if s not in ("OK",)]

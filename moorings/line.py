@@ -108,4 +108,22 @@ def named_lines(lines) -> list[MooringLine]:
     return out
 
 
-__all__ = ["MooringLine", "named_lines"]
+def per_line(values, line_names, dim: int, owner: str, what: str) -> np.ndarray:
+    """``values`` as a new finite float array of shape ``(n_lines, dim)``, one row
+    per line (fairlead positions, velocities); otherwise an :class:`InputError`
+    naming the owner, the quantity and the first bad line."""
+    want = f"shape ({len(line_names)}, {dim}) (one row per line, {'x, z' if dim == 2 else 'x, y, z'})"
+    try:
+        a = np.array(values, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(f"{owner}: {what} must be numbers of {want}") from None
+    if a.shape != (len(line_names), dim):
+        raise InputError(f"{owner}: {what} must have {want}, got shape {a.shape}")
+    bad = ~np.all(np.isfinite(a), axis=1)
+    if bad.any():
+        i = int(np.argmax(bad))
+        raise InputError(f"{owner}, line '{line_names[i]}': {what} {a[i]} is not finite")
+    return a
+
+
+__all__ = ["MooringLine", "named_lines", "per_line"]

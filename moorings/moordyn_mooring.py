@@ -38,7 +38,7 @@ from pathlib import Path
 import numpy as np
 
 from cosim.errors import InputError, SolverError
-from moorings.line import named_lines
+from moorings.line import named_lines, per_line
 
 log = logging.getLogger(__name__)
 
@@ -404,18 +404,7 @@ class MoorDynMooring:
         return f3[:, [0, 2]].copy() if self.dim == 2 else f3
 
     def _check(self, values, what):
-        want = f"shape ({self.n_lines}, {self.dim})"
-        try:
-            a = np.asarray(values, dtype=float)
-        except (TypeError, ValueError):
-            raise InputError(f"{self.name}: {what} must be numbers of {want}") from None
-        if a.shape != (self.n_lines, self.dim):
-            raise InputError(f"{self.name}: {what} must have {want}, got shape {a.shape}")
-        bad = ~np.all(np.isfinite(a), axis=1)
-        if bad.any():
-            i = int(np.argmax(bad))
-            raise InputError(f"{self.name}, line '{self.lines[i].name}': {what[:-1]} {a[i]} is not finite")
-        return a.copy()
+        return per_line(values, [ln.name for ln in self.lines], self.dim, self.name, what)
 
 
 __all__ = ["MoorDynMooring", "moordyn_available"]

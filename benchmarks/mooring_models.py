@@ -10,7 +10,7 @@ that surges slowly; one coupling step is ``set_fairlead_motion`` +
 - moordyn: :class:`MoorDynMooring` (lumped mass, 20 segments per line, its internal
   step sub-cycling each coupling step), when the ``moordyn`` package is installed
 
-    python benchmarks/moorings.py [--steps 2000] [--dt 0.01] [--png tensions.png]
+    python benchmarks/mooring_models.py [--steps 2000] [--dt 0.01] [--png tensions.png]
 
 ``--png`` also plots the fairlead tension of each line against time for every
 model on one figure (the body surges 4 m over 20 s from rest).
