@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import math
+import os
+from pathlib import Path
 
 import numpy as np
 
@@ -92,3 +94,75 @@ def hydrostatic_3d(quick: bool) -> dict:
     if quick:  # 5 particle layers over the depth: the coarsest sensible 3-D tank
         return run_hydrostatic(3, dx=0.02, t_end=1.5, depth=0.1, length=0.2, width=0.1)
     return run_hydrostatic(3, dx=0.01, t_end=2.5)
+
+
+REFDATA = Path(os.environ.get("COSIM_REFDATA", Path(__file__).resolve().parents[3] / "shared" / "refdata"))
+
+
+def _read_front(name: str) -> np.ndarray:
+    """(T, Z) rows of a surge-front table in refdata/dambreak_martin_moyce_koshizuka."""
+    path = REFDATA / "dambreak_martin_moyce_koshizuka" / name
+    return np.loadtxt(path, delimiter=",", comments="#", skiprows=3)
+
+
+def run_dambreak(n_a: int, T_end: float = 3.0, a: float = 0.146, **overrides) -> dict:
+    """Collapse of a water column ``a`` wide and ``2a`` high [m] (n^2 = 2) on a dry bed in a
+    tank ``4a`` long (Koshizuka & Oka 1996: a = L = 0.146 m), ``n_a`` particles across the
+    column. Surge front Z = x_front / a against T = t sqrt(2 g / a) (SOURCE.txt): the
+    front is the largest x of the fluid particles. c0 = 10 sqrt(2 g 2a) (the defaults
+    otherwise: Wendland h = sqrt(2) dx, alpha = 0.01, Fourtakas delta = 0.1, CFL 0.2).
+    Compared with Koshizuka & Oka (1996) and Martin & Moyce (1952, a = 2.25 in) as
+    digitised in refdata, over the published points with T <= T_end and Z < 3.9 (before
+    the front meets the far wall at Z = 4).
+
+    Status: the target (5 %) is not met. The computed front runs ahead of both experiments
+    (RMS 10 % at 20 particles across the column, 12-14 % at 40), and further ahead as dx
+    shrinks, while staying well below Ritter's inviscid bound dZ/dT = 2. Numerical fronts
+    are commonly reported ahead of these experiments (gate removal and bed friction slow
+    the measured front; neither is modelled: dynamic boundaries are nearly free-slip here).
+    Open: compare with a numerical reference of the same (inviscid) problem and study the
+    time origin, before any change of the target."""
+    from fluid.geometry import assemble, block, tank_walls
+
+    g = 9.81
+    dx = a / n_a
+    walls = tank_walls([0.0, 0.0], [4 * a, 3 * a], dx, 3)
+    b = assemble(2, dx, 1000.0, block([0.0, 0.0], [a, 2 * a], dx), [(walls, Kind.FIXED_WALL, 0)])
+    cfg = FluidConfig(dim=2, dx=dx, u_max=math.sqrt(2 * g * 2 * a),
+                      domain_lo=(-0.5 * a, -0.5 * a), domain_hi=(4.5 * a, 6 * a), **overrides)
+    set_hydrostatic(b.particles, 2 * a, 1000.0, cfg.speed_of_sound, cfg.gamma, g)
+    f = Fluid(cfg, b.particles)
+    f.initialize(0.0)
+    tscale = math.sqrt(2 * g / a)
+    dT = 0.05
+    Ts, Zs = [0.0], [a / a]
+    t = 0.0
+    while Ts[-1] < T_end - 1e-9:
+        f.advance(t, dT / tscale)
+        t += dT / tscale
+        fl = f.ps.kind == Kind.FLUID
+        Ts.append(Ts[-1] + dT)
+        Zs.append(float(f.ps.pos[fl, 0].max()) / a)
+    Ts, Zs = np.array(Ts), np.array(Zs)
+    metrics = {"dx_m": dx, "n_a": n_a, "c0_m_s": cfg.speed_of_sound}
+    for key, name in (("ko1996", "koshizuka_oka1996_front_pysph.csv"),
+                      ("mm1952", "mm1952_fig3_n2sq2_a2.25in_pysph.csv")):
+        ref = _read_front(name)
+        use = (ref[:, 0] <= T_end) & (ref[:, 1] < 3.9) & (ref[:, 0] > 0)
+        Zsim = np.interp(ref[use, 0], Ts, Zs)
+        rel = (Zsim - ref[use, 1]) / ref[use, 1]
+        metrics[f"front_max_rel_err_{key}"] = float(np.abs(rel).max())
+        metrics[f"front_rms_rel_err_{key}"] = float(np.sqrt(np.mean(rel**2)))
+        metrics[f"front_rel_err_{key}"] = [round(float(v), 4) for v in rel]
+        metrics[f"T_{key}"] = ref[use, 0].tolist()
+    metrics["front_T_Z"] = [[round(float(x), 3), round(float(z), 4)] for x, z in zip(Ts[::4], Zs[::4])]
+    tolerances = {"front_rms_rel_err_ko1996": 0.05, "front_rms_rel_err_mm1952": 0.05}
+    passed = all(metrics[k] < v for k, v in tolerances.items())
+    return {"passed": passed, "metrics": metrics, "tolerances": tolerances,
+            "particles": int(f.ps.n), "steps": int(f.counters.steps)}
+
+
+@case("dambreak-2d", "2-D water column a x 2a collapsing on a dry bed: surge front against "
+      "Koshizuka & Oka (1996) and Martin & Moyce (1952) within 5 % (RMS over the published points)")
+def dambreak_2d(quick: bool) -> dict:
+    return run_dambreak(20 if quick else 40)
