@@ -169,6 +169,16 @@ def test_group_forces_are_the_exact_reaction_of_the_fluid(dim):
     assert np.abs(F).max() > 1e-3  # a real load, not a trivial zero
     scale = np.abs(F).max()
     np.testing.assert_allclose(F.sum(axis=0), -on_fluid, rtol=0, atol=1e-11 * scale)
+    # pair forces are central, so the moments cancel too, about any point
+    c = np.array([0.3, -0.2, 0.1][:dim])
+    f.moment_points[:] = c
+    F, M = f.group_forces_now()
+    fl = f.ps.kind == Kind.FLUID
+    fa = f.ps.mass[fl, None] * (f._acc[fl] - f.config.gravity)
+    r = f.ps.pos[fl] - c
+    m_fluid = (r[:, 1] * fa[:, 0] - r[:, 0] * fa[:, 1]).sum() if dim == 2 else np.cross(r, fa).sum(axis=0)
+    assert np.abs(M).max() > 1e-4
+    np.testing.assert_allclose(M.sum(axis=0), -np.atleast_1d(m_fluid), rtol=0, atol=1e-11 * np.abs(M).max())
 
 
 def test_fluid_momentum_is_conserved_without_walls():

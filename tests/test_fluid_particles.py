@@ -41,3 +41,14 @@ def test_concatenate_renumbers():
     c = ParticleSet.concatenate([a, b])
     assert c.n == 5 and c.ids.tolist() == [0, 1, 2, 3, 4]
     assert c.kind.tolist() == [0, 0, 1, 1, 1]
+
+
+def test_fluid_imports_neither_mujoco_nor_the_coupler():
+    import subprocess
+    import sys
+
+    code = ("import sys, fluid.solver, fluid.geometry, fluid.integrator; "
+            "bad = [m for m in sys.modules if m.startswith('mujoco') or "
+            "(m.startswith('cosim') and m not in ('cosim', 'cosim.errors'))]; print(bad)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "[]"
