@@ -271,3 +271,59 @@ def evaluate(pos, vel, rho, mass, kind, start, grid, kernel: int, prm, rho0: flo
     interact(S, start, lo, 1.0 / grid.cell, nx, ny, nz, grid.reach, kernel, prm, out)
     acc = np.ascontiguousarray(out[AX:AZ + 1].T if dim == 3 else out[[AX, AZ]].T)
     return out[DRHO], acc, out[VISC], S[CS]
+
+
+@njit(parallel=True, **_OPTS)
+def _boundary_pressure(S, p, start, lo, inv_cell, nx, ny, nz, h, out):
+    n = S.shape[1]
+    three = ny > 1
+    dys = 3 if three else 1
+    R2 = 4.0 * h * h
+    for a in prange(n):
+        if S[ISF, a] > 0.5:
+            out[a] = p[a]
+            continue
+        xa = S[X, a]
+        ya = S[Y, a]
+        za = S[Z, a]
+        cx = min(max(int((xa - lo[0]) * inv_cell), 0), nx - 1)
+        cy = min(max(int((ya - lo[1]) * inv_cell), 0), ny - 1)
+        cz = min(max(int((za - lo[2]) * inv_cell), 0), nz - 1)
+        num = 0.0
+        den = 0.0
+        for dz in range(-1, 2):
+            for k in range(dys):
+                dy = k - 1 if three else 0
+                j0, j1 = row_range(cx, cy, cz, dy, dz, nx, ny, nz, start, 1)
+                for b in range(j0, j1):
+                    rx = xa - S[X, b]
+                    ry = ya - S[Y, b]
+                    rz = za - S[Z, b]
+                    r2 = rx * rx + ry * ry + rz * rz
+                    if S[ISF, b] > 0.5 and r2 < R2:
+                        w = 1.0 / math.sqrt(r2)
+                        num += w * p[b]
+                        den += w
+        out[a] = num / den if den > 0.0 else 0.0
+
+
+def boundary_pressure(pos, vel, rho, mass, kind, start, grid, rho0: float, c0: float,
+                      gamma: float) -> np.ndarray:
+    """Pressure [Pa] for reporting at every particle: fluid particles their own; boundary
+    particles the inverse-distance average of the fluid pressures within the support 2h,
+    ``P_a = sum_b (P_b / |r_b - r_a|) / sum_b (1 / |r_b - r_a|)``
+    (001_14936b82710365b2.txt Eq. 15); 0 for a boundary particle with no fluid near it.
+    Particles sorted by cell on ``grid`` (reach 1, cell 2h)."""
+    n, dim = pos.shape
+    S = np.empty((N_ROWS, n))
+    p = np.empty(n)
+    pack(pos, vel, rho, mass, kind, rho0, c0, gamma, p, S)
+    lo = np.zeros(3)
+    if dim == 3:
+        lo[:] = grid.lo
+    else:
+        lo[0], lo[2] = grid.lo
+    out = np.empty(n)
+    nx, ny, nz = grid.shape
+    _boundary_pressure(S, p, start, lo, 1.0 / grid.cell, nx, ny, nz, 0.5 * grid.cell * grid.reach, out)
+    return out

@@ -296,6 +296,15 @@ class Fluid:
         fl = ps.kind == Kind.FLUID
         return (ps.mass[fl, None] * (self._acc[fl] - self.config.gravity)).sum(axis=0)
 
+    def wall_pressure(self) -> np.ndarray:
+        """Pressure [Pa] per particle (current order of ``self.ps``): the fluid's own, and on
+        boundary particles the average of the fluid next to them (001 Eq. 15), which is the
+        wall pressure to report (a dynamic boundary particle's own pressure is not)."""
+        c = self.config
+        ps = self.ps
+        return eq.boundary_pressure(ps.pos, ps.vel, ps.rho, ps.mass, ps.kind, self._start,
+                                    self._grid, c.rho0, c.speed_of_sound, c.gamma)
+
     @property
     def limit(self) -> StepLimit:
         return self._limit

@@ -160,3 +160,25 @@ def test_wall_load_of_fluid_at_rest_is_its_weight():
     weight = f.ps.mass[f.ps.kind == Kind.FLUID].sum() * cfg.g
     assert abs(F[0]) < 1e-9 * weight
     np.testing.assert_allclose(F[1], -weight, rtol=0.02)
+
+
+def test_wall_pressure_is_the_inverse_distance_average_of_the_fluid():
+    """001 Eq. 15 on a hand-made set: one wall particle, two fluid particles at distances
+    d1, d2 with pressures p1, p2 -> (p1/d1 + p2/d2) / (1/d1 + 1/d2); fluid keep their own."""
+    from fluid import equations as eq
+
+    dx = 0.01
+    pos = np.array([[0.0, 0.0], [0.01, 0.0], [0.0, 0.02], [0.5, 0.5]])
+    kind = np.array([Kind.FIXED_WALL, Kind.FLUID, Kind.FLUID, Kind.FIXED_WALL])
+    rho = np.array([1000.0, 1001.0, 1003.0, 1000.0])
+    ps = ParticleSet.create(pos, rho, 0.1, kind=kind, group=[0, -1, -1, 0])
+    f = Fluid(FluidConfig(dx=dx, c0=30.0, domain_lo=(-0.1, -0.1), domain_hi=(1.0, 1.0)), ps)
+    f.initialize(0.0)
+    pw = f.wall_pressure()
+    p = f.ps.p
+    o = np.argsort(f.ps.ids)
+    p, pw = p[o], pw[o]
+    assert pw[1] == p[1] and pw[2] == p[2]
+    np.testing.assert_allclose(pw[0], (p[1] / 0.01 + p[2] / 0.02) / (1 / 0.01 + 1 / 0.02), rtol=1e-12)
+    assert pw[3] == 0.0  # no fluid near it
+    assert eq.DIFFUSION[0] == "fourtakas"  # the documented default

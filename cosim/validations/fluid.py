@@ -24,6 +24,14 @@ def run_hydrostatic(dim: int, dx: float, t_end: float, depth: float = 0.2, lengt
     Tait density; c0 = 20 sqrt(g H) (DualSPHysics' usual coefsound); Wendland, h = sqrt(2) dx,
     alpha = 0.01, Fourtakas diffusion delta = 0.1, CFL 0.2 (the defaults).
 
+    Wall pressure: on the first layer of the side walls, beside the water, the average of
+    the fluid pressures near each wall particle (001_14936b82710365b2.txt Eq. 15), against
+    the same reference at the wall particle's height. Reported, not yet part of the pass
+    criterion: it is 1.3 % RMS at dx = 0.01 m and 3.6 % at 0.02 m (first order in dx),
+    because near the free surface and the bottom corner the fluid neighbours lie on one
+    side of the wall particle, so their average is biased by ~ rho g h. A linearly
+    corrected (MLS) interpolation at the wall face is the remedy (open).
+
     "After settling": the residual motion is dominated by the first sloshing mode (period
     T1 from linear theory, weakly damped by alpha = 0.01). The pressure error is therefore
     measured on the pressure averaged over the last T1 of the run (sampled 40 times), and
@@ -44,6 +52,12 @@ def run_hydrostatic(dim: int, dx: float, t_end: float, depth: float = 0.2, lengt
         raise ValueError(f"t_end={t_end} s is shorter than the sloshing period {T1:.3f} s")
     n_fl = int((ps.kind == Kind.FLUID).sum())
     acc = np.zeros(n_fl)
+    # first layer of the side walls, beside the water: the wall pressure of 001 Eq. 15
+    x = ps.pos[:, 0]
+    side = (ps.kind != Kind.FLUID) & (np.isclose(x, -0.5 * dx) | np.isclose(x, length + 0.5 * dx)) \
+        & (ps.pos[:, -1] > 0) & (ps.pos[:, -1] < H)
+    side_ids = np.sort(ps.ids[side])
+    acc_w = np.zeros(side_ids.size)
     samples, vmax = 0, 0.0
     rgh = rho0 * g * H
     t = 0.0
@@ -60,6 +74,11 @@ def run_hydrostatic(dim: int, dx: float, t_end: float, depth: float = 0.2, lengt
         if err.size != n_fl:
             raise RuntimeError("fluid particles were lost in a hydrostatic tank")
         acc += err
+        sel = np.isin(f.ps.ids, side_ids)
+        ow = np.argsort(f.ps.ids[sel])
+        pw = f.wall_pressure()[sel][ow]
+        err_w = (pw - rho0 * g * (H - f.ps.pos[sel, -1][ow])) / rgh
+        acc_w += err_w
         samples += 1
         vmax = max(vmax, f.max_speed())
     mean_err = acc / samples
@@ -68,6 +87,8 @@ def run_hydrostatic(dim: int, dx: float, t_end: float, depth: float = 0.2, lengt
         "p_rms_err_final": float(np.sqrt(np.mean(err**2))),
         "p_mean_err_time_avg": float(np.mean(mean_err)),
         "p_max_abs_err_time_avg": float(np.abs(mean_err).max()),
+        "wall_p_rms_err_time_avg": float(np.sqrt(np.mean((acc_w / samples) ** 2))),
+        "wall_p_mean_err_time_avg": float(np.mean(acc_w / samples)),
         "max_speed_over_sqrt_gH": vmax / math.sqrt(g * H),
         "t_end_s": t_end,
         "averaging_window_s": T1,
