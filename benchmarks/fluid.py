@@ -3,9 +3,9 @@
 
 Reference case of issue 3 (2-D): water column 1 m wide, 2 m high in a tank 4 m x 3 m,
 Wendland h = sqrt(2) dp, alpha = 0.02, Fourtakas delta = 0.1, c0 = 20 sqrt(2 g) m/s, CFL 0.2.
-This solver steps with the symplectic predictor-corrector (two pair loops per step), where
-the DualSPHysics figure quoted in the issue uses Verlet (one pair loop per step): compare
-``pair_loops_per_s`` too.
+Verlet time stepping as in the reference case (one pair loop per step); ``--integrator
+symplectic`` for the predictor-corrector (two pair loops per step): compare
+``pair_loops_per_s`` across the two.
 
     .venv/bin/python benchmarks/fluid.py                 # default sizes, warm numba cache
     .venv/bin/python benchmarks/fluid.py --cold          # compile from scratch (empty cache)
@@ -27,7 +27,7 @@ _here = os.path.dirname(os.path.abspath(__file__))
 sys.path[:] = [p for p in sys.path if os.path.abspath(p or os.curdir) != _here]
 
 
-def build(case: str, dp: float):
+def build(case: str, dp: float, integrator: str = "verlet"):
     import numpy as np
 
     from fluid.geometry import assemble, block, set_hydrostatic, tank_walls
@@ -46,19 +46,19 @@ def build(case: str, dp: float):
     walls = tank_walls(inner_lo, inner_hi, dp, layers=2)
     b = assemble(len(inner_lo), dp, 1000.0, col, [(walls, Kind.FIXED_WALL, 0)])
     cfg = FluidConfig(dim=len(inner_lo), dx=dp, c0=20 * math.sqrt(g * H), alpha=0.02, delta=0.1,
-                      diffusion="fourtakas", cfl=0.2,
+                      diffusion="fourtakas", cfl=0.2, integrator=integrator,
                       domain_lo=tuple(inner_lo - 0.1), domain_hi=tuple(inner_hi + 0.5))
     set_hydrostatic(b.particles, H, 1000.0, cfg.speed_of_sound, cfg.gamma, g)
     return cfg, b.particles
 
 
-def run(case: str, dp: float, steps: int) -> dict:
+def run(case: str, dp: float, steps: int, integrator: str = "verlet") -> dict:
     import numpy as np
 
     from fluid.particles import Kind
     from fluid.solver import Fluid
 
-    cfg, ps = build(case, dp)
+    cfg, ps = build(case, dp, integrator)
     t0 = time.perf_counter()
     f = Fluid(cfg, ps)
     f.initialize(0.0)
@@ -81,7 +81,8 @@ def run(case: str, dp: float, steps: int) -> dict:
         "first_step_s": round(t_first - per_step, 3),
         "ms_per_step": round(per_step * 1e3, 3),
         "particle_steps_per_s": round(n * steps / wall),
-        "pair_loops_per_s": round(2 * n * steps / wall),
+        "pair_loops_per_s": round((2 if integrator == "symplectic" else 1) * n * steps / wall),
+        "integrator": integrator,
         "cpu_s_per_wall_s": round(cpu / wall, 2),  # < threads: the machine is shared
         "bytes_per_particle": round(mem / n),
         "threads": __import__("numba").get_num_threads(),
@@ -95,6 +96,7 @@ def main(argv=None):
     ap.add_argument("--steps", type=int, default=50, help="timed steps per size")
     ap.add_argument("--threads", type=int, default=None, help="numba threads (default: all)")
     ap.add_argument("--cold", action="store_true", help="compile from scratch in an empty numba cache")
+    ap.add_argument("--integrator", choices=["verlet", "symplectic"], default="verlet")
     a = ap.parse_args(argv)
     if a.cold:
         os.environ["NUMBA_CACHE_DIR"] = tempfile.mkdtemp(prefix="numba_cold_")
@@ -109,7 +111,7 @@ def main(argv=None):
     cases = ["2d", "3d"] if a.case == "all" else [a.case]
     for c in cases:
         for dp in sizes[c]:
-            r = run(c, dp, a.steps)
+            r = run(c, dp, a.steps, a.integrator)
             print(" ".join(f"{k}={v}" for k, v in r.items()))
             sys.stdout.flush()
 

@@ -15,6 +15,12 @@ Corrector (rates at n+1/2):          eps = -(drho^{n+1/2} / rho^{n+1/2}) dt,
     r^{n+1} = r^n + dt (v^n + v^{n+1}) / 2.
 Boundary particles take the same density update (clamped below at rho0, as DualSPHysics
 does, so that a wall never pulls fluid in) and move with their prescribed velocity.
+
+Option ``"verlet"`` (Monaghan 1989, as in DualSPHysics; one pair loop per step instead of
+two): ``v^{n+1} = v^{n-1} + 2 dt a^n``, ``rho^{n+1} = rho^{n-1} + 2 dt drho^n``,
+``r^{n+1} = r^n + dt v^n + dt^2/2 a^n``; every ``verlet_reset`` steps (and on the first) the
+forward-Euler form ``v^{n+1} = v^n + dt a^n``, ``rho^{n+1} = rho^n + dt drho^n`` decouples the
+odd and even steps.
 """
 
 from __future__ import annotations
@@ -102,3 +108,27 @@ def first_non_finite(pos, vel, rho):
         if not np.isfinite(s):
             return i
     return -1
+
+
+@njit(parallel=True, **_OPTS)
+def verlet(pos, vel, rho, drho, acc, kind, rho0, dt, vel_m1, rho_m1, euler):
+    """One Verlet step in place with the rates at n; ``vel_m1, rho_m1`` hold the n-1 state
+    on entry and the n state on exit. ``euler``: take the forward-Euler form."""
+    dim = pos.shape[1]
+    w = dt if euler else 2.0 * dt
+    for i in prange(pos.shape[0]):
+        f = kind[i] == 0
+        r = rho[i]
+        base = r if euler else rho_m1[i]
+        rn = base + w * drho[i]
+        rho_m1[i] = r
+        rho[i] = rn if f else max(rn, rho0)
+        for k in range(dim):
+            v = vel[i, k]
+            if f:
+                vb = v if euler else vel_m1[i, k]
+                pos[i, k] += dt * v + 0.5 * dt * dt * acc[i, k]
+                vel[i, k] = vb + w * acc[i, k]
+            else:
+                pos[i, k] += dt * v
+            vel_m1[i, k] = v

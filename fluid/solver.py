@@ -18,7 +18,7 @@ import numpy as np
 
 from cosim.errors import InputError, InstabilityError
 from fluid import equations as eq
-from fluid.integrator import StepLimit, corrector, first_non_finite, predictor, stable_dt
+from fluid.integrator import StepLimit, corrector, first_non_finite, predictor, stable_dt, verlet
 from fluid.kernels import alpha_d, kernel_id
 from fluid.neighbours import Grid, sort_by_cell
 from fluid.particles import Kind, ParticleSet
@@ -62,6 +62,11 @@ class FluidConfig:
     g: float = 9.81
     #: CFL factor of the variable time step [-] (001_14936b82710365b2.txt Eq. 14)
     cfl: float = 0.2
+    #: time integration: "symplectic" (predictor-corrector, 2 pair loops per step) or
+    #: "verlet" (1 pair loop per step; see fluid.integrator)
+    integrator: str = "symplectic"
+    #: Verlet: steps between forward-Euler steps [-] (DualSPHysics uses 40)
+    verlet_reset: int = 40
     #: upper bound of the fluid step [s]
     dt_max: float = math.inf
     #: domain box [m]; particles leaving it are removed and counted. None: the box of the
@@ -110,6 +115,10 @@ class FluidConfig:
             raise _bad(f"g={self.g!r} m/s^2", "give the magnitude of gravity (>= 0), it acts along -z")
         if not num(self.cfl) or not 0 < self.cfl <= 0.4:
             raise _bad(f"cfl={self.cfl!r}", "the stable range of this scheme is 0 < cfl <= 0.4 (0.2 default)")
+        if self.integrator not in ("symplectic", "verlet"):
+            raise _bad(f"integrator={self.integrator!r}", "choose 'symplectic' or 'verlet'")
+        if not isinstance(self.verlet_reset, int) or self.verlet_reset < 1:
+            raise _bad(f"verlet_reset={self.verlet_reset!r}", "give a positive number of steps (40 usual)")
         if not (isinstance(self.dt_max, (int, float)) and self.dt_max > 0):
             raise _bad(f"dt_max={self.dt_max!r} s", "give a positive upper bound or math.inf")
         if self.threads is not None and (not isinstance(self.threads, int) or self.threads < 1):
@@ -211,7 +220,7 @@ class Fluid:
             raise InputError(f"particle {self.ps.ids[i]} at {pos[i]} lies outside the domain {lo} .. {hi} m; "
                              "enlarge domain_lo/domain_hi")
         self.t = float(t0)
-        self._aux = {k: np.empty_like(getattr(self.ps, k)) for k in ("pos", "vel", "rho")}
+        self._aux = {k: getattr(self.ps, k).copy() for k in ("pos", "vel", "rho")}
         self._sort()
         self._rates()
         self._check_finite()
@@ -265,14 +274,15 @@ class Fluid:
 
     def save_state(self):
         return {"ps": self.ps.copy(), "t": self.t, "steps": self.counters.steps,
-                "removed": dict(self.counters.removed)}
+                "removed": dict(self.counters.removed),
+                "aux": {k: v.copy() for k, v in self._aux.items()}}  # Verlet's n-1 state
 
     def load_state(self, state) -> None:
         self.ps = state["ps"].copy()
         self.t = state["t"]
         self.counters.steps = state["steps"]
         self.counters.removed = dict(state["removed"])
-        self._aux = {k: np.empty_like(getattr(self.ps, k)) for k in ("pos", "vel", "rho")}
+        self._aux = {k: v.copy() for k, v in state["aux"].items()}
         self._sort()
         self._rates()
 
@@ -311,10 +321,22 @@ class Fluid:
 
     # ------------------------------------------------------------------ internals
     def step(self, dt: float):
-        """One symplectic step of ``dt`` [s] from the current state (rates already known).
-        Returns the group forces and moments at the half step."""
+        """One step of ``dt`` [s] from the current state (rates already known). Returns the
+        group forces and moments that moved the fluid over the step (symplectic: at the half
+        step; Verlet: at the start)."""
         c = self.config
         ps, aux = self.ps, self._aux
+        if c.integrator == "verlet":
+            loads = self._group_sums()
+            euler = self.counters.steps % c.verlet_reset == 0
+            verlet(ps.pos, ps.vel, ps.rho, self._drho, self._acc, ps.kind, c.rho0, dt,
+                   aux["vel"], aux["rho"], euler)
+            self.counters.steps += 1
+            self.t += dt
+            self._check_finite()
+            self._sort()
+            self._rates()
+            return loads
         predictor(ps.pos, ps.vel, ps.rho, self._drho, self._acc, ps.kind, c.rho0, dt,
                   aux["pos"], aux["vel"], aux["rho"])
         self._sort()
