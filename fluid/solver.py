@@ -306,6 +306,23 @@ class Fluid:
         fl = ps.kind == Kind.FLUID
         return (ps.mass[fl, None] * (self._acc[fl] - self.config.gravity)).sum(axis=0)
 
+    def set_group_velocity(self, group: int, velocity) -> None:
+        """Prescribe the velocity [m/s] (dim,) of every particle of boundary ``group`` (a
+        MOVING_WALL or BODY group), from now on; the particles move with it (dynamic
+        boundaries, 004_1657bd4a51d29840.txt §2.6)."""
+        ps = self.ps
+        sel = ps.group == group
+        if not sel.any():
+            raise InputError(f"fluid: no boundary group {group}; groups are 0..{self.n_groups - 1}")
+        if (ps.kind[sel] == Kind.FIXED_WALL).any():
+            raise InputError(f"fluid: group {group} is a FIXED_WALL; give it kind MOVING_WALL to move it")
+        v = np.asarray(velocity, np.float64)
+        if v.shape != (self.config.dim,) or not np.isfinite(v).all():
+            raise InputError(f"fluid: a group velocity has {self.config.dim} finite components, got {velocity!r}")
+        ps.vel[sel] = v
+        if self._limit is not None:  # the rates depend on the boundary velocity
+            self._rates()
+
     def wall_pressure(self) -> np.ndarray:
         """Pressure [Pa] per particle (current order of ``self.ps``): the fluid's own, and on
         boundary particles the average of the fluid next to them (001 Eq. 15), which is the

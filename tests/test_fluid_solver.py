@@ -189,3 +189,34 @@ def test_wall_pressure_is_the_inverse_distance_average_of_the_fluid():
     np.testing.assert_allclose(pw[0], (p[1] / 0.01 + p[2] / 0.02) / (1 / 0.01 + 1 / 0.02), rtol=1e-12)
     assert pw[3] == 0.0  # no fluid near it
     assert eq.DIFFUSION[0] == "fourtakas"  # the documented default
+
+
+def test_moving_wall_follows_its_prescribed_velocity_and_pushes_the_fluid():
+    dx = 0.02
+    b = tank_with_water(2, dx, 0.4, 0.1, 0.14)
+    ps = b.particles
+    # a piston: two columns of particles inside the tank at x = 0.1 ... 0.12, no fluid there
+    from fluid.geometry import block
+
+    piston = block([0.06, 0.0], [0.1, 0.14], dx)
+    fl = ps.kind == Kind.FLUID
+    keep = ~(fl & (ps.pos[:, 0] < 0.12))
+    ps = ps.select(keep)
+    pis = ParticleSet.create(piston, 1000.0, ps.mass[0], kind=Kind.MOVING_WALL, group=1)
+    ps = ParticleSet.concatenate([ps, pis])
+    f = Fluid(FluidConfig(dx=dx, u_max=1.0, c0_factor=20), ps)
+    f.initialize(0.0)
+    with pytest.raises(InputError, match="FIXED_WALL"):
+        f.set_group_velocity(0, (0.1, 0.0))
+    f.set_group_velocity(1, (0.2, 0.0))
+    x0 = {int(i): p.copy() for i, p in zip(f.ps.ids, f.ps.pos)}
+    f.advance(0.0, 0.05)
+    moved = np.array([f.ps.pos[k] - x0[int(i)] for k, i in enumerate(f.ps.ids)])
+    g1 = f.ps.group == 1
+    np.testing.assert_allclose(moved[g1], np.tile([0.01, 0.0], (g1.sum(), 1)), atol=1e-14)
+    assert np.abs(moved[f.ps.group == 0]).max() == 0.0
+    # the fluid in front of the piston is pushed along +x, and pushes back on it
+    F, _ = f.group_loads()
+    assert F[1, 0] < 0
+    front = (f.ps.kind == Kind.FLUID) & (f.ps.pos[:, 0] < 0.16)
+    assert f.ps.vel[front, 0].mean() > 0.05
