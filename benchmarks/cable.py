@@ -9,7 +9,10 @@ Prints
    catenary evaluation (moorings.catenary.solve) for the same line;
 3. the speed/accuracy trade (error and wall time at several particle counts) of seed 000
    Case 1 (displacement of L against the exact elastic catenary), Experiment 2 at rest
-   (shape and reactions) and the mooring line against the quasi-static catenary.
+   (shape and reactions), the mooring line against the quasi-static catenary,
+   Experiment 2 shaken (free period against the measured 0.42 s and against the finest
+   run) and Experiment 1 released at one end (free-end position and dissipated energy
+   against the finest run: no measured trajectory exists).
 
 Run: ``.venv/bin/python benchmarks/cable.py`` (``--quick`` for fewer sizes).
 """
@@ -22,13 +25,10 @@ import sys
 import tempfile
 import time
 
+import numpy as np
 
-# a script's folder comes first on sys.path; benchmarks/moorings.py would shadow the package
-_HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path[:] = [p for p in sys.path if os.path.abspath(p or os.curdir) != _HERE]
-
-from moorings.line import MooringLine  # noqa: E402
-from moorings.sph_cable import SPHCable, SPHCableMooring  # noqa: E402
+from moorings.line import MooringLine
+from moorings.sph_cable import SPHCable, SPHCableMooring
 
 _FIRST_CALL = """
 import time
@@ -113,6 +113,55 @@ def main(quick: bool = False) -> None:
         w0 = time.perf_counter()
         mm, _ = run_vs_catenary(n, 0.05)
         print(f"{n:>10} {mm['max_abs_err_tension']:>12.2e} {time.perf_counter() - w0:>9.2f}")
+
+    shake_convergence([16, 31, 61] if quick else [16, 31, 61, 121])
+    free_fall_convergence([24, 48, 95] if quick else [24, 48, 95, 190, 380])
+
+
+def shake_convergence(sizes: list[int]) -> None:
+    """cable-exp2-shake (the case's geometry: the length fitted to the measured shape)."""
+    from cosim.validations.cable import (EXP2_PERIOD, SHAKE_DT_OUT, SHAKE_NFFT, fit_length_to_measured_shape,
+                                         run_exp2_shake)
+
+    L = fit_length_to_measured_shape()
+    bin_ms = 1e3 * EXP2_PERIOD**2 / (SHAKE_NFFT * SHAKE_DT_OUT)
+    print(f"\nseed 000 Experiment 2 shaken (l = {L:.4f} m fitted to Table 5): free period vs the measured "
+          f"{EXP2_PERIOD} s and vs the finest run\n(FFT peak: one spectral bin is {bin_ms:.1f} ms of period; "
+          "wall = both types)")
+    print(f"{'particles':>10} {'T1 [s]':>8} {'err T1':>9} {'dT1 [ms]':>9} {'T2 [s]':>8} {'err T2':>9} "
+          f"{'dT2 [ms]':>9} {'wall [s]':>9}")
+    rows = []
+    for n in sizes:
+        w0 = time.perf_counter()
+        T1 = run_exp2_shake(n, 1.0, L)[0]
+        T2 = run_exp2_shake(n, 1.5, L)[0]
+        rows.append((n, T1, T2, time.perf_counter() - w0))
+    f1, f2 = rows[-1][1:3]
+    for n, T1, T2, wall in rows:
+        print(f"{n:>10} {T1:>8.4f} {T1 / EXP2_PERIOD - 1:>+9.2%} {1e3 * (T1 - f1):>+9.2f} {T2:>8.4f} "
+              f"{T2 / EXP2_PERIOD - 1:>+9.2%} {1e3 * (T2 - f2):>+9.2f} {wall:>9.2f}")
+
+
+def free_fall_convergence(sizes: list[int], times=(0.3, 0.6, 0.9, 1.2)) -> None:
+    """cable-free-fall: distance of the free end from the finest run's at fixed times and
+    the dissipated energy (fraction of w L^2), against the finest run."""
+    from cosim.validations.cable import run_free_fall
+
+    runs = []
+    for n in sizes:
+        w0 = time.perf_counter()
+        m, _ = run_free_fall(n)
+        traj = {round(t, 3): np.array([x, z]) for t, x, z in m["free_end_xz_every_0.1s"]}
+        runs.append((n, traj, m["dissipated_fraction_of_w_L_L"], time.perf_counter() - w0))
+    fine, dfine = runs[-1][1], runs[-1][2]
+    print("\nseed 000 Experiment 1 released at P5: free end |x - x_finest| [mm] at t [s] (max: over 0.1-1.2 s "
+          "every 0.1 s)\nand energy dissipated by 1.2 s (fraction of w L^2) vs the finest run")
+    head = "".join(f"{f't={t:g}':>8}" for t in times)
+    print(f"{'particles':>10}{head}{'max':>8} {'dissipated':>11} {'d dissip':>9} {'wall [s]':>9}")
+    for n, traj, diss, wall in runs:
+        d = {t: 1e3 * float(np.linalg.norm(traj[t] - fine[t])) for t in fine}
+        cols = "".join(f"{d[round(t, 3)]:>8.3f}" for t in times)
+        print(f"{n:>10}{cols}{max(d.values()):>8.3f} {diss:>11.5f} {diss - dfine:>+9.1e} {wall:>9.2f}")
 
 
 if __name__ == "__main__":

@@ -283,6 +283,12 @@ def fit_length_to_measured_shape() -> float:
                                  options={"xatol": 1e-6}).x)
 
 
+#: output interval [s] and FFT length of the free-period measurement of run_exp2_shake: the
+#: spectral bin is 1/(SHAKE_NFFT * SHAKE_DT_OUT) = 0.0061 Hz (about 1 ms of period at 0.42 s)
+SHAKE_DT_OUT = 0.0025
+SHAKE_NFFT = 1 << 16
+
+
 def run_exp2_shake(n_particles: int, frequency: float, length: float, omega: float = 0.04, cycles: int = 3,
                    free_time: float = 8.0):
     """Shake P0 of Experiment 2 by 25 mm in x at ``frequency`` [Hz] for ``cycles`` cycles, then
@@ -302,7 +308,7 @@ def run_exp2_shake(n_particles: int, frequency: float, length: float, omega: flo
     ref = np.array([c.position_at(s) for s in s_pts])
     t_free = t0 + cycles / frequency
     ts, zs = [], []
-    dt_out = 0.0025
+    dt_out = SHAKE_DT_OUT
     while c.t < t_free + free_time - 1e-9:
         c.advance(c.t, dt_out)
         if c.t > t_free + 0.5:
@@ -310,7 +316,7 @@ def run_exp2_shake(n_particles: int, frequency: float, length: float, omega: flo
             zs.append([c.position_at(s)[1] for s in s_pts])
     z = np.array(zs) - ref[:, 1]
     z = z - z.mean(axis=0)
-    nfft = 1 << 16
+    nfft = SHAKE_NFFT
     spec = (np.abs(np.fft.rfft(z * np.hanning(len(z))[:, None], n=nfft, axis=0)) ** 2).sum(axis=1)
     f = np.fft.rfftfreq(nfft, dt_out)
     # the fundamental: the lowest-frequency spectral peak above 0.5 Hz holding >= 20 % of the
@@ -377,6 +383,33 @@ def _mech_energy(c: SPHCable) -> float:
     return c.kinetic_energy() + pe + float((0.5 * c.EA * c.ds * eps**2).sum())
 
 
+def run_free_fall(n_particles: int, t_end: float = 1.2, dt_out: float = 0.005):
+    """Seed 000 Experiment 1 with ``n_particles``: the 1 m cable hung from (0, 0) and
+    (0.88, 0), released at P5 and followed for ``t_end`` [s] (checked every ``dt_out`` [s]).
+    Returns (metrics, cable); see :func:`cable_free_fall` for the metrics."""
+    p = EXP2
+    EA = p["E"] * math.pi / 4 * p["d_wire"] ** 2
+    c = SPHCable(1.0, n_particles, EA, p["w"] / G_STANDARD, (0.0, 0.0), (0.88, 0.0), weight_per_length=p["w"],
+                 free_end="b", nodes_at=[q[0] for q in EXP1_POINTS[:-1]])
+    table = np.array([q[1:] for q in EXP1_POINTS])
+    init = np.array([c.position_at(q[0]) for q in EXP1_POINTS])
+    E0 = _mech_energy(c)
+    scale = p["w"] * 1.0 * 1.0  # weight times length [J]
+    rise, z_low, strain, traj = 0.0, 0.0, 0.0, []
+    while c.t < t_end - 1e-9:
+        c.advance(c.t, dt_out)
+        rise = max(rise, _mech_energy(c) - E0)
+        z_low = min(z_low, float(c.x[-1, 1]))
+        strain = max(strain, float((np.linalg.norm(np.diff(c.x, axis=0), axis=1) / c.ds - 1).max()))
+        if abs(c.t / 0.1 - round(c.t / 0.1)) < 1e-6:
+            traj.append([round(c.t, 3), float(c.x[-1, 0]), float(c.x[-1, 1])])
+    m = {"initial_vs_table4_m": [float(d) for d in np.linalg.norm(init - table, axis=1)],
+         "max_energy_rise_J": rise, "energy_scale_J": scale,
+         "dissipated_fraction_of_w_L_L": float((E0 - _mech_energy(c)) / scale),
+         "free_end_lowest_z_m": z_low, "max_strain": strain, "free_end_xz_every_0.1s": traj}
+    return m, c
+
+
 @case("cable-free-fall", "SPH cable, seed 000 Experiment 1: released at one end from its catenary (Table 4)")
 def cable_free_fall(quick: bool) -> dict:
     """Seed 000 Experiment 1 (§3.3.1): a 1 m cable of the Experiment 2 kind (w = 0.2656 N/m,
@@ -387,27 +420,10 @@ def cable_free_fall(quick: bool) -> dict:
     reported), the line never stretches beyond its elastic range, the free end falls and
     swings through the bottom. The initial catenary is reported against the Table 4 points."""
     n = 48 if quick else 95
-    p = EXP2
-    EA = p["E"] * math.pi / 4 * p["d_wire"] ** 2
-    c = SPHCable(1.0, n, EA, p["w"] / G_STANDARD, (0.0, 0.0), (0.88, 0.0), weight_per_length=p["w"],
-                 free_end="b", nodes_at=[q[0] for q in EXP1_POINTS[:-1]])
-    table = np.array([q[1:] for q in EXP1_POINTS])
-    init = np.array([c.position_at(q[0]) for q in EXP1_POINTS])
-    E0 = _mech_energy(c)
-    scale = p["w"] * 1.0 * 1.0  # weight times length [J]
-    rise, z_low, strain, traj = 0.0, 0.0, 0.0, []
-    while c.t < 1.2 - 1e-9:
-        c.advance(c.t, 0.005)
-        rise = max(rise, _mech_energy(c) - E0)
-        z_low = min(z_low, float(c.x[-1, 1]))
-        strain = max(strain, float((np.linalg.norm(np.diff(c.x, axis=0), axis=1) / c.ds - 1).max()))
-        if abs(c.t / 0.1 - round(c.t / 0.1)) < 1e-6:
-            traj.append([round(c.t, 3), float(c.x[-1, 0]), float(c.x[-1, 1])])
-    m = {"initial_vs_table4_m": [float(d) for d in np.linalg.norm(init - table, axis=1)],
-         "max_energy_rise_J": rise, "energy_scale_J": scale,
-         "dissipated_fraction_of_w_L_L": float((E0 - _mech_energy(c)) / scale),
-         "free_end_lowest_z_m": z_low, "max_strain": strain, "free_end_xz_every_0.1s": traj}
-    passed = rise <= 1e-6 * scale and strain < c.max_strain and z_low < -0.75
+    m, c = run_free_fall(n)
+    scale = m["energy_scale_J"]
+    passed = (m["max_energy_rise_J"] <= 1e-6 * scale and m["max_strain"] < c.max_strain
+              and m["free_end_lowest_z_m"] < -0.75)
     return {"passed": passed, "metrics": m,
             "tolerances": {"max_energy_rise_J": 1e-6 * scale, "max_strain": c.max_strain, "free_end_lowest_z_m": -0.75},
             "particles": c.n, "steps": c.steps}
