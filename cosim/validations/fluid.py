@@ -64,6 +64,8 @@ def run_hydrostatic(dim: int, dx: float, t_end: float, depth: float = 0.2, lengt
     x = ps.pos[:, 0]
     side = (ps.kind != Kind.FLUID) & (np.isclose(x, -0.5 * dx) | np.isclose(x, length + 0.5 * dx)) \
         & (ps.pos[:, -1] > 0) & (ps.pos[:, -1] < H)
+    if dim == 3:  # the x-walls' first layer only where it faces the water (not the y-walls)
+        side &= (ps.pos[:, 1] > 0) & (ps.pos[:, 1] < width)
     side_ids = np.sort(ps.ids[side])
     acc_w = np.zeros(side_ids.size)
     samples, vmax = 0, 0.0
