@@ -47,13 +47,28 @@ class StepLimit:
     dt_cv: float  # [s] CFL * dt_cv
 
 
+@njit(parallel=True, **_OPTS)
+def _bounds(acc, visc, cs, kind, h):
+    """(max |a|^2 over fluid particles, min h / (c + visc) over all particles)."""
+    amax2 = 0.0
+    cvmin = np.inf
+    dim = acc.shape[1]
+    for i in prange(acc.shape[0]):
+        a2 = 0.0
+        for k in range(dim):
+            a2 += acc[i, k] * acc[i, k]
+        if kind[i] == 0:
+            amax2 = max(amax2, a2)
+        cvmin = min(cvmin, h / (cs[i] + visc[i]))
+    return amax2, cvmin
+
+
 def stable_dt(acc, visc, cs, kind, h: float, cfl: float, dt_max: float = math.inf) -> StepLimit:
     """001_14936b82710365b2.txt Eq. 14 with factor ``cfl``; ``dt_max`` [s] caps it."""
-    fl = kind == 0
-    a2 = np.einsum("ij,ij->i", acc[fl], acc[fl]) if fl.any() else np.zeros(1)
-    amax = math.sqrt(float(a2.max())) if a2.size else 0.0
+    amax2, cvmin = _bounds(acc, visc, cs, kind, h) if cs.size else (0.0, math.inf)
+    amax = math.sqrt(amax2)
     dt_f = cfl * math.sqrt(h / amax) if amax > 0 else math.inf
-    dt_cv = cfl * float(np.min(h / (cs + visc))) if cs.size else math.inf
+    dt_cv = cfl * cvmin
     dt, lim = (dt_f, "force") if dt_f < dt_cv else (dt_cv, "courant_viscous")
     if dt_max < dt:
         dt, lim = dt_max, "dt_max"

@@ -12,8 +12,29 @@ from dataclasses import dataclass
 from enum import IntEnum
 
 import numpy as np
+from numba import njit, prange
 
 from cosim.errors import InputError
+
+
+@njit(parallel=True, cache=True)
+def _take1(a, perm, out):
+    for i in prange(perm.shape[0]):
+        out[i] = a[perm[i]]
+
+
+@njit(parallel=True, cache=True)
+def _take2(a, perm, out):
+    for i in prange(perm.shape[0]):
+        for k in range(a.shape[1]):
+            out[i, k] = a[perm[i], k]
+
+
+def take(a: np.ndarray, perm: np.ndarray) -> np.ndarray:
+    """``a[perm]`` along the first axis (1-D or 2-D arrays), a parallel gather."""
+    out = np.empty((perm.shape[0],) + a.shape[1:], a.dtype)
+    (_take1 if a.ndim == 1 else _take2)(a, perm, out)
+    return out
 
 
 class Kind(IntEnum):
@@ -117,9 +138,9 @@ class ParticleSet:
             raise InputError("fluid particles must have group -1 and boundary particles a group >= 0")
 
     def permute(self, perm: np.ndarray) -> None:
-        """Reorder every array in place by ``perm`` (new[i] = old[perm[i]])."""
+        """Reorder every array by ``perm`` (new[i] = old[perm[i]]), in parallel."""
         for f in self.FIELDS:
-            setattr(self, f, getattr(self, f)[perm])
+            setattr(self, f, take(getattr(self, f), perm))
 
     def select(self, mask: np.ndarray) -> "ParticleSet":
         """A new set with the particles where ``mask`` is true."""
