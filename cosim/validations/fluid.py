@@ -151,8 +151,11 @@ def run_dambreak(n_a: int, T_end: float = 3.0, a: float = 0.146, **overrides) ->
     shrinks, while staying well below Ritter's inviscid bound dZ/dT = 2. Numerical fronts
     are commonly reported ahead of these experiments (gate removal and bed friction slow
     the measured front; neither is modelled: dynamic boundaries are nearly free-slip here).
-    Open: compare with a numerical reference of the same (inviscid) problem and study the
-    time origin, before any change of the target."""
+    Delaying the computed front by dT = 0.20 (0.017 s at a = 0.146 m) brings it to 0.9 % RMS
+    of Martin & Moyce (Koshizuka & Oka: 5.7 % at dT = 0.16), reported as ``diag_*``
+    metrics and not judged: consistent with a delayed start of the experiments, not a
+    proof. Open: compare with a numerical reference of the same (inviscid) problem and
+    settle the time origin before any change of the target."""
     from fluid.geometry import assemble, block, tank_walls
 
     g = 9.81
@@ -186,6 +189,12 @@ def run_dambreak(n_a: int, T_end: float = 3.0, a: float = 0.146, **overrides) ->
         metrics[f"front_rms_rel_err_{key}"] = float(np.sqrt(np.mean(rel**2)))
         metrics[f"front_rel_err_{key}"] = [round(float(v), 4) for v in rel]
         metrics[f"T_{key}"] = ref[use, 0].tolist()
+        # diagnostic only (not judged): the time delay of the experiment that fits best
+        shifts = np.arange(0.0, 0.6, 0.01)
+        fit = [np.sqrt(np.mean(((np.interp(ref[use, 0] - s, Ts, Zs) - ref[use, 1]) / ref[use, 1]) ** 2))
+               for s in shifts]
+        metrics[f"diag_best_delay_T_{key}"] = float(shifts[int(np.argmin(fit))])
+        metrics[f"diag_front_rms_rel_err_delayed_{key}"] = float(min(fit))
     metrics["front_T_Z"] = [[round(float(x), 3), round(float(z), 4)] for x, z in zip(Ts[::4], Zs[::4])]
     tolerances = {"front_rms_rel_err_ko1996": 0.05, "front_rms_rel_err_mm1952": 0.05}
     passed = all(metrics[k] < v for k, v in tolerances.items())
