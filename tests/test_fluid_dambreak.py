@@ -4,11 +4,11 @@ cosim/validations/fluid.py). Here: physical bounds that any correct run obeys.""
 
 import numpy as np
 
-from cosim.validations.fluid import run_dambreak
+from cosim.validation import run
 
 
 def test_dambreak_front_obeys_physical_bounds():
-    rec = run_dambreak(20)
+    rec = run("dambreak-2d", quick=True)
     TZ = np.array(rec["metrics"]["front_T_Z"])
     T, Z = TZ[:, 0], TZ[:, 1]
     assert T[-1] >= 2.8 and Z[0] == 1.0
