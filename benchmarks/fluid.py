@@ -53,8 +53,6 @@ def build(case: str, dp: float, integrator: str = "verlet"):
 
 
 def run(case: str, dp: float, steps: int, integrator: str = "verlet") -> dict:
-    import numpy as np
-
     from fluid.particles import Kind
     from fluid.solver import Fluid
 

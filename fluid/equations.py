@@ -56,7 +56,7 @@ import math
 import numpy as np
 from numba import njit, prange, uint64
 
-from fluid.kernels import WENDLAND, grad_factor
+from fluid.kernels import grad_factor
 from fluid.neighbours import row_range
 
 _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
