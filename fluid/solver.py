@@ -374,11 +374,7 @@ class Fluid:
             euler = self.counters.steps % c.verlet_reset == 0
             verlet(ps.pos, ps.vel, ps.rho, self._drho, self._acc, ps.kind, c.rho0, dt,
                    aux["vel"], aux["rho"], euler)
-            self.counters.steps += 1
-            self.t += dt
-            self._check_finite()
-            self._sort()
-            self._rates()
+            self._end_step(dt)
             return loads
         predictor(ps.pos, ps.vel, ps.rho, self._drho, self._acc, ps.kind, c.rho0, dt,
                   aux["pos"], aux["vel"], aux["rho"])
@@ -388,12 +384,16 @@ class Fluid:
         ps, aux = self.ps, self._aux
         corrector(ps.pos, ps.vel, ps.rho, self._drho, self._acc, ps.kind, c.rho0, dt,
                   aux["pos"], aux["vel"], aux["rho"])
+        self._end_step(dt)
+        return loads
+
+    def _end_step(self, dt: float) -> None:
+        """Count the step, check for non-finite values, re-sort and take the new rates."""
         self.counters.steps += 1
         self.t += dt
         self._check_finite()
         self._sort()
         self._rates()
-        return loads
 
     def _sort(self):
         """Sort particles (and the saved n state) by cell; remove those outside the domain."""

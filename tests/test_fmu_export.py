@@ -18,14 +18,10 @@ import pytest
 from moorings.catenary import LineState, taut_distance
 from moorings.fmu_export import export_catenary_fmu, find_compiler
 from moorings.line import MooringLine
+from conftest import requires_cc
 
 HERE = Path(__file__).resolve().parent
-try:
-    find_compiler()
-    HAVE_CC = True
-except Exception:
-    HAVE_CC = False
-pytestmark = pytest.mark.skipif(not HAVE_CC, reason="no C compiler to build the FMU binary")
+pytestmark = requires_cc
 
 
 def lines3d():

@@ -10,15 +10,11 @@ import pytest
 from cosim.errors import InputError, SolverError, TautLineError
 from cosim.protocol import Mooring, check_participant
 from moorings.catenary_mooring import CatenaryMooring
-from moorings.fmu_export import catenary_fmu_variable_map, export_catenary_fmu, find_compiler
+from moorings.fmu_export import catenary_fmu_variable_map, export_catenary_fmu
 from moorings.line import MooringLine
+from conftest import requires_cc
 
-try:
-    find_compiler()
-    HAVE_CC = True
-except Exception:
-    HAVE_CC = False
-pytestmark = pytest.mark.skipif(not HAVE_CC, reason="no C compiler to build the FMU binary")
+pytestmark = requires_cc
 
 
 def spread_mooring():
