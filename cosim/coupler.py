@@ -122,7 +122,7 @@ class Coupler:
         if scheme not in SCHEMES:
             raise InputError(f"coupling scheme {scheme!r} is not one of {', '.join(SCHEMES)}")
         self.scheme = scheme
-        self._exchanging = roles
+        self._exchanging = roles  # rolled back by the predictor-corrector
         self.dt = dt
         self.clock = Clock(t0)
         self.steps = 0
@@ -137,7 +137,10 @@ class Coupler:
 
     def initialize(self) -> None:
         """Resolve attachments and initialise every participant at the start time
-        (each checks its own inputs before any step is taken)."""
+        (each checks its own inputs before any step is taken). Once only: later
+        calls do nothing (attachments add constraints and inertia to the bodies)."""
+        if self._initialized:
+            return
         t0 = self.clock.t
         if self.bodies is not None:
             self._attach_tethers()
@@ -267,7 +270,7 @@ class Coupler:
         if self.scheme == "predictor-corrector":
             # predict the bodies' motion with the start loads, take the loads there,
             # go back and advance with the mean of both
-            saved = [(p, p.save_state()) for p in self.participants if p in self._exchanging]
+            saved = [(p, p.save_state()) for p in self._exchanging]
             b.set_wrenches(loads[0] + loads[2], loads[1] + loads[3])
             b.advance(t, dt)
             kin1 = b.kinematics()

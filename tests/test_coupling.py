@@ -177,6 +177,18 @@ def test_attachment_errors():
         Coupler(bodies=b, scheme="implicit")
 
 
+def test_initialize_twice_adds_nothing_twice():
+    xml = builders.scene(builders.box("b", (2.0, 1.0), (0, 0, 0), density=500.0, planar=True,
+                                      sites={"fl": (1.0, 0.0, -0.5)}))
+    b = MujocoBodies(xml)
+    f = AnalyticFluid(added_mass={"b": [0.0, 300.0, 0.0]})
+    m = CatenaryMooring([MooringLine((30.0, -20.0), 40.0, 100.0)])
+    c = Coupler(bodies=b, fluid=f, moorings=[(m, ["fl"])])
+    c.initialize()
+    c.initialize()
+    assert b.model.ntendon == 1 and b.model.dof_armature[1] == 300.0
+
+
 def test_checkpoint_restart_reproduces_the_run():
     def make():
         from cosim.validations.coupling import moored_box_scene
