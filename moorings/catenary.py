@@ -25,17 +25,20 @@ States (seed 004 Fig. 5), with boundaries along X at fixed h:
                       inextensible one cannot, and there is no catenary solution:
                       :func:`solve` returns ``H = V = inf`` (the limit from below) and
                       ``touchdown = 0`` rather than raising, so that arrays of lines
-                      stay solvable; :class:`CatenaryMooring` turns it into a
-                      :class:`~cosim.errors.TautLineError` naming the line (the
-                      coupler will hold such lines with a length constraint instead
-                      of seed 004 Eq. 40's proportional split of the load).
+                      stay solvable. In a coupled scene the mooring system holds
+                      such a line with a length constraint on the bodies (so taut
+                      lines share a load by statics, not by seed 004 Eq. 40's
+                      proportional split); alone, it raises
+                      :class:`~cosim.errors.TautLineError` naming the line.
 ====================  ==============================================================
 
 Boundaries are exact: ``X = L - h`` is ``RESTING``; the lift-off point
 ``X_lift = (L^2 - h^2)/h * atanh(h/L)`` (inextensible; seed 004 Eq. 37 with
 ``l_s = L`` in Eq. 39) is ``FULLY_LIFTED``; the taut point ``X = sqrt(L^2 - h^2)``
 is ``TAUT``. ``H`` and ``V`` are continuous across the first two and tend to
-infinity at the third (inextensible).
+infinity at the third (inextensible), where the problem is ill-conditioned: the
+relative error of ``H`` is about 1e-16 / (1 − X/X_taut), the rounding of the taut
+point itself; it stays finite up to the last double below it.
 
 Method
 ------
