@@ -349,6 +349,32 @@ class Fluid:
         if self._limit is not None:  # the rates depend on the boundary velocity
             self._rates()
 
+    def set_particle_motion(self, ids, pos, vel) -> None:
+        """Place boundary particles given by their ids: positions [m] and velocities
+        [m/s], ``(len(ids), dim)`` (a body's particles placed from its pose by the
+        coupler). They move with these velocities within the following steps; the
+        rates are recomputed for the new positions."""
+        ps = self.ps
+        ids = np.asarray(ids, np.int64)
+        order = np.argsort(ps.ids)
+        at = np.searchsorted(ps.ids, ids, sorter=order)
+        at = np.minimum(at, ps.n - 1)
+        idx = order[at]
+        if not (ps.ids[idx] == ids).all():
+            raise InputError("fluid: set_particle_motion got ids of particles that do not exist (removed?)")
+        if (ps.kind[idx] == Kind.FLUID).any() or (ps.kind[idx] == Kind.FIXED_WALL).any():
+            raise InputError("fluid: set_particle_motion moves MOVING_WALL or BODY particles only")
+        pos, vel = np.asarray(pos, np.float64), np.asarray(vel, np.float64)
+        if pos.shape != (len(ids), self.config.dim) or vel.shape != pos.shape:
+            raise InputError(f"fluid: positions and velocities must have shape ({len(ids)}, {self.config.dim})")
+        if not (np.isfinite(pos).all() and np.isfinite(vel).all()):
+            raise InstabilityError("fluid: non-finite positions or velocities given for boundary particles")
+        ps.pos[idx] = pos
+        ps.vel[idx] = vel
+        if self._limit is not None:
+            self._sort()
+            self._rates()
+
     def wall_pressure(self) -> np.ndarray:
         """Pressure [Pa] per particle (current order of ``self.ps``): the fluid's own, and on
         boundary particles the average of the fluid next to them (001 Eq. 15), which is the
