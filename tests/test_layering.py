@@ -35,3 +35,12 @@ def test_solver_packages_import_only_cosim_errors():
                     if (n == "cosim" or n.startswith("cosim.")) and n != "cosim.errors":
                         offenders.append(f"{path.relative_to(ROOT)} imports {n}")
     assert not offenders, offenders
+
+
+def test_no_script_shadows_a_package():
+    """A script's folder comes first on sys.path: benchmarks/fluid.py would hide
+    the fluid package from every other benchmark (it did, twice)."""
+    packages = {"cosim", "fluid", "bodies", "moorings"}
+    for folder in ("benchmarks", "examples"):
+        clash = sorted(p.name for p in (ROOT / folder).glob("*.py") if p.stem in packages)
+        assert not clash, f"{folder}/{clash} shadows a package; rename it"

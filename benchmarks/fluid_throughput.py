@@ -7,9 +7,9 @@ Verlet time stepping as in the reference case (one pair loop per step); ``--inte
 symplectic`` for the predictor-corrector (two pair loops per step): compare
 ``pair_loops_per_s`` across the two.
 
-    .venv/bin/python benchmarks/fluid.py                 # default sizes, warm numba cache
-    .venv/bin/python benchmarks/fluid.py --cold          # compile from scratch (empty cache)
-    .venv/bin/python benchmarks/fluid.py --case 2d --dp 0.01 --steps 200 --threads 2
+    .venv/bin/python benchmarks/fluid_throughput.py                 # default sizes, warm numba cache
+    .venv/bin/python benchmarks/fluid_throughput.py --cold          # compile from scratch (empty cache)
+    .venv/bin/python benchmarks/fluid_throughput.py --case 2d --dp 0.01 --steps 200 --threads 2
 """
 
 from __future__ import annotations
