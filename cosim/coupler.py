@@ -36,7 +36,7 @@ from cosim.progress import Progress
 from cosim.protocol import Mooring, Participant, check_participant
 
 
-SCHEMES = ("explicit", "predictor-corrector")
+SCHEMES = ("explicit", "predictor-corrector", "fluid-first")
 
 
 @dataclass(frozen=True)
@@ -89,6 +89,10 @@ class Coupler:
         loads, the loads are taken at the predicted pose, every exchanging
         participant is rolled back (``save_state``/``load_state``) and the bodies
         advance with the mean of both (second order; growth ~ (ω dt)⁴).
+        ``"fluid-first"``: the fluid advances first with the bodies' current motion,
+        then the bodies receive exactly the impulse the fluid exchanged with them
+        (its ``exchanged_wrenches()``): momentum passes between fluid and bodies to
+        round-off. For the SPH fluid, whose own step is what limits dt.
     """
 
     def __init__(self, participants: Sequence[Participant] = (), *, bodies=None, fluid=None,
@@ -121,6 +125,9 @@ class Coupler:
             raise InputError(f"coupling step dt={dt!r} s is below the clock resolution of 1e-12 s")
         if scheme not in SCHEMES:
             raise InputError(f"coupling scheme {scheme!r} is not one of {', '.join(SCHEMES)}")
+        if scheme == "fluid-first" and not hasattr(fluid, "exchanged_wrenches"):
+            raise ConfigurationError("the fluid-first scheme needs a fluid that reports the loads it exchanged "
+                                     "over its last advance (exchanged_wrenches(), e.g. cosim.sph_fluid.SPHFluid)")
         self.scheme = scheme
         self._exchanging = roles  # rolled back by the predictor-corrector
         self.dt = dt
@@ -266,6 +273,18 @@ class Coupler:
     def _exchange_and_advance(self, t: float, dt: float) -> None:
         b = self.bodies
         kin0 = b.kinematics()
+        if self.scheme == "fluid-first":
+            self.fluid.advance(t, dt)  # the fluid moves the bodies' particles with their current motion
+            zeros = np.zeros((b.n_bodies, 3))
+            F_moor, T_moor = self._mooring_wrenches(kin0) if self.moorings else (zeros, zeros)
+            F_fluid, T_fluid = self.fluid.exchanged_wrenches()
+            b.set_wrenches(F_fluid + F_moor, T_fluid + T_moor)
+            self.ledger.record(t, F_fluid, T_fluid, F_moor, T_moor, b.gravity_forces())
+            b.advance(t, dt)
+            self._give_kinematics(b.kinematics())
+            for a in self.moorings:
+                a.mooring.advance(t, dt)
+            return
         loads = self._loads(kin0)
         if self.scheme == "predictor-corrector":
             # predict the bodies' motion with the start loads, take the loads there,

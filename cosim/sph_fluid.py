@@ -111,7 +111,16 @@ class SPHFluid:
         """Force [N] and torque about the centre of mass [N m] of the fluid on each
         body, world frame, from the rates at the current state (2-D: per metre of
         depth, which is the 1 m thick body's load)."""
-        F, M = self.fluid.group_forces_now()
+        return self._to_wrench3(*self.fluid.group_forces_now())
+
+    def exchanged_wrenches(self):
+        """The loads the fluid actually exchanged with each body over its last
+        advance (impulse / dt, about the centre of mass at the start of it): what a
+        body must receive over the same interval for momentum to be exchanged
+        exactly (the coupler's "fluid-first" scheme)."""
+        return self._to_wrench3(*self.fluid.group_loads())
+
+    def _to_wrench3(self, F, M):
         F, M = F[self._g0:self._g0 + self.n_bodies], M[self._g0:self._g0 + self.n_bodies]
         if self.config.dim == 3:
             return F.copy(), M.copy()
