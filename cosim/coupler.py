@@ -278,6 +278,9 @@ class Coupler:
             zeros = np.zeros((b.n_bodies, 3))
             F_moor, T_moor = self._mooring_wrenches(kin0) if self.moorings else (zeros, zeros)
             F_fluid, T_fluid = self.fluid.exchanged_wrenches()
+            # the fluid's moment is about the centre of mass at the start of the step; the
+            # bodies take the force at their moving centre, half a step on on average
+            T_fluid = T_fluid - np.cross(0.5 * dt * kin0.velocity, F_fluid)
             b.set_wrenches(F_fluid + F_moor, T_fluid + T_moor)
             self.ledger.record(t, F_fluid, T_fluid, F_moor, T_moor, b.gravity_forces())
             b.advance(t, dt)

@@ -60,35 +60,15 @@ def test_fluid_loads_move_with_the_body_pose():
     assert (f.fluid.moment_points[f._g0] == bodies.kinematics().com[0, [0, 2]]).all()
 
 
-def test_momentum_is_exchanged_exactly_with_the_fluid_first_scheme():
-    """A free box (no gravity, no walls) pushed at 0.5 m/s into a resting blob of
-    SPH water: the fluid's momentum plus the body's is conserved to round-off with
-    the fluid-first scheme; taking loads at the start of the step is not exact."""
-    from cosim.coupler import Coupler
+def test_momentum_exchange_validation_quick():
+    """Linear and angular momentum of fluid + a free body to round-off with the
+    fluid-first scheme; start-of-step loads are not exact."""
+    from cosim.validation import run
 
-    def momentum_drift(scheme):
-        dx = 0.01
-        cfg = FluidConfig(dim=2, dx=dx, g=0.0, c0=20.0, domain_lo=(-1.0, -1.0), domain_hi=(2.0, 2.0))
-        blob = block(np.array([0.1, 0.0]), np.array([0.3, 0.2]), dx)
-        xml = builders.scene(builders.box("b", (0.05, 0.05), (0.07, 0.0, 0.105), density=800.0, planar=True),
-                             gravity=0.0)
-        bodies = MujocoBodies(xml)
-        bodies.data.qvel[0] = 0.5  # towards the blob
-        f = SPHFluid(cfg, blob)
-        c = Coupler(bodies=bodies, fluid=f, scheme=scheme)
-        M = bodies.masses()[0]
-
-        def total():
-            ps = f.fluid.ps
-            fl = ps.kind == Kind.FLUID
-            return (ps.mass[fl, None] * ps.vel[fl]).sum(axis=0)[0] + M * bodies.kinematics().velocity[0, 0]
-
-        c.initialize()
-        p0 = total()
-        for _ in range(150):
-            c.step(10.0)
-        assert bodies.kinematics().velocity[0, 0] < 0.5  # the water slowed the box
-        return abs(total() - p0) / abs(p0)
-
-    assert momentum_drift("fluid-first") < 1e-12
-    assert momentum_drift("explicit") > 1e-9
+    r = run("momentum-exchange", quick=True)
+    m = r["metrics"]
+    assert r["passed"], m
+    assert m["fluid_first"]["linear_drift"] < 1e-12 and m["fluid_first"]["angular_drift"] < 1e-12
+    assert m["explicit"]["linear_drift"] > 1e-9
+    vx, w = m["fluid_first"]["body_vx_m_s"], m["fluid_first"]["body_omega_rad_s"]
+    assert vx[1] < 0.5 * vx[0] and abs(w[1]) > 0.1  # the water slowed the box and spun it
