@@ -3,8 +3,8 @@
 At attachment each coupled body's geoms are sampled into dynamic boundary
 particles (``bodies.MujocoBodies.boundary_particles``, on the fluid's spacing,
 enough layers to fill the kernel support), placed from the body's pose, and
-assembled with the fluid and its walls (fluid overlapping a body is removed and
-counted, as for walls). Each body is one ``BODY`` group of the fluid. Every
+assembled with the fluid and its walls (fluid inside a body, found from its
+geoms, is removed and counted). Each body is one ``BODY`` group of the fluid. Every
 exchange places the group from the body's pose (rigid transform of body
 coordinates: no drift) with velocities ``V + Ω × r`` (seed 004 Eq. 13), and the
 loads on a body are the sum over its particles of the force the fluid exerts on
@@ -56,6 +56,7 @@ class SPHFluid:
         self.body_layers = body_layers or math.ceil(2.0 * config.h_coef)
         self.fluid: Fluid | None = None
         self.removed_overlap = 0
+        self.displaced_volume = 0.0
 
     # -- coupling ----------------------------------------------------------------
     def attach_bodies(self, bodies) -> None:
