@@ -57,7 +57,7 @@ import numpy as np
 from numba import njit, prange, uint64
 
 from fluid.kernels import grad_factor
-from fluid.neighbours import row_range
+from fluid.neighbours import cell_coords, row_range
 
 _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 
@@ -194,9 +194,7 @@ def interact(S, start, lo, inv_cell, nx, ny, nz, reach, kernel, prm, out):
         ka = S[KAP, a]
         fa = S[ISF, a]
         ca = S[CS, a]
-        cx = min(max(int((xa - lo[0]) * inv_cell), 0), nx - 1)
-        cy = min(max(int((ya - lo[1]) * inv_cell), 0), ny - 1)
-        cz = min(max(int((za - lo[2]) * inv_cell), 0), nz - 1)
+        cx, cy, cz = cell_coords(xa, ya, za, lo, inv_cell, True, nx, ny, nz)  # packed rows: always x, y, z
         sd = 0.0
         sdd = 0.0
         sx = 0.0
@@ -275,9 +273,7 @@ def _boundary_pressure(S, p, start, lo, inv_cell, nx, ny, nz, h, out):
         xa = S[X, a]
         ya = S[Y, a]
         za = S[Z, a]
-        cx = min(max(int((xa - lo[0]) * inv_cell), 0), nx - 1)
-        cy = min(max(int((ya - lo[1]) * inv_cell), 0), ny - 1)
-        cz = min(max(int((za - lo[2]) * inv_cell), 0), nz - 1)
+        cx, cy, cz = cell_coords(xa, ya, za, lo, inv_cell, True, nx, ny, nz)  # packed rows: always x, y, z
         num = 0.0
         den = 0.0
         for dz in range(-1, 2):
