@@ -6,7 +6,7 @@ frame (cell-centred, so the outer layer sits half a spacing inside the surface,
 as the fluid's own particles sit inside their cells). They are stored once in
 body coordinates and placed every step by the rigid transform of the body's pose,
 with velocities ``u = V + Ω × (r − r_com)`` (seed 004 Eq. 13), so they never
-drift. Plain numpy: no MuJoCo here.
+drift. Plain numpy, no MuJoCo: the geometry here also serves the analytic fluid.
 """
 
 from __future__ import annotations
@@ -61,7 +61,8 @@ def signed_distance(kind: str, size: np.ndarray, p: np.ndarray) -> np.ndarray:
                      f"capsule or ellipsoid)")
 
 
-def _extent(kind: str, size: np.ndarray) -> np.ndarray:
+def half_extents(kind: str, size: np.ndarray) -> np.ndarray:
+    """Half-sizes [m] of the geom's bounding box along its own axes."""
     if kind in ("box", "ellipsoid"):
         return size[:3].copy()
     if kind == "sphere":
@@ -105,7 +106,7 @@ def sample_geoms(geoms, dx: float, layers: int, dim: int = 3):
     pts, owner = [], []
     for gi, g in enumerate(geoms):
         size = np.asarray(g.size, dtype=float)
-        half = _extent(g.kind, size)
+        half = half_extents(g.kind, size)
         axes = [_axis_grid(h, dx) for h in half]
         if dim == 2:
             along_y = np.flatnonzero(np.isclose(np.abs(g.rot[1]), 1.0))

@@ -25,38 +25,32 @@ from typing import Mapping, Sequence
 
 import numpy as np
 
+from bodies.sampling import half_extents, signed_distance
 from cosim.errors import InputError
+
+
+#: exact volumes [m^3] from MuJoCo sizes (half-sizes, radius, half-length)
+_VOLUME = {
+    "box": lambda s: 8.0 * s[0] * s[1] * s[2],
+    "sphere": lambda s: 4.0 / 3.0 * math.pi * s[0] ** 3,
+    "ellipsoid": lambda s: 4.0 / 3.0 * math.pi * s[0] * s[1] * s[2],
+    "cylinder": lambda s: math.pi * s[0] ** 2 * 2.0 * s[1],
+    "capsule": lambda s: math.pi * s[0] ** 2 * (2.0 * s[1] + 4.0 / 3.0 * s[0]),
+}
 
 
 def _unit_cells(kind: str, size: np.ndarray, n: int):
     """Cell centres [m] in the geom frame, the geom's exact volume [m^3] and the
     cell's edge lengths [m] along the geom axes."""
-    if kind == "box":
-        half, vol = size[:3], 8.0 * size[0] * size[1] * size[2]
-        inside = None
-    elif kind == "sphere":
-        half, vol = np.full(3, size[0]), 4.0 / 3.0 * math.pi * size[0] ** 3
-        inside = lambda p: np.sum(p**2, axis=1) <= size[0] ** 2  # noqa: E731
-    elif kind == "ellipsoid":
-        half, vol = size[:3], 4.0 / 3.0 * math.pi * size[0] * size[1] * size[2]
-        inside = lambda p: np.sum((p / size[:3]) ** 2, axis=1) <= 1.0  # noqa: E731
-    elif kind == "cylinder":
-        r, hl = size[0], size[1]
-        half, vol = np.array([r, r, hl]), math.pi * r * r * 2.0 * hl
-        inside = lambda p: p[:, 0] ** 2 + p[:, 1] ** 2 <= r * r  # noqa: E731
-    elif kind == "capsule":
-        r, hl = size[0], size[1]
-        half, vol = np.array([r, r, hl + r]), math.pi * r * r * (2.0 * hl + 4.0 / 3.0 * r)
-        inside = lambda p: p[:, 0] ** 2 + p[:, 1] ** 2 + np.clip(np.abs(p[:, 2]) - hl, 0, None) ** 2 <= r * r  # noqa: E731
-    else:
+    if kind not in _VOLUME:
         raise InputError(f"analytic fluid: geom type {kind!r} has no volume model")
+    half = half_extents(kind, size)
     edge = 2.0 * half.max() / n
     counts = np.maximum(np.ceil(2.0 * half / edge).astype(int), 1)
     axes = [(np.arange(c) + 0.5) / c * 2.0 * h - h for c, h in zip(counts, half)]
     p = np.stack(np.meshgrid(*axes, indexing="ij"), axis=-1).reshape(-1, 3)
-    if inside is not None:
-        p = p[inside(p)]
-    return p, vol, 2.0 * half / counts
+    p = p[signed_distance(kind, size, p) <= 0.0]
+    return p, _VOLUME[kind](size), 2.0 * half / counts
 
 
 def _bounding_radius(kind: str, size: np.ndarray) -> float:
