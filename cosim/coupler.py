@@ -261,8 +261,7 @@ class Coupler:
         kinematics the fluid and the moorings were last given."""
         zeros = np.zeros((self.bodies.n_bodies, 3))
         F_fluid, T_fluid = self.fluid.body_wrenches() if self.fluid is not None else (zeros, zeros)
-        F_moor, T_moor = self._mooring_wrenches(kin) if self.moorings else (zeros, zeros)
-        return F_fluid, T_fluid, F_moor, T_moor
+        return (F_fluid, T_fluid) + self._mooring_wrenches(kin)
 
     def _give_kinematics(self, kin) -> None:
         if self.fluid is not None:
@@ -275,20 +274,13 @@ class Coupler:
         kin0 = b.kinematics()
         if self.scheme == "fluid-first":
             self.fluid.advance(t, dt)  # the fluid moves the bodies' particles with their current motion
-            zeros = np.zeros((b.n_bodies, 3))
-            F_moor, T_moor = self._mooring_wrenches(kin0) if self.moorings else (zeros, zeros)
             F_fluid, T_fluid = self.fluid.exchanged_wrenches()
             # the fluid's moment is about the centre of mass at the start of the step; the
             # bodies take the force at their moving centre, half a step on on average
             T_fluid = T_fluid - np.cross(0.5 * dt * kin0.velocity, F_fluid)
-            b.set_wrenches(F_fluid + F_moor, T_fluid + T_moor)
-            self.ledger.record(t, F_fluid, T_fluid, F_moor, T_moor, b.gravity_forces())
-            b.advance(t, dt)
-            self._give_kinematics(b.kinematics())
-            for a in self.moorings:
-                a.mooring.advance(t, dt)
-            return
-        loads = self._loads(kin0)
+            loads = (F_fluid, T_fluid) + self._mooring_wrenches(kin0)
+        else:
+            loads = self._loads(kin0)
         if self.scheme == "predictor-corrector":
             # predict the bodies' motion with the start loads, take the loads there,
             # go back and advance with the mean of both
@@ -307,7 +299,7 @@ class Coupler:
         self.ledger.record(t, F_fluid, T_fluid, F_moor, T_moor, b.gravity_forces())
         b.advance(t, dt)
         self._give_kinematics(b.kinematics())
-        if self.fluid is not None:
+        if self.fluid is not None and self.scheme != "fluid-first":
             self.fluid.advance(t, dt)
         for a in self.moorings:
             a.mooring.advance(t, dt)
