@@ -212,6 +212,8 @@ class Fluid:
         self._grid = None
         self._limit: StepLimit | None = None
         self._loads = (np.zeros((self.n_groups, c.dim)), np.zeros((self.n_groups, 3 if c.dim == 3 else 1)))
+        #: prescribed motions: group -> (motion, ids sorted, reference positions in id order)
+        self._motions: dict[int, tuple] = {}
 
     # ------------------------------------------------------------------ protocol
     def _threads(self) -> int:
@@ -246,6 +248,7 @@ class Fluid:
             raise InputError(f"particle {self.ps.ids[i]} at {pos[i]} lies outside the domain {lo} .. {hi} m; "
                              "enlarge domain_lo/domain_hi")
         self.t = float(t0)
+        self._place_prescribed(self.t)
         self._aux = {k: getattr(self.ps, k).copy() for k in ("pos", "vel", "rho")}
         self._sort()
         self._rates()
@@ -349,6 +352,49 @@ class Fluid:
         if self._limit is not None:  # the rates depend on the boundary velocity
             self._rates()
 
+    def prescribe_motion(self, group: int, motion) -> None:
+        """Drive the MOVING_WALL ``group`` by ``motion(t, ref) -> (pos, vel)``: ``ref`` are
+        the group's particle positions [m] at the time of this call (the reference
+        configuration, rows in particle-id order) and the call returns the positions [m]
+        and velocities [m/s] ``(len(ref), dim)`` at time ``t`` [s] (a wavemaker, a tank
+        under base excitation: ``fluid.motion``). The particles are placed exactly from
+        it at every stage of every step (no drift from integrating the velocity)."""
+        ps = self.ps
+        sel = np.flatnonzero(ps.group == group)
+        if sel.size == 0:
+            raise InputError(f"fluid: no boundary group {group}; groups are 0..{self.n_groups - 1}")
+        if (ps.kind[sel] != Kind.MOVING_WALL).any():
+            raise InputError(f"fluid: group {group} is not a MOVING_WALL group; only those take a prescribed "
+                             "motion (BODY groups are moved by the coupler)")
+        if not callable(motion):
+            raise InputError(f"fluid: a prescribed motion is a callable motion(t, ref) -> (pos, vel), got {motion!r}")
+        order = np.argsort(ps.ids[sel])
+        ids, ref = ps.ids[sel][order], ps.pos[sel][order].copy()
+        pos, vel = motion(0.0 if math.isnan(self.t) else self.t, ref)
+        if np.shape(pos) != ref.shape or np.shape(vel) != ref.shape:
+            raise InputError(f"fluid: the motion of group {group} returned shapes {np.shape(pos)}, "
+                             f"{np.shape(vel)}; expected {ref.shape} each")
+        self._motions[group] = (motion, ids, ref)
+        if self._limit is not None:
+            self._place_prescribed(self.t)
+            self._sort()
+            self._rates()
+
+    def _place_prescribed(self, t: float) -> None:
+        """Place every prescribed group at time ``t`` [s]."""
+        ps = self.ps
+        for group, (motion, ids, ref) in self._motions.items():
+            sel = np.flatnonzero(ps.group == group)
+            sel = sel[np.argsort(ps.ids[sel])]
+            keep = np.isin(ids, ps.ids[sel], assume_unique=True) if sel.size != ids.size else slice(None)
+            pos, vel = motion(t, ref)
+            pos, vel = np.asarray(pos)[keep], np.asarray(vel)[keep]
+            if not (np.isfinite(pos).all() and np.isfinite(vel).all()):
+                raise InstabilityError(f"fluid: the prescribed motion of group {group} gave non-finite "
+                                       f"positions or velocities at t={t:.9g} s")
+            ps.pos[sel] = pos
+            ps.vel[sel] = vel
+
     def set_particle_motion(self, ids, pos, vel) -> None:
         """Place boundary particles given by their ids: positions [m] and velocities
         [m/s], ``(len(ids), dim)`` (a body's particles placed from its pose by the
@@ -404,6 +450,7 @@ class Fluid:
             return loads
         predictor(ps.pos, ps.vel, ps.rho, self._drho, self._acc, ps.kind, c.rho0, dt,
                   aux["pos"], aux["vel"], aux["rho"])
+        self._place_prescribed(self.t + 0.5 * dt)
         self._sort()
         self._rates()
         loads = self._group_sums()
@@ -417,6 +464,7 @@ class Fluid:
         """Count the step, check for non-finite values, re-sort and take the new rates."""
         self.counters.steps += 1
         self.t += dt
+        self._place_prescribed(self.t)
         self._check_finite()
         self._sort()
         self._rates()
