@@ -18,7 +18,9 @@ from typing import Callable
 from cosim.errors import InputError
 
 #: modules that register cases; a new family adds its module here
-CASE_MODULES = ("cosim.validations.catenary", "cosim.validations.cable", "cosim.validations.fluid", "cosim.validations.coupling")
+CASE_MODULES = ("cosim.validations.catenary", "cosim.validations.cable", "cosim.validations.fluid",
+                "cosim.validations.sloshing", "cosim.validations.coupling", "cosim.validations.floating",
+                "cosim.validations.waves")
 
 
 @dataclass(frozen=True)
