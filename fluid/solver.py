@@ -18,6 +18,7 @@ import numpy as np
 
 from cosim.errors import InputError, InstabilityError
 from fluid import equations as eq
+from fluid import mls
 from fluid.integrator import StepLimit, corrector, first_non_finite, predictor, stable_dt, verlet
 from fluid.kernels import alpha_d, kernel_id
 from fluid.neighbours import Grid, sort_by_cell
@@ -105,6 +106,9 @@ class FluidConfig:
     threads: int | None = None
     #: particle count from which the default ``threads`` uses all threads [-]
     parallel_min_particles: int = 20000
+    #: MLS density re-initialisation every ``mls_every`` steps [steps]; 0: never
+    #: (001_14936b82710365b2.txt Eq. 9-12 uses 30; see fluid.mls)
+    mls_every: int = 0
     #: participant name
     name: str = "fluid"
 
@@ -147,6 +151,8 @@ class FluidConfig:
             raise _bad(f"verlet_reset={self.verlet_reset!r}", "give a positive number of steps (40 usual)")
         if not (isinstance(self.dt_max, (int, float)) and self.dt_max > 0):
             raise _bad(f"dt_max={self.dt_max!r} s", "give a positive upper bound or math.inf")
+        if not isinstance(self.mls_every, int) or isinstance(self.mls_every, bool) or self.mls_every < 0:
+            raise _bad(f"mls_every={self.mls_every!r}", "give a number of steps >= 0 (0: off; 30 in 001 §2)")
         if self.threads is not None and (not isinstance(self.threads, int) or self.threads < 1):
             raise _bad(f"threads={self.threads!r}", "give a positive number of threads or None")
         if (self.domain_lo is None) != (self.domain_hi is None):
@@ -461,13 +467,27 @@ class Fluid:
         return loads
 
     def _end_step(self, dt: float) -> None:
-        """Count the step, check for non-finite values, re-sort and take the new rates."""
+        """Count the step, check for non-finite values, re-sort, re-initialise the density
+        every ``mls_every`` steps (on the sorted particles, so the cell list is current) and
+        take the new rates."""
         self.counters.steps += 1
         self.t += dt
         self._place_prescribed(self.t)
         self._check_finite()
         self._sort()
+        if self.config.mls_every and self.counters.steps % self.config.mls_every == 0:
+            self._reinitialise_density()
         self._rates()
+
+    def _reinitialise_density(self) -> None:
+        """Fluid densities from the MLS interpolation (fluid.mls). Verlet's n-1 density is
+        shifted by the same correction so that its leap-frog update keeps it."""
+        c, ps = self.config, self.ps
+        new, _ = mls.reinitialise(ps.pos, ps.rho, ps.mass, ps.kind, self._start, self._grid,
+                                  self._kernel, alpha_d(self._kernel, c.dim, c.h), c.h)
+        if c.integrator == "verlet":
+            self._aux["rho"] += new - ps.rho
+        ps.rho[:] = new
 
     def _sort(self):
         """Sort particles (and the saved n state) by cell; remove those outside the domain."""
