@@ -1,8 +1,16 @@
-"""The per-step book of the loads the coupler put on each body."""
+"""The per-step book of the loads the coupler put on each body.
+
+Outputs: :meth:`Ledger.write_csv` (one row per step and body) and
+:meth:`Ledger.write_h5`, which appends to a :class:`fluid.output.H5Output` one series per
+body, ``/series/ledger/BODY/{t, fluid_force, fluid_torque, mooring_force, mooring_torque,
+gravity}`` (each (n, 3), world frame [N, N m]). Both signatures are stable.
+"""
 
 from __future__ import annotations
 
 import numpy as np
+
+from cosim.errors import InputError
 
 #: the quantities booked for each body and step, world frame (torques about the CoM)
 FIELDS = ("fluid_force", "fluid_torque", "mooring_force", "mooring_torque", "gravity")
@@ -48,3 +56,26 @@ class Ledger:
                 for j, name in enumerate(self.body_names):
                     vals = np.concatenate([a[f][k, j] for f in FIELDS])
                     fh.write(f"{t!r},{name}," + ",".join(repr(float(v)) for v in vals) + "\n")
+
+    def write_h5(self, out, name: str = "ledger", start: int = 0) -> int:
+        """Append steps ``start`` .. ``len(self)`` to ``out`` (a :class:`fluid.output.H5Output`,
+        or a path: a new file) as one series per body, ``NAME/BODY`` with keys ``FIELDS``
+        (each (n, 3) [N, N m]). Returns ``len(self)``: pass it as ``start`` next time to
+        write a long run in pieces (after :meth:`truncate`, rewrite into a new file)."""
+        from fluid.output import H5Output  # h5py only where HDF5 is written
+
+        n = len(self)
+        if not isinstance(start, int) or not 0 <= start <= n:
+            raise InputError(f"Ledger.write_h5: start={start!r}; give a step index in 0 .. {n}")
+        own = not isinstance(out, H5Output)
+        if own:
+            out = H5Output(out, dim=3)
+        try:
+            a = self.arrays()
+            if n > start:
+                for j, body in enumerate(self.body_names):
+                    out.series_block(f"{name}/{body}", a["t"][start:], **{f: a[f][start:, j] for f in FIELDS})
+        finally:
+            if own:
+                out.close()
+        return n
