@@ -1,0 +1,441 @@
+"""Base-excitation motions of rigid boundary groups, for :meth:`fluid.solver.Fluid.prescribe_motion`.
+
+A motion is a rigid translation or rotation driven by one scalar *signal* of time:
+
+- :class:`Translation`: ``pos = ref + s(t) e`` along a unit direction ``e`` (``s`` in m);
+- :class:`Rotation`: ``pos = c + R(θ(t)) (ref - c)`` about an axis through the point ``c``
+  (``θ`` in rad; 2-D: about +y in the x-z plane, as a rolling tank).
+
+Signals give value, first and second derivative at any time, and the derivatives are the
+exact derivatives of the value (no finite differences), so the particle velocities a motion
+returns are the exact time derivatives of the positions it returns:
+
+- :class:`Harmonic`: ``A sin(ω t + φ)``, from its amplitude or its peak acceleration, either
+  as a steady oscillation or started from rest (same acceleration, no jump in velocity);
+- :class:`Tabulated`: a record of displacement, velocity or acceleration against time,
+  interpolated (C2 cubic spline for displacement and velocity, piecewise linear for
+  acceleration as seismic records are sampled) and integrated exactly to displacement;
+- :class:`Ramped`: any signal multiplied by a half-cosine window rising over ``t_ramp``
+  (and optionally falling to zero at ``t_stop``), so that a motion sets off and stops without
+  a jump in velocity or acceleration;
+- :func:`read_at2`: a PEER NGA ``.AT2`` accelerogram (acceleration in g) as a
+  :class:`Tabulated` acceleration record in m/s^2, with :func:`baseline_correct`.
+
+Baseline correction (:func:`baseline_correct`): a recorded accelerogram integrated twice
+drifts (a small offset in acceleration grows quadratically in displacement), so a table
+shaking the tank would wander off and end moving. The seeds do not say how they processed
+their records (003_7c74773681ee080c.txt §4.1 applies the Wenchuan and El Centro records to
+the arch rib without details), so we use the classical polynomial fit to the displacement
+(e.g. Boore 2001, BSSA 91(5) 1199-1211; Boore, Stephens & Joyner 2002, BSSA 92(4)
+1543-1560, the "fit a polynomial to the displacement and remove its second derivative from
+the acceleration" step of the PEER processing): the least-squares polynomial
+``q(t) = sum_{k=2..n} c_k t^k`` is fitted to the displacement subject to ``q(T) = d(T)`` and
+``q'(T) = v(T)``, and removed from displacement, velocity and acceleration. Starting at
+``t^2`` keeps the start at rest; the two constraints make the corrected record end at rest
+exactly; the change of the acceleration is the smooth ``q''(t)``, small where the drift is.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+
+import numpy as np
+from scipy.interpolate import CubicSpline, PPoly
+
+from cosim.errors import InputError
+
+G_STANDARD = 9.80665  #: standard gravity [m/s^2], the unit "g" of accelerograms
+
+QUANTITIES = ("displacement", "velocity", "acceleration")
+
+
+def _finite(name: str, v, positive: bool = False) -> float:
+    ok = isinstance(v, (int, float, np.floating, np.integer)) and not isinstance(v, bool) and math.isfinite(v)
+    if not ok or (positive and v <= 0):
+        raise InputError(f"{name}={v!r}: give a finite{' positive' if positive else ''} number")
+    return float(v)
+
+
+# ---------------------------------------------------------------------------------------- signals
+class Signal:
+    """A scalar function of time ``s(t)`` with exact derivatives. Subclasses define
+    :meth:`state`; ``signal(t)`` returns ``(s, ds/dt)``."""
+
+    def state(self, t: float):
+        """``(s, ds/dt, d2s/dt2)`` at time ``t`` [s]."""
+        raise NotImplementedError
+
+    def __call__(self, t: float):
+        s, ds, _ = self.state(t)
+        return s, ds
+
+
+@dataclass(frozen=True)
+class Harmonic(Signal):
+    """``s(t) = amplitude sin(2 pi t / period + phase)``.
+
+    amplitude: [m] for a translation, [rad] for a rotation (may be negative); period [s];
+    phase [rad]. ``from_rest=True`` subtracts the linear function of t that makes
+    ``s(0) = s'(0) = 0``: the acceleration is the same sinusoid, the motion starts at rest
+    and drifts at the mean velocity ``-A w cos(phase)`` (001_14936b82710365b2.txt §3.1
+    prescribes the ground *acceleration* a0 sin(2 pi t / Tp), Fig. 3).
+    """
+
+    amplitude: float
+    period: float
+    phase: float = 0.0
+    from_rest: bool = False
+
+    def __post_init__(self):
+        _finite("amplitude", self.amplitude)
+        _finite("period [s]", self.period, positive=True)
+        _finite("phase [rad]", self.phase)
+        if not isinstance(self.from_rest, bool):
+            raise InputError(f"from_rest={self.from_rest!r}: give True or False")
+
+    @classmethod
+    def from_peak_acceleration(cls, peak_acceleration: float, period: float, phase: float = 0.0,
+                               from_rest: bool = False) -> "Harmonic":
+        """The signal whose second derivative is ``peak_acceleration sin(2 pi t / period +
+        phase)`` (peak_acceleration [m/s^2] or [rad/s^2], period [s], phase [rad])."""
+        a0 = _finite("peak_acceleration", peak_acceleration)
+        w = 2 * math.pi / _finite("period [s]", period, positive=True)
+        return cls(-a0 / w**2, period, phase, from_rest)
+
+    @property
+    def omega(self) -> float:
+        """Angular frequency [rad/s]."""
+        return 2 * math.pi / self.period
+
+    @property
+    def peak_acceleration(self) -> float:
+        """Amplitude of the second derivative [m/s^2] or [rad/s^2]."""
+        return abs(self.amplitude) * self.omega**2
+
+    def state(self, t):
+        A, w, ph = self.amplitude, self.omega, self.phase
+        s = A * math.sin(w * t + ph)
+        ds = A * w * math.cos(w * t + ph)
+        dds = -A * w * w * math.sin(w * t + ph)
+        if self.from_rest:
+            s -= A * math.sin(ph) + A * w * math.cos(ph) * t
+            ds -= A * w * math.cos(ph)
+        return s, ds, dds
+
+
+@dataclass(frozen=True)
+class Tabulated(Signal):
+    """A record ``values`` against ``times`` [s] of one quantity: "displacement" ([m] or
+    [rad]), "velocity" ([m/s] or [rad/s]) or "acceleration" ([m/s^2] or [rad/s^2]).
+
+    Interpolation: a displacement is a C2 cubic spline through the samples, its velocity
+    and acceleration the spline's derivatives; a velocity is a cubic spline integrated
+    exactly from ``s(t0) = 0``; an acceleration is piecewise linear between samples (how
+    accelerograms are integrated, e.g. Newmark's linear-acceleration assumption) and
+    integrated exactly twice from rest. Before the first sample the signal holds its
+    first value (velocity and acceleration zero); after the last it holds the final
+    displacement with zero velocity; a velocity or acceleration record that does not end
+    at rest therefore stops abruptly: use :func:`baseline_correct`, or a :class:`Ramped`
+    window. ``baseline`` holds the coefficients ``c_k`` of ``q(t - t0) = sum c_k
+    (t - t0)^k`` removed from the record (set by :func:`baseline_correct`).
+    """
+
+    times: tuple
+    values: tuple
+    quantity: str = "displacement"
+    baseline: tuple = ()
+    _pp: tuple = field(default=(), repr=False, compare=False)
+
+    def __post_init__(self):
+        if self.quantity not in QUANTITIES:
+            raise InputError(f"Tabulated: quantity={self.quantity!r}; choose one of {QUANTITIES}")
+        t = np.asarray(self.times, np.float64)
+        v = np.asarray(self.values, np.float64)
+        if t.ndim != 1 or v.shape != t.shape:
+            raise InputError(f"Tabulated: times and values must be 1-D of one length, got shapes "
+                             f"{t.shape} and {v.shape}")
+        if t.size < 2:
+            raise InputError("Tabulated: a record needs at least 2 samples")
+        if not (np.isfinite(t).all() and np.isfinite(v).all()):
+            raise InputError("Tabulated: the record holds non-finite times or values; clean it first")
+        if not (np.diff(t) > 0).all():
+            k = int(np.argmax(np.diff(t) <= 0))
+            raise InputError(f"Tabulated: times must increase strictly; sample {k + 1} (t={t[k + 1]} s) "
+                             f"does not follow t={t[k]} s (sort the record and drop repeated times)")
+        c = np.asarray(self.baseline, np.float64)
+        if c.ndim != 1 or not np.isfinite(c).all():
+            raise InputError(f"Tabulated: baseline must be a flat tuple of finite coefficients, got {self.baseline!r}")
+        if self.quantity == "displacement":
+            d = CubicSpline(t, v)
+        elif self.quantity == "velocity":
+            d = CubicSpline(t, v).antiderivative()
+        else:
+            lin = PPoly(np.vstack([np.diff(v) / np.diff(t), v[:-1]]), t)
+            d = lin.antiderivative(2)
+        object.__setattr__(self, "times", tuple(t.tolist()))
+        object.__setattr__(self, "values", tuple(v.tolist()))
+        object.__setattr__(self, "baseline", tuple(c.tolist()))
+        q = np.polynomial.Polynomial(c if c.size else [0.0])
+        object.__setattr__(self, "_pp", (d, d.derivative(), d.derivative(2), q, q.deriv(), q.deriv(2)))
+
+    @property
+    def duration(self) -> float:
+        """Length of the record [s]."""
+        return self.times[-1] - self.times[0]
+
+    def state(self, t):
+        t0, t1 = self.times[0], self.times[-1]
+        d, v, a, q, dq, ddq = self._pp
+        if t <= t0:
+            return float(d(t0) - q(0.0)), 0.0, 0.0
+        if t >= t1:
+            return float(d(t1) - q(t1 - t0)), 0.0, 0.0
+        tau = t - t0
+        return float(d(t) - q(tau)), float(v(t) - dq(tau)), float(a(t) - ddq(tau))
+
+    def sample(self, t):
+        """``(s, ds/dt, d2s/dt2)`` as arrays at the times ``t`` [s] (vectorised)."""
+        t = np.asarray(t, np.float64)
+        d, v, a, q, dq, ddq = self._pp
+        t0, t1 = self.times[0], self.times[-1]
+        tc = np.clip(t, t0, t1)
+        inside = (t > t0) & (t < t1)
+        tau = tc - t0
+        return (d(tc) - q(tau), np.where(inside, v(tc) - dq(tau), 0.0),
+                np.where(inside, a(tc) - ddq(tau), 0.0))
+
+
+def baseline_correct(record: Tabulated, degree: int = 6) -> Tabulated:
+    """The record with the polynomial baseline ``q(t) = sum_{k=2..degree} c_k (t - t0)^k``
+    removed (module docstring: least-squares fit to the displacement, constrained so that
+    the corrected displacement and velocity are exactly zero at the end; ``degree`` [-]
+    from 3 to 12). Works for any quantity: the constraint and the fit use the exactly
+    integrated displacement and velocity of the record."""
+    if not isinstance(record, Tabulated):
+        raise InputError(f"baseline_correct needs a Tabulated record, got {type(record).__name__}")
+    if not isinstance(degree, int) or not 3 <= degree <= 12:
+        raise InputError(f"baseline_correct: degree={degree!r}; use an integer from 3 to 12 "
+                         "(3 is the least that meets both end conditions, 6 is usual)")
+    plain = replace(record, baseline=())
+    t = np.asarray(plain.times)
+    T = t[-1] - t[0]
+    d, v, _, _, _, _ = plain._pp
+    # fit on a uniform grid (the record's own samples may be uneven), in the scaled time
+    # x = tau / T, so that the normal equations stay well conditioned
+    tau = np.linspace(0.0, T, max(4 * degree, min(t.size, 20000)))
+    x = tau / T
+    k = np.arange(2, degree + 1)
+    B = x[:, None] ** k                       # least-squares basis x^k
+    C = np.vstack([np.ones_like(k, float),    # q(T) = d(T):   sum b_k = d(T)
+                   k.astype(float) / T])      # q'(T) = v(T): sum k b_k / T = v(T)
+    rhs = np.array([float(d(t[-1])), float(v(t[-1]))])
+    n = k.size
+    kkt = np.zeros((n + 2, n + 2))
+    kkt[:n, :n] = 2 * B.T @ B
+    kkt[:n, n:] = C.T
+    kkt[n:, :n] = C
+    sol = np.linalg.solve(kkt, np.concatenate([2 * B.T @ d(tau + t[0]), rhs]))
+    b = sol[:n]
+    coef = np.zeros(degree + 1)
+    coef[2:] = b / T**k                       # back to powers of tau [s]
+    return replace(plain, baseline=tuple(coef.tolist()))
+
+
+@dataclass(frozen=True)
+class Ramped(Signal):
+    """``w(t) s(t)``: the signal ``signal`` faded in by the half-cosine window
+    ``w = (1 - cos(pi (t - t_start) / t_ramp)) / 2`` over ``t_ramp`` [s] from ``t_start``
+    [s], and, if ``t_stop`` [s] is given, faded out over the ``t_ramp`` before ``t_stop``
+    (zero after it). The window has a continuous first derivative, so the motion's
+    velocity is continuous; its acceleration jumps by at most ``(pi/t_ramp)^2 s / 2``."""
+
+    signal: Signal
+    t_ramp: float
+    t_start: float = 0.0
+    t_stop: float | None = None
+
+    def __post_init__(self):
+        if not isinstance(self.signal, Signal):
+            raise InputError(f"Ramped: signal must be a Signal (Harmonic, Tabulated, ...), got {self.signal!r}")
+        _finite("t_ramp [s]", self.t_ramp, positive=True)
+        _finite("t_start [s]", self.t_start)
+        if self.t_stop is not None:
+            _finite("t_stop [s]", self.t_stop)
+            if self.t_stop < self.t_start + 2 * self.t_ramp:
+                raise InputError(f"Ramped: t_stop={self.t_stop} s leaves no room for the ramps in and out "
+                                 f"(needs t_stop >= t_start + 2 t_ramp = {self.t_start + 2 * self.t_ramp} s)")
+
+    def window(self, t):
+        """``(w, dw/dt, d2w/dt2)`` at time ``t`` [s]."""
+        k = math.pi / self.t_ramp
+        if t <= self.t_start or (self.t_stop is not None and t >= self.t_stop):
+            return 0.0, 0.0, 0.0
+        if t < self.t_start + self.t_ramp:
+            x = k * (t - self.t_start)
+            return 0.5 * (1 - math.cos(x)), 0.5 * k * math.sin(x), 0.5 * k * k * math.cos(x)
+        if self.t_stop is not None and t > self.t_stop - self.t_ramp:
+            x = k * (self.t_stop - t)
+            return 0.5 * (1 - math.cos(x)), -0.5 * k * math.sin(x), 0.5 * k * k * math.cos(x)
+        return 1.0, 0.0, 0.0
+
+    def state(self, t):
+        w, dw, ddw = self.window(t)
+        if w == 0.0 and dw == 0.0:
+            return 0.0, 0.0, 0.0
+        s, ds, dds = self.signal.state(t)
+        return w * s, dw * s + w * ds, ddw * s + 2 * dw * ds + w * dds
+
+
+# ---------------------------------------------------------------------------------------- motions
+def _check_signal(owner: str, signal):
+    if not isinstance(signal, Signal):
+        raise InputError(f"{owner}: signal must be a Signal (Harmonic, Tabulated, Ramped), got {signal!r}")
+
+
+def _check_ref(owner: str, ref: np.ndarray, dim: int) -> np.ndarray:
+    ref = np.asarray(ref, np.float64)
+    if ref.ndim != 2 or ref.shape[1] != dim:
+        raise InputError(f"{owner}: reference positions must be (N, {dim}) for this {dim}-D motion, "
+                         f"got shape {ref.shape}; give the direction/axis with as many components as the fluid's dim")
+    return ref
+
+
+@dataclass(frozen=True)
+class Translation:
+    """Rigid translation ``pos = ref + s(t) e``, ``vel = s'(t) e`` along the unit vector of
+    ``direction`` (2 components (x, z) in 2-D, 3 in 3-D; any length, it is normalised);
+    ``signal`` in m. A callable for :meth:`fluid.solver.Fluid.prescribe_motion`."""
+
+    direction: tuple
+    signal: Signal
+
+    def __post_init__(self):
+        e = np.asarray(self.direction, np.float64)
+        if e.shape not in ((2,), (3,)) or not np.isfinite(e).all() or np.linalg.norm(e) == 0:
+            raise InputError(f"Translation: direction={self.direction!r}; give 2 (x, z) or 3 (x, y, z) "
+                             "finite components, not all zero")
+        _check_signal("Translation", self.signal)
+        object.__setattr__(self, "direction", tuple((e / np.linalg.norm(e)).tolist()))
+
+    def __call__(self, t: float, ref):
+        e = np.asarray(self.direction)
+        ref = _check_ref("Translation", ref, e.size)
+        s, ds = self.signal(t)
+        return ref + s * e, np.broadcast_to(ds * e, ref.shape).copy()
+
+    def acceleration(self, t: float) -> np.ndarray:
+        """Acceleration of every point [m/s^2] (dim,)."""
+        return self.signal.state(t)[2] * np.asarray(self.direction)
+
+    def ramped(self, t_ramp: float, t_start: float = 0.0, t_stop: float | None = None) -> "Translation":
+        """This motion faded in (and out) by :class:`Ramped` (times in s)."""
+        return replace(self, signal=Ramped(self.signal, t_ramp, t_start, t_stop))
+
+
+def _rotation_matrix(axis: np.ndarray, angle: float) -> np.ndarray:
+    """Right-handed rotation by ``angle`` [rad] about the unit ``axis`` (Rodrigues)."""
+    K = np.array([[0.0, -axis[2], axis[1]], [axis[2], 0.0, -axis[0]], [-axis[1], axis[0], 0.0]])
+    return np.eye(3) + math.sin(angle) * K + (1 - math.cos(angle)) * K @ K
+
+
+@dataclass(frozen=True)
+class Rotation:
+    """Rigid rotation by the angle ``signal`` θ(t) [rad] about an axis through ``point``
+    [m]: ``pos = c + R(θ) (ref - c)``, ``vel = θ' a x (pos - c)``, right-handed about the
+    unit ``axis``. 2-D: ``point`` is (x, z) and the axis is +y (leave ``axis`` None); a
+    positive θ turns +x towards -z: ``x' = x cos θ + z sin θ``, ``z' = -x sin θ + z cos θ``
+    (relative to the point). 3-D: ``point`` (x, y, z) and ``axis`` (3 components, any
+    length). A callable for :meth:`fluid.solver.Fluid.prescribe_motion`."""
+
+    point: tuple
+    signal: Signal
+    axis: tuple | None = None
+
+    def __post_init__(self):
+        c = np.asarray(self.point, np.float64)
+        if c.shape not in ((2,), (3,)) or not np.isfinite(c).all():
+            raise InputError(f"Rotation: point={self.point!r}; give (x, z) in 2-D or (x, y, z) in 3-D [m]")
+        _check_signal("Rotation", self.signal)
+        if c.size == 2:
+            if self.axis is not None and not np.allclose(np.asarray(self.axis, float) / np.linalg.norm(self.axis),
+                                                         (0.0, 1.0, 0.0)):
+                raise InputError(f"Rotation: axis={self.axis!r} with a 2-D point; 2-D rotations are about +y "
+                                 "(leave axis None, or give a 3-D point)")
+            axis = (0.0, 1.0, 0.0)
+        else:
+            a = np.asarray(self.axis if self.axis is not None else (), np.float64)
+            if a.shape != (3,) or not np.isfinite(a).all() or np.linalg.norm(a) == 0:
+                raise InputError(f"Rotation: axis={self.axis!r}; a 3-D rotation needs an axis of 3 finite "
+                                 "components, not all zero")
+            axis = tuple((a / np.linalg.norm(a)).tolist())
+        object.__setattr__(self, "point", tuple(c.tolist()))
+        object.__setattr__(self, "axis", axis)
+
+    def __call__(self, t: float, ref):
+        c = np.asarray(self.point)
+        ref = _check_ref("Rotation", ref, c.size)
+        th, dth = self.signal(t)
+        a = np.asarray(self.axis)
+        if c.size == 2:
+            cs, sn = math.cos(th), math.sin(th)
+            r = ref - c
+            x = cs * r[:, 0] + sn * r[:, 1]
+            z = -sn * r[:, 0] + cs * r[:, 1]
+            pos = np.stack([x, z], axis=1) + c
+            # omega = dth * (+y): omega x r = (dth r_z, -dth r_x) in (x, z)
+            vel = np.stack([dth * z, -dth * x], axis=1)
+            return pos, vel
+        r = (ref - c) @ _rotation_matrix(a, th).T
+        return c + r, dth * np.cross(a, r)
+
+    def ramped(self, t_ramp: float, t_start: float = 0.0, t_stop: float | None = None) -> "Rotation":
+        """This motion faded in (and out) by :class:`Ramped` (times in s)."""
+        return replace(self, signal=Ramped(self.signal, t_ramp, t_start, t_stop))
+
+
+# ---------------------------------------------------------------------------------------- records
+def read_at2(path, baseline_degree: int | None = 6) -> Tabulated:
+    """A PEER NGA ``.AT2`` accelerogram as a :class:`Tabulated` acceleration record [m/s^2].
+
+    Format: four header lines (title; event, date, station, component; "ACCELERATION TIME
+    SERIES IN UNITS OF G"; a line with ``NPTS= n, DT= dt SEC`` (also the older "n dt"
+    form)), then the n accelerations in g, any number per line. Sample k lies at
+    ``t = k dt`` [s], k = 0..n-1, and the ground starts at rest at t = 0.
+    ``baseline_degree`` [-]: the degree of :func:`baseline_correct` (None: the raw
+    record)."""
+    p = Path(path)
+    if not p.is_file():
+        raise InputError(f"read_at2: no file {p}")
+    lines = p.read_text(errors="replace").splitlines()
+    if len(lines) < 5:
+        raise InputError(f"read_at2: {p} has {len(lines)} lines; an AT2 file has 4 header lines and data")
+    head = lines[3].upper().replace(",", " ").replace("=", " = ")
+    npts = dt = None
+    tok = head.split()
+    for i, w in enumerate(tok):
+        if w == "NPTS" and i + 2 < len(tok):
+            npts = tok[i + 2]
+        if w == "DT" and i + 2 < len(tok):
+            dt = tok[i + 2]
+    if npts is None or dt is None:  # old form: "n dt" as the first two numbers
+        nums = [w for w in tok if w.replace(".", "", 1).replace("E-", "", 1).replace("E+", "", 1).isdigit()]
+        if len(nums) >= 2:
+            npts, dt = nums[0], nums[1]
+    try:
+        n, dt = int(float(npts)), float(dt)
+    except (TypeError, ValueError):
+        raise InputError(f"read_at2: line 4 of {p} should give NPTS and DT, e.g. 'NPTS=  4000, DT= .0050 SEC'; "
+                         f"got {lines[3]!r}") from None
+    if n < 2 or not (dt > 0 and math.isfinite(dt)):
+        raise InputError(f"read_at2: {p} gives NPTS={n}, DT={dt} s; need NPTS >= 2 and DT > 0")
+    try:
+        acc = np.array(" ".join(lines[4:]).replace(",", " ").split(), np.float64)
+    except ValueError as exc:
+        raise InputError(f"read_at2: a data line of {p} is not a list of numbers ({exc})") from None
+    if acc.size < n:
+        raise InputError(f"read_at2: {p} declares NPTS={n} but holds {acc.size} values")
+    acc = acc[:n] * G_STANDARD
+    rec = Tabulated(tuple((dt * np.arange(n)).tolist()), tuple(acc.tolist()), "acceleration")
+    return rec if baseline_degree is None else baseline_correct(rec, baseline_degree)
