@@ -220,6 +220,10 @@ class Fluid:
         self._loads = (np.zeros((self.n_groups, c.dim)), np.zeros((self.n_groups, 3 if c.dim == 3 else 1)))
         #: prescribed motions: group -> (motion, ids sorted, reference positions in id order)
         self._motions: dict[int, tuple] = {}
+        #: called as ``boundary_correction(ps, start, grid)`` before every rate evaluation, to
+        #: set boundary-particle densities (e.g. ``fluid.boundary_correction.MDBC``); None: plain
+        #: dynamic boundaries
+        self.boundary_correction = None
 
     # ------------------------------------------------------------------ protocol
     def _threads(self) -> int:
@@ -517,6 +521,8 @@ class Fluid:
         c = self.config
         ps = self.ps
         n = ps.n
+        if self.boundary_correction is not None:
+            self.boundary_correction(ps, self._start, self._grid)
         self._drho, self._acc, visc, self._cs = eq.evaluate(
             ps.pos, ps.vel, ps.rho, ps.mass, ps.kind, self._start, self._grid, self._kernel,
             self._prm, c.rho0, c.speed_of_sound, c.gamma, ps.p)
