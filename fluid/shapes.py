@@ -1,0 +1,250 @@
+"""Geometry builders beyond boxes: 2-D polygons filled with fluid or used as walls, the
+tank with one inclined side (001_14936b82710365b2.txt §3.2) and the cylindrical tank
+(001_14936b82710365b2.txt §3.3), on the lattice convention of :mod:`fluid.geometry`
+(particles at ``(i + 1/2) dx`` from the origin).
+
+Walls along a slanted or curved surface are not taken from the lattice (a staircase, which
+001 §3.2 names as the cause of its "uneven particle distribution on the sloping walls"):
+each wall layer ``k = 0..layers-1`` is the boundary offset by ``(k + 1/2) dx`` away from the
+fluid and sampled at a spacing as close to ``dx`` as a whole number of intervals allows.
+Fluid comes from the lattice; fluid that overlaps a wall is removed and counted by
+:func:`fluid.geometry.assemble`.
+
+2-D shapes live in the x-z plane; polygons are (M, 2) vertex arrays [m] in either
+orientation.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from scipy.spatial import cKDTree
+
+from cosim.errors import InputError
+from fluid.geometry import Built, assemble, block
+from fluid.particles import Kind
+
+
+def _vertices(vertices, closed: bool) -> np.ndarray:
+    v = np.asarray(vertices, np.float64)
+    need = 3 if closed else 2
+    if v.ndim != 2 or v.shape[1] != 2 or len(v) < need or not np.isfinite(v).all():
+        raise InputError(f"a {'polygon' if closed else 'polyline'} needs at least {need} finite (x, z) "
+                         f"vertices as an (M, 2) array [m], got shape {np.shape(vertices)}")
+    seg = np.diff(np.vstack([v, v[:1]]) if closed else v, axis=0)
+    if (np.hypot(seg[:, 0], seg[:, 1]) == 0).any():
+        raise InputError("repeated consecutive vertex: every edge needs a positive length")
+    return v
+
+
+def signed_area(vertices) -> float:
+    """Area [m^2] of a closed polygon, positive when counter-clockwise in (x, z)."""
+    v = _vertices(vertices, True)
+    x, z = v[:, 0], v[:, 1]
+    return 0.5 * float(np.sum(x * np.roll(z, -1) - np.roll(x, -1) * z))
+
+
+def inside_polygon(points, vertices) -> np.ndarray:
+    """(N,) bool: which (x, z) points [m] lie inside the closed polygon (even-odd rule)."""
+    v = _vertices(vertices, True)
+    p = np.asarray(points, np.float64)
+    x, z = p[:, 0, None], p[:, 1, None]
+    x0, z0 = v[:, 0], v[:, 1]
+    x1, z1 = np.roll(x0, -1), np.roll(z0, -1)
+    crosses = (z0 > z) != (z1 > z)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        xc = x0 + (z - z0) * (x1 - x0) / (z1 - z0)
+    return (np.count_nonzero(crosses & (x < xc), axis=1) % 2) == 1
+
+
+def polygon_fluid(vertices, dx: float) -> np.ndarray:
+    """Lattice points (spacing ``dx`` [m]) inside the closed polygon: (N, 2) [m]. Each
+    stands for ``dx^2`` of fluid; the count times ``dx^2`` approaches the area with an
+    error of order perimeter x dx."""
+    v = _vertices(vertices, True)
+    if not dx > 0:
+        raise InputError(f"particle spacing dx must be positive, got {dx} m")
+    lo = np.floor(v.min(0) / dx) * dx
+    hi = np.ceil(v.max(0) / dx) * dx
+    pts = block(lo, hi, dx)
+    return pts[inside_polygon(pts, v)]
+
+
+def _offset_polyline(v: np.ndarray, d: float, closed: bool, left: bool) -> np.ndarray:
+    """The polyline ``v`` moved by ``d`` [m] along its left (or right) normal, with mitred
+    corners (each vertex where the neighbouring offset edges meet)."""
+    seg = np.diff(np.vstack([v, v[:1]]) if closed else v, axis=0)
+    t = seg / np.hypot(seg[:, 0], seg[:, 1])[:, None]
+    nrm = np.stack([-t[:, 1], t[:, 0]], axis=1) * (1.0 if left else -1.0)
+    m = len(v)
+    out = np.empty_like(v)
+    for i in range(m):
+        e_in = (i - 1) % len(seg) if (closed or i > 0) else None
+        e_out = i if (closed or i < m - 1) else None
+        if e_in is None or e_out is None:  # an open end: move along its only edge's normal
+            out[i] = v[i] + d * nrm[e_out if e_in is None else e_in]
+            continue
+        n1, n2 = nrm[e_in], nrm[e_out]
+        c = 1.0 + float(n1 @ n2)  # miter: v + d (n1 + n2) / (1 + n1.n2)
+        if c < 1e-6:
+            raise InputError(f"the edges at vertex {v[i]} fold back on themselves; no wall can follow them")
+        out[i] = v[i] + d * (n1 + n2) / c
+    return out
+
+
+def _sample_polyline(v: np.ndarray, dx: float, closed: bool) -> np.ndarray:
+    """Points along every edge at the spacing nearest ``dx`` [m] that divides the edge,
+    starting at its first vertex (so every corner holds exactly one point; an open
+    polyline's last vertex is added)."""
+    ends = np.vstack([v, v[:1]]) if closed else v
+    out = []
+    for a, b in zip(ends[:-1], ends[1:]):
+        n = max(1, round(math.hypot(*(b - a)) / dx))
+        s = np.arange(n) / n
+        out.append(a + s[:, None] * (b - a))
+    if not closed:
+        out.append(v[-1:])
+    return np.concatenate(out)
+
+
+def polyline_wall(vertices, dx: float, layers: int = 3, closed: bool = True,
+                  outside: bool = True) -> np.ndarray:
+    """Wall particles along a polyline (open, e.g. a tank's bottom and sides) or closed
+    polygon: ``layers`` [-] layers at ``(k + 1/2) dx`` from it, each sampled at ~``dx``
+    [m]. For a closed polygon ``outside`` puts the wall outside (a tank around the polygon's
+    fluid) or inside (a solid obstacle: fluid around it). An open polyline is walked from
+    its first vertex: the fluid is on its left (counter-clockwise, like a tank's bottom
+    walked left to right), the wall on its right."""
+    if int(layers) != layers or layers < 1:
+        raise InputError(f"a wall needs at least one layer, got layers={layers}")
+    if not dx > 0:
+        raise InputError(f"particle spacing dx must be positive, got {dx} m")
+    v = _vertices(vertices, closed)
+    if closed:
+        ccw = signed_area(v) > 0
+        left = ccw != outside  # the left normal of a ccw polygon points inside
+    else:
+        left = False
+    return np.concatenate([_sample_polyline(_offset_polyline(v, (k + 0.5) * dx, closed, left), dx, closed)
+                           for k in range(int(layers))])
+
+
+def polygon_tank(vertices, dx: float, fill_level: float | None = None, layers: int = 3,
+                 rho0: float = 1000.0) -> Built:
+    """A 2-D container whose inner (wetted) outline is the closed polygon ``vertices``
+    [m], walled all round, filled with fluid up to ``fill_level`` [m] (None: full). Walls
+    are group 0, FIXED_WALL."""
+    v = _vertices(vertices, True)
+    fl = polygon_fluid(v, dx)
+    if fill_level is not None:
+        fl = fl[fl[:, 1] < fill_level]
+    return assemble(2, dx, rho0, fl, [(polyline_wall(v, dx, layers, True, True), Kind.FIXED_WALL, 0)])
+
+
+def inclined_tank_outline(length: float, height: float, angle_deg: float) -> np.ndarray:
+    """Inner outline (x, z) [m] of a tank with a flat bottom of ``length`` [m] from x = 0,
+    a vertical left side and a right side inclined ``angle_deg`` [deg] from the vertical,
+    leaning outwards (the water lies over the slope, as on the upstream face of Chwang's
+    dam), sides ``height`` [m] high; open top. Returned as the open polyline top-left ->
+    bottom-left -> bottom-right -> top-right."""
+    if not 0 <= angle_deg < 90:
+        raise InputError(f"the inclined side's angle from the vertical must be in [0, 90) deg, got {angle_deg}")
+    if not (length > 0 and height > 0):
+        raise InputError(f"tank length {length} m and height {height} m must be positive")
+    top_right = length + height * math.tan(math.radians(angle_deg))
+    return np.array([[0.0, height], [0.0, 0.0], [length, 0.0], [top_right, height]])
+
+
+def inclined_tank(dim: int, dx: float, angle_deg: float, length: float = 3.0, depth: float = 1.0,
+                  height: float = 1.5, width: float = 1.0, layers: int = 3,
+                  rho0: float = 1000.0) -> Built:
+    """The tank of 001_14936b82710365b2.txt §3.2: the 3.0 x 1.0 x 1.5 m tank of §3.1
+    (``length`` x ``width`` x ``height`` [m]) with its right side inclined ``angle_deg``
+    [deg] from the vertical (15, 30, 45 in the paper), water ``depth`` [m] (1.0).
+    The text gives no figure dimensions for the slope; we keep the bottom ``length`` and let
+    the inclined side lean outwards, so that the water lies over it (Chwang's inclined dam
+    face, which the paper compares with). 2-D: the x-z section; 3-D: extruded over
+    ``width`` along y with ``layers`` lattice wall layers front and back. Walls group 0,
+    FIXED_WALL, open top."""
+    if dim not in (2, 3):
+        raise InputError(f"dim must be 2 or 3, got {dim}")
+    if not 0 < depth <= height:
+        raise InputError(f"the water depth {depth} m must lie in (0, height={height} m]")
+    outline = inclined_tank_outline(length, height, angle_deg)
+    closed = np.vstack([outline[1:], outline[:1]])  # bottom-left, bottom-right, top-right, top-left
+    fl2 = polygon_fluid(closed, dx)
+    fl2 = fl2[fl2[:, 1] < depth]
+    w2 = polyline_wall(outline, dx, layers, closed=False)  # walked down, across, up: water on the left
+    if dim == 2:
+        return assemble(2, dx, rho0, fl2, [(w2, Kind.FIXED_WALL, 0)])
+    if not width > 0:
+        raise InputError("a 3-D tank needs a width > 0 m along y")
+    ny = int(math.floor(width / dx + 1e-9))
+    ys = dx * (0.5 + np.arange(ny))
+    yw = np.concatenate([ys, -dx * (0.5 + np.arange(layers)), width + dx * (0.5 + np.arange(layers))])
+    # front and back walls cover the wetted section (lattice points clear of the side
+    # walls' particles, as fluid would be) and the side walls' section
+    inner = polygon_fluid(closed, dx)
+    d, _ = cKDTree(w2).query(inner, k=1, distance_upper_bound=0.9 * dx)
+    sect = np.vstack([inner[~(d < 0.9 * dx)], w2])
+    walls = np.vstack([_extrude(w2, ys), _extrude(sect, yw[ny:])])
+    return assemble(3, dx, rho0, _extrude(fl2, ys), [(walls, Kind.FIXED_WALL, 0)])
+
+
+def _extrude(xz: np.ndarray, ys: np.ndarray) -> np.ndarray:
+    """(x, z) points repeated at every y of ``ys``: (len(xz) * len(ys), 3) as (x, y, z)."""
+    n = len(xz)
+    out = np.empty((n * len(ys), 3))
+    out[:, 0] = np.tile(xz[:, 0], len(ys))
+    out[:, 1] = np.repeat(ys, n)
+    out[:, 2] = np.tile(xz[:, 1], len(ys))
+    return out
+
+
+def cylinder_tank(dx: float, diameter: float = 2.0, depth: float = 0.6, height: float = 1.0,
+                  layers: int = 3, rho0: float = 1000.0) -> Built:
+    """The vertical cylindrical tank of 001_14936b82710365b2.txt §3.3 (3-D): inner
+    ``diameter`` [m] (2.0), wall ``height`` [m] (1.0), water ``depth`` [m] (0.6), axis
+    along z through the origin, bottom at z = 0, open top.
+
+    Fluid: at every lattice height, concentric rings at radii ``(j + 1/2) dr``
+    (``dr = R / round(R / dx)``, = dx when R is a multiple of dx), each ring sampled at ~dx
+    round its circumference: every particle stands for the same volume ~dx^3 (the "equal
+    volume" distribution of 001 §3.3) and the count x dx^3 equals pi R^2 depth up to the
+    rounding of the ring counts (the midpoint rule sum_j 2 pi r_j dr is exactly pi R^2),
+    while a Cartesian lattice cut at r < R and cleared of the wall would lose a ring of
+    ~0.4 dx (4 % at D = 2 m, dx = 5 cm). Side wall: ``layers`` shells at ``R + (k + 1/2) dx``
+    sampled the same way; bottom: ``layers`` lattice layers of the disc that covers the
+    shells. Walls group 0, FIXED_WALL."""
+    if not (diameter > 0 and 0 < depth <= height):
+        raise InputError(f"need diameter > 0 and 0 < depth <= height; got {diameter}, {depth}, {height} m")
+    if int(layers) != layers or layers < 1:
+        raise InputError(f"a wall needs at least one layer, got layers={layers}")
+    if not 0 < dx <= 0.25 * diameter:
+        raise InputError(f"dx={dx} m: give a positive spacing of at most a quarter of the diameter")
+    R = 0.5 * diameter
+    nr = max(1, round(R / dx))
+    dr = R / nr
+    fl_xy = np.vstack([_ring((j + 0.5) * dr, dx, j % 2) for j in range(nr)])
+    fluid = _stack(fl_xy, dx * (0.5 + np.arange(int(math.floor(depth / dx + 1e-9)))))
+    zs = dx * (0.5 + np.arange(int(math.floor(height / dx + 1e-9))))
+    shells = [_stack(_ring(R + (k + 0.5) * dx, dx, (nr + k) % 2), zs) for k in range(int(layers))]
+    Ro = R + layers * dx
+    n = int(math.ceil(Ro / dx))
+    disc = block([-n * dx, -n * dx], [n * dx, n * dx], dx)
+    bottom = _stack(disc[np.hypot(disc[:, 0], disc[:, 1]) < Ro], -dx * (0.5 + np.arange(int(layers))))
+    return assemble(3, dx, rho0, fluid, [(np.vstack(shells + [bottom]), Kind.FIXED_WALL, 0)])
+
+
+def _ring(r: float, dx: float, stagger: int) -> np.ndarray:
+    """Points on the circle of radius ``r`` [m] at the spacing nearest ``dx`` [m]; every
+    other ring turned by half a spacing so that neighbouring rings do not line up."""
+    m = max(3, round(2 * math.pi * r / dx))
+    phi = 2 * math.pi * (np.arange(m) + 0.5 * stagger) / m
+    return np.column_stack([r * np.cos(phi), r * np.sin(phi)])
+
+
+def _stack(xy: np.ndarray, zs: np.ndarray) -> np.ndarray:
+    """(x, y) points repeated at every height of ``zs``: (len(xy) * len(zs), 3)."""
+    return np.column_stack([np.tile(xy, (len(zs), 1)), np.repeat(zs, len(xy))])
