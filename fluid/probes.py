@@ -1,0 +1,336 @@
+"""Probes of the SPH fluid: pressure at points, free-surface elevation at gauges, the load
+on a boundary group, the fluid's energies.
+
+Every probe has a ``name`` (the series it is written to), ``columns`` (the keys of its
+sample) and ``sample(fluid) -> dict`` mapping each column to a float or a 1-D array of
+fixed length, ready for :meth:`fluid.output.H5Output.series` and :func:`fluid.run.run`.
+The functional forms (:func:`pressure_at`, :func:`surface_elevation`,
+:func:`fluid_energies`) read the same quantities once.
+
+The per-point kernels gather over the fluid's own cell list (the particles are sorted by
+cell after every step), so a probe costs a few neighbour rows per point, not a pass over
+all particles.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit, prange
+
+from cosim.errors import InputError
+from fluid.kernels import alpha_d, w_value
+from fluid.neighbours import cell_coords, row_range
+from fluid.particles import Kind
+
+_OPTS = dict(fastmath=True, cache=True, error_model="numpy")
+_FLUID = int(Kind.FLUID)
+
+
+def _cells(fluid):
+    """The fluid's cell list: (grid, start). Probes read the fluid's sorted particles."""
+    if fluid.limit is None:
+        raise InputError("probe: the fluid is not initialised; call fluid.initialize(t0) first")
+    return fluid._grid, fluid._start  # same package: the cell list the solver keeps sorted
+
+
+# ---------------------------------------------------------------------- pressure
+@njit(**_OPTS)  # serial: a handful of probe points, threads would cost more than they gain
+def _idw_pressure(pts, pos, kind, p, start, lo, inv_cell, nx, ny, nz, reach, R2, eps2, out):
+    """Inverse-distance average of the fluid pressures within ``sqrt(R2)`` of each point
+    (001_14936b82710365b2.txt Eq. 15); 0 where no fluid is near (a dry point)."""
+    three = pos.shape[1] == 3
+    zc = pos.shape[1] - 1
+    dys = 2 * reach + 1 if three else 1
+    for a in range(pts.shape[0]):
+        xa = pts[a, 0]
+        za = pts[a, zc]
+        ya = pts[a, 1] if three else 0.0
+        cx, cy, cz = cell_coords(xa, ya, za, lo, inv_cell, three, nx, ny, nz)
+        num = 0.0
+        den = 0.0
+        for dz in range(-reach, reach + 1):
+            for k in range(dys):
+                dy = k - reach if three else 0
+                j0, j1 = row_range(cx, cy, cz, dy, dz, nx, ny, nz, start, reach)
+                for b in range(j0, j1):
+                    rx = xa - pos[b, 0]
+                    rz = za - pos[b, zc]
+                    ry = ya - pos[b, 1] if three else 0.0
+                    r2 = rx * rx + ry * ry + rz * rz
+                    # 0/1 mask, no branch; eps2 keeps a point on a particle finite
+                    w = ((kind[b] == _FLUID) & (r2 < R2)) / math.sqrt(r2 + eps2)
+                    num += w * p[b]
+                    den += w
+        out[a] = num / den if den > 0.0 else 0.0
+
+
+def _points(points, dim: int, what: str) -> np.ndarray:
+    pts = np.ascontiguousarray(points, dtype=np.float64)
+    if pts.ndim == 1 and pts.size == dim:
+        pts = pts[None, :]
+    if pts.ndim != 2 or pts.shape[1] != dim or pts.shape[0] == 0 or not np.isfinite(pts).all():
+        raise InputError(f"{what}: points have shape {np.shape(points)}; give finite (M, {dim}) "
+                         f"positions [m] ({'x, z' if dim == 2 else 'x, y, z'})")
+    return pts
+
+
+def _inside(fluid, pts, what: str) -> None:
+    grid, _ = _cells(fluid)
+    lo = np.asarray(grid.lo)
+    hi = lo + grid.cell * np.array([grid.shape[0], grid.shape[2]] if lo.size == 2 else grid.shape)
+    bad = ~np.all((pts >= lo) & (pts < hi), axis=1)
+    if bad.any():
+        i = int(np.argmax(bad))
+        raise InputError(f"{what}: point {pts[i]} m lies outside the fluid's domain {lo} .. {hi} m; "
+                         "move it inside (or enlarge domain_lo/domain_hi)")
+
+
+def pressure_at(fluid, points) -> np.ndarray:
+    """Pressure [Pa] at ``points`` (M, dim) [m]: the inverse-distance average of the fluid
+    pressures within the kernel support 2h (001_14936b82710365b2.txt Eq. 15), exactly as
+    :meth:`fluid.solver.Fluid.wall_pressure` reports it at boundary particles; 0 at a dry
+    point. On a wall, put the point on the wall face or on the first boundary layer."""
+    c = fluid.config
+    pts = _points(points, c.dim, "pressure_at")
+    _inside(fluid, pts, "pressure_at")
+    grid, start = _cells(fluid)
+    ps = fluid.ps
+    out = np.empty(pts.shape[0])
+    nx, ny, nz = grid.shape
+    _idw_pressure(pts, ps.pos, ps.kind, ps.p, start, np.asarray(grid.lo, np.float64), 1.0 / grid.cell,
+                  nx, ny, nz, grid.reach, (2.0 * c.h) ** 2, 1e-12 * c.h * c.h, out)
+    return out
+
+
+class PressureProbe:
+    """Pressure [Pa] at fixed points ``points`` (M, dim) [m] (see :func:`pressure_at`).
+    Column ``p`` (M,)."""
+
+    columns = ("p",)
+
+    def __init__(self, points, name: str = "pressure"):
+        pts = np.asarray(points, dtype=np.float64)
+        if pts.ndim == 1:
+            pts = pts[None, :]
+        if pts.ndim != 2 or pts.shape[1] not in (2, 3) or not np.isfinite(pts).all():
+            raise InputError(f"PressureProbe: points have shape {np.shape(points)}; give finite (M, 2) "
+                             "(x, z) or (M, 3) (x, y, z) positions [m]")
+        self.points = pts
+        self.name = name
+
+    def sample(self, fluid) -> dict:
+        return {"p": pressure_at(fluid, self.points)}
+
+
+# ---------------------------------------------------------------------- free surface
+@njit(**_OPTS)
+def _fraction(z, dh2, zb, vb, kernel, h, ad):
+    """Kernel-interpolated fluid fraction ``sum_b V_b W(r_b)`` at height ``z`` [m] of the
+    gauge line; ``dh2`` the squared horizontal distances of the candidates."""
+    c = 0.0
+    for b in range(zb.shape[0]):
+        dz = z - zb[b]
+        c += vb[b] * w_value(kernel, math.sqrt(dh2[b] + dz * dz) / h, ad)
+    return c
+
+
+@njit(**_OPTS)  # serial: a handful of gauges
+def _surface(gauges, pos, kind, mass, rho, start, lo, inv_cell, nx, ny, nz, reach, kernel, h, ad,
+             step, out):
+    """Highest z where the fluid fraction crosses 0.5 going down each gauge's vertical
+    line; NaN where it never does (a dry gauge)."""
+    three = pos.shape[1] == 3
+    zc = pos.shape[1] - 1
+    dys = 2 * reach + 1 if three else 1
+    R2 = 4.0 * h * h
+    for a in range(gauges.shape[0]):
+        gx = gauges[a, 0]
+        gy = gauges[a, 1] if three else 0.0
+        cx, cy, cz0 = cell_coords(gx, gy, lo[zc], lo, inv_cell, three, nx, ny, nz)
+        # the fluid particles within 2h of the line: two passes, count then fill
+        n = 0
+        for cz in range(nz):
+            for k in range(dys):
+                dy = k - reach if three else 0
+                j0, j1 = row_range(cx, cy, cz, dy, 0, nx, ny, nz, start, reach)
+                for b in range(j0, j1):
+                    rx = gx - pos[b, 0]
+                    ry = gy - pos[b, 1] if three else 0.0
+                    if kind[b] == _FLUID and rx * rx + ry * ry < R2:
+                        n += 1
+        if n == 0:
+            out[a] = np.nan
+            continue
+        dh2 = np.empty(n)
+        zb = np.empty(n)
+        vb = np.empty(n)
+        n = 0
+        for cz in range(nz):
+            for k in range(dys):
+                dy = k - reach if three else 0
+                j0, j1 = row_range(cx, cy, cz, dy, 0, nx, ny, nz, start, reach)
+                for b in range(j0, j1):
+                    rx = gx - pos[b, 0]
+                    ry = gy - pos[b, 1] if three else 0.0
+                    if kind[b] == _FLUID and rx * rx + ry * ry < R2:
+                        dh2[n] = rx * rx + ry * ry
+                        zb[n] = pos[b, zc]
+                        vb[n] = mass[b] / rho[b]
+                        n += 1
+        # march down from above every candidate's support (fraction 0) in steps of
+        # ``step`` until the fraction reaches 0.5, then bisect the last step
+        z_hi = zb.max() + 2.0 * h
+        z_end = zb.min() - 2.0 * h
+        out[a] = np.nan
+        while z_hi > z_end:
+            z_lo = z_hi - step
+            if _fraction(z_lo, dh2, zb, vb, kernel, h, ad) >= 0.5:
+                for _ in range(40):
+                    zm = 0.5 * (z_lo + z_hi)
+                    if _fraction(zm, dh2, zb, vb, kernel, h, ad) >= 0.5:
+                        z_lo = zm
+                    else:
+                        z_hi = zm
+                out[a] = 0.5 * (z_lo + z_hi)
+                break
+            z_hi = z_lo
+
+
+def _gauges(gauges, dim: int, what: str) -> np.ndarray:
+    g = np.asarray(gauges, dtype=np.float64)
+    if dim == 2:
+        ok = g.ndim <= 1 or (g.ndim == 2 and g.shape[1] == 1)
+        g = g.reshape(-1, 1)
+    else:
+        if g.ndim == 1 and g.size == 2:
+            g = g[None, :]
+        ok = g.ndim == 2 and g.shape[1] == 2
+    if not ok or g.shape[0] == 0 or not np.isfinite(g).all():
+        raise InputError(f"{what}: gauges have shape {np.shape(gauges)}; give finite "
+                         + ("x positions [m], shape (M,)" if dim == 2 else "(x, y) positions [m], shape (M, 2)"))
+    return np.ascontiguousarray(g)
+
+
+def surface_elevation(fluid, gauges) -> np.ndarray:
+    """Free-surface height z [m] at each gauge: 2-D ``gauges`` are x positions (M,) [m],
+    3-D (x, y) positions (M, 2) [m]. The surface is the highest z on the gauge's vertical
+    line where the kernel-interpolated fluid fraction ``sum_b (m_b/rho_b) W(r_b)`` crosses
+    0.5 (a flat surface lies dx/2 above its top particle layer, where a half-space of fluid
+    fills half the kernel). Isolated drops do not count (one particle fills at most ~0.3 of
+    the kernel). NaN where no fluid lies within 2h of the line. Located to dx/4, then bisected."""
+    c = fluid.config
+    g = _gauges(gauges, c.dim, "surface_elevation")
+    grid, start = _cells(fluid)
+    lo = np.asarray(grid.lo, np.float64)
+    n_h = np.array(grid.shape)[[0, 1]] if c.dim == 3 else np.array([grid.shape[0]])
+    hi = lo[:-1] + grid.cell * n_h
+    bad = ~np.all((g >= lo[:-1]) & (g < hi), axis=1)
+    if bad.any():
+        i = int(np.argmax(bad))
+        raise InputError(f"surface_elevation: gauge {g[i]} m lies outside the fluid's domain "
+                         f"{lo[:-1]} .. {hi} m; move it inside")
+    ps = fluid.ps
+    out = np.empty(g.shape[0])
+    nx, ny, nz = grid.shape
+    k = fluid._kernel
+    _surface(g, ps.pos, ps.kind, ps.mass, ps.rho, start, lo, 1.0 / grid.cell, nx, ny, nz, grid.reach,
+             k, c.h, alpha_d(k, c.dim, c.h), 0.25 * c.dx, out)
+    return out
+
+
+class WaveGauge:
+    """Free-surface elevation z [m] at gauges (see :func:`surface_elevation`): 2-D x
+    positions (M,) [m], 3-D (x, y) positions (M, 2) [m]. Column ``eta`` (M,), the absolute
+    height of the surface (subtract the still-water level for the elevation above it)."""
+
+    columns = ("eta",)
+
+    def __init__(self, gauges, name: str = "gauges"):
+        g = np.asarray(gauges, dtype=np.float64)
+        if g.ndim > 2 or g.size == 0 or not np.isfinite(g).all():
+            raise InputError(f"WaveGauge: gauges {gauges!r}; give x positions [m] (2-D) or (x, y) "
+                             "positions [m] (3-D)")
+        self.gauges = g
+        self.name = name
+
+    def sample(self, fluid) -> dict:
+        return {"eta": surface_elevation(fluid, self.gauges)}
+
+
+# ---------------------------------------------------------------------- loads
+class GroupLoad:
+    """Force [N] and moment [N m] the fluid exerts on boundary ``group`` at the sampled
+    state (:meth:`fluid.solver.Fluid.group_forces_now`). The moment is about ``about``
+    (dim,) [m] when given, else about the fluid's ``moment_points[group]``; 2-D: one
+    component, about +y (``M_y = z F_x - x F_z``). Columns ``F`` (dim,), ``M`` (1 or 3,)."""
+
+    columns = ("F", "M")
+
+    def __init__(self, group: int, about=None, name: str | None = None):
+        if not isinstance(group, (int, np.integer)) or group < 0:
+            raise InputError(f"GroupLoad: group={group!r}; give a boundary group id >= 0")
+        self.group = int(group)
+        self.about = None if about is None else np.asarray(about, dtype=np.float64)
+        if self.about is not None and (self.about.shape not in ((2,), (3,)) or not np.isfinite(self.about).all()):
+            raise InputError(f"GroupLoad: about={about!r}; give a finite point (x, z) or (x, y, z) [m]")
+        self.name = name if name is not None else f"group_{self.group}"
+
+    def sample(self, fluid) -> dict:
+        if self.group >= fluid.n_groups:
+            raise InputError(f"GroupLoad: no boundary group {self.group}; the fluid has groups "
+                             f"0..{fluid.n_groups - 1}")
+        F, M = fluid.group_forces_now()
+        F, M = F[self.group].copy(), M[self.group].copy()
+        if self.about is not None:
+            if self.about.size != fluid.config.dim:
+                raise InputError(f"GroupLoad: about has {self.about.size} components, the fluid is "
+                                 f"{fluid.config.dim}-D")
+            d = fluid.moment_points[self.group] - self.about  # M_about = M_ref + d x F
+            if fluid.config.dim == 2:
+                M[0] += d[1] * F[0] - d[0] * F[1]
+            else:
+                M += np.cross(d, F)
+        return {"F": F, "M": M}
+
+
+# ---------------------------------------------------------------------- energy
+@njit(parallel=True, **_OPTS)
+def _energies(pos, vel, mass, kind, g, z_ref):
+    zc = pos.shape[1] - 1
+    ke = 0.0
+    pe = 0.0
+    for i in prange(pos.shape[0]):
+        f = 1.0 if kind[i] == _FLUID else 0.0
+        v2 = 0.0
+        for k in range(pos.shape[1]):
+            v2 += vel[i, k] * vel[i, k]
+        ke += 0.5 * f * mass[i] * v2
+        pe += f * mass[i] * g * (pos[i, zc] - z_ref)
+    return ke, pe
+
+
+def fluid_energies(fluid, z_ref: float = 0.0) -> tuple[float, float]:
+    """(kinetic, potential) energy [J] of the fluid particles: ``sum m v^2 / 2`` and
+    ``sum m g (z - z_ref)`` with ``z_ref`` [m] the height of zero potential energy."""
+    ps = fluid.ps
+    return _energies(ps.pos, ps.vel, ps.mass, ps.kind, float(fluid.config.g), float(z_ref))
+
+
+class Energy:
+    """Kinetic and potential energy [J] of the fluid (see :func:`fluid_energies`); 2-D:
+    per metre of width [J/m]. ``z_ref`` [m] the height of zero potential energy. Columns
+    ``kinetic``, ``potential``."""
+
+    columns = ("kinetic", "potential")
+
+    def __init__(self, z_ref: float = 0.0, name: str = "energy"):
+        if not (isinstance(z_ref, (int, float)) and math.isfinite(z_ref)):
+            raise InputError(f"Energy: z_ref={z_ref!r}; give a finite height [m]")
+        self.z_ref = float(z_ref)
+        self.name = name
+
+    def sample(self, fluid) -> dict:
+        ke, pe = fluid_energies(fluid, self.z_ref)
+        return {"kinetic": ke, "potential": pe}

@@ -1,0 +1,125 @@
+"""fluid.probes on tanks at rest (hydrostatic densities, the state a run starts from):
+pressures against rho g d, gauges against the water depth, energies against m g H / 2."""
+
+import math
+
+import numpy as np
+import pytest
+
+from cosim.errors import InputError
+from fluid.geometry import assemble, block, set_hydrostatic, tank_walls, tank_with_water
+from fluid.particles import Kind
+from fluid.probes import (Energy, GroupLoad, PressureProbe, WaveGauge, fluid_energies, pressure_at,
+                          surface_elevation)
+from fluid.solver import Fluid, FluidConfig
+
+G, RHO0 = 9.81, 1000.0
+
+
+def _tank(dim=2, dx=0.01, depth=0.2, length=0.3, width=0.06):
+    b = tank_with_water(dim, dx, length, depth, 1.25 * depth, width=width)
+    cfg = FluidConfig(dim=dim, dx=dx, u_max=math.sqrt(G * depth), c0_factor=20.0, threads=1)
+    set_hydrostatic(b.particles, depth, RHO0, cfg.speed_of_sound, cfg.gamma, G)
+    f = Fluid(cfg, b.particles)
+    f.initialize(0.0)
+    return f
+
+
+@pytest.fixture(scope="module")
+def tank2d():
+    return _tank()
+
+
+def test_pressure_at_wall_points_is_rho_g_depth(tank2d):
+    depth = np.array([0.03, 0.05, 0.1, 0.15])
+    pts = np.stack([np.zeros_like(depth), 0.2 - depth], axis=1)  # on the left wall's face
+    p = PressureProbe(pts).sample(tank2d)["p"]
+    np.testing.assert_allclose(p, RHO0 * G * depth, rtol=0.01)
+    # the same points on the right wall, and a dry point above the water: 0
+    right = pts.copy()
+    right[:, 0] = 0.3
+    np.testing.assert_allclose(pressure_at(tank2d, right), p, rtol=1e-9)
+    assert pressure_at(tank2d, [0.15, 0.23])[0] == 0.0
+
+
+def test_pressure_at_a_boundary_particle_is_what_the_fluid_reports_there(tank2d):
+    ps = tank2d.ps
+    wall = np.flatnonzero((ps.kind == Kind.FIXED_WALL) & (ps.pos[:, 1] < 0.19))
+    np.testing.assert_allclose(pressure_at(tank2d, ps.pos[wall]), tank2d.wall_pressure()[wall],
+                               rtol=1e-9, atol=1e-9)
+
+
+def test_gauges_find_the_water_depth(tank2d):
+    eta = WaveGauge([0.02, 0.15, 0.28]).sample(tank2d)["eta"]
+    assert np.abs(eta - 0.2).max() < 0.005  # dx / 2
+    assert np.isnan(surface_elevation(tank2d, [-0.02])[0])  # inside the wall: no fluid near
+
+
+def test_tilted_surface_gives_the_slope_between_gauges():
+    dx, slope = 0.01, 0.25
+    lo, hi = np.zeros(2), np.array([0.4, 0.3])
+    pts = block(lo, [0.4, 0.3], dx)
+    pts = pts[pts[:, 1] < 0.1 + slope * pts[:, 0]]
+    b = assemble(2, dx, RHO0, pts, [(tank_walls(lo, hi, dx), Kind.FIXED_WALL, 0)])
+    f = Fluid(FluidConfig(dim=2, dx=dx, c0=20.0, threads=1), b.particles)
+    f.initialize(0.0)
+    x = np.array([0.1, 0.2, 0.3])
+    eta = surface_elevation(f, x)
+    # the staircase of the lattice smooths into the plane z = 0.1 + slope x
+    np.testing.assert_allclose(np.diff(eta), slope * np.diff(x), atol=dx / 4)
+    assert np.abs(eta - (0.1 + slope * x)).max() < dx / 2
+
+
+def test_energies_of_a_column_at_rest(tank2d):
+    ps = tank2d.ps
+    fl = ps.kind == Kind.FLUID
+    m = ps.mass[fl].sum()
+    ke, pe = fluid_energies(tank2d)
+    assert ke == 0.0
+    np.testing.assert_allclose(pe, m * G * 0.2 / 2, rtol=1e-12)  # lattice rows symmetric about H/2
+    e = Energy(z_ref=0.2).sample(tank2d)
+    np.testing.assert_allclose(e["potential"], -m * G * 0.2 / 2, rtol=1e-12)
+    v = ps.vel.copy()
+    ps.vel[fl] = [0.3, -0.4]
+    try:
+        np.testing.assert_allclose(fluid_energies(tank2d)[0], 0.5 * m * 0.25, rtol=1e-12)
+    finally:
+        ps.vel[:] = v
+
+
+def test_group_load_carries_the_water_weight_and_moves_its_moment(tank2d):
+    F, M = tank2d.group_forces_now()
+    s = GroupLoad(0).sample(tank2d)
+    np.testing.assert_array_equal(s["F"], F[0])
+    np.testing.assert_array_equal(s["M"], M[0])
+    ps = tank2d.ps
+    weight = ps.mass[ps.kind == Kind.FLUID].sum() * G
+    assert abs(s["F"][1] / weight + 1.0) < 0.02 and abs(s["F"][0]) < 1e-6 * weight
+    # moment about another point: M_c = M_0 + (r0 - c) x F, here about the origin
+    c = np.array([0.5, -0.3])
+    m_c = GroupLoad(0, about=c).sample(tank2d)["M"][0]
+    d = tank2d.moment_points[0] - c
+    assert m_c == pytest.approx(M[0, 0] + d[1] * F[0, 0] - d[0] * F[0, 1], rel=1e-12)
+    with pytest.raises(InputError, match="no boundary group"):
+        GroupLoad(3).sample(tank2d)
+
+
+def test_3d_tank_pressure_and_gauges():
+    f = _tank(dim=3, dx=0.02, depth=0.16, length=0.16, width=0.12)
+    depth = np.array([0.06, 0.1])
+    pts = np.stack([np.zeros(2), np.full(2, 0.06), 0.16 - depth], axis=1)
+    np.testing.assert_allclose(pressure_at(f, pts), RHO0 * G * depth, rtol=0.01)
+    eta = surface_elevation(f, [[0.05, 0.05], [0.11, 0.07]])
+    assert np.abs(eta - 0.16).max() < 0.01  # dx / 2
+
+
+def test_bad_probe_input_is_refused(tank2d):
+    with pytest.raises(InputError, match=r"\(M, 2\)"):
+        pressure_at(tank2d, np.zeros((2, 3)))
+    with pytest.raises(InputError, match="outside"):
+        pressure_at(tank2d, [[5.0, 0.1]])
+    with pytest.raises(InputError, match=r"shape \(M,\)"):
+        surface_elevation(tank2d, np.zeros((2, 2)))
+    with pytest.raises(InputError, match="not initialised"):
+        _uninitialised = Fluid(tank2d.config, tank2d.ps)
+        pressure_at(_uninitialised, [[0.1, 0.1]])
