@@ -39,6 +39,14 @@ _VOLUME = {
 }
 
 
+def geom_volume(kind: str, size) -> float:
+    """Exact volume [m^3] of a MuJoCo geom from its kind and MuJoCo size (half-sizes
+    [m], radius [m], half-length [m]); raises for kinds with no volume model."""
+    if kind not in _VOLUME:
+        raise InputError(f"geom type {kind!r} has no volume model; use a box, sphere, ellipsoid, cylinder or capsule")
+    return float(_VOLUME[kind](np.asarray(size, float)))
+
+
 def _unit_cells(kind: str, size: np.ndarray, n: int):
     """Cell centres [m] in the geom frame, the geom's exact volume [m^3] and the
     cell's edge lengths [m] along the geom axes."""
@@ -87,6 +95,11 @@ class AnalyticFluid:
         Lattice cells along the longest axis of each geom (accuracy of the
         centre of buoyancy; volumes are exact for submerged geoms).
     """
+
+    #: its loads do not react to body acceleration (added mass goes into the bodies'
+    #: inertia instead), so explicit coupling needs no light-body remedy
+    #: (``cosim.added_mass``)
+    loads_carry_added_mass = False
 
     def __init__(self, *, rho: float = 1000.0, g: float = 9.81, free_surface_z: float = 0.0,
                  linear_damping: Mapping[str, Sequence[float]] | None = None,
