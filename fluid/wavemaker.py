@@ -13,14 +13,25 @@ wavenumber of the dispersion relation ``ω² = g k tanh(k d)``:
 Shallow water (kd → 0): piston H/S → kd, flap H/S → kd/2; deep water: 2 and 2.
 The motion starts with a smooth ramp (half a cosine over ``ramp`` periods) so
 the paddle sets off without a jump in acceleration.
+
+The SPH fluid moves a paddle as a MOVING_WALL group placed exactly from a
+prescribed motion (``fluid.solver.Fluid.prescribe_motion``; dynamic boundary
+particles, 004_1657bd4a51d29840.txt §2.6): :func:`piston` translates the group
+along x by a displacement history, :func:`flap` rotates it about a hinge line
+along y (through ``hinge`` in the x-z plane). The history is a callable
+``s(t) -> (value, rate)``: :meth:`RegularWavemaker.motion`, or a record read
+from a file (:class:`MotionRecord`, e.g. the measured flap angle of Hadzic et
+al. 2005). :meth:`RegularWavemaker.paddle` gives the wall motion directly.
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
+from scipy.interpolate import CubicSpline
 
 from cosim.errors import InputError
 
@@ -109,3 +120,116 @@ class RegularWavemaker:
         r, dr = self._ramp(t)
         t = np.asarray(t, dtype=float)
         return a * r * np.sin(w * t), a * (dr * np.sin(w * t) + r * w * np.cos(w * t))
+
+    def paddle(self, x0: float = 0.0, z_bottom: float = 0.0):
+        """The wall motion ``motion(t, ref) -> (pos, vel)`` of this paddle for
+        ``Fluid.prescribe_motion``: a piston translates along x; a flap rotates
+        about the hinge at the bottom, (``x0``, ``z_bottom``) [m], its angle
+        θ = x_swl / depth (the theory's small-angle flap)."""
+        if self.kind == "piston":
+            return piston(self.motion)
+        return flap(self.motion, hinge=(x0, z_bottom))
+
+
+def _check_history(history, what: str):
+    if not callable(history):
+        raise InputError(f"{what}: the history is a callable s(t) -> (value, rate), got {history!r}")
+
+
+def piston(displacement):
+    """Wall motion of a piston paddle: every particle moves along +x by
+    ``displacement(t) -> (x [m], u [m/s])`` from its reference position (2-D or
+    3-D). Returns ``motion(t, ref) -> (pos, vel)`` for ``Fluid.prescribe_motion``."""
+    _check_history(displacement, "piston")
+
+    def motion(t, ref):
+        x, u = displacement(t)
+        pos = ref.copy()
+        pos[:, 0] += float(x)
+        vel = np.zeros_like(ref)
+        vel[:, 0] = float(u)
+        return pos, vel
+
+    return motion
+
+
+def flap(angle, hinge=(0.0, 0.0)):
+    """Wall motion of a flap paddle: the particles rotate rigidly about the
+    hinge line along y through ``hinge`` = (x, z) [m] by ``angle(t) -> (θ [rad],
+    θ' [rad/s])``, θ > 0 turning the top of the flap towards +x (into the water
+    of a flume that lies at x > hinge): a point at r = (x, z) from the hinge goes
+    to (x cos θ + z sin θ, −x sin θ + z cos θ), velocity θ' (z', −x') (a
+    right-handed rotation about +y). 2-D (x, z) or 3-D (x, y, z) reference
+    positions. (The flap record of Hadzic et al. 2005 as DualSPHysics ships it is
+    positive the other way: see ``cosim.validations.waves``.)"""
+    _check_history(angle, "flap")
+    hinge = np.asarray(hinge, float)
+    if hinge.shape != (2,) or not np.isfinite(hinge).all():
+        raise InputError(f"flap: hinge is the (x, z) point [m] of the hinge line, got {hinge!r}")
+
+    def motion(t, ref):
+        th, w = angle(t)
+        c, s = math.cos(float(th)), math.sin(float(th))
+        x, z = ref[:, 0] - hinge[0], ref[:, -1] - hinge[1]
+        xr, zr = c * x + s * z, -s * x + c * z
+        pos, vel = ref.copy(), np.zeros_like(ref)
+        pos[:, 0], pos[:, -1] = hinge[0] + xr, hinge[1] + zr
+        vel[:, 0], vel[:, -1] = float(w) * zr, -float(w) * xr
+        return pos, vel
+
+    return motion
+
+
+class MotionRecord:
+    """A recorded paddle history, ``s(t) -> (value, rate)``: a cubic spline
+    through samples ``(t [s], value)``, held at its end values outside the record
+    (rate 0 there). ``scale`` multiplies the values (e.g. ``math.pi / 180`` for an
+    angle in degrees); ``t_shift`` [s] is added to the record's times (to start a
+    run later in the record, give the run's start time and the record's times
+    unchanged)."""
+
+    def __init__(self, t, value, scale: float = 1.0, t_shift: float = 0.0):
+        t = np.asarray(t, float)
+        v = np.asarray(value, float) * float(scale)
+        if t.ndim != 1 or t.shape != v.shape or t.size < 4:
+            raise InputError(f"motion record: need matching 1-D time and value arrays of >= 4 samples, "
+                             f"got shapes {t.shape} and {v.shape}")
+        if not (np.isfinite(t).all() and np.isfinite(v).all()):
+            raise InputError("motion record: times and values must be finite")
+        if not (np.diff(t) > 0).all():
+            i = int(np.argmin(np.diff(t)))
+            raise InputError(f"motion record: times must increase strictly; sample {i + 1} at t={t[i + 1]!r} s "
+                             f"follows t={t[i]!r} s")
+        self.t = t + float(t_shift)
+        self.value = v
+        self._spline = CubicSpline(self.t, v)
+        self._rate = self._spline.derivative()
+
+    @classmethod
+    def from_file(cls, path, column: int = 1, scale: float = 1.0, t_shift: float = 0.0) -> "MotionRecord":
+        """Read a whitespace- or comma-separated table whose first column is the time
+        [s] and whose ``column`` holds the value (non-numeric header lines are
+        skipped)."""
+        path = Path(path)
+        if not path.is_file():
+            raise InputError(f"motion record: no file {path}")
+        rows = []
+        for line in path.read_text().splitlines():
+            parts = line.replace(",", " ").split()
+            try:
+                rows.append((float(parts[0]), float(parts[column])))
+            except (ValueError, IndexError):
+                if rows:  # a bad line after the data started is an error, a header is not
+                    raise InputError(f"motion record {path}: cannot read line {line!r} (time, value in column "
+                                     f"{column})") from None
+        if not rows:
+            raise InputError(f"motion record {path}: no numeric rows")
+        a = np.array(rows)
+        return cls(a[:, 0], a[:, 1], scale, t_shift)
+
+    def __call__(self, t):
+        t = np.asarray(t, float)
+        tc = np.clip(t, self.t[0], self.t[-1])
+        inside = (t >= self.t[0]) & (t <= self.t[-1])
+        v, r = self._spline(tc), np.where(inside, self._rate(tc), 0.0)
+        return (float(v), float(r)) if v.ndim == 0 else (v, r)

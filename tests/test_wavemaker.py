@@ -1,12 +1,13 @@
-"""Linear wavemaker theory."""
+"""Linear wavemaker theory; paddle motions (piston, flap, recorded) for the SPH fluid."""
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 from cosim.errors import InputError
-from fluid.wavemaker import RegularWavemaker, height_to_stroke, wavenumber
+from fluid.wavemaker import MotionRecord, RegularWavemaker, flap, height_to_stroke, piston, wavenumber
 
 
 @pytest.mark.parametrize("T, d", [(1.0, 0.5), (5.0, 3.0), (20.0, 30.0), (0.5, 100.0)])
@@ -59,3 +60,68 @@ def test_bad_input():
         RegularWavemaker("piston", 1.0, 1.0, 1.0)
     with pytest.raises(InputError, match="finite and > 0"):
         wavenumber(0.0, 1.0)
+
+
+# -- paddle motions for the SPH fluid --------------------------------------------------------------
+
+HADZIC_FLAP = Path(__file__).resolve().parents[2] / "shared/refdata/floating_box_waves_hadzic2005/CaseFloatingWavesVal_Flap.dat"
+
+
+def test_piston_translates_and_flap_rotates_rigidly():
+    ref = np.array([[-0.01, 0.0], [-0.01, 0.2], [-0.03, 0.4]])
+    pos, vel = piston(lambda t: (0.02, -0.3))(1.0, ref)
+    np.testing.assert_allclose(pos, ref + [0.02, 0.0], rtol=0, atol=1e-15)
+    np.testing.assert_allclose(vel, [[-0.3, 0.0]] * 3, rtol=0, atol=1e-15)
+    th, w = 0.1, 0.5
+    hinge = np.array([0.0, 0.05])
+    pos, vel = flap(lambda t: (th, w), hinge=hinge)(0.0, ref)
+    r0, r1 = ref - hinge, pos - hinge
+    np.testing.assert_allclose(np.linalg.norm(r1, axis=1), np.linalg.norm(r0, axis=1), rtol=1e-14)  # rigid
+    # the top of the flap (above the hinge) turns towards +x by theta
+    top = np.arctan2(r1[2, 0], r1[2, 1]) - np.arctan2(r0[2, 0], r0[2, 1])
+    assert top == pytest.approx(th, rel=1e-12)
+    np.testing.assert_allclose(vel, w * np.stack([r1[:, 1], -r1[:, 0]], axis=1), rtol=1e-14)  # omega x r
+    p3, _ = flap(lambda t: (th, w), hinge=hinge)(0.0, np.insert(ref, 1, 7.0, axis=1))  # 3-D: y untouched
+    np.testing.assert_allclose(p3[:, [0, 2]], pos, rtol=1e-14)
+    assert (p3[:, 1] == 7.0).all()
+
+
+@pytest.mark.parametrize("kind", ["piston", "flap"])
+def test_paddle_velocity_is_the_derivative_of_its_position(kind):
+    wm = RegularWavemaker(kind, H=0.05, T=1.2, depth=0.4, ramp=1.0)
+    ref = np.array([[-0.005, 0.1], [-0.005, 0.35]])
+    m = wm.paddle()
+    t, e = 0.9, 1e-6
+    fd = (m(t + e, ref)[0] - m(t - e, ref)[0]) / (2 * e)
+    np.testing.assert_allclose(m(t, ref)[1], fd, rtol=1e-6, atol=1e-9)
+    if kind == "flap":  # the theory's flap: x at the still-water level = theta * depth
+        x_swl = m(3.3, np.array([[0.0, 0.4]]))[0][0, 0]
+        assert x_swl == pytest.approx(math.sin(wm.motion(3.3)[0]) * 0.4, rel=1e-12)
+
+
+def test_motion_record_interpolates_its_samples_and_holds_outside():
+    t = np.linspace(0.0, 2.0, 201)
+    rec = MotionRecord(t, np.sin(3 * t), scale=2.0)
+    np.testing.assert_allclose(rec(t)[0], 2 * np.sin(3 * t), atol=1e-14)
+    tm = np.linspace(0.05, 1.95, 37)
+    np.testing.assert_allclose(rec(tm)[1], 6 * np.cos(3 * tm), atol=1e-4)
+    assert rec(5.0) == (pytest.approx(2 * math.sin(6.0)), 0.0)
+    with pytest.raises(InputError, match="increase strictly"):
+        MotionRecord([0, 1, 1, 2], [0, 0, 0, 0])
+    with pytest.raises(InputError, match="no file"):
+        MotionRecord.from_file("/nonexistent/flap.dat")
+
+
+@pytest.mark.skipif(not HADZIC_FLAP.is_file(), reason="shared refdata not present")
+def test_the_hadzic_flap_record_reads_as_published():
+    rec = MotionRecord.from_file(HADZIC_FLAP, scale=math.pi / 180)
+    assert rec.t[0] == 0.0 and rec.t[-1] == pytest.approx(10.9, abs=1e-6) and len(rec.t) == 10901
+    assert math.degrees(rec.value.min()) == pytest.approx(-4.670678616, rel=1e-9)  # at t = 5.023 s
+    assert math.degrees(rec(5.023)[0]) == pytest.approx(-4.670678616, rel=1e-6)
+
+
+def test_bad_paddle_input():
+    with pytest.raises(InputError, match="callable"):
+        piston(0.1)
+    with pytest.raises(InputError, match="hinge"):
+        flap(lambda t: (0, 0), hinge=(0.0, 0.0, 0.0))
