@@ -91,6 +91,7 @@ class H5Output:
         self._snap_meta: list[tuple[float, str, int, list]] = []  # (t, group, N, fields)
         self._series: dict[str, dict] = {}  # name -> {"keys": {key: shape}, "rows": [...]}
         self._zeros_n = 0
+        self._closed = False
         self.file = h5py.File(self.path, "w")
         try:
             self.file.attrs["dim"] = dim
@@ -118,7 +119,7 @@ class H5Output:
 
     @property
     def closed(self) -> bool:
-        return not self.file.id.valid
+        return self._closed
 
     def close(self) -> None:
         """Write buffered rows and close the file (idempotent)."""
@@ -128,6 +129,7 @@ class H5Output:
             self.flush()
         finally:
             self.file.close()
+            self._closed = True
 
     def flush(self) -> None:
         """Write every buffered series row and flush the file to disk."""
@@ -181,13 +183,13 @@ class H5Output:
 
     def _declare(self, name: str, shapes: dict) -> dict:
         """The buffer of series ``name``, created on first use; checks keys and widths."""
-        _check_name(name, "series")
-        for k in shapes:
-            _check_name(k, f"series {name!r} key")
-        if "t" in shapes:
-            raise InputError(f"H5Output: series {name!r} has a key 't'; the time is the second argument")
         s = self._series.get(name)
-        if s is None:
+        if s is None:  # names are checked once, when the series is made
+            _check_name(name, "series")
+            for k in shapes:
+                _check_name(k, f"series {name!r} key")
+            if "t" in shapes:
+                raise InputError(f"H5Output: series {name!r} has a key 't'; the time is the second argument")
             if not shapes:
                 raise InputError(f"H5Output: series {name!r} got no values; give keys, e.g. x=0.1")
             if name in self.file["series"] and not isinstance(self.file["series"][name], h5py.Group):
@@ -200,6 +202,8 @@ class H5Output:
                 g.create_dataset(k, shape=(0,) + shp, maxshape=(None,) + shp,
                                  chunks=(self.buffer_rows,) + shp, dtype="f8")
             s = self._series[name] = {"shapes": dict(shapes), "t": [], "rows": {k: [] for k in shapes}}
+            return s
+        if shapes == s["shapes"]:
             return s
         if set(shapes) != set(s["shapes"]):
             raise InputError(f"H5Output: series {name!r} got keys {sorted(shapes)}, but its first row had "
