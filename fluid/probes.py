@@ -91,7 +91,12 @@ def pressure_at(fluid, points) -> np.ndarray:
     """Pressure [Pa] at ``points`` (M, dim) [m]: the inverse-distance average of the fluid
     pressures within the kernel support 2h (001_14936b82710365b2.txt Eq. 15), exactly as
     :meth:`fluid.solver.Fluid.wall_pressure` reports it at boundary particles; 0 at a dry
-    point. On a wall, put the point on the wall face or on the first boundary layer."""
+    point. On a wall, put the point on the wall face or on the first boundary layer.
+    Accuracy: exact for a linear pressure field where the fluid within 2h lies symmetric
+    about the point's height; within 2h of the free surface or the bottom the neighbours
+    lie on one side and the average is biased by up to ~rho g h (measured on a tank at
+    rest, dx = 1 cm, h = 1.41 dx: 0.0 % at 3 dx depth and below, +41 % at 1 dx, -2 % at
+    1 dx above the bottom)."""
     c = fluid.config
     pts = _points(points, c.dim, "pressure_at")
     _inside(fluid, pts, "pressure_at")
