@@ -365,3 +365,44 @@ def read_snapshot(path, k: int) -> dict:
         out = {"t": float(g.attrs["t"])}
         out.update({name: g[name][()] for name in g})
         return out
+
+
+def write_csv(path, series: dict) -> None:
+    """Write one series (``{"t": (n,) [s], key: (n,) or (n, k)}``, as :func:`read_series`
+    reads it and :func:`fluid.run.run` returns it per probe) as CSV: a header ``t``, then
+    ``key`` or ``key_0 .. key_{k-1}`` per key, one row per time, full precision."""
+    if "t" not in series:
+        raise InputError("write_csv: the series has no 't' (time) column")
+    t = np.asarray(series["t"], dtype=np.float64)
+    cols, names = [t[:, None]], ["t"]
+    for k, v in series.items():
+        if k == "t":
+            continue
+        a = np.asarray(v, dtype=np.float64).reshape(t.shape[0], -1)
+        cols.append(a)
+        names += [k] if a.shape[1] == 1 and np.ndim(v) == 1 else [f"{k}_{j}" for j in range(a.shape[1])]
+    np.savetxt(path, np.hstack(cols), delimiter=",", header=",".join(names), comments="", fmt="%.17g")
+
+
+def describe(path) -> dict:
+    """What an :class:`H5Output` file holds: ``attrs``, ``series`` (name -> rows, keys and
+    time span [s]) and ``snapshots`` (count, particles in the last, time span [s])."""
+    with h5py.File(path, "r") as f:
+        attrs = {k: (v.item() if isinstance(v, np.generic) else v.tolist() if isinstance(v, np.ndarray) else v)
+                 for k, v in f.attrs.items()}
+        series = {}
+
+        def visit(name, obj):
+            if isinstance(obj, h5py.Group) and "t" in obj and isinstance(obj["t"], h5py.Dataset):
+                t = obj["t"]
+                series[name] = {"rows": int(t.shape[0]),
+                                "keys": {k: list(obj[k].shape[1:]) for k in obj if k != "t"
+                                         and isinstance(obj[k], h5py.Dataset)},
+                                "t_s": [float(t[0]), float(t[-1])] if t.shape[0] else []}
+
+        f["series"].visititems(visit)
+        times = f["snapshot_times"][()]
+        snaps = {"count": int(times.size), "t_s": [float(times[0]), float(times[-1])] if times.size else []}
+        if times.size:
+            snaps["particles_last"] = int(f["snapshots"][f"{times.size - 1:04d}"]["pos"].shape[0])
+    return {"attrs": attrs, "series": series, "snapshots": snaps}

@@ -122,3 +122,42 @@ def test_bad_input_is_refused_with_a_reason(tmp_path):
         read_series(tmp_path / "b.h5", "nope")
     with pytest.raises(InputError, match="no snapshot"):
         read_snapshot(tmp_path / "b.h5", 0)
+
+
+def test_csv_and_describe(tmp_path):
+    from fluid.output import describe, write_csv
+
+    path = tmp_path / "run.h5"
+    with H5Output(path, dim=2, attrs={"dx": 0.02}) as out:
+        for i in range(4):
+            out.series("gauges", 0.5 * i, eta=[0.1 * i, 0.2], E=float(i))
+        out.snapshot(1.0, np.zeros((7, 2)), rho=np.ones(7))
+    write_csv(tmp_path / "g.csv", read_series(path, "gauges"))
+    lines = (tmp_path / "g.csv").read_text().splitlines()
+    assert lines[0] == "t,E,eta_0,eta_1" and len(lines) == 5
+    np.testing.assert_array_equal(np.loadtxt(tmp_path / "g.csv", delimiter=",", skiprows=1)[3], [1.5, 3.0, 0.1 * 3, 0.2])
+    d = describe(path)
+    assert d["attrs"] == {"dim": 2, "dx": 0.02}
+    assert d["series"]["gauges"] == {"rows": 4, "keys": {"E": [], "eta": [2]}, "t_s": [0.0, 1.5]}
+    assert d["snapshots"] == {"count": 1, "t_s": [1.0, 1.0], "particles_last": 7}
+
+
+def test_paraview_reader_sees_the_x_z_plane(tmp_path):
+    """With VTK installed (not a dependency): its XDMF reader, the one ParaView uses,
+    reads 2-D positions as (x, 0, z) and a 2-D velocity as a 3-vector."""
+    vtk = pytest.importorskip("vtk")
+    from vtk.util.numpy_support import vtk_to_numpy
+
+    path = tmp_path / "pv.h5"
+    pos = np.random.default_rng(3).random((9, 2))
+    with H5Output(path, dim=2) as out:
+        out.snapshot(0.0, pos, vel=2 * pos, kind=np.arange(9, dtype=np.int8))
+        out.snapshot(0.5, pos[:5], vel=2 * pos[:5], kind=np.arange(5, dtype=np.int8))
+    r = vtk.vtkXdmfReader()
+    r.SetFileName(str(path.with_suffix(".xmf")))
+    r.UpdateTimeStep(0.5)
+    grid = r.GetOutputDataObject(0)
+    xyz = vtk_to_numpy(grid.GetPoints().GetData())
+    np.testing.assert_array_equal(xyz, np.column_stack([pos[:5, 0], np.zeros(5), pos[:5, 1]]))
+    vel = vtk_to_numpy(grid.GetPointData().GetArray("vel"))
+    np.testing.assert_array_equal(vel, 2 * np.column_stack([pos[:5, 0], np.zeros(5), pos[:5, 1]]))
