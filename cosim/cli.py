@@ -3,6 +3,7 @@
 ``cosim line``      tabulate (and plot) one catenary mooring line against X
 ``cosim validate``  run validation cases, one JSON object per case
 ``cosim export-fmu`` write a catenary mooring system as an FMI 2.0 co-simulation FMU
+``cosim inspect``   what an output file (HDF5) holds, as JSON; its series as CSV tables
 """
 
 from __future__ import annotations
@@ -76,6 +77,39 @@ def _export_fmu_parser(sub):
     p.add_argument("--sources-only", action="store_true", help="ship the C sources without compiling a binary")
     p.add_argument("--cc", help="C compiler (default $CC, cc, gcc or clang)")
     return p
+
+
+def _inspect_parser(sub):
+    p = sub.add_parser(
+        "inspect",
+        help="print what an output file (HDF5, fluid.output) holds; write its series as CSV",
+        description="Print one JSON object: the file's attributes, each time series (rows, keys and "
+        "their widths, time span) and the particle snapshots (count, time span). With --csv DIR, "
+        "also write every series as DIR/NAME.csv ('/' in a name becomes '__').",
+    )
+    p.add_argument("file", help="an .h5 file written by fluid.output.H5Output")
+    p.add_argument("--csv", metavar="DIR", help="write every series as a CSV table into DIR")
+    return p
+
+
+def cmd_inspect(args, parser) -> int:
+    from pathlib import Path
+
+    from cosim.errors import InputError
+    from fluid.output import describe, read_series, write_csv
+
+    try:
+        info = describe(args.file)
+    except (OSError, KeyError) as exc:
+        raise InputError(f"{args.file} is not an output file of fluid.output.H5Output ({exc})") from None
+    print(json.dumps(info, default=_json_default))
+    if args.csv:
+        folder = Path(args.csv)
+        folder.mkdir(parents=True, exist_ok=True)
+        for name in info["series"]:
+            write_csv(folder / (name.replace("/", "__") + ".csv"), read_series(args.file, name))
+        print(f"wrote {len(info['series'])} CSV tables into {folder}", file=sys.stderr)
+    return 0
 
 
 def _read_lines_file(path):
@@ -282,9 +316,11 @@ def _json_default(o):
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="cosim", description=__doc__.strip().splitlines()[0])
     sub = parser.add_subparsers(dest="command", required=True)
-    parsers = {"line": _line_parser(sub), "validate": _validate_parser(sub), "export-fmu": _export_fmu_parser(sub)}
+    parsers = {"line": _line_parser(sub), "validate": _validate_parser(sub), "export-fmu": _export_fmu_parser(sub),
+               "inspect": _inspect_parser(sub)}
     args = parser.parse_args(argv)
-    handler = {"line": cmd_line, "validate": cmd_validate, "export-fmu": cmd_export_fmu}[args.command]
+    handler = {"line": cmd_line, "validate": cmd_validate, "export-fmu": cmd_export_fmu,
+               "inspect": cmd_inspect}[args.command]
     try:
         return handler(args, parsers[args.command])
     except CosimError as exc:
