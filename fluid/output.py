@@ -88,7 +88,8 @@ class H5Output:
         self.dim = dim
         self.buffer_rows = buffer_rows
         self.n_snapshots = 0
-        self._snap_meta: list[tuple[float, str, int, list]] = []  # (t, group, N, fields)
+        self._snap_meta: list[tuple] = []  # (t, group, N, pos dtype, fields) per snapshot
+        self._grids: list[str] = []  # each snapshot's XDMF grid, made once
         self._series: dict[str, dict] = {}  # name -> {"keys": {key: shape}, "rows": [...]}
         self._zeros_n = 0
         self._closed = False
@@ -265,7 +266,8 @@ class H5Output:
         g.attrs["index"] = self.n_snapshots
         for k, a in data.items():
             g.create_dataset(k, data=a)
-        if self.dim == 2 and n > self._zeros_n:
+        regrid = self.dim == 2 and n > self._zeros_n
+        if regrid:
             if "xdmf" in self.file:
                 del self.file["xdmf"]
             self.file.create_dataset("xdmf/zeros", data=np.zeros((n, 1)))
@@ -273,11 +275,11 @@ class H5Output:
         times = self.file["snapshot_times"]
         times.resize(self.n_snapshots + 1, axis=0)
         times[-1] = t
-        self._snap_meta.append((t, key, n, [(k, a.dtype, a.shape[1:]) for k, a in data.items() if k != "pos"]))
+        self._snap_meta.append((t, key, n, pos.dtype, [(k, a.dtype, a.shape[1:]) for k, a in data.items() if k != "pos"]))
         self.n_snapshots += 1
         for name in self._series:
             self._write_rows(name)
-        self._write_xdmf()
+        self._write_xdmf(regrid)
         self.file.flush()
         return self.n_snapshots - 1
 
@@ -301,8 +303,7 @@ class H5Output:
                 f'<DataItem Dimensions="{self._zeros_n} 1" NumberType="Float" Precision="8" Format="HDF">'
                 f'{self.path.name}:/xdmf/zeros</DataItem></DataItem>')
 
-    def _grid(self, t: float, key: str, n: int, fields: list) -> list[str]:
-        pos_dtype = self.file["snapshots"][key]["pos"].dtype
+    def _grid(self, t: float, key: str, n: int, pos_dtype, fields: list) -> str:
         out = [f'<Grid Name="snapshot_{key}" GridType="Uniform">',
                f'<Time Value="{t!r}"/>',
                f'<Topology TopologyType="Polyvertex" NumberOfElements="{n}" NodesPerElement="1"/>']
@@ -329,15 +330,20 @@ class H5Output:
                     out += [f'<Attribute Name="{name}_{col}" AttributeType="Scalar" Center="Node">',
                             self._column(key, name, dtype, n, k, col), "</Attribute>"]
         out.append("</Grid>")
-        return out
+        return "\n".join(out)
 
-    def _write_xdmf(self) -> None:
+    def _write_xdmf(self, regrid: bool = False) -> None:
+        """Rewrite the XDMF file: the grids made so far, plus any new one (all of them
+        again when ``regrid``: the shared zero column grew)."""
+        if regrid:
+            self._grids = []
+        for meta in self._snap_meta[len(self._grids):]:
+            self._grids.append(self._grid(*meta))
         lines = ['<?xml version="1.0" ?>',
                  '<Xdmf Version="2.0">',
                  "<Domain>",
                  '<Grid Name="particles" GridType="Collection" CollectionType="Temporal">']
-        for t, key, n, fields in self._snap_meta:
-            lines += self._grid(t, key, n, fields)
+        lines += self._grids
         lines += ["</Grid>", "</Domain>", "</Xdmf>", ""]
         tmp = self.xmf_path.with_suffix(".xmf.tmp")
         tmp.write_text("\n".join(lines))
