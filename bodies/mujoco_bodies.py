@@ -283,6 +283,38 @@ class MujocoBodies:
         mujoco.mj_setConst(m, mujoco.MjData(m))
         mujoco.mj_forward(m, self.data)
 
+    def dofs(self, body: int) -> slice:
+        """The degrees of freedom of a coupled body's joints (indices into MuJoCo's ``qvel``)."""
+        b = self.body_ids[body]
+        start = int(self.model.body_dofadr[b])
+        return slice(start, start + int(self.model.body_dofnum[b]))
+
+    def dof_velocities(self) -> np.ndarray:
+        """Generalised velocities ``qvel`` [m/s, rad/s] of the whole model, a copy."""
+        return self.data.qvel.copy()
+
+    def dof_inertia(self, body: int) -> np.ndarray:
+        """The body's own inertia on each of its degrees of freedom [kg, kg m^2]: the
+        diagonal of the joint-space mass matrix at the current pose, armature left out."""
+        m = self.model
+        M = np.zeros((m.nv, m.nv))
+        mujoco.mj_fullM(m, self.data, M)
+        s = self.dofs(body)
+        return np.diag(M)[s] - m.dof_armature[s]
+
+    def wrench_for_dof_forces(self, body: int, tau) -> tuple[np.ndarray, np.ndarray]:
+        """The force [N] and torque about the centre of mass [N m], world frame, that
+        act on the body's degrees of freedom as the generalised forces ``tau`` [N, N m]
+        (least squares through the centre-of-mass Jacobian; exact for a free joint and
+        for slide/hinge joints whose axes pass through the centre of mass)."""
+        m, d = self.model, self.data
+        jp, jr = np.zeros((3, m.nv)), np.zeros((3, m.nv))
+        mujoco.mj_jacBodyCom(m, d, jp, jr, int(self.body_ids[body]))
+        s = self.dofs(body)
+        J = np.vstack([jp[:, s], jr[:, s]])  # (6, ndof): J^T w = tau
+        w = np.linalg.lstsq(J.T, np.asarray(tau, float), rcond=None)[0]
+        return w[:3], w[3:]
+
     def _check_finite(self, n_steps: int) -> None:
         d = self.data
         if np.isfinite(d.qpos).all() and np.isfinite(d.qvel).all():

@@ -23,18 +23,22 @@ writer of body loads, and it books them per body and step in :attr:`ledger`.
 
 from __future__ import annotations
 
+import logging
 import math
 from dataclasses import dataclass
 from typing import Any, Callable, Sequence
 
 import numpy as np
 
+from cosim.added_mass import LIGHT_BODY, AddedMass, fluid_density
 from cosim.clock import TICKS_PER_SECOND, Clock, to_ticks
-from cosim.errors import ConfigurationError, InputError, InstabilityError, SolverError
+from cosim.errors import ConfigurationError, ConvergenceError, InputError, InstabilityError, SolverError
 from cosim.ledger import Ledger
 from cosim.progress import Progress
 from cosim.protocol import Mooring, Participant, check_participant
 
+
+log = logging.getLogger(__name__)
 
 SCHEMES = ("explicit", "predictor-corrector", "fluid-first")
 
@@ -93,11 +97,20 @@ class Coupler:
         then the bodies receive exactly the impulse the fluid exchanged with them
         (its ``exchanged_wrenches()``): momentum passes between fluid and bodies to
         round-off. For the SPH fluid, whose own step is what limits dt.
+    light_body:
+        What to do for bodies much lighter than the fluid they displace, whose
+        staggered coupling is unstable (added mass; see :mod:`cosim.added_mass`).
+        ``"auto"`` (default): if the fluid's loads carry added mass (the SPH fluid;
+        not the analytic fluid) and a body's mass / displaced fluid mass is below the
+        threshold measured for the scheme (``cosim.added_mass.AUTO_THRESHOLD``), its
+        added mass is moved into its inertia (``"added-mass"``); ``"none"``: never;
+        ``"added-mass"``: for every coupled body. The choice per body is logged and
+        kept in :attr:`remedies`.
     """
 
     def __init__(self, participants: Sequence[Participant] = (), *, bodies=None, fluid=None,
                  moorings: Sequence = (), dt: float | None = None, t0: float = 0.0,
-                 scheme: str = "predictor-corrector"):
+                 scheme: str = "predictor-corrector", light_body: str = "auto"):
         self.bodies, self.fluid = bodies, fluid
         self.moorings = [m if isinstance(m, MooringAttachment) else MooringAttachment(m[0], tuple(m[1]))
                          for m in moorings]
@@ -129,6 +142,16 @@ class Coupler:
             raise ConfigurationError("the fluid-first scheme needs a fluid that reports the loads it exchanged "
                                      "over its last advance (exchanged_wrenches(), e.g. cosim.sph_fluid.SPHFluid)")
         self.scheme = scheme
+        if light_body not in LIGHT_BODY:
+            raise InputError(f"light_body={light_body!r} is not one of {', '.join(LIGHT_BODY)}")
+        if light_body == "added-mass" and fluid is None:
+            raise ConfigurationError("light_body='added-mass' moves a fluid's added mass into the bodies: pass fluid=")
+        self.light_body = light_body
+        #: the light-body remedy chosen for each body, by name ("none" or "added-mass"), set at initialize()
+        self.remedies: dict[str, str] = {}
+        self.added_mass: AddedMass | None = None
+        self._acc_history: list[np.ndarray] = []  # recent generalised accelerations (instability watch)
+        self.subiterations = 0  #: fluid advances the last step took (the "subiterate" remedy)
         self._exchanging = roles  # rolled back by the predictor-corrector
         self.dt = dt
         self.clock = Clock(t0)
@@ -162,10 +185,23 @@ class Coupler:
             if self.fluid is not None:
                 self.fluid.attach_bodies(self.bodies)
                 self.fluid.set_body_kinematics(kin)
+                self._choose_light_body_remedy()
+            self.remedies = self.remedies or {n: "none" for n in self.bodies.body_names}
         for p in self.participants:
             if p is not self.bodies:
                 p.initialize(t0)
         self._initialized = True
+
+    def _choose_light_body_remedy(self) -> None:
+        carries = getattr(self.fluid, "loads_carry_added_mass", True)
+        rho = fluid_density(self.fluid, required=self.light_body in ("added-mass", "subiterate"))
+        if rho is None:
+            if self.light_body == "auto" and carries:
+                log.warning("coupler: fluid '%s' states no density, so no light-body remedy can be chosen; give it "
+                            "an attribute rho [kg/m^3] or pass light_body='none' to silence this", self.fluid.name)
+            return
+        self.added_mass = AddedMass(self.bodies, rho)  # the mass ratios, for the choice and for messages
+        self.remedies = self.added_mass.choose(self.light_body, self.scheme, carries)
 
     def _attach_tethers(self) -> None:
         """Length constraints (MuJoCo tendons) for the mooring lines that ask for
@@ -269,16 +305,80 @@ class Coupler:
         for a, sites in zip(self.moorings, self._sites):
             a.mooring.set_fairlead_motion(*self._fairlead_motion(a, sites, kin))
 
+    def _fluid_first_loads(self, dt: float, velocity) -> tuple[np.ndarray, np.ndarray]:
+        """The loads the fluid exchanged over its advance, the bodies' particles having
+        moved with ``velocity`` [m/s] (centre of mass)."""
+        F_fluid, T_fluid = self.fluid.exchanged_wrenches()
+        # the fluid's moment is about the centre of mass at the start of the step; the
+        # bodies take the force at their moving centre, half a step on on average
+        return F_fluid, T_fluid - np.cross(0.5 * dt * velocity, F_fluid)
+
+    #: sub-iterations: relative tolerance on the bodies' mean velocity over a step [-]
+    #: (of its size plus g dt, the velocity one step of gravity gives) ...
+    SUBITER_TOL = 1e-3
+    #: ... reached within this many fluid advances, or the run stops
+    SUBITER_MAX = 40
+
+    def _subiterated_fluid_loads(self, t, dt, kin0, moor):
+        """Fluid-first with sub-iterations (the "subiterate" light-body remedy): the
+        fluid advances with a guess of the bodies' mean velocity over the step, the
+        bodies advance with the impulse it exchanged, and the guess is corrected with
+        Aitken-relaxed fixed-point updates (Küttler & Wall 2008) until the bodies'
+        mean velocity agrees with the one the fluid moved them with. Every try starts
+        from the saved states; the fluid stays advanced with the converged guess, the
+        bodies at the start (the caller advances them). Momentum stays exact: the
+        bodies receive the impulse the fluid exchanged."""
+        b, f = self.bodies, self.fluid
+        fs, bs = f.save_state(), b.save_state()
+        start = np.hstack([kin0.velocity, kin0.omega])
+        guess, r_prev = start.copy(), None
+        light = min(self.added_mass.ratio.min(), 1.0)
+        w = light / (1.0 + light)  # the best fixed relaxation if the added mass were the displaced mass
+        g = float(np.linalg.norm(b.model.opt.gravity))
+        F_moor, T_moor = moor
+        for it in range(1, self.SUBITER_MAX + 1):
+            if it > 1:
+                f.load_state(fs)
+                b.load_state(bs)
+            f.set_body_kinematics(kin0._replace(velocity=guess[:, :3], omega=guess[:, 3:]))
+            f.advance(t, dt)
+            F_fluid, T_fluid = self._fluid_first_loads(dt, guess[:, :3])
+            b.set_wrenches(F_fluid + F_moor, T_fluid + T_moor)
+            b.advance(t, dt)
+            k1 = b.kinematics()
+            r = 0.5 * (start + np.hstack([k1.velocity, k1.omega])) - guess
+            tol = self.SUBITER_TOL * (np.abs(guess).max() + g * dt)
+            if np.abs(r).max() <= tol:
+                break
+            if r_prev is not None:
+                dr = (r - r_prev).ravel()
+                w = float(np.clip(-w * np.dot(r_prev.ravel(), dr) / np.dot(dr, dr), 1e-3, 1.0))
+            guess, r_prev = guess + w * r, r
+        else:
+            k = int(np.argmax(np.abs(r).max(axis=1)))
+            raise ConvergenceError(
+                f"body '{b.body_names[k]}': the sub-iterations did not converge in {self.SUBITER_MAX} tries "
+                f"(mean velocity residual {np.abs(r[k]).max():.3g}, tolerance {tol:.3g})"
+                f"{self._light_body_hint([k])}; a smaller coupling step converges faster"
+            )
+        self.subiterations = it
+        b.load_state(bs)
+        return F_fluid, T_fluid
+
     def _exchange_and_advance(self, t: float, dt: float) -> None:
         b = self.bodies
         kin0 = b.kinematics()
+        qvel0 = b.dof_velocities()
+        if self.added_mass is not None:
+            F_am, T_am = self.added_mass.correction()  # m^ a_prev, before the step moves the bodies
+            self.added_mass.step_started(dt)
         if self.scheme == "fluid-first":
-            self.fluid.advance(t, dt)  # the fluid moves the bodies' particles with their current motion
-            F_fluid, T_fluid = self.fluid.exchanged_wrenches()
-            # the fluid's moment is about the centre of mass at the start of the step; the
-            # bodies take the force at their moving centre, half a step on on average
-            T_fluid = T_fluid - np.cross(0.5 * dt * kin0.velocity, F_fluid)
-            loads = (F_fluid, T_fluid) + self._mooring_wrenches(kin0)
+            moor = self._mooring_wrenches(kin0)
+            if "subiterate" in self.remedies.values():
+                loads = self._subiterated_fluid_loads(t, dt, kin0, moor) + moor
+            else:
+                self.fluid.advance(t, dt)  # the fluid moves the bodies' particles with their current motion
+                loads = self._fluid_first_loads(dt, kin0.velocity) + moor
         else:
             loads = self._loads(kin0)
         if self.scheme == "predictor-corrector":
@@ -295,14 +395,93 @@ class Coupler:
             self._give_kinematics(kin0)
             loads = tuple(0.5 * (a + c) for a, c in zip(loads, end))
         F_fluid, T_fluid, F_moor, T_moor = loads
-        b.set_wrenches(F_fluid + F_moor, T_fluid + T_moor)
+        if self.added_mass is not None:
+            # the ledger books the fluid's own load: armature and this term cancel in a steady state
+            b.set_wrenches(F_fluid + F_am + F_moor, T_fluid + T_am + T_moor)
+        else:
+            b.set_wrenches(F_fluid + F_moor, T_fluid + T_moor)
         self.ledger.record(t, F_fluid, T_fluid, F_moor, T_moor, b.gravity_forces())
-        b.advance(t, dt)
-        self._give_kinematics(b.kinematics())
+        try:
+            b.advance(t, dt)
+        except InstabilityError as exc:
+            raise InstabilityError(f"{exc}{self._light_body_hint(range(b.n_bodies))}") from exc
+        kin1 = b.kinematics()
+        self._watch_bodies((b.dof_velocities() - qvel0) / dt, kin1)
+        self._give_kinematics(kin1)
         if self.fluid is not None and self.scheme != "fluid-first":
             self.fluid.advance(t, dt)
         for a in self.moorings:
             a.mooring.advance(t, dt)
+
+    #: the instability watch, two signatures of unstable coupling (beside non-finite
+    #: states): (1) a body's acceleration changes sign at every one of this many steps
+    #: in a row ...
+    WATCH_STEPS = 8
+    #: (2) ... or, in this many consecutive windows ...
+    WATCH_WINDOWS = 8
+    #: ... of this many steps, it changes sign in each window and its peak grows from each
+    #: window to the next; with a growth by this factor [-] over them and an end above g,
+    #: the run stops. Tuned on ``benchmarks/density_ratio_sweep.py``: it stops the runs whose
+    #: oscillation grows (fluid-first at ratios 0.05 and 0.1, predictor-corrector at 0.001)
+    #: and none of the clean ones (ratios 0.001 ... 1, explicit; 0.2, fluid-first).
+    WATCH_WINDOW = 20
+    WATCH_GROWTH = 2.0
+
+    def _watch_bodies(self, qacc: np.ndarray, kin) -> None:
+        """Stop a run whose body accelerations oscillate with growing amplitude (the
+        signature of unstable staggered coupling; for light bodies, added mass), or
+        whose bodies outrun the fluid's speed of sound, before it overflows."""
+        c0 = getattr(getattr(self.fluid, "config", None), "speed_of_sound", None)
+        if c0 is not None:
+            speed = np.linalg.norm(kin.velocity, axis=1)
+            k = int(np.argmax(speed))
+            if speed[k] > c0:
+                raise InstabilityError(
+                    f"body '{self.bodies.body_names[k]}' moves at {speed[k]:.3g} m/s, faster than the fluid's speed "
+                    f"of sound {c0:.3g} m/s, which a weakly compressible fluid cannot follow: unstable coupling"
+                    f"{self._light_body_hint([k])}")
+        hist = self._acc_history
+        hist.append(qacc)
+        n_keep = max(self.WATCH_STEPS + 1, self.WATCH_WINDOW * (self.WATCH_WINDOWS + 1))
+        del hist[:-n_keep]
+        b = self.bodies
+        g = float(np.linalg.norm(b.model.opt.gravity)) or 1.0
+        for k in range(b.n_bodies):
+            a = np.array([h[b.dofs(k)] for h in hist])
+            why = None
+            if len(a) > self.WATCH_STEPS:
+                last = a[-self.WATCH_STEPS - 1:]
+                mag = np.linalg.norm(last, axis=1)
+                if (np.einsum("ij,ij->i", last[1:], last[:-1]) < 0).all() and mag[-1] > 4.0 * mag[0] \
+                        and mag[-1] > g:
+                    why = (f"its acceleration changed sign at each of the last {self.WATCH_STEPS} steps and grew "
+                           f"from {mag[0]:.3g} to {mag[-1]:.3g}")
+            if why is None and len(a) == self.WATCH_WINDOW * (self.WATCH_WINDOWS + 1):
+                win = a.reshape(self.WATCH_WINDOWS + 1, self.WATCH_WINDOW, -1)
+                peaks = np.linalg.norm(win, axis=2).max(axis=1)
+                turns = (np.einsum("wij,wij->wi", win[:, 1:], win[:, :-1]) < 0).any(axis=1)
+                if turns.all() and (np.diff(peaks) > 0).all() and peaks[-1] > self.WATCH_GROWTH * peaks[0] \
+                        and peaks[-1] > g:
+                    why = (f"its acceleration oscillated with a peak growing in each of the last "
+                           f"{self.WATCH_WINDOWS} windows of {self.WATCH_WINDOW} steps, from {peaks[0]:.3g} "
+                           f"to {peaks[-1]:.3g}")
+            if why:
+                raise InstabilityError(f"body '{b.body_names[k]}': {why} (m/s^2 or rad/s^2): unstable coupling"
+                                       f"{self._light_body_hint([k])}")
+
+    def _light_body_hint(self, bodies) -> str:
+        """The mass ratio and remedy of the given bodies, for an instability message."""
+        am = self.added_mass
+        if am is None:
+            return ""
+        parts = []
+        for k in bodies:
+            name = self.bodies.body_names[k]
+            fix = ("scheme='explicit', or a smaller coupling step" if self.remedies.get(name) != "none"
+                   else "scheme='fluid-first' with light_body='subiterate', or scheme='explicit'")
+            parts.append(f"body '{name}' weighs {am.ratio[k]:.3g} x the fluid it displaces, light-body remedy "
+                         f"'{self.remedies.get(name)}' (try {fix})")
+        return "; " + "; ".join(parts)
 
     def run(self, t_end: float, callback: Callable[[StepInfo], Any] | None = None,
             progress: bool | None = None) -> int:
@@ -330,6 +509,9 @@ class Coupler:
             "steps": self.steps,
             "ledger": len(self.ledger),
             "participants": {p.name: p.save_state() for p in self.participants},
+            # the coupler's own memory of past steps: the added-mass term and the watch use it
+            "added_mass": None if self.added_mass is None else self.added_mass.save_state(),
+            "acc_history": [a.copy() for a in self._acc_history],
         }
 
     def load_state(self, state: dict) -> None:
@@ -339,6 +521,9 @@ class Coupler:
         self.clock.ticks = state["ticks"]
         self.steps = state["steps"]
         self.ledger.truncate(state["ledger"])
+        if self.added_mass is not None:
+            self.added_mass.load_state(state["added_mass"])
+        self._acc_history = [a.copy() for a in state["acc_history"]]
         if self.bodies is not None and self._initialized:
             kin = self.bodies.kinematics()
             if self.fluid is not None:
