@@ -64,16 +64,32 @@ def w_value(kernel: int, q: float, ad: float) -> float:
 
 
 @njit(**_OPTS)
-def grad_factor(kernel: int, q: float, ad: float, h: float) -> float:
-    """``F`` [1/m^(dim+2)] with ``grad_a W_ab = F * (r_a - r_b)``; zero outside the support."""
+def grad_shape(kernel: int, q: float) -> float:
+    """``F / grad_scale`` [-] at ``q = r/h``: the part of :func:`grad_factor` that varies
+    from pair to pair (the pair loops sum it and apply the constant once)."""
     if kernel == WENDLAND:
         t = max(1.0 - 0.5 * q, 0.0)
-        return -5.0 * ad / (h * h) * t * t * t
+        return t * t * t
     # cubic spline: dW/dq = ad * (-3/4 (2-q)^2 + 3 (1-q)^2) ; F = dW/dq / (q h^2)
     t2 = max(2.0 - q, 0.0)
     t1 = max(1.0 - q, 0.0)
     qs = max(q, 1e-12)
-    return ad / (h * h) * (-0.75 * t2 * t2 + 3.0 * t1 * t1) / qs
+    return (-0.75 * t2 * t2 + 3.0 * t1 * t1) / qs
+
+
+@njit(**_OPTS)
+def grad_scale(kernel: int, ad: float, h: float) -> float:
+    """``F / grad_shape`` [1/m^(dim+2)]: ``-5 alpha_d / h^2`` (Wendland), ``alpha_d / h^2``
+    (cubic spline)."""
+    if kernel == WENDLAND:
+        return -5.0 * ad / (h * h)
+    return ad / (h * h)
+
+
+@njit(**_OPTS)
+def grad_factor(kernel: int, q: float, ad: float, h: float) -> float:
+    """``F`` [1/m^(dim+2)] with ``grad_a W_ab = F * (r_a - r_b)``; zero outside the support."""
+    return grad_scale(kernel, ad, h) * grad_shape(kernel, q)
 
 
 @njit(**_OPTS)

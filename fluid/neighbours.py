@@ -127,6 +127,25 @@ def row_range(cx, cy, cz, dy, dz, nx, ny, nz, start, reach):
     return start[base + x0], start[base + x1 + 1]
 
 
+@njit(**_OPTS)
+def row_range_padded(cx, cy, cz, dy, dz, nx, ny, nz, start, reach, pad):
+    """:func:`row_range` with its end moved up to make the length a multiple of ``pad``,
+    as far as the row of cells goes: what it adds lies in the cells after the last
+    x-adjacent one, farther than the search radius from every particle of cell
+    ``(cx, cy, cz)`` (a vectorised loop then runs no scalar tail, and the pairs it adds
+    contribute nothing where the kernel is zero beyond the radius)."""
+    y = cy + dy
+    z = cz + dz
+    if y < 0 or y >= ny or z < 0 or z >= nz:
+        return 0, 0
+    x0 = max(cx - reach, 0)
+    x1 = min(cx + reach, nx - 1)
+    base = nx * (y + ny * z)
+    j0 = start[base + x0]
+    j1 = start[base + x1 + 1]
+    return j0, min(j0 + ((j1 - j0 + pad - 1) // pad) * pad, start[base + nx])
+
+
 @njit(parallel=True, **_OPTS)
 def _count(pos, lo, inv_cell, nx, ny, nz, start, reach, r2max, counts):
     n = pos.shape[0]

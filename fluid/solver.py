@@ -216,6 +216,7 @@ class Fluid:
         self._prm = eq.params(c.h, alpha_d(self._kernel, c.dim, c.h), c.alpha, c.delta, c.diffusion,
                               c.rho0, c.speed_of_sound, c.gravity)
         self._grid = None
+        self._work = eq.Workspace()
         self._limit: StepLimit | None = None
         self._loads = (np.zeros((self.n_groups, c.dim)), np.zeros((self.n_groups, 3 if c.dim == 3 else 1)))
         #: prescribed motions: group -> (motion, ids sorted, reference positions in id order)
@@ -523,9 +524,9 @@ class Fluid:
         n = ps.n
         if self.boundary_correction is not None:
             self.boundary_correction(ps, self._start, self._grid)
-        self._drho, self._acc, visc, self._cs = eq.evaluate(
+        self._drho, self._acc, visc, self._cs, self._xsph = eq.evaluate(
             ps.pos, ps.vel, ps.rho, ps.mass, ps.kind, self._start, self._grid, self._kernel,
-            self._prm, c.rho0, c.speed_of_sound, c.gamma, ps.p)
+            self._prm, c.rho0, c.speed_of_sound, c.gamma, ps.p, self._work)
         self._limit = stable_dt(self._acc, visc, self._cs, ps.kind, c.h, c.cfl, c.dt_max)
 
     def _group_sums(self):

@@ -29,7 +29,7 @@ def rates(pos, vel, rho, kind=None, h_coef=math.sqrt(2), dx=0.01, g=(0.0, 0.0), 
     p = np.empty(n)
     k = kernel_id(kernel)
     prm = eq.params(h, alpha_d(k, dim, h), alpha, delta, diffusion, RHO0, c0, np.asarray(g, float))
-    drho, acc, visc, cs = eq.evaluate(P, V, R, m, K, start, grid, k, prm, RHO0, c0, GAMMA, p)
+    drho, acc, visc, cs, _ = eq.evaluate(P, V, R, m, K, start, grid, k, prm, RHO0, c0, GAMMA, p)
     inv = np.empty(n, np.int64)
     inv[perm] = np.arange(n)
     return drho[inv], acc[inv], visc[inv], p[inv]

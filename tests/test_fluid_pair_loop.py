@@ -1,0 +1,143 @@
+"""The vectorised pair loop (fluid.equations.interact) against a plain O(N^2) evaluation of
+the same equations (fluid.equations module docstring, written out here pair by pair with
+numpy), on small random sets with fluid, fixed walls and a moving body."""
+
+import math
+
+import numpy as np
+import pytest
+
+from fluid import equations as eq
+from fluid.geometry import block
+from fluid.kernels import alpha_d, kernel_id
+from fluid.neighbours import Grid, sort_by_cell
+from fluid.particles import Kind
+
+RHO0, C0, GAMMA = 1000.0, 20.0, 7.0
+
+
+def kernel_terms(kernel, q, ad, h):
+    """(W, F) with grad_a W_ab = F r_ab (fluid.kernels docstring), zero beyond q = 2."""
+    if kernel == "wendland":
+        t = np.clip(1 - q / 2, 0, None)
+        return ad * t**4 * (2 * q + 1), -5 * ad / h**2 * t**3
+    t2, t1 = np.clip(2 - q, 0, None), np.clip(1 - q, 0, None)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        F = np.where(q > 0, ad / h**2 * (-0.75 * t2**2 + 3 * t1**2) / np.where(q > 0, q, 1), 0.0)
+    return ad * 0.25 * (t2**3 - 4 * t1**3), F
+
+
+def brute_force(pos, vel, rho, mass, kind, h, kernel, alpha, delta, diffusion, g, nu, eps):
+    """drho (N,), acc (N, dim), visc (N,), xsph (N, dim) summed over every pair."""
+    n, dim = pos.shape
+    ad = alpha_d(kernel_id(kernel), dim, h)
+    B = C0**2 * RHO0 / GAMMA
+    p = B * ((rho / RHO0) ** GAMMA - 1)
+    c = C0 * (rho / RHO0) ** ((GAMMA - 1) / 2)
+    r = pos[:, None, :] - pos[None, :, :]  # r_ab
+    v = vel[:, None, :] - vel[None, :, :]  # v_ab
+    r2 = (r * r).sum(-1)
+    Wab, F = kernel_terms(kernel, np.sqrt(r2) / h, ad, h)
+    fl = (kind == Kind.FLUID).astype(float)
+    mask = np.maximum(fl[:, None], fl[None, :])  # no boundary-boundary pairs
+    mb = mass[None, :] * mask
+    eta2 = 0.01 * h * h
+    vr = (v * r).sum(-1)
+    # continuity (004 Eq. 7) and density diffusion between fluid particles
+    drho = (mb * vr * F).sum(1)
+    if diffusion != "none":
+        rhoH = 0.0
+        if diffusion == "fourtakas":
+            kap = rho / c**2
+            rhoH = 0.5 * (kap[:, None] + kap[None, :]) * (-(r @ g))  # rhobar/c^2 g.(r_b - r_a)
+        psi_gradW = 2 * (rho[None, :] - rho[:, None] - rhoH) * (-F) * r2 / (r2 + eta2)
+        D = delta * h * C0 * ((mass / rho)[None, :] * fl[:, None] * fl[None, :] * psi_gradW).sum(1)
+        drho = drho + D
+    # momentum (004 Eq. 6) with Monaghan's artificial viscosity (001 Eq. 6)
+    mu = h * np.minimum(vr, 0) / (r2 + eta2)
+    Pi = -alpha * 0.5 * (c[:, None] + c[None, :]) * mu / (0.5 * (rho[:, None] + rho[None, :]))
+    coef = -mb * ((p / rho**2)[:, None] + (p / rho**2)[None, :] + Pi) * F
+    acc = (coef[..., None] * r).sum(1)
+    # laminar viscosity (Lo & Shao 2002)
+    lam = mb * 4 * nu * F * r2 / ((rho[:, None] + rho[None, :]) * (r2 + eta2))
+    acc += (lam[..., None] * v).sum(1)
+    acc += fl[:, None] * g
+    # 8-norm of the viscous term of 001 Eq. 14 over the support (fluid.equations.interact)
+    visc = ((mask * (r2 < 4 * h * h) * h * vr / (r2 + eta2)) ** 8).sum(1) ** 0.125
+    # XSPH: eps sum_b m_b / rhobar_ab v_ba W_ab, fluid particles only
+    xs = eps * fl[:, None] * ((mb / (0.5 * (rho[:, None] + rho[None, :])) * Wab)[..., None] * (-v)).sum(1)
+    return drho, acc, visc, xs
+
+
+def scene(dim, seed):
+    rng = np.random.default_rng(seed)
+    dx = 0.01
+    L = 0.12 if dim == 2 else 0.05
+    fl = block(np.zeros(dim), np.full(dim, L), dx)
+    fl = fl + rng.normal(0, 0.15 * dx, fl.shape)
+    lo, hi = np.full(dim, -0.02), np.full(dim, L + 0.02)
+    hi[-1] = 0.0
+    floor = block(lo, hi, dx) - np.r_[np.zeros(dim - 1), 0.005]
+    lo2, hi2 = np.zeros(dim), np.full(dim, L)
+    lo2[0], hi2[0] = L + 0.005, L + 0.025
+    side = block(lo2, hi2, dx)
+    pos = np.concatenate([fl, floor, side])
+    kind = np.r_[np.zeros(len(fl)), np.full(len(floor), Kind.FIXED_WALL), np.full(len(side), Kind.BODY)]
+    vel = rng.normal(0, 0.3, pos.shape)
+    vel[len(fl):len(fl) + len(floor)] = 0.0
+    vel[len(fl) + len(floor):] = [-0.2] + [0.05] * (dim - 1)
+    rho = RHO0 * (1 + rng.uniform(-0.005, 0.01, len(pos)))
+    mass = RHO0 * dx**dim * (1 + rng.uniform(-0.1, 0.1, len(pos)))
+    return pos, vel, rho, mass, kind.astype(np.int8), dx
+
+
+@pytest.mark.parametrize("xsph", [0.0, 0.3])
+@pytest.mark.parametrize("nu", [0.0, 1e-3])
+@pytest.mark.parametrize("kernel", ["wendland", "cubic"])
+@pytest.mark.parametrize("dim", [2, 3])
+def test_pair_loop_equals_brute_force(dim, kernel, nu, xsph):
+    pos, vel, rho, mass, kind, dx = scene(dim, seed=dim)
+    h = math.sqrt(2) * dx if dim == 2 else 1.3 * dx
+    g = np.zeros(dim)
+    g[-1] = -9.81
+    alpha, delta, diffusion = 0.1, 0.1, "fourtakas"
+    # a grid barely larger than the set, so that rounded-up ranges reach the row ends
+    grid = Grid.covering(pos.min(0) - 1e-9, pos.max(0) + 1e-9, 2 * h)
+    perm, start, out = sort_by_cell(pos, grid)
+    assert out == 0
+    k = kernel_id(kernel)
+    prm = eq.params(h, alpha_d(k, dim, h), alpha, delta, diffusion, RHO0, C0, g, nu=nu, xsph=xsph)
+    p = np.empty(len(pos))
+    r = eq.evaluate(pos[perm], vel[perm], rho[perm], mass[perm], kind[perm], start, grid, k, prm,
+                    RHO0, C0, GAMMA, p)
+    drho, acc, visc, xs = brute_force(pos[perm], vel[perm], rho[perm], mass[perm], kind[perm], h, kernel,
+                                      alpha, delta, diffusion, g, nu, xsph)
+    assert np.abs(drho).max() > 1.0 and np.abs(acc - g * (kind[perm] == 0)[:, None]).max() > 1.0
+    np.testing.assert_allclose(r.drho, drho, rtol=0, atol=1e-11 * np.abs(drho).max())
+    np.testing.assert_allclose(r.acc, acc, rtol=0, atol=1e-11 * np.abs(acc).max())
+    np.testing.assert_allclose(r.visc, visc, rtol=1e-11, atol=0)
+    if xsph:
+        assert np.abs(xs).max() > 1e-2
+        np.testing.assert_allclose(r.xsph, xs, rtol=0, atol=1e-11 * np.abs(xs).max())
+    else:
+        assert r.xsph is None
+
+
+def test_laminar_viscosity_conserves_momentum_and_damps_relative_motion():
+    """The laminar term of the pair loop is antisymmetric in the pair (sum m_a a_a = 0)
+    and removes kinetic energy (sum m_a v_a . a_a < 0)."""
+    pos, vel, rho, mass, kind, dx = scene(2, seed=5)
+    fl = kind == Kind.FLUID
+    pos, vel, rho, mass, kind = pos[fl], vel[fl], rho[fl], mass[fl], kind[fl]
+    h = math.sqrt(2) * dx
+    grid = Grid.covering(pos.min(0) - 1e-9, pos.max(0) + 1e-9, 2 * h)
+    perm, start, _ = sort_by_cell(pos, grid)
+    acc = {}
+    for nu in (0.0, 1e-2):
+        prm = eq.params(h, alpha_d(0, 2, h), 0.0, 0.0, "none", RHO0, C0, np.zeros(2), nu=nu)
+        acc[nu] = eq.evaluate(pos[perm], vel[perm], rho[perm], mass[perm], kind[perm], start, grid, 0, prm,
+                              RHO0, C0, GAMMA, np.empty(len(pos))).acc
+    a = acc[1e-2] - acc[0.0]
+    m, v = mass[perm, None], vel[perm]
+    assert np.abs((m * a).sum(0)).max() < 1e-12 * (m * np.abs(a)).sum()
+    assert (m * v * a).sum() < -1e-3 * (m * np.abs(v * a)).sum()
