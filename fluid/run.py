@@ -93,6 +93,9 @@ def run(fluid, t_end: float, *, probes=(), sample_every: float | None = None, ou
         output = H5Output(output, fluid.config.dim, attrs=attrs)
     elif attrs:
         raise InputError("run: attrs go into a file run() opens; write them with H5Output(..., attrs=)")
+    if output is not None and output.dim != fluid.config.dim:
+        raise InputError(f"run: the output is {output.dim}-D but the fluid is {fluid.config.dim}-D; "
+                         f"open the H5Output with dim={fluid.config.dim}")
     bar = progress if isinstance(progress, Progress) else Progress(t0, t_end, enabled=progress)
     rows: dict[str, list] = {name: [] for name in names}
     tol = 1e-9 * max(1.0, abs(t_end))

@@ -104,5 +104,9 @@ def test_bad_run_input_is_refused(tmp_path):
         run(f, 0.1, snapshot_every=0.01)
     with pytest.raises(InputError, match="repeat"):
         run(f, 0.1, probes=[Energy(), Energy()])
+    from fluid.output import H5Output
+
+    with pytest.raises(InputError, match="dim=2"), H5Output(tmp_path / "y.h5", dim=3) as out:
+        run(f, 0.1, output=out)
     with pytest.raises(InputError, match="snapshot field"):
         run(f, 0.1, output=tmp_path / "x.h5", snapshot_fields=("nope",))
