@@ -53,7 +53,8 @@ def run_hydrostatic(dim: int, dx: float, t_end: float, depth: float = 0.2, lengt
     g, rho0 = 9.81, 1000.0
     H = depth
     b = tank_with_water(dim, dx, length, H, 1.25 * H, width=width)
-    cfg = FluidConfig(dim=dim, dx=dx, u_max=math.sqrt(g * H), c0_factor=20.0, **overrides)
+    overrides = {"c0_factor": 20.0, **overrides}
+    cfg = FluidConfig(dim=dim, dx=dx, u_max=math.sqrt(g * H), **overrides)
     ps = b.particles
     set_hydrostatic(ps, H, rho0, cfg.speed_of_sound, cfg.gamma, g)
     f = Fluid(cfg, ps)
@@ -141,26 +142,62 @@ def _read_front(name: str) -> np.ndarray:
     return np.loadtxt(path, delimiter=",", comments="#", skiprows=3)
 
 
+def _pressure_noise(ps, h: float, p_scale: float) -> float:
+    """RMS over fluid particles with a full support (>= 2h from any boundary of the fluid
+    region, by neighbour count) of ``p_a - <p>_a``, the pressure minus its kernel-weighted
+    (Shepard) mean over the neighbours within 2h, over ``p_scale`` [Pa]: the particle-scale
+    pressure noise, which a smooth flow does not have (a linear field has none)."""
+    from scipy.spatial import cKDTree
+
+    from fluid.kernels import W
+
+    fl = ps.kind == Kind.FLUID
+    x, p = ps.pos[fl], ps.p[fl]
+    tree = cKDTree(x)
+    pairs = tree.query_pairs(2 * h, output_type="ndarray")
+    w = W(np.linalg.norm(x[pairs[:, 0]] - x[pairs[:, 1]], axis=1), h, x.shape[1])
+    w0 = float(W(np.zeros(1), h, x.shape[1])[0])
+    num = w0 * p + np.bincount(pairs[:, 0], w * p[pairs[:, 1]], len(p)) + np.bincount(pairs[:, 1], w * p[pairs[:, 0]], len(p))
+    den = w0 + np.bincount(pairs[:, 0], w, len(p)) + np.bincount(pairs[:, 1], w, len(p))
+    cnt = np.bincount(pairs.ravel(), minlength=len(p))
+    inner = cnt >= np.percentile(cnt, 90) * 0.95  # full support: as many neighbours as the bulk
+    return float(np.sqrt(np.mean(((p - num / den)[inner]) ** 2)) / p_scale)
+
+
 def run_dambreak(n_a: int, T_end: float = 3.0, a: float = 0.146, **overrides) -> dict:
     """Collapse of a water column ``a`` wide and ``2a`` high [m] (n^2 = 2) on a dry bed in a
     tank ``4a`` long (Koshizuka & Oka 1996: a = L = 0.146 m), ``n_a`` particles across the
-    column. Surge front Z = x_front / a against T = t sqrt(2 g / a) (SOURCE.txt): the
-    front is the largest x of the fluid particles. c0 = 10 sqrt(2 g 2a) (the defaults
-    otherwise: Wendland h = sqrt(2) dx, alpha = 0.01, Fourtakas delta = 0.1, CFL 0.2).
-    Compared with Koshizuka & Oka (1996) and Martin & Moyce (1952, a = 2.25 in) as
-    digitised in refdata, over the published points with T <= T_end and Z < 3.9 (before
-    the front meets the far wall at Z = 4).
+    column. Surge front Z = x_front / a against T = t sqrt(2 g / a), residual height at the
+    back wall H = h / (2a) against tau = t sqrt(g / a) (SOURCE.txt). The fluid's edge lies
+    half a spacing beyond the outermost particle centre (the column of n_a particles is a
+    wide at t = 0): front ``x_front = max x + dx/2``, height ``max z + dx/2`` of the
+    particles within 2 dx of the back wall. c0 = 10 sqrt(2 g 2a) (the defaults otherwise:
+    Wendland h = sqrt(2) dx, alpha = 0.01, Fourtakas delta = 0.1, CFL 0.2). Compared with
+    Koshizuka & Oka (1996) and Martin & Moyce (1952, a = 2.25 in) as digitised in refdata,
+    over the published points with T <= T_end and Z < 3.9 (before the front meets the far
+    wall at Z = 4), and with Martin & Moyce's residual heights (Table 6) for tau <= T_end /
+    sqrt(2).
 
-    Status: the target (5 %) is not met. The computed front runs ahead of both experiments
-    (RMS 10 % at 20 particles across the column, 12-14 % at 40), and further ahead as dx
-    shrinks, while staying well below Ritter's inviscid bound dZ/dT = 2. Numerical fronts
-    are commonly reported ahead of these experiments (gate removal and bed friction slow
-    the measured front; neither is modelled: dynamic boundaries are nearly free-slip here).
-    Delaying the computed front by dT = 0.20 (0.017 s at a = 0.146 m) brings it to 0.9 % RMS
-    of Martin & Moyce (Koshizuka & Oka: 5.7 % at dT = 0.16), reported as ``diag_*``
-    metrics and not judged: consistent with a delayed start of the experiments, not a
-    proof. Open: compare with a numerical reference of the same (inviscid) problem and
-    settle the time origin before any change of the target."""
+    Checked (task of issue 4): the time and length scales are those of SOURCE.txt (T uses
+    n t sqrt(g/a) with n = sqrt 2, Z and H are measured from the back wall and the bed);
+    the column starts at rest with the hydrostatic Tait density (``set_hydrostatic``), so
+    there is no start-up pressure wave; the tank wall at x < 0 is the back wall and there is
+    no gate (removed instantly, as idealised). The front used to be taken at the particle
+    centre, which put it dx/2 behind the fluid's edge (Z(0) = 1 - 1/(2 n_a)); now consistent.
+
+    Status: the front target (5 %) is not met and the error does not shrink with dx: the
+    computed front runs ahead of both experiments by 10-15 % RMS (numbers in the table of
+    benchmarks/fluid_trade.py), while the residual height at the back wall, which the
+    fluid's bulk sets, agrees with Martin & Moyce to a few per cent. The model has no bed
+    friction (dynamic boundaries are nearly free-slip at alpha = 0.01) and no gate; a
+    front that runs ahead of these experiments while the column's collapse agrees is what
+    an inviscid model gives (numerical fronts are commonly reported ahead of them). Delaying
+    the computed front by the best-fitting dT is reported as ``diag_*`` metrics, not judged.
+    Open: a numerical reference of the same inviscid problem to settle it.
+
+    ``p_noise_rms`` is the particle-scale pressure noise (:func:`_pressure_noise`) averaged
+    over T = 1, 2, 3, in units of rho0 g 2a: what MLS re-initialisation (``mls_every``) is
+    for."""
     from fluid.geometry import assemble, block, tank_walls
 
     g = 9.81
@@ -174,16 +211,23 @@ def run_dambreak(n_a: int, T_end: float = 3.0, a: float = 0.146, **overrides) ->
     f.initialize(0.0)
     tscale = math.sqrt(2 * g / a)
     dT = 0.05
-    Ts, Zs = [0.0], [a / a]
+    Ts, Zs, Hs = [0.0], [1.0], [1.0]
+    noise = []
     t = 0.0
+    p_scale = 1000.0 * g * 2 * a
     while Ts[-1] < T_end - 1e-9:
         f.advance(t, dT / tscale)
         t += dT / tscale
         fl = f.ps.kind == Kind.FLUID
+        x, z = f.ps.pos[fl, 0], f.ps.pos[fl, 1]
         Ts.append(Ts[-1] + dT)
-        Zs.append(float(f.ps.pos[fl, 0].max()) / a)
-    Ts, Zs = np.array(Ts), np.array(Zs)
-    metrics = {"dx_m": dx, "n_a": n_a, "c0_m_s": cfg.speed_of_sound}
+        Zs.append((float(x.max()) + 0.5 * dx) / a)
+        Hs.append((float(z[x < 2 * dx].max(initial=-0.5 * dx)) + 0.5 * dx) / (2 * a))
+        if abs(Ts[-1] - round(Ts[-1])) < 1e-6 and Ts[-1] > 0.5:
+            noise.append(_pressure_noise(f.ps, cfg.h, p_scale))
+    Ts, Zs, Hs = np.array(Ts), np.array(Zs), np.array(Hs)
+    metrics = {"dx_m": dx, "n_a": n_a, "c0_m_s": cfg.speed_of_sound,
+               "p_noise_rms": float(np.mean(noise)) if noise else float("nan")}
     for key, name in (("ko1996", "koshizuka_oka1996_front_pysph.csv"),
                       ("mm1952", "mm1952_fig3_n2sq2_a2.25in_pysph.csv")):
         ref = _read_front(name)
@@ -200,6 +244,12 @@ def run_dambreak(n_a: int, T_end: float = 3.0, a: float = 0.146, **overrides) ->
                for s in shifts]
         metrics[f"diag_best_delay_T_{key}"] = float(shifts[int(np.argmin(fit))])
         metrics[f"diag_front_rms_rel_err_delayed_{key}"] = float(min(fit))
+    href = _read_front("mm1952_table_height_ocellaris.csv")
+    tau = Ts / math.sqrt(2.0)  # tau = t sqrt(g/a) = T / sqrt(2)
+    use = href[:, 0] <= tau[-1]
+    rel = (np.interp(href[use, 0], tau, Hs) - href[use, 1]) / href[use, 1]
+    metrics["height_rms_rel_err_mm1952"] = float(np.sqrt(np.mean(rel**2)))
+    metrics["height_rel_err_mm1952"] = [round(float(v), 4) for v in rel]
     metrics["front_T_Z"] = [[round(float(x), 3), round(float(z), 4)] for x, z in zip(Ts[::4], Zs[::4])]
     tolerances = {"front_rms_rel_err_ko1996": 0.05, "front_rms_rel_err_mm1952": 0.05}
     passed = all(metrics[k] < v for k, v in tolerances.items())
