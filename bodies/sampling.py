@@ -139,6 +139,57 @@ def _section_distance(kind, size, p, axis):
     return signed_distance(kind, size, p)
 
 
+def ghost_offsets(geoms, points: np.ndarray, dim: int = 3) -> np.ndarray:
+    """Vectors [m] (n, 3), body frame, from each boundary particle (``points``, body
+    coordinates, e.g. from :func:`sample_geoms`) to its ghost node: its mirror image
+    across the nearest surface of the body (modified dynamic boundaries, English et
+    al. 2022, Comp. Part. Mech. 9: 911-925, §3). The particle's geom is the one it
+    lies deepest in (exact for one geom and for geoms that do not overlap). A box
+    reflects the particle across every face at the least depth, so that particles
+    on a corner diagonal mirror through the corner; other shapes mirror along the
+    gradient of the signed distance (radial for spheres, cylinders, capsules)."""
+    points = np.asarray(points, float)
+    best = np.full(len(points), np.inf)
+    out = np.zeros((len(points), 3))
+    for gi, g in enumerate(geoms):
+        size = np.asarray(g.size, dtype=float)
+        p = (points - g.pos) @ g.rot  # geom frame
+        if dim == 2:
+            along_y = np.flatnonzero(np.isclose(np.abs(g.rot[1]), 1.0))
+            if along_y.size != 1:
+                raise InputError(f"ghost nodes: a planar body's geom {gi} ({g.kind}) has no axis along y")
+            ax = int(along_y[0])
+            dist = lambda q, ax=ax: _section_distance(g.kind, size, q, ax)
+        else:
+            ax = -1
+            dist = lambda q: signed_distance(g.kind, size, q)
+        sd = dist(p)
+        if g.kind == "box":
+            half = size[:3].copy()
+            if ax >= 0:
+                half[ax] = np.inf
+            q = np.abs(p) - half  # per-axis signed depth; the largest is the nearest face
+            near = q >= sd[:, None] - 1e-9 * max(half[np.isfinite(half)].max(), 1.0)
+            ghost_g = -2.0 * np.where(near, q, 0.0) * np.sign(p)
+        else:
+            eps = 1e-6 * max(float(size.max()), 1e-9)
+            grad = np.zeros_like(p)
+            for k in range(3):
+                if k == ax:
+                    continue
+                e = np.zeros(3)
+                e[k] = eps
+                grad[:, k] = (dist(p + e) - dist(p - e)) / (2 * eps)
+            norm = np.linalg.norm(grad, axis=1, keepdims=True)
+            ghost_g = -2.0 * sd[:, None] * grad / np.where(norm > 0, norm, 1.0)
+        take = sd < best
+        best = np.where(take, sd, best)
+        out[take] = ghost_g[take] @ g.rot.T  # back to the body frame
+    if dim == 2:
+        out[:, 1] = 0.0
+    return out
+
+
 def place(points_b: np.ndarray, owner: np.ndarray, kin: BodyKinematics):
     """World positions [m] and velocities [m/s] of particles stored in body
     coordinates: ``x = origin + R p``, ``u = V + Ω × (x − r_com)`` (seed 004 Eq. 13)."""

@@ -18,8 +18,9 @@ import math
 
 import numpy as np
 
-from bodies.sampling import place, signed_distance
+from bodies.sampling import ghost_offsets, place, signed_distance
 from cosim.errors import InputError
+from fluid.boundary_correction import MDBC
 from fluid.geometry import assemble, set_hydrostatic
 from fluid.particles import Kind
 from fluid.solver import Fluid, FluidConfig
@@ -44,10 +45,20 @@ class SPHFluid:
     body_layers:
         Layers of boundary particles inside each body's surface; default: enough
         to fill the kernel support (ceil(2 h / dx)).
+    boundary:
+        How the bodies' boundary particles get their density: ``"mdbc"`` (default;
+        modified dynamic boundaries, ``fluid.boundary_correction``: the fluid rests
+        against the geometric surface, so a body displaces its own volume) or
+        ``"dbc"`` (plain dynamic boundaries, seed 004 §2.6: the fluid stands off by
+        a gap of order h and a floating body rides high by a fraction of dx).
+        The tank walls stay plain dynamic boundaries.
     """
 
     def __init__(self, config: FluidConfig, fluid_points, walls=(), *, z_surface: float | None = None,
-                 body_layers: int | None = None):
+                 body_layers: int | None = None, boundary: str = "mdbc"):
+        if boundary not in ("mdbc", "dbc"):
+            raise InputError(f"SPH fluid: boundary={boundary!r}; choose 'mdbc' or 'dbc'")
+        self.boundary = boundary
         self.config = config
         self.name = config.name
         self._fluid_points = np.asarray(fluid_points, float)
@@ -87,6 +98,15 @@ class SPHFluid:
             set_hydrostatic(ps, self.z_surface, c.rho0, c.speed_of_sound, c.gamma, c.g)
         self.fluid = Fluid(c, ps)
         self.n_bodies = bodies.n_bodies
+        self._mdbc = None
+        if self.boundary == "mdbc":
+            geoms = bodies.geoms()
+            self._ghost_b = np.zeros_like(pb)
+            for k in range(bodies.n_bodies):
+                self._ghost_b[owner == k] = ghost_offsets(geoms[k], pb[owner == k], c.dim)
+            self._mdbc = MDBC(c.dim, c.h, c.rho0, c.kernel, int(ps.ids.max()) + 1)
+            self._set_ghosts(kin)
+            self.fluid.boundary_correction = self._mdbc
 
     def _inside_bodies(self, geoms, kin) -> np.ndarray:
         """Fluid points whose cell (half a spacing around them) reaches into a body."""
@@ -103,7 +123,14 @@ class SPHFluid:
     def _to_dim(self, v3):
         return v3[:, [0, 2]] if self.config.dim == 2 else v3
 
+    def _set_ghosts(self, kin) -> None:
+        """Ghost-node vectors of the body particles in the world frame (rotate with the body)."""
+        g = np.einsum("nij,nj->ni", kin.rotation[self._owner], self._ghost_b)
+        self._mdbc.set_offsets(self._ids, self._to_dim(g))
+
     def set_body_kinematics(self, kin) -> None:
+        if self._mdbc is not None:
+            self._set_ghosts(kin)
         x, u = place(self._pb, self._owner, kin)
         self.fluid.set_particle_motion(self._ids, self._to_dim(x), self._to_dim(u))
         self.fluid.moment_points[self._g0:self._g0 + self.n_bodies] = self._to_dim(kin.com)

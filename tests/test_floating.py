@@ -1,0 +1,102 @@
+"""Floating bodies in the SPH fluid: mDBC boundary densities, ghost nodes of body
+particles, and the quick floating-body validation cases."""
+
+import math
+
+import numpy as np
+import pytest
+
+from bodies.sampling import GeomShape, ghost_offsets, sample_geoms
+from cosim.errors import InputError
+from fluid.boundary_correction import MDBC
+from fluid.geometry import block
+from fluid.neighbours import Grid, sort_by_cell
+from fluid.particles import Kind, ParticleSet
+
+I3 = np.eye(3)
+
+
+def test_box_ghosts_mirror_across_the_nearest_face_and_through_corners():
+    """Cell-centred particles of a 0.1 x 0.1 x 0.05 box: a particle near the bottom
+    face mirrors across it; the corner-diagonal particle mirrors through the corner."""
+    g = GeomShape("box", np.array([0.05, 0.05, 0.025]), np.zeros(3), I3)
+    p, _ = sample_geoms([g], 0.01, 2)
+    o = ghost_offsets([g], p)
+    ghost = p + o
+    bottom = (np.abs(p[:, 0]) < 0.02) & (np.abs(p[:, 1]) < 0.02) & (p[:, 2] < -0.015)
+    assert np.allclose(ghost[bottom, :2], p[bottom, :2])
+    assert np.allclose(ghost[bottom, 2], -0.05 - p[bottom, 2])  # mirror of z across z = -0.025
+    c = np.argmin(np.linalg.norm(p - [-0.045, -0.045, -0.02], axis=1))
+    assert np.allclose(ghost[c], [-0.055, -0.055, -0.03])  # point reflection through the corner
+
+
+def test_cylinder_ghosts_are_radial_mirror_images():
+    g = GeomShape("cylinder", np.array([0.1, 0.5]), np.zeros(3), I3)
+    p, _ = sample_geoms([g], 0.01, 3, dim=3)
+    side = np.abs(p[:, 2]) < 0.4
+    ghost = (p + ghost_offsets([g], p))[side]
+    r, rg = np.hypot(p[side, 0], p[side, 1]), np.hypot(ghost[:, 0], ghost[:, 1])
+    assert np.allclose(rg, 0.2 - r, atol=1e-6)  # mirrored across r = 0.1
+    assert np.allclose(ghost[:, 0] * p[side, 1], ghost[:, 1] * p[side, 0], atol=1e-9)  # same ray
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_mdbc_reproduces_a_linear_density_field(dim):
+    """Fluid on a lattice above a flat wall carries rho = rho0 + a.x (any slope):
+    every wall particle whose ghost node has full first-order support gets the
+    field's value at its own position (English et al. 2022 Eq. 12-13 are exact for
+    linear fields), below the support the Shepard fallback."""
+    dx, h = 0.01, math.sqrt(2) * 0.01
+    lo = np.zeros(dim)
+    hi = np.full(dim, 0.1)
+    fluid = block(lo, hi, dx)
+    wlo = lo.copy()
+    wlo[-1] = -0.03
+    whi = hi.copy()
+    whi[-1] = 0.0
+    wall = block(wlo, whi, dx)
+    pos = np.concatenate([fluid, wall])
+    n = len(pos)
+    kind = np.r_[np.zeros(len(fluid), np.int8), np.full(len(wall), Kind.FIXED_WALL, np.int8)]
+    slope = np.array([3.0, -2.0, 5.0])[:dim]  # kg/m^4
+    rho = 1000.0 + 20.0 + pos @ slope
+    rho[kind != 0] = 1000.0
+    ps = ParticleSet(pos=pos, vel=np.zeros_like(pos), rho=rho, mass=np.full(n, 1000.0 * dx**dim), kind=kind,
+                     group=np.where(kind == 0, -1, 0).astype(np.int32), ids=np.arange(n, dtype=np.int64),
+                     p=np.zeros(n))
+    grid = Grid.covering(lo - 0.05, hi + 0.05, 2 * h)
+    perm, start, _ = sort_by_cell(ps.pos, grid)
+    ps.permute(perm)
+    m = MDBC(dim, h, 1000.0, "wendland", n)
+    wall_ids = ps.ids[ps.kind != 0]
+    off = np.zeros((len(wall_ids), dim))
+    off[:, -1] = -2.0 * ps.pos[ps.kind != 0, -1]  # mirror across z = 0
+    m.set_offsets(wall_ids, off)
+    m(ps, start, grid)
+    w = ps.kind != 0
+    # ghost nodes at least 2h from the open sides have a full neighbourhood
+    inner = np.all((ps.pos[:, :-1] > 2 * h) & (ps.pos[:, :-1] < 0.1 - 2 * h), axis=1) & w
+    assert inner.sum() > 0
+    exact = 1020.0 + ps.pos[inner] @ slope
+    assert np.max(np.abs(ps.rho[inner] - exact)) < 1e-9 * 1000
+    assert (m.low_order[inner] == 0).all()
+
+
+def test_mdbc_rejects_bad_input():
+    with pytest.raises(InputError):
+        MDBC(4, 0.01, 1000.0, "wendland", 10)
+    m = MDBC(2, 0.01, 1000.0, "wendland", 10)
+    with pytest.raises(InputError):
+        m.set_offsets([1, 2], np.zeros((2, 3)))
+
+
+def test_floating_box_draft_quick():
+    """2-D box of 500 kg/m^3 at dx = 12.5 mm floats at the Archimedes draft within
+    2 % of its height (measured -1.3 %)."""
+    from cosim.validation import run
+
+    r = run("floating-box-draft", quick=True)
+    res = r["metrics"]["runs"][0]
+    assert r["passed"], r["metrics"]
+    assert abs(res["error_of_height"]) < 0.02
+    assert res["draft_std_m"] < 0.1 * 0.025  # it stays put: fluctuations a tenth of the draft
