@@ -21,6 +21,17 @@ two): ``v^{n+1} = v^{n-1} + 2 dt a^n``, ``rho^{n+1} = rho^{n-1} + 2 dt drho^n``,
 ``r^{n+1} = r^n + dt v^n + dt^2/2 a^n``; every ``verlet_reset`` steps (and on the first) the
 forward-Euler form ``v^{n+1} = v^n + dt a^n``, ``rho^{n+1} = rho^n + dt drho^n`` decouples the
 odd and even steps.
+
+XSPH (optional, fluid.equations): fluid particles move with ``v + dv_x``, the XSPH
+correction ``dv_x`` taken with the rates (at n; at n+1/2 in the corrector):
+predictor ``r^{n+1/2} = r^n + dt/2 (v^n + dv_x^n)``, corrector
+``r^{n+1} = r^n + dt ((v^n + v^{n+1})/2 + dv_x^{n+1/2})``, Verlet
+``r^{n+1} = r^n + dt (v^n + dv_x^n) + dt^2/2 a^n``. Velocities are not changed by it.
+
+With laminar viscosity ``nu > 0`` the step also obeys the viscous diffusion limit
+``dt <= 0.125 h^2 / nu`` (Morris, Fox & Zhu 1997, J. Comput. Phys. 136, Eq. 29 of that
+paper; DualSPHysics does not apply it, we do: for a small ``dx`` and a large ``nu`` it is
+the binding limit), limiter ``"viscous_diffusion"``.
 """
 
 from __future__ import annotations
@@ -34,7 +45,7 @@ from numba import njit, prange
 _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 
 #: names of the conditions that can limit a step
-LIMITERS = ("force", "courant_viscous", "dt_max", "coupling")
+LIMITERS = ("force", "courant_viscous", "viscous_diffusion", "dt_max", "coupling")
 
 
 @dataclass(frozen=True)
@@ -63,23 +74,30 @@ def _bounds(acc, visc, cs, kind, h):
     return amax2, cvmin
 
 
-def stable_dt(acc, visc, cs, kind, h: float, cfl: float, dt_max: float = math.inf) -> StepLimit:
-    """001_14936b82710365b2.txt Eq. 14 with factor ``cfl``; ``dt_max`` [s] caps it."""
+def stable_dt(acc, visc, cs, kind, h: float, cfl: float, dt_max: float = math.inf,
+              nu: float = 0.0) -> StepLimit:
+    """001_14936b82710365b2.txt Eq. 14 with factor ``cfl``; ``dt_max`` [s] caps it; with a
+    laminar kinematic viscosity ``nu`` [m^2/s] > 0 also ``0.125 h^2 / nu`` (Morris et al.
+    1997)."""
     amax2, cvmin = _bounds(acc, visc, cs, kind, h) if cs.size else (0.0, math.inf)
     amax = math.sqrt(amax2)
     dt_f = cfl * math.sqrt(h / amax) if amax > 0 else math.inf
     dt_cv = cfl * cvmin
     dt, lim = (dt_f, "force") if dt_f < dt_cv else (dt_cv, "courant_viscous")
+    if nu > 0 and 0.125 * h * h / nu < dt:
+        dt, lim = 0.125 * h * h / nu, "viscous_diffusion"
     if dt_max < dt:
         dt, lim = dt_max, "dt_max"
     return StepLimit(dt, lim, dt_f, dt_cv)
 
 
 @njit(parallel=True, **_OPTS)
-def predictor(pos, vel, rho, drho, acc, kind, rho0, dt, pos_n, vel_n, rho_n):
-    """Save the n state into ``*_n`` and advance ``pos, vel, rho`` to n+1/2 in place."""
+def predictor(pos, vel, rho, drho, acc, kind, rho0, dt, pos_n, vel_n, rho_n, xs):
+    """Save the n state into ``*_n`` and advance ``pos, vel, rho`` to n+1/2 in place.
+    ``xs``: the XSPH correction [m/s] (N, dim), or an empty array when off."""
     half = 0.5 * dt
     dim = pos.shape[1]
+    use_xs = xs.shape[0] > 0
     for i in prange(pos.shape[0]):
         f = kind[i] == 0
         r = rho[i]
@@ -90,15 +108,17 @@ def predictor(pos, vel, rho, drho, acc, kind, rho0, dt, pos_n, vel_n, rho_n):
             v = vel[i, k]
             vel_n[i, k] = v
             pos_n[i, k] = pos[i, k]
-            pos[i, k] += half * v
+            pos[i, k] += half * (v + xs[i, k]) if use_xs else half * v
             if f:
                 vel[i, k] = v + half * acc[i, k]
 
 
 @njit(parallel=True, **_OPTS)
-def corrector(pos, vel, rho, drho, acc, kind, rho0, dt, pos_n, vel_n, rho_n):
-    """Advance from the saved n state to n+1 with the rates at n+1/2 (in place)."""
+def corrector(pos, vel, rho, drho, acc, kind, rho0, dt, pos_n, vel_n, rho_n, xs):
+    """Advance from the saved n state to n+1 with the rates at n+1/2 (in place); ``xs`` as
+    in :func:`predictor`, at n+1/2."""
     dim = pos.shape[1]
+    use_xs = xs.shape[0] > 0
     for i in prange(pos.shape[0]):
         f = kind[i] == 0
         eps = -drho[i] / rho[i] * dt
@@ -108,7 +128,7 @@ def corrector(pos, vel, rho, drho, acc, kind, rho0, dt, pos_n, vel_n, rho_n):
             v0 = vel_n[i, k]
             v1 = v0 + dt * acc[i, k] if f else v0
             vel[i, k] = v1
-            pos[i, k] = pos_n[i, k] + 0.5 * dt * (v0 + v1)
+            pos[i, k] = pos_n[i, k] + 0.5 * dt * (v0 + v1) + (dt * xs[i, k] if use_xs else 0.0)
 
 
 @njit(cache=True)  # no fastmath here: it would let LLVM assume there are no NaNs
@@ -126,10 +146,12 @@ def first_non_finite(pos, vel, rho):
 
 
 @njit(parallel=True, **_OPTS)
-def verlet(pos, vel, rho, drho, acc, kind, rho0, dt, vel_m1, rho_m1, euler):
+def verlet(pos, vel, rho, drho, acc, kind, rho0, dt, vel_m1, rho_m1, euler, xs):
     """One Verlet step in place with the rates at n; ``vel_m1, rho_m1`` hold the n-1 state
-    on entry and the n state on exit. ``euler``: take the forward-Euler form."""
+    on entry and the n state on exit. ``euler``: take the forward-Euler form. ``xs`` as in
+    :func:`predictor`."""
     dim = pos.shape[1]
+    use_xs = xs.shape[0] > 0
     w = dt if euler else 2.0 * dt
     for i in prange(pos.shape[0]):
         f = kind[i] == 0
@@ -142,7 +164,7 @@ def verlet(pos, vel, rho, drho, acc, kind, rho0, dt, vel_m1, rho_m1, euler):
             v = vel[i, k]
             if f:
                 vb = v if euler else vel_m1[i, k]
-                pos[i, k] += dt * v + 0.5 * dt * dt * acc[i, k]
+                pos[i, k] += dt * (v + xs[i, k] if use_xs else v) + 0.5 * dt * dt * acc[i, k]
                 vel[i, k] = vb + w * acc[i, k]
             else:
                 pos[i, k] += dt * v

@@ -81,6 +81,12 @@ class FluidConfig:
     gamma: float = 7.0
     #: artificial viscosity alpha [-] (001_14936b82710365b2.txt Eq. 6; 0.01 as in 003)
     alpha: float = 0.01
+    #: kinematic viscosity nu0 [m^2/s] of the laminar viscosity term (Lo & Shao 2002, see
+    #: fluid.equations; 1e-6 for water), added to the artificial one; 0: off
+    nu: float = 0.0
+    #: XSPH coefficient epsilon [-] in [0, 1] (Monaghan 1989; 003_7c74773681ee080c.txt uses
+    #: 0.1): particles move with the velocity smoothed over their neighbours; 0: off
+    xsph_eps: float = 0.0
     #: density diffusion: "fourtakas" (default, see fluid.equations), "molteni" or "none"
     diffusion: str = "fourtakas"
     #: density diffusion coefficient delta [-] (000_7d114ab96e048b26.txt Eq. 1 uses 0.1)
@@ -137,6 +143,10 @@ class FluidConfig:
             raise _bad(f"gamma={self.gamma!r}", "use a polytropic exponent >= 1 (7 for water)")
         if not num(self.alpha) or not 0 <= self.alpha <= 1:
             raise _bad(f"alpha={self.alpha!r}", "use an artificial viscosity in [0, 1] (0.01 ... 0.1 usual)")
+        if not num(self.nu) or self.nu < 0:
+            raise _bad(f"nu={self.nu!r} m^2/s", "give a kinematic viscosity >= 0 (1e-6 for water; 0: off)")
+        if not num(self.xsph_eps) or not 0 <= self.xsph_eps <= 1:
+            raise _bad(f"xsph_eps={self.xsph_eps!r}", "use an XSPH coefficient in [0, 1] (0.1 usual; 0: off)")
         if self.diffusion not in eq.DIFFUSION:
             raise _bad(f"diffusion={self.diffusion!r}", f"choose one of {eq.DIFFUSION}")
         if not num(self.delta) or not 0 <= self.delta <= 1:
@@ -214,7 +224,7 @@ class Fluid:
         c = config
         self._kernel = kernel_id(c.kernel)
         self._prm = eq.params(c.h, alpha_d(self._kernel, c.dim, c.h), c.alpha, c.delta, c.diffusion,
-                              c.rho0, c.speed_of_sound, c.gravity)
+                              c.rho0, c.speed_of_sound, c.gravity, nu=c.nu, xsph=c.xsph_eps)
         self._grid = None
         self._work = eq.Workspace()
         self._limit: StepLimit | None = None
@@ -456,18 +466,18 @@ class Fluid:
             loads = self._group_sums()
             euler = self.counters.steps % c.verlet_reset == 0
             verlet(ps.pos, ps.vel, ps.rho, self._drho, self._acc, ps.kind, c.rho0, dt,
-                   aux["vel"], aux["rho"], euler)
+                   aux["vel"], aux["rho"], euler, self._xs())
             self._end_step(dt)
             return loads
         predictor(ps.pos, ps.vel, ps.rho, self._drho, self._acc, ps.kind, c.rho0, dt,
-                  aux["pos"], aux["vel"], aux["rho"])
+                  aux["pos"], aux["vel"], aux["rho"], self._xs())
         self._place_prescribed(self.t + 0.5 * dt)
         self._sort()
         self._rates()
         loads = self._group_sums()
         ps, aux = self.ps, self._aux
         corrector(ps.pos, ps.vel, ps.rho, self._drho, self._acc, ps.kind, c.rho0, dt,
-                  aux["pos"], aux["vel"], aux["rho"])
+                  aux["pos"], aux["vel"], aux["rho"], self._xs())
         self._end_step(dt)
         return loads
 
@@ -527,7 +537,11 @@ class Fluid:
         self._drho, self._acc, visc, self._cs, self._xsph = eq.evaluate(
             ps.pos, ps.vel, ps.rho, ps.mass, ps.kind, self._start, self._grid, self._kernel,
             self._prm, c.rho0, c.speed_of_sound, c.gamma, ps.p, self._work)
-        self._limit = stable_dt(self._acc, visc, self._cs, ps.kind, c.h, c.cfl, c.dt_max)
+        self._limit = stable_dt(self._acc, visc, self._cs, ps.kind, c.h, c.cfl, c.dt_max, c.nu)
+
+    def _xs(self) -> np.ndarray:
+        """The XSPH correction of the current rates [m/s] (N, dim); empty when off."""
+        return self._xsph if self._xsph is not None else np.zeros((0, self.config.dim))
 
     def _group_sums(self):
         ps = self.ps
