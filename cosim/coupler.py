@@ -498,7 +498,10 @@ class Coupler:
         import pickle
 
         with open(path, "rb") as f:
-            blob = pickle.load(f)
+            try:
+                blob = pickle.load(f)
+            except (pickle.UnpicklingError, EOFError, ValueError):
+                blob = None
         if not isinstance(blob, dict) or blob.get("format") != "cosim-checkpoint-1":
             raise InputError(f"{str(path)!r} is not a checkpoint written by Coupler.write_checkpoint")
         self.load_state(blob["state"])
