@@ -100,3 +100,22 @@ def test_floating_box_draft_quick():
     assert r["passed"], r["metrics"]
     assert abs(res["error_of_height"]) < 0.02
     assert res["draft_std_m"] < 0.1 * 0.025  # it stays put: fluctuations a tenth of the draft
+
+
+def test_added_mass_of_a_square_double_body():
+    """DNV-RP-C205 Table D-1 at a/b = 1 (a square moving in unbounded fluid: C_A = 1.51)."""
+    from cosim.validations.floating import added_mass_rectangle_2d
+
+    assert added_mass_rectangle_2d(0.2, 0.1) == pytest.approx(0.5 * 1.51 * 1000 * math.pi * 0.01)
+
+
+def test_floating_heave_period_quick():
+    """Released half a draft above equilibrium at dx = 12.5 mm: natural period within
+    10 % of the hydrostatic stiffness + DNV added mass period (measured +2.2 %)."""
+    from cosim.validation import run
+
+    r = run("floating-heave-period", quick=True)
+    m = r["metrics"]
+    assert r["passed"], m
+    assert abs(m["period_error"]) < 0.10
+    assert 0.02 < m["damping_ratio"] < 0.5  # it radiates waves: damped, not overdamped
