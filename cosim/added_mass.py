@@ -1,4 +1,4 @@
-"""The light-body remedy: a body's added mass moved into MuJoCo's inertia.
+"""Light bodies: their mass ratio, the remedy chosen from it, and the added-mass remedy.
 
 Why: a body in a fluid feels, besides the other loads ``F_r``, a reaction to its own
 acceleration, ``-m_a a`` (added mass). Staggered coupling hands the body the fluid load
@@ -6,23 +6,30 @@ of the previous exchange, so the body's step reads ``m a_{n+1} = F_r - m_a a_n``
 acceleration is multiplied by ``-m_a / m`` every step and grows without bound once the
 added mass exceeds the body's mass (``../shared/DESIGN.md``, added mass).
 
-What: with an estimate ``m^`` of the added mass, per degree of freedom, the body gets
-``m^`` as extra inertia without weight (MuJoCo ``dof_armature``) and the fluid load is
-handed over as ``F_fluid + m^ a_prev``, with ``a_prev`` the body's mean acceleration
-over the previous coupling step. Then
+Remedies (the coupler's ``light_body``):
 
-    (m + m^) a_{n+1} = F_r - m_a a_n + m^ a_n,   a_{n+1} / a_n -> (m^ - m_a) / (m + m^),
+- ``"added-mass"``: with an estimate ``m^`` of the added mass per degree of freedom,
+  the body gets ``m^`` as extra inertia without weight (MuJoCo ``dof_armature``) and the
+  fluid load is handed over as ``F_fluid + m^ a_prev``, ``a_prev`` being the body's mean
+  acceleration over the previous coupling step. Then
 
-stable for any ``m^ > (m_a - m) / 2`` (an over-estimate is always safe) and exact in a
-steady state (``a_{n+1} = a_n``: the added term cancels the armature's). The price is a
-lag: the body's response to a change of load is spread over about ``m^ / m`` steps, and
-the momentum the body holds differs from the impulse it received by ``m^ (v_n - v_{n-1})``
-(one step's change, not a drift).
+      (m + m^) a_{n+1} = F_r - m_a a_n + m^ a_n,   a_{n+1} / a_n -> (m^ - m_a) / (m + m^),
 
-The estimate is the mass and inertia of the fluid the body displaces: per degree of
-freedom the body's own inertia times ``rho V / m`` (a uniform body filled with fluid;
-a circle's heave added mass is exactly this, a box's 1 to 2 times it, a sphere's
-half of it).
+  stable for any ``m^ > (m_a - m) / 2`` (an over-estimate is safe), exact at once if
+  ``m^ = m_a`` (``a = F_r / (m + m_a)``) and exact in any steady state (the added term
+  cancels the armature's). Momentum: the body holds ``m^ (v_n - v_{n-1})`` more than the
+  impulse it received (one step's change, no drift). It assumes a fluid whose reaction
+  to the body's acceleration comes within the step; the weakly compressible SPH fluid's
+  comes acoustically later, and there it made every scheme worse
+  (``benchmarks/density_ratio_sweep.py``), so ``"auto"`` never picks it.
+- ``"subiterate"``: the fluid-first step repeated from saved states until the bodies'
+  motion and the fluid's agree (``Coupler._subiterated_fluid_loads``); what ``"auto"``
+  picks for a fluid-first coupler below :data:`AUTO_THRESHOLD`.
+
+The added-mass estimate is the mass and inertia of the fluid the body displaces: per
+degree of freedom the body's own inertia times ``rho V / m`` (a uniform body filled
+with fluid; a circle's heave added mass is exactly this, a box's 1 to 2 times it, a
+sphere's half of it).
 """
 
 from __future__ import annotations

@@ -36,6 +36,7 @@ from cosim.errors import ConfigurationError, ConvergenceError, InputError, Insta
 from cosim.ledger import Ledger
 from cosim.progress import Progress
 from cosim.protocol import Mooring, Participant, check_participant
+from cosim.watch import InstabilityWatch
 
 
 log = logging.getLogger(__name__)
@@ -150,7 +151,10 @@ class Coupler:
         #: the light-body remedy chosen for each body, by name ("none" or "added-mass"), set at initialize()
         self.remedies: dict[str, str] = {}
         self.added_mass: AddedMass | None = None
-        self._acc_history: list[np.ndarray] = []  # recent generalised accelerations (instability watch)
+        #: stops a run whose bodies go unstable (:mod:`cosim.watch`); its settings may be changed before a run
+        self.watch = InstabilityWatch(
+            [bodies.dofs(k) for k in range(bodies.n_bodies)] if bodies is not None else [],
+            max(float(np.linalg.norm(bodies.model.opt.gravity)), 1.0) if bodies is not None else 1.0)
         self.subiterations = 0  #: fluid advances the last step took (the "subiterate" remedy)
         self._exchanging = roles  # rolled back by the predictor-corrector
         self.dt = dt
@@ -413,22 +417,6 @@ class Coupler:
         for a in self.moorings:
             a.mooring.advance(t, dt)
 
-    #: the instability watch, two signatures of unstable coupling (beside non-finite
-    #: states): (1) a body's acceleration changes sign at every one of this many steps
-    #: in a row ...
-    WATCH_STEPS = 8
-    #: (2) ... or, in this many consecutive windows ...
-    WATCH_WINDOWS = 10
-    #: ... of this many steps, it changes sign in each window and its peak grows from each
-    #: window to the next; with a growth by this factor [-] over them and an end above g,
-    #: the run stops. Tuned on the series of ``benchmarks/density_ratio_sweep.py``: it stops
-    #: the runs whose oscillation grows (fluid-first at ratios 0.05 and 0.1,
-    #: predictor-corrector at 0.001) and none of the clean ones (explicit 0.003 ... 1,
-    #: fluid-first 0.2, sub-iterated fluid-first 0.01 and 0.05 breaking the surface,
-    #: which 8 windows and a factor 2 stopped).
-    WATCH_WINDOW = 20
-    WATCH_GROWTH = 3.0
-
     def _watch_bodies(self, qacc: np.ndarray, kin) -> None:
         """Stop a run whose body accelerations oscillate with growing amplitude (the
         signature of unstable staggered coupling; for light bodies, added mass), or
@@ -442,34 +430,10 @@ class Coupler:
                     f"body '{self.bodies.body_names[k]}' moves at {speed[k]:.3g} m/s, faster than the fluid's speed "
                     f"of sound {c0:.3g} m/s, which a weakly compressible fluid cannot follow: unstable coupling"
                     f"{self._light_body_hint([k])}")
-        hist = self._acc_history
-        hist.append(qacc)
-        n_keep = max(self.WATCH_STEPS + 1, self.WATCH_WINDOW * (self.WATCH_WINDOWS + 1))
-        del hist[:-n_keep]
-        b = self.bodies
-        g = float(np.linalg.norm(b.model.opt.gravity)) or 1.0
-        for k in range(b.n_bodies):
-            a = np.array([h[b.dofs(k)] for h in hist])
-            why = None
-            if len(a) > self.WATCH_STEPS:
-                last = a[-self.WATCH_STEPS - 1:]
-                mag = np.linalg.norm(last, axis=1)
-                if (np.einsum("ij,ij->i", last[1:], last[:-1]) < 0).all() and mag[-1] > 4.0 * mag[0] \
-                        and mag[-1] > g:
-                    why = (f"its acceleration changed sign at each of the last {self.WATCH_STEPS} steps and grew "
-                           f"from {mag[0]:.3g} to {mag[-1]:.3g}")
-            if why is None and len(a) == self.WATCH_WINDOW * (self.WATCH_WINDOWS + 1):
-                win = a.reshape(self.WATCH_WINDOWS + 1, self.WATCH_WINDOW, -1)
-                peaks = np.linalg.norm(win, axis=2).max(axis=1)
-                turns = (np.einsum("wij,wij->wi", win[:, 1:], win[:, :-1]) < 0).any(axis=1)
-                if turns.all() and (np.diff(peaks) > 0).all() and peaks[-1] > self.WATCH_GROWTH * peaks[0] \
-                        and peaks[-1] > g:
-                    why = (f"its acceleration oscillated with a peak growing in each of the last "
-                           f"{self.WATCH_WINDOWS} windows of {self.WATCH_WINDOW} steps, from {peaks[0]:.3g} "
-                           f"to {peaks[-1]:.3g}")
+        for k, why in enumerate(self.watch.add(qacc)):
             if why:
-                raise InstabilityError(f"body '{b.body_names[k]}': {why} (m/s^2 or rad/s^2): unstable coupling"
-                                       f"{self._light_body_hint([k])}")
+                raise InstabilityError(f"body '{self.bodies.body_names[k]}': {why} (m/s^2 or rad/s^2): unstable "
+                                       f"coupling{self._light_body_hint([k])}")
 
     def _light_body_hint(self, bodies) -> str:
         """The mass ratio and remedy of the given bodies, for an instability message."""
@@ -534,7 +498,7 @@ class Coupler:
             "participants": {p.name: p.save_state() for p in self.participants},
             # the coupler's own memory of past steps: the added-mass term and the watch use it
             "added_mass": None if self.added_mass is None else self.added_mass.save_state(),
-            "acc_history": [a.copy() for a in self._acc_history],
+            "watch": self.watch.save_state(),
         }
 
     def load_state(self, state: dict) -> None:
@@ -553,7 +517,7 @@ class Coupler:
         self.ledger.truncate(state["ledger"])
         if self.added_mass is not None:
             self.added_mass.load_state(state["added_mass"])
-        self._acc_history = [a.copy() for a in state["acc_history"]]
+        self.watch.load_state(state["watch"])
         if self.bodies is not None and self._initialized:
             kin = self.bodies.kinematics()
             if self.fluid is not None:
