@@ -11,7 +11,10 @@ One coupling step (:meth:`Coupler.step`), in this order (``../shared/DESIGN.md``
    given), turned into a force and a torque about each body's centre of mass;
 4. the bodies advance with the sum of 2 and 3 (MuJoCo adds gravity, joints and
    contacts, and sub-steps as it needs); with the predictor-corrector scheme the
-   loads are first re-taken at the predicted pose and averaged (see ``scheme``);
+   loads are first re-taken at the predicted pose and averaged, with the fluid-first
+   scheme the fluid has advanced first and 2 is the load it exchanged (see ``scheme``;
+   for light bodies see ``light_body``); the instability watch
+   (:mod:`cosim.watch`) looks at the bodies' new accelerations and speeds;
 5. the fluid gets the new body kinematics and advances; each mooring gets the new
    fairlead motion and advances (a dynamic line sub-cycles towards it);
 6. any other participant advances; the clock advances by whole ticks (no drift).
@@ -305,7 +308,17 @@ class Coupler:
 
     def _give_kinematics(self, kin) -> None:
         if self.fluid is not None:
-            self.fluid.set_body_kinematics(kin)
+            try:
+                self.fluid.set_body_kinematics(kin)
+            except InputError as exc:  # mid-run, the fluid's state no longer fits the bodies
+                if not self._initialized:
+                    raise
+                where = ", ".join(f"'{n}' at {np.array2string(c, precision=3)} m"
+                                  for n, c in zip(self.bodies.body_names, kin.com))
+                raise InstabilityError(
+                    f"fluid '{self.fluid.name}' could not place the bodies' particles ({exc}); bodies: {where}. A body "
+                    f"has left the fluid's domain or passed through a wall: a heavy body needs a floor to rest on "
+                    f"(bodies.builders.scene(floor_z=...)), a fast one a smaller step") from exc
         for a, sites in zip(self.moorings, self._sites):
             a.mooring.set_fairlead_motion(*self._fairlead_motion(a, sites, kin))
 

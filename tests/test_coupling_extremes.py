@@ -112,7 +112,7 @@ def test_light_body_option_errors():
 DX, L, D = 0.02, 0.4, 0.2
 
 
-def tank(body_xml, scheme="fluid-first", light_body="auto", moorings=(), length=L):
+def tank(body_xml, scheme="fluid-first", light_body="auto", moorings=(), length=L, floor=True):
     from cosim.sph_fluid import SPHFluid
     from fluid.geometry import block, tank_walls
     from fluid.particles import Kind
@@ -120,7 +120,7 @@ def tank(body_xml, scheme="fluid-first", light_body="auto", moorings=(), length=
 
     cfg = FluidConfig(dim=2, dx=DX, u_max=math.sqrt(G * D), c0_factor=20.0)
     walls = [(tank_walls(np.zeros(2), np.array([length, 0.3]), DX, 3), Kind.FIXED_WALL, 0)]
-    bodies = MujocoBodies(builders.scene(body_xml, timestep=1e-3, floor_z=0.0))
+    bodies = MujocoBodies(builders.scene(body_xml, timestep=1e-3, floor_z=0.0 if floor else None))
     fluid = SPHFluid(cfg, block(np.zeros(2), np.array([length, D]), DX), walls, z_surface=D)
     return Coupler(bodies=bodies, fluid=fluid, scheme=scheme, light_body=light_body, moorings=moorings), bodies
 
@@ -272,3 +272,12 @@ def test_a_storm_pulls_the_catenary_taut_and_the_tether_holds_the_box():
     total = T * e + led["fluid_force"][-1, 0] + led["mooring_force"][-1, 0] + led["gravity"][-1, 0]
     np.testing.assert_allclose(total, 0.0, atol=5e-3 * push[0])
     assert np.abs(b.kinematics().velocity).max() < 1e-3
+
+
+def test_a_heavy_body_without_a_floor_stops_with_a_message_not_a_crash():
+    """Ratio 10 with no MuJoCo floor: only the SPH wall holds the box, and at dx = 2 cm
+    it sinks through; the run stops naming the step, the body and the fix."""
+    c, b = tank(builders.box("box", (0.1, 0.06), (L / 2, 0.0, 0.06), density=1e4, planar=True), floor=False)
+    with pytest.raises(InstabilityError, match=r"step \d+, t = [0-9.]+ s: fluid 'fluid' could not place the bodies' "
+                                               r"particles .*'box' at .* needs a floor to rest on"):
+        c.run(0.5)
