@@ -1,15 +1,24 @@
 """Throughput of the SPH fluid: particle-steps per second (particles x steps / wall s) for
-2-D and 3-D dam breaks at a few sizes, compilation reported apart. Not a test.
+2-D and 3-D dam breaks at a few sizes, compilation reported apart, and memory per particle.
+Not a test.
 
 Reference case of issue 3 (2-D): water column 1 m wide, 2 m high in a tank 4 m x 3 m,
-Wendland h = sqrt(2) dp, alpha = 0.02, Fourtakas delta = 0.1, c0 = 20 sqrt(2 g) m/s, CFL 0.2.
-Verlet time stepping as in the reference case (one pair loop per step); ``--integrator
-symplectic`` for the predictor-corrector (two pair loops per step): compare
-``pair_loops_per_s`` across the two.
+Wendland h = sqrt(2) dp, alpha = 0.02, Fourtakas delta = 0.1, c0 = 20 sqrt(2 g) m/s, CFL 0.2,
+dp = 0.01 m (22 008 particles) and 0.005 m (82 008). 3-D: column 0.5 x 0.5 x 1 m in a tank
+2 x 0.5 x 1.5 m, dp = 0.017 m: 107 012 particles (48 778 fluid), the size of DualSPHysics'
+3-D dam break of issue 3. Verlet time stepping as in the reference case (one pair loop per
+step); ``--integrator symplectic`` for the predictor-corrector (two pair loops per step):
+compare ``pair_loops_per_s`` across the two.
+
+The machine may be shared: ``cpu_s_per_wall_s`` below the thread count says so, and
+``particle_steps_per_cpu_s`` (particles x steps / CPU seconds of this process) is then the
+figure to compare between runs with ``--threads 1`` (alternate the runs being compared).
+``--threads N`` sets NUMBA_NUM_THREADS, so that no idle worker thread spins on the CPU.
 
     .venv/bin/python benchmarks/fluid_throughput.py                 # default sizes, warm numba cache
     .venv/bin/python benchmarks/fluid_throughput.py --cold          # compile from scratch (empty cache)
     .venv/bin/python benchmarks/fluid_throughput.py --case 2d --dp 0.01 --steps 200 --threads 2
+    .venv/bin/python benchmarks/fluid_throughput.py --case 2d --dp 0.01 --dp 0.005 --dp 0.0025 --steps 20  # scaling
 """
 
 from __future__ import annotations
@@ -69,9 +78,11 @@ def run(case: str, dp: float, steps: int, integrator: str = "verlet") -> dict:
     cpu = time.process_time() - c1
     n = f.ps.n
     per_step = wall / steps
-    arrays = [f.ps.pos, f.ps.vel, f.ps.rho, f.ps.mass, f.ps.p, f.ps.kind, f.ps.group, f.ps.ids,
-              f._cs, f._drho, f._acc, *f._aux.values()]
-    mem = sum(a.nbytes for a in arrays) + n * (4 * 8 + 8 + 8)  # + pair_terms, visc, cell index
+    # every array the fluid keeps between steps: particles, the integrator's saved state,
+    # the pair loop's workspace (packed table, rates) and the cell list
+    arrays = [getattr(f.ps, k) for k in f.ps.FIELDS] + list(f._aux.values()) \
+        + list(f._work.arrays.values()) + [f._start]
+    mem = sum(a.nbytes for a in arrays)
     return {
         "case": case, "dp_m": dp, "particles": n,
         "fluid": int((f.ps.kind == Kind.FLUID).sum()), "steps": steps,
@@ -81,6 +92,7 @@ def run(case: str, dp: float, steps: int, integrator: str = "verlet") -> dict:
         "particle_steps_per_s": round(n * steps / wall),
         "pair_loops_per_s": round((2 if integrator == "symplectic" else 1) * n * steps / wall),
         "integrator": integrator,
+        "particle_steps_per_cpu_s": round(n * steps / cpu),
         "cpu_s_per_wall_s": round(cpu / wall, 2),  # < threads: the machine is shared
         "bytes_per_particle": round(mem / n),
         "threads": __import__("numba").get_num_threads(),
@@ -98,18 +110,18 @@ def main(argv=None):
     a = ap.parse_args(argv)
     if a.cold:
         os.environ["NUMBA_CACHE_DIR"] = tempfile.mkdtemp(prefix="numba_cold_")
-    import numba
-
     if a.threads:
-        numba.set_num_threads(a.threads)
+        os.environ["NUMBA_NUM_THREADS"] = str(a.threads)
+    import numba
     t0 = time.perf_counter()
     import fluid.solver  # noqa: F401  (imports numba modules; compilation is lazy)
     print(f"import: {time.perf_counter() - t0:.2f} s; numba cache {'cold' if a.cold else 'as found'}")
-    sizes = {"2d": a.dp or [0.02, 0.01], "3d": a.dp or [0.04, 0.025]}
+    sizes = {"2d": a.dp or [0.01, 0.005], "3d": a.dp or [0.017]}
     cases = ["2d", "3d"] if a.case == "all" else [a.case]
     for c in cases:
         for dp in sizes[c]:
             r = run(c, dp, a.steps, a.integrator)
+            r["load_avg_1min"] = round(os.getloadavg()[0], 2)  # other work on the machine
             print(" ".join(f"{k}={v}" for k, v in r.items()))
             sys.stdout.flush()
 

@@ -73,8 +73,10 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit, prange, uint64
 
+from cosim.errors import InputError
+
 from fluid.kernels import grad_scale, grad_shape, w_value
-from fluid.neighbours import cell_coords, row_range, row_range_padded
+from fluid.neighbours import cell_coords, row_range, row_range_trimmed
 
 _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 
@@ -207,6 +209,7 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool):
         R2 = 4.0 * h * h
         ih = 1.0 / h
         dys = 2 * reach + 1 if three else 1
+        xrow = S[X]  # sorted by x along each row of cells (fluid.neighbours.sort_by_cell)
         for a in prange(n):
             xa = S[X, a]
             ya = S[Y, a]
@@ -235,10 +238,11 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool):
             for dz in range(-reach, reach + 1):
                 for k in range(dys):
                     dy = k - reach if three else 0
-                    # the range rounded up to a multiple of PAD within its row of cells:
-                    # what it adds lies farther than 2h, where every term below is
-                    # exactly zero, and the loop rarely runs a scalar tail
-                    j0, j1 = row_range_padded(cx, cy, cz, dy, dz, nx, ny, nz, start, reach, PAD)
+                    # the particles of the row within 2h in x, the range rounded up to
+                    # a multiple of PAD within the row: what it adds lies farther than
+                    # 2h, where every term below is exactly zero, and the loop rarely
+                    # runs a scalar tail
+                    j0, j1 = row_range_trimmed(xa, 2.0 * h, xrow, cx, cy, cz, dy, dz, nx, ny, nz, start, reach, PAD)
                     for b in range(uint64(j0), uint64(j1)):
                         rx = xa - S[X, b]
                         rz = za - S[Z, b]
@@ -334,16 +338,18 @@ def interact(S, start, lo, inv_cell, nx, ny, nz, reach, kernel, prm, out, acc, x
     from :func:`pack`; ``lo`` has 3 components (x, y, z; y = 0 and ``ny = 1`` in 2-D).
 
     How the inner loop is kept vectorised (it compiles to packed AVX-512 instructions,
-    8 pairs per pass, about 50 instructions with one ``vsqrtpd`` and one ``vdivpd``; 1.6
-    times faster in CPU time than the loop it replaced, which had all of this but the
-    first four points):
+    8 pairs per pass, about 50 instructions with one ``vsqrtpd`` and one ``vdivpd``; 1.8
+    times less CPU time than the loop it replaced, which had all of this but the first
+    four points: 3.1 against 5.5 ms for the 22 008 particles of the 2-D reference case of
+    benchmarks/fluid_throughput.py, one thread):
 
     * it is compiled per kernel, dimension and optional term (:func:`_make_interact`):
       no branch in it, and no cost for a term switched off;
-    * each neighbour range is rounded up to a multiple of :data:`PAD` particles within its
-      row of cells (:func:`fluid.neighbours.row_range_padded`), so that it runs entirely
-      in the vector body (the ranges hold about 24 particles in 2-D; their scalar tails
-      were a third of the time);
+    * each neighbour range (a row of 3 cells, 2h wide each, sorted by x) is trimmed to
+      the particles within 2h in x and rounded up to a multiple of :data:`PAD` particles
+      within its row (:func:`fluid.neighbours.row_range_trimmed`), so that it runs
+      entirely in the vector body (the ranges hold about 16 particles in 2-D; scalar
+      tails were a third of the time) over a third fewer pairs;
     * one division per pair: ``1/((r^2+eta^2)(rho_a+rho_b))`` gives both reciprocals, and
       constant factors (the kernel's normalisation, ``alpha h``, ``nu``) are applied once
       per particle, after the loop: the loop is bound by the throughput of its
@@ -409,6 +415,9 @@ def evaluate(pos, vel, rho, mass, kind, start, grid, kernel: int, prm, rho0: flo
     else:
         lo[0], lo[2] = grid.lo
     nx, ny, nz = grid.shape
+    if grid.reach != 1 or abs(grid.cell - 2.0 * prm[P_H]) > 1e-12 * grid.cell:
+        raise InputError(f"the pair loop needs a grid of cells 2h = {2.0 * prm[P_H]} m wide with reach 1, got "
+                         f"cell {grid.cell} m, reach {grid.reach}: Grid.covering(lo, hi, 2 * h)")
     interact(S, start, lo, 1.0 / grid.cell, nx, ny, nz, grid.reach, kernel, prm, out, acc, xs)
     return Rates(out[DRHO], acc, out[VISC], S[CS], xs if xsph else None)
 

@@ -95,12 +95,32 @@ def counting_sort(cell, ncells):
     return perm, start
 
 
+@njit(parallel=True, **_OPTS)
+def order_cells_by_x(perm, start, pos):
+    """Reorder ``perm`` within every cell by the particles' x coordinate (insertion sort:
+    a cell holds a few particles, and from step to step their order barely changes), so
+    that each row of x-adjacent cells is sorted by x as a whole."""
+    for c in prange(start.shape[0] - 2):  # the last cell is the outside sentinel
+        j0 = start[c]
+        j1 = start[c + 1]
+        for j in range(j0 + 1, j1):
+            p = perm[j]
+            x = pos[p, 0]
+            i = j - 1
+            while i >= j0 and pos[perm[i], 0] > x:
+                perm[i + 1] = perm[i]
+                i -= 1
+            perm[i + 1] = p
+
+
 def sort_by_cell(pos: np.ndarray, grid: Grid):
-    """Bin ``pos`` on ``grid``: returns (perm, start, n_outside); apply ``perm`` to every array."""
+    """Bin ``pos`` on ``grid``: returns (perm, start, n_outside); apply ``perm`` to every
+    array. Within a cell the particles are ordered by x (:func:`order_cells_by_x`)."""
     nx, ny, nz = grid.shape
     cell = np.empty(pos.shape[0], np.int64)
     outside = bin_particles(pos, grid.lo, 1.0 / grid.cell, nx, ny, nz, cell)
     perm, start = counting_sort(cell, grid.ncells)
+    order_cells_by_x(perm, start, pos)
     return perm, start, outside
 
 
@@ -128,12 +148,26 @@ def row_range(cx, cy, cz, dy, dz, nx, ny, nz, start, reach):
 
 
 @njit(**_OPTS)
-def row_range_padded(cx, cy, cz, dy, dz, nx, ny, nz, start, reach, pad):
-    """:func:`row_range` with its end moved up to make the length a multiple of ``pad``,
-    as far as the row of cells goes: what it adds lies in the cells after the last
-    x-adjacent one, farther than the search radius from every particle of cell
-    ``(cx, cy, cz)`` (a vectorised loop then runs no scalar tail, and the pairs it adds
-    contribute nothing where the kernel is zero beyond the radius)."""
+def _first_above(xs, j0, j1, x):
+    """First index in [j0, j1) of the x-sorted row ``xs`` with ``xs[j] > x`` (j1 if none)."""
+    while j0 < j1:
+        m = (j0 + j1) >> 1
+        if xs[m] > x:
+            j1 = m
+        else:
+            j0 = m + 1
+    return j0
+
+
+@njit(**_OPTS)
+def row_range_trimmed(x, radius, xs, cx, cy, cz, dy, dz, nx, ny, nz, start, reach, pad):
+    """:func:`row_range` for a point at ``x`` [m] in cell ``(cx, cy, cz)``, trimmed to the
+    particles with ``x - radius < x_b < x + radius`` (the cells are ordered by x within,
+    :func:`sort_by_cell`, so each row is sorted by x; ``xs`` holds the sorted x), then with
+    its end moved up to make the length a multiple of ``pad``, as far as the row of cells
+    goes: everything it leaves out or adds lies at least ``radius`` away in x (a vectorised
+    loop then runs no scalar tail, and the pairs it adds contribute nothing where the
+    kernel is zero beyond the radius). Requires ``reach = 1`` (cell = radius)."""
     y = cy + dy
     z = cz + dz
     if y < 0 or y >= ny or z < 0 or z >= nz:
@@ -141,8 +175,10 @@ def row_range_padded(cx, cy, cz, dy, dz, nx, ny, nz, start, reach, pad):
     x0 = max(cx - reach, 0)
     x1 = min(cx + reach, nx - 1)
     base = nx * (y + ny * z)
-    j0 = start[base + x0]
-    j1 = start[base + x1 + 1]
+    # the bounds lie in the first and the last cell of the row (cells are radius wide)
+    j0 = _first_above(xs, start[base + x0], start[base + x0 + 1], x - radius)
+    j1 = _first_above(xs, start[base + x1], start[base + x1 + 1], x + radius)
+    j1 = max(j1, j0)
     return j0, min(j0 + ((j1 - j0 + pad - 1) // pad) * pad, start[base + nx])
 
 
