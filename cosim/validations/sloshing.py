@@ -1,3 +1,510 @@
 """Sloshing and base-excitation cases of the SPH fluid (VALIDATION.md, "Fluid"): westergaard, sloshing-frequency, sloshing-spheric10."""
 
 from __future__ import annotations
+
+import math
+import os
+from pathlib import Path
+
+import numpy as np
+
+from cosim.validation import case
+from fluid.geometry import assemble, block, set_hydrostatic, tank_walls
+from fluid.motion import Harmonic, Rotation, Tabulated, Translation
+from fluid.particles import Kind
+from fluid.solver import Fluid, FluidConfig
+
+G = 9.81
+RHO0 = 1000.0
+REFDATA = Path(os.environ.get("COSIM_REFDATA", Path(__file__).resolve().parents[3] / "shared" / "refdata"))
+
+
+# ------------------------------------------------------------------------------------ references
+def westergaard_series(depth, H: float, length: float = math.inf, c: float = math.inf,
+                       period: float = math.inf, terms: int = 400) -> np.ndarray:
+    """Hydrodynamic pressure coefficient ``k_p = p_d / (rho a0 H)`` [-] on the wall of a
+    rigid rectangular tank of ``length`` [m] (inf: Westergaard's semi-infinite reservoir)
+    with water of depth ``H`` [m], under horizontal base acceleration ``a0 sin(w t)``, at
+    ``depth`` [m] below the still surface (p = 0 on the surface: the frequency is far above
+    the sloshing ones).
+
+    Separation of variables with modes ``cos(k_n z)``, ``k_n = (2n-1) pi / (2H)``, z up from
+    the bottom, and ``p ~ sinh(kappa_n (x - x_c))`` between the walls at ``x_c +- L/2``:
+
+        k_p = sum_n 2 (-1)^(n+1) / (k_n H) * tanh(kappa_n L/2) / (kappa_n H) * cos(k_n z),
+        kappa_n^2 = k_n^2 - w^2 / c^2,
+
+    ``c`` [m/s] the speed of sound, ``period`` [s] = 2 pi / w. With L, c -> inf this is
+    Westergaard's exact series ``(8/pi^2) sum_{m odd} sin(m pi y / 2H) / m^2`` (base value
+    0.74245, refdata/analytic_hydrodynamics/SOURCE.txt A); the compressible factor
+    ``1/sqrt(1 - (4H / (c T))^2 / (2n-1)^2)`` is the ``c_n`` of the same file. Valid while
+    ``T > 4H/c`` (001_14936b82710365b2.txt Eq. 17: the first acoustic period of the column).
+    """
+    y = np.asarray(depth, np.float64)
+    z = H - y
+    n = np.arange(1, terms + 1)
+    k = (2 * n - 1) * math.pi / (2 * H)
+    w2c2 = (2 * math.pi / period) ** 2 / c**2 if math.isfinite(c) and math.isfinite(period) else 0.0
+    if w2c2 >= k[0] ** 2:
+        raise ValueError(f"period {period} s is not longer than the acoustic period 4H/c = {4 * H / c} s")
+    kap = np.sqrt(k**2 - w2c2)
+    th = np.tanh(kap * length / 2) if math.isfinite(length) else 1.0
+    coef = 2 * (-1.0) ** (n + 1) / (k * H) * th / (kap * H)
+    return (coef[None, :] * np.cos(np.outer(z, k))).sum(axis=1).reshape(y.shape)
+
+
+def westergaard_parabola(depth, H: float) -> np.ndarray:
+    """Westergaard's approximation ``k_p = 7/8 sqrt(y/H)``, y the depth below the surface
+    (001_14936b82710365b2.txt Eq. 16/18; Eq. 16 prints ``sqrt(h (h - y))`` with y "the
+    depth from the free surface", which would make it largest at the surface: the
+    physical, Westergaard (1933) form is ``sqrt(h y)``, as VALIDATION.md notes)."""
+    return 0.875 * np.sqrt(np.asarray(depth, np.float64) / H)
+
+
+# ------------------------------------------------------------------------------------ helpers
+def _moving_tank(dim: int, dx: float, length: float, depth: float, height: float, width: float = 0.0):
+    """Open tank, inner corner at the origin, all walls one MOVING_WALL group 0, water to
+    ``depth`` [m] with the hydrostatic density left to the caller."""
+    lo = np.zeros(dim)
+    hi = np.array([length, height] if dim == 2 else [length, width, height])
+    top = hi.copy()
+    top[-1] = depth
+    walls = tank_walls(lo, hi, dx, 3)
+    return assemble(dim, dx, RHO0, block(lo, top, dx), [(walls, Kind.MOVING_WALL, 0)]).particles
+
+
+def face_pressure(f: Fluid, centres: np.ndarray, faces: np.ndarray, normals, accel, g_vec) -> np.ndarray:
+    """Pressure [Pa] at points ``faces`` (m, dim) [m] on a wall face: the
+    001_14936b82710365b2.txt Eq. 15 inverse-distance average over the fluid within 2h of
+    ``centres`` (m, dim) [m] (a wall particle, or the face point itself), each fluid
+    pressure first carried to the face along the unit wall ``normals`` ((dim,) or (m,
+    dim), into the water) with the momentum balance at a rigid wall, ``dp/dn = rho (g -
+    a_w) . n`` (``accel`` a_w [m/s^2] of the wall, (dim,) or (m, dim); ``g_vec`` [m/s^2];
+    the normal part of the extrapolation of Adami, Hu & Adams 2012, J. Comput. Phys. 231,
+    7057, Eq. 27), then fitted linearly along the wall (weights 1/r as Eq. 15) and taken
+    at the face point. Eq. 15 alone reports the pressure at the mean position of the fluid
+    it averages, about one dx into the water, which misses ``rho a dx`` of a pressure that
+    varies across the wall, and near the surface or the bottom, where the neighbours lie on
+    one side, it is biased along the wall as well. 0 where no fluid is near."""
+    from scipy.spatial import cKDTree
+
+    ps, c = f.ps, f.config
+    dim = c.dim
+    centres = np.atleast_2d(np.asarray(centres, float))
+    faces = np.atleast_2d(np.asarray(faces, float))
+    m = centres.shape[0]
+    n = np.broadcast_to(np.asarray(normals, float), (m, dim))
+    acc = np.broadcast_to(np.asarray(accel, float), (m, dim))
+    fl = np.flatnonzero(ps.kind == Kind.FLUID)
+    pairs = cKDTree(ps.pos[fl]).sparse_distance_matrix(cKDTree(centres), 2 * c.h, output_type="coo_matrix")
+    b, j = fl[pairs.row], pairs.col
+    w = 1.0 / np.maximum(pairs.data, 1e-6 * c.dx)
+    d = ps.pos[b] - faces[j]
+    dn = np.einsum("ij,ij->i", d, n[j])
+    dpdn = np.einsum("ij,ij->i", np.asarray(g_vec, float)[None, :] - acc[j], n[j])
+    q = ps.p[b] - ps.rho[b] * dpdn * dn
+    tang = d - dn[:, None] * n[j]          # offset along the wall (dim-1 dof)
+    if dim == 2:
+        t1 = np.stack([-n[j][:, 1], n[j][:, 0]], axis=1)
+        basis = np.stack([np.ones(b.size), np.einsum("ij,ij->i", tang, t1)], axis=1)
+    else:
+        basis = np.concatenate([np.ones((b.size, 1)), tang], axis=1)  # rank dim: lstsq below
+    k = basis.shape[1]
+    M = np.zeros((m, k, k))
+    r = np.zeros((m, k))
+    for u in range(k):
+        r[:, u] = np.bincount(j, w * q * basis[:, u], m)
+        for v in range(k):
+            M[:, u, v] = np.bincount(j, w * basis[:, u] * basis[:, v], m)
+    out = np.zeros(m)
+    for i in np.flatnonzero(M[:, 0, 0] > 0):  # a few probe points: pseudo-inverse is fine
+        out[i] = (np.linalg.pinv(M[i], rcond=1e-10) @ r[i])[0]
+    return out
+
+
+def _harmonic_fit(t: np.ndarray, y: np.ndarray, omega: float):
+    """Least-squares ``y ~ c0 + c1 t + s sin(w t) + k cos(w t)`` per column of ``y`` (T, M);
+    returns (s, k) (M,) [units of y]. The linear term absorbs slow drift (sloshing)."""
+    A = np.stack([np.ones_like(t), t - t.mean(), np.sin(omega * t), np.cos(omega * t)], axis=1)
+    coef, *_ = np.linalg.lstsq(A, y, rcond=None)
+    return coef[2], coef[3]
+
+
+# ------------------------------------------------------------------------------------ westergaard
+def run_westergaard(dx: float, c0: float = 1430.0, dim: int = 2, periods_skip: int = 2,
+                    periods_fit: int = 3, samples_per_period: int = 40, a0: float = 0.5 * G,
+                    Tp: float = 0.03, length: float = 3.0, H: float = 1.0, height: float = 1.5,
+                    width: float = 1.5, **overrides) -> dict:
+    """Rigid tank ``length`` x ``height`` (x ``width`` in 3-D) [m] with water to ``H`` [m]
+    under the horizontal base acceleration ``a0 sin(2 pi t / Tp)`` (a0 [m/s^2], Tp [s]),
+    started from rest (001_14936b82710365b2.txt §3.1: 3.0 x 1.0 x 1.5 m, water 1.0 m,
+    a0 = 0.5 g, Tp = 0.03 s, dx = 0.05 m, Fig. 5).
+
+    c0 [m/s]: the paper takes the real speed of sound (c_p = 1430 m/s, Eq. 17: acoustic
+    period 4H/c = 2.8 ms, ten times shorter than Tp). A WCSPH c0 of 10 times the flow speed
+    (here ~0.02 m/s) would make the column ring at its acoustic period instead of moving as
+    an incompressible block: at c0 = 150 m/s, 4H/c0 = 0.027 s ~ Tp, resonance. So c0 is set
+    from the acoustics, and the time step (CFL on c0) is ~1e-5 s.
+
+    Extraction: the hydrodynamic pressure p_d on each side wall is the part of the wall
+    pressure that oscillates with the excitation: a least-squares fit of ``c0 + c1 t +
+    s sin(w t) + k cos(w t)`` over ``periods_fit`` whole periods after ``periods_skip``
+    (the start-up transient), per wall particle of the first layer below the surface; the
+    constant holds the hydrostatic part, so no hydrostatic reference is subtracted.
+    ``k_p = s / (rho a0 H)`` with the sign that makes it positive on the wall the tank
+    accelerates towards the water (in phase with the acceleration), averaged over the two
+    side walls (they are antisymmetric). The out-of-phase part ``k`` is reported (it
+    should vanish: the impulsive pressure follows the acceleration).
+
+    Wall pressures: "raw" is the dynamic boundary particle's own pressure (its EOS
+    pressure); "avg" is 001 Eq. 15 (inverse-distance average of the fluid pressure
+    near the wall particle, :meth:`Fluid.wall_pressure`); "face" is Eq. 15 with each
+    fluid pressure carried to the wall face by the wall's momentum balance
+    (:func:`face_pressure`).
+
+    References: the exact incompressible pressure on the wall of this finite tank
+    (:func:`westergaard_series` with L = 3 m: 1.5 % below Westergaard's semi-infinite
+    reservoir at the base), Westergaard's semi-infinite series (refdata), the 7/8 parabola
+    (Eq. 16), and the compressible series with the run's c0 (what a perfect WCSPH model
+    would give).
+    """
+    if dim not in (2, 3):
+        raise ValueError("dim is 2 or 3")
+    ps = _moving_tank(dim, dx, length, H, height, width)
+    cfg = FluidConfig(dim=dim, dx=dx, c0=c0, **overrides)
+    set_hydrostatic(ps, H, RHO0, cfg.speed_of_sound, cfg.gamma, cfg.g)
+    f = Fluid(cfg, ps)
+    shake = Translation((1.0, 0.0) if dim == 2 else (1.0, 0.0, 0.0),
+                        Harmonic.from_peak_acceleration(a0, Tp, from_rest=True))
+    f.prescribe_motion(0, shake)
+    f.initialize(0.0)
+    # wall particles of the first layer of both side walls, below the surface (ids)
+    x, z = ps.pos[:, 0], ps.pos[:, -1]
+    first = (ps.kind == Kind.MOVING_WALL) & (z > 0) & (z < H)
+    if dim == 3:  # the middle row across the width (the 3-D tank's symmetry plane)
+        ys = np.unique(ps.pos[first, 1])
+        ymid = ys[np.argmin(np.abs(ys - width / 2))]
+        first &= np.isclose(ps.pos[:, 1], ymid)
+    left = first & np.isclose(x, -0.5 * dx)
+    right = first & np.isclose(x, length + 0.5 * dx)
+    ids = {"left": np.sort(ps.ids[left]), "right": np.sort(ps.ids[right])}
+    zs = {k: ps.pos[np.isin(ps.ids, v), -1][np.argsort(ps.ids[np.isin(ps.ids, v)])] for k, v in ids.items()}
+    dt_s = Tp / samples_per_period
+    n_skip = periods_skip * samples_per_period
+    n_fit = periods_fit * samples_per_period
+    rec = {(k, q): [] for k in ids for q in ("raw", "avg", "face")}
+    normals = {"left": np.eye(dim)[0], "right": -np.eye(dim)[0]}
+    times = []
+    t = 0.0
+    for i in range(n_skip + n_fit):
+        f.advance(t, dt_s)
+        t = (i + 1) * dt_s
+        if i + 1 <= n_skip:
+            continue
+        pw = f.wall_pressure()
+        for k, v in ids.items():
+            sel = np.flatnonzero(np.isin(f.ps.ids, v))
+            sel = sel[np.argsort(f.ps.ids[sel])]
+            rec[(k, "raw")].append(f.ps.p[sel].copy())
+            rec[(k, "avg")].append(pw[sel].copy())
+            wp = f.ps.pos[sel]
+            rec[(k, "face")].append(face_pressure(f, wp, wp + 0.5 * dx * normals[k], normals[k],
+                                                  shake.acceleration(t), cfg.gravity))
+        times.append(t)
+    times = np.asarray(times)
+    w = 2 * math.pi / Tp
+    scale = RHO0 * a0 * H
+    metrics = {}
+    depth = H - zs["left"]
+    if not np.allclose(zs["left"], zs["right"]):
+        raise RuntimeError("left and right wall rows differ")
+    refs = {"exact": westergaard_series(depth, H, length),
+            "westergaard_inf": westergaard_series(depth, H),
+            "parabola": westergaard_parabola(depth, H),
+            "compressible": westergaard_series(depth, H, length, c0, Tp)}
+    kp = {}
+    for q in ("raw", "avg", "face"):
+        sl, kl = _harmonic_fit(times, np.asarray(rec[("left", q)]), w)
+        sr, kr = _harmonic_fit(times, np.asarray(rec[("right", q)]), w)
+        # tank accelerating +x (sin > 0): the left wall pushes the water, p rises there
+        kp[q] = 0.5 * (sl - sr) / scale
+        metrics[f"kp_base_{q}"] = float(kp[q][np.argmax(depth)])
+        metrics[f"kp_out_of_phase_max_{q}"] = float(np.abs(0.5 * (kl - kr) / scale).max())
+        metrics[f"kp_left_right_asymmetry_max_{q}"] = float(np.abs(sl + sr).max() / scale)
+        for name, ref in refs.items():
+            metrics[f"rms_{q}_vs_{name}"] = float(np.sqrt(np.mean((kp[q] - ref) ** 2)))
+    metrics.update({"kp_base_exact": float(refs["exact"][np.argmax(depth)]),
+                    "kp_base_compressible": float(refs["compressible"][np.argmax(depth)]),
+                    "acoustic_period_over_Tp": 4 * H / c0 / Tp, "dx_m": dx, "c0_m_s": c0,
+                    "wall_rows": int(depth.size), "max_speed_m_s": float(f.max_speed())})
+    tolerances = {"rms_raw_vs_exact": 0.04, "rms_face_vs_exact": 0.02}
+    passed = all(metrics[k] < v for k, v in tolerances.items())
+    return {"passed": passed, "metrics": metrics, "tolerances": tolerances,
+            "particles": int(f.ps.n), "steps": int(f.counters.steps),
+            "profile": {"depth_m": depth.tolist(), "kp_raw": kp["raw"].tolist(), "kp_avg": kp["avg"].tolist(),
+                        "kp_face": kp["face"].tolist(),
+                        **{f"kp_{k}": v.tolist() for k, v in refs.items()}}}
+
+
+@case("westergaard", "2-D tank 3.0 m long, water 1.0 m, base acceleration 0.5 g sin(2 pi t / 0.03 s): "
+      "wall k_p = p_d/(rho a0 H) vs the exact incompressible series, RMS < 0.04 (raw boundary "
+      "pressure) and < 0.02 (Eq. 15 averaging carried to the wall face)")
+def westergaard(quick: bool) -> dict:
+    """001_14936b82710365b2.txt §3.1 (Fig. 5): see :func:`run_westergaard` for set-up and
+    extraction. c0 = 1430 m/s (the paper's c_p); Wendland, h = sqrt(2) dx, alpha = 0.01,
+    Fourtakas delta = 0.1, CFL 0.2 (the defaults); 2 periods skipped, 3 fitted (quick: 1
+    and 2), 40 samples a period.
+
+    Reference: the exact incompressible wall pressure of this 3 m tank
+    (:func:`westergaard_series`; base k_p = 0.728, Westergaard's semi-infinite 0.742, the
+    7/8 parabola 0.875); the compressible series with c0 = 1430 m/s differs from it by
+    0.4 %.
+
+    Measured (NUMBA_NUM_THREADS=1, `cosim validate westergaard`; RMS of k_p over the
+    wall rows below the surface, vs exact):
+
+    ======  ==========  =====  ==========  ==========  ==========  =========
+    dx [m]  particles   steps  raw         Eq. 15      Eq. 15 face base k_p
+    ======  ==========  =====  ==========  ==========  ==========  =========
+    0.10    498         4560   0.252       0.095       0.049       0.689
+    0.05    1578        15200  0.193       0.052       0.024       0.718
+    0.025   5538        30400  0.173       0.030       0.0135      0.718
+    ======  ==========  =====  ==========  ==========  ==========  =========
+
+    (dx = 0.10 m: 1 + 2 periods, the quick run; base k_p: "face", exact 0.728.) The
+    face error halves with dx (first order); the full run (dx = 0.025 m) meets 0.02.
+
+    What limits the error: (1) plain Eq. 15 reports the pressure at the mean position of
+    the fluid it averages, ~1.1 dx into the water, where the impulsive pressure is lower
+    by ``rho a0 x``: k_p low by ~1.1 dx/H everywhere (0.055 at dx = 0.05 m). Carrying each
+    fluid pressure to the wall face with the exact normal momentum balance of a rigid
+    wall (:func:`face_pressure`) removes it. (2) The two rows next to the free surface
+    read high (k_p 0.17 vs 0.08 at depth dx/2 for dx = 0.05 m): the SPH free surface,
+    where kernel truncation stands in for p = 0, holds p_d away from zero over ~dx; it
+    dominates the remaining RMS and shrinks with dx. (3) The raw pressure of a dynamic
+    boundary particle is its own EOS pressure, which must exceed the face pressure to
+    hold the fluid off (the boundary particles' density is also clamped at rho0, so it
+    never reads suction): 25 % high at depth, so the raw target (the paper's 0.041 with
+    its MLS re-initialisation) is not met by this boundary model.
+    """
+    if quick:
+        return run_westergaard(0.1, periods_skip=1, periods_fit=2)
+    return run_westergaard(0.025)
+
+
+# ------------------------------------------------------------------------------------ sloshing
+def sloshing_omega(L: float, h: float, mode: int = 1, g: float = G) -> float:
+    """Linear sloshing frequency [rad/s] of a rectangular tank of length ``L`` [m] and
+    depth ``h`` [m], mode n excited by horizontal motion: ``w^2 = g k tanh(k h)``,
+    ``k = (2n - 1) pi / L`` (refdata/analytic_hydrodynamics/sloshing_frequencies_housner.csv)."""
+    k = (2 * mode - 1) * math.pi / L
+    return math.sqrt(g * k * math.tanh(k * h))
+
+
+def spectral_peak(t: np.ndarray, y: np.ndarray, f_lo: float, f_hi: float, pad: int = 64):
+    """Frequency [Hz] of the largest peak of the FFT of ``y`` (uniform times ``t`` [s])
+    between ``f_lo`` and ``f_hi`` [Hz]: mean removed, Hann window, zero padding ``pad``
+    times, and a parabola through the log-magnitude of the top bin and its neighbours
+    (the window's main lobe is near-Gaussian there, so the vertex is the peak to a small
+    fraction of a padded bin)."""
+    dt = t[1] - t[0]
+    y = (y - y.mean()) * np.hanning(y.size)
+    n = pad * y.size
+    spec = np.abs(np.fft.rfft(y, n))
+    f = np.fft.rfftfreq(n, dt)
+    band = np.flatnonzero((f >= f_lo) & (f <= f_hi))
+    i = band[np.argmax(spec[band])]
+    a, b, c = np.log(spec[i - 1:i + 2] + 1e-300)
+    shift = 0.5 * (a - c) / (a - 2 * b + c)
+    return float(f[i] + shift * (f[1] - f[0])), f, spec
+
+
+def run_sloshing_frequency(dx: float, L: float = 1.0, h: float = 0.5, amplitude: float = 0.002,
+                           cycles_forced: int = 3, cycles_free: int = 8, sensor_depth: float = 0.1,
+                           samples_per_period: int = 40, c0_factor: float = 20.0, **overrides) -> dict:
+    """2-D rectangular tank ``L`` x 1.5 h [m], water ``h`` [m], shaken along x by
+    ``amplitude`` [m] sin(w1 t) at the linear first-mode frequency w1 for
+    ``cycles_forced`` periods (half-cosine ramps of one period in and out, so the tank
+    stops at rest with no jump in velocity), then left still for ``cycles_free`` periods
+    (free decay). The first natural frequency is the peak of the FFT (:func:`spectral_peak`)
+    of the wall pressure (001 Eq. 15, :meth:`Fluid.wall_pressure`) on the left wall at
+    ``sensor_depth`` [m] below the surface, over the free decay only, searched between
+    0.5 and 1.5 w1 (the next mode a horizontal motion excites is at 2.3 w1 for h/L = 0.5);
+    compared with linear theory ``w1^2 = g (pi/L) tanh(pi h/L)`` (:func:`sloshing_omega`).
+    c0 = ``c0_factor`` sqrt(g h) [-] (the other settings are the defaults).
+    """
+    ps = _moving_tank(2, dx, L, h, 1.5 * h)
+    cfg = FluidConfig(dim=2, dx=dx, u_max=math.sqrt(G * h), c0_factor=c0_factor, **overrides)
+    set_hydrostatic(ps, h, RHO0, cfg.speed_of_sound, cfg.gamma, cfg.g)
+    f = Fluid(cfg, ps)
+    w1 = sloshing_omega(L, h, g=cfg.g)
+    T1 = 2 * math.pi / w1
+    t_stop = cycles_forced * T1
+    f.prescribe_motion(0, Translation((1.0, 0.0), Harmonic(amplitude, T1)).ramped(T1, 0.0, t_stop))
+    f.initialize(0.0)
+    x, z = ps.pos[:, 0], ps.pos[:, 1]
+    wall = (ps.kind == Kind.MOVING_WALL) & np.isclose(x, -0.5 * dx) & (z > 0) & (z < h)
+    cand = np.flatnonzero(wall)
+    sensor_id = ps.ids[cand[np.argmin(np.abs(z[cand] - (h - sensor_depth)))]]
+    sensor_z = float(z[ps.ids == sensor_id][0])
+    dt_s = T1 / samples_per_period
+    n_forced = cycles_forced * samples_per_period
+    n_total = n_forced + cycles_free * samples_per_period
+    times, p = [], []
+    t = 0.0
+    for i in range(n_total):
+        f.advance(t, dt_s)
+        t = (i + 1) * dt_s
+        if i + 1 > n_forced:
+            times.append(t)
+            p.append(f.wall_pressure()[np.flatnonzero(f.ps.ids == sensor_id)[0]])
+    times, p = np.asarray(times), np.asarray(p)
+    f1_ref = w1 / (2 * math.pi)
+    f1, _, _ = spectral_peak(times, p, 0.5 * f1_ref, 1.5 * f1_ref)
+    amp = 0.5 * (p.max() - p.min())
+    metrics = {"f1_hz": f1, "f1_linear_hz": f1_ref, "f1_rel_err": abs(f1 / f1_ref - 1),
+               "f1_signed_rel_err": f1 / f1_ref - 1,
+               "pressure_amplitude_pa": float(amp),
+               "wave_amplitude_estimate_m": float(amp / (RHO0 * G) * math.cosh(math.pi / L * h)
+                                                  / math.cosh(math.pi / L * sensor_z)),
+               "sensor_z_m": sensor_z, "decay_s": float(times[-1] - times[0]), "dx_m": dx,
+               "c0_m_s": cfg.speed_of_sound}
+    tolerances = {"f1_rel_err": 0.02}
+    passed = metrics["f1_rel_err"] < tolerances["f1_rel_err"]
+    return {"passed": passed, "metrics": metrics, "tolerances": tolerances,
+            "particles": int(f.ps.n), "steps": int(f.counters.steps)}
+
+
+# ------------------------------------------------------------------------------------ SPHERIC 10
+SPHERIC10 = REFDATA / "sloshing_spheric_test10"
+#: impact peaks of the measured record (SOURCE.txt): time [s], pressure [Pa]
+SPHERIC10_PEAKS = ((2.375, 3683.0), (4.067, 3890.0), (5.672, 2663.0), (7.303, 7148.0))
+
+
+def spheric10_motion() -> Rotation:
+    """The measured roll of SPHERIC Test 10 (refdata SloshingMotionData.dat: t [s], angle
+    [deg], 5e-5 s apart) about the centre of the tank bottom (0, 0), as a :class:`Rotation`.
+    Sign: the record's positive angle lowers the left wall (x = -0.45 m): the measured
+    impacts on the left-wall sensor come 0.15 s after each positive extreme of the angle;
+    our positive angle about +y lowers the right wall, so the record is negated."""
+    m = np.loadtxt(SPHERIC10 / "SloshingMotionData.dat", comments="#")
+    theta = -np.radians(m[:, 1])
+    return Rotation((0.0, 0.0), Tabulated(tuple(m[:, 0]), tuple(theta), "displacement"))
+
+
+def spheric10_pressure() -> np.ndarray:
+    """(t [s], p [Pa]) of the measured left-wall pressure, sorted by time (the file's rows
+    come as interleaved min/max pairs, SOURCE.txt)."""
+    p = np.loadtxt(SPHERIC10 / "EXP_Pressure_SPHERIC_Benchmark#10.txt", skiprows=2)
+    return p[np.argsort(p[:, 0], kind="stable")]
+
+
+def run_spheric10(dx: float, t_end: float = 8.0, c0: float = 28.0, sample_dt: float = 0.001,
+                  window: float = 0.25, **overrides) -> dict:
+    """SPHERIC benchmark 10, low filling, water, lateral impact (Souto-Iglesias et al.,
+    CEHINAV-UPM; refdata/sloshing_spheric_test10/SOURCE.txt): 2-D section of the tank
+    0.900 x 0.508 m, water 0.093 m, rolled by the measured angle about the centre of the
+    tank bottom; pressure on the left wall at the still-water level (z = 0.093 m in the
+    tank frame).
+
+    The seed (003_7c74773681ee080c.txt §3) validates its SPH on the same kind of test
+    (Brizzolara et al. 2011: a 900 x 508 mm tank rolled +-4 deg about an axis 184 mm above
+    the bottom, in a 2-D section); the record we hold is the SPHERIC Test 10 data as
+    packaged by DualSPHysics, whose axis is the centre of the bottom (SOURCE.txt), so we
+    follow that.
+
+    dx [m]; c0 [m/s] (28: 10 times a 2.8 m/s impact speed, as ~29 sqrt(g h)); the other
+    settings are the defaults. The sensor reads :func:`face_pressure` at its point on the
+    wall face (Eq. 15 average of the fluid within 2h, carried to the face and fitted
+    along the wall: plain Eq. 15 at a wall particle at the still-water level reads the
+    water below it, ~rho g dx too high), sampled every ``sample_dt`` [s]. For each measured impact before
+    ``t_end`` [s] the SPH peak is the largest pressure within ``window`` [s] of the
+    measured peak time: its ratio to the measured peak and its time lag are reported;
+    so is the ratio of the pressure impulses (integral of p over the same windows, which
+    varies less between experimental repetitions than the peak).
+    """
+    L, H, h = 0.9, 0.508, 0.093
+    ps = _moving_tank(2, dx, L, h, H)
+    ps.pos[:, 0] -= L / 2
+    cfg = FluidConfig(dim=2, dx=dx, c0=c0, **overrides)
+    set_hydrostatic(ps, h, RHO0, cfg.speed_of_sound, cfg.gamma, cfg.g)
+    f = Fluid(cfg, ps)
+    roll = spheric10_motion()
+    f.prescribe_motion(0, roll)
+    f.initialize(0.0)
+    sensor = np.array([[-L / 2, h]])          # tank frame = world frame at t = 0
+    n = int(round(t_end / sample_dt))
+    times, p = np.empty(n), np.empty(n)
+    t = 0.0
+    for i in range(n):
+        f.advance(t, sample_dt)
+        t = (i + 1) * sample_dt
+        at, _ = roll(t, sensor)
+        normal = roll(t, sensor + [1.0, 0.0])[0] - at
+        th, dth, ddth = roll.signal.state(t)
+        r = at[0] - np.asarray(roll.point)
+        acc = ddth * np.array([r[1], -r[0]]) - dth**2 * r
+        times[i], p[i] = t, face_pressure(f, at, at, normal[0], acc, cfg.gravity)[0]
+    exp = spheric10_pressure()
+    metrics = {"dx_m": dx, "c0_m_s": c0, "t_end_s": t_end}
+    ratios, lags, imp = [], [], []
+    for k, (tp, pp) in enumerate(SPHERIC10_PEAKS):
+        if tp + window > t_end:
+            continue
+        sel = np.abs(times - tp) <= window
+        j = np.argmax(np.where(sel, p, -np.inf))
+        esel = np.abs(exp[:, 0] - tp) <= window
+        ratios.append(p[j] / pp)
+        lags.append(times[j] - tp)
+        # impulse of the positive pressure over the window (the measured record is
+        # decimated to min/max pairs, so its integral is approximate)
+        imp.append(np.trapezoid(np.maximum(p[sel], 0), times[sel])
+                   / np.trapezoid(np.maximum(exp[esel, 1], 0), exp[esel, 0]))
+        metrics[f"impact{k + 1}_peak_ratio"] = float(ratios[-1])
+        metrics[f"impact{k + 1}_lag_s"] = float(lags[-1])
+        metrics[f"impact{k + 1}_impulse_ratio"] = float(imp[-1])
+    if ratios:
+        metrics["peak_ratio_worst"] = float(max(abs(r - 1) for r in ratios))
+        metrics["lag_worst_s"] = float(max(abs(x) for x in lags))
+    metrics["max_pressure_pa"] = float(p.max())
+    # the first swing (0.5 - 1.2 s): water runs to the lowered left wall without impact,
+    # a nearly hydrostatic pressure that a coarse run resolves
+    if t_end >= 1.2:
+        w = (times >= 0.5) & (times <= 1.2)
+        ew = (exp[:, 0] >= 0.5) & (exp[:, 0] <= 1.2)
+        metrics["swing1_peak_ratio"] = float(p[w].max() / exp[ew, 1].max())
+        metrics["swing1_lag_s"] = float(times[w][np.argmax(p[w])] - exp[ew, 0][np.argmax(exp[ew, 1])])
+    tolerances = {"peak_ratio_worst": 0.2, "lag_worst_s": 0.05}
+    passed = bool(ratios) and all(metrics[k] < v for k, v in tolerances.items())
+    return {"passed": passed, "metrics": metrics, "tolerances": tolerances,
+            "particles": int(f.ps.n), "steps": int(f.counters.steps),
+            "series": {"t": times, "p": p}}
+
+
+@case("sloshing-frequency", "2-D tank 1.0 m long, water 0.5 m, shaken 3 periods then free: first "
+      "natural frequency from the FFT of the wall pressure within 2 % of linear theory")
+def sloshing_frequency(quick: bool) -> dict:
+    """See :func:`run_sloshing_frequency`. Reference: linear potential theory
+    ``w1^2 = g (pi/L) tanh(pi h/L)``: f1 = 0.8462 Hz for L = 1 m, h = 0.5 m (refdata
+    sloshing_frequencies_housner.csv: T1 = 1.18182 s).
+
+    Measured: see the module's trade table (benchmarks/sloshing_trade.py)."""
+    if quick:
+        return run_sloshing_frequency(0.05, cycles_forced=3, cycles_free=5, c0_factor=10.0)
+    return run_sloshing_frequency(0.0125)
+
+
+@case("sloshing-spheric10", "SPHERIC Test 10 (rolling tank 900 x 508 mm, water 93 mm, measured roll): "
+      "left-wall pressure impact peaks within 20 % and within 0.05 s of the measured ones")
+def sloshing_spheric10(quick: bool) -> dict:
+    """See :func:`run_spheric10`. Reference: the measured pressure of SPHERIC Test 10
+    (refdata/sloshing_spheric_test10; impact peaks 3.68, 3.89, 2.66, 7.15 kPa at 2.375,
+    4.067, 5.672, 7.303 s).
+
+    Measured: see the module's trade table (benchmarks/sloshing_trade.py)."""
+    if quick:  # the first swing only (no impact): 5 particle rows over the depth
+        out = run_spheric10(0.0186, t_end=1.3)
+    else:
+        out = run_spheric10(0.00465, t_end=8.0)
+    out.pop("series")
+    return out

@@ -1,0 +1,94 @@
+"""Sloshing and base-excitation validations (cosim.validations.sloshing): the analytic
+references against the refdata tables, the FFT peak finder, and the quick runs."""
+
+import math
+import os
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from cosim import validation
+from cosim.validations.sloshing import (REFDATA, sloshing_omega, spectral_peak, spheric10_motion,
+                                        spheric10_pressure, westergaard_parabola, westergaard_series)
+
+AH = REFDATA / "analytic_hydrodynamics"
+needs_refdata = pytest.mark.skipif(not AH.is_dir(), reason=f"reference data not found at {REFDATA}")
+
+
+@needs_refdata
+def test_westergaard_series_and_parabola_match_the_refdata_table():
+    tab = np.loadtxt(AH / "westergaard_vertical_dam_Cp.csv", delimiter=",", comments="#", skiprows=5)
+    np.testing.assert_allclose(westergaard_series(tab[:, 0], 1.0), tab[:, 1], atol=2e-5)
+    np.testing.assert_allclose(westergaard_parabola(tab[:, 0], 1.0), tab[:, 2], atol=1e-5)
+    # base value 8 G / pi^2 (G Catalan's constant)
+    assert westergaard_series(np.array([1.0]), 1.0)[0] == pytest.approx(8 * 0.915965594177219 / math.pi**2, abs=1e-5)
+
+
+def test_compressible_and_finite_tank_limits():
+    y = np.linspace(0, 2.0, 9)
+    H, c, T = 2.0, 1430.0, 0.03
+    # compressible factor 1 / c_n of each odd term (refdata SOURCE.txt A)
+    m = np.arange(1, 800, 2)
+    cn = np.sqrt(1 - (4 * H / (c * T)) ** 2 / m**2)
+    want = 8 / math.pi**2 * (np.sin(np.outer(y, m) * math.pi / (2 * H)) / (m**2 * cn)).sum(axis=1)
+    np.testing.assert_allclose(westergaard_series(y, H, c=c, period=T), want, atol=1e-4)
+    # a long tank is the semi-infinite reservoir; a short one carries less (tanh(k L/2) < 1)
+    np.testing.assert_allclose(westergaard_series(y, H, length=200.0), westergaard_series(y, H), atol=1e-12)
+    assert westergaard_series(np.array([H]), H, length=3.0)[0] < westergaard_series(np.array([H]), H)[0] - 0.01
+    with pytest.raises(ValueError, match="acoustic"):
+        westergaard_series(y, H, c=100.0, period=0.01)
+
+
+@needs_refdata
+def test_sloshing_frequency_matches_the_housner_table():
+    rows = [r.split(",") for r in (AH / "sloshing_frequencies_housner.csv").read_text().splitlines()
+            if r.startswith("rectangular")]
+    for r in rows:
+        L, h, n, omega = float(r[1]), float(r[2]), int(r[3]), float(r[5])
+        assert sloshing_omega(L, h, n) == pytest.approx(omega, rel=2e-5)
+
+
+def test_spectral_peak_finds_a_decaying_tone_far_below_the_bin_width():
+    t = np.arange(0, 8.0, 0.02)
+    f0 = 0.8461557
+    y = np.exp(-0.1 * t) * np.cos(2 * math.pi * f0 * t + 0.4) + 0.1 * np.cos(2 * math.pi * 2.3 * t)
+    f, _, _ = spectral_peak(t, y, 0.4, 1.3)
+    assert abs(f / f0 - 1) < 2e-3  # the bin width is 1/8 s^-1: 15 % of f0
+
+
+@needs_refdata
+def test_spheric10_roll_record():
+    roll = spheric10_motion()
+    th = np.array([roll.signal.state(t)[0] for t in np.linspace(0, 8, 801)])
+    assert np.degrees(np.abs(th).max()) == pytest.approx(4.0, abs=0.1)
+    # the record's positive angle lowers the left wall (impacts on the left follow it)
+    pos, _ = roll(0.6, np.array([[-0.45, 0.093], [0.45, 0.093]]))
+    assert pos[0, 1] < 0.093 - 0.02 and pos[1, 1] > 0.093 + 0.02
+    p = spheric10_pressure()
+    assert (np.diff(p[:, 0]) >= 0).all() and p[:, 1].max() == pytest.approx(7147.5, abs=1.0)
+
+
+def test_westergaard_quick():
+    r = validation.run("westergaard", quick=True)
+    m = r["metrics"]
+    # dx = 0.1 m (10 rows): first-order errors of ~dx/H (see the case's docstring)
+    assert m["rms_face_vs_exact"] < 0.06
+    assert m["kp_base_face"] == pytest.approx(m["kp_base_exact"], rel=0.06)
+    assert m["kp_out_of_phase_max_avg"] < 0.05  # the impulsive pressure follows the acceleration
+    assert m["rms_avg_vs_exact"] > m["rms_face_vs_exact"]  # the face correction helps
+
+
+@needs_refdata
+def test_spheric10_quick():
+    r = validation.run("sloshing-spheric10", quick=True)
+    m = r["metrics"]
+    assert abs(m["swing1_peak_ratio"] - 1) < 0.2
+    assert abs(m["swing1_lag_s"]) < 0.1
+
+
+@pytest.mark.xfail(strict=True, reason="the SPH first sloshing mode runs 10-12 % above linear theory at "
+                   "dx = h/10 and h/20 alike (also in deep water, L = h = 0.5 m); see the case's docstring")
+def test_sloshing_frequency_quick():
+    r = validation.run("sloshing-frequency", quick=True)
+    assert r["metrics"]["f1_rel_err"] < 0.02
