@@ -183,7 +183,7 @@ def _plots(out: Path, t, x, z, th, ten, wm):
     a.plot(t, ten[:, 0], label="left line")
     a.plot(t, ten[:, 1], label="right line")
     a.set_xlabel("t [s]")
-    a.set_ylabel("fairlead tension [N/m of depth]")
+    a.set_ylabel("fairlead tension [N]")
     a.grid(alpha=0.3)
     a.legend()
     fig.tight_layout()
