@@ -10,9 +10,18 @@ on the floor 0.7 m either side. The fluid is weakly-compressible SPH (numba,
 particles (seed 004 Eq. 9-13), coupled with the "fluid-first" scheme (the box
 receives exactly the impulse the water exchanged with it).
 
-    python examples/moored_box_waves.py                  # dx = 2 cm, 5 s
+    python examples/moored_box_waves.py                  # dx = 2 cm, 5 s: 2615 particles, 17 002 steps
     python examples/moored_box_waves.py --fine           # dx = 1 cm (8 times the work)
     python examples/moored_box_waves.py --mooring sph-cable --duration 3
+
+Cost (measured): the default run takes 103 s of one CPU core (the fluid runs on
+one thread below 20 000 particles); on the shared 2-core development machine,
+loaded 6-fold by other jobs, that was 18 min of wall time. In the last two
+periods the box heaves 36 mm and surges 49 mm peak to peak (the waves' orbital
+motion: H / tanh kd = 45 mm), rolls up to 6 deg, and the fairlead tensions swing
+between 1.13 and 1.38 N. The dynamic SPH cable (``--mooring sph-cable``) starts
+with a tension spike of ~3.8 kN at this scale (dx = 3 cm, 0.2 s); MoorDyn
+(``--mooring moordyn``) runs cleanly.
 
 Writes to ``--out`` (default ``out/moored_box_waves``): ``run.h5`` + ``run.xmf``
 (series ``body`` x, z, theta; ``fairleads`` tension, force; ``gauges`` eta; the

@@ -88,9 +88,14 @@ def moored_body_sph(quick: bool) -> dict:
     What limits it: the SPH draft error of a floating body (dynamic boundaries
     stand the fluid off by a fraction of dx; see ``floating-box-draft``), and in
     the quick run an unfinished surge decay (mean over less than one period).
+
+    Measured (quick: dx = 2 cm, c0 = 10 m/s, 3 s, 1430 particles, 5823 steps, 19 s
+    of one core): mean centre 2.6 mm (0.13 dx) above the equilibrium, i.e. SPH
+    finds 11.5 of the lines' 14.1 mm pull-down; 3.4 mm off in x with 8 mm of surge
+    left; roll up to 2.2 deg.
     """
     dx = 0.02 if quick else 0.01
-    t_end = 3.0 if quick else 8.0
+    t_end = 3.0 if quick else 6.0
     bw, bh, rb = MB_BOX
     t, x, z, th, c, fluid, mooring = moored_box_sph(dx, 0.04, t_end, c0=10.0 if quick else None)
     z_eq = moored_equilibrium(bw, bh, rb, MB_SPREAD, *MB_LINE, MB_DEPTH)
