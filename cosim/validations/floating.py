@@ -223,3 +223,108 @@ def floating_heave_period(quick: bool) -> dict:
                         "mean_centre_m": zm, "archimedes_centre_m": z_eq},
             "tolerances": {"period_error": tol, "fit_rms_of_amplitude": 0.1},
             "particles": int(fluid.fluid.ps.n), "steps": int(coupler.steps)}
+
+
+def sinking_cylinder(dx: float, t_end: float, *, radius: float = 1.0, rho_c: float = 1200.0,
+                     tank: float = 6.0, depth: float = 4.0, boundary: str = "mdbc"):
+    """Seed 004 §4.1 (after Fekken 2004): a 2-D cylinder of ``radius`` [m] and
+    density ``rho_c`` [kg/m^3], centre on the still-water surface (half submerged),
+    released at rest in the middle of a ``tank`` [m] long tank of ``depth`` [m]
+    water; ``dx`` [m] spacing, run for ``t_end`` [s]. Returns the time [s], the
+    centre's depth below its start [m] and its downward velocity [m/s] at every
+    coupling step, and the coupler."""
+    from bodies import builders
+    from bodies.mujoco_bodies import MujocoBodies
+    from cosim.coupler import Coupler
+    from cosim.sph_fluid import SPHFluid
+    from fluid.geometry import block, tank_walls
+    from fluid.particles import Kind
+    from fluid.solver import FluidConfig
+
+    cfg = FluidConfig(dim=2, dx=dx, u_max=math.sqrt(G * depth), c0_factor=20.0)
+    walls = [(tank_walls(np.zeros(2), np.array([tank, depth + 1.5 * radius]), dx, 3), Kind.FIXED_WALL, 0)]
+    cyl = builders.cylinder("cyl", radius, 1.0, (0.5 * tank, 0.0, depth), density=rho_c, planar=True)
+    bodies = MujocoBodies(builders.scene(cyl, gravity=G, timestep=1e-3))
+    fluid = SPHFluid(cfg, block(np.zeros(2), np.array([tank, depth]), dx), walls, z_surface=depth,
+                     boundary=boundary)
+    coupler = Coupler(bodies=bodies, fluid=fluid, scheme="fluid-first")
+    t, s, v = [0.0], [0.0], [0.0]
+
+    def record(info):
+        k = bodies.kinematics()
+        t.append(info.t)
+        s.append(depth - k.com[0, 2])
+        v.append(-k.velocity[0, 2])
+
+    coupler.run(t_end, callback=record)
+    return np.array(t), np.array(s), np.array(v), coupler, fluid
+
+
+def sinking_cylinder_reference(t, radius: float = 1.0, rho_c: float = 1200.0):
+    """Downward velocity [m/s] at times ``t`` [s] of a 2-D cylinder released from rest
+    with its centre on the free surface, from ``(m + a33) dv/dt = (m - rho A(s)) g``:
+    ``A(s)`` the exact submerged area of the circle with its centre ``s`` below the
+    surface (``pi r^2 / 2 + r^2 asin(s/r) + s sqrt(r^2 - s^2)``), ``a33 = rho pi r^2 / 2``
+    the impulsive added mass of the half-submerged circle (at the first instant the
+    free surface is a plane of zero potential: half the added mass rho pi r^2 of the
+    full circle in unbounded fluid). Exact at t = 0 (a0 = (rho_c - rho/2) /
+    (rho_c + rho/2) g); later it omits the growth of a33 with submergence and the
+    waves, both of which slow the cylinder (estimated -5 % in velocity by 0.25 s)."""
+    from scipy.integrate import solve_ivp
+
+    m = rho_c * math.pi * radius**2
+    a33 = 0.5 * RHO * math.pi * radius**2
+
+    def rhs(_, y):
+        s = min(max(y[0], -radius), radius)
+        area = 0.5 * math.pi * radius**2 + radius**2 * math.asin(s / radius) + s * math.sqrt(radius**2 - s * s)
+        return [y[1], (m - RHO * area) * G / (m + a33)]
+
+    t = np.asarray(t, float)
+    sol = solve_ivp(rhs, (0.0, float(t.max())), [0.0, 0.0], t_eval=t, rtol=1e-10, atol=1e-12)
+    return sol.y[1]
+
+
+@case("sinking-cylinder", "2-D cylinder r = 1 m, 1200 kg/m^3, half submerged, released: velocity over the first "
+      "0.25 s vs added-mass + buoyancy model; trajectory over 1 s recorded")
+def sinking_cylinder_case(quick: bool) -> dict:
+    """Seed 004 §4.1 (004_1657bd4a51d29840.txt, Fig. 8) compares DualSPHysics with
+    Fekken's (2004, PhD thesis, Groningen) VOF displacement and velocity of this
+    cylinder but prints no numbers, and we found no published table of Fekken's
+    curves: the comparison with them over the first second is NOT made here (the
+    trajectory at 0.25 ... 1 s is recorded for it). What is compared: the velocity
+    over the first 0.25 s (0.78 sqrt(r/g); the centre sinks 11 % of the radius)
+    against :func:`sinking_cylinder_reference`, exact at release
+    (a0 = 700/1700 g = 4.04 m/s^2) and carrying the exact buoyancy after it, by the
+    least-squares ratio ``sum v v_ref / sum v_ref^2``. Target 10 % (full, dx = 0.05 m,
+    40 particles across, 1 s, 6 m tank of 4 m water); quick: dx = 0.1 m, 0.25 s,
+    20 % (what 20 particles across meet).
+
+    What limits the error: the model omits the growth of the added mass with
+    submergence and the radiated waves (both slow the cylinder, ~5 % by 0.25 s);
+    the SPH velocity rings with the tank's acoustic mode (period ~4 depth / c0 =
+    0.13 s) around the trend, hence the fit over two periods rather than a point;
+    fluid removed around the circle leaves the first fluid particles 0.5 ... 1.2
+    spacings from the surface (a circle cannot lie on the lattice) at release.
+
+    Measured (0.25 s): dx = 0.1 m: v(0.2 s) = 0.66 m/s, dx = 0.05 m: 0.71 m/s,
+    model 0.78 m/s (see the record for the ratios).
+    """
+    dx, t_end = (0.1, 0.25) if quick else (0.05, 1.0)
+    t, s, v, coupler, fluid = sinking_cylinder(dx, t_end)
+    early = (t > 0) & (t <= 0.25)
+    v_ref = sinking_cylinder_reference(t[early])
+    ratio = float(np.sum(v[early] * v_ref) / np.sum(v_ref**2))  # least-squares v = ratio * v_ref
+    err = ratio - 1
+    samples = {f"{tt:g}s": {"depth_m": float(np.interp(tt, t, s)), "velocity_m_s": float(np.interp(tt, t, v)),
+                            **({"reference_velocity_m_s": float(sinking_cylinder_reference([tt])[0])}
+                               if tt <= 0.25 else {})}
+               for tt in (0.05, 0.1, 0.15, 0.2, 0.25, 0.5, 0.75, 1.0) if tt <= t[-1] + 1e-9}
+    tol = 0.20 if quick else 0.10
+    return {"passed": abs(err) < tol,
+            "metrics": {"dx_m": dx, "velocity_ratio_0_to_0.25s": ratio, "velocity_error": err,
+                        "initial_acceleration_reference_m_s2": (1200.0 - 0.5 * RHO) / (1200.0 + 0.5 * RHO) * G,
+                        "trajectory": samples,
+                        "fekken_2004_comparison": "not made: no published numbers found"},
+            "tolerances": {"velocity_error": tol},
+            "particles": int(fluid.fluid.ps.n), "steps": int(coupler.steps)}
