@@ -4,8 +4,10 @@ registered case (`cosim validate dambreak-2d`); its front does not meet the 5 % 
 the column's collapse (residual height at the back wall) against Martin & Moyce (1952)."""
 
 import numpy as np
+import pytest
 
 from cosim.validation import run
+from cosim.validations.fluid import run_dambreak
 
 
 def test_dambreak_front_obeys_physical_bounds():
@@ -26,3 +28,14 @@ def test_dambreak_front_obeys_physical_bounds():
     # back wall within 5 % RMS of Martin & Moyce's Table 6 (measured 2.0 % at 20 particles
     # across the column, 2.6 % at 10)
     assert rec["metrics"]["height_rms_rel_err_mm1952"] < 0.05
+
+
+@pytest.mark.slow
+def test_dambreak_residual_height_converges():
+    # the column's collapse converges to the experiment with dx (residual height at the
+    # back wall, RMS against Martin & Moyce Table 6: 2.6 %, 2.0 %, 1.2 % at 10, 20, 40
+    # particles across the column), while the front does not (7.8 %, 12 %, 15 % ahead of
+    # Martin & Moyce: see run_dambreak)
+    coarse, fine = (run_dambreak(n)["metrics"] for n in (20, 40))
+    assert fine["height_rms_rel_err_mm1952"] < coarse["height_rms_rel_err_mm1952"]
+    assert fine["height_rms_rel_err_mm1952"] < 0.02

@@ -30,9 +30,10 @@ def test_hydrostatic_2d_full():
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason="open: in 3-D the particles keep moving (4e-3 to 6e-3 "
-                   "sqrt(gH) near the tank's vertical edges, growing after 0.7 s) with Fourtakas "
-                   "diffusion; without diffusion the same tank settles (7e-4 at 1.5 s)")
+@pytest.mark.xfail(strict=True, reason="open (cosim/validations/fluid.py hydrostatic_3d): with "
+                   "Fourtakas diffusion delta = 0.1 the particles by the vertical edges start moving "
+                   "after 0.7 s (5.9e-3 sqrt(gH) at 1.4 s); at 5 layers a 1.3-1.5 % pressure bias "
+                   "from kernel truncation remains with every diffusion option")
 @pytest.mark.parametrize("quick", [True, False])
 def test_hydrostatic_3d(quick):
     check(run("hydrostatic-3d", quick=quick))
