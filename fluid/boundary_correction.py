@@ -108,13 +108,15 @@ def mdbc_density(pos, rho, mass, kind, ids, offset, start, lo, inv_cell, nx, ny,
             o2 += o[k] * o[k]
         if o2 == 0.0:
             continue
-        g = np.empty(3)
-        g[0] = pos[i, 0] + o[0]
-        g[1] = pos[i, 1] + o[1] if three else 0.0
-        g[2] = pos[i, zc] + o[zc]
+        gx = pos[i, 0] + o[0]
+        gy = pos[i, 1] + o[1] if three else 0.0
+        gz = pos[i, zc] + o[zc]
         A = np.zeros((4, 4))
         bv = np.zeros(4)
-        cx, cy, cz = cell_coords(g[0], g[1], g[2], lo, inv_cell, True, nx, ny, nz)
+        row = np.empty(4)  # the weights V W, V grad W (solver order: x, z or x, y, z)
+        col = np.empty(4)  # 1 and r_jg (same order)
+        col[0] = 1.0
+        cx, cy, cz = cell_coords(gx, gy, gz, lo, inv_cell, True, nx, ny, nz)
         for dz in range(-reach, reach + 1):
             for kk in range(dys):
                 dy = kk - reach if three else 0
@@ -122,34 +124,27 @@ def mdbc_density(pos, rho, mass, kind, ids, offset, start, lo, inv_cell, nx, ny,
                 for j in range(j0, j1):
                     if kind[j] != 0:
                         continue
-                    r = np.zeros(3)  # r_jg in x, y, z slots; rows of A use dim components
-                    r[0] = pos[j, 0] - g[0]
-                    r[1] = pos[j, 1] - g[1] if three else 0.0
-                    r[2] = pos[j, zc] - g[2]
-                    r2 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2]
+                    rx = pos[j, 0] - gx
+                    ry = pos[j, 1] - gy if three else 0.0
+                    rz = pos[j, zc] - gz
+                    r2 = rx * rx + ry * ry + rz * rz
                     if r2 >= R2:
                         continue
                     q = math.sqrt(r2) / h
                     V = mass[j] / rho[j]
-                    W = w_value(kernel, q, ad)
-                    F = grad_factor(kernel, q, ad, h)  # grad_g W(r_g - r_j) = F (r_g - r_j) = -F r_jg
-                    # components in solver order: (x, z) in 2-D, (x, y, z) in 3-D
-                    rc = np.empty(3)
-                    rc[0] = r[0]
+                    VF = -V * grad_factor(kernel, q, ad, h)  # grad_g W(r_g - r_j) = F (r_g - r_j) = -F r_jg
+                    row[0] = V * w_value(kernel, q, ad)
+                    col[1] = rx
+                    row[1] = VF * rx
+                    col[dim] = rz
+                    row[dim] = VF * rz
                     if three:
-                        rc[1] = r[1]
-                        rc[2] = r[2]
-                    else:
-                        rc[1] = r[2]
-                    wrow = np.empty(4)
-                    wrow[0] = V * W
-                    for k in range(dim):
-                        wrow[k + 1] = -V * F * rc[k]
+                        col[2] = ry
+                        row[2] = VF * ry
                     for a in range(m):
-                        A[a, 0] += wrow[a]
-                        for k in range(dim):
-                            A[a, k + 1] += wrow[a] * rc[k]
-                        bv[a] += wrow[a] * rho[j]
+                        for k in range(m):
+                            A[a, k] += row[a] * col[k]
+                        bv[a] += row[a] * rho[j]
         s0 = A[0, 0]
         sb = bv[0]
         det = _solve(A, bv, m)

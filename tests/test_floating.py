@@ -143,3 +143,14 @@ def test_sinking_cylinder_quick():
     assert abs(m["velocity_error"]) < 0.20
     tr = m["trajectory"]
     assert 0 < tr["0.1s"]["velocity_m_s"] < tr["0.2s"]["velocity_m_s"] < tr["0.25s"]["velocity_m_s"]
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["floating-box-draft", "floating-heave-period", "sinking-cylinder"])
+def test_floating_validations_full(name):
+    """Full resolution: 2-D and 3-D drafts within 2 % of the height, heave period
+    within 10 %, sinking-cylinder velocity within 10 % of the model (minutes each)."""
+    from cosim.validation import run
+
+    r = run(name, quick=False)
+    assert r["passed"], r["metrics"]
