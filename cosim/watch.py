@@ -47,7 +47,8 @@ class InstabilityWatch:
         self.steps, self.window, self.windows, self.growth = steps, window, windows, growth
         self._n_keep = max(steps + 1, window * (windows + 1))
         self._buf = None  # (n_keep, nv), newest last
-        self._count = 0
+        self._count = 0  # accelerations held, up to n_keep
+        self._steps = 0  # accelerations booked; signature 2 is checked at each window's end
 
     def add(self, qacc: np.ndarray) -> list[str | None]:
         """Book one step's generalised accelerations [m/s^2, rad/s^2]; returns per body
@@ -57,18 +58,20 @@ class InstabilityWatch:
         self._buf[:-1] = self._buf[1:]
         self._buf[-1] = qacc
         self._count = min(self._count + 1, self._n_keep)
+        self._steps += 1
         return [self._check(s) for s in self.dofs]
 
     def _check(self, dofs: slice) -> str | None:
         a = self._buf[:, dofs]
-        if self._count > self.steps:
+        # cheap first test (most steps): signature 1 needs a flip and |a| > g at this step
+        if self._count > self.steps and np.dot(a[-1], a[-2]) < 0 and np.dot(a[-1], a[-1]) > self.g ** 2:
             last = a[-self.steps - 1:]
             mag = np.linalg.norm(last, axis=1)
             if (np.einsum("ij,ij->i", last[1:], last[:-1]) < 0).all() and mag[-1] > 4.0 * mag[0] \
                     and mag[-1] > self.g:
                 return (f"its acceleration changed sign at each of the last {self.steps} steps and grew from "
                         f"{mag[0]:.3g} to {mag[-1]:.3g}")
-        if self._count == self._n_keep:
+        if self._count == self._n_keep and self._steps % self.window == 0:
             win = a[-self.window * (self.windows + 1):].reshape(self.windows + 1, self.window, -1)
             peaks = np.linalg.norm(win, axis=2).max(axis=1)
             turns = (np.einsum("wij,wij->wi", win[:, 1:], win[:, :-1]) < 0).any(axis=1)
@@ -79,7 +82,7 @@ class InstabilityWatch:
         return None
 
     def save_state(self):
-        return None if self._buf is None else (self._buf.copy(), self._count)
+        return None if self._buf is None else (self._buf.copy(), self._count, self._steps)
 
     def load_state(self, state) -> None:
-        self._buf, self._count = (None, 0) if state is None else (state[0].copy(), state[1])
+        self._buf, self._count, self._steps = (None, 0, 0) if state is None else (state[0].copy(), *state[1:])
