@@ -92,3 +92,12 @@ def test_spheric10_quick():
 def test_sloshing_frequency_quick():
     r = validation.run("sloshing-frequency", quick=True)
     assert r["metrics"]["f1_rel_err"] < 0.02
+
+
+@pytest.mark.slow
+def test_westergaard_full():
+    """dx = 0.025 m (40 rows): the Eq. 15 pressure carried to the wall face meets the
+    0.02 target; plain Eq. 15 is 0.03 (measured; see the case's docstring)."""
+    m = validation.run("westergaard")["metrics"]
+    assert m["rms_face_vs_exact"] < 0.02
+    assert m["rms_avg_vs_exact"] < 0.04

@@ -273,6 +273,16 @@ def westergaard(quick: bool) -> dict:
 
     (dx = 0.10 m: 1 + 2 periods, the quick run; base k_p: "face", exact 0.728.) The
     face error halves with dx (first order); the full run (dx = 0.025 m) meets 0.02.
+    The paper's own numbers (dx = 0.05 m, against the 7/8 parabola): 0.0411 raw, 0.02
+    with Eq. 15; ours against the parabola at dx = 0.05 m: 0.153 raw, 0.102 Eq. 15, 0.065
+    face (the parabola is 0.15 above the exact series at the base, so an accurate model
+    cannot come close to it there).
+
+    The speed of sound (dx = 0.05 m, benchmarks/sloshing_trade.py): c0 = 1430, 700, 350
+    m/s (4H/c0 = 0.09, 0.19, 0.38 Tp) give face RMS 0.024, 0.019, 0.048 against the
+    incompressible series and 0.025, 0.020, 0.019 against the compressible series of the
+    same c0: the SPH follows the compressible solution, so c0 may drop to ~700 m/s (half
+    the steps) while 4H/c0 < Tp/5 keeps the compressible excess below 2 %.
 
     What limits the error: (1) plain Eq. 15 reports the pressure at the mean position of
     the fluid it averages, ~1.1 dx into the water, where the impulsive pressure is lower
@@ -488,10 +498,33 @@ def sloshing_frequency(quick: bool) -> dict:
     ``w1^2 = g (pi/L) tanh(pi h/L)``: f1 = 0.8462 Hz for L = 1 m, h = 0.5 m (refdata
     sloshing_frequencies_housner.csv: T1 = 1.18182 s).
 
-    Measured: see the module's trade table (benchmarks/sloshing_trade.py)."""
+    Measured (`cosim validate sloshing-frequency`, benchmarks/sloshing_trade.py): the SPH
+    first mode is 10-12 % above linear theory and converges only slowly with dx:
+
+    ======  =========  ======  ========  ===================================
+    dx [m]  particles  steps   f1 [Hz]   f1 / linear - 1
+    ======  =========  ======  ========  ===================================
+    0.05    368        15360   0.939     +0.109  (quick: c0_factor 10, 5 free periods)
+    0.05    368        41360   0.947     +0.119  (c0_factor 20, 8 free periods)
+    0.025   1118       67320   0.931     +0.100  (full: c0_factor 20, 6 free periods)
+    ======  =========  ======  ========  ===================================
+
+    This is the fluid solver, not the excitation or the FFT: a fixed tank started with
+    the linear mode's velocity field (no motion code) oscillates at the same frequency
+    (+10.7 % at dx = 0.05 m, +9.0 % at 0.033, ~+10 % at 0.025, by zero crossings of the
+    mode's velocity projection); it is the same in deep water (L = h = 0.5 m: +11.3 %)
+    and smaller in shallow water (L = 1, h = 0.1 m, dx = 0.0125 m: +4.1 %). It does not
+    depend on the integrator (Verlet +10.7 %), c0 (20 or 40 sqrt(g h)), density diffusion
+    (none: +11.3 %), MLS re-initialisation every 30 steps (+10.8 %), XSPH 0.1 (+10.4 %),
+    laminar instead of artificial viscosity (+10.8 %) or the wave amplitude (0.5 mm ...
+    5 cm: +12.6 ... +11.3 %); it does depend on the kernel and h/dx: at dx = 0.025 m the
+    cubic spline gives +6.2 % and Wendland with h = 2 dx +5.7 % (h = 1.2 dx at 0.05 m:
+    +17.6 %). So the 2 % target is not met with the default fluid settings; the quick
+    test records it as an expected failure. Open for the fluid solver.
+    """
     if quick:
         return run_sloshing_frequency(0.05, cycles_forced=3, cycles_free=5, c0_factor=10.0)
-    return run_sloshing_frequency(0.0125)
+    return run_sloshing_frequency(0.025, cycles_free=6)
 
 
 @case("sloshing-spheric10", "SPHERIC Test 10 (rolling tank 900 x 508 mm, water 93 mm, measured roll): "
