@@ -78,7 +78,7 @@ def test_polygon_tank_removes_and_counts_overlaps():
     # of the wall, the removed particles counted, the fluid area within a spacing of exact
     dx = 0.01
     poly = np.array([[0.003, 0.002], [0.5, 0.002], [0.7, 0.3], [0.003, 0.3]])
-    b = shapes.polygon_tank(poly, dx, fill_level=0.2)
+    b = shapes.polygon_tank(poly, dx, fill_level=0.2, conform_layers=0)
     f, w = _split(b)
     assert b.removed_overlap > 0
     assert len(f) + b.removed_overlap == (shapes.polygon_fluid(poly, dx)[:, 1] < 0.2).sum()
@@ -108,6 +108,16 @@ def test_inclined_tank_2d(angle):
     assert abs(len(f) * dx**2 - exact) < (3 + 2 / math.cos(math.radians(angle))) * 0.5 * dx
     assert cKDTree(w).query(f)[0].min() >= 0.9 * dx
     assert f[:, 1].max() < 1.0 and f[:, 0].min() > 0
+    # the conforming fluid layer: next to the face (away from its ends) the fluid lies
+    # dx/2 inside it, i.e. dx from the first wall layer, where the lattice fill leaves
+    # 1.0-1.3 dx; the lattice behind it starts dx from the face
+    d_f = _dist_to_segments(f, face, closed=False)
+    mid = (f[:, 1] > 0.1) & (f[:, 1] < 0.9)
+    np.testing.assert_allclose(np.sort(d_f[mid & (d_f < 0.9 * dx)]), 0.5 * dx, atol=1e-9)
+    assert (d_f[mid & (d_f > 0.9 * dx)] >= dx - 1e-9).all()
+    # and the water area is closer to the trapezoid's than the lattice fill's
+    lat, _ = _split(shapes.inclined_tank(2, dx, angle, conform_layers=0))
+    assert abs(len(f) * dx**2 - exact) < abs(len(lat) * dx**2 - exact)
 
 
 def test_inclined_tank_3d_is_the_extruded_section():
