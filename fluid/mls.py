@@ -12,8 +12,10 @@ of the basis: with a four-component beta and the 4x4 matrix of Eq. 12 the basis 
 ``[1, r_a - r_b]`` (Dilts 1999), which is what is implemented.
 
 Since ``A`` is symmetric, ``rho_a^new = e_1 . A^-1 s`` with ``s = sum_b m_b W_ab [1, r_ab]``:
-one pass over the neighbours builds ``A`` and ``s``, and one small linear solve per
-particle gives the new density. The interpolation reproduces a density field that is
+one pass over the neighbours builds ``A`` and ``s``, and Cramer's rule on the 4 x 4 system
+gives the new density. Cost (82 658 particles, 2-D, one thread): 0.23 s per
+re-initialisation against 0.10 s for one evaluation of all rates, i.e. about 4 % more per
+symplectic step (two evaluations) at ``mls_every = 30``. The interpolation reproduces a density field that is
 linear in space exactly (first-order consistency), also where the support is truncated
 (free surface, walls) as long as ``A`` is invertible.
 
@@ -50,60 +52,21 @@ MIN_SCALED_DET = 0.01
 
 
 @njit(**_OPTS)
-def _solve_first(M, n):
-    """First component of the solution of the n x n system ``M[:, :n] x = M[:, n]``
-    (Gaussian elimination with partial pivoting, in place)."""
-    for c in range(n):
-        p = c
-        for r in range(c + 1, n):
-            if abs(M[r, c]) > abs(M[p, c]):
-                p = r
-        if p != c:
-            for k in range(n + 1):
-                t = M[c, k]
-                M[c, k] = M[p, k]
-                M[p, k] = t
-        piv = M[c, c]
-        for r in range(c + 1, n):
-            f = M[r, c] / piv
-            for k in range(c, n + 1):
-                M[r, k] -= f * M[c, k]
-    x = np.zeros(n)
-    for r in range(n - 1, -1, -1):
-        s = M[r, n]
-        for k in range(r + 1, n):
-            s -= M[r, k] * x[k]
-        x[r] = s / M[r, r]
-    return x[0]
-
-
-@njit(**_OPTS)
-def _scaled_det(M, n):
-    """Determinant of the n x n block of ``M`` scaled to unit diagonal (a copy is reduced)."""
-    A = np.empty((n, n))
-    for i in range(n):
-        for j in range(n):
-            A[i, j] = M[i, j] / math.sqrt(M[i, i] * M[j, j])
-    det = 1.0
-    for c in range(n):
-        p = c
-        for r in range(c + 1, n):
-            if abs(A[r, c]) > abs(A[p, c]):
-                p = r
-        if A[p, c] == 0.0:
-            return 0.0
-        if p != c:
-            det = -det
-            for k in range(n):
-                t = A[c, k]
-                A[c, k] = A[p, k]
-                A[p, k] = t
-        det *= A[c, c]
-        for r in range(c + 1, n):
-            f = A[r, c] / A[c, c]
-            for k in range(c, n):
-                A[r, k] -= f * A[c, k]
-    return det
+def _det4(m00, m01, m02, m03, m10, m11, m12, m13, m20, m21, m22, m23, m30, m31, m32, m33):
+    """Determinant of a 4 x 4 matrix by 2 x 2 minors (Laplace expansion on two rows)."""
+    s0 = m00 * m11 - m10 * m01
+    s1 = m00 * m12 - m10 * m02
+    s2 = m00 * m13 - m10 * m03
+    s3 = m01 * m12 - m11 * m02
+    s4 = m01 * m13 - m11 * m03
+    s5 = m02 * m13 - m12 * m03
+    c5 = m22 * m33 - m32 * m23
+    c4 = m21 * m33 - m31 * m23
+    c3 = m21 * m32 - m31 * m22
+    c2 = m20 * m33 - m30 * m23
+    c1 = m20 * m32 - m30 * m22
+    c0 = m20 * m31 - m30 * m21
+    return s0 * c5 - s1 * c4 + s2 * c3 + s3 * c2 - s4 * c1 + s5 * c0
 
 
 @njit(parallel=True, **_OPTS)
@@ -113,14 +76,17 @@ def mls_density(pos, rho, mass, kind, start, lo, inv_cell, nx, ny, nz, reach, ke
     their own density). Particles sorted by cell (``start`` from
     :func:`fluid.neighbours.sort_by_cell`, cells >= 2h / reach); ``lo`` as the grid's.
     ``used_mls[a]`` is 1 where the linear correction was applied, 0 where the Shepard filter
-    was (ill-conditioned moment matrix) or for boundary particles."""
+    was (ill-conditioned moment matrix) or for boundary particles.
+
+    The moment matrix is accumulated in scalars (coordinates in units of h) as a 4 x 4
+    system in 2-D and 3-D alike (in 2-D the y row and column are the identity and
+    decouple), and ``e_1 . A^-1 s`` is taken by Cramer's rule: no allocation per particle,
+    and the neighbour loop has no branch (the kernel is zero beyond 2h)."""
     n, dim = pos.shape
     three = dim == 3
     zc = dim - 1
     dys = 2 * reach + 1 if three else 1
-    nb = dim + 1  # basis [1, x, (y,) z]
     ih = 1.0 / h
-    R2 = 4.0 * h * h
     for a in prange(n):
         if kind[a] != 0:
             out[a] = rho[a]
@@ -130,43 +96,41 @@ def mls_density(pos, rho, mass, kind, start, lo, inv_cell, nx, ny, nz, reach, ke
         za = pos[a, zc]
         ya = pos[a, 1] if three else 0.0
         cx, cy, cz = cell_coords(xa, ya, za, lo, inv_cell, three, nx, ny, nz)
-        M = np.zeros((nb, nb + 1))  # [A | s], coordinates in units of h for conditioning
-        d = np.zeros(nb)
+        a00 = a01 = a02 = a03 = a11 = a12 = a13 = a22 = a23 = a33 = 0.0
+        s0 = s1 = s2 = s3 = 0.0
         for dz in range(-reach, reach + 1):
             for k in range(dys):
                 dy = k - reach if three else 0
                 j0, j1 = row_range(cx, cy, cz, dy, dz, nx, ny, nz, start, reach)
                 for b in range(j0, j1):
-                    rx = xa - pos[b, 0]
-                    rz = za - pos[b, zc]
-                    ry = ya - pos[b, 1] if three else 0.0
-                    r2 = rx * rx + ry * ry + rz * rz
-                    if r2 >= R2:
-                        continue
-                    w = w_value(kernel, math.sqrt(r2) * ih, ad)
-                    mw = mass[b] * w
+                    rx = (xa - pos[b, 0]) * ih
+                    rz = (za - pos[b, zc]) * ih
+                    ry = (ya - pos[b, 1]) * ih if three else 0.0
+                    q = math.sqrt(rx * rx + ry * ry + rz * rz)
+                    mw = mass[b] * w_value(kernel, q, ad)
                     vw = mw / rho[b]
-                    d[0] = 1.0
-                    d[1] = rx * ih
-                    if three:
-                        d[2] = ry * ih
-                        d[3] = rz * ih
-                    else:
-                        d[2] = rz * ih
-                    for i in range(nb):
-                        for j in range(i, nb):
-                            M[i, j] += vw * d[i] * d[j]
-                        M[i, nb] += mw * d[i]
-        for i in range(nb):
-            for j in range(i):
-                M[i, j] = M[j, i]
-        shepard = M[0, nb] / M[0, 0]
-        ok = True
-        for i in range(1, nb):
-            if not M[i, i] > 0.0:
-                ok = False
-        if ok and _scaled_det(M, nb) > min_det:
-            out[a] = _solve_first(M, nb)
+                    a00 += vw
+                    a01 += vw * rx
+                    a02 += vw * ry
+                    a03 += vw * rz
+                    a11 += vw * rx * rx
+                    a12 += vw * rx * ry
+                    a13 += vw * rx * rz
+                    a22 += vw * ry * ry
+                    a23 += vw * ry * rz
+                    a33 += vw * rz * rz
+                    s0 += mw
+                    s1 += mw * rx
+                    s2 += mw * ry
+                    s3 += mw * rz
+        if not three:  # y decouples: identity row and column
+            a22 = 1.0
+        shepard = s0 / a00
+        scale = a00 * a11 * a22 * a33
+        det = _det4(a00, a01, a02, a03, a01, a11, a12, a13, a02, a12, a22, a23, a03, a13, a23, a33)
+        if scale > 0.0 and det / scale > min_det:
+            num = _det4(s0, a01, a02, a03, s1, a11, a12, a13, s2, a12, a22, a23, s3, a13, a23, a33)
+            out[a] = num / det
             used_mls[a] = 1
         else:
             out[a] = shepard
