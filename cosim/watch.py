@@ -1,24 +1,23 @@
 """The coupler's instability watch: catches a coupled run going unstable before it
-overflows, from the bodies' accelerations and speeds.
+overflows, from the bodies' accelerations (the coupler adds a speed limit for a weakly
+compressible fluid, ``Coupler.MAX_MACH``).
 
 Two signatures of unstable staggered coupling (tuned on the series of
-``benchmarks/density_ratio_sweep.py``):
+``benchmarks/density_ratio_sweep.py``, with the body boundary of its day):
 
 1. a body's acceleration changes sign at every one of ``steps`` steps in a row and
    grows by 4 over them (the period-2 flip of the incompressible added-mass
-   instability, a_{n+1} = -(m_a / m) a_n; the predictor-corrector at ratio 0.001);
+   instability, a_{n+1} = -(m_a / m) a_n; the predictor-corrector at ratio 0.001 and
+   the stand-in fluid of ``tests/test_coupling_extremes.py``);
 2. over ``windows`` consecutive windows of ``window`` steps it changes sign in every
    window and its peak grows from each window to the next, by ``growth`` in all (the
    slower oscillation of a light body on a weakly compressible fluid's acoustic
-   stiffness: fluid-first at ratios 0.05 and 0.1). With 8 windows and a growth of 2
-   the sub-iterated fluid-first run at 0.01 was stopped as its body broke the surface;
-   10 and 3 stop none of the clean runs of the sweep.
+   stiffness: fluid-first at ratio 0.05, and at 0.1 over 0.2 s). With 8 windows and a
+   growth of 2 the sub-iterated fluid-first run at 0.01 was stopped as its body broke
+   the surface; 10 and 3 stop none of the clean runs of the sweep.
 
 Both also need the acceleration to end above g (the coupler passes 1 m/s^2 in a scene
 without gravity), so that round-off never trips them.
-And a body faster than the fluid's speed of sound [m/s] is stopped outright: a weakly
-compressible fluid cannot follow it (the lightest bodies of the sweep got there
-within 10 to 100 steps).
 """
 
 from __future__ import annotations

@@ -79,13 +79,16 @@ def test_added_mass_instability_stops_the_run_with_body_step_ratio_and_remedy():
     assert c.steps < 20 and np.isfinite(b.data.qvel).all()  # stopped early; the state stays readable
 
 
-def test_added_mass_remedy_gives_the_added_mass_acceleration():
+def test_added_mass_remedy_gives_the_added_mass_acceleration(caplog):
     """With the displaced mass moved into the body's inertia and the lagged reaction
     handed back (cosim.added_mass), the body accelerates at F / (m + m_a) exactly,
-    the incompressible answer, at a mass ratio 0.1."""
+    the incompressible answer, at a mass ratio 0.1. The choice is logged."""
     c, b = light_box(0.1, "added-mass")
-    c.initialize()
+    with caplog.at_level("INFO", logger="cosim.added_mass"):
+        c.initialize()
     assert c.remedies == {"b": "added-mass"}
+    assert "body 'b' mass / displaced fluid mass = 0.1 (explicit scheme, light_body='added-mass'): " \
+           "light-body remedy added-mass, added inertia per dof [1. " in caplog.text
     c.run(0.5)
     m, m_a = 0.1, 1.0  # kg: 0.1 m cube at 100 and 1000 kg/m^3
     v = b.kinematics().velocity[0]
