@@ -258,7 +258,12 @@ def cylinder_tank(dx: float, diameter: float = 2.0, depth: float = 0.6, height: 
     while a Cartesian lattice cut at r < R and cleared of the wall would lose a ring of
     ~0.4 dx (4 % at D = 2 m, dx = 5 cm). Side wall: ``layers`` shells at ``R + (k + 1/2) dx``
     sampled the same way; bottom: ``layers`` lattice layers of the disc that covers the
-    shells. Walls group 0, FIXED_WALL."""
+    shells. Walls group 0, FIXED_WALL.
+
+    At rest (a small tank: D = 0.2 m, water 0.1 m, dx = 0.02 m, 1752 particles, solver
+    defaults, c0 = 20 sqrt(g H)): speeds 1.5e-2 to 2.5e-2 sqrt(g H) over 1.5 s, largest
+    displacement 0.84 dx, pressure 1.7 % RMS of rho g H: the rings settle against the
+    shells; coarse (5 layers, 5 rings), not a validation."""
     if not (diameter > 0 and 0 < depth <= height):
         raise InputError(f"need diameter > 0 and 0 < depth <= height; got {diameter}, {depth}, {height} m")
     if int(layers) != layers or layers < 1:
