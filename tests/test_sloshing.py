@@ -83,8 +83,8 @@ def test_westergaard_quick():
 def test_spheric10_quick():
     r = validation.run("sloshing-spheric10", quick=True)
     m = r["metrics"]
-    assert abs(m["swing1_peak_ratio"] - 1) < 0.2
-    assert abs(m["swing1_lag_s"]) < 0.1
+    # 5 rows over the depth: the first swing's run-up (no impact yet) within 20 % and 0.1 s
+    assert r["passed"] and m["swing1_peak_err"] < 0.2 and m["swing1_lag_abs_s"] < 0.1
 
 
 @pytest.mark.xfail(strict=True, reason="the SPH first sloshing mode runs 10-12 % above linear theory at "

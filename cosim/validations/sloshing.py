@@ -271,7 +271,10 @@ def westergaard(quick: bool) -> dict:
     0.025   5538        30400  0.173       0.030       0.0135      0.718
     ======  ==========  =====  ==========  ==========  ==========  =========
 
-    (dx = 0.10 m: 1 + 2 periods, the quick run; base k_p: "face", exact 0.728.) The
+    (dx = 0.10 m: 1 + 2 periods, the quick run; base k_p: "face", exact 0.728.) 3-D
+    (``run_westergaard(0.1, dim=3, periods_skip=1, periods_fit=2)``, the tank 1.5 m wide,
+    wall rows on its mid-plane; 11358 particles, 4560 steps, 240 s on a busy machine):
+    raw 0.225, Eq. 15 0.086, face 0.047, as in 2-D (the flow is uniform across). The
     face error halves with dx (first order); the full run (dx = 0.025 m) meets 0.02.
     The paper's own numbers (dx = 0.05 m, against the 7/8 parabola): 0.0411 raw, 0.02
     with Eq. 15; ours against the parabola at dx = 0.05 m: 0.153 raw, 0.102 Eq. 15, 0.065
@@ -484,8 +487,13 @@ def run_spheric10(dx: float, t_end: float = 8.0, c0: float = 28.0, sample_dt: fl
         ew = (exp[:, 0] >= 0.5) & (exp[:, 0] <= 1.2)
         metrics["swing1_peak_ratio"] = float(p[w].max() / exp[ew, 1].max())
         metrics["swing1_lag_s"] = float(times[w][np.argmax(p[w])] - exp[ew, 0][np.argmax(exp[ew, 1])])
-    tolerances = {"peak_ratio_worst": 0.2, "lag_worst_s": 0.05}
-    passed = bool(ratios) and all(metrics[k] < v for k, v in tolerances.items())
+        metrics["swing1_peak_err"] = abs(metrics["swing1_peak_ratio"] - 1)
+        metrics["swing1_lag_abs_s"] = abs(metrics["swing1_lag_s"])
+    if ratios:  # the target: impact peaks within 20 %, in phase
+        tolerances = {"peak_ratio_worst": 0.2, "lag_worst_s": 0.05}
+    else:  # a run too short for an impact: the first swing
+        tolerances = {"swing1_peak_err": 0.2, "swing1_lag_abs_s": 0.1}
+    passed = all(k in metrics and metrics[k] < v for k, v in tolerances.items())
     return {"passed": passed, "metrics": metrics, "tolerances": tolerances,
             "particles": int(f.ps.n), "steps": int(f.counters.steps),
             "series": {"t": times, "p": p}}
@@ -504,7 +512,7 @@ def sloshing_frequency(quick: bool) -> dict:
     ======  =========  ======  ========  ===================================
     dx [m]  particles  steps   f1 [Hz]   f1 / linear - 1
     ======  =========  ======  ========  ===================================
-    0.05    368        15360   0.939     +0.109  (quick: c0_factor 10, 5 free periods)
+    0.05    368        11520   0.925     +0.094  (quick: c0_factor 10, 4 free periods)
     0.05    368        41360   0.947     +0.119  (c0_factor 20, 8 free periods)
     0.025   1118       67320   0.931     +0.100  (full: c0_factor 20, 6 free periods)
     ======  =========  ======  ========  ===================================
@@ -523,7 +531,7 @@ def sloshing_frequency(quick: bool) -> dict:
     test records it as an expected failure. Open for the fluid solver.
     """
     if quick:
-        return run_sloshing_frequency(0.05, cycles_forced=3, cycles_free=5, c0_factor=10.0)
+        return run_sloshing_frequency(0.05, cycles_forced=2, cycles_free=4, c0_factor=10.0)
     return run_sloshing_frequency(0.025, cycles_free=6)
 
 
@@ -534,10 +542,30 @@ def sloshing_spheric10(quick: bool) -> dict:
     (refdata/sloshing_spheric_test10; impact peaks 3.68, 3.89, 2.66, 7.15 kPa at 2.375,
     4.067, 5.672, 7.303 s).
 
-    Measured: see the module's trade table (benchmarks/sloshing_trade.py)."""
+    Measured (NUMBA_NUM_THREADS=1; benchmarks/sloshing_trade.py, run to 2.7 s, the first
+    impact; rows over the depth 5 and 10):
+
+    ======  =========  =====  ==============  ==============  ===========  ============
+    dx [m]  particles  steps  swing 1 peak    impact 1 peak   impact 1     impact 1 lag
+                              ratio, lag [s]  ratio           impulse      [s]
+    ======  =========  =====  ==============  ==============  ===========  ============
+    0.0186  564        16206  1.07, -0.041    0.38            1.02         -0.022
+    0.0093  1536       31066  0.87, +0.059    0.34            0.70         +0.022
+    ======  =========  =====  ==============  ==============  ===========  ============
+
+    The first swing (a nearly hydrostatic run-up) and the timing of the impact are
+    reproduced; the impact peak is not: 35-40 % of the measured 3.68 kPa. What limits it:
+    resolution (the seed's SPH used dx = 2 mm, 003 §3; DualSPHysics' example 1 mm ... 4
+    mm), the probe (Eq. 15 averages over 2h = 2.8 dx, 26 mm at dx = 9.3 mm, wider than a
+    pressure sensor, and is sampled every 1 ms while the measured spike lasts a few ms),
+    and a 2-D section of a 62 mm wide tank. The measured peaks also vary between
+    repetitions of the experiment (SOURCE.txt); the impulse over +-0.25 s is within
+    30 %. The full run (dx = 9.3 mm, 8 s) is a long run; its 20 % peak target is not met
+    at this resolution.
+    """
     if quick:  # the first swing only (no impact): 5 particle rows over the depth
-        out = run_spheric10(0.0186, t_end=1.3)
+        out = run_spheric10(0.0186, t_end=1.3, sample_dt=0.005)
     else:
-        out = run_spheric10(0.00465, t_end=8.0)
+        out = run_spheric10(0.0093, t_end=8.0)
     out.pop("series")
     return out
