@@ -2,7 +2,8 @@
 
 A 2-D box (0.10 x 0.06 m) is released at rest fully submerged (centre 0.1 m deep
 in 0.2 m of water, tank 0.4 x 0.3 m, dx = 2 cm, c0 = 20 sqrt(g D) = 28 m/s) at
-body/fluid density ratios from 0.001 to 1, and rises for 0.2 s. Fully submerged is
+body/fluid density ratios from 0.001 to 1, and rises for 0.12 s (it stays under
+water: at 0.2 s the lightest ones break the surface). Fully submerged is
 the hard case: the added mass (about the displaced mass, or more) is largest
 relative to the body's. Each run either ends ("ok") or is stopped by the coupler
 (its instability watch or a solver) with its message. Also printed: the body's
@@ -10,45 +11,48 @@ largest speed, its largest acceleration in the last fifth of the run, and the
 rms of the acceleration's step-to-step wiggle (a - mean of its neighbours) in the
 first and last fifths: a run whose wiggle grows is going unstable.
 
-    python benchmarks/density_ratio_sweep.py [--t-end 0.2] [--dx 0.02]
+    python benchmarks/density_ratio_sweep.py [--t-end 0.12] [--dx 0.02]
         [--ratios 0.001,0.003,0.01,0.05,0.1,0.2,1] [--cases explicit,fluid-first,fluid-first+subiterate]
 
-Measured (NUMBA_NUM_THREADS=1, defaults: t_end 0.2 s, dx 0.02 m; "stopped N" = the
-coupler stopped the run at step N, and why; otherwise "ok" and the wiggle rms, first ->
-last fifth [m/s^2]; in brackets the mean fluid advances per step of the sub-iterations):
+Measured (NUMBA_NUM_THREADS=1, defaults, main at a946a8e with the body boundary of
+that day; "stopped N" = the coupler stopped the run at step N, and why; otherwise "ok"
+and the wiggle rms, first -> last fifth [m/s^2]; in brackets the mean fluid advances per
+step of the sub-iterations):
 
     ratio  explicit            predictor-corrector  fluid-first               fluid-first + subiterate
-    0.001  stopped 47:         stopped 18:          stopped 9: speed > c0     ok 537 -> 28 (3.4)
-           speed > c0          period-2 growth
-    0.003  ok 268 -> 12.5      ok 247 -> 12         stopped 27: speed > c0    ok 147 -> 9.6 (2.9)
-    0.01   ok 29 -> 2.8        ok 28 -> 2.8         stopped 107: speed > c0   ok 25 -> 2.9 (2.7)
-    0.05   ok 1.3 -> 0.41      ok 1.3 -> 0.40       stopped 220: growing      ok 1.25 -> 0.41 (2.0)
+    0.001  stopped 12: Mach    stopped 25: Mach     stopped 7: Mach > 0.5     ok 691 -> 11 (3.8)
+           > 0.5               > 0.5
+    0.003  ok 508 -> 4.5       ok 458 -> 4.3        stopped 19: Mach > 0.5    ok 188 -> 2.7 (3.3)
+    0.01   ok 40 -> 0.71       ok 39 -> 0.71        stopped 73: Mach > 0.5    ok 30 -> 0.71 (3.1)
+    0.05   ok 1.6 -> 0.084     ok 1.6 -> 0.088      stopped 220: growing      ok 1.5 -> 0.083 (2.6)
                                                     oscillation
-    0.1    ok 0.26 -> 0.13     ok 0.26 -> 0.13      stopped 985: growing      ok 0.25 -> 0.14 (1.8)
-                                                    oscillation (slow)
-    0.2    ok 0.043 -> 0.0024  ok 0.042 -> 0.011    ok 0.048 -> 0.0035        ok 0.042 -> 0.0035 (1.7)
-    1      ok 0.0070 -> 0.0013 ok 0.0070 -> 0.0014  ok 0.0070 -> 0.0015       ok 0.0069 -> 0.0014 (1.9)
+    0.1    ok 0.35 -> 0.029    ok 0.35 -> 0.029     ok 0.62 -> 0.095          ok 0.35 -> 0.030 (2.5)
+    0.2    ok 0.070 -> 0.0017  ok 0.070 -> 0.0059   ok 0.087 -> 0.0019        ok 0.069 -> 0.0055 (2.3)
+    1      ok 0.016 -> 0.0014  ok 0.016 -> 0.0014   ok 0.017 -> 0.0015        ok 0.016 -> 0.0014 (2.2)
 
-Where they all ran, they agree: largest rise speed at 0.05 is 0.596 m/s explicit and
-0.597 m/s sub-iterated, at 0.1 0.499 m/s for both.
+Where they all ran, they agree on the rise: the largest speed is 0.458 / 0.458 / 0.459
+m/s (explicit / predictor-corrector / sub-iterated) at 0.05, 0.480 / 0.480 / 0.482 at
+0.01, 0.432 at 0.1 (fluid-first alone 0.435, with 3 times the wiggle). With the body
+boundary before (main at 8f949c8, 0.2 s runs) fluid-first also grew at 0.1 and was
+stopped at step 945, and the predictor-corrector flipped sign every step at 0.001.
 
 So with the weakly compressible fluid, explicit and predictor-corrector coupling
-hold down to a ratio of about 0.003 and fluid-first only to about 0.2; the
+hold down to a ratio of about 0.003 and fluid-first only to about 0.1; the
 fluid-first instability is an oscillation of about 20 steps' period growing a few
-per cent per period near the limit (the body on the fluid's acoustic stiffness),
-not the period-2 flip of the incompressible added-mass instability (which the
-predictor-corrector shows at 0.001). Sub-iterating fluid-first (Aitken-relaxed,
+per cent per period near the limit (the body on the fluid's acoustic stiffness) or,
+lighter, a runaway within tens of steps, rather than the period-2 flip of the
+incompressible added-mass instability. Sub-iterating fluid-first (Aitken-relaxed,
 ``Coupler(light_body="subiterate")``, which ``"auto"`` picks below a ratio of 0.3)
-holds it down to 0.001 at 2 to 3.4 fluid advances per step. Moving an added-mass
+holds it down to 0.001 at 2.2 to 3.8 fluid advances per step. Moving an added-mass
 estimate into the body's inertia (``light_body="added-mass"``) made every scheme
-*worse* here (``--ratios 0.05,0.1,0.2 --t-end 0.12 --cases explicit+added-mass,
-predictor-corrector+added-mass,fluid-first+added-mass``: all three were stopped at 0.05,
-the body outrunning the speed of sound, fluid-first at 0.1 too; explicit and
-predictor-corrector ran at 0.1 but the box reached 2.65 m/s instead of 0.50, and at 0.2
-the wiggle of all three grew, 0.14 -> 0.34): the SPH fluid's reaction to the
-body's acceleration comes acoustically later, not within the step that remedy
-assumes, so ``"auto"`` never picks it for the SPH fluid (it suits fluids whose loads
-react at once; tests/test_coupling_extremes.py).
+*worse* here (``--ratios 0.05,0.1,0.2 --cases explicit+added-mass,
+predictor-corrector+added-mass,fluid-first+added-mass``: all three were stopped at
+0.05, the body above Mach 0.5 by step 196, and at 0.1 by step 220, oscillating; at
+0.2 they ran but the box reached 0.79 to 0.99 m/s instead of 0.38 and the wiggle
+grew, 0.07 -> 0.76): the SPH fluid's reaction to the body's acceleration comes
+acoustically later, not within the step that remedy assumes, so ``"auto"`` never picks
+it for the SPH fluid (it suits fluids whose loads react at once;
+tests/test_coupling_extremes.py).
 """
 
 import argparse
@@ -110,7 +114,7 @@ def run(ratio: float, case: str, dx: float, t_end: float):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--t-end", type=float, default=0.2, help="simulated time [s]")
+    parser.add_argument("--t-end", type=float, default=0.12, help="simulated time [s]")
     parser.add_argument("--dx", type=float, default=0.02, help="particle spacing [m]")
     parser.add_argument("--ratios", default="0.001,0.003,0.01,0.05,0.1,0.2,1", help="body/fluid density ratios")
     parser.add_argument("--cases", default="explicit,predictor-corrector,fluid-first,fluid-first+subiterate",
