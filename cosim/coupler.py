@@ -103,13 +103,21 @@ class Coupler:
         round-off. For the SPH fluid, whose own step is what limits dt.
     light_body:
         What to do for bodies much lighter than the fluid they displace, whose
-        staggered coupling is unstable (added mass; see :mod:`cosim.added_mass`).
-        ``"auto"`` (default): if the fluid's loads carry added mass (the SPH fluid;
-        not the analytic fluid) and a body's mass / displaced fluid mass is below the
-        threshold measured for the scheme (``cosim.added_mass.AUTO_THRESHOLD``), its
-        added mass is moved into its inertia (``"added-mass"``); ``"none"``: never;
-        ``"added-mass"``: for every coupled body. The choice per body is logged and
-        kept in :attr:`remedies`.
+        staggered coupling is unstable (added mass; see :mod:`cosim.added_mass` and the
+        table in ``benchmarks/density_ratio_sweep.py``). ``"auto"`` (default): with the
+        fluid-first scheme, a fluid whose loads carry added mass (the SPH fluid, not
+        the analytic one) and a body whose mass / displaced fluid mass is below
+        ``cosim.added_mass.AUTO_THRESHOLD`` (0.3), ``"subiterate"``; else ``"none"``.
+        ``"subiterate"`` (fluid-first only): each step is repeated from saved states,
+        Aitken-relaxed, until the bodies' motion and the fluid's agree (2 to 4 fluid
+        advances per step in the sweep, stable down to a ratio of 0.001);
+        ``"added-mass"``: an estimate of the added mass goes into each body's inertia
+        and its lagged reaction back into the load (right for fluids that react within
+        the step, harmful for the weakly compressible SPH fluid); ``"none"``. The choice
+        per body is logged and kept in :attr:`remedies`. Whatever the choice, a body
+        whose acceleration oscillates with growing amplitude, or that outruns the
+        fluid (``MAX_MACH``), stops the run with an :class:`InstabilityError` naming the
+        step, the body, its mass ratio and remedy (:mod:`cosim.watch`).
     """
 
     def __init__(self, participants: Sequence[Participant] = (), *, bodies=None, fluid=None,
