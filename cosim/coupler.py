@@ -375,8 +375,8 @@ class Coupler:
             tol = self.SUBITER_TOL * (np.abs(guess).max() + g * dt)
             if np.abs(r).max() <= tol:
                 break
-            if r_prev is not None:
-                dr = (r - r_prev).ravel()
+            dr = None if r_prev is None else (r - r_prev).ravel()
+            if dr is not None and np.dot(dr, dr) > 0:
                 w = float(np.clip(-w * np.dot(r_prev.ravel(), dr) / np.dot(dr, dr), 1e-3, 1.0))
             guess, r_prev = guess + w * r, r
         else:

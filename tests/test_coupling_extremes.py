@@ -163,6 +163,16 @@ def test_auto_sub_iterates_a_light_body_and_matches_the_explicit_scheme(ratio):
     assert 2 < np.mean(iters) < 8  # fluid advances per step: the price of the remedy
 
 
+def test_sub_iterations_that_do_not_converge_stop_the_run():
+    from cosim.errors import ConvergenceError
+
+    c, b = submerged(0.05)
+    c.SUBITER_MAX = 1
+    with pytest.raises(ConvergenceError, match=r"step 1, t = 0 s: body 'box': the sub-iterations did not converge "
+                                               r"in 1 tries .* weighs 0.05 x the fluid it displaces"):
+        c.run(0.01)
+
+
 def test_heavy_body_rests_on_the_tank_floor():
     """Ratio 10, a MuJoCo floor at the tank bottom: the box sinks 2 mm onto it and
     comes to rest; MuJoCo's contact force plus the fluid's load then balance its
