@@ -367,7 +367,9 @@ class Coupler:
                 b.load_state(bs)
             f.set_body_kinematics(kin0._replace(velocity=guess[:, :3], omega=guess[:, 3:]))
             f.advance(t, dt)
-            F_fluid, T_fluid = self._fluid_first_loads(dt, guess[:, :3])
+            # the moment about the moving centre, as in _fluid_first_loads: the bodies start a
+            # step with their start velocity whatever the fluid was given (angular momentum)
+            F_fluid, T_fluid = self._fluid_first_loads(dt, kin0.velocity)
             b.set_wrenches(F_fluid + F_moor, T_fluid + T_moor)
             b.advance(t, dt)
             k1 = b.kinematics()
