@@ -236,8 +236,10 @@ def hadzic_compare(rec, probes):
     for j, name in enumerate(("WaveProbe_N1", "WaveProbe_N2")):
         tm, vm = meas[name]
         probes = np.asarray(probes)
-        if probes[-1, 0] < tm.max():
+        inside = (tm >= probes[0, 0]) & (tm <= probes[-1, 0])  # the run's part of the record
+        if inside.sum() < 10:
             continue
+        tm, vm = tm[inside], vm[inside]
         sim = np.interp(tm, probes[:, 0], probes[:, 1 + j])
         metrics[name] = {"measured_max_m": float(vm.max()), "sph_max_m": float(sim.max()),
                          "measured_min_m": float(vm.min()), "sph_min_m": float(sim.min()),
@@ -277,6 +279,17 @@ def floating_box_waves(quick: bool) -> dict:
     breaks partly; the box is 5 x 2.5 particles at dx = 2 cm), the artificial
     viscosity's damping of the waves over the 2 m to the box, the box's draft
     error (dynamic boundaries), and the digitisation of the published curves.
+
+    Measured at dx = 2 cm, 1 → 8.2 s (8453 particles, 28 999 steps, 207 s of one
+    core; ``floating_box_waves_run(0.02, 1.0, 8.2)`` then :func:`hadzic_compare`):
+    heave crest 32.9 vs 38.4 mm (−14 %) at 7.26 vs 7.27 s, trough −27.2 vs −35.0
+    mm (−22 %) at 6.82 vs 6.95 s; sway at the end of the record 72 vs 116 mm
+    (−38 %: the drift under the breaking crest is underestimated), trough −6.6 vs
+    −22 mm; roll −13.3/+8.0 vs −23.6/+19.4 deg. Probes: N1 correlation 0.88,
+    crest 29 vs 38 mm; N2 correlation 0.95, crest 25 vs 45 mm: the phase of the
+    packet is right, its steep focused crest is cut at this resolution, which is
+    what the box's motion lacks. Fails the 15 % target at dx = 2 cm; the full
+    variant (dx = 1 cm, ~8 times the work) was not run for lack of CPU time.
     """
     dx = 0.02 if quick else 0.01
     t0, t_end = 1.0, (1.3 if quick else 8.2)
