@@ -87,7 +87,7 @@ def test_spheric10_quick():
     assert r["passed"] and m["swing1_peak_err"] < 0.2 and m["swing1_lag_abs_s"] < 0.1
 
 
-@pytest.mark.xfail(strict=True, reason="the SPH first sloshing mode runs 10-12 % above linear theory at "
+@pytest.mark.xfail(strict=True, reason="the SPH first sloshing mode runs 9-12 % above linear theory at "
                    "dx = h/10 and h/20 alike (also in deep water, L = h = 0.5 m); see the case's docstring")
 def test_sloshing_frequency_quick():
     r = validation.run("sloshing-frequency", quick=True)
