@@ -14,10 +14,10 @@ By default the bodies' particles take modified dynamic boundary densities (mDBC,
 ``fluid.boundary_correction``): each has a ghost node mirrored across its geom's
 surface (``bodies.sampling.ghost_offsets``, rotated with the body), and its density
 is the fluid's there, extrapolated back. Measured on a 2-D box of 500 kg/m^3
-released one spacing above its Archimedes position (dx = 12.5 mm,
-``benchmarks/floating_box_sph.py``): draft error -3.3 % of the height with mDBC,
--6.6 % with plain dynamic boundaries, whose density keeps what the body's motion
-into the fluid gave it.
+released one spacing above its Archimedes position (``benchmarks/floating_box_sph.py``,
+1.5 s): draft error -3.1 % of the height with mDBC and -6.5 % with plain dynamic
+boundaries at dx = 12.5 mm, -1.6 % and -2.2 % at 6.25 mm (plain dynamic boundary
+particles keep the density the body's motion into the fluid gave them).
 """
 
 from __future__ import annotations

@@ -135,10 +135,10 @@ def floating_box_draft(quick: bool) -> dict:
 
     Measured (``cosim validate floating-box-draft [--quick]``, see the record):
     quick 2-D 500 at 12.5 mm: -1.3 % of the height (plain DBC: -0.4 %). Released
-    one spacing above the equilibrium instead (2.5 s), the error is -3.3 % with mDBC
-    and -6.6 % with plain DBC at 12.5 mm: plain DBC keeps the density the fluid
-    gave its boundary particles when the body moved into it, so a moving body
-    rides high; that release is the heave case's.
+    one spacing above the equilibrium instead (``benchmarks/floating_box_sph.py``,
+    1.5 s), the error is -3.1 % with mDBC and -6.5 % with plain DBC at 12.5 mm,
+    -1.6 % and -2.2 % at 6.25 mm: plain DBC keeps the density the fluid gave its
+    boundary particles when the body moved into it, so a moving body rides high.
     """
     runs = _DRAFT_RUNS_QUICK if quick else _DRAFT_RUNS_FULL
     tol = 0.02
