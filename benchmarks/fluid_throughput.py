@@ -19,6 +19,7 @@ figure to compare between runs with ``--threads 1`` (alternate the runs being co
     .venv/bin/python benchmarks/fluid_throughput.py --cold          # compile from scratch (empty cache)
     .venv/bin/python benchmarks/fluid_throughput.py --case 2d --dp 0.01 --steps 200 --threads 2
     .venv/bin/python benchmarks/fluid_throughput.py --case 2d --dp 0.01 --dp 0.005 --dp 0.0025 --steps 20  # scaling
+    .venv/bin/python benchmarks/fluid_throughput.py --case 2d --dp 0.01 --threads 1 --nu 1e-6 --xsph 0.1  # optional terms
 """
 
 from __future__ import annotations
@@ -36,7 +37,7 @@ _here = os.path.dirname(os.path.abspath(__file__))
 sys.path[:] = [p for p in sys.path if os.path.abspath(p or os.curdir) != _here]
 
 
-def build(case: str, dp: float, integrator: str = "verlet"):
+def build(case: str, dp: float, integrator: str = "verlet", nu: float = 0.0, xsph_eps: float = 0.0):
     import numpy as np
 
     from fluid.geometry import assemble, block, set_hydrostatic, tank_walls
@@ -55,17 +56,17 @@ def build(case: str, dp: float, integrator: str = "verlet"):
     walls = tank_walls(inner_lo, inner_hi, dp, layers=2)
     b = assemble(len(inner_lo), dp, 1000.0, col, [(walls, Kind.FIXED_WALL, 0)])
     cfg = FluidConfig(dim=len(inner_lo), dx=dp, c0=20 * math.sqrt(g * H), alpha=0.02, delta=0.1,
-                      diffusion="fourtakas", cfl=0.2, integrator=integrator,
+                      diffusion="fourtakas", cfl=0.2, integrator=integrator, nu=nu, xsph_eps=xsph_eps,
                       domain_lo=tuple(inner_lo - 0.1), domain_hi=tuple(inner_hi + 0.5))
     set_hydrostatic(b.particles, H, 1000.0, cfg.speed_of_sound, cfg.gamma, g)
     return cfg, b.particles
 
 
-def run(case: str, dp: float, steps: int, integrator: str = "verlet") -> dict:
+def run(case: str, dp: float, steps: int, integrator: str = "verlet", nu: float = 0.0, xsph_eps: float = 0.0) -> dict:
     from fluid.particles import Kind
     from fluid.solver import Fluid
 
-    cfg, ps = build(case, dp, integrator)
+    cfg, ps = build(case, dp, integrator, nu, xsph_eps)
     t0 = time.perf_counter()
     f = Fluid(cfg, ps)
     f.initialize(0.0)
@@ -91,7 +92,7 @@ def run(case: str, dp: float, steps: int, integrator: str = "verlet") -> dict:
         "ms_per_step": round(per_step * 1e3, 3),
         "particle_steps_per_s": round(n * steps / wall),
         "pair_loops_per_s": round((2 if integrator == "symplectic" else 1) * n * steps / wall),
-        "integrator": integrator,
+        "integrator": integrator, "nu": nu, "xsph_eps": xsph_eps,
         "particle_steps_per_cpu_s": round(n * steps / cpu),
         "cpu_s_per_wall_s": round(cpu / wall, 2),  # < threads: the machine is shared
         "bytes_per_particle": round(mem / n),
@@ -107,6 +108,8 @@ def main(argv=None):
     ap.add_argument("--threads", type=int, default=None, help="numba threads (default: all)")
     ap.add_argument("--cold", action="store_true", help="compile from scratch in an empty numba cache")
     ap.add_argument("--integrator", choices=["verlet", "symplectic"], default="verlet")
+    ap.add_argument("--nu", type=float, default=0.0, help="laminar viscosity [m^2/s] (0: off, as the reference case)")
+    ap.add_argument("--xsph", type=float, default=0.0, help="XSPH epsilon [-] (0: off, as the reference case)")
     a = ap.parse_args(argv)
     if a.cold:
         os.environ["NUMBA_CACHE_DIR"] = tempfile.mkdtemp(prefix="numba_cold_")
@@ -120,7 +123,7 @@ def main(argv=None):
     cases = ["2d", "3d"] if a.case == "all" else [a.case]
     for c in cases:
         for dp in sizes[c]:
-            r = run(c, dp, a.steps, a.integrator)
+            r = run(c, dp, a.steps, a.integrator, a.nu, a.xsph)
             r["load_avg_1min"] = round(os.getloadavg()[0], 2)  # other work on the machine
             print(" ".join(f"{k}={v}" for k, v in r.items()))
             sys.stdout.flush()
