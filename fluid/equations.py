@@ -197,7 +197,7 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool):
         ad = prm[P_AD]
         ddt = prm[P_DDT]
         nu4 = prm[P_NU4]
-        eps2 = 2.0 * prm[P_XSPH]  # m_b / rhobar_ab = 2 m_b / (rho_a + rho_b)
+        eps2 = 2.0 * prm[P_XSPH] * ad  # m_b / rhobar_ab = 2 m_b / (rho_a + rho_b); W = alpha_d w(q)
         gx = prm[P_G]
         gy = prm[P_G + 1] if three else 0.0
         gz = prm[P_G + 2] if three else prm[P_G + 1]
@@ -262,7 +262,8 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool):
                         Fs = grad_shape(kernel, q)
                         fb = S[ISF, b]
                         mask = max(fa, fb)  # boundary-boundary pairs do not interact
-                        mbF = S[MASS, b] * mask * Fs
+                        mbm = S[MASS, b] * mask
+                        mbF = mbm * Fs
                         rhob = S[RHO, b]
                         # one division for 1/(r^2+eta^2) and 1/(rho_a+rho_b)
                         e2 = r2 + eta2
@@ -294,7 +295,7 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool):
                         m4 = m2 * m2
                         vmax += m4 * m4
                         if xsph:
-                            wgt = S[MASS, b] * mask * (d * e2) * w_value(kernel, q, ad)
+                            wgt = mbm * (d * e2) * w_value(kernel, q, 1.0)  # alpha_d after the loop
                             wx -= wgt * vx
                             wy -= wgt * vy
                             wz -= wgt * vz
