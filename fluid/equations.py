@@ -92,7 +92,8 @@ def params(h, ad, alpha, delta, diffusion, rho0, c0, g, nu=0.0, xsph=0.0) -> np.
 
     h [m] smoothing length, ad [1/m^dim] kernel normalisation, alpha [-] artificial
     viscosity, delta [-] density-diffusion coefficient, diffusion one of
-    :data:`DIFFUSION`, rho0 [kg/m^3], c0 [m/s], g [m/s^2] gravity vector (dim,),
+    :data:`DIFFUSION`, rho0 [kg/m^3], c0 [m/s], g [m/s^2] gravity vector (dim,) (the
+    Fourtakas term takes its last component: gravity acts along -z, as in FluidConfig),
     nu [m^2/s] kinematic viscosity of the laminar term (0: off), xsph [-] the XSPH
     coefficient epsilon (0: off).
     """
