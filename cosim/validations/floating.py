@@ -134,7 +134,9 @@ def floating_box_draft(quick: bool) -> dict:
     spacing uncertain at a wave crest, averaged over columns and time).
 
     Measured (``cosim validate floating-box-draft [--quick]``, see the record):
-    quick 2-D 500 at 12.5 mm: -1.3 % of the height (plain DBC: -0.4 %). Released
+    quick 2-D 500 at 12.5 mm: -1.3 % of the height (plain DBC: -0.4 %); full: 2-D
+    500 and 800 at 5 mm -0.20 % and -0.19 %, 3-D 500 at 12.5 mm -1.86 % (two rows
+    in the draft) and 3-D 800 at 10 mm -0.90 % (13 min of CPU in all). Released
     one spacing above the equilibrium instead (``benchmarks/floating_box_sph.py``,
     1.5 s), the error is -3.1 % with mDBC and -6.5 % with plain DBC at 12.5 mm,
     -1.6 % and -2.2 % at 6.25 mm: plain DBC keeps the density the fluid gave its
