@@ -13,6 +13,7 @@ from bodies import builders
 from bodies.mujoco_bodies import MujocoBodies
 from cosim.coupler import Coupler
 from cosim.errors import ConfigurationError, InputError, InstabilityError
+from cosim.validations.coupling import momentum_exchange_run
 from fluid.analytic import AnalyticFluid
 from moorings import CatenaryMooring, MooringLine
 
@@ -303,38 +304,10 @@ def test_sub_iterated_fluid_first_keeps_momentum_to_round_off():
     gravity and no walls, sub-iterated: the bodies still receive exactly the impulse
     the fluid exchanged, so the linear and angular momentum of fluid + box (about the
     origin, per metre) stay constant to round-off while the water slows and spins it."""
-    from cosim.sph_fluid import SPHFluid
-    from fluid.geometry import block
-    from fluid.particles import Kind
-    from fluid.solver import FluidConfig
-
-    cfg = FluidConfig(dim=2, dx=DX, g=0.0, c0=20.0, domain_lo=(-1.0, -1.0), domain_hi=(2.0, 2.0))
-    fluid = SPHFluid(cfg, block(np.array([0.1, 0.0]), np.array([0.3, 0.2]), DX))
-    box = builders.box("b", (0.06, 0.06), (0.06, 0.0, 0.17), density=100.0, planar=True)
-    bodies = MujocoBodies(builders.scene(box, gravity=0.0))
-    bodies.data.qvel[:2] = [0.5, -0.2]  # m/s, towards the blob's upper corner
-    c = Coupler(bodies=bodies, fluid=fluid, scheme="fluid-first", light_body="subiterate")
-    M, Iyy = bodies.masses()[0], bodies.model.body_inertia[bodies.body_ids[0]][1]
-
-    def totals():
-        ps = fluid.fluid.ps
-        fl = ps.kind == Kind.FLUID
-        m, x, v = ps.mass[fl], ps.pos[fl], ps.vel[fl]
-        k = bodies.kinematics()
-        com, V, w = k.com[0], k.velocity[0], k.omega[0]
-        P = (m[:, None] * v).sum(axis=0) + M * V[[0, 2]]
-        Lz = (m * (x[:, 1] * v[:, 0] - x[:, 0] * v[:, 1])).sum() + Iyy * w[1] + M * (com[2] * V[0] - com[0] * V[2])
-        return P, Lz
-
-    c.initialize()
-    P0, L0 = totals()
-    iters = []
-    for _ in range(150):
-        c.step(10.0)
-        iters.append(c.subiterations)
-    P, L1 = totals()
-    k = bodies.kinematics()
-    assert k.velocity[0, 0] < 0.4 and abs(k.omega[0, 1]) > 0.1  # the water slowed and spun the box
-    assert max(iters) > 1
-    assert np.abs(P - P0).max() < 1e-12 * np.abs(P0).max()
-    assert abs(L1 - L0) < 1e-12 * abs(L0)
+    r = momentum_exchange_run("fluid-first", 150, dx=DX, density=100.0, side=0.06, x0=0.06,
+                              light_body="subiterate")
+    vx, omega = r["body_vx_m_s"][1], r["body_omega_rad_s"][1]
+    assert vx < 0.4 and abs(omega) > 0.1  # the water slowed and spun the box
+    assert r["max_subiterations"] > 1
+    assert r["linear_drift"] < 1e-12
+    assert r["angular_drift"] < 1e-12

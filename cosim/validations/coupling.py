@@ -92,11 +92,13 @@ def moored_body(quick: bool) -> dict:
     }
 
 
-def momentum_exchange_run(scheme: str, steps: int, dx: float = 0.01) -> dict:
-    """A free 2-D box (800 kg/m^3, no gravity, no walls) hits a resting blob of SPH
-    water off-centre, so that it slows and spins. Returns the relative drift of
-    the total linear and angular momentum (about the origin, per metre of depth)
-    of fluid plus body after ``steps`` coupling steps."""
+def momentum_exchange_run(scheme: str, steps: int, dx: float = 0.01, *, density: float = 800.0,
+                          side: float = 0.05, x0: float = 0.07, light_body: str = "auto") -> dict:
+    """A free 2-D square box (``density`` [kg/m^3], ``side`` [m], centre at x = ``x0``
+    [m], z = 0.17 m; no gravity, no walls) hits a resting blob of SPH water
+    off-centre, so that it slows and spins. Returns the relative drift of the total
+    linear and angular momentum (about the origin, per metre of depth) of fluid plus
+    body after ``steps`` coupling steps, and the most sub-iterations a step took."""
     from bodies import builders
     from bodies.mujoco_bodies import MujocoBodies
     from cosim.coupler import Coupler
@@ -107,10 +109,10 @@ def momentum_exchange_run(scheme: str, steps: int, dx: float = 0.01) -> dict:
 
     cfg = FluidConfig(dim=2, dx=dx, g=0.0, c0=20.0, domain_lo=(-1.0, -1.0), domain_hi=(2.0, 2.0))
     fluid = SPHFluid(cfg, block(np.array([0.1, 0.0]), np.array([0.3, 0.2]), dx))
-    box = builders.box("b", (0.05, 0.05), (0.07, 0.0, 0.17), density=800.0, planar=True)
+    box = builders.box("b", (side, side), (x0, 0.0, 0.17), density=density, planar=True)
     bodies = MujocoBodies(builders.scene(box, gravity=0.0))
     bodies.data.qvel[:2] = [0.5, -0.2]  # m/s, towards the blob's upper corner
-    coupler = Coupler(bodies=bodies, fluid=fluid, scheme=scheme)
+    coupler = Coupler(bodies=bodies, fluid=fluid, scheme=scheme, light_body=light_body)
     M, Iyy = bodies.masses()[0], bodies.model.body_inertia[bodies.body_ids[0]][1]
 
     def totals():
@@ -126,8 +128,10 @@ def momentum_exchange_run(scheme: str, steps: int, dx: float = 0.01) -> dict:
     coupler.initialize()
     P0, L0 = totals()
     v0, w0 = bodies.kinematics().velocity[0, 0], bodies.kinematics().omega[0, 1]
+    iterations = 0
     for _ in range(steps):
         coupler.step(10.0)
+        iterations = max(iterations, coupler.subiterations)
     P, L = totals()
     k = bodies.kinematics()
     return {
@@ -137,6 +141,7 @@ def momentum_exchange_run(scheme: str, steps: int, dx: float = 0.01) -> dict:
         "body_omega_rad_s": [float(w0), float(k.omega[0, 1])],
         "particles": int(fluid.fluid.ps.n),
         "t_s": coupler.t,
+        "max_subiterations": iterations,
     }
 
 
