@@ -33,6 +33,7 @@ def _cells(fluid):
     """The fluid's cell list: (grid, start). Probes read the fluid's sorted particles."""
     if fluid.limit is None:
         raise InputError("probe: the fluid is not initialised; call fluid.initialize(t0) first")
+    fluid.refresh_rates()  # pressures and cells of the current placement
     return fluid._grid, fluid._start  # same package: the cell list the solver keeps sorted
 
 
