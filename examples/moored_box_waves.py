@@ -14,10 +14,9 @@ receives exactly the impulse the water exchanged with it).
     python examples/moored_box_waves.py --fine           # dx = 1 cm (8 times the work)
     python examples/moored_box_waves.py --mooring sph-cable --duration 3
 
-Cost (measured): the default run takes 62 s of one CPU core (63 s user + sys;
-the fluid runs on one thread below 20 000 particles); on the shared 2-core
-development machine, loaded 6-fold by other jobs, that was 11 min of wall time.
-In the last two periods the box heaves 36 mm and surges 49 mm peak to peak (the
+Cost (measured on the 2-core machine, otherwise nearly idle): the default run takes
+43 s of wall time and 44 s of CPU (the fluid runs on one thread below 20 000
+particles). In the last two periods the box heaves 36 mm and surges 50 mm peak to peak (the
 waves' orbital motion: H / tanh kd = 45 mm), rolls up to 7 deg, and the fairlead
 tensions swing between 1.13 and 1.38 N. The dynamic SPH cable (``--mooring sph-cable``) starts
 with a tension spike of ~3.8 kN at this scale (dx = 3 cm, 0.2 s); MoorDyn
