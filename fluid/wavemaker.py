@@ -34,6 +34,7 @@ import numpy as np
 from scipy.interpolate import CubicSpline
 
 from cosim.errors import InputError
+from fluid.motion import Rotation, Signal, Translation
 
 
 def wavenumber(T: float, depth: float, g: float = 9.81) -> float:
@@ -136,19 +137,29 @@ def _check_history(history, what: str):
         raise InputError(f"{what}: the history is a callable s(t) -> (value, rate), got {history!r}")
 
 
+@dataclass(frozen=True)
+class _History(Signal):
+    """A paddle history ``history(t) -> (value, rate)`` as the signal of a rigid wall
+    motion (placing a wall needs no second derivative)."""
+
+    history: object
+
+    def state(self, t: float):
+        value, rate = self.history(t)
+        return float(value), float(rate), math.nan
+
+
 def piston(displacement):
     """Wall motion of a piston paddle: every particle moves along +x by
     ``displacement(t) -> (x [m], u [m/s])`` from its reference position (2-D or
-    3-D). Returns ``motion(t, ref) -> (pos, vel)`` for ``Fluid.prescribe_motion``."""
+    3-D): a :class:`fluid.motion.Translation`. Returns ``motion(t, ref) -> (pos, vel)``
+    for ``Fluid.prescribe_motion``."""
     _check_history(displacement, "piston")
+    signal = _History(displacement)
+    by_dim = {2: Translation((1.0, 0.0), signal), 3: Translation((1.0, 0.0, 0.0), signal)}
 
     def motion(t, ref):
-        x, u = displacement(t)
-        pos = ref.copy()
-        pos[:, 0] += float(x)
-        vel = np.zeros_like(ref)
-        vel[:, 0] = float(u)
-        return pos, vel
+        return by_dim[np.shape(ref)[-1]](t, ref)
 
     return motion
 
@@ -159,23 +170,19 @@ def flap(angle, hinge=(0.0, 0.0)):
     θ' [rad/s])``, θ > 0 turning the top of the flap towards +x (into the water
     of a flume that lies at x > hinge): a point at r = (x, z) from the hinge goes
     to (x cos θ + z sin θ, −x sin θ + z cos θ), velocity θ' (z', −x') (a
-    right-handed rotation about +y). 2-D (x, z) or 3-D (x, y, z) reference
-    positions. (The flap record of Hadzic et al. 2005 as DualSPHysics ships it is
-    positive the other way: see ``cosim.validations.waves``.)"""
+    right-handed rotation about +y, :class:`fluid.motion.Rotation`). 2-D (x, z) or
+    3-D (x, y, z) reference positions. (The flap record of Hadzic et al. 2005 as
+    DualSPHysics ships it is positive the other way: see ``cosim.validations.waves``.)"""
     _check_history(angle, "flap")
     hinge = np.asarray(hinge, float)
     if hinge.shape != (2,) or not np.isfinite(hinge).all():
         raise InputError(f"flap: hinge is the (x, z) point [m] of the hinge line, got {hinge!r}")
+    signal = _History(angle)
+    x, z = hinge.tolist()
+    by_dim = {2: Rotation((x, z), signal), 3: Rotation((x, 0.0, z), signal, axis=(0.0, 1.0, 0.0))}
 
     def motion(t, ref):
-        th, w = angle(t)
-        c, s = math.cos(float(th)), math.sin(float(th))
-        x, z = ref[:, 0] - hinge[0], ref[:, -1] - hinge[1]
-        xr, zr = c * x + s * z, -s * x + c * z
-        pos, vel = ref.copy(), np.zeros_like(ref)
-        pos[:, 0], pos[:, -1] = hinge[0] + xr, hinge[1] + zr
-        vel[:, 0], vel[:, -1] = float(w) * zr, -float(w) * xr
-        return pos, vel
+        return by_dim[np.shape(ref)[-1]](t, ref)
 
     return motion
 
