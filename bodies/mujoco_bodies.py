@@ -22,7 +22,7 @@ from typing import Sequence
 import mujoco
 import numpy as np
 
-from bodies.sampling import BodyKinematics, GeomShape, sample_geoms
+from bodies.sampling import BodyKinematics, GeomShape, check_mesh, sample_geoms
 from cosim.errors import InputError, InstabilityError
 
 
@@ -32,6 +32,7 @@ _GEOM_KINDS = {
     mujoco.mjtGeom.mjGEOM_CYLINDER: "cylinder",
     mujoco.mjtGeom.mjGEOM_CAPSULE: "capsule",
     mujoco.mjtGeom.mjGEOM_ELLIPSOID: "ellipsoid",
+    mujoco.mjtGeom.mjGEOM_MESH: "mesh",
 }
 
 
@@ -169,8 +170,11 @@ class MujocoBodies:
 
     def geoms(self) -> list[list[GeomShape]]:
         """The solid geoms of each coupled body, in the body frame, as plain arrays
-        (so that a fluid can use them without MuJoCo). Planes, meshes and height
-        fields are left out."""
+        (so that a fluid can use them without MuJoCo). A mesh geom carries its
+        vertices and faces as MuJoCo compiled them (``mesh_vert`` / ``mesh_face`` from
+        ``mesh_vertadr`` / ``mesh_faceadr``), which are in the geom frame (MuJoCo moves
+        a mesh to its centre of mass and principal axes and folds that offset into the
+        geom's pos and quat). Planes and height fields are left out."""
         m = self.model
         out = []
         for b in self.body_ids:
@@ -181,7 +185,15 @@ class MujocoBodies:
                     continue
                 rot = np.empty(9)
                 mujoco.mju_quat2Mat(rot, m.geom_quat[g])
-                shapes.append(GeomShape(kind, m.geom_size[g].copy(), m.geom_pos[g].copy(), rot.reshape(3, 3)))
+                mesh = None
+                if kind == "mesh":
+                    k = int(m.geom_dataid[g])
+                    va, vn = int(m.mesh_vertadr[k]), int(m.mesh_vertnum[k])
+                    fa, fn = int(m.mesh_faceadr[k]), int(m.mesh_facenum[k])
+                    label = (f"body '{mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_BODY, b)}' geom {g - m.body_geomadr[b]} "
+                             f"(mesh '{mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_MESH, k)}')")
+                    mesh = check_mesh(m.mesh_vert[va:va + vn], m.mesh_face[fa:fa + fn], label)
+                shapes.append(GeomShape(kind, m.geom_size[g].copy(), m.geom_pos[g].copy(), rot.reshape(3, 3), mesh))
             out.append(shapes)
         return out
 

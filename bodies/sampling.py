@@ -1,7 +1,8 @@
 """Boundary particles of bodies: sampled from their geoms, placed rigidly.
 
 Dynamic boundary particles (seed 004 §2.6) fill a band ``layers × dx`` deep
-inside each geom's surface, on a lattice of spacing ``dx`` in the geom's own
+inside each geom's surface (box, sphere, cylinder, capsule, ellipsoid, or a
+closed triangle mesh), on a lattice of spacing ``dx`` in the geom's own
 frame (cell-centred, so the outer layer sits half a spacing inside the surface,
 as the fluid's own particles sit inside their cells). They are stored once in
 body coordinates and placed every step by the rigid transform of the body's pose,
@@ -21,10 +22,13 @@ from cosim.errors import InputError
 class GeomShape(NamedTuple):
     """A geom in its body's frame (the frame of ``BodyKinematics.origin``)."""
 
-    kind: str  #: "box", "sphere", "cylinder", "capsule", "ellipsoid"
+    kind: str  #: "box", "sphere", "cylinder", "capsule", "ellipsoid", "mesh"
     size: np.ndarray  #: MuJoCo size [m]: box half-sizes, sphere radius, cylinder/capsule radius and half-length
     pos: np.ndarray  #: centre [m], (3,)
     rot: np.ndarray  #: orientation, (3, 3): p_body = pos + rot p_geom
+    #: a mesh geom's ``(vertices [m] (nv, 3), faces (nf, 3) vertex indices)`` in the geom
+    #: frame (a closed triangle surface, see :func:`check_mesh`); None for the other kinds
+    mesh: tuple | None = None
 
 
 class BodyKinematics(NamedTuple):
@@ -37,10 +41,15 @@ class BodyKinematics(NamedTuple):
     omega: np.ndarray  #: angular velocity [rad/s], (n, 3)
 
 
-def signed_distance(kind: str, size: np.ndarray, p: np.ndarray) -> np.ndarray:
+def signed_distance(kind: str, size: np.ndarray, p: np.ndarray, mesh: tuple | None = None) -> np.ndarray:
     """Signed distance [m] from points ``p`` (geom frame, (n, 3)) to the geom's
-    surface, negative inside (exact for box, sphere, cylinder and capsule; a
-    first-order estimate for an ellipsoid, exact on its surface)."""
+    surface, negative inside (exact for box, sphere, cylinder, capsule and mesh; a
+    first-order estimate for an ellipsoid, exact on its surface). A mesh needs
+    ``mesh = (vertices, faces)`` (see :class:`GeomShape`)."""
+    if kind == "mesh":
+        if mesh is None:
+            raise InputError("boundary particles: a mesh geom needs its (vertices, faces); give GeomShape.mesh")
+        return mesh_signed_distance(mesh[0], mesh[1], p)
     if kind == "box":
         q = np.abs(p) - size[:3]
         return np.linalg.norm(np.maximum(q, 0.0), axis=1) + np.minimum(q.max(axis=1), 0.0)
@@ -58,11 +67,90 @@ def signed_distance(kind: str, size: np.ndarray, p: np.ndarray) -> np.ndarray:
         k1 = np.linalg.norm(p / r**2, axis=1)
         return np.where(k1 > 0, k0 * (k0 - 1.0) / np.where(k1 > 0, k1, 1.0), -r.min())
     raise InputError(f"boundary particles: geom type {kind!r} cannot be sampled (use box, sphere, cylinder, "
-                     f"capsule or ellipsoid)")
+                     f"capsule, ellipsoid or mesh)")
 
 
-def half_extents(kind: str, size: np.ndarray) -> np.ndarray:
-    """Half-sizes [m] of the geom's bounding box along its own axes."""
+def check_mesh(vertices, faces, name: str = "mesh") -> tuple[np.ndarray, np.ndarray]:
+    """``(vertices (nv, 3) float, faces (nf, 3) int)`` of a closed triangle surface,
+    or an :class:`InputError` saying what is wrong. Closed: every edge is shared by
+    exactly two faces, which run along it in opposite directions (a consistently
+    oriented surface, so that inside and outside are defined); every face has an area."""
+    v = np.asarray(vertices, float)
+    f = np.asarray(faces)
+    if v.ndim != 2 or v.shape[1] != 3 or f.ndim != 2 or f.shape[1] != 3 or len(f) == 0:
+        raise InputError(f"boundary particles: {name} needs vertices (n, 3) and triangular faces (m, 3) as vertex "
+                         f"indices; got shapes {v.shape} and {f.shape}")
+    if not np.isfinite(v).all() or f.min() < 0 or f.max() >= len(v):
+        raise InputError(f"boundary particles: {name} has non-finite vertices or face indices outside 0..{len(v) - 1}")
+    f = f.astype(np.int64)
+    e = np.concatenate([f[:, [0, 1]], f[:, [1, 2]], f[:, [2, 0]]])  # directed edges
+    und, counts = np.unique(np.sort(e, axis=1), axis=0, return_counts=True)
+    if (counts != 2).any():
+        bad = und[counts != 2][0]
+        raise InputError(f"boundary particles: {name} is not a closed surface ({int((counts != 2).sum())} edges are "
+                         f"not shared by exactly two faces, e.g. vertices {bad[0]}-{bad[1]}): the fluid needs an "
+                         f"inside; close the mesh (or let MuJoCo use its convex hull: give vertices only)")
+    if len(np.unique(e, axis=0)) != len(e):
+        raise InputError(f"boundary particles: {name}'s faces are not consistently oriented (an edge runs the same "
+                         f"way in two faces); orient every face's vertices the same way round, e.g. counter-"
+                         f"clockwise seen from outside")
+    area = np.linalg.norm(np.cross(v[f[:, 1]] - v[f[:, 0]], v[f[:, 2]] - v[f[:, 0]]), axis=1)
+    flat = area <= 1e-12 * max(float(np.ptp(v, axis=0).max()), 1e-300) ** 2
+    if flat.any():
+        raise InputError(f"boundary particles: {name} has {int(flat.sum())} face(s) of zero area; "
+                         f"remove the degenerate triangles")
+    return v, f
+
+
+def mesh_signed_distance(vertices: np.ndarray, faces: np.ndarray, p: np.ndarray,
+                         cut_axis: int | None = None) -> np.ndarray:
+    """Signed distance [m] from points ``p`` (n, 3) to a closed triangle surface
+    (see :func:`check_mesh`), negative inside. The distance is the exact least distance
+    to the triangles (to the plane where the foot lies in the triangle, else to its
+    nearest edge); the sign is the generalised winding number (Jacobson, Kavan &
+    Sorkine-Hornung 2013, ACM TOG 32(4) 33, Eq. 5: ``w = sum Omega_f / 4 pi`` with the
+    solid angle of each triangle from Van Oosterom & Strackee 1983, IEEE TBME 30(2) 125,
+    ``tan(Omega/2) = a.(b x c) / (|a||b||c| + (a.b)|c| + (b.c)|a| + (c.a)|b|)``), inside
+    where ``|w| > 1/2`` (either orientation). ``cut_axis``: the distance leaves out the
+    faces whose normal lies along this geom axis (the end caps of a body extruded along
+    it, cut away by a 2-D section, as a box's faces are in :func:`_section_distance`)."""
+    v, f = np.asarray(vertices, float), np.asarray(faces, np.int64)
+    p = np.asarray(p, float)
+    A, B, C = v[f[:, 0]], v[f[:, 1]], v[f[:, 2]]
+    nrm = np.cross(B - A, C - A)
+    nrm /= np.linalg.norm(nrm, axis=1, keepdims=True)
+    use = np.ones(len(f), bool) if cut_axis is None else np.abs(nrm[:, cut_axis]) < 1.0 - 1e-9
+    out = np.empty(len(p))
+    chunk = max(1, 2_000_000 // len(f))
+    for s in range(0, len(p), chunk):
+        q = p[s:s + chunk, None, :]  # (k, 1, 3)
+        a, b, c = A[None] - q, B[None] - q, C[None] - q  # corners relative to the points
+        la, lb, lc = (np.linalg.norm(x, axis=2) for x in (a, b, c))
+        det = np.einsum("kfi,kfi->kf", a, np.cross(b, c))
+        den = (la * lb * lc + np.einsum("kfi,kfi->kf", a, b) * lc + np.einsum("kfi,kfi->kf", b, c) * la
+               + np.einsum("kfi,kfi->kf", c, a) * lb)
+        wind = np.arctan2(det, den).sum(axis=1) / (2.0 * np.pi)  # sum Omega / 4 pi, Omega = 2 atan2
+        # unsigned distance: plane distance where the foot is inside the triangle, else edges
+        h = -np.einsum("kfi,fi->kf", a, nrm)  # height of the point above each face plane
+        foot = -a - h[..., None] * nrm[None]  # foot of the perpendicular, relative to A
+        e0, e1, e2 = B - A, C - B, A - C
+        inside = ((np.einsum("kfi,fi->kf", np.cross(e0[None], foot), nrm) >= 0)
+                  & (np.einsum("kfi,fi->kf", np.cross(e1[None], foot - e0[None]), nrm) >= 0)
+                  & (np.einsum("kfi,fi->kf", np.cross(e2[None], foot + e2[None]), nrm) >= 0))
+        d = np.where(inside, np.abs(h), np.inf)
+        for start, edge in ((a, e0), (b, e1), (c, e2)):  # segment from the corner along the edge
+            t = np.clip(-np.einsum("kfi,fi->kf", start, edge) / np.einsum("fi,fi->f", edge, edge), 0.0, 1.0)
+            d = np.minimum(d, np.linalg.norm(start + t[..., None] * edge[None], axis=2))
+        d = np.where(use[None], d, np.inf).min(axis=1)
+        out[s:s + chunk] = np.where(np.abs(wind) > 0.5, -d, d)
+    return out
+
+
+def half_extents(kind: str, size: np.ndarray, mesh: tuple | None = None) -> np.ndarray:
+    """Half-sizes [m] of the geom's bounding box along its own axes, centred on the
+    geom's origin (a mesh: the largest vertex coordinate each way)."""
+    if kind == "mesh":
+        return np.abs(np.asarray(mesh[0], float)).max(axis=0)
     if kind in ("box", "ellipsoid"):
         return size[:3].copy()
     if kind == "sphere":
@@ -106,7 +194,9 @@ def sample_geoms(geoms, dx: float, layers: int, dim: int = 3):
     pts, owner = [], []
     for gi, g in enumerate(geoms):
         size = np.asarray(g.size, dtype=float)
-        half = half_extents(g.kind, size)
+        if g.kind == "mesh":
+            check_mesh(*(g.mesh or (None, None)), name=f"geom {gi} (mesh)")
+        half = half_extents(g.kind, size, g.mesh)
         axes = [_axis_grid(h, dx) for h in half]
         if dim == 2:
             along_y = np.flatnonzero(np.isclose(np.abs(g.rot[1]), 1.0))
@@ -115,7 +205,8 @@ def sample_geoms(geoms, dx: float, layers: int, dim: int = 3):
                                  f"2-D sampling cuts geoms by the x-z plane")
             axes[along_y[0]] = np.array([-g.pos[1] * g.rot[1, along_y[0]]])  # the y = 0 plane of the body
         p = np.stack(np.meshgrid(*axes, indexing="ij"), axis=-1).reshape(-1, 3)
-        sd = signed_distance(g.kind, size, p) if dim == 3 else _section_distance(g.kind, size, p, along_y[0])
+        sd = (signed_distance(g.kind, size, p, g.mesh) if dim == 3
+              else _section_distance(g.kind, size, p, along_y[0], g.mesh))
         keep = (sd <= 0.0) & (sd > -layers * dx)
         pts.append(g.pos + p[keep] @ g.rot.T)
         owner.append(np.full(int(keep.sum()), gi))
@@ -125,11 +216,14 @@ def sample_geoms(geoms, dx: float, layers: int, dim: int = 3):
     return points, np.concatenate(owner) if owner else np.zeros(0, int)
 
 
-def _section_distance(kind, size, p, axis):
+def _section_distance(kind, size, p, axis, mesh=None):
     """Signed distance within the section of a geom by its mid-plane normal to
     geom axis ``axis`` (points ``p`` lie in that plane). Restricting the 3-D
     distance to the plane is exact except where the depth would be measured to the
-    faces cut away (a box's, or an end-on cylinder's flat ends)."""
+    faces cut away (a box's, a mesh's faces normal to the axis, or an end-on
+    cylinder's flat ends)."""
+    if kind == "mesh":
+        return mesh_signed_distance(mesh[0], mesh[1], p, cut_axis=axis)
     if kind == "box":
         s = size[:3].copy()
         s[axis] = np.inf
@@ -159,10 +253,10 @@ def ghost_offsets(geoms, points: np.ndarray, dim: int = 3) -> np.ndarray:
             if along_y.size != 1:
                 raise InputError(f"ghost nodes: a planar body's geom {gi} ({g.kind}) has no axis along y")
             ax = int(along_y[0])
-            dist = lambda q, ax=ax: _section_distance(g.kind, size, q, ax)
+            dist = lambda q, ax=ax: _section_distance(g.kind, size, q, ax, g.mesh)
         else:
             ax = -1
-            dist = lambda q: signed_distance(g.kind, size, q)
+            dist = lambda q: signed_distance(g.kind, size, q, g.mesh)
         sd = dist(p)
         if g.kind == "box":
             half = size[:3].copy()
@@ -172,7 +266,7 @@ def ghost_offsets(geoms, points: np.ndarray, dim: int = 3) -> np.ndarray:
             near = q >= sd[:, None] - 1e-9 * max(half[np.isfinite(half)].max(), 1.0)
             ghost_g = -2.0 * np.where(near, q, 0.0) * np.sign(p)
         else:
-            eps = 1e-6 * max(float(size.max()), 1e-9)
+            eps = 1e-6 * max(float(half_extents(g.kind, size, g.mesh).max()), 1e-9)
             grad = np.zeros_like(p)
             for k in range(3):
                 if k == ax:

@@ -126,7 +126,7 @@ class SPHFluid:
             pb = (x3 - kin.origin[k]) @ kin.rotation[k]  # body frame: R^T (x - origin)
             for g in shapes:
                 pg = (pb - g.pos) @ g.rot  # geom frame
-                inside |= signed_distance(g.kind, np.asarray(g.size, float), pg) < 0.5 * self.config.dx * (1 - 1e-9)
+                inside |= signed_distance(g.kind, np.asarray(g.size, float), pg, g.mesh) < 0.5 * self.config.dx * (1 - 1e-9)
         return inside
 
     def _to_dim(self, v3):
