@@ -102,6 +102,13 @@ def check_mesh(vertices, faces, name: str = "mesh") -> tuple[np.ndarray, np.ndar
     return v, f
 
 
+def mesh_volume(vertices, faces) -> float:
+    """Volume [m^3] enclosed by a closed triangle surface (:func:`check_mesh`): the
+    divergence theorem, ``V = |sum_f a . (b x c)| / 6`` over the faces' corners."""
+    v, f = np.asarray(vertices, float), np.asarray(faces, np.int64)
+    return float(abs(np.einsum("fi,fi->", v[f[:, 0]], np.cross(v[f[:, 1]], v[f[:, 2]]))) / 6.0)
+
+
 def mesh_signed_distance(vertices: np.ndarray, faces: np.ndarray, p: np.ndarray,
                          cut_axis: int | None = None) -> np.ndarray:
     """Signed distance [m] from points ``p`` (n, 3) to a closed triangle surface

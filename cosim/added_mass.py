@@ -77,7 +77,7 @@ class AddedMass:
         self.bodies = bodies
         self.rho = rho
         self.mass = bodies.masses()
-        self.volume = np.array([sum(geom_volume(g.kind, g.size) for g in shapes) for shapes in bodies.geoms()])
+        self.volume = np.array([sum(geom_volume(g.kind, g.size, g.mesh) for g in shapes) for shapes in bodies.geoms()])
         #: body mass / mass of the fluid it displaces [-], per body
         self.ratio = np.divide(self.mass, rho * self.volume, out=np.full(len(self.mass), np.inf),
                                where=self.volume > 0)

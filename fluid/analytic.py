@@ -25,7 +25,7 @@ from typing import Mapping, Sequence
 
 import numpy as np
 
-from bodies.sampling import half_extents, signed_distance
+from bodies.sampling import half_extents, mesh_volume, signed_distance
 from cosim.errors import InputError
 
 
@@ -39,9 +39,12 @@ _VOLUME = {
 }
 
 
-def geom_volume(kind: str, size) -> float:
+def geom_volume(kind: str, size, mesh: tuple | None = None) -> float:
     """Exact volume [m^3] of a MuJoCo geom from its kind and MuJoCo size (half-sizes
-    [m], radius [m], half-length [m]); raises for kinds with no volume model."""
+    [m], radius [m], half-length [m]), or of a mesh geom from its ``mesh = (vertices,
+    faces)`` (``bodies.sampling.GeomShape.mesh``); raises for kinds with no volume model."""
+    if kind == "mesh" and mesh is not None:
+        return mesh_volume(*mesh)
     if kind not in _VOLUME:
         raise InputError(f"geom type {kind!r} has no volume model; use a box, sphere, ellipsoid, cylinder or capsule")
     return float(_VOLUME[kind](np.asarray(size, float)))
@@ -51,7 +54,8 @@ def _unit_cells(kind: str, size: np.ndarray, n: int):
     """Cell centres [m] in the geom frame, the geom's exact volume [m^3] and the
     cell's edge lengths [m] along the geom axes."""
     if kind not in _VOLUME:
-        raise InputError(f"analytic fluid: geom type {kind!r} has no volume model")
+        raise InputError(f"analytic fluid: geom type {kind!r} has no volume model (use a box, sphere, ellipsoid, "
+                         f"cylinder or capsule; meshes load the SPH fluid only)")
     half = half_extents(kind, size)
     edge = 2.0 * half.max() / n
     counts = np.maximum(np.ceil(2.0 * half / edge).astype(int), 1)

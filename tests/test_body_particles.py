@@ -9,6 +9,7 @@ from bodies import builders
 from bodies.mujoco_bodies import MujocoBodies
 from bodies.sampling import GeomShape, place, sample_geoms, signed_distance
 from cosim.errors import InputError
+from fluid.analytic import geom_volume
 
 I3 = np.eye(3)
 
@@ -117,6 +118,7 @@ def test_a_mesh_box_samples_as_the_box_geom(dim):
     b = MujocoBodies(_mesh_scene(BOX_CORNERS))
     mesh_g, box_g = b.geoms()[0][0], b.geoms()[1][0]
     assert mesh_g.kind == "mesh" and len(mesh_g.mesh[1]) == 12
+    assert geom_volume("mesh", None, mesh_g.mesh) == pytest.approx(0.4 * 0.2 * 0.3, rel=1e-6)  # the added-mass volume
     p, owner = b.boundary_particles(0.02, 3, dim=dim)
     pm, pb = p[owner == 0], p[owner == 1]
     assert len(pm) == len(pb) == (2496 if dim == 3 else 20 * 15 - 14 * 9)
@@ -136,7 +138,7 @@ def test_a_convex_polyhedron_mesh_fills_its_volume_and_its_band():
     r, dx = 0.3, 0.02
     verts = f"{r} 0 0  -{r} 0 0  0 {r} 0  0 -{r} 0  0 0 {r}  0 0 -{r}"
     g = MujocoBodies(_mesh_scene(verts)).geoms()[0][0]
-    assert len(g.mesh[1]) == 8
+    assert len(g.mesh[1]) == 8 and geom_volume("mesh", None, g.mesh) == pytest.approx(4 / 3 * r**3, rel=1e-6)
     full, _ = sample_geoms([g], dx, 100)
     assert len(full) * dx**3 == pytest.approx(4 / 3 * r**3, rel=0.01)
     band, _ = sample_geoms([g], dx, 3)
