@@ -54,6 +54,19 @@ LIGHT_BODY = ("auto", "none", "added-mass", "subiterate")
 #: their own, so "auto" leaves them alone (the instability watch still stops a run).
 AUTO_THRESHOLD = 0.3
 
+#: what each ``light_body`` value does, in a user's words (the ``--light-body`` help of
+#: the command-line scenarios, :func:`cosim.cli.add_light_body_option`)
+LIGHT_BODY_HELP = {
+    "auto": f"pick per body from its mass / displaced fluid mass: 'subiterate' below {AUTO_THRESHOLD} when the "
+            f"fluid's loads carry added mass (the SPH fluid) and the scheme is fluid-first, else 'none'",
+    "none": "plain staggered coupling (unstable once a body is much lighter than the fluid it displaces)",
+    "subiterate": "repeat each coupling step from saved states until the body's and the fluid's motion agree "
+                  "(fluid-first only; 2-4 fluid advances a step, stable down to a ratio of 0.001)",
+    "added-mass": "add the displaced fluid's mass to the body's inertia and its lagged reaction to the load "
+                  "(for fluids that react within the step; it made every scheme worse with the weakly "
+                  "compressible SPH fluid)",
+}
+
 
 def fluid_density(fluid, required: bool = True) -> float | None:
     """The fluid's density [kg/m^3] (an SPH fluid's reference density); ``None`` if it

@@ -22,6 +22,19 @@ LINE_PRESETS = {
 }
 
 
+def add_light_body_option(parser: argparse.ArgumentParser) -> None:
+    """``--light-body {auto,none,subiterate,added-mass}`` on a command that runs a
+    coupled scene: the coupler's ``light_body`` (:class:`cosim.coupler.Coupler`,
+    :mod:`cosim.added_mass`), default ``auto``; the help says what each choice does."""
+    from cosim.added_mass import LIGHT_BODY, LIGHT_BODY_HELP
+
+    parser.add_argument("--light-body", choices=LIGHT_BODY, default="auto", metavar="{" + ",".join(LIGHT_BODY) + "}",
+                        help="what the coupler does for bodies much lighter than the fluid they displace (the "
+                             "added-mass instability of staggered coupling); "
+                             + "; ".join(f"{k}: {v}" for k, v in LIGHT_BODY_HELP.items())
+                             + ". Default auto; the run reports the remedy chosen per body")
+
+
 def _line_parser(sub):
     p = sub.add_parser(
         "line",

@@ -13,6 +13,7 @@ receives exactly the impulse the water exchanged with it).
     python examples/moored_box_waves.py                  # dx = 2 cm, 5 s: 2615 particles, 17 002 steps
     python examples/moored_box_waves.py --fine           # dx = 1 cm (8 times the work)
     python examples/moored_box_waves.py --mooring sph-cable --duration 3
+    python examples/moored_box_waves.py --light-body subiterate   # light-body remedy (default auto)
 
 Cost (measured on the 2-core machine, otherwise nearly idle): the default run takes
 43 s of wall time and 44 s of CPU (the fluid runs on one thread below 20 000
@@ -41,6 +42,7 @@ import numpy as np
 
 from bodies import builders
 from bodies.mujoco_bodies import MujocoBodies
+from cosim.cli import add_light_body_option
 from cosim.coupler import Coupler
 from cosim.sph_fluid import SPHFluid
 from fluid.flume import PADDLE_GROUP, flume
@@ -88,8 +90,10 @@ def make_mooring(model: str, workdir: Path):
     raise ValueError(f"unknown mooring model {model!r}; choose from {MODELS}")
 
 
-def build(dx: float, H: float, T: float, model: str, workdir: Path):
-    """The participants: SPH fluid with its paddle, the box, the mooring."""
+def build(dx: float, H: float, T: float, model: str, workdir: Path, light_body: str = "auto"):
+    """The participants: SPH fluid with its paddle, the box, the mooring; ``light_body``
+    is the coupler's light-body remedy (``cosim.added_mass.LIGHT_BODY``; "auto" leaves
+    this box, 0.5 of the water's density, uncorrected)."""
     wm = RegularWavemaker("piston", H=H, T=T, depth=DEPTH, ramp=1.0)
     fl = flume(dx, LENGTH, DEPTH, HEIGHT, back=0.5 * wm.stroke + dx, beach=BEACH)
     cfg = FluidConfig(dim=2, dx=dx, u_max=math.sqrt(G * DEPTH), c0_factor=10.0, g=G)
@@ -99,21 +103,22 @@ def build(dx: float, H: float, T: float, model: str, workdir: Path):
     box = builders.box("box", (BOX_W, BOX_H), (BOX_X, 0.0, z_box), density=BOX_RHO, planar=True, sites=sites)
     bodies = MujocoBodies(builders.scene(box, gravity=G, timestep=1e-3))
     mooring = make_mooring(model, workdir)
-    coupler = Coupler(bodies=bodies, fluid=fluid, moorings=[(mooring, list(sites))], scheme="fluid-first")
+    coupler = Coupler(bodies=bodies, fluid=fluid, moorings=[(mooring, list(sites))], scheme="fluid-first",
+                      light_body=light_body)
     coupler.initialize()  # builds the fluid with the box in it
     fluid.fluid.prescribe_motion(PADDLE_GROUP, wm.paddle())
     return coupler, fluid, bodies, mooring, wm
 
 
 def run(dx=0.02, duration=5.0, H=0.04, T=1.0, model="catenary", out=Path("out/moored_box_waves"),
-        snapshot_every=0.1, plots=True) -> dict:
+        snapshot_every=0.1, plots=True, light_body="auto") -> dict:
     """Run the scene for ``duration`` [s] at spacing ``dx`` [m] with waves of height
     ``H`` [m] and period ``T`` [s]; write the outputs to ``out``; return a summary."""
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     gauges = np.array([0.6, BOX_X - 0.4, BOX_X + 0.4])  # m
     with tempfile.TemporaryDirectory() as tmp:
-        coupler, fluid, bodies, mooring, wm = build(dx, H, T, model, Path(tmp))
+        coupler, fluid, bodies, mooring, wm = build(dx, H, T, model, Path(tmp), light_body)
         ps = fluid.fluid.ps
         attrs = dict(dx=dx, H=H, T=T, depth=DEPTH, box_width=BOX_W, box_height=BOX_H, box_density=BOX_RHO,
                      mooring=model, gauges_x=gauges, stroke=wm.stroke, wavelength=wm.wavelength)
@@ -155,6 +160,7 @@ def run(dx=0.02, duration=5.0, H=0.04, T=1.0, model="catenary", out=Path("out/mo
     summary = {
         "particles": int(ps.n), "fluid_particles": int((ps.kind == Kind.FLUID).sum()), "steps": coupler.steps,
         "wall_s": wall, "dx_m": dx, "duration_s": duration, "mooring": model,
+        "light_body": light_body, "remedies": dict(coupler.remedies),
         "stroke_m": wm.stroke, "wavelength_m": wm.wavelength,
         "heave_range_m": float(np.ptp(z[late])), "surge_range_m": float(np.ptp(x[late])),
         "mean_offset_m": float(x[late].mean() - BOX_X), "mean_heave_m": float(z[late].mean() - z0),
@@ -199,7 +205,7 @@ def _plots(out: Path, t, x, z, th, ten, wm):
     plt.close(fig)
 
 
-def main():
+def parse_args(argv=None) -> argparse.Namespace:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--dx", type=float, default=0.02, help="particle spacing [m] (default 0.02)")
     parser.add_argument("--fine", action="store_true", help="dx = 0.01 m")
@@ -209,11 +215,18 @@ def main():
     parser.add_argument("--mooring", default="catenary", choices=MODELS, help="mooring model")
     parser.add_argument("--snapshot-every", type=float, default=0.1, help="particle snapshot interval [s]; 0: none")
     parser.add_argument("--out", type=Path, default=Path("out/moored_box_waves"), help="output folder")
-    args = parser.parse_args()
+    add_light_body_option(parser)
+    return parser.parse_args(argv)
+
+
+def main(argv=None):
+    args = parse_args(argv)
     s = run(0.01 if args.fine else args.dx, args.duration, args.height, args.period, args.mooring, args.out,
-            args.snapshot_every)
+            args.snapshot_every, light_body=args.light_body)
     print(f"{s['particles']} particles ({s['fluid_particles']} fluid), {s['steps']} steps, "
           f"{s['wall_s']:.1f} s wall for {s['duration_s']} s simulated (dx = {s['dx_m']} m, {s['mooring']} lines)")
+    print("light-body remedy (--light-body " + s["light_body"] + "): "
+          + ", ".join(f"{k} {v}" for k, v in s["remedies"].items()))
     print(f"last two periods: heave range {s['heave_range_m'] * 1e3:.1f} mm, surge range "
           f"{s['surge_range_m'] * 1e3:.1f} mm, mean offset {s['mean_offset_m'] * 1e3:+.1f} mm; "
           f"max roll {s['max_roll_deg']:.1f} deg; fairlead tensions {s['tension_range_N'][0]:.2f} .. "

@@ -51,3 +51,36 @@ def test_moored_box_in_waves_tiny(tmp_path):
     # the fluid carries the box: buoyancy ~ its weight 500 * 0.2 * 0.1 * 9.81 = 98 N (+ the lines' pull)
     assert 80.0 < np.median(F[:, 2]) < 120.0
     assert np.abs(eta).max() < 0.05
+
+
+def _load_example(stem):
+    import importlib.util
+
+    path = Path(__file__).resolve().parents[1] / "examples" / f"{stem}.py"
+    spec = importlib.util.spec_from_file_location(f"example_{stem}", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def test_light_body_option_reaches_the_coupler(tmp_path, capsys):
+    """``--light-body`` parses to the coupler's ``light_body`` (default auto, which
+    leaves this box of half the water's density uncorrected: ratio 0.5 > 0.3) and the
+    coupler applies the forced choice; a wrong value is refused listing the choices.
+    The scene is only built (dx = 5 cm, no step)."""
+    ex = _load_example("moored_box_waves")
+    assert ex.parse_args([]).light_body == "auto"
+    assert ex.parse_args(["--light-body", "subiterate"]).light_body == "subiterate"
+    for mode, remedy in (("auto", "none"), ("subiterate", "subiterate"), ("none", "none")):
+        coupler, *_ = ex.build(0.05, 0.04, 1.0, "catenary", tmp_path, light_body=mode)
+        assert coupler.light_body == mode and coupler.remedies == {"box": remedy}
+        assert coupler.added_mass.ratio[0] == pytest.approx(0.5, rel=0.02)
+    with pytest.raises(SystemExit):
+        ex.parse_args(["--light-body", "implicit"])
+    err = capsys.readouterr().err
+    assert "invalid choice: 'implicit'" in err and "auto" in err and "added-mass" in err
+    from cosim.added_mass import LIGHT_BODY
+    with pytest.raises(SystemExit):
+        ex.parse_args(["--help"])
+    help_text = " ".join(capsys.readouterr().out.split())
+    assert all(f"{k}:" in help_text for k in LIGHT_BODY) and "mass / displaced fluid mass" in help_text
