@@ -27,7 +27,7 @@ import math
 
 import numpy as np
 
-from bodies.sampling import ghost_offsets, place, signed_distance
+from bodies.sampling import ghost_offsets, particles_across, place, signed_distance
 from cosim.errors import InputError
 from fluid.boundary_correction import MDBC
 from fluid.geometry import assemble, set_hydrostatic
@@ -79,8 +79,41 @@ class SPHFluid:
         self.displaced_volume = 0.0
 
     # -- coupling ----------------------------------------------------------------
+    #: fewest boundary particles a body's geom may have across any of its axes [-]. With
+    #: one particle across, that particle lies on the geom's mid-plane, at the same depth
+    #: under both faces: its mDBC ghost node (the mirror image across the nearest face,
+    #: ``bodies.sampling.ghost_offsets``) falls back onto the particle itself, inside the
+    #: body (a box reflects it across both faces at once, the other shapes have no
+    #: gradient there), so the density it takes is not the fluid's outside; and with plain
+    #: DBC the fluid on each side meets a single row, a third of the kernel support
+    #: (2 h = 2.8 dx), which it can push through. From two across every particle is nearest
+    #: one face and mirrors into the fluid on that side (a 3-particle body floats: see
+    #: tests/test_coupling_extremes.py).
+    MIN_PARTICLES_ACROSS = 2
+
+    def check_body_resolution(self, bodies) -> None:
+        """Refuse, before any work, a body with a geom fewer than
+        :attr:`MIN_PARTICLES_ACROSS` particles across, naming the body, the geom, its
+        size, dx and the fix."""
+        dx, dim = self.config.dx, self.config.dim
+        names = getattr(bodies, "body_names", None)
+        for k, shapes in enumerate(bodies.geoms()):
+            body = names[k] if names is not None else str(k)
+            for i, g in enumerate(shapes):
+                axes, extent, n = particles_across(g, dx, dim)
+                j = int(np.argmin(n))
+                if n[j] < self.MIN_PARTICLES_ACROSS:
+                    raise InputError(
+                        f"SPH fluid: body '{body}' geom {i} ({g.kind}) is {extent[j]:.4g} m across along its "
+                        f"{'xyz'[axes[j]]} axis, {n[j]} particle(s) at dx = {dx:.4g} m; its boundary needs at least "
+                        f"{self.MIN_PARTICLES_ACROSS} particles across (a single row sits on the mid-plane, with no "
+                        f"nearest face for its ghost node, and does not hold the fluid back). Refine dx to "
+                        f"{extent[j] / self.MIN_PARTICLES_ACROSS:.3g} m or less, or make the body at least "
+                        f"{self.MIN_PARTICLES_ACROSS * dx:.3g} m thick there")
+
     def attach_bodies(self, bodies) -> None:
         c = self.config
+        self.check_body_resolution(bodies)
         kin = bodies.kinematics()
         pb, owner = bodies.boundary_particles(c.dx, self.body_layers, c.dim)
         x, _ = place(pb, owner, kin)

@@ -7,6 +7,7 @@ import pytest
 
 from bodies import builders
 from bodies.mujoco_bodies import MujocoBodies
+from cosim.errors import InputError
 from cosim.sph_fluid import SPHFluid
 from fluid.geometry import block, tank_walls
 from fluid.particles import Kind
@@ -72,3 +73,25 @@ def test_momentum_exchange_validation_quick():
     assert m["explicit"]["linear_drift"] > 1e-9
     vx, w = m["fluid_first"]["body_vx_m_s"], m["fluid_first"]["body_omega_rad_s"]
     assert vx[1] < 0.5 * vx[0] and abs(w[1]) > 0.1  # the water slowed the box and spun it
+
+
+def test_a_body_fewer_than_two_particles_across_is_refused_before_any_work():
+    """A plate 1.2 cm thick at dx = 1 cm is one particle across (round(1.2) = 1): refused
+    at attachment, naming the body, its thickness, dx and the fix, before the fluid is
+    built; at 1.5 cm (two across, the minimum) and in 3-D likewise along the thin axis."""
+    with pytest.raises(InputError, match=r"body 'b' geom 0 \(box\) is 0\.012 m across along its z axis, 1 "
+                                         r"particle\(s\) at dx = 0\.01 m.*at least 2 particles across.*Refine dx "
+                                         r"to 0\.006 m or less, or make the body at least 0\.02 m thick"):
+        submerged_box(box=(0.1, 0.012))
+    cfg = FluidConfig(dim=2, dx=0.01, u_max=1.0)
+    f = SPHFluid(cfg, block(np.zeros(2), np.array([0.4, 0.25]), 0.01))
+    with pytest.raises(InputError, match="body 'b'"):
+        f.attach_bodies(MujocoBodies(builders.scene(builders.box("b", (0.1, 0.012), (0.2, 0, 0.1), density=2000.0,
+                                                                 planar=True))))
+    assert f.fluid is None  # nothing was built
+    f.check_body_resolution(MujocoBodies(builders.scene(builders.box("b", (0.1, 0.015), (0.2, 0, 0.1),
+                                                                     density=2000.0, planar=True))))  # 2 across
+    f3 = SPHFluid(FluidConfig(dim=3, dx=0.01, u_max=1.0), np.zeros((0, 3)))
+    plate = builders.scene(builders.box("plate", (0.1, 0.005, 0.1), (0, 0, 0), density=2000.0))
+    with pytest.raises(InputError, match=r"body 'plate' geom 0 \(box\) is 0\.005 m across along its y axis"):
+        f3.check_body_resolution(MujocoBodies(plate))
