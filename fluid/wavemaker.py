@@ -31,10 +31,9 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-from scipy.interpolate import CubicSpline
 
 from cosim.errors import InputError
-from fluid.motion import Rotation, Signal, Translation
+from fluid.motion import Rotation, Signal, Tabulated, Translation
 
 
 def wavenumber(T: float, depth: float, g: float = 9.81) -> float:
@@ -193,7 +192,8 @@ class MotionRecord:
     (rate 0 there). ``scale`` multiplies the values (e.g. ``math.pi / 180`` for an
     angle in degrees); ``t_shift`` [s] is added to the record's times (to start a
     run later in the record, give the run's start time and the record's times
-    unchanged)."""
+    unchanged). The spline is :class:`fluid.motion.Tabulated`'s displacement record
+    (:attr:`signal`), the one interpolation of tabulated motion in the code."""
 
     def __init__(self, t, value, scale: float = 1.0, t_shift: float = 0.0):
         t = np.asarray(t, float)
@@ -209,8 +209,8 @@ class MotionRecord:
                              f"follows t={t[i]!r} s")
         self.t = t + float(t_shift)
         self.value = v
-        self._spline = CubicSpline(self.t, v)
-        self._rate = self._spline.derivative()
+        #: the record as a displacement signal (C2 cubic spline, held outside the record)
+        self.signal = Tabulated(self.t, v, "displacement")
 
     @classmethod
     def from_file(cls, path, column: int = 1, scale: float = 1.0, t_shift: float = 0.0) -> "MotionRecord":
@@ -235,8 +235,8 @@ class MotionRecord:
         return cls(a[:, 0], a[:, 1], scale, t_shift)
 
     def __call__(self, t):
-        t = np.asarray(t, float)
-        tc = np.clip(t, self.t[0], self.t[-1])
-        inside = (t >= self.t[0]) & (t <= self.t[-1])
-        v, r = self._spline(tc), np.where(inside, self._rate(tc), 0.0)
-        return (float(v), float(r)) if v.ndim == 0 else (v, r)
+        if np.ndim(t) == 0:
+            v, r, _ = self.signal.state(float(t))
+            return v, r
+        v, r, _ = self.signal.sample(t)
+        return v, r
