@@ -76,7 +76,7 @@ from numba import njit, prange, uint64
 from cosim.errors import InputError
 
 from fluid.kernels import grad_scale, grad_shape, w_value
-from fluid.neighbours import cell_coords, row_range, row_range_trimmed
+from fluid.neighbours import XBINS, cell_coords, row_range, row_range_binned, x_bins
 
 _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 
@@ -193,7 +193,7 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool):
     of its cache key)."""
 
     @njit(parallel=True, **_OPTS)
-    def pair_loop(S, n, start, lo, inv_cell, nx, ny, nz, reach, prm, out, acc, xs):
+    def pair_loop(S, n, start, tab, lo, cell, nx, ny, nz, prm, out, acc, xs):
         h = prm[P_H]
         ad = prm[P_AD]
         ddt = prm[P_DDT]
@@ -209,8 +209,9 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool):
         eta2 = 0.01 * h * h
         R2 = 4.0 * h * h
         ih = 1.0 / h
-        dys = 2 * reach + 1 if three else 1
-        xrow = S[X]  # sorted by x along each row of cells (fluid.neighbours.sort_by_cell)
+        inv_cell = 1.0 / cell
+        inv_w = XBINS / cell
+        dys = 3 if three else 1
         for a in prange(n):
             xa = S[X, a]
             ya = S[Y, a]
@@ -236,14 +237,14 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool):
             wy = 0.0
             wz = 0.0
             vmax = 0.0
-            for dz in range(-reach, reach + 1):
+            for dz in range(-1, 2):
                 for k in range(dys):
-                    dy = k - reach if three else 0
-                    # the particles of the row within 2h in x, the range rounded up to
-                    # a multiple of PAD within the row: what it adds lies farther than
-                    # 2h, where every term below is exactly zero, and the loop rarely
-                    # runs a scalar tail
-                    j0, j1 = row_range_trimmed(xa, 2.0 * h, xrow, cx, cy, cz, dy, dz, nx, ny, nz, start, reach, PAD)
+                    dy = k - 1 if three else 0
+                    # the particles of the row that can lie within 2h, the range
+                    # rounded up to a multiple of PAD within the row: what it adds lies
+                    # farther than 2h, where every term below is exactly zero, and the
+                    # loop rarely runs a scalar tail
+                    j0, j1 = row_range_binned(xa, 2.0 * h, lo[0], inv_w, cy, cz, dy, dz, nx, ny, nz, start, tab, PAD)
                     for b in range(uint64(j0), uint64(j1)):
                         rx = xa - S[X, b]
                         rz = za - S[Z, b]
@@ -301,7 +302,7 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool):
                             wy -= wgt * vy
                             wz -= wgt * vz
             out[DRHO, a] = Fc * (sd - ddt * fa * sdd)
-            out[VISC, a] = h * vmax ** 0.125
+            out[VISC, a] = h * math.sqrt(math.sqrt(math.sqrt(vmax)))  # not ** 0.125: see interact
             if laminar:
                 sx += nu4 * lx
                 sy += nu4 * ly
@@ -326,7 +327,7 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool):
 _LOOPS = {}
 
 
-def interact(S, start, lo, inv_cell, nx, ny, nz, reach, kernel, prm, out, acc, xs):
+def interact(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, out, acc, xs):
     """One pass over all pairs of the ``n = acc.shape[0]`` particles; writes, for every
     particle a:
 
@@ -336,22 +337,27 @@ def interact(S, start, lo, inv_cell, nx, ny, nz, reach, kernel, prm, out, acc, x
     ~ max_b |h v_ab.r_ab / (r_ab^2 + eta^2)| over the support for the time step
     (001_14936b82710365b2.txt Eq. 14) and, if ``prm[P_XSPH] > 0``, the XSPH velocity
     correction ``xs[a]`` [m/s] (fluid only; zero for boundary particles). Particles must
-    be sorted by cell (``start`` from :func:`fluid.neighbours.sort_by_cell`); ``S`` comes
-    from :func:`pack`; ``lo`` has 3 components (x, y, z; y = 0 and ``ny = 1`` in 2-D).
+    be sorted by cell (``start`` and the sub-bin table ``tab`` from
+    :func:`fluid.neighbours.sort_by_cell` or :func:`fluid.neighbours.x_bins`, cells ``cell``
+    = 2h [m] wide); ``S`` comes from :func:`pack`; ``lo`` has 3 components (x, y, z; y = 0
+    and ``ny = 1`` in 2-D).
 
     How the inner loop is kept vectorised (it compiles to packed AVX-512 instructions,
-    8 pairs per pass, about 50 instructions with one ``vsqrtpd`` and one ``vdivpd``; 1.8
+    8 pairs per pass, about 50 instructions with one ``vsqrtpd`` and one ``vdivpd``; 2.3
     times less CPU time than the loop it replaced, which had all of this but the first
-    four points: 3.1 against 5.5 ms for the 22 008 particles of the 2-D reference case of
-    benchmarks/fluid_throughput.py, one thread):
+    four points and the last: 2.4 against 5.5 ms for the 22 008 particles of the 2-D
+    reference case of benchmarks/fluid_throughput.py, one thread):
 
     * it is compiled per kernel, dimension and optional term (:func:`_make_interact`):
       no branch in it, and no cost for a term switched off;
     * each neighbour range (a row of 3 cells, 2h wide each, sorted by x) is trimmed to
-      the particles within 2h in x and rounded up to a multiple of :data:`PAD` particles
-      within its row (:func:`fluid.neighbours.row_range_trimmed`), so that it runs
-      entirely in the vector body (the ranges hold about 16 particles in 2-D; scalar
-      tails were a third of the time) over a third fewer pairs;
+      the particles within 2h in x, to within a sixteenth of a cell, by two look-ups in
+      the sub-bin table of the cell list (``tab``, :func:`fluid.neighbours.order_cells_by_x`;
+      a binary search per bound, mispredicted branches, cost a fifth of the loop), and
+      rounded up to a multiple of :data:`PAD` particles within its row
+      (:func:`fluid.neighbours.row_range_binned`), so that it runs entirely in the vector
+      body (the ranges hold about 16 particles in 2-D; scalar tails were a third of the
+      time) over a third fewer pairs;
     * one division per pair: ``1/((r^2+eta^2)(rho_a+rho_b))`` gives both reciprocals, and
       constant factors (the kernel's normalisation, ``alpha h``, ``nu``) are applied once
       per particle, after the loop: the loop is bound by the throughput of its
@@ -365,13 +371,14 @@ def interact(S, start, lo, inv_cell, nx, ny, nz, reach, kernel, prm, out, acc, x
       measured 2.8 times slower): the largest viscous term ``max_b |mu_ab|`` of Eq. 14 is taken as
       the 8-norm ``(sum_b mu_ab^8)^(1/8)`` over the pairs within 2h, an upper bound within
       a factor ``N_b^(1/8)`` (< 1.6 for 40 neighbours, and close to 1 when one pair
-      dominates): a slightly conservative step.
+      dominates): a slightly conservative step. Its 8th root is three square roots:
+      ``** 0.125`` called ``pow`` for every particle, 12 % of the loop.
     """
     key = (int(kernel), bool(ny > 1), bool(prm[P_NU4] > 0.0), bool(prm[P_XSPH] > 0.0))
     loop = _LOOPS.get(key)
     if loop is None:
         loop = _LOOPS[key] = _make_interact(*key)
-    loop(S, acc.shape[0], start, lo, inv_cell, nx, ny, nz, reach, prm, out, acc, xs)
+    loop(S, acc.shape[0], start, tab, lo, cell, nx, ny, nz, prm, out, acc, xs)
 
 
 class Workspace:
@@ -388,6 +395,7 @@ class Workspace:
         return a
 
 
+
 class Rates(NamedTuple):
     """What :func:`evaluate` returns; every array in the particles' current order."""
 
@@ -399,10 +407,11 @@ class Rates(NamedTuple):
 
 
 def evaluate(pos, vel, rho, mass, kind, start, grid, kernel: int, prm, rho0: float, c0: float,
-             gamma: float, p, work: Workspace | None = None) -> Rates:
+             gamma: float, p, work: Workspace | None = None, xbins: np.ndarray | None = None) -> Rates:
     """EOS and all pair rates of particles sorted by cell on ``grid``. Writes the pressure
     into ``p`` [Pa]. With a ``work`` space the returned arrays are its own and are
-    overwritten by the next call with it."""
+    overwritten by the next call with it. ``xbins``: the sub-bin table that
+    ``sort_by_cell(pos, grid, xbins)`` filled with ``start`` (tabulated here if not given)."""
     n, dim = pos.shape
     work = Workspace() if work is None else work
     S = work.get("S", (N_ROWS, n))
@@ -420,7 +429,8 @@ def evaluate(pos, vel, rho, mass, kind, start, grid, kernel: int, prm, rho0: flo
     if grid.reach != 1 or abs(grid.cell - 2.0 * prm[P_H]) > 1e-12 * grid.cell:
         raise InputError(f"the pair loop needs a grid of cells 2h = {2.0 * prm[P_H]} m wide with reach 1, got "
                          f"cell {grid.cell} m, reach {grid.reach}: Grid.covering(lo, hi, 2 * h)")
-    interact(S, start, lo, 1.0 / grid.cell, nx, ny, nz, grid.reach, kernel, prm, out, acc, xs)
+    tab = x_bins(S[X], start, grid) if xbins is None else xbins
+    interact(S, start, tab, lo, grid.cell, nx, ny, nz, kernel, prm, out, acc, xs)
     return Rates(out[DRHO], acc, out[VISC], S[CS], xs if xsph else None)
 
 

@@ -18,23 +18,20 @@ from cosim.errors import InputError
 
 
 @njit(parallel=True, cache=True)
-def _take1(a, perm, out):
+def _gather(perm, f2, f1, kind, group, ids, o2, o1, okind, ogroup, oids):
+    """Every array of a particle set (and its companions) gathered by ``perm`` in one
+    parallel pass: ``f2`` a tuple of (N, dim) float arrays, ``f1`` of (N,) float arrays."""
+    dim = f2[0].shape[1]
     for i in prange(perm.shape[0]):
-        out[i] = a[perm[i]]
-
-
-@njit(parallel=True, cache=True)
-def _take2(a, perm, out):
-    for i in prange(perm.shape[0]):
-        for k in range(a.shape[1]):
-            out[i, k] = a[perm[i], k]
-
-
-def take(a: np.ndarray, perm: np.ndarray) -> np.ndarray:
-    """``a[perm]`` along the first axis (1-D or 2-D arrays), a parallel gather."""
-    out = np.empty((perm.shape[0],) + a.shape[1:], a.dtype)
-    (_take1 if a.ndim == 1 else _take2)(a, perm, out)
-    return out
+        j = perm[i]
+        for t in range(len(f2)):
+            for k in range(dim):
+                o2[t][i, k] = f2[t][j, k]
+        for t in range(len(f1)):
+            o1[t][i] = f1[t][j]
+        okind[i] = kind[j]
+        ogroup[i] = group[j]
+        oids[i] = ids[j]
 
 
 class Kind(IntEnum):
@@ -137,10 +134,27 @@ class ParticleSet:
         if (self.group[fl] != -1).any() or (self.group[~fl] < 0).any():
             raise InputError("fluid particles must have group -1 and boundary particles a group >= 0")
 
-    def permute(self, perm: np.ndarray) -> None:
-        """Reorder every array by ``perm`` (new[i] = old[perm[i]]), in parallel."""
-        for f in self.FIELDS:
-            setattr(self, f, take(getattr(self, f), perm))
+    def permute(self, perm: np.ndarray, *extra: np.ndarray) -> list[np.ndarray]:
+        """Reorder every array by ``perm`` (new[i] = old[perm[i]]), and the float arrays
+        ``extra`` (each (N,) or (N, dim), e.g. an integrator's saved state) with them;
+        returns the reordered ``extra``. One parallel pass for all (11 separate gathers
+        cost twice as much, mostly in starting parallel regions)."""
+        f2 = [self.pos, self.vel] + [a for a in extra if a.ndim == 2]
+        f1 = [self.rho, self.mass, self.p] + [a for a in extra if a.ndim == 1]
+        m = perm.shape[0]
+        o2 = [np.empty((m, a.shape[1])) for a in f2]
+        o1 = [np.empty(m) for _ in f1]
+        okind = np.empty(m, self.kind.dtype)
+        ogroup = np.empty(m, self.group.dtype)
+        oids = np.empty(m, self.ids.dtype)
+        _gather(perm, tuple(np.ascontiguousarray(a, np.float64) for a in f2),
+                tuple(np.ascontiguousarray(a, np.float64) for a in f1),
+                self.kind, self.group, self.ids, tuple(o2), tuple(o1), okind, ogroup, oids)
+        self.pos, self.vel = o2[0], o2[1]
+        self.rho, self.mass, self.p = o1[0], o1[1], o1[2]
+        self.kind, self.group, self.ids = okind, ogroup, oids
+        it2, it1 = iter(o2[2:]), iter(o1[3:])
+        return [next(it2) if a.ndim == 2 else next(it1) for a in extra]
 
     def select(self, mask: np.ndarray) -> "ParticleSet":
         """A new set with the particles where ``mask`` is true."""

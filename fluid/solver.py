@@ -21,8 +21,8 @@ from fluid import equations as eq
 from fluid import mls
 from fluid.integrator import StepLimit, corrector, first_non_finite, predictor, stable_dt, verlet
 from fluid.kernels import alpha_d, kernel_id
-from fluid.neighbours import Grid, sort_by_cell
-from fluid.particles import Kind, ParticleSet, take
+from fluid.neighbours import Grid, sort_by_cell, x_bin_array, x_bins
+from fluid.particles import Kind, ParticleSet
 
 log = logging.getLogger(__name__)
 
@@ -227,6 +227,7 @@ class Fluid:
                               c.rho0, c.speed_of_sound, c.gravity, nu=c.nu, xsph=c.xsph_eps)
         self._grid = None
         self._work = eq.Workspace()
+        self._xbins = None  # the cell list's sub-bin table (fluid.neighbours.order_cells_by_x)
         self._limit: StepLimit | None = None
         #: boundary particles were placed since the rates were taken (set_particle_motion)
         self._stale = False
@@ -328,7 +329,7 @@ class Fluid:
         # the rates travel with the state: the next step starts from them even when
         # boundary particles were placed since (see set_particle_motion), so a restored
         # run continues exactly as the original did
-        rates = (self._drho, self._acc, self._cs, self._xsph, self._start)
+        rates = (self._drho, self._acc, self._cs, self._xsph, self._start, self._xbins)
         return {"ps": self.ps.copy(), "t": self.t, "steps": self.counters.steps,
                 "removed": dict(self.counters.removed),
                 "aux": {k: v.copy() for k, v in self._aux.items()},  # Verlet's n-1 state
@@ -346,7 +347,12 @@ class Fluid:
             self._stale = False
             return
         *arrays, self._limit, self._stale = state["rates"]
-        self._drho, self._acc, self._cs, self._xsph, self._start = (None if a is None else a.copy() for a in arrays)
+        if len(arrays) == 5:  # saved before the cell list had its sub-bin table
+            arrays.append(None)
+        self._drho, self._acc, self._cs, self._xsph, self._start, self._xbins = (
+            None if a is None else a.copy() for a in arrays)
+        if self._xbins is None:
+            self._xbins = x_bins(self.ps.pos[:, 0], self._start, self._grid)
 
     # ------------------------------------------------------------------ outputs
     def group_loads(self):
@@ -536,7 +542,9 @@ class Fluid:
     def _sort(self):
         """Sort particles (and the saved n state) by cell; remove those outside the domain."""
         ps = self.ps
-        perm, start, outside = sort_by_cell(ps.pos, self._grid)
+        if self._xbins is None:
+            self._xbins = x_bin_array(self._grid)
+        perm, start, outside, self._xbins = sort_by_cell(ps.pos, self._grid, self._xbins)
         n = ps.n - outside
         if outside:
             gone = perm[n:]
@@ -552,9 +560,8 @@ class Fluid:
             perm = perm[:n]
             if not (ps.kind[perm] == Kind.FLUID).any():
                 raise InstabilityError(f"fluid: every fluid particle has left the domain by t={self.t:.6g} s")
-        ps.permute(perm)
-        for k in self._aux:
-            self._aux[k] = take(self._aux[k], perm)
+        keys = list(self._aux)
+        self._aux = dict(zip(keys, ps.permute(perm, *(self._aux[k] for k in keys))))
         self._start = start
 
     def _rates(self):
@@ -565,7 +572,7 @@ class Fluid:
             self.boundary_correction(ps, self._start, self._grid)
         self._drho, self._acc, visc, self._cs, self._xsph = eq.evaluate(
             ps.pos, ps.vel, ps.rho, ps.mass, ps.kind, self._start, self._grid, self._kernel,
-            self._prm, c.rho0, c.speed_of_sound, c.gamma, ps.p, self._work)
+            self._prm, c.rho0, c.speed_of_sound, c.gamma, ps.p, self._work, self._xbins)
         self._limit = stable_dt(self._acc, visc, self._cs, ps.kind, c.h, c.cfl, c.dt_max, c.nu)
         self._stale = False
 
