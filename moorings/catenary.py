@@ -523,6 +523,9 @@ def shape(X: float, h: float, L: float, w: float, EA: float | None = None, n: in
     """Coordinates of the line, anchor to fairlead, at ``n`` points evenly spaced
     in unstretched arc length: returns ``(s, x, z)`` [m] with the anchor at
     (0, 0). Raises :class:`~cosim.errors.TautLineError` for a taut inextensible line.
+    A resting line (``X <= L - h``) hangs vertically below the fairlead and lies on the
+    seabed from the anchor to below the fairlead, its slack spread evenly along the bed
+    (points closer than their arc length: no tension).
 
     Uses the closed-form profile of the solved line (seed 004 Eq. 28-29 on the
     suspended part; Jonkman 2007 Eq. 4-3/4-4 with the elastic terms).
@@ -548,8 +551,12 @@ def shape(X: float, h: float, L: float, w: float, EA: float | None = None, n: in
     if H > 0.0:
         x = x + (H / w) * (np.arcsinh(Vs / H) - np.arcsinh(V0 / H)) + H * sus / ea
         z = (np.hypot(H, Vs) - math.hypot(H, V0)) / w + (V0 * sus + 0.5 * w * sus**2) / ea
-    else:  # resting: the hanging part is vertical
+    else:  # resting: the hanging part is vertical, above the fairlead's X
         z = sus + 0.5 * w * sus**2 / ea
+        # the bed part (length lb >= X, no tension) is slack: its particles are spread
+        # evenly over [0, X] (a line resting with its excess bunched along the bed), so
+        # the drawn line ends at the fairlead (before, the hanging part stood at x = lb)
+        x = np.where(on_bed, s * (X / lb if lb > 0 else 0.0), float(X))
     return s, x, z
 
 

@@ -171,3 +171,19 @@ def test_seabed_friction_decelerates_a_sliding_line_at_mu_g():
     assert np.abs(c.v).max() < 1e-3  # stopped (after 1/(mu g) = 0.34 s)
     # stopping distance v0^2 / (2 mu g)
     assert c.x[0, 0] == pytest.approx(1.0 / (2 * mu_f * g), rel=0.01)
+
+
+def test_a_resting_line_starts_at_rest():
+    """The main example's line (L = 0.9 m, 5 N/m, EA = 1e5 N, fairlead 0.6 m from the
+    anchor and 0.25 m up: X < L - h, part of it slack on the bed), fairlead held: over the
+    first 0.1 s the fairlead tension stays near the catenary's w h = 1.25 N (measured
+    1.26-1.36 N; it started at 4.9 kN when the quasi-static shape put the hanging part at
+    x = L - h, past the fairlead)."""
+    line = MooringLine((0.5, 0.0), 0.9, 5.0, EA=1e5, mass_per_length=5.0 / 9.81 + 1000 * math.pi * 0.01**2 / 4)
+    m = SPHCableMooring([line], fairleads=[[1.1, 0.25]], n_particles=20)
+    m.initialize(0.0)
+    T = []
+    for _ in range(100):
+        m.advance(m.t, 1e-3)
+        T.append(m.fairlead_tensions()[0])
+    assert min(T) > 0.9 * 1.25 and max(T) < 1.15 * 1.25

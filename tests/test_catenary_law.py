@@ -303,3 +303,19 @@ def test_bad_input_in_arrays_names_the_line():
         solve(5.0, H1, L, W1)
     with pytest.raises(InputError, match="broadcast"):
         solve(np.ones(3), H1, np.ones(4), W1)
+
+
+def test_shape_of_a_resting_line_ends_at_the_fairlead():
+    """X <= L - h: the line hangs vertically below the fairlead and its slack lies on the
+    bed between anchor and fairlead (the hanging part used to stand at x = L - h, beyond
+    the fairlead, which started an SPH cable with its last segment stretched 45 %)."""
+    X, h, L, w = 0.6, 0.25, 0.9, 5.0
+    for EA in (None, 1e5):
+        r = solve(X, h, L, w, EA)
+        assert r.state == RESTING
+        s, x, z = shape(X, h, L, w, EA, n=20)
+        assert math.hypot(x[-1] - X, z[-1] - h) < 1e-12 and (x[0], z[0]) == (0.0, 0.0)
+        hanging = s > r.touchdown
+        assert np.all(x[hanging] == X) and np.all(z[~hanging] == 0.0)
+        assert np.all(np.diff(x) >= 0) and np.all(np.diff(x[~hanging]) < np.diff(s[~hanging]))  # slack on the bed
+        np.testing.assert_allclose(np.diff(z[hanging]), np.diff(s[hanging]), rtol=1e-4)  # hanging at its length
