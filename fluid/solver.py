@@ -273,7 +273,10 @@ class Fluid:
                              "enlarge domain_lo/domain_hi")
         self.t = float(t0)
         self._place_prescribed(self.t)
-        self._aux = {k: getattr(self.ps, k).copy() for k in ("pos", "vel", "rho")}
+        # the integrator's saved state: the n state of the predictor-corrector, Verlet's
+        # n-1 velocity and density (sorted with the particles every step: keep no more)
+        saved = ("vel", "rho") if self.config.integrator == "verlet" else ("pos", "vel", "rho")
+        self._aux = {k: getattr(self.ps, k).copy() for k in saved}
         self._sort()
         self._rates()
         self._check_finite()
@@ -597,7 +600,8 @@ class Fluid:
 
     def _raise_non_finite(self, i: int):
         ps = self.ps
-        where = ps.pos[i] if np.isfinite(ps.pos[i]).all() else self._aux["pos"][i]
+        prev = self._aux.get("pos")  # the start of the step (predictor-corrector only)
+        where = ps.pos[i] if np.isfinite(ps.pos[i]).all() or prev is None else prev[i]
         raise InstabilityError(
             f"fluid: non-finite state at step {self.counters.steps}, t={self.t:.9g} s: particle id "
             f"{int(ps.ids[i])} (kind {Kind(int(ps.kind[i])).name}) at {np.array2string(where, precision=5)} m "
