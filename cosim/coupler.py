@@ -478,11 +478,13 @@ class Coupler:
         return "; " + "; ".join(parts)
 
     def write_checkpoint(self, path) -> None:
-        """Write :meth:`save_state` to a file (pickle: read it back only from sources you trust)."""
+        """Write :meth:`save_state` to a file, with the ledger of the steps so far (pickle:
+        read it back only from sources you trust)."""
         import pickle
 
         with open(path, "wb") as f:
-            pickle.dump({"format": "cosim-checkpoint-1", "state": self.save_state()}, f)
+            pickle.dump({"format": "cosim-checkpoint-1", "state": self.save_state(),
+                         "ledger": self.ledger.arrays()}, f)
 
     def read_checkpoint(self, path) -> None:
         """Continue from a file written by :meth:`write_checkpoint`, into a coupler set
@@ -497,6 +499,8 @@ class Coupler:
         if not isinstance(blob, dict) or blob.get("format") != "cosim-checkpoint-1":
             raise InputError(f"{str(path)!r} is not a checkpoint written by Coupler.write_checkpoint")
         self.load_state(blob["state"])
+        if "ledger" in blob:  # the steps before the checkpoint, so that the ledger is whole
+            self.ledger.restore(blob["ledger"])
 
     def run(self, t_end: float, callback: Callable[[StepInfo], Any] | None = None,
             progress: bool | None = None) -> int:

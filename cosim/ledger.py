@@ -38,6 +38,18 @@ class Ledger:
         for rows in self._rows.values():
             del rows[n:]
 
+    def restore(self, arrays: dict[str, np.ndarray]) -> None:
+        """Hold exactly the steps of ``arrays`` (from :meth:`arrays` of a ledger of the same
+        bodies), e.g. read back with a checkpoint file."""
+        n_b = len(self.body_names)
+        for f in FIELDS:
+            a = np.asarray(arrays[f], dtype=float)
+            if a.ndim != 3 or a.shape[1:] != (n_b, 3) or len(a) != len(arrays["t"]):
+                raise InputError(f"ledger field {f!r} has shape {a.shape}; expected ({len(arrays['t'])}, {n_b}, 3) "
+                                 f"for the bodies {self.body_names}")
+        self._t = [float(t) for t in arrays["t"]]
+        self._rows = {f: [np.array(r, dtype=float) for r in np.asarray(arrays[f])] for f in FIELDS}
+
     def arrays(self) -> dict[str, np.ndarray]:
         """``t`` (n_steps,) and each field as (n_steps, n_bodies, 3)."""
         n_b = len(self.body_names)

@@ -223,6 +223,7 @@ def test_checkpoint_restart_of_sph_body_and_catenary_is_bitwise(tmp_path):
     c.write_checkpoint(path)
     c.run(0.04)
     ref_kin, ref_pos = b.kinematics(), c.fluid.fluid.ps.pos.copy()
+    ref_ledger = c.ledger.arrays()
     ref_fl = c.moorings[0].mooring.fairlead_forces().copy()
     assert np.abs(ref_fl).max() > 0.1  # N: the line pulls
     c.load_state(cp)
@@ -239,6 +240,10 @@ def test_checkpoint_restart_of_sph_body_and_catenary_is_bitwise(tmp_path):
         np.testing.assert_array_equal(a, r)
     np.testing.assert_array_equal(fresh.fluid.fluid.ps.pos, ref_pos)
     np.testing.assert_array_equal(fresh.moorings[0].mooring.fairlead_forces(), ref_fl)
+    # the ledger of the restarted run holds the steps before the checkpoint too
+    assert len(ref_ledger["t"]) == fresh.steps
+    for k, v in fresh.ledger.arrays().items():
+        np.testing.assert_array_equal(v, ref_ledger[k])
     path.write_bytes(b"not a checkpoint")
     with pytest.raises(InputError, match="is not a checkpoint written by Coupler.write_checkpoint"):
         fresh.read_checkpoint(path)
