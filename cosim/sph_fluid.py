@@ -151,7 +151,10 @@ class SPHFluid:
             self.fluid.boundary_correction = self._mdbc
 
     def _inside_bodies(self, geoms, kin) -> np.ndarray:
-        """Fluid points whose cell (half a spacing around them) reaches into a body."""
+        """Fluid points whose cell (half a spacing around them) reaches into a body. A
+        face on a lattice plane leaves the cells beside it alone: the test allows for
+        round-off, and for a mesh for MuJoCo's float32 vertices (and the geom position it
+        derives from them), 4 float32 epsilons of the mesh's reach from the body origin."""
         fp = self._fluid_points
         x3 = fp if self.config.dim == 3 else np.stack([fp[:, 0], np.zeros(len(fp)), fp[:, 1]], axis=1)
         inside = np.zeros(len(fp), bool)
@@ -159,7 +162,11 @@ class SPHFluid:
             pb = (x3 - kin.origin[k]) @ kin.rotation[k]  # body frame: R^T (x - origin)
             for g in shapes:
                 pg = (pb - g.pos) @ g.rot  # geom frame
-                inside |= signed_distance(g.kind, np.asarray(g.size, float), pg, g.mesh) < 0.5 * self.config.dx * (1 - 1e-9)
+                tol = 0.5e-9 * self.config.dx
+                if g.kind == "mesh":
+                    reach = float(np.linalg.norm(g.pos)) + float(np.abs(g.mesh[0]).max())
+                    tol += 4 * float(np.finfo(np.float32).eps) * reach
+                inside |= signed_distance(g.kind, np.asarray(g.size, float), pg, g.mesh) < 0.5 * self.config.dx - tol
         return inside
 
     def _to_dim(self, v3):

@@ -95,3 +95,21 @@ def test_a_body_fewer_than_two_particles_across_is_refused_before_any_work():
     plate = builders.scene(builders.box("plate", (0.1, 0.005, 0.1), (0, 0, 0), density=2000.0))
     with pytest.raises(InputError, match=r"body 'plate' geom 0 \(box\) is 0\.005 m across along its y axis"):
         f3.check_body_resolution(MujocoBodies(plate))
+
+
+def test_a_mesh_box_displaces_the_fluid_of_the_box_geom():
+    """A box given as a mesh (MuJoCo's float32 vertices) on lattice planes takes the same
+    fluid cells as the box geom (none beside its faces) and the same boundary particles."""
+    verts = "0 -0.08 0  0.4 -0.08 0  0.4 0.08 0  0 0.08 0  0 -0.08 0.2  0.4 -0.08 0.2  0.4 0.08 0.2  0 0.08 0.2"
+    geom = {"mesh": '<geom type="mesh" mesh="m" mass="1"/>',
+            "box": '<geom type="box" size="0.2 0.08 0.1" pos="0.2 0 0.1" mass="1"/>'}
+    got = {}
+    for kind, g in geom.items():
+        b = MujocoBodies(f'<mujoco><asset><mesh name="m" vertex="{verts}"/></asset><worldbody>'
+                         f'<body name="b" pos="0.32 0 0.12"><freejoint/>{g}</body></worldbody></mujoco>')
+        f = SPHFluid(FluidConfig(dim=3, dx=0.04, u_max=1.0),
+                     block(np.array([0.0, -0.2, 0.0]), np.array([1.0, 0.2, 0.4]), 0.04), z_surface=0.4)
+        f.attach_bodies(b)
+        got[kind] = (f.removed_overlap, f._pb[np.lexsort(f._pb.T)])
+    assert got["mesh"][0] == got["box"][0] == 10 * 4 * 5  # the box's 0.4 x 0.16 x 0.2 m in 4 cm cells
+    np.testing.assert_allclose(got["mesh"][1], got["box"][1], atol=1e-6)
