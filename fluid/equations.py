@@ -36,7 +36,12 @@ Equations
   ``dv_a/dt = -sum_b m_b (P_a/rho_a^2 + P_b/rho_b^2 + Pi_ab) grad_a W_ab + g``.
 * Artificial viscosity, 001_14936b82710365b2.txt Eq. 6 (Monaghan 1992):
   ``Pi_ab = -alpha cbar_ab mu_ab / rhobar_ab`` if ``v_ab . r_ab < 0`` else 0,
-  ``mu_ab = h v_ab . r_ab / (r_ab^2 + eta^2)``, ``eta^2 = 0.01 h^2``.
+  ``mu_ab = h v_ab . r_ab / (r_ab^2 + eta^2)``, ``eta^2 = 0.01 h^2``. Between a fluid and
+  a boundary particle alpha is multiplied by ``alpha_wall`` (default 1; DualSPHysics'
+  ViscoBoundFactor): the viscosity acts on the wall as a friction far stronger than
+  water's (``nu ~ alpha h c0 / 8``, some 100 times water's at a centimetre's
+  resolution), which damps waves running over a bed; 0 makes the walls slip, as in the
+  DualSPHysics set-up of the floating box in waves (seed 004 §4.1).
 * Laminar viscosity (optional, ``nu > 0``; off by default), the form of Lo & Shao (2002,
   Appl. Ocean Res. 24) that DualSPHysics uses for "Laminar" viscosity (named in
   004_1657bd4a51d29840.txt §2.3 after Eq. 6; Morris et al. 1997):
@@ -81,13 +86,13 @@ from fluid.neighbours import XBINS, cell_coords, row_range, row_range_binned, x_
 _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 
 #: indices into the float parameter vector ``prm`` of :func:`interact`
-P_H, P_AD, P_ALPHA, P_DDT, P_HYDRO, P_RHO0, P_C0, P_G, P_NU4, P_XSPH = 0, 1, 2, 3, 4, 5, 6, 7, 10, 11
-N_PRM = 12
+P_H, P_AD, P_ALPHA, P_DDT, P_HYDRO, P_RHO0, P_C0, P_G, P_NU4, P_XSPH, P_AWALL = 0, 1, 2, 3, 4, 5, 6, 7, 10, 11, 12
+N_PRM = 13
 
 DIFFUSION = ("fourtakas", "molteni", "none")
 
 
-def params(h, ad, alpha, delta, diffusion, rho0, c0, g, nu=0.0, xsph=0.0) -> np.ndarray:
+def params(h, ad, alpha, delta, diffusion, rho0, c0, g, nu=0.0, xsph=0.0, alpha_wall=1.0) -> np.ndarray:
     """Pack the parameters of :func:`interact`.
 
     h [m] smoothing length, ad [1/m^dim] kernel normalisation, alpha [-] artificial
@@ -95,7 +100,8 @@ def params(h, ad, alpha, delta, diffusion, rho0, c0, g, nu=0.0, xsph=0.0) -> np.
     :data:`DIFFUSION`, rho0 [kg/m^3], c0 [m/s], g [m/s^2] gravity vector (dim,) (the
     Fourtakas term takes its last component: gravity acts along -z, as in FluidConfig),
     nu [m^2/s] kinematic viscosity of the laminar term (0: off), xsph [-] the XSPH
-    coefficient epsilon (0: off).
+    coefficient epsilon (0: off), alpha_wall [-] the factor on alpha between fluid and
+    boundary particles (1: the same viscosity as between fluid particles).
     """
     prm = np.zeros(N_PRM)
     prm[P_H], prm[P_AD], prm[P_ALPHA] = h, ad, alpha
@@ -106,6 +112,7 @@ def params(h, ad, alpha, delta, diffusion, rho0, c0, g, nu=0.0, xsph=0.0) -> np.
     prm[P_G:P_G + g.size] = g
     prm[P_NU4] = 4.0 * nu
     prm[P_XSPH] = xsph
+    prm[P_AWALL] = alpha_wall
     return prm
 
 
@@ -185,7 +192,7 @@ def hydrostatic_density(depth, rho0: float, c0: float, gamma: float, g: float) -
     return rho0 * (1.0 + rho0 * g * np.maximum(depth, 0.0) / B) ** (1.0 / gamma)
 
 
-def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool):
+def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_visc: bool):
     """The pair loop of :func:`interact` compiled for one kernel, dimension and choice of
     optional terms. These are constants of the closure, so the kernel's branch, the unused
     y component and the terms switched off fold away at compile time and the inner loop
@@ -198,6 +205,7 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool):
         ad = prm[P_AD]
         ddt = prm[P_DDT]
         nu4 = prm[P_NU4]
+        awall = prm[P_AWALL]
         eps2 = 2.0 * prm[P_XSPH] * ad  # m_b / rhobar_ab = 2 m_b / (rho_a + rho_b); W = alpha_d w(q)
         gx = prm[P_G]
         gy = prm[P_G + 1] if three else 0.0
@@ -281,6 +289,8 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool):
                         sdd += S[VOL, b] * (rhob - rhoa - rhoH) * Fs * r2 * inv
                         # momentum (Eq. 6) with artificial viscosity (001 Eq. 6)
                         Pi = avh * (ca + S[CS, b]) * min(vr, 0.0) * d
+                        if wall_visc:  # alpha_wall alpha between fluid and boundary particles
+                            Pi *= awall + (1.0 - awall) * fa * fb
                         coef = mbF * (pa + S[PR2, b] + Pi)
                         sx -= coef * rx
                         sy -= coef * ry
@@ -374,7 +384,7 @@ def interact(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, out, acc, xs):
       dominates): a slightly conservative step. Its 8th root is three square roots:
       ``** 0.125`` called ``pow`` for every particle, 12 % of the loop.
     """
-    key = (int(kernel), bool(ny > 1), bool(prm[P_NU4] > 0.0), bool(prm[P_XSPH] > 0.0))
+    key = (int(kernel), bool(ny > 1), bool(prm[P_NU4] > 0.0), bool(prm[P_XSPH] > 0.0), bool(prm[P_AWALL] != 1.0))
     loop = _LOOPS.get(key)
     if loop is None:
         loop = _LOOPS[key] = _make_interact(*key)

@@ -81,6 +81,10 @@ class FluidConfig:
     gamma: float = 7.0
     #: artificial viscosity alpha [-] (001_14936b82710365b2.txt Eq. 6; 0.01 as in 003)
     alpha: float = 0.01
+    #: factor on alpha between fluid and boundary particles [-] (DualSPHysics'
+    #: ViscoBoundFactor; see fluid.equations): 1 the same viscosity as in the fluid, 0 walls
+    #: that slip (waves over a bed lose no energy to the wall's artificial friction)
+    alpha_wall: float = 1.0
     #: kinematic viscosity nu0 [m^2/s] of the laminar viscosity term (Lo & Shao 2002, see
     #: fluid.equations; 1e-6 for water), added to the artificial one; 0: off
     nu: float = 0.0
@@ -143,6 +147,9 @@ class FluidConfig:
             raise _bad(f"gamma={self.gamma!r}", "use a polytropic exponent >= 1 (7 for water)")
         if not num(self.alpha) or not 0 <= self.alpha <= 1:
             raise _bad(f"alpha={self.alpha!r}", "use an artificial viscosity in [0, 1] (0.01 ... 0.1 usual)")
+        if not num(self.alpha_wall) or not 0 <= self.alpha_wall <= 1:
+            raise _bad(f"alpha_wall={self.alpha_wall!r}", "give a factor in [0, 1] on alpha between fluid and walls "
+                       "(1: default, 0: slip walls)")
         if not num(self.nu) or self.nu < 0:
             raise _bad(f"nu={self.nu!r} m^2/s", "give a kinematic viscosity >= 0 (1e-6 for water; 0: off)")
         if not num(self.xsph_eps) or not 0 <= self.xsph_eps <= 1:
@@ -224,7 +231,8 @@ class Fluid:
         c = config
         self._kernel = kernel_id(c.kernel)
         self._prm = eq.params(c.h, alpha_d(self._kernel, c.dim, c.h), c.alpha, c.delta, c.diffusion,
-                              c.rho0, c.speed_of_sound, c.gravity, nu=c.nu, xsph=c.xsph_eps)
+                              c.rho0, c.speed_of_sound, c.gravity, nu=c.nu, xsph=c.xsph_eps,
+                              alpha_wall=c.alpha_wall)
         self._grid = None
         self._work = eq.Workspace()
         self._xbins = None  # the cell list's sub-bin table (fluid.neighbours.order_cells_by_x)

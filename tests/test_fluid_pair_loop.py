@@ -27,7 +27,7 @@ def kernel_terms(kernel, q, ad, h):
     return ad * 0.25 * (t2**3 - 4 * t1**3), F
 
 
-def brute_force(pos, vel, rho, mass, kind, h, kernel, alpha, delta, diffusion, g, nu, eps):
+def brute_force(pos, vel, rho, mass, kind, h, kernel, alpha, delta, diffusion, g, nu, eps, alpha_wall=1.0):
     """drho (N,), acc (N, dim), visc (N,), xsph (N, dim) summed over every pair."""
     n, dim = pos.shape
     ad = alpha_d(kernel_id(kernel), dim, h)
@@ -56,6 +56,7 @@ def brute_force(pos, vel, rho, mass, kind, h, kernel, alpha, delta, diffusion, g
     # momentum (004 Eq. 6) with Monaghan's artificial viscosity (001 Eq. 6)
     mu = h * np.minimum(vr, 0) / (r2 + eta2)
     Pi = -alpha * 0.5 * (c[:, None] + c[None, :]) * mu / (0.5 * (rho[:, None] + rho[None, :]))
+    Pi = Pi * np.where(fl[:, None] * fl[None, :] > 0, 1.0, alpha_wall)  # fluid-boundary pairs
     coef = -mb * ((p / rho**2)[:, None] + (p / rho**2)[None, :] + Pi) * F
     acc = (coef[..., None] * r).sum(1)
     # laminar viscosity (Lo & Shao 2002)
@@ -94,10 +95,11 @@ def scene(dim, seed):
 # every kernel and dimension, and the optional terms with each dimension (each variant
 # costs a few seconds of compilation on a cold cache; the ones without optional terms
 # are compiled by the other fluid tests anyway)
-@pytest.mark.parametrize("dim, kernel, nu, xsph", [
-    (2, "wendland", 0.0, 0.0), (3, "wendland", 0.0, 0.0), (2, "cubic", 0.0, 0.0), (3, "cubic", 0.0, 0.0),
-    (2, "wendland", 1e-3, 0.3), (3, "wendland", 1e-3, 0.3)])
-def test_pair_loop_equals_brute_force(dim, kernel, nu, xsph):
+@pytest.mark.parametrize("dim, kernel, nu, xsph, alpha_wall", [
+    (2, "wendland", 0.0, 0.0, 1.0), (3, "wendland", 0.0, 0.0, 1.0), (2, "cubic", 0.0, 0.0, 1.0),
+    (3, "cubic", 0.0, 0.0, 1.0), (2, "wendland", 1e-3, 0.3, 1.0), (3, "wendland", 1e-3, 0.3, 1.0),
+    (2, "wendland", 0.0, 0.0, 0.25)])
+def test_pair_loop_equals_brute_force(dim, kernel, nu, xsph, alpha_wall):
     pos, vel, rho, mass, kind, dx = scene(dim, seed=dim)
     h = math.sqrt(2) * dx if dim == 2 else 1.3 * dx
     g = np.zeros(dim)
@@ -108,12 +110,13 @@ def test_pair_loop_equals_brute_force(dim, kernel, nu, xsph):
     perm, start, out = sort_by_cell(pos, grid)
     assert out == 0
     k = kernel_id(kernel)
-    prm = eq.params(h, alpha_d(k, dim, h), alpha, delta, diffusion, RHO0, C0, g, nu=nu, xsph=xsph)
+    prm = eq.params(h, alpha_d(k, dim, h), alpha, delta, diffusion, RHO0, C0, g, nu=nu, xsph=xsph,
+                    alpha_wall=alpha_wall)
     p = np.empty(len(pos))
     r = eq.evaluate(pos[perm], vel[perm], rho[perm], mass[perm], kind[perm], start, grid, k, prm,
                     RHO0, C0, GAMMA, p)
     drho, acc, visc, xs = brute_force(pos[perm], vel[perm], rho[perm], mass[perm], kind[perm], h, kernel,
-                                      alpha, delta, diffusion, g, nu, xsph)
+                                      alpha, delta, diffusion, g, nu, xsph, alpha_wall)
     assert np.abs(drho).max() > 1.0 and np.abs(acc - g * (kind[perm] == 0)[:, None]).max() > 1.0
     np.testing.assert_allclose(r.drho, drho, rtol=0, atol=1e-11 * np.abs(drho).max())
     np.testing.assert_allclose(r.acc, acc, rtol=0, atol=1e-11 * np.abs(acc).max())

@@ -24,6 +24,7 @@ from fluid.solver import Fluid, FluidConfig
     (dict(kernel="gauss"), "kernel"),
     (dict(diffusion="antuono"), "diffusion"),
     (dict(alpha=-0.1), "alpha"),
+    (dict(alpha_wall=1.5), "alpha_wall"),
     (dict(integrator="euler"), "integrator"),
     (dict(domain_lo=(0.0, 0.0)), "domain"),
 ])
