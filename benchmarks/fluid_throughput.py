@@ -25,12 +25,15 @@ timed meaningfully under that load (wall times collapse when the threads wait on
 other); at 1 thread the step is 68 % pair loop, 12 % sort, 2 % packing, 2 % time step.
 Laminar viscosity adds 7 % to a step, XSPH 8 %, both 14 % (pair loop: 8.5, 9.5, 17 %);
 nothing when off (the loop is compiled without them).
+``--walls adami`` (tank-wall densities from the fluid's pressure, fluid.wall_density):
+see the cost measured in that module's docstring.
 
     .venv/bin/python benchmarks/fluid_throughput.py                 # default sizes, warm numba cache
     .venv/bin/python benchmarks/fluid_throughput.py --cold          # compile from scratch (empty cache)
     .venv/bin/python benchmarks/fluid_throughput.py --case 2d --dp 0.01 --steps 200 --threads 2
     .venv/bin/python benchmarks/fluid_throughput.py --case 2d --dp 0.01 --dp 0.005 --dp 0.0025 --steps 20  # scaling
     .venv/bin/python benchmarks/fluid_throughput.py --case 2d --dp 0.01 --threads 1 --nu 1e-6 --xsph 0.1  # optional terms
+    .venv/bin/python benchmarks/fluid_throughput.py --case 2d --dp 0.01 --threads 1 --walls adami  # tank walls
 """
 
 from __future__ import annotations
@@ -48,7 +51,8 @@ _here = os.path.dirname(os.path.abspath(__file__))
 sys.path[:] = [p for p in sys.path if os.path.abspath(p or os.curdir) != _here]
 
 
-def build(case: str, dp: float, integrator: str = "verlet", nu: float = 0.0, xsph_eps: float = 0.0):
+def build(case: str, dp: float, integrator: str = "verlet", nu: float = 0.0, xsph_eps: float = 0.0,
+          wall_model: str = "dbc"):
     import numpy as np
 
     from fluid.geometry import assemble, block, set_hydrostatic, tank_walls
@@ -67,17 +71,18 @@ def build(case: str, dp: float, integrator: str = "verlet", nu: float = 0.0, xsp
     walls = tank_walls(inner_lo, inner_hi, dp, layers=2)
     b = assemble(len(inner_lo), dp, 1000.0, col, [(walls, Kind.FIXED_WALL, 0)])
     cfg = FluidConfig(dim=len(inner_lo), dx=dp, c0=20 * math.sqrt(g * H), alpha=0.02, delta=0.1,
-                      diffusion="fourtakas", cfl=0.2, integrator=integrator, nu=nu, xsph_eps=xsph_eps,
+                      diffusion="fourtakas", cfl=0.2, integrator=integrator, nu=nu, xsph_eps=xsph_eps, walls=wall_model,
                       domain_lo=tuple(inner_lo - 0.1), domain_hi=tuple(inner_hi + 0.5))
     set_hydrostatic(b.particles, H, 1000.0, cfg.speed_of_sound, cfg.gamma, g)
     return cfg, b.particles
 
 
-def run(case: str, dp: float, steps: int, integrator: str = "verlet", nu: float = 0.0, xsph_eps: float = 0.0) -> dict:
+def run(case: str, dp: float, steps: int, integrator: str = "verlet", nu: float = 0.0, xsph_eps: float = 0.0,
+        walls: str = "dbc") -> dict:
     from fluid.particles import Kind
     from fluid.solver import Fluid
 
-    cfg, ps = build(case, dp, integrator, nu, xsph_eps)
+    cfg, ps = build(case, dp, integrator, nu, xsph_eps, walls)
     t0 = time.perf_counter()
     f = Fluid(cfg, ps)
     f.initialize(0.0)
@@ -103,7 +108,7 @@ def run(case: str, dp: float, steps: int, integrator: str = "verlet", nu: float 
         "ms_per_step": round(per_step * 1e3, 3),
         "particle_steps_per_s": round(n * steps / wall),
         "pair_loops_per_s": round((2 if integrator == "symplectic" else 1) * n * steps / wall),
-        "integrator": integrator, "nu": nu, "xsph_eps": xsph_eps,
+        "integrator": integrator, "nu": nu, "xsph_eps": xsph_eps, "walls": walls,
         "particle_steps_per_cpu_s": round(n * steps / cpu),
         "cpu_s_per_wall_s": round(cpu / wall, 2),  # < threads: the machine is shared
         "bytes_per_particle": round(mem / n),
@@ -121,6 +126,8 @@ def main(argv=None):
     ap.add_argument("--integrator", choices=["verlet", "symplectic"], default="verlet")
     ap.add_argument("--nu", type=float, default=0.0, help="laminar viscosity [m^2/s] (0: off, as the reference case)")
     ap.add_argument("--xsph", type=float, default=0.0, help="XSPH epsilon [-] (0: off, as the reference case)")
+    ap.add_argument("--walls", choices=["dbc", "adami"], default="dbc",
+                    help="tank-wall densities (FluidConfig.walls; dbc: the reference case)")
     a = ap.parse_args(argv)
     if a.cold:
         os.environ["NUMBA_CACHE_DIR"] = tempfile.mkdtemp(prefix="numba_cold_")
@@ -134,7 +141,7 @@ def main(argv=None):
     cases = ["2d", "3d"] if a.case == "all" else [a.case]
     for c in cases:
         for dp in sizes[c]:
-            r = run(c, dp, a.steps, a.integrator, a.nu, a.xsph)
+            r = run(c, dp, a.steps, a.integrator, a.nu, a.xsph, a.walls)
             r["load_avg_1min"] = round(os.getloadavg()[0], 2)  # other work on the machine
             print(" ".join(f"{k}={v}" for k, v in r.items()))
             sys.stdout.flush()

@@ -37,6 +37,18 @@ from fluid.solver import Fluid, FluidConfig
 log = logging.getLogger(__name__)
 
 
+class _Both:
+    """Two ``Fluid.boundary_correction`` hooks in turn (the tank walls' and the bodies'
+    mDBC: they set the densities of different particles from the fluid's)."""
+
+    def __init__(self, first, second):
+        self.first, self.second = first, second
+
+    def __call__(self, ps, start, grid) -> None:
+        self.first(ps, start, grid)
+        self.second(ps, start, grid)
+
+
 class SPHFluid:
     """An SPH fluid that loads MuJoCo bodies.
 
@@ -60,7 +72,7 @@ class SPHFluid:
         against the geometric surface, so a body displaces its own volume) or
         ``"dbc"`` (plain dynamic boundaries, seed 004 §2.6: the fluid stands off by
         a gap of order h and a floating body rides high by a fraction of dx).
-        The tank walls stay plain dynamic boundaries.
+        The tank walls follow ``config.walls`` (``fluid.solver.FluidConfig``).
     """
 
     def __init__(self, config: FluidConfig, fluid_points, walls=(), *, z_surface: float | None = None,
@@ -148,7 +160,8 @@ class SPHFluid:
                 self._ghost_b[owner == k] = ghost_offsets(geoms[k], pb[owner == k], c.dim)
             self._mdbc = MDBC(c.dim, c.h, c.rho0, c.kernel, int(ps.ids.max()) + 1)
             self._set_ghosts(kin)
-            self.fluid.boundary_correction = self._mdbc
+            walls = self.fluid.boundary_correction  # the tank walls' own (FluidConfig.walls), if any
+            self.fluid.boundary_correction = self._mdbc if walls is None else _Both(walls, self._mdbc)
 
     def _inside_bodies(self, geoms, kin) -> np.ndarray:
         """Fluid points whose cell (half a spacing around them) reaches into a body. A

@@ -53,6 +53,10 @@ def _sum_groups(pos, mass, acc, group, centre, F, M):
             M[g, 2] += rx * fy - ry * fx
 
 
+#: tank-wall density treatments of FluidConfig.walls
+WALLS = ("dbc", "adami")
+
+
 def _bad(what: str, fix: str):
     return InputError(f"FluidConfig: {what}; {fix}")
 
@@ -119,6 +123,11 @@ class FluidConfig:
     #: MLS density re-initialisation every ``mls_every`` steps [steps]; 0: never
     #: (001_14936b82710365b2.txt Eq. 9-12 uses 30; see fluid.mls)
     mls_every: int = 0
+    #: density of the tank walls (FIXED_WALL and MOVING_WALL particles): "dbc" (plain
+    #: dynamic boundaries, 004_1657bd4a51d29840.txt §2.6: the continuity equation) or
+    #: "adami" (the fluid's pressure carried to each wall particle, Adami, Hu & Adams 2012,
+    #: J. Comput. Phys. 231, Eq. 27; see fluid.wall_density). BODY particles are not affected
+    walls: str = "dbc"
     #: participant name
     name: str = "fluid"
 
@@ -170,6 +179,8 @@ class FluidConfig:
             raise _bad(f"dt_max={self.dt_max!r} s", "give a positive upper bound or math.inf")
         if not isinstance(self.mls_every, int) or isinstance(self.mls_every, bool) or self.mls_every < 0:
             raise _bad(f"mls_every={self.mls_every!r}", "give a number of steps >= 0 (0: off; 30 in 001 §2)")
+        if self.walls not in WALLS:
+            raise _bad(f"walls={self.walls!r}", f"choose one of {WALLS}")
         if self.threads is not None and (not isinstance(self.threads, int) or self.threads < 1):
             raise _bad(f"threads={self.threads!r}", "give a positive number of threads or None")
         if (self.domain_lo is None) != (self.domain_hi is None):
@@ -246,6 +257,11 @@ class Fluid:
         #: set boundary-particle densities (e.g. ``fluid.boundary_correction.MDBC``); None: plain
         #: dynamic boundaries
         self.boundary_correction = None
+        #: time [s] the prescribed groups were last placed at (the stage of the rates)
+        self._t_placed = math.nan
+        if c.walls == "adami":
+            from fluid.wall_density import AdamiWalls
+            self.boundary_correction = AdamiWalls(self)
 
     # ------------------------------------------------------------------ protocol
     def _threads(self) -> int:
@@ -435,6 +451,7 @@ class Fluid:
     def _place_prescribed(self, t: float) -> None:
         """Place every prescribed group at time ``t`` [s]."""
         ps = self.ps
+        self._t_placed = t
         for group, (motion, ids, ref) in self._motions.items():
             sel = np.flatnonzero(ps.group == group)
             sel = sel[np.argsort(ps.ids[sel])]
@@ -446,6 +463,24 @@ class Fluid:
                                        f"positions or velocities at t={t:.9g} s")
             ps.pos[sel] = pos
             ps.vel[sel] = vel
+
+    def prescribed_acceleration(self, eps: float = 1e-6):
+        """Acceleration [m/s^2] (N, dim) of every particle (current order) at the time the
+        prescribed groups were last placed: the central difference of each motion's velocity
+        over ``+-eps`` [s] about it; zero for the other particles. None when no group has a
+        prescribed motion."""
+        if not self._motions or math.isnan(self._t_placed):
+            return None
+        ps, t = self.ps, self._t_placed
+        acc = np.zeros((ps.n, self.config.dim))
+        for group, (motion, ids, ref) in self._motions.items():
+            sel = np.flatnonzero(ps.group == group)
+            sel = sel[np.argsort(ps.ids[sel])]
+            keep = np.isin(ids, ps.ids[sel], assume_unique=True) if sel.size != ids.size else slice(None)
+            v1 = np.asarray(motion(t + eps, ref)[1])[keep]
+            v0 = np.asarray(motion(t - eps, ref)[1])[keep]
+            acc[sel] = (v1 - v0) / (2.0 * eps)
+        return acc
 
     def set_particle_motion(self, ids, pos, vel) -> None:
         """Place boundary particles given by their ids: positions [m] and velocities
