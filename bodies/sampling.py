@@ -176,15 +176,19 @@ def _axis_grid(half: float, dx: float) -> np.ndarray:
 def particles_across(g: GeomShape, dx: float, dim: int = 3):
     """The geom's axes that :func:`sample_geoms` lays its lattice along (in 2-D the two in
     the section plane, the axis along the body's y left out), the geom's extent along
-    each [m] (its bounding box) and the number of lattice particles across it there,
-    ``max(1, round(extent / dx))`` as :func:`sample_geoms` lays them."""
-    half = half_extents(g.kind, np.asarray(g.size, dtype=float), g.mesh)
+    each [m] (its bounding box; a mesh's own, which need not be centred on the geom
+    origin) and the number of particles across it there, ``max(1, round(extent /
+    dx))``, what :func:`sample_geoms` lays across a box of that extent."""
+    if g.kind == "mesh":  # its own bounding box (not centred on the geom origin)
+        full = np.ptp(np.asarray(g.mesh[0], dtype=float), axis=0)
+    else:
+        full = 2.0 * half_extents(g.kind, np.asarray(g.size, dtype=float))
     axes = np.arange(3)
     if dim == 2:
         along_y = np.flatnonzero(np.isclose(np.abs(np.asarray(g.rot)[1]), 1.0))
         if along_y.size == 1:
             axes = axes[axes != along_y[0]]
-    extent = 2.0 * half[axes]
+    extent = full[axes]
     return axes, extent, np.maximum(1, np.round(extent / dx).astype(int))
 
 

@@ -95,6 +95,11 @@ def test_a_body_fewer_than_two_particles_across_is_refused_before_any_work():
     plate = builders.scene(builders.box("plate", (0.1, 0.005, 0.1), (0, 0, 0), density=2000.0))
     with pytest.raises(InputError, match=r"body 'plate' geom 0 \(box\) is 0\.005 m across along its y axis"):
         f3.check_body_resolution(MujocoBodies(plate))
+    wedge = ("0 0 0  0.1 0 0  0 0.1 0  0 0 0.005  0.1 0 0.005  0 0.1 0.005")  # a triangular plate, as a mesh
+    with pytest.raises(InputError, match=r"body 'w' geom 0 \(mesh\) is 0\.005 m across along its . axis, 1 particle"):
+        f3.check_body_resolution(MujocoBodies(f'<mujoco><asset><mesh name="m" vertex="{wedge}"/></asset><worldbody>'
+                                              f'<body name="w"><freejoint/><geom type="mesh" mesh="m" mass="1"/>'
+                                              f'</body></worldbody></mujoco>'))
 
 
 def test_a_mesh_box_displaces_the_fluid_of_the_box_geom():
