@@ -267,7 +267,10 @@ def ghost_offsets(geoms, points: np.ndarray, dim: int = 3) -> np.ndarray:
     lies deepest in (exact for one geom and for geoms that do not overlap). A box
     reflects the particle across every face at the least depth, so that particles
     on a corner diagonal mirror through the corner; other shapes mirror along the
-    gradient of the signed distance (radial for spheres, cylinders, capsules)."""
+    gradient of the signed distance (radial for spheres, cylinders, capsules; for a
+    mesh the nearest face's normal, and on a tie between faces, e.g. a particle on the
+    diagonal of a mesh box's edge or corner, their bisector: mirrored 2 d along it, where
+    a box geom mirrors it through the edge or corner, 2 sqrt(2) d or 2 sqrt(3) d)."""
     points = np.asarray(points, float)
     best = np.full(len(points), np.inf)
     out = np.zeros((len(points), 3))

@@ -7,7 +7,7 @@ import pytest
 
 from bodies import builders
 from bodies.mujoco_bodies import MujocoBodies
-from bodies.sampling import GeomShape, place, sample_geoms, signed_distance
+from bodies.sampling import GeomShape, ghost_offsets, place, sample_geoms, signed_distance
 from cosim.errors import InputError
 from fluid.analytic import geom_volume
 
@@ -159,3 +159,23 @@ def test_an_open_or_misoriented_mesh_is_refused():
     g = GeomShape("mesh", None, np.zeros(3), I3, (np.eye(4, 3), np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 3, 2]])))
     with pytest.raises(InputError, match="not consistently oriented"):
         sample_geoms([g], 0.1, 2)
+
+
+def test_mesh_ghosts_mirror_across_the_nearest_face_and_bisect_ties():
+    """mDBC ghost nodes of a mesh box: across the nearest face as the box geom's; on an
+    edge's or a corner's diagonal along the bisector, 2 d from the particle (the box geom
+    mirrors through the edge or corner instead; see ghost_offsets)."""
+    b = MujocoBodies(_mesh_scene(BOX_CORNERS))
+    mesh, box = b.geoms()[0], b.geoms()[1]
+    p, owner = b.boundary_particles(0.02, 3)
+    pm = p[owner == 0]
+    gm, gb = ghost_offsets(mesh, pm), ghost_offsets(box, pm)
+    depth = -signed_distance("box", box[0].size, pm - box[0].pos)
+    q = np.sort(box[0].size - np.abs(pm - box[0].pos), axis=1)  # depths below the three faces, nearest first
+    one = q[:, 1] - q[:, 0] > 1e-6  # a single nearest face (ties to float32 round-off of the vertices)
+    np.testing.assert_allclose(gm[one], gb[one], atol=1e-6)
+    np.testing.assert_allclose(np.linalg.norm(gm, axis=1), 2 * depth, atol=1e-6)
+    tie = ~one
+    assert tie.sum() > 0
+    np.testing.assert_allclose(np.abs(gm[tie]).max(axis=1), 2 * depth[tie] / np.sqrt(2 + (q[tie, 2] - q[tie, 0] < 1e-6)),
+                               rtol=0.01)  # the finite-difference gradient splits float32-broken ties unevenly
