@@ -16,8 +16,14 @@ Equations
 
   - ``"molteni"``: Molteni & Colagrossi (2009), ``rho^H = 0``; this is
     000_7d114ab96e048b26.txt Eq. 1-2 without the renormalised density gradients of
-    Eq. 3-4 (Antuono et al.), which would cost a second pair loop and a matrix inversion
-    per particle.
+    Eq. 3-4.
+  - ``"antuono"``: delta-SPH of Antuono et al. (2010), 000_7d114ab96e048b26.txt Eq. 1-4:
+    ``rho^H_ba = (<grad rho>_a + <grad rho>_b) . r_ba / 2`` with the renormalised
+    gradients of :func:`density_gradients`, so that the term vanishes for any linear
+    density field whatever the particle arrangement (Fourtakas' only for the hydrostatic
+    one at the reference state); both factors carry ``r^2 / (r^2 + eta^2)``, so the
+    cancellation is exact pair by pair. It costs a second pair loop for the gradients
+    and 24 bytes per particle.
   - ``"fourtakas"`` (default): Fourtakas et al. (2019, Comput. Fluids 190), as DualSPHysics'
     DDT2: the hydrostatic part of the density difference is removed,
     ``rho^H_ba = rho0 [(1 + rho0 g.(r_b - r_a)/B)^(1/gamma) - 1]``. We use it linearised
@@ -86,10 +92,11 @@ from fluid.neighbours import XBINS, cell_coords, row_range, row_range_binned, x_
 _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 
 #: indices into the float parameter vector ``prm`` of :func:`interact`
-P_H, P_AD, P_ALPHA, P_DDT, P_HYDRO, P_RHO0, P_C0, P_G, P_NU4, P_XSPH, P_AWALL = 0, 1, 2, 3, 4, 5, 6, 7, 10, 11, 12
-N_PRM = 13
+P_H, P_AD, P_ALPHA, P_DDT, P_HYDRO, P_RHO0, P_C0, P_G, P_NU4, P_XSPH, P_AWALL, P_RENORM = \
+    0, 1, 2, 3, 4, 5, 6, 7, 10, 11, 12, 13
+N_PRM = 14
 
-DIFFUSION = ("fourtakas", "molteni", "none")
+DIFFUSION = ("fourtakas", "antuono", "molteni", "none")
 
 
 def params(h, ad, alpha, delta, diffusion, rho0, c0, g, nu=0.0, xsph=0.0, alpha_wall=1.0) -> np.ndarray:
@@ -107,6 +114,7 @@ def params(h, ad, alpha, delta, diffusion, rho0, c0, g, nu=0.0, xsph=0.0, alpha_
     prm[P_H], prm[P_AD], prm[P_ALPHA] = h, ad, alpha
     prm[P_DDT] = 0.0 if diffusion == "none" else 2.0 * delta * h * c0
     prm[P_HYDRO] = 1.0 if diffusion == "fourtakas" else 0.0
+    prm[P_RENORM] = 1.0 if diffusion == "antuono" else 0.0
     prm[P_RHO0], prm[P_C0] = rho0, c0
     g = np.asarray(g, np.float64)
     prm[P_G:P_G + g.size] = g
@@ -192,7 +200,7 @@ def hydrostatic_density(depth, rho0: float, c0: float, gamma: float, g: float) -
     return rho0 * (1.0 + rho0 * g * np.maximum(depth, 0.0) / B) ** (1.0 / gamma)
 
 
-def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_visc: bool):
+def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_visc: bool, renorm: bool):
     """The pair loop of :func:`interact` compiled for one kernel, dimension and choice of
     optional terms. These are constants of the closure, so the kernel's branch, the unused
     y component and the terms switched off fold away at compile time and the inner loop
@@ -200,7 +208,7 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
     of its cache key)."""
 
     @njit(parallel=True, **_OPTS)
-    def pair_loop(S, n, start, tab, lo, cell, nx, ny, nz, prm, out, acc, xs):
+    def pair_loop(S, n, start, tab, lo, cell, nx, ny, nz, prm, out, acc, xs, G):
         h = prm[P_H]
         ad = prm[P_AD]
         ddt = prm[P_DDT]
@@ -232,6 +240,10 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
             ka = S[KAP, a]
             fa = S[ISF, a]
             ca = S[CS, a]
+            if renorm:
+                gxa = G[0, a]
+                gya = G[1, a]
+                gza = G[2, a]
             cx, cy, cz = cell_coords(xa, ya, za, lo, inv_cell, True, nx, ny, nz)  # packed rows: always x, y, z
             sd = 0.0
             sdd = 0.0
@@ -297,7 +309,12 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
                         # density diffusion, fluid-fluid pairs (VOL is zero for boundary
                         # particles, fa applied after the loop):
                         # psi_ab . grad W = -2 (rho_b - rho_a - rho^H_ba) F r^2/(r^2+eta^2)
-                        rhoH = hgz * (ka + S[KAP, b]) * rz
+                        if renorm:  # seed 000 Eq. 2: minus the mean renormalised gradient
+                            rhoH = -0.5 * ((gxa + G[0, b]) * rx + (gza + G[2, b]) * rz)
+                            if three:
+                                rhoH -= 0.5 * (gya + G[1, b]) * ry
+                        else:
+                            rhoH = hgz * (ka + S[KAP, b]) * rz
                         sdd += S[VOL, b] * (rhob - rhoa - rhoH) * Fs * r2 * inv
                         # momentum (Eq. 6) with artificial viscosity (001 Eq. 6)
                         Pi = avh * (ca + S[CS, b]) * min(vr, 0.0) * d
@@ -346,10 +363,123 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
     return pair_loop
 
 
+#: |det| of the renormalisation matrix of :func:`density_gradients`, relative to the
+#: cube (square in 2-D) of its mean diagonal, below which the hydrostatic gradient is
+#: used instead (a particle at the free surface or with few fluid neighbours)
+DET_MIN = 1e-3
+
+
+def _make_gradient(kernel: int, three: bool):
+    """The renormalised density gradient loop of :func:`density_gradients` compiled for
+    one kernel and dimension."""
+
+    @njit(parallel=True, **_OPTS)
+    def gradient_loop(S, n, start, tab, lo, cell, nx, ny, nz, prm, G):
+        h = prm[P_H]
+        gx = prm[P_G]
+        gy = prm[P_G + 1] if three else 0.0
+        gz = prm[P_G + 2] if three else prm[P_G + 1]
+        ih = 1.0 / h
+        inv_cell = 1.0 / cell
+        inv_w = XBINS / cell
+        dys = 3 if three else 1
+        for a in prange(n):
+            if S[ISF, a] == 0.0:  # boundary particles take no diffusion
+                G[0, a] = 0.0
+                G[1, a] = 0.0
+                G[2, a] = 0.0
+                continue
+            xa = S[X, a]
+            ya = S[Y, a]
+            za = S[Z, a]
+            rhoa = S[RHO, a]
+            cx, cy, cz = cell_coords(xa, ya, za, lo, inv_cell, True, nx, ny, nz)
+            mxx = 0.0
+            mxy = 0.0
+            mxz = 0.0
+            myy = 0.0
+            myz = 0.0
+            mzz = 0.0
+            bx = 0.0
+            by = 0.0
+            bz = 0.0
+            for dz in range(-1, 2):
+                for k in range(dys):
+                    dy = k - 1 if three else 0
+                    j0, j1 = row_range_binned(xa, 2.0 * h, lo[0], inv_w, cy, cz, dy, dz, nx, ny, nz, start, tab, PAD)
+                    for b in range(uint64(j0), uint64(j1)):
+                        rx = xa - S[X, b]
+                        rz = za - S[Z, b]
+                        ry = ya - S[Y, b] if three else 0.0
+                        q = math.sqrt(rx * rx + ry * ry + rz * rz) * ih
+                        w = S[VOL, b] * grad_shape(kernel, q)  # fluid neighbours only (VOL = 0 on walls)
+                        d = (S[RHO, b] - rhoa) * w
+                        mxx += w * rx * rx
+                        mxz += w * rx * rz
+                        mzz += w * rz * rz
+                        bx += d * rx
+                        bz += d * rz
+                        if three:
+                            mxy += w * rx * ry
+                            myy += w * ry * ry
+                            myz += w * ry * rz
+                            by += d * ry
+            # G = -M^-1 b (the kernel's constant factor cancels); exact for linear fields
+            if three:
+                c00 = myy * mzz - myz * myz
+                c01 = mxz * myz - mxy * mzz
+                c02 = mxy * myz - mxz * myy
+                det = mxx * c00 + mxy * c01 + mxz * c02
+                scale = (mxx + myy + mzz) / 3.0
+                ok = abs(det) > DET_MIN * abs(scale) ** 3
+            else:
+                det = mxx * mzz - mxz * mxz
+                scale = 0.5 * (mxx + mzz)
+                ok = abs(det) > DET_MIN * scale * scale
+            if ok:
+                if three:
+                    c11 = mxx * mzz - mxz * mxz
+                    c12 = mxy * mxz - mxx * myz
+                    c22 = mxx * myy - mxy * mxy
+                    G[0, a] = -(c00 * bx + c01 * by + c02 * bz) / det
+                    G[1, a] = -(c01 * bx + c11 * by + c12 * bz) / det
+                    G[2, a] = -(c02 * bx + c12 * by + c22 * bz) / det
+                else:
+                    G[0, a] = -(mzz * bx - mxz * bz) / det
+                    G[1, a] = 0.0
+                    G[2, a] = -(mxx * bz - mxz * bx) / det
+            else:  # the hydrostatic gradient rho g / c^2
+                ka = S[KAP, a]
+                G[0, a] = ka * gx
+                G[1, a] = ka * gy
+                G[2, a] = ka * gz
+
+    return gradient_loop
+
+
+_GRADIENTS = {}
+
+
+def density_gradients(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, G) -> None:
+    """The renormalised density gradient ``G[:, a]`` [kg/m^4] (rows x, y, z; y = 0 in 2-D)
+    of every fluid particle a, 000_7d114ab96e048b26.txt Eq. 3-4:
+    ``<grad rho>_a = L_a sum_b V_b (rho_b - rho_a) grad_a W_ab`` with
+    ``L_a = [sum_b V_b r_ba (x) grad_a W_ab]^-1`` over the fluid neighbours (the seed prints
+    ``r_ab``, which gives the gradient's negative with ``grad_a W_ab``; with ``r_ba = r_b -
+    r_a`` it reproduces any linear field exactly). Where ``L_a`` is near singular (|det| of
+    its inverse below :data:`DET_MIN` of the mean diagonal's power), the hydrostatic
+    gradient ``rho_a g / c_a^2``; 0 on boundary particles. Arguments as :func:`interact`."""
+    key = (int(kernel), bool(ny > 1))
+    loop = _GRADIENTS.get(key)
+    if loop is None:
+        loop = _GRADIENTS[key] = _make_gradient(*key)
+    loop(S, G.shape[1], start, tab, lo, cell, nx, ny, nz, prm, G)
+
+
 _LOOPS = {}
 
 
-def interact(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, out, acc, xs):
+def interact(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, out, acc, xs, G):
     """One pass over all pairs of the ``n = acc.shape[0]`` particles; writes, for every
     particle a:
 
@@ -396,11 +526,16 @@ def interact(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, out, acc, xs):
       dominates): a slightly conservative step. Its 8th root is three square roots:
       ``** 0.125`` called ``pow`` for every particle, 12 % of the loop.
     """
-    key = (int(kernel), bool(ny > 1), bool(prm[P_NU4] > 0.0), bool(prm[P_XSPH] > 0.0), bool(prm[P_AWALL] != 1.0))
+    renorm = bool(prm[P_RENORM] > 0.0)
+    key = (int(kernel), bool(ny > 1), bool(prm[P_NU4] > 0.0), bool(prm[P_XSPH] > 0.0), bool(prm[P_AWALL] != 1.0),
+           renorm)
     loop = _LOOPS.get(key)
     if loop is None:
         loop = _LOOPS[key] = _make_interact(*key)
-    loop(S, acc.shape[0], start, tab, lo, cell, nx, ny, nz, prm, out, acc, xs)
+    if renorm and G.shape != (3, acc.shape[0]):
+        raise InputError(f"interact: the renormalised diffusion needs the density gradients G (3, {acc.shape[0]}), "
+                         f"got {G.shape}: density_gradients(...)")
+    loop(S, acc.shape[0], start, tab, lo, cell, nx, ny, nz, prm, out, acc, xs, G)
 
 
 class Workspace:
@@ -452,7 +587,12 @@ def evaluate(pos, vel, rho, mass, kind, start, grid, kernel: int, prm, rho0: flo
         raise InputError(f"the pair loop needs a grid of cells 2h = {2.0 * prm[P_H]} m wide with reach 1, got "
                          f"cell {grid.cell} m, reach {grid.reach}: Grid.covering(lo, hi, 2 * h)")
     tab = x_bins(S[X], start, grid) if xbins is None else xbins
-    interact(S, start, tab, lo, grid.cell, nx, ny, nz, kernel, prm, out, acc, xs)
+    if prm[P_RENORM] > 0.0:
+        G = work.get("grad", (3, n))
+        density_gradients(S, start, tab, lo, grid.cell, nx, ny, nz, kernel, prm, G)
+    else:
+        G = work.get("grad0", (3, 0))
+    interact(S, start, tab, lo, grid.cell, nx, ny, nz, kernel, prm, out, acc, xs, G)
     return Rates(out[DRHO], acc, out[VISC], S[CS], xs if xsph else None)
 
 

@@ -95,7 +95,8 @@ class FluidConfig:
     #: XSPH coefficient epsilon [-] in [0, 1] (Monaghan 1989; 003_7c74773681ee080c.txt uses
     #: 0.1): particles move with the velocity smoothed over their neighbours; 0: off
     xsph_eps: float = 0.0
-    #: density diffusion: "fourtakas" (default, see fluid.equations), "molteni" or "none"
+    #: density diffusion: "fourtakas" (default), "antuono" (renormalised, exact for linear
+    #: fields; a second pair loop), "molteni" or "none": see fluid.equations
     diffusion: str = "fourtakas"
     #: density diffusion coefficient delta [-] (000_7d114ab96e048b26.txt Eq. 1 uses 0.1)
     delta: float = 0.1

@@ -113,6 +113,30 @@ def test_fourtakas_diffusion_vanishes_at_the_free_surface_where_molteni_does_not
     assert np.abs(d_f).max() < 1e-3 * np.abs(d_m[top]).mean()
 
 
+@pytest.mark.parametrize("dim", [2, 3])
+def test_antuono_diffusion_vanishes_for_any_linear_density_field_where_the_others_do_not(dim):
+    """000_7d114ab96e048b26.txt Eq. 1-4 on a disordered set at rest under gravity, with a
+    density field linear in every direction (not the hydrostatic one): the renormalised
+    gradients are exact, so the diffusion vanishes to round-off wherever the
+    renormalisation holds (here: every particle with a full support); Molteni's term
+    does not, nor Fourtakas' (which removes only the hydrostatic gradient)."""
+    rng = np.random.default_rng(7)
+    dx = 0.01
+    pos = block(np.zeros(dim), np.full(dim, 0.1), dx)
+    pos = pos + rng.uniform(-0.2 * dx, 0.2 * dx, pos.shape)
+    slope = np.array([3.0, -2.0, 5.0])[-dim:]  # [kg/m^4]
+    rho = RHO0 + pos @ slope
+    g = np.zeros(dim)
+    g[-1] = -9.81
+    kw = dict(dx=dx, h_coef=1.3 if dim == 3 else math.sqrt(2), delta=0.1, g=g)
+    d = {k: rates(pos, np.zeros_like(pos), rho, diffusion=k, **kw)[0] for k in ("antuono", "molteni", "fourtakas")}
+    inner = (np.abs(pos - pos.mean(0)) < np.ptp(pos, axis=0) / 2 - 3 * dx).all(axis=1)
+    assert inner.sum() >= 8
+    plain = min(np.abs(d["molteni"][inner]).mean(), np.abs(d["fourtakas"][inner]).mean())
+    assert plain > 0.1  # [kg/m^3/s]
+    assert np.abs(d["antuono"][inner]).max() < 1e-9 * plain
+
+
 def test_artificial_viscosity_acts_only_on_approaching_pairs():
     dx = 0.01
     pos = np.array([[0.0, 0.0], [0.012, 0.0]])

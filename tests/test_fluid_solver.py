@@ -22,7 +22,7 @@ from fluid.solver import Fluid, FluidConfig
     (dict(dx=-0.01), "dx"),
     (dict(dim=4), "dim"),
     (dict(kernel="gauss"), "kernel"),
-    (dict(diffusion="antuono"), "diffusion"),
+    (dict(diffusion="adami"), "diffusion"),
     (dict(alpha=-0.1), "alpha"),
     (dict(alpha_wall=1.5), "alpha_wall"),
     (dict(integrator="euler"), "integrator"),
