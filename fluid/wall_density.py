@@ -59,7 +59,8 @@ Measured (NUMBA_NUM_THREADS=1; "dbc" -> "adami"; quick variants of the validatio
 * sloshing-spheric10 quick: passes either way; first swing peak ratio 1.054 -> 1.073,
   lag -0.043 s both.
 * hydrostatic (2-D quick, dx = 0.02 m, 2 s): pressure RMS 0.76 % -> 0.84 %, but the
-  largest speed 5.7e-4 -> 4.2e-3 sqrt(g H): fails the 1e-3 limit. hydrostatic-3d quick
+  largest speed 5.7e-4 -> 4.2e-3 sqrt(g H): fails the 1e-3 limit (full, dx = 0.01 m,
+  3 s: RMS 0.65 % -> 0.68 %, speed 2.2e-4 -> 1.3e-3: still fails). hydrostatic-3d quick
   (failing with "dbc" too): RMS 1.6 % -> 2.3 %, speed 5.9e-3 -> 9.7e-3.
 
 Cost: 0.14 ms of CPU per rate evaluation for the 2008 wall particles of the 2-D dam

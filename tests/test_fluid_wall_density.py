@@ -154,3 +154,13 @@ def test_sloshing_wall_pressure_follows_linear_theory():
     k = math.pi / L
     theory = np.cosh(k * (h - depth)) / math.cosh(k * h)
     np.testing.assert_allclose(slope, theory, atol=0.05)
+
+
+@pytest.mark.xfail(strict=True, reason="the free-surface corners move with walls='adami': largest speed "
+                   "4.2e-3 sqrt(g H) (dx = 0.02 m) and 1.3e-3 (0.01 m) against 1e-3; fluid.wall_density, "
+                   "'Why the hydrostatic tank moves'")
+def test_hydrostatic_quick_with_adami_walls():
+    from cosim.validations.fluid import run_hydrostatic
+
+    m = run_hydrostatic(2, dx=0.02, t_end=2.0, walls="adami")["metrics"]
+    assert m["p_rms_err_time_avg"] < 0.01 and m["max_speed_over_sqrt_gH"] < 1e-3

@@ -646,16 +646,19 @@ def sloshing_frequency(quick: bool) -> dict:
     +5.3 %), the sensor depth (0.1, 0.2, 0.3 m: +4.6, +4.5, +4.6 %) or the wave amplitude
     (eta = 1 mm ... 2 cm: +4.8 ... +4.4 %). Freezing the wall densities, which gave +1.0 %
     (quick) and +0.6 % (c0_factor 20), is not the physics: it also removes the wall's
-    share of the wave's pressure gradient at the first fluid column (rho g eta, which the
-    "adami" wall carries), i.e. it softens the wall, and that cancels the remaining bias
-    by chance (quick, "adami" walls frozen only within 2h of the waterline: +1.7 %, all
-    wall rows below it: +1.0 %; and freezing them breaks the hydrostatic rest state, max
-    speed 3.7e-3 sqrt(gH)). The chance goes with dx: frozen walls give +3.0 % and +2.7 %
-    at dx = 0.025 and 0.0167 m (table). So the rest lies in the fluid, most likely its own continuity
-    at the free surface and the contact line (truncated kernel, the same mechanism on
-    the fluid side); an experiment that zeroed the density rate of the top fluid row
-    moved the quick result anywhere between +4.2 % and -60 % with the threshold that
-    picked the row: inconclusive.
+    share of the wave's pressure gradient at the first fluid column (rho g eta, which
+    the "adami" wall carries), i.e. it softens the wall, and that cancels part of the
+    remaining bias by chance (quick, "adami" walls frozen only within 2h of the
+    waterline: +1.7 %, all wall rows below it: +1.0 %; and freezing them breaks the
+    hydrostatic rest state, max speed 3.7e-3 sqrt(gH)). The chance goes with dx: frozen
+    walls give +3.0 % and +2.7 % at dx = 0.025 and 0.0167 m (table). So the rest lies
+    in the fluid; the first suspect, its own continuity at the free surface and the
+    contact line (truncated kernel, the walls' mechanism on the fluid side), was not
+    confirmed by two experiments on the quick run: the fluid's continuity with a
+    first-order corrected divergence (the kernel gradient renormalised per particle,
+    which undoes the truncation at the surface) gave +4.0 % instead of +4.6 %, and
+    zeroing the density rate of the top fluid row moved the result anywhere between
+    +4.2 % and -60 % with the threshold that picked the row.
     """
     if quick:
         return run_sloshing_frequency(0.05, cycles_forced=2, cycles_free=4, c0_factor=10.0)
