@@ -658,7 +658,15 @@ def sloshing_frequency(quick: bool) -> dict:
     first-order corrected divergence (the kernel gradient renormalised per particle,
     which undoes the truncation at the surface) gave +4.0 % instead of +4.6 %, and
     zeroing the density rate of the top fluid row moved the result anywhere between
-    +4.2 % and -60 % with the threshold that picked the row.
+    +4.2 % and -60 % with the threshold that picked the row. A candidate found instead
+    (benchmarks/lattice_stiffness.py): the particle lattice under pressure has a shear
+    stiffness that the continuum lacks (the symmetric pressure term of Eq. 6 with a
+    uniform pressure is the gradient of the displaced particles' kernel sum, which is not
+    zero on a lattice for a divergence-free displacement), in proportion to the pressure
+    and independent of dx; the configuration alone, displaced by the linear mode with
+    its densities kept, is +3.2 % (dx = 0.05 m) and +4.0 % (0.025 m) stiff at the default
+    h = sqrt(2) dx, most of the residual, but -9 % at h = 1.2 dx where the run gives
+    +1.8 %: not a proof.
     """
     if quick:
         return run_sloshing_frequency(0.05, cycles_forced=2, cycles_free=4, c0_factor=10.0)
