@@ -3,7 +3,9 @@
 import numpy as np
 import pytest
 
-from fluid.neighbours import Grid, neighbour_pairs, sort_by_cell
+from cosim.errors import InstabilityError
+from fluid.neighbours import (MAX_PER_CELL, XBINS, Grid, neighbour_pairs, row_range_binned, sort_by_cell,
+                              x_bin_array, x_bins)
 
 
 def brute(pos, radius):
@@ -68,3 +70,52 @@ def test_outside_particles_are_counted_and_sorted_last():
     perm, start, outside = sort_by_cell(pos, grid)
     assert outside == 2
     assert set(perm[-2:].tolist()) == {1, 2}
+
+
+def test_sub_bin_table_and_binned_row_ranges():
+    """The sub-bin table (order_cells_by_x) gives, in every occupied cell, where each of the
+    XBINS sub-bins starts; the same from sort_by_cell and from x_bins on sorted particles;
+    a binned row range holds every particle of its row within the radius in x and adds
+    only particles beyond it (less than one sub-bin on each side, then the padding)."""
+    rng = np.random.default_rng(11)
+    pos = rng.uniform(0, 1, (3000, 2))
+    grid = Grid.covering([0, 0], [1, 1], 0.1)
+    tab = x_bin_array(grid)
+    perm, start, outside, tab = sort_by_cell(pos, grid, tab)
+    sp = pos[perm]
+    nx = grid.shape[0]
+    again = x_bins(sp[:, 0], start, grid)
+    w = grid.cell / XBINS
+    for c in range(grid.ncells):
+        s0, s1 = start[c], start[c + 1]
+        if s1 == s0:
+            continue
+        assert np.array_equal(tab[c * XBINS:(c + 1) * XBINS], again[c * XBINS:(c + 1) * XBINS])
+        sub = np.floor((sp[s0:s1, 0] - (c % nx) * grid.cell) / w).clip(0, XBINS - 1)
+        want = [np.searchsorted(sub, b) for b in range(XBINS)]  # sub-bins are sorted in a cell
+        assert tab[c * XBINS:(c + 1) * XBINS].tolist() == want
+    for i in rng.choice(len(sp), 200, replace=False):
+        x, z = sp[i]
+        cz = int(z / grid.cell)
+        for dz in (-1, 0, 1):
+            j0, j1 = row_range_binned(x, grid.cell, 0.0, XBINS / grid.cell, 0, cz, 0, dz, nx, 1, grid.shape[2],
+                                      start, tab, 8)
+            if not 0 <= cz + dz < grid.shape[2]:
+                assert j0 == j1 == 0
+                continue
+            row = slice(start[nx * (cz + dz)], start[nx * (cz + dz + 1)])
+            xr = sp[row, 0]
+            idx = np.arange(row.start, row.stop)
+            inside = idx[np.abs(xr - x) < grid.cell]
+            assert j0 <= inside.min(initial=j1) and inside.max(initial=j0 - 1) < j1
+            assert (j1 - j0) % 8 == 0 or j1 == row.stop
+            core = (idx >= j0) & (idx < j1)
+            trimmed = idx[core & (np.abs(xr - x) >= grid.cell)]  # what the range adds
+            assert (sp[trimmed[trimmed < inside.min(initial=j1)], 0] > x - grid.cell - w).all()
+
+
+def test_a_cell_too_full_for_the_sub_bin_table_stops_the_run():
+    pos = np.full((MAX_PER_CELL + 1, 2), 0.5)
+    grid = Grid.covering([0, 0], [1, 1], 0.1)
+    with pytest.raises(InstabilityError, match="collapsed"):
+        sort_by_cell(pos, grid, x_bin_array(grid))

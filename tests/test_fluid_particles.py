@@ -20,6 +20,18 @@ def test_create_defaults_and_permute():
     assert ps.kind.tolist() == kind[::-1]
 
 
+def test_permute_reorders_companion_arrays_in_the_same_pass():
+    rng = np.random.default_rng(3)
+    ps = ParticleSet.create(rng.random((50, 3)), rho=1000.0 + rng.random(50), mass=0.1)
+    old = ps.copy()
+    vel_prev, rho_prev = rng.random((50, 3)), rng.random(50)
+    perm = rng.permutation(50)[:40]  # a permutation that also drops particles
+    v, r = ps.permute(perm, vel_prev, rho_prev)
+    for f in ParticleSet.FIELDS:
+        assert np.array_equal(getattr(ps, f), getattr(old, f)[perm]), f
+    assert np.array_equal(v, vel_prev[perm]) and np.array_equal(r, rho_prev[perm])
+
+
 @pytest.mark.parametrize("bad", [
     dict(pos=np.zeros((3, 4))),
     dict(rho=-1.0),
