@@ -667,6 +667,17 @@ def sloshing_frequency(quick: bool) -> dict:
     its densities kept, is +3.2 % (dx = 0.05 m) and +4.0 % (0.025 m) stiff at the default
     h = sqrt(2) dx, most of the residual, but -9 % at h = 1.2 dx where the run gives
     +1.8 %: not a proof.
+
+    A longer kernel support with the "adami" walls meets the target (full run, dx =
+    0.025 m, ``run_sloshing_frequency(0.025, cycles_free=6, h_coef=..., walls=...)``,
+    40-60 s each on one loaded core): h = 1.2 sqrt(2) dx (DualSPHysics' usual coefh = 1.2)
+    +0.90 %, h = 2 dx +0.84 %; with plain dynamic walls +7.4 %, +6.6 %. These are not the
+    defaults because the same supports fail the hydrostatic tank at its quick resolution
+    (``run_hydrostatic(2, dx=0.02, t_end=2.0, ...)``, 10 layers: h = 1.7 dx pressure
+    1.0 / 1.1 % RMS, largest speed 8.6e-3 / 1.2e-2 sqrt(gH) with dbc / adami walls,
+    against 0.76 % and 5.7e-4 with the defaults) and cost 45-100 % more pairs: which
+    support and walls the solver should default to is open (it needs every case
+    re-measured).
     """
     if quick:
         return run_sloshing_frequency(0.05, cycles_forced=2, cycles_free=4, c0_factor=10.0)
