@@ -17,15 +17,15 @@ c0 / 8 (Monaghan 2005, 2-D; cosim.validations.waves.viscous_decay), the fitted h
 the paddle over H (the generation, without the propagation), and the wavenumber of the
 first harmonic's phase along x over the dispersion relation's.
 
-Measured at dx = 2 cm (one core of a shared machine, ~25 s a row):
+Measured at dx = 2 cm (one core of a shared machine, ~27 s a row):
 
-    flap   h 1.41 dx alpha 0.01  : 0.97 0.94 0.92 0.89 0.87 0.85 0.83  decay 0.167 /m, nu's 0.171; at paddle 1.01
+    flap   h 1.41 dx alpha 0.01  : 0.97 0.93 0.91 0.89 0.87 0.85 0.83  decay 0.167 /m, nu's 0.171; at paddle 1.01; k/k_linear 0.936
     flap   h 1.41 dx alpha 0.0018: 0.96 0.93 0.93 0.92 0.91 0.90 0.88  decay 0.081 /m, nu's 0.031; at paddle 0.97; k/k_linear 0.943
-    flap   h 1.41 dx alpha 0     : 0.93 0.93 0.93 0.94 0.92 0.92 0.90  decay 0.036 /m, nu's 0.000; at paddle 0.95
-    flap   h 1.70 dx alpha 0.0015: 0.99 0.97 0.95 0.94 0.97 0.99 0.95  decay 0.019 /m, nu's 0.031; at paddle 0.98; k/k_linear 1.014
-    piston h 1.41 dx alpha 0.01  : (max - min over one period) 1.03 at 0.4 m, 0.94 at 0.8 m, 0.91 at 1.16 m
+    flap   h 1.41 dx alpha 0     : 0.93 0.93 0.93 0.94 0.92 0.92 0.90  decay 0.035 /m, nu's 0.000; at paddle 0.95; k/k_linear 0.947
+    flap   h 1.70 dx alpha 0.01  : 1.00 0.96 0.90 0.88 0.89 0.89 0.86  decay 0.147 /m, nu's 0.205; at paddle 1.01; k/k_linear 1.009
+    flap   h 1.70 dx alpha 0.0015: 0.99 0.97 0.95 0.94 0.97 0.99 0.95  decay 0.020 /m, nu's 0.031; at paddle 0.98; k/k_linear 1.015
 
-At dx = 1 cm (``--dx 0.01``, alpha scaled to keep nu; ~150 s a row):
+At dx = 1 cm (the second and last rows with ``--dx 0.01``, ~150 s a row):
 
     flap   h 1.41 dx alpha 0.0036: 0.91 0.87 0.85 0.85 0.83 0.85 0.86  decay 0.050 /m, nu's 0.031; at paddle 0.90; k/k_linear 0.925
     flap   h 1.70 dx alpha 0.003 : 0.96 0.93 0.94 0.93 0.92 0.97 0.94  decay 0.001 /m, nu's 0.031; at paddle 0.94; k/k_linear 0.983
