@@ -128,7 +128,9 @@ def test_spheric10_first_impact():
     """dx = 6.2 mm (15 rows), to 2.7 s: the first impact against the measured record in
     its largest 20 ms mean (2.15 kPa measured), its impulse and its time (measured 0.825,
     0.912, +0.024 s; see the case's docstring). Its peak is not asserted:
-    it moves between 0.68 and 1.74 of the measured one with c0, alpha, delta and dx."""
+    it moves between 0.28 and 1.74 of the measured one with c0, alpha, delta and dx (and
+    the 20 ms mean drops to 0.64 with c0 = 56 m/s from the start: a measured fact of
+    this set-up, not a converged one)."""
     m = run_spheric10(0.0062, t_end=2.7)["metrics"]
     assert abs(m["impact1_mean20ms_ratio"] - 1) < 0.2
     assert abs(m["impact1_impulse_ratio"] - 1) < 0.2
