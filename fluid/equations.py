@@ -79,8 +79,10 @@ Equations
 from __future__ import annotations
 
 import math
+from contextlib import contextmanager
 from typing import NamedTuple
 
+import numba
 import numpy as np
 from numba import njit, prange, uint64
 
@@ -473,7 +475,24 @@ def density_gradients(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, G) -> No
     loop = _GRADIENTS.get(key)
     if loop is None:
         loop = _GRADIENTS[key] = _make_gradient(*key)
-    loop(S, G.shape[1], start, tab, lo, cell, nx, ny, nz, prm, G)
+    with _dynamic_chunks():
+        loop(S, G.shape[1], start, tab, lo, cell, nx, ny, nz, prm, G)
+
+
+#: particles per chunk of the pair loops, handed to the threads as they come free: with
+#: numba's default (one block per thread) a thread with the free surface or the walls in
+#: its block waits for the other; 2-D dam break, 2 threads: 6.9-8.4 -> 10.2-11.9 M
+#: particle-steps/s (median of 15 blocks of 30 steps, two runs each)
+PAIR_CHUNK = 256
+
+
+@contextmanager
+def _dynamic_chunks():
+    old = numba.set_parallel_chunksize(PAIR_CHUNK)
+    try:
+        yield
+    finally:
+        numba.set_parallel_chunksize(old)
 
 
 _LOOPS = {}
@@ -535,7 +554,8 @@ def interact(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, out, acc, xs, G):
     if renorm and G.shape != (3, acc.shape[0]):
         raise InputError(f"interact: the renormalised diffusion needs the density gradients G (3, {acc.shape[0]}), "
                          f"got {G.shape}: density_gradients(...)")
-    loop(S, acc.shape[0], start, tab, lo, cell, nx, ny, nz, prm, out, acc, xs, G)
+    with _dynamic_chunks():
+        loop(S, acc.shape[0], start, tab, lo, cell, nx, ny, nz, prm, out, acc, xs, G)
 
 
 class Workspace:
