@@ -15,16 +15,31 @@ The machine may be shared: ``cpu_s_per_wall_s`` below the thread count says so, 
 figure to compare between runs with ``--threads 1`` (alternate the runs being compared).
 ``--threads N`` sets NUMBA_NUM_THREADS, so that no idle worker thread spins on the CPU.
 
-Measured on this 2-core machine while other work loaded it (1-minute load 9-14), so per
-CPU-second of one thread (``--threads 1``; old = before the pair-loop rework, commit
-c63a978, alternating runs): 2-D dp = 0.01 m: 4.9 M particle-steps per CPU-s (old 2.9 M);
-3-D 107k particles: 1.39 M (old 0.88 M); the same rate from 6k to 1M particles (2-D:
-5.3, 5.1, 5.3, 5.3, 5.0 M at 6k, 22k, 84k, 328k, 1.03M): the cost per step is linear in N.
-253 bytes per particle kept between steps (2-D; 289 in 3-D). Two threads could not be
-timed meaningfully under that load (wall times collapse when the threads wait on each
-other); at 1 thread the step is 68 % pair loop, 12 % sort, 2 % packing, 2 % time step.
-Laminar viscosity adds 7 % to a step, XSPH 8 %, both 14 % (pair loop: 8.5, 9.5, 17 %);
-nothing when off (the loop is compiled without them).
+Measured on this 2-core machine, quiet (load ~1: this process), 2 threads, session 3
+(DualSPHysics 5 figures of issue 3 in brackets):
+
+    2-D dp = 0.01 m,  22 008 particles:  11.5-11.9 M particle-steps/s, 1.85-1.91 ms/step (3.2 M)
+    2-D dp = 0.005 m, 84 008 particles:  10.3-10.5 M, 8.0-8.1 ms/step                  (2.8 M)
+    3-D, 107 012 particles:               2.6-3.1 M, 35-42 ms/step                      (0.5 M)
+
+Before this session (same machine, alternating in-process blocks of 30 steps, median):
+8.9-9.2 M in 2-D at dp = 0.01 m against 11.4-11.5 M after. One thread, CPU time (the
+figure that survives a loaded machine): 2-D 6.2-6.3 M per CPU-s (4.2-5.3 M before), 3-D
+1.66 M (1.39 M); the same from 6k to 1.3M particles (5.89, 6.18, 6.04, 5.85, 5.98 M at
+6k, 22k, 84k, 328k, 1.30M): the cost per step is linear in N. 237 bytes per particle
+kept between steps in 2-D, 265 in 3-D. Cold compilation of this case: ~9 s (``--cold``).
+At 1 thread a step is 67 % pair loop, 10 % gather (one pass reorders every array), 9 %
+sort (x-order and the sub-bin table 5 %, counting sort 3 %), 5 % packing, 3 % Verlet, 1 %
+time step, 1 % NaN check. What made the difference (fluid.equations.interact,
+fluid.neighbours): row ranges by table look-up instead of binary searches, the 8-norm's
+root without ``pow``, 256-particle chunks handed to free threads (numba's default, one
+block per thread, left a thread waiting on the one with the free surface), one fused
+gather. On a machine running other work, GNU OpenMP's spinning idle threads can take the
+cores the fluid needs: ``OMP_WAIT_POLICY=PASSIVE`` then helps (2-D, 2 threads beside
+other numba jobs: 1.4-1.6 -> 3.1-3.8 M), at 10-15 % on a quiet machine, so it is not set
+for you. Laminar viscosity adds 7 % to a step, XSPH 8 %, both 14 % (pair loop: 8.5, 9.5,
+17 %); nothing when off (the loop is compiled without them); the renormalised diffusion
+(``diffusion="antuono"``) +70 % (a second pair loop).
 ``--walls adami`` (tank-wall densities from the fluid's pressure, fluid.wall_density):
 see the cost measured in that module's docstring.
 

@@ -16,7 +16,7 @@ receives exactly the impulse the water exchanged with it).
     python examples/moored_box_waves.py --light-body subiterate   # light-body remedy (default auto)
 
 Cost (measured on the 2-core machine, otherwise nearly idle): the default run takes
-43 s of wall time and 44 s of CPU (the fluid runs on one thread below 20 000
+31 s of wall time and 35 s of CPU (the fluid runs on one thread below 20 000
 particles). In the last two periods the box heaves 36 mm and surges 50 mm peak to peak (the
 waves' orbital motion: H / tanh kd = 45 mm), rolls up to 7 deg, and the fairlead
 tensions swing between 1.13 and 1.38 N. Over the first 0.2 s at dx = 3 cm the fairlead
