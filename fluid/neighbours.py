@@ -161,11 +161,16 @@ def sort_by_cell(pos: np.ndarray, grid: Grid, xbins: np.ndarray | None = None):
     outside = bin_particles(pos, grid.lo, 1.0 / grid.cell, nx, ny, nz, cell)
     perm, start = counting_sort(cell, grid.ncells)
     tab = np.empty(0, np.uint16) if xbins is None else xbins
-    over = order_cells_by_x(perm, start, pos, grid.lo[0], grid.cell, nx, tab)
+    _order_cells(perm, start, pos, grid, tab)
+    return (perm, start, outside) if xbins is None else (perm, start, outside, tab)
+
+
+def _order_cells(perm, start, pos, grid: Grid, tab) -> None:
+    """:func:`order_cells_by_x`, stopping the run if a cell is too full for its table."""
+    over = order_cells_by_x(perm, start, pos, grid.lo[0], grid.cell, grid.shape[0], tab)
     if over:
         raise InstabilityError(f"{over} cells of {grid.cell:.4g} m hold more than {MAX_PER_CELL} particles "
                                "each: particles have collapsed onto each other (an unstable run)")
-    return (perm, start, outside) if xbins is None else (perm, start, outside, tab)
 
 
 def x_bin_array(grid: Grid) -> np.ndarray:
@@ -178,9 +183,7 @@ def x_bins(xs: np.ndarray, start: np.ndarray, grid: Grid) -> np.ndarray:
     :func:`sort_by_cell` (``xs`` their x [m])."""
     tab = x_bin_array(grid)
     pos = np.ascontiguousarray(xs, np.float64).reshape(-1, 1)
-    over = order_cells_by_x(np.arange(len(xs)), start, pos, grid.lo[0], grid.cell, grid.shape[0], tab)
-    if over:
-        raise InstabilityError(f"{over} cells hold more than {MAX_PER_CELL} particles each")
+    _order_cells(np.arange(len(xs)), start, pos, grid, tab)
     return tab
 
 
