@@ -1,6 +1,6 @@
 """Lattice stiffness of the SPH fluid under pressure: a candidate for the part of the
 first sloshing mode's +4.5 % that is not in the walls (cosim.validations.sloshing,
-sloshing_frequency).
+sloshing_frequency), and the stability of the particle lattice at rest.
 
 1. Closed box. A closed 2-D box L x H = 1 x 0.5 m (3 wall layers, ``walls="adami"``) is
 filled on the lattice at a uniform pressure p0 [Pa], no gravity, and the fluid particles
@@ -52,9 +52,39 @@ h/dx the two part ways (the density response, which the motion adjusts to, is no
 the static number), so this is a candidate for the default's residual, not a proof. The density response of the box to the same displacement (the kernel-sum
 change that continuity integrates, at p0 = 0) gives +0.9 rad^2/s^2.
 
+3. Stability of the lattice (``--stability``): the same stiffness for every wavelength,
+on the infinite square (cubic) lattice, from Bloch modes (:func:`lattice_stability`). A
+mode that changes no density is held only by the pressure-borne term, and where that is
+negative the lattice under pressure is unstable: the particles rearrange, whatever the
+damping. Scan of h / dx (Wendland; "short": wavelengths of 8 dx and less, which grow
+fast; "long": longer ones, slow and opposed by gravity, walls and viscosity):
+
+=======  ============================  ============================
+h / dx   2-D short / long              3-D short / long
+=======  ============================  ============================
+1.2      unstable / unstable           unstable / unstable
+1.3      unstable / stable             unstable / unstable
+sqrt(2)  unstable (at 8 dx) / unstable stable / stable
+1.5-1.9  unstable / unstable           unstable / unstable
+2.0      stable / stable               unstable (k = (0, pi, pi)/dx,
+                                       weak) / stable
+2.2      unstable / unstable           unstable / unstable
+=======  ============================  ============================
+
+It matches the 2-D tank at rest (``run_hydrostatic(2, dx=0.01, t_end=3.0, h_coef=...)``,
+20 layers): h = 1.7 dx grows from 8e-4 to 1.7e-2 sqrt(g H) between 0.3 and 0.7 s and the
+particles move by a spacing, with or without density diffusion, with "adami" walls,
+alpha = 0.05 (later) and damped settling (:meth:`fluid.solver.Fluid.settle`) alike;
+h = 2 dx stays at rest once settled (2.6e-4 sqrt(g H)). At the default h = sqrt(2) dx
+only the long waves are (weakly) unstable: the 20-layer tank holds, the 40-layer one
+starts to move after ~0.9 s (cosim.validations.fluid, run_hydrostatic). In 3-D the
+default sqrt(2) dx is stable in the bulk, so the 3-D tank's creep by its vertical edges
+(hydrostatic_3d) is not this.
+
     .venv/bin/python benchmarks/lattice_stiffness.py
     .venv/bin/python benchmarks/lattice_stiffness.py --h-coef 1.2 --kernel cubic --dx 0.025
     .venv/bin/python benchmarks/lattice_stiffness.py --sloshing --dx 0.025
+    .venv/bin/python benchmarks/lattice_stiffness.py --stability [--kernel cubic]
 """
 
 from __future__ import annotations
@@ -63,6 +93,8 @@ import argparse
 import math
 import os
 import sys
+
+import numpy as np
 
 _here = os.path.dirname(os.path.abspath(__file__))
 sys.path[:] = [p for p in sys.path if os.path.abspath(p or os.curdir) != _here]
@@ -128,13 +160,86 @@ def sloshing_rayleigh(dx: float, h_coef: float = math.sqrt(2.0), kernel: str = "
     return float(-((acc[1] - acc[0]) * u).sum() / (u * u).sum()), G * k * math.tanh(k * h)
 
 
+def _kernel_derivatives(q, kernel: str):
+    """dW/dq and d2W/dq2 of the kernel's shape (fluid.kernels, unnormalised)."""
+    import numpy as np
+
+    if kernel == "wendland":  # (1 - q/2)^4 (2q + 1), support 2h
+        t = np.clip(1 - q / 2, 0, None)
+        return -5 * q * t**3, -5 * t**3 + 7.5 * q * t**2
+    if kernel == "cubic":  # 1 - 1.5 q^2 + 0.75 q^3 (q < 1), 0.25 (2 - q)^3 (q < 2)
+        d1 = np.where(q < 1, -3 * q + 2.25 * q * q, np.where(q < 2, -0.75 * (2 - q) ** 2, 0.0))
+        d2 = np.where(q < 1, -3 + 4.5 * q, np.where(q < 2, 1.5 * (2 - q), 0.0))
+        return d1, d2
+    raise ValueError(f"kernel {kernel!r}: use 'wendland' or 'cubic'")
+
+
+def lattice_stability(dim: int, h_coef: float, kernel: str = "wendland", n: int = 24):
+    """Linear stability of the square (cubic) particle lattice of the SPH fluid under a
+    uniform pressure p0, infinite and without gravity (module docstring, 3.).
+
+    Bloch modes u_a = U exp(i k . R_a) of the momentum equation (004_1657bd4a51d29840.txt
+    Eq. 6) with the continuity equation (Eq. 7) and p = p0 + c0^2 (rho - rho0) give
+    ``omega^2 U = (2 p0 / rho0) V D(k) U + V^2 (c0^2 - 2 p0 / rho0) S (S . U)`` with
+    ``D(k) = sum_R (1 - cos k.R) Hess W(R)`` and ``S(k) = sum_R sin(k.R) grad W(R)``.
+    The second term is the acoustic one (c0^2 >> p0 / rho0): modes with S . U != 0 are
+    stiff. The others change no density, and only the pressure-borne ``D`` holds them:
+    the lattice is stable if D is positive on the plane normal to S for every k. (In the
+    continuum D = k k^T: a uniform pressure has no shear stiffness, 0 on that plane.)
+
+    Returns (the smallest eigenvalue of D on that plane, divided by |k|^2 [in units of the
+    kernel shape, lattice spacing 1], over the short waves |k| >= pi / (4 dx) (wavelengths
+    of 8 dx and less, whose growth, ~ |k|, is fast); the k [pi / dx] where it occurs; the
+    same over the long waves). Scan of the Brillouin zone on an (n + 1)^dim grid."""
+    import itertools
+
+    import numpy as np
+
+    m = int(math.ceil(2 * h_coef)) + 1
+    R = np.array([p for p in itertools.product(range(-m, m + 1), repeat=dim) if any(p)], float)
+    r = np.linalg.norm(R, axis=1)
+    d1, d2 = _kernel_derivatives(r / h_coef, kernel)
+    d1, d2 = d1 / h_coef, d2 / h_coef**2
+    e = R / r[:, None]
+    ee = e[:, :, None] * e[:, None, :]
+    hess = d2[:, None, None] * ee + (d1 / r)[:, None, None] * (np.eye(dim) - ee)
+    grad = d1[:, None] * e
+    worst, where, worst_long = math.inf, None, math.inf
+    ks = np.linspace(0.0, math.pi, n + 1)
+    for k in itertools.product(ks, repeat=dim):
+        k = np.asarray(k)
+        if not k.any():
+            continue
+        D = ((1 - np.cos(R @ k))[:, None, None] * hess).sum(axis=0)
+        S = (np.sin(R @ k)[:, None] * grad).sum(axis=0)
+        if np.linalg.norm(S) > 1e-9 * np.abs(D).max():
+            basis = np.linalg.qr(np.c_[S, np.eye(dim)])[0][:, 1:dim]  # the plane normal to S
+            D = basis.T @ D @ basis
+        lam = np.linalg.eigvalsh(D).min() / (k @ k)
+        if k @ k < (0.25 * math.pi) ** 2:
+            worst_long = min(worst_long, lam)
+        elif lam < worst:
+            worst, where = lam, k / math.pi
+    return float(worst), where, float(worst_long)
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--dx", type=float, default=0.05, help="particle spacing [m]")
     ap.add_argument("--h-coef", type=float, default=math.sqrt(2.0), help="h / dx [-]")
     ap.add_argument("--kernel", default="wendland")
     ap.add_argument("--sloshing", action="store_true", help="the sloshing mode in the sloshing tank (2.)")
+    ap.add_argument("--stability", action="store_true",
+                    help="linear stability of the infinite square lattice over h / dx, 2-D and 3-D (3.)")
     a = ap.parse_args(argv)
+    if a.stability:
+        for dim in (2, 3):
+            for hc in (1.2, 1.3, math.sqrt(2.0), 1.5, 1.6, 1.7, 1.8, 1.9, 2.0, 2.2, 2.4):
+                lam, k, long = lattice_stability(dim, hc, a.kernel, n=24 if dim == 2 else 12)
+                print(f"{dim}-D {a.kernel} h/dx={hc:.3f}: short waves: smallest shear eigenvalue / k^2 {lam:+.2e} "
+                      f"at k = {np.array2string(k, precision=2)} pi/dx ({'stable' if lam > -1e-12 else 'UNSTABLE'}); "
+                      f"long waves {long:+.2e}")
+        return
     if a.sloshing:
         w2, lin = sloshing_rayleigh(a.dx, a.h_coef, a.kernel)
         print(f"kernel={a.kernel} h/dx={a.h_coef:.4g} dx={a.dx} sloshing mode: omega^2={w2:.3f} rad^2/s^2, "

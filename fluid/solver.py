@@ -353,6 +353,68 @@ class Fluid:
         self.t = t_end
         self._loads = (F / dt, M / dt)
 
+    def settle(self, duration: float, tau: float | None = None) -> dict:
+        """Relax the fluid at rest for ``duration`` [s] of damped motion, then restore the
+        clock: the set-up lattice is not the discrete equilibrium of the SPH forces (kernel
+        truncation at the free surface and the walls, the lattice's quadrature error), so a
+        tank started from it moves by a fraction of dx and rings in weakly damped sloshing.
+        Each step the fluid velocities are multiplied by ``exp(-dt / tau)`` (default
+        ``tau = duration / 10``); boundaries are held still (prescribed motions frozen at
+        the current time, boundary velocities zero) and restored afterwards.
+
+        Settling finds a stable equilibrium only where there is one: on a square lattice
+        the pressure term has a spurious shear stiffness that is negative at some h/dx
+        (2-D Wendland h = 1.7 dx; benchmarks/lattice_stiffness.py ``--stability``), and
+        there the particles rearrange, damped or not. Returns the largest fluid speed
+        [m/s] before and after, the steps taken and the simulated time.
+        """
+        if self._limit is None:
+            raise InputError("Fluid.settle called before initialize")
+        if not (isinstance(duration, (int, float)) and math.isfinite(duration) and duration > 0):
+            raise InputError(f"fluid: settle needs a positive duration [s], got {duration!r}")
+        tau = 0.1 * duration if tau is None else tau
+        if not (isinstance(tau, (int, float)) and math.isfinite(tau) and tau > 0):
+            raise InputError(f"fluid: settle needs a positive damping time tau [s], got {tau!r}")
+        t0, motions = self.t, self._motions
+        v_before = self.max_speed()
+        ps = self.ps
+        wall_ids = ps.ids[ps.kind != Kind.FLUID].copy()
+        wall_vel = ps.vel[ps.kind != Kind.FLUID].copy()
+        frozen = {}
+        for group, (motion, ids, ref) in motions.items():
+            pos, _ = motion(t0, ref)
+            frozen[group] = (lambda t, r, p=np.asarray(pos, float): (p, np.zeros_like(p)), ids, ref)
+        self._motions = frozen
+        steps0 = self.counters.steps
+        try:
+            self.ps.vel[self.ps.kind != Kind.FLUID] = 0.0
+            self._rates()
+            elapsed = 0.0
+            while elapsed < duration:
+                dt = min(self._limit.dt, duration - elapsed + 1e-15)
+                self.step(dt)
+                elapsed += dt
+                damp = math.exp(-dt / tau)
+                fl = self.ps.kind == Kind.FLUID
+                self.ps.vel[fl] *= damp
+                if "vel" in self._aux:
+                    self._aux["vel"][fl] *= damp
+        finally:
+            self._motions = motions
+            self.t = t0
+        ps = self.ps
+        bnd = np.flatnonzero(ps.kind != Kind.FLUID)
+        back = np.searchsorted(wall_ids, ps.ids[bnd], sorter=np.argsort(wall_ids))
+        ps.vel[bnd] = wall_vel[np.argsort(wall_ids)][back]
+        self._place_prescribed(t0)
+        self._sort()
+        self._rates()
+        out = {"max_speed_before_m_s": v_before, "max_speed_after_m_s": self.max_speed(),
+               "steps": self.counters.steps - steps0, "duration_s": float(duration), "tau_s": float(tau)}
+        log.info("fluid: settled for %.3g s (%d steps, tau %.3g s): largest speed %.3g -> %.3g m/s",
+                 duration, out["steps"], tau, v_before, out["max_speed_after_m_s"])
+        return out
+
     def save_state(self):
         # the rates travel with the state: the next step starts from them even when
         # boundary particles were placed since (see set_particle_motion), so a restored
