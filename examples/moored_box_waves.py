@@ -6,20 +6,23 @@ regular waves of height ``H`` and period ``T`` (linear wavemaker theory,
 from x = 2.0 m takes them out. A 0.2 x 0.1 m box of 500 kg/m^3 floats at x = 1.2 m,
 held by two catenary lines (seed 004 Eq. 35-39) from its lower corners to anchors
 on the floor 0.7 m either side. The fluid is weakly-compressible SPH (numba,
-``fluid.solver``), the box a MuJoCo body loaded by the force on its boundary
+``fluid.solver``) in its wave set-up (``WAVES_2D``: h = 2 dx and tank walls that carry the
+fluid's pressure, with which waves keep linear theory's speed and height), the box a MuJoCo body loaded by the force on its boundary
 particles (seed 004 Eq. 9-13), coupled with the "fluid-first" scheme (the box
 receives exactly the impulse the water exchanged with it).
 
-    python examples/moored_box_waves.py                  # dx = 2 cm, 5 s: 2615 particles, 17 002 steps
+    python examples/moored_box_waves.py                  # dx = 2 cm, 5 s: 2615 particles, 11 156 steps
     python examples/moored_box_waves.py --fine           # dx = 1 cm (8 times the work)
     python examples/moored_box_waves.py --mooring sph-cable --duration 3
     python examples/moored_box_waves.py --light-body subiterate   # light-body remedy (default auto)
 
-Cost (measured on the 2-core machine, otherwise nearly idle): the default run takes
-31 s of wall time and 35 s of CPU (the fluid runs on one thread below 20 000
-particles). In the last two periods the box heaves 36 mm and surges 50 mm peak to peak (the
-waves' orbital motion: H / tanh kd = 45 mm), rolls up to 7 deg, and the fairlead
-tensions swing between 1.13 and 1.38 N. Over the first 0.2 s at dx = 3 cm the fairlead
+Cost (measured on the 2-core machine, one other run beside it): the default run takes
+32 s of wall time and 36 s of CPU (the fluid runs on one thread below 20 000
+particles), as with the solver's default h = sqrt(2) dx (31 s): the longer support
+doubles the pairs but lengthens the step by 1.5. In the last two periods the box heaves
+44 mm and surges 42 mm peak to peak (the waves' orbital motion: H / tanh kd = 45 mm;
+with h = sqrt(2) dx, whose waves run fast and lose height, 36 and 50 mm), rolls up to 9
+deg, and the fairlead tensions swing between 1.11 and 1.39 N. Over the first 0.2 s at dx = 3 cm the fairlead
 tension of the dynamic SPH cable (``--mooring sph-cable``) stays within 0.41-1.86 N (it
 started with a 3.8 kN spike while the resting line's quasi-static shape stood its hanging
 part past the fairlead), MoorDyn's (``--mooring moordyn``) within 0.29-7.2 N, the
@@ -52,7 +55,7 @@ from fluid.flume import PADDLE_GROUP, flume
 from fluid.output import H5Output
 from fluid.particles import Kind
 from fluid.probes import surface_elevation
-from fluid.solver import FluidConfig
+from fluid.solver import WAVES_2D, FluidConfig
 from fluid.wavemaker import RegularWavemaker
 from moorings import MooringLine
 
@@ -99,7 +102,7 @@ def build(dx: float, H: float, T: float, model: str, workdir: Path, light_body: 
     this box, 0.5 of the water's density, uncorrected)."""
     wm = RegularWavemaker("piston", H=H, T=T, depth=DEPTH, ramp=1.0)
     fl = flume(dx, LENGTH, DEPTH, HEIGHT, back=0.5 * wm.stroke + dx, beach=BEACH)
-    cfg = FluidConfig(dim=2, dx=dx, u_max=math.sqrt(G * DEPTH), c0_factor=10.0, g=G)
+    cfg = FluidConfig(dim=2, dx=dx, u_max=math.sqrt(G * DEPTH), c0_factor=10.0, g=G, **WAVES_2D)
     fluid = SPHFluid(cfg, fl.fluid, fl.walls, z_surface=DEPTH)
     z_box = DEPTH + 0.5 * BOX_H - BOX_RHO / 1000.0 * BOX_H  # Archimedes (the lines add ~1 mm of draft)
     sites = {"fl_left": (-0.5 * BOX_W, 0.0, -0.5 * BOX_H), "fl_right": (0.5 * BOX_W, 0.0, -0.5 * BOX_H)}
