@@ -5,8 +5,10 @@ kernel (wendland/cubic), density diffusion (fourtakas/molteni/none; Fourtakas wi
 delta = 0.03 instead of 0.1, the lever of the 3-D hydrostatic case; the renormalised
 "antuono"), MLS density re-initialisation (off / every 30 steps,
 001_14936b82710365b2.txt Eq. 9-12), the tank walls' density (plain dynamic boundaries /
-walls="adami", fluid.wall_density) and the artificial viscosity with the walls
-(alpha_wall 1 / 0).
+walls="adami", fluid.wall_density), the artificial viscosity with the walls
+(alpha_wall 1 / 0), the smoothing length (h = 2 dx) and the wave set-up
+(fluid.solver.WAVES_2D: h = 2 dx with walls="adami"; the hydrostatic rows start from
+the lattice, without Fluid.settle).
 
     python benchmarks/fluid_trade.py [--case hydrostatic|dambreak|all] [--quick] [--csv FILE]
 
@@ -27,23 +29,24 @@ import sys
 import time
 
 from cosim.validations.fluid import run_dambreak, run_hydrostatic
+from fluid.solver import WAVES_2D
 
-LEVERS = [("c0_factor", 10.0), ("c0_factor", 20.0), ("c0_factor", 40.0), ("kernel", "cubic"),
-          ("diffusion", "molteni"), ("diffusion", "none"), ("diffusion", "antuono"), ("delta", 0.03),
-          ("mls_every", 30), ("walls", "adami"), ("alpha_wall", 0.0)]
+LEVERS = [{"c0_factor": 10.0}, {"c0_factor": 20.0}, {"c0_factor": 40.0}, {"kernel": "cubic"},
+          {"diffusion": "molteni"}, {"diffusion": "none"}, {"diffusion": "antuono"}, {"delta": 0.03},
+          {"mls_every": 30}, {"walls": "adami"}, {"alpha_wall": 0.0}, {"h_coef": 2.0}, dict(WAVES_2D)]
 #: each case's own c0_factor (its "defaults" row): hydrostatic 20, dam break 10
 C0_DEFAULT = {"hydrostatic": 20.0, "dambreak-2d": 10.0}
 
 
 def _levers(case):
-    return [(k, v) for k, v in LEVERS if not (k == "c0_factor" and v == C0_DEFAULT[case])]
+    return [kw for kw in LEVERS if kw.get("c0_factor") != C0_DEFAULT[case]]
 
 
 def _hydro_rows(quick: bool):
     dxs = (0.04, 0.02, 0.01) if not quick else (0.04, 0.02)
     base = 0.02
     runs = [({"dx": dx}, {}) for dx in dxs]
-    runs += [({"dx": base}, {k: v}) for k, v in _levers("hydrostatic")]
+    runs += [({"dx": base}, kw) for kw in _levers("hydrostatic")]
     for geo, kw in runs:
         t0 = time.perf_counter()
         rec = run_hydrostatic(2, dx=geo["dx"], t_end=2.0, **kw)
@@ -59,7 +62,7 @@ def _hydro_rows(quick: bool):
 def _dam_rows(quick: bool):
     nas = (10, 20, 40) if not quick else (10, 20)
     base = 20
-    runs = [(n, {}) for n in nas] + [(base, {k: v}) for k, v in _levers("dambreak-2d")]
+    runs = [(n, {}) for n in nas] + [(base, kw) for kw in _levers("dambreak-2d")]
     for n, kw in runs:
         t0 = time.perf_counter()
         rec = run_dambreak(n, **kw)
@@ -95,12 +98,12 @@ def main(argv=None):
         gens.append(_dam_rows(a.quick))
     _warm_up()
     rows = []
-    print(f"{'case':12s} {'dx [m]':>8s} {'lever':24s} {'N':>6s} {'steps':>6s} {'wall [s]':>8s}  errors")
+    print(f"{'case':12s} {'dx [m]':>8s} {'lever':28s} {'N':>6s} {'steps':>6s} {'wall [s]':>8s}  errors")
     for g in gens:
         for r in g:
             rows.append(r)
             errs = "  ".join(f"{r[f'err{i}_name']}={r[f'err{i}']:.4g}" for i in range(1, 5) if f"err{i}" in r)
-            print(f"{r['case']:12s} {r['dx_m']:8.4f} {r['lever']:24s} {r['particles']:6d} {r['steps']:6d} "
+            print(f"{r['case']:12s} {r['dx_m']:8.4f} {r['lever']:28s} {r['particles']:6d} {r['steps']:6d} "
                   f"{r['wall_s']:8.1f}  {errs}", flush=True)
     if a.csv:
         keys = sorted({k for r in rows for k in r})
