@@ -42,8 +42,16 @@ def run_hydrostatic(dim: int, dx: float, t_end: float, depth: float = 0.2, lengt
     the surface part is the kernel truncation at the free surface.
 
     Open: at dx = 0.005 m (40 layers, 3 s) the pressure stays within 0.69 % RMS (wall
-    0.57 %) but particles start to move after ~0.9 s (up to 5e-3 sqrt(g H)), with and
-    without density diffusion: the square lattice rearranges. In 3-D see
+    0.57 %) but particles start to move after ~0.9 s (up to 5.4e-3 sqrt(g H)), with and
+    without density diffusion: the square lattice rearranges. Why (session 4): at h =
+    sqrt(2) dx the square lattice under pressure is weakly unstable to long shear waves
+    (benchmarks/lattice_stiffness.py --stability), slow enough for viscosity and walls to
+    hold a 20-layer tank but not a 40-layer one. The wave set-up
+    (:data:`fluid.solver.WAVES_2D`, h = 2 dx, at which the lattice is stable, with
+    walls="adami"), settled for 1 s first, stays at rest there: 1.2e-4 sqrt(g H), 0.31 %
+    RMS (``run_hydrostatic(2, dx=0.005, t_end=3.0, settle_s=1.0, h_coef=2.0,
+    walls="adami")``, 56 483 steps, 115 s; 20 layers: 2.6e-4, 0.56 %); at 10 layers its
+    4 dx support's truncation at the surface costs 1.5 % RMS (the defaults: 0.76 %). In 3-D see
     :func:`hydrostatic_3d` (what was found).
 
     "After settling": the residual motion is dominated by the first sloshing mode (period
