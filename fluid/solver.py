@@ -64,8 +64,12 @@ WALLS = ("dbc", "adami")
 #: fast), and tank walls that carry the fluid's pressure ("adami": plain dynamic walls
 #: put a stiff spring at the contact line). Measured: first sloshing mode +0.84 % (default
 #: +10 %), piston waves 0.97-1.00 of linear theory's height (0.90), Westergaard raw wall
-#: pressure 0.016 RMS (0.17). Twice the pairs of the default; start a tank from rest with
-#: Fluid.settle (the lattice's free-surface corners otherwise ring for seconds).
+#: pressure 0.016 RMS (0.17). Twice the pairs of the default but 1.4-1.5 times its step:
+#: the dam break of cosim.validations.fluid and the main example cost 1.0-1.15 times as much
+#: per simulated second. It needs the resolution: at 10 particle layers over the depth
+#: the 4 dx support's truncation at the surface costs 1.5 % of rho g H in a tank at rest
+#: (the default 0.76 %). Start a tank from rest with Fluid.settle (the lattice's
+#: free-surface corners otherwise ring for seconds).
 WAVES_2D = {"h_coef": 2.0, "walls": "adami"}
 
 
@@ -380,6 +384,14 @@ class Fluid:
         there the particles rearrange, damped or not. Returns the largest fluid speed
         [m/s] before and after, the steps taken and the simulated time.
         """
+        saved = numba.get_num_threads()
+        numba.set_num_threads(self._threads())
+        try:
+            return self._settle(duration, tau)
+        finally:
+            numba.set_num_threads(saved)
+
+    def _settle(self, duration: float, tau: float | None) -> dict:
         if self._limit is None:
             raise InputError("Fluid.settle called before initialize")
         if not (isinstance(duration, (int, float)) and math.isfinite(duration) and duration > 0):
@@ -390,8 +402,9 @@ class Fluid:
         t0, motions = self.t, self._motions
         v_before = self.max_speed()
         ps = self.ps
-        wall_ids = ps.ids[ps.kind != Kind.FLUID].copy()
-        wall_vel = ps.vel[ps.kind != Kind.FLUID].copy()
+        bnd = ps.kind != Kind.FLUID
+        order = np.argsort(ps.ids[bnd])
+        bnd_ids, bnd_vel = ps.ids[bnd][order], ps.vel[bnd][order]  # restored afterwards
         frozen = {}
         for group, (motion, ids, ref) in motions.items():
             pos, _ = motion(t0, ref)
@@ -415,9 +428,8 @@ class Fluid:
             self._motions = motions
             self.t = t0
         ps = self.ps
-        bnd = np.flatnonzero(ps.kind != Kind.FLUID)
-        back = np.searchsorted(wall_ids, ps.ids[bnd], sorter=np.argsort(wall_ids))
-        ps.vel[bnd] = wall_vel[np.argsort(wall_ids)][back]
+        bnd = ps.kind != Kind.FLUID
+        ps.vel[bnd] = bnd_vel[np.searchsorted(bnd_ids, ps.ids[bnd])]
         self._place_prescribed(t0)
         self._sort()
         self._rates()
