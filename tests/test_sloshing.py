@@ -120,6 +120,13 @@ def test_sloshing_frequency_quick():
     assert r["passed"] and r["metrics"]["f1_rel_err"] < 0.02
 
 
+@pytest.mark.slow
+def test_sloshing_frequency_full():
+    """dx = 0.025 m (20 rows), 6 free periods, the case's WAVES_2D set-up: measured +0.84 %."""
+    r = validation.run("sloshing-frequency", quick=False)
+    assert r["passed"] and r["metrics"]["f1_rel_err"] < 0.02
+
+
 def test_sloshing_frequency_default_settings_run_fast():
     """The solver's defaults (h = sqrt(2) dx, dynamic walls) on the same quick tank: the
     first mode is 9.4 % above linear theory (the case's docstring: the contact-line spring
