@@ -207,7 +207,15 @@ def hydrostatic_3d(quick: bool) -> dict:
       tank first (:meth:`Fluid.settle`, 0.5 s) leaves the quick run as it was: largest
       speed 5.9e-3 sqrt(g H), pressure 1.7 % RMS (with walls="adami" 2.5e-3 and 2.3 %).
       The creep is a slow instability by the vertical edges, where two walls meet the
-      free surface; what feeds it is open.
+      free surface, and it is the density diffusion's: at the full resolution (10
+      layers, 2 s, NUMBA_NUM_THREADS=1, ``run_hydrostatic(3, dx=0.01, t_end=2.0,
+      depth=0.1, length=0.2, width=0.1, ...)``) the largest speed is 3.8e-4 sqrt(g H)
+      with no diffusion (pressure 1.07 % RMS: the acoustic noise it no longer damps),
+      5.95e-4 with Fourtakas delta = 0.03, 2.25e-3 with 0.05, 4.0e-3 with 0.1 (pressure
+      0.76-0.77 % with each), 1.3e-3 with Molteni's term (no hydrostatic correction:
+      pressure 6.1 %), 3.2e-3 with walls="adami" after 0.5 s of settling (0.96 %).
+      Growing with delta faster than linearly, as an instability past a threshold
+      would; what couples the diffusion to the motion there is open.
     """
     if quick:
         return run_hydrostatic(3, dx=0.02, t_end=1.5, depth=0.1, length=0.2, width=0.1)
