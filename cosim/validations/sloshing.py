@@ -825,9 +825,14 @@ def sloshing_spheric10(quick: bool) -> dict:
     is on time, lags +0.018, -0.018, -0.012, -0.048 s, and the first one is closer in its
     20 ms mean and impulse (0.97, 0.94; peak 0.87), but the later ones keep their excess:
     20 ms means 1.90, 3.06, 2.21, impulses 1.62, 1.73, 2.14, peaks 5.5, 7.8, 1.3. So the
-    timing was the lattice's stiffness; the later impacts' size is the 2-D section's
-    energy (quick, 5 rows: first swing 1.10, -0.088 s against 1.07, -0.043 s at h =
-    sqrt(2) dx, which the case keeps).
+    timing was the lattice's stiffness (quick, 5 rows: first swing 1.10, -0.088 s against
+    1.07, -0.043 s at h = sqrt(2) dx, which the case keeps). The later impacts' size is
+    not settled either way: at dx = 4.65 mm (h = 2 dx, 160 722 steps, 673 s) their
+    impulses drop to 1.15, 1.14, 0.82 of the measured ones (20 ms means 1.18, 2.38, 0.87),
+    but every impact comes late (+0.068, +0.041, +0.095, +0.105 s), the first one's
+    impulse falls to 0.68 and single-sample peaks reach 204 kPa: not converged in dx, so
+    "the 2-D section keeps more of the wave's energy" above is a hypothesis, not a
+    finding.
     More bulk dissipation is no remedy: alpha = 0.05 throughout (DualSPHysics'
     examples/main/05_SloshingTank value; sampled every 1 ms, 283 s) brings the later
     impulses to 1.01, 1.22, 1.34 and peaks to 0.80, 2.31, 1.48 but starves the first
