@@ -215,7 +215,10 @@ def hydrostatic_3d(quick: bool) -> dict:
       0.76-0.77 % with each), 1.3e-3 with Molteni's term (no hydrostatic correction:
       pressure 6.1 %), 3.2e-3 with walls="adami" after 0.5 s of settling (0.96 %).
       Growing with delta faster than linearly, as an instability past a threshold
-      would; what couples the diffusion to the motion there is open.
+      would; what couples the diffusion to the motion there is open. Not only the
+      particles beside the walls: switching the diffusion off for every fluid particle
+      with a boundary particle within 2h (DualSPHysics' DensityDT = 2 restricts its
+      Fourtakas term so; a throw-away experiment, not kept) leaves 2.27e-3 (0.94 %).
     """
     if quick:
         return run_hydrostatic(3, dx=0.02, t_end=1.5, depth=0.1, length=0.2, width=0.1)

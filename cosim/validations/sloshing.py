@@ -312,7 +312,9 @@ def westergaard(quick: bool) -> dict:
     0.025   5538        30400  0.018       0.0165      0.009       0.737
     ======  ==========  =====  ==========  ==========  ==========  =========
 
-    so at dx = 0.025 m both targets are met (91 s), and the case runs with
+    and at dx = 0.05 m (benchmarks/sloshing_trade.py) raw 0.031, Eq. 15 0.038, face 0.017;
+    c0 = 700 / 350 m/s there: raw 0.040 / 0.078, face 0.021 / 0.056. So at dx = 0.025 m
+    both targets are met (91 s; 72 s in the trade run), and the case runs with
     ``walls="adami"`` (session 4; before, it kept the solver's default walls, which fail
     the raw target at every dx above). :data:`fluid.solver.WAVES_2D` (h = 2 dx as well)
     gives raw / face 0.081 / 0.073 at dx = 0.10 m, 0.035 / 0.030 at 0.05 m and 0.016 /
@@ -643,7 +645,11 @@ def sloshing_frequency(quick: bool) -> dict:
     0.05    368        8160    -0.0095          quick (c0_factor 10), 5 s
     0.0333  690        12240   +0.0037          quick settings, 9 s
     0.025   1118       47539   +0.0084          full (c0_factor 20), 45 s
+    0.05    368        29480   -0.0001          c0_factor 20, 8 free periods, 15 s
+    0.0125  3818       116160  +0.0103          c0_factor 20, 8 free periods, 276 s
     ======  =========  ======  ===============  =============================
+
+    (the last two rows: ``benchmarks/sloshing_trade.py --cases sloshing-frequency``.)
 
     With the solver's defaults (h = sqrt(2) dx, dynamic walls) the same runs give +9.4 %
     and +10.0 %; h = 2 dx with dynamic walls +11.4 % (quick); the two levers are needed
