@@ -313,8 +313,9 @@ def westergaard(quick: bool) -> dict:
     ======  ==========  =====  ==========  ==========  ==========  =========
 
     and at dx = 0.05 m (benchmarks/sloshing_trade.py) raw 0.031, Eq. 15 0.038, face 0.017;
-    c0 = 700 / 350 m/s there: raw 0.040 / 0.078, face 0.021 / 0.056. So at dx = 0.025 m
-    both targets are met (91 s; 72 s in the trade run), and the case runs with
+    c0 = 700 / 350 m/s there: raw 0.040 / 0.078, face 0.021 / 0.056. So both targets are
+    met from dx = 0.05 m on (the full run, 0.025 m: 91 s; 72 s in the trade run), and the
+    case runs with
     ``walls="adami"`` (session 4; before, it kept the solver's default walls, which fail
     the raw target at every dx above). :data:`fluid.solver.WAVES_2D` (h = 2 dx as well)
     gives raw / face 0.081 / 0.073 at dx = 0.10 m, 0.035 / 0.030 at 0.05 m and 0.016 /
