@@ -236,6 +236,7 @@ def run_westergaard(dx: float, c0: float = 1430.0, dim: int = 2, periods_skip: i
     metrics.update({"kp_base_exact": float(refs["exact"][np.argmax(depth)]),
                     "kp_base_compressible": float(refs["compressible"][np.argmax(depth)]),
                     "acoustic_period_over_Tp": 4 * H / c0 / Tp, "dx_m": dx, "c0_m_s": c0,
+                    "h_over_dx": cfg.h_coef, "walls": cfg.walls,
                     "wall_rows": int(depth.size), "max_speed_m_s": float(f.max_speed())})
     tolerances = {"rms_raw_vs_exact": 0.04, "rms_face_vs_exact": 0.02}
     passed = all(metrics[k] < v for k, v in tolerances.items())
@@ -463,7 +464,7 @@ def run_sloshing_frequency(dx: float, L: float = 1.0, h: float = 0.5, amplitude:
                "wave_amplitude_estimate_m": float(amp / (RHO0 * G) * math.cosh(math.pi / L * h)
                                                   / math.cosh(math.pi / L * sensor_z)),
                "sensor_z_m": sensor_z, "decay_s": float(times[-1] - times[0]), "dx_m": dx,
-               "c0_m_s": cfg.speed_of_sound}
+               "c0_m_s": cfg.speed_of_sound, "h_over_dx": cfg.h_coef, "walls": cfg.walls}
     tolerances = {"f1_rel_err": 0.02}
     passed = metrics["f1_rel_err"] < tolerances["f1_rel_err"]
     return {"passed": passed, "metrics": metrics, "tolerances": tolerances,
@@ -579,7 +580,7 @@ def run_spheric10(dx: float, t_end: float = 8.0, c0: float = 28.0, sample_dt: fl
         t = (i + 1) * sample_dt
         times[i], p[i] = t, spheric10_sensor(f, roll, t)
     exp = spheric10_pressure()
-    metrics = {"dx_m": dx, "c0_m_s": c0, "walls": cfg.walls, "t_end_s": t_end}
+    metrics = {"dx_m": dx, "c0_m_s": c0, "h_over_dx": cfg.h_coef, "walls": cfg.walls, "t_end_s": t_end}
     ratios, lags, imp = [], [], []
     for k, (tp, pp) in enumerate(SPHERIC10_PEAKS):
         if tp + window > t_end:
