@@ -127,7 +127,7 @@ def test_sloshing_frequency_full():
     assert r["passed"] and r["metrics"]["f1_rel_err"] < 0.02
 
 
-def test_sloshing_frequency_default_settings_run_fast():
+def test_sloshing_frequency_with_the_default_settings_is_9_percent_high():
     """The solver's defaults (h = sqrt(2) dx, dynamic walls) on the same quick tank: the
     first mode is 9.4 % above linear theory (the case's docstring: the contact-line spring
     of dynamic walls and the lattice's pressure-borne shear stiffness). Kept as a test so
