@@ -249,7 +249,7 @@ def run_westergaard(dx: float, c0: float = 1430.0, dim: int = 2, periods_skip: i
 
 @case("westergaard", "2-D tank 3.0 m long, water 1.0 m, base acceleration 0.5 g sin(2 pi t / 0.03 s): "
       "wall k_p = p_d/(rho a0 H) vs the exact incompressible series, RMS < 0.04 (raw boundary "
-      "pressure) and < 0.02 (Eq. 15 averaging carried to the wall face)")
+      "pressure) and < 0.02 (Eq. 15 averaging carried to the wall face); walls='adami'")
 def westergaard(quick: bool) -> dict:
     """001_14936b82710365b2.txt §3.1 (Fig. 5): see :func:`run_westergaard` for set-up and
     extraction. c0 = 1430 m/s (the paper's c_p); tank walls carrying the fluid's pressure
@@ -624,7 +624,8 @@ def run_spheric10(dx: float, t_end: float = 8.0, c0: float = 28.0, sample_dt: fl
 
 
 @case("sloshing-frequency", "2-D tank 1.0 m long, water 0.5 m, shaken 3 periods then free: first "
-      "natural frequency from the FFT of the wall pressure within 2 % of linear theory")
+      "natural frequency from the FFT of the wall pressure within 2 % of linear theory (fluid set-up "
+      "WAVES_2D: h = 2 dx, walls='adami')")
 def sloshing_frequency(quick: bool) -> dict:
     """See :func:`run_sloshing_frequency`. Reference: linear potential theory
     ``w1^2 = g (pi/L) tanh(pi h/L)``: f1 = 0.8462 Hz for L = 1 m, h = 0.5 m (refdata
