@@ -45,9 +45,9 @@ def test_hydrostatic_2d_40_layers_wave_setup_at_rest():
 @pytest.mark.slow
 @pytest.mark.xfail(strict=True, reason="open (cosim/validations/fluid.py hydrostatic_3d): with "
                    "Fourtakas diffusion delta = 0.1 the particles by the vertical edges start moving "
-                   "after 0.7 s (5.9e-3 sqrt(gH) at 1.4 s; 4.0e-3 at 10 layers, where delta = 0.03 "
-                   "passes); at 5 layers a 1.3-1.5 % pressure bias from kernel truncation remains "
-                   "with every diffusion option")
+                   "after 0.7 s (5.9e-3 sqrt(gH) at 1.4 s; 4.0e-3 at 10 layers; delta = 0.03 only "
+                   "delays the onset to ~2 s); at 5 layers a 1.3-1.5 % pressure bias from kernel "
+                   "truncation remains with every diffusion option")
 @pytest.mark.parametrize("quick", [True, False])
 def test_hydrostatic_3d(quick):
     check(run("hydrostatic-3d", quick=quick))
