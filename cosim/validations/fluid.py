@@ -226,7 +226,15 @@ def hydrostatic_3d(quick: bool) -> dict:
       0.73 dx; with delta = 0.03 it starts at ~2 s and reaches 1.5e-3 at 3.2 s (0.26 dx
       at 4 s), so that setting's pass at 2 s above was only before the onset. Damped
       settling first (2 s with tau = 0.2 s, or 3 s with 0.5 s) does not stop it: 1.5-2.5e-3
-      over the next 3 s. Without diffusion (3.8e-4 at 2 s) it was not run longer.
+      over the next 3 s. Without diffusion the tank stays at rest: 4.9e-5 sqrt(g H) at 4 s,
+      the displacement fixed at 0.031 dx; with the renormalised ("antuono") term it creeps
+      like Fourtakas' (2.0-2.5e-3 from 1.5 s, 0.56 dx at 4 s). A lead, tried as a
+      throw-away edit of the pair loop and not kept: diffusion only for the fluid
+      particles whose support is full of fluid (92 fluid neighbours within 2h on the
+      lattice) keeps the tank at rest as no diffusion does (2.7e-5 at 4 s; 2 s run: 3.6e-4,
+      pressure 1.03 % RMS, the same 1.07 % as no diffusion: the truncation bias plus
+      undamped acoustic noise near the surface). A robust form (a kernel-sum threshold,
+      not a neighbour count) and its effect on violent flows are for the next session.
     """
     if quick:
         return run_hydrostatic(3, dx=0.02, t_end=1.5, depth=0.1, length=0.2, width=0.1)
