@@ -412,7 +412,7 @@ class Fluid:
         self._motions = frozen
         steps0 = self.counters.steps
         try:
-            self.ps.vel[self.ps.kind != Kind.FLUID] = 0.0
+            ps.vel[bnd] = 0.0
             self._rates()
             elapsed = 0.0
             while elapsed < duration:
@@ -535,14 +535,21 @@ class Fluid:
             self._sort()
             self._rates()
 
+    def _group_rows(self, group: int, ids: np.ndarray):
+        """(rows of the prescribed ``group``'s particles in id order, the selection of its
+        reference rows ``ids`` still present: particles may have left the domain)."""
+        ps = self.ps
+        sel = np.flatnonzero(ps.group == group)
+        sel = sel[np.argsort(ps.ids[sel])]
+        keep = np.isin(ids, ps.ids[sel], assume_unique=True) if sel.size != ids.size else slice(None)
+        return sel, keep
+
     def _place_prescribed(self, t: float) -> None:
         """Place every prescribed group at time ``t`` [s]."""
         ps = self.ps
         self._t_placed = t
         for group, (motion, ids, ref) in self._motions.items():
-            sel = np.flatnonzero(ps.group == group)
-            sel = sel[np.argsort(ps.ids[sel])]
-            keep = np.isin(ids, ps.ids[sel], assume_unique=True) if sel.size != ids.size else slice(None)
+            sel, keep = self._group_rows(group, ids)
             pos, vel = motion(t, ref)
             pos, vel = np.asarray(pos)[keep], np.asarray(vel)[keep]
             if not (np.isfinite(pos).all() and np.isfinite(vel).all()):
@@ -561,9 +568,7 @@ class Fluid:
         ps, t = self.ps, self._t_placed
         acc = np.zeros((ps.n, self.config.dim))
         for group, (motion, ids, ref) in self._motions.items():
-            sel = np.flatnonzero(ps.group == group)
-            sel = sel[np.argsort(ps.ids[sel])]
-            keep = np.isin(ids, ps.ids[sel], assume_unique=True) if sel.size != ids.size else slice(None)
+            sel, keep = self._group_rows(group, ids)
             v1 = np.asarray(motion(t + eps, ref)[1])[keep]
             v0 = np.asarray(motion(t - eps, ref)[1])[keep]
             acc[sel] = (v1 - v0) / (2.0 * eps)
