@@ -2,8 +2,9 @@
 ``hydrostatic`` (2-D tank at rest) and ``dambreak-2d`` cases: error and wall time at
 several resolutions, and at one resolution for each lever: c0 (c0_factor 10/20/40),
 kernel (wendland/cubic), density diffusion (fourtakas/molteni/none; Fourtakas with
-delta = 0.03 instead of 0.1, the lever of the 3-D hydrostatic case; the renormalised
-"antuono"), MLS density re-initialisation (off / every 30 steps,
+delta = 0.03 instead of 0.1; the renormalised "antuono"; Fourtakas faded under the free
+surface, diffusion_at_surface=False, the set-up of the 3-D hydrostatic case), MLS density
+re-initialisation (off / every 30 steps,
 001_14936b82710365b2.txt Eq. 9-12), the tank walls' density (plain dynamic boundaries /
 walls="adami", fluid.wall_density), the artificial viscosity with the walls
 (alpha_wall 1 / 0), the smoothing length (h = 2 dx) and the wave set-up
@@ -33,7 +34,8 @@ from fluid.solver import WAVES_2D
 
 LEVERS = [{"c0_factor": 10.0}, {"c0_factor": 20.0}, {"c0_factor": 40.0}, {"kernel": "cubic"},
           {"diffusion": "molteni"}, {"diffusion": "none"}, {"diffusion": "antuono"}, {"delta": 0.03},
-          {"mls_every": 30}, {"walls": "adami"}, {"alpha_wall": 0.0}, {"h_coef": 2.0}, dict(WAVES_2D)]
+          {"diffusion_at_surface": False}, {"mls_every": 30}, {"walls": "adami"}, {"alpha_wall": 0.0},
+          {"h_coef": 2.0}, dict(WAVES_2D)]
 #: each case's own c0_factor (its "defaults" row): hydrostatic 20, dam break 10
 C0_DEFAULT = {"hydrostatic": 20.0, "dambreak-2d": 10.0}
 

@@ -116,6 +116,10 @@ class FluidConfig:
     diffusion: str = "fourtakas"
     #: density diffusion coefficient delta [-] (000_7d114ab96e048b26.txt Eq. 1 uses 0.1)
     delta: float = 0.1
+    #: False: the density diffusion fades out where a particle's support is cut by the free
+    #: surface (the surface row and the one below it), which keeps a 3-D tank of still
+    #: water at rest but raises the pressure noise of violent flows (fluid.equations)
+    diffusion_at_surface: bool = True
     #: gravitational acceleration g [m/s^2], acting along -z
     g: float = 9.81
     #: CFL factor of the variable time step [-] (001_14936b82710365b2.txt Eq. 14)
@@ -184,6 +188,8 @@ class FluidConfig:
             raise _bad(f"diffusion={self.diffusion!r}", f"choose one of {eq.DIFFUSION}")
         if not num(self.delta) or not 0 <= self.delta <= 1:
             raise _bad(f"delta={self.delta!r}", "use a density diffusion coefficient in [0, 1] (0.1 usual)")
+        if not isinstance(self.diffusion_at_surface, bool):
+            raise _bad(f"diffusion_at_surface={self.diffusion_at_surface!r}", "use True (default) or False")
         if not num(self.g) or self.g < 0:
             raise _bad(f"g={self.g!r} m/s^2", "give the magnitude of gravity (>= 0), it acts along -z")
         if not num(self.cfl) or not 0 < self.cfl <= 0.4:
@@ -260,7 +266,7 @@ class Fluid:
         self._kernel = kernel_id(c.kernel)
         self._prm = eq.params(c.h, alpha_d(self._kernel, c.dim, c.h), c.alpha, c.delta, c.diffusion,
                               c.rho0, c.speed_of_sound, c.gravity, nu=c.nu, xsph=c.xsph_eps,
-                              alpha_wall=c.alpha_wall)
+                              alpha_wall=c.alpha_wall, diffusion_at_surface=c.diffusion_at_surface)
         self._grid = None
         self._work = eq.Workspace()
         self._xbins = None  # the cell list's sub-bin table (fluid.neighbours.order_cells_by_x)

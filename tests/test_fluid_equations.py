@@ -137,6 +137,47 @@ def test_antuono_diffusion_vanishes_for_any_linear_density_field_where_the_other
     assert np.abs(d["antuono"][inner]).max() < 1e-9 * plain
 
 
+@pytest.mark.parametrize("dim", [2, 3])
+def test_diffusion_fades_under_the_free_surface_only(dim):
+    """diffusion_at_surface=False (fluid.equations docstring): in a walled tank on the
+    lattice, the two rows under the free surface take no diffusion (in 3-D the row's four
+    corner particles, s = 0.049 with the walls above the water, keep 4 % of it); every
+    other fluid particle, those beside the walls included (walls count as support), takes
+    all of it."""
+    from fluid.geometry import tank_with_water
+
+    dx, L, H = 0.01, 0.08, 0.07
+    ps = tank_with_water(dim, dx, L, H, H + 2 * dx, width=0.06).particles
+    rng = np.random.default_rng(3)
+    rho = RHO0 * (1 + 1e-3 * rng.uniform(-1, 1, ps.n))  # a density field the diffusion acts on
+    fluid = ps.kind == Kind.FLUID
+
+    def drho(diffusion="molteni", at_surface=True):
+        n = ps.n
+        h = math.sqrt(2) * dx
+        grid = Grid.covering(ps.pos.min(0) - 1e-9, ps.pos.max(0) + 1e-9, 2 * h)
+        perm, start, _ = sort_by_cell(ps.pos, grid)
+        k = kernel_id("wendland")
+        prm = eq.params(h, alpha_d(k, dim, h), 0.0, 0.1, diffusion, RHO0, C0, np.zeros(dim),
+                        diffusion_at_surface=at_surface)
+        r = eq.evaluate(ps.pos[perm], np.zeros((n, dim)), rho[perm], ps.mass[perm], ps.kind[perm], start,
+                        grid, k, prm, RHO0, C0, GAMMA, np.empty(n)).drho
+        out = np.empty(n)
+        out[perm] = r
+        return out
+
+    faded, full, none = drho(at_surface=False), drho(), drho("none")
+    top = fluid & (ps.pos[:, -1] > H - 2 * dx)
+    rest = fluid & ~top
+    scale = np.abs(full - none)[fluid].mean()
+    assert scale > 1.0  # [kg/m^3/s]
+    assert (np.abs(faded - none)[top] <= 0.05 * np.abs(full - none)[top] + 1e-9 * scale).all()
+    assert (faded[top] == none[top]).mean() > (0.9 if dim == 2 else 0.8)
+    np.testing.assert_allclose(faded[rest], full[rest], rtol=0, atol=1e-9 * scale)
+    beside = rest & ((ps.pos[:, 0] < dx) | (ps.pos[:, 0] > L - dx))  # beside a wall
+    assert beside.sum() >= 4 and np.abs(full - none)[beside].min() > 1e-3 * scale
+
+
 def test_artificial_viscosity_acts_only_on_approaching_pairs():
     dx = 0.01
     pos = np.array([[0.0, 0.0], [0.012, 0.0]])

@@ -140,13 +140,34 @@ def hydrostatic(quick: bool) -> dict:
     return run_hydrostatic(2, dx=0.01, t_end=3.0)
 
 
-@case("hydrostatic-3d", "3-D tank at rest (0.2 x 0.1 m, H = 0.1 m): as hydrostatic")
-def hydrostatic_3d(quick: bool) -> dict:
-    """Quick: 5 particle layers over the depth (dx = 0.02 m, 1.5 s), the coarsest sensible
-    3-D tank; full: 10 (dx = 0.01 m, 2 s). Does not pass (strict xfail in the tests).
+#: the fluid set-up of still water in 3-D (hydrostatic-3d): the density diffusion faded out
+#: by the free surface (fluid.equations, ``diffusion_at_surface``)
+STILL_3D = {"diffusion_at_surface": False}
 
-    What was found (quick set-up, per 0.1 s: largest fluid speed over sqrt(g H), largest
-    displacement from the lattice site; NUMBA_NUM_THREADS=1, ~1 min per run):
+
+@case("hydrostatic-3d", "3-D tank at rest (H = 0.1 m, 10 layers; 0.2 x 0.1 m, 3 s, quick 0.1 x 0.1 m, "
+      "1.5 s): as hydrostatic (fluid set-up: diffusion_at_surface=False)")
+def hydrostatic_3d(quick: bool) -> dict:
+    """Full: 10 particle layers over the depth (dx = 0.01 m) in a 0.2 x 0.1 m tank for 3 s;
+    quick: the same layers in a 0.1 x 0.1 m tank for 1.5 s (a 5-layer tank cannot meet 1 %:
+    see below). Set-up :data:`STILL_3D`: the density diffusion fades out where the kernel
+    support is cut by the free surface (fluid.equations, ``diffusion_at_surface=False``).
+
+    Session 5 (NUMBA_NUM_THREADS=1, full set-up, largest speed over sqrt(g H) and pressure
+    RMS every 0.25 s): with the surface fade the tank is at rest and within 1 %: 2.2e-3 at
+    0.25 s (the start), 3.5e-4 at 1.25 s, 1.5e-4 at 2 s, 5.1e-5 at 3 s, the largest
+    displacement fixed at 0.035 dx, the instantaneous pressure error 0.88 % RMS at 0.5 s
+    falling to 0.82 % at 3 s (21 216 steps, 183 s). Variants of the fade: counting walls as
+    missing support as well (the fluid rows beside the walls lose the diffusion too) is at
+    rest alike but 0.95 % RMS; fading only the free-surface row (a kernel-sum threshold
+    between the rows, 0.85 - 0.95) delays the creep's onset to ~2 s (1.3e-3 at 2.75 s): the
+    row below the surface matters. The defaults (diffusion everywhere) creep from ~1 s
+    (below). The cost of the fade in violent flow is in fluid.equations (the 2-D dam break's
+    pressure noise x 4), so it is this case's set-up, not the solver's default.
+
+    What was found before (quick set-up of sessions 2-4: 5 layers, dx = 0.02 m, 0.2 x 0.1 m,
+    1.5 s; per 0.1 s: largest fluid speed over sqrt(g H), largest displacement from the
+    lattice site; NUMBA_NUM_THREADS=1, ~1 min per run):
 
     * A static pressure bias that no lever removes at 5 layers: the pressure is 1.3-1.5 %
       of rho g H too high on average from t = 0.1 s on (RMS 1.5-1.7 %), with Fourtakas,
@@ -236,14 +257,15 @@ def hydrostatic_3d(quick: bool) -> dict:
       undamped acoustic noise near the surface). Run to 4 s: 8e-5 sqrt(g H) and 1.033 %
       (no diffusion: 1.1e-4, 1.067 %): the 1 % is a static bias of the truncated surface
       rows, which Fourtakas' term everywhere lowers to 0.76 % by moving the mass that
-      makes the creep. At 10 layers the case is thus at rest or within 1 %, not both;
-      20 layers (dx = 0.005 m, ~16 times the cost) were not run. A robust form (a
-      kernel-sum threshold, not a neighbour count) and its effect on violent flows are
-      for the next session.
+      makes the creep. With diffusion cut on the fluid rows by the walls as well (as in
+      that experiment) the case is at rest or within 1 %, not both. Session 5's fade
+      (above) keeps it by the walls, where it does no harm, and takes it from the two
+      rows under the free surface only, with a smooth measure of the support's cut
+      instead of a neighbour count: at rest and 0.82 %.
     """
     if quick:
-        return run_hydrostatic(3, dx=0.02, t_end=1.5, depth=0.1, length=0.2, width=0.1)
-    return run_hydrostatic(3, dx=0.01, t_end=2.0, depth=0.1, length=0.2, width=0.1)
+        return run_hydrostatic(3, dx=0.01, t_end=1.5, depth=0.1, length=0.1, width=0.1, **STILL_3D)
+    return run_hydrostatic(3, dx=0.01, t_end=3.0, depth=0.1, length=0.2, width=0.1, **STILL_3D)
 
 
 REFDATA = Path(os.environ.get("COSIM_REFDATA", Path(__file__).resolve().parents[3] / "shared" / "refdata"))
