@@ -155,11 +155,12 @@ def test_spheric10_first_impact():
 
 @pytest.mark.slow
 def test_westergaard_3d_full():
-    """The whole 1.5 m wide tank at dx = 0.1 m: the 2-D numbers of the same dx (face
-    0.047 measured, 2-D quick 0.049; see the case's docstring)."""
-    m = validation.run("westergaard-3d")["metrics"]
-    assert m["rms_face_vs_exact"] < 0.06
-    assert m["kp_base_face"] == pytest.approx(m["kp_base_exact"], rel=0.06)
+    """A 0.3 m slice at dx = 0.05 m with walls="adami" (the case's set-up): both targets
+    of the 2-D case (measured raw 0.032, face 0.019; see the case's docstring)."""
+    r = validation.run("westergaard-3d")
+    m = r["metrics"]
+    assert r["passed"] and m["rms_raw_vs_exact"] < 0.04 and m["rms_face_vs_exact"] < 0.02
+    assert m["kp_base_face"] == pytest.approx(m["kp_base_exact"], rel=0.03)
 
 
 @pytest.mark.slow
