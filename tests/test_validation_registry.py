@@ -9,11 +9,14 @@ TESTS = Path(__file__).resolve().parent
 
 
 def test_every_case_has_a_quick_run_in_the_fast_tier():
-    text = "\n".join(p.read_text() for p in TESTS.glob("test_*.py") if p.name != Path(__file__).name)
-    # run("NAME", quick=True), or the name in a list of cases run with quick=...
+    texts = [p.read_text() for p in TESTS.glob("test_*.py") if p.name != Path(__file__).name]
+    # run("NAME", quick=True), or the name in a file whose cases run quick from a list or
+    # a parameter (run(name, quick=True), run(..., quick=quick))
+    quick_call = re.compile(r"""run\(\s*\w+\s*,\s*quick\s*=\s*(True|quick)""")
     missing = [name for name in validation.cases()
-               if not re.search(rf"""["']{re.escape(name)}["']\s*,\s*quick\s*=\s*True""", text)
-               and not (re.search(rf"""["']{re.escape(name)}["']""", text) and "quick=quick" in text)]
+               if not any(re.search(rf"""["']{re.escape(name)}["']\s*,\s*quick\s*=\s*True""", t)
+                          or (re.search(rf"""["']{re.escape(name)}["']""", t) and quick_call.search(t))
+                          for t in texts)]
     assert not missing, f"validation cases with no quick run in tests/: {missing}"
 
 

@@ -782,7 +782,8 @@ def sloshing_frequency(quick: bool) -> dict:
 
 
 @case("sloshing-spheric10", "SPHERIC Test 10 (rolling tank 900 x 508 mm, water 93 mm, measured roll): "
-      "left-wall pressure impact peaks within 20 % and within 0.05 s of the measured ones")
+      "left-wall pressure impact peaks within 20 % and within 0.05 s of the measured ones (dx 3.1 mm, "
+      "~35 min; quick: the first swing at 18.6 mm)")
 def sloshing_spheric10(quick: bool) -> dict:
     """See :func:`run_spheric10`. Reference: the measured pressure of SPHERIC Test 10
     (refdata/sloshing_spheric_test10; impact peaks 3.68, 3.89, 2.66, 7.15 kPa at 2.375,
@@ -826,7 +827,33 @@ def sloshing_spheric10(quick: bool) -> dict:
     (6.2 mm: 0.995) is therefore not claimed as a pass of the first impact. Sampling every
     1 ms instead of 50 us lowers it by 3 % at 6.2 mm and 15 % at 4.65 mm.
 
-    The full run (dx = 6.2 mm, 8 s, four impacts; 3089 particles at the end, 160277
+    Convergence (session 5; NUMBA_NUM_THREADS=1, ``run_spheric10(dx, **kw)``, 8 s; ratios to
+    the measured record per impact 1-4; dx in mm, h = sqrt(2) dx ("r2") or 2 dx; "5 ms" the
+    largest 5 ms mean):
+
+    =========  ======  ======  ===================  ===================  ===================  ===================
+    dx, h      steps   wall s  peak (one sample)    5 ms mean            20 ms mean           impulse
+    =========  ======  ======  ===================  ===================  ===================  ===================
+    6.2, r2    160277  372     1.00 3.00 7.15 3.78  .                    0.82 1.71 2.81 1.73  0.91 1.89 2.03 1.94
+    3.1, r2    320493  2042    3.61 5.76 6.57 1.28  2.32 2.13 2.48 1.09  1.05 1.02 2.44 1.43  0.93 1.46 1.54 1.54
+    3.1, 2 dx  241091  2119    2.84 2.09 2.21 3.07  2.40 1.41 1.88 2.20  1.05 1.03 1.70 1.82  0.92 1.53 1.63 1.93
+    =========  ======  ======  ===================  ===================  ===================  ===================
+
+    (10 337 and 10 487 particles at 3.1 mm.) At 3.1 mm every impact is in phase
+    with either support (lags +0.025, -0.025, -0.028, -0.039 s at sqrt(2) dx; +0.022, -0.040,
+    -0.019, -0.045 s at 2 dx), the first impact's impulse and 20 ms mean are within 8 %,
+    and the later impulses fall with dx (1.9-2.0 to 1.5) but stay 50 % above the measured
+    ones; the peaks do not converge: the SPH peak is a 1-2 ms acoustic spike (8.7 kPa at
+    2.400 s, after 15 ms of run-up pressure below 1.4 kPa), a water-hammer of the weakly
+    compressible model (of order rho c0 u, c0 = 28 m/s) whose height follows the front's
+    shape at contact, while the measured one (the record keeps the maximum of every 5 ms
+    of the 20 kHz signal) is most likely set by the entrapped air and the real sound speed,
+    which a single-phase model with an artificial c0 does not have (inferred, not tested). h = 2 dx (the wave set-up) does not change this:
+    its 4.65 mm run's later impulses (1.15, 1.14, 0.82, below) were not a converged result.
+    So the target (peaks within 20 %) is not met, and the timing is (within 0.05 s). The
+    full case runs dx = 3.1 mm, h = sqrt(2) dx (~35 min on one core).
+
+    The full run of sessions 3-4 (dx = 6.2 mm, 8 s, four impacts; 3089 particles at the end, 160277
     steps, 372 s) measured peak ratios 1.00, 3.00, 7.15, 3.78, lags +0.024, -0.023,
     -0.035, -0.056 s, 20 ms mean ratios 0.82, 1.71, 2.81, 1.73 and impulse ratios 0.91,
     1.89, 2.03, 1.94 (plain dynamic boundaries, the earlier default: peaks 0.54, 5.44,
@@ -878,6 +905,6 @@ def sloshing_spheric10(quick: bool) -> dict:
     if quick:  # the first swing only (no impact): 5 particle rows over the depth
         out = run_spheric10(0.0186, t_end=1.3, sample_dt=0.005)
     else:
-        out = run_spheric10(0.0062, t_end=8.0)
+        out = run_spheric10(0.0031, t_end=8.0)
     out.pop("series")
     return out
