@@ -20,13 +20,15 @@ def test_registered():
     assert {"hydrostatic", "hydrostatic-3d"} <= set(cases())
 
 
-def test_hydrostatic_2d_quick():
-    check(run("hydrostatic", quick=True))
+@pytest.mark.parametrize("name", ["hydrostatic", "hydrostatic-3d"])
+def test_hydrostatic_quick(name):
+    check(run(name, quick=True))
 
 
 @pytest.mark.slow
-def test_hydrostatic_2d_full():
-    check(run("hydrostatic", quick=False))
+@pytest.mark.parametrize("name", ["hydrostatic", "hydrostatic-3d"])
+def test_hydrostatic_full(name):
+    check(run(name, quick=False))
 
 
 @pytest.mark.slow
@@ -40,15 +42,6 @@ def test_hydrostatic_2d_40_layers_wave_setup_at_rest():
 
     m = run_hydrostatic(2, dx=0.005, t_end=3.0, settle_s=1.0, **WAVES_2D)["metrics"]
     assert m["p_rms_err_time_avg"] < 0.01 and m["max_speed_over_sqrt_gH"] < 1e-3
-
-
-def test_hydrostatic_3d_quick():
-    check(run("hydrostatic-3d", quick=True))
-
-
-@pytest.mark.slow
-def test_hydrostatic_3d_full():
-    check(run("hydrostatic-3d", quick=False))
 
 
 @pytest.mark.slow
