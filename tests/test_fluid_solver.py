@@ -25,6 +25,7 @@ from fluid.solver import Fluid, FluidConfig
     (dict(diffusion="adami"), "diffusion"),
     (dict(alpha=-0.1), "alpha"),
     (dict(alpha_wall=1.5), "alpha_wall"),
+    (dict(diffusion_at_surface="no"), "diffusion_at_surface"),
     (dict(integrator="euler"), "integrator"),
     (dict(domain_lo=(0.0, 0.0)), "domain"),
 ])
