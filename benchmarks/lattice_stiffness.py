@@ -104,8 +104,6 @@ def omega2(dx: float, p0: float, h_coef: float = math.sqrt(2.0), kernel: str = "
            amplitude: float = 1e-3, L: float = 1.0, H: float = 0.5) -> float:
     """omega^2 [rad^2/s^2] of the divergence-free displacement (module docstring) at
     pressure ``p0`` [Pa]; ``amplitude`` in units of dx."""
-    import numpy as np
-
     from fluid.equations import tait_B
     from fluid.geometry import assemble, block, tank_walls
     from fluid.particles import Kind
@@ -134,8 +132,6 @@ def sloshing_rayleigh(dx: float, h_coef: float = math.sqrt(2.0), kernel: str = "
                       walls: str = "adami", L: float = 1.0, h: float = 0.5) -> tuple[float, float]:
     """(omega^2 of the particle configuration for the linear first sloshing mode, linear
     theory g k tanh(k h)) [rad^2/s^2] (module docstring, 2.)."""
-    import numpy as np
-
     from cosim.validations.sloshing import G, RHO0, _moving_tank
     from fluid.geometry import set_hydrostatic
     from fluid.solver import Fluid, FluidConfig
@@ -162,8 +158,6 @@ def sloshing_rayleigh(dx: float, h_coef: float = math.sqrt(2.0), kernel: str = "
 
 def _kernel_derivatives(q, kernel: str):
     """dW/dq and d2W/dq2 of the kernel's shape (fluid.kernels, unnormalised)."""
-    import numpy as np
-
     if kernel == "wendland":  # (1 - q/2)^4 (2q + 1), support 2h
         t = np.clip(1 - q / 2, 0, None)
         return -5 * q * t**3, -5 * t**3 + 7.5 * q * t**2
@@ -192,8 +186,6 @@ def lattice_stability(dim: int, h_coef: float, kernel: str = "wendland", n: int 
     of 8 dx and less, whose growth, ~ |k|, is fast); the k [pi / dx] where it occurs; the
     same over the long waves). Scan of the Brillouin zone on an (n + 1)^dim grid."""
     import itertools
-
-    import numpy as np
 
     m = int(math.ceil(2 * h_coef)) + 1
     R = np.array([p for p in itertools.product(range(-m, m + 1), repeat=dim) if any(p)], float)

@@ -16,7 +16,6 @@ from __future__ import annotations
 
 import math
 
-import numba
 import numpy as np
 from numba import njit, prange
 
@@ -322,12 +321,8 @@ def fluid_energies(fluid, z_ref: float = 0.0) -> tuple[float, float]:
     """(kinetic, potential) energy [J] of the fluid particles: ``sum m v^2 / 2`` and
     ``sum m g (z - z_ref)`` with ``z_ref`` [m] the height of zero potential energy."""
     ps = fluid.ps
-    saved = numba.get_num_threads()
-    numba.set_num_threads(fluid._threads())  # the fluid's own choice: one thread for small sets
-    try:
+    with fluid._own_threads():  # the fluid's own choice: one thread for small sets
         return _energies(ps.pos, ps.vel, ps.mass, ps.kind, float(fluid.config.g), float(z_ref))
-    finally:
-        numba.set_num_threads(saved)
 
 
 class Energy:

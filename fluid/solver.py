@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import logging
 import math
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 
 import numba
@@ -293,13 +294,19 @@ class Fluid:
             return min(c.threads, numba.config.NUMBA_NUM_THREADS)
         return numba.config.NUMBA_NUM_THREADS if self.ps.n >= c.parallel_min_particles else 1
 
-    def initialize(self, t0: float) -> None:
+    @contextmanager
+    def _own_threads(self):
+        """Run the enclosed work on this fluid's numba threads, restoring the caller's."""
         saved = numba.get_num_threads()
         numba.set_num_threads(self._threads())
         try:
-            self._initialize(t0)
+            yield
         finally:
             numba.set_num_threads(saved)
+
+    def initialize(self, t0: float) -> None:
+        with self._own_threads():
+            self._initialize(t0)
 
     def _initialize(self, t0: float) -> None:
         c = self.config
@@ -340,12 +347,8 @@ class Fluid:
         return self.counters.limiter
 
     def advance(self, t: float, dt: float) -> None:
-        saved = numba.get_num_threads()
-        numba.set_num_threads(self._threads())
-        try:
+        with self._own_threads():
             self._advance(t, dt)
-        finally:
-            numba.set_num_threads(saved)
 
     def _advance(self, t: float, dt: float) -> None:
         if self._limit is None:
@@ -390,12 +393,8 @@ class Fluid:
         there the particles rearrange, damped or not. Returns the largest fluid speed
         [m/s] before and after, the steps taken and the simulated time.
         """
-        saved = numba.get_num_threads()
-        numba.set_num_threads(self._threads())
-        try:
+        with self._own_threads():
             return self._settle(duration, tau)
-        finally:
-            numba.set_num_threads(saved)
 
     def _settle(self, duration: float, tau: float | None) -> dict:
         if self._limit is None:
