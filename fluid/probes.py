@@ -1,11 +1,12 @@
-"""Probes of the SPH fluid: pressure at points, free-surface elevation at gauges, the load
-on a boundary group, the fluid's energies.
+"""Probes of the SPH fluid: pressure at points, the pressure on a patch of wall (as a
+flush-mounted transducer reads it), free-surface elevation at gauges, the load on a
+boundary group, the fluid's energies.
 
 Every probe has a ``name`` (the series it is written to), ``columns`` (the keys of its
 sample) and ``sample(fluid) -> dict`` mapping each column to a float or a 1-D array of
 fixed length, ready for :meth:`fluid.output.H5Output.series` and :func:`fluid.run.run`.
-The functional forms (:func:`pressure_at`, :func:`surface_elevation`,
-:func:`fluid_energies`) read the same quantities once.
+The functional forms (:func:`pressure_at`, :func:`wall_patch_pressure`,
+:func:`surface_elevation`, :func:`fluid_energies`) read the same quantities once.
 
 The per-point kernels gather over the fluid's own cell list (the particles are sorted by
 cell after every step), so a probe costs a few neighbour rows per point, not a pass over
@@ -128,6 +129,72 @@ class PressureProbe:
 
     def sample(self, fluid) -> dict:
         return {"p": pressure_at(fluid, self.points)}
+
+
+def wall_patch_pressure(fluid, centre, normal, size: float, group: int | None = None) -> float:
+    """Pressure [Pa] on a patch of a wall face, as a flush-mounted transducer reads it: the
+    normal force the fluid exerts on the boundary particles behind the patch
+    (:meth:`fluid.solver.Fluid.boundary_forces_now`) divided by the patch's area.
+
+    ``centre`` (dim,) [m] a point on the wall face, ``normal`` (dim,) the wall's normal
+    into the water, ``size`` [m] the patch's length along the wall (2-D, per metre of
+    depth) or its diameter (3-D, a disc); ``group`` restricts it to one boundary group.
+    The patch holds the boundary particles within ``size``/2 of the centre along the wall
+    and within the kernel's reach 2h behind the face; its area is dx^(dim-1) per particle
+    of the first layer (within one dx behind the face), as the wall builders lay them out.
+
+    Unlike :func:`pressure_at` (an average of the pressure of the fluid near the point),
+    this is a momentum balance: a patch half wet reads about half the pressure of the water
+    on it, and a lone splash particle reads its momentum, not its own pressure. The force
+    of a fluid particle is spread over the wall particles within 2h of it, so the reading
+    is the wall pressure smoothed over ~h along the wall; ``size`` of a few h keeps the
+    patch's count of particles, and with it the reading, steady."""
+    c = fluid.config
+    dim = c.dim
+    cen = _points(centre, dim, "wall_patch_pressure")[0]
+    n = np.asarray(normal, dtype=np.float64).reshape(-1)
+    if n.shape != (dim,) or not np.isfinite(n).all() or np.linalg.norm(n) == 0:
+        raise InputError(f"wall_patch_pressure: normal={normal!r}; give a nonzero {dim}-vector into the water")
+    n = n / np.linalg.norm(n)
+    if not (isinstance(size, (int, float)) and math.isfinite(size) and size >= c.dx):
+        raise InputError(f"wall_patch_pressure: size={size!r} m; give a patch at least one particle "
+                         f"spacing ({c.dx} m) across")
+    F = fluid.boundary_forces_now()
+    ps = fluid.ps
+    d = ps.pos - cen
+    dn = d @ n
+    along = np.linalg.norm(d - dn[:, None] * n, axis=1)
+    sel = (ps.kind != Kind.FLUID) & (along <= 0.5 * size) & (dn <= 0.0) & (dn >= -2.0 * c.h)
+    if group is not None:
+        sel &= ps.group == group
+    first = sel & (dn >= -c.dx)
+    if not first.any():
+        raise InputError(f"wall_patch_pressure: no boundary particle within one dx behind the face at "
+                         f"{cen} m (normal {n}); put the centre on the wall's face")
+    area = first.sum() * c.dx ** (dim - 1)
+    return float(-(F[sel] @ n).sum() / area)
+
+
+class PatchPressureProbe:
+    """Pressure [Pa] on a patch of wall face (see :func:`wall_patch_pressure`): ``centre``
+    (dim,) [m] on the face, ``normal`` into the water, ``size`` [m] its length (2-D) or
+    diameter (3-D), optionally of boundary ``group`` only. The patch is fixed in space; on
+    a wall that moves, call :func:`wall_patch_pressure` with its current position. Column
+    ``p`` (a float)."""
+
+    columns = ("p",)
+
+    def __init__(self, centre, normal, size: float, group: int | None = None, name: str = "patch"):
+        c, n = np.asarray(centre, dtype=np.float64), np.asarray(normal, dtype=np.float64)
+        if c.shape not in ((2,), (3,)) or n.shape != c.shape or not (np.isfinite(c).all() and np.isfinite(n).all()):
+            raise InputError(f"PatchPressureProbe: centre={centre!r}, normal={normal!r}; give two finite "
+                             "(x, z) or (x, y, z) vectors")
+        if not (isinstance(size, (int, float)) and math.isfinite(size) and size > 0):
+            raise InputError(f"PatchPressureProbe: size={size!r}; give the patch's length or diameter [m] > 0")
+        self.centre, self.normal, self.size, self.group, self.name = c, n, float(size), group, name
+
+    def sample(self, fluid) -> dict:
+        return {"p": wall_patch_pressure(fluid, self.centre, self.normal, self.size, self.group)}
 
 
 # ---------------------------------------------------------------------- free surface

@@ -486,6 +486,16 @@ class Fluid:
         self.refresh_rates()
         return self._group_sums()
 
+    def boundary_forces_now(self) -> np.ndarray:
+        """Force [N] (N, dim) the fluid exerts on each particle at the current state, in the
+        current order of ``self.ps``: ``m a`` of the boundary particles from the rates (the
+        per-particle terms of :meth:`group_forces_now`), zero rows for the fluid."""
+        self.refresh_rates()
+        ps = self.ps
+        F = ps.mass[:, None] * self._acc
+        F[ps.kind == Kind.FLUID] = 0.0
+        return F
+
     def fluid_force_from_groups(self):
         """The force the boundary particles exert on the fluid at the current state (total
         rate of fluid momentum minus gravity) [N]; equal and opposite to the sum of

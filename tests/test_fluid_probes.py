@@ -9,8 +9,8 @@ import pytest
 from cosim.errors import InputError
 from fluid.geometry import assemble, block, set_hydrostatic, tank_walls, tank_with_water
 from fluid.particles import Kind
-from fluid.probes import (Energy, GroupLoad, PressureProbe, WaveGauge, fluid_energies, pressure_at,
-                          surface_elevation)
+from fluid.probes import (Energy, GroupLoad, PatchPressureProbe, PressureProbe, WaveGauge, fluid_energies, pressure_at,
+                          surface_elevation, wall_patch_pressure)
 from fluid.solver import Fluid, FluidConfig
 
 G, RHO0 = 9.81, 1000.0
@@ -104,6 +104,51 @@ def test_group_load_carries_the_water_weight_and_moves_its_moment(tank2d):
         GroupLoad(3).sample(tank2d)
 
 
+def test_wall_patch_reads_the_mean_pressure_on_its_face(tank2d):
+    h = tank2d.config.h
+    # under water: rho g d on either side wall, to the ~1 % the lattice's wall force has
+    for d in (0.05, 0.1):
+        for x, n in ((0.0, [1.0, 0.0]), (0.3, [-1.0, 0.0])):
+            assert wall_patch_pressure(tank2d, [x, 0.2 - d], n, 4 * h) == pytest.approx(RHO0 * G * d, rel=0.015)
+    probe = PatchPressureProbe([0.0, 0.1], [1.0, 0.0], 4 * h, group=0)
+    assert probe.sample(tank2d)["p"] == wall_patch_pressure(tank2d, [0.0, 0.1], [1.0, 0.0], 4 * h)
+    # a patch half under water reads the mean over its whole face, rho g a / 4 for
+    # half-length a (an average of the fluid near its centre would not see the dry half)
+    a = 0.04
+    assert wall_patch_pressure(tank2d, [0.0, 0.2], [1.0, 0.0], 2 * a) == pytest.approx(RHO0 * G * a / 4, rel=0.01)
+
+
+def test_wall_patch_reads_a_lone_particle_by_its_force_not_its_pressure():
+    dx = 0.01
+    lo, hi = np.zeros(2), np.array([0.3, 0.3])
+    b = assemble(2, dx, RHO0, np.array([[0.15, 0.5 * dx]]), [(tank_walls(lo, hi, dx), Kind.FIXED_WALL, 0)])
+    f = Fluid(FluidConfig(dim=2, dx=dx, c0=20.0, threads=1), b.particles)
+    ps = f.ps
+    ps.rho[ps.kind == Kind.FLUID] = 1010.0  # a droplet squeezed against the bottom: ~4 kPa
+    f.initialize(0.0)
+    p_drop = pressure_at(f, [[0.15, 0.0]])[0]
+    assert p_drop > 4000.0
+    # a patch wide enough to take the droplet's whole push: its force over the patch area;
+    # the push is what the wall gives back to the droplet (pair antisymmetry)
+    size = 0.1
+    push = f.fluid_force_from_groups()[1]
+    assert wall_patch_pressure(f, [0.15, 0.0], [0.0, 1.0], size) == pytest.approx(push / size, rel=1e-9)
+    assert push / size < 0.1 * p_drop
+
+
+def test_wall_patch_refuses_bad_input(tank2d):
+    with pytest.raises(InputError, match="nonzero"):
+        wall_patch_pressure(tank2d, [0.0, 0.1], [0.0, 0.0], 0.05)
+    with pytest.raises(InputError, match="particle spacing"):
+        wall_patch_pressure(tank2d, [0.0, 0.1], [1.0, 0.0], 0.001)
+    with pytest.raises(InputError, match="wall's face"):
+        wall_patch_pressure(tank2d, [0.15, 0.1], [1.0, 0.0], 0.05)  # mid-tank: no wall there
+    with pytest.raises(InputError, match="finite"):
+        PatchPressureProbe([0.0, 0.1], [1.0, 0.0, 0.0], 0.05)
+    with pytest.raises(InputError, match="size"):
+        PatchPressureProbe([0.0, 0.1], [1.0, 0.0], -0.05)
+
+
 def test_3d_tank_pressure_and_gauges():
     f = _tank(dim=3, dx=0.02, depth=0.16, length=0.16, width=0.12)
     depth = np.array([0.06, 0.1])
@@ -111,6 +156,9 @@ def test_3d_tank_pressure_and_gauges():
     np.testing.assert_allclose(pressure_at(f, pts), RHO0 * G * depth, rtol=0.01)
     eta = surface_elevation(f, [[0.05, 0.05], [0.11, 0.07]])
     assert np.abs(eta - 0.16).max() < 0.01  # dx / 2
+    # a disc on the left wall, 4 dx across, 0.08 m deep
+    assert wall_patch_pressure(f, [0.0, 0.06, 0.08], [1.0, 0.0, 0.0], 0.08) == pytest.approx(RHO0 * G * 0.08,
+                                                                                        rel=0.02)
 
 
 def test_bad_probe_input_is_refused(tank2d):
