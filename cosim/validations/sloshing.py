@@ -12,6 +12,7 @@ from cosim.validation import case
 from fluid.geometry import assemble, block, set_hydrostatic, tank_walls
 from fluid.motion import Harmonic, Rotation, Tabulated, Translation
 from fluid.particles import Kind
+from fluid.probes import wall_patch_pressure
 from fluid.solver import WAVES_2D, Fluid, FluidConfig
 
 G = 9.81
@@ -527,13 +528,30 @@ def spheric10_fluid(dx: float, c0: float = 28.0, **overrides):
     return f, roll
 
 
-def spheric10_sensor(f: Fluid, roll: Rotation, t: float) -> float:
+#: length [m] along the wall of the SPHERIC 10 sensor's patch (:func:`spheric10_sensor`)
+SPHERIC10_SENSOR = 0.010
+#: the sensor readings :func:`run_spheric10` offers
+SPHERIC10_SENSORS = ("patch", "face")
+
+
+def spheric10_sensor(f: Fluid, roll: Rotation, t: float, kind: str = "patch") -> float:
     """Pressure [Pa] at the sensor (left wall face, z = 93 mm in the tank frame) at time
-    ``t`` [s]: :func:`face_pressure`, i.e. 001 Eq. 15 over 2h carried to the face with
-    the wall's acceleration (rigid-body roll) and fitted along the wall."""
+    ``t`` [s]. ``kind="patch"``: :func:`~fluid.probes.wall_patch_pressure`, the normal force
+    the fluid exerts on the wall over a ``SPHERIC10_SENSOR`` long patch about the sensor's
+    centre, divided by its length: what a flush transducer measures, a momentum balance
+    in which a half-wet face reads half and a splash particle its push. ``kind="face"``:
+    :func:`face_pressure`, 001 Eq. 15 over 2h carried to the face with the wall's
+    acceleration and fitted along the wall: an average of the fluid's own pressure near
+    the point, which reads a thin film or a few splash particles as if they filled the
+    support (and extrapolates wildly where only two or three particles are near)."""
+    if kind not in SPHERIC10_SENSORS:
+        raise ValueError(f"sensor kind {kind!r}: choose one of {SPHERIC10_SENSORS}")
     L, _, h = SPHERIC10_TANK
     at, _ = roll(t, np.array([[-L / 2, h]]))
     normal = roll(t, np.array([[-L / 2 + 1.0, h]]))[0][0] - at[0]
+    if kind == "patch":
+        # at least two particle columns: a coarse lattice may put the centre between two
+        return wall_patch_pressure(f, at[0], normal, max(SPHERIC10_SENSOR, 2 * f.config.dx), group=0)
     _, dth, ddth = roll.signal.state(t)
     r = at[0] - np.asarray(roll.point)
     acc = ddth * np.array([r[1], -r[0]]) - dth ** 2 * r
@@ -551,7 +569,7 @@ def running_mean_max(t: np.ndarray, p: np.ndarray, width: float, lo: float, hi: 
 
 
 def run_spheric10(dx: float, t_end: float = 8.0, c0: float = 28.0, sample_dt: float = 1e-4,
-                  window: float = 0.25, **overrides) -> dict:
+                  window: float = 0.25, sensor: str = "patch", **overrides) -> dict:
     """SPHERIC benchmark 10, low filling, water, lateral impact (Souto-Iglesias et al.,
     CEHINAV-UPM; refdata/sloshing_spheric_test10/SOURCE.txt): 2-D section of the tank
     0.900 x 0.508 m, water 0.093 m, rolled by the measured angle about the centre of the
@@ -570,10 +588,12 @@ def run_spheric10(dx: float, t_end: float = 8.0, c0: float = 28.0, sample_dt: fl
     :class:`FluidConfig`, by default ``walls="adami"`` (the tank walls carry the fluid's
     pressure, Adami et al. 2012: the wall pressure of a plain dynamic boundary is not a
     pressure the wall feels, and it halves the first impact, see the case's docstring).
-    The sensor (:func:`spheric10_sensor`) reads :func:`face_pressure` at its point on the
-    wall face (Eq. 15 average of the fluid within 2h, carried to the face and fitted along
-    the wall: plain Eq. 15 at a wall particle at the still-water level reads the water
-    below it, ~rho g dx too high), sampled every ``sample_dt`` [s] (1e-4: the experiment
+    The sensor (:func:`spheric10_sensor`, ``sensor``) is by default the normal force the
+    fluid exerts on a 10 mm patch of the wall face about its centre over the patch's
+    length, as a transducer measures it (``"patch"``; SOURCE.txt gives the sensor's
+    centre, not its size); ``"face"`` reads :func:`face_pressure` at the point instead
+    (Eq. 15 average of the fluid within 2h, carried to the face and fitted along the wall),
+    the sensor of sessions 3-5. Sampled every ``sample_dt`` [s] (1e-4: the experiment
     recorded at 20 kHz, SOURCE.txt; the SPH impact rings at the acoustic period of the
     water near the wall, ~5 ms at c0 = 28 m/s, which 1e-4 s resolves). For each measured
     impact before ``t_end`` [s] the SPH peak is the largest pressure within ``window`` [s]
@@ -583,6 +603,8 @@ def run_spheric10(dx: float, t_end: float = 8.0, c0: float = 28.0, sample_dt: fl
     (``impactK_mean20ms_ratio``; the same on the record), which vary less between
     experimental repetitions and between SPH settings than the peak.
     """
+    if sensor not in SPHERIC10_SENSORS:
+        raise ValueError(f"sensor={sensor!r}: choose one of {SPHERIC10_SENSORS}")
     f, roll = spheric10_fluid(dx, c0, **overrides)
     cfg = f.config
     n = int(round(t_end / sample_dt))
@@ -591,9 +613,10 @@ def run_spheric10(dx: float, t_end: float = 8.0, c0: float = 28.0, sample_dt: fl
     for i in range(n):
         f.advance(t, sample_dt)
         t = (i + 1) * sample_dt
-        times[i], p[i] = t, spheric10_sensor(f, roll, t)
+        times[i], p[i] = t, spheric10_sensor(f, roll, t, sensor)
     exp = spheric10_pressure()
-    metrics = {"dx_m": dx, "c0_m_s": c0, "h_over_dx": cfg.h_coef, "walls": cfg.walls, "t_end_s": t_end}
+    metrics = {"dx_m": dx, "c0_m_s": c0, "h_over_dx": cfg.h_coef, "walls": cfg.walls, "t_end_s": t_end,
+               "sensor": sensor}
     ratios, lags, imp = [], [], []
     for k, (tp, pp) in enumerate(SPHERIC10_PEAKS):
         if tp + window > t_end:
