@@ -1,14 +1,16 @@
 """SPHERIC Test 10, first impact (2.375 s, 3.68 kPa measured): one lever at a time.
 
     NUMBA_NUM_THREADS=1 .venv/bin/python benchmarks/spheric10_levers.py --dx 0.0093 --walls adami
-    ... --c0 56 --alpha 0.01 --alpha-wall 1 --delta 0.1 --t-end 2.7 --npz out.npz
+    ... --c0 56 --alpha 0.01 --alpha-wall 1 --delta 0.1 --mls-every 20 --t-end 2.7 --npz out.npz
 
 Runs :func:`cosim.validations.sloshing.run_spheric10`'s set-up (same tank, roll, c0
 default 28 m/s) to ``--t-end`` and records several left-wall pressure probes, every
 ``--fine-dt`` [s] from ``--fine-from`` on (every 1 ms before), so that a spike of a few
 time steps is not missed:
 
-- ``face2h``: the case's probe (:func:`~cosim.validations.sloshing.face_pressure`:
+- ``patch``: the case's sensor (:func:`~cosim.validations.sloshing.spheric10_sensor`:
+  the wall's normal force over a 10 mm patch, as a transducer reads it; since session 6);
+- ``face2h``: the case's probe of sessions 3-5 (:func:`~cosim.validations.sloshing.face_pressure`:
   001 Eq. 15 over 2h, carried to the wall face, fitted along the wall) at z = 93 mm;
 - ``face1h``: the same with a support of h;
 - ``face_sensor``: ``face2h`` averaged over the sensor's face (``--sensor-d`` [m], the
@@ -57,7 +59,7 @@ import time
 
 import numpy as np
 from cosim.validations.sloshing import (SPHERIC10_TANK, face_pressure, running_mean_max, spheric10_fluid,
-                                        spheric10_pressure)
+                                        spheric10_pressure, spheric10_sensor)
 from fluid.particles import Kind
 
 L_SPH10 = SPHERIC10_TANK[0]
@@ -100,6 +102,7 @@ def main(argv=None):
     ap.add_argument("--alpha", type=float, default=None)
     ap.add_argument("--alpha-wall", type=float, default=None)
     ap.add_argument("--delta", type=float, default=None)
+    ap.add_argument("--mls-every", type=int, default=None)
     ap.add_argument("--t-end", type=float, default=2.7)
     ap.add_argument("--fine-from", type=float, default=2.3)
     ap.add_argument("--fine-to", type=float, default=2.45)
@@ -113,14 +116,15 @@ def main(argv=None):
     ap.add_argument("--load", default=None, help="start from a state pickled by --save (same dx and walls); "
                     "a different --c0 keeps each particle's pressure (density re-derived)")
     a = ap.parse_args(argv)
-    over = {k: v for k, v in dict(alpha=a.alpha, alpha_wall=a.alpha_wall, delta=a.delta).items() if v is not None}
+    over = {k: v for k, v in dict(alpha=a.alpha, alpha_wall=a.alpha_wall, delta=a.delta,
+                                         mls_every=a.mls_every).items() if v is not None}
     t0 = time.perf_counter()
     f, roll = spheric10_fluid(a.dx, c0=a.c0, walls=a.walls, **over)
     cfg = f.config
     h_s = 0.093
     zs = np.linspace(-a.sensor_d / 2, a.sensor_d / 2, 5) if a.sensor_d > 0 else np.zeros(1)
     wall_ids = spheric10_wall_ids(f, h_s, max(a.sensor_d / 2, 0.0) + 0.5 * a.dx)
-    rec = {k: [] for k in ("t", "face2h", "face1h", "face_sensor", "wall")}
+    rec = {k: [] for k in ("t", "patch", "face2h", "face1h", "face_sensor", "wall")}
     t = 0.0
     snaps = {}
     if a.load:
@@ -154,6 +158,7 @@ def main(argv=None):
         acc = np.stack([ddth * r[:, 1], -ddth * r[:, 0]], axis=1) - dth ** 2 * r
         fp = face_pressure(f, at, at, normal, acc, cfg.gravity)
         rec["t"].append(t)
+        rec["patch"].append(spheric10_sensor(f, roll, t))
         rec["face2h"].append(fp[len(zs) // 2])
         rec["face_sensor"].append(fp.mean())
         rec["face1h"].append(face_pressure_r(f, at[len(zs) // 2], normal, acc[len(zs) // 2], cfg.gravity, cfg.h))
@@ -169,7 +174,7 @@ def main(argv=None):
     e20 = running_mean_max(e[:, 0], e[:, 1], 0.02, T1 - 0.1, T1 + 0.1)[0]
     ew = (e[:, 0] >= T1 - 0.075) & (e[:, 0] <= T1 + 0.1)
     e_imp = np.trapezoid(np.maximum(e[ew, 1], 0), e[ew, 0])
-    for k in ("face2h", "face1h", "face_sensor", "wall", "face2h_1ms"):
+    for k in ("patch", "face2h", "face1h", "face_sensor", "wall", "face2h_1ms"):
         y = rec["face2h"] if k == "face2h_1ms" else rec[k]
         m = (np.abs(tt - T1) <= 0.1) & (ms if k == "face2h_1ms" else True)
         if not m.any():
