@@ -817,7 +817,12 @@ def sloshing_spheric10(quick: bool) -> dict:
     and 0.63 of the impulse against 0.83), c0 = 28 m/s (DualSPHysics' own set-up of the
     case: 30 sqrt(g h)), the default alpha = 0.01, delta = 0.1; the sensor is the wall's
     normal force over a 10 mm patch about z = 93 mm (:func:`spheric10_sensor`), sampled at
-    10 kHz (the record: 20 kHz).
+    10 kHz (the record: 20 kHz). The roll axis is the centre of the tank bottom (SOURCE.txt,
+    DualSPHysics' CaseSloshingHR_Def.xml); VALIDATION.md's row and the seed's case
+    (Brizzolara et al.) put it 184 mm above the bottom, and with that axis (dx = 6.2 mm,
+    8 s, the patch) the first swing reads 0.75 and the first impact's impulse 0.71,
+    0.053 s late, against 0.91 and 0.90, +0.024 s about the bottom: the record fits the
+    bottom axis.
 
     The full case (dx = 3.1 mm, h = sqrt(2) dx, 8 s; NUMBA_NUM_THREADS=1, 320 493 steps,
     ~35 min alone; ratios to the measured record per impact 1-4; the face probe's row is
