@@ -9,8 +9,8 @@ import pytest
 from cosim.errors import InputError
 from fluid.geometry import assemble, block, set_hydrostatic, tank_walls, tank_with_water
 from fluid.particles import Kind
-from fluid.probes import (Energy, GroupLoad, PatchPressureProbe, PressureProbe, WaveGauge, fluid_energies, pressure_at,
-                          surface_elevation, wall_patch_pressure)
+from fluid.probes import (Energy, GroupLoad, PatchPressureProbe, PressureProbe, WaveGauge, fluid_energies,
+                          pressure_at, surface_elevation, wall_patch_pressure)
 from fluid.solver import Fluid, FluidConfig
 
 G, RHO0 = 9.81, 1000.0
