@@ -32,6 +32,10 @@ class Ledger:
         for f, v in zip(FIELDS, (fluid_force, fluid_torque, mooring_force, mooring_torque, gravity)):
             self._rows[f].append(np.array(v, dtype=float))
 
+    def last(self) -> dict[str, np.ndarray]:
+        """The loads of the last step, each field (n_bodies, 3); empty before the first."""
+        return {f: rows[-1] for f, rows in self._rows.items()} if self._t else {}
+
     def truncate(self, n: int) -> None:
         """Forget the steps after the first ``n`` (a checkpoint was restored)."""
         del self._t[n:]

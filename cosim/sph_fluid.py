@@ -73,10 +73,14 @@ class SPHFluid:
         ``"dbc"`` (plain dynamic boundaries, seed 004 §2.6: the fluid stands off by
         a gap of order h and a floating body rides high by a fraction of dx).
         The tank walls follow ``config.walls`` (``fluid.solver.FluidConfig``).
+    motions:
+        Prescribed motions of wall groups, ``{group: motion}`` (a wavemaker's paddle, a
+        shaking tank; see ``fluid.solver.Fluid.prescribe_motion``), set when the fluid is
+        built at attachment.
     """
 
     def __init__(self, config: FluidConfig, fluid_points, walls=(), *, z_surface: float | None = None,
-                 body_layers: int | None = None, boundary: str = "mdbc"):
+                 body_layers: int | None = None, boundary: str = "mdbc", motions: dict | None = None):
         if boundary not in ("mdbc", "dbc"):
             raise InputError(f"SPH fluid: boundary={boundary!r}; choose 'mdbc' or 'dbc'")
         self.boundary = boundary
@@ -89,6 +93,7 @@ class SPHFluid:
         self.fluid: Fluid | None = None
         self.removed_overlap = 0
         self.displaced_volume = 0.0
+        self.motions = dict(motions or {})
 
     # -- coupling ----------------------------------------------------------------
     #: fewest boundary particles a body's geom may have across any of its axes [-]. With
@@ -151,6 +156,8 @@ class SPHFluid:
         if self.z_surface is not None:
             set_hydrostatic(ps, self.z_surface, c.rho0, c.speed_of_sound, c.gamma, c.g)
         self.fluid = Fluid(c, ps)
+        for group, motion in self.motions.items():
+            self.fluid.prescribe_motion(group, motion)
         self.n_bodies = bodies.n_bodies
         self._mdbc = None
         if self.boundary == "mdbc":

@@ -1,0 +1,17 @@
+"""Scenes: a coupled run described as plain Python or plain TOML, checked before any work
+is done, run by ``Scene.run()`` or ``cosim run SCENE.toml|SCENE.py``.
+
+    from cosim.scene import SPH, Beach, Box, Flume, Line, Moorings, Piston, Probes, Scene, World
+
+See :mod:`cosim.scene.spec` for the fields, :mod:`cosim.scene.setup` for the fluid set-up
+chosen from what a scene contains, :mod:`cosim.scene.runner` for what a run writes.
+"""
+
+from cosim.scene.fields import SceneError
+from cosim.scene.spec import (MJCF, SPH, Analytic, Beach, Block, Box, Coupling, Cylinder, CylinderTank, Earthquake,
+                              Flap, Flume, InclinedTank, Line, Moorings, NoFluid, PaddleRecord, Patch, Piston,
+                              PolygonTank, Probes, Roll, Scene, Shake, Sphere, TableMotion, Tank, World)
+
+__all__ = ["MJCF", "SPH", "Analytic", "Beach", "Block", "Box", "Coupling", "Cylinder", "CylinderTank", "Earthquake",
+           "Flap", "Flume", "InclinedTank", "Line", "Moorings", "NoFluid", "PaddleRecord", "Patch", "Piston",
+           "PolygonTank", "Probes", "Roll", "Scene", "SceneError", "Shake", "Sphere", "TableMotion", "Tank", "World"]

@@ -1,0 +1,295 @@
+"""From a scene to participants and a coupler, importing only what the scene contains: no
+fluid, no fluid kernel compiled; no bodies, no MuJoCo.
+
+What the builder derives so that the user does not: the fluid's set-up
+(:mod:`cosim.scene.setup`), wall layers from the kernel (ceil(2 h / dx), the support), a
+flume's floor behind the paddle (half the stroke plus dx), the heights of floating bodies
+(:mod:`cosim.scene.placement`), one gravity for fluid, bodies and moorings, the coupling
+scheme (fluid-first with the SPH fluid), the wavemaker or base motion attached to the
+walls, and fairlead sites named ``BODY.NAME`` in the MuJoCo model.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from cosim.scene.spec import (MJCF, SPH, Analytic, Box, Cylinder, CylinderTank, Earthquake, Flap, Flume,
+                              InclinedTank, PaddleRecord, Piston, PolygonTank, Roll, Shake, Sphere, TableMotion, Tank)
+
+PADDLE, WALLS = 1, 0  # the flume's paddle group and every tank's wall group
+
+
+@dataclass
+class Built:
+    """A scene's participants, ready to run."""
+
+    coupler: object
+    fluid: object = None  #: the coupler's fluid participant (SPHFluid, AnalyticFluid), or the bare SPH Fluid
+    sph: object = None  #: the fluid.solver.Fluid inside, when the scene has the SPH fluid
+    bodies: object = None  #: MujocoBodies, or None
+    mooring: object = None  #: the mooring participant, or None
+    line_names: list = field(default_factory=list)  #: one label per line, in order
+    setup: object = None  #: cosim.scene.setup.Setup of the SPH fluid
+    level: float | None = None  #: still-water level [m]
+    start_heights: dict = field(default_factory=dict)  #: floating bodies: their computed centre height [m]
+    wavemaker: object = None  #: fluid.wavemaker.RegularWavemaker, for regular waves
+
+
+def site_name(fairlead: str) -> str:
+    """The MuJoCo site of a builder body's fairlead ``BODY.NAME``."""
+    return fairlead.replace(".", "__")
+
+
+def water_level(scene) -> float | None:
+    d = scene.domain
+    if isinstance(scene.fluid, Analytic):
+        return scene.fluid.level
+    if d is None:
+        return None
+    if isinstance(d, Tank) and d.water:
+        return max(b.hi[-1] for b in d.water)
+    return d.fill_level if isinstance(d, PolygonTank) else d.level
+
+
+def fluid_config(scene, setup):
+    from fluid.solver import FluidConfig
+
+    return FluidConfig(dim=scene.world.dim, dx=scene.fluid.dx, g=scene.world.gravity, **setup.config)
+
+
+def _wavemaker(scene):
+    from fluid.wavemaker import MotionRecord, RegularWavemaker, flap, piston
+
+    w = scene.waves
+    if isinstance(w, (Piston, Flap)):
+        wm = RegularWavemaker(w.kind, w.height, w.period, scene.domain.depth, w.ramp, scene.world.gravity)
+        return wm, wm.paddle(), wm.stroke if w.kind == "piston" else wm.stroke * scene.domain.height / wm.depth
+    rec = MotionRecord.from_file(w.file, w.column, w.scale, w.t_shift)
+    reach = float(np.abs(rec.value).max())
+    if w.paddle == "piston":
+        return None, piston(rec), 2 * reach
+    return None, flap(rec, hinge=(0.0, 0.0)), 2 * reach * scene.domain.height
+
+
+def _base_motion(scene):
+    from fluid.motion import Harmonic, Ramped, Rotation, Tabulated, Translation, read_at2
+
+    b = scene.base_motion
+    if isinstance(b, Shake):
+        sig = (Harmonic(b.amplitude, b.period) if b.amplitude is not None
+               else Harmonic.from_peak_acceleration(b.acceleration, b.period, from_rest=True))
+        m = Translation(b.direction, sig)
+        return m.ramped(b.ramp, 0.0, b.stop) if (b.ramp > 0 or b.stop is not None) else m
+    if isinstance(b, Roll):
+        sig = Harmonic(math.radians(b.amplitude), b.period)
+        if b.ramp > 0:
+            sig = Ramped(sig, b.ramp)
+        return Rotation(b.point, sig, b.axis)
+    if isinstance(b, TableMotion):
+        rows = np.loadtxt(b.file, comments="#", delimiter=None, ndmin=2)
+        sig = Tabulated(tuple(rows[:, 0]), tuple(rows[:, b.column] * b.scale), b.quantity)
+        return Translation(b.direction, sig)
+    assert isinstance(b, Earthquake)
+    rec = read_at2(b.file, b.baseline_degree)
+    if b.scale != 1.0:
+        rec = Tabulated(rec.times, tuple(np.asarray(rec.values) * b.scale), rec.quantity)
+    return Translation(b.direction, rec)
+
+
+def domain_points(scene, cfg, back: float = 0.0):
+    """(fluid points, walls) of the scene's domain: walls as ``(points, kind, group)``,
+    ``layers`` = ceil(2 h / dx) wall layers (the kernel's support)."""
+    from fluid.geometry import block, tank_walls, tank_with_water
+    from fluid.particles import Kind
+    from fluid.shapes import cylinder_tank, inclined_tank, polygon_tank
+
+    d, dx, dim = scene.domain, cfg.dx, cfg.dim
+    layers = math.ceil(2.0 * cfg.h_coef - 1e-9)
+    if isinstance(d, Flume):
+        from fluid.flume import flume
+
+        fl = flume(dx, d.length, d.depth, d.height, layers=layers, back=back,
+                   beach=None if d.beach is None else (d.beach.toe, d.beach.slope))
+        return fl.fluid, fl.walls
+    if isinstance(d, Tank) and d.water:
+        inner = [d.length] + ([d.width] if dim == 3 else []) + [d.height]
+        walls = tank_walls(np.zeros(dim), np.array(inner), dx, layers)
+        pts = np.concatenate([block(b.lo, b.hi, dx) for b in d.water])
+        return pts, [(walls, Kind.FIXED_WALL, WALLS)]
+    if isinstance(d, Tank):
+        built = tank_with_water(dim, dx, d.length, d.depth, d.height, d.width or 0.0, layers, cfg.rho0)
+    elif isinstance(d, InclinedTank):
+        built = inclined_tank(dim, dx, d.angle, d.length, d.depth, d.height, d.width or 1.0, layers, cfg.rho0)
+    elif isinstance(d, CylinderTank):
+        built = cylinder_tank(dx, d.diameter, d.depth, d.height, layers, cfg.rho0)
+    else:
+        built = polygon_tank(d.vertices, dx, d.fill_level, layers, cfg.rho0)
+    ps = built.particles
+    fluid = ps.kind == Kind.FLUID
+    return ps.pos[fluid].copy(), [(ps.pos[~fluid].copy(), Kind.FIXED_WALL, WALLS)]
+
+
+def _surface_heights(scene, points):
+    """The free surface over each fluid point [m]: the top of its water block, or the level."""
+    d = scene.domain
+    if isinstance(d, Tank) and d.water:
+        top = np.full(len(points), -np.inf)
+        for b in d.water:
+            inside = np.all((points >= np.array(b.lo)) & (points <= np.array(b.hi)), axis=1)
+            top[inside] = np.maximum(top[inside], b.hi[-1])
+        return top
+    return np.full(len(points), water_level(scene))
+
+
+def _mjcf_bodies(scene, level, rho):
+    """The MuJoCo model of the scene's builder bodies, floating ones at their computed height."""
+    from bodies import builders
+
+    from cosim.scene.placement import floating_height
+
+    dim, parts, heights = scene.world.dim, [], {}
+    lines = scene.moorings.lines if scene.moorings is not None else ()
+    for i, b in enumerate(scene.bodies):
+        mine = [ln for ln in lines if ln.fairlead.split(".")[0] == b.name]
+        if b.place == "floating":
+            z = floating_height(b, dim, level, rho, scene.world.gravity, mine, i)
+            heights[b.name] = z
+            pos = (b.pos[0], 0.0, z) if dim == 2 else (b.pos[0], b.pos[1], z)
+        else:
+            pos = (b.pos[0], 0.0, b.pos[1]) if dim == 2 else tuple(b.pos)
+        sites = {site_name(f"{b.name}.{k}"): ((p[0], 0.0, p[1]) if dim == 2 else p) for k, p in b.fairleads.items()}
+        common = dict(density=b.density, mass=b.mass, sites=sites)
+        if isinstance(b, Box):
+            parts.append(builders.box(b.name, b.size, pos, planar=dim == 2, euler=b.euler, **common))
+        elif isinstance(b, Cylinder):
+            parts.append(builders.cylinder(b.name, b.radius, b.length or 1.0, pos, planar=dim == 2, euler=b.euler,
+                                           **common))
+        else:
+            assert isinstance(b, Sphere)
+            parts.append(builders.sphere(b.name, b.radius, pos, **common))
+    xml = builders.scene(*parts, gravity=scene.world.gravity, timestep=scene.coupling.body_timestep)
+    return xml, heights
+
+
+def _bodies(scene, level, rho):
+    from bodies.mujoco_bodies import MujocoBodies
+
+    if any(isinstance(b, MJCF) for b in scene.bodies):
+        m = scene.bodies[0]
+        bodies = MujocoBodies(m.file, bodies=list(m.bodies) or None)
+        bodies.model.opt.gravity[:] = (0.0, 0.0, -scene.world.gravity)  # one gravity for every participant
+        return bodies, {}
+    xml, heights = _mjcf_bodies(scene, level, rho)
+    return MujocoBodies(xml), heights
+
+
+def _mooring(scene, level, rho, workdir: Path):
+    """The mooring participant of the scene's lines and model, with the MuJoCo site of
+    each fairlead."""
+    from moorings import MooringLine
+
+    m, g = scene.moorings, scene.world.gravity
+    mjcf = any(isinstance(b, MJCF) for b in scene.bodies)
+    lines = [MooringLine(ln.anchor, ln.length, ln.weight, EA=ln.EA, mass_per_length=ln.mass_per_length,
+                         diameter=ln.diameter, name=ln.name or ln.fairlead) for ln in m.lines]
+    sites = [ln.fairlead.split(".")[1] if mjcf else site_name(ln.fairlead) for ln in m.lines]
+    surface = level if level is not None else math.inf
+    if m.model == "catenary":
+        from moorings import CatenaryMooring
+
+        mooring = CatenaryMooring(lines)
+    elif m.model == "sph-cable":
+        from moorings.sph_cable import SPHCableMooring
+
+        mooring = SPHCableMooring(lines, n_particles=m.segments, water_z=surface, gravity=g, rho_water=rho)
+    elif m.model == "moordyn":
+        from moorings.moordyn_mooring import MoorDynMooring
+
+        mooring = MoorDynMooring(lines, segments=m.segments, water_level=level if level is not None else 0.0,
+                                 rho=rho, g=g)
+    else:
+        from moorings.fmu_export import catenary_fmu_variable_map, export_catenary_fmu
+        from moorings.fmu_mooring import FMUMooring
+
+        workdir.mkdir(parents=True, exist_ok=True)
+        path = export_catenary_fmu(lines, workdir / "mooring.fmu")
+        mooring = FMUMooring(path, lines, catenary_fmu_variable_map(lines))
+    return mooring, sites, [ln.name for ln in lines]
+
+
+def build(scene, workdir: Path) -> Built:
+    """The participants and coupler of ``scene``; files a participant needs (an exported
+    FMU) go into ``workdir``."""
+    from cosim.coupler import Coupler
+
+    level = water_level(scene)
+    rho = scene.fluid.rho0 if isinstance(scene.fluid, SPH) else getattr(scene.fluid, "rho", 1000.0)
+    out = Built(coupler=None, level=level)
+    if scene.bodies:
+        out.bodies, out.start_heights = _bodies(scene, level, rho)
+    moorings = []
+    if scene.moorings is not None:
+        out.mooring, sites, out.line_names = _mooring(scene, level, rho, Path(workdir))
+        moorings = [(out.mooring, sites)]
+    if isinstance(scene.fluid, SPH):
+        _build_sph(scene, out)
+    elif isinstance(scene.fluid, Analytic):
+        from fluid.analytic import AnalyticFluid
+
+        f = scene.fluid
+        out.fluid = AnalyticFluid(rho=f.rho, g=scene.world.gravity, free_surface_z=f.level,
+                                  linear_damping=f.linear_damping or None,
+                                  quadratic_damping=f.quadratic_damping or None)
+    scheme = scene.coupling.scheme
+    if scheme == "auto":
+        scheme = "fluid-first" if isinstance(scene.fluid, SPH) else "predictor-corrector"
+    if out.bodies is None:
+        others = [out.fluid] if out.fluid is not None else []
+        out.coupler = Coupler(others, dt=scene.coupling.dt)
+    else:
+        out.coupler = Coupler(bodies=out.bodies, fluid=out.fluid, moorings=moorings, dt=scene.coupling.dt,
+                              scheme=scheme, light_body=scene.coupling.light_body)
+    out.coupler.initialize()
+    if isinstance(scene.fluid, SPH) and out.bodies is not None:
+        out.sph = out.fluid.fluid
+    return out
+
+
+def _build_sph(scene, out: Built) -> None:
+    from cosim.scene.setup import choose
+
+    out.setup = choose(scene)
+    cfg = fluid_config(scene, out.setup)
+    motions, back = {}, 0.0
+    if scene.waves is not None:
+        out.wavemaker, paddle, stroke = _wavemaker(scene)
+        motions[PADDLE] = paddle
+        back = 0.5 * stroke + cfg.dx
+    if scene.base_motion is not None:
+        motions[WALLS] = _base_motion(scene)
+    pts, walls = domain_points(scene, cfg, back)
+    if out.bodies is not None:
+        from cosim.sph_fluid import SPHFluid
+
+        out.fluid = SPHFluid(cfg, pts, walls, z_surface=out.level, boundary=scene.fluid.body_boundary,
+                             motions=motions)
+        return
+    from fluid.equations import hydrostatic_density
+    from fluid.geometry import assemble
+    from fluid.particles import Kind
+    from fluid.solver import Fluid
+
+    built = assemble(cfg.dim, cfg.dx, cfg.rho0, pts, walls)
+    ps = built.particles
+    fl = ps.kind == Kind.FLUID
+    top = np.full(ps.n, out.level)
+    top[fl] = _surface_heights(scene, ps.pos[fl])
+    ps.rho[:] = hydrostatic_density(top - ps.pos[:, -1], cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g)
+    fluid = Fluid(cfg, ps)
+    for group, motion in motions.items():
+        fluid.prescribe_motion(group, motion)
+    out.fluid = out.sph = fluid

@@ -1,0 +1,118 @@
+"""The scene's probes: every recorded quantity is a named column ``ENTITY.QUANTITY`` with
+its unit (``box.heave`` [m], ``box.left.tension`` [N], ``gauge1.eta`` [m]), in groups
+that become one HDF5 series, one CSV and one plot each:
+
+- ``motion``: per body, surge, heave and pitch (2-D: rotation about +y) or surge, sway,
+  heave, roll, pitch, yaw (3-D, z-y-x Euler angles), displacements from the start [m]
+  and angles [deg];
+- ``tensions``: per line, the tension at its fairlead [N] (and ``.tether`` [N], the load a
+  taut inextensible catenary line carries as a length constraint);
+- ``loads``: per body, the fluid's and the moorings' force [N] over the last step;
+- ``gauges``: free-surface elevation above the still water [m] at each gauge;
+- ``pressure``: each wall patch's pressure [Pa];
+- ``energy``: the SPH fluid's kinetic and potential energy [J] (2-D: per metre, J/m).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+
+
+@dataclass
+class Group:
+    """Columns sampled together: ``sample()`` returns one value per column."""
+
+    name: str
+    columns: list
+    units: list
+    sample: Callable[[], np.ndarray]
+
+
+def _angles(R: np.ndarray, dim: int) -> list[float]:
+    if dim == 2:  # the hinge about +y: x' = x cos + z sin
+        return [math.degrees(math.atan2(R[0, 2], R[2, 2]))]
+    pitch = math.asin(max(-1.0, min(1.0, -R[2, 0])))
+    return [math.degrees(math.atan2(R[2, 1], R[2, 2])), math.degrees(pitch), math.degrees(math.atan2(R[1, 0], R[0, 0]))]
+
+
+def groups(scene, built) -> list[Group]:
+    """The probe groups of a built scene."""
+    p, dim, out = scene.probes, scene.world.dim, []
+    b = built.bodies
+    if b is not None:
+        names = list(b.body_names)
+        chosen = names if "all" in p.motion else [n for n in p.motion]
+        idx = [names.index(n) for n in chosen]
+        com0 = b.kinematics().com.copy()
+        lin = ["surge", "heave"] if dim == 2 else ["surge", "sway", "heave"]
+        ang = ["pitch"] if dim == 2 else ["roll", "pitch", "yaw"]
+        axes = [0, 2] if dim == 2 else [0, 1, 2]
+
+        def motion():
+            k = b.kinematics()
+            row = []
+            for j in idx:
+                row += [float(k.com[j, a] - com0[j, a]) for a in axes] + _angles(k.rotation[j], dim)
+            return np.array(row)
+
+        if idx:
+            out.append(Group("motion", [f"{n}.{q}" for n in chosen for q in lin + ang],
+                             [u for _ in chosen for u in ["m"] * len(lin) + ["deg"] * len(ang)], motion))
+        if p.loads:
+            comps = "xz" if dim == 2 else "xyz"
+            led = built.coupler.ledger
+
+            def loads():
+                last = led.last()
+                if not last:
+                    return np.zeros(2 * len(names) * len(axes))
+                return np.concatenate([np.concatenate([last["fluid_force"][j, axes], last["mooring_force"][j, axes]])
+                                       for j in range(len(names))])
+
+            cols = [f"{n}.{src}_F{c}" for n in names for src in ("fluid", "mooring") for c in comps]
+            out.append(Group("loads", cols, ["N"] * len(cols), loads))
+    m = built.mooring
+    if m is not None and p.tensions:
+        lines = built.line_names
+        tethered = bool(built.coupler.tether_tensions())
+        c = built.coupler
+
+        def tensions():
+            t = np.linalg.norm(np.asarray(m.fairlead_forces(), float), axis=1)
+            if not tethered:
+                return t
+            tt = c.tether_tensions()
+            return np.concatenate([t, [tt.get(f"{m.name}.{i}", 0.0) for i in range(len(lines))]])
+
+        cols = [f"{n}.tension" for n in lines] + ([f"{n}.tether" for n in lines] if tethered else [])
+        out.append(Group("tensions", cols, ["N"] * len(cols), tensions))
+    sph = built.sph
+    if sph is not None and p.gauges:
+        from fluid.probes import surface_elevation
+
+        g = np.array([x for x in p.gauges], float)
+        level = built.level
+
+        def gauges():
+            return surface_elevation(sph, g) - level
+
+        out.append(Group("gauges", [f"gauge{i + 1}.eta" for i in range(len(g))], ["m"] * len(g), gauges))
+    if sph is not None and p.pressure:
+        from fluid.probes import wall_patch_pressure
+
+        patches = p.pressure
+
+        def pressure():
+            return np.array([wall_patch_pressure(sph, q.centre, q.normal, q.size) for q in patches])
+
+        out.append(Group("pressure", [f"{q.name}.p" for q in patches], ["Pa"] * len(patches), pressure))
+    if sph is not None and p.energy:
+        from fluid.probes import fluid_energies
+
+        out.append(Group("energy", ["fluid.kinetic", "fluid.potential"], ["J/m" if dim == 2 else "J"] * 2,
+                         lambda: np.array(fluid_energies(sph))))
+    return out

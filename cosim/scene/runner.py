@@ -1,0 +1,385 @@
+"""Run a scene: the one loop, recorder, checkpoint and plot writer of every coupled run
+(``Scene.run()``, ``cosim run``).
+
+The run stops at exact event times, ``k * every`` (counted, never accumulated): probe
+samples (``world.sample_every``), particle snapshots (``snapshot_every``), checkpoints
+(``checkpoint_every``) and particle plots (``plot_at``); the coupler lands on each
+(``Coupler.run``). One output folder per run:
+
+- ``scene.toml``: the scene as run, every field;
+- ``run.h5`` + ``run.xmf`` (ParaView): ``/series/probes/GROUP`` (one column per
+  ``ENTITY.QUANTITY``, :mod:`cosim.scene.probes`), ``/series/ledger/BODY`` (the loads of
+  every coupling step), particle snapshots (``fluid.output``);
+- ``GROUP.csv`` per probe group (header ``t [s]`` then ``NAME [UNIT]``), ``ledger.csv``;
+- ``GROUP.png`` per probe group, ``particles_tT.png`` at each ``plot_at`` time;
+- ``summary.json``: set-up, scheme, sizes, steps, wall and CPU time, each series' range;
+- ``checkpoint.pkl``: the latest checkpoint (pickle: read back only your own).
+
+``resume=True`` continues from ``checkpoint.pkl`` in the folder, bit for bit, to the
+scene's duration (which may be longer than the first run's: nothing else may differ).
+If the run raises, the outputs so far are written and left readable before the error
+propagates.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import pickle
+import time
+from pathlib import Path
+
+import numpy as np
+
+from cosim.errors import InputError
+from cosim.scene.fields import SceneError
+
+CHECKPOINT = "checkpoint.pkl"
+FORMAT = "cosim-scene-checkpoint-1"
+_TICK = 1e-12  # the coupler's clock resolution [s]
+#: per-particle arrays of each snapshot (attributes of the fluid's particle set)
+SNAPSHOT_FIELDS = ("vel", "rho", "p", "kind", "ids")
+
+
+class Results:
+    """The probe series of a run: ``results["box.heave"]`` (an array at ``results.t``),
+    ``results.units[name]``, ``results.summary`` (summary.json), ``results.out``."""
+
+    def __init__(self, t, series: dict, units: dict, summary: dict, out: Path):
+        self.t, self.series, self.units, self.summary, self.out = np.asarray(t), series, units, summary, Path(out)
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        if name not in self.series:
+            raise KeyError(f"no series {name!r}; series: {', '.join(self.series)}")
+        return self.series[name]
+
+    def __contains__(self, name) -> bool:
+        return name in self.series
+
+    @property
+    def names(self) -> list[str]:
+        return list(self.series)
+
+    def __repr__(self) -> str:
+        return f"Results({len(self.t)} samples of {len(self.series)} series in {self.out})"
+
+
+def _event_times(w) -> list[tuple[float, set]]:
+    """(time, what is due) for every event of the run, in order."""
+    ev: dict[int, tuple[float, set]] = {}
+
+    def add(t, what):
+        k = round(t / _TICK)
+        ev.setdefault(k, (t, set()))[1].add(what)
+
+    for every, what in ((w.sample_every, "sample"), (w.snapshot_every, "snapshot"),
+                        (w.checkpoint_every, "checkpoint")):
+        if every > 0:
+            n = math.floor(w.duration / every * (1 + 1e-12))
+            for k in range(n + 1):
+                add(k * every, what)
+    for t in w.plot_at:
+        add(t, "plot")
+    add(w.duration, "sample")
+    if w.checkpoint_every > 0:
+        add(w.duration, "checkpoint")
+    return [ev[k] for k in sorted(ev)]
+
+
+class _Recorder:
+    def __init__(self, scene, built, out: Path):
+        from cosim.scene.probes import groups
+
+        self.scene, self.built, self.out = scene, built, out
+        self.groups = groups(scene, built)
+        self.rows: dict[str, list] = {g.name: [] for g in self.groups}
+        self.times: list[float] = []
+        self.h5 = None
+        self.ledger_done = 0
+        self.n_snap = 0
+
+    def open(self, old_snapshots=()):
+        from fluid.output import H5Output
+
+        s = self.scene
+        attrs = {"scene": s.name, "dim": s.world.dim, "duration_s": s.world.duration}
+        self.h5 = H5Output(self.out / "run.h5", dim=s.world.dim, attrs={k: v for k, v in attrs.items() if k != "dim"})
+        for snap in old_snapshots:
+            self.h5.snapshot(snap.pop("t"), snap.pop("pos"), **snap)
+            self.n_snap += 1
+        for k, t in enumerate(self.times):
+            for g in self.groups:
+                self.h5.series(f"probes/{g.name}", t, **dict(zip(g.columns, self.rows[g.name][k])))
+
+    def sample(self, t: float):
+        self.times.append(t)
+        for g in self.groups:
+            v = np.asarray(g.sample(), float)
+            bad = ~np.isfinite(v)
+            if bad.any():
+                from cosim.errors import InstabilityError
+
+                raise InstabilityError(f"t = {t:.9g} s: probe {g.columns[int(np.argmax(bad))]!r} is not finite "
+                                       f"({v[bad][0]})")
+            self.rows[g.name].append(v)
+            self.h5.series(f"probes/{g.name}", t, **dict(zip(g.columns, v)))
+
+    def snapshot(self, t: float):
+        sph = self.built.sph
+        if sph is not None:
+            ps = sph.ps
+            self.h5.snapshot(t, ps.pos, **{f: getattr(ps, f) for f in SNAPSHOT_FIELDS})
+            self.n_snap += 1
+        self.write_ledger()
+
+    def write_ledger(self):
+        led = self.built.coupler.ledger
+        if led.body_names:
+            self.ledger_done = led.write_h5(self.h5, start=self.ledger_done)
+
+    def series(self):
+        out, units = {}, {}
+        for g in self.groups:
+            a = np.array(self.rows[g.name]).reshape(len(self.times), len(g.columns))
+            for j, (c, u) in enumerate(zip(g.columns, g.units)):
+                out[c], units[c] = a[:, j], u
+        return out, units
+
+    def close(self):
+        if self.h5 is not None and not self.h5.closed:
+            try:
+                self.write_ledger()
+            finally:
+                self.h5.close()
+
+
+def _check_resume(scene, path: Path):
+    if not path.is_file():
+        raise InputError(f"--resume: no checkpoint {path}; run without --resume first (with world.checkpoint_every "
+                         f"> 0), or give the folder of that run")
+    with open(path, "rb") as f:
+        try:
+            blob = pickle.load(f)
+        except Exception:
+            blob = None
+    if not isinstance(blob, dict) or blob.get("format") != FORMAT:
+        raise InputError(f"--resume: {path} is not a checkpoint of a scene run")
+    a, b = dict(blob["scene"]), scene.to_dict()
+    a["world"] = {k: v for k, v in a["world"].items() if k != "duration"}
+    b["world"] = {k: v for k, v in b["world"].items() if k != "duration"}
+    if a != b:
+        key = _first_difference(a, b)
+        raise SceneError(key, "differs from the run being resumed; a resumed run may change world.duration only")
+    if scene.world.duration < blob["t"]:
+        raise SceneError("world.duration", f"{scene.world.duration} s is before the checkpoint at {blob['t']} s")
+    return blob
+
+
+def _first_difference(a, b, prefix=""):
+    if isinstance(a, dict) and isinstance(b, dict):
+        for k in list(a) + [k for k in b if k not in a]:
+            if a.get(k) != b.get(k):
+                return _first_difference(a.get(k), b.get(k), f"{prefix}.{k}" if prefix else k)
+    if isinstance(a, list) and isinstance(b, list) and len(a) == len(b):
+        for i, (x, y) in enumerate(zip(a, b)):
+            if x != y:
+                return _first_difference(x, y, f"{prefix}[{i}]")
+    return prefix
+
+
+def _old_snapshots(path: Path, t_max: float):
+    from fluid.output import read_snapshot
+
+    import h5py
+
+    if not path.is_file():
+        return []
+    with h5py.File(path, "r") as f:
+        times = f["snapshot_times"][:]
+    return [read_snapshot(path, k) for k, t in enumerate(times) if t <= t_max + 1e-9]
+
+
+def _write_checkpoint(path: Path, scene, built, rec, t, wall):
+    tmp = path.with_suffix(".tmp")
+    c = built.coupler
+    with open(tmp, "wb") as f:
+        pickle.dump({"format": FORMAT, "scene": scene.to_dict(), "t": t, "state": c.save_state(),
+                     "ledger": c.ledger.arrays(), "times": rec.times, "rows": rec.rows, "wall_s": wall}, f)
+    os.replace(tmp, path)
+
+
+def run(scene, out, *, resume: bool = False, progress=None) -> Results:
+    """Run ``scene`` into the folder ``out``; see the module docstring."""
+    from cosim.progress import Progress
+    from cosim.scene.build import build
+
+    out = Path(out)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        probe = out / ".writable"
+        probe.write_text("")
+        probe.unlink()
+    except OSError as e:
+        raise InputError(f"output folder {str(out)!r} cannot be written ({e.strerror}); give another --out") from None
+    blob = _check_resume(scene, out / CHECKPOINT) if resume else None
+    wall0, cpu0 = time.perf_counter(), time.process_time()
+    built = build(scene, out)
+    build_s = time.perf_counter() - wall0
+    c, sph = built.coupler, built.sph
+    rec = _Recorder(scene, built, out)
+    t_start, wall_before = 0.0, 0.0
+    if blob is not None:
+        c.load_state(blob["state"])
+        c.ledger.restore(blob["ledger"])
+        rec.times, rec.rows, t_start, wall_before = list(blob["times"]), blob["rows"], blob["t"], blob["wall_s"]
+        old = out / "run.h5"
+        snaps = _old_snapshots(old, t_start)
+        rec.open(snaps)
+    else:
+        if sph is not None and scene.fluid.settle > 0:
+            sph.settle(scene.fluid.settle)
+        rec.open()
+    scene.to_toml(out / "scene.toml")
+    events = [(t, what) for t, what in _event_times(scene.world) if t > t_start + 0.5 * _TICK or
+              (blob is None and t == 0.0)]
+    bar = Progress(t_start, scene.world.duration, enabled=progress)
+    steps0, error = c.steps, None
+    loop0 = time.perf_counter()
+    try:
+        for t, what in events:
+            if t > c.t:
+                bar.update(t, c.run(t, progress=False))
+            if "sample" in what:
+                rec.sample(c.t)
+            if "snapshot" in what:
+                rec.snapshot(c.t)
+            if "plot" in what and sph is not None:
+                _plot_particles(out, sph, c.t, scene)
+            if "checkpoint" in what:
+                _write_checkpoint(out / CHECKPOINT, scene, built, rec, c.t,
+                                  wall_before + time.perf_counter() - loop0)
+    except BaseException as e:
+        error = e
+        raise
+    finally:
+        bar.close(c.t)
+        rec.close()
+        loop_s = time.perf_counter() - loop0
+        series, units = rec.series()
+        summary = _summary(scene, built, series, units, c.steps - steps0, loop_s, build_s,
+                           time.process_time() - cpu0, wall_before, blob is not None, error)
+        _write_tables(out, rec, built)
+        (out / "summary.json").write_text(json.dumps(summary, indent=1, default=_json))
+        if series and rec.times:
+            _plot_groups(out, rec, scene)
+    return Results(rec.times, series, units, summary, out)
+
+
+def _json(o):
+    if isinstance(o, np.generic):
+        return o.item()
+    if isinstance(o, (np.ndarray, tuple)):
+        return list(o)
+    return str(o)
+
+
+def _summary(scene, built, series, units, steps, loop_s, build_s, cpu_s, wall_before, resumed, error):
+    c = built.coupler
+    s = {"scene": scene.name, "dim": scene.world.dim, "fluid": scene.fluid.model,
+         "duration_s": scene.world.duration, "t_reached_s": c.t, "steps": c.steps, "steps_this_run": steps,
+         "wall_s": round(loop_s + wall_before, 3), "build_s": round(build_s, 3), "cpu_s": round(cpu_s, 3),
+         "resumed": resumed}
+    if c.t > 0:
+        s["wall_s_per_simulated_s"] = round((loop_s + wall_before) / c.t, 3)
+    if hasattr(c, "scheme") and built.bodies is not None:
+        s["scheme"], s["remedies"] = c.scheme, dict(c.remedies)
+    if built.setup is not None:
+        s["setup"] = {"name": built.setup.name, "reason": built.setup.reason, "config": built.setup.config,
+                      "overridden": list(built.setup.overridden)}
+    if built.sph is not None:
+        from fluid.particles import Kind
+
+        ps = built.sph.ps
+        s["particles"], s["fluid_particles"] = int(ps.n), int((ps.kind == Kind.FLUID).sum())
+        s["speed_of_sound_m_s"] = built.sph.config.speed_of_sound
+    if built.start_heights:
+        s["floating_start_z_m"] = built.start_heights
+    if built.wavemaker is not None:
+        s["wavemaker"] = {"stroke_m": built.wavemaker.stroke, "wavelength_m": built.wavemaker.wavelength}
+    if built.mooring is not None:
+        s["mooring"] = {"model": scene.moorings.model, "lines": built.line_names}
+    s["series"] = {k: {"unit": units[k], "min": float(v.min()), "max": float(v.max()), "mean": float(v.mean()),
+                       "last": float(v[-1])} for k, v in series.items() if len(v)}
+    if error is not None:
+        s["error"] = f"{type(error).__name__}: {error}"
+    return s
+
+
+def _write_tables(out: Path, rec, built):
+    t = np.asarray(rec.times)
+    for g in rec.groups:
+        a = np.array(rec.rows[g.name]).reshape(len(t), len(g.columns))
+        with open(out / f"{g.name}.csv", "w") as f:
+            f.write("t [s]," + ",".join(f"{c} [{u}]" for c, u in zip(g.columns, g.units)) + "\n")
+            for k in range(len(t)):
+                f.write(repr(float(t[k])) + "," + ",".join(repr(float(x)) for x in a[k]) + "\n")
+    if built.coupler.ledger.body_names:
+        built.coupler.ledger.write_csv(out / "ledger.csv")
+
+
+def _plot_groups(out: Path, rec, scene):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    t = np.asarray(rec.times)
+    for g in rec.groups:
+        a = np.array(rec.rows[g.name]).reshape(len(t), len(g.columns))
+        quantities = list(dict.fromkeys(c.rsplit(".", 1)[1] for c in g.columns))
+        fig, axes = plt.subplots(len(quantities), 1, figsize=(7, 1.2 + 1.8 * len(quantities)), dpi=110,
+                                 sharex=True, squeeze=False)
+        for ax, q in zip(axes[:, 0], quantities):
+            for j, c in enumerate(g.columns):
+                if c.rsplit(".", 1)[1] == q:
+                    ax.plot(t, a[:, j], label=c.rsplit(".", 1)[0])
+            unit = g.units[[c.rsplit(".", 1)[1] for c in g.columns].index(q)]
+            ax.set_ylabel(f"{q} [{unit}]")
+            ax.grid(alpha=0.3)
+            if sum(c.rsplit(".", 1)[1] == q for c in g.columns) > 1:
+                ax.legend(fontsize=7, loc="best")
+        axes[-1, 0].set_xlabel("t [s]")
+        axes[0, 0].set_title(f"{scene.name}: {g.name}", fontsize=10)
+        fig.tight_layout()
+        fig.savefig(out / f"{g.name}.png")
+        plt.close(fig)
+
+
+def _plot_particles(out: Path, sph, t: float, scene):
+    """The particles at time ``t`` [s] (3-D: seen from the side, x-z), coloured by speed
+    or pressure; walls grey."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from fluid.particles import Kind
+
+    ps = sph.ps
+    fl = ps.kind == Kind.FLUID
+    x, z = ps.pos[:, 0], ps.pos[:, -1]
+    speed = scene.world.plot_color == "velocity"
+    c = np.linalg.norm(ps.vel[fl], axis=1) if speed else ps.p[fl]
+    fig, ax = plt.subplots(figsize=(8, 4), dpi=110)
+    size = max(0.5, 3000.0 / max(len(x), 1))
+    ax.scatter(x[~fl], z[~fl], s=size, c="0.6", lw=0)
+    sc = ax.scatter(x[fl], z[fl], s=size, c=c, cmap="viridis", lw=0)
+    fig.colorbar(sc, ax=ax, label="speed [m/s]" if speed else "pressure [Pa]")
+    ax.set_aspect("equal")
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("z [m]")
+    ax.set_title(f"{scene.name}: t = {t:.3f} s", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(out / f"particles_t{t:07.3f}.png")
+    plt.close(fig)

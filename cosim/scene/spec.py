@@ -1,0 +1,615 @@
+"""The scene: one description of a coupled run, as frozen dataclasses validated on
+construction. Every default is here, with its unit; :mod:`cosim.scene.toml_io` reads and
+writes the same fields as TOML, key for key.
+
+A scene is made of
+
+- :class:`World`: dimension (2: the x-z plane, 1 m thick; 3), gravity (one value for every
+  participant), duration, sampling, snapshot, checkpoint and plot times;
+- a fluid: :class:`NoFluid`, :class:`Analytic` (hydrostatics and damping) or :class:`SPH`
+  (spacing ``dx``; its set-up chosen from the scene, :mod:`cosim.scene.setup`, each
+  setting overridable);
+- a domain for the SPH fluid: :class:`Tank` (filled to a depth, or holding water blocks),
+  :class:`Flume` (2-D, with a :class:`Beach`), :class:`InclinedTank`, :class:`CylinderTank`
+  (3-D), :class:`PolygonTank` (2-D); wall layers follow from the kernel;
+- excitations: ``waves`` (:class:`Piston`, :class:`Flap`, :class:`PaddleRecord`: a flume's
+  wavemaker) or ``base_motion`` of a tank (:class:`Shake`, :class:`Roll`,
+  :class:`TableMotion`, :class:`Earthquake`);
+- ``bodies`` (:class:`Box`, :class:`Cylinder`, :class:`Sphere`, :class:`MJCF`), placed at a
+  given pose or ``place="floating"`` (at the hydrostatic equilibrium, computed);
+- :class:`Moorings`: :class:`Line` records and the one field ``model`` that picks the
+  mooring model;
+- :class:`Probes`: wave gauges, wall-pressure patches, body motion, tensions, loads, energy;
+- :class:`Coupling`: scheme and light-body remedy (``"auto"``: chosen to fit the fluid).
+
+Coordinates: 2-D scenes give points as (x, z), 3-D as (x, y, z) [m], z up, gravity -z.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+from pathlib import Path
+
+from cosim.scene.fields import (SceneError, Spec, choice, flag, gauges, names, num, part, parts, required, table,
+                                text, vec, vecs, whole)
+
+MOORING_MODELS = ("catenary", "sph-cable", "moordyn", "fmu")
+SETUPS = ("auto", "still", "waves", "sloshing", "impact", "defaults")
+
+
+def tag(value: str):
+    """The field that tells a class apart among the others of its place (not an argument)."""
+    return dataclasses.field(default=value, init=False)
+
+
+# ------------------------------------------------------------------------ world
+@dataclass(frozen=True)
+class World(Spec):
+    """What every participant shares, and when things are written."""
+
+    dim: int = whole(2, "2: the x-z plane (bodies 1 m thick), 3: space", lo=2, hi=3)
+    duration: float = num(1.0, "simulated time", "s", lo=0, lo_open=True)
+    gravity: float = num(9.81, "acceleration of gravity along -z, for every participant", "m/s^2", lo=0)
+    sample_every: float = num(0.01, "interval between probe samples", "s", lo=0, lo_open=True)
+    snapshot_every: float = num(0.1, "interval between particle snapshots in run.h5; 0: none", "s", lo=0)
+    checkpoint_every: float = num(0.0, "interval between checkpoints for --resume; 0: none", "s", lo=0)
+    plot_at: tuple = vecs("times of the particle plots (PNG)", "s", sizes=(0,))
+    plot_color: str = choice("velocity", "what colours the particle plots", ("velocity", "pressure"))
+
+    def validate(self):
+        for i, t in enumerate(self.plot_at):
+            if not 0 <= t <= self.duration:
+                raise SceneError(f"plot_at[{i}]", f"{t} s lies outside the run, 0 .. {self.duration} s")
+        if self.sample_every > self.duration:
+            raise SceneError("sample_every", f"{self.sample_every} s is longer than the run ({self.duration} s)")
+
+
+# ------------------------------------------------------------------------ fluids
+@dataclass(frozen=True)
+class NoFluid(Spec):
+    """No fluid: bodies, moorings and gravity only."""
+
+    TAG = ("model", "none")
+    model: str = tag("none")
+
+
+@dataclass(frozen=True)
+class Analytic(Spec):
+    """The analytic fluid (``fluid.analytic.AnalyticFluid``): hydrostatics of the
+    submerged volume under a flat free surface at ``level``, plus damping and added mass
+    per body (6 coefficients each, world axes: 3 translational, then 3 rotational)."""
+
+    TAG = ("model", "analytic")
+    model: str = tag("analytic")
+    rho: float = num(1000.0, "water density", "kg/m^3", lo=0, lo_open=True)
+    level: float = num(0.0, "height of the still free surface", "m")
+    linear_damping: dict = table("per body: 6 linear damping coefficients [N s/m, N m s]", sizes=(6,))
+    quadratic_damping: dict = table("per body: 6 quadratic damping coefficients [N s^2/m^2, N m s^2]", sizes=(6,))
+
+
+@dataclass(frozen=True)
+class SPH(Spec):
+    """The weakly compressible SPH fluid (``fluid.solver``). ``dx`` is the one setting
+    every scene gives; the rest come from the set-up (``setup``, see
+    :mod:`cosim.scene.setup`: ``"auto"`` picks it from what the scene contains) unless
+    set here. Unset (None) fields take the set-up's value, then ``FluidConfig``'s."""
+
+    TAG = ("model", "sph")
+    model: str = tag("sph")
+    dx: float = required(num(None, "particle spacing", "m", lo=0, lo_open=True, optional=False))
+    setup: str = choice("auto", "fluid set-up: auto (from the scene), still, waves, sloshing, impact, defaults",
+                        SETUPS)
+    rho0: float = num(1000.0, "reference density", "kg/m^3", lo=0, lo_open=True)
+    c0: float = num(None, "speed of sound; unset: c0_factor * u_max", "m/s", lo=0, lo_open=True)
+    c0_factor: float = num(None, "c0 / u_max (>= 10)", lo=10)
+    u_max: float = num(None, "expected largest flow speed; unset: from the scene", "m/s", lo=0, lo_open=True)
+    h_coef: float = num(None, "smoothing length / dx", lo=1, hi=3)
+    kernel: str = choice(None, "SPH kernel", ("wendland", "cubic"))
+    walls: str = choice(None, "tank-wall densities", ("dbc", "adami"))
+    alpha: float = num(None, "artificial viscosity", lo=0, hi=1)
+    alpha_wall: float = num(None, "factor on alpha at walls (0: slip)", lo=0, hi=1)
+    nu: float = num(None, "kinematic (laminar) viscosity", "m^2/s", lo=0)
+    xsph_eps: float = num(None, "XSPH coefficient", lo=0, hi=1)
+    diffusion: str = choice(None, "density diffusion", ("fourtakas", "antuono", "molteni", "none"))
+    delta: float = num(None, "density diffusion coefficient", lo=0, hi=1)
+    diffusion_at_surface: bool = flag(None, "false: fade the density diffusion out under the free surface")
+    cfl: float = num(None, "CFL factor", lo=0, hi=0.4, lo_open=True)
+    integrator: str = choice(None, "time integration", ("symplectic", "verlet"))
+    mls_every: int = whole(None, "steps between MLS density re-initialisations (0: never)", lo=0)
+    threads: int = whole(None, "numba threads (unset: by particle count)", lo=1)
+    settle: float = num(0.0, "damped relaxation of the particles before the run (clock held at 0)", "s", lo=0)
+    body_boundary: str = choice("mdbc", "density of the bodies' boundary particles", ("mdbc", "dbc"))
+
+    def validate(self):
+        if self.c0 is not None and self.u_max is not None:
+            raise SceneError("c0", "give c0 or u_max, not both (c0 = c0_factor * u_max)")
+
+
+FLUIDS = (NoFluid, Analytic, SPH)
+
+
+# ------------------------------------------------------------------------ domains
+@dataclass(frozen=True)
+class Block(Spec):
+    """A box of water from corner ``lo`` to corner ``hi`` [m]."""
+
+    lo: tuple = required(vec(None, "lower corner", "m"))
+    hi: tuple = required(vec(None, "upper corner", "m"))
+
+    def validate(self):
+        if len(self.lo) != len(self.hi) or not all(h > lo for lo, h in zip(self.lo, self.hi)):
+            raise SceneError("hi", f"{self.hi} must exceed lo = {self.lo} in every coordinate")
+
+
+@dataclass(frozen=True)
+class Tank(Spec):
+    """A rectangular open tank, inner corner at the origin: ``length`` along x, ``width``
+    along y (3-D only), walls ``height`` high; water to ``depth`` or in ``water`` blocks
+    (one or the other)."""
+
+    TAG = ("kind", "tank")
+    kind: str = tag("tank")
+    length: float = required(num(None, "inner length along x", "m", lo=0, lo_open=True, optional=False))
+    height: float = required(num(None, "wall height", "m", lo=0, lo_open=True, optional=False))
+    width: float = num(None, "inner width along y (3-D only)", "m", lo=0, lo_open=True)
+    depth: float = num(None, "still-water depth (or give water blocks)", "m", lo=0, lo_open=True)
+    water: tuple = parts("boxes of water, e.g. a dam-break column (or give depth)", Block)
+
+    def validate(self):
+        if (self.depth is None) == (not self.water):
+            raise SceneError("depth", "give either depth (a tank filled to it) or water blocks, one of the two")
+        if self.depth is not None and self.depth >= self.height:
+            raise SceneError("depth", f"{self.depth} m must be below the wall height {self.height} m")
+
+    @property
+    def level(self):
+        return self.depth
+
+
+@dataclass(frozen=True)
+class Beach(Spec):
+    """A solid ramp rising from the bottom at ``toe`` [m] with ``slope`` (rise over run)."""
+
+    toe: float = required(num(None, "x of the beach's toe", "m", lo=0, lo_open=True, optional=False))
+    slope: float = required(num(None, "rise over run", lo=0, lo_open=True, optional=False))
+
+
+@dataclass(frozen=True)
+class Flume(Spec):
+    """A 2-D wave flume: the paddle at x = 0, the far wall at ``length``, water ``depth``
+    deep, walls ``height`` high, an optional :class:`Beach`."""
+
+    TAG = ("kind", "flume")
+    kind: str = tag("flume")
+    length: float = required(num(None, "paddle to far wall", "m", lo=0, lo_open=True, optional=False))
+    depth: float = required(num(None, "still-water depth", "m", lo=0, lo_open=True, optional=False))
+    height: float = required(num(None, "wall height", "m", lo=0, lo_open=True, optional=False))
+    beach: Beach = part(None, "a sloping beach that absorbs the waves", Beach)
+
+    def validate(self):
+        if self.depth >= self.height:
+            raise SceneError("depth", f"{self.depth} m must be below the wall height {self.height} m")
+        if self.beach is not None and not self.beach.toe < self.length:
+            raise SceneError("beach.toe", f"{self.beach.toe} m must lie inside the flume (< length {self.length} m)")
+
+    @property
+    def level(self):
+        return self.depth
+
+
+@dataclass(frozen=True)
+class InclinedTank(Spec):
+    """A tank whose right side leans outwards ``angle`` [deg] from the vertical (seed 001
+    §3.2), bottom ``length`` long; 3-D: ``width`` along y."""
+
+    TAG = ("kind", "inclined-tank")
+    kind: str = tag("inclined-tank")
+    angle: float = required(num(None, "inclination of the right side from the vertical", "deg", lo=0, hi=90,
+                                hi_open=True, optional=False))
+    length: float = required(num(None, "bottom length", "m", lo=0, lo_open=True, optional=False))
+    depth: float = required(num(None, "still-water depth", "m", lo=0, lo_open=True, optional=False))
+    height: float = required(num(None, "wall height", "m", lo=0, lo_open=True, optional=False))
+    width: float = num(None, "width along y (3-D only)", "m", lo=0, lo_open=True)
+
+    def validate(self):
+        if self.depth > self.height:
+            raise SceneError("depth", f"{self.depth} m must not exceed the wall height {self.height} m")
+
+    @property
+    def level(self):
+        return self.depth
+
+
+@dataclass(frozen=True)
+class CylinderTank(Spec):
+    """A vertical cylindrical tank (3-D, seed 001 §3.3), axis along z through the origin."""
+
+    TAG = ("kind", "cylinder-tank")
+    kind: str = tag("cylinder-tank")
+    diameter: float = required(num(None, "inner diameter", "m", lo=0, lo_open=True, optional=False))
+    depth: float = required(num(None, "still-water depth", "m", lo=0, lo_open=True, optional=False))
+    height: float = required(num(None, "wall height", "m", lo=0, lo_open=True, optional=False))
+
+    def validate(self):
+        if self.depth > self.height:
+            raise SceneError("depth", f"{self.depth} m must not exceed the wall height {self.height} m")
+
+    @property
+    def level(self):
+        return self.depth
+
+
+@dataclass(frozen=True)
+class PolygonTank(Spec):
+    """A 2-D container whose inner outline is the closed polygon ``vertices`` (x, z) [m],
+    walled all round, filled to ``fill_level`` [m]."""
+
+    TAG = ("kind", "polygon")
+    kind: str = tag("polygon")
+    vertices: tuple = required(vecs("the inner outline's corners (x, z)", "m", sizes=(2,), min_len=3))
+    fill_level: float = required(num(None, "height of the still water", "m", optional=False))
+
+    def validate(self):
+        from fluid.shapes import signed_area
+
+        if abs(signed_area(self.vertices)) <= 0:
+            raise SceneError("vertices", "the polygon has no area; give at least 3 corners that enclose one")
+        zs = [v[1] for v in self.vertices]
+        if not min(zs) < self.fill_level:
+            raise SceneError("fill_level", f"{self.fill_level} m is at or below the polygon's lowest point {min(zs)} m")
+
+    @property
+    def level(self):
+        return self.fill_level
+
+
+DOMAINS = (Tank, Flume, InclinedTank, CylinderTank, PolygonTank)
+
+
+# ------------------------------------------------------------------------ excitations
+@dataclass(frozen=True)
+class Piston(Spec):
+    """A piston wavemaker making regular waves (linear wavemaker theory, ``fluid.wavemaker``)."""
+
+    TAG = ("kind", "piston")
+    kind: str = tag("piston")
+    height: float = required(num(None, "wave height H", "m", lo=0, lo_open=True, optional=False))
+    period: float = required(num(None, "wave period T", "s", lo=0, lo_open=True, optional=False))
+    ramp: float = num(2.0, "periods over which the paddle motion ramps in", lo=0)
+
+
+@dataclass(frozen=True)
+class Flap(Spec):
+    """A flap wavemaker hinged at the flume's bottom, making regular waves."""
+
+    TAG = ("kind", "flap")
+    kind: str = tag("flap")
+    height: float = required(num(None, "wave height H", "m", lo=0, lo_open=True, optional=False))
+    period: float = required(num(None, "wave period T", "s", lo=0, lo_open=True, optional=False))
+    ramp: float = num(2.0, "periods over which the paddle motion ramps in", lo=0)
+
+
+@dataclass(frozen=True)
+class PaddleRecord(Spec):
+    """A paddle driven by a recorded history: time [s] in the first column, the piston's
+    displacement [m] or the flap's angle [rad] (times ``scale``) in ``column``."""
+
+    TAG = ("kind", "record")
+    kind: str = tag("record")
+    paddle: str = required(choice(None, "the paddle the record drives", ("piston", "flap")))
+    file: str = required(text(None, "the record: a table of time and value"))
+    column: int = whole(1, "the column of the value (0 is time)", lo=1)
+    scale: float = num(1.0, "factor on the values (pi/180 for degrees)")
+    t_shift: float = num(0.0, "added to the record's times", "s")
+
+
+WAVES = (Piston, Flap, PaddleRecord)
+
+
+@dataclass(frozen=True)
+class Shake(Spec):
+    """Harmonic base motion of the tank along ``direction``: give ``amplitude`` [m] or the
+    peak ``acceleration`` [m/s^2] (the ground acceleration a0 sin(2 pi t / T) of seed 001
+    §3.1, started from rest), ramped in over ``ramp`` [s], stopped smoothly at ``stop``."""
+
+    TAG = ("kind", "harmonic")
+    kind: str = tag("harmonic")
+    period: float = required(num(None, "period", "s", lo=0, lo_open=True, optional=False))
+    direction: tuple = vec((1.0, 0.0), "direction of the motion", nonzero=True)
+    amplitude: float = num(None, "displacement amplitude (or give acceleration)", "m")
+    acceleration: float = num(None, "peak acceleration (or give amplitude)", "m/s^2")
+    ramp: float = num(0.0, "fade-in time", "s", lo=0)
+    stop: float = num(None, "time at which the motion has faded out", "s", lo=0, lo_open=True)
+
+    def validate(self):
+        if (self.amplitude is None) == (self.acceleration is None):
+            raise SceneError("amplitude", "give either amplitude [m] or acceleration [m/s^2], one of the two")
+
+
+@dataclass(frozen=True)
+class Roll(Spec):
+    """Harmonic roll of the tank by ``amplitude`` [deg] about an axis through ``point``
+    (2-D: about +y; 3-D: along ``axis``)."""
+
+    TAG = ("kind", "roll")
+    kind: str = tag("roll")
+    amplitude: float = required(num(None, "roll amplitude", "deg", optional=False))
+    period: float = required(num(None, "period", "s", lo=0, lo_open=True, optional=False))
+    point: tuple = required(vec(None, "a point of the roll axis", "m"))
+    axis: tuple = vec(None, "the roll axis (3-D only)", sizes=(3,), nonzero=True)
+    ramp: float = num(0.0, "fade-in time", "s", lo=0)
+
+
+@dataclass(frozen=True)
+class TableMotion(Spec):
+    """Base motion from a table: time [s] in the first column, the ``quantity`` along
+    ``direction`` in ``column`` (times ``scale``)."""
+
+    TAG = ("kind", "table")
+    kind: str = tag("table")
+    file: str = required(text(None, "the table of time and value"))
+    quantity: str = choice("displacement", "what the table holds",
+                           ("displacement", "velocity", "acceleration"))
+    direction: tuple = vec((1.0, 0.0), "direction of the motion", nonzero=True)
+    column: int = whole(1, "the column of the value (0 is time)", lo=1)
+    scale: float = num(1.0, "factor on the values")
+
+
+@dataclass(frozen=True)
+class Earthquake(Spec):
+    """Base motion from a PEER NGA ``.AT2`` accelerogram (in g), baseline-corrected
+    (``fluid.motion.read_at2``), times ``scale``, along ``direction``."""
+
+    TAG = ("kind", "earthquake")
+    kind: str = tag("earthquake")
+    file: str = required(text(None, "the .AT2 accelerogram"))
+    direction: tuple = vec((1.0, 0.0), "direction of the ground motion", nonzero=True)
+    scale: float = num(1.0, "factor on the record")
+    baseline_degree: int = whole(6, "degree of the baseline correction polynomial", lo=2)
+
+
+BASE_MOTIONS = (Shake, Roll, TableMotion, Earthquake)
+
+
+# ------------------------------------------------------------------------ bodies
+_BODY_COMMON = """``pos`` is the centre [m] ((x, z) in 2-D, (x, y, z) in 3-D); with ``place =
+"floating"`` give the horizontal position only ((x,) or (x, y)): the height is the
+hydrostatic equilibrium with the moorings' pull. ``fairleads``: named points in the body
+frame [m], referred to by lines as ``"BODY.NAME"``. Give ``density`` or ``mass``."""
+
+
+@dataclass(frozen=True)
+class _Body(Spec):
+    def validate(self):
+        if (self.density is None) == (self.mass is None):
+            raise SceneError("density", "give either density [kg/m^3] or mass [kg], one of the two")
+        if self.place == "floating" and self.euler is not None:
+            raise SceneError("euler", "a floating body is placed upright; give place = \"given\" with a full pos "
+                             "to turn it")
+
+
+@dataclass(frozen=True)
+class Box(_Body):
+    __doc__ = "A box body of edge lengths ``size`` [m] ((x, z) in 2-D, (x, y, z) in 3-D). " + _BODY_COMMON
+    TAG = ("shape", "box")
+    shape: str = tag("box")
+    name: str = required(text(None, "the body's name", name=True))
+    size: tuple = required(vec(None, "edge lengths", "m"))
+    pos: tuple = required(vec(None, "centre position", "m", sizes=(1, 2, 3)))
+    density: float = num(None, "density (or give mass)", "kg/m^3", lo=0, lo_open=True)
+    mass: float = num(None, "mass (or give density)", "kg", lo=0, lo_open=True)
+    place: str = choice("given", "given: at pos; floating: at its hydrostatic equilibrium", ("given", "floating"))
+    euler: tuple = vec(None, "initial orientation (Euler angles)", "deg", sizes=(3,))
+    fairleads: dict = table("named points in the body frame", "m")
+
+    def validate(self):
+        super().validate()
+        if any(s <= 0 for s in self.size):
+            raise SceneError("size", f"{self.size}: every edge length must be > 0 m")
+
+
+@dataclass(frozen=True)
+class Cylinder(_Body):
+    __doc__ = ("A cylinder of ``radius`` [m]: in 2-D a circle in the x-z plane (1 m long), in "
+               "3-D of ``length`` [m] with its axis along z. " + _BODY_COMMON)
+    TAG = ("shape", "cylinder")
+    shape: str = tag("cylinder")
+    name: str = required(text(None, "the body's name", name=True))
+    radius: float = required(num(None, "radius", "m", lo=0, lo_open=True, optional=False))
+    pos: tuple = required(vec(None, "centre position", "m", sizes=(1, 2, 3)))
+    length: float = num(None, "length along its axis (3-D only)", "m", lo=0, lo_open=True)
+    density: float = num(None, "density (or give mass)", "kg/m^3", lo=0, lo_open=True)
+    mass: float = num(None, "mass (or give density)", "kg", lo=0, lo_open=True)
+    place: str = choice("given", "given: at pos; floating: at its hydrostatic equilibrium", ("given", "floating"))
+    euler: tuple = vec(None, "initial orientation (Euler angles)", "deg", sizes=(3,))
+    fairleads: dict = table("named points in the body frame", "m")
+
+
+@dataclass(frozen=True)
+class Sphere(_Body):
+    __doc__ = "A sphere of ``radius`` [m] (3-D only). " + _BODY_COMMON
+    TAG = ("shape", "sphere")
+    shape: str = tag("sphere")
+    name: str = required(text(None, "the body's name", name=True))
+    radius: float = required(num(None, "radius", "m", lo=0, lo_open=True, optional=False))
+    pos: tuple = required(vec(None, "centre position", "m", sizes=(2, 3)))
+    density: float = num(None, "density (or give mass)", "kg/m^3", lo=0, lo_open=True)
+    mass: float = num(None, "mass (or give density)", "kg", lo=0, lo_open=True)
+    place: str = choice("given", "given: at pos; floating: at its hydrostatic equilibrium", ("given", "floating"))
+    euler: tuple = vec(None, "initial orientation (Euler angles)", "deg", sizes=(3,))
+    fairleads: dict = table("named points in the body frame", "m")
+
+
+@dataclass(frozen=True)
+class MJCF(Spec):
+    """Bodies from an MJCF file (MuJoCo's XML): every body with degrees of freedom, or
+    those named in ``bodies``. Fairleads are the file's sites, ``"BODY.SITE"``. The model's
+    own gravity is replaced by the world's."""
+
+    TAG = ("shape", "mjcf")
+    shape: str = tag("mjcf")
+    file: str = required(text(None, "the MJCF file"))
+    bodies: tuple = names("names of the coupled bodies (empty: every movable body)")
+
+BODIES = (Box, Cylinder, Sphere, MJCF)
+
+
+# ------------------------------------------------------------------------ moorings
+@dataclass(frozen=True)
+class Line(Spec):
+    """One mooring line from a fixed ``anchor`` [m] to the fairlead ``"BODY.NAME"``
+    (``moorings.MooringLine``). The dynamic models (sph-cable, moordyn) need ``EA``,
+    ``mass_per_length`` and ``diameter``; the catenary uses ``EA`` when given."""
+
+    fairlead: str = required(text(None, "the fairlead, as BODY.NAME"))
+    anchor: tuple = required(vec(None, "anchor position; the seabed is the horizontal plane through it", "m"))
+    length: float = required(num(None, "unstretched length", "m", lo=0, lo_open=True, optional=False))
+    weight: float = required(num(None, "submerged weight per metre", "N/m", lo=0, lo_open=True, optional=False))
+    EA: float = num(None, "axial stiffness (unset: inextensible)", "N", lo=0, lo_open=True)
+    mass_per_length: float = num(None, "mass per metre in air", "kg/m", lo=0, lo_open=True)
+    diameter: float = num(None, "hydrodynamic diameter", "m", lo=0, lo_open=True)
+    name: str = text("", "label in outputs (default: the fairlead's name)")
+
+    def validate(self):
+        if self.fairlead.count(".") != 1 or not all(self.fairlead.split(".")):
+            raise SceneError("fairlead", f"{self.fairlead!r}: give it as BODY.NAME, e.g. \"box.left\"")
+
+
+@dataclass(frozen=True)
+class Moorings(Spec):
+    """The mooring lines and the one field that picks their model: ``"catenary"``
+    (quasi-static, seed 004 §3), ``"sph-cable"`` (seed 000), ``"moordyn"`` or ``"fmu"``
+    (the catenary exported as an FMU and run through FMPy)."""
+
+    model: str = choice("catenary", "the mooring model", MOORING_MODELS)
+    lines: tuple = parts("the lines", Line)
+    segments: int = whole(20, "segments per line of the dynamic models (SPH-cable particles, MoorDyn segments)",
+                          lo=2)
+
+    def validate(self):
+        if not self.lines:
+            raise SceneError("lines", "give at least one line (or leave moorings out)")
+        if self.model in ("sph-cable", "moordyn"):
+            for i, ln in enumerate(self.lines):
+                for key in ("EA", "mass_per_length", "diameter"):
+                    if getattr(ln, key) is None:
+                        raise SceneError(f"lines[{i}].{key}", f"the {self.model!r} model needs it for every line; "
+                                         f"give it, or use model = \"catenary\"")
+
+
+# ------------------------------------------------------------------------ probes and coupling
+@dataclass(frozen=True)
+class Patch(Spec):
+    """A wall-pressure transducer (``fluid.probes.wall_patch_pressure``): the fluid's normal
+    force on the wall behind a patch of ``size`` [m] centred at ``centre`` on the wall's
+    face, ``normal`` pointing into the water, over its area."""
+
+    name: str = required(text(None, "the probe's name", name=True))
+    centre: tuple = required(vec(None, "centre on the wall face", "m"))
+    normal: tuple = required(vec(None, "normal into the water", nonzero=True))
+    size: float = required(num(None, "length (2-D) or diameter (3-D)", "m", lo=0, lo_open=True, optional=False))
+
+
+@dataclass(frozen=True)
+class Probes(Spec):
+    """What is sampled every ``world.sample_every``. ``gauges``: free-surface gauges at
+    x [m] (2-D) or (x, y) [m] (3-D), the elevation above the still water; ``pressure``:
+    wall patches; ``motion``: the bodies whose surge, sway, heave, roll, pitch, yaw are
+    recorded (``["all"]``: every body); ``tensions``: each fairlead's tension;
+    ``loads``: fluid and mooring force on each body; ``energy``: the SPH fluid's energy."""
+
+    gauges: tuple = gauges("wave gauges: x (2-D) or (x, y) (3-D)")
+    pressure: tuple = parts("wall-pressure patches", Patch)
+    motion: tuple = names("bodies whose motion is recorded; [\"all\"]: every body", default=("all",))
+    tensions: bool = flag(True, "fairlead tensions")
+    loads: bool = flag(True, "fluid and mooring loads on each body")
+    energy: bool = flag(False, "kinetic and potential energy of the SPH fluid")
+
+
+@dataclass(frozen=True)
+class Coupling(Spec):
+    """How the coupler exchanges loads (``cosim.coupler.Coupler``). ``"auto"`` scheme:
+    fluid-first with the SPH fluid (bodies receive exactly the impulse the fluid
+    exchanged), predictor-corrector otherwise."""
+
+    scheme: str = choice("auto", "coupling scheme", ("auto", "explicit", "predictor-corrector", "fluid-first"))
+    light_body: str = choice("auto", "remedy for bodies lighter than the fluid they displace",
+                             ("auto", "none", "subiterate", "added-mass"))
+    dt: float = num(None, "fixed coupling step (unset: the participants' stable step)", "s", lo=0, lo_open=True)
+    body_timestep: float = num(1e-3, "MuJoCo's largest step", "s", lo=0, lo_open=True)
+
+
+# ------------------------------------------------------------------------ the scene
+@dataclass(frozen=True)
+class Scene(Spec):
+    """One coupled run. See the module docstring; ``Scene.from_toml(path)``,
+    ``scene.to_toml()``, ``scene.run(out=...)``."""
+
+    world: World = part(World(), "dimension, gravity, duration, output times", World)
+    fluid: Spec = part(NoFluid(), "none, analytic or SPH", FLUIDS)
+    domain: Spec = part(None, "the SPH fluid's container", DOMAINS)
+    waves: Spec = part(None, "a flume's wavemaker", WAVES)
+    base_motion: Spec = part(None, "motion of the tank", BASE_MOTIONS)
+    bodies: tuple = parts("the bodies", BODIES)
+    moorings: Moorings = part(None, "mooring lines and their model", Moorings)
+    probes: Probes = part(Probes(), "what is recorded", Probes)
+    coupling: Coupling = part(Coupling(), "coupling scheme and light-body remedy", Coupling)
+    name: str = text("scene", "the scene's name (output attributes, plot titles)")
+
+    def validate(self):
+        from cosim.scene.checks import check_scene
+
+        check_scene(self)
+
+    # -- convenience (the implementations live in their own modules)
+    @classmethod
+    def from_toml(cls, path) -> "Scene":
+        from cosim.scene.toml_io import read_toml
+
+        return read_toml(path)
+
+    @classmethod
+    def from_dict(cls, data: dict, base_dir=None) -> "Scene":
+        from cosim.scene.toml_io import from_dict
+
+        return from_dict(data, base_dir)
+
+    def to_dict(self) -> dict:
+        from cosim.scene.toml_io import to_dict
+
+        return to_dict(self)
+
+    def to_toml(self, path=None) -> str:
+        from cosim.scene.toml_io import to_toml
+
+        return to_toml(self, path)
+
+    def with_values(self, assignments) -> "Scene":
+        """This scene with ``KEY.PATH=VALUE`` assignments applied (``cosim run --set``)."""
+        from cosim.scene.toml_io import with_values
+
+        return with_values(self, assignments)
+
+    @property
+    def body_names(self) -> list[str]:
+        from cosim.scene.checks import body_names
+
+        return body_names(self)
+
+    def run(self, out=None, *, resume: bool = False, progress=None):
+        """Run the scene, writing its outputs into ``out`` (default ``out/<name>``);
+        returns a :class:`cosim.scene.runner.Results`."""
+        from cosim.scene.runner import run
+
+        return run(self, out if out is not None else Path("out") / self.name, resume=resume, progress=progress)
+
+
+def is_floating(body) -> bool:
+    return getattr(body, "place", "given") == "floating"
+
+
+__all__ = ["World", "NoFluid", "Analytic", "SPH", "Block", "Tank", "Beach", "Flume", "InclinedTank",
+           "CylinderTank", "PolygonTank", "Piston", "Flap", "PaddleRecord", "Shake", "Roll", "TableMotion",
+           "Earthquake", "Box", "Cylinder", "Sphere", "MJCF", "Line", "Moorings", "Patch", "Probes", "Coupling",
+           "Scene", "SceneError", "MOORING_MODELS", "SETUPS"]

@@ -1,0 +1,225 @@
+"""A scene as TOML, field for field: :func:`read_toml`, :func:`from_dict`, :func:`to_dict`,
+:func:`to_toml`, and ``--set KEY.PATH=VALUE`` (:func:`with_values`).
+
+The keys are the dataclasses' field names (:mod:`cosim.scene.spec`); a place that takes
+one of several classes tells them apart by ``model`` (fluid), ``kind`` (domain, waves,
+base_motion) or ``shape`` (bodies). ``from_dict(to_dict(scene)) == scene`` exactly
+(floats are written with ``repr``). An unknown key, a wrong type or an out-of-range value
+is refused before anything runs, naming its key path (``moorings.lines[1].length``) and
+what would be accepted; a relative file name in the scene is read from the scene file's
+folder. TOML has no null: a field left unset is left out.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import difflib
+import json
+import re
+import tomllib
+from pathlib import Path
+
+from cosim.scene.fields import Part, Parts, SceneError, Spec, spec_fields
+from cosim.scene.spec import Scene
+
+_FILE_FIELDS = ("file",)
+
+
+def _key(prefix: str, name: str) -> str:
+    return f"{prefix}.{name}" if prefix else name
+
+
+def _pick_class(classes, data: dict, path: str):
+    if len(classes) == 1:
+        return classes[0]
+    tag = classes[0].TAG[0]
+    by = {c.TAG[1]: c for c in classes}
+    if tag not in data:
+        raise SceneError(_key(path, tag), f"is required: one of {', '.join(repr(k) for k in by)}")
+    value = data[tag]
+    if value not in by:
+        hint = difflib.get_close_matches(str(value), list(by), n=1)
+        raise SceneError(_key(path, tag), f"{value!r} is not accepted{'; did you mean ' + repr(hint[0]) + '?' if hint else ''}"
+                         f" Give one of {', '.join(repr(k) for k in by)}")
+    return by[value]
+
+
+def _build(classes, data, path: str, base_dir):
+    if not isinstance(data, dict):
+        raise SceneError(path, f"{data!r} is not a table; give a table of {' or '.join(c.__name__ for c in classes)} "
+                         "fields")
+    cls = _pick_class(classes, data, path)
+    fields = {name: check for name, check, _ in spec_fields(cls)}
+    tag = cls.TAG[0] if cls.TAG else None
+    unknown = [k for k in data if k not in fields and k != tag]
+    if unknown:
+        k = unknown[0]
+        hint = difflib.get_close_matches(k, list(fields), n=1)
+        raise SceneError(_key(path, k), f"unknown key{'; did you mean ' + repr(hint[0]) + '?' if hint else ''} "
+                         f"Known keys here: {', '.join(fields)}")
+    kwargs = {}
+    for name, value in data.items():
+        if name == tag:
+            continue
+        check, key = fields[name], _key(path, name)
+        if isinstance(check, Part):
+            value = _build(check.classes, value, key, base_dir)
+        elif isinstance(check, Parts):
+            if not isinstance(value, list):
+                raise SceneError(key, f"{value!r} is not a list; give {check.expected()}")
+            value = [_build(check.part.classes, v, f"{key}[{i}]", base_dir) for i, v in enumerate(value)]
+        elif name in _FILE_FIELDS and isinstance(value, str) and base_dir is not None and not Path(value).is_absolute():
+            value = str(Path(base_dir) / value)
+        kwargs[name] = value
+    missing = [n for n, check, default in spec_fields(cls)
+               if default is dataclasses.MISSING and n not in kwargs]
+    if missing:
+        n = missing[0]
+        raise SceneError(_key(path, n), f"is required: {fields[n].expected()}")
+    try:
+        return cls(**kwargs)
+    except SceneError as e:
+        rel = e.path.split(".", 1)[1] if e.path.startswith(cls.__name__ + ".") else e.path
+        raise e.__class__(_key(path, rel) if rel != cls.__name__ else path, e.problem) from None
+
+
+def from_dict(data: dict, base_dir=None) -> Scene:
+    """The scene described by ``data`` (the TOML document's tables); relative file names
+    are taken from ``base_dir``."""
+    return _build((Scene,), data, "", base_dir)
+
+
+def read_toml(path) -> Scene:
+    """The scene of a TOML file (relative file names in it are read from its folder)."""
+    p = Path(path)
+    if not p.is_file():
+        raise SceneError("", f"no scene file {str(path)!r}")
+    try:
+        data = tomllib.loads(p.read_text())
+    except tomllib.TOMLDecodeError as e:
+        raise SceneError("", f"{p} is not valid TOML: {e}") from None
+    return from_dict(data, p.resolve().parent)
+
+
+def _plain(v):
+    if isinstance(v, Spec):
+        return to_dict(v)
+    if isinstance(v, (tuple, list)):
+        return [_plain(x) for x in v]
+    if isinstance(v, dict):
+        return {k: _plain(x) for k, x in v.items()}
+    return v
+
+
+def to_dict(spec: Spec) -> dict:
+    """The scene (or any part of it) as plain tables, lists and values; unset fields are
+    left out."""
+    out = {}
+    if spec.TAG:
+        out[spec.TAG[0]] = spec.TAG[1]
+    for name, _, _ in spec_fields(type(spec)):
+        v = getattr(spec, name)
+        if v is not None:
+            out[name] = _plain(v)
+    return out
+
+
+def _scalar(v) -> str:
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, (int, float)):
+        return repr(v)  # exact: floats round-trip through repr
+    if isinstance(v, str):
+        return json.dumps(v)  # a TOML basic string (JSON's escapes are TOML's)
+    if isinstance(v, list):
+        return "[" + ", ".join(_scalar(x) for x in v) + "]"
+    if isinstance(v, dict):
+        return "{ " + ", ".join(f"{_bare(k)} = {_scalar(x)}" for k, x in v.items()) + " }"
+    raise TypeError(f"cannot write {v!r} as TOML")
+
+
+def _bare(k: str) -> str:
+    return k if re.fullmatch(r"[A-Za-z0-9_-]+", k) else json.dumps(k)
+
+
+def _table(d: dict, name: str, lines: list, header: str) -> None:
+    """Keys first, then sub-tables, then arrays of tables (TOML's order)."""
+    is_tables = lambda v: isinstance(v, list) and v and all(isinstance(x, dict) for x in v)
+    plain = [(k, v) for k, v in d.items() if not isinstance(v, dict) and not is_tables(v)]
+    if header:
+        lines += ["", header]
+    lines += [f"{_bare(k)} = {_scalar(v)}" for k, v in plain]
+    for k, v in d.items():
+        sub = f"{name}.{_bare(k)}" if name else _bare(k)
+        if isinstance(v, dict):
+            _table(v, sub, lines, f"[{sub}]")
+        elif is_tables(v):
+            for x in v:
+                _table(x, sub, lines, f"[[{sub}]]")
+
+
+def to_toml(scene: Scene, path=None) -> str:
+    """The scene as TOML text (every set field); also written to ``path`` when given."""
+    lines: list[str] = []
+    _table(to_dict(scene), "", lines, "")
+    text = "\n".join(lines).lstrip("\n") + "\n"
+    if path is not None:
+        Path(path).write_text(text)
+    return text
+
+
+_PART = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)((?:\[\d+\])*)")
+
+
+def _split(path: str) -> list:
+    out = []
+    for piece in path.split("."):
+        m = _PART.fullmatch(piece)
+        if not m:
+            raise SceneError(path, "is not a key path; write it as in TOML, e.g. fluid.dx or moorings.lines[1].length")
+        out.append(m.group(1))
+        out.extend(int(i) for i in re.findall(r"\[(\d+)\]", m.group(2)))
+    return out
+
+
+def parse_value(text: str):
+    """A ``--set`` value as TOML reads it (``0.01``, ``true``, ``[1, 2]``, ``"sph"``);
+    a bare word that is not TOML is taken as a string (``model=moordyn``)."""
+    try:
+        return tomllib.loads(f"v = {text}")["v"]
+    except tomllib.TOMLDecodeError:
+        return text
+
+
+def with_values(scene: Scene, assignments) -> Scene:
+    """``scene`` with ``KEY.PATH=VALUE`` assignments applied and the result checked again,
+    as TOML would be."""
+    data = to_dict(scene)
+    for a in assignments:
+        if "=" not in a:
+            raise SceneError(a, "give --set as KEY.PATH=VALUE, e.g. fluid.dx=0.01")
+        path, text = (x.strip() for x in a.split("=", 1))
+        keys = _split(path)
+        node = data
+        for i, k in enumerate(keys[:-1]):
+            nxt = keys[i + 1]
+            where = path.split("=")[0]
+            if isinstance(k, int):
+                if not isinstance(node, list) or k >= len(node):
+                    raise SceneError(path, f"{where}: there is no entry {k} (the list has "
+                                     f"{len(node) if isinstance(node, list) else 0})")
+                node = node[k]
+            else:
+                if not isinstance(node, dict):
+                    raise SceneError(path, f"{where} is not a table")
+                node = node.setdefault(k, [] if isinstance(nxt, int) else {})
+        last = keys[-1]
+        if isinstance(last, int):
+            if not isinstance(node, list) or last >= len(node):
+                raise SceneError(path, f"there is no entry {last} to set")
+            node[last] = parse_value(text)
+        else:
+            if not isinstance(node, dict):
+                raise SceneError(path, "is not a key of a table")
+            node[last] = parse_value(text)
+    return from_dict(data)
