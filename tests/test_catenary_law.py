@@ -2,12 +2,12 @@
 oracle for the elastic law, state boundaries, extremes and bad input."""
 
 import math
-from pathlib import Path
 
 import mpmath as mp
 import numpy as np
 import pytest
 
+from cosim import refdata
 from cosim.errors import InputError, TautLineError
 from moorings.catenary import (
     FULLY_LIFTED,
@@ -20,8 +20,6 @@ from moorings.catenary import (
     solve,
     taut_distance,
 )
-
-REFDATA = Path(__file__).resolve().parents[2] / "shared" / "refdata" / "cable_static_dynamic"
 
 # seed 004 Table 1 (Johanning et al. 2007)
 H1, W1, L1 = 2.651, 1.036, 6.98
@@ -156,7 +154,7 @@ def test_elastic_law_matches_high_precision_oracle(X, h, EA):
 def test_moorpy_regression_vector():
     """MoorPy's frictionless (CB = 0) vector of the refdata file: agreement to MoorPy's
     own solver tolerance (~3e-7; our answer matches a 40-digit solve to 1e-14)."""
-    text = (REFDATA / "moorpy_catenary_test_vectors.csv").read_text().splitlines()
+    text = refdata.path("cable_static_dynamic", "moorpy_catenary_test_vectors.csv").read_text().splitlines()
     rows = np.genfromtxt([ln for ln in text if not ln.startswith("#")], delimiter=",", names=True)
     row = rows[(rows["CB"] == 0.0)][0]
     r = solve(row["x"], row["z"], row["L"], row["w"], row["EA"])

@@ -8,8 +8,9 @@ import math
 import numpy as np
 import pytest
 
+from cosim import refdata
 from cosim.validation import run
-from cosim.validations.fluid import DAMBREAK_REF, REFDATA, T_RELEASE, _read_front, dambreak_front, run_dambreak
+from cosim.validations.fluid import T_RELEASE, _read_front, dambreak_front, run_dambreak
 
 
 def test_front_detector_stops_at_a_gap_wider_than_the_kernel_support():
@@ -35,8 +36,8 @@ def test_reference_series_share_one_scaling():
     # the DualSPHysics file labelled "Koshizuka & Oka 1996" holds Martin & Moyce's Table 2
     # marks with the time in seconds for a column 1 m wide: t sqrt(2 g / 1 m) = T within
     # 1.5 % at all 15 marks, Z within 2 %; its time column is therefore T / sqrt(2 g 1 m)
-    dual = np.loadtxt(REFDATA / DAMBREAK_REF / "EXP_X-DamTipPosition_Koshizula&Oka1996_DualSPHysics.txt",
-                      skiprows=2, encoding="latin-1")
+    dual = np.loadtxt(refdata.path("dambreak_martin_moyce_koshizuka",
+                                   "EXP_X-DamTipPosition_Koshizula&Oka1996_DualSPHysics.txt"), skiprows=2, encoding="latin-1")
     assert dual.shape == table.shape
     assert np.abs(dual[:, 0] * math.sqrt(2 * 9.81 * 1.0) / table[:, 0] - 1).max() < 0.015
     assert np.abs(dual[:, 1] / table[:, 1] - 1).max() < 0.021

@@ -2,24 +2,19 @@
 references against the refdata tables, the FFT peak finder, and the quick runs."""
 
 import math
-import os
-from pathlib import Path
 
 import numpy as np
 import pytest
 
-from cosim import validation
-from cosim.validations.sloshing import (REFDATA, run_spheric10, running_mean_max, sloshing_omega,
+from cosim import refdata, validation
+from cosim.validations.sloshing import (run_spheric10, running_mean_max, sloshing_omega,
                                         spectral_peak, spheric10_motion, spheric10_pressure,
                                         westergaard_parabola, westergaard_series)
 
-AH = REFDATA / "analytic_hydrodynamics"
-needs_refdata = pytest.mark.skipif(not AH.is_dir(), reason=f"reference data not found at {REFDATA}")
 
-
-@needs_refdata
 def test_westergaard_series_and_parabola_match_the_refdata_table():
-    tab = np.loadtxt(AH / "westergaard_vertical_dam_Cp.csv", delimiter=",", comments="#", skiprows=5)
+    tab = np.loadtxt(refdata.path("analytic_hydrodynamics", "westergaard_vertical_dam_Cp.csv"), delimiter=",",
+                     comments="#", skiprows=5)
     np.testing.assert_allclose(westergaard_series(tab[:, 0], 1.0), tab[:, 1], atol=2e-5)
     np.testing.assert_allclose(westergaard_parabola(tab[:, 0], 1.0), tab[:, 2], atol=1e-5)
     # base value 8 G / pi^2 (G Catalan's constant)
@@ -41,10 +36,9 @@ def test_compressible_and_finite_tank_limits():
         westergaard_series(y, H, c=100.0, period=0.01)
 
 
-@needs_refdata
 def test_sloshing_frequency_matches_the_housner_table():
-    rows = [r.split(",") for r in (AH / "sloshing_frequencies_housner.csv").read_text().splitlines()
-            if r.startswith("rectangular")]
+    text = refdata.path("analytic_hydrodynamics", "sloshing_frequencies_housner.csv").read_text()
+    rows = [r.split(",") for r in text.splitlines() if r.startswith("rectangular")]
     for r in rows:
         L, h, n, omega = float(r[1]), float(r[2]), int(r[3]), float(r[5])
         assert sloshing_omega(L, h, n) == pytest.approx(omega, rel=2e-5)
@@ -58,7 +52,6 @@ def test_spectral_peak_finds_a_decaying_tone_far_below_the_bin_width():
     assert abs(f / f0 - 1) < 2e-3  # the bin width is 1/8 s^-1: 15 % of f0
 
 
-@needs_refdata
 def test_spheric10_roll_record():
     roll = spheric10_motion()
     th = np.array([roll.signal.state(t)[0] for t in np.linspace(0, 8, 801)])
@@ -104,7 +97,6 @@ def test_running_mean_max():
     assert v == pytest.approx(500.0, rel=0.03) and 0.495 <= tc <= 0.516
 
 
-@needs_refdata
 def test_spheric10_quick():
     r = validation.run("sloshing-spheric10", quick=True)
     m = r["metrics"]
@@ -143,7 +135,6 @@ def test_sloshing_frequency_with_the_default_settings_is_9_percent_high():
     assert 0.05 < m["f1_signed_rel_err"] < 0.15
 
 
-@needs_refdata
 @pytest.mark.slow
 def test_spheric10_first_impact():
     """dx = 3.1 mm (30 rows; the full case's resolution), to 2.7 s: the first impact on

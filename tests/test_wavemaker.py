@@ -1,11 +1,11 @@
 """Linear wavemaker theory; paddle motions (piston, flap, recorded) for the SPH fluid."""
 
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
 
+from cosim import refdata
 from cosim.errors import InputError
 from fluid.wavemaker import MotionRecord, RegularWavemaker, flap, height_to_stroke, piston, wavenumber
 
@@ -64,9 +64,6 @@ def test_bad_input():
 
 # -- paddle motions for the SPH fluid --------------------------------------------------------------
 
-HADZIC_FLAP = Path(__file__).resolve().parents[2] / "shared/refdata/floating_box_waves_hadzic2005/CaseFloatingWavesVal_Flap.dat"
-
-
 def test_piston_translates_and_flap_rotates_rigidly():
     ref = np.array([[-0.01, 0.0], [-0.01, 0.2], [-0.03, 0.4]])
     pos, vel = piston(lambda t: (0.02, -0.3))(1.0, ref)
@@ -112,9 +109,9 @@ def test_motion_record_interpolates_its_samples_and_holds_outside():
         MotionRecord.from_file("/nonexistent/flap.dat")
 
 
-@pytest.mark.skipif(not HADZIC_FLAP.is_file(), reason="shared refdata not present")
 def test_the_hadzic_flap_record_reads_as_published():
-    rec = MotionRecord.from_file(HADZIC_FLAP, scale=math.pi / 180)
+    rec = MotionRecord.from_file(refdata.path("floating_box_waves_hadzic2005", "CaseFloatingWavesVal_Flap.dat"),
+                                 scale=math.pi / 180)
     assert rec.t[0] == 0.0 and rec.t[-1] == pytest.approx(10.9, abs=1e-6) and len(rec.t) == 10901
     assert math.degrees(rec.value.min()) == pytest.approx(-4.670678616, rel=1e-9)  # at t = 5.023 s
     assert math.degrees(rec(5.023)[0]) == pytest.approx(-4.670678616, rel=1e-6)

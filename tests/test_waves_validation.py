@@ -3,7 +3,7 @@
 import pytest
 
 from cosim.validation import run as run_case
-from cosim.validations.waves import HZ_DIR, moored_equilibrium
+from cosim.validations.waves import moored_equilibrium
 
 
 def test_moored_equilibrium_balances_the_forces():
@@ -48,14 +48,12 @@ def test_best_lag_finds_the_shift_of_a_history():
         assert lag == pytest.approx(delay, abs=0.002) and r > 0.999
 
 
-@pytest.mark.skipif(not HZ_DIR.is_dir(), reason="shared refdata not present")
 def test_floating_box_waves_quick():
     r = run_case("floating-box-waves", quick=True)
     assert r["passed"], r["metrics"]
 
 
 @pytest.mark.slow
-@pytest.mark.skipif(not HZ_DIR.is_dir(), reason="shared refdata not present")
 def test_floating_box_waves_full():
     """dx = 1 cm (13 min of one core): heave +10.9 / -1.3 %, sway +4.5 %, lags of best
     correlation +0.012 s and +0.002 s (measured; see the case's docstring)."""

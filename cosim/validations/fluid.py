@@ -3,11 +3,10 @@
 from __future__ import annotations
 
 import math
-import os
-from pathlib import Path
 
 import numpy as np
 
+from cosim import refdata
 from cosim.validation import case
 from fluid.geometry import set_hydrostatic, tank_with_water
 from fluid.motion import Signal, Translation
@@ -272,14 +271,10 @@ def hydrostatic_3d(quick: bool) -> dict:
     return run_hydrostatic(3, dx=0.01, t_end=3.0, depth=0.1, length=0.2, width=0.1, **STILL_3D)
 
 
-REFDATA = Path(os.environ.get("COSIM_REFDATA", Path(__file__).resolve().parents[3] / "shared" / "refdata"))
-DAMBREAK_REF = "dambreak_martin_moyce_koshizuka"
-
-
 def _read_front(name: str) -> np.ndarray:
     """Numeric rows of a table in refdata/dambreak_martin_moyce_koshizuka (comment lines
     ``#`` and the one header line skipped): (T, Z) for the fronts, (tau, H) for heights."""
-    lines = [s for s in (REFDATA / DAMBREAK_REF / name).read_text().splitlines()
+    lines = [s for s in refdata.path("dambreak_martin_moyce_koshizuka", name).read_text().splitlines()
              if s.strip() and not s.lstrip().startswith("#")]
     return np.array([[float(v) for v in s.split(",")] for s in lines[1:]])
 

@@ -3,11 +3,10 @@
 from __future__ import annotations
 
 import math
-import os
-from pathlib import Path
 
 import numpy as np
 
+from cosim import refdata
 from cosim.validation import case
 from fluid.geometry import assemble, block, set_hydrostatic, tank_walls
 from fluid.motion import Harmonic, Rotation, Tabulated, Translation
@@ -17,7 +16,6 @@ from fluid.solver import WAVES_2D, Fluid, FluidConfig
 
 G = 9.81
 RHO0 = 1000.0
-REFDATA = Path(os.environ.get("COSIM_REFDATA", Path(__file__).resolve().parents[3] / "shared" / "refdata"))
 
 
 # ------------------------------------------------------------------------------------ references
@@ -486,7 +484,6 @@ def run_sloshing_frequency(dx: float, L: float = 1.0, h: float = 0.5, amplitude:
 
 
 # ------------------------------------------------------------------------------------ SPHERIC 10
-SPHERIC10 = REFDATA / "sloshing_spheric_test10"
 #: impact peaks of the measured record (SOURCE.txt): time [s], pressure [Pa]
 SPHERIC10_PEAKS = ((2.375, 3683.0), (4.067, 3890.0), (5.672, 2663.0), (7.303, 7148.0))
 #: inner length, height and water depth [m] (SOURCE.txt)
@@ -494,12 +491,12 @@ SPHERIC10_TANK = (0.9, 0.508, 0.093)
 
 
 def spheric10_motion() -> Rotation:
-    """The measured roll of SPHERIC Test 10 (refdata SloshingMotionData.dat: t [s], angle
+    """The measured roll of SPHERIC Test 10 (refdata SloshingMotionData.dat.gz: t [s], angle
     [deg], 5e-5 s apart) about the centre of the tank bottom (0, 0), as a :class:`Rotation`.
     Sign: the record's positive angle lowers the left wall (x = -0.45 m): the measured
     impacts on the left-wall sensor come 0.15 s after each positive extreme of the angle;
     our positive angle about +y lowers the right wall, so the record is negated."""
-    m = np.loadtxt(SPHERIC10 / "SloshingMotionData.dat", comments="#")
+    m = np.loadtxt(refdata.path("sloshing_spheric_test10", "SloshingMotionData.dat.gz"), comments="#")
     theta = -np.radians(m[:, 1])
     return Rotation((0.0, 0.0), Tabulated(tuple(m[:, 0]), tuple(theta), "displacement"))
 
@@ -507,7 +504,7 @@ def spheric10_motion() -> Rotation:
 def spheric10_pressure() -> np.ndarray:
     """(t [s], p [Pa]) of the measured left-wall pressure, sorted by time (the file's rows
     come as interleaved min/max pairs, SOURCE.txt)."""
-    p = np.loadtxt(SPHERIC10 / "EXP_Pressure_SPHERIC_Benchmark#10.txt", skiprows=2)
+    p = np.loadtxt(refdata.path("sloshing_spheric_test10", "EXP_Pressure_SPHERIC_Benchmark#10.txt"), skiprows=2)
     return p[np.argsort(p[:, 0], kind="stable")]
 
 

@@ -5,12 +5,11 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import os
-from pathlib import Path
 
 import numpy as np
 from scipy.optimize import brentq
 
+from cosim import refdata
 from cosim.validation import case
 
 RHO, G = 1000.0, 9.81
@@ -127,8 +126,6 @@ def moored_body_sph(quick: bool) -> dict:
 
 
 # floating-box-waves: Hadzic et al. (2005), DualSPHysics' CaseFloatingWavesVal (refdata SOURCE.txt)
-REFDATA = Path(os.environ.get("COSIM_REFDATA", Path(__file__).resolve().parents[3] / "shared" / "refdata"))
-HZ_DIR = REFDATA / "floating_box_waves_hadzic2005"
 HZ_DEPTH, HZ_WALL = 0.4, 0.6  # still water, flap and wall height [m]
 HZ_BEACH = (4.0, 0.1)  # toe x [m], slope (0.6 m over 6 m)
 HZ_BOX = (0.10, 0.05, 680.0, 2.11, 0.395)  # width, height [m], density [kg/m^3], initial centre x, z [m]
@@ -206,11 +203,7 @@ def viscous_decay(nu: float, T: float, depth: float) -> float:
 def hadzic_measured() -> dict:
     """The digitised measurements (refdata ``EXP_FloatingWavesVal_Hadzic_et_al_2005.txt``):
     ``{name: (t [s], value)}`` for WaveProbe_N1/N2 [m], WP_Heave [m], WP_Roll [deg], WP_Sway [m]."""
-    path = HZ_DIR / "EXP_FloatingWavesVal_Hadzic_et_al_2005.txt"
-    if not path.is_file():
-        from cosim.errors import InputError
-        raise InputError(f"floating-box-waves: reference data not found at {path}; set COSIM_REFDATA to the "
-                         "folder holding floating_box_waves_hadzic2005/")
+    path = refdata.path("floating_box_waves_hadzic2005", "EXP_FloatingWavesVal_Hadzic_et_al_2005.txt")
     lines = path.read_text(encoding="latin-1").splitlines()
     names = lines[1].split("\t")[1::2]
     cols = [[] for _ in range(2 * len(names))]
@@ -233,7 +226,8 @@ def hadzic_flap(t0: float):
     sign gives −0.97."""
     from fluid.wavemaker import MotionRecord
 
-    rec = MotionRecord.from_file(HZ_DIR / "CaseFloatingWavesVal_Flap.dat", scale=-math.pi / 180.0)
+    rec = MotionRecord.from_file(refdata.path("floating_box_waves_hadzic2005", "CaseFloatingWavesVal_Flap.dat"),
+                                 scale=-math.pi / 180.0)
     a0 = rec(t0)[0]
 
     def angle(t):
