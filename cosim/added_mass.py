@@ -4,7 +4,7 @@ Why: a body in a fluid feels, besides the other loads ``F_r``, a reaction to its
 acceleration, ``-m_a a`` (added mass). Staggered coupling hands the body the fluid load
 of the previous exchange, so the body's step reads ``m a_{n+1} = F_r - m_a a_n``: the
 acceleration is multiplied by ``-m_a / m`` every step and grows without bound once the
-added mass exceeds the body's mass (``../shared/DESIGN.md``, added mass).
+added mass exceeds the body's mass (``docs/DESIGN.md``, added mass).
 
 Remedies (the coupler's ``light_body``):
 

@@ -59,7 +59,7 @@ def _validate_parser(sub):
     p = sub.add_parser(
         "validate",
         help="run validation cases (one JSON object per case)",
-        description="Run validation cases of ../shared/VALIDATION.md; each prints one JSON object "
+        description="Run validation cases of docs/VALIDATION.md; each prints one JSON object "
         "with name, passed, metrics, tolerances, particles, steps and wall_s. Exit status 1 if any fails.",
     )
     p.add_argument("names", nargs="*", help="case names, or 'all'")

@@ -1,6 +1,6 @@
 """The coupler: keeps every participant on one clock and runs the coupling steps.
 
-One coupling step (:meth:`Coupler.step`), in this order (``../shared/DESIGN.md``):
+One coupling step (:meth:`Coupler.step`), in this order (``docs/DESIGN.md``):
 
 1. the step size: the smallest ``max_dt()`` of all participants (or the fixed
    step the user asked for, if smaller), rounded down to whole clock ticks and

@@ -1,4 +1,4 @@
-"""Validation cases of the SPH cable (seed 000, ``../shared/VALIDATION.md``, Moorings).
+"""Validation cases of the SPH cable (seed 000, ``docs/VALIDATION.md``, Moorings).
 
 The reference for the static cases is the exact elastic catenary between two supports
 with point loads (Irvine, *Cable Structures* 1981, Eq. 2.24-2.25 generalised piecewise),

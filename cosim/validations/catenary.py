@@ -1,4 +1,4 @@
-"""Validation cases of the quasi-static catenary (``../shared/VALIDATION.md``, Moorings).
+"""Validation cases of the quasi-static catenary (``docs/VALIDATION.md``, Moorings).
 
 All four are cheap; ``quick`` only thins the sampling.
 """

@@ -1,4 +1,4 @@
-"""Validation cases of the body-mooring-fluid coupling (``../shared/VALIDATION.md``,
+"""Validation cases of the body-mooring-fluid coupling (``docs/VALIDATION.md``,
 Bodies and coupling)."""
 
 from __future__ import annotations
