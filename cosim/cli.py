@@ -1,5 +1,6 @@
 """cosim: couple an SPH fluid, MuJoCo bodies and mooring models.
 
+``cosim run``       run a scene (TOML file or Python script) into an output folder
 ``cosim line``      tabulate (and plot) one catenary mooring line against X
 ``cosim validate``  run validation cases, one JSON object per case
 ``cosim export-fmu`` write a catenary mooring system as an FMI 2.0 co-simulation FMU
@@ -33,6 +34,53 @@ def add_light_body_option(parser: argparse.ArgumentParser) -> None:
                              "added-mass instability of staggered coupling); "
                              + "; ".join(f"{k}: {v}" for k, v in LIGHT_BODY_HELP.items())
                              + ". Default auto; the run reports the remedy chosen per body")
+
+
+def _run_parser(sub):
+    p = sub.add_parser(
+        "run",
+        help="run a scene: SCENE.toml or SCENE.py (a script defining `scene`)",
+        description="Run a coupled scene and write its outputs (run.h5 + run.xmf for ParaView, one CSV and one "
+        "PNG per probe group, summary.json, the scene as run in scene.toml, checkpoints) into one folder. The "
+        "scene is checked before any work is done; a bad value is named by its key path.",
+    )
+    p.add_argument("scene", help="a .toml scene file, or a .py script that defines a Scene named `scene`")
+    p.add_argument("--set", action="append", default=[], metavar="KEY.PATH=VALUE",
+                   help="change one field, as its TOML key path, e.g. --set fluid.dx=0.01 --set moorings.model=moordyn "
+                        "(repeatable; VALUE is read as TOML, a bare word as a string)")
+    p.add_argument("--out", help="output folder (default out/<scene name>)")
+    p.add_argument("--resume", action="store_true",
+                   help="continue the run in --out from its last checkpoint (bit for bit; world.duration may grow)")
+    p.add_argument("--quiet", action="store_true", help="no progress line and no summary")
+    return p
+
+
+def cmd_run(args, parser) -> int:
+    from pathlib import Path
+
+    from cosim.scene.load import load
+
+    scene = load(args.scene)
+    if args.set:
+        scene = scene.with_values(args.set)
+    out = Path(args.out) if args.out else Path("out") / scene.name
+    res = scene.run(out, resume=args.resume, progress=False if args.quiet else None)
+    if not args.quiet:
+        s = res.summary
+        size = f"{s['particles']} particles ({s['fluid_particles']} fluid), " if "particles" in s else ""
+        print(f"{scene.name}: {size}{s['steps']} steps, {s['wall_s']:.1f} s wall for {s['t_reached_s']:g} s "
+              f"simulated")
+        if "setup" in s:
+            print(f"fluid set-up: {s['setup']['name']} ({s['setup']['reason']})")
+        if "remedies" in s:
+            print(f"coupling: {s['scheme']}; light-body remedy: "
+                  + ", ".join(f"{k} {v}" for k, v in s["remedies"].items()))
+        for name in res.names:
+            v = res[name]
+            print(f"  {name:28s} {v.min():12.5g} .. {v.max():<12.5g} [{res.units[name]}]")
+        print(f"wrote {out}/: run.h5 (+ run.xmf), " + ", ".join(sorted(p.name for p in out.glob("*.csv")))
+              + ", " + ", ".join(sorted(p.name for p in out.glob("*.png"))) + ", summary.json, scene.toml")
+    return 0
 
 
 def _line_parser(sub):
@@ -329,10 +377,10 @@ def _json_default(o):
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="cosim", description=__doc__.strip().splitlines()[0])
     sub = parser.add_subparsers(dest="command", required=True)
-    parsers = {"line": _line_parser(sub), "validate": _validate_parser(sub), "export-fmu": _export_fmu_parser(sub),
+    parsers = {"run": _run_parser(sub), "line": _line_parser(sub), "validate": _validate_parser(sub), "export-fmu": _export_fmu_parser(sub),
                "inspect": _inspect_parser(sub)}
     args = parser.parse_args(argv)
-    handler = {"line": cmd_line, "validate": cmd_validate, "export-fmu": cmd_export_fmu,
+    handler = {"run": cmd_run, "line": cmd_line, "validate": cmd_validate, "export-fmu": cmd_export_fmu,
                "inspect": cmd_inspect}[args.command]
     try:
         return handler(args, parsers[args.command])

@@ -109,6 +109,7 @@ def domain_points(scene, cfg, back: float = 0.0):
 
     d, dx, dim = scene.domain, cfg.dx, cfg.dim
     layers = math.ceil(2.0 * cfg.h_coef - 1e-9)
+    walls_kind = Kind.MOVING_WALL if scene.base_motion is not None else Kind.FIXED_WALL  # a shaken tank moves
     if isinstance(d, Flume):
         from fluid.flume import flume
 
@@ -119,7 +120,7 @@ def domain_points(scene, cfg, back: float = 0.0):
         inner = [d.length] + ([d.width] if dim == 3 else []) + [d.height]
         walls = tank_walls(np.zeros(dim), np.array(inner), dx, layers)
         pts = np.concatenate([block(b.lo, b.hi, dx) for b in d.water])
-        return pts, [(walls, Kind.FIXED_WALL, WALLS)]
+        return pts, [(walls, walls_kind, WALLS)]
     if isinstance(d, Tank):
         built = tank_with_water(dim, dx, d.length, d.depth, d.height, d.width or 0.0, layers, cfg.rho0)
     elif isinstance(d, InclinedTank):
@@ -130,7 +131,7 @@ def domain_points(scene, cfg, back: float = 0.0):
         built = polygon_tank(d.vertices, dx, d.fill_level, layers, cfg.rho0)
     ps = built.particles
     fluid = ps.kind == Kind.FLUID
-    return ps.pos[fluid].copy(), [(ps.pos[~fluid].copy(), Kind.FIXED_WALL, WALLS)]
+    return ps.pos[fluid].copy(), [(ps.pos[~fluid].copy(), walls_kind, WALLS)]
 
 
 def _surface_heights(scene, points):

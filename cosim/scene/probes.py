@@ -68,8 +68,9 @@ def groups(scene, built) -> list[Group]:
 
             def loads():
                 last = led.last()
-                if not last:
-                    return np.zeros(2 * len(names) * len(axes))
+                if not last:  # before the first step: the loads the coupler would apply now
+                    F, _, Fm, _ = built.coupler._loads(b.kinematics())
+                    last = {"fluid_force": F, "mooring_force": Fm}
                 return np.concatenate([np.concatenate([last["fluid_force"][j, axes], last["mooring_force"][j, axes]])
                                        for j in range(len(names))])
 

@@ -1,0 +1,212 @@
+"""Running scenes: the builder wires what a hand-wired coupler does (to round-off), floating
+bodies start in equilibrium, probes land on exact times, a resumed run continues bit
+for bit, a failed run leaves readable outputs, and a scene loads only what it contains."""
+
+import json
+import math
+import subprocess
+import sys
+from pathlib import Path
+
+import h5py
+import numpy as np
+import pytest
+
+from cosim.scene import SPH, Analytic, Beach, Box, Flume, Line, Moorings, Piston, Probes, Scene, Shake, Tank, World
+from cosim.scene.placement import floating_height
+
+ROOT = Path(__file__).resolve().parents[1]
+LINE = dict(length=0.9, weight=5.0, EA=1.0e5, mass_per_length=0.588, diameter=0.01)
+
+
+def moored_box(dx=0.05, duration=0.2, **world):
+    return Scene(
+        name="box",
+        world=World(dim=2, duration=duration, sample_every=0.02, snapshot_every=0.1, **world),
+        fluid=SPH(dx=dx),
+        domain=Flume(length=3.0, depth=0.3, height=0.45, beach=Beach(toe=2.0, slope=0.3)),
+        waves=Piston(height=0.04, period=1.0, ramp=1.0),
+        bodies=[Box("box", size=(0.2, 0.1), density=500.0, pos=(1.2,), place="floating",
+                    fairleads={"left": (-0.1, -0.05), "right": (0.1, -0.05)})],
+        moorings=Moorings(lines=[Line("box.left", anchor=(0.5, 0.0), **LINE),
+                                 Line("box.right", anchor=(1.9, 0.0), **LINE)]),
+        probes=Probes(gauges=[0.6, 1.6]),
+    )
+
+
+def shaken_tank(duration=0.2, **world):
+    return Scene(name="tank", world=World(dim=2, duration=duration, sample_every=0.05, **world),
+                 fluid=SPH(dx=0.04), domain=Tank(length=0.6, height=0.5, depth=0.3),
+                 base_motion=Shake(period=1.0, amplitude=0.01, ramp=0.5), probes=Probes(gauges=[0.1], energy=True))
+
+
+def test_floating_height_balances_weight_and_lines():
+    """Without lines the box's centre sits at level + h/2 - (rho_b / rho_w) h exactly; with
+    lines the buoyancy of the computed draft equals weight plus the catenary's pull."""
+    from moorings.catenary import solve
+
+    s = moored_box()
+    box = s.bodies[0]
+    z0 = floating_height(box, 2, 0.3, 1000.0, 9.81)
+    assert z0 == pytest.approx(0.3 + 0.05 - 0.5 * 0.1, abs=1e-12)
+    z = floating_height(box, 2, 0.3, 1000.0, 9.81, s.moorings.lines)
+    draft = 0.3 - (z - 0.05)
+    pull = sum(float(solve(abs(x - 1.2 - ox), z - 0.05, 0.9, 5.0, 1e5).V)
+               for x, ox in ((0.5, -0.1), (1.9, 0.1)))
+    assert 1000.0 * 9.81 * 0.2 * draft == pytest.approx(500.0 * 0.02 * 9.81 + pull, rel=1e-9)
+    assert pull > 1.0 and z < z0  # the lines pull it down by about a millimetre
+    assert z0 - z == pytest.approx(pull / (1000.0 * 9.81 * 0.2), rel=1e-9)
+
+
+def test_scene_equals_hand_wired_coupler(tmp_path):
+    """The scene's participants step exactly as the same set-up wired by hand (flume with
+    ceil(2 h / dx) wall layers and the paddle's back space, the wave set-up, the box at its
+    computed height, elastic catenary lines, fluid-first coupling)."""
+    from bodies import builders
+    from bodies.mujoco_bodies import MujocoBodies
+    from cosim.coupler import Coupler
+    from cosim.scene.build import build
+    from cosim.sph_fluid import SPHFluid
+    from fluid.flume import PADDLE_GROUP, flume
+    from fluid.solver import WAVES_2D, FluidConfig
+    from fluid.wavemaker import RegularWavemaker
+    from moorings import CatenaryMooring, MooringLine
+
+    scene = moored_box()
+    got = build(scene, tmp_path)
+    dx, g = 0.05, 9.81
+    wm = RegularWavemaker("piston", 0.04, 1.0, 0.3, 1.0, g)
+    fl = flume(dx, 3.0, 0.3, 0.45, layers=4, back=0.5 * wm.stroke + dx, beach=(2.0, 0.3))
+    cfg = FluidConfig(dim=2, dx=dx, g=g, u_max=math.sqrt(g * 0.3), **WAVES_2D)
+    fluid = SPHFluid(cfg, fl.fluid, fl.walls, z_surface=0.3, motions={PADDLE_GROUP: wm.paddle()})
+    z = got.start_heights["box"]
+    sites = {"box__left": (-0.1, 0.0, -0.05), "box__right": (0.1, 0.0, -0.05)}
+    box = builders.box("box", (0.2, 0.1), (1.2, 0.0, z), density=500.0, planar=True, sites=sites)
+    bodies = MujocoBodies(builders.scene(box, gravity=g, timestep=1e-3))
+    lines = [MooringLine((0.5, 0.0), 0.9, 5.0, EA=1e5, mass_per_length=0.588, diameter=0.01, name="box.left"),
+             MooringLine((1.9, 0.0), 0.9, 5.0, EA=1e5, mass_per_length=0.588, diameter=0.01, name="box.right")]
+    hand = Coupler(bodies=bodies, fluid=fluid, moorings=[(CatenaryMooring(lines), list(sites))], scheme="fluid-first")
+    hand.initialize()
+    assert got.coupler.scheme == "fluid-first"
+    for c in (got.coupler, hand):
+        for _ in range(25):
+            c.step(1.0)
+    a, b = got.sph.ps, fluid.fluid.ps
+    assert a.n == b.n and got.coupler.t == hand.t
+    np.testing.assert_array_equal(a.pos, b.pos)
+    np.testing.assert_array_equal(a.rho, b.rho)
+    np.testing.assert_array_equal(got.bodies.data.qpos, bodies.data.qpos)
+
+
+def test_run_writes_outputs_at_exact_times(tmp_path):
+    scene = moored_box(dx=0.03, duration=0.3, plot_at=[0.1])
+    r = scene.run(tmp_path, progress=False)
+    np.testing.assert_array_equal(r.t, [k * 0.02 for k in range(16)])  # counted, not accumulated
+    for name in ("run.h5", "run.xmf", "scene.toml", "summary.json", "motion.csv", "tensions.csv", "gauges.csv",
+                 "loads.csv", "ledger.csv", "motion.png", "gauges.png", "particles_t000.100.png"):
+        assert (tmp_path / name).stat().st_size > 0, name
+    assert Scene.from_toml(tmp_path / "scene.toml") == scene
+    s = json.loads((tmp_path / "summary.json").read_text())
+    assert s["setup"]["name"] == "waves" and s["scheme"] == "fluid-first" and s["steps"] == r.summary["steps"]
+    with h5py.File(tmp_path / "run.h5") as f:
+        np.testing.assert_array_equal(f["series/probes/motion/box.heave"][:], r["box.heave"])
+        assert len(f["snapshot_times"]) == 4 and len(f["series/ledger/box/t"]) == s["steps"]
+        Fz = f["series/ledger/box/fluid_force"][:, 2]
+    head = (tmp_path / "tensions.csv").read_text().splitlines()[0]
+    assert head == "t [s],box.left.tension [N],box.right.tension [N]"
+    # afloat near its start, the lines hang (~ w * suspended length), the gauges see still water
+    assert np.abs(r["box.heave"]).max() < 0.02 and np.abs(r["box.pitch"]).max() < 5.0
+    assert (r["box.left.tension"] > 0.5).all() and (r["box.left.tension"] < 5.0).all()
+    assert np.abs(r["gauge1.eta"]).max() < 0.02
+    # the fluid carries the box: buoyancy ~ its weight 98 N plus the lines' pull 2.5 N
+    assert 90.0 < np.median(Fz) < 110.0
+
+
+def test_resume_is_bit_for_bit(tmp_path):
+    """A run stopped at a checkpoint and resumed to a longer duration equals the run made
+    in one go: every probe sample and the last particle snapshot, exactly."""
+    whole = moored_box(duration=0.2, checkpoint_every=0.1).run(tmp_path / "whole", progress=False)
+    moored_box(duration=0.1, checkpoint_every=0.1).run(tmp_path / "split", progress=False)
+    resumed = moored_box(duration=0.2, checkpoint_every=0.1).run(tmp_path / "split", resume=True, progress=False)
+    assert resumed.summary["resumed"] and resumed.summary["steps"] == whole.summary["steps"]
+    np.testing.assert_array_equal(resumed.t, whole.t)
+    for name in whole.names:
+        np.testing.assert_array_equal(resumed[name], whole[name], err_msg=name)
+    with h5py.File(tmp_path / "whole" / "run.h5") as f, h5py.File(tmp_path / "split" / "run.h5") as g:
+        np.testing.assert_array_equal(f["snapshot_times"][:], g["snapshot_times"][:])
+        np.testing.assert_array_equal(f["snapshots/0002/pos"][:], g["snapshots/0002/pos"][:])
+        np.testing.assert_array_equal(f["series/ledger/box/fluid_force"][:], g["series/ledger/box/fluid_force"][:])
+
+
+def test_resume_refuses_a_changed_scene(tmp_path):
+    from cosim.errors import InputError
+
+    moored_box(duration=0.04, checkpoint_every=0.02).run(tmp_path, progress=False)
+    changed = moored_box(duration=0.1, checkpoint_every=0.02).with_values(["bodies[0].density=600"])
+    with pytest.raises(InputError, match=r"bodies\[0\]\.density: differs from the run being resumed"):
+        changed.run(tmp_path, resume=True, progress=False)
+    with pytest.raises(InputError, match="no checkpoint"):
+        moored_box().run(tmp_path / "empty", resume=True, progress=False)
+
+
+def test_failed_run_leaves_readable_outputs(tmp_path, monkeypatch):
+    import cosim.scene.runner as runner
+
+    def broken(*a):
+        raise RuntimeError("plotting failed")
+
+    monkeypatch.setattr(runner, "_plot_particles", broken)
+    with pytest.raises(RuntimeError, match="plotting failed"):
+        shaken_tank(duration=0.2, plot_at=[0.1]).run(tmp_path, progress=False)
+    s = json.loads((tmp_path / "summary.json").read_text())
+    assert s["error"] == "RuntimeError: plotting failed" and s["t_reached_s"] == pytest.approx(0.1)
+    with h5py.File(tmp_path / "run.h5") as f:
+        np.testing.assert_array_equal(f["series/probes/gauges/t"][:], [0.0, 0.05, 0.1])
+
+
+def test_fluid_only_scene_shakes_the_tank(tmp_path):
+    """No bodies: the SPH fluid runs as a plain participant; the shaken tank's water
+    gains energy, and its initial state is at rest (hydrostatic densities)."""
+    r = shaken_tank(duration=0.6).run(tmp_path, progress=False)
+    ke = r["fluid.kinetic"]
+    assert ke[0] == 0.0 and ke[-1] > 1e-3
+    assert r.summary["setup"]["name"] == "sloshing" and "remedies" not in r.summary
+
+
+def test_analytic_scene_matches_its_physics(tmp_path):
+    """A box of half the water's density on the analytic fluid, at its draft: at rest."""
+    s = Scene(world=World(dim=2, duration=1.0, sample_every=0.1), fluid=Analytic(level=0.0),
+              bodies=[Box("b", size=(1.0, 1.0), density=500.0, pos=(0.0, 0.0))])
+    r = s.run(tmp_path, progress=False)
+    assert np.abs(r["b.heave"]).max() < 1e-9
+    assert r["b.fluid_Fz"][-1] == pytest.approx(500.0 * 9.81, rel=1e-6)
+
+
+@pytest.mark.parametrize("kind", ["analytic", "sph-no-bodies"])
+def test_a_scene_loads_only_what_it_contains(kind, tmp_path):
+    """A scene without the SPH fluid never imports (so never compiles) the fluid's
+    kernels; one without bodies never imports MuJoCo."""
+    scene = ("Scene(world=World(duration=0.1, sample_every=0.05), fluid=Analytic(), "
+             "bodies=[Box('b', size=(1.0, 1.0), density=500.0, pos=(0.0, 0.0))])" if kind == "analytic" else
+             "Scene(world=World(duration=0.02, sample_every=0.01, snapshot_every=0), fluid=SPH(dx=0.05), "
+             "domain=Tank(length=0.3, height=0.3, depth=0.2))")
+    code = ("import sys\nfrom cosim.scene import *\n"
+            f"{scene}.run({str(tmp_path)!r}, progress=False)\n"
+            "print(sorted(m for m in ('fluid.solver', 'fluid.equations', 'mujoco') if m in sys.modules))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
+    assert out.returncode == 0, out.stderr[-2000:]
+    loaded = eval(out.stdout.strip().splitlines()[-1])
+    assert loaded == (["mujoco"] if kind == "analytic" else ["fluid.equations", "fluid.solver"])
+
+
+def test_cli_run_and_set(tmp_path):
+    out = subprocess.run([sys.executable, "-m", "cosim.cli", "run", str(ROOT / "examples" / "sloshing_tank.toml"),
+                          "--set", "world.duration=0.1", "--set", "fluid.dx=0.05", "--set", "world.plot_at=[0.1]",
+                          "--out", str(tmp_path)], capture_output=True, text=True, cwd=ROOT)
+    assert out.returncode == 0, out.stderr[-2000:]
+    assert "fluid set-up: sloshing" in out.stdout and "left_wall.p" in out.stdout
+    assert Scene.from_toml(tmp_path / "scene.toml").fluid.dx == 0.05
+    bad = subprocess.run([sys.executable, "-m", "cosim.cli", "run", str(ROOT / "examples" / "sloshing_tank.toml"),
+                          "--set", "fluid.dxx=0.05", "--out", str(tmp_path / "bad")], capture_output=True, text=True)
+    assert bad.returncode == 2 and "fluid.dxx: unknown key; did you mean 'dx'?" in bad.stderr
+    assert not (tmp_path / "bad").exists()
