@@ -371,11 +371,14 @@ def _plot_particles(out: Path, sph, t: float, scene):
     x, z = ps.pos[:, 0], ps.pos[:, -1]
     speed = scene.world.plot_color == "velocity"
     c = np.linalg.norm(ps.vel[fl], axis=1) if speed else ps.p[fl]
-    fig, ax = plt.subplots(figsize=(8, 4), dpi=110)
+    aspect = (np.ptp(z) + 1e-9) / (np.ptp(x) + 1e-9)
+    fig, ax = plt.subplots(figsize=(9, min(max(9 * aspect + 1.0, 2.8), 9)), dpi=110)
     size = max(0.5, 3000.0 / max(len(x), 1))
-    ax.scatter(x[~fl], z[~fl], s=size, c="0.6", lw=0)
+    body = ps.kind == Kind.BODY
+    ax.scatter(x[~fl & ~body], z[~fl & ~body], s=size, c="0.65", lw=0)
+    ax.scatter(x[body], z[body], s=size, c="0.25", lw=0)
     sc = ax.scatter(x[fl], z[fl], s=size, c=c, cmap="viridis", lw=0)
-    fig.colorbar(sc, ax=ax, label="speed [m/s]" if speed else "pressure [Pa]")
+    fig.colorbar(sc, ax=ax, label="speed [m/s]" if speed else "pressure [Pa]", fraction=0.03, pad=0.02)
     ax.set_aspect("equal")
     ax.set_xlabel("x [m]")
     ax.set_ylabel("z [m]")
