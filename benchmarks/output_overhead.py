@@ -25,7 +25,7 @@ def main():
     from fluid.geometry import set_hydrostatic, tank_with_water
     from fluid.output import H5Output
     from fluid.probes import Energy, PressureProbe, WaveGauge
-    from fluid.run import SNAPSHOT_FIELDS
+    from cosim.scene.runner import SNAPSHOT_FIELDS
     from fluid.solver import Fluid, FluidConfig
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])

@@ -375,7 +375,7 @@ def read_snapshot(path, k: int) -> dict:
 
 def write_csv(path, series: dict) -> None:
     """Write one series (``{"t": (n,) [s], key: (n,) or (n, k)}``, as :func:`read_series`
-    reads it and :func:`fluid.run.run` returns it per probe) as CSV: a header ``t``, then
+    reads it) as CSV: a header ``t``, then
     ``key`` or ``key_0 .. key_{k-1}`` per key, one row per time, full precision."""
     if "t" not in series:
         raise InputError("write_csv: the series has no 't' (time) column")

@@ -4,7 +4,7 @@ boundary group, the fluid's energies.
 
 Every probe has a ``name`` (the series it is written to), ``columns`` (the keys of its
 sample) and ``sample(fluid) -> dict`` mapping each column to a float or a 1-D array of
-fixed length, ready for :meth:`fluid.output.H5Output.series` and :func:`fluid.run.run`.
+fixed length, ready for :meth:`fluid.output.H5Output.series`.
 The functional forms (:func:`pressure_at`, :func:`wall_patch_pressure`,
 :func:`surface_elevation`, :func:`fluid_energies`) read the same quantities once.
 

@@ -2,8 +2,7 @@
 
 It writes to a terminal only (stderr by default), so logs and CI stay clean. It lives in
 ``fluid`` (plain Python, no numba) because the solver packages may not import the coupler:
-:func:`fluid.run.run` uses it, and :mod:`cosim.progress` re-exports it for the coupler, so
-both show the same line from one implementation.
+:mod:`cosim.progress` re-exports it for the coupler and the scene runner.
 """
 
 from __future__ import annotations
