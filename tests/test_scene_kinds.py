@@ -1,0 +1,124 @@
+"""Every kind of domain, excitation and body a scene offers builds and runs a few steps at
+a coarse spacing, and what it builds is what it says: the water volume of each domain,
+the motion of a shaken tank's walls, a floating body's draft."""
+
+import math
+
+import numpy as np
+import pytest
+
+from cosim.scene import (MJCF, SPH, Analytic, Block, Box, Cylinder, CylinderTank, Earthquake, Flap, Flume,
+                         InclinedTank, PaddleRecord, Piston, PolygonTank, Probes, Roll, Scene, Shake, Sphere,
+                         TableMotion, Tank, World)
+from cosim.scene.build import build
+
+W2 = World(dim=2, duration=0.01, sample_every=0.005, snapshot_every=0)
+W3 = World(dim=3, duration=0.005, sample_every=0.005, snapshot_every=0)
+
+
+def _water_volume(built, dim):
+    from fluid.particles import Kind
+
+    ps = built.sph.ps
+    return int((ps.kind == Kind.FLUID).sum()) * built.sph.config.dx ** dim
+
+
+@pytest.mark.parametrize("domain, dim, volume, rel", [
+    (Tank(length=0.6, height=0.4, depth=0.2), 2, 0.6 * 0.2, 1e-9),
+    (Tank(length=0.6, height=0.4, water=[Block((0.0, 0.0), (0.2, 0.3))]), 2, 0.2 * 0.3, 1e-9),
+    (Flume(length=1.0, depth=0.2, height=0.3), 2, 1.0 * 0.2, 1e-9),
+    (InclinedTank(angle=30.0, length=0.5, depth=0.2, height=0.3), 2, 0.5 * 0.2 + 0.5 * 0.2**2 * math.tan(math.radians(30)), 0.08),
+    (PolygonTank(vertices=[(0.0, 0.0), (0.6, 0.0), (0.6, 0.4), (0.0, 0.4)], fill_level=0.2), 2, 0.6 * 0.2, 1e-9),
+    (Tank(length=0.3, width=0.2, height=0.3, depth=0.15), 3, 0.3 * 0.2 * 0.15, 1e-9),
+    (CylinderTank(diameter=0.4, depth=0.2, height=0.3), 3, math.pi * 0.2**2 * 0.2, 0.03),
+], ids=["tank", "dam-break-block", "flume", "inclined", "polygon", "tank-3d", "cylinder-3d"])
+def test_domains_hold_their_water_and_run(domain, dim, volume, rel, tmp_path):
+    scene = Scene(world=W2 if dim == 2 else W3, fluid=SPH(dx=0.05 if dim == 2 else 0.05), domain=domain)
+    b = build(scene, tmp_path)
+    assert _water_volume(b, dim) == pytest.approx(volume, rel=rel)
+    assert b.setup.name == ("impact" if domain.__class__ is Tank and domain.water else "still")
+    r = scene.run(tmp_path / "run", progress=False)
+    assert r.summary["t_reached_s"] == scene.world.duration
+
+
+def _table(path, t, v):
+    np.savetxt(path, np.column_stack([t, v]))
+    return str(path)
+
+
+def _at2(path, dt=0.01, n=200):
+    acc = 0.1 * np.sin(2 * np.pi * np.arange(n) * dt / 0.5)  # g
+    head = ["TEST RECORD", "SYNTHETIC", "ACCELERATION TIME SERIES IN UNITS OF G", f"NPTS=  {n}, DT= {dt:.4f} SEC"]
+    path.write_text("\n".join(head + [" ".join(f"{a:.6e}" for a in acc[i:i + 5]) for i in range(0, n, 5)]) + "\n")
+    return str(path)
+
+
+def _motions(tmp_path):
+    t = np.linspace(0.0, 1.0, 21)
+    return {
+        "shake-amplitude": Shake(period=0.5, amplitude=0.01),
+        "shake-acceleration": Shake(period=0.5, acceleration=2.0, ramp=0.1, stop=0.9),
+        "roll": Roll(amplitude=2.0, period=1.0, point=(0.3, 0.0)),
+        "table": TableMotion(file=_table(tmp_path / "d.txt", t, 0.01 * np.sin(2 * np.pi * t))),
+        "earthquake": Earthquake(file=_at2(tmp_path / "q.AT2"), scale=0.5),
+    }
+
+
+@pytest.mark.parametrize("kind", ["shake-amplitude", "shake-acceleration", "roll", "table", "earthquake"])
+def test_base_motions_move_the_walls(kind, tmp_path):
+    """The tank's walls follow the prescribed motion (their velocity at the end is the
+    motion's), the water is dragged along."""
+    from fluid.particles import Kind
+
+    motion = _motions(tmp_path)[kind]
+    scene = Scene(world=W2.replace(duration=0.2), fluid=SPH(dx=0.05), domain=Tank(length=0.6, height=0.4, depth=0.2),
+                  base_motion=motion)
+    b = build(scene, tmp_path)
+    assert b.setup.name == "sloshing"
+    b.coupler.run(0.2)
+    ps = b.sph.ps
+    walls = ps.kind == Kind.MOVING_WALL
+    assert walls.any() and np.isfinite(ps.vel).all()
+    assert np.abs(ps.vel[walls]).max() > 1e-4  # the walls move
+
+
+@pytest.mark.parametrize("kind", ["piston", "flap", "record"])
+def test_wavemakers_drive_the_paddle(kind, tmp_path):
+    t = np.linspace(0.0, 2.0, 41)
+    waves = {"piston": Piston(height=0.02, period=1.0), "flap": Flap(height=0.02, period=1.0),
+             "record": PaddleRecord(paddle="piston", file=_table(tmp_path / "p.txt", t, 0.01 * np.sin(np.pi * t)))}
+    scene = Scene(world=W2.replace(duration=0.2), fluid=SPH(dx=0.05), domain=Flume(length=1.5, depth=0.2, height=0.3),
+                  waves=waves[kind], probes=Probes(gauges=[0.5]))
+    r = scene.run(tmp_path / "run", progress=False)
+    assert r.summary["setup"]["name"] == "waves" and np.isfinite(r["gauge1.eta"]).all()
+
+
+@pytest.mark.parametrize("body, dim", [
+    (Cylinder("c", radius=0.05, density=500.0, pos=(0.3,), place="floating"), 2),
+    (Box("b", size=(0.1, 0.1, 0.08), density=600.0, pos=(0.2, 0.15), place="floating"), 3),
+    (Cylinder("c", radius=0.05, length=0.1, density=400.0, pos=(0.2, 0.15), place="floating"), 3),
+    (Sphere("s", radius=0.05, density=300.0, pos=(0.2, 0.15), place="floating"), 3),
+], ids=["cylinder-2d", "box-3d", "cylinder-3d", "sphere-3d"])
+def test_floating_bodies_start_at_their_draft(body, dim, tmp_path):
+    """On the analytic fluid a floating body starts in equilibrium: its buoyancy carries
+    its weight and it stays where it is put."""
+    scene = Scene(world=World(dim=dim, duration=0.2, sample_every=0.1), fluid=Analytic(level=0.5), bodies=[body])
+    from cosim.scene.placement import volume_and_height
+
+    r = scene.run(tmp_path, progress=False)
+    weight = body.density * volume_and_height(body, dim)[0] * 9.81
+    assert r[f"{body.name}.fluid_Fz"][-1] == pytest.approx(weight, rel=2e-3)
+    assert np.abs(r[f"{body.name}.heave"]).max() < 1e-4
+
+
+def test_mjcf_bodies(tmp_path):
+    xml = tmp_path / "m.xml"
+    xml.write_text('<mujoco><option gravity="0 0 -1"/><worldbody><body name="float" pos="0 0 0">'
+                   '<freejoint/><geom type="box" size="0.5 0.5 0.5" density="500"/>'
+                   '<site name="top" pos="0 0 0.5"/></body></worldbody></mujoco>')
+    scene = Scene(world=World(dim=3, duration=0.5, sample_every=0.1), fluid=Analytic(level=0.0),
+                  bodies=[MJCF(file=str(xml))])
+    b = build(scene, tmp_path)
+    assert tuple(b.bodies.model.opt.gravity) == (0.0, 0.0, -9.81)  # the world's gravity, not the file's
+    r = scene.run(tmp_path / "run", progress=False)
+    assert np.abs(r["float.heave"]).max() < 1e-6  # half its volume under water: afloat at rest
