@@ -44,7 +44,7 @@ from cosim.watch import InstabilityWatch
 
 log = logging.getLogger(__name__)
 
-SCHEMES = ("explicit", "predictor-corrector", "fluid-first")
+SCHEMES = ("auto", "explicit", "predictor-corrector", "fluid-first")
 
 
 @dataclass(frozen=True)
@@ -93,14 +93,16 @@ class Coupler:
         How body loads are taken over a step. ``"explicit"``: the loads at the
         start of the step, held (one evaluation; for a load stiffness k on a mass m
         it adds energy, amplitude growth ~ (ω dt)²/4 per step with ω² = k/m).
-        ``"predictor-corrector"`` (default): the bodies advance with the start
+        ``"predictor-corrector"``: the bodies advance with the start
         loads, the loads are taken at the predicted pose, every exchanging
         participant is rolled back (``save_state``/``load_state``) and the bodies
         advance with the mean of both (second order; growth ~ (ω dt)⁴).
         ``"fluid-first"``: the fluid advances first with the bodies' current motion,
         then the bodies receive exactly the impulse the fluid exchanged with them
         (its ``exchanged_wrenches()``): momentum passes between fluid and bodies to
-        round-off. For the SPH fluid, whose own step is what limits dt.
+        round-off. For the SPH fluid, whose own step is what limits dt. ``"auto"``
+        (default): fluid-first with a fluid that reports the loads it exchanged (the SPH
+        fluid), predictor-corrector otherwise.
     light_body:
         What to do for bodies much lighter than the fluid they displace, whose
         staggered coupling is unstable (added mass; see :mod:`cosim.added_mass` and the
@@ -122,7 +124,7 @@ class Coupler:
 
     def __init__(self, participants: Sequence[Participant] = (), *, bodies=None, fluid=None,
                  moorings: Sequence = (), dt: float | None = None, t0: float = 0.0,
-                 scheme: str = "predictor-corrector", light_body: str = "auto"):
+                 scheme: str = "auto", light_body: str = "auto"):
         self.bodies, self.fluid = bodies, fluid
         self.moorings = [m if isinstance(m, MooringAttachment) else MooringAttachment(m[0], tuple(m[1]))
                          for m in moorings]
@@ -150,6 +152,8 @@ class Coupler:
             raise InputError(f"coupling step dt={dt!r} s is below the clock resolution of 1e-12 s")
         if scheme not in SCHEMES:
             raise InputError(f"coupling scheme {scheme!r} is not one of {', '.join(SCHEMES)}")
+        if scheme == "auto":
+            scheme = "fluid-first" if hasattr(fluid, "exchanged_wrenches") else "predictor-corrector"
         if scheme == "fluid-first" and not hasattr(fluid, "exchanged_wrenches"):
             raise ConfigurationError("the fluid-first scheme needs a fluid that reports the loads it exchanged "
                                      "over its last advance (exchanged_wrenches(), e.g. cosim.sph_fluid.SPHFluid)")
@@ -198,6 +202,7 @@ class Coupler:
             for a, sites in zip(self.moorings, self._sites):
                 a.mooring.set_fairlead_motion(*self._fairlead_motion(a, sites, kin))
             if self.fluid is not None:
+                self._check_gravity()
                 self.fluid.attach_bodies(self.bodies)
                 self.fluid.set_body_kinematics(kin)
                 self._choose_light_body_remedy()
@@ -206,6 +211,18 @@ class Coupler:
             if p is not self.bodies:
                 p.initialize(t0)
         self._initialized = True
+
+    def _check_gravity(self) -> None:
+        """The fluid and the bodies must fall the same way: one gravity for every participant."""
+        g_f = getattr(getattr(self.fluid, "config", self.fluid), "g", None)
+        if g_f is None:
+            return
+        g_b = np.asarray(self.bodies.model.opt.gravity, float)
+        if not np.allclose(g_b, (0.0, 0.0, -float(g_f)), rtol=1e-12, atol=1e-12):
+            raise ConfigurationError(
+                f"gravity differs between participants: fluid '{self.fluid.name}' has g = {g_f!r} m/s^2 along -z, "
+                f"bodies '{self.bodies.name}' {g_b.tolist()} m/s^2; give both the same (a scene sets one world.gravity "
+                f"for all; by hand: FluidConfig(g=...) and bodies.builders.scene(gravity=...))")
 
     def _choose_light_body_remedy(self) -> None:
         carries = getattr(self.fluid, "loads_carry_added_mass", True)

@@ -210,3 +210,27 @@ def test_moored_body_validation_quick():
     rec = run("moored-body", quick=True)
     assert rec["passed"], rec["metrics"]
     assert rec["metrics"]["position_error"]["z_m"] < 1e-4
+
+
+def test_participants_share_one_gravity():
+    """A fluid and bodies that fall differently are refused at initialisation, naming both."""
+    b = MujocoBodies(builders.scene(builders.box("b", (1.0, 1.0), (0, 0, 0), density=500.0, planar=True),
+                                    gravity=9.81))
+    c = Coupler(bodies=b, fluid=AnalyticFluid(g=9.80665))
+    with pytest.raises(ConfigurationError, match=r"fluid 'fluid' has g = 9.80665 m/s\^2 along -z, bodies 'bodies' "
+                                                 r"\[0.0, 0.0, -9.81\]"):
+        c.initialize()
+
+
+def test_auto_scheme_fits_the_fluid():
+    """scheme="auto" (the default): fluid-first with a fluid that reports the loads it
+    exchanged (the SPH fluid), predictor-corrector with the analytic fluid."""
+    class Exchanging(AnalyticFluid):
+        def exchanged_wrenches(self):
+            return self.body_wrenches()
+
+    def bodies():
+        return MujocoBodies(builders.scene(builders.box("b", (1.0, 1.0), (0, 0, 0), density=500.0, planar=True)))
+
+    assert Coupler(bodies=bodies(), fluid=AnalyticFluid()).scheme == "predictor-corrector"
+    assert Coupler(bodies=bodies(), fluid=Exchanging()).scheme == "fluid-first"
