@@ -21,8 +21,10 @@ Layout of the HDF5 file (a stable contract: readers, tests and the examples rely
 Snapshot groups are numbered ``f"{k:04d}"`` (0000, 0001, ...; 10000 after 9999).
 
 Crash safety: series rows are buffered in memory (h5py costs ~30 us per dataset write)
-and written every ``buffer_rows`` rows, at every snapshot, on :meth:`flush` and on
-close. Leaving the ``with`` block by an exception writes what was buffered and closes
+and written every ``buffer_rows`` rows, at every snapshot, on :meth:`flush`, on close,
+and at least every ``flush_every_s`` seconds of wall time (a run killed outright loses
+at most that much: ``tests/test_scene_kill.py`` kills runs with SIGKILL and reads their
+files). Leaving the ``with`` block by an exception writes what was buffered and closes
 the file, so a run that raised (an ``InstabilityError``) leaves a readable file with
 its data so far. The XDMF file is rewritten (atomically) after every snapshot.
 
@@ -38,6 +40,7 @@ from __future__ import annotations
 
 import math
 import os
+import time
 from pathlib import Path
 
 import h5py
@@ -75,10 +78,12 @@ class H5Output:
     ``path`` [file] the .h5 file (overwritten); the XDMF file is ``path`` with suffix .xmf.
     ``dim`` 2 (x-z plane) or 3. ``attrs`` run metadata stored as root attributes (numbers,
     strings or arrays; give lengths in metres, times in seconds). ``buffer_rows`` [-] series
-    rows held in memory per series before they are written.
+    rows held in memory per series before they are written; ``flush_every_s`` [s] the
+    longest wall time between two flushes to disk.
     """
 
-    def __init__(self, path, dim: int, attrs: dict | None = None, *, buffer_rows: int = 256):
+    def __init__(self, path, dim: int, attrs: dict | None = None, *, buffer_rows: int = 256,
+                 flush_every_s: float = 10.0):
         if dim not in (2, 3):
             raise InputError(f"H5Output: dim={dim!r}; use 2 (x-z plane) or 3")
         if not isinstance(buffer_rows, int) or buffer_rows < 1:
@@ -87,6 +92,10 @@ class H5Output:
         self.xmf_path = self.path.with_suffix(".xmf")
         self.dim = dim
         self.buffer_rows = buffer_rows
+        if not (isinstance(flush_every_s, (int, float)) and flush_every_s > 0):
+            raise InputError(f"H5Output: flush_every_s={flush_every_s!r}; give a positive number of seconds")
+        self.flush_every_s = float(flush_every_s)
+        self._flushed = time.monotonic()
         self.n_snapshots = 0
         self._snap_meta: list[tuple] = []  # (t, group, N, pos dtype, fields) per snapshot
         self._grids: list[str] = []  # each snapshot's XDMF grid, made once
@@ -138,6 +147,7 @@ class H5Output:
         for name in self._series:
             self._write_rows(name)
         self.file.flush()
+        self._flushed = time.monotonic()
 
     def _require_open(self) -> None:
         if self.closed:
@@ -162,6 +172,8 @@ class H5Output:
             s["rows"][k].append(a)
         if len(s["t"]) >= self.buffer_rows:
             self._write_rows(name)
+        if time.monotonic() - self._flushed > self.flush_every_s:
+            self.flush()
 
     def series_block(self, name: str, t, **values) -> None:
         """Append many rows at once: ``t`` (n,) [s], each value (n,) or (n, k); the same
@@ -229,7 +241,7 @@ class H5Output:
     def _append(self, name: str, t: np.ndarray, block: dict) -> None:
         g = self.file["series"][name]
         n0, n = g["t"].shape[0], t.shape[0]
-        for k, a in [("t", t)] + list(block.items()):
+        for k, a in list(block.items()) + [("t", t)]:  # the time last: a row counts once it is whole
             d = g[k]
             d.resize(n0 + n, axis=0)
             d[n0:] = a
@@ -358,7 +370,9 @@ def read_series(path, name: str) -> dict[str, np.ndarray]:
             f["series"].visititems(lambda k, v: have.append(k) if isinstance(v, h5py.Group) and "t" in v else None)
             raise InputError(f"{path}: no series {name!r}; it holds {sorted(have)}")
         g = f["series"][name]
-        return {k: g[k][()] for k in g if isinstance(g[k], h5py.Dataset)}
+        keys = [k for k in g if isinstance(g[k], h5py.Dataset)]
+        n = min(g[k].shape[0] for k in keys)  # a run killed mid-write: only the whole rows
+        return {k: g[k][:n] for k in keys}
 
 
 def read_snapshot(path, k: int) -> dict:
