@@ -24,6 +24,7 @@ propagates.
 from __future__ import annotations
 
 import json
+import logging
 import math
 import os
 import pickle
@@ -34,6 +35,8 @@ import numpy as np
 
 from cosim.errors import InputError
 from cosim.scene.fields import SceneError
+
+log = logging.getLogger(__name__)
 
 CHECKPOINT = "checkpoint.pkl"
 FORMAT = "cosim-scene-checkpoint-1"
@@ -189,15 +192,21 @@ def _first_difference(a, b, prefix=""):
 
 
 def _old_snapshots(path: Path, t_max: float):
-    from fluid.output import read_snapshot
-
+    """The snapshots up to ``t_max`` [s] of the interrupted run's file, one at a time (a file
+    the kill left unreadable gives none: the probe series come from the checkpoint)."""
     import h5py
 
-    if not path.is_file():
-        return []
-    with h5py.File(path, "r") as f:
-        times = f["snapshot_times"][:]
-    return [read_snapshot(path, k) for k, t in enumerate(times) if t <= t_max + 1e-9]
+    from fluid.output import read_snapshot
+
+    try:
+        with h5py.File(path, "r") as f:
+            times = f["snapshot_times"][:]
+    except (OSError, KeyError) as e:
+        log.warning("resume: the snapshots of %s cannot be read (%s); the resumed file starts without them", path, e)
+        return
+    for k, t in enumerate(times):
+        if t <= t_max + 1e-9:
+            yield read_snapshot(path, k)
 
 
 def _write_checkpoint(path: Path, scene, built, rec, t, wall):
@@ -233,9 +242,11 @@ def run(scene, out, *, resume: bool = False, progress=None) -> Results:
         c.load_state(blob["state"])
         c.ledger.restore(blob["ledger"])
         rec.times, rec.rows, t_start, wall_before = list(blob["times"]), blob["rows"], blob["t"], blob["wall_s"]
-        old = out / "run.h5"
-        snaps = _old_snapshots(old, t_start)
-        rec.open(snaps)
+        old = out / "run.h5.old"  # kept until the new file holds its snapshots (a kill here loses nothing)
+        if not old.exists() and (out / "run.h5").exists():
+            os.replace(out / "run.h5", old)
+        rec.open(_old_snapshots(old, t_start) if old.exists() else ())
+        old.unlink(missing_ok=True)
     else:
         if sph is not None and scene.fluid.settle > 0:
             sph.settle(scene.fluid.settle)
