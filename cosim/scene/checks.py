@@ -98,6 +98,10 @@ def _check_excitations(s, dim):
         if isinstance(s.waves, (Piston, Flap)):
             from fluid.wavemaker import RegularWavemaker
 
+            if s.world.gravity <= 0:
+                raise SceneError("world.gravity", "a wavemaker's waves need gravity > 0 (their length follows "
+                                 "from it)")
+
             try:
                 RegularWavemaker(s.waves.kind, s.waves.height, s.waves.period, s.domain.depth, s.waves.ramp,
                                  s.world.gravity)
@@ -119,6 +123,9 @@ def _check_excitations(s, dim):
             if dim == 2 and b.axis is not None:
                 raise SceneError("base_motion.axis", "a 2-D roll is about +y; leave axis out")
         else:
+            if dim == 3 and b.direction == (1.0, 0.0):
+                raise SceneError("base_motion.direction", "a 3-D scene needs the direction as (x, y, z), e.g. "
+                                 "[1, 0, 0]; the default (1, 0) is the x axis of a 2-D scene")
             _dim_vec(b.direction, dim, "base_motion.direction", "direction")
         if hasattr(b, "file"):
             _file(b.file, "base_motion.file")
@@ -179,9 +186,8 @@ def _extent(b, dim):
     return [b.radius] * dim
 
 
-def _check_inside(s, dim):
-    """Bodies at a given pose lie within the domain's inner box (the walls' faces)."""
-    d = s.domain
+def _domain_box(d, dim):
+    """Lower and upper corners [m] of the domain's inner box (the walls' faces)."""
     if isinstance(d, (Tank, Flume, InclinedTank)):
         lo = [0.0] * dim
         hi = [d.length] + ([d.width] if dim == 3 else []) + [d.height]
@@ -194,6 +200,12 @@ def _check_inside(s, dim):
     else:
         xs, zs = [v[0] for v in d.vertices], [v[1] for v in d.vertices]
         lo, hi = [min(xs), min(zs)], [max(xs), max(zs)]
+    return lo, hi
+
+
+def _check_inside(s, dim):
+    """Bodies at a given pose lie within the domain's inner box (the walls' faces)."""
+    lo, hi = _domain_box(s.domain, dim)
     for i, b in enumerate(s.bodies):
         if isinstance(b, MJCF) or b.euler is not None:
             continue
@@ -225,10 +237,12 @@ def _check_moorings(s, dim):
                                  f"{sorted(builders[body].fairleads)}")
         elif not mjcf:
             raise SceneError(f"{key}.fairlead", f"no body named {body!r}; bodies: {sorted(builders)}")
-    names = [ln.fairlead for ln in m.lines]
-    dup = sorted({n for n in names if names.count(n) > 1})
-    if dup:
-        raise SceneError("moorings.lines", f"two lines end on the fairlead {dup[0]!r}; give each line its own")
+    first = {}
+    for i, ln in enumerate(m.lines):
+        if ln.fairlead in first:
+            raise SceneError(f"moorings.lines[{i}].fairlead", f"{ln.fairlead!r} is also the fairlead of "
+                             f"moorings.lines[{first[ln.fairlead]}]; give each line its own fairlead")
+        first[ln.fairlead] = i
 
 
 def _check_probes(s, dim):
@@ -247,6 +261,13 @@ def _check_probes(s, dim):
         if n != dim - 1:
             raise SceneError(f"probes.gauges[{i}]", f"{g}: a {dim}-D scene gives a gauge as "
                              f"{'x [m]' if dim == 2 else '(x, y) [m]'}")
+        if s.domain is not None:
+            lo, hi = _domain_box(s.domain, dim)
+            for k, x in enumerate((g,) if isinstance(g, float) else g):
+                if not lo[k] <= x <= hi[k]:
+                    where = "" if dim == 2 else f"{list(g)}: "
+                    raise SceneError(f"probes.gauges[{i}]", f"{where}{'xy'[k]} = {x:g} m lies outside the domain's "
+                                     f"{lo[k]:g} .. {hi[k]:g} m; put the gauge over the water")
     seen = set()
     for i, pr in enumerate(p.pressure):
         _dim_vec(pr.centre, dim, f"probes.pressure[{i}].centre")

@@ -12,6 +12,7 @@ declarations, so Python and TOML accept exactly the same scenes.
 from __future__ import annotations
 
 import dataclasses
+import difflib
 import math
 from typing import Any
 
@@ -35,6 +36,14 @@ class SceneError(InputError):
 
 def _is_num(v) -> bool:
     return isinstance(v, (int, float)) and not isinstance(v, bool)
+
+
+def _is_finite(v) -> bool:
+    """A number that is a finite float (an int beyond the float range is not)."""
+    try:
+        return _is_num(v) and math.isfinite(v)
+    except OverflowError:
+        return False
 
 
 class Check:
@@ -76,8 +85,8 @@ class Num(Check):
         return f"a number{self._unit()}{' ' + ' and '.join(rng) if rng else ''} ({self.doc})"
 
     def check(self, v, path):
-        if not _is_num(v) or not math.isfinite(v):
-            raise SceneError(path, f"{v!r} is not a finite number; give {self.expected()}")
+        if not _is_finite(v):
+            raise SceneError(path, f"{_show(v)} is not a finite number; give {self.expected()}")
         v = float(v)
         bad = ((self.lo is not None and (v < self.lo or (self.lo_open and v == self.lo)))
                or (self.hi is not None and (v > self.hi or (self.hi_open and v == self.hi))))
@@ -116,7 +125,9 @@ class Choice(Check):
 
     def check(self, v, path):
         if v not in self.choices or isinstance(v, bool):
-            raise SceneError(path, f"{v!r} is not accepted; give {self.expected()}")
+            hint = difflib.get_close_matches(v, self.choices, n=1) if isinstance(v, str) else []
+            give = f"did you mean {hint[0]!r}? Give" if hint else "give"
+            raise SceneError(path, f"{_show(v)} is not accepted; {give} {self.expected()}")
         return v
 
 
@@ -154,12 +165,12 @@ class Vec(Check):
         self.sizes, self.nonzero = tuple(sizes), nonzero
 
     def expected(self) -> str:
-        n = " or ".join(str(s) for s in self.sizes)
+        n = " or ".join(filter(None, (", ".join(str(s) for s in self.sizes[:-1]), str(self.sizes[-1]))))
         return f"a list of {n} numbers{self._unit()} ({self.doc})"
 
     def check(self, v, path):
         if isinstance(v, (str, bytes)) or not hasattr(v, "__len__") or len(v) not in self.sizes \
-                or not all(_is_num(x) and math.isfinite(x) for x in v):
+                or not all(_is_finite(x) for x in v):
             raise SceneError(path, f"{_show(v)} is not accepted; give {self.expected()}")
         if self.nonzero and not any(x != 0 for x in v):
             raise SceneError(path, f"{_show(v)} is a zero vector; give {self.expected()}, not all zero")
@@ -214,7 +225,7 @@ class Gauges(Check):
             raise SceneError(path, f"{_show(v)} is not a list; give {self.expected()}")
         out = []
         for i, x in enumerate(v):
-            if _is_num(x) and math.isfinite(x):
+            if _is_finite(x):
                 out.append(float(x))
             else:
                 out.append(Vec(self.doc, "m", (2,))(x, f"{path}[{i}]"))

@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import dataclasses
 import difflib
-import json
 import re
 import tomllib
 from pathlib import Path
@@ -37,9 +36,10 @@ def _pick_class(classes, data: dict, path: str):
     if tag not in data:
         raise SceneError(_key(path, tag), f"is required: one of {', '.join(repr(k) for k in by)}")
     value = data[tag]
-    if value not in by:
-        hint = difflib.get_close_matches(str(value), list(by), n=1)
-        raise SceneError(_key(path, tag), f"{value!r} is not accepted{'; did you mean ' + repr(hint[0]) + '?' if hint else ''}"
+    if not isinstance(value, str) or value not in by:
+        hint = difflib.get_close_matches(value, list(by), n=1) if isinstance(value, str) else []
+        raise SceneError(_key(path, tag), f"{value!r} is not accepted"
+                         f"{'; did you mean ' + repr(hint[0]) + '?' if hint else '.'}"
                          f" Give one of {', '.join(repr(k) for k in by)}")
     return by[value]
 
@@ -55,7 +55,7 @@ def _build(classes, data, path: str, base_dir):
     if unknown:
         k = unknown[0]
         hint = difflib.get_close_matches(k, list(fields), n=1)
-        raise SceneError(_key(path, k), f"unknown key{'; did you mean ' + repr(hint[0]) + '?' if hint else ''} "
+        raise SceneError(_key(path, k), f"unknown key{'; did you mean ' + repr(hint[0]) + '?' if hint else '.'} "
                          f"Known keys here: {', '.join(fields)}")
     kwargs = {}
     for name, value in data.items():
@@ -130,7 +130,7 @@ def _scalar(v) -> str:
     if isinstance(v, (int, float)):
         return repr(v)  # exact: floats round-trip through repr
     if isinstance(v, str):
-        return json.dumps(v)  # a TOML basic string (JSON's escapes are TOML's)
+        return _string(v)
     if isinstance(v, list):
         return "[" + ", ".join(_scalar(x) for x in v) + "]"
     if isinstance(v, dict):
@@ -138,8 +138,27 @@ def _scalar(v) -> str:
     raise TypeError(f"cannot write {v!r} as TOML")
 
 
+_ESCAPES = {'"': '\\"', "\\": "\\\\", "\b": "\\b", "\t": "\\t", "\n": "\\n", "\f": "\\f", "\r": "\\r"}
+
+
+def _string(s: str) -> str:
+    """A TOML basic string in ASCII (JSON's escapes, which are TOML's), except that a
+    character beyond U+FFFF is one ``\\UXXXXXXXX`` escape: JSON splits it into two
+    surrogate escapes, which TOML refuses."""
+    out = []
+    for ch in s:
+        o = ord(ch)
+        if ch in _ESCAPES:
+            out.append(_ESCAPES[ch])
+        elif 0x20 <= o < 0x7F:
+            out.append(ch)
+        else:
+            out.append(f"\\u{o:04x}" if o <= 0xFFFF else f"\\U{o:08x}")
+    return '"' + "".join(out) + '"'
+
+
 def _bare(k: str) -> str:
-    return k if re.fullmatch(r"[A-Za-z0-9_-]+", k) else json.dumps(k)
+    return k if re.fullmatch(r"[A-Za-z0-9_-]+", k) else _string(k)
 
 
 def _table(d: dict, name: str, lines: list, header: str) -> None:
@@ -200,26 +219,28 @@ def with_values(scene: Scene, assignments) -> Scene:
             raise SceneError(a, "give --set as KEY.PATH=VALUE, e.g. fluid.dx=0.01")
         path, text = (x.strip() for x in a.split("=", 1))
         keys = _split(path)
-        node = data
-        for i, k in enumerate(keys[:-1]):
-            nxt = keys[i + 1]
-            where = path.split("=")[0]
+        node, where = data, ""  # where: the key path of node
+        for i, k in enumerate(keys):
             if isinstance(k, int):
-                if not isinstance(node, list) or k >= len(node):
-                    raise SceneError(path, f"{where}: there is no entry {k} (the list has "
-                                     f"{len(node) if isinstance(node, list) else 0})")
+                if not isinstance(node, list):
+                    raise SceneError(path, f"{where} is {_what(node)}, not a list; leave out [{k}]")
+                if k >= len(node):
+                    raise SceneError(path, f"there is no entry {k} of {where} (the list has {len(node)}"
+                                     f"{f'; the last is [{len(node) - 1}]' if node else ''})")
+            elif not isinstance(node, dict):
+                hint = f"; give an entry, e.g. {where}[0].{k}" if isinstance(node, list) and node else ""
+                raise SceneError(path, f"{where or 'the scene'} is {_what(node)}, not a table{hint}")
+            if i == len(keys) - 1:
+                node[k] = parse_value(text)
+            elif isinstance(k, int):
                 node = node[k]
             else:
-                if not isinstance(node, dict):
-                    raise SceneError(path, f"{where} is not a table")
-                node = node.setdefault(k, [] if isinstance(nxt, int) else {})
-        last = keys[-1]
-        if isinstance(last, int):
-            if not isinstance(node, list) or last >= len(node):
-                raise SceneError(path, f"there is no entry {last} to set")
-            node[last] = parse_value(text)
-        else:
-            if not isinstance(node, dict):
-                raise SceneError(path, "is not a key of a table")
-            node[last] = parse_value(text)
+                node = node.setdefault(k, [] if isinstance(keys[i + 1], int) else {})
+            where = f"{where}[{k}]" if isinstance(k, int) else _key(where, k)
     return from_dict(data)
+
+
+def _what(v) -> str:
+    if isinstance(v, list):
+        return f"a list of {len(v)}"
+    return "a table" if isinstance(v, dict) else repr(v)

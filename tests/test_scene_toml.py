@@ -1,0 +1,554 @@
+"""A scene as TOML (``cosim.scene.toml_io``): the round trip is exact, for scenes of every
+shape hypothesis can build, and the reading side (files, ``--set``) does what it says.
+
+The strategy :func:`scenes` builds only VALID scenes (it keeps to what ``cosim.scene.checks``
+accepts: bodies inside the domain's box, dx fine enough for the depth, waves below the
+breaking limit, names that exist), then the property is: written as TOML and read back, the
+scene is the same, field for field, and written again, the text is the same. Scenes are
+only constructed, never run.
+"""
+
+from __future__ import annotations
+
+import math
+import tomllib
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from cosim.errors import InputError
+from cosim.scene import (MJCF, SPH, Analytic, Beach, Block, Box, Coupling, Cylinder, CylinderTank, Earthquake, Flap,
+                         Flume, InclinedTank, Line, Moorings, NoFluid, PaddleRecord, Patch, Piston, PolygonTank,
+                         Probes, Roll, Scene, SceneError, Shake, Sphere, TableMotion, Tank, World)
+from cosim.scene.toml_io import from_dict, parse_value, read_toml, to_dict, to_toml, with_values
+from fluid.wavemaker import wavenumber
+
+#: a file that exists, for the fields that name one (the checks only ask that it exists;
+#: scenes here are never run)
+EXISTING = str(Path(__file__).resolve())
+
+#: values whose decimal text is awkward: not the shortest-looking decimal, tiny, huge,
+#: sub-normal, a power of two, 1/3
+AWKWARD = (0.1 + 0.2, 1e-7, 123456.789e3, 1.0 / 3.0, 2.0 ** -30, 5e-324, 2.2250738585072014e-308,
+           1.7976931348623157e308, 9007199254740993.0, 1e16, 1e22, 0.1, 100.0, 3.0, 1e-3 + 1e-19, 6.02214076e23,
+           -0.0, -(0.1 + 0.2), -1e-7, -123456.789e3)
+
+SETTINGS = settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+
+
+def num(lo=None, hi=None, *, open_lo=False, open_hi=False):
+    """A finite float in [lo, hi] (open ends where asked), sometimes an awkward one."""
+    def ok(v):
+        return ((lo is None or v > lo or (v == lo and not open_lo))
+                and (hi is None or v < hi or (v == hi and not open_hi)))
+    plain = st.floats(min_value=lo, max_value=hi, exclude_min=open_lo and lo is not None,
+                      exclude_max=open_hi and hi is not None, allow_nan=False, allow_infinity=False)
+    awkward = [v for v in AWKWARD if ok(v)]
+    return st.one_of(plain, st.sampled_from(awkward)) if awkward else plain
+
+
+def pos_num(hi=None):
+    return num(0.0, hi, open_lo=True)
+
+
+def between(lo, hi):
+    """A float well inside [lo, hi] (lo < hi), sometimes at an awkward fraction."""
+    frac = st.one_of(st.floats(0.0, 1.0), st.sampled_from([0.1 + 0.2, 1.0 / 3.0, 1e-7, 0.5]))
+    return frac.map(lambda f: min(hi, max(lo, lo + f * (hi - lo))))
+
+
+def vec(n, lo=-1e3, hi=1e3):
+    return st.tuples(*[num(lo, hi)] * n)
+
+
+def nonzero_vec(n):
+    return vec(n).filter(lambda v: any(x != 0 for x in v))
+
+
+#: names of bodies, fairleads, patches: letters, digits, '_' and '-' (some not ASCII)
+NAMES = st.text(alphabet="abcxyzABZ019_-éßΩ", min_size=1, max_size=8)
+#: free text (scene and line names): anything TOML can hold, quotes and escapes included
+TEXT = st.text(alphabet=st.characters(exclude_categories=("Cs",)), max_size=12)
+
+
+def maybe(strategy):
+    return st.one_of(st.none(), strategy)
+
+
+# ------------------------------------------------------------------------ the parts
+@st.composite
+def sph_fluids(draw, dx_max):
+    """SPH with dx <= dx_max and a random choice of its optional overrides."""
+    kw = {"dx": draw(num(min(1e-4, dx_max / 2), dx_max, open_lo=True))}
+    options = {
+        "setup": st.sampled_from(["auto", "still", "waves", "sloshing", "impact", "defaults"]),
+        "rho0": pos_num(1e5),
+        "c0_factor": num(10.0, 1e3),
+        "h_coef": num(1.0, 3.0),
+        "kernel": st.sampled_from(["wendland", "cubic"]),
+        "walls": st.sampled_from(["dbc", "adami"]),
+        "alpha": num(0.0, 1.0),
+        "alpha_wall": num(0.0, 1.0),
+        "nu": num(0.0, 1.0),
+        "xsph_eps": num(0.0, 1.0),
+        "diffusion": st.sampled_from(["fourtakas", "antuono", "molteni", "none"]),
+        "delta": num(0.0, 1.0),
+        "diffusion_at_surface": st.booleans(),
+        "cfl": num(0.0, 0.4, open_lo=True),
+        "integrator": st.sampled_from(["symplectic", "verlet"]),
+        "mls_every": st.integers(0, 1000),
+        "threads": st.integers(1, 64),
+        "settle": num(0.0, 10.0),
+        "body_boundary": st.sampled_from(["mdbc", "dbc"]),
+    }
+    for key in draw(st.sets(st.sampled_from(sorted(options)))):
+        kw[key] = draw(options[key])
+    speed = draw(st.sampled_from([None, "c0", "u_max"]))  # one of the two, or neither
+    if speed:
+        kw[speed] = draw(pos_num(1e4))
+    return SPH(**kw)
+
+
+DOMAIN_KINDS = {2: ("tank", "tank-blocks", "inclined", "flume", "polygon"),
+                3: ("tank", "tank-blocks", "inclined", "cylinder")}
+
+
+@st.composite
+def domains(draw, dim, kind=None):
+    """(domain, its inner box lo, hi, the water depth or None); ``kind`` one of
+    DOMAIN_KINDS[dim], or None: any."""
+    kind = kind or draw(st.sampled_from(DOMAIN_KINDS[dim]))
+    length, height = draw(num(0.5, 50.0)), draw(num(0.2, 20.0))
+    width = draw(num(0.2, 50.0)) if dim == 3 and kind in ("tank", "tank-blocks", "inclined") else None
+    depth = draw(between(0.05 * height, 0.95 * height))
+    if kind == "tank":
+        d = Tank(length=length, height=height, width=width, depth=depth)
+    elif kind == "tank-blocks":
+        inner = [length] + ([width] if dim == 3 else []) + [height]
+        blocks = []
+        for _ in range(draw(st.integers(1, 3))):
+            lo = [draw(between(0.0, 0.45 * e)) for e in inner]
+            hi = [draw(between(0.55 * e, e)) for e in inner]
+            blocks.append(Block(lo=lo, hi=hi))
+        d, depth = Tank(length=length, height=height, width=width, water=blocks), None
+    elif kind == "inclined":
+        d = InclinedTank(angle=draw(num(0.0, 80.0)), length=length, depth=depth, height=height, width=width)
+    elif kind == "flume":
+        beach = draw(maybe(st.builds(Beach, toe=between(0.1 * length, 0.9 * length), slope=pos_num(10.0))))
+        d = Flume(length=length, depth=depth, height=height, beach=beach)
+    elif kind == "cylinder":
+        d = CylinderTank(diameter=draw(num(0.2, 50.0)), depth=depth, height=height)
+    else:  # a polygon: a convex outline round (cx, cz), water above its lowest corner
+        n = draw(st.integers(3, 8))
+        cx, cz, r = draw(num(-10.0, 10.0)), draw(num(-10.0, 10.0)), draw(num(0.2, 10.0))
+        verts = [(cx + r * math.cos(2 * math.pi * k / n + 0.3), cz + r * math.sin(2 * math.pi * k / n + 0.3))
+                 for k in range(n)]
+        zmin, zmax = min(v[1] for v in verts), max(v[1] for v in verts)
+        d = PolygonTank(vertices=verts, fill_level=draw(between(zmin + 0.1 * (zmax - zmin), zmax)))
+        depth = d.fill_level - zmin
+        xs = [v[0] for v in verts]
+        return d, [min(xs), zmin], [max(xs), zmax], depth
+    if kind == "cylinder":
+        lo, hi = [-0.5 * d.diameter] * 2 + [0.0], [0.5 * d.diameter] * 2 + [height]
+    else:
+        lo = [0.0] * dim
+        hi = [length] + ([width] if dim == 3 else []) + [height]
+        if kind == "inclined":
+            hi[0] = length + height * math.tan(math.radians(d.angle))
+    return d, lo, hi, depth
+
+
+@st.composite
+def bodies(draw, dim, names, box, can_float):
+    """Builder bodies named ``names``; ``box`` = (lo, hi) of the domain they must lie in, or
+    None (anywhere)."""
+    out = []
+    for name in names:
+        shape = draw(st.sampled_from(["box", "cylinder"] + (["sphere"] if dim == 3 else [])))
+        if box is not None:
+            ext = [h - lo for lo, h in zip(*box)]
+            small = min(ext)
+        else:
+            ext, small = [100.0] * dim, 100.0
+        if shape == "box":
+            size = [draw(num(0.01 * e, 0.4 * e)) for e in ext]
+            half, geo = [0.5 * s for s in size], {"size": size}
+        elif shape == "cylinder":
+            r = draw(num(0.005 * small, 0.2 * small))
+            geo = {"radius": r}
+            if dim == 3:
+                geo["length"] = draw(num(0.01 * ext[2], 0.4 * ext[2]))
+            half = [r] * (dim - 1) + [r if dim == 2 else 0.5 * geo.get("length", 0.0)]
+        else:
+            r = draw(num(0.005 * small, 0.2 * small))
+            geo, half = {"radius": r}, [r] * dim
+        floating = can_float and draw(st.booleans())
+        n = dim - 1 if floating else dim
+        if box is not None:
+            margin = [1e-6 * e for e in ext]
+            pos = [draw(between(box[0][k] + half[k] + margin[k], box[1][k] - half[k] - margin[k])) for k in range(n)]
+        else:
+            pos = list(draw(vec(n)))
+        kw = dict(name=name, pos=pos, **geo)
+        if draw(st.booleans()):
+            kw["density"] = draw(pos_num(1e5))
+        else:
+            kw["mass"] = draw(pos_num(1e9))
+        if floating:
+            kw["place"] = "floating"
+        elif draw(st.booleans()):
+            kw["place"] = "given"
+            if draw(st.integers(0, 3)) == 0:
+                kw["euler"] = draw(vec(3, -360.0, 360.0))
+        if draw(st.booleans()):
+            kw["fairleads"] = draw(st.dictionaries(NAMES, vec(dim, -10.0, 10.0), max_size=3))
+        out.append({"box": Box, "cylinder": Cylinder, "sphere": Sphere}[shape](**kw))
+    return out
+
+
+@st.composite
+def moorings(draw, dim, body_list):
+    points = [f"{b.name}.{f}" for b in body_list for f in b.fairleads]
+    if not points or not draw(st.booleans()):
+        return None
+    chosen = draw(st.lists(st.sampled_from(points), min_size=1, max_size=4, unique=True))
+    model = draw(st.sampled_from(["catenary", "sph-cable", "moordyn", "fmu"]))
+    dynamic = model in ("sph-cable", "moordyn")
+    lines = []
+    for fl in chosen:
+        kw = dict(fairlead=fl, anchor=draw(vec(dim)), length=draw(pos_num(1e4)), weight=draw(pos_num(1e4)))
+        for key, hi in (("EA", 1e12), ("mass_per_length", 1e4), ("diameter", 10.0)):
+            if dynamic or draw(st.booleans()):
+                kw[key] = draw(pos_num(hi))
+        if draw(st.booleans()):
+            kw["name"] = draw(TEXT)
+        lines.append(Line(**kw))
+    kw = {"model": model, "lines": lines}
+    if draw(st.booleans()):
+        kw["segments"] = draw(st.integers(2, 500))
+    return Moorings(**kw)
+
+
+@st.composite
+def probes(draw, dim, sph, names, box):
+    kw = {}
+    if sph:  # gauges over the domain's box
+        gauge = (between(box[0][0], box[1][0]) if dim == 2
+                 else st.tuples(between(box[0][0], box[1][0]), between(box[0][1], box[1][1])))
+        kw["gauges"] = draw(st.lists(gauge, max_size=4))
+        patch_names = draw(st.lists(NAMES, max_size=3, unique=True))
+        kw["pressure"] = [Patch(name=n, centre=draw(vec(dim)), normal=draw(nonzero_vec(dim)), size=draw(pos_num(10.0)))
+                          for n in patch_names]
+        kw["energy"] = draw(st.booleans())
+    if names and draw(st.booleans()):
+        kw["motion"] = draw(st.lists(st.sampled_from(list(names) + ["all"]), max_size=3))
+    kw["tensions"], kw["loads"] = draw(st.booleans()), draw(st.booleans())
+    return Probes(**kw)
+
+
+@st.composite
+def couplings(draw, sph):
+    scheme = draw(st.sampled_from(["auto", "explicit", "predictor-corrector"] + (["fluid-first"] if sph else [])))
+    light = draw(st.sampled_from(["auto", "none", "added-mass"]
+                                 + (["subiterate"] if scheme in ("auto", "fluid-first") else [])))
+    return Coupling(scheme=scheme, light_body=light, dt=draw(maybe(pos_num(1.0))), body_timestep=draw(pos_num(1.0)))
+
+
+@st.composite
+def worlds(draw, dim, need_gravity):
+    duration = draw(num(1e-3, 1e4))
+    plot_at = draw(st.lists(between(0.0, duration), max_size=3))
+    return World(dim=dim, duration=duration, gravity=draw(num(1.0, 30.0) if need_gravity else num(0.0, 30.0)),
+                 sample_every=draw(between(1e-6 * duration, duration)),
+                 snapshot_every=draw(num(0.0, 1e3)), checkpoint_every=draw(num(0.0, 1e3)), plot_at=plot_at,
+                 plot_color=draw(st.sampled_from(["velocity", "pressure"])))
+
+
+@st.composite
+def waves_for(draw, flume, gravity, kind):
+    if kind == "record":
+        return PaddleRecord(paddle=draw(st.sampled_from(["piston", "flap"])), file=EXISTING,
+                            column=draw(st.integers(1, 9)), scale=draw(num(-10.0, 10.0)),
+                            t_shift=draw(num(-10.0, 10.0)))
+    period = draw(num(0.3, 10.0))
+    wavelength = 2 * math.pi / wavenumber(period, flume.depth, gravity)
+    height = draw(between(1e-3, 0.9)) * wavelength / 7
+    return (Piston if kind == "piston" else Flap)(height=height, period=period, ramp=draw(num(0.0, 10.0)))
+
+
+@st.composite
+def base_motions(draw, dim):
+    kind = draw(st.sampled_from(["shake", "roll", "table", "earthquake"]))
+    if kind == "shake":
+        kw = dict(period=draw(pos_num(100.0)), direction=draw(nonzero_vec(dim)), ramp=draw(num(0.0, 10.0)),
+                  stop=draw(maybe(pos_num(100.0))))
+        kw[draw(st.sampled_from(["amplitude", "acceleration"]))] = draw(num(-10.0, 10.0))
+        return Shake(**kw)
+    if kind == "roll":
+        return Roll(amplitude=draw(num(-45.0, 45.0)), period=draw(pos_num(100.0)), point=draw(vec(dim)),
+                    axis=draw(nonzero_vec(3)) if dim == 3 else None, ramp=draw(num(0.0, 10.0)))
+    if kind == "table":
+        return TableMotion(file=EXISTING, quantity=draw(st.sampled_from(["displacement", "velocity", "acceleration"])),
+                           direction=draw(nonzero_vec(dim)), column=draw(st.integers(1, 5)), scale=draw(num(-5.0, 5.0)))
+    return Earthquake(file=EXISTING, direction=draw(nonzero_vec(dim)), scale=draw(num(-5.0, 5.0)),
+                      baseline_degree=draw(st.integers(2, 9)))
+
+
+# ------------------------------------------------------------------------ the scene
+@st.composite
+def scenes(draw, dim=None, fluid_kind=None, domain_kind=None):
+    """A valid scene: 2-D or 3-D; no fluid, the analytic fluid or SPH in each domain that
+    fits the dimension; waves with a flume, base motion with a tank; bodies at given poses
+    inside the domain or floating; moorings on their fairleads; probes, coupling, world.
+    ``dim``, ``fluid_kind`` ("none", "analytic", "sph"), ``domain_kind`` (DOMAIN_KINDS) fix
+    the shape; None: drawn."""
+    dim = dim or draw(st.sampled_from([2, 3]))
+    fluid_kind = fluid_kind or draw(st.sampled_from(["none", "analytic", "sph"]))
+    kw = {}
+    box = None
+    waves = base = None
+    if fluid_kind == "sph":
+        domain, lo, hi, depth = draw(domains(dim, domain_kind))
+        box = (lo, hi)
+        kw["domain"] = domain
+        dx_max = depth / 4 if depth is not None else 0.1 * min(h - lo_ for lo_, h in zip(lo, hi))
+        kw["fluid"] = draw(sph_fluids(dx_max))
+        if isinstance(domain, Flume):
+            waves = draw(st.sampled_from([None, "piston", "flap", "record"]))
+        elif draw(st.booleans()):
+            base = draw(base_motions(dim))
+    world = draw(worlds(dim, need_gravity=bool(waves)))
+    if waves:
+        kw["waves"] = draw(waves_for(kw["domain"], world.gravity, waves))
+    if base is not None:
+        kw["base_motion"] = base
+
+    mjcf = fluid_kind != "sph" and draw(st.integers(0, 9)) == 0
+    if mjcf:  # an MJCF file is the only entry of bodies
+        names = draw(st.lists(NAMES, max_size=3, unique=True))
+        body_list = [MJCF(file=EXISTING, bodies=names)]
+    else:
+        n = draw(st.integers(0 if fluid_kind == "sph" else 1, 3))
+        names = draw(st.lists(NAMES, min_size=n, max_size=n, unique=True))
+        body_list = draw(bodies(dim, names, box, can_float=fluid_kind != "none"))
+    kw["bodies"] = body_list
+    if fluid_kind == "analytic":
+        rows = st.dictionaries(st.sampled_from(names), vec(6, 0.0, 1e6), max_size=len(names)) if names else st.just({})
+        kw["fluid"] = Analytic(rho=draw(pos_num(1e5)), level=draw(num(-100.0, 100.0)),
+                               linear_damping=draw(rows), quadratic_damping=draw(rows))
+    elif fluid_kind == "none" and draw(st.booleans()):
+        kw["fluid"] = NoFluid()
+    if not mjcf:
+        kw["moorings"] = draw(moorings(dim, body_list))
+    elif names:
+        lines = [Line(fairlead=f"{n}.site", anchor=draw(vec(dim)), length=draw(pos_num(1e3)), weight=1.0)
+                 for n in names]
+        kw["moorings"] = Moorings(lines=lines)
+    kw["probes"] = draw(probes(dim, fluid_kind == "sph", names, box))
+    kw["coupling"] = draw(couplings(fluid_kind == "sph"))
+    if draw(st.booleans()):
+        kw["name"] = draw(TEXT)
+    return Scene(world=world, **kw)
+
+
+# ------------------------------------------------------------------------ properties
+#: every shape of scene, each drawn as often (hypothesis alone favours the first choices)
+SHAPES = ([(dim, fluid, None) for dim in (2, 3) for fluid in ("none", "analytic")]
+          + [(dim, "sph", kind) for dim in (2, 3) for kind in DOMAIN_KINDS[dim]])
+
+
+def check_round_trip(scene):
+    text = to_toml(scene)
+    data = tomllib.loads(text)
+    back = from_dict(data)
+    assert back == scene
+    assert to_toml(back) == text
+    assert data == to_dict(scene)
+    assert text.isascii()
+
+
+@pytest.mark.parametrize("dim, fluid, domain", SHAPES, ids=[f"{d}d-{f}{'-' + k if k else ''}" for d, f, k in SHAPES])
+@settings(SETTINGS, max_examples=15)
+@given(data=st.data())
+def test_toml_round_trip_is_exact(dim, fluid, domain, data):
+    """Written as TOML and read back: the same scene, and the same text written again
+    (15 scenes of each of the 13 shapes)."""
+    check_round_trip(data.draw(scenes(dim, fluid, domain), label="scene"))
+
+
+@settings(SETTINGS, max_examples=60)
+@given(scenes())
+def test_toml_round_trip_of_any_scene(scene):
+    check_round_trip(scene)
+
+
+@settings(SETTINGS, max_examples=60)
+@given(scenes())
+def test_no_assignments_change_nothing(scene):
+    assert with_values(scene, []) == scene
+    assert from_dict(to_dict(scene)) == scene
+
+
+# ------------------------------------------------------------------------ examples
+MOORED = """
+name = "moored"
+
+[world]
+dim = 2
+duration = 4.0
+
+[fluid]
+model = "analytic"
+rho = 1025
+
+[[bodies]]
+shape = "box"
+name = "box"
+size = [2, 1]
+pos = [3.0]
+place = "floating"
+density = 500
+fairleads = { left = [-1.0, -0.5], right = [1.0, -0.5] }
+
+[moorings]
+lines = [
+  { fairlead = "box.left", anchor = [-20.0, -10.0], length = 25.0, weight = 50.0 },
+  { fairlead = "box.right", anchor = [20.0, -10.0], length = 25.0, weight = 50.0 },
+]
+"""
+
+
+def test_read_toml_of_a_file(tmp_path):
+    path = tmp_path / "moored.toml"
+    path.write_text(MOORED)
+    scene = read_toml(path)
+    assert scene == Scene.from_toml(path)
+    assert scene.name == "moored"
+    assert scene.world == World(dim=2, duration=4.0)
+    assert scene.fluid == Analytic(rho=1025.0)
+    assert scene.bodies == (Box("box", size=(2.0, 1.0), pos=(3.0,), place="floating", density=500.0,
+                                fairleads={"left": (-1.0, -0.5), "right": (1.0, -0.5)}),)
+    assert [ln.fairlead for ln in scene.moorings.lines] == ["box.left", "box.right"]
+    assert scene.moorings.model == "catenary"
+    # ints given for floats are floats from here on
+    assert isinstance(scene.fluid.rho, float) and isinstance(scene.bodies[0].size[0], float)
+    # written and read again: the same
+    again = tmp_path / "again.toml"
+    scene.to_toml(again)
+    assert read_toml(again) == scene
+
+
+def test_read_toml_refuses_a_missing_file_and_bad_toml(tmp_path):
+    with pytest.raises(SceneError, match="no scene file"):
+        read_toml(tmp_path / "nothing.toml")
+    bad = tmp_path / "bad.toml"
+    bad.write_text("[world\ndim = 2\n")
+    with pytest.raises(SceneError, match="is not valid TOML"):
+        read_toml(bad)
+
+
+def test_relative_file_fields_are_read_from_the_scene_files_folder(tmp_path):
+    (tmp_path / "data").mkdir()
+    (tmp_path / "data" / "shake.csv").write_text("0 0\n1 0.01\n2 0\n3 -0.01\n")
+    (tmp_path / "scenes").mkdir()
+    path = tmp_path / "scenes" / "tank.toml"
+    path.write_text("""
+[fluid]
+model = "sph"
+dx = 0.01
+
+[domain]
+kind = "tank"
+length = 1.0
+height = 0.5
+depth = 0.2
+
+[base_motion]
+kind = "table"
+file = "../data/shake.csv"
+""")
+    scene = read_toml(path)
+    assert Path(scene.base_motion.file) == tmp_path / "scenes" / ".." / "data" / "shake.csv"
+    assert Path(scene.base_motion.file).is_file()
+    # an absolute name stays as it is
+    path.write_text(path.read_text().replace("../data/shake.csv", str(tmp_path / "data" / "shake.csv")))
+    assert read_toml(path).base_motion.file == str(tmp_path / "data" / "shake.csv")
+    # from a dict without a folder, the name is taken as it is (from the working directory)
+    with pytest.raises(SceneError) as err:
+        from_dict(tomllib.loads(path.read_text().replace(str(tmp_path / "data"), "../data")))
+    assert err.value.path == "base_motion.file" and "no file '../data/shake.csv'" in str(err.value)
+
+
+def test_set_values_are_parsed_as_toml():
+    assert parse_value("0.01") == 0.01 and isinstance(parse_value("0.01"), float)
+    assert parse_value("600") == 600 and isinstance(parse_value("600"), int)
+    assert parse_value("moordyn") == "moordyn"  # a bare word is a string
+    assert parse_value('"sph-cable"') == "sph-cable"
+    assert parse_value("sph-cable") == "sph-cable"
+    assert parse_value("[0.5, 1.0]") == [0.5, 1.0]
+    assert parse_value("true") is True
+    assert math.isnan(parse_value("nan")) and parse_value("-inf") == -math.inf
+
+
+def test_set_assignments():
+    scene = from_dict(tomllib.loads(MOORED))
+    scene = from_dict(to_dict(scene) | {"fluid": {"model": "sph", "dx": 0.05},
+                                        "domain": {"kind": "flume", "length": 8.0, "depth": 1.0, "height": 2.0}}
+                      | {"bodies": [to_dict(scene.bodies[0]) | {"size": [1.0, 0.5], "fairleads": {
+                          "left": [-0.5, -0.25], "right": [0.5, -0.25]}}]})
+    new = with_values(scene, ["fluid.dx=0.01", "moorings.model=moordyn", "probes.gauges=[0.5, 1.0]",
+                              "bodies[0].density=600", "moorings.lines[0].EA=1e6", "moorings.lines[1].EA = 2e6",
+                              "moorings.lines[0].mass_per_length=1", "moorings.lines[1].mass_per_length=1",
+                              "moorings.lines[0].diameter=0.01", "moorings.lines[1].diameter=0.01",
+                              "world.plot_at=[1, 2.5]", "name=my scene"])
+    assert new.fluid.dx == 0.01 and isinstance(new.fluid.dx, float)
+    assert new.moorings.model == "moordyn"
+    assert new.probes.gauges == (0.5, 1.0)
+    assert new.bodies[0].density == 600.0 and isinstance(new.bodies[0].density, float)
+    assert new.moorings.lines[1].EA == 2e6
+    assert new.world.plot_at == (1.0, 2.5) and isinstance(new.world.plot_at[0], float)
+    assert new.name == "my scene"
+    # everything else as it was
+    assert new.replace(fluid=scene.fluid, moorings=scene.moorings, probes=scene.probes, bodies=scene.bodies,
+                       world=scene.world, name=scene.name) == scene
+    # a new table is made where there was none; the scene method is the same function
+    assert scene.with_values(["coupling.dt=0.001"]).coupling.dt == 0.001
+    # an assignment that makes the scene invalid is refused, by key path
+    with pytest.raises(InputError) as err:
+        with_values(scene, ["fluid.dx=-0.01"])
+    assert err.value.path == "fluid.dx"
+
+
+def test_toml_text_is_valid_and_keeps_ints_and_floats():
+    scene = Scene(world=World(dim=3, duration=2, plot_at=[1]), fluid=SPH(dx=0.1, mls_every=20, threads=2),
+                  domain=Tank(length=2, width=1, height=1, depth=0.5),
+                  bodies=[Sphere("s", radius=0.1, pos=(1, 0.5, 0.7), density=500)],
+                  moorings=None, probes=Probes(gauges=[(1, 0.5)]), name='a "quoted" \\ name\t\n\x7f😀')
+    text = to_toml(scene)
+    data = tomllib.loads(text)
+    assert data["world"]["dim"] == 3 and type(data["world"]["dim"]) is int
+    assert type(data["fluid"]["mls_every"]) is int and type(data["fluid"]["threads"]) is int
+    assert type(data["world"]["duration"]) is float and data["world"]["duration"] == 2.0
+    assert type(data["domain"]["length"]) is float
+    assert all(type(x) is float for x in data["bodies"][0]["pos"])
+    assert data["probes"]["gauges"] == [[1.0, 0.5]]
+    assert data["name"] == scene.name
+    assert "dim = 3\n" in text and "duration = 2.0\n" in text
+    # the text is ASCII; TOML forbids raw control characters (DEL included) in strings, and
+    # escapes of surrogates (a character beyond U+FFFF is one \U escape)
+    assert text.isascii() and "\x7f" not in text and "\\ud83d" not in text.lower()
+    assert "\\U0001f600" in text
+    assert from_dict(data) == scene
+
+
+def test_awkward_floats_keep_every_bit():
+    values = [v for v in AWKWARD if v > 0]
+    scene = Scene(world=World(plot_at=[v for v in values if v <= 1.0]),
+                  bodies=[Box("b", size=(v, v), pos=(v, -v), mass=v) for v in values[:1]],
+                  coupling=Coupling(dt=values[1]))
+    back = from_dict(tomllib.loads(to_toml(scene)))
+    assert back == scene
+    assert [x.hex() for x in back.world.plot_at] == [x.hex() for x in scene.world.plot_at]
+    assert "0.30000000000000004" in to_toml(scene) and "5e-324" in to_toml(scene)
