@@ -329,6 +329,7 @@ class Coupler:
         kinematics the fluid and the moorings were last given."""
         zeros = np.zeros((self.bodies.n_bodies, 3))
         F_fluid, T_fluid = self.fluid.body_wrenches() if self.fluid is not None else (zeros, zeros)
+        self._check_loads(F_fluid, T_fluid)
         return (F_fluid, T_fluid) + self._mooring_wrenches(kin)
 
     def _give_kinematics(self, kin) -> None:
@@ -351,6 +352,7 @@ class Coupler:
         """The loads the fluid exchanged over its advance, the bodies' particles having
         moved with ``velocity`` [m/s] (centre of mass)."""
         F_fluid, T_fluid = self.fluid.exchanged_wrenches()
+        self._check_loads(F_fluid, T_fluid)
         # the fluid's moment is about the centre of mass at the start of the step; the
         # bodies take the force at their moving centre, half a step on on average
         return F_fluid, T_fluid - np.cross(0.5 * dt * velocity, F_fluid)
@@ -456,6 +458,19 @@ class Coupler:
             self.fluid.advance(t, dt)
         for a in self.moorings:
             a.mooring.advance(t, dt)
+
+    def _check_loads(self, F, T) -> None:
+        """Nothing non-finite crosses the coupler: a fluid load that is not finite stops the
+        run here, naming the fluid and the body (the fluid checks its own particles)."""
+        if self.fluid is None:
+            return
+        bad = ~(np.isfinite(F).all(axis=1) & np.isfinite(T).all(axis=1))
+        if bad.any():
+            k = int(np.argmax(bad))
+            raise InstabilityError(
+                f"fluid '{self.fluid.name}' returned a non-finite load on body '{self.bodies.body_names[k]}' "
+                f"(force {F[k]}, torque {T[k]}): its particles by the body went unstable; a smaller coupling step, "
+                f"a finer dx or a higher speed of sound may help{self._light_body_hint([k])}")
 
     #: a body faster than this fraction of a weakly compressible fluid's speed of sound
     #: stops the run [-] (the predictor-corrector at ratio 0.001 of the density-ratio

@@ -234,3 +234,22 @@ def test_auto_scheme_fits_the_fluid():
 
     assert Coupler(bodies=bodies(), fluid=AnalyticFluid()).scheme == "predictor-corrector"
     assert Coupler(bodies=bodies(), fluid=Exchanging()).scheme == "fluid-first"
+
+
+def test_a_non_finite_fluid_load_stops_the_run_naming_fluid_and_body():
+    """Nothing non-finite crosses the coupler: the step, the fluid and the body are named."""
+    from cosim.errors import InstabilityError
+
+    class Broken(AnalyticFluid):
+        def body_wrenches(self):
+            F, T = super().body_wrenches()
+            if self.t > 0.05:
+                F[0, 2] = np.nan
+            return F, T
+
+    b = MujocoBodies(builders.scene(builders.box("hull", (1.0, 1.0), (0, 0, 0), density=500.0, planar=True)))
+    c = Coupler(bodies=b, fluid=Broken(), dt=0.01)
+    with pytest.raises(InstabilityError, match=r"step \d+, t = 0\.0\d+ s: fluid 'fluid' returned a non-finite load on "
+                                               r"body 'hull' \(force \[ *0\. +0\. +nan\]"):
+        c.run(1.0)
+    assert c.t < 0.1

@@ -210,3 +210,22 @@ def test_cli_run_and_set(tmp_path):
                           "--set", "fluid.dxx=0.05", "--out", str(tmp_path / "bad")], capture_output=True, text=True)
     assert bad.returncode == 2 and "fluid.dxx: unknown key; did you mean 'dx'?" in bad.stderr
     assert not (tmp_path / "bad").exists()
+
+
+def test_refused_by_a_solver_before_anything_is_written(tmp_path):
+    """A scene that passes its own checks but that a solver refuses while it is built (a
+    body thinner than two particles) leaves no output folder."""
+    from cosim.errors import InputError
+
+    thin = moored_box().with_values(["bodies[0].size=[0.2, 0.04]", "fluid.dx=0.05"])
+    with pytest.raises(InputError, match="body 'box' geom 0 .* particle"):
+        thin.run(tmp_path / "out", progress=False)
+    assert not (tmp_path / "out").exists()
+
+
+def test_output_folder_that_cannot_be_written(tmp_path):
+    from cosim.errors import InputError
+
+    (tmp_path / "file").write_text("")
+    with pytest.raises(InputError, match="is not a folder; give another --out"):
+        shaken_tank().run(tmp_path / "file" / "out", progress=False)

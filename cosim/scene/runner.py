@@ -28,6 +28,8 @@ import logging
 import math
 import os
 import pickle
+import shutil
+import tempfile
 import time
 from pathlib import Path
 
@@ -157,6 +159,16 @@ class _Recorder:
                 self.h5.close()
 
 
+def _check_writable(out: Path) -> None:
+    """Refuse an output folder that cannot be made or written, before any work."""
+    probe = out
+    while not probe.exists():
+        probe = probe.parent
+    if not probe.is_dir() or not os.access(probe, os.W_OK | os.X_OK):
+        what = "is not a folder" if not probe.is_dir() else "cannot be written"
+        raise InputError(f"output folder {str(out)!r}: {str(probe)!r} {what}; give another --out")
+
+
 def _check_resume(scene, path: Path):
     if not path.is_file():
         raise InputError(f"--resume: no checkpoint {path}; run without --resume first (with world.checkpoint_every "
@@ -224,16 +236,19 @@ def run(scene, out, *, resume: bool = False, progress=None) -> Results:
     from cosim.scene.build import build
 
     out = Path(out)
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-        probe = out / ".writable"
-        probe.write_text("")
-        probe.unlink()
-    except OSError as e:
-        raise InputError(f"output folder {str(out)!r} cannot be written ({e.strerror}); give another --out") from None
+    _check_writable(out)
     blob = _check_resume(scene, out / CHECKPOINT) if resume else None
     wall0, cpu0 = time.perf_counter(), time.process_time()
-    built = build(scene, out)
+    # built before anything is written: a scene that the solvers refuse leaves no folder
+    work = Path(tempfile.mkdtemp(prefix="cosim-build-"))
+    try:
+        built = build(scene, work)
+    except BaseException:
+        shutil.rmtree(work, ignore_errors=True)
+        raise
+    out.mkdir(parents=True, exist_ok=True)
+    for f in work.iterdir():  # files the participants made (an exported FMU) go with the outputs
+        shutil.copy2(f, out / f.name)
     build_s = time.perf_counter() - wall0
     c, sph = built.coupler, built.sph
     rec = _Recorder(scene, built, out)
@@ -282,9 +297,21 @@ def run(scene, out, *, resume: bool = False, progress=None) -> Results:
                            time.process_time() - cpu0, wall_before, blob is not None, error)
         _write_tables(out, rec, built)
         (out / "summary.json").write_text(json.dumps(summary, indent=1, default=_json))
+        _close_participants(built)
+        shutil.rmtree(work, ignore_errors=True)
         if series and rec.times:
             _plot_groups(out, rec, scene)
     return Results(rec.times, series, units, summary, out)
+
+
+def _close_participants(built) -> None:
+    """Release what the participants hold outside Python (an FMU's or MoorDyn's library)."""
+    close = getattr(built.mooring, "close", None)
+    if callable(close):
+        try:
+            close()
+        except Exception as e:  # the run's own outcome matters more
+            log.warning("closing mooring '%s' failed: %s", built.mooring.name, e)
 
 
 def _json(o):

@@ -95,7 +95,7 @@ def read_toml(path) -> Scene:
     if not p.is_file():
         raise SceneError("", f"no scene file {str(path)!r}")
     try:
-        data = tomllib.loads(p.read_text())
+        data = tomllib.loads(p.read_text(encoding="utf-8"))
     except tomllib.TOMLDecodeError as e:
         raise SceneError("", f"{p} is not valid TOML: {e}") from None
     return from_dict(data, p.resolve().parent)
