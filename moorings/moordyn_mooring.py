@@ -13,7 +13,9 @@ fairlead positions at the step's start time ``t`` and their velocities (given,
 or estimated by a backward difference of the positions of the last two
 steps), and MoorDyn integrates from ``t`` to ``t + dt`` with its own internal
 step ``dt_internal`` (it sub-cycles; the coupling step can be any size).
-MoorDyn's failures (input file, NaN in a line) become
+That step is derived from every stiff term the adapter writes into MoorDyn's
+input (:func:`internal_step_limits`, below) and :attr:`MoorDynMooring.dt_limit`
+names the term that set it. MoorDyn's failures (input file, NaN in a line) become
 :class:`~cosim.errors.InputError` / :class:`~cosim.errors.SolverError` naming
 our line, with MoorDyn's own log lines attached.
 
@@ -33,6 +35,7 @@ import shutil
 import sys
 import tempfile
 import weakref
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -68,6 +71,112 @@ def _captured_stdio(sink: Path):
             os.dup2(saved[1], 2)
             for fd in saved:
                 os.close(fd)
+
+
+#: safety factor on the smallest single-term limit for MoorDyn's RK2 (pinned in the input file)
+RK2_SAFETY = 0.5
+
+#: names of the terms that can limit the internal step (plus "user": dt_internal given)
+STEP_TERMS = ("axial_wave", "internal_damping", "seabed_stiffness", "seabed_damping", "drag")
+
+
+@dataclass(frozen=True)
+class InternalStepLimit:
+    """MoorDyn's internal step and what set it.
+
+    ``dt`` [s] is ``safety * limits[limiter]`` (or the user's ``dt_internal`` with
+    ``limiter == "user"``); ``limits`` maps each term of :data:`STEP_TERMS` to its own
+    single-term bound [s] (before the safety factor) on the line ``line`` that is the
+    most restrictive for that term."""
+
+    dt: float  # [s]
+    limiter: str  # a term of STEP_TERMS, or "user"
+    line: str  # the line whose term set the step ("" for "user")
+    safety: float  # [-]
+    limits: dict  # term -> [s], the smallest over the lines, before the safety factor
+
+
+def internal_step_limits(length: float, segments: int, EA: float, mass_per_length: float, diameter: float, *,
+                         rho: float, damping_ratio: float, cd_normal: float, ca_normal: float, cd_axial: float,
+                         ca_axial: float, seabed_stiffness: float, seabed_damping: float,
+                         drag_speed: float) -> dict:
+    """The explicit-stability bound [s] of each stiff term of one MoorDyn line, as MoorDyn
+    v2 applies it to an internal node: the lumped-mass formulation of Hall & Goupee 2015
+    (Ocean Engineering 104) as coded in MoorDyn v2.7 ``source/Line.cpp``
+    (``Line::initialize`` for ``BA``, ``Line::getStateDeriv`` for the node forces).
+
+    MoorDyn lumps the line into ``N = segments`` segments of length ``l = L / N`` [m] and
+    integrates the internal nodes (the anchor is a fixed point, the fairlead a coupled
+    one: neither is integrated). An internal node carries half of each neighbouring
+    segment, so every per-node quantity is per segment length ``l``:
+
+    - mass ``m_n = m l`` [kg] (``m`` the mass per length), and the added-mass matrix
+      ``rho A l (Ca_n (I - q q^T) + Ca_t q q^T)`` (``A = pi d^2 / 4``, ``q`` the tangent):
+      the node mass is ``m_t = m_n + rho A l Ca_t`` along the line and
+      ``m_p = m_n + rho A l Ca_n`` across it.
+
+    Each term, alone, makes the node a damped oscillator or a pure dashpot; an explicit
+    scheme is stable when ``dt |lambda| < 2`` for its fastest eigenvalue ``lambda`` (the
+    real-axis bound of forward Euler and of MoorDyn's RK2, ``|1 + z + z^2/2| <= 1``), i.e.
+    ``dt < 2 / omega`` for a spring and ``dt < 2 m / c`` for a dashpot:
+
+    ``axial_wave``
+        Segment spring ``k = EA / l`` [N/m]. The highest mode of the lumped chain (nodes in
+        antiphase) sees ``4 k`` on ``m_t``: ``omega = 2 sqrt(k / m_t)``, so
+        ``dt < sqrt(m_t l / EA)``; with ``Ca_t = 0`` this is the axial-wave transit time of
+        a segment ``l / sqrt(EA / m)`` (``sqrt(EA / m)`` [m/s] the axial wave speed).
+    ``internal_damping``
+        MoorDyn's negative ``BA`` is ``-zeta``: ``BA = zeta l sqrt(EA m)`` [N s] and the
+        segment damping force is ``BA * (d l / dt) / l``, a dashpot ``c = zeta sqrt(EA m)``
+        [N s/m] between neighbours (``Line::initialize``). The highest mode sees ``4 c``:
+        ``dt < 2 m_t / (4 c) = m_t / (2 zeta sqrt(EA m))`` (the transit time over
+        ``2 zeta`` when ``Ca_t = 0``); unbounded for ``zeta = 0``.
+    ``seabed_stiffness``, ``seabed_damping``
+        A node below the seabed gets the vertical force ``(kb dz - cb dz/dt) d l``
+        (``kb`` [Pa/m], ``cb`` [Pa s/m] per unit of the node's projected contact area
+        ``d l``): a spring ``k_b = kb d l`` [N/m] and a dashpot ``c_b = cb d l`` [N s/m] on
+        the node: ``dt < 2 sqrt(m_min / k_b)`` and ``dt < 2 m_min / c_b``. The vertical is
+        across a line lying flat on the seabed but not at a sloped touch-down node, so the
+        smaller mass ``m_min = min(m_t, m_p)`` is taken. Both ratios ``k_b / m``,
+        ``c_b / m`` are independent of ``N``: the seabed damping bound
+        ``2 (m + rho A Ca) / (cb d)`` is the same for every segment count, and it is the one
+        the axial-wave step of a coarse line overshoots (a chain in a tank with the default
+        ``cb = 3e5 Pa s/m`` needs ``dt < 2e-4 s``).
+    ``drag``
+        Morison drag ``1/2 rho d Cd_n l |v_p| v_p`` across and ``1/2 rho d pi Cd_t l |v_q|
+        v_q`` along the line, linearised at the relative speed ``drag_speed`` ``U`` [m/s]
+        (``d(|v| v)/dv = 2 |v|``): dashpots ``rho d Cd_n l U`` and ``rho d pi Cd_t l U``
+        [N s/m] on ``m_p`` and ``m_t``: ``dt < 2 m_p / (rho d Cd_n l U)`` and
+        ``dt < 2 m_t / (rho d pi Cd_t l U)``.
+
+    Not covered because the adapter sets none of them: bending stiffness ``EI`` (0),
+    seabed friction (MoorDyn's ``FrictionCoefficient`` defaults to 0), nonlinear
+    stiffness tables, VIV, points with mass.
+
+    Returns ``{term: dt [s]}`` for the terms of :data:`STEP_TERMS` (``inf`` where a term
+    is absent). Units: lengths [m], ``EA`` [N], ``mass_per_length`` [kg/m], ``rho``
+    [kg/m^3], ``seabed_stiffness`` [Pa/m], ``seabed_damping`` [Pa s/m], ``drag_speed``
+    [m/s]; coefficients [-].
+    """
+    inf = math.inf
+    d, m = diameter, mass_per_length
+    l_seg = length / segments
+    vol = math.pi / 4.0 * d * d * l_seg  # node volume [m^3]
+    m_n = m * l_seg
+    m_t = m_n + rho * vol * ca_axial
+    m_p = m_n + rho * vol * ca_normal
+    m_min = min(m_t, m_p)
+    c_int = damping_ratio * math.sqrt(EA * m)
+    k_b, c_b = seabed_stiffness * d * l_seg, seabed_damping * d * l_seg
+    c_dp = rho * d * cd_normal * l_seg * drag_speed
+    c_dq = rho * d * math.pi * cd_axial * l_seg * drag_speed
+    return {
+        "axial_wave": math.sqrt(m_t * l_seg / EA),
+        "internal_damping": m_t / (2.0 * c_int) if c_int > 0 else inf,
+        "seabed_stiffness": 2.0 * math.sqrt(m_min / k_b) if k_b > 0 else inf,
+        "seabed_damping": 2.0 * m_min / c_b if c_b > 0 else inf,
+        "drag": min(2.0 * m_p / c_dp if c_dp > 0 else inf, 2.0 * m_t / c_dq if c_dq > 0 else inf),
+    }
 
 
 def _num(x) -> str:
@@ -111,26 +220,53 @@ class MoorDynMooring:
     segments:
         Number of segments per line (MoorDyn's NumSegs).
     dt_internal:
-        MoorDyn's internal time step dtM [s]; default half the smallest axial
-        wave transit time of a segment, ``0.5 min(l_seg sqrt(m / EA))``.
+        MoorDyn's internal time step dtM [s]. Default: ``RK2_SAFETY`` (1/2) times the
+        smallest single-term bound of :func:`internal_step_limits` over all lines and
+        terms (axial wave, internal damping, seabed stiffness and damping, drag); the
+        record is :attr:`dt_limit`. The input file pins MoorDyn's ``tScheme`` to RK2
+        (its default; the midpoint rule, ``|1 + z + z^2/2| <= 1``), whose stability region
+        reaches ``z = -2`` on the real axis, where each single-term bound sits. The factor
+        1/2 keeps two terms acting on one node together (a sloped touch-down node under
+        seabed damping and axial stiffness: ``|lambda_1 + lambda_2| <= 2 max |lambda_k|``)
+        inside that region, and keeps the highest axial mode, whose eigenvalue has damping
+        ratio ``damping_ratio`` (``omega dt <= 1`` at most), inside RK2's region, which
+        along a ray of damping ratio 0.1 reaches ``|z| = 1.05`` (2.2 at 0.8; RK2 never
+        covers the imaginary axis: an undamped oscillation grows at every step size).
+        A given value is used as is; a warning says when it exceeds the derived one.
     damping_ratio:
         Axial internal damping as a fraction of the critical damping of a
-        segment (MoorDyn's negative BA) [-].
+        segment (MoorDyn's negative BA) [-]; below 0.1 a warning says that RK2 lets the
+        highest axial mode grow.
     cd_normal, ca_normal, cd_axial, ca_axial:
         Drag and added-mass coefficients, normal and axial [-].
     seabed_stiffness, seabed_damping:
-        MoorDyn's kbot [Pa/m] and cbot [Pa s/m].
+        MoorDyn's kbot [Pa/m] and cbot [Pa s/m] (per unit of a node's contact area
+        ``d l_seg``).
+    drag_speed:
+        Relative flow speed [m/s] at which the quadratic drag is linearised for the
+        default ``dt_internal`` (the drag term of :func:`internal_step_limits`); it
+        limits only light, thin lines in fast flow.
     ic_time, ic_threshold, ic_drag_scale:
         MoorDyn's initial-condition relaxation: TmaxIC [s], threshIC [-],
         CdScaleIC [-].
     name:
         Participant name used in messages.
+
+    Attributes
+    ----------
+    dt_internal:
+        The internal step MoorDyn runs with [s].
+    dt_limit:
+        :class:`InternalStepLimit`: the step, the term that limited it (``limiter``,
+        e.g. ``"seabed_damping"``; ``"user"`` for a given ``dt_internal``), the line, the
+        safety factor and every term's bound, as the fluid's ``limiter`` reports its own.
     """
 
     def __init__(self, lines, fairleads=None, *, water_level: float = 0.0, rho: float = 1025.0, g: float = 9.81,
                  segments: int = 20, dt_internal: float | None = None, damping_ratio: float = 0.8,
                  cd_normal: float = 1.2, ca_normal: float = 1.0, cd_axial: float = 0.2, ca_axial: float = 0.0,
-                 seabed_stiffness: float = 3.0e6, seabed_damping: float = 3.0e5, ic_time: float = 20.0,
+                 seabed_stiffness: float = 3.0e6, seabed_damping: float = 3.0e5, drag_speed: float = 10.0,
+                 ic_time: float = 20.0,
                  ic_threshold: float = 1e-3, ic_drag_scale: float = 4.0, name: str = "moordyn"):
         self.name = name
         self.lines = named_lines(lines)
@@ -141,8 +277,8 @@ class MoorDynMooring:
                              f"pip install 'cosim-sph[moordyn]' (or pip install moordyn)")
         nums = dict(water_level=water_level, rho=rho, g=g, damping_ratio=damping_ratio, cd_normal=cd_normal,
                     ca_normal=ca_normal, cd_axial=cd_axial, ca_axial=ca_axial, seabed_stiffness=seabed_stiffness,
-                    seabed_damping=seabed_damping, ic_time=ic_time, ic_threshold=ic_threshold,
-                    ic_drag_scale=ic_drag_scale)
+                    seabed_damping=seabed_damping, drag_speed=drag_speed, ic_time=ic_time,
+                    ic_threshold=ic_threshold, ic_drag_scale=ic_drag_scale)
         for key, v in nums.items():
             if not isinstance(v, (int, float)) or not math.isfinite(v):
                 raise InputError(f"{name}: {key} = {v!r} must be a finite number")
@@ -150,7 +286,7 @@ class MoorDynMooring:
             if nums[key] <= 0:
                 raise InputError(f"{name}: {key} = {nums[key]!r} must be > 0")
         for key in ("damping_ratio", "cd_normal", "ca_normal", "cd_axial", "ca_axial", "seabed_stiffness",
-                    "seabed_damping", "ic_time"):
+                    "seabed_damping", "drag_speed", "ic_time"):
             if nums[key] < 0:
                 raise InputError(f"{name}: {key} = {nums[key]!r} must be >= 0")
         if not isinstance(segments, int) or segments < 1:
@@ -171,12 +307,21 @@ class MoorDynMooring:
             m, d = self._mass_and_diameter(ln)
             self._mass.append(m)
             self._diam.append(d)
-        if dt_internal is None:
-            dt_internal = 0.5 * min(ln.length / segments * math.sqrt(m / ln.EA) for ln, m in zip(self.lines, self._mass))
-        if not (isinstance(dt_internal, (int, float)) and math.isfinite(dt_internal) and dt_internal > 0):
-            raise InputError(f"{name}: dt_internal = {dt_internal!r} s must be > 0")
-        self.dt_internal = float(dt_internal)
         self._options = nums
+        derived = self._step_limit()
+        if dt_internal is None:
+            self.dt_limit = derived
+        else:
+            if not (isinstance(dt_internal, (int, float)) and math.isfinite(dt_internal) and dt_internal > 0):
+                raise InputError(f"{name}: dt_internal = {dt_internal!r} s must be > 0")
+            if dt_internal > derived.dt:
+                log.warning("%s: dt_internal = %.3g s exceeds the derived stable step %.3g s (%s of line '%s'); "
+                            "MoorDyn may stop with NaN", name, dt_internal, derived.dt, derived.limiter, derived.line)
+            self.dt_limit = InternalStepLimit(float(dt_internal), "user", "", 1.0, derived.limits)
+        if damping_ratio < 0.1:
+            log.warning("%s: damping_ratio = %g < 0.1: MoorDyn's RK2 lets the highest axial mode of an undamped "
+                        "line grow at any step size", name, damping_ratio)
+        self.dt_internal = self.dt_limit.dt
         self._pos = None
         self._vel = None
         if fairleads is not None:
@@ -189,6 +334,21 @@ class MoorDynMooring:
         self._finalizer = weakref.finalize(self, _close, self._box, str(self._tmp))
 
     # -- set-up ------------------------------------------------------------------
+    def _step_limit(self) -> InternalStepLimit:
+        """The derived internal step: ``RK2_SAFETY`` times the smallest bound of
+        :func:`internal_step_limits` over the lines and terms."""
+        o = self._options
+        keys = ("rho", "damping_ratio", "cd_normal", "ca_normal", "cd_axial", "ca_axial", "seabed_stiffness",
+                "seabed_damping", "drag_speed")
+        limits, where = {}, {}
+        for ln, m, d in zip(self.lines, self._mass, self._diam):
+            for term, v in internal_step_limits(ln.length, self.segments, ln.EA, m, d,
+                                                **{k: o[k] for k in keys}).items():
+                if v < limits.get(term, math.inf) or term not in limits:
+                    limits[term], where[term] = v, ln.name
+        term = min(STEP_TERMS, key=lambda k: limits[k])
+        return InternalStepLimit(RK2_SAFETY * limits[term], term, where[term], RK2_SAFETY, limits)
+
     def _mass_and_diameter(self, ln):
         label = f"{self.name}, line '{ln.name}'"
         if ln.inextensible:
@@ -240,6 +400,7 @@ class MoorDynMooring:
         opts = [(self.dt_internal, "dtM"), (o["seabed_stiffness"], "kbot"), (o["seabed_damping"], "cbot"),
                 (self.rho, "WtrDnsty"), (self.depth, "WtrDpth"), (self.g, "g"), (o["ic_time"], "TmaxIC"),
                 (o["ic_drag_scale"], "CdScaleIC"), (o["ic_threshold"], "threshIC")]
+        opts_text = [f"{_num(v)} {k}" for v, k in opts] + ["RK2 tScheme"]  # dt_internal assumes RK2
         return "\n".join([
             "--------------------- MoorDyn Input File ------------------------------------",
             f"written by moorings.moordyn_mooring for {self.name}: lines {', '.join(ln.name for ln in self.lines)}",
@@ -256,7 +417,7 @@ class MoorDynMooring:
             "(#) (name) (#) (#) (m) (-) (-)",
             *rows_lines,
             "---------------------- OPTIONS -----------------------------------------",
-            *[f"{_num(v)} {k}" for v, k in opts],
+            *opts_text,
             "1 disableOutput",
             "1 disableOutTime",
             "--------------------- need this line ------------------",
@@ -279,8 +440,10 @@ class MoorDynMooring:
         named = [f"line '{self.lines[k - 1].name}' (MoorDyn line {k})" for k in culprits if 1 <= k <= self.n_lines]
         where = f" in {', '.join(named)}" if named else ""
         detail = " | ".join(errs[-4:]) if errs else str(exc)
-        hint = ("; try a smaller dt_internal, more damping, or check the fairlead motion (a line pulled far "
-                "beyond its length)") if cls is SolverError else ""
+        lim = self.dt_limit
+        hint = (f"; dt_internal = {lim.dt:.3g} s (limited by {lim.limiter}"
+                + (f" of line '{lim.line}'" if lim.line else "") + "): try a smaller dt_internal, more damping, "
+                "or check the fairlead motion (a line pulled far beyond its length)") if cls is SolverError else ""
         return cls(f"{self.name} at t = {self.t:.6g} s: MoorDyn failed {what}{where}: {detail}{hint}")
 
     # -- participant protocol ------------------------------------------------
