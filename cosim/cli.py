@@ -1,6 +1,7 @@
 """cosim: couple an SPH fluid, MuJoCo bodies and mooring models.
 
 ``cosim run``       run a scene (TOML file or Python script) into an output folder
+``cosim study``     the speed/accuracy trade of a scene: runs over varied fields, errors, costs, Pareto
 ``cosim line``      tabulate (and plot) one catenary mooring line against X
 ``cosim validate``  run validation cases, one JSON object per case
 ``cosim export-fmu`` write a catenary mooring system as an FMI 2.0 co-simulation FMU
@@ -80,6 +81,86 @@ def cmd_run(args, parser) -> int:
             print(f"  {name:28s} {v.min():12.5g} .. {v.max():<12.5g} [{res.units[name]}]")
         print(f"wrote {out}/: run.h5 (+ run.xmf), " + ", ".join(sorted(p.name for p in out.glob("*.csv")))
               + ", " + ", ".join(sorted(p.name for p in out.glob("*.png"))) + ", summary.json, scene.toml")
+    return 0
+
+
+def _study_parser(sub):
+    p = sub.add_parser(
+        "study",
+        help="measure the speed/accuracy trade of a scene over varied fields (on Dask)",
+        description="Run a scene for every combination of the varied fields, reduce its probes to metrics, "
+        "measure each run's error against a reference and its cost, and write study.csv, study.md, study.json "
+        "and pareto.png with a recommendation: the cheapest run within the tolerance. Runs are cached by a hash "
+        "of the scene and the code (an interrupted study resumes; a repeated one costs nothing); a failed run "
+        "is a row with its error.",
+    )
+    p.add_argument("scene", help="a .toml scene file, or a .py script that defines `scene`")
+    p.add_argument("--vary", action="append", default=[], metavar="KEY.PATH=V1,V2,...",
+                   help="a field and its values, e.g. --vary fluid.dx=0.02,0.01 --vary moorings.model=catenary,moordyn")
+    p.add_argument("--set", action="append", default=[], metavar="KEY.PATH=VALUE", help="change a field for every run")
+    p.add_argument("--metric", action="append", default=[], metavar="SERIES:STAT",
+                   help="a probe series and a statistic: peak, max, min, mean, last, amplitude, period, arrival, rms "
+                        "(e.g. box.heave:amplitude)")
+    p.add_argument("--reference", default="finest", help="finest (default), richardson, or a .json / .csv file")
+    p.add_argument("--tol", help="relative tolerance for the recommendation, e.g. 5%% or 0.05")
+    p.add_argument("--out", help="study folder (default out/study_<scene name>)")
+    p.add_argument("--workers", type=int, help="runs at once (default: cores / --threads)")
+    p.add_argument("--threads", type=int, default=1, help="numba threads per run (default 1)")
+    p.add_argument("--scheduler", metavar="ADDRESS", help="an existing Dask scheduler, e.g. tcp://host:8786")
+    p.add_argument("--serial", action="store_true", help="no Dask: one run after the other in this process's children")
+    return p
+
+
+def _split_values(text: str) -> list[str]:
+    """``a,b,[1, 2]`` -> ``["a", "b", "[1, 2]"]``: commas inside brackets stay."""
+    parts, depth, cur = [], 0, ""
+    for ch in text:
+        depth += ch in "[{" and 1 or 0
+        depth -= ch in "]}" and 1 or 0
+        if ch == "," and depth == 0:
+            parts.append(cur)
+            cur = ""
+        else:
+            cur += ch
+    return [x.strip() for x in parts + [cur] if x.strip()]
+
+
+def cmd_study(args, parser) -> int:
+    from pathlib import Path
+
+    from cosim.errors import InputError
+    from cosim.scene.load import load
+    from cosim.scene.toml_io import parse_value
+    from cosim.study import run_study
+
+    scene = load(args.scene)
+    if args.set:
+        scene = scene.with_values(args.set)
+    vary = {}
+    for v in args.vary:
+        if "=" not in v:
+            raise InputError(f"--vary {v!r}: give KEY.PATH=V1,V2,...")
+        key, values = v.split("=", 1)
+        vary[key.strip()] = [parse_value(x) for x in _split_values(values)]
+        if not vary[key.strip()]:
+            raise InputError(f"--vary {v!r}: give at least one value")
+    tol = None
+    if args.tol:
+        try:
+            tol = float(args.tol[:-1]) / 100 if args.tol.endswith("%") else float(args.tol)
+        except ValueError:
+            raise InputError(f"--tol {args.tol!r}: give a relative tolerance, e.g. 5% or 0.05") from None
+    out = Path(args.out) if args.out else Path("out") / f"study_{scene.name}"
+
+    def report(case, rec):
+        state = "cached" if rec.get("cached") else (f"error: {rec['error']}" if rec.get("error") else "done")
+        wall = f"{rec['wall_s']:.1f} s" if rec.get("wall_s") is not None else ""
+        print(f"  {case.values} {wall} {state}", flush=True)
+
+    res = run_study(scene, vary, args.metric, out, reference=args.reference, tol=tol, workers=args.workers,
+                    threads=args.threads, scheduler=args.scheduler, serial=args.serial, report=report)
+    print((out / "study.md").read_text())
+    print(f"{len(res.rows)} runs in {res.wall_s:.1f} s wall; wrote {out}/study.csv, study.md, study.json, pareto.png")
     return 0
 
 
@@ -377,10 +458,10 @@ def _json_default(o):
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="cosim", description=__doc__.strip().splitlines()[0])
     sub = parser.add_subparsers(dest="command", required=True)
-    parsers = {"run": _run_parser(sub), "line": _line_parser(sub), "validate": _validate_parser(sub), "export-fmu": _export_fmu_parser(sub),
+    parsers = {"run": _run_parser(sub), "study": _study_parser(sub), "line": _line_parser(sub), "validate": _validate_parser(sub), "export-fmu": _export_fmu_parser(sub),
                "inspect": _inspect_parser(sub)}
     args = parser.parse_args(argv)
-    handler = {"run": cmd_run, "line": cmd_line, "validate": cmd_validate, "export-fmu": cmd_export_fmu,
+    handler = {"run": cmd_run, "study": cmd_study, "line": cmd_line, "validate": cmd_validate, "export-fmu": cmd_export_fmu,
                "inspect": cmd_inspect}[args.command]
     try:
         return handler(args, parsers[args.command])

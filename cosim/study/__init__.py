@@ -1,0 +1,293 @@
+"""``cosim study``: the speed/accuracy trade of any scene, measured.
+
+    cosim study SCENE --vary fluid.dx=0.02,0.01,0.005 --vary moorings.model=catenary,sph-cable \\
+                      --metric box.heave:amplitude [--reference finest|richardson|FILE] [--tol 5%]
+
+runs every combination of the varied fields (:mod:`cosim.study.sweep`: each in its own
+process, cached, on Dask or serially), reduces probe series to metrics
+(:mod:`cosim.study.metrics`), measures each run's error against the reference and its cost,
+and writes into one folder: ``study.csv`` and ``study.md`` (one row per run), ``study.json``
+(the rows, the reference, the recommendation), ``pareto.png`` (error against cost, the
+Pareto front marked) and the runs themselves under ``runs/``.
+
+The reference: ``finest`` (default) the run with the smallest value of the refined field
+(``fluid.dx`` if it is varied, else ``coupling.dt``, else the first varied number; the most
+expensive run if none is); ``richardson`` each metric extrapolated to h -> 0 (h the refined
+field) from the three smallest h of the runs that share the other values, m(h) = m* + C h^p,
+with the observed order p reported (``rms`` metrics, which compare whole series, take the
+finest run's series); or a file: JSON ``{"SERIES:STAT": value}`` or a CSV table whose first
+column is the time [s] and whose other columns are reference series by name (their
+statistics are the reference values; ``rms`` compares with them). The error of a metric is
+|m - m_ref| / |m_ref| (``rms`` is a relative error by itself). The recommendation is the
+cheapest run (wall time) whose every metric is within ``tol``, or the statement that none is.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from cosim.errors import InputError
+from cosim.study import metrics as M
+from cosim.study import sweep
+
+
+@dataclass
+class StudyResult:
+    rows: list
+    reference: dict
+    recommendation: dict
+    out: Path
+    wall_s: float = 0.0
+    orders: dict = field(default_factory=dict)
+
+
+def _richardson(dx: list, m: list) -> tuple[float, float]:
+    """(m*, p) of m(dx) = m* + C dx^p through three points, dx ascending."""
+    (d1, d2, d3), (m1, m2, m3) = dx, m
+    if m1 == m2 == m3:  # converged to the last digit: nothing to extrapolate, no order
+        return m1, float("nan")
+    if m2 == m1 or m3 == m2 or (m2 - m1) * (m3 - m2) < 0:
+        raise InputError("the three finest runs do not converge monotonically; Richardson extrapolation needs "
+                         "m(dx) monotonic (refine, or use --reference finest)")
+    target = (m2 - m1) / (m3 - m2)
+    f = lambda p: (d2**p - d1**p) / (d3**p - d2**p) - target
+    lo, hi = 0.05, 12.0
+    if f(lo) * f(hi) > 0:
+        raise InputError(f"no convergence order in [{lo}, {hi}] fits the three finest runs")
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if f(lo) * f(mid) > 0 else (lo, mid)
+    p = 0.5 * (lo + hi)
+    C = (m2 - m1) / (d2**p - d1**p)
+    return m1 - C * d1**p, p
+
+
+def _reference_file(path: Path, specs):
+    if path.suffix == ".json":
+        data = json.loads(path.read_text())
+        return {"kind": "file", "values": {s: float(data[s]) for s in specs if s in data}, "series": {}}
+    rows = np.genfromtxt(path, delimiter=",", names=True)
+    names = rows.dtype.names
+    t = rows[names[0]]
+    ser = {n: (t, rows[n]) for n in names[1:]}
+    vals = {}
+    for s in specs:
+        name, stat = M.parse(s)
+        key = name.replace(".", "_") if name not in ser and name.replace(".", "_") in ser else name
+        if key in ser and stat != "rms":
+            vals[s] = M.value(stat, *ser[key])
+        if key in ser:
+            ser.setdefault(name, ser[key])
+    return {"kind": "file", "values": vals, "series": ser}
+
+
+def run_study(scene, vary: dict, specs: list[str], out, *, reference: str = "finest", tol: float | None = None,
+              workers: int | None = None, threads: int = 1, scheduler: str | None = None, serial: bool = False,
+              report=None) -> StudyResult:
+    """Run the study; see the module docstring. ``vary``: ``{key path: [values]}``;
+    ``specs``: ``["SERIES:STAT", ...]``; ``tol``: a relative error (0.05 for 5 %)."""
+    import time
+
+    if not vary:
+        raise InputError("a study varies at least one field: --vary KEY.PATH=V1,V2,...")
+    if not specs:
+        raise InputError("a study measures at least one metric: --metric SERIES:STAT")
+    parsed = [M.parse(s) for s in specs]
+    if reference not in ("finest", "richardson") and not Path(reference).is_file():
+        raise InputError(f"--reference {reference!r}: give finest, richardson or an existing file")
+    refine = refined_field(vary)
+    if reference == "richardson" and (refine is None or len(vary[refine]) < 3):
+        raise InputError("--reference richardson needs at least three values of a refined field (--vary "
+                         "fluid.dx=... or coupling.dt=...)")
+    out = Path(out)
+    version = sweep.code_version()
+    cs = sweep.cases(scene, vary, out, version)  # every combination checked before any run
+    workers = workers or max(1, (os.cpu_count() or 1) // max(threads, 1))
+    out.mkdir(parents=True, exist_ok=True)
+    t0 = time.perf_counter()
+    records = sweep.execute(cs, workers=workers, threads=threads, scheduler=scheduler, serial=serial,
+                            version=version, report=report)
+    wall = time.perf_counter() - t0
+    rows = []
+    for c, rec in zip(cs, records):
+        row = {"case": c.key, "values": c.values, **{k: rec.get(k) for k in (
+            "wall_s", "cpu_s", "wall_s_per_simulated_s", "max_rss_mb", "particles", "steps", "error", "cached")}}
+        row["series"] = sweep.series(c.folder) if not rec.get("error") else {}
+        row["metrics"] = {}
+        for s, (name, stat) in zip(specs, parsed):
+            if row["series"] and name not in row["series"]:
+                raise InputError(f"--metric {s!r}: the runs have no series {name!r}; they have "
+                                 f"{', '.join(sorted(row['series']))}")
+            if row["series"] and stat != "rms":
+                row["metrics"][s] = M.value(stat, *row["series"][name])
+        rows.append(row)
+    ok = [r for r in rows if not r["error"]]
+    if not ok:
+        raise InputError("every run of the study failed: " + "; ".join(f"{r['values']}: {r['error']}" for r in rows))
+    ref, orders = _reference(reference, ok, specs, parsed, vary, refine)
+    for r in rows:
+        r["errors"] = {}
+        if r["error"]:
+            continue
+        for s, (name, stat) in zip(specs, parsed):
+            if stat == "rms":
+                rs = ref["series"].get(name) if ref["kind"] == "file" else ref["series_of"](r)[name]
+                r["metrics"][s] = r["errors"][s] = M.value("rms", *r["series"][name], ref=rs)
+            else:
+                m_ref = ref["value_of"](r, s)
+                r["errors"][s] = abs(r["metrics"][s] - m_ref) / abs(m_ref) if m_ref != 0 else abs(r["metrics"][s])
+    rec = _recommend(rows, tol)
+    res = StudyResult(rows, {k: v for k, v in ref.items() if not callable(v) and k != "series"}, rec, out, wall,
+                      orders)
+    _write(res, specs, vary, tol)
+    return res
+
+
+def refined_field(vary: dict) -> str | None:
+    """The varied field that refines the runs: fluid.dx, else coupling.dt, else the first
+    varied field whose values are all numbers."""
+    for k in ("fluid.dx", "coupling.dt"):
+        if k in vary:
+            return k
+    for k, vals in vary.items():
+        if all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in vals):
+            return k
+    return None
+
+
+def _reference(reference, ok, specs, parsed, vary, refine):
+    def dx(r):
+        return r["values"].get(refine, math.inf) if refine else math.inf
+
+    finest = min(ok, key=lambda r: (dx(r), -(r["wall_s"] or 0)))
+    if reference == "finest":
+        return {"kind": "finest", "case": finest["case"], "values": finest["values"],
+                "value_of": lambda r, s: finest["metrics"][s], "series_of": lambda r: finest["series"]}, {}
+    if reference == "richardson":
+        others = [k for k in vary if k != refine]
+        refs, orders = {}, {}
+        for r in ok:
+            g = tuple(r["values"][k] for k in others)
+            if g in refs:
+                continue
+            group = sorted([q for q in ok if tuple(q["values"][k] for k in others) == g], key=dx)[:3]
+            if len(group) < 3:
+                raise InputError(f"richardson: fewer than three successful runs at {dict(zip(others, g))}")
+            refs[g] = {"series": group[0]["series"]}
+            for s, (_, stat) in zip(specs, parsed):
+                if stat != "rms":
+                    m_star, p = _richardson([dx(q) for q in group], [q["metrics"][s] for q in group])
+                    refs[g][s] = m_star
+                    orders[f"{s} at {dict(zip(others, g))}"] = {"extrapolated": m_star, "order": p}
+        key = lambda r: tuple(r["values"][k] for k in others)
+        return {"kind": "richardson", "value_of": lambda r, s: refs[key(r)][s],
+                "series_of": lambda r: refs[key(r)]["series"]}, orders
+    ref = _reference_file(Path(reference), specs)
+    missing = [s for s, (_, stat) in zip(specs, parsed) if stat != "rms" and s not in ref["values"]]
+    if missing:
+        raise InputError(f"--reference {reference}: no reference value for {', '.join(missing)}")
+    ref["value_of"] = lambda r, s: ref["values"][s]
+    ref["file"] = str(reference)
+    return ref, {}
+
+
+def _recommend(rows, tol):
+    ok = [r for r in rows if not r["error"]]
+    worst = lambda r: max(r["errors"].values()) if r["errors"] else 0.0
+    for r in rows:
+        r["max_error"] = worst(r) if not r["error"] else None
+    if tol is None:
+        return {"tol": None, "text": "no tolerance given (--tol): no recommendation"}
+    within = [r for r in ok if worst(r) <= tol]
+    if not within:
+        best = min(ok, key=worst)
+        return {"tol": tol, "case": None, "text": f"no run is within {tol:.3g} of the reference; the closest, "
+                f"{best['values']}, is {worst(best):.3g} away"}
+    r = min(within, key=lambda q: q["wall_s"])
+    return {"tol": tol, "case": r["case"], "values": r["values"], "wall_s": r["wall_s"], "max_error": worst(r),
+            "text": f"cheapest within {tol:.3g}: {r['values']} ({r['wall_s']:.3g} s wall, largest error "
+                    f"{worst(r):.3g})"}
+
+
+def pareto_front(rows) -> list:
+    """The runs no other run beats in both cost (wall time) and largest error."""
+    ok = sorted([r for r in rows if not r["error"]], key=lambda r: (r["wall_s"], r["max_error"]))
+    front, best = [], math.inf
+    for r in ok:
+        if r["max_error"] < best:
+            front.append(r)
+            best = r["max_error"]
+    return front
+
+
+def _fmt(v):
+    if isinstance(v, float):
+        return f"{v:.6g}"
+    return "" if v is None else str(v)
+
+
+def _write(res: StudyResult, specs, vary, tol):
+    out, rows = res.out, res.rows
+    cost = ["wall_s", "cpu_s", "wall_s_per_simulated_s", "max_rss_mb", "particles", "steps"]
+    head = list(vary) + [s for s in specs] + [f"error {s}" for s in specs] + cost + ["error"]
+    table = []
+    for r in rows:
+        table.append([_fmt(r["values"][k]) for k in vary] + [_fmt(r["metrics"].get(s)) for s in specs]
+                     + [_fmt(r["errors"].get(s)) for s in specs] + [_fmt(r.get(k)) for k in cost]
+                     + [_fmt(r["error"])])
+    import csv
+
+    with open(out / "study.csv", "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(head)
+        w.writerows(table)
+    front = {r["case"] for r in pareto_front(rows)}
+    md = [f"# Study: {', '.join(specs)}", "", f"Reference: {res.reference.get('kind')} "
+          f"{res.reference.get('values', res.reference.get('file', ''))}. {res.recommendation['text']}.", "",
+          "| " + " | ".join(head + ["Pareto"]) + " |", "|" + "---|" * (len(head) + 1)]
+    md += ["| " + " | ".join(t + ["*" if r["case"] in front else ""]) + " |" for t, r in zip(table, rows)]
+    if res.orders:
+        md += ["", "Richardson extrapolation (observed order p):", ""]
+        md += [f"- {k}: {v['extrapolated']:.10g}, p = {v['order']:.3g}" for k, v in res.orders.items()]
+    (out / "study.md").write_text("\n".join(md) + "\n")
+    js = {"vary": vary, "metrics": specs, "tol": tol, "reference": res.reference, "recommendation": res.recommendation,
+          "orders": res.orders, "wall_s": res.wall_s,
+          "rows": [{k: v for k, v in r.items() if k != "series"} for r in rows]}
+    (out / "study.json").write_text(json.dumps(js, indent=1, default=str))
+    _plot(out, rows, front, tol, specs)
+
+
+def _plot(out, rows, front, tol, specs):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    ok = [r for r in rows if not r["error"]]
+    fig, ax = plt.subplots(figsize=(7, 4.5), dpi=110)
+    floor = min([r["max_error"] for r in ok if r["max_error"] > 0] or [1e-6]) / 10
+    for r in ok:
+        y = max(r["max_error"], floor)
+        ax.scatter(r["wall_s"], y, c="C3" if r["case"] in front else "C0", zorder=3)
+        ax.annotate(", ".join(f"{k.split('.')[-1]}={v}" for k, v in r["values"].items()), (r["wall_s"], y),
+                    fontsize=7, xytext=(4, 3), textcoords="offset points")
+    fr = sorted([r for r in ok if r["case"] in front], key=lambda r: r["wall_s"])
+    ax.plot([r["wall_s"] for r in fr], [max(r["max_error"], floor) for r in fr], "C3-", lw=1, label="Pareto front")
+    if tol is not None:
+        ax.axhline(tol, color="0.4", ls="--", lw=1, label=f"tolerance {tol:.3g}")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("cost: wall time of the run [s]")
+    ax.set_ylabel("largest relative error")
+    ax.set_title(f"error against cost: {', '.join(specs)}", fontsize=9)
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(out / "pareto.png")
+    plt.close(fig)

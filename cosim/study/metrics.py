@@ -1,0 +1,83 @@
+"""Metrics of a study: a probe series reduced by a named statistic, ``SERIES:STAT``
+(``box.heave:amplitude``, ``gauge1.eta:rms``, ``left_wall.p:peak``).
+
+Statistics of a series x(t) sampled at the run's probe times:
+
+- ``peak``: max |x|; ``max``, ``min``, ``mean``, ``last``;
+- ``amplitude``: half the range (max - min) / 2 over the last half of the run (the steady
+  part of a forced response);
+- ``period``: 1 / the frequency of the largest peak of the FFT of x - mean over the last
+  half of the run, refined by the parabola through the peak and its neighbours [s];
+- ``arrival``: the first time |x - x(0)| exceeds half of max |x - x(0)| [s];
+- ``rms``: the RMS difference between x and the reference series (interpolated onto x's
+  times over their common span), over the reference's RMS about its mean: a relative
+  error by itself (the study's reference run or a file).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from cosim.errors import InputError
+
+STATS = ("peak", "max", "min", "mean", "last", "amplitude", "period", "arrival", "rms")
+
+
+def parse(spec: str) -> tuple[str, str]:
+    """(series, statistic) of ``SERIES:STAT``."""
+    if ":" not in spec:
+        raise InputError(f"--metric {spec!r}: give SERIES:STAT, e.g. box.heave:amplitude; statistics: "
+                         f"{', '.join(STATS)}")
+    series, stat = spec.rsplit(":", 1)
+    if stat not in STATS:
+        raise InputError(f"--metric {spec!r}: unknown statistic {stat!r}; choose from {', '.join(STATS)}")
+    return series, stat
+
+
+def _last_half(t, x):
+    keep = t >= t[0] + 0.5 * (t[-1] - t[0])
+    return t[keep], x[keep]
+
+
+def value(stat: str, t: np.ndarray, x: np.ndarray, ref: tuple | None = None) -> float:
+    """The statistic ``stat`` of the series ``x`` at times ``t`` [s]; ``ref`` = (t, x) of the
+    reference series for ``rms``."""
+    t, x = np.asarray(t, float), np.asarray(x, float)
+    if len(x) == 0:
+        raise InputError("the series is empty")
+    if stat == "peak":
+        return float(np.abs(x).max())
+    if stat in ("max", "min", "mean"):
+        return float(getattr(x, stat)())
+    if stat == "last":
+        return float(x[-1])
+    if stat == "amplitude":
+        _, y = _last_half(t, x)
+        return float(0.5 * (y.max() - y.min()))
+    if stat == "period":
+        tt, y = _last_half(t, x)
+        if len(y) < 8:
+            raise InputError("a period needs at least 8 samples in the last half of the run")
+        dt = float(np.mean(np.diff(tt)))
+        spec = np.abs(np.fft.rfft(y - y.mean()))
+        k = int(np.argmax(spec[1:])) + 1
+        if 1 <= k < len(spec) - 1:  # parabolic refinement of the peak's position
+            a, b, c = np.log(spec[k - 1:k + 2] + 1e-300)
+            k = k + 0.5 * (a - c) / (a - 2 * b + c) if (a - 2 * b + c) != 0 else k
+        return float(len(y) * dt / k)
+    if stat == "arrival":
+        d = np.abs(x - x[0])
+        if d.max() == 0:
+            return float("nan")
+        return float(t[int(np.argmax(d > 0.5 * d.max()))])
+    if stat == "rms":
+        if ref is None:
+            raise InputError("rms needs a reference series")
+        tr, xr = np.asarray(ref[0], float), np.asarray(ref[1], float)
+        lo, hi = max(t[0], tr[0]), min(t[-1], tr[-1])
+        keep = (t >= lo) & (t <= hi)
+        xi = np.interp(t[keep], tr, xr)
+        scale = float(np.sqrt(np.mean((xr - xr.mean()) ** 2)))
+        diff = float(np.sqrt(np.mean((x[keep] - xi) ** 2)))
+        return diff / scale if scale > 0 else diff
+    raise InputError(f"unknown statistic {stat!r}; choose from {', '.join(STATS)}")

@@ -1,0 +1,182 @@
+"""The runs of a study: every combination of the varied fields, each a ``cosim run`` in its
+own process (a crash or an instability is that run's row, not the study's end; its cost is
+measured on the process alone: wall and CPU time, peak memory), cached by a hash of the
+scene and of the code, scheduled serially or on Dask.
+
+Dask (``dask.distributed``): a local cluster by default, one single-threaded worker process
+per run slot, each run's numba threads set by ``NUMBA_NUM_THREADS`` so that slots x threads
+do not exceed the cores; or an existing cluster (``scheduler="tcp://host:8786"``): the same
+study sweeps one workstation or many nodes (the workers need this package and a shared
+output folder).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import itertools
+import json
+import os
+import subprocess
+import sys
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+_SOURCES = ("cosim", "fluid", "bodies", "moorings")
+
+
+def code_version() -> str:
+    """A hash of the package's source files (Python and the FMU's C): a cached run is
+    reused only by the same code."""
+    root = Path(__file__).resolve().parents[2]
+    h = hashlib.sha256()
+    for pkg in _SOURCES:
+        for p in sorted((root / pkg).rglob("*")):
+            if p.suffix in (".py", ".c", ".h") and "__pycache__" not in p.parts:
+                h.update(str(p.relative_to(root)).encode())
+                h.update(p.read_bytes())
+    return h.hexdigest()[:16]
+
+
+@dataclass
+class Case:
+    """One run of a study: the values it sets (``{"fluid.dx": 0.01}``), its scene as TOML,
+    its cache key and folder."""
+
+    index: int
+    values: dict
+    toml: str
+    key: str
+    folder: Path
+
+
+def combinations(vary: dict) -> list[dict]:
+    """Every combination of the varied fields' values, the first field varying slowest."""
+    keys = list(vary)
+    return [dict(zip(keys, combo)) for combo in itertools.product(*(vary[k] for k in keys))]
+
+
+def cases(scene, vary: dict, out: Path, version: str) -> list[Case]:
+    """The study's cases; a value the scene refuses is refused here, before any run."""
+    out_cases = []
+    for i, values in enumerate(combinations(vary)):
+        s = scene.with_values([f"{k}={_toml(v)}" for k, v in values.items()])
+        text = s.to_toml()
+        key = hashlib.sha256((text + version).encode()).hexdigest()[:16]
+        out_cases.append(Case(i, values, text, key, out / "runs" / key))
+    return out_cases
+
+
+def _toml(v) -> str:
+    if isinstance(v, str):
+        return json.dumps(v)
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, (list, tuple)):
+        return "[" + ", ".join(_toml(x) for x in v) + "]"
+    return repr(v)
+
+
+def run_case(toml: str, folder: str, threads: int, version: str) -> dict:
+    """Run one case in its own process (``cosim run``) unless the same scene and code ran
+    before into ``folder``; returns its record (``case.json``)."""
+    folder = Path(folder)
+    record = folder / "case.json"
+    if record.is_file():
+        rec = json.loads(record.read_text())
+        if rec.get("version") == version and rec.get("complete"):
+            rec["cached"] = True
+            return rec
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / "scene.toml").write_text(toml)
+    env = dict(os.environ, NUMBA_NUM_THREADS=str(threads))
+    t0 = time.perf_counter()
+    proc = subprocess.Popen([sys.executable, "-m", "cosim.cli", "run", str(folder / "scene.toml"), "--out",
+                             str(folder / "run"), "--quiet"], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                            env=env, text=True)
+    _, status, usage = os.wait4(proc.pid, 0)
+    stderr = proc.stderr.read()
+    proc.stderr.close()
+    proc.returncode = os.waitstatus_to_exitcode(status)
+    rec = {"version": version, "complete": True, "wall_s": time.perf_counter() - t0,
+           "cpu_s": usage.ru_utime + usage.ru_stime, "max_rss_mb": usage.ru_maxrss / 1024.0,
+           "threads": threads, "returncode": proc.returncode, "error": None}
+    summary = folder / "run" / "summary.json"
+    if summary.is_file():
+        s = json.loads(summary.read_text())
+        rec.update({k: s.get(k) for k in ("steps", "particles", "t_reached_s", "wall_s_per_simulated_s")})
+        rec["run_wall_s"] = s.get("wall_s")
+        rec["error"] = s.get("error")
+    if proc.returncode != 0:
+        lines = [ln for ln in stderr.strip().splitlines() if ln.strip()]
+        rec["error"] = rec["error"] or (lines[-1] if lines else f"exit status {proc.returncode}")
+    record.write_text(json.dumps(rec, indent=1))
+    rec["cached"] = False
+    return rec
+
+
+def series(folder: Path) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """The probe series of a case's run, ``{name: (t, x)}`` (what a run wrote before failing)."""
+    import h5py
+
+    path = Path(folder) / "run" / "run.h5"
+    out = {}
+    if not path.is_file():
+        return out
+    from fluid.output import read_series
+
+    with h5py.File(path, "r") as f:
+        groups = list(f["series/probes"]) if "series/probes" in f else []
+    for g in groups:
+        s = read_series(path, f"probes/{g}")
+        for k, v in s.items():
+            if k != "t":
+                out[k] = (s["t"], v)
+    return out
+
+
+def execute(cs: list[Case], *, workers: int, threads: int, scheduler: str | None = None, serial: bool = False,
+            version: str, report=None) -> list[dict]:
+    """Run the cases (serially, on a local Dask cluster of ``workers`` processes, or on the
+    cluster at ``scheduler``); ``report(case, record)`` after each. Returns the records in
+    case order."""
+    results: list[dict | None] = [None] * len(cs)
+    if serial:
+        for c in cs:
+            results[c.index] = run_case(c.toml, str(c.folder), threads, version)
+            if report:
+                report(c, results[c.index])
+        return results
+    try:
+        from dask.distributed import Client, LocalCluster, as_completed
+    except ImportError:
+        from cosim.errors import InputError
+
+        raise InputError("a study on Dask needs dask.distributed: pip install 'cosim-sph[study]', or run it "
+                         "with --serial") from None
+
+    cluster = None
+    if scheduler is None:
+        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None)
+        client = Client(cluster)
+    else:
+        client = Client(scheduler)
+    try:
+        futures = {client.submit(run_case, c.toml, str(c.folder), threads, version, pure=False, key=f"case-{c.key}"): c
+                   for c in cs}
+        for fut in as_completed(futures):
+            c = futures[fut]
+            try:
+                results[c.index] = fut.result()
+            except Exception as e:  # the worker itself failed: the run's row says so
+                results[c.index] = {"version": version, "complete": False, "error": f"{type(e).__name__}: {e}",
+                                    "cached": False}
+            if report:
+                report(c, results[c.index])
+    finally:
+        client.close()
+        if cluster is not None:
+            cluster.close()
+    return results

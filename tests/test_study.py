@@ -1,0 +1,109 @@
+"""cosim study: metrics against closed forms, Richardson extrapolation recovering a known
+order, a serial study of the moored box whose coupling step converges at second order,
+its cache, a failed run as a row, and the same study on a local Dask cluster."""
+
+import json
+import math
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from cosim.errors import InputError
+from cosim.scene import Scene
+from cosim.study import _richardson, pareto_front, run_study
+from cosim.study import metrics as M
+from cosim.study import sweep
+
+ROOT = Path(__file__).resolve().parents[1]
+BOX = ROOT / "examples" / "moored_box.toml"
+
+
+def test_metrics_of_a_sine():
+    t = np.linspace(0.0, 10.0, 2001)
+    x = 0.3 + 2.0 * np.sin(2 * np.pi * t / 1.25)
+    assert M.value("peak", t, x) == pytest.approx(2.3, rel=1e-4)  # sampled off the crest
+    assert M.value("amplitude", t, x) == pytest.approx(2.0, rel=1e-4)
+    assert M.value("period", t, x) == pytest.approx(1.25, rel=5e-3)  # 4 periods in the last half
+    assert M.value("mean", t, x) == pytest.approx(0.3, abs=2e-3)
+    assert M.value("arrival", t, x) == pytest.approx(1.25 / 12, abs=0.01)  # 2 sin = 1 at a twelfth of a period
+    assert M.value("rms", t, x, ref=(t, x)) == 0.0
+    assert M.value("rms", t, 1.1 * x - 0.03, ref=(t, x)) == pytest.approx(0.1 * 2.0 / math.sqrt(2) / math.sqrt(2),
+                                                                           rel=2e-2)
+    with pytest.raises(InputError, match="unknown statistic 'median'"):
+        M.parse("box.heave:median")
+
+
+def test_richardson_recovers_order_and_limit():
+    m_star, p = _richardson([0.01, 0.02, 0.04], [1 + 3 * h**1.5 for h in (0.01, 0.02, 0.04)])
+    assert m_star == pytest.approx(1.0, abs=1e-12) and p == pytest.approx(1.5, abs=1e-9)
+    assert math.isnan(_richardson([1, 2, 3], [5.0, 5.0, 5.0])[1])
+    with pytest.raises(InputError, match="monotonically"):
+        _richardson([1, 2, 3], [1.0, 2.0, 1.5])
+
+
+def test_pareto_front():
+    rows = [{"case": c, "wall_s": w, "max_error": e, "error": None} for c, w, e in
+            (("a", 1, 0.5), ("b", 2, 0.1), ("c", 3, 0.2), ("d", 4, 0.01))]
+    assert [r["case"] for r in pareto_front(rows)] == ["a", "b", "d"]
+
+
+@pytest.fixture(scope="module")
+def study(tmp_path_factory):
+    scene = Scene.from_toml(BOX).with_values(["world.duration=2.0"])
+    out = tmp_path_factory.mktemp("study")
+    res = run_study(scene, {"coupling.dt": [0.016, 0.008, 0.004]}, ["box.surge:min", "box.left.tension:mean"], out,
+                    reference="richardson", tol=1e-5, serial=True)
+    return scene, out, res
+
+
+def test_coupling_step_converges_at_second_order(study):
+    """The predictor-corrector coupling (the analytic fluid's default scheme) is second
+    order in the coupling step: the study's Richardson extrapolation observes p ~ 2."""
+    _, out, res = study
+    (order,) = [v["order"] for k, v in res.orders.items() if k.startswith("box.surge:min")]
+    assert order == pytest.approx(2.0, abs=0.15)
+    errors = [r["errors"]["box.surge:min"] for r in res.rows]
+    assert errors[0] > errors[1] > errors[2]  # the error shrinks as dt does
+    for name in ("study.csv", "study.md", "study.json", "pareto.png"):
+        assert (out / name).stat().st_size > 0
+    js = json.loads((out / "study.json").read_text())
+    assert js["recommendation"]["tol"] == 1e-5 and len(js["rows"]) == 3
+
+
+def test_repeated_study_costs_nothing(study):
+    scene, out, first = study
+    again = run_study(scene, {"coupling.dt": [0.016, 0.008, 0.004]}, ["box.surge:min"], out,
+                      reference="finest", serial=True)
+    assert all(r["cached"] for r in again.rows)
+    assert [r["metrics"]["box.surge:min"] for r in again.rows] == [r["metrics"]["box.surge:min"] for r in first.rows]
+
+
+def test_a_failed_run_is_a_row(tmp_path):
+    rec = tmp_path / "paddle.txt"
+    np.savetxt(rec, np.column_stack([np.linspace(0, 2, 21), np.zeros(21)]))
+    scene = Scene.from_toml(BOX).with_values(["world.duration=0.5"])
+    cs = sweep.cases(scene, {"coupling.dt": [0.01]}, tmp_path, "v")
+    cs[0].toml = cs[0].toml.replace('level = 0.0', 'level = "high"')  # refused by the run, not by the study
+    (rec_,) = sweep.execute(cs, workers=1, threads=1, serial=True, version="v")
+    assert rec_["returncode"] == 2 and "fluid.level" in rec_["error"]
+
+
+def test_unknown_metric_series_is_named(study):
+    scene, out, _ = study
+    with pytest.raises(InputError, match="no series 'box.roll'"):
+        run_study(scene, {"coupling.dt": [0.016]}, ["box.roll:max"], out, serial=True)
+
+
+def test_cli_study_on_dask(tmp_path):
+    """The command line, on a local Dask cluster of two workers."""
+    out = subprocess.run([sys.executable, "-m", "cosim.cli", "study", str(BOX), "--set", "world.duration=0.5",
+                          "--vary", "moorings.model=catenary,fmu", "--metric", "box.left.tension:max", "--tol", "1%",
+                          "--workers", "2", "--out", str(tmp_path)], capture_output=True, text=True, timeout=600)
+    assert out.returncode == 0, out.stderr[-3000:]
+    js = json.loads((tmp_path / "study.json").read_text())
+    a, b = (r["metrics"]["box.left.tension:max"] for r in js["rows"])
+    assert a == pytest.approx(b, rel=1e-9)  # the FMU is the catenary law compiled
+    assert js["recommendation"]["case"] is not None and "cheapest within 0.01" in out.stdout
