@@ -68,9 +68,38 @@ Case 1 and Experiment 2 while building this):
   ``f_a = -omega m_a v_a`` with ``omega`` [1/s] (default 0.04, the seed's 0.03-0.05). It
   leaves every equilibrium unchanged, so a larger ``omega`` is a legitimate way to settle
   a static case (each underdamped mode decays at omega/2).
-* Time stepping: leap-frog in kick-drift form (velocities staggered half a step),
-  ``dt = cfl * min segment / (c0 + max speed)``; the whole sub-cycling loop runs in
-  compiled code (:func:`moorings.sph_cable_kernels.advance`).
+* Time stepping: leap-frog in kick-drift form (velocities staggered half a step; the
+  whole sub-cycling loop runs in compiled code, :func:`moorings.sph_cable_kernels.advance`)
+  with the step of :meth:`SPHCable.step_limit` (``dt_limit`` names what set it):
+
+  - ``courant``: ``cfl * min(segment) / (c0 + max speed)`` (000 Section 2's CFL).
+  - ``viscosity``, ``mass_damping``, ``drag``: the highest axial mode of the taut chain
+    (neighbours in antiphase, ``omega_hm = 2 c0 / ds``) with every explicit damping rate
+    on it, ``gamma = gamma_visc + omega + gamma_drag``, taken in the kick at v^n. For
+    kick-drift (symplectic Euler) on ``x'' + gamma x' + omega_hm^2 x = 0`` the update
+    matrix has determinant ``1 - gamma dt`` and trace ``2 - gamma dt - omega_hm^2 dt^2``;
+    the Jury conditions give ``y = omega_hm dt <= 2 (sqrt(zeta^2 + 1) - zeta)`` with
+    ``zeta = gamma / (2 omega_hm)``, i.e. ``dt <= (ds / c0) (sqrt(zeta^2 + 1) - zeta)``:
+    ``ds / c0`` undamped (the Courant bound), ``2 / gamma`` when the damping dominates.
+    The rates: the linear artificial viscosity ``alpha mu c0`` of Eq. 10 is, per pair,
+    a dashpot ``(15/32) alpha sqrt(EA m)`` [N s/m] (``mk_a mk_b |W'(1)| / (lam h^2)`` with
+    ``|W'(1)| h^2 = 15/32``, ``mu`` ~ the approach speed), which the highest mode sees four
+    times on ``m ds``: ``gamma_visc = (15/8) alpha c0 / ds`` (alpha = 1 alone allows
+    ``cfl <= 0.635``: ``cfl`` = 0.8 and 1, both accepted, grew a noisy taut cable's speed
+    100-fold and to an 11 % strain). Eq. 12's ``omega`` [1/s] is a rate itself. The Morison drag
+    ``kn |v| v`` linearised at the current top speed ``U`` (``d(|v| v)/dv = 2 |v|``) is
+    ``gamma_drag = 2 U max(kn / (m + ma_n), kt / (m + ma_t))`` over the particles. This
+    bound is taken with the safety factor ``safety`` (0.8; the viscosity only acts on
+    approaching pairs and the drag grows within a coupling step) and named after the
+    largest of the three rates.
+  - ``density_diffusion`` (delta > 0): the δ-term of Eq. 1 diffuses ``lam`` with
+    diffusivity ``delta ds c0``; its fastest (alternating) mode decays at
+    ``4 delta c0 / ds``, explicit in the update: ``dt <= safety ds / (2 delta c0)``.
+  - Covered without a limit: the seabed contact is a projection (position onto the
+    seabed, downward velocity removed: no stiffness), the seabed friction is applied
+    implicitly in the kick (stable at any step), added and point masses only add inertia,
+    the transverse (geometric) stiffness ``T / l`` is ``EA strain / l``, below the axial
+    ``EA / ds``, and there is no bending stiffness.
 
 Usage::
 
@@ -163,6 +192,21 @@ def catenary_points(a, b, length: float, s) -> np.ndarray:
     return a + np.outer(xs, eh) + np.outer(zs, zaxis)
 
 
+@dataclass(frozen=True)
+class CableStepLimit:
+    """The SPH cable's stable step and what set it.
+
+    ``limiter`` is ``"courant"``, ``"viscosity"``, ``"mass_damping"``, ``"drag"`` (the
+    damped highest axial mode, named after its largest damping rate) or
+    ``"density_diffusion"``; ``limits`` [s] holds ``courant`` (with ``cfl``), the damped
+    mode's bound ``damped_mode`` and ``density_diffusion`` (before ``safety``), and each
+    damping rate's own ``2 / rate``."""
+
+    dt: float  # [s]
+    limiter: str
+    limits: dict  # name -> [s]
+
+
 @dataclass
 class _Load:
     s: float
@@ -192,7 +236,9 @@ class SPHCable:
         inextensible catenary through the ends (a straight line if taut). The initial
         line density follows the initial segment stretch, so a stretched start is stressed.
     nodes_at : material coordinates [m] that must be nodes (point loads, probes).
-    cfl : Courant number on the axial wave speed sqrt(EA/mass_per_length) [-].
+    cfl : Courant number on the axial wave speed sqrt(EA/mass_per_length) [-]; the step
+        also obeys the damping and diffusion bounds of :meth:`step_limit` (module docstring).
+    safety : factor [-] on the damping and diffusion bounds of :meth:`step_limit` (0.8).
     omega : mass-proportional damping rate of 000 Eq. 12 [1/s].
     visc_alpha, visc_beta : artificial viscosity coefficients varphi, phi of 000 Eq. 10 [-].
     delta : δ-SPH diffusion coefficient of 000 Eq. 1 [-] (0.1 in the seed; 0 by default,
@@ -220,7 +266,7 @@ class SPHCable:
                  free_end=None, positions=None, nodes_at=(), cfl=0.4, omega=0.04,
                  visc_alpha=1.0, visc_beta=0.2, delta=0.0, max_strain=0.1, seabed_z=None,
                  seabed_friction=0.0, diameter=None, rho_water=1025.0, cd_normal=1.2, cd_tangential=0.008, ca_normal=1.0,
-                 ca_tangential=0.0, water_z=math.inf, gravity=G_STANDARD, name="cable"):
+                 ca_tangential=0.0, water_z=math.inf, gravity=G_STANDARD, name="cable", safety=0.8):
         self.name = name
         lab = f"SPH cable '{name}'"
 
@@ -245,6 +291,10 @@ class SPHCable:
         self.cfl = pos(cfl, "cfl", "-")
         if self.cfl > 1.0:
             raise InputError(f"{lab}: cfl = {cfl}; use a Courant number <= 1 (0.4 is the default)")
+        self.safety = pos(safety, "safety", "-")
+        if self.safety > 1.0:
+            raise InputError(f"{lab}: safety = {safety}; use a factor <= 1 on the stability bounds (0.8 is the "
+                             "default)")
         if omega is None or not math.isfinite(float(omega)) or float(omega) < 0:
             raise InputError(f"{lab}: omega = {omega!r} 1/s; the damping rate must be >= 0")
         self.omega = float(omega)
@@ -456,12 +506,41 @@ class SPHCable:
         self._toff[i] = math.inf if cycles is None else float(t_on) + float(cycles) / fr
 
     # ------------------------------------------------------------------ stepping
-    def stable_dt(self) -> float:
-        """The cable's own stable step [s]: cfl · shortest segment / (c0 + fastest particle)."""
+    def step_limit(self) -> CableStepLimit:
+        """The cable's stable step now and what sets it (module docstring, "Time stepping"):
+        ``min(courant, safety * damped highest mode, safety * density diffusion)``."""
         seg = np.linalg.norm(np.diff(self.x, axis=0), axis=1)
+        ds = float(self.ds.min())
+        # fastest particle, plus what the held ends may reach within the interval
         vmax = float(np.sqrt((self.v ** 2).sum(axis=1)).max()) + float(
             np.max(np.linalg.norm(self._amp, axis=1) * self._om, initial=0.0))
-        return self.cfl * float(min(seg.min(), np.diff(self.s).min())) / (self.c0 + vmax)
+        vmax = max(vmax, float(np.max(np.linalg.norm(self._v1, axis=1), initial=0.0)))
+        courant = self.cfl * float(min(seg.min(), ds)) / (self.c0 + vmax)
+        w_hm = 2.0 * self.c0 / ds  # highest axial mode [1/s]
+        rates = {"viscosity": 15.0 / 8.0 * self.visc_alpha * self.c0 / ds,  # [1/s]
+                 "mass_damping": self.omega,
+                 "drag": 2.0 * vmax * float(np.max(np.maximum(self.hyd[:, 0] / (self.m + self.hyd[:, 2]),
+                                                              self.hyd[:, 1] / (self.m + self.hyd[:, 3]))))}
+        zeta = sum(rates.values()) / (2.0 * w_hm)
+        damped = 2.0 / w_hm * (math.sqrt(zeta * zeta + 1.0) - zeta)
+        diffusion = ds / (2.0 * self.delta * self.c0) if self.delta > 0 else math.inf
+        limits = {"courant": courant, "damped_mode": damped, "density_diffusion": diffusion,
+                  **{k: (2.0 / r if r > 0 else math.inf) for k, r in rates.items()}}
+        cands = {"courant": courant, "damped_mode": self.safety * damped, "density_diffusion": self.safety * diffusion}
+        which = min(cands, key=cands.get)
+        name = which
+        if which == "damped_mode":
+            name = max(rates, key=rates.get) if max(rates.values()) > 0 else "courant"
+        return CableStepLimit(cands[which], name, limits)
+
+    @property
+    def dt_limit(self) -> CableStepLimit:
+        """:meth:`step_limit` now (``limiter`` names the term, as the fluid's ``limiter``)."""
+        return self.step_limit()
+
+    def stable_dt(self) -> float:
+        """The cable's own stable step [s] now (:meth:`step_limit`)."""
+        return self.step_limit().dt
 
     def set_end_table(self, end, times, positions) -> None:
         """Make held end ``end`` follow a table of ``times`` [s] (increasing) and ``positions``
@@ -532,7 +611,7 @@ class SPHCable:
             raise InstabilityError(
                 f"SPH cable '{self.name}': runaway state at t = {t:.9g} s: particle {a} (s = {self.s[a]:.6g} m) "
                 f"moves at {np.linalg.norm(self.v[a]):.3g} m/s (stable step {sdt:.3g} s); lower cfl (now "
-                f"{self.cfl}) or check the loads and the end motion")
+                f"{self.cfl}) or safety (now {self.safety}), or check the loads and the end motion")
         n_sub = max(1, int(math.ceil(dt / sdt - 1e-9)))
         log.debug("SPH cable '%s': t = %.9g s, dt = %.3g s in %d sub-steps of %.3g s", self.name, t, dt, n_sub,
                   dt / n_sub)
@@ -545,8 +624,8 @@ class SPHCable:
             what = "non-finite position or velocity" if status == _k.NONFINITE else "non-positive density"
             raise InstabilityError(
                 f"SPH cable '{self.name}': {what} at particle {part} (s = {self.s[part]:.6g} m) in sub-step "
-                f"{step} of {n_sub} after t = {t:.9g} s (dt = {dt / n_sub:.3g} s); lower cfl (now {self.cfl}) "
-                "or check the loads and the end motion")
+                f"{step} of {n_sub} after t = {t:.9g} s (dt = {dt / n_sub:.3g} s); lower cfl (now {self.cfl}) or "
+                f"safety (now {self.safety}), or check the loads and the end motion")
         self._p0[:] = self._p1
         self._v0[:] = self._v1
         self.t = float(t + dt)
@@ -782,4 +861,4 @@ def load_end_motion(path):
     return data[:, 0], data[:, 1:]
 
 
-__all__ = ["SPHCable", "SPHCableMooring", "material_coordinates", "catenary_points", "load_end_motion"]
+__all__ = ["CableStepLimit", "SPHCable", "SPHCableMooring", "material_coordinates", "catenary_points", "load_end_motion"]
