@@ -229,3 +229,20 @@ def test_output_folder_that_cannot_be_written(tmp_path):
     (tmp_path / "file").write_text("")
     with pytest.raises(InputError, match="is not a folder; give another --out"):
         shaken_tank().run(tmp_path / "file" / "out", progress=False)
+
+
+def test_unstable_run_names_step_and_body_and_stays_readable(tmp_path):
+    """A speed of sound far below the flow's (0.2 m/s): the body outruns the fluid and the
+    run stops naming the step and the body; what was sampled before stays readable."""
+    from cosim.errors import InstabilityError
+    from fluid.output import read_series
+
+    s = Scene(world=World(dim=2, duration=1.0, sample_every=0.005), fluid=SPH(dx=0.02, c0=0.2),
+              domain=Tank(length=0.6, height=0.5, depth=0.3),
+              bodies=[Box("cork", size=(0.12, 0.08), density=10.0, pos=(0.3,), place="floating")])
+    with pytest.raises(InstabilityError, match=r"step \d+, t = [0-9.]+ s: body 'cork' moves at .* speed of sound"):
+        s.run(tmp_path, progress=False)
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    assert summary["error"].startswith("InstabilityError: step")
+    heave = read_series(tmp_path / "run.h5", "probes/motion")
+    assert len(heave["t"]) >= 2 and np.isfinite(heave["cork.heave"]).all()
