@@ -108,6 +108,9 @@ def _study_parser(sub):
     p.add_argument("--threads", type=int, default=1, help="numba threads per run (default 1)")
     p.add_argument("--scheduler", metavar="ADDRESS", help="an existing Dask scheduler, e.g. tcp://host:8786")
     p.add_argument("--serial", action="store_true", help="no Dask: one run after the other in this process's children")
+    p.add_argument("--extremes", action="store_true",
+                   help="push each lever (dx, c0, CFL, bodies' density, line stiffness, segments, coupling step) towards "
+                        "its limits and report where the run stays stable and where it stops with a clear error")
     return p
 
 
@@ -136,6 +139,21 @@ def cmd_study(args, parser) -> int:
     scene = load(args.scene)
     if args.set:
         scene = scene.with_values(args.set)
+
+    def report(case, rec):
+        state = "cached" if rec.get("cached") else (f"error: {rec['error']}" if rec.get("error") else "done")
+        wall = f"{rec['wall_s']:.1f} s" if rec.get("wall_s") is not None else ""
+        print(f"  {case.values} {wall} {state}", flush=True)
+
+    if args.extremes:
+        from cosim.study.extremes import run_extremes, summary
+
+        out = Path(args.out) if args.out else Path("out") / f"extremes_{scene.name}"
+        rows = run_extremes(scene, out, workers=args.workers, threads=args.threads, scheduler=args.scheduler,
+                            serial=args.serial, report=report)
+        print("\n".join(summary(rows)))
+        print(f"wrote {out}/extremes.md, extremes.csv, extremes.json")
+        return 0
     vary = {}
     for v in args.vary:
         if "=" not in v:
@@ -151,11 +169,6 @@ def cmd_study(args, parser) -> int:
         except ValueError:
             raise InputError(f"--tol {args.tol!r}: give a relative tolerance, e.g. 5% or 0.05") from None
     out = Path(args.out) if args.out else Path("out") / f"study_{scene.name}"
-
-    def report(case, rec):
-        state = "cached" if rec.get("cached") else (f"error: {rec['error']}" if rec.get("error") else "done")
-        wall = f"{rec['wall_s']:.1f} s" if rec.get("wall_s") is not None else ""
-        print(f"  {case.values} {wall} {state}", flush=True)
 
     res = run_study(scene, vary, args.metric, out, reference=args.reference, tol=tol, workers=args.workers,
                     threads=args.threads, scheduler=args.scheduler, serial=args.serial, report=report)

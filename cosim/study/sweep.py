@@ -111,7 +111,8 @@ def run_case(toml: str, folder: str, threads: int, version: str) -> dict:
         rec["error"] = s.get("error")
     if proc.returncode != 0:
         lines = [ln for ln in stderr.strip().splitlines() if ln.strip()]
-        rec["error"] = rec["error"] or (lines[-1] if lines else f"exit status {proc.returncode}")
+        last = lines[-1].removeprefix("cosim run: error: ") if lines else f"exit status {proc.returncode}"
+        rec["error"] = rec["error"] or last
     record.write_text(json.dumps(rec, indent=1))
     rec["cached"] = False
     return rec

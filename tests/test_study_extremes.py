@@ -1,0 +1,41 @@
+"""cosim study --extremes: each lever of a scene pushed towards its limits; every value
+ends as ok, refused (before any work, the field named), unstable (a clear stop) or crash
+(a bug of ours: none here)."""
+
+import json
+
+import pytest
+
+from cosim.scene import SPH, Analytic, Box, Line, Moorings, Scene, Tank, World
+from cosim.study.extremes import _outcome, levers, run_extremes, summary
+
+
+def test_levers_follow_what_the_scene_has():
+    box = Box("b", size=(1.0, 1.0), density=500.0, pos=(0.0, 0.0), fairleads={"f": (0.0, -0.5)})
+    line = Line("b.f", anchor=(5.0, -3.0), length=6.0, weight=10.0, EA=1e6, mass_per_length=1.0, diameter=0.02)
+    analytic = Scene(fluid=Analytic(), bodies=[box], moorings=Moorings(model="moordyn", lines=[line]))
+    assert [lv for lv, _ in levers(analytic)] == ["bodies[0].density", "moorings.lines[*].EA", "moorings.segments",
+                                                   "coupling.dt"]
+    sph = Scene(fluid=SPH(dx=0.02), domain=Tank(length=1.0, height=0.5, depth=0.3))
+    assert [lv for lv, _ in levers(sph)] == ["fluid.dx", "fluid.c0_factor", "fluid.cfl"]
+    assert dict(levers(sph))["fluid.dx"][0] == ("4 x", ["fluid.dx=0.08"])
+
+
+def test_outcomes():
+    assert _outcome({"error": None}) == "ok"
+    assert _outcome({"error": "InstabilityError: step 3 ...", "returncode": 2}) == "unstable"
+    assert _outcome({"error": "fluid.dx: ...", "returncode": 2}) == "refused"
+    assert _outcome({"error": "ZeroDivisionError: ...", "returncode": 1}) == "crash"
+
+
+def test_extremes_of_a_floating_box(tmp_path):
+    scene = Scene(world=World(dim=2, duration=0.2, sample_every=0.05), fluid=Analytic(level=0.0),
+                  bodies=[Box("b", size=(1.0, 1.0), density=500.0, pos=(0.0,), place="floating")])
+    rows = run_extremes(scene, tmp_path, serial=True)
+    got = {(r["lever"], r["value"]): r["outcome"] for r in rows}
+    assert got[("bodies[0].density", "2 x water")] == "refused"  # it cannot float: refused before any step
+    assert got[("bodies[0].density", "0.5 x water")] == "ok"
+    assert all(o != "crash" for o in got.values()), rows
+    assert "bodies[0].density: runs at" in summary(rows)[0]
+    assert len(json.loads((tmp_path / "extremes.json").read_text())) == len(rows) == 9
+    assert (tmp_path / "extremes.md").read_text().startswith("# Extremes")
