@@ -28,14 +28,51 @@ predictor ``r^{n+1/2} = r^n + dt/2 (v^n + dv_x^n)``, corrector
 ``r^{n+1} = r^n + dt ((v^n + v^{n+1})/2 + dv_x^{n+1/2})``, Verlet
 ``r^{n+1} = r^n + dt (v^n + dv_x^n) + dt^2/2 a^n``. Velocities are not changed by it.
 
-With laminar viscosity ``nu > 0`` the step also obeys the viscous diffusion limit
-``dt <= 0.125 h^2 / nu`` (Morris, Fox & Zhu 1997, J. Comput. Phys. 136, Eq. 29 of that
-paper; DualSPHysics does not apply it, we do: for a small ``dx`` and a large ``nu`` it is
-the binding limit), limiter ``"viscous_diffusion"``.
+The step also obeys a diffusion limit, ``dt <= C h^2 / nu_eff``, on every diffusive term
+of the rates (DualSPHysics applies none; for a small ``dx`` and a large ``nu`` it binds):
+
+    nu_eff = nu + alpha h c_max / (2 (d + 2)) + delta h c0
+
+- ``nu`` [m^2/s]: the laminar viscosity (Lo & Shao 2002, fluid.equations), whose SPH
+  Laplacian bounds the step by ``0.125 h^2 / nu`` (Morris, Fox & Zhu 1997, J. Comput. Phys.
+  136; the criterion 001_14936b82710365b2.txt §2.2 cites as "viscous diffusion term").
+- ``alpha h c / (2 (d + 2))``: the shear viscosity that Monaghan's artificial viscosity
+  (001 Eq. 6) amounts to in the continuum (Monaghan 2005, Rep. Prog. Phys. 68;
+  ``alpha h c0 / 8`` in 2-D, fluid.equations), ``c_max`` the largest sound speed now.
+- ``delta h c0``: the density diffusion (fluid.equations), the same SPH Laplacian
+  operator (``2 V_b |F_ab| (rho_b - rho_a)`` against the laminar ``2 V_b |F_ab| v_ba``)
+  acting on the density with diffusivity ``delta h c0``; between fluid particles only, so it
+  is counted whatever ``diffusion`` variant is chosen (0 for ``"none"``).
+
+``C`` follows the scheme: the largest eigenvalue ``lambda`` of the diffusion operator is
+``~5.8 nu / h^2`` (measured: a 2-D block with random velocities, Wendland, h = sqrt(2) dx,
+grows when ``dt > 0.34 h^2 / nu`` with the predictor-corrector, whose velocity update is the
+midpoint rule ``1 + z + z^2 / 2``, stable for ``z = -lambda dt >= -2``). Morris' 0.125
+keeps a factor 2.75 below that edge for the predictor-corrector. Verlet's leap-frog
+``v^{n+1} = v^{n-1} + 2 dt a^n`` is unstable for any diffusion (its second root
+``z - sqrt(z^2 + 1)`` has modulus ``1 + |z|``); only the forward-Euler step every
+``verlet_reset`` = N steps holds it. Over a cycle (one Euler step, N - 1 leap-frog steps)
+the gain of a mode decaying at ``lambda`` is ``G_N(z)`` of :func:`verlet_diffusion_edge`,
+``|G_N| <= 1`` for ``|z| <= z_N`` (z_40 = 0.135, z_10 = 0.358, z_1 = 2): Verlet's ``C`` is
+``0.125 z_N / 2`` (0.0085 at N = 40), the same factor 2.75 below its edge. Measured on that
+block: Verlet grew with ``nu`` at 0.2 and was stable at 0.16 times Morris' step (predicted
+edge 0.135 * 2.75 / 2 = 0.19); density noise grew with Verlet at cfl = 0.2 for
+``delta >= 0.15`` (predicted 0.116) and at cfl = 0.3 and 0.4 for the default 0.1; the
+predictor-corrector at cfl 0.4 grew for ``delta = 1`` (predicted edge 0.86). Limiters
+``"viscous_diffusion"``, ``"artificial_viscosity"``, ``"density_diffusion"`` name the
+largest part of ``nu_eff``.
+
+Covered by 001 Eq. 14 as it stands: the sound speed (``h / c_a``) and the relative
+particle speed (``|h v_ab . r_ab| / r^2``, the ``|v|`` of a CFL on ``c0 + |v|``), the force
+criterion ``sqrt(h / |f_a|)`` (Monaghan 1992, Annu. Rev. Astron. Astrophys. 30), and, in
+the predictor-corrector, the artificial viscosity: its ``lambda dt`` is
+``~5.8 alpha cfl / 8 <= 0.3`` for ``alpha <= 1``, ``cfl <= 0.4``. XSPH moves positions only
+and adds no limit.
 """
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -45,7 +82,42 @@ from numba import njit, prange
 _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 
 #: names of the conditions that can limit a step
-LIMITERS = ("force", "courant_viscous", "viscous_diffusion", "dt_max", "coupling")
+LIMITERS = ("force", "courant_viscous", "viscous_diffusion", "artificial_viscosity", "density_diffusion", "dt_max",
+            "coupling")
+
+#: Morris et al. (1997)'s factor on h^2 / nu for the predictor-corrector [-]
+MORRIS = 0.125
+
+
+@functools.lru_cache(maxsize=None)
+def verlet_diffusion_edge(n: int) -> float:
+    """Largest ``z_N = lambda dt`` [-] for which Verlet with a forward-Euler step every ``n``
+    steps does not amplify a mode decaying at rate ``lambda`` (``v' = -lambda v``): the gain
+    of one cycle is ``G_n(z) = v_n / v_0`` with ``v_1 = (1 - z) v_0`` (Euler) and
+    ``v_{k+1} = v_{k-1} - 2 z v_k`` (leap-frog), and ``z_N`` is its first crossing of
+    ``|G| = 1`` (2 for n = 1, 0.358 for 10, 0.135 for 40)."""
+
+    def gain(z):
+        a, b = 1.0, 1.0 - z
+        for _ in range(n - 1):
+            a, b = b, a - 2.0 * z * b
+        return abs(b)
+
+    zs = np.linspace(0.0, 2.0, 4001)[1:]
+    bad = next((z for z in zs if gain(z) > 1.0 + 1e-12), 2.0)
+    lo, hi = bad - 2.0 / 4000, bad
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if gain(mid) <= 1.0 + 1e-12 else (lo, mid)
+    return float(lo)
+
+
+def diffusion_coefficient(integrator: str, verlet_reset: int) -> float:
+    """``C`` [-] of the diffusion limit ``dt <= C h^2 / nu_eff`` (module docstring):
+    Morris' 0.125 for the predictor-corrector, ``0.125 z_N / 2`` for Verlet."""
+    if integrator == "verlet":
+        return MORRIS * verlet_diffusion_edge(int(verlet_reset)) / 2.0
+    return MORRIS
 
 
 @dataclass(frozen=True)
@@ -60,10 +132,12 @@ class StepLimit:
 
 @njit(parallel=True, **_OPTS)
 def _bounds(acc, visc, cs, kind, h):
-    """(max |a|^2 over fluid particles, min h / (c + visc) over all particles), the latter
-    as h / max (c + visc): no division and no branch per particle (a third of the cost)."""
+    """(max |a|^2 over fluid particles, min h / (c + visc) over all particles, max c), the
+    second as h / max (c + visc): no division and no branch per particle (a third of the
+    cost)."""
     amax2 = 0.0
     cvmax = 0.0
+    cmax = 0.0
     dim = acc.shape[1]
     for i in prange(acc.shape[0]):
         a2 = 0.0
@@ -71,21 +145,28 @@ def _bounds(acc, visc, cs, kind, h):
             a2 += acc[i, k] * acc[i, k]
         amax2 = max(amax2, a2 if kind[i] == 0 else 0.0)
         cvmax = max(cvmax, cs[i] + visc[i])
-    return amax2, h / cvmax if cvmax > 0.0 else np.inf
+        cmax = max(cmax, cs[i])
+    return amax2, h / cvmax if cvmax > 0.0 else np.inf, cmax
 
 
 def stable_dt(acc, visc, cs, kind, h: float, cfl: float, dt_max: float = math.inf,
-              nu: float = 0.0) -> StepLimit:
-    """001_14936b82710365b2.txt Eq. 14 with factor ``cfl``; ``dt_max`` [s] caps it; with a
-    laminar kinematic viscosity ``nu`` [m^2/s] > 0 also ``0.125 h^2 / nu`` (Morris et al.
-    1997)."""
-    amax2, cvmin = _bounds(acc, visc, cs, kind, h) if cs.size else (0.0, math.inf)
+              nu: float = 0.0, *, alpha_eff: float = 0.0, nu_delta: float = 0.0,
+              c_diff: float = MORRIS) -> StepLimit:
+    """001_14936b82710365b2.txt Eq. 14 with factor ``cfl``; ``dt_max`` [s] caps it; and the
+    diffusion limit ``c_diff h^2 / nu_eff`` (module docstring) with
+    ``nu_eff = nu + alpha_eff h c_max + nu_delta``: ``nu`` [m^2/s] the laminar viscosity,
+    ``alpha_eff = alpha / (2 (d + 2))`` [-] the artificial viscosity's share, ``nu_delta =
+    delta h c0`` [m^2/s] the density diffusion's; ``c_diff`` from
+    :func:`diffusion_coefficient` (0.125 for the predictor-corrector)."""
+    amax2, cvmin, cmax = _bounds(acc, visc, cs, kind, h) if cs.size else (0.0, math.inf, 0.0)
     amax = math.sqrt(amax2)
     dt_f = cfl * math.sqrt(h / amax) if amax > 0 else math.inf
     dt_cv = cfl * cvmin
     dt, lim = (dt_f, "force") if dt_f < dt_cv else (dt_cv, "courant_viscous")
-    if nu > 0 and 0.125 * h * h / nu < dt:
-        dt, lim = 0.125 * h * h / nu, "viscous_diffusion"
+    parts = {"viscous_diffusion": nu, "artificial_viscosity": alpha_eff * h * cmax, "density_diffusion": nu_delta}
+    nu_eff = sum(parts.values())
+    if nu_eff > 0 and c_diff * h * h / nu_eff < dt:
+        dt, lim = c_diff * h * h / nu_eff, max(parts, key=parts.get)
     if dt_max < dt:
         dt, lim = dt_max, "dt_max"
     return StepLimit(dt, lim, dt_f, dt_cv)

@@ -20,7 +20,8 @@ import numpy as np
 from cosim.errors import InputError, InstabilityError
 from fluid import equations as eq
 from fluid import mls
-from fluid.integrator import StepLimit, corrector, first_non_finite, predictor, stable_dt, verlet
+from fluid.integrator import (StepLimit, corrector, diffusion_coefficient, first_non_finite, predictor,
+                              stable_dt, verlet)
 from fluid.kernels import alpha_d, kernel_id
 from fluid.neighbours import Grid, sort_by_cell, x_bin_array, x_bins
 from fluid.particles import Kind, ParticleSet
@@ -268,6 +269,11 @@ class Fluid:
         self._prm = eq.params(c.h, alpha_d(self._kernel, c.dim, c.h), c.alpha, c.delta, c.diffusion,
                               c.rho0, c.speed_of_sound, c.gravity, nu=c.nu, xsph=c.xsph_eps,
                               alpha_wall=c.alpha_wall, diffusion_at_surface=c.diffusion_at_surface)
+        #: the diffusion limit's terms (fluid.integrator.stable_dt): artificial viscosity's
+        #: share alpha / (2 (d + 2)), density diffusivity delta h c0 [m^2/s], the scheme's C
+        self._diffusivity = dict(alpha_eff=c.alpha / (2.0 * (c.dim + 2)),
+                                 nu_delta=0.0 if c.diffusion == "none" else c.delta * c.h * c.speed_of_sound,
+                                 c_diff=diffusion_coefficient(c.integrator, c.verlet_reset))
         self._grid = None
         self._work = eq.Workspace()
         self._xbins = None  # the cell list's sub-bin table (fluid.neighbours.order_cells_by_x)
@@ -343,7 +349,8 @@ class Fluid:
 
     @property
     def limiter(self) -> str:
-        """Which condition limited the last step: force, courant_viscous, dt_max or coupling."""
+        """Which condition limited the last step: one of ``fluid.integrator.LIMITERS`` (force,
+        courant_viscous, a diffusion limit, dt_max or coupling)."""
         return self.counters.limiter
 
     def advance(self, t: float, dt: float) -> None:
@@ -726,7 +733,7 @@ class Fluid:
         self._drho, self._acc, visc, self._cs, self._xsph = eq.evaluate(
             ps.pos, ps.vel, ps.rho, ps.mass, ps.kind, self._start, self._grid, self._kernel,
             self._prm, c.rho0, c.speed_of_sound, c.gamma, ps.p, self._work, self._xbins)
-        self._limit = stable_dt(self._acc, visc, self._cs, ps.kind, c.h, c.cfl, c.dt_max, c.nu)
+        self._limit = stable_dt(self._acc, visc, self._cs, ps.kind, c.h, c.cfl, c.dt_max, c.nu, **self._diffusivity)
         self._stale = False
 
     def _xs(self) -> np.ndarray:
