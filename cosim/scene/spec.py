@@ -269,25 +269,29 @@ DOMAINS = (Tank, Flume, InclinedTank, CylinderTank, PolygonTank)
 
 # ------------------------------------------------------------------------ excitations
 @dataclass(frozen=True)
-class Piston(Spec):
-    """A piston wavemaker making regular waves (linear wavemaker theory, ``fluid.wavemaker``)."""
+class _Regular(Spec):
+    """Regular waves of height ``height`` [m] and period ``period`` [s] from linear
+    wavemaker theory (``fluid.wavemaker``), the paddle ramped in over ``ramp`` periods."""
 
-    TAG = ("kind", "piston")
-    kind: str = tag("piston")
     height: float = required(num(None, "wave height H", "m", lo=0, lo_open=True, optional=False))
     period: float = required(num(None, "wave period T", "s", lo=0, lo_open=True, optional=False))
     ramp: float = num(2.0, "periods over which the paddle motion ramps in", lo=0)
 
 
 @dataclass(frozen=True)
-class Flap(Spec):
+class Piston(_Regular):
+    """A piston wavemaker making regular waves (linear wavemaker theory, ``fluid.wavemaker``)."""
+
+    TAG = ("kind", "piston")
+    kind: str = tag("piston")
+
+
+@dataclass(frozen=True)
+class Flap(_Regular):
     """A flap wavemaker hinged at the flume's bottom, making regular waves."""
 
     TAG = ("kind", "flap")
     kind: str = tag("flap")
-    height: float = required(num(None, "wave height H", "m", lo=0, lo_open=True, optional=False))
-    period: float = required(num(None, "wave period T", "s", lo=0, lo_open=True, optional=False))
-    ramp: float = num(2.0, "periods over which the paddle motion ramps in", lo=0)
 
 
 @dataclass(frozen=True)
