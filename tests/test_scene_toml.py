@@ -2,15 +2,20 @@
 shape hypothesis can build, and the reading side (files, ``--set``) does what it says.
 
 The strategy :func:`scenes` builds only VALID scenes (it keeps to what ``cosim.scene.checks``
-accepts: bodies inside the domain's box, dx fine enough for the depth, waves below the
-breaking limit, names that exist), then the property is: written as TOML and read back, the
-scene is the same, field for field, and written again, the text is the same. Scenes are
-only constructed, never run.
+accepts: bodies inside the domain's box, clear of its walls and of each other, dx fine
+enough for the depth, waves below the breaking limit, names that exist, fairleads above
+their anchors with lines that reach them, pressure patches on a wall, files that read),
+then the property is: written as TOML and read back, the scene is the same, field for
+field, and written again, the text is the same. Scenes are only constructed, never run.
 """
 
 from __future__ import annotations
 
+import atexit
+import hashlib
 import math
+import shutil
+import tempfile
 import tomllib
 from pathlib import Path
 
@@ -25,9 +30,28 @@ from cosim.scene import (MJCF, SPH, Analytic, Beach, Block, Box, Coupling, Cylin
 from cosim.scene.toml_io import from_dict, parse_value, read_toml, to_dict, to_toml, with_values
 from fluid.wavemaker import wavenumber
 
-#: a file that exists, for the fields that name one (the checks only ask that it exists;
-#: scenes here are never run)
-EXISTING = str(Path(__file__).resolve())
+#: files for the fields that name one, valid as the checks read them (scenes here are never
+#: run): a table of time and 9 columns of values, all at rest; a PEER .AT2 record
+FILES = Path(tempfile.mkdtemp(prefix="scene-toml-"))
+atexit.register(shutil.rmtree, FILES, True)
+TABLE = FILES / "table.txt"
+TABLE.write_text("".join(f"{0.25 * k!r}" + " 0.0" * 9 + "\n" for k in range(5)))
+AT2 = FILES / "quake.AT2"
+AT2.write_text("TEST\nSYNTHETIC\nACCELERATION TIME SERIES IN UNITS OF G\nNPTS=  50, DT= .0100 SEC\n"
+               + "\n".join(" ".join(f"{0.01 * math.sin(0.3 * (k + j)):.6e}" for j in range(5)) for k in range(0, 50, 5))
+               + "\n")
+
+
+def mjcf_file(names) -> str:
+    """An MJCF file whose movable bodies are ``names`` (or one, "float"), each with a site
+    "s" + its name."""
+    names = list(names) or ["float"]
+    xml = "<mujoco><worldbody>" + "".join(
+        f'<body name="{n}" pos="{3 * k} 0 0"><freejoint/><geom type="sphere" size="0.5"/><site name="s{n}"/></body>'
+        for k, n in enumerate(names)) + "</worldbody></mujoco>"
+    path = FILES / f"m{hashlib.sha1(xml.encode()).hexdigest()[:16]}.xml"
+    path.write_text(xml, encoding="utf-8")
+    return str(path)
 
 #: values whose decimal text is awkward: not the shortest-looking decimal, tiny, huge,
 #: sub-normal, a power of two, 1/3
@@ -127,10 +151,11 @@ def domains(draw, dim, kind=None):
         d = Tank(length=length, height=height, width=width, depth=depth)
     elif kind == "tank-blocks":
         inner = [length] + ([width] if dim == 3 else []) + [height]
-        blocks = []
-        for _ in range(draw(st.integers(1, 3))):
-            lo = [draw(between(0.0, 0.45 * e)) for e in inner]
-            hi = [draw(between(0.55 * e, e)) for e in inner]
+        blocks, n = [], draw(st.integers(1, 3))
+        for k in range(n):  # side by side along x (water blocks must not overlap)
+            w = length / n
+            lo = [draw(between(k * w, (k + 0.2) * w))] + [draw(between(0.0, 0.45 * e)) for e in inner[1:]]
+            hi = [draw(between((k + 0.8) * w, (k + 1) * w))] + [draw(between(0.55 * e, e)) for e in inner[1:]]
             blocks.append(Block(lo=lo, hi=hi))
         d, depth = Tank(length=length, height=height, width=width, water=blocks), None
     elif kind == "inclined":
@@ -160,15 +185,36 @@ def domains(draw, dim, kind=None):
     return d, lo, hi, depth
 
 
+def clear_box(d, lo, hi):
+    """(lo, hi) of a box in the domain clear of its walls: short of a flume's beach and an
+    inclined side, the square in a cylinder tank's circle, in a polygon's inscribed circle."""
+    lo, hi = list(lo), list(hi)
+    if isinstance(d, Flume) and d.beach is not None:
+        hi[0] = d.beach.toe
+    elif isinstance(d, InclinedTank):
+        hi[0] = d.length
+    elif isinstance(d, CylinderTank):
+        a = 0.99 * 0.5 * d.diameter / math.sqrt(2)
+        lo[:2], hi[:2] = [-a, -a], [a, a]
+    elif isinstance(d, PolygonTank):  # a regular polygon (domains): the square in its inscribed circle
+        n = len(d.vertices)
+        cx, cz = (sum(v[k] for v in d.vertices) / n for k in (0, 1))
+        a = 0.99 * math.dist(d.vertices[0], (cx, cz)) * math.cos(math.pi / n) / math.sqrt(2)
+        lo, hi = [cx - a, cz - a], [cx + a, cz + a]
+    return lo, hi
+
+
 @st.composite
 def bodies(draw, dim, names, box, can_float):
-    """Builder bodies named ``names``; ``box`` = (lo, hi) of the domain they must lie in, or
-    None (anywhere)."""
+    """Builder bodies named ``names``, side by side along x (they must not overlap); ``box``
+    = (lo, hi) of the part of the domain they must lie in, or None (anywhere)."""
     out = []
-    for name in names:
+    for j, name in enumerate(names):
         shape = draw(st.sampled_from(["box", "cylinder"] + (["sphere"] if dim == 3 else [])))
-        if box is not None:
-            ext = [h - lo for lo, h in zip(*box)]
+        if box is not None:  # the j-th slice along x of the box
+            w = (box[1][0] - box[0][0]) / len(names)
+            slot = ([box[0][0] + j * w] + list(box[0][1:]), [box[0][0] + (j + 1) * w] + list(box[1][1:]))
+            ext = [h - lo for lo, h in zip(*slot)]
             small = min(ext)
         else:
             ext, small = [100.0] * dim, 100.0
@@ -188,9 +234,11 @@ def bodies(draw, dim, names, box, can_float):
         n = dim - 1 if floating else dim
         if box is not None:
             margin = [1e-6 * e for e in ext]
-            pos = [draw(between(box[0][k] + half[k] + margin[k], box[1][k] - half[k] - margin[k])) for k in range(n)]
+            pos = [draw(between(slot[0][k] + half[k] + margin[k], slot[1][k] - half[k] - margin[k]))
+                   for k in range(n)]
         else:
             pos = list(draw(vec(n)))
+            pos[0] = draw(num(-50.0, 50.0)) + 300.0 * j
         kw = dict(name=name, pos=pos, **geo)
         if draw(st.booleans()):
             kw["density"] = draw(pos_num(1e5))
@@ -216,14 +264,24 @@ def moorings(draw, dim, body_list):
     chosen = draw(st.lists(st.sampled_from(points), min_size=1, max_size=4, unique=True))
     model = draw(st.sampled_from(["catenary", "sph-cable", "moordyn", "fmu"]))
     dynamic = model in ("sph-cable", "moordyn")
-    lines = []
+    lines, labels = [], set(chosen)
+    by_name = {b.name: b for b in body_list}
     for fl in chosen:
-        kw = dict(fairlead=fl, anchor=draw(vec(dim)), length=draw(pos_num(1e4)), weight=draw(pos_num(1e4)))
+        anchor, length = list(draw(vec(dim))), draw(pos_num(1e4))
+        body = by_name[fl.split(".")[0]]
+        if body.place != "floating":  # the fairlead above the anchor's seabed, the line long enough, turned or not
+            reach = math.hypot(*body.fairleads[fl.split(".")[1]])
+            anchor[-1] = min(anchor[-1], body.pos[-1] - reach)
+            length = max(length, math.dist(anchor, body.pos) + reach)
+        kw = dict(fairlead=fl, anchor=anchor, length=length, weight=draw(pos_num(1e4)))
         for key, hi in (("EA", 1e12), ("mass_per_length", 1e4), ("diameter", 10.0)):
             if dynamic or draw(st.booleans()):
                 kw[key] = draw(pos_num(hi))
         if draw(st.booleans()):
-            kw["name"] = draw(TEXT)
+            name = draw(TEXT)
+            if name not in labels:  # a line's label (its name, or its fairlead) is its own
+                kw["name"] = name
+                labels.add(name)
         lines.append(Line(**kw))
     kw = {"model": model, "lines": lines}
     if draw(st.booleans()):
@@ -232,15 +290,41 @@ def moorings(draw, dim, body_list):
 
 
 @st.composite
-def probes(draw, dim, sph, names, box):
+def floor_patch(draw, name, domain, dim, dx):
+    """A pressure patch on the domain's floor (a polygon's lowest edge), facing the water,
+    at least a particle spacing across."""
+    size = draw(num(dx, max(dx, 10.0)))
+    if isinstance(domain, PolygonTank):
+        v = domain.vertices
+        n = len(v)
+        k = min(range(n), key=lambda i: v[i][1] + v[(i + 1) % n][1])
+        (x0, z0), (x1, z1) = v[k], v[(k + 1) % n]
+        f = draw(between(0.3, 0.7))
+        cx, cz = (sum(p[i] for p in v) / n for i in (0, 1))
+        normal = (z0 - z1, x1 - x0)
+        if normal[0] * (cx - x0) + normal[1] * (cz - z0) < 0:
+            normal = (-normal[0], -normal[1])
+        return Patch(name=name, centre=(x0 + f * (x1 - x0), z0 + f * (z1 - z0)), normal=normal, size=size)
+    if isinstance(domain, CylinderTank):
+        a = 0.5 * domain.diameter / math.sqrt(2)
+        return Patch(name=name, centre=(draw(between(-a, a)), draw(between(-a, a)), 0.0), normal=(0.0, 0.0, 1.0),
+                     size=size)
+    end = domain.beach.toe if isinstance(domain, Flume) and domain.beach is not None else domain.length
+    x = draw(between(0.0, 0.9 * end))
+    if dim == 2:
+        return Patch(name=name, centre=(x, 0.0), normal=(0.0, 1.0), size=size)
+    return Patch(name=name, centre=(x, draw(between(0.0, domain.width)), 0.0), normal=(0.0, 0.0, 1.0), size=size)
+
+
+@st.composite
+def probes(draw, dim, sph, names, box, domain=None, dx=None):
     kw = {}
     if sph:  # gauges over the domain's box
         gauge = (between(box[0][0], box[1][0]) if dim == 2
                  else st.tuples(between(box[0][0], box[1][0]), between(box[0][1], box[1][1])))
         kw["gauges"] = draw(st.lists(gauge, max_size=4))
         patch_names = draw(st.lists(NAMES, max_size=3, unique=True))
-        kw["pressure"] = [Patch(name=n, centre=draw(vec(dim)), normal=draw(nonzero_vec(dim)), size=draw(pos_num(10.0)))
-                          for n in patch_names]
+        kw["pressure"] = [draw(floor_patch(n, domain, dim, dx)) for n in patch_names]
         kw["energy"] = draw(st.booleans())
     if names and draw(st.booleans()):
         kw["motion"] = draw(st.lists(st.sampled_from(list(names) + ["all"]), max_size=3))
@@ -269,7 +353,7 @@ def worlds(draw, dim, need_gravity):
 @st.composite
 def waves_for(draw, flume, gravity, kind):
     if kind == "record":
-        return PaddleRecord(paddle=draw(st.sampled_from(["piston", "flap"])), file=EXISTING,
+        return PaddleRecord(paddle=draw(st.sampled_from(["piston", "flap"])), file=str(TABLE),
                             column=draw(st.integers(1, 9)), scale=draw(num(-10.0, 10.0)),
                             t_shift=draw(num(-10.0, 10.0)))
     period = draw(num(0.3, 10.0))
@@ -290,10 +374,11 @@ def base_motions(draw, dim):
         return Roll(amplitude=draw(num(-45.0, 45.0)), period=draw(pos_num(100.0)), point=draw(vec(dim)),
                     axis=draw(nonzero_vec(3)) if dim == 3 else None, ramp=draw(num(0.0, 10.0)))
     if kind == "table":
-        return TableMotion(file=EXISTING, quantity=draw(st.sampled_from(["displacement", "velocity", "acceleration"])),
+        return TableMotion(file=str(TABLE),
+                           quantity=draw(st.sampled_from(["displacement", "velocity", "acceleration"])),
                            direction=draw(nonzero_vec(dim)), column=draw(st.integers(1, 5)), scale=draw(num(-5.0, 5.0)))
-    return Earthquake(file=EXISTING, direction=draw(nonzero_vec(dim)), scale=draw(num(-5.0, 5.0)),
-                      baseline_degree=draw(st.integers(2, 9)))
+    return Earthquake(file=str(AT2), direction=draw(nonzero_vec(dim)), scale=draw(num(-5.0, 5.0)),
+                      baseline_degree=draw(st.integers(3, 9)))
 
 
 # ------------------------------------------------------------------------ the scene
@@ -311,7 +396,7 @@ def scenes(draw, dim=None, fluid_kind=None, domain_kind=None):
     waves = base = None
     if fluid_kind == "sph":
         domain, lo, hi, depth = draw(domains(dim, domain_kind))
-        box = (lo, hi)
+        box, clear = (lo, hi), clear_box(domain, lo, hi)
         kw["domain"] = domain
         dx_max = depth / 4 if depth is not None else 0.1 * min(h - lo_ for lo_, h in zip(lo, hi))
         kw["fluid"] = draw(sph_fluids(dx_max))
@@ -328,11 +413,11 @@ def scenes(draw, dim=None, fluid_kind=None, domain_kind=None):
     mjcf = fluid_kind != "sph" and draw(st.integers(0, 9)) == 0
     if mjcf:  # an MJCF file is the only entry of bodies
         names = draw(st.lists(NAMES, max_size=3, unique=True))
-        body_list = [MJCF(file=EXISTING, bodies=names)]
+        body_list = [MJCF(file=mjcf_file(names), bodies=names)]
     else:
         n = draw(st.integers(0 if fluid_kind == "sph" else 1, 3))
         names = draw(st.lists(NAMES, min_size=n, max_size=n, unique=True))
-        body_list = draw(bodies(dim, names, box, can_float=fluid_kind != "none"))
+        body_list = draw(bodies(dim, names, clear if box else None, can_float=fluid_kind != "none"))
     kw["bodies"] = body_list
     if fluid_kind == "analytic":
         rows = st.dictionaries(st.sampled_from(names), vec(6, 0.0, 1e6), max_size=len(names)) if names else st.just({})
@@ -343,10 +428,11 @@ def scenes(draw, dim=None, fluid_kind=None, domain_kind=None):
     if not mjcf:
         kw["moorings"] = draw(moorings(dim, body_list))
     elif names:
-        lines = [Line(fairlead=f"{n}.site", anchor=draw(vec(dim)), length=draw(pos_num(1e3)), weight=1.0)
+        lines = [Line(fairlead=f"{n}.s{n}", anchor=draw(vec(dim)), length=draw(pos_num(1e3)), weight=1.0)
                  for n in names]
         kw["moorings"] = Moorings(lines=lines)
-    kw["probes"] = draw(probes(dim, fluid_kind == "sph", names, box))
+    kw["probes"] = draw(probes(dim, fluid_kind == "sph", names, box, kw.get("domain"),
+                               kw["fluid"].dx if fluid_kind == "sph" else None))
     kw["coupling"] = draw(couplings(fluid_kind == "sph"))
     if draw(st.booleans()):
         kw["name"] = draw(TEXT)

@@ -155,9 +155,10 @@ def _mjcf_bodies(scene, level, rho):
     dim, parts, heights = scene.world.dim, [], {}
     lines = scene.moorings.lines if scene.moorings is not None else ()
     for i, b in enumerate(scene.bodies):
-        mine = [ln for ln in lines if ln.fairlead.split(".")[0] == b.name]
+        mine = [k for k, ln in enumerate(lines) if ln.fairlead.split(".")[0] == b.name]
         if b.place == "floating":
-            z = floating_height(b, dim, level, rho, scene.world.gravity, mine, i)
+            z = floating_height(b, dim, level, rho, scene.world.gravity, [lines[k] for k in mine], i,
+                                [f"moorings.lines[{k}]" for k in mine])
             heights[b.name] = z
             pos = (b.pos[0], 0.0, z) if dim == 2 else (b.pos[0], b.pos[1], z)
         else:

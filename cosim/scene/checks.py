@@ -3,15 +3,25 @@ together, named by key path (``moorings.lines[1].fairlead``), before any work is
 
 Each field on its own was checked by its class (:mod:`cosim.scene.fields`); here: vector
 lengths against the dimension, which fluid goes with which domain and excitation, body
-names and fairlead references, bodies inside the tank and above its floor, probes
-inside the domain.
+names and fairlead references, bodies inside the tank (clear of its walls, a beach, a
+sloping side) and of each other, fairleads above their anchors' seabed with lines long
+enough to reach them, water blocks that hold particles and do not overlap, probes inside
+the domain (pressure patches on a wall's face, facing the water).
+
+The files a scene names are read here too, as the builder will read them: an MJCF model
+is parsed and compiled by MuJoCo (imported only for a scene that has one), an ``.AT2``
+accelerogram by :func:`fluid.motion.read_at2`, a table of motion (base motion, paddle
+record) as a table of numbers whose times increase and whose motion starts at rest.
 """
 
 from __future__ import annotations
 
+import math
+
 from cosim.scene.fields import SceneError
-from cosim.scene.spec import (MJCF, SPH, Analytic, Box, CylinderTank, Cylinder, Flap, Flume, InclinedTank,
-                              NoFluid, PaddleRecord, Piston, PolygonTank, Roll, Sphere, Tank)
+from cosim.scene.spec import (MJCF, SPH, Analytic, Box, CylinderTank, Cylinder, Earthquake, Flap, Flume,
+                              InclinedTank, NoFluid, PaddleRecord, Piston, PolygonTank, Roll, Sphere, TableMotion,
+                              Tank)
 
 
 def body_names(scene) -> list[str]:
@@ -29,6 +39,20 @@ def _dim_vec(v, dim, path, what="point"):
         raise SceneError(path, f"{list(v)} has {len(v)} coordinates; a {dim}-D scene gives a {what} as {coords}")
 
 
+def _axis(k: int, dim: int) -> str:
+    return "xyz"[k] if dim == 3 else "xz"[k]
+
+
+def _pt(v) -> str:
+    """A point or vector for a message: (0.1, 0.25)."""
+    return "(" + ", ".join(f"{x + 0.0:.4g}" for x in v) + ")"
+
+
+def _span(lo, hi, dim, n=None) -> str:
+    """Extents along the axes for a message: x 0 .. 3 m, z 0 .. 0.45 m."""
+    return ", ".join(f"{_axis(k, dim)} {lo[k]:.4g} .. {hi[k]:.4g} m" for k in range(n if n is not None else dim))
+
+
 def check_scene(s) -> None:
     dim = s.world.dim
     if not s.bodies and not isinstance(s.fluid, SPH):
@@ -39,9 +63,9 @@ def check_scene(s) -> None:
                          "bodies (builder bodies and several files cannot be mixed)")
     _check_fluid_and_domain(s, dim)
     _check_excitations(s, dim)
-    _check_bodies(s, dim)
-    _check_moorings(s, dim)
-    _check_probes(s, dim)
+    mj = _check_bodies(s, dim)
+    _check_moorings(s, dim, mj)
+    _check_probes(s, dim, mj)
     if s.coupling.scheme == "fluid-first" and not isinstance(s.fluid, SPH):
         raise SceneError("coupling.scheme", "'fluid-first' needs the SPH fluid (the loads it exchanged); use 'auto'")
     if s.coupling.light_body == "subiterate" and s.coupling.scheme not in ("auto", "fluid-first"):
@@ -77,6 +101,22 @@ def _check_fluid_and_domain(s, dim):
             if any(lo < 0 for lo in b.lo) or any(h > e for h, e in zip(b.hi, inner)):
                 raise SceneError(f"domain.water[{i}]", f"the block {list(b.lo)} .. {list(b.hi)} m reaches outside "
                                  f"the tank 0 .. {list(inner)} m")
+            dx = s.fluid.dx
+            for k, (lo, hi) in enumerate(zip(b.lo, b.hi)):
+                if math.floor((hi - lo) / dx + 1e-9) < 1:  # as fluid.geometry.block counts its rows
+                    raise SceneError(f"domain.water[{i}]", f"the block is {hi - lo:.4g} m thick along "
+                                     f"{_axis(k, dim)}, less than one particle spacing (fluid.dx = {dx:g} m): it "
+                                     f"would hold no particle; make it at least {dx:g} m thick, or refine dx")
+        for j, b in enumerate(d.water):
+            for i, a in enumerate(d.water[:j]):
+                tol = 1e-9 * max(max(abs(x) for x in a.hi + b.hi), 1.0)
+                if all(min(ah, bh) - max(al, bl) > tol for al, ah, bl, bh in zip(a.lo, a.hi, b.lo, b.hi)):
+                    raise SceneError(f"domain.water[{j}]", f"the block {list(b.lo)} .. {list(b.hi)} m overlaps "
+                                     f"domain.water[{i}] ({list(a.lo)} .. {list(a.hi)} m): the water there would be "
+                                     f"laid twice, its particles on top of each other; let the blocks meet (one's "
+                                     f"hi = the other's lo) without overlapping")
+    if isinstance(d, PolygonTank):
+        _check_outline(d.vertices)
     sph = s.fluid
     if isinstance(sph, SPH):
         depth = getattr(d, "level", None)
@@ -109,6 +149,7 @@ def _check_excitations(s, dim):
                 raise SceneError("waves.height", str(e)) from None
         if isinstance(s.waves, PaddleRecord):
             _file(s.waves.file, "waves.file")
+            _check_paddle_record(s)
     b = s.base_motion
     if b is not None:
         if s.domain is None:
@@ -129,6 +170,10 @@ def _check_excitations(s, dim):
             _dim_vec(b.direction, dim, "base_motion.direction", "direction")
         if hasattr(b, "file"):
             _file(b.file, "base_motion.file")
+        if isinstance(b, Earthquake):
+            _check_at2(b)
+        if isinstance(b, TableMotion):
+            _check_table_motion(s)
 
 
 def _file(path, key):
@@ -139,11 +184,13 @@ def _file(path, key):
 
 
 def _check_bodies(s, dim):
-    seen = {}
+    """The bodies' own checks; returns what the MJCF file holds (:func:`_check_mjcf`), or None."""
+    seen, mj = {}, None
     for i, b in enumerate(s.bodies):
         key = f"bodies[{i}]"
         if isinstance(b, MJCF):
             _file(b.file, f"{key}.file")
+            mj = _check_mjcf(b, key)
             names = b.bodies
         else:
             names = [b.name]
@@ -169,12 +216,16 @@ def _check_bodies(s, dim):
                 raise SceneError(f"{key}.name", f"{n!r} is also the name of bodies[{seen[n]}]; names must be unique")
             seen[n] = i
     if isinstance(s.fluid, Analytic):
+        known = mj["coupled"] if mj is not None else sorted(seen)
         for table in ("linear_damping", "quadratic_damping"):
             for n in getattr(s.fluid, table):
-                if n not in seen and not any(isinstance(b, MJCF) for b in s.bodies):
-                    raise SceneError(f"fluid.{table}.{n}", f"no body named {n!r}; bodies: {sorted(seen)}")
+                if n not in known:
+                    raise SceneError(f"fluid.{table}.{n}", f"no body named {n!r}; bodies: {sorted(known)}")
     if isinstance(s.fluid, SPH) and s.domain is not None:
         _check_inside(s, dim)
+        _check_walls(s, dim)
+    _check_overlaps(s, dim)
+    return mj
 
 
 def _extent(b, dim):
@@ -219,37 +270,91 @@ def _check_inside(s, dim):
                                  f"{hi[k]:g} m; move it inside the tank")
 
 
-def _check_moorings(s, dim):
+def _check_moorings(s, dim, mj):
     m = s.moorings
     if m is None:
         return
     if not s.bodies:
         raise SceneError("moorings", "mooring lines end on bodies; add the body that carries the fairleads")
     builders = {b.name: b for b in s.bodies if not isinstance(b, MJCF)}
-    mjcf = any(isinstance(b, MJCF) for b in s.bodies)
     for i, ln in enumerate(m.lines):
         key = f"moorings.lines[{i}]"
         _dim_vec(ln.anchor, dim, f"{key}.anchor")
         body, site = ln.fairlead.split(".")
-        if body in builders:
-            if site not in builders[body].fairleads:
-                raise SceneError(f"{key}.fairlead", f"body {body!r} has no fairlead {site!r}; its fairleads: "
-                                 f"{sorted(builders[body].fairleads)}")
-        elif not mjcf:
+        if mj is not None:
+            _check_mjcf_fairlead(mj, ln.fairlead, f"{key}.fairlead")
+        elif body not in builders:
             raise SceneError(f"{key}.fairlead", f"no body named {body!r}; bodies: {sorted(builders)}")
-    first = {}
+        elif site not in builders[body].fairleads:
+            raise SceneError(f"{key}.fairlead", f"body {body!r} has no fairlead {site!r}; its fairleads: "
+                             f"{sorted(builders[body].fairleads)}")
+    first, labels = {}, {}
     for i, ln in enumerate(m.lines):
         if ln.fairlead in first:
             raise SceneError(f"moorings.lines[{i}].fairlead", f"{ln.fairlead!r} is also the fairlead of "
                              f"moorings.lines[{first[ln.fairlead]}]; give each line its own fairlead")
         first[ln.fairlead] = i
+        label = ln.name or ln.fairlead
+        if label in labels:
+            raise SceneError(f"moorings.lines[{i}].name", f"{label!r} is also the label of moorings.lines"
+                             f"[{labels[label]}] (its name, or its fairlead when it has none): a line's label names "
+                             f"its outputs ({label}.tension); give each line its own name")
+        labels[label] = i
+    for i, ln in enumerate(m.lines):
+        _check_line_start(s, dim, ln, f"moorings.lines[{i}]", builders.get(ln.fairlead.split(".")[0]))
 
 
-def _check_probes(s, dim):
+def _rotation(euler):
+    """MuJoCo's rotation of the Euler angles [deg] (its default sequence, intrinsic x-y-z)."""
+    a, b, c = (math.radians(x) for x in euler)
+    ca, sa, cb, sb, cc, sc = math.cos(a), math.sin(a), math.cos(b), math.sin(b), math.cos(c), math.sin(c)
+    rx = [[1, 0, 0], [0, ca, -sa], [0, sa, ca]]
+    ry = [[cb, 0, sb], [0, 1, 0], [-sb, 0, cb]]
+    rz = [[cc, -sc, 0], [sc, cc, 0], [0, 0, 1]]
+
+    def mul(p, q):
+        return [[sum(p[i][k] * q[k][j] for k in range(3)) for j in range(3)] for i in range(3)]
+
+    return mul(mul(rx, ry), rz)
+
+
+def _check_line_start(s, dim, ln, key, body) -> None:
+    """For a body at a given pose: the fairlead at or above its anchor's seabed, and an
+    inextensible line long enough to reach it (a floating body's are checked when its
+    height is computed, :mod:`cosim.scene.placement`)."""
+    if body is None or body.place == "floating":
+        return
+    a, p = ln.anchor, body.fairleads[ln.fairlead.split(".")[1]]
+    if dim == 3 and body.euler is not None:  # a 2-D body's frame stays the world's (bodies.builders)
+        r = _rotation(body.euler)
+        p = [sum(r[i][j] * p[j] for j in range(3)) for i in range(3)]
+    f = [c + o for c, o in zip(body.pos, p)]
+    tol = 1e-9 * max(1.0, *(abs(x) for x in f + list(a)))
+    if f[-1] < a[-1] - tol:
+        raise SceneError(f"{key}.anchor", f"the fairlead {ln.fairlead!r} starts at z = {f[-1]:.4g} m, below this "
+                         f"anchor's seabed z = {a[-1]:.4g} m (the horizontal plane through the anchor); put the "
+                         f"anchor at or below the fairlead's height (or the body higher)")
+    dist = math.dist(f, a)
+    if ln.EA is None and dist > ln.length + tol:
+        raise SceneError(f"{key}.length", f"{ln.length:g} m is shorter than the straight distance {dist:.4g} m "
+                         f"from the anchor {_pt(a)} m to the fairlead {ln.fairlead!r} at {_pt(f)} m at the start: "
+                         f"an inextensible line cannot reach; give a length of at least {dist:.4g} m, move the "
+                         f"anchor closer, or give EA (an elastic line that starts stretched)")
+
+
+def _outline_differs(d) -> bool:
+    """Whether the domain is not its box (a beach, a sloping side, a polygon, a round wall)."""
+    return type(d) in _WALLS and not (isinstance(d, Flume) and d.beach is None)
+
+
+def _check_probes(s, dim, mj):
     p = s.probes
-    names = set(body_names(s))
+    names = set(mj["coupled"]) if mj is not None else set(body_names(s))
     for i, n in enumerate(p.motion):
-        if n != "all" and n not in names and not any(isinstance(b, MJCF) for b in s.bodies):
+        if n != "all" and n not in names and mj is not None:
+            raise SceneError(f"probes.motion[{i}]", f"{n!r} is not one of the bodies coupled from the MJCF file: "
+                             f"{mj['coupled']} (or \"all\"); name one of them, or add it to bodies[0].bodies")
+        if n != "all" and n not in names:
             raise SceneError(f"probes.motion[{i}]", f"no body named {n!r}; bodies: {sorted(names)} (or \"all\")")
     fluid_probes = p.gauges or p.pressure or p.energy
     if fluid_probes and not isinstance(s.fluid, SPH):
@@ -275,3 +380,418 @@ def _check_probes(s, dim):
         if pr.name in seen:
             raise SceneError(f"probes.pressure[{i}].name", f"{pr.name!r} is used twice; give each patch its own")
         seen.add(pr.name)
+        if isinstance(s.fluid, SPH) and s.domain is not None:
+            _check_patch(s, dim, pr, f"probes.pressure[{i}]")
+
+
+def _check_patch(s, dim, pr, key) -> None:
+    """A wall-pressure patch (``fluid.probes.wall_patch_pressure``) is at least a particle
+    spacing across, centred on a wall's face (within half a spacing), its normal into the
+    water (within 60 degrees of the wall's)."""
+    d, dx = s.domain, s.fluid.dx
+    if pr.size < dx:
+        raise SceneError(f"{key}.size", f"{pr.size:g} m is less than one particle spacing (fluid.dx = {dx:g} m): "
+                         f"the patch would hold no wall particle; give at least {dx:g} m (a few spacings read "
+                         f"steadier)")
+    c = pr.centre
+    sd = _sd_domain(d, dim, c)
+    lo, hi = _domain_box(d, dim)
+    if sd > 0.5 * dx:
+        raise SceneError(f"{key}.centre", f"{_pt(c)} m lies outside the domain ({_span(lo, hi, dim)}"
+                         f"{', less its ' + _WALLS[type(d)] if _outline_differs(d) else ''}), {sd:.3g} m behind "
+                         f"the nearest wall face; put the centre on the face of a wall, where the water meets it")
+    if sd < -0.5 * dx:
+        raise SceneError(f"{key}.centre", f"{_pt(c)} m lies in the water, {-sd:.3g} m from the nearest wall: a patch "
+                         f"reads the wall particles just behind its centre; put the centre on the face of a wall "
+                         f"(within {0.5 * dx:g} m, half a particle spacing)")
+    inward = [round(x, 12) + 0.0 for x in _inward(d, dim, c, 0.25 * dx)]
+    n = pr.normal
+    if sum(a * b for a, b in zip(n, inward)) < 0.5 * math.hypot(*n):
+        hint = [round(x, 3) + 0.0 for x in inward]
+        raise SceneError(f"{key}.normal", f"{list(n)} does not point into the water from the wall at {_pt(c)} m, "
+                         f"whose normal into the domain is {_pt(inward)}; give that normal, e.g. {hint}")
+
+
+# ------------------------------------------------------------------------ the domain's shape
+def _outline(d) -> list[tuple[float, float]]:
+    """The inner outline (x, z) [m] of a domain's vertical section: a closed polygon, its
+    open top closed at the walls' height (a flume's beach and an inclined side included)."""
+    if isinstance(d, PolygonTank):
+        return [tuple(v) for v in d.vertices]
+    if isinstance(d, InclinedTank):
+        top = d.length + d.height * math.tan(math.radians(d.angle))
+        return [(0.0, 0.0), (d.length, 0.0), (top, d.height), (0.0, d.height)]
+    if isinstance(d, Flume) and d.beach is not None:
+        toe, slope = d.beach.toe, d.beach.slope
+        rise = slope * (d.length - toe)
+        if rise < d.height:
+            return [(0.0, 0.0), (toe, 0.0), (d.length, rise), (d.length, d.height), (0.0, d.height)]
+        return [(0.0, 0.0), (toe, 0.0), (toe + d.height / slope, d.height), (0.0, d.height)]
+    return [(0.0, 0.0), (d.length, 0.0), (d.length, d.height), (0.0, d.height)]
+
+
+def _sd_polygon(v, p) -> float:
+    """Signed distance [m] of the point ``p`` (x, z) from the closed polygon ``v``: < 0 inside."""
+    x, z = p
+    inside, best = False, math.inf
+    for k in range(len(v)):
+        (x0, z0), (x1, z1) = v[k], v[(k + 1) % len(v)]
+        ex, ez = x1 - x0, z1 - z0
+        t = max(0.0, min(1.0, ((x - x0) * ex + (z - z0) * ez) / (ex * ex + ez * ez)))
+        best = min(best, math.hypot(x - x0 - t * ex, z - z0 - t * ez))
+        if (z0 > z) != (z1 > z) and x < x0 + (z - z0) * ex / ez:
+            inside = not inside
+    return -best if inside else best
+
+
+def _sd_domain(d, dim, p) -> float:
+    """Signed distance [m] of the point ``p`` from the domain's walls (their faces): < 0 in
+    the domain, > 0 in or beyond a wall (exact inside, a lower bound outside)."""
+    if dim == 2:
+        return _sd_polygon(_outline(d), p)
+    if isinstance(d, CylinderTank):
+        return max(math.hypot(p[0], p[1]) - 0.5 * d.diameter, -p[2], p[2] - d.height)
+    across = max(-p[1], p[1] - d.width)
+    if isinstance(d, InclinedTank):
+        return max(_sd_polygon(_outline(d), (p[0], p[2])), across)
+    return max(-p[0], p[0] - d.length, across, -p[2], p[2] - d.height)
+
+
+def _inward(d, dim, p, h) -> list[float]:
+    """The unit normal into the domain at the wall point ``p`` (-grad of the signed
+    distance, central differences of step ``h``)."""
+    g = []
+    for k in range(dim):
+        a, b = list(p), list(p)
+        a[k] += h
+        b[k] -= h
+        g.append(-(_sd_domain(d, dim, a) - _sd_domain(d, dim, b)) / (2 * h))
+    n = math.hypot(*g)
+    return [x / n for x in g] if n > 0 else g
+
+
+def _check_outline(v) -> None:
+    """A polygon tank's outline does not cross itself."""
+    n = len(v)
+
+    def cross(o, a, b):
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+    for i in range(n):
+        a, b = v[i], v[(i + 1) % n]
+        for j in range(i + 2, n):
+            if i == 0 and j == n - 1:
+                continue  # the edges that meet at the first corner
+            c, e = v[j], v[(j + 1) % n]
+            d1, d2, d3, d4 = cross(c, e, a), cross(c, e, b), cross(a, b, c), cross(a, b, e)
+            if ((d1 > 0) != (d2 > 0) and (d3 > 0) != (d4 > 0)) or (0.0 in (d1, d2, d3, d4) and _touch(a, b, c, e)):
+                raise SceneError("domain.vertices", f"edge {i} ({_pt(a)} to {_pt(b)} m) and edge {j} ({_pt(c)} to "
+                                 f"{_pt(e)} m) cross: the outline must not cross itself; list the corners in order "
+                                 f"round the container")
+
+
+def _touch(a, b, c, e) -> bool:
+    """Whether the segments a-b and c-e share a point (for collinear or end-on cases)."""
+    def on(p, q, r):  # r on the segment p-q, given the three are collinear
+        return (min(p[0], q[0]) <= r[0] <= max(p[0], q[0]) and min(p[1], q[1]) <= r[1] <= max(p[1], q[1])
+                and (q[0] - p[0]) * (r[1] - p[1]) == (q[1] - p[1]) * (r[0] - p[0]))
+
+    return on(a, b, c) or on(a, b, e) or on(c, e, a) or on(c, e, b)
+
+
+# ------------------------------------------------------------------------ files of motion
+def _check_at2(b) -> None:
+    """The accelerogram reads as the builder will read it (:func:`fluid.motion.read_at2`)."""
+    from cosim.errors import InputError
+    from fluid.motion import read_at2
+
+    if not 3 <= b.baseline_degree <= 12:
+        raise SceneError("base_motion.baseline_degree", f"{b.baseline_degree} is out of range; give a whole number "
+                         f"from 3 to 12 (3 is the least that meets both end conditions, 6 is usual)")
+    try:
+        read_at2(b.file, b.baseline_degree)
+    except (InputError, OSError, ValueError) as e:
+        raise SceneError("base_motion.file", f"{e}. A PEER NGA .AT2 record has 4 header lines, the 4th giving NPTS "
+                         f"and DT (e.g. 'NPTS=  4000, DT= .0050 SEC'), then NPTS accelerations in g; fix the file "
+                         f"or give another") from None
+
+
+def _rows_of_numbers(path, key, strict: bool) -> list[list[float]]:
+    """The numeric rows of a table file. ``strict``: every line that is not a comment
+    (``#``) must be whitespace-separated numbers, as ``numpy.loadtxt`` reads them (base
+    motion); otherwise (a paddle record, ``MotionRecord.from_file``) commas also separate
+    and text lines before the first row of numbers are a header."""
+    from pathlib import Path
+
+    try:
+        text = Path(path).read_text(encoding="utf-8")
+    except (OSError, ValueError) as e:
+        raise SceneError(key, f"{path!r} cannot be read as text ({e}); give a table of numbers") from None
+    rows = []
+    for n, line in enumerate(text.splitlines(), 1):
+        body = line.split("#", 1)[0] if strict else line
+        parts = body.split() if strict else body.replace(",", " ").split()
+        if not parts:
+            continue
+        try:
+            rows.append([float(x) for x in parts])
+        except ValueError:
+            if not strict and not rows:
+                continue  # a header
+            how = ("numbers separated by spaces or tabs (lines starting with # are comments)" if strict else
+                   "numbers separated by spaces, tabs or commas (text lines before the first row are a header)")
+            raise SceneError(key, f"line {n} of {path!r} is not a row of numbers: {line.strip()[:60]!r}; give "
+                             f"rows of {how}: the time [s] first, then the values") from None
+    return rows
+
+
+def _samples(rows, path, column, file_key, column_key, strict: bool):
+    """(times, values) of ``column`` of a table's rows, checked: enough columns and rows
+    (``strict``: every row as wide as the first), finite, times increasing."""
+    if not rows:
+        raise SceneError(file_key, f"{path!r} holds no row of numbers; give rows of time [s] and values")
+    width = min(len(r) for r in rows)
+    if width != max(len(r) for r in rows) and (strict or width <= column):
+        short = next(k for k, r in enumerate(rows) if len(r) != len(rows[0]))
+        raise SceneError(file_key, f"row {short + 1} of {path!r} has {len(rows[short])} value(s), row 1 has "
+                         f"{len(rows[0])}; give every row the same columns")
+    if width <= column:
+        last = (f"its value columns are 1 .. {width - 1}; give one of them" if width > 1
+                else "it has the time column only; add a column of values")
+        raise SceneError(column_key, f"{column} is beyond the last column of {path!r} ({width} column(s), 0 is the "
+                         f"time): {last}")
+    t = [r[0] for r in rows]
+    v = [r[column] for r in rows]
+    if len(rows) < 4:
+        raise SceneError(file_key, f"{path!r} has {len(rows)} row(s); a record needs at least 4 samples (a cubic "
+                         f"spline runs through them): give more rows")
+    bad = next((k for k in range(len(t)) if not (math.isfinite(t[k]) and math.isfinite(v[k]))), None)
+    if bad is not None:
+        raise SceneError(file_key, f"row {bad + 1} of {path!r} holds a value that is not finite ({t[bad]!r}, "
+                         f"{v[bad]!r}); give finite numbers")
+    k = next((k for k in range(1, len(t)) if not t[k] > t[k - 1]), None)
+    if k is not None:
+        raise SceneError(file_key, f"the times of {path!r} must increase: row {k + 1} (t = {t[k]:g} s) follows "
+                         f"t = {t[k - 1]:g} s; sort the rows by time and drop repeated times")
+    return t, v
+
+
+def _at_rest(shift, dx, key, what, fix="") -> None:
+    """A prescribed wall starts where it is built: its displacement ``shift`` [m] at t = 0
+    is below a tenth of the particle spacing."""
+    if abs(shift) > 0.1 * dx:
+        raise SceneError(key, f"{what} {shift:.4g} m from where the walls are built at t = 0 (the record's value "
+                         f"there, times scale): they would jump that far into the water at the first step; give "
+                         f"a record that starts at 0 (subtract its value at t = 0){fix}")
+
+
+def _check_table_motion(s) -> None:
+    import numpy as np
+
+    from cosim.errors import InputError
+    from fluid.motion import Tabulated
+
+    b = s.base_motion
+    rows = _rows_of_numbers(b.file, "base_motion.file", strict=True)
+    t, v = _samples(rows, b.file, b.column, "base_motion.file", "base_motion.column", strict=True)
+    try:  # as the builder reads it
+        np.loadtxt(b.file, comments="#", delimiter=None, ndmin=2)
+        sig = Tabulated(tuple(t), tuple(x * b.scale for x in v), b.quantity)
+    except (InputError, ValueError) as e:
+        raise SceneError("base_motion.file", f"{b.file!r}: {e}; give rows of numbers: the time [s] first, then the "
+                         f"values") from None
+    _at_rest(float(sig.state(0.0)[0]), s.fluid.dx, "base_motion.file", "the table moves the tank")
+
+
+def _check_paddle_record(s) -> None:
+    from cosim.errors import InputError
+    from fluid.wavemaker import MotionRecord
+
+    w = s.waves
+    rows = _rows_of_numbers(w.file, "waves.file", strict=False)
+    _samples(rows, w.file, w.column, "waves.file", "waves.column", strict=False)
+    try:  # as the builder reads it
+        value = float(MotionRecord.from_file(w.file, w.column, w.scale, w.t_shift)(0.0)[0])
+    except InputError as e:
+        raise SceneError("waves.file", f"{e}; give rows of numbers: the time [s] first, then the values") from None
+    if w.paddle == "piston":
+        _at_rest(value, s.fluid.dx, "waves.file", "the record puts the piston", ", or a t_shift that starts it there")
+    else:  # the flap's top moves by the angle times the flume's height
+        _at_rest(value * s.domain.height, s.fluid.dx, "waves.file",
+                 f"the record turns the flap by {value:.4g} rad, which puts its top", ", or a t_shift that starts it "
+                 "there")
+
+
+# ------------------------------------------------------------------------ an MJCF file
+def _check_mjcf(b, key) -> dict:
+    """Parse and compile the MJCF file as the builder will (MuJoCo, imported here only);
+    the bodies named in ``bodies`` must be in it and free to move. Returns the names of
+    the file's bodies (``all``), of the coupled ones (``coupled``) and each site's body."""
+    import xml.etree.ElementTree as ET
+
+    try:
+        ET.parse(b.file)
+    except ET.ParseError as e:
+        raise SceneError(f"{key}.file", f"{b.file!r} is not XML ({e}); give an MJCF file, MuJoCo's XML model "
+                         f"(<mujoco> ... </mujoco>)") from None
+    import mujoco
+
+    try:
+        m = mujoco.MjSpec.from_file(str(b.file)).compile()
+    except ValueError as e:  # MuJoCo's own parse and compile errors
+        what = "; ".join(x.strip() for x in str(e).strip().splitlines() if x.strip())
+        raise SceneError(f"{key}.file", f"MuJoCo refuses {b.file!r}: {what}; correct the file there") from None
+    body = mujoco.mjtObj.mjOBJ_BODY
+    every = [mujoco.mj_id2name(m, body, k) for k in range(1, m.nbody)]
+    for k, n in enumerate(b.bodies):
+        i = mujoco.mj_name2id(m, body, n)
+        if i < 0:
+            raise SceneError(f"{key}.bodies[{k}]", f"{n!r}: the file has no body of that name; its bodies: "
+                             f"{[x for x in every if x]}")
+        if m.body_weldid[i] == 0:
+            raise SceneError(f"{key}.bodies[{k}]", f"{n!r} is fixed to the world (neither it nor a body it hangs "
+                             f"from has a joint): it cannot move; give it a joint (e.g. <freejoint/>) or leave it "
+                             f"out of bodies")
+    coupled = list(b.bodies) or [mujoco.mj_id2name(m, body, k) for k in range(1, m.nbody) if m.body_dofnum[k] > 0]
+    if not coupled:
+        raise SceneError(f"{key}.file", f"{b.file!r} has no body that can move (none has a joint); give the "
+                         f"floating bodies a joint, e.g. <freejoint/>")
+    sites = {mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_SITE, k): mujoco.mj_id2name(m, body, int(m.site_bodyid[k]))
+             for k in range(m.nsite)}
+    return {"all": [x for x in every if x], "coupled": coupled, "sites": sites}
+
+
+def _check_mjcf_fairlead(mj, fairlead, key) -> None:
+    """``BODY.SITE`` of an MJCF model: a site of the file, on that body, which is coupled."""
+    body, site = fairlead.split(".")
+    if body not in mj["all"]:
+        raise SceneError(key, f"no body named {body!r} in the MJCF file; its bodies: {mj['all']}")
+    if body not in mj["coupled"]:
+        raise SceneError(key, f"body {body!r} is not one of the coupled bodies {mj['coupled']}: a line on it "
+                         f"would pull on nothing that moves; add it to bodies[0].bodies, or give it a joint")
+    if site not in mj["sites"]:
+        mine = sorted(k for k, v in mj["sites"].items() if v == body)
+        raise SceneError(key, f"the MJCF file has no site {site!r}; the sites of body {body!r}: {mine}; add "
+                         f"<site name=\"{site}\" pos=\"...\"/> to the body, or name one of these")
+    if mj["sites"][site] != body:
+        raise SceneError(key, f"site {site!r} is on body {mj['sites'][site]!r} in the MJCF file, not on {body!r}; "
+                         f"give it as \"{mj['sites'][site]}.{site}\"")
+
+
+# ------------------------------------------------------------------------ bodies' geometry
+def _solid(b, dim, floating: bool):
+    """A builder body at its pose, upright: ("box", centre, half extents), ("ball",
+    centre, radius) or ("cyl", centre, radius, half length; axis along z). Floating: its
+    footprint (the height is not known before it is built)."""
+    half = _extent(b, dim)
+    c = list(b.pos)
+    if floating:
+        if isinstance(b, Box) or dim == 2:
+            return ("box", c, half[:dim - 1])
+        return ("ball", c, b.radius)
+    if isinstance(b, Box):
+        return ("box", c, half)
+    if isinstance(b, Cylinder) and dim == 3:
+        return ("cyl", c, b.radius, 0.5 * b.length)
+    return ("ball", c, b.radius)
+
+
+def _dist_box(p, c, h) -> float:
+    return math.sqrt(sum(max(abs(x - y) - e, 0.0) ** 2 for x, y, e in zip(p, c, h)))
+
+
+def _overlap(a, b, tol) -> bool:
+    """Whether two solids (:func:`_solid`) overlap by more than ``tol`` [m]."""
+    if a[0] > b[0]:
+        a, b = b, a
+    kinds = (a[0], b[0])
+    if kinds == ("box", "box"):
+        return all(abs(x - y) < ha + hb - tol for x, y, ha, hb in zip(a[1], b[1], a[2], b[2]))
+    if kinds == ("ball", "ball"):
+        return math.dist(a[1], b[1]) < a[2] + b[2] - tol
+    if kinds == ("ball", "box"):
+        return _dist_box(a[1], b[1], b[2]) < a[2] - tol
+    if kinds == ("ball", "cyl"):
+        (p, r), (c, R, hz) = a[1:], b[1:]
+        out = math.hypot(max(math.hypot(p[0] - c[0], p[1] - c[1]) - R, 0.0), max(abs(p[2] - c[2]) - hz, 0.0))
+        return out < r - tol
+    if kinds == ("box", "cyl"):
+        (c, h), (q, R, hz) = a[1:], b[1:]
+        return _dist_box(q[:2], c[:2], h[:2]) < R - tol and abs(c[2] - q[2]) < h[2] + hz - tol
+    (p, r, hp), (q, R, hq) = a[1:], b[1:]  # two cylinders
+    return math.hypot(p[0] - q[0], p[1] - q[1]) < r + R - tol and abs(p[2] - q[2]) < hp + hq - tol
+
+
+def _bounds(b, dim, floating) -> str:
+    half = _extent(b, dim)
+    n = dim - 1 if floating else dim
+    return _span([b.pos[k] - half[k] for k in range(n)], [b.pos[k] + half[k] for k in range(n)], dim, n)
+
+
+def _check_overlaps(s, dim) -> None:
+    """Builder bodies at given poses do not start inside each other; two floating ones
+    do not share their footprint (their heights are computed later). Turned bodies
+    (euler) are left out."""
+    solids = []
+    for j, b in enumerate(s.bodies):
+        if isinstance(b, MJCF) or b.euler is not None:
+            continue
+        floating = b.place == "floating"
+        me = _solid(b, dim, floating)
+        for i, a, other, a_floating in solids:
+            if a_floating != floating:
+                continue  # one floating, one given: the floating one's height is not known yet
+            tol = 1e-9 * max(1.0, *(abs(x) for x in b.pos + a.pos))
+            if _overlap(me, other, tol):
+                raise SceneError(f"bodies[{j}].pos", f"body {b.name!r} ({_bounds(b, dim, floating)}) overlaps "
+                                 f"body {a.name!r} (bodies[{i}], {_bounds(a, dim, floating)}) at the start"
+                                 f"{': both float, so their footprints must be apart' if floating else ''}; move "
+                                 f"one clear of the other")
+        solids.append((j, b, me, floating))
+
+
+_WALLS = {Flume: "beach", InclinedTank: "inclined side", PolygonTank: "polygon's wall", CylinderTank: "round wall"}
+
+
+def _check_walls(s, dim) -> None:
+    """Beyond the domain's box (:func:`_check_inside`): bodies at a given pose clear of a
+    flume's beach, an inclined side and a polygon's walls; any body within a cylinder
+    tank's round wall."""
+    d = s.domain
+    if type(d) not in _WALLS or (isinstance(d, Flume) and d.beach is None):
+        return
+    wall = _WALLS[type(d)]
+    for i, b in enumerate(s.bodies):
+        if isinstance(b, MJCF) or b.euler is not None:
+            continue
+        half, floating = _extent(b, dim), b.place == "floating"
+        tol = 1e-9 * max(1.0, *(abs(x) for x in b.pos))
+        fix = "move it (or make it smaller) so that it lies in the water"
+        if isinstance(d, CylinderTank):
+            R, (x, y) = 0.5 * d.diameter, b.pos[:2]
+            far = (max(math.hypot(x + sx * half[0], y + sy * half[1]) for sx in (-1, 1) for sy in (-1, 1))
+                   if isinstance(b, Box) else math.hypot(x, y) + b.radius)
+            if far > R + tol:
+                raise SceneError(f"bodies[{i}].pos", f"the body reaches {far:.4g} m from the tank's axis, beyond its "
+                                 f"radius {R:g} m, into the {wall}; {fix}")
+            continue
+        if floating:
+            continue  # its height is computed when it is built
+        v = _outline(d)
+        c = (b.pos[0], b.pos[-1])
+        hx, hz = half[0], half[-1]
+        if isinstance(b, Sphere) or (isinstance(b, Cylinder) and dim == 2):
+            gap = -_sd_polygon(v, c)
+            if gap < b.radius - tol:
+                raise SceneError(f"bodies[{i}].pos", f"the body (radius {b.radius:g} m about {_pt(c)} m in x-z) "
+                                 f"reaches {b.radius - gap:.4g} m into the {wall}; {fix}")
+            continue
+        corners = [(c[0] + sx * hx, c[1] + sz * hz) for sx in (-1, 1) for sz in (-1, 1)]
+        depth, q = max((_sd_polygon(v, q), q) for q in corners)
+        if depth > tol:
+            raise SceneError(f"bodies[{i}].pos", f"the body's corner {_pt(q)} m (in x-z) lies {depth:.3g} m deep in "
+                             f"the {wall}; {fix}")
+        for q in v:
+            if abs(q[0] - c[0]) < hx - tol and abs(q[1] - c[1]) < hz - tol:
+                raise SceneError(f"bodies[{i}].pos", f"the {wall}'s corner {_pt(q)} m lies inside the body "
+                                 f"({_bounds(b, dim, False)}); {fix}")

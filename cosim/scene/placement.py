@@ -49,46 +49,96 @@ def submerged_volume(body, dim: int, d: float) -> float:
 
 
 def _line_pull(lines, fairleads_w) -> float:
-    """Sum of the lines' downward pull [N] on their fairleads at these positions."""
+    """Sum of the lines' downward pull [N] on their fairleads at these positions (a
+    fairlead at its anchor's seabed height or above it: the callers keep to those)."""
     from moorings.catenary import solve
 
     total = 0.0
     for ln, p in zip(lines, fairleads_w):
-        h = p[-1] - ln.anchor[-1]
+        h = max(p[-1] - ln.anchor[-1], 0.0)  # round-off at the draft where it reaches the seabed
         X = math.dist(p[:-1], ln.anchor[:-1])
-        if h <= 0:
-            return math.inf  # the fairlead at or below its anchor: drafts that deep are not it
         r = solve(X, h, ln.length, ln.weight, ln.EA)
         total += float(r.V)
     return total
 
 
-def floating_height(body, dim: int, level: float, rho: float, g: float, lines=(), index: int = 0) -> float:
+def _bisect(f, lo: float, hi: float, scale: float) -> float:
+    """The root of ``f`` (increasing, f(lo) <= 0 < f(hi)) to 1e-12 of ``scale``."""
+    while hi - lo > 1e-12 * scale:
+        mid = 0.5 * (lo + hi)
+        if f(mid) > 0:
+            hi = mid
+        else:
+            lo = mid
+    return 0.5 * (lo + hi)
+
+
+def floating_height(body, dim: int, level: float, rho: float, g: float, lines=(), index: int = 0,
+                    keys=None) -> float:
     """Height [m] of the centre of the upright ``body`` floating on water of density
     ``rho`` [kg/m^3] with its surface at ``level`` [m], pulled by the mooring ``lines``
-    (``Line`` records ending on it) at its fairleads; ``index`` names it in errors."""
+    (``Line`` records ending on it) at its fairleads; ``index`` names it in errors, ``keys``
+    the lines (their key paths, default ``moorings.lines[k]`` for the k-th of ``lines``).
+
+    Refused (:class:`SceneError`): a body that sinks (``bodies[index].place``); a fairlead
+    that comes down to its anchor's seabed before the body floats (the line's ``anchor``:
+    the seabed is the horizontal plane through the anchor, and a fairlead below it has no
+    catenary); an inextensible line too short to reach its fairlead at any draft (the
+    line's ``length``)."""
     volume, height = volume_and_height(body, dim)
     mass = body.mass if body.mass is not None else body.density * volume
     horiz = tuple(body.pos)
     offsets = [body.fairleads[ln.fairlead.split(".")[1]] for ln in lines]
+    keys = list(keys) if keys is not None else [f"moorings.lines[{k}]" for k in range(len(lines))]
 
-    def excess(d):  # buoyancy minus the loads [N] at draft d
+    def points(d):  # the fairleads [m] at draft d
         zc = level - d + 0.5 * height
         if dim == 2:
-            pts = [(horiz[0] + o[0], zc + o[1]) for o in offsets]
-        else:
-            pts = [(horiz[0] + o[0], horiz[1] + o[1], zc + o[2]) for o in offsets]
-        return rho * g * submerged_volume(body, dim, d) - mass * g - _line_pull(lines, pts)
+            return [(horiz[0] + o[0], zc + o[1]) for o in offsets]
+        return [(horiz[0] + o[0], horiz[1] + o[1], zc + o[2]) for o in offsets]
 
-    if excess(height) <= 0:
-        raise SceneError(f"bodies[{index}].place", f"body {body.name!r} ({mass:.4g} kg) sinks: fully submerged it "
-                         f"displaces {rho * volume:.4g} kg of water, less than it and its lines' pull weigh; "
-                         f"lighten it or place it at a given pos")
-    lo, hi = 0.0, height
-    while hi - lo > 1e-12 * height:
-        mid = 0.5 * (lo + hi)
-        if excess(mid) > 0:
-            hi = mid
-        else:
-            lo = mid
-    return level - 0.5 * (lo + hi) + 0.5 * height
+    def free(d):  # buoyancy minus weight [N] at draft d
+        return rho * g * submerged_volume(body, dim, d) - mass * g
+
+    def excess(d):  # buoyancy minus the loads [N] at draft d
+        return free(d) - _line_pull(lines, points(d))
+
+    def sinks():
+        return SceneError(f"bodies[{index}].place", f"body {body.name!r} ({mass:.4g} kg) sinks: fully submerged it "
+                          f"displaces {rho * volume:.4g} kg of water, less than it and its lines' pull weigh; "
+                          f"lighten it or place it at a given pos")
+
+    def too_short(d, how):  # the first inextensible line that cannot reach its fairlead at draft d
+        for k, (ln, p) in enumerate(zip(lines, points(d))):
+            dist = math.dist(p, ln.anchor)
+            if ln.EA is None and dist > ln.length * (1 + 1e-12):
+                return SceneError(f"{keys[k]}.length", f"{ln.length:g} m is shorter than the straight distance "
+                                  f"{dist:.4g} m from its anchor to its fairlead {ln.fairlead!r} with body "
+                                  f"{body.name!r} {how}, the nearest it comes: an inextensible line cannot reach; "
+                                  f"give a length of at least {dist:.4g} m, move the anchor closer, or give EA "
+                                  f"(an elastic line that starts stretched)")
+        return None
+
+    if free(height) <= 0:
+        raise sinks()
+    # the draft at which each fairlead comes down to its anchor's seabed: the deepest there is
+    reach = [level + 0.5 * height + o[-1] - ln.anchor[-1] for ln, o in zip(lines, offsets)]
+    k = min(range(len(lines)), key=reach.__getitem__, default=None)
+    d_hi = height if k is None or reach[k] >= height else reach[k]
+    if d_hi <= 0 or excess(d_hi) <= 0:
+        err = None if d_hi <= 0 else too_short(d_hi, "fully submerged" if d_hi == height else
+                                                f"sunk until the fairlead {lines[k].fairlead!r} is down at its "
+                                                f"anchor's seabed")
+        if err is not None:
+            raise err
+        if d_hi == height:
+            raise sinks()
+        ln, d0 = lines[k], _bisect(free, 0.0, height, height)
+        z0 = level - d0 + 0.5 * height + offsets[k][-1]
+        where = (f"even with the body's bottom at the water level its fairlead {ln.fairlead!r} is at z = "
+                 f"{level + 0.5 * height + offsets[k][-1]:.4g} m" if d_hi <= 0 else
+                 f"it floats only at a draft beyond {d_hi:.4g} m, where its fairlead {ln.fairlead!r} is below it")
+        raise SceneError(f"{keys[k]}.anchor", f"body {body.name!r} starts below this anchor's seabed z = "
+                         f"{ln.anchor[-1]:g} m (the horizontal plane through the anchor): {where}; put the anchor "
+                         f"lower, below z = {z0:.4g} m (the fairlead's height when the body floats without lines)")
+    return level - _bisect(excess, 0.0, d_hi, height) + 0.5 * height
