@@ -1,7 +1,11 @@
 """A catalogue of bad scenes: each is refused before any work is done, from TOML (a dict
 read by ``from_dict``, and the same change made by ``--set``, ``with_values``) and in
 Python (the classes constructed directly), naming the exact key path and saying what would
-be accepted.
+be accepted. Four tables: the scene's fields (:data:`CASES`), the contents of the files a
+scene names (:data:`FILE_CASES`, written into the working folder first), what is only known
+once the scene is built (:data:`BUILD_CASES`: refused by ``run`` before it writes anything)
+and the command line (:data:`CLI_CASES`: ``cosim run`` in a subprocess exits with status 2,
+says what is wrong on stderr and makes no output folder).
 
 Each case takes one of the valid base scenes below and changes it (``key = value``, or a
 key left out); ``path`` is the key path the error must name, ``says`` a fragment of its
@@ -17,11 +21,16 @@ it with ``python tests/test_scene_errors.py > docs/scene_errors.md``.
 
 from __future__ import annotations
 
+import contextlib
 import copy
 import dataclasses
+import functools
 import math
+import os
 import re
+import subprocess
 import sys
+import tempfile
 import tomllib
 from dataclasses import dataclass
 from pathlib import Path
@@ -33,7 +42,8 @@ from cosim.scene import Scene
 from cosim.scene.fields import Part, Parts
 from cosim.scene.toml_io import from_dict, with_values
 
-DOC = Path(__file__).resolve().parents[1] / "docs" / "scene_errors.md"
+ROOT = Path(__file__).resolve().parents[1]
+DOC = ROOT / "docs" / "scene_errors.md"
 
 # ------------------------------------------------------------------------ base scenes
 BASES = {
@@ -144,7 +154,87 @@ lines = [
   { fairlead = "box.right", anchor = [20.0, -10.0], length = 25.0, weight = 50.0 },
 ]
 """,
+    "tank2d": """
+# 2-D: SPH tank shaken by a table of displacement (motion.txt)
+[world]
+dim = 2
+duration = 2.0
+
+[fluid]
+model = "sph"
+dx = 0.02
+
+[domain]
+kind = "tank"
+length = 1.0
+height = 0.6
+depth = 0.3
+
+[base_motion]
+kind = "table"
+file = "motion.txt"
+""",
+    "mjcf": """
+# 3-D: the analytic fluid, the body "float" of an MJCF file (float.xml) on one line
+[world]
+dim = 3
+duration = 2.0
+
+[fluid]
+model = "analytic"
+linear_damping = { float = [100.0, 100.0, 200.0, 10.0, 10.0, 10.0] }
+
+[[bodies]]
+shape = "mjcf"
+file = "float.xml"
+bodies = ["float"]
+
+[moorings]
+lines = [{ fairlead = "float.top", anchor = [0.0, 0.0, -10.0], length = 12.0, weight = 5.0 }]
+
+[probes]
+motion = ["float"]
+""",
 }
+
+#: the files beside the base scenes (in the working folder): valid, as the scenes read them
+BASE_FILES = {
+    "motion.txt": "# t [s]  x [m]\n0.0  0.0\n0.25  0.005\n0.5  0.0\n0.75  -0.005\n1.0  0.0\n",
+    "quake.AT2": ("PEER RECORD\nSYNTHETIC, 2024, STATION, 000\nACCELERATION TIME SERIES IN UNITS OF G\n"
+                  "NPTS=   10, DT=   .0100 SEC\n0.0 0.01 0.02 0.01 0.0\n-0.01 -0.02 -0.01 0.0 0.0\n"),
+    "paddle.txt": "t [s], x [m]\n0.0, 0.0\n0.5, 0.01\n1.0, 0.0\n1.5, -0.01\n2.0, 0.0\n",
+    "float.xml": """<mujoco>
+  <worldbody>
+    <body name="float"><freejoint/><geom type="box" size="0.5 0.5 0.25" density="500"/>
+      <site name="top" pos="0 0 0.25"/></body>
+    <body name="boat" pos="3 0 0"><freejoint/><geom type="box" size="0.5 0.3 0.2" density="400"/>
+      <site name="bow" pos="0.5 0 0"/></body>
+    <body name="post" pos="-3 0 0"><geom type="cylinder" size="0.1 1"/><site name="tip" pos="0 0 1"/></body>
+  </worldbody>
+</mujoco>
+""",
+}
+
+
+@contextlib.contextmanager
+def folder():
+    """A fresh working folder holding the base files (the scenes' relative names are read
+    from it)."""
+    old = os.getcwd()
+    with tempfile.TemporaryDirectory(prefix="scene-errors-") as tmp:
+        for name, text in BASE_FILES.items():
+            Path(tmp, name).write_text(text, encoding="utf-8")
+        os.chdir(tmp)
+        try:
+            yield Path(tmp)
+        finally:
+            os.chdir(old)
+
+
+@pytest.fixture(autouse=True)
+def _in_folder():
+    with folder():
+        yield
 
 OUT = object()  # an edit's value: leave the key out
 TYPE = TypeError  # the Python route: the call's own TypeError (unknown or missing keyword)
@@ -159,16 +249,21 @@ class Case:
     says: str  # a fragment of the message
     python: str | tuple | type | None  # the path in Python (and a fragment where Python's message differs),
     #                                     TYPE, or None: no Python counterpart
+    files: tuple = ()  # ((name, text), ...): files written into the working folder first
 
     @property
     def python_path(self):
         return self.python[0] if isinstance(self.python, tuple) else self.python
 
+    def write_files(self):
+        for name, text in self.files:
+            Path(name).write_text(text, encoding="utf-8")
 
-def case(id, base, change, path, says, python):
+
+def case(id, base, change, path, says, python, files=None):
     if isinstance(change, tuple) and change and not isinstance(change[0], tuple):
         change = (change,)
-    return Case(id, base, change, path, says, python)
+    return Case(id, base, change, path, says, python, tuple((files or {}).items()))
 
 
 INCLINED = {"kind": "inclined-tank", "angle": 95.0, "length": 1.0, "depth": 0.2, "height": 0.6, "width": 0.5}
@@ -400,6 +495,63 @@ CASES = [
          "is beyond the breaking limit 1/7; lower H or lengthen T", "Scene.waves.height"),
     case("a wavemaker without gravity", "flume", ("world.gravity", 0.0), "world.gravity",
          "a wavemaker's waves need gravity > 0", "Scene.world.gravity"),
+    # -- where things start: bodies in the water and apart, lines that reach, water that holds particles
+    case("a body below the floor", "tank3d", (("bodies[0].place", "given"), ("bodies[0].pos", [0.5, 0.25, 0.02])),
+         "bodies[0].pos", "the body reaches -0.03 .. 0.07 m along z, outside the domain's 0 .. 0.6 m",
+         "Scene.bodies[0].pos"),
+    case("a body in a flume's beach", "flume", (("domain.beach", {"toe": 2.0, "slope": 0.3}),
+                                               ("bodies[0].place", "given"), ("bodies[0].pos", [2.6, 0.1])),
+         "bodies[0].pos", "the body's corner (2.7, 0.05) m (in x-z) lies 0.153 m deep in the beach; move it",
+         "Scene.bodies[0].pos"),
+    case("a body in a cylinder tank's round wall", "tank3d",
+         (("domain", {"kind": "cylinder-tank", "diameter": 1.0, "depth": 0.2, "height": 0.6}),
+          ("bodies[0].pos", [0.4, 0.3])),
+         "bodies[0].pos", "the body reaches 0.55 m from the tank's axis, beyond its radius 0.5 m, into the round wall",
+         "Scene.bodies[0].pos"),
+    case("two bodies overlapping", "analytic", ("bodies[1].pos", [4.0, 0.0]), "bodies[1].pos",
+         "body 'buoy' (x 3.7 .. 4.3 m, z -0.3 .. 0.3 m) overlaps body 'box' (bodies[0], x 2 .. 4 m, z -0.5 .. 0.5 m) "
+         "at the start", "Scene.bodies[1].pos"),
+    case("two floating bodies on one footprint", "tank3d",
+         ("bodies", [{"shape": "sphere", "name": "ball", "radius": 0.05, "pos": [0.5, 0.25], "place": "floating",
+                      "density": 500.0},
+                     {"shape": "sphere", "name": "ball2", "radius": 0.05, "pos": [0.55, 0.25], "place": "floating",
+                      "density": 500.0}]),
+         "bodies[1].pos", "both float, so their footprints must be apart", "Scene.bodies[1].pos"),
+    case("a fairlead below its anchor's seabed", "analytic", ("moorings.lines[0].anchor", [-20.0, 0.0]),
+         "moorings.lines[0].anchor", "the fairlead 'box.left' starts at z = -0.5 m, below this anchor's seabed "
+         "z = 0 m", "Scene.moorings.lines[0].anchor"),
+    case("a line too short to reach", "analytic", ("moorings.lines[1].length", 15.0), "moorings.lines[1].length",
+         "15 m is shorter than the straight distance 18.61 m from the anchor (20, -10) m to the fairlead 'box.right' "
+         "at (4, -0.5) m at the start", "Scene.moorings.lines[1].length"),
+    case("two lines with one label", "analytic",
+         (("moorings.lines[0].name", "chain"), ("moorings.lines[1].name", "chain")), "moorings.lines[1].name",
+         "'chain' is also the label of moorings.lines[0]", "Scene.moorings.lines[1].name"),
+    case("a water block thinner than dx", "tank3d",
+         ("domain", {"kind": "tank", "length": 1.0, "width": 0.5, "height": 0.6,
+                     "water": [{"lo": [0.0, 0.0, 0.0], "hi": [0.3, 0.5, 0.01]}]}),
+         "domain.water[0]", "the block is 0.01 m thick along z, less than one particle spacing (fluid.dx = 0.02 m): "
+         "it would hold no particle", "Scene.domain.water[0]"),
+    case("two water blocks overlapping", "tank3d",
+         ("domain", {"kind": "tank", "length": 1.0, "width": 0.5, "height": 0.6,
+                     "water": [{"lo": [0.0, 0.0, 0.0], "hi": [0.3, 0.5, 0.3]},
+                               {"lo": [0.2, 0.0, 0.0], "hi": [0.5, 0.5, 0.2]}]}),
+         "domain.water[1]", "overlaps domain.water[0]", "Scene.domain.water[1]"),
+    case("a polygon that crosses itself", "flume",
+         (("waves", OUT), ("domain", {"kind": "polygon", "fill_level": 0.5,
+                                      "vertices": [[0.0, 0.0], [3.0, 0.0], [0.0, 1.0], [1.0, 1.0]]})),
+         "domain.vertices", "edge 1 ((3, 0) to (0, 1) m) and edge 3 ((1, 1) to (0, 0) m) cross",
+         "Scene.domain.vertices"),
+    case("a pressure patch outside the domain", "flume", ("probes.pressure[0].centre", [3.5, 0.1]),
+         "probes.pressure[0].centre", "(3.5, 0.1) m lies outside the domain (x 0 .. 3 m, z 0 .. 0.45 m)",
+         "Scene.probes.pressure[0].centre"),
+    case("a pressure patch off the wall", "flume", ("probes.pressure[0].centre", [2.5, 0.1]),
+         "probes.pressure[0].centre", "(2.5, 0.1) m lies in the water, 0.1 m from the nearest wall",
+         "Scene.probes.pressure[0].centre"),
+    case("a pressure patch facing out of the water", "flume", ("probes.pressure[0].normal", [1.0, 0.0]),
+         "probes.pressure[0].normal", "[1.0, 0.0] does not point into the water from the wall at (3, 0.1) m, whose "
+         "normal into the domain is (-1, 0); give that normal, e.g. [-1.0, 0.0]", "Scene.probes.pressure[0].normal"),
+    case("a pressure patch smaller than dx", "flume", ("probes.pressure[0].size", 0.01), "probes.pressure[0].size",
+         "0.01 m is less than one particle spacing (fluid.dx = 0.02 m)", "Scene.probes.pressure[0].size"),
     # -- times and files
     case("plot_at outside the run", "flume", ("world.plot_at", [2.5, 6.0]), "world.plot_at[1]",
          "6.0 s lies outside the run, 0 .. 5.0 s", "World.plot_at[1]"),
@@ -421,6 +573,136 @@ CASES = [
     case("--set under a value", "analytic", "world.dim.x=1", "world.dim.x", "world.dim is 2, not a table", None),
     case("--set without a value", "analytic", "fluid.rho", "fluid.rho", "give --set as KEY.PATH=VALUE", None),
     case("--set with a bad key path", "analytic", "fluid..rho=1000", "fluid..rho", "is not a key path", None),
+]
+
+
+AT2_HEAD = "PEER RECORD\nSYNTHETIC, 2024, STATION, 000\nACCELERATION TIME SERIES IN UNITS OF G\n"
+MOVING_XML = ('<mujoco><worldbody><body name="float"><freejoint/>\n'
+              '<geom type="box" sizes="0.5 0.5 0.25"/></body></worldbody></mujoco>\n')
+
+#: the contents of the files a scene names (written into the working folder first)
+FILE_CASES = [
+    # -- an MJCF model
+    case("an MJCF file that is not XML", "mjcf", ("bodies[0].file", "notes.xml"), "bodies[0].file",
+         "'notes.xml' is not XML (syntax error: line 1, column 0); give an MJCF file", "Scene.bodies[0].file",
+         files={"notes.xml": "float: a 1 m box of density 500\n"}),
+    case("an MJCF file MuJoCo refuses", "mjcf", ("bodies[0].file", "typo.xml"), "bodies[0].file",
+         "MuJoCo refuses 'typo.xml': XML Error: Schema violation: unrecognized attribute: 'sizes'; Element 'geom', "
+         "line 2; correct the file there", "Scene.bodies[0].file", files={"typo.xml": MOVING_XML}),
+    case("an MJCF body the file does not have", "mjcf", ("bodies[0].bodies", ["float", "raft"]),
+         "bodies[0].bodies[1]", "'raft': the file has no body of that name; its bodies: ['float', 'boat', 'post']",
+         "Scene.bodies[0].bodies[1]"),
+    case("an MJCF body fixed to the world", "mjcf", ("bodies[0].bodies", ["post"]), "bodies[0].bodies[0]",
+         "'post' is fixed to the world (neither it nor a body it hangs from has a joint): it cannot move",
+         "Scene.bodies[0].bodies[0]"),
+    case("an MJCF file with nothing that moves", "mjcf",
+         (("bodies[0].file", "statue.xml"), ("bodies[0].bodies", [])), "bodies[0].file",
+         "'statue.xml' has no body that can move (none has a joint)", "Scene.bodies[0].file",
+         files={"statue.xml": '<mujoco><worldbody><body name="post"><geom type="sphere" size="1"/></body>'
+                              '</worldbody></mujoco>\n'}),
+    case("a fairlead on a site the MJCF file lacks", "mjcf", ("moorings.lines[0].fairlead", "float.keel"),
+         "moorings.lines[0].fairlead", "the MJCF file has no site 'keel'; the sites of body 'float': ['top']",
+         "Scene.moorings.lines[0].fairlead"),
+    case("a fairlead on an MJCF body not coupled", "mjcf", ("moorings.lines[0].fairlead", "boat.bow"),
+         "moorings.lines[0].fairlead", "body 'boat' is not one of the coupled bodies ['float']",
+         "Scene.moorings.lines[0].fairlead"),
+    case("a probe on an MJCF body not coupled", "mjcf", ("probes.motion", ["float", "boat"]), "probes.motion[1]",
+         "'boat' is not one of the bodies coupled from the MJCF file: ['float']", "Scene.probes.motion[1]"),
+    # -- an accelerogram
+    case("an .AT2 record shorter than its NPTS", "tank2d", ("base_motion", {"kind": "earthquake", "file": "short.AT2"}),
+         "base_motion.file", "read_at2: short.AT2 declares NPTS=10 but holds 5 values. A PEER NGA .AT2 record has "
+         "4 header lines", "Scene.base_motion.file",
+         files={"short.AT2": AT2_HEAD + "NPTS=   10, DT=   .0100 SEC\n0.0 0.01 0.02 0.01 0.0\n"}),
+    case("an .AT2 header without NPTS and DT", "tank2d", ("base_motion", {"kind": "earthquake", "file": "bare.AT2"}),
+         "base_motion.file", "read_at2: line 4 of bare.AT2 should give NPTS and DT, e.g. 'NPTS=  4000, DT= .0050 "
+         "SEC'; got 'DATA FOLLOW'", "Scene.base_motion.file",
+         files={"bare.AT2": AT2_HEAD + "DATA FOLLOW\n0.0 0.01 0.02 0.01 0.0\n"}),
+    case("a baseline degree the correction lacks", "tank2d",
+         ("base_motion", {"kind": "earthquake", "file": "quake.AT2", "baseline_degree": 2}),
+         "base_motion.baseline_degree", "2 is out of range; give a whole number from 3 to 12",
+         "Scene.base_motion.baseline_degree"),
+    # -- a table of motion
+    case("a table that is not numbers", "tank2d", ("base_motion.file", "labelled.txt"), "base_motion.file",
+         "line 1 of 'labelled.txt' is not a row of numbers: 'time displacement'; give rows of numbers separated by "
+         "spaces or tabs", "Scene.base_motion.file",
+         files={"labelled.txt": "time displacement\n0.0 0.0\n0.5 0.01\n1.0 0.0\n1.5 -0.01\n"}),
+    case("a table without the column", "tank2d", ("base_motion.column", 2), "base_motion.column",
+         "2 is beyond the last column of 'motion.txt' (2 column(s), 0 is the time): its value columns are 1 .. 1",
+         "Scene.base_motion.column"),
+    case("a table whose times go back", "tank2d", ("base_motion.file", "unsorted.txt"), "base_motion.file",
+         "the times of 'unsorted.txt' must increase: row 4 (t = 0.5 s) follows t = 1 s; sort the rows",
+         "Scene.base_motion.file", files={"unsorted.txt": "0.0 0.0\n0.25 0.005\n1.0 0.0\n0.5 -0.005\n"}),
+    case("a table of three rows", "tank2d", ("base_motion.file", "three.txt"), "base_motion.file",
+         "'three.txt' has 3 row(s); a record needs at least 4 samples", "Scene.base_motion.file",
+         files={"three.txt": "0.0 0.0\n0.5 0.01\n1.0 0.0\n"}),
+    case("a table that does not start at rest", "tank2d", ("base_motion.file", "offset.txt"), "base_motion.file",
+         "the table moves the tank 0.05 m from where the walls are built at t = 0", "Scene.base_motion.file",
+         files={"offset.txt": "0.0 0.05\n0.5 0.06\n1.0 0.05\n1.5 0.04\n"}),
+    case("a paddle record without the column", "flume",
+         ("waves", {"kind": "record", "paddle": "piston", "file": "paddle.txt", "column": 2}), "waves.column",
+         "2 is beyond the last column of 'paddle.txt' (2 column(s), 0 is the time)", "Scene.waves.column"),
+    case("a paddle record with a line of text", "flume",
+         ("waves", {"kind": "record", "paddle": "piston", "file": "broken.txt"}), "waves.file",
+         "line 4 of 'broken.txt' is not a row of numbers: '1.0 n/a'; give rows of numbers separated by spaces, tabs "
+         "or commas (text lines before the first row are a header)", "Scene.waves.file",
+         files={"broken.txt": "t x\n0.0 0.0\n0.5 0.01\n1.0 n/a\n1.5 -0.01\n2.0 0.0\n"}),
+    case("a paddle record that does not start at rest", "flume",
+         ("waves", {"kind": "record", "paddle": "flap", "file": "paddle.txt", "t_shift": -0.5}), "waves.file",
+         "the record turns the flap by 0.01 rad, which puts its top 0.0045 m from where the walls are built at t = 0",
+         "Scene.waves.file"),
+]
+
+#: what is only known once the scene is built (a floating body's height): refused by run()
+#: before it writes anything; the scene itself constructs
+BUILD_CASES = [
+    case("a floating body's fairlead below its anchor's seabed", "flume", ("moorings.lines[0].anchor", [0.5, 0.28]),
+         "moorings.lines[0].anchor", "body 'box' starts below this anchor's seabed z = 0.28 m (the horizontal plane "
+         "through the anchor): it floats only at a draft beyond 0.02 m, where its fairlead 'box.left' is below it; "
+         "put the anchor lower, below z = 0.25 m", None),
+    case("a floating body's line too short to reach", "flume", ("moorings.lines[0].length", 0.5),
+         "moorings.lines[0].length", "0.5 m is shorter than the straight distance 0.6325 m from its anchor to its "
+         "fairlead 'box.left' with body 'box' fully submerged, the nearest it comes", None),
+    case("a floating body that sinks", "flume", ("bodies[0].density", 1500.0), "bodies[0].place",
+         "body 'box' (30 kg) sinks: fully submerged it displaces 20 kg of water", None),
+]
+
+
+@dataclass(frozen=True)
+class CliCase:
+    id: str
+    args: tuple  # after `cosim run`; the output folder is the --out given (or out/)
+    says: str  # a fragment of the message on stderr
+    files: tuple = ()
+
+    @property
+    def out(self) -> str:
+        return self.args[self.args.index("--out") + 1]
+
+
+def cli(id, args, says, files=None):
+    return CliCase(id, tuple(args), says, tuple((files or {}).items()))
+
+
+SCENE = {"scene.toml": BASES["analytic"]}
+CLI_CASES = [
+    cli("a scene file that does not exist", ["nothing.toml", "--out", "out"],
+        "no scene file 'nothing.toml'; give a .toml file or a .py script that defines `scene`"),
+    cli("a scene file neither .toml nor .py", ["scene.json", "--out", "out"],
+        "scene.json: a scene is a .toml file or a .py script", {"scene.json": "{}\n"}),
+    cli("a script that defines no `scene`", ["make.py", "--out", "out"],
+        "make.py defines no Scene named `scene` (it has ['tank']); assign one: scene = Scene(...)",
+        {"make.py": "from cosim.scene import SPH, Scene, Tank\n\n"
+                    "tank = Scene(fluid=SPH(dx=0.05), domain=Tank(length=1.0, height=0.5, depth=0.2))\n"}),
+    cli("TOML that does not parse", ["bad.toml", "--out", "out"],
+        "bad.toml is not valid TOML: Expected ']' at the end of a table declaration (at line 2, column 7)",
+        {"bad.toml": "# a tank\n[world\ndim = 2\n"}),
+    cli("--set without '='", ["scene.toml", "--set", "world.duration", "--out", "out"],
+        "world.duration: give --set as KEY.PATH=VALUE, e.g. fluid.dx=0.01", SCENE),
+    cli("--resume without a checkpoint", ["scene.toml", "--resume", "--out", "out"],
+        "--resume: no checkpoint out/checkpoint.pkl; run without --resume first", SCENE),
+    cli("an output folder under a regular file", ["scene.toml", "--out", "notes.txt/out"],
+        "output folder 'notes.txt/out': 'notes.txt' is not a folder; give another --out",
+        SCENE | {"notes.txt": "not a folder\n"}),
 ]
 
 
@@ -510,18 +792,49 @@ def refusal(fn):
 
 def toml_error(c: Case) -> InputError:
     """The error of the case's TOML route (from_dict of the edited dict, or --set alone)."""
+    c.write_files()
     if isinstance(c.change, str):
         return refusal(lambda: with_values(from_dict(base_dict(c.base)), [c.change]))
     return refusal(lambda: from_dict(edited(c)))
 
 
+def build_error(c: Case, out: Path) -> InputError:
+    """The error of running the case's scene (which constructs) into ``out``."""
+    c.write_files()
+    scene = from_dict(edited(c))
+    return refusal(lambda: scene.run(out, progress=False))
+
+
+@functools.lru_cache(maxsize=None)
+def run_cli(c: CliCase) -> tuple[int, str, bool]:
+    """(exit status, stderr, whether the output folder exists) of ``python -m cosim.cli run
+    ARGS`` in a fresh folder holding the case's files."""
+    with tempfile.TemporaryDirectory(prefix="scene-errors-cli-") as tmp:
+        for name, text in c.files:
+            Path(tmp, name).write_text(text, encoding="utf-8")
+        env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(ROOT)] + [x for x in [os.environ.get("PYTHONPATH")]
+                                                                          if x]))
+        r = subprocess.run([sys.executable, "-m", "cosim.cli", "run", *c.args], capture_output=True, text=True,
+                           cwd=tmp, env=env, timeout=120)
+        return r.returncode, r.stderr, Path(tmp, c.out).exists()
+
+
+def cli_message(c: CliCase) -> str:
+    rc, err, _ = run_cli(c)
+    lines = err.strip().splitlines()
+    return lines[-1].removeprefix("cosim run: error: ") if lines else ""
+
+
 # ------------------------------------------------------------------------ the tests
-IDS = [c.id for c in CASES]
+SCENE_CASES = CASES + FILE_CASES
+IDS = [c.id for c in SCENE_CASES]
+ALL_IDS = IDS + [c.id for c in BUILD_CASES] + [c.id for c in CLI_CASES]
 
 
 def test_catalogue_is_large_and_ids_are_unique():
     assert len(CASES) >= 35
-    assert len(set(IDS)) == len(IDS)
+    assert len(FILE_CASES) + len(BUILD_CASES) + len(CLI_CASES) >= 25
+    assert len(set(ALL_IDS)) == len(ALL_IDS)
 
 
 @pytest.mark.parametrize("name", sorted(BASES))
@@ -531,7 +844,7 @@ def test_base_scenes_are_valid(name):
     assert with_values(scene, []) == scene
 
 
-@pytest.mark.parametrize("c", CASES, ids=IDS)
+@pytest.mark.parametrize("c", SCENE_CASES, ids=IDS)
 def test_refused_from_toml(c):
     err = toml_error(c)
     assert isinstance(err, InputError), f"{type(err).__name__}: {err}"
@@ -540,20 +853,24 @@ def test_refused_from_toml(c):
     assert str(err) == f"{c.path}: {err.problem}"
 
 
-@pytest.mark.parametrize("c", [c for c in CASES if not isinstance(c.change, str) and assignments(c)],
-                         ids=[c.id for c in CASES if not isinstance(c.change, str) and assignments(c)])
+SET_CASES = [c for c in SCENE_CASES if not isinstance(c.change, str) and assignments(c)]
+
+
+@pytest.mark.parametrize("c", SET_CASES, ids=[c.id for c in SET_CASES])
 def test_refused_by_set(c):
     """The same change made by --set on the valid base scene: the same error."""
+    c.write_files()
     err = refusal(lambda: with_values(from_dict(base_dict(c.base)), assignments(c)))
     assert isinstance(err, InputError), f"{type(err).__name__}: {err}"
     assert (err.path, err.problem) == (c.path, toml_error(c).problem)
 
 
-PY_CASES = [c for c in CASES if c.python is not None]
+PY_CASES = [c for c in SCENE_CASES if c.python is not None]
 
 
 @pytest.mark.parametrize("c", PY_CASES, ids=[c.id for c in PY_CASES])
 def test_refused_in_python(c):
+    c.write_files()
     err = refusal(lambda: build_python(edited(c)))
     if c.python is TYPE:  # the call's own refusal names the keyword
         assert isinstance(err, TypeError), f"{type(err).__name__}: {err}"
@@ -568,9 +885,39 @@ def test_refused_in_python(c):
         assert err.problem == toml_error(c).problem
 
 
+@pytest.mark.parametrize("c", BUILD_CASES, ids=[c.id for c in BUILD_CASES])
+def test_refused_when_built_before_anything_is_written(c, tmp_path):
+    """The scene constructs (in Python too); running it is refused while it is built, before
+    the output folder is made."""
+    c.write_files()
+    assert build_python(edited(c)) == from_dict(edited(c))
+    err = build_error(c, tmp_path / "out")
+    assert isinstance(err, InputError), f"{type(err).__name__}: {err}"
+    assert err.path == c.path and c.says in str(err), str(err)
+    assert str(err) == f"{c.path}: {err.problem}"
+    assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("c", CLI_CASES, ids=[c.id for c in CLI_CASES])
+def test_refused_by_the_command_line(c):
+    """``cosim run`` exits with status 2, the last line of stderr says what is wrong (no
+    traceback) and no output folder is made."""
+    rc, err, out_exists = run_cli(c)
+    assert rc == 2, err
+    assert "Traceback" not in err, err
+    assert err.strip().splitlines()[-1] == f"cosim run: error: {cli_message(c)}"
+    assert c.says in cli_message(c), err
+    assert not out_exists
+
+
 # ------------------------------------------------------------------------ the table
 def _cell(text: str) -> str:
     return text.replace("|", "\\|").replace("\n", " ")
+
+
+def _text(text: str) -> str:
+    """A message for a table cell: its tags (<freejoint/>) shown, not taken as HTML."""
+    return _cell(text.replace("&", "&amp;").replace("<", "&lt;"))
 
 
 def _code(text: str) -> str:
@@ -591,34 +938,98 @@ def describe(c: Case) -> str:
     return "<br>".join(out)
 
 
+def describe_files(c) -> str:
+    """The case's files, line by line, for the table."""
+    out = []
+    for name, text in c.files:
+        out.append(f"file {_code(name)}:<br>" + "<br>".join(_code(x) if x.strip() else "(blank)"
+                                                            for x in text.rstrip("\n").split("\n")))
+    return "<br>".join(out)
+
+
+def cli_files(c: CliCase) -> str:
+    out = []
+    for name, text in c.files:
+        if (name, text) in SCENE.items():
+            out.append(f"{_code(name)}: the base scene analytic")
+        else:
+            out.append(describe_files(dataclasses.replace(c, files=((name, text),))))
+    return "<br>".join(out)
+
+
+def _python(c) -> str:
+    return "\u2014" if c.python is None else "`TypeError`" if c.python is TYPE else _code(c.python_path)
+
+
 def render() -> str:
     """The catalogue as Markdown: docs/scene_errors.md."""
+    n = len(CASES) + len(FILE_CASES) + len(BUILD_CASES) + len(CLI_CASES)
     lines = [
         "# Scene errors",
         "",
-        "Generated from `tests/test_scene_errors.py` (the table is checked against the tests); "
+        "Generated from `tests/test_scene_errors.py` (the tables are checked against the tests); "
         "regenerate it with `python tests/test_scene_errors.py > docs/scene_errors.md`.",
         "",
-        f"Each of the {len(CASES)} inputs below is refused before any work is done, with the key path of the bad "
-        "field and what would be accepted: from a TOML file, by `cosim run --set KEY.PATH=VALUE` (where the change "
-        "can be written as assignments) and in Python. An input is a change to one of the valid base scenes at "
-        "the end (`key = value`, or a key left out). The error (`cosim.errors.InputError`) reads `PATH: MESSAGE`. "
+        f"Each of the {n} inputs below is refused before any step is taken and before anything is written, with "
+        "the key path of the bad field, what is wrong and how to fix it. The error (`cosim.errors.InputError`) "
+        "reads `PATH: MESSAGE`; `cosim run` prints it as `cosim run: error: PATH: MESSAGE` and exits with status 2.",
+        "",
+        "- [Scene fields](#scene-fields): refused when the scene is constructed, from a TOML file, by "
+        "`cosim run --set KEY.PATH=VALUE` (where the change can be written as assignments) and in Python;",
+        "- [File contents](#file-contents): the files a scene names (an MJCF model, an accelerogram, a table of "
+        "motion), read when the scene is constructed, as the builder will read them;",
+        "- [Known once built](#known-once-built): what depends on a floating body's computed height, refused "
+        "by `run` while it builds the scene, before the output folder is made;",
+        "- [The command line](#the-command-line): `cosim run` itself.",
+        "",
+        "An input is a change to one of the valid [base scenes](#base-scenes) (`key = value`, or a key left out), "
+        "with the [files beside them](#base-files) and the case's own files in the working folder. "
         "In Python a part does not know where it will be put: the error "
         "names its class (`Box.density`), or `Scene.` and the key path for the checks of the scene as a whole; "
         "an unknown or missing keyword is Python's own `TypeError`; \u2014 where there is no Python counterpart "
         "(the TOML field that picks a class, `--set` syntax).",
         "",
+        f"## Scene fields",
+        "",
+        f"{len(CASES)} inputs.",
+        "",
         "| # | case | base | input | key path | message | Python |",
         "|---|---|---|---|---|---|---|",
     ]
-    for i, c in enumerate(CASES, 1):
-        err = toml_error(c)
-        py = "\u2014" if c.python is None else "`TypeError`" if c.python is TYPE else _code(c.python_path)
-        lines.append(f"| {i} | {_cell(c.id)} | {c.base} | {_cell(describe(c))} | {_code(c.path)} | "
-                     f"{_cell(err.problem)} | {py} |")
+    k = 0
+    for c in CASES:
+        k += 1
+        lines.append(f"| {k} | {_cell(c.id)} | {c.base} | {_cell(describe(c))} | {_code(c.path)} | "
+                     f"{_text(toml_error(c).problem)} | {_python(c)} |")
+    lines += ["", "## File contents", "", f"{len(FILE_CASES)} inputs: the scene's change and the files it names.", "",
+              "| # | case | base | input | key path | message | Python |", "|---|---|---|---|---|---|---|"]
+    for c in FILE_CASES:
+        k += 1
+        what = describe(c) + ("<br>" + describe_files(c) if c.files else "")
+        lines.append(f"| {k} | {_cell(c.id)} | {c.base} | {_cell(what)} | {_code(c.path)} | "
+                     f"{_text(toml_error(c).problem)} | {_python(c)} |")
+    lines += ["", "## Known once built", "", f"{len(BUILD_CASES)} inputs: the scene constructs; `run` (and "
+              "`cosim run`) refuses it while building, before anything is written. The same in Python.", "",
+              "| # | case | base | input | key path | message |", "|---|---|---|---|---|---|"]
+    with tempfile.TemporaryDirectory(prefix="scene-errors-build-") as tmp:
+        for c in BUILD_CASES:
+            k += 1
+            lines.append(f"| {k} | {_cell(c.id)} | {c.base} | {_cell(describe(c))} | {_code(c.path)} | "
+                         f"{_text(build_error(c, Path(tmp) / c.id).problem)} |")
+    lines += ["", "## The command line", "", f"{len(CLI_CASES)} inputs: `cosim run ARGS` in a folder holding the "
+              "files; it exits with status 2, prints the message on stderr and makes no output folder (the "
+              "`--out` given).", "",
+              "| # | case | command | files | message |", "|---|---|---|---|---|"]
+    for c in CLI_CASES:
+        k += 1
+        lines.append(f"| {k} | {_cell(c.id)} | {_code('cosim run ' + ' '.join(c.args))} | {_cell(cli_files(c))} | "
+                     f"{_text(cli_message(c))} |")
     lines += ["", "## Base scenes", ""]
     for name, text in BASES.items():
         lines += [f"### {name}", "", "```toml", text.strip(), "```", ""]
+    lines += ["## Base files", "", "In the working folder of every case."]
+    for name, text in BASE_FILES.items():
+        lines += ["", f"### {name}", "", "```", text.rstrip("\n"), "```"]
     return "\n".join(lines)
 
 
@@ -629,4 +1040,5 @@ def test_docs_table_is_current():
 
 
 if __name__ == "__main__":
-    sys.stdout.write(render() + "\n")
+    with folder():
+        sys.stdout.write(render() + "\n")
