@@ -619,8 +619,8 @@ FILE_CASES = [
          files={"bare.AT2": AT2_HEAD + "DATA FOLLOW\n0.0 0.01 0.02 0.01 0.0\n"}),
     case("a baseline degree the correction lacks", "tank2d",
          ("base_motion", {"kind": "earthquake", "file": "quake.AT2", "baseline_degree": 2}),
-         "base_motion.baseline_degree", "2 is out of range; give a whole number from 3 to 12",
-         "Scene.base_motion.baseline_degree"),
+         "base_motion.baseline_degree", "2 is out of range; give a whole number from 3 to 12 (degree",
+         "Earthquake.baseline_degree"),
     # -- a table of motion
     case("a table that is not numbers", "tank2d", ("base_motion.file", "labelled.txt"), "base_motion.file",
          "line 1 of 'labelled.txt' is not a row of numbers: 'time displacement'; give rows of numbers separated by "

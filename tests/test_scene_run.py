@@ -3,6 +3,7 @@ bodies start in equilibrium, probes land on exact times, a resumed run continues
 for bit, a failed run leaves readable outputs, and a scene loads only what it contains."""
 
 import json
+import re
 import math
 import subprocess
 import sys
@@ -246,3 +247,17 @@ def test_unstable_run_names_step_and_body_and_stays_readable(tmp_path):
     assert summary["error"].startswith("InstabilityError: step")
     heave = read_series(tmp_path / "run.h5", "probes/motion")
     assert len(heave["t"]) >= 2 and np.isfinite(heave["cork.heave"]).all()
+
+
+@pytest.mark.parametrize("name, content, says", [
+    ("latin1.toml", "name = \"caf\xe9\"\n".encode("latin-1"), "is not UTF-8 text"),
+    ("broken.py", b"scene = Scene(\n", "broken.py line 1"),
+    ("raises.py", b"x = 1 / 0\n", "raises.py raised ZeroDivisionError: division by zero (at raises.py line 1)"),
+])
+def test_unreadable_scene_files_are_refused_by_name(name, content, says, tmp_path):
+    from cosim.errors import InputError
+    from cosim.scene.load import load
+
+    (tmp_path / name).write_bytes(content)
+    with pytest.raises(InputError, match=re.escape(says)):
+        load(tmp_path / name)

@@ -505,9 +505,6 @@ def _check_at2(b) -> None:
     from cosim.errors import InputError
     from fluid.motion import read_at2
 
-    if not 3 <= b.baseline_degree <= 12:
-        raise SceneError("base_motion.baseline_degree", f"{b.baseline_degree} is out of range; give a whole number "
-                         f"from 3 to 12 (3 is the least that meets both end conditions, 6 is usual)")
     try:
         read_at2(b.file, b.baseline_degree)
     except (InputError, OSError, ValueError) as e:

@@ -7,6 +7,7 @@ from __future__ import annotations
 import runpy
 from pathlib import Path
 
+from cosim.errors import CosimError
 from cosim.scene.fields import SceneError
 
 
@@ -20,7 +21,18 @@ def load(path) -> "Scene":  # noqa: F821 - the Scene class, imported below
         return Scene.from_toml(p)
     if p.suffix != ".py":
         raise SceneError("", f"{p.name}: a scene is a .toml file or a .py script")
-    names = runpy.run_path(str(p), run_name=f"cosim_scene_{p.stem}")
+    try:
+        names = runpy.run_path(str(p), run_name=f"cosim_scene_{p.stem}")
+    except CosimError:
+        raise  # a scene the script made and the checks refused: the message names the field
+    except SyntaxError as e:
+        raise SceneError("", f"{p.name} line {e.lineno}: {e.msg}; correct the script") from None
+    except Exception as e:
+        import traceback
+
+        where = traceback.extract_tb(e.__traceback__)[-1]
+        raise SceneError("", f"{p.name} raised {type(e).__name__}: {e} (at {Path(where.filename).name} line "
+                         f"{where.lineno}); the script must run and define `scene`") from None
     scene = names.get("scene")
     if not isinstance(scene, Scene):
         found = sorted(k for k, v in names.items() if isinstance(v, Scene))

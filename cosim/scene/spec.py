@@ -370,7 +370,8 @@ class Earthquake(Spec):
     file: str = required(text(None, "the .AT2 accelerogram"))
     direction: tuple = vec((1.0, 0.0), "direction of the ground motion", nonzero=True)
     scale: float = num(1.0, "factor on the record")
-    baseline_degree: int = whole(6, "degree of the baseline correction polynomial", lo=2)
+    baseline_degree: int = whole(6, "degree of the baseline correction polynomial: 3 is the least that meets both "
+                                    "end conditions, 6 is usual", lo=3, hi=12)
 
 
 BASE_MOTIONS = (Shake, Roll, TableMotion, Earthquake)

@@ -96,6 +96,9 @@ def read_toml(path) -> Scene:
         raise SceneError("", f"no scene file {str(path)!r}")
     try:
         data = tomllib.loads(p.read_text(encoding="utf-8"))
+    except UnicodeDecodeError as e:
+        raise SceneError("", f"{p} is not UTF-8 text (byte {e.start}: {e.reason}); TOML files are UTF-8: save it "
+                         "as UTF-8") from None
     except tomllib.TOMLDecodeError as e:
         raise SceneError("", f"{p} is not valid TOML: {e}") from None
     return from_dict(data, p.resolve().parent)
