@@ -200,13 +200,22 @@ def _line_parser(sub):
 def _validate_parser(sub):
     p = sub.add_parser(
         "validate",
-        help="run validation cases (one JSON object per case)",
+        help="run validation cases (one JSON object per case), optionally write a report",
         description="Run validation cases of docs/VALIDATION.md; each prints one JSON object "
-        "with name, passed, metrics, tolerances, particles, steps and wall_s. Exit status 1 if any fails.",
+        "with name, passed, target (what it was judged against), metrics, tolerances, particles, steps and "
+        "wall_s; passed means every metric named in tolerances is within it, for a quick variant (its own "
+        "declared tolerances) as for a full one. Exit status 1 if any fails. --report DIR also writes a "
+        "report (index.md, index.html, a page per case with its plots); --from FILE.jsonl builds the report "
+        "from saved records (the JSON lines printed here) without running anything.",
     )
-    p.add_argument("names", nargs="*", help="case names, or 'all'")
+    p.add_argument("names", nargs="*", help="case names, or 'all' (with --from: all the file holds)")
     p.add_argument("--list", action="store_true", help="list the cases and exit")
     p.add_argument("--quick", action="store_true", help="coarse variant (what CI runs)")
+    p.add_argument("--report", metavar="DIR", help="also write a report into DIR (records.jsonl, series/, "
+                   "index.md, index.html, CASE.md, CASE.html, plots)")
+    p.add_argument("--from", dest="from_file", metavar="FILE.jsonl",
+                   help="build the --report from saved records instead of running the cases (their plots from "
+                   "the series/ folder beside FILE, if there is one)")
     return p
 
 
@@ -435,6 +444,8 @@ def cmd_line(args, parser) -> int:
 
 
 def cmd_validate(args, parser) -> int:
+    from pathlib import Path
+
     from cosim import validation
 
     known = validation.cases()
@@ -442,6 +453,20 @@ def cmd_validate(args, parser) -> int:
         for c in known.values():
             print(f"{c.name:28s} {c.description}")
         return 0
+    if args.from_file:
+        from cosim import report
+
+        if not args.report:
+            parser.error("--from builds a report: name its folder with --report DIR")
+        records = report.read_records(args.from_file)
+        if args.names and args.names != ["all"]:
+            records = [r for r in records if r["name"] in args.names]
+        if not records:
+            parser.error(f"no records to report in {args.from_file}")
+        report.write_report(args.report, records, series_from=Path(args.from_file).parent / "series",
+                            source=args.from_file)
+        print(f"wrote {Path(args.report) / 'index.md'} ({len(records)} case(s))", file=sys.stderr)
+        return 0 if all(r["passed"] for r in records) else 1
     names = list(known) if args.names == ["all"] else args.names
     if not names:
         parser.error("name a case (see --list), or 'all'")
@@ -449,10 +474,22 @@ def cmd_validate(args, parser) -> int:
     if unknown:
         parser.error(f"unknown case(s) {', '.join(unknown)}; known: {', '.join(known)}")
     ok = True
+    records = []
+    if args.report:
+        from cosim import report
+
+        report.prepare(args.report)
     for name in names:
         rec = validation.run(name, quick=args.quick)
         ok &= rec["passed"]
-        print(json.dumps(rec, default=_json_default), flush=True)
+        line = json.dumps({k: v for k, v in rec.items() if k != "series"}, default=_json_default)
+        print(line, flush=True)
+        if args.report:
+            report.save_record(args.report, rec, line)
+            records.append(json.loads(line))
+    if args.report:
+        report.write_report(args.report, records, source=Path(args.report) / report.RECORDS)
+        print(f"wrote {Path(args.report) / 'index.md'} ({len(records)} case(s))", file=sys.stderr)
     return 0 if ok else 1
 
 

@@ -1,19 +1,31 @@
 """Registry of validation cases, run by ``cosim validate NAME``.
 
-A case is a function ``fn(quick: bool) -> dict`` registered with :func:`case`. It
-returns at least ``passed`` (bool), ``metrics`` (measured errors and quantities),
-``tolerances``, and, where they apply, ``particles`` and ``steps``; :func:`run`
-adds ``name``, ``quick`` and ``wall_s``. ``quick=True`` is the coarse variant that
-CI runs. Cases live in the modules of :mod:`cosim.validations`, imported only when
-a case is listed or run, so ``import cosim`` stays light.
+A case is a function ``fn(quick: bool) -> dict`` registered with :func:`case`, with the
+target it is held to: ``target`` (the stated target, copied from the target column of
+its row of ``docs/VALIDATION.md``, or declared where it has no row) and ``quick_target``
+(what its coarse variant is judged against, declared). The function returns
+``metrics`` (measured errors and quantities) and ``tolerances`` (what ``passed`` is
+judged against, see :func:`judge`), and, where they apply, ``particles``, ``steps``,
+``stated_tolerances`` (the stated target's tolerances where the judged ones differ: a
+quick variant, a departed criterion), ``departure`` (``criterion`` and ``why``: the full
+variant is judged on a criterion that departs from the stated target), ``series`` (curves
+of ours against the reference, for the report's plots; not JSON: ``cosim validate``
+leaves them out) and any further JSON-ready keys. It does not return ``passed``:
+:func:`run` judges it from the metrics and the tolerances, the same way for a quick
+variant and a full one, and adds ``name``, ``quick``, ``target`` (the text of what was
+judged), ``stated_target``, ``stated`` (the stated target with its measured values, where
+the judged tolerances differ from it) and ``wall_s``. ``quick=True`` is the coarse
+variant that CI runs. Cases live in the modules of :mod:`cosim.validations`, imported
+only when a case is listed or run, so ``import cosim`` stays light.
 """
 
 from __future__ import annotations
 
 import importlib
+import math
 import time
 from dataclasses import dataclass
-from typing import Callable
+from typing import Any, Callable
 
 from cosim.errors import InputError
 
@@ -22,24 +34,37 @@ CASE_MODULES = ("cosim.validations.catenary", "cosim.validations.cable", "cosim.
                 "cosim.validations.sloshing", "cosim.validations.coupling", "cosim.validations.floating",
                 "cosim.validations.waves")
 
+#: where the stated targets are written
+VALIDATION_DOC = "docs/VALIDATION.md"
+
 
 @dataclass(frozen=True)
 class Case:
     name: str
     description: str
     fn: Callable[[bool], dict]
+    #: the stated target: the target column of ``row`` in docs/VALIDATION.md, or declared
+    target: str = ""
+    #: what the quick variant is judged against (declared)
+    quick_target: str = ""
+    #: the row of docs/VALIDATION.md the target comes from (None: declared, no row)
+    row: str | None = None
 
 
 _CASES: dict[str, Case] = {}
 
 
-def case(name: str, description: str):
-    """Decorator registering ``fn(quick) -> dict`` as validation case ``name``."""
+def case(name: str, description: str, *, target: str, quick: str, row: str | None = ""):
+    """Decorator registering ``fn(quick) -> dict`` as validation case ``name``.
+
+    ``target``: the stated target (the target column of the ``row`` of docs/VALIDATION.md,
+    by default the row named ``name``; ``row=None``: no row, the target is declared here);
+    ``quick``: what the quick variant is judged against."""
 
     def register(fn):
         if name in _CASES and _CASES[name].fn is not fn:
             raise ValueError(f"validation case {name!r} registered twice")
-        _CASES[name] = Case(name, description, fn)
+        _CASES[name] = Case(name, description, fn, target, quick, name if row == "" else row)
         return fn
 
     return register
@@ -52,16 +77,130 @@ def cases() -> dict[str, Case]:
     return dict(sorted(_CASES.items()))
 
 
+# ------------------------------------------------------------------------------- judging
+_MISSING = object()
+
+
+def lookup(metrics: dict, key: str) -> Any:
+    """The metric ``key`` of ``metrics``: a key of the dict, or a dotted path into nested
+    dicts (``"l90.odd_symmetry_rel_err"``; a key may itself hold dots, ``"0.1s"``: the
+    longest key that matches comes first). Raises KeyError if there is none."""
+    if key in metrics:
+        return metrics[key]
+    parts = key.split(".")
+    for i in range(len(parts) - 1, 0, -1):
+        head = ".".join(parts[:i])
+        if head in metrics and isinstance(metrics[head], dict):
+            try:
+                return lookup(metrics[head], ".".join(parts[i:]))
+            except KeyError:
+                pass
+    raise KeyError(key)
+
+
+def within(value: Any, bound: Any) -> bool:
+    """Whether a measured ``value`` is within ``bound``:
+
+    - a number b: ``|value| <= b`` (an error or a distance);
+    - ``[lo, hi]``: ``lo <= value <= hi``, None for an open end;
+    - True / False: the value is that boolean (a property: monotone, restoring ...);
+    - a string: the value equals it.
+
+    A list of values is within when each one is; a non-finite value never is."""
+    if isinstance(value, (list, tuple)):
+        return len(value) > 0 and all(within(v, bound) for v in value)
+    if isinstance(bound, bool):
+        return type(value).__name__ in ("bool", "bool_") and bool(value) is bound
+    if isinstance(bound, str):
+        return value == bound
+    if type(value).__name__ in ("bool", "bool_", "str") or value is None:
+        return False
+    value = float(value)
+    if not math.isfinite(value):
+        return False
+    if isinstance(bound, (list, tuple)):
+        lo, hi = bound
+        return (lo is None or value >= lo) and (hi is None or value <= hi)
+    return abs(value) <= bound
+
+
+def judge(metrics: dict, tolerances: dict) -> tuple[bool, list[str]]:
+    """(passed, the tolerance keys not met): every metric named in ``tolerances`` is
+    within its bound (:func:`within`); a metric that is missing is not. No tolerance at
+    all passes nothing."""
+    out = []
+    for key, bound in tolerances.items():
+        try:
+            v = lookup(metrics, key)
+        except KeyError:
+            out.append(key)
+            continue
+        if not within(v, bound):
+            out.append(key)
+    return (bool(tolerances) and not out), out
+
+
+def measured(metrics: dict, tolerances: dict) -> dict:
+    """The values of the metrics ``tolerances`` names (None where a metric is missing)."""
+    out = {}
+    for key in tolerances:
+        try:
+            out[key] = lookup(metrics, key)
+        except KeyError:
+            out[key] = None
+    return out
+
+
+def target_text(c: Case, quick: bool, departure: dict | None = None) -> str:
+    """What a record of case ``c`` was judged against, in words."""
+    if quick:
+        return f"quick: {c.quick_target} (declared)"
+    if c.row is None:
+        stated = f"declared (no row in {VALIDATION_DOC}): {c.target}"
+    else:
+        stated = f"the stated target of {VALIDATION_DOC} (row {c.row})"
+    if departure:
+        return f"full: {departure['criterion']} (departs from {stated}: see departure)"
+    return f"full: {stated}"
+
+
 def run(name: str, quick: bool = False) -> dict:
-    """Run one case and return its JSON-ready record."""
+    """Run one case and return its record: JSON-ready but for ``series`` (if any)."""
     known = cases()
     if name not in known:
         raise InputError(f"no validation case {name!r}; known cases: {', '.join(known)}")
+    c = known[name]
     t0 = time.perf_counter()
-    out = known[name].fn(quick)
+    out = c.fn(quick)
     wall = time.perf_counter() - t0
-    record = {"name": name, "quick": quick, "passed": bool(out.pop("passed"))}
-    record.update({"metrics": {}, "tolerances": {}, "particles": 0, "steps": 0})
+    if "passed" in out:
+        raise TypeError(f"validation case {name!r} returned 'passed': it is judged from its tolerances by run()")
+    metrics, tolerances = out.pop("metrics", {}), out.pop("tolerances", {})
+    passed, failed = judge(metrics, tolerances)
+    departure = out.pop("departure", None)
+    stated_tol = out.pop("stated_tolerances", None)
+    series = out.pop("series", None)
+    record = {"name": name, "quick": quick, "passed": passed, "target": target_text(c, quick, departure),
+              "stated_target": c.target, "metrics": metrics, "tolerances": tolerances,
+              "outside_tolerance": failed, "particles": 0, "steps": 0}
+    if stated_tol is not None or departure:
+        stated = {"target": c.target, "tolerances": stated_tol or {}}
+        given = (departure or {}).get("stated_measured")
+        if given is not None:  # the stated target's values come from elsewhere (a past run)
+            stated["measured"] = given
+            stated["met"] = departure.get("stated_met")
+            stated["source"] = departure.get("source", "")
+        else:
+            stated["measured"] = measured(metrics, stated["tolerances"])
+            known_all = all(v is not None for v in stated["measured"].values()) and stated["tolerances"]
+            stated["met"] = judge(metrics, stated["tolerances"])[0] if known_all else None
+            if not known_all:
+                stated["source"] = (departure or {}).get("source", "not measured by this variant")
+        record["stated"] = stated
+    if departure:
+        record["departure"] = {"criterion": departure["criterion"], "why": departure["why"]}
     record.update(out)
     record["wall_s"] = round(wall, 4)
+    if series:
+        record["series"] = series
     return record

@@ -66,6 +66,7 @@ def test_spheric10_roll_record():
 def test_westergaard_quick():
     r = validation.run("westergaard", quick=True)
     m = r["metrics"]
+    assert r["passed"] and r["target"].startswith("quick: ")  # judged by its declared tolerances below
     # dx = 0.1 m (10 rows): first-order errors of ~dx/H (see the case's docstring)
     assert m["rms_face_vs_exact"] < 0.06
     assert m["kp_base_face"] == pytest.approx(m["kp_base_exact"], rel=0.06)
@@ -80,6 +81,10 @@ def test_westergaard_3d_quick():
     face within 0.025 row by row; face RMS 0.054 vs 0.044 in 2-D)."""
     r = validation.run("westergaard-3d", quick=True)
     m = r["metrics"]
+    assert r["passed"] and r["target"].startswith("quick: ")  # judged by its declared tolerances below
+    # the stated target (raw < 0.04, face < 0.02 RMS) is not met at this resolution, and says so
+    assert r["stated"]["tolerances"] == {"rms_raw_vs_exact": 0.04, "rms_face_vs_exact": 0.02}
+    assert "slice" in r["departure"]["criterion"]
     assert r["particles"] > 5000 and m["width_m"] == 0.3
     assert m["rms_face_vs_exact"] < 0.07
     assert m["kp_base_face"] == pytest.approx(m["kp_base_exact"], rel=0.06)

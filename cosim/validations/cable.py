@@ -126,7 +126,9 @@ def run_case1(n_particles: int, omega: float = 2.5, t_max: float = 60.0, v_tol: 
     return m, c
 
 
-@case("cable-case1", "SPH cable, seed 000 Case 1: self-weight catenary + 35.586 kN point load (Table 1-2)")
+@case("cable-case1", "SPH cable, seed 000 Case 1: self-weight catenary + 35.586 kN point load (Table 1-2)",
+      target="within 0.5 %",
+      quick="the stated target, the displacement of L within 0.5 % of Table 2, with 40 particles instead of 313")
 def cable_case1(quick: bool) -> dict:
     """Seed 000 Case 1 (Table 1): span 304.8 m, length 312.73 m, E = 131 GPa, A = 548.4 mm²,
     w = 46.12 N/m; after the self-weight state has settled, 35.586 kN at L (125.88 m of
@@ -138,9 +140,7 @@ def cable_case1(quick: bool) -> dict:
     n = 40 if quick else 313
     m, c = run_case1(n)
     tol = 0.005
-    passed = abs(m["err_dz_vs_table2"]) < tol and abs(m["err_dx_vs_table2"]) < tol
-    return {"passed": passed, "metrics": m,
-            "tolerances": {"err_dz_vs_table2": tol, "err_dx_vs_table2": tol},
+    return {"metrics": m, "tolerances": {"err_dz_vs_table2": tol, "err_dx_vs_table2": tol},
             "particles": c.n, "steps": c.steps}
 
 
@@ -190,7 +190,10 @@ def run_exp2_static(n_particles: int, omega: float = 30.0, t_max: float = 4.0, v
     return m, c
 
 
-@case("cable-exp2-static", "SPH cable, seed 000 Experiment 2 at rest: reactions and shape (Table 5)")
+@case("cable-exp2-static", "SPH cable, seed 000 Experiment 2 at rest: reactions and shape (Table 5)",
+      target="shape within 1 mm of the exact catenary; reactions within 1 %; report the distance to the measured "
+             "points",
+      quick="the stated target (shape within 1 mm, reactions within 1 %) with 31 particles instead of 121")
 def cable_exp2_static(quick: bool) -> dict:
     """Seed 000 Experiment 2 (Section 3.3.2): supports (0, 0) and (1.2, -0.22) m, l = 1.272 m,
     w = 0.2656 N/m, E = 109 GPa. The paper gives no wire diameter; 0.5 mm is assumed
@@ -202,8 +205,21 @@ def cable_exp2_static(quick: bool) -> dict:
     n = 31 if quick else 121
     m, c = run_exp2_static(n)
     tol = {"err_H_balance": 0.01, "err_weight": 0.01, "shape_max_err_m": 1e-3}
-    passed = all(m[k] < v for k, v in tol.items())
-    return {"passed": passed, "metrics": m, "tolerances": tol, "particles": c.n, "steps": c.steps}
+    return {"metrics": m, "tolerances": tol, "particles": c.n, "steps": c.steps, "series": exp2_static_series(c)}
+
+
+def exp2_static_series(c: SPHCable) -> dict:
+    """The settled cable of Experiment 2 against the exact elastic catenary and the measured
+    points P1-P5 (for the report's plot)."""
+    p = EXP2
+    EA = p["E"] * math.pi / 4 * p["d_wire"] ** 2
+    s = np.linspace(0.0, p["length"], 201)
+    ex = elastic_catenary(*p["support_b"], p["length"], p["w"], EA, s=s)[2]
+    meas = np.array([q[1:] for q in EXP2_POINTS])
+    return {"shape": {"xlabel": "x [m]", "ylabel": "z [m]", "curves": {
+        "exact elastic catenary, 1.272 m": {"x": ex[:, 0], "y": ex[:, 1]},
+        "SPH cable (ours)": {"x": c.x[:, 0], "y": c.x[:, 1], "style": "o"},
+        "measured P1-P5 (Table 5)": {"x": meas[:, 0], "y": meas[:, 1], "style": "s"}}}}
 
 
 #: the mooring line of cable-vs-catenary (seed 004 Table 2 geometry: h = 50 m, l = 150 m,
@@ -211,11 +227,13 @@ def cable_exp2_static(quick: bool) -> dict:
 VS_CAT = dict(h=50.0, length=150.0, w=918.75, EA=1e9, mu=107.7, d=0.15, X0=120.0, X1=140.0)
 
 
-def run_vs_catenary(n_particles: int, speed: float, dt_couple: float = 0.5, sample: float = 10.0):
+def run_vs_catenary(n_particles: int, speed: float, dt_couple: float = 0.5, sample: float = 10.0,
+                    rows_out: list | None = None):
     """Hang the line with seabed contact, settle it, then move the fairlead from X0 to X1
     at ``speed`` [m/s] through the coupling interface; compare the fairlead tension with
     the quasi-static elastic catenary with seabed (moorings.catenary.solve) every
-    ``sample`` seconds. Returns (metrics, mooring)."""
+    ``sample`` seconds. Returns (metrics, mooring); ``rows_out``, if given, receives every
+    sample (X [m], T [N], quasi-static T [N])."""
     from moorings.catenary import solve
     from moorings.line import MooringLine
     from moorings.sph_cable import SPHCableMooring
@@ -248,10 +266,15 @@ def run_vs_catenary(n_particles: int, speed: float, dt_couple: float = 0.5, samp
     e = np.array(errs)
     metrics = {"max_abs_err_tension": float(np.abs(e).max()), "mean_err_tension": float(e.mean()),
                "samples_X_T_Tqs": rows[:: max(1, len(rows) // 8)], "speed_m_s": speed}
+    if rows_out is not None:
+        rows_out.extend(rows)
     return metrics, m
 
 
-@case("cable-vs-catenary", "SPH cable as a mooring line with seabed, slowly moved fairlead, vs the elastic catenary")
+@case("cable-vs-catenary", "SPH cable as a mooring line with seabed, slowly moved fairlead, vs the elastic catenary",
+      target="fairlead tension within 2 % when quasi-static",
+      quick="the stated target, fairlead tension within 2 % at every sample, with 20 particles moved at 0.1 m/s "
+            "instead of 60 at 0.05 m/s")
 def cable_vs_catenary(quick: bool) -> dict:
     """A 150 m chain (h = 50 m, w = 918.75 N/m, EA = 1 GN, d = 0.15 m with Morison drag
     and added mass) hung from its anchor with seabed contact; the fairlead moves from
@@ -259,10 +282,15 @@ def cable_vs_catenary(quick: bool) -> dict:
     Target: fairlead tension within 2 % of the quasi-static elastic catenary with seabed
     (seed 004 §3, moorings.catenary) at every sample."""
     n, speed = (20, 0.1) if quick else (60, 0.05)
-    m, moor = run_vs_catenary(n, speed)
+    rows = []
+    m, moor = run_vs_catenary(n, speed, rows_out=rows)
     tol = 0.02
-    return {"passed": m["max_abs_err_tension"] < tol, "metrics": m, "tolerances": {"max_abs_err_tension": tol},
-            "particles": n, "steps": moor.cables[0].steps}
+    X, T, Tqs = np.array(rows).T
+    series = {"fairlead tension": {"xlabel": "fairlead X [m]", "ylabel": "tension [kN]", "curves": {
+        "quasi-static elastic catenary": {"x": X, "y": Tqs / 1e3},
+        "SPH cable (ours)": {"x": X, "y": T / 1e3, "style": "o"}}}}
+    return {"metrics": m, "tolerances": {"max_abs_err_tension": tol},
+            "particles": n, "steps": moor.cables[0].steps, "series": series}
 
 
 def fit_length_to_measured_shape() -> float:
@@ -333,7 +361,10 @@ def run_exp2_shake(n_particles: int, frequency: float, length: float, omega: flo
 EXP2_PERIOD = 0.42
 
 
-@case("cable-exp2-shake", "SPH cable, seed 000 Experiment 2: free oscillation period after 1.0/1.5 Hz shaking")
+@case("cable-exp2-shake", "SPH cable, seed 000 Experiment 2: free oscillation period after 1.0/1.5 Hz shaking",
+      target="period within 7 % of 0.42 s",
+      quick="as the full variant (the period within 7 % of 0.42 s on the length fitted to the measured shape, "
+            "damping lowers the late motion) with 31 particles instead of 61")
 def cable_exp2_shake(quick: bool) -> dict:
     """Seed 000 Experiment 2, Type1 (1.0 Hz) and Type2 (1.5 Hz), 25 mm at P0 in x (3 cycles
     assumed: the paper does not give the duration), then free oscillation; the dominant
@@ -350,24 +381,31 @@ def cable_exp2_shake(quick: bool) -> dict:
     damping, by about exp(-omega t/2) (reported beside that expectation)."""
     n = 31 if quick else 61
     L_fit = fit_length_to_measured_shape()
-    m, ok = {"length_fit_m": L_fit}, True
+    m = {"length_fit_m": L_fit}
     for label, fr in (("type1", 1.0), ("type2", 1.5)):
         for lname, L in (("measured_shape", L_fit), ("stated", EXP2["length"])):
             T, a0, a1, c = run_exp2_shake(n, fr, L)
             m[f"period_{label}_{lname}_s"] = float(T)
             m[f"err_period_{label}_{lname}"] = float(T / EXP2_PERIOD - 1)
-            if lname == "measured_shape":
-                ok = ok and bool(abs(T / EXP2_PERIOD - 1) < 0.07)
-                if label == "type1":
-                    rms_damped = a1
+            if lname == "measured_shape" and label == "type1":
+                rms_damped = a1
     # damping: the same run without it; mass-proportional damping scales every mode by
     # exp(-omega t/2), t from the start of the shaking to the middle of the last 2 s
     _, _, rms_free, _ = run_exp2_shake(n, 1.0, L_fit, omega=0.0)
     m["rms_last2s_damped_over_undamped"] = rms_damped / rms_free
     m["expected_exp(-omega t/2)"] = math.exp(-0.02 * (3.0 + 8.0 - 1.0))
-    ok = ok and rms_damped < rms_free
-    return {"passed": ok, "metrics": m, "tolerances": {"err_period_measured_shape": 0.07}, "particles": n,
-            "steps": c.steps}
+    m["damped_rms_below_undamped"] = bool(rms_damped < rms_free)
+    tol = {"err_period_type1_measured_shape": 0.07, "err_period_type2_measured_shape": 0.07,
+           "damped_rms_below_undamped": True}
+    return {"metrics": m, "tolerances": tol, "particles": n, "steps": c.steps,
+            "stated_tolerances": {"err_period_type1_stated": 0.07, "err_period_type2_stated": 0.07},
+            "departure": {
+                "criterion": "the free period within 7 % of 0.42 s on the cable length (about 1.286 m) whose exact "
+                             "catenary fits the measured static shape P1-P5 of seed 000 Table 5, instead of the "
+                             "stated 1.272 m",
+                "why": "the measured points P1-P5 lie 15-19 mm below the catenary of the stated 1.272 m (they imply "
+                       "a longer cable) and the free period is very sensitive to the sag; the stated length's "
+                       "periods are measured beside it"}}
 
 
 #: seed 000 Experiment 1 (Table 4): initial positions of P1-P5 [(s, x, z)] of the 1 m cable
@@ -410,7 +448,10 @@ def run_free_fall(n_particles: int, t_end: float = 1.2, dt_out: float = 0.005):
     return m, c
 
 
-@case("cable-free-fall", "SPH cable, seed 000 Experiment 1: released at one end from its catenary (Table 4)")
+@case("cable-free-fall", "SPH cable, seed 000 Experiment 1: released at one end from its catenary (Table 4)",
+      target="no published trajectory: invariants: the mechanical energy never grows (1e-6 of w L L), the line "
+             "stays within its elastic range, the free end swings below z = -0.75 m",
+      quick="the same invariants with 48 particles instead of 95", row=None)
 def cable_free_fall(quick: bool) -> dict:
     """Seed 000 Experiment 1 (§3.3.1): a 1 m cable of the Experiment 2 kind (w = 0.2656 N/m,
     0.5 mm wire at 109 GPa assumed) hangs from (0, 0) and (0.88, 0) and is released at P5.
@@ -422,8 +463,7 @@ def cable_free_fall(quick: bool) -> dict:
     n = 48 if quick else 95
     m, c = run_free_fall(n)
     scale = m["energy_scale_J"]
-    passed = (m["max_energy_rise_J"] <= 1e-6 * scale and m["max_strain"] < c.max_strain
-              and m["free_end_lowest_z_m"] < -0.75)
-    return {"passed": passed, "metrics": m,
-            "tolerances": {"max_energy_rise_J": 1e-6 * scale, "max_strain": c.max_strain, "free_end_lowest_z_m": -0.75},
+    return {"metrics": m,
+            "tolerances": {"max_energy_rise_J": [None, 1e-6 * scale], "max_strain": [None, c.max_strain],
+                           "free_end_lowest_z_m": [None, -0.75]},
             "particles": c.n, "steps": c.steps}

@@ -27,7 +27,9 @@ def _rel(a, b):
     return float(np.max(np.abs(a - b) / np.maximum(np.abs(b), 1e-300)))
 
 
-@case("catenary-limits", "inextensible catenary against seed 004 closed forms (Eq. 29, 35-39)")
+@case("catenary-limits", "inextensible catenary against seed 004 closed forms (Eq. 29, 35-39)",
+      target="exact to 1e-10 relative",
+      quick="the stated target, exact to 1e-10 relative, on 5 random lines instead of 40")
 def catenary_limits(quick: bool) -> dict:
     """Closed forms of seed 004 §3.1 over a family of lines, to 1e-10 relative.
 
@@ -65,9 +67,8 @@ def catenary_limits(quick: bool) -> dict:
         errs["liftoff_H"] = max(errs["liftoff_H"], _rel(r.H, w * (L**2 - h**2) / (2 * h)))
     tol = 1e-10
     return {
-        "passed": all(v <= tol for v in errs.values()),
         "metrics": {f"max_rel_err_{k}": v for k, v in errs.items()} | {"lines": lines},
-        "tolerances": {"max_rel_err": tol},
+        "tolerances": {f"max_rel_err_{k}": tol for k in errs},
     }
 
 
@@ -103,28 +104,29 @@ def _single_line(h, w, L, X0, X1, quick, extensions):
         "slope_jump_at_lift_off_rel": float(abs(slopes[1] - slopes[0]) / slopes[0]),
         "H_at_extensions_N": {f"{x:g}": float(solve(x, h, L, w).H) for x in extensions},
         "H_range_N": [float(r.H[0]), float(r.H[-1])],
+        "states_partly_or_fully_lifted": set(int(s) for s in r.state) <= {int(PARTLY_LIFTED), int(FULLY_LIFTED)},
     }
-    passed = (
-        metrics["monotone"]
-        and metrics["convex"]
-        and metrics["lift_off_rel_err"] < 1e-12
-        and metrics["slope_jump_at_lift_off_rel"] < 1e-4
-        and set(int(s) for s in r.state) <= {int(PARTLY_LIFTED), int(FULLY_LIFTED)}
-    )
     return {
-        "passed": bool(passed),
         "metrics": metrics,
-        "tolerances": {"lift_off_rel_err": 1e-12, "slope_jump_at_lift_off_rel": 1e-4},
+        "tolerances": {"monotone": True, "convex": True, "lift_off_rel_err": 1e-12,
+                       "slope_jump_at_lift_off_rel": 1e-4, "states_partly_or_fully_lifted": True},
     }
 
 
-@case("catenary-johanning-2007", "single line of seed 004 Table 1 (Johanning et al. 2007), X = 5.50-6.40 m")
+_SINGLE_TARGET = "smooth, monotone H(X); state changes reported at the right X"
+_SINGLE_QUICK = ("the stated target on 91 values of X instead of 901: H(X) monotone and convex, its slope "
+                 "continuous across the lift-off point (1e-4), the solver's lift-off within 1e-12 of the closed form")
+
+
+@case("catenary-johanning-2007", "single line of seed 004 Table 1 (Johanning et al. 2007), X = 5.50-6.40 m",
+      target=_SINGLE_TARGET, quick=_SINGLE_QUICK)
 def johanning_2007(quick: bool) -> dict:
     """h = 2.651 m, w = 1.036 N/m, l = 6.98 m, fairlead at the surface (seed 004 Table 1)."""
     return _single_line(2.651, 1.036, 6.98, 5.50, 6.40, quick, (5.735, 6.367))
 
 
-@case("catenary-johanning-2006", "single line of seed 004 Table 2 (Johanning et al. 2006), X = 102-140 m")
+@case("catenary-johanning-2006", "single line of seed 004 Table 2 (Johanning et al. 2006), X = 102-140 m",
+      target=_SINGLE_TARGET, quick=_SINGLE_QUICK)
 def johanning_2006(quick: bool) -> dict:
     """h = 50 m, w = 918.75 N/m, l = 150 m (seed 004 Table 2)."""
     return _single_line(50.0, 918.75, 150.0, 102.0, 140.0, quick, (103.0, 138.0))
@@ -152,7 +154,11 @@ def weight_for_pretension(TH0, L, X, h):
     return TH0 / solve(X, h, L, 1.0).H
 
 
-@case("catenary-two-lines", "two opposed lines of seed 004 Table 3: restoring force odd in the offset")
+@case("catenary-two-lines", "two opposed lines of seed 004 Table 3: restoring force odd in the offset",
+      target="symmetry to 1e-9. As printed, each line is less than 1 m from taut at rest, so ±15 m offsets need "
+             "an elastic line (or other numbers): document what you test",
+      quick="the stated target on 31 offsets instead of 301: odd symmetry and zero force at rest to 1e-9, "
+            "restoring and monotone, the printed 75 m line taut at +15 m")
 def two_lines(quick: bool) -> dict:
     """Seed 004 Table 3: h = 50 m, anchors at x = ±55 m, T_H0 = 50 kN at rest,
     body offsets −15 … +15 m.
@@ -167,7 +173,7 @@ def two_lines(quick: bool) -> dict:
     """
     n = 31 if quick else 301
     out = {}
-    ok = True
+    tol = {}
     for label, L, dmax in (("l90", 90.0, 15.0), ("l75_printed", 75.0, 0.85)):
         w = weight_for_pretension(50e3, L, 55.0, 50.0)
         d = np.linspace(-dmax, dmax, n)
@@ -177,7 +183,8 @@ def two_lines(quick: bool) -> dict:
         sym = float(np.max(np.abs(F + F[::-1])) / scale)
         restoring = bool(np.all(F[d > 0] < 0) and np.all(F[d < 0] > 0))
         monotone = bool(np.all(np.diff(F) < 0))
-        ok &= sym <= 1e-9 and abs(F0) <= 1e-9 * scale and restoring and monotone
+        tol |= {f"{label}.odd_symmetry_rel_err": 1e-9, f"{label}.force_at_rest_rel": 1e-9,
+                f"{label}.restoring": True, f"{label}.monotone": True}
         out[label] = {
             "L_m": L,
             "w_N_per_m": w,
@@ -188,6 +195,7 @@ def two_lines(quick: bool) -> dict:
             "line_B_H_range_N": [float(HB[0]), float(HB[-1])],
             "odd_symmetry_rel_err": sym,
             "force_at_rest_N": float(F0),
+            "force_at_rest_rel": float(abs(F0) / scale),
             "restoring": restoring,
             "monotone": monotone,
             "X_taut_m": taut_distance(50.0, L),
@@ -196,5 +204,5 @@ def two_lines(quick: bool) -> dict:
     out["shortest_line_for_15m_m"] = math.hypot(70.0, 50.0)
     # the printed line cannot take +15 m: its far line is TAUT there
     out["l75_state_at_plus_15m"] = solve(70.0, 50.0, 75.0, 1.0).state.name
-    ok &= out["l75_state_at_plus_15m"] == TAUT.name
-    return {"passed": bool(ok), "metrics": out, "tolerances": {"odd_symmetry_rel_err": 1e-9}}
+    tol["l75_state_at_plus_15m"] = TAUT.name
+    return {"metrics": out, "tolerances": tol}

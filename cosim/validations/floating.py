@@ -115,7 +115,10 @@ _DRAFT_RUNS_FULL = ((2, 0.005, 500.0), (2, 0.005, 800.0), (3, 0.0125, 500.0), (3
 _DRAFT_RUNS_QUICK = ((2, 0.0125, 500.0),)
 
 
-@case("floating-box-draft", "2-D and 3-D boxes (500, 800 kg/m^3) float at the Archimedes draft within 2 % of the height")
+@case("floating-box-draft", "2-D and 3-D boxes (500, 800 kg/m^3) float at the Archimedes draft within 2 % of the height",
+      target="within 2 % of the height after settling",
+      quick="the stated target (draft within 2 % of the height) for the 2-D box of 500 kg/m^3 at dx = 12.5 mm "
+            "only, instead of 2-D and 3-D boxes of 500 and 800 kg/m^3 at 5-12.5 mm")
 def floating_box_draft(quick: bool) -> dict:
     """A 0.10 x 0.05 m box (2-D, 1 m thick; 3-D: 0.10 x 0.10 x 0.05 m) of density 500
     or 800 kg/m^3 in a 0.3 m tank (square in 3-D) of 0.1 m still water, released at
@@ -146,9 +149,8 @@ def floating_box_draft(quick: bool) -> dict:
     tol = 0.02
     res = [settle_draft(dim, dx, rho_b, 1.0, 0.5) | {"dim": dim} for dim, dx, rho_b in runs]
     worst = max(abs(r["error_of_height"]) for r in res)
-    return {"passed": worst < tol,
-            "metrics": {"runs": res, "worst_error_of_height": worst},
-            "tolerances": {"error_of_height": tol},
+    return {"metrics": {"runs": res, "worst_error_of_height": worst},
+            "tolerances": {"worst_error_of_height": tol},
             "particles": max(r["particles"] for r in res), "steps": sum(r["steps"] for r in res)}
 
 
@@ -186,7 +188,9 @@ def fit_decay(t, z):
 
 
 @case("floating-heave-period", "2-D box released from a heave offset: natural period within 10 % of "
-      "2 pi sqrt((m + a33) / (rho g A_w))")
+      "2 pi sqrt((m + a33) / (rho g A_w))", target="within 10 %",
+      quick="the stated target (period within 10 %, the damped-oscillation fit within 10 % of its amplitude) "
+            "at dx = 12.5 mm instead of 6.25 mm")
 def floating_heave_period(quick: bool) -> dict:
     """The 0.10 x 0.05 m box of 500 kg/m^3 (2-D, 1 m thick) in a 0.6 m tank of 0.2 m
     water, released at rest 12.5 mm above its Archimedes position (half its draft;
@@ -220,12 +224,17 @@ def floating_heave_period(quick: bool) -> dict:
     t_ref = 2 * math.pi * math.sqrt((m + a33) / (RHO * G * width))
     err = 2 * math.pi / w / t_ref - 1
     tol = 0.10
-    return {"passed": abs(err) < tol and rms < 0.1 * abs(amp),
-            "metrics": {"dx_m": dx, "period_s": 2 * math.pi / w, "reference_period_s": t_ref,
+    t_fit = np.array(t)
+    z_fit = zm + amp * np.exp(-zeta * w * t_fit) * np.cos(w * math.sqrt(max(1 - zeta * zeta, 1e-9)) * t_fit)
+    series = {"heave": {"xlabel": "t [s]", "ylabel": "centre height - Archimedes [mm]", "curves": {
+        "SPH (ours)": {"x": t_fit, "y": (np.array(z) - z_eq) * 1e3},
+        "fitted damped oscillation": {"x": t_fit, "y": (z_fit - z_eq) * 1e3, "style": "--"}}}}
+    return {"metrics": {"dx_m": dx, "period_s": 2 * math.pi / w, "reference_period_s": t_ref,
                         "period_error": err, "damping_ratio": zeta, "added_mass_kg_per_m": a33,
                         "mass_kg_per_m": m, "fit_amplitude_m": amp, "fit_rms_m": rms,
+                        "fit_rms_over_amplitude": rms / abs(amp),
                         "mean_centre_m": zm, "archimedes_centre_m": z_eq},
-            "tolerances": {"period_error": tol, "fit_rms_of_amplitude": 0.1},
+            "tolerances": {"period_error": tol, "fit_rms_over_amplitude": 0.1}, "series": series,
             "particles": int(fluid.fluid.ps.n), "steps": int(coupler.steps)}
 
 
@@ -290,7 +299,10 @@ def sinking_cylinder_reference(t, radius: float = 1.0, rho_c: float = 1200.0):
 
 
 @case("sinking-cylinder", "2-D cylinder r = 1 m, 1200 kg/m^3, half submerged, released: velocity over the first "
-      "0.25 s vs added-mass + buoyancy model; trajectory over 1 s recorded")
+      "0.25 s vs added-mass + buoyancy model; trajectory over 1 s recorded",
+      target="find the data; match within 10 % over the first second",
+      quick="dx = 0.1 m (20 particles across), 0.25 s: the velocity over the first 0.25 s within 20 % of the "
+            "added-mass + buoyancy model (least-squares ratio), what 20 particles across meet")
 def sinking_cylinder_case(quick: bool) -> dict:
     """Seed 004 §4.1 (004_1657bd4a51d29840.txt, Fig. 8) compares DualSPHysics with
     Fekken's (2004, PhD thesis, Groningen) VOF displacement and velocity of this
@@ -329,7 +341,20 @@ def sinking_cylinder_case(quick: bool) -> dict:
                                if tt <= 0.25 else {})}
                for tt in (0.05, 0.1, 0.15, 0.2, 0.25, 0.5, 0.75, 1.0) if tt <= t[-1] + 1e-9}
     tol = 0.20 if quick else 0.10
-    return {"passed": abs(err) < tol,
+    series = {"downward velocity": {"xlabel": "t [s]", "ylabel": "v [m/s]", "curves": {
+        "added-mass + buoyancy model (valid early)": {"x": t[t > 0], "y": sinking_cylinder_reference(t[t > 0]),
+                                                      "style": "--"},
+        "SPH (ours)": {"x": t, "y": v}}}}
+    return {"series": series,
+            "stated_tolerances": {"fekken_2004_velocity_error": 0.10},
+            "departure": {
+                "criterion": "the velocity over the first 0.25 s within 10 % (quick: 20 %) of an added-mass + "
+                             "buoyancy model (exact at release), by the least-squares ratio",
+                "why": "seed 004 §4.1 plots Fekken's (2004) VOF displacement and velocity but prints no numbers, "
+                       "and no published table of them was found: the comparison over the first second with "
+                       "the published data is not made (the trajectory is recorded for it)",
+                "stated_measured": {"fekken_2004_velocity_error": None}, "stated_met": None,
+                "source": "not measured: no published numbers of Fekken (2004) found"},
             "metrics": {"dx_m": dx, "velocity_ratio_0_to_0.25s": ratio, "velocity_error": err,
                         "initial_acceleration_reference_m_s2": (1200.0 - 0.5 * RHO) / (1200.0 + 0.5 * RHO) * G,
                         "trajectory": samples,

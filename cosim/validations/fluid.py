@@ -126,14 +126,27 @@ def run_hydrostatic(dim: int, dx: float, t_end: float, depth: float = 0.2, lengt
         "c0_m_s": cfg.speed_of_sound,
     }
     tolerances = {"p_rms_err_time_avg": 0.01, "max_speed_over_sqrt_gH": 1e-3}
-    passed = all(metrics[k] < v for k, v in tolerances.items())
-    return {"passed": passed, "metrics": metrics, "tolerances": tolerances,
-            "particles": int(f.ps.n), "steps": int(f.counters.steps)}
+    series = {"pressure over the depth": {
+        "xlabel": "p / (rho g H), fluid particles, averaged over the last sloshing period", "ylabel": "z / H",
+        "curves": {"rho g (H - z)": {"x": [0.0, 1.0], "y": [1.0, 0.0]},
+                   "SPH (ours)": {"x": 1.0 - z / H + mean_err, "y": z / H, "style": "."}}}}
+    return {"metrics": metrics, "tolerances": tolerances,
+            "particles": int(f.ps.n), "steps": int(f.counters.steps), "series": series}
+
+
+#: the stated target of the hydrostatic row of docs/VALIDATION.md (2-D and 3-D tanks)
+HYDROSTATIC_TARGET = "RMS error < 1 % of ρgH after settling; particles stay put (max speed < 1e-3·sqrt(gH))"
 
 
 @case("hydrostatic", "2-D tank at rest (0.4 m long, H = 0.2 m): fluid pressure vs rho g (H - z) "
-      "< 1 % RMS of rho g H, max speed < 1e-3 sqrt(g H)")
+      "< 1 % RMS of rho g H, max speed < 1e-3 sqrt(g H)", target=HYDROSTATIC_TARGET,
+      quick="the stated target with 10 particle layers over the depth (dx = 0.02 m, 2 s) instead of 20 "
+            "(dx = 0.01 m, 3 s)")
 def hydrostatic(quick: bool) -> dict:
+    """A 2-D tank 0.4 m long with water H = 0.2 m at rest: the fluid pressure against
+    ``rho g (H - z)``, time-averaged over the last sloshing period, and the largest speed;
+    full: 20 particle layers over the depth (dx = 0.01 m), 3 s; quick: 10 layers, 2 s. See
+    :func:`run_hydrostatic` for the set-up and what limits the error."""
     if quick:  # 10 particle layers over the depth
         return run_hydrostatic(2, dx=0.02, t_end=2.0)
     return run_hydrostatic(2, dx=0.01, t_end=3.0)
@@ -145,126 +158,38 @@ STILL_3D = {"diffusion_at_surface": False}
 
 
 @case("hydrostatic-3d", "3-D tank at rest (H = 0.1 m, 10 layers; 0.2 x 0.1 m, 3 s, quick 0.1 x 0.1 m, "
-      "1.5 s): as hydrostatic (fluid set-up: diffusion_at_surface=False)")
+      "1.5 s): as hydrostatic (fluid set-up: diffusion_at_surface=False)", target=HYDROSTATIC_TARGET,
+      row="hydrostatic",
+      quick="the stated target on a 0.1 x 0.1 m tank for 1.5 s instead of 0.2 x 0.1 m for 3 s (10 layers over "
+            "the depth in both)")
 def hydrostatic_3d(quick: bool) -> dict:
     """Full: 10 particle layers over the depth (dx = 0.01 m) in a 0.2 x 0.1 m tank for 3 s;
     quick: the same layers in a 0.1 x 0.1 m tank for 1.5 s (a 5-layer tank cannot meet 1 %:
     see below). Set-up :data:`STILL_3D`: the density diffusion fades out where the kernel
     support is cut by the free surface (fluid.equations, ``diffusion_at_surface=False``).
 
-    Session 5 (NUMBA_NUM_THREADS=1, full set-up, largest speed over sqrt(g H) and pressure
-    RMS every 0.25 s): with the surface fade the tank is at rest and within 1 %: 2.0e-3 at
-    0.25 s (the start), 3.3e-4 at 1.25 s, 1.5e-4 at 2 s, 5.1e-5 at 3 s, the largest
-    displacement fixed at 0.035 dx, the instantaneous pressure error 0.88 % RMS at 0.5 s
-    falling to 0.82 % at 3 s (21 216 steps, 183 s). Variants of the fade: counting walls as
-    missing support as well (the fluid rows beside the walls lose the diffusion too) is at
-    rest alike but 0.95 % RMS; fading only the free-surface row (a kernel-sum threshold
-    between the rows, 0.85 - 0.95) delays the creep's onset to ~2 s (1.3e-3 at 2.75 s): the
-    row below the surface matters. The defaults (diffusion everywhere) creep from ~1 s
-    (below). The cost of the fade in violent flow is in fluid.equations (the 2-D dam break's
-    pressure noise x 4), so it is this case's set-up, not the solver's default. The case
-    (``cosim validate hydrostatic-3d [--quick]``): full 0.82 % RMS (time-averaged over the
-    last sloshing period), largest speed 1.1e-4 sqrt(g H) (21 231 steps, 247 s); quick
-    0.92 %, 5.8e-4 (10 629 steps, 75 s); with the defaults the quick tank reaches > 1e-3
-    (a slow test).
+    Why the fade: with the density diffusion everywhere (Fourtakas, delta = 0.1, the
+    solver's default) the 3-D tank does not stay at rest. From ~1 s a slow instability by
+    the vertical edges, where two walls meet the free surface, sets the particles creeping
+    (largest speed 4.0e-3 sqrt(g H) at 1.5 s at the full resolution; it grows with delta
+    faster than linearly, as an instability past a threshold would; not the lattice, which
+    is linearly stable at h = sqrt(2) dx, and not the start: settling first does not stop
+    it). Without diffusion the tank stays at rest but the pressure is 1.07 % RMS (the
+    truncation bias of the surface rows plus the acoustic noise no longer damped). Fading
+    the diffusion where the kernel support is cut by the free surface keeps it by the walls,
+    where it does no harm, and takes it from the two rows under the surface: at rest and
+    within 1 %. Its cost in violent flow is in fluid.equations (the 2-D dam break's pressure
+    noise x 4), so it is this case's set-up, not the solver's default. A 5-layer tank cannot
+    meet 1 % at all: 3 of its 5 layers lie within 2h of the surface, and the kernel
+    truncation there and at the walls biases the pressure 1.3-1.5 % of rho g H high.
 
-    What was found before (quick set-up of sessions 2-4: 5 layers, dx = 0.02 m, 0.2 x 0.1 m,
-    1.5 s; per 0.1 s: largest fluid speed over sqrt(g H), largest displacement from the
-    lattice site; NUMBA_NUM_THREADS=1, ~1 min per run):
+    Measured (``cosim validate hydrostatic-3d [--quick]``, NUMBA_NUM_THREADS=1): full
+    0.82 % RMS (time-averaged over the last sloshing period), largest speed 1.1e-4
+    sqrt(g H) (21 231 steps, 247 s); quick 0.92 %, 5.8e-4 (10 629 steps, 75 s); with the
+    defaults the quick tank reaches > 1e-3 (a slow test).
 
-    * A static pressure bias that no lever removes at 5 layers: the pressure is 1.3-1.5 %
-      of rho g H too high on average from t = 0.1 s on (RMS 1.5-1.7 %), with Fourtakas,
-      without diffusion, with MLS re-initialisation, with a constant rho0/c0^2 in the
-      hydrostatic correction. It is the kernel truncation at the free surface and at the
-      walls, 3 of 5 layers being within 2h of the surface (2-D at 10 layers: 0.7 %). The
-      quick variant cannot meet 1 % RMS at this resolution, moving or not.
-    * The motion: with Fourtakas diffusion (delta = 0.1) the largest speed falls to
-      1.5e-3 by 0.7 s and then grows, e-folding in ~0.35 s, to 5.9e-3 at 1.4 s, at
-      particles one spacing in from both walls of a vertical edge, one or two layers below
-      the surface; the largest displacement reaches 0.15 dx at 1.4 s and is still growing
-      (the lattice starts to rearrange). Unchanged by: the linearised local
-      ``rho/c^2`` versus Fourtakas' ``rho0/c0^2`` (same to 3 digits); letting fluid
-      particles take diffusion from boundary particles too (same growth); h = sqrt(3) dx
-      (DualSPHysics' 3-D default: bias 2.5 %, growth alike). Slowed by alpha = 0.05 (1.2e-3
-      at 1.2 s, still growing). Removed by less diffusion: none decays to 7.4e-4 at 1.5 s
-      (pressure noise 2.5 % RMS), delta = 0.03 decays to 7.5e-4 at 1.4 s (displacement
-      steady at 0.037 dx, pressure 1.6 % RMS: the bias). At the full resolution (10
-      layers, 2 s) delta = 0.03 meets both criteria (but see session 4 below: only
-      until its later onset): pressure 0.77 % RMS (0.71 % mean),
-      largest speed 5.95e-4 sqrt(g H), wall pressure 3.3 % (14 162 steps, 5840 particles,
-      18 min on one loaded core: ``run_hydrostatic(3, dx=0.01, t_end=2.0, depth=0.1,
-      length=0.2, width=0.1, delta=0.03)``); the same run with delta = 0.1: pressure
-      0.76 % RMS but largest speed 4.0e-3 sqrt(g H). The case keeps the solver's default
-      delta = 0.1 (lowering it for this case alone would be tuning it to pass); what
-      delta the solver should default to in 3-D is open. Diffusion none
-      with MLS every 30 steps: 1.4e-3 to 2.5e-3, displacement creeping (0.07 dx at 1.4 s).
-    * The boundary-density clamp (rho >= rho0 on wall particles, fluid.integrator) is a
-      ratchet near the free surface: the wall particles there sit within a fraction of a
-      kg/m^3 of rho0, so the start-up oscillation is clipped on one side and their mean
-      density, hence the wall push, grows. Without the clamp the start-up transient halves
-      (2.2e-3 at 0.1 s instead of 4.9e-3) and the bias drops to 1.1 %, but the growth after
-      0.7 s remains (4.0e-3 at 1.4 s). A pressure floor in the equation of state (p >= 0 on
-      boundaries, density state unclipped) would keep the clamp's purpose without the
-      ratchet; not done (fluid.equations is being rewritten).
-    * Interpretation (consistent with the above, not proven): Fourtakas' term drives each
-      particle's density towards the hydrostatic density at its current height, which is
-      not the discrete equilibrium near truncated supports (the bias above); the two
-      cannot both hold, so a residual mass flux keeps particles creeping, and it erases
-      the density anomaly that resists a displacement faster than the acoustic response
-      (diffusion rate ~ delta c0 / h x 10 vs c0 / h). Evaluated on the settled state of a
-      run without diffusion, the Fourtakas term would inject a volumetric strain rate of
-      1.4e-2 1/s RMS in 3-D against 5.0e-3 in 2-D (speeds ~ rate x h of 1.3e-3 and 2.9e-4
-      sqrt(g H)): 3-D is 3 to 4 times more exposed. A diffusion term that vanishes for any
-      linear density field (delta-SPH with renormalised density gradients, the full
-      000_7d114ab96e048b26.txt Eq. 1-4) would not fight the discrete equilibrium.
-    * That term is now ``FluidConfig(diffusion="antuono")`` (session 3). It halves the
-      creep but does not stop it: quick (5 layers, 1.5 s) largest speed 3.4e-3 against
-      Fourtakas' 5.9e-3, pressure 1.6 % RMS (the truncation bias, as before); full (10
-      layers, 2 s, delta = 0.1: ``run_hydrostatic(3, dx=0.01, t_end=2.0, depth=0.1,
-      length=0.2, width=0.1, diffusion="antuono")``, 472 s on a loaded core) pressure
-      0.80 % RMS (passes), wall 3.2 %, largest speed 2.6e-3 sqrt(g H) against Fourtakas'
-      4.0e-3 (fails the 1e-3). So the creep is not (only) the diffusion fighting the
-      discrete equilibrium; what drives it in 3-D is open. It costs a second pair loop
-      (+70 % per step on the 2-D dam break), so it stays an option.
-    * Session 4: not the lattice, and not the start. The infinite cubic lattice is
-      linearly stable under pressure at h = sqrt(2) dx (benchmarks/lattice_stiffness.py
-      --stability; unstable at sqrt(3) dx, DualSPHysics' 3-D default), and relaxing the
-      tank first (:meth:`Fluid.settle`, 0.5 s) leaves the quick run as it was: largest
-      speed 5.9e-3 sqrt(g H), pressure 1.7 % RMS (with walls="adami" 2.5e-3 and 2.3 %).
-      The creep is a slow instability by the vertical edges, where two walls meet the
-      free surface, and it is the density diffusion's: at the full resolution (10
-      layers, 2 s, NUMBA_NUM_THREADS=1, ``run_hydrostatic(3, dx=0.01, t_end=2.0,
-      depth=0.1, length=0.2, width=0.1, ...)``) the largest speed is 3.8e-4 sqrt(g H)
-      with no diffusion (pressure 1.07 % RMS: the acoustic noise it no longer damps),
-      5.95e-4 with Fourtakas delta = 0.03, 2.25e-3 with 0.05, 4.0e-3 with 0.1 (pressure
-      0.76-0.77 % with each), 1.3e-3 with Molteni's term (no hydrostatic correction:
-      pressure 6.1 %), 3.2e-3 with walls="adami" after 0.5 s of settling (0.96 %).
-      Growing with delta faster than linearly, as an instability past a threshold
-      would; what couples the diffusion to the motion there is open. Not only the
-      particles beside the walls: switching the diffusion off for every fluid particle
-      with a boundary particle within 2h (DualSPHysics' DensityDT = 2 restricts its
-      Fourtakas term so; a throw-away experiment, not kept) leaves 2.27e-3 (0.94 %).
-      Run longer (4 s, the full resolution, largest speed every 0.25 s) it is a creep
-      that sets in and stays: with delta = 0.1 it starts at ~1 s, peaks at 4.0e-3 at
-      1.5 s and holds 1.7-3e-3 to 4 s while the largest displacement grows steadily to
-      0.73 dx; with delta = 0.03 it starts at ~2 s and reaches 1.5e-3 at 3.2 s (0.26 dx
-      at 4 s), so that setting's pass at 2 s above was only before the onset. Damped
-      settling first (2 s with tau = 0.2 s, or 3 s with 0.5 s) does not stop it: 1.5-2.5e-3
-      over the next 3 s. Without diffusion the tank stays at rest: 4.9e-5 sqrt(g H) at 4 s,
-      the displacement fixed at 0.031 dx; with the renormalised ("antuono") term it creeps
-      like Fourtakas' (2.0-2.5e-3 from 1.5 s, 0.56 dx at 4 s). A lead, tried as a
-      throw-away edit of the pair loop and not kept: diffusion only for the fluid
-      particles whose support is full of fluid (92 fluid neighbours within 2h on the
-      lattice) keeps the tank at rest as no diffusion does (2.7e-5 at 4 s; 2 s run: 3.6e-4,
-      pressure 1.03 % RMS, the same 1.07 % as no diffusion: the truncation bias plus
-      undamped acoustic noise near the surface). Run to 4 s: 8e-5 sqrt(g H) and 1.033 %
-      (no diffusion: 1.1e-4, 1.067 %): the 1 % is a static bias of the truncated surface
-      rows, which Fourtakas' term everywhere lowers to 0.76 % by moving the mass that
-      makes the creep. With diffusion cut on the fluid rows by the walls as well (as in
-      that experiment) the case is at rest or within 1 %, not both. Session 5's fade
-      (above) keeps it by the walls, where it does no harm, and takes it from the two
-      rows under the free surface only, with a smooth measure of the support's cut
-      instead of a neighbour count: at rest and 0.82 %.
+    History (sessions 2-5: the bias at 5 layers, the creep, every lever tried, the variants
+    of the fade): docs/validation/hydrostatic-3d_history.md.
     """
     if quick:
         return run_hydrostatic(3, dx=0.01, t_end=1.5, depth=0.1, length=0.1, width=0.1, **STILL_3D)
@@ -389,35 +314,20 @@ def run_dambreak(n_a: int, T_end: float = 7.0, a: float = 0.05715, tank: float =
     particles beyond a 2h gap at T = 7): the late front is not resolved there.
 
     What the data show (80 particles against Table 2): the computed front passes the first
-    mark (Z = 1.11, T = 0.41) with the experiment (0.03 earlier) and every later mark,
-    Z = 1.22 to 3.67, a nearly constant 0.25 +- 0.03 earlier in T. The whole difference is
-    built between T = 0.41 and 0.84, where the measured front moves at a constant 0.26 per
-    unit T (0.27 before): no acceleration, whereas the computed toe, released at once,
-    accelerates (0.29, then 0.55). Afterwards the speeds agree: from Z = 1.44 to 3.67 the
-    measured front takes 1.79, the computed one 1.86 (40 and 80 particles, +3.9 %); late
-    (Fig. 3, T = 5.1 to 6.8) 1.74 measured against 1.81 computed per unit T (40 particles;
-    Ritter's frictionless shallow-water front, dx/dt = 2 sqrt(g 2a), is 2). Bed friction
-    alone would make the lag grow with distance; it does not. The computed front converges
-    (first order in dx) to one that leads the experiment's clock by about 0.3 in T, while
-    the back-wall height over the first half of the collapse agrees with that clock (2.0 %
-    RMS at 20 particles, 1.2 % at 40 and 80). A gate lifted over T = 0.25 (2.2 a in 14 ms
-    at a = 57 mm) reconciles both at 20 particles: front 4.5 % RMS as measured (fitted
-    offset 0.065), height 2.6 %; gates lifted over T = 0.5 and 1 shoot a jet under the gate
-    and spoil the front's shape (6.1, 7.2 % after the fitted offset) and the collapse (6.7,
-    11.8 %). How Martin & Moyce released the column is not in refdata, so no gate is part
-    of the judged case.
-
-    Published numerical results for this column: interFoam (VOF with air, no-slip walls)
-    runs ahead of Martin & Moyce by 9.8 % (mean, as measured) and agrees to 3.0 % after
-    shifting its clock by +0.175 in T, the same on two meshes (github.com/vamseeachanta/
-    digitalmodel pull 1260); Lethe's VOF dam break adds the same ``time_correction = 0.175``
-    before comparing (github.com/chaos-polymtl/lethe, examples/multiphysics/dam-break/
-    dam-break-2d.py). This model, with nearly free-slip walls and no air, leads by more
-    (0.29 at 80 particles). Nielsen et al. (2022, J. Fluid Mech., "Friction effects on
-    quasi-steady dam-break wave propagation on horizontal beds") measure how bed roughness
-    and viscosity retard fronts against ideal-fluid theory. Colagrossi & Landrini (2003),
-    the DualSPHysics validation papers and Lobovsky et al. (2014) were not found in the
-    stored corpora: no number of theirs is used.
+    mark (Z = 1.11, T = 0.41) with the experiment and every later mark, Z = 1.22 to 3.67, a
+    nearly constant 0.25 +- 0.03 earlier in T. The whole difference is built between T =
+    0.41 and 0.84, where the measured front moves at a constant 0.26 per unit T: no
+    acceleration, whereas the computed toe, released at once, accelerates. Afterwards the
+    speeds agree (from Z = 1.44 to 3.67: +3.9 %). The computed front converges (first order
+    in dx) to one that leads the experiment's clock by about 0.3 in T, while the back-wall
+    height over the first half of the collapse agrees with that clock (1.2 % RMS at 40 and
+    80 particles). How Martin & Moyce released the column is not in refdata: a gate lifted
+    over T = 0.25 reconciles front and height at 20 particles (``gate_T_open``, a
+    diagnostic), so the judged criterion fits the experiment's time origin instead (below).
+    Published VOF results for this column shift its clock likewise (interFoam agrees to
+    3.0 % after +0.175 in T; Lethe adds the same ``time_correction = 0.175``); this model, with
+    nearly free-slip walls and no air, leads by more (0.29 at 80 particles). The evidence,
+    the sources and the gates tried: docs/validation/dambreak-2d_history.md.
 
     Koshizuka & Oka (1996, L = 0.146 m, the PySPH digitisation): their front moves at 0.81
     of Martin & Moyce's speed between Z = 1.5 and 3.0 (0.96 against 1.18 per unit T) at the
@@ -433,59 +343,23 @@ def run_dambreak(n_a: int, T_end: float = 7.0, a: float = 0.05715, tank: float =
     ``front_rms_rel_err_{mm1952 (Fig. 3), mm1952_table2, mm1952_small (a = 1.125 in),
     ko1996}``.
 
-    Error and cost (T_end = 7, tank 12 a; wall time of one process on this 2-core machine
-    shared with other jobs; ``python benchmarks/dambreak_front.py --what resolution --fine``
-    for the table, ``--what levers`` / ``--what gate`` for the ones below):
-
-    ====  =========  =====  ======  ==============  ==============  =======  ======  =======
-    n_a   particles  steps  wall s  as measured,    as measured,    fitted   judged  H, 1st
-                                    Fig. 3 (T<=7)   Table 2         offset   RMS     half
-    ====  =========  =====  ======  ==============  ==============  =======  ======  =======
-    10    758        3915   3       7.8 %           5.8 %           0.100    5.2 %*  2.6 %
-    20    1898       7705   19      9.0 %           9.8 %           0.205    2.0 %   2.0 %
-    40    5378       15262  58      11.8 %          12.1 %          0.255    2.2 %   1.2 %
-    80    17138      30425  367     13.2 %          13.2 %          0.285    2.6 %   1.2 %
-    ====  =========  =====  ======  ==============  ==============  =======  ======  =======
-
-    (* the tip layer tears at 10 particles.) The fitted offset converges (increments 0.105,
-    0.05, 0.03) to about 0.3; the judged error settles near 2-3 %: from 40 to 80 particles
-    the pointwise errors move less than half as much as from 20 to 40, the late Fig. 3 points
-    (T = 5.1-6.8, the thinnest surge, where the missing bed friction would act most) ending
-    1-4 % ahead. Its largest point (5.6, 6.6, 6.9 %) is Fig. 3's T = 4.03, on either side
-    of which the digitised front moves at 1.18 and 2.44 per unit T, the latter above
-    Ritter's bound of 2: a digitising slip.
-
-    Solver levers at 20 particles, one at a time (Z at T = 2 / as measured vs Table 2 /
-    fitted offset / judged / height): defaults 2.568 / 9.8 % / 0.205 / 2.0 % / 2.0 %;
-    alpha 0.001: 2.595 / 10.5 / 0.220 / 1.8 / 1.1; alpha 0.05: 2.518 / 8.0 / 0.165 / 2.1 /
-    5.3; alpha 0.1: 2.474 / 6.3 / 0.125 / 2.6 / 6.3; water's laminar viscosity nu = 1e-6
-    m^2/s (no-slip walls): unchanged (2.567); nu = 1e-4: 2.547 / 9.0 / 0.185 / 2.0 / 5.7;
-    c0_factor 20: 2.539 / 8.9 / 0.185 / 2.1 / 4.2 (twice the steps); 40: 2.492 / 7.4 / 0.145
-    / 2.5 / 5.3 (4 times); h_coef 1.2: 2.562 / 10.2 / 0.215 / 2.1 / 2.0; 2: 2.496 / 7.2 /
-    0.145 / 2.3 / 1.6; no density diffusion: 2.516 / 8.5 / 0.175 / 2.8 / 1.5; Verlet
-    instead of symplectic: unchanged (2.567). Every lever that slows the front adds
+    Solver levers at 20 particles, one at a time (alpha, c0, laminar viscosity, h, density
+    diffusion, integrator; the history file): every lever that slows the front adds
     numerical dissipation, and the ones that slow it most (alpha, c0) spoil the collapse;
-    real water viscosity does nothing at this scale (Re = a sqrt(g a) / nu = 43 000); the
-    hydrostatic start against a uniform rho0 moves Z(2) by 0.04 % (measured with the
-    former 4 a tank). The tip particles ride 1.8 to 2.1 dx above the bed line (0.5 dx at rest:
-    the dynamic-boundary gap), on a nearly free-slip bed; the no-slip laminar-viscosity
-    lever shows that this hardly matters. Nothing on the solver side is wrong: it
-    converges to the instantaneous-release answer.
+    real water viscosity does nothing at this scale (Re = a sqrt(g a) / nu = 43 000).
+    Nothing on the solver side is wrong: it converges to the instantaneous-release answer.
 
     Open: after the first half of the collapse (H < 0.5, tau = 2.2 to 4.2) the residual
     height is computed 6 to 24 % above Table 6 (``height_rms_rel_err_mm1952_late``: 13.9,
-    12.1, 14.6, 13.3 % at 10, 20, 40, 80 particles), not converging; a delayed experiment
-    would err the other way. The height taken 2 to 4 spacings from the wall is 2 to 10 %
-    lower than the one within 2 spacings: part of the excess is a layer held by the wall.
-    Without artificial viscosity between fluid and walls (``alpha_wall = 0``, 20
-    particles) the late excess falls from 12.1 to 8.4 % RMS and the first half from 2.0 to
-    1.1 %, while the front does not move (Z(2) +0.1 %, offset 0.21): wall friction through
-    the artificial viscosity holds water at the back wall, not at the bed under the front.
-    The remaining 8 % is not explained.
+    12.1, 14.6, 13.3 % at 10, 20, 40, 80 particles), not converging; part of the excess is a
+    layer held by the wall through the artificial viscosity between fluid and walls
+    (``alpha_wall = 0``: 12.1 -> 8.4 % at 20 particles); the remaining 8 % is not explained
+    (the history file).
 
     ``p_noise_rms`` is the particle-scale pressure noise (:func:`_pressure_noise`) averaged
     over T = 1, 2, 3, in units of rho0 g 2a: what MLS re-initialisation (``mls_every``) is
-    for."""
+    for.
+    """
     from fluid.geometry import assemble, block, tank_walls
 
     g = 9.81
@@ -572,13 +446,65 @@ def run_dambreak(n_a: int, T_end: float = 7.0, a: float = 0.05715, tank: float =
     metrics["front_T_Z"] = [[round(float(x), 3), round(float(z), 4)] for x, z in zip(Ts[::4], Zs[::4])]
     tolerances = {"front_rms_rel_err_mm1952_after_release": 0.05,
                   "front_release_delay_T_mm1952": [0.0, T_RELEASE]}
-    passed = (metrics["front_rms_rel_err_mm1952_after_release"] < 0.05
-              and 0.0 <= s <= T_RELEASE)
-    return {"passed": bool(passed), "metrics": metrics, "tolerances": tolerances,
-            "particles": int(f.ps.n), "steps": int(f.counters.steps)}
+    front = {"SPH (ours)": {"x": Ts, "y": Zs},
+             "Martin & Moyce Table 2": {"x": tab[:, 0], "y": tab[:, 1], "style": "s"},
+             "Martin & Moyce Fig. 3 (a = 2.25 in)": {"x": fig3[:, 0], "y": fig3[:, 1], "style": "o"},
+             "Koshizuka & Oka 1996": {"x": series["ko1996"][:, 0], "y": series["ko1996"][:, 1], "style": "^"}}
+    if judged.size and math.isfinite(s):
+        front[f"Martin & Moyce judged, clock shifted by the fitted {s:.3f}"] = {
+            "x": judged[:, 0] - s, "y": judged[:, 1], "style": "x"}
+    plots = {"surge front": {"xlabel": "T = t sqrt(2 g / a)", "ylabel": "Z = front / a", "curves": front},
+             "residual height at the back wall": {
+                 "xlabel": "tau = t sqrt(g / a)", "ylabel": "H = height / 2a",
+                 "curves": {"SPH (ours)": {"x": tau, "y": Hs},
+                            "Martin & Moyce (height table)": {"x": href[:, 0], "y": href[:, 1], "style": "s"}}}}
+    return {"metrics": metrics, "tolerances": tolerances,
+            "particles": int(f.ps.n), "steps": int(f.counters.steps), "series": plots}
 
 
 @case("dambreak-2d", "2-D water column a x 2a collapsing on a dry bed: surge front against "
-      "Martin & Moyce (1952) within 5 % RMS after the experiment's release phase")
+      "Martin & Moyce (1952) within 5 % RMS after the experiment's release phase",
+      target="front position within 5 % over the published range; converges with dx",
+      quick="the full variant's criterion at 20 particles across the column instead of 40: the front within 5 % "
+            "RMS of Martin & Moyce after the experiment's release phase, with one time-origin offset of the "
+            "experiment fitted within 0 ... 0.84 in T")
 def dambreak_2d(quick: bool) -> dict:
-    return run_dambreak(20 if quick else 40)
+    """Collapse of a water column ``a`` wide and ``2a`` high (Martin & Moyce 1952, n^2 = 2,
+    a = 2.25 in) on a dry bed, the gate removed at once, in a tank 12 a long, to T = t
+    sqrt(2 g / a) = 7; 40 particles across the column (quick: 20). The surge front and the
+    residual height at the back wall against Martin & Moyce's tables and Fig. 3 (see
+    :func:`run_dambreak`).
+
+    Measured trade (error and cost; T_end = 7, tank 12 a; wall time of one process on this
+    2-core machine shared with other jobs; ``python benchmarks/dambreak_front.py --what
+    resolution --fine``):
+
+    ====  =========  =====  ======  ==============  ==============  =======  ======  =======
+    n_a   particles  steps  wall s  as measured,    as measured,    fitted   judged  H, 1st
+                                    Fig. 3 (T<=7)   Table 2         offset   RMS     half
+    ====  =========  =====  ======  ==============  ==============  =======  ======  =======
+    10    758        3915   3       7.8 %           5.8 %           0.100    5.2 %*  2.6 %
+    20    1898       7705   19      9.0 %           9.8 %           0.205    2.0 %   2.0 %
+    40    5378       15262  58      11.8 %          12.1 %          0.255    2.2 %   1.2 %
+    80    17138      30425  367     13.2 %          13.2 %          0.285    2.6 %   1.2 %
+    ====  =========  =====  ======  ==============  ==============  =======  ======  =======
+
+    (* the tip layer tears at 10 particles.) The fitted offset converges (increments 0.105,
+    0.05, 0.03) to about 0.3; the judged error settles near 2-3 %: from 40 to 80 particles
+    the pointwise errors move less than half as much as from 20 to 40, the late Fig. 3 points
+    (T = 5.1-6.8, the thinnest surge, where the missing bed friction would act most) ending
+    1-4 % ahead. Its largest point (5.6, 6.6, 6.9 %) is Fig. 3's T = 4.03, on either side
+    of which the digitised front moves at 1.18 and 2.44 per unit T, the latter above
+    Ritter's bound of 2: a digitising slip.
+    """
+    out = run_dambreak(20 if quick else 40)
+    out["stated_tolerances"] = {"front_rms_rel_err_mm1952": 0.05, "front_rms_rel_err_mm1952_table2": 0.05}
+    out["departure"] = {
+        "criterion": "the front within 5 % RMS of Martin & Moyce (Table 2 from T = 0.84, Fig. 3 beyond) with one "
+                     "time-origin offset of the experiment fitted, within 0 ... 0.84 in T (the release phase)",
+        "why": "the measured front does not accelerate over T = 0.41-0.84 (the experiment's release of the column, "
+               "not in refdata) while the instantaneously released model's does; after it the front speeds agree "
+               "within 4 %, and the computed front converges to one that leads the experiment's clock by about "
+               "0.3 in T (published VOF results shift the clock by 0.175 likewise). The errors as measured, over "
+               "the whole published range, are kept beside it (front_rms_rel_err_mm1952, _table2)"}
+    return out

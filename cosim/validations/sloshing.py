@@ -130,6 +130,24 @@ def _harmonic_fit(t: np.ndarray, y: np.ndarray, omega: float):
 
 
 # ------------------------------------------------------------------------------------ westergaard
+#: the stated target of the westergaard row of docs/VALIDATION.md and its tolerances
+WESTERGAARD_TARGET = ("RMS of k_p against the exact solution < 0.04 raw, < 0.02 with the boundary-pressure "
+                      "averaging of 001 Eq. 15 (the paper's own figures against the parabola)")
+WESTERGAARD_TOLERANCES = {"rms_raw_vs_exact": 0.04, "rms_face_vs_exact": 0.02}
+
+
+def westergaard_series_plot(profile: dict) -> dict:
+    """The report's plot of a :func:`run_westergaard` profile: k_p over the depth, ours
+    (raw, Eq. 15, Eq. 15 at the face) against the exact series and the 7/8 parabola."""
+    d = profile["depth_m"]
+    curves = {"exact incompressible series": {"x": profile["kp_exact"], "y": d},
+              "7/8 parabola (001 Eq. 16)": {"x": profile["kp_parabola"], "y": d, "style": "--"}}
+    for q, label in (("raw", "raw boundary pressure"), ("avg", "Eq. 15"), ("face", "Eq. 15 at the face")):
+        curves[f"SPH (ours), {label}"] = {"x": profile[f"kp_{q}"], "y": d, "style": "o-"}
+    return {"wall pressure": {"xlabel": "k_p = p_d / (rho a0 H)", "ylabel": "depth below the surface [m]",
+                              "invert_y": True, "curves": curves}}
+
+
 def run_westergaard(dx: float, c0: float = 1430.0, dim: int = 2, periods_skip: int = 2,
                     periods_fit: int = 3, samples_per_period: int = 40, a0: float = 0.5 * G,
                     Tp: float = 0.03, length: float = 3.0, H: float = 1.0, height: float = 1.5,
@@ -237,9 +255,10 @@ def run_westergaard(dx: float, c0: float = 1430.0, dim: int = 2, periods_skip: i
                     "acoustic_period_over_Tp": 4 * H / c0 / Tp, "dx_m": dx, "c0_m_s": c0,
                     "h_over_dx": cfg.h_coef, "walls": cfg.walls,
                     "wall_rows": int(depth.size), "max_speed_m_s": float(f.max_speed())})
-    tolerances = {"rms_raw_vs_exact": 0.04, "rms_face_vs_exact": 0.02}
-    passed = all(metrics[k] < v for k, v in tolerances.items())
-    return {"passed": passed, "metrics": metrics, "tolerances": tolerances,
+    metrics["kp_base_face_rel_err"] = metrics["kp_base_face"] / metrics["kp_base_exact"] - 1
+    metrics["face_below_avg_rms"] = bool(metrics["rms_face_vs_exact"] < metrics["rms_avg_vs_exact"])
+    tolerances = dict(WESTERGAARD_TOLERANCES)
+    return {"metrics": metrics, "tolerances": tolerances,
             "particles": int(f.ps.n), "steps": int(f.counters.steps),
             "profile": {"depth_m": depth.tolist(), "kp_raw": kp["raw"].tolist(), "kp_avg": kp["avg"].tolist(),
                         "kp_face": kp["face"].tolist(),
@@ -248,7 +267,11 @@ def run_westergaard(dx: float, c0: float = 1430.0, dim: int = 2, periods_skip: i
 
 @case("westergaard", "2-D tank 3.0 m long, water 1.0 m, base acceleration 0.5 g sin(2 pi t / 0.03 s): "
       "wall k_p = p_d/(rho a0 H) vs the exact incompressible series, RMS < 0.04 (raw boundary "
-      "pressure) and < 0.02 (Eq. 15 averaging carried to the wall face); walls='adami'")
+      "pressure) and < 0.02 (Eq. 15 averaging carried to the wall face); walls='adami'",
+      target=WESTERGAARD_TARGET,
+      quick="dx = 0.1 m (10 rows), 1 + 2 periods: the face k_p within 0.06 RMS of the exact series and its base "
+            "value within 6 %, the out-of-phase part below 0.05, the face correction better than plain Eq. 15 "
+            "(first-order errors of ~dx/H: the stated 0.04 / 0.02 need dx <= 0.05 m)")
 def westergaard(quick: bool) -> dict:
     """001_14936b82710365b2.txt §3.1 (Fig. 5): see :func:`run_westergaard` for set-up and
     extraction. c0 = 1430 m/s (the paper's c_p); tank walls carrying the fluid's pressure
@@ -302,8 +325,10 @@ def westergaard(quick: bool) -> dict:
 
     The tank walls' pressure carried from the fluid (``FluidConfig(walls="adami")``,
     fluid.wall_density, with the wall acceleration of Adami et al. 2012 Eq. 27) removes
-    (3): the wall particle then holds the fluid's pressure at its position. Measured
-    (``run_westergaard(dx, walls="adami")``, quick periods at 0.10 m):
+    (3): the wall particle then holds the fluid's pressure at its position.
+
+    Measured trade (the case's set-up: ``run_westergaard(dx, walls="adami")``, quick
+    periods at 0.10 m; RMS of k_p over the wall rows below the surface, vs exact):
 
     ======  ==========  =====  ==========  ==========  ==========  =========
     dx [m]  particles   steps  raw         Eq. 15      Eq. 15 face base k_p
@@ -312,8 +337,10 @@ def westergaard(quick: bool) -> dict:
     0.025   5538        30400  0.018       0.0165      0.009       0.737
     ======  ==========  =====  ==========  ==========  ==========  =========
 
-    and at dx = 0.05 m (benchmarks/sloshing_trade.py) raw 0.031, Eq. 15 0.038, face 0.017;
-    c0 = 700 / 350 m/s there: raw 0.040 / 0.078, face 0.021 / 0.056. So both targets are
+    (and at dx = 0.05 m, benchmarks/sloshing_trade.py: raw 0.031, Eq. 15 0.038, face 0.017;
+    c0 = 700 / 350 m/s there: raw 0.040 / 0.078, face 0.021 / 0.056.)
+
+    So both targets are
     met from dx = 0.05 m on (the full run, 0.025 m: 91 s; 72 s in the trade run), and the
     case runs with
     ``walls="adami"`` (session 4; before, it kept the solver's default walls, which fail
@@ -322,15 +349,24 @@ def westergaard(quick: bool) -> dict:
     0.013 at 0.025 m (73 s, 21 600 steps): also within both targets at the full
     resolution, the face pressure less close than with the shorter support.
     """
+    out = (run_westergaard(0.1, periods_skip=1, periods_fit=2, walls="adami") if quick
+           else run_westergaard(0.025, walls="adami"))
+    out["series"] = westergaard_series_plot(out.pop("profile"))
     if quick:
-        return run_westergaard(0.1, periods_skip=1, periods_fit=2, walls="adami")
-    return run_westergaard(0.025, walls="adami")
+        out["stated_tolerances"] = out["tolerances"]
+        out["tolerances"] = {"rms_face_vs_exact": 0.06, "kp_base_face_rel_err": 0.06, "kp_out_of_phase_max_avg": 0.05,
+                             "face_below_avg_rms": True}
+    return out
 
 
 @case("westergaard-3d", "3-D tank 3.0 m long, water 1.0 m, base acceleration 0.5 g sin(2 pi t / 0.03 s), "
       "a 0.3 m slice of its 1.5 m width (the flow is uniform across): wall k_p on the mid-plane vs the exact "
       "incompressible series, the targets of westergaard (walls='adami', dx 0.05 m; quick: dx 0.1 m, default "
-      "walls, also checked against the 2-D section)")
+      "walls, also checked against the 2-D section)", target=WESTERGAARD_TARGET, row="westergaard",
+      quick="a 0.3 m slice at dx = 0.1 m, c0 = 700 m/s, 1 + 1 periods, default walls: the face k_p within 0.07 "
+            "RMS of the exact series and its base value within 6 %, the out-of-phase part below 0.08, the face "
+            "correction better than plain Eq. 15, and the 2-D section's profile (same settings) within 0.03 "
+            "(Eq. 15) and 0.05 (face) row by row")
 def westergaard_3d(quick: bool) -> dict:
     """The 3-D tank of 001_14936b82710365b2.txt §3.1 (3.0 m long, 1.0 m water, 1.5 m
     wide, a0 = 0.5 g, Tp = 0.03 s): :func:`run_westergaard` with ``dim=3``; k_p is read
@@ -355,7 +391,7 @@ def westergaard_3d(quick: bool) -> dict:
     that the 3-D solver (kernel normalisation, neighbour search, wall boundaries in 3-D)
     gives the 2-D impulsive pressure.
 
-    Measured (NUMBA_NUM_THREADS=1, 2-core machine shared with other runs; RMS of k_p
+    Measured trade (NUMBA_NUM_THREADS=1, 2-core machine shared with other runs; RMS of k_p
     over the wall rows below the surface, vs exact; ``run_westergaard(dx, dim=3,
     width=w, c0=c0, periods_skip=1, periods_fit=n)``):
 
@@ -387,8 +423,22 @@ def westergaard_3d(quick: bool) -> dict:
     better than its Eq. 15 average (0.058 against 0.056 RMS) and its base k_p is 6.8 %
     high, which the quick test's checks (written for these walls) refuse.
     """
+    departure = {
+        "criterion": "the stated tolerances (raw < 0.04, face < 0.02 RMS) on the mid-plane of a 0.3 m slice of "
+                     "the tank's 1.5 m width at dx = 0.05 m, walls='adami'",
+        "why": "the flow is uniform across the width (the walls normal to y are parallel to the shaking), so the "
+               "slice is the same flow at twice the resolution for the cost of the whole width at dx = 0.1 m; the "
+               "whole width at dx = 0.05 m (5 times the particles) was not run",
+        "stated_measured": {"rms_raw_vs_exact": 0.225, "rms_face_vs_exact": 0.047},
+        "stated_met": False,
+        "source": "not this run: the docstring's record of the whole 1.5 m width at dx = 0.1 m with the default "
+                  "walls (11 358 particles, 4560 steps, 184 s)"}
     if not quick:
-        return run_westergaard(0.05, dim=3, width=0.3, periods_skip=1, periods_fit=2, walls="adami")
+        out = run_westergaard(0.05, dim=3, width=0.3, periods_skip=1, periods_fit=2, walls="adami")
+        out["series"] = westergaard_series_plot(out.pop("profile"))
+        out["stated_tolerances"] = dict(WESTERGAARD_TOLERANCES)
+        out["departure"] = departure
+        return out
     settings = dict(c0=700.0, periods_skip=1, periods_fit=1)
     out = run_westergaard(0.1, dim=3, width=0.3, **settings)
     section = run_westergaard(0.1, dim=2, **settings)
@@ -397,6 +447,14 @@ def westergaard_3d(quick: bool) -> dict:
         out["metrics"][f"kp_{q}_vs_2d_max"] = float(d.max())
         out["metrics"][f"rms_{q}_vs_exact_2d"] = section["metrics"][f"rms_{q}_vs_exact"]
     out["metrics"]["width_m"] = 0.3
+    plot = westergaard_series_plot(out.pop("profile"))
+    plot["wall pressure"]["curves"]["2-D section (same settings), Eq. 15 at the face"] = {
+        "x": section["profile"]["kp_face"], "y": section["profile"]["depth_m"], "style": "x--"}
+    out["series"] = plot
+    out["stated_tolerances"] = dict(WESTERGAARD_TOLERANCES)
+    out["departure"] = departure
+    out["tolerances"] = {"rms_face_vs_exact": 0.07, "kp_base_face_rel_err": 0.06, "kp_out_of_phase_max_avg": 0.08,
+                         "face_below_avg_rms": True, "kp_avg_vs_2d_max": 0.03, "kp_face_vs_2d_max": 0.05}
     return out
 
 
@@ -478,8 +536,7 @@ def run_sloshing_frequency(dx: float, L: float = 1.0, h: float = 0.5, amplitude:
                "sensor_z_m": sensor_z, "decay_s": float(times[-1] - times[0]), "dx_m": dx,
                "c0_m_s": cfg.speed_of_sound, "h_over_dx": cfg.h_coef, "walls": cfg.walls}
     tolerances = {"f1_rel_err": 0.02}
-    passed = metrics["f1_rel_err"] < tolerances["f1_rel_err"]
-    return {"passed": passed, "metrics": metrics, "tolerances": tolerances,
+    return {"metrics": metrics, "tolerances": tolerances,
             "particles": int(f.ps.n), "steps": int(f.counters.steps)}
 
 
@@ -650,15 +707,16 @@ def run_spheric10(dx: float, t_end: float = 8.0, c0: float = 28.0, sample_dt: fl
         tolerances = {"peak_ratio_worst": 0.2, "lag_worst_s": 0.05}
     else:  # a run too short for an impact: the first swing
         tolerances = {"swing1_peak_err": 0.2, "swing1_lag_abs_s": 0.1}
-    passed = all(k in metrics and metrics[k] < v for k, v in tolerances.items())
-    return {"passed": passed, "metrics": metrics, "tolerances": tolerances,
+    return {"metrics": metrics, "tolerances": tolerances,
             "particles": int(f.ps.n), "steps": int(f.counters.steps),
             "series": {"t": times, "p": p}}
 
 
 @case("sloshing-frequency", "2-D tank 1.0 m long, water 0.5 m, shaken 3 periods then free: first "
       "natural frequency from the FFT of the wall pressure within 2 % of linear theory (fluid set-up "
-      "WAVES_2D: h = 2 dx, walls='adami')")
+      "WAVES_2D: h = 2 dx, walls='adami')", target="first peak of the wall-pressure FFT within 2 %",
+      quick="the stated target (within 2 % of linear theory) at dx = 0.05 m (10 rows), c0 = 10 sqrt(g h), 2 "
+            "forced and 4 free periods, instead of dx = 0.025 m, 20 sqrt(g h), 3 and 6")
 def sloshing_frequency(quick: bool) -> dict:
     """See :func:`run_sloshing_frequency`. Reference: linear potential theory
     ``w1^2 = g (pi/L) tanh(pi h/L)``: f1 = 0.8462 Hz for L = 1 m, h = 0.5 m (refdata
@@ -803,7 +861,9 @@ def sloshing_frequency(quick: bool) -> dict:
 
 @case("sloshing-spheric10", "SPHERIC Test 10 (rolling tank 900 x 508 mm, water 93 mm, measured roll): "
       "left-wall pressure impact peaks within 20 % and within 0.05 s of the measured ones (dx 3.1 mm, "
-      "~35 min; quick: the first swing at 18.6 mm)")
+      "~35 min; quick: the first swing at 18.6 mm)", target="pressure peaks within 20 %, in phase",
+      quick="the first swing only (0.5-1.2 s, before the first impact) at dx = 18.6 mm (5 rows over the depth): "
+            "its pressure peak within 20 % and 0.1 s of the measured one")
 def sloshing_spheric10(quick: bool) -> dict:
     """See :func:`run_spheric10`. Reference: the measured pressure of SPHERIC Test 10
     (refdata/sloshing_spheric_test10; impact peaks 3.68, 3.89, 2.66, 7.15 kPa at 2.375,
@@ -997,7 +1057,13 @@ def sloshing_spheric10(quick: bool) -> dict:
     """
     if quick:  # the first swing only (no impact): 5 particle rows over the depth
         out = run_spheric10(0.0186, t_end=1.3, sample_dt=0.005)
+        out["stated_tolerances"] = {"peak_ratio_worst": 0.2, "lag_worst_s": 0.05}
     else:
         out = run_spheric10(0.0031, t_end=8.0)
-    out.pop("series")
+    ours = out.pop("series")
+    exp = spheric10_pressure()
+    seen = exp[:, 0] <= ours["t"][-1]
+    out["series"] = {"left-wall pressure": {"xlabel": "t [s]", "ylabel": "p [kPa]", "curves": {
+        "measured (SPHERIC Test 10)": {"x": exp[seen, 0], "y": exp[seen, 1] / 1e3},
+        f"SPH (ours), {out['metrics']['sensor']} sensor": {"x": ours["t"], "y": ours["p"] / 1e3}}}}
     return out

@@ -10,7 +10,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from cosim import refdata
-from cosim.validation import case
+from cosim.validation import case, judge
 
 RHO, G = 1000.0, 9.81
 
@@ -73,7 +73,11 @@ def moored_box_sph(dx: float, offset: float, t_end: float, c0: float | None = No
 
 
 @case("moored-body-sph", "2-D box on two catenary lines in SPH water, offset and released: settles where "
-                         "lines + hydrostatics balance")
+                         "lines + hydrostatics balance", row="moored-body",
+      target="decay to the equilibrium predicted by lines + hydrostatics",
+      quick="the full variant's criterion (the mean centre over the last second within half a spacing of the "
+            "equilibrium in x and z) at dx = 2 cm, c0 = 10 m/s, 3 s instead of dx = 1 cm, 6 s: within 10 mm "
+            "instead of 5 mm")
 def moored_body_sph(quick: bool) -> dict:
     """The box of the analytic ``moored-body`` case scaled to a tank: 0.2 x 0.1 m,
     500 kg/m^3, in 0.3 m of SPH water (tank 1.4 m), on two inextensible catenary
@@ -107,9 +111,12 @@ def moored_body_sph(quick: bool) -> dict:
     late = t >= t_end - 1.0
     err_x, err_z = float(x[late].mean() - MB_XC), float(z[late].mean() - z_eq)
     tol_x, tol_z = (0.5 * dx, 0.5 * dx)
-    passed = abs(err_x) < tol_x and abs(err_z) < tol_z and np.isfinite(z).all()
+    series = {"box centre": {"xlabel": "t [s]", "ylabel": "offset from the equilibrium [mm]", "curves": {
+        "x - x_eq (ours)": {"x": t, "y": (x - MB_XC) * 1e3},
+        "z - z_eq (ours)": {"x": t, "y": (z - z_eq) * 1e3},
+        "equilibrium (lines + hydrostatics)": {"x": [t[0], t[-1]], "y": [0.0, 0.0], "style": "--"}}}}
     return {
-        "passed": bool(passed),
+        "series": series,
         "metrics": {
             "equilibrium_z_m": z_eq, "free_floating_z_m": z_free,
             "mean_z_last_s_m": float(z[late].mean()), "mean_x_last_s_m": float(x[late].mean()),
@@ -118,8 +125,9 @@ def moored_body_sph(quick: bool) -> dict:
             "surge_amplitude_last_s_m": float(0.5 * np.ptp(x[late])),
             "max_roll_deg": float(np.degrees(np.abs(th)).max()),
             "tensions_N": mooring.fairlead_tensions().tolist(), "dx_m": dx, "t_end_s": t_end,
+            "finite": bool(np.isfinite(z).all()),
         },
-        "tolerances": {"x_m": tol_x, "z_m": tol_z},
+        "tolerances": {"x_error_m": tol_x, "z_error_m": tol_z, "finite": True},
         "particles": int(fluid.fluid.ps.n),
         "steps": c.steps,
     }
@@ -306,13 +314,13 @@ def hadzic_compare(rec, probes):
 
     Phase: the lag of the SPH history against the measured one that maximises their
     correlation over the measured window (:func:`best_lag`), within 0.1 s, for heave and
-    sway; heave's crest and trough times are also checked. The sway's maximum time is
+    sway; heave's crest and trough times are also checked (:data:`HADZIC_TOLERANCES`). The sway's maximum time is
     reported, not checked: the measured sway has two nearly equal maxima (110 mm at 7.55
     s, 116 mm at 8.14 s), so which one is the larger, and hence the time, flips with a
     5 % change of either (the check as first written failed on that alone)."""
     t, x, z, th = np.asarray(rec).T
     meas = hadzic_measured()
-    metrics, ok = {}, True
+    metrics = {}
     for name, pos in (("WP_Heave", z), ("WP_Sway", x)):
         tm, vm = meas[name]
         # the measured motions start from the box at rest (0 at 6.3 s); the SPH box
@@ -324,14 +332,11 @@ def hadzic_compare(rec, probes):
         ps_, qs_, tps, tqs = _peaks(t, sim, win)
         rel_max, rel_min = (ps_ - pm) / abs(pm), (qs_ - qm) / abs(qm)
         metrics[name] = {"measured_max_min_m": [pm, qm], "sph_max_min_m": [ps_, qs_],
-                         "rel_error_max_min": [rel_max, rel_min],
-                         "t_max_measured_sph_s": [tpm, tps], "t_min_measured_sph_s": [tqm, tqs]}
+                         "rel_error_max": rel_max, "rel_error_min": rel_min,
+                         "t_max_measured_sph_s": [tpm, tps], "t_min_measured_sph_s": [tqm, tqs],
+                         "t_max_diff_s": tps - tpm, "t_min_diff_s": tqs - tqm}
         lag, corr = best_lag(t, sim, tm, vm)
         metrics[name].update({"lag_s": lag, "correlation_at_lag": corr})
-        checks = [abs(rel_max) < 0.15, abs(lag) < 0.1]
-        if name == "WP_Heave":
-            checks += [abs(rel_min) < 0.15, abs(tps - tpm) < 0.1, abs(tqs - tqm) < 0.1]
-        ok &= all(checks)
     for j, name in enumerate(("WaveProbe_N1", "WaveProbe_N2")):
         tm, vm = meas[name]
         probes = np.asarray(probes)
@@ -343,7 +348,18 @@ def hadzic_compare(rec, probes):
         metrics[name] = {"measured_max_m": float(vm.max()), "sph_max_m": float(sim.max()),
                          "measured_min_m": float(vm.min()), "sph_min_m": float(sim.min()),
                          "correlation": float(np.corrcoef(sim, vm)[0, 1])}
-    return bool(ok), metrics
+    return judge(metrics, HADZIC_TOLERANCES)[0], metrics
+
+
+#: what floating-box-waves (full) is judged against: peaks within 15 %, phase as the lag of best
+#: correlation within 0.1 s, heave's crest and trough times within 0.1 s (:func:`hadzic_compare`)
+HADZIC_TOLERANCES = {"WP_Heave.rel_error_max": 0.15, "WP_Heave.rel_error_min": 0.15, "WP_Sway.rel_error_max": 0.15,
+                     "WP_Heave.lag_s": 0.1, "WP_Sway.lag_s": 0.1, "WP_Heave.t_max_diff_s": 0.1,
+                     "WP_Heave.t_min_diff_s": 0.1}
+#: the stated target as first written: peaks within 15 %, in phase as the times of the extremes
+#: within 0.1 s (heave crest and trough, sway maximum)
+HADZIC_STATED = {"WP_Heave.rel_error_max": 0.15, "WP_Heave.rel_error_min": 0.15, "WP_Sway.rel_error_max": 0.15,
+                 "WP_Heave.t_max_diff_s": 0.1, "WP_Heave.t_min_diff_s": 0.1, "WP_Sway.t_max_diff_s": 0.1}
 
 
 def best_lag(t, v, tm, vm, max_lag: float = 0.25, step: float = 0.002) -> tuple[float, float]:
@@ -369,7 +385,10 @@ def _peaks(t, v, window):
 
 
 @case("floating-box-waves", "2-D box 0.10 x 0.05 m, 680 kg/m^3, in a wave packet from a flap driven by the "
-                            "measured angle (Hadzic et al. 2005): heave and sway peaks, phase")
+                            "measured angle (Hadzic et al. 2005): heave and sway peaks, phase",
+      target="peaks within 15 %, in phase",
+      quick="a smoke run of the whole set-up at dx = 2 cm from 1 to 1.3 s (the packet reaches the box after 6 s): "
+            "every value finite, the box within one spacing of its initial position, no particle lost")
 def floating_box_waves(quick: bool) -> dict:
     """Set-up (seed 004 §4.1; Hadzic, Hennig, Peric & Xing-Kaeding 2005, Appl.
     Math. Modelling 29:1196-1210; the DualSPHysics case CaseFloatingWavesVal as in
@@ -479,13 +498,48 @@ def floating_box_waves(quick: bool) -> dict:
                "heave_range_m": [float(heave.min()), float(heave.max())],
                "sway_range_m": [float(sway.min()), float(sway.max())],
                "max_roll_deg": float(np.degrees(np.abs(th)).max())}
-    if quick:
-        tol = {"heave_m": dx, "sway_m": dx}
-        passed = np.isfinite(rec).all() and np.abs(heave).max() < dx and np.abs(sway).max() < dx and not lost
-    else:
-        tol = {"peak_rel": 0.15, "peak_time_s": 0.1}
-        ok, compared = hadzic_compare(rec, probes)
-        metrics.update(compared)
-        passed = ok and not lost
-    return {"passed": bool(passed), "metrics": metrics, "tolerances": tol,
-            "particles": int(ps.n), "steps": c.steps}
+    metrics["lost_particles_total"] = sum(lost.values())
+    metrics["finite"] = bool(np.isfinite(rec).all())
+    metrics["heave_max_abs_m"] = float(np.abs(heave).max())
+    metrics["sway_max_abs_m"] = float(np.abs(sway).max())
+    out = {"metrics": metrics, "particles": int(ps.n), "steps": c.steps,
+           "series": hadzic_series(rec, probes), "stated_tolerances": dict(HADZIC_STATED)}
+    out["departure"] = {
+        "criterion": "peaks within 15 % (heave crest and trough, sway maximum); in phase as the lag of best "
+                     "correlation of the heave and sway histories within 0.1 s (heave's crest and trough times too)",
+        "why": "the measured sway has two nearly equal maxima (110 mm at 7.55 s, 116 mm at 8.14 s), so which one is "
+               "the larger, and with it the time of the maximum, flips with a 5 % change of either; the check of "
+               "that time as first written failed on that alone"}
+    if quick:  # the full variant's criterion and the stated target are not measured: the packet comes later
+        out["tolerances"] = {"heave_max_abs_m": dx, "sway_max_abs_m": dx, "lost_particles_total": [0, 0],
+                             "finite": True}
+        out["departure"]["source"] = "not measured by the quick variant: the packet reaches the box after 6 s"
+        return out
+    metrics.update(hadzic_compare(rec, probes)[1])
+    out["tolerances"] = dict(HADZIC_TOLERANCES) | {"lost_particles_total": [0, 0]}
+    return out
+
+
+def hadzic_series(rec, probes) -> dict:
+    """The report's plots of a floating-box-waves run: heave, sway (from the position at rest
+    before the first measured sample, as :func:`hadzic_compare`) and the probes against
+    the measurements."""
+    t, x, z, _ = np.asarray(rec).T
+    meas = hadzic_measured()
+    out = {}
+    for name, pos, label in (("WP_Heave", z, "heave"), ("WP_Sway", x, "sway")):
+        tm, vm = meas[name]
+        seen = (tm >= t[0]) & (tm <= t[-1])
+        rest = (t >= tm[0] - 0.5) & (t <= tm[0])
+        ref = pos[rest].mean() if rest.any() else pos[0]
+        out[label] = {"xlabel": "t [s]", "ylabel": f"{label} [mm]", "curves": {
+            "measured (Hadzic et al. 2005)": {"x": tm[seen], "y": vm[seen] * 1e3, "style": "o"},
+            "SPH (ours)": {"x": t, "y": (pos - ref) * 1e3}}}
+    probes = np.asarray(probes)
+    for j, name in enumerate(("WaveProbe_N1", "WaveProbe_N2")):
+        tm, vm = meas[name]
+        seen = (tm >= probes[0, 0]) & (tm <= probes[-1, 0])
+        out[f"probe {name[-2:]}"] = {"xlabel": "t [s]", "ylabel": "surface elevation [mm]", "curves": {
+            "measured (Hadzic et al. 2005)": {"x": tm[seen], "y": vm[seen] * 1e3},
+            "SPH (ours)": {"x": probes[:, 0], "y": probes[:, 1 + j] * 1e3}}}
+    return out
