@@ -159,6 +159,10 @@ def test_trade_tables_and_set_up_come_from_the_docstrings():
     assert "| 10 | 758 | 3915 |" in report.case_trade(known["dambreak-2d"].fn)
     # "see :func:`run_spheric10`": its first paragraph is the set-up
     assert "SPHERIC benchmark 10" in report.case_setup(known["sloshing-spheric10"].fn)
+    # the current trade stays in the docstring, the history's tables move out
+    trade = report.case_trade(known["sloshing-spheric10"].fn)
+    assert "| 3.1, r2 | 320493 | 2042 |" in trade and "0.0186" not in trade
+    assert "| 0.025 | 1118 | 47539 | +0.0084 |" in report.case_trade(known["sloshing-frequency"].fn)
     # a line with an empty first cell, or with nothing but its first cell, continues the row above
     header, rows = report.rst_table("=====  ======\na      b\n       (b)\n=====  ======\n1      2\n       3\nx      y\n"
                                     "z\n=====  ======")
@@ -167,7 +171,8 @@ def test_trade_tables_and_set_up_come_from_the_docstrings():
 
 def test_history_files_belong_to_cases_and_are_linked_and_included(tmp_path):
     files = sorted(report.HISTORY_DIR.glob("*_history.md"))
-    assert {f.name for f in files} >= {"hydrostatic-3d_history.md", "dambreak-2d_history.md"}
+    assert {f.name for f in files} >= {"sloshing-spheric10_history.md", "hydrostatic-3d_history.md",
+                                        "dambreak-2d_history.md", "sloshing-frequency_history.md"}
     known = validation.cases()
     for f in files:
         name = f.name[: -len("_history.md")]

@@ -730,8 +730,10 @@ def sloshing_frequency(quick: bool) -> dict:
     shear stiffness (second part). h = 2 dx is the one support between 1.2 and 2.4 dx at
     which the square lattice is linearly stable for every wavelength
     (``benchmarks/lattice_stiffness.py --stability``); at h = 1.7 dx (DualSPHysics' coefh
-    1.2), which also gives +0.9 %, a tank at rest rearranges its lattice. Measured
-    (``run_sloshing_frequency(dx, ..., h_coef=2.0, walls="adami")``, NUMBA_NUM_THREADS=1):
+    1.2), which also gives +0.9 %, a tank at rest rearranges its lattice.
+
+    Measured trade (``run_sloshing_frequency(dx, ..., h_coef=2.0, walls="adami")``,
+    NUMBA_NUM_THREADS=1):
 
     ======  =========  ======  ===============  =============================
     dx [m]  particles  steps   f1 / linear - 1  run
@@ -747,112 +749,24 @@ def sloshing_frequency(quick: bool) -> dict:
 
     With the solver's defaults (h = sqrt(2) dx, dynamic walls) the same runs give +9.4 %
     and +10.0 %; h = 2 dx with dynamic walls +11.4 % (quick); the two levers are needed
-    together. The history of the search:
+    together.
 
-    With the default fluid settings (`cosim validate sloshing-frequency` before session 4,
-    benchmarks/sloshing_trade.py) the SPH first mode is 10-12 % above linear theory and
-    converges only slowly with dx:
+    Why (the search, its measurements and the experiments that did not confirm a cause are
+    in the history file): (1) the dynamic boundary particles of the side walls integrate the
+    continuity equation, and next to the waterline their density follows how far the water
+    slides along the wall: a stiff spring at the contact line (a 5 mm rise makes ~5 kPa
+    against rho g eta ~ 50 Pa), set by h/dx and not by c0 or dx. The walls carrying the
+    fluid's pressure (``walls="adami"``, fluid.wall_density: each tank-wall particle takes
+    the fluid's pressure carried to it by the wall's momentum balance) follow linear theory
+    there and halve the error (+9.4 % -> +4.6 % quick). (2) With them +4.5 ... 5.1 % remains
+    at h = sqrt(2) dx at every dx; it depends on the kernel and h/dx, not on c0, the
+    artificial viscosity, the density diffusion, the sensor depth or the wave amplitude: the
+    particle lattice under pressure has a shear stiffness that the continuum lacks
+    (benchmarks/lattice_stiffness.py: the configuration alone, displaced by the linear mode,
+    is +3.2 % stiff at dx = 0.05 m and +4.0 % at 0.025 m; a candidate, not a proof). With
+    the "adami" walls, h = 2 dx meets the target (+0.84 % at dx = 0.025 m).
 
-    ======  =========  ======  ========  ===================================
-    dx [m]  particles  steps   f1 [Hz]   f1 / linear - 1
-    ======  =========  ======  ========  ===================================
-    0.05    368        11520   0.925     +0.094  (quick: c0_factor 10, 4 free periods)
-    0.05    368        41360   0.947     +0.119  (c0_factor 20, 8 free periods)
-    0.025   1118       67320   0.931     +0.100  (full: c0_factor 20, 6 free periods)
-    ======  =========  ======  ========  ===================================
-
-    This is the fluid solver, not the excitation or the FFT: a fixed tank started with
-    the linear mode's velocity field (no motion code) oscillates at the same frequency
-    (+10.7 % at dx = 0.05 m, +9.0 % at 0.033, ~+10 % at 0.025, by zero crossings of the
-    mode's velocity projection); it is the same in deep water (L = h = 0.5 m: +11.3 %)
-    and smaller in shallow water (L = 1, h = 0.1 m, dx = 0.0125 m: +4.1 %). It does not
-    depend on the integrator (Verlet +10.7 %), c0 (20 or 40 sqrt(g h)), density diffusion
-    (none: +11.3 %), MLS re-initialisation every 30 steps (+10.8 %), XSPH 0.1 (+10.4 %),
-    laminar instead of artificial viscosity (+10.8 %) or the wave amplitude (0.5 mm ...
-    5 cm: +12.6 ... +11.3 %); it does depend on the kernel and h/dx: at dx = 0.025 m the
-    cubic spline gives +6.2 % and Wendland with h = 2 dx +5.7 % (h = 1.2 dx at 0.05 m:
-    +17.6 %). So the 2 % target is not met with the default fluid settings.
-
-    Cause, first part (the walls): the dynamic boundary particles of the side walls
-    integrate the continuity equation, and next to the waterline their density follows
-    how far the water slides along the wall: all the fluid sliding up at 1 m/s gives
-    (1/rho) drho/dt = +2.1 /s on the first wall layer 0.5 dx below and above the
-    waterline (0 in the continuum), so a 5 mm rise makes ~5 kPa against rho g eta ~ 50
-    Pa: a stiff spring at the contact line, set by h/dx and not by c0 or dx (as measured
-    above). Evidence: a linearisation of the SPH system about its rest state (finite
-    differences of the rates) reproduces +12.0 % at dx = 0.05 m, +4.9 % with the
-    side-wall densities frozen, -0.8 % with no density response at all. Measured on the
-    quick run (regression of the pressure of the first wall column on the rise of the
-    water at the wall): dp_w/d eta = -0.57, 3.1, 0.82, 2.0 rho g on the four wall rows
-    below the waterline and 10.4 rho g on the one above it, where linear theory gives
-    cosh(k z)/cosh(k h) = 0.93 ... 0.65.
-
-    The remedy, ``FluidConfig(walls="adami")`` (fluid.wall_density: each tank-wall
-    particle takes the fluid's pressure carried to it by the wall's momentum balance,
-    Adami, Hu & Adams 2012, Eq. 27): dp_w/d eta = 0.93, 0.83, 0.73, 0.65 rho g on those
-    rows (linear theory), 0 above the waterline. It halves the error (f1 / linear - 1;
-    "frozen": the wall densities held at their hydrostatic start, for comparison):
-
-    =======  ================  ============  ==========  ========
-    dx [m]   run               walls="dbc"   "adami"     frozen
-    =======  ================  ============  ==========  ========
-    0.05     quick             +0.094        +0.046      +0.010
-    0.025    full              +0.100        +0.051      +0.030
-    0.0167   full settings     +0.079        +0.045      +0.027
-    =======  ================  ============  ==========  ========
-
-    (``run_sloshing_frequency(0.05, cycles_forced=2, cycles_free=4, c0_factor=10.0,
-    walls="adami")``, 8 s; ``run_sloshing_frequency(dx, cycles_free=6,
-    walls="adami")``, 65 s at 0.025 m, 147 s at 0.0167 m (2268 particles, 100 800
-    steps); NUMBA_NUM_THREADS=1.) It is not the default: it fails the hydrostatic quick
-    case's speed limit (fluid.wall_density, "Measured").
-
-    Second part (open): with the wall pressure following linear theory, +4.5 ... 5.1 %
-    remains at every dx (it does not converge with dx). It depends on the kernel and
-    h/dx (quick, walls="adami": Wendland h = 1.2 dx +1.8 % (with a third of the
-    pressure amplitude), sqrt(2) dx +4.6 %, cubic spline +5.8 %), not on c0 (c0_factor
-    20: +4.7 %), the artificial viscosity (alpha = 0: +5.5 %), density diffusion (none:
-    +5.3 %), the sensor depth (0.1, 0.2, 0.3 m: +4.6, +4.5, +4.6 %) or the wave amplitude
-    (eta = 1 mm ... 2 cm: +4.8 ... +4.4 %). Freezing the wall densities, which gave +1.0 %
-    (quick) and +0.6 % (c0_factor 20), is not the physics: it also removes the wall's
-    share of the wave's pressure gradient at the first fluid column (rho g eta, which
-    the "adami" wall carries), i.e. it softens the wall, and that cancels part of the
-    remaining bias by chance (quick, "adami" walls frozen only within 2h of the
-    waterline: +1.7 %, all wall rows below it: +1.0 %; and freezing them breaks the
-    hydrostatic rest state, max speed 3.7e-3 sqrt(gH)). The chance goes with dx: frozen
-    walls give +3.0 % and +2.7 % at dx = 0.025 and 0.0167 m (table). So the rest lies
-    in the fluid; the first suspect, its own continuity at the free surface and the
-    contact line (truncated kernel, the walls' mechanism on the fluid side), was not
-    confirmed by two experiments on the quick run: the fluid's continuity with a
-    first-order corrected divergence (the kernel gradient renormalised per particle,
-    which undoes the truncation at the surface) gave +4.0 % instead of +4.6 %, and
-    zeroing the density rate of the top fluid row moved the result anywhere between
-    +4.2 % and -60 % with the threshold that picked the row. A candidate found instead
-    (benchmarks/lattice_stiffness.py): the particle lattice under pressure has a shear
-    stiffness that the continuum lacks (the symmetric pressure term of Eq. 6 with a
-    uniform pressure is the gradient of the displaced particles' kernel sum, which is not
-    zero on a lattice for a divergence-free displacement), in proportion to the pressure
-    and independent of dx; the configuration alone, displaced by the linear mode with
-    its densities kept, is +3.2 % (dx = 0.05 m) and +4.0 % (0.025 m) stiff at the default
-    h = sqrt(2) dx, most of the residual, but -9 % at h = 1.2 dx where the run gives
-    +1.8 %: not a proof.
-
-    A longer kernel support with the "adami" walls meets the target (full run, dx =
-    0.025 m, ``run_sloshing_frequency(0.025, cycles_free=6, h_coef=..., walls=...)``,
-    40-60 s each on one loaded core): h = 1.2 sqrt(2) dx (DualSPHysics' usual coefh = 1.2)
-    +0.90 %, h = 2 dx +0.84 %; with plain dynamic walls +7.4 %, +6.6 %. They were not
-    taken in session 3 because the same supports fail the hydrostatic tank at its quick resolution
-    (``run_hydrostatic(2, dx=0.02, t_end=2.0, ...)``, 10 layers: h = 1.7 dx pressure
-    1.0 / 1.1 % RMS, largest speed 8.6e-3 / 1.2e-2 sqrt(gH) with dbc / adami walls,
-    against 0.76 % and 5.7e-4 with the defaults; at dx = 0.01 m, 3 s: 0.60 / 0.59 % but
-    2.7e-2 / 1.9e-2 sqrt(gH): the square lattice the tank starts from is not at rest
-    under the longer support and rearranges) and cost 45-100 % more pairs. Session 4
-    resolved it: at h = 1.7 dx the lattice is linearly unstable (short waves, k = 0.75
-    pi/dx), damped or not; at h = 2 dx it is stable, and the "adami" tank's motion was its
-    free-surface corners ringing after the start: settled first (:meth:`Fluid.settle`), it
-    meets the hydrostatic targets at 20 layers (0.56 % RMS, 2.6e-4 sqrt(g H);
-    tests/test_fluid_settle.py). Whether the solver's 2-D default should become this
-    set-up (twice the pairs of h = sqrt(2) dx) is open: every case would need re-measuring.
+    History (sessions 1-4): docs/validation/sloshing-frequency_history.md.
     """
     if quick:
         return run_sloshing_frequency(0.05, cycles_forced=2, cycles_free=4, c0_factor=10.0, **WAVES_2D)
@@ -895,22 +809,15 @@ def sloshing_spheric10(quick: bool) -> dict:
     Every impact is in phase (the 0.05 s target), the first carries the measured impulse
     and 20 ms mean, and no peak is within 20 %: the target is not met.
 
-    The sensor (session 6). A transducer reads the force on its face over its area. The
-    face probe of sessions 3-5 (:func:`face_pressure`) averages the pressure of the fluid
-    particles near the point, so it reads a thin film or a few splash particles as if they
-    covered the wall, and where only two or three particles are near, its fit along the wall
-    extrapolates (a 10 ms mean of -8 kPa at 4.02 s at dx = 6.2 mm, where the patch reads
-    -14 to 450 Pa). At the first impact, which covers the wall, the two agree; the later
-    ones reach the sensor as a run-up after the first, and there the face probe read too
-    much: at 6.2 mm (to 4.4 s) the second impact's 20 ms mean is 1.71 on the face probe
-    and 0.93 on the patch, its impulse 1.89 and 1.23; at 3.1 mm (table) 1.46 and 1.27. So
-    the excess of the later impacts that sessions 3-5 put down to a 2-D section keeping too
-    much of the wave's energy (below) was in part the probe. SOURCE.txt does not give the
-    sensor's size; 10 mm covers 2, 4 and 5 particle columns at 6.2, 3.1 and 2 mm (the
-    force of a fluid particle spreads over the wall within 2h of it, so the patch reads the
-    pressure smoothed over ~h anyway). Patches of h, 2h, 4h and 20 mm read the same
-    impulses within 1 % and 20 ms means within 4 % at 3.1 mm; their peaks differ by up
-    to 40 % (the second impact's 3.88 - 5.51).
+    The sensor. A transducer reads the force on its face over its area: the case's sensor is
+    the fluid's normal force on a 10 mm patch of the wall (:func:`spheric10_sensor`;
+    SOURCE.txt does not give the sensor's size; patches of h, 2h, 4h and 20 mm read the same
+    impulses within 1 % and 20 ms means within 4 % at 3.1 mm, their peaks differ by up to
+    40 %). The face probe of sessions 3-5 (:func:`face_pressure`) averages the pressure of
+    the fluid particles near the point, so it reads a thin film or a few splash particles as
+    if they covered the wall: at the first impact, which covers the wall, the two agree; at
+    the later ones, which reach the sensor as a run-up after the first, the face probe reads
+    too much (the second impact's impulse 1.46 against 1.27 on the patch at 3.1 mm).
 
     Why the peaks do not converge. The first impact's peak ratio by set-up and dx (face
     probe; at 3.1 mm the patch reads the same), run to 2.7 s with ``run_spheric10(dx,
@@ -944,37 +851,8 @@ def sloshing_spheric10(quick: bool) -> dict:
     for its own case (Brizzolara et al., axis 184 mm above the bottom) from a figure,
     without numbers; at its set-up and dx this record's first peak reads 6.43.
 
-    History (sessions 3-5, all read with the face probe).
-
-    First impact (NUMBA_NUM_THREADS=1; ``benchmarks/sloshing_trade.py --cases
-    sloshing-spheric10``, run to 2.7 s; rows over the depth 5, 10, 15 and 20):
-
-    ======  =========  =====  ===========  ==============  ===========  ========  =======
-    dx [m]  particles  steps  swing 1      impact 1 peak   impact 1     impact 1  wall [s]
-                              peak, lag    ratio, lag [s]  20 ms mean   impulse
-    ======  =========  =====  ===========  ==============  ===========  ========  =======
-    0.0186  564        27000  1.09, -0.038  0.58, -0.009    0.57         1.25      37
-    0.0093  1536       54000  0.84, -0.062  0.49, +0.029    0.65         0.92      99
-    0.0062  3114       54005  0.92, -0.062  0.995, +0.024   0.82         0.91      159
-    0.00465 5002       81000  0.87, -0.041  1.50, +0.033    0.90         0.89      315
-    ======  =========  =====  ===========  ==============  ===========  ========  =======
-
-    The peak does not converge: one lever at a time on the first impact
-    (benchmarks/spheric10_levers.py, dx = 6.2 mm, "adami", branched from the state at
-    2.0 s) moves it from 1.04 to 1.53 and 1.01 (c0 56 and 112 m/s), 0.86 (alpha_wall 0),
-    0.68 (alpha 0.05), 1.21 (delta 0.05), and the resolution from 0.53 (9.3 mm) to 1.04
-    (6.2 mm) and 1.74 (4.65 mm; 1.50 in the table above, where the sampling, and with it
-    the step sizes, differ), while the 20 ms mean stays at 0.75 - 0.90 and the impulse at
-    0.77 - 0.91 in these runs at 6.2 and 4.65 mm (but see c0 from t = 0 below). The SPH
-    impact rings at an acoustic period (successive maxima 4.8, 3.5, 4.8 ms apart at
-    c0 = 28 m/s, ~3.3 ms at 56 m/s) and the peak is its first maximum: a weakly compressible transient that depends on the
-    front's shape at contact, on c0 and on the dissipation, not a converged quantity of
-    the model at an affordable resolution (the seed's SPH used dx = 2 mm, 003 §3; 3.1 mm
-    would cost ~20 min to the first impact here). A peak within 20 % at one setting
-    (6.2 mm: 0.995) is therefore not claimed as a pass of the first impact. Sampling every
-    1 ms instead of 50 us lowers it by 3 % at 6.2 mm and 15 % at 4.65 mm.
-
-    Convergence (session 5; NUMBA_NUM_THREADS=1, ``run_spheric10(dx, **kw)``, 8 s; ratios to
+    Measured trade (convergence, session 5, read with the face probe;
+    NUMBA_NUM_THREADS=1, ``run_spheric10(dx, **kw)``, 8 s; ratios to
     the measured record per impact 1-4; dx in mm, h = sqrt(2) dx ("r2") or 2 dx; "5 ms" the
     largest 5 ms mean):
 
@@ -993,7 +871,7 @@ def sloshing_spheric10(quick: bool) -> dict:
     dx; +0.022, -0.040, -0.019, -0.045 s at 2 dx), the first impact's impulse and 20 ms mean
     are within 8 %, and the later impulses fall with dx (1.9-2.0 to 1.5; the second impact's
     1.89, 1.46, 1.21 at 6.2, 3.1, 2 mm: converging towards the measured one, so the excess
-    at 6.2 mm discussed below is largely resolution; whether a 3-D loss remains is not
+    at 6.2 mm discussed in the history file is largely resolution; whether a 3-D loss remains is not
     settled) but stay 50 % above the measured ones at 3.1 mm; the peaks do not converge (the first impact's 1.00,
     3.61, 5.80 at 6.2, 3.1, 2 mm grows as the front sharpens): the SPH peak is a 1-2 ms
     acoustic spike (8.7 kPa at 2.400 s, after 15 ms of run-up pressure below 1.4 kPa), a
@@ -1002,58 +880,13 @@ def sloshing_spheric10(quick: bool) -> dict:
     the maximum of every 5 ms of the 20 kHz signal) is most likely set by the entrapped air
     and the real sound speed, which a single-phase model with an artificial c0 does not have
     (inferred, not tested). h = 2 dx (the wave set-up) does not change this: its 4.65 mm
-    run's later impulses (1.15, 1.14, 0.82, below) were not a converged result. So the
+    run's later impulses (1.15, 1.14, 0.82, history file) were not a converged result. So the
     target (peaks within 20 %) is not met, and the timing is (within 0.05 s). The full case
     runs dx = 3.1 mm, h = sqrt(2) dx (~35 min on one core).
 
-    The full run of sessions 3-4 (dx = 6.2 mm, 8 s, four impacts; 3089 particles at the end,
-    160277 steps, 372 s) measured peak ratios 1.00, 3.00, 7.15, 3.78, lags +0.024, -0.023,
-    -0.035, -0.056 s, 20 ms mean ratios 0.82, 1.71, 2.81, 1.73 and impulse ratios 0.91,
-    1.89, 2.03, 1.94 (plain dynamic boundaries, the earlier default: peaks 0.54, 5.44, 2.43,
-    2.01, impulses 0.74, 1.56, 1.52, 1.56). The first impact is reproduced in its
-    20 ms mean and impulse (within 20 %, at this c0: see below) and in time; the later ones are not: after the
-    first impact the SPH wave is larger than the measured one, in the slow pressure as
-    well as in the peaks. The pressure the water leaves on the wall after each impact
-    (4.10 - 4.19 s: 1.0 - 1.6 kPa against 0.41 - 0.55 kPa measured; 5.73 - 5.79 s: 0.8 -
-    1.6 against 0.56 - 0.67) and the mean over 0.5 s (4.0 - 4.5 s: 971 Pa against 627;
-    5.5 - 6.0 s: 923 against 466) say that more water reaches the wall: the 2-D SPH keeps
-    more of the wave's energy through the first impact than the experiment (most likely
-    wave breaking and the boundary layers of the 62 mm wide tank, which a 2-D section
-    lacks; the more dissipative "dbc" walls give smaller later impulses, 1.5), and its
-    first sloshing mode is ~5 % stiff with these walls (sloshing-frequency), so the later
-    impacts come progressively early (the fourth 0.056 s early, past the 0.05 s target).
-    With the wave set-up (:data:`fluid.solver.WAVES_2D`, h = 2 dx: the sloshing mode
-    within 1 %; ``run_spheric10(0.0062, h_coef=2.0)``, 160 000 steps, 570 s) every impact
-    is on time, lags +0.018, -0.018, -0.012, -0.048 s, and the first one is closer in its
-    20 ms mean and impulse (0.97, 0.94; peak 0.87), but the later ones keep their excess:
-    20 ms means 1.90, 3.06, 2.21, impulses 1.62, 1.73, 2.14, peaks 5.5, 7.8, 1.3. So the
-    timing was the lattice's stiffness (quick, 5 rows: first swing 1.10, -0.088 s against
-    1.07, -0.043 s at h = sqrt(2) dx, which the case keeps). The later impacts' size is
-    not settled either way: at dx = 4.65 mm (h = 2 dx, 160 722 steps, 673 s) their
-    impulses drop to 1.15, 1.14, 0.82 of the measured ones (20 ms means 1.18, 2.38, 0.87),
-    but every impact comes late (+0.068, +0.041, +0.095, +0.105 s), the first one's
-    impulse falls to 0.68 and single-sample peaks reach 204 kPa: not converged in dx, so
-    "the 2-D section keeps more of the wave's energy" above is a hypothesis, not a
-    finding.
-    More bulk dissipation is no remedy: alpha = 0.05 throughout (DualSPHysics'
-    examples/main/05_SloshingTank value; sampled every 1 ms, 283 s) brings the later
-    impulses to 1.01, 1.22, 1.34 and peaks to 0.80, 2.31, 1.48 but starves the first
-    impact (peak 0.28, 20 ms mean 0.43, impulse 0.75, 0.067 s late): consistent with the
-    experiment losing its energy in the impacts (breaking, 3-D splashing) rather than in
-    the flow between them, which a bulk artificial viscosity cannot mimic. Nor is it
-    compressibility: c0 = 56 m/s from the start (sampled every 1 ms, 561 s) leaves the
-    later 20 ms means at 1.49, 2.57, 2.27 and impulses at 1.39, 1.65, 2.06 while the later
-    peaks grow with c0 (10.2, 10.8, 2.1; up to 40 kPa against 27 kPa); its first impact
-    reads peak 0.54, 20 ms mean 0.64, impulse 0.86, 0.040 s late: run from t = 0, c0 also
-    moves the first impact's 20 ms mean (0.82 -> 0.64; from the same state at 2.0 s only
-    0.83 -> 0.79), so only its impulse (0.75 - 0.92 in every "adami" run at dx <= 9.3 mm
-    here) is robust.
-    The later SPH peaks are single-sample spikes (up to 27 kPa at c0 = 28 m/s); the face
-    probe also reads a 10 ms mean of -8 kPa at 4.02 s, as the water first reaches the
-    sensor before the second impact (its fit over the first few particles: the patch
-    reads -14 to 450 Pa there, above). The measured record drifts by -0.1 kPa while the
-    sensor is dry (3.0 - 4.0, 4.5 - 5.5 s), small against these errors. 25 fluid particles
-    (1.1 %) left the domain in splashes over the open top.
+    History (sessions 3-6: the sensor, the first impact at four resolutions and the levers
+    on it, the full runs at 6.2 mm, the hypotheses about the later impacts, more dissipation
+    and a higher c0): docs/validation/sloshing-spheric10_history.md.
     """
     if quick:  # the first swing only (no impact): 5 particle rows over the depth
         out = run_spheric10(0.0186, t_end=1.3, sample_dt=0.005)
