@@ -546,6 +546,16 @@ class MoorDynMooring:
         own GetLineFairTen is the tension of the last segment, without the end node's weight)."""
         return np.linalg.norm(self.fairlead_forces(), axis=1)
 
+    def anchor_tensions(self) -> np.ndarray:
+        """Tension [N] of each line at its anchor: MoorDyn's tension at the anchor node (that
+        of the first segment); a line resting on the seabed there pulls its anchor by the
+        seabed's share only."""
+        import moordyn
+
+        s = self._system()
+        return np.array([float(np.linalg.norm(moordyn.GetLineNodeTen(moordyn.GetLine(s, i + 1), 0)))
+                         for i in range(self.n_lines)])
+
     def close(self) -> None:
         """Free MoorDyn and its files (also done at garbage collection)."""
         self._finalizer()

@@ -114,7 +114,8 @@ def test_run_writes_outputs_at_exact_times(tmp_path):
         assert len(f["snapshot_times"]) == 4 and len(f["series/ledger/box/t"]) == s["steps"]
         Fz = f["series/ledger/box/fluid_force"][:, 2]
     head = (tmp_path / "tensions.csv").read_text().splitlines()[0]
-    assert head == "t [s],box.left.tension [N],box.right.tension [N]"
+    assert head == ("t [s],box.left.tension [N],box.right.tension [N],box.left.anchor_tension [N],"
+                    "box.right.anchor_tension [N]")
     # afloat near its start, the lines hang (~ w * suspended length), the gauges see still water
     assert np.abs(r["box.heave"]).max() < 0.02 and np.abs(r["box.pitch"]).max() < 5.0
     assert (r["box.left.tension"] > 0.5).all() and (r["box.left.tension"] < 5.0).all()
@@ -261,3 +262,15 @@ def test_unreadable_scene_files_are_refused_by_name(name, content, says, tmp_pat
     (tmp_path / name).write_bytes(content)
     with pytest.raises(InputError, match=re.escape(says)):
         load(tmp_path / name)
+
+
+def test_anchor_tensions_agree_between_models(tmp_path):
+    """The anchor tension of MoorDyn's line matches the catenary's at the start where the line
+    pulls its anchor up (the box 3 m off its rest position); an FMU reports none."""
+    base = Scene.from_toml(ROOT / "examples" / "moored_box.toml").with_values(["world.duration=0.05"])
+    cat = base.run(tmp_path / "cat", progress=False)
+    md = base.with_values(["moorings.model=moordyn"]).run(tmp_path / "md", progress=False)
+    assert cat["box.left.anchor_tension"][0] == pytest.approx(918.4, rel=1e-3)  # sqrt(H^2 + (V - w L)^2)
+    assert md["box.left.anchor_tension"][0] == pytest.approx(cat["box.left.anchor_tension"][0], rel=0.01)
+    assert "box.left.anchor_tension" not in base.with_values(["moorings.model=fmu"]).run(
+        tmp_path / "fmu", progress=False).names

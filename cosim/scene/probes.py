@@ -5,8 +5,10 @@ that become one HDF5 series, one CSV and one plot each:
 - ``motion``: per body, surge, heave and pitch (2-D: rotation about +y) or surge, sway,
   heave, roll, pitch, yaw (3-D, z-y-x Euler angles), displacements from the start [m]
   and angles [deg];
-- ``tensions``: per line, the tension at its fairlead [N] (and ``.tether`` [N], the load a
-  taut inextensible catenary line carries as a length constraint);
+- ``tensions``: per line, the tension at its fairlead [N], at its anchor
+  (``.anchor_tension`` [N]; the catenary, the SPH cable and MoorDyn report it, an FMU does
+  not) and ``.tether`` [N], the load a taut inextensible catenary line carries as a length
+  constraint;
 - ``loads``: per body, the fluid's and the moorings' force [N] over the last step;
 - ``gauges``: free-surface elevation above the still water [m] at each gauge;
 - ``pressure``: each wall patch's pressure [Pa];
@@ -82,14 +84,19 @@ def groups(scene, built) -> list[Group]:
         tethered = bool(built.coupler.tether_tensions())
         c = built.coupler
 
-        def tensions():
-            t = np.linalg.norm(np.asarray(m.fairlead_forces(), float), axis=1)
-            if not tethered:
-                return t
-            tt = c.tether_tensions()
-            return np.concatenate([t, [tt.get(f"{m.name}.{i}", 0.0) for i in range(len(lines))]])
+        anchors = callable(getattr(m, "anchor_tensions", None))  # the catenary, the SPH cable, MoorDyn
 
-        cols = [f"{n}.tension" for n in lines] + ([f"{n}.tether" for n in lines] if tethered else [])
+        def tensions():
+            t = [np.linalg.norm(np.asarray(m.fairlead_forces(), float), axis=1)]
+            if anchors:
+                t.append(np.asarray(m.anchor_tensions(), float))
+            if tethered:
+                tt = c.tether_tensions()
+                t.append([tt.get(f"{m.name}.{i}", 0.0) for i in range(len(lines))])
+            return np.concatenate(t)
+
+        cols = ([f"{n}.tension" for n in lines] + ([f"{n}.anchor_tension" for n in lines] if anchors else [])
+                + ([f"{n}.tether" for n in lines] if tethered else []))
         out.append(Group("tensions", cols, ["N"] * len(cols), tensions))
     sph = built.sph
     if sph is not None and p.gauges:
