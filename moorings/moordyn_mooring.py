@@ -27,6 +27,7 @@ how to install it.
 from __future__ import annotations
 
 import contextlib
+import ctypes
 import logging
 import math
 import os
@@ -177,6 +178,18 @@ def internal_step_limits(length: float, segments: int, EA: float, mass_per_lengt
         "seabed_damping": 2.0 * m_min / c_b if c_b > 0 else inf,
         "drag": min(2.0 * m_p / c_dp if c_dp > 0 else inf, 2.0 * m_t / c_dq if c_dq > 0 else inf),
     }
+
+
+def _restore_none_references(before: int) -> None:
+    """moordyn 2.7's ``Deserialize`` drops a reference to ``None`` on every call (its binding
+    returns ``Py_None`` without a new reference); on Python < 3.12, where ``None`` is counted,
+    the coupler's roll-backs (one per step with the predictor-corrector) run the count down
+    and the interpreter aborts ("none_dealloc") after ~15 000 steps (benchmarks/soak.py).
+    Give back exactly the references the call took; nothing when the count held (a fixed
+    moordyn, or an immortal ``None``)."""
+    lost = before - sys.getrefcount(None)
+    for _ in range(max(lost, 0)):
+        ctypes.pythonapi.Py_IncRef(ctypes.py_object(None))
 
 
 def _num(x) -> str:
@@ -524,7 +537,9 @@ class MoorDynMooring:
         import moordyn
 
         blob, pos, vel, prev, forces, t = state
+        before = sys.getrefcount(None)
         moordyn.Deserialize(self._system(), blob)
+        _restore_none_references(before)
         self._pos, self._vel, self._prev, self._forces, self.t = pos.copy(), vel, prev, forces.copy(), t
 
     # -- mooring interface ---------------------------------------------------

@@ -274,3 +274,24 @@ def test_default_internal_step_is_stable_for_every_segment_count(segments):
     # and the tension rings by +-13 % (measured 12.8 % max for 6, 2.8 % for 13, <= 1.8 % from 16 segments).
     # An instability would leave these bounds by orders of magnitude.
     assert dev.max() < (0.03 if segments >= 16 else 0.15), (segments, dev.max(), md.dt_limit)
+
+
+def test_roll_backs_keep_the_reference_count_of_none():
+    """moordyn 2.7's Deserialize drops a reference to None per call; the adapter gives it
+    back, so the coupler's per-step roll-backs cannot run it down (a crash after ~15 000
+    steps on Python < 3.12, benchmarks/soak.py)."""
+    import sys
+
+    from moorings import MooringLine
+    from moorings.moordyn_mooring import MoorDynMooring
+
+    m = MoorDynMooring([MooringLine((-20.0, -10.0), 25.0, 50.0, EA=5e7, mass_per_length=5.82, diameter=0.03)],
+                       segments=10)
+    m.set_fairlead_motion([[0.0, 0.0]])
+    m.initialize(0.0)
+    state = m.save_state()
+    before = sys.getrefcount(None)
+    for _ in range(500):
+        m.load_state(state)
+    assert abs(sys.getrefcount(None) - before) <= 5  # without the repair: 500 fewer
+    m.close()
