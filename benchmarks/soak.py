@@ -11,9 +11,9 @@
                               [--ledger-rows 1000000] [--patch-moordyn] [--csv soak.csv]
 
 The full soak the issue asks for (10^6 steps per model; ~3 h of CPU, 3.6 h of wall time at
-the loaded rates below; moordyn needs --patch-moordyn on Python < 3.12, see the findings):
+the loaded rates below):
 
-    python benchmarks/soak.py --steps 1000000 --every 20000 --patch-moordyn --ledger-rows 1000000 --csv soak.csv
+    python benchmarks/soak.py --steps 1000000 --every 20000 --ledger-rows 1000000 --csv soak.csv
 
 What it does. Each model runs in a fresh interpreter (a subprocess: one model's libraries
 and freed memory do not show in the next one's RSS, and a crash in a C extension ends that
@@ -123,7 +123,11 @@ Findings.
   (``sys.getrefcount(None)`` 12939 -> 2826 between 2500 and 12500 steps) until it is freed.
   Any moordyn run longer than ~150 s simulated at dt = 0.01 s (~280 s at the fluid's own
   step) dies this way on Python < 3.12 (None is immortal from 3.12). ``--patch-moordyn``
-  gives the reference back after each call; with it moordyn ran 50k steps, flat.
+  gives the reference back after each call; with it moordyn ran 50k steps, flat. The
+  MoorDyn adapter now does the same itself (``moorings.moordyn_mooring``, after these runs),
+  so the option is only needed to reproduce them with an older adapter.
+- The ledger took 962 B per step (a list of small arrays per step); it now keeps arrays
+  that double when full (168 B per step, ``cosim.ledger``, after these runs).
 - catenary and fmu (the same law compiled as an FMU) give bit-identical trajectories and
   residuals. The sph-cable box never comes to rest: after 475 s it still wanders by +-5 mm
   with |p| up to 7 N s (the SPH cable's own oscillation); catenary and fmu reach a
@@ -473,8 +477,8 @@ def main(argv=None) -> int:
     ap.add_argument("--ledger-rows", type=int, default=0,
                     help="also measure the ledger alone with this many rows (e.g. 1000000; 0: skip)")
     ap.add_argument("--patch-moordyn", action="store_true",
-                    help="give back the reference to None that moordyn.Deserialize loses on each call (without it "
-                         "Python < 3.12 aborts after ~15k predictor-corrector steps)")
+                    help="give back the reference to None that moordyn.Deserialize loses on each call (the adapter "
+                         "now does it itself; for reproducing the runs of the docstring with an older adapter)")
     ap.add_argument("--csv", type=Path, default=None, help="write every chunk's record here")
     ap.add_argument("--child", default=None, help=argparse.SUPPRESS)
     args = ap.parse_args(argv)
