@@ -346,7 +346,14 @@ class Coupler:
                     f"has left the fluid's domain or passed through a wall: a heavy body needs a floor to rest on "
                     f"(bodies.builders.scene(floor_z=...)), a fast one a smaller step") from exc
         for a, sites in zip(self.moorings, self._sites):
-            a.mooring.set_fairlead_motion(*self._fairlead_motion(a, sites, kin))
+            try:
+                a.mooring.set_fairlead_motion(*self._fairlead_motion(a, sites, kin))
+            except InputError as exc:  # mid-run, the bodies carried a fairlead where no line can be
+                if not self._initialized:
+                    raise
+                raise InstabilityError(
+                    f"mooring '{a.mooring.name}' cannot take the fairlead motion ({exc}); the bodies moved there "
+                    f"during the run: unstable coupling, or a body that the lines do not hold") from exc
 
     def _fluid_first_loads(self, dt: float, velocity) -> tuple[np.ndarray, np.ndarray]:
         """The loads the fluid exchanged over its advance, the bodies' particles having

@@ -25,6 +25,8 @@ def test_outcomes():
     assert _outcome({"error": None}) == "ok"
     assert _outcome({"error": "InstabilityError: step 3 ...", "returncode": 2}) == "unstable"
     assert _outcome({"error": "fluid.dx: ...", "returncode": 2}) == "refused"
+    assert _outcome({"error": "fluid.dx: ...", "returncode": 2, "steps": 0}) == "refused"
+    assert _outcome({"error": "InputError: ...", "returncode": 2, "steps": 5}) == "unstable"
     assert _outcome({"error": "ZeroDivisionError: ...", "returncode": 1}) == "crash"
 
 

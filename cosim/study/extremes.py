@@ -1,9 +1,10 @@
 """``cosim study SCENE --extremes``: each lever of a scene pushed towards its limits, one at
 a time from the scene's own settings, and what happens at each value: the run finishes
-(``ok``), the value is refused before any work with a message naming the field
+(``ok``), the value is refused before any step with a message naming the field
 (``refused``), the run stops with a clear error naming the step and the entity
-(``unstable``: an InstabilityError, ConvergenceError or TautLineError), or it fails in a way
-that is a bug of ours (``crash``: any other error; the table says so).
+(``unstable``: an InstabilityError, ConvergenceError or TautLineError, or any error of ours
+after the first step), or it fails in a way that is a bug of ours (``crash``: any other
+error; the table says so).
 
 The levers, where the scene has them (values relative to the scene's own):
 
@@ -65,8 +66,8 @@ def _outcome(rec: dict) -> str:
     kind = err.split(":", 1)[0]
     if kind in UNSTABLE:
         return "unstable"
-    if rec.get("returncode") == 2:  # cosim run refused it while building, before any step
-        return "refused"
+    if rec.get("returncode") == 2:  # a clear error of ours: before any step, or a stop during the run
+        return "refused" if not rec.get("steps") else "unstable"
     return "crash"
 
 
