@@ -122,3 +122,17 @@ def test_mjcf_bodies(tmp_path):
     assert tuple(b.bodies.model.opt.gravity) == (0.0, 0.0, -9.81)  # the world's gravity, not the file's
     r = scene.run(tmp_path / "run", progress=False)
     assert np.abs(r["float.heave"]).max() < 1e-6  # half its volume under water: afloat at rest
+
+
+def test_analytic_added_mass_slows_the_heave(tmp_path):
+    """Added mass in the analytic fluid goes into the body's inertia: the heave period grows
+    as sqrt((m + m_a) / m) (the hydrostatic stiffness is the same)."""
+    from cosim.study.metrics import value
+
+    def period(added):
+        s = Scene(world=World(dim=2, duration=12.0, sample_every=0.02), fluid=Analytic(added_mass=added),
+                  bodies=[Box("b", size=(1.0, 1.0), density=500.0, pos=(0.0, 0.1))])
+        r = s.run(tmp_path / str(len(added)), progress=False)
+        return value("period", r.t, r["b.heave"])
+
+    assert period({"b": [0.0, 500.0, 0.0]}) / period({}) == pytest.approx(math.sqrt(2.0), rel=0.03)

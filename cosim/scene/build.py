@@ -245,7 +245,7 @@ def build(scene, workdir: Path) -> Built:
         f = scene.fluid
         out.fluid = AnalyticFluid(rho=f.rho, g=scene.world.gravity, free_surface_z=f.level,
                                   linear_damping=f.linear_damping or None,
-                                  quadratic_damping=f.quadratic_damping or None)
+                                  quadratic_damping=f.quadratic_damping or None, added_mass=f.added_mass or None)
     scheme = scene.coupling.scheme
     if scheme == "auto":
         scheme = "fluid-first" if isinstance(scene.fluid, SPH) else "predictor-corrector"

@@ -217,10 +217,16 @@ def _check_bodies(s, dim):
             seen[n] = i
     if isinstance(s.fluid, Analytic):
         known = mj["coupled"] if mj is not None else sorted(seen)
-        for table in ("linear_damping", "quadratic_damping"):
+        for table in ("linear_damping", "quadratic_damping", "added_mass"):
             for n in getattr(s.fluid, table):
                 if n not in known:
                     raise SceneError(f"fluid.{table}.{n}", f"no body named {n!r}; bodies: {sorted(known)}")
+        for n, v in s.fluid.added_mass.items():
+            if len(v) != (3 if dim == 2 else 6) and mj is None:
+                raise SceneError(f"fluid.added_mass.{n}", f"{len(v)} values; a {dim}-D body has "
+                                 f"{3 if dim == 2 else 6} degrees of freedom: give one added mass each")
+            if any(x < 0 for x in v):
+                raise SceneError(f"fluid.added_mass.{n}", f"{list(v)}: an added mass is >= 0 [kg, kg m^2]")
     if isinstance(s.fluid, SPH) and s.domain is not None:
         _check_inside(s, dim)
         _check_walls(s, dim)

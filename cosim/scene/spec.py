@@ -77,8 +77,9 @@ class NoFluid(Spec):
 @dataclass(frozen=True)
 class Analytic(Spec):
     """The analytic fluid (``fluid.analytic.AnalyticFluid``): hydrostatics of the
-    submerged volume under a flat free surface at ``level``, plus damping and added mass
-    per body (6 coefficients each, world axes: 3 translational, then 3 rotational)."""
+    submerged volume under a flat free surface at ``level``, plus damping per body (6
+    coefficients each, world axes: 3 translational, then 3 rotational) and added mass per
+    degree of freedom (moved into the body's inertia)."""
 
     TAG = ("model", "analytic")
     model: str = tag("analytic")
@@ -86,6 +87,8 @@ class Analytic(Spec):
     level: float = num(0.0, "height of the still free surface", "m")
     linear_damping: dict = table("per body: 6 linear damping coefficients [N s/m, N m s]", sizes=(6,))
     quadratic_damping: dict = table("per body: 6 quadratic damping coefficients [N s^2/m^2, N m s^2]", sizes=(6,))
+    added_mass: dict = table("per body: one added mass per degree of freedom (2-D: x, z, rotation; 3-D: 3 "
+                             "translations, 3 rotations) [kg, kg m^2]", sizes=(3, 6))
 
 
 @dataclass(frozen=True)
