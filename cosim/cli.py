@@ -109,8 +109,8 @@ def _study_parser(sub):
     p.add_argument("--scheduler", metavar="ADDRESS", help="an existing Dask scheduler, e.g. tcp://host:8786")
     p.add_argument("--serial", action="store_true", help="no Dask: one run after the other in this process's children")
     p.add_argument("--extremes", action="store_true",
-                   help="push each lever (dx, c0, CFL, bodies' density, line stiffness, segments, coupling step) towards "
-                        "its limits and report where the run stays stable and where it stops with a clear error")
+                   help="push each lever (dx, c0, CFL, bodies' density, line stiffness, segments, coupling step) "
+                        "towards its limits and report where the run stays stable and where it stops with a clear error")
     return p
 
 
@@ -508,11 +508,11 @@ def _json_default(o):
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="cosim", description=__doc__.strip().splitlines()[0])
     sub = parser.add_subparsers(dest="command", required=True)
-    parsers = {"run": _run_parser(sub), "study": _study_parser(sub), "line": _line_parser(sub), "validate": _validate_parser(sub), "export-fmu": _export_fmu_parser(sub),
-               "inspect": _inspect_parser(sub)}
+    parsers = {"run": _run_parser(sub), "study": _study_parser(sub), "line": _line_parser(sub),
+               "validate": _validate_parser(sub), "export-fmu": _export_fmu_parser(sub), "inspect": _inspect_parser(sub)}
     args = parser.parse_args(argv)
-    handler = {"run": cmd_run, "study": cmd_study, "line": cmd_line, "validate": cmd_validate, "export-fmu": cmd_export_fmu,
-               "inspect": cmd_inspect}[args.command]
+    handler = {"run": cmd_run, "study": cmd_study, "line": cmd_line, "validate": cmd_validate,
+               "export-fmu": cmd_export_fmu, "inspect": cmd_inspect}[args.command]
     try:
         return handler(args, parsers[args.command])
     except CosimError as exc:

@@ -360,7 +360,7 @@ def tolerance_table(metrics: dict, tolerances: dict) -> str:
 
 def case_page(rec: dict, case, plots: list[tuple[str, str]], history: str | None) -> str:
     name = rec["name"]
-    out = [f"# {name}", "", f"[← index](index.md)", ""]
+    out = [f"# {name}", "", "[← index](index.md)", ""]
     if case is not None:
         out += [f"*{case.description}*", ""]
     out += [f"**Result: {_result(rec)}** ({_variant(rec)} variant). Wall time {_wall(rec.get('wall_s'))} s, "

@@ -989,7 +989,7 @@ def render() -> str:
         "an unknown or missing keyword is Python's own `TypeError`; \u2014 where there is no Python counterpart "
         "(the TOML field that picks a class, `--set` syntax).",
         "",
-        f"## Scene fields",
+        "## Scene fields",
         "",
         f"{len(CASES)} inputs.",
         "",

@@ -4,8 +4,6 @@ ends as ok, refused (before any work, the field named), unstable (a clear stop) 
 
 import json
 
-import pytest
-
 from cosim.scene import SPH, Analytic, Box, Line, Moorings, Scene, Tank, World
 from cosim.study.extremes import _outcome, levers, run_extremes, summary
 

@@ -101,7 +101,7 @@ def test_a_full_record_is_judged_against_the_stated_target():
 
 def test_every_case_declares_its_targets_and_quotes_its_row_of_validation_md():
     doc = Path(report.DOCS / "VALIDATION.md").read_text()
-    stated = {}
+    stated, last = {}, None
     for line in doc.splitlines():
         cells = [c.strip() for c in line.strip().strip("|").split("|")]
         if line.startswith("| ") and len(cells) == 4 and cells[0] != "name":

@@ -18,7 +18,7 @@ from pathlib import Path
 import numpy as np
 
 from cosim.scene.spec import (MJCF, SPH, Analytic, Box, Cylinder, CylinderTank, Earthquake, Flap, Flume,
-                              InclinedTank, PaddleRecord, Piston, PolygonTank, Roll, Shake, Sphere, TableMotion, Tank)
+                              InclinedTank, Piston, PolygonTank, Roll, Shake, Sphere, TableMotion, Tank)
 
 PADDLE, WALLS = 1, 0  # the flume's paddle group and every tank's wall group
 

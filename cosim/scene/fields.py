@@ -49,7 +49,6 @@ def _is_finite(v) -> bool:
 class Check:
     """How one field is checked and normalised; ``doc`` says what it is, ``unit`` in what."""
 
-    kind = "value"
 
     def __init__(self, doc: str, unit: str = "", optional: bool = False):
         self.doc, self.unit, self.optional = doc, unit, optional
@@ -235,8 +234,6 @@ class Gauges(Check):
 class Table(Check):
     """A table of names to vectors (``{left = [-0.1, -0.05]}``), kept as a dict."""
 
-    kind = "table"
-
     def __init__(self, doc, unit="", sizes=(2, 3)):
         super().__init__(doc, unit, False)
         self.item = Vec(doc, unit, sizes)
@@ -255,7 +252,6 @@ class Part(Check):
     """A nested scene object: one class, or one of several told apart by the value of
     their ``tag`` field (``kind``, ``model``, ``shape``)."""
 
-    kind = "part"
 
     def __init__(self, doc, classes, optional=False):
         super().__init__(doc, "", optional)
@@ -271,7 +267,6 @@ class Part(Check):
 
 
 class Parts(Check):
-    kind = "parts"
 
     def __init__(self, doc, classes):
         super().__init__(doc, "", False)
@@ -296,9 +291,6 @@ def _field(check: Check, default):
     if isinstance(default, (list, dict)):
         return dataclasses.field(default_factory=lambda d=default: type(d)(d), metadata={"check": check})
     return dataclasses.field(default=default, metadata={"check": check})
-
-
-REQUIRED = dataclasses.MISSING
 
 
 def num(default, doc, unit="", **rng):
@@ -394,9 +386,3 @@ def spec_fields(cls) -> list[tuple[str, Check, Any]]:
                 f.default_factory() if f.default_factory is not dataclasses.MISSING else dataclasses.MISSING)
             out.append((f.name, f.metadata["check"], default))
     return out
-
-
-def tagged(classes) -> dict[str, type]:
-    """The classes by the value of their tag field."""
-    return {c.TAG[1]: c for c in classes}
-

@@ -11,7 +11,8 @@ from cosim.errors import CosimError
 from cosim.scene.fields import SceneError
 
 
-def load(path) -> "Scene":  # noqa: F821 - the Scene class, imported below
+def load(path):
+    """The scene of a .toml file or a .py script (see the module docstring)."""
     from cosim.scene.spec import Scene
 
     p = Path(path)

@@ -19,7 +19,7 @@ from __future__ import annotations
 import math
 
 from cosim.scene.fields import SceneError
-from cosim.scene.spec import Box, Cylinder, Sphere
+from cosim.scene.spec import Box, Cylinder
 
 
 def volume_and_height(body, dim: int) -> tuple[float, float]:

@@ -613,10 +613,6 @@ class Scene(Spec):
         return run(self, out if out is not None else Path("out") / self.name, resume=resume, progress=progress)
 
 
-def is_floating(body) -> bool:
-    return getattr(body, "place", "given") == "floating"
-
-
 __all__ = ["World", "NoFluid", "Analytic", "SPH", "Block", "Tank", "Beach", "Flume", "InclinedTank",
            "CylinderTank", "PolygonTank", "Piston", "Flap", "PaddleRecord", "Shake", "Roll", "TableMotion",
            "Earthquake", "Box", "Cylinder", "Sphere", "MJCF", "Line", "Moorings", "Patch", "Probes", "Coupling",

@@ -26,7 +26,7 @@ import json
 from pathlib import Path
 
 from cosim.errors import CosimError
-from cosim.scene.spec import MJCF, SPH, Analytic
+from cosim.scene.spec import MJCF, SPH
 from cosim.study import sweep
 
 UNSTABLE = ("InstabilityError", "ConvergenceError", "TautLineError")
