@@ -201,8 +201,20 @@ class Flume(Spec):
         return self.depth
 
 
+class _Filled:
+    """A container filled with still water to ``depth`` [m], at most its wall ``height``."""
+
+    def validate(self):
+        if self.depth > self.height:
+            raise SceneError("depth", f"{self.depth} m must not exceed the wall height {self.height} m")
+
+    @property
+    def level(self):
+        return self.depth
+
+
 @dataclass(frozen=True)
-class InclinedTank(Spec):
+class InclinedTank(_Filled, Spec):
     """A tank whose right side leans outwards ``angle`` [deg] from the vertical (seed 001
     §3.2), bottom ``length`` long; 3-D: ``width`` along y."""
 
@@ -215,17 +227,9 @@ class InclinedTank(Spec):
     height: float = required(num(None, "wall height", "m", lo=0, lo_open=True, optional=False))
     width: float = num(None, "width along y (3-D only)", "m", lo=0, lo_open=True)
 
-    def validate(self):
-        if self.depth > self.height:
-            raise SceneError("depth", f"{self.depth} m must not exceed the wall height {self.height} m")
-
-    @property
-    def level(self):
-        return self.depth
-
 
 @dataclass(frozen=True)
-class CylinderTank(Spec):
+class CylinderTank(_Filled, Spec):
     """A vertical cylindrical tank (3-D, seed 001 §3.3), axis along z through the origin."""
 
     TAG = ("kind", "cylinder-tank")
@@ -233,14 +237,6 @@ class CylinderTank(Spec):
     diameter: float = required(num(None, "inner diameter", "m", lo=0, lo_open=True, optional=False))
     depth: float = required(num(None, "still-water depth", "m", lo=0, lo_open=True, optional=False))
     height: float = required(num(None, "wall height", "m", lo=0, lo_open=True, optional=False))
-
-    def validate(self):
-        if self.depth > self.height:
-            raise SceneError("depth", f"{self.depth} m must not exceed the wall height {self.height} m")
-
-    @property
-    def level(self):
-        return self.depth
 
 
 @dataclass(frozen=True)
