@@ -6,6 +6,7 @@ A 2-D box (2 m wide, 1 m tall, 500 kg/m^3, 1 m thick) floats on the analytic flu
 go. `cosim run examples/moored_box.py` runs it once (the catenary); run as a script it
 runs every mooring model (`moorings.model`: catenary, sph-cable, fmu, moordyn when
 installed) and plots their surge and fairlead tensions together in out/moored_box/.
+Cost on the 2-core machine: 1200 coupling steps, about 5 s per model for the 20 s.
 """
 from cosim.scene import Analytic, Box, Coupling, Line, Moorings, Scene, World
 

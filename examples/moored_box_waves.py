@@ -8,7 +8,9 @@ wave set-up, the fluid-first coupling and the wall layers are chosen by the runn
     cosim run examples/moored_box_waves.py            # or the same scene as TOML: .toml
     cosim run examples/moored_box_waves.py --set fluid.dx=0.01 --set moorings.model=moordyn
 
-Cost and figures: see the README ("The two commands").
+Cost (the 2-core machine, AMD EPYC): 2867 particles, 11 270 coupling steps, 38-46 s of wall
+time for the 5 s (the wave set-up: h = 2 dx, walls carrying the pressure). In the last two
+periods the box heaves about 44 mm and surges about 40 mm peak to peak and pitches up to 7 deg.
 """
 from cosim.scene import SPH, Beach, Box, Flume, Line, Moorings, Piston, Probes, Scene, World
 
