@@ -251,6 +251,8 @@ def run(scene, out, *, resume: bool = False, progress=None) -> Results:
         shutil.copy2(f, out / f.name)
     build_s = time.perf_counter() - wall0
     c, sph = built.coupler, built.sph
+    if scene.world.plot_at and sph is None:
+        log.warning("world.plot_at: particle plots need the SPH fluid; this scene has none, so none are drawn")
     rec = _Recorder(scene, built, out)
     t_start, wall_before = 0.0, 0.0
     if blob is not None:
