@@ -52,6 +52,20 @@ angular momentum about the centre of mass (I omega against fluid + mooring torqu
 residual dp - J is reported in N s and relative to the gross impulse
 sum_k (|F_fluid| + |F_mooring| + |G|) dt_k; its drift is its least-squares slope against steps.
 
+The full soak, 10^6 steps, catenary and sph-cable (2026-11-25, after the ledger and MoorDyn
+repairs; the two ran side by side on the 2 cores, load 1.9-2.1; ledger truncated each chunk):
+
+    python benchmarks/soak.py --steps 1000000 --every 50000 --models catenary --csv catenary.csv
+    python benchmarks/soak.py --steps 1000000 --every 50000 --models sph-cable --csv sph-cable.csv
+
+    model        steps   wall s  st/s  st/cpu-s  RSS start -> end   B/1000 st  ticks  |dp - J| N s  rel     z per 1e6
+    catenary   1000000     2006   499       515  209.4 -> 209.4 MB          0      0  4.50e-09     2e-17  -4.5e-09
+    sph-cable  1000000     2480   403       414  231.8 -> 231.8 MB          0      0  4.97e-09     2e-17  -5.0e-09
+
+Flat memory (gc-tracked objects +0 per 1000 steps), an exact clock at every report (a
+float sum t += dt would be 1.7e-7 s off), no momentum drift beyond rounding; fmu (the
+catenary compiled: bit-identical to it over 1e5 steps) and moordyn were not run to 1e6.
+
 Measured 2026-11-25, AMD EPYC (model name as /proc/cpuinfo gives it), 2 cores shared with
 other developers' test runs (1-minute load average over each run given: 0.9 to 4.2, so the
 wall rates are what this process got; steps per CPU-second is the figure that survives the
