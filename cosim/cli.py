@@ -118,8 +118,7 @@ def _split_values(text: str) -> list[str]:
     """``a,b,[1, 2]`` -> ``["a", "b", "[1, 2]"]``: commas inside brackets stay."""
     parts, depth, cur = [], 0, ""
     for ch in text:
-        depth += ch in "[{" and 1 or 0
-        depth -= ch in "]}" and 1 or 0
+        depth += (ch in "[{") - (ch in "]}")
         if ch == "," and depth == 0:
             parts.append(cur)
             cur = ""

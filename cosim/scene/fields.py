@@ -189,8 +189,7 @@ class Vecs(Check):
         return f"a list of {what}{self._unit()}{f', at least {self.min_len}' if self.min_len else ''} ({self.doc})"
 
     def check(self, v, path):
-        if isinstance(v, (str, bytes, dict)) or not hasattr(v, "__iter__"):
-            raise SceneError(path, f"{_show(v)} is not a list; give {self.expected()}")
+        _require_list(v, path, self)
         out = tuple(self.item(x, f"{path}[{i}]") for i, x in enumerate(v))
         if len(out) < self.min_len:
             raise SceneError(path, f"has {len(out)} entries; give {self.expected()}")
@@ -204,8 +203,7 @@ class Names(Check):
         return f"a list of names ({self.doc})"
 
     def check(self, v, path):
-        if isinstance(v, (str, bytes, dict)) or not hasattr(v, "__iter__"):
-            raise SceneError(path, f"{_show(v)} is not a list; give {self.expected()}")
+        _require_list(v, path, self)
         v = tuple(v)
         for i, x in enumerate(v):
             if not isinstance(x, str) or not x:
@@ -220,8 +218,7 @@ class Gauges(Check):
         return f"a list of x positions (2-D) or of (x, y) pairs (3-D) [m] ({self.doc})"
 
     def check(self, v, path):
-        if isinstance(v, (str, bytes, dict)) or not hasattr(v, "__iter__"):
-            raise SceneError(path, f"{_show(v)} is not a list; give {self.expected()}")
+        _require_list(v, path, self)
         out = []
         for i, x in enumerate(v):
             if _is_finite(x):
@@ -276,9 +273,14 @@ class Parts(Check):
         return f"a list of {self.part.expected()}"
 
     def check(self, v, path):
-        if isinstance(v, (str, bytes, dict)) or not hasattr(v, "__iter__") or isinstance(v, Spec):
-            raise SceneError(path, f"{_show(v)} is not a list; give {self.expected()}")
+        _require_list(v, path, self)
         return tuple(self.part(x, f"{path}[{i}]") for i, x in enumerate(v))
+
+
+def _require_list(v, path: str, check: Check) -> None:
+    """Refuse a value that is not a list (a text, a table or a scene object is not one)."""
+    if isinstance(v, (str, bytes, dict, Spec)) or not hasattr(v, "__iter__"):
+        raise SceneError(path, f"{_show(v)} is not a list; give {check.expected()}")
 
 
 def _show(v) -> str:

@@ -143,10 +143,14 @@ class _Recorder:
         if led.body_names:
             self.ledger_done = led.write_h5(self.h5, start=self.ledger_done)
 
+    def table(self, g) -> np.ndarray:
+        """The samples of probe group ``g`` so far, (n_samples, n_columns)."""
+        return np.array(self.rows[g.name]).reshape(len(self.times), len(g.columns))
+
     def series(self):
         out, units = {}, {}
         for g in self.groups:
-            a = np.array(self.rows[g.name]).reshape(len(self.times), len(g.columns))
+            a = self.table(g)
             for j, (c, u) in enumerate(zip(g.columns, g.units)):
                 out[c], units[c] = a[:, j], u
         return out, units
@@ -359,7 +363,7 @@ def _summary(scene, built, series, units, steps, loop_s, build_s, cpu_s, wall_be
 def _write_tables(out: Path, rec, built):
     t = np.asarray(rec.times)
     for g in rec.groups:
-        a = np.array(rec.rows[g.name]).reshape(len(t), len(g.columns))
+        a = rec.table(g)
         with open(out / f"{g.name}.csv", "w") as f:
             f.write("t [s]," + ",".join(f"{c} [{u}]" for c, u in zip(g.columns, g.units)) + "\n")
             for k in range(len(t)):
@@ -376,7 +380,7 @@ def _plot_groups(out: Path, rec, scene):
 
     t = np.asarray(rec.times)
     for g in rec.groups:
-        a = np.array(rec.rows[g.name]).reshape(len(t), len(g.columns))
+        a = rec.table(g)
         quantities = list(dict.fromkeys(c.rsplit(".", 1)[1] for c in g.columns))
         fig, axes = plt.subplots(len(quantities), 1, figsize=(7, 1.2 + 1.8 * len(quantities)), dpi=110,
                                  sharex=True, squeeze=False)

@@ -127,17 +127,18 @@ def to_dict(spec: Spec) -> dict:
     return out
 
 
-def _scalar(v) -> str:
+def toml_value(v) -> str:
+    """A value as TOML writes it (``--set`` and ``--vary`` assignments, the scene file)."""
     if isinstance(v, bool):
         return "true" if v else "false"
     if isinstance(v, (int, float)):
         return repr(v)  # exact: floats round-trip through repr
     if isinstance(v, str):
         return _string(v)
-    if isinstance(v, list):
-        return "[" + ", ".join(_scalar(x) for x in v) + "]"
+    if isinstance(v, (list, tuple)):
+        return "[" + ", ".join(toml_value(x) for x in v) + "]"
     if isinstance(v, dict):
-        return "{ " + ", ".join(f"{_bare(k)} = {_scalar(x)}" for k, x in v.items()) + " }"
+        return "{ " + ", ".join(f"{_bare(k)} = {toml_value(x)}" for k, x in v.items()) + " }"
     raise TypeError(f"cannot write {v!r} as TOML")
 
 
@@ -170,7 +171,7 @@ def _table(d: dict, name: str, lines: list, header: str) -> None:
     plain = [(k, v) for k, v in d.items() if not isinstance(v, dict) and not is_tables(v)]
     if header:
         lines += ["", header]
-    lines += [f"{_bare(k)} = {_scalar(v)}" for k, v in plain]
+    lines += [f"{_bare(k)} = {toml_value(v)}" for k, v in plain]
     for k, v in d.items():
         sub = f"{name}.{_bare(k)}" if name else _bare(k)
         if isinstance(v, dict):

@@ -21,7 +21,6 @@ The levers, where the scene has them (values relative to the scene's own):
 
 from __future__ import annotations
 
-import hashlib
 import json
 from pathlib import Path
 
@@ -87,9 +86,7 @@ def run_extremes(scene, out, *, workers=None, threads=1, scheduler=None, serial=
             except CosimError as e:  # refused by the scene's own checks
                 row.update(outcome="refused", message=str(e))
                 continue
-            text = s.to_toml()
-            key = hashlib.sha256((text + version).encode()).hexdigest()[:16]
-            cases.append((row, sweep.Case(len(cases), {lever: label}, text, key, out / "runs" / key)))
+            cases.append((row, sweep.case(len(cases), {lever: label}, s, out, version)))
     out.mkdir(parents=True, exist_ok=True)
     workers = workers or max(1, (os.cpu_count() or 1) // max(threads, 1))
     records = sweep.execute([c for _, c in cases], workers=workers, threads=threads, scheduler=scheduler,

@@ -58,25 +58,19 @@ def combinations(vary: dict) -> list[dict]:
     return [dict(zip(keys, combo)) for combo in itertools.product(*(vary[k] for k in keys))]
 
 
+def case(index: int, values: dict, scene, out: Path, version: str) -> Case:
+    """The case of ``scene`` (already changed by ``values``), keyed by its TOML and the code."""
+    text = scene.to_toml()
+    key = hashlib.sha256((text + version).encode()).hexdigest()[:16]
+    return Case(index, values, text, key, out / "runs" / key)
+
+
 def cases(scene, vary: dict, out: Path, version: str) -> list[Case]:
     """The study's cases; a value the scene refuses is refused here, before any run."""
-    out_cases = []
-    for i, values in enumerate(combinations(vary)):
-        s = scene.with_values([f"{k}={_toml(v)}" for k, v in values.items()])
-        text = s.to_toml()
-        key = hashlib.sha256((text + version).encode()).hexdigest()[:16]
-        out_cases.append(Case(i, values, text, key, out / "runs" / key))
-    return out_cases
+    from cosim.scene.toml_io import toml_value
 
-
-def _toml(v) -> str:
-    if isinstance(v, str):
-        return json.dumps(v)
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    if isinstance(v, (list, tuple)):
-        return "[" + ", ".join(_toml(x) for x in v) + "]"
-    return repr(v)
+    return [case(i, values, scene.with_values([f"{k}={toml_value(v)}" for k, v in values.items()]), out, version)
+            for i, values in enumerate(combinations(vary))]
 
 
 def run_case(toml: str, folder: str, threads: int, version: str) -> dict:
