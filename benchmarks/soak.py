@@ -98,16 +98,9 @@ Findings.
   at most 0.2 MB over the rest (catenary +0.09 MB over 85k steps, fmu +0.17 MB in one
   step at 65k, moordyn 0 over 37k, sph-cable +0.05 MB over 32k after a one-off +0.7 MB
   at ~16k): no linear growth; gc-tracked objects constant (0.0 per 1000 steps).
-- Memory with the ledger kept (a run as ``scene.run`` does it): linear, ~970-990 B per
-  step for the one body (``--ledger keep --models fmu --steps 20000 --every 2000``, load
-  3.4: 75.4 -> 92.4 MB, 968 kB per 1000 steps over the second half).
-  The ledger alone (same command, ``--ledger-rows 1000000``): 962 B/step resident, 917 MB for 10^6
-  steps (835 B/step by sys.getsizeof: one float and five (1, 3) numpy arrays of 152 B
-  each, plus list slots), 7.5 x the 128 B/step the same numbers take as arrays (the
-  ~120 MB estimate of the issue is the arrays, not the lists); ``arrays()`` of 10^6 rows
-  takes 1.6 s and 123 MB more. So a 10^6-step run holds ~1 GB in its ledger by design:
-  not a leak, but not flat either; storing rows in preallocated/growing numpy blocks would
-  bring it to 128 B/step.
+- Memory with the ledger kept (a run as ``scene.run`` does it): linear by design, one row
+  per step; 168 B per step for one body since the ledger keeps arrays (``cosim.ledger``;
+  these runs measured the former lists of small arrays at 962 B per step).
 - Clock: exact in every run, 0 ticks off at every chunk (1e16 ticks for 10^6 steps fit
   an int), and ``clock.t`` as a float also exact here; ``t += dt`` summed in floats would
   be off by 7.6e-10 s after 10^5 steps and 1.7e-7 s after 10^6.
@@ -130,18 +123,10 @@ Findings.
   round-off; hence the exact sums here.
   Reading the ledger alone, dt = np.diff(t) of its float start times is off by up to an
   ulp of t a step (2.2e-11 N s after 2e4 steps); the ledger does not book dt.
-- moordyn crashes Python 3.11 after ~15.3k coupling steps ("Fatal Python error:
-  none_dealloc"): ``moordyn.Deserialize`` (moordyn 2.7.2, cmoordyn) returns None without
-  taking a reference, and the predictor-corrector rolls the mooring back with
-  ``load_state`` -> ``Deserialize`` once every step, so None loses one reference a step
-  (``sys.getrefcount(None)`` 12939 -> 2826 between 2500 and 12500 steps) until it is freed.
-  Any moordyn run longer than ~150 s simulated at dt = 0.01 s (~280 s at the fluid's own
-  step) dies this way on Python < 3.12 (None is immortal from 3.12). ``--patch-moordyn``
-  gives the reference back after each call; with it moordyn ran 50k steps, flat. The
-  MoorDyn adapter now does the same itself (``moorings.moordyn_mooring``, after these runs),
-  so the option is only needed to reproduce them with an older adapter.
-- The ledger took 962 B per step (a list of small arrays per step); it now keeps arrays
-  that double when full (168 B per step, ``cosim.ledger``, after these runs).
+- moordyn 2.7.2's ``Deserialize`` drops a reference to None per call; the predictor-corrector's
+  per-step roll-back aborted Python 3.11 after ~15.3k steps. The adapter now gives the
+  reference back (``moorings.moordyn_mooring``); ``--patch-moordyn`` reproduces these runs
+  with an adapter that does not.
 - catenary and fmu (the same law compiled as an FMU) give bit-identical trajectories and
   residuals. The sph-cable box never comes to rest: after 475 s it still wanders by +-5 mm
   with |p| up to 7 N s (the SPH cable's own oscillation); catenary and fmu reach a
