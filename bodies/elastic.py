@@ -1,0 +1,352 @@
+"""Elastic cantilevers (beams and plates in cylindrical bending) as MuJoCo chains.
+
+Physics. A straight cantilever of length ``L``, thickness ``h`` (bending direction,
+world x) and width ``W`` (world y; 1 m in 2-D scenes, so loads per metre of depth are
+loads on the model), clamped at its foot and rising along +z. It is a discrete
+Timoshenko beam: ``N`` elements of length ``l = L / N``, the compliance of each
+lumped at its midpoint into a hinge about y of stiffness ``k_b = E I / l`` and
+(``shear=True``) a slide along the link's own x of stiffness ``k_s = kappa G A / l``
+(``I = W h^3 / 12``, ``A = W h``, ``G = E / (2 (1 + nu))``, ``kappa = 5/6`` for a
+rectangle). The rigid links between the joints are boxes of the beam's section and
+density, so mass and rotary inertia (``rho I`` per length) are the beam's. The
+first link ``[0, l/2]`` is welded to the parent (the clamp), the last is ``[L - l/2,
+L]``. With joints at element midpoints the bending compliance is the midpoint rule of
+the Euler-Bernoulli/Timoshenko integrals, so it converges at second order:
+tip load ``delta = P L^3 / (3 E I) (1 - 1 / (4 N^2)) + P L / (kappa G A)`` (exact
+shear term), uniform load ``q L^4 / (8 E I) (1 - 1 / (2 N^2)) + q L^2 / (2 kappa G A)``.
+The links turn rigidly, so large rotations are handled as MuJoCo's joints handle them.
+Damping (optional) is stiffness-proportional, ``c = beta k`` on every joint.
+``shear=False`` is a Rayleigh beam (rotary inertia, no shear), the Euler-Bernoulli
+limit for slender beams.
+
+References, checked by ``tests/test_elastic_beam.py``: Euler-Bernoulli clamped-free
+frequencies ``omega_n = (beta_n L)^2 sqrt(E I / (rho A L^4))``, ``beta_n L = 1.8751,
+4.6941, 7.8548`` (``1 + cos(beta L) cosh(beta L) = 0``); Timoshenko clamped-free
+frequency equation of Han, Benaroya & Wei (1999, J. Sound Vib. 225(5) 935-988, the
+fixed-free case; Huang 1961) solved here in :func:`timoshenko_frequencies`; tip
+deflections as above (Timoshenko & Gere; the shear term ``P L / (kappa G A)``).
+
+Why a chain and not MuJoCo's flex (measured, ``python benchmarks/elastic_beam.py``,
+seed 002's plate ``L = 8 cm, h = 1.2 cm, rho_s = 2500 kg/m^3, E = 1 MPa, nu = 0``,
+W = 1 m, against Timoshenko ``f = 5.970, 34.59, 87.63 Hz``; Euler-Bernoulli would say
+6.058, 37.96, 106.3 Hz, off by 1.5/10/21 %): the chain with shear joints is within
+0.35 / 1.0 / 1.0 % with N = 8 (16 dofs), 0.09 / 0.25 / 0.25 % with N = 16 (32 dofs),
+error ratio 4.0 per halving (order 2). MuJoCo 4.0's flex (linear triangles in plane
+stress, or tetrahedra, ``<elasticity young poisson>``) locks in bending: the 2-D flex
+is +14 / +43 / +26 % off with 4 x 32 elements (480 dofs) and still +2.9 / +2.3 / +1.7 %
+with 6 x 48 (1008 dofs), converging at about first order; its elasticity is no longer
+implicit under ``implicit``/``implicitfast`` (MuJoCo 4.0 refuses: "Euler with a small
+timestep" or ``discrete``, the latter 3-4 times dearer), and it costs more per
+simulated second at the same dt. The chain needs no plugin and gives one rigid body
+per element, which the coupler already moves and loads (:class:`MujocoBodies`).
+Stability: RK4 holds for ``dt < 2.8 / omega_max`` (:meth:`BeamModel.stable_dt`;
+seed plate, N = 16: about 4e-4 s, above the SPH step).
+
+Units: SI (m, kg, s, Pa, N). 2-D scenes live in the x-z plane: every joint turns
+about y or slides along x, so the beam stays in the plane by construction.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from cosim.errors import InputError
+
+#: the first three roots of 1 + cos(x) cosh(x) = 0 (clamped-free Euler-Bernoulli beam)
+BETA_L = (1.8751040687119611, 4.6940911329741745, 7.8547574382376126)
+
+MIN_ELEMENTS = 4  #: fewer elements cannot carry the third bending mode (error > 4 %)
+
+
+def _fmt(v) -> str:
+    return " ".join(repr(float(x)) for x in v)
+
+
+def _positive(beam: str, field: str, unit: str, value, fix: str) -> float:
+    ok = isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value) and value > 0
+    if not ok:
+        raise InputError(f"elastic beam '{beam}': {field} must be a finite number > 0 [{unit}], got {value!r}; {fix}")
+    return float(value)
+
+
+@dataclass(frozen=True)
+class BeamModel:
+    """A cantilever as built by :func:`elastic_beam`: its parameters, its MJCF and the
+    analytic answers it is checked against. Lengths [m], E [Pa], rho [kg/m^3]."""
+
+    name: str
+    length: float  #: L [m], along +z from the clamp
+    thickness: float  #: h [m], along x (the bending direction)
+    width: float  #: W [m], along y (1 m in 2-D scenes)
+    E: float  #: Young's modulus [Pa]
+    rho: float  #: density [kg/m^3]
+    nu: float  #: Poisson's ratio (enters G only)
+    kappa: float  #: shear coefficient (5/6 for a rectangle)
+    n_elements: int  #: N, hinges (and shear slides) at element midpoints
+    base: tuple  #: clamp point [m], (3,), the centre of the foot
+    shear: bool  #: shear slides (Timoshenko) or not (Rayleigh)
+    beta: float  #: stiffness-proportional damping [s]
+    xml: str  #: the ``<body>`` element, for :func:`bodies.builders.scene`
+
+    # -- derived ---------------------------------------------------------------
+    @property
+    def I(self) -> float:  # noqa: E743 - the beam's symbol
+        """Second moment of area about y [m^4]."""
+        return self.width * self.thickness**3 / 12.0
+
+    @property
+    def A(self) -> float:
+        """Section area [m^2]."""
+        return self.width * self.thickness
+
+    @property
+    def G(self) -> float:
+        """Shear modulus [Pa]."""
+        return self.E / (2.0 * (1.0 + self.nu))
+
+    @property
+    def link_names(self) -> list[str]:
+        """The chain's bodies from the clamp up; the first is welded (no degrees of freedom)."""
+        return [f"{self.name}_link{k}" for k in range(self.n_elements + 1)]
+
+    @property
+    def link_bounds(self) -> np.ndarray:
+        """``(N + 1, 2)``: each link's span ``[z0, z1]`` [m] along the beam from the clamp."""
+        l = self.length / self.n_elements
+        cuts = np.concatenate([[0.0], (np.arange(self.n_elements) + 0.5) * l, [self.length]])
+        return np.stack([cuts[:-1], cuts[1:]], axis=1)
+
+    # -- analytic references -----------------------------------------------------
+    def tip_deflection_point(self, P: float, theory: str = "timoshenko") -> float:
+        """Static tip deflection [m] under a tip load ``P`` [N] along x: ``P L^3 / (3 E I)``
+        plus, for Timoshenko, ``P L / (kappa G A)``."""
+        L = self.length
+        d = P * L**3 / (3 * self.E * self.I)
+        return d + (P * L / (self.kappa * self.G * self.A) if theory == "timoshenko" else 0.0)
+
+    def tip_deflection_uniform(self, q: float, theory: str = "timoshenko") -> float:
+        """Static tip deflection [m] under a uniform load ``q`` [N/m] along x:
+        ``q L^4 / (8 E I)`` plus, for Timoshenko, ``q L^2 / (2 kappa G A)``."""
+        L = self.length
+        d = q * L**4 / (8 * self.E * self.I)
+        return d + (q * L**2 / (2 * self.kappa * self.G * self.A) if theory == "timoshenko" else 0.0)
+
+    def natural_frequencies(self, n: int = 3, theory: str = "timoshenko") -> np.ndarray:
+        """The first ``n`` (<= 3 for Euler-Bernoulli) bending frequencies [Hz] of the
+        clamped-free beam."""
+        if theory == "euler-bernoulli":
+            bl = np.array(BETA_L[:n])
+            return bl**2 / (2 * math.pi * self.length**2) * math.sqrt(self.E * self.I / (self.rho * self.A))
+        return timoshenko_frequencies(self.length, self.thickness, self.E, self.rho, self.nu, self.kappa, n)
+
+    def stable_dt(self, integrator: str = "RK4") -> float:
+        """Largest stable MuJoCo step [s] of the undamped chain alone: ``2.8 / omega_max``
+        for RK4 (its stability limit on the imaginary axis is 2 sqrt 2) or ``2 /
+        omega_max`` for semi-implicit Euler, ``omega_max`` the chain's highest natural
+        frequency (the beam compiled alone and linearised, :func:`modal_frequencies`)."""
+        import mujoco
+
+        from bodies.builders import scene
+
+        model = mujoco.MjModel.from_xml_string(scene(self.xml, gravity=0.0))
+        w_max = 2.0 * math.pi * modal_frequencies(model, mujoco.MjData(model))[-1]
+        return (2.8 if integrator.upper() == "RK4" else 2.0) / w_max
+
+    # -- coupling --------------------------------------------------------------
+    def boundary_particles(self, dx: float, layers: int, dim: int = 3):
+        """Boundary particles on a lattice of spacing ``dx`` [m] laid over the whole
+        undeformed plate (cell-centred, as :mod:`bodies.sampling` lays them), ``layers``
+        deep inside its faces (all of the section where the plate is thinner than two
+        bands), the clamped foot face left out (it stands on the floor). Each particle
+        belongs to the link whose span holds it and is stored in that link's frame, so
+        :func:`bodies.sampling.place` moves it with the link.
+
+        Returns points ``(n, 3)`` [m] in their link's frame and the link index of each
+        (0 = the welded foot link, ..., N = the tip link; see :attr:`link_names`)."""
+        if not (isinstance(dx, (int, float)) and math.isfinite(dx) and dx > 0):
+            raise InputError(f"elastic beam '{self.name}': dx must be finite and > 0 [m], got {dx!r}")
+        if int(layers) != layers or layers < 1:
+            raise InputError(f"elastic beam '{self.name}': layers must be a whole number >= 1, got {layers!r}")
+        if dim not in (2, 3):
+            raise InputError(f"elastic beam '{self.name}': dim must be 2 or 3, got {dim!r}")
+
+        def grid(lo, hi):
+            n = max(1, int(round((hi - lo) / dx)))
+            return lo + (np.arange(n) + 0.5) * (hi - lo) / n
+
+        h2, w2 = self.thickness / 2, self.width / 2
+        xs, zs = grid(-h2, h2), grid(0.0, self.length)
+        ys = grid(-w2, w2) if dim == 3 else np.array([0.0])
+        p = np.stack(np.meshgrid(xs, ys, zs, indexing="ij"), axis=-1).reshape(-1, 3)
+        depth = np.minimum(h2 - np.abs(p[:, 0]), self.length - p[:, 2])  # to the sides and the top
+        if dim == 3:
+            depth = np.minimum(depth, w2 - np.abs(p[:, 1]))
+        p = p[depth < layers * dx]
+        bounds = self.link_bounds
+        owner = np.clip(np.searchsorted(bounds[:, 1], p[:, 2], side="right"), 0, self.n_elements)
+        p_b = p.copy()
+        p_b[:, 2] -= bounds[owner, 0]  # each link's frame sits at its lower end
+        return p_b, owner
+
+
+def elastic_beam(name: str, length: float, thickness: float, *, E: float, rho: float, width: float = 1.0,
+                 nu: float = 0.0, kappa: float = 5.0 / 6.0, n_elements: int = 16, base=(0.0, 0.0, 0.0),
+                 shear: bool = True, beta: float = 0.0) -> BeamModel:
+    """An elastic cantilever clamped at ``base`` [m] (the centre of its foot) and
+    rising along +z, as a chain of MuJoCo bodies (see the module docstring).
+
+    Parameters: ``length`` L [m], ``thickness`` h [m] (along x), ``width`` W [m] (along y;
+    1 m for 2-D scenes), ``E`` Young's modulus [Pa], ``rho`` density [kg/m^3], ``nu``
+    Poisson's ratio (for ``G``; pass ``E / (1 - nu^2)`` as E for a wide plate in
+    cylindrical bending), ``kappa`` shear coefficient, ``n_elements`` N >= 4, ``shear``
+    Timoshenko (True) or Rayleigh (False), ``beta`` stiffness-proportional damping [s].
+
+    Returns a :class:`BeamModel`; its ``xml`` is a ``<body>`` for
+    :func:`bodies.builders.scene`, its links are named ``{name}_link0`` (welded) to
+    ``{name}_link{N}``, with sites ``{name}_tip`` (top centre) and ``{name}_corner``
+    (top, -x side, the "upper left corner" of seed 002 Figure 6)."""
+    if not isinstance(name, str) or not name:
+        raise InputError(f"elastic beam: name must be a non-empty string, got {name!r}")
+    L = _positive(name, "length", "m", length, "give the cantilever's length from clamp to tip")
+    h = _positive(name, "thickness", "m", thickness, "give the plate's thickness in the bending direction (x)")
+    W = _positive(name, "width", "m", width, "give the width along y (1 m in a 2-D scene)")
+    E = _positive(name, "E", "Pa", E, "give Young's modulus, e.g. E=1e6 for seed 002's plate")
+    rho = _positive(name, "rho", "kg/m^3", rho, "give the material density, e.g. rho=2500")
+    kappa = _positive(name, "kappa", "-", kappa, "give the shear coefficient, 5/6 for a rectangular section")
+    if not (isinstance(nu, (int, float)) and math.isfinite(nu) and -1.0 < nu < 0.5):
+        raise InputError(f"elastic beam '{name}': nu (Poisson's ratio) must lie in (-1, 0.5), got {nu!r}")
+    if not (isinstance(beta, (int, float)) and math.isfinite(beta) and beta >= 0):
+        raise InputError(f"elastic beam '{name}': beta (stiffness-proportional damping) must be finite and >= 0 "
+                         f"[s], got {beta!r}; give 0 for no damping")
+    if not (isinstance(n_elements, int) and not isinstance(n_elements, bool) and n_elements >= MIN_ELEMENTS):
+        raise InputError(f"elastic beam '{name}': n_elements must be a whole number >= {MIN_ELEMENTS}, got "
+                         f"{n_elements!r}; fewer cannot carry the third bending mode (16 gives the first three "
+                         f"within 0.3 %)")
+    base = tuple(float(c) for c in base)
+    if len(base) != 3 or not all(math.isfinite(c) for c in base):
+        raise InputError(f"elastic beam '{name}': base must be 3 finite coordinates (x, y, z) [m], got {base!r}")
+    N = n_elements
+    l = L / N
+    G = E / (2.0 * (1.0 + nu))
+    kb, ks = E * W * h**3 / 12.0 / l, kappa * G * W * h / l
+
+    def geom(k, seg):
+        return (f'<geom name="{name}_geom{k}" type="box" size="{_fmt([h / 2, W / 2, seg / 2])}" '
+                f'pos="0 0 {seg / 2!r}" density="{rho!r}" contype="0" conaffinity="0"/>')
+
+    parts = [f'<body name="{name}_link0" pos="{_fmt(base)}">{geom(0, l / 2)}']
+    for k in range(1, N + 1):
+        seg = l / 2 if k == N else l
+        joints = (f'<joint name="{name}_bend{k}" type="hinge" axis="0 1 0" stiffness="{kb!r}" '
+                  f'damping="{beta * kb!r}"/>')
+        if shear:
+            joints += (f'<joint name="{name}_shear{k}" type="slide" axis="1 0 0" stiffness="{ks!r}" '
+                       f'damping="{beta * ks!r}"/>')
+        parts.append(f'<body name="{name}_link{k}" pos="0 0 {(l / 2 if k == 1 else l)!r}">{joints}{geom(k, seg)}')
+    parts.append(f'<site name="{name}_tip" pos="0 0 {l / 2!r}" size="{h / 4!r}"/>'
+                 f'<site name="{name}_corner" pos="{-h / 2!r} 0 {l / 2!r}" size="{h / 4!r}"/>')
+    xml = "".join(parts) + "</body>" * (N + 1)
+    return BeamModel(name, L, h, W, E, rho, float(nu), kappa, N, base, bool(shear), float(beta), xml)
+
+
+def timoshenko_frequencies(length: float, thickness: float, E: float, rho: float, nu: float = 0.0,
+                           kappa: float = 5.0 / 6.0, n: int = 3) -> np.ndarray:
+    """The first ``n`` bending frequencies [Hz] of a clamped-free Timoshenko beam of
+    rectangular section (thickness h along the bending direction), the roots ``b`` of
+    Han, Benaroya & Wei (1999), fixed-free frequency equation, below the second
+    spectrum (``b < 1 / (r s)``)::
+
+        2 + (b^2 (r^2 - s^2)^2 + 2) cosh(b a) cos(b c)
+          - b (r^2 + s^2) / sqrt(1 - b^2 r^2 s^2) sinh(b a) sin(b c) = 0,
+        a, c = sqrt(( -/+ (r^2 + s^2) + sqrt((r^2 - s^2)^2 + 4 / b^2)) / 2),
+
+    with ``b^2 = rho A L^4 omega^2 / (E I)``, ``r^2 = I / (A L^2)``, ``s^2 = E I /
+    (kappa G A L^2)``. Reduces to ``1 + cos cosh = 0`` as r, s -> 0."""
+    from scipy.optimize import brentq
+
+    I_A = thickness**2 / 12.0  # I / A
+    G = E / (2.0 * (1.0 + nu))
+    r2 = I_A / length**2
+    s2 = E * I_A / (kappa * G * length**2)
+
+    def F(b):  # the frequency equation divided by cosh(b a), which keeps it finite
+        t = math.sqrt((r2 - s2) ** 2 + 4.0 / b**2)
+        a, c = math.sqrt(0.5 * (t - (r2 + s2))), math.sqrt(0.5 * (t + (r2 + s2)))
+        return (2.0 / math.cosh(min(b * a, 700.0)) + (b**2 * (r2 - s2) ** 2 + 2.0) * math.cos(b * c)
+                - b * (r2 + s2) / math.sqrt(1.0 - b**2 * r2 * s2) * math.tanh(b * a) * math.sin(b * c))
+
+    x_max = (1.0 / math.sqrt(r2 * s2)) ** 0.5 * (1 - 1e-9)  # sqrt(b) ~ beta L: roots about pi apart
+    b_max = x_max**2
+    roots, x0, f0 = [], 0.5, F(0.25)
+    while len(roots) < n and x0 < x_max:
+        x1 = min(x0 + 0.05, x_max)
+        f1 = F(x1**2)
+        if f0 * f1 < 0:
+            roots.append(brentq(F, x0**2, x1**2, xtol=1e-13, rtol=1e-14))
+        x0, f0 = x1, f1
+    if len(roots) < n:
+        raise InputError(f"Timoshenko beam: only {len(roots)} frequencies lie below the second spectrum "
+                         f"(b < {b_max:.4g}); ask for fewer")
+    omega = np.array(roots) * math.sqrt(E * thickness**2 / 12.0 / (rho * length**4))
+    return omega / (2.0 * math.pi)
+
+
+def link_wrenches(points_w, forces_w, owner, com_w, n_links: int):
+    """Sum point forces onto the links that carry them: force [N] and torque about each
+    link's centre of mass [N m], world frame, ``(n_links, 3)`` each (what
+    :meth:`bodies.mujoco_bodies.MujocoBodies.set_wrenches` takes; the welded link's share
+    goes into the clamp). ``points_w`` and ``forces_w`` are ``(n, 3)``, ``owner`` the link
+    index of each point, ``com_w`` the links' centres of mass ``(n_links, 3)``. The sum of
+    the forces is kept exactly (one ``np.add.at`` per component), so the momentum the
+    fluid loses the chain gains."""
+    p, f = np.asarray(points_w, float), np.asarray(forces_w, float)
+    owner = np.asarray(owner)
+    F, T = np.zeros((n_links, 3)), np.zeros((n_links, 3))
+    np.add.at(F, owner, f)
+    np.add.at(T, owner, np.cross(p - np.asarray(com_w, float)[owner], f))
+    return F, T
+
+
+def linearise(model, data, eps: float = 1e-7):
+    """Stiffness ``K`` and mass ``M`` ``(nv, nv)`` of a MuJoCo model about the state in
+    ``data`` (velocities zeroed): ``M`` from ``mj_fullM``, ``K = -d(qfrc_passive -
+    qfrc_bias)/dq`` by central differences of MuJoCo's own forces (run with gravity off
+    for the elastic stiffness alone). Needs ``nq == nv`` (hinges and slides, as the
+    chain and flex vertices have). The state in ``data`` is restored."""
+    import mujoco
+
+    if model.nq != model.nv:
+        raise InputError(f"linearise: the model has nq = {model.nq} != nv = {model.nv} (free or ball joints); "
+                         f"linearise a model of hinges and slides only")
+    q0, v0 = data.qpos.copy(), data.qvel.copy()
+    data.qvel[:] = 0.0
+    mujoco.mj_forward(model, data)
+    M = np.zeros((model.nv, model.nv))
+    mujoco.mj_fullM(model, data, M)
+
+    def force(q):
+        data.qpos[:] = q
+        mujoco.mj_forward(model, data)
+        return data.qfrc_passive - data.qfrc_bias
+
+    K = np.zeros((model.nv, model.nv))
+    for j in range(model.nv):
+        dq = np.zeros(model.nq)
+        dq[j] = eps
+        K[:, j] = -(force(q0 + dq) - force(q0 - dq)) / (2 * eps)
+    data.qpos[:], data.qvel[:] = q0, v0
+    mujoco.mj_forward(model, data)
+    return 0.5 * (K + K.T), M
+
+
+def modal_frequencies(model, data) -> np.ndarray:
+    """Natural frequencies [Hz] of the model linearised about ``data`` (:func:`linearise`),
+    ascending; rigid-body and zero-stiffness modes come out as 0."""
+    from scipy.linalg import eigh
+
+    K, M = linearise(model, data)
+    w2 = eigh(K, M, eigvals_only=True)
+    return np.sqrt(np.clip(w2, 0.0, None)) / (2.0 * math.pi)

@@ -1,0 +1,279 @@
+"""Elastic cantilever (bodies/elastic.py) on its own, against Euler-Bernoulli and
+Timoshenko beam theory: static tip deflections, the first three natural frequencies,
+second-order convergence, time-stepped behaviour, the coupling helpers and bad input.
+
+Seed 002 (Yang & Li 2020, 002_1507eb345a9709e6.txt §3.3): a plate b = 1.2 cm thick
+and 20b/3 = 8 cm high, rho_s = 2500 kg/m^3, E = 1e6 Pa, clamped to the floor; 1 m
+deep (2-D). L/h = 6.7: stubby, so Timoshenko is the reference (Euler-Bernoulli is
+off by 1.5, 10 and 21 % on the first three frequencies)."""
+
+import math
+
+import mujoco
+import numpy as np
+import pytest
+
+from bodies import builders
+from bodies.elastic import (BETA_L, elastic_beam, link_wrenches, linearise, modal_frequencies,
+                            timoshenko_frequencies)
+from bodies.mujoco_bodies import MujocoBodies
+from bodies.sampling import place
+from cosim.errors import InputError
+
+SEED = dict(length=0.08, thickness=0.012, E=1e6, rho=2500.0)  # seed 002 §3.3, 2-D (W = 1 m)
+SLENDER = dict(length=0.5, thickness=0.005, width=0.02, E=2e9, rho=1200.0)  # L/h = 100
+
+
+def compiled(beam, **kw):
+    kw = {"gravity": 0.0, "timestep": 1e-4, **kw}
+    m = mujoco.MjModel.from_xml_string(builders.scene(beam.xml, **kw))
+    return m, mujoco.MjData(m)
+
+
+def frequencies(beam):
+    return modal_frequencies(*compiled(beam))[:3]
+
+
+def static_tip(beam, load):
+    """Tip x deflection [m] of the linearised MuJoCo chain under ``load``: "tip" (1 N at
+    the tip) or "uniform" (1 N/m, each link's share at its centre of mass)."""
+    m, d = compiled(beam)
+    K, _ = linearise(m, d)
+    jp = np.zeros((3, m.nv))
+    tip = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_SITE, f"{beam.name}_tip")
+    if load == "tip":
+        mujoco.mj_jacSite(m, d, jp, None, tip)
+        tau = jp[0] * 1.0
+    else:
+        tau = np.zeros(m.nv)
+        for k, (z0, z1) in enumerate(beam.link_bounds):
+            b = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_BODY, f"{beam.name}_link{k}")
+            mujoco.mj_jacBodyCom(m, d, jp, None, b)
+            tau += jp[0] * (z1 - z0)
+    x0 = d.site_xpos[tip, 0]
+    q = np.linalg.solve(K, tau)
+    scale = 1e-5 / np.abs(q).max()  # read through MuJoCo's kinematics at a small deflection
+    d.qpos[:] = q * scale
+    mujoco.mj_forward(m, d)
+    return (d.site_xpos[tip, 0] - x0) / scale
+
+
+# -- the reference itself ------------------------------------------------------------
+
+def test_timoshenko_equation_tends_to_euler_bernoulli_for_slender_beams():
+    b = elastic_beam("s", length=1.0, thickness=1e-3, E=1e9, rho=1000.0)
+    f_t = timoshenko_frequencies(1.0, 1e-3, 1e9, 1000.0, n=3)
+    # the Timoshenko correction is O((beta_n h)^2): 1e-5 on the third mode at h/L = 1e-3
+    assert f_t == pytest.approx(b.natural_frequencies(theory="euler-bernoulli"), rel=2e-5)
+    for x in BETA_L:
+        assert 1 + math.cos(x) * math.cosh(x) == pytest.approx(0.0, abs=1e-9)
+
+
+def test_seed_plate_is_stubby_so_timoshenko_differs_from_euler_bernoulli():
+    b = elastic_beam("p", **SEED)
+    eb, tim = b.natural_frequencies(theory="euler-bernoulli"), b.natural_frequencies()
+    assert eb == pytest.approx([6.0578, 37.963, 106.30], rel=1e-4)
+    assert tim == pytest.approx([5.9704, 34.587, 87.635], rel=1e-4)
+    assert (eb / tim - 1) == pytest.approx([0.0146, 0.0976, 0.2130], abs=5e-4)
+
+
+# -- frequencies -----------------------------------------------------------------------
+
+def test_seed_plate_first_three_frequencies_within_two_percent_of_timoshenko():
+    b = elastic_beam("p", **SEED, n_elements=16)
+    err = frequencies(b) / b.natural_frequencies() - 1
+    assert np.abs(err).max() < 0.003  # measured 0.09, 0.25, 0.25 %
+
+
+def test_slender_beam_first_three_frequencies_within_two_percent_of_euler_bernoulli():
+    for shear in (True, False):
+        b = elastic_beam("s", **SLENDER, n_elements=16, shear=shear)
+        err = frequencies(b) / b.natural_frequencies(theory="euler-bernoulli") - 1
+        assert np.abs(err).max() < 0.005, (shear, err)
+
+
+def test_frequencies_converge_at_second_order():
+    errs = []
+    for n in (4, 8, 16, 32):
+        b = elastic_beam("p", **SEED, n_elements=n)
+        errs.append(np.abs(frequencies(b) / b.natural_frequencies() - 1))
+    errs = np.array(errs)  # rows: N, columns: mode
+    assert (np.diff(errs, axis=0) < 0).all()
+    order = np.log2(errs[:-1] / errs[1:])
+    assert order[1:].min() > 1.9 and order.max() < 2.2, order  # observed 1.98-2.07
+
+
+# -- statics ---------------------------------------------------------------------------
+
+@pytest.mark.parametrize("load", ["tip", "uniform"])
+def test_seed_plate_static_tip_deflection_meets_timoshenko(load):
+    errs = []
+    for n in (8, 16, 32):
+        b = elastic_beam("p", **SEED, n_elements=n)
+        ref = b.tip_deflection_point(1.0) if load == "tip" else b.tip_deflection_uniform(1.0)
+        errs.append(static_tip(b, load) / ref - 1)
+    errs = np.abs(errs)
+    assert errs[1] < 0.005 and (np.diff(errs) < 0).all()
+    assert np.log2(errs[0] / errs[1]) == pytest.approx(2.0, abs=0.1)
+    # the shear term matters here: Euler-Bernoulli alone is 1.3 % (tip) / 1.8 % (uniform) short
+    b = elastic_beam("p", **SEED)
+    eb = b.tip_deflection_point(1.0, "euler-bernoulli") if load == "tip" else \
+        b.tip_deflection_uniform(1.0, "euler-bernoulli")
+    assert abs(static_tip(b, load) / eb - 1) > 0.01
+
+
+def test_chain_statics_are_exactly_the_midpoint_rule_of_the_beam_integrals():
+    """Hinges at element midpoints: the bending term is the midpoint rule of the
+    deflection integral, ``(1 - 1/(4 N^2))`` (tip load) and ``(1 - 1/(2 N^2))`` (uniform),
+    the shear term exact (bodies/elastic.py docstring)."""
+    for n in (4, 16):
+        b = elastic_beam("p", **SEED, n_elements=n)
+        for load, eb, tim, c in (("tip", b.tip_deflection_point(1.0, "euler-bernoulli"), b.tip_deflection_point(1.0), 4),
+                                 ("uniform", b.tip_deflection_uniform(1.0, "euler-bernoulli"),
+                                  b.tip_deflection_uniform(1.0), 2)):
+            assert static_tip(b, load) == pytest.approx(tim - eb / (c * n * n), rel=1e-8)
+
+
+@pytest.mark.parametrize("load", ["tip", "uniform"])
+def test_slender_beam_static_tip_deflection_meets_euler_bernoulli(load):
+    b = elastic_beam("s", **SLENDER, n_elements=16)
+    ref = (b.tip_deflection_point(1.0, "euler-bernoulli") if load == "tip"
+           else b.tip_deflection_uniform(1.0, "euler-bernoulli"))
+    assert static_tip(b, load) == pytest.approx(ref, rel=0.005)
+
+
+def test_time_stepped_chain_settles_on_the_static_deflection_through_the_coupler_path():
+    """MuJoCo itself (implicit damping, 1 ms) under a tip force given as a point force,
+    mapped onto the tip link by link_wrenches and applied by MujocoBodies."""
+    b = elastic_beam("p", **SEED, n_elements=8, beta=0.05)
+    body = MujocoBodies(builders.scene(b.xml, gravity=0.0, timestep=1e-3, integrator="implicitfast"),
+                        bodies=b.link_names)
+    tip = body.site("p_tip")[0]
+    x0 = body.site_positions([tip])[0].copy()
+    P = 1e-3  # N: small, so that the linear theory holds
+    t = 0.0
+    for _ in range(150):
+        kin = body.kinematics()
+        F, T = link_wrenches(body.site_positions([tip]), [[P, 0.0, 0.0]], [b.n_elements], kin.com, len(b.link_names))
+        body.set_wrenches(F, T)
+        body.advance(t, 0.004)
+        t += 0.004
+    dx = body.site_positions([tip])[0] - x0
+    assert dx[0] == pytest.approx(b.tip_deflection_point(P), rel=0.01)
+    assert abs(dx[1]) < 1e-15  # stays in the x-z plane
+
+
+# -- time stepping at the coupler's step -----------------------------------------------
+
+def test_free_vibration_at_the_coupling_step_has_the_first_natural_frequency():
+    b = elastic_beam("p", **SEED, n_elements=8)
+    m, d = compiled(b, timestep=1e-4, integrator="RK4")
+    K, _ = linearise(m, d)
+    jp = np.zeros((3, m.nv))
+    tip = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_SITE, "p_tip")
+    mujoco.mj_jacSite(m, d, jp, None, tip)
+    x0 = d.site_xpos[tip, 0]
+    d.qpos[:] = np.linalg.solve(K, jp[0] * 0.01)  # released from the static shape under a tip load
+    x, dt = [], m.opt.timestep
+    for _ in range(int(0.36 / dt)):  # a little over two periods
+        mujoco.mj_step(m, d)
+        x.append(d.site_xpos[tip, 0] - x0)
+    x = np.array(x)
+    up = np.flatnonzero((x[:-1] < 0) & (x[1:] >= 0))
+    tz = (up + x[up] / (x[up] - x[up + 1])) * dt + dt  # interpolated upward zero crossings
+    f1 = 1.0 / np.diff(tz).mean()
+    assert f1 == pytest.approx(frequencies(b)[0], rel=0.01)
+    assert f1 == pytest.approx(b.natural_frequencies()[0], rel=0.02)
+    assert np.abs(x).max() < 1.01 * abs(x[0])  # no energy gained
+
+
+def test_stable_dt_is_the_rk4_limit():
+    b = elastic_beam("p", **SEED, n_elements=8)
+    dt = b.stable_dt()
+    assert dt > 1e-4  # the SPH step (~1e-5 to 1e-4 s) is well inside it
+
+    def peak(step):
+        m, d = compiled(b, timestep=step, integrator="RK4")
+        d.qvel[:] = 1e-3
+        for _ in range(400):
+            mujoco.mj_step(m, d)
+        return np.abs(d.qvel).max()
+
+    assert peak(0.95 * dt) < 1.0  # bounded (the 1e-3 start spreads over the modes: ~0.15 rad/s peaks)
+    assert not peak(1.05 * dt) < 100.0  # runs away (or overflows to inf/nan)
+
+
+# -- coupling helpers ----------------------------------------------------------------
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_boundary_particles_follow_the_links_and_start_on_the_lattice(dim):
+    b = elastic_beam("p", **SEED, n_elements=8, width=0.05, base=(0.3, 0.0, 0.01))
+    dx = 0.0025
+    pts, owner = b.boundary_particles(dx, layers=2, dim=dim)
+    body = MujocoBodies(builders.scene(b.xml, gravity=0.0), bodies=b.link_names)
+    x, u = place(pts, owner, body.kinematics())
+    # undeformed: a cell-centred lattice over the plate, 2 layers inside the faces, foot face left out
+    assert x[:, 0].min() == pytest.approx(0.3 - 0.006 + 0.0012, abs=1e-12)  # h = 0.012 m: 5 cells of 2.4 mm
+    assert x[:, 2].max() == pytest.approx(0.01 + 0.08 - dx / 2, abs=1e-12)
+    assert np.abs(u).max() == 0.0
+    if dim == 2:
+        assert (x[:, 1] == 0.0).all()
+    else:
+        assert np.abs(x[:, 1]).max() == pytest.approx(0.025 - dx / 2, abs=1e-12)
+    assert set(np.unique(owner)) == set(range(b.n_elements + 1))
+    # deformed and moving: each particle rides rigidly on its link (the tip link's particles
+    # keep their distances to the tip site), velocities are the links' rigid-body velocities
+    body.data.qpos[:] = 0.02
+    body.data.qvel[:] = 0.3
+    mujoco.mj_forward(body.model, body.data)
+    x1, u1 = place(pts, owner, body.kinematics())
+    on_tip = owner == b.n_elements
+    tip = body.site_positions([body.site("p_tip")[0]])[0]
+    rest_tip = np.array([0.3, 0.0, 0.09])
+    assert np.linalg.norm(x1[on_tip] - tip, axis=1) == pytest.approx(np.linalg.norm(x[on_tip] - rest_tip, axis=1))
+    h = 1e-7
+    body.data.qpos[:] += h * body.data.qvel
+    mujoco.mj_forward(body.model, body.data)
+    x2, _ = place(pts, owner, body.kinematics())
+    assert np.abs((x2 - x1) / h - u1).max() < 1e-5 * np.abs(u1).max()
+
+
+def test_link_wrenches_keep_force_and_moment_exactly():
+    rng = np.random.default_rng(0)
+    n, n_links = 500, 9
+    p = rng.normal(size=(n, 3))
+    f = rng.normal(size=(n, 3))
+    owner = rng.integers(0, n_links, n)
+    com = rng.normal(size=(n_links, 3))
+    F, T = link_wrenches(p, f, owner, com, n_links)
+    assert F.sum(axis=0) == pytest.approx(f.sum(axis=0), abs=1e-12)
+    # the moment about any point is kept: sum over links of T + com x F = sum over points of p x f
+    assert (T + np.cross(com, F)).sum(axis=0) == pytest.approx(np.cross(p, f).sum(axis=0), abs=1e-11)
+
+
+# -- bad input -----------------------------------------------------------------------
+
+@pytest.mark.parametrize("field,value", [("E", 0.0), ("E", -1e6), ("rho", 0.0), ("rho", -2500.0),
+                                         ("thickness", 0.0), ("thickness", -0.012), ("length", 0.0),
+                                         ("length", float("nan")), ("width", -1.0)])
+def test_non_positive_parameters_are_refused_naming_the_field(field, value):
+    kw = {**SEED, field: value}
+    with pytest.raises(InputError, match=rf"elastic beam 'p': {field} must be a finite number > 0"):
+        elastic_beam("p", **kw)
+
+
+@pytest.mark.parametrize("n", [3, 0, 2.5, True])
+def test_too_few_elements_are_refused_saying_how_many(n):
+    with pytest.raises(InputError, match=r"n_elements must be a whole number >= 4"):
+        elastic_beam("p", **SEED, n_elements=n)
+
+
+def test_other_bad_input_is_refused():
+    with pytest.raises(InputError, match="nu"):
+        elastic_beam("p", **SEED, nu=0.5)
+    with pytest.raises(InputError, match="beta"):
+        elastic_beam("p", **SEED, beta=-1.0)
+    with pytest.raises(InputError, match="base"):
+        elastic_beam("p", **SEED, base=(0.0, 0.0))
+    with pytest.raises(InputError, match="dx"):
+        elastic_beam("p", **SEED).boundary_particles(0.0, 2)
