@@ -441,6 +441,8 @@ class Coupler:
             b.set_wrenches(loads[0] + loads[2], loads[1] + loads[3])
             b.advance(t, dt)
             kin1 = b.kinematics()
+            if hasattr(self.fluid, "set_time"):  # loads that depend on time (waves): at the predicted time
+                self.fluid.set_time(t + dt)
             self._give_kinematics(kin1)
             end = self._loads(kin1)
             for p, st in saved:
