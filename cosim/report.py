@@ -10,7 +10,9 @@ prints, and the curves of ``series`` saved beside them in ``DIR/series/``) it wr
   docstring), the target as stated and what the record was judged against, the measured
   values, pass or fail, the departure from the stated target if any, the plots of ours
   against the reference (``CASE_*.png``, from ``series``), its measured trade (the tables
-  of its docstring's "Measured trade" paragraph) and its history
+  of its docstring's "Measured trade" paragraph, and for the cases of
+  :mod:`cosim.validations.trade` the table and Pareto plot of ``cosim study`` on the case's
+  scene, from ``docs/validation/trade/CASE/``) and its history
   (``docs/validation/CASE_history.md``, copied to ``history/`` and included);
 - ``records.jsonl``: the records, from which ``--from`` builds the same report again.
 
@@ -401,10 +403,32 @@ def case_page(rec: dict, case, plots: list[tuple[str, str]], history: str | None
     trade = case_trade(case.fn) if case is not None else None
     if trade:
         out += ["## Measured trade", "", trade, ""]
+    study = study_section(name)
+    if study:
+        out += [study, ""]
     if history is not None:
         out += ["## History", "", f"What was tried, session by session: [{name}_history.md](history/{name}_history.md) "
                 "(docs/validation/), included here.", "", _demote(history), ""]
     return "\n".join(out).rstrip() + "\n"
+
+
+def study_section(name: str) -> str | None:
+    """The case's trade measured by ``cosim study`` (:mod:`cosim.validations.trade`), from
+    its committed study folder: the command, what it measures, the table, the Pareto plot
+    (``trade/NAME_pareto.png`` beside the page, copied by :func:`write_report`)."""
+    from cosim.validations.trade import STUDIES, study_dir
+
+    s = STUDIES.get(name)
+    if s is None or not (study_dir(name) / "study.md").exists():
+        return None
+    table = (study_dir(name) / "study.md").read_text(encoding="utf-8").split("\n", 1)[1].strip()
+    out = ["## Trade measured by `cosim study`", "",
+           f"What it compares: {s.quantity}. Reference values and their source: "
+           f"`{s.reference.relative_to(s.reference.parents[3])}`. Re-measure with:", "",
+           "```", s.command(), "```", "", table, ""]
+    if (study_dir(name) / "pareto.png").exists():
+        out += [f"![error against cost, the Pareto front marked](trade/{name}_pareto.png)", ""]
+    return "\n".join(out).rstrip()
 
 
 def _within(v, b) -> bool:
@@ -468,6 +492,7 @@ def write_report(folder: Path | str, records: list[dict], series_from: Path | st
     """Write the report of ``records`` into ``folder``; the series are read from
     ``series_from`` (default ``folder/series``). Returns the index.md path."""
     from cosim.validation import cases
+    from cosim.validations.trade import study_dir
 
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
@@ -496,6 +521,10 @@ def write_report(folder: Path | str, records: list[dict], series_from: Path | st
             (folder / "history" / f"{name}_history.html").write_text(
                 html_page(f"{name}: history", md_to_html(history)), encoding="utf-8")
         pages[name] = case_page(rec, known.get(name), plots, history)
+        pareto = study_dir(name) / "pareto.png"
+        if "trade/" in pages[name] and pareto.exists():
+            (folder / "trade").mkdir(exist_ok=True)
+            shutil.copyfile(pareto, folder / "trade" / f"{name}_pareto.png")
     for name, md in pages.items():
         (folder / f"{name}.md").write_text(md, encoding="utf-8")
         (folder / f"{name}.html").write_text(html_page(name, md_to_html(md)), encoding="utf-8")
