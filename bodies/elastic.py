@@ -26,21 +26,30 @@ frequency equation of Han, Benaroya & Wei (1999, J. Sound Vib. 225(5) 935-988, t
 fixed-free case; Huang 1961) solved here in :func:`timoshenko_frequencies`; tip
 deflections as above (Timoshenko & Gere; the shear term ``P L / (kappa G A)``).
 
-Why a chain and not MuJoCo's flex (measured, ``python benchmarks/elastic_beam.py``,
-seed 002's plate ``L = 8 cm, h = 1.2 cm, rho_s = 2500 kg/m^3, E = 1 MPa, nu = 0``,
-W = 1 m, against Timoshenko ``f = 5.970, 34.59, 87.63 Hz``; Euler-Bernoulli would say
-6.058, 37.96, 106.3 Hz, off by 1.5/10/21 %): the chain with shear joints is within
-0.35 / 1.0 / 1.0 % with N = 8 (16 dofs), 0.09 / 0.25 / 0.25 % with N = 16 (32 dofs),
-error ratio 4.0 per halving (order 2). MuJoCo 4.0's flex (linear triangles in plane
-stress, or tetrahedra, ``<elasticity young poisson>``) locks in bending: the 2-D flex
-is +14 / +43 / +26 % off with 4 x 32 elements (480 dofs) and still +2.9 / +2.3 / +1.7 %
-with 6 x 48 (1008 dofs), converging at about first order; its elasticity is no longer
-implicit under ``implicit``/``implicitfast`` (MuJoCo 4.0 refuses: "Euler with a small
-timestep" or ``discrete``, the latter 3-4 times dearer), and it costs more per
-simulated second at the same dt. The chain needs no plugin and gives one rigid body
-per element, which the coupler already moves and loads (:class:`MujocoBodies`).
-Stability: RK4 holds for ``dt < 2.8 / omega_max`` (:meth:`BeamModel.stable_dt`;
-seed plate, N = 16: about 4e-4 s, above the SPH step).
+Why a chain and not MuJoCo's flex (measured by ``python benchmarks/elastic_beam.py``,
+AMD EPYC, 2 cores shared with two other jobs; seed 002's plate ``L = 8 cm, h = 1.2 cm,
+rho_s = 2500 kg/m^3, E = 1 MPa, nu = 0``, W = 1 m, against Timoshenko ``f = 5.970,
+34.59, 87.63 Hz``, tip ``1.2012 mm/N``; Euler-Bernoulli would say 6.058, 37.96, 106.3 Hz,
+off by 1.5 / 10 / 21 %)::
+
+    model      size  dofs   f1 %   f2 %   f3 %  tip %  dt_stable  s per simulated s
+    chain      N=8     16  +0.35  +1.00  +1.00  -0.39    8.3e-4     0.15-0.3 (RK4, dt 1e-4)
+    chain      N=16    32  +0.09  +0.25  +0.25  -0.10    3.8e-4     0.4-0.65
+    chain-EB   N=16    16  +1.11  +6.87  +13.8  -1.43    3.8e-4     0.2     (no shear slides)
+    flex2d     6x48  1008  +2.94  +2.32  +1.70  -7.75    6.0e-5     2.5-2.9 (Euler, dt 5.4e-5)
+    flex3d     4x32   960  +5.42  +4.06  +2.93  -13.0    8.7e-5     2.8     (Euler, dt 7.9e-5)
+
+The chain converges at order 2.00 (error ratio 4 per halving of l). MuJoCo 4.0's flex
+(``<flexcomp>`` with ``<elasticity young poisson>``: linear triangles in plane stress,
+``dim=2 elastic2d="stretch"``, or tetrahedra, ``dim=3``) also converges at order 2 but
+locks in bending, with a constant some 300 times larger: 1000 dofs for 3 % on f1 and
+8 % on the static tip, and its stable step (below 1e-4 s from 4 x 32 cells on) forces
+sub-steps; MuJoCo 4.0 no longer integrates flex elasticity implicitly (``implicit`` and
+``implicitfast`` are refused: "Euler with a small timestep" or ``discrete``, 3-4 times
+dearer). The chain gives one rigid body per element, which the coupler already moves
+and loads (:class:`bodies.mujoco_bodies.MujocoBodies`), and needs no plugin. Its stable
+RK4 step (:meth:`BeamModel.stable_dt`, exact for the linearised chain) is 3.8e-4 s at
+N = 16, above the SPH step.
 
 Units: SI (m, kg, s, Pa, N). 2-D scenes live in the x-z plane: every joint turns
 about y or slides along x, so the beam stays in the plane by construction.
@@ -58,7 +67,9 @@ from cosim.errors import InputError
 #: the first three roots of 1 + cos(x) cosh(x) = 0 (clamped-free Euler-Bernoulli beam)
 BETA_L = (1.8751040687119611, 4.6940911329741745, 7.8547574382376126)
 
-MIN_ELEMENTS = 4  #: fewer elements cannot carry the third bending mode (error > 4 %)
+#: fewest elements: N = 4 has the first three frequencies 1.4 / 4.2 / 4.5 % off (seed 002's plate), fewer
+#: leave the third mode to the last two or three links
+MIN_ELEMENTS = 4
 
 
 def _fmt(v) -> str:
@@ -223,8 +234,8 @@ def elastic_beam(name: str, length: float, thickness: float, *, E: float, rho: f
                          f"[s], got {beta!r}; give 0 for no damping")
     if not (isinstance(n_elements, int) and not isinstance(n_elements, bool) and n_elements >= MIN_ELEMENTS):
         raise InputError(f"elastic beam '{name}': n_elements must be a whole number >= {MIN_ELEMENTS}, got "
-                         f"{n_elements!r}; fewer cannot carry the third bending mode (16 gives the first three "
-                         f"within 0.3 %)")
+                         f"{n_elements!r}; fewer cannot resolve the third bending mode (8 give the first three "
+                         f"frequencies within 1 %, 16 within 0.3 %)")
     base = tuple(float(c) for c in base)
     if len(base) != 3 or not all(math.isfinite(c) for c in base):
         raise InputError(f"elastic beam '{name}': base must be 3 finite coordinates (x, y, z) [m], got {base!r}")

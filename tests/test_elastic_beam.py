@@ -128,7 +128,8 @@ def test_chain_statics_are_exactly_the_midpoint_rule_of_the_beam_integrals():
     the shear term exact (bodies/elastic.py docstring)."""
     for n in (4, 16):
         b = elastic_beam("p", **SEED, n_elements=n)
-        for load, eb, tim, c in (("tip", b.tip_deflection_point(1.0, "euler-bernoulli"), b.tip_deflection_point(1.0), 4),
+        for load, eb, tim, c in (("tip", b.tip_deflection_point(1.0, "euler-bernoulli"),
+                                  b.tip_deflection_point(1.0), 4),
                                  ("uniform", b.tip_deflection_uniform(1.0, "euler-bernoulli"),
                                   b.tip_deflection_uniform(1.0), 2)):
             assert static_tip(b, load) == pytest.approx(tim - eb / (c * n * n), rel=1e-8)
