@@ -18,6 +18,8 @@ returns are the exact time derivatives of the positions it returns:
 - :class:`Ramped`: any signal multiplied by a half-cosine window rising over ``t_ramp``
   (and optionally falling to zero at ``t_stop``), so that a motion sets off and stops without
   a jump in velocity or acceleration;
+- :class:`Combined`: several translations at once, each with its own direction and
+  signal (horizontal and vertical ground motion);
 - :func:`read_at2`: a PEER NGA ``.AT2`` accelerogram (acceleration in g) as a
   :class:`Tabulated` acceleration record in m/s^2, with :func:`baseline_correct`.
 
@@ -411,22 +413,84 @@ class Rotation:
         return replace(self, signal=Ramped(self.signal, t_ramp, t_start, t_stop))
 
 
-# ---------------------------------------------------------------------------------------- records
-def read_at2(path, baseline_degree: int | None = 6) -> Tabulated:
-    """A PEER NGA ``.AT2`` accelerogram as a :class:`Tabulated` acceleration record [m/s^2].
+@dataclass(frozen=True)
+class Combined:
+    """Rigid translation by several independent components at once (a ground motion of
+    horizontal and vertical records, 003_7c74773681ee080c.txt §4.2: "El Centro NS +
+    vertical"): ``pos = ref + sum_k s_k(t) e_k``, ``vel = sum_k s_k'(t) e_k``, each
+    component a :class:`Translation` with its own direction ``e_k`` and signal ``s_k`` (in
+    m). The directions need not be orthogonal; all have the same number of components (2:
+    (x, z), or 3). A callable for :meth:`fluid.solver.Fluid.prescribe_motion`."""
 
-    Format: four header lines (title; event, date, station, component; "ACCELERATION TIME
-    SERIES IN UNITS OF G"; a line with ``NPTS= n, DT= dt SEC`` (also the older "n dt"
-    form)), then the n accelerations in g, any number per line. Sample k lies at
-    ``t = k dt`` [s], k = 0..n-1, and the ground starts at rest at t = 0.
-    ``baseline_degree`` [-]: the degree of :func:`baseline_correct` (None: the raw
-    record)."""
-    p = Path(path)
-    if not p.is_file():
-        raise InputError(f"read_at2: no file {p}")
-    lines = p.read_text(errors="replace").splitlines()
+    components: tuple
+
+    def __post_init__(self):
+        comps = tuple(self.components) if isinstance(self.components, (tuple, list)) else ()
+        if not comps or not all(isinstance(c, Translation) for c in comps):
+            raise InputError(f"Combined: components must be a non-empty list of Translation, got {self.components!r}")
+        dims = {len(c.direction) for c in comps}
+        if len(dims) != 1:
+            raise InputError(f"Combined: the components' directions have {sorted(dims)} coordinates; give all of "
+                             "them as (x, z) in 2-D or all as (x, y, z) in 3-D")
+        object.__setattr__(self, "components", comps)
+
+    @property
+    def dim(self) -> int:
+        return len(self.components[0].direction)
+
+    def state(self, t: float):
+        """Displacement [m], velocity [m/s] and acceleration [m/s^2] of every point at time
+        ``t`` [s], each (dim,)."""
+        out = np.zeros((3, self.dim))
+        for c in self.components:
+            out += np.outer(c.signal.state(t), c.direction)
+        return out[0], out[1], out[2]
+
+    def sample(self, t):
+        """``(displacement, velocity, acceleration)`` at the times ``t`` [s], each
+        (len(t), dim) (vectorised where the signals are :class:`Tabulated`)."""
+        t = np.atleast_1d(np.asarray(t, np.float64))
+        out = np.zeros((3, t.size, self.dim))
+        for c in self.components:
+            sig = c.signal
+            s = (np.asarray(sig.sample(t)) if isinstance(sig, Tabulated)
+                 else np.array([sig.state(float(x)) for x in t]).T)
+            out += s[:, :, None] * np.asarray(c.direction)[None, None, :]
+        return out[0], out[1], out[2]
+
+    def __call__(self, t: float, ref):
+        ref = _check_ref("Combined", ref, self.dim)
+        d, v, _ = self.state(t)
+        return ref + d, np.broadcast_to(v, ref.shape).copy()
+
+    def acceleration(self, t: float) -> np.ndarray:
+        """Acceleration of every point [m/s^2] (dim,)."""
+        return self.state(t)[2]
+
+    def ramped(self, t_ramp: float, t_start: float = 0.0, t_stop: float | None = None) -> "Combined":
+        """Every component faded in (and out) by :class:`Ramped` (times in s)."""
+        return Combined(tuple(c.ramped(t_ramp, t_start, t_stop) for c in self.components))
+
+
+# ---------------------------------------------------------------------------------------- records
+def _at2_header(p: Path, lines: list) -> tuple[int, float]:
+    """(NPTS, DT [s]) of a PEER ``.AT2`` file from its 3rd and 4th lines; InputError
+    naming the file, the line and the fix when they are not an accelerogram's."""
     if len(lines) < 5:
-        raise InputError(f"read_at2: {p} has {len(lines)} lines; an AT2 file has 4 header lines and data")
+        raise InputError(f"read_at2: {p} has {len(lines)} lines; a PEER .AT2 file has 4 header lines, then the "
+                         "accelerations")
+    kind = lines[2].upper()
+    if "ACCEL" not in kind:
+        other = next((w for w in ("VELOC", "DISPL") if w in kind), None)
+        what = {"VELOC": "a velocity record (.VT2)", "DISPL": "a displacement record (.DT2)"}.get(other,
+                                                                                                  "not an .AT2 file")
+        raise InputError(f"read_at2: line 3 of {p} is {lines[2].strip()!r}: {what}; an accelerogram's 3rd line reads "
+                         "'ACCELERATION TIME SERIES IN UNITS OF G'. Give the .AT2 file of the record")
+    units = kind.split("UNITS OF", 1)[1].split() if "UNITS OF" in kind else ["G"]
+    if not units or units[0].rstrip(".,") != "G":
+        raise InputError(f"read_at2: line 3 of {p} gives the accelerations in {' '.join(units) or '?'}, not in g: "
+                         "the reader takes PEER records in units of g; convert the values to g and say "
+                         "'IN UNITS OF G'")
     head = lines[3].upper().replace(",", " ").replace("=", " = ")
     npts = dt = None
     tok = head.split()
@@ -435,23 +499,85 @@ def read_at2(path, baseline_degree: int | None = 6) -> Tabulated:
             npts = tok[i + 2]
         if w == "DT" and i + 2 < len(tok):
             dt = tok[i + 2]
-    if npts is None or dt is None:  # old form: "n dt" as the first two numbers
-        nums = [w for w in tok if w.replace(".", "", 1).replace("E-", "", 1).replace("E+", "", 1).isdigit()]
-        if len(nums) >= 2:
-            npts, dt = nums[0], nums[1]
+    if (npts is None or dt is None) and len(tok) >= 2 and _is_float(tok[0]) and _is_float(tok[1]):
+        npts, dt = tok[0], tok[1]  # the older form: the line starts with "n dt" ("4000 .0100 NPTS, DT")
     try:
-        n, dt = int(float(npts)), float(dt)
+        n, dt = int(npts), float(dt)
     except (TypeError, ValueError):
         raise InputError(f"read_at2: line 4 of {p} should give NPTS and DT, e.g. 'NPTS=  4000, DT= .0050 SEC'; "
                          f"got {lines[3]!r}") from None
     if n < 2 or not (dt > 0 and math.isfinite(dt)):
-        raise InputError(f"read_at2: {p} gives NPTS={n}, DT={dt} s; need NPTS >= 2 and DT > 0")
+        raise InputError(f"read_at2: {p} gives NPTS={n}, DT={dt} s; need NPTS >= 2 and DT > 0 (line 4: the "
+                         "number of samples and the time between them)")
+    return n, dt
+
+
+def _at2_values(p: Path, lines: list, n: int) -> np.ndarray:
+    """The accelerations [g] of the data lines (5 on), checked: numbers, finite, no line
+    short of the others before the last (a gap), and exactly ``n`` of them."""
+    rows = []  # (line number, values)
+    for k, line in enumerate(lines[4:], start=5):
+        parts = line.replace(",", " ").split()
+        try:
+            rows.append((k, [float(w) for w in parts]))
+        except ValueError:
+            bad = next(w for w in parts if not _is_float(w))
+            raise InputError(f"read_at2: line {k} of {p} holds {bad!r}, not a number; the data lines of an .AT2 "
+                             "file hold accelerations in g only") from None
+    while rows and not rows[-1][1]:  # blank lines at the end
+        rows.pop()
+    width = max((len(v) for _, v in rows), default=0)
+    for k, v in rows[:-1]:
+        if len(v) < width:
+            raise InputError(f"read_at2: line {k} of {p} holds {len(v)} value(s) where the other data lines hold "
+                             f"{width}: a gap in the record (the samples after it would be shifted in time); "
+                             "restore the missing values or take the record again from its source")
+    acc = np.array([x for _, v in rows for x in v], np.float64)
+    if acc.size != n:
+        raise InputError(f"read_at2: {p} declares NPTS={n} but holds {acc.size} values; the record is cut short, "
+                         "has a gap or its NPTS is wrong: give the whole record, or the NPTS of the values it holds"
+                         if acc.size < n else
+                         f"read_at2: {p} declares NPTS={n} but holds {acc.size} values; correct NPTS (line 4) to the "
+                         "number of values, or remove what follows the record")
+    bad = np.flatnonzero(~np.isfinite(acc))
+    if bad.size:
+        i = int(bad[0])
+        raise InputError(f"read_at2: {p} holds a non-finite value ({acc[i]}) at sample {i} (t = {i} DT); "
+                         f"{bad.size} of its {n} values are not finite: repair the record")
+    return acc
+
+
+def _is_float(w: str) -> bool:
     try:
-        acc = np.array(" ".join(lines[4:]).replace(",", " ").split(), np.float64)
-    except ValueError as exc:
-        raise InputError(f"read_at2: a data line of {p} is not a list of numbers ({exc})") from None
-    if acc.size < n:
-        raise InputError(f"read_at2: {p} declares NPTS={n} but holds {acc.size} values")
-    acc = acc[:n] * G_STANDARD
+        float(w)
+        return True
+    except ValueError:
+        return False
+
+
+def read_at2(path, baseline_degree: int | None = 6) -> Tabulated:
+    """A PEER NGA ``.AT2`` accelerogram as a :class:`Tabulated` acceleration record [m/s^2].
+
+    Format (PEER NGA strong-motion database files): four header lines (title; event, date,
+    station, component; "ACCELERATION TIME SERIES IN UNITS OF G"; a line with ``NPTS= n,
+    DT= dt SEC`` (also the older "n dt" form)), then the n accelerations in g, the same
+    number on every line but the last. Sample k lies at ``t = k dt`` [s], k = 0..n-1, and
+    the ground starts at rest at t = 0; the displacement and velocity are the exact
+    integrals of the piecewise-linear acceleration (:class:`Tabulated`).
+    ``baseline_degree`` [-]: the degree of :func:`baseline_correct` (None: the raw
+    record). :class:`InputError` naming the file, the line and the fix for a file that is
+    not an accelerogram in g (another header, a velocity or displacement record, other
+    units), a bad NPTS or DT, a value that is not a number or not finite, a data line short
+    of values before the last (a gap), or a count of values other than NPTS."""
+    p = Path(path)
+    if not p.is_file():
+        raise InputError(f"read_at2: no file {p}")
+    try:
+        lines = p.read_text(encoding="ascii").splitlines()
+    except (UnicodeDecodeError, ValueError):
+        raise InputError(f"read_at2: {p} is not a text file (a PEER .AT2 record is plain ASCII text); give the "
+                         ".AT2 file of the record") from None
+    n, dt = _at2_header(p, lines)
+    acc = _at2_values(p, lines, n) * G_STANDARD
     rec = Tabulated(tuple((dt * np.arange(n)).tolist()), tuple(acc.tolist()), "acceleration")
     return rec if baseline_degree is None else baseline_correct(rec, baseline_degree)

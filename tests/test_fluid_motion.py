@@ -114,7 +114,8 @@ def test_read_at2_synthetic_file(tmp_path):
     assert cor.state(t[-1])[:2] == pytest.approx((0.0, 0.0), abs=1e-8)
     np.testing.assert_allclose(cor.sample(t)[0], d(t), atol=0.01 * np.abs(d(t)).max())
     # the old header form "NPTS DT" works too
-    path.write_text("a\nb\nc\n" + f"{g.size} {dt:.4f}\n" + body)
+    path.write_text("PEER NGA STRONG MOTION DATABASE RECORD\nSYNTHETIC 5/19/40, STATION, 180\n"
+                    "ACCELERATION TIME HISTORY IN UNITS OF G\n" + f" {g.size}    {dt:.4f}    NPTS, DT\n" + body)
     assert len(read_at2(path, baseline_degree=None).times) == g.size
 
 
@@ -122,10 +123,11 @@ def test_read_at2_refuses_bad_files(tmp_path):
     p = tmp_path / "bad.AT2"
     with pytest.raises(InputError, match="no file"):
         read_at2(p)
-    p.write_text("a\nb\nc\nNPTS= 10, DT= 0.01 SEC\n0.1 0.2 0.3\n")
+    head = "PEER\nSYNTHETIC\nACCELERATION TIME SERIES IN UNITS OF G\n"
+    p.write_text(head + "NPTS= 10, DT= 0.01 SEC\n0.1 0.2 0.3\n")
     with pytest.raises(InputError, match="declares NPTS=10 but holds 3"):
         read_at2(p)
-    p.write_text("a\nb\nc\nnothing here\n0.1 0.2 0.3\n")
+    p.write_text(head + "nothing here\n0.1 0.2 0.3\n")
     with pytest.raises(InputError, match="NPTS and DT"):
         read_at2(p)
 

@@ -559,6 +559,19 @@ CASES = [
          "10.0 s is longer than the run (5.0 s)", "World.sample_every"),
     case("the 2-D default direction in 3-D", "tank3d", ("base_motion.direction", OUT), "base_motion.direction",
          "a 3-D scene needs the direction as (x, y, z), e.g. [1, 0, 0]", "Scene.base_motion.direction"),
+    case("a ground motion without records", "tank2d", ("base_motion", {"kind": "ground_motion", "components": []}),
+         "base_motion.components", "is empty; give at least one record", "GroundMotion.components"),
+    case("more ground-motion records than axes", "tank2d",
+         ("base_motion", {"kind": "ground_motion", "hold": True,
+                          "components": [{"file": "quake.AT2", "direction": d} for d in ([1.0, 0.0], [0.0, 1.0],
+                                                                                         [1.0, 1.0])]}),
+         "base_motion.components", "has 3 records; a 2-D scene moves along at most 2 axes (x, z): give one record "
+         "per direction", "Scene.base_motion.components"),
+    case("a ground-motion direction of the wrong size", "tank2d",
+         ("base_motion", {"kind": "ground_motion", "hold": True,
+                          "components": [{"file": "quake.AT2", "direction": [0.0, 0.0, 1.0]}]}),
+         "base_motion.components[0].direction", "[0.0, 0.0, 1.0] has 3 coordinates; a 2-D scene gives a direction "
+         "as (x, z)", "Scene.base_motion.components[0].direction"),
     case("a missing file", "tank3d",
          ("base_motion", {"kind": "table", "file": "nowhere.csv", "direction": [1.0, 0.0, 0.0]}), "base_motion.file",
          "no file 'nowhere.csv' (a relative path is read from the scene file's folder)", "Scene.base_motion.file"),
@@ -610,8 +623,8 @@ FILE_CASES = [
          "'boat' is not one of the bodies coupled from the MJCF file: ['float']", "Scene.probes.motion[1]"),
     # -- an accelerogram
     case("an .AT2 record shorter than its NPTS", "tank2d", ("base_motion", {"kind": "earthquake", "file": "short.AT2"}),
-         "base_motion.file", "read_at2: short.AT2 declares NPTS=10 but holds 5 values. A PEER NGA .AT2 record has "
-         "4 header lines", "Scene.base_motion.file",
+         "base_motion.file", "read_at2: short.AT2 declares NPTS=10 but holds 5 values; the record is cut short, has "
+         "a gap or its NPTS is wrong", "Scene.base_motion.file",
          files={"short.AT2": AT2_HEAD + "NPTS=   10, DT=   .0100 SEC\n0.0 0.01 0.02 0.01 0.0\n"}),
     case("an .AT2 header without NPTS and DT", "tank2d", ("base_motion", {"kind": "earthquake", "file": "bare.AT2"}),
          "base_motion.file", "read_at2: line 4 of bare.AT2 should give NPTS and DT, e.g. 'NPTS=  4000, DT= .0050 "
@@ -621,6 +634,32 @@ FILE_CASES = [
          ("base_motion", {"kind": "earthquake", "file": "quake.AT2", "baseline_degree": 2}),
          "base_motion.baseline_degree", "2 is out of range; give a whole number from 3 to 12 (degree",
          "Earthquake.baseline_degree"),
+    case("an .AT2 record with a gap", "tank2d", ("base_motion", {"kind": "earthquake", "file": "gap.AT2"}),
+         "base_motion.file", "read_at2: line 6 of gap.AT2 holds 2 value(s) where the other data lines hold 5: a gap "
+         "in the record", "Scene.base_motion.file",
+         files={"gap.AT2": AT2_HEAD + "NPTS=   10, DT=   .0100 SEC\n0.0 0.01 0.02 0.01 0.0\n-0.01 -0.02\n0.0 0.0 0.0\n"}),
+    case("an .AT2 record with a non-finite value", "tank2d", ("base_motion", {"kind": "earthquake", "file": "nan.AT2"}),
+         "base_motion.file", "read_at2: nan.AT2 holds a non-finite value (nan) at sample 7 (t = 7 DT)",
+         "Scene.base_motion.file",
+         files={"nan.AT2": AT2_HEAD + "NPTS=   10, DT=   .0100 SEC\n0.0 0.01 0.02 0.01 0.0\n-0.01 -0.02 NaN 0.0 0.0\n"}),
+    case("a velocity record given as an accelerogram", "tank2d",
+         ("base_motion", {"kind": "earthquake", "file": "quake.VT2"}), "base_motion.file",
+         "read_at2: line 3 of quake.VT2 is 'VELOCITY TIME SERIES IN UNITS OF CM/SEC': a velocity record (.VT2)",
+         "Scene.base_motion.file",
+         files={"quake.VT2": "PEER RECORD\nSYNTHETIC, 2024, STATION, 000\nVELOCITY TIME SERIES IN UNITS OF CM/SEC\n"
+                             "NPTS=   10, DT=   .0100 SEC\n0.0 0.01 0.02 0.01 0.0\n-0.01 -0.02 -0.01 0.0 0.0\n"}),
+    case("a ground-motion record shorter than the run", "tank2d",
+         ("base_motion", {"kind": "ground_motion", "components": [{"file": "quake.AT2", "direction": [1.0, 0.0]}]}),
+         "base_motion.components[0].file", "the record ends at 0.09 s, before world.duration = 2 s; shorten "
+         "world.duration to at most 0.09 s, or set base_motion.hold = true", "Scene.base_motion.components[0].file"),
+    case("a ground-motion record too coarse for the first sloshing mode", "tank2d",
+         ("base_motion", {"kind": "ground_motion", "components": [{"file": "quake.AT2", "direction": [1.0, 0.0]},
+                                                                  {"file": "coarse.AT2", "direction": [0.0, 1.0]}],
+                          "hold": True}),
+         "base_motion.components[1].file", "sampled every 0.5 s: too coarse for the water's first sloshing period "
+         "of 1.32 s (linear theory), which needs at least 10 samples (DT <= 0.132 s)",
+         "Scene.base_motion.components[1].file",
+         files={"coarse.AT2": AT2_HEAD + "NPTS=   10, DT=   .5000 SEC\n0.0 0.01 0.02 0.01 0.0\n-0.01 -0.02 -0.01 0.0 0.0\n"}),
     # -- a table of motion
     case("a table that is not numbers", "tank2d", ("base_motion.file", "labelled.txt"), "base_motion.file",
          "line 1 of 'labelled.txt' is not a row of numbers: 'time displacement'; give rows of numbers separated by "

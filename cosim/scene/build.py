@@ -18,7 +18,7 @@ from pathlib import Path
 import numpy as np
 
 from cosim.scene.spec import (MJCF, SPH, Analytic, Box, Cylinder, CylinderTank, Earthquake, Flap, Flume,
-                              InclinedTank, Piston, PolygonTank, Roll, Shake, Sphere, TableMotion, Tank)
+                              GroundMotion, InclinedTank, Piston, PolygonTank, Roll, Shake, Sphere, TableMotion, Tank)
 
 PADDLE, WALLS = 1, 0  # the flume's paddle group and every tank's wall group
 
@@ -76,7 +76,11 @@ def _wavemaker(scene):
 
 
 def _base_motion(scene):
-    from fluid.motion import Harmonic, Ramped, Rotation, Tabulated, Translation, read_at2
+    from fluid.motion import Combined, Harmonic, Ramped, Rotation, Tabulated, Translation, read_at2
+
+    def _scaled(rec, k):  # the baseline correction is linear in the record: scale it with the values
+        return rec if k == 1.0 else Tabulated(rec.times, tuple(np.asarray(rec.values) * k), rec.quantity,
+                                              tuple(np.asarray(rec.baseline) * k))
 
     b = scene.base_motion
     if isinstance(b, Shake):
@@ -93,11 +97,11 @@ def _base_motion(scene):
         rows = np.loadtxt(b.file, comments="#", delimiter=None, ndmin=2)
         sig = Tabulated(tuple(rows[:, 0]), tuple(rows[:, b.column] * b.scale), b.quantity)
         return Translation(b.direction, sig)
+    if isinstance(b, GroundMotion):
+        return Combined(tuple(Translation(c.direction, _scaled(read_at2(c.file, b.baseline_degree), b.scale * c.scale))
+                              for c in b.components))
     assert isinstance(b, Earthquake)
-    rec = read_at2(b.file, b.baseline_degree)
-    if b.scale != 1.0:
-        rec = Tabulated(rec.times, tuple(np.asarray(rec.values) * b.scale), rec.quantity)
-    return Translation(b.direction, rec)
+    return Translation(b.direction, _scaled(read_at2(b.file, b.baseline_degree), b.scale))
 
 
 def domain_points(scene, cfg, back: float = 0.0):

@@ -10,8 +10,9 @@ the domain (pressure patches on a wall's face, facing the water).
 
 The files a scene names are read here too, as the builder will read them: an MJCF model
 is parsed and compiled by MuJoCo (imported only for a scene that has one), an ``.AT2``
-accelerogram by :func:`fluid.motion.read_at2`, a table of motion (base motion, paddle
-record) as a table of numbers whose times increase and whose motion starts at rest.
+accelerogram by :func:`fluid.motion.read_at2` (a ground motion's records must also last
+the scene and sample the water's first sloshing period at least 10 times), a table of
+motion (base motion, paddle record) as a table of numbers whose times increase and whose motion starts at rest.
 """
 
 from __future__ import annotations
@@ -20,8 +21,8 @@ import math
 
 from cosim.scene.fields import SceneError
 from cosim.scene.spec import (MJCF, SPH, Analytic, Box, CylinderTank, Cylinder, Earthquake, Flap, Flume,
-                              InclinedTank, NoFluid, PaddleRecord, Piston, PolygonTank, Roll, Sphere, TableMotion,
-                              Tank)
+                              GroundMotion, InclinedTank, NoFluid, PaddleRecord, Piston, PolygonTank, Roll, Sphere,
+                              TableMotion, Tank)
 
 
 def body_names(scene) -> list[str]:
@@ -163,6 +164,8 @@ def _check_excitations(s, dim):
                 raise SceneError("base_motion.axis", "a 3-D roll needs its axis (3 components)")
             if dim == 2 and b.axis is not None:
                 raise SceneError("base_motion.axis", "a 2-D roll is about +y; leave axis out")
+        elif isinstance(b, GroundMotion):
+            _check_ground_motion(s, dim)
         else:
             if dim == 3 and b.direction == (1.0, 0.0):
                 raise SceneError("base_motion.direction", "a 3-D scene needs the direction as (x, y, z), e.g. "
@@ -171,7 +174,7 @@ def _check_excitations(s, dim):
         if hasattr(b, "file"):
             _file(b.file, "base_motion.file")
         if isinstance(b, Earthquake):
-            _check_at2(b)
+            _check_at2(b.file, b.baseline_degree, "base_motion.file")
         if isinstance(b, TableMotion):
             _check_table_motion(s)
 
@@ -506,17 +509,69 @@ def _touch(a, b, c, e) -> bool:
 
 
 # ------------------------------------------------------------------------ files of motion
-def _check_at2(b) -> None:
-    """The accelerogram reads as the builder will read it (:func:`fluid.motion.read_at2`)."""
+def _check_at2(file, degree, key):
+    """The accelerogram reads as the builder will read it (:func:`fluid.motion.read_at2`);
+    returns it."""
     from cosim.errors import InputError
     from fluid.motion import read_at2
 
     try:
-        read_at2(b.file, b.baseline_degree)
+        return read_at2(file, degree)
     except (InputError, OSError, ValueError) as e:
-        raise SceneError("base_motion.file", f"{e}. A PEER NGA .AT2 record has 4 header lines, the 4th giving NPTS "
+        raise SceneError(key, f"{e}. A PEER NGA .AT2 record has 4 header lines, the 4th giving NPTS "
                          f"and DT (e.g. 'NPTS=  4000, DT= .0050 SEC'), then NPTS accelerations in g; fix the file "
                          f"or give another") from None
+
+
+def first_sloshing_period(s) -> float | None:
+    """The water's first (longest) sloshing period [s] by linear theory, ``omega^2 = g k
+    tanh(k h)`` with ``k = pi / L`` over the free surface's length ``L`` (the longer side
+    of a 3-D tank; a polygon's or an inclined tank's width at the still level) or ``k =
+    1.8412 / R`` in a cylinder (e.g. Ibrahim 2005, Liquid Sloshing Dynamics, §1.2-1.3);
+    None without a domain."""
+    d, g = s.domain, s.world.gravity
+    if d is None or isinstance(d, Flume) or g <= 0:
+        return None
+    if isinstance(d, CylinderTank):
+        k, h = 1.8412 / (0.5 * d.diameter), d.depth
+    elif isinstance(d, PolygonTank):
+        xs, zs = [v[0] for v in d.vertices], [v[1] for v in d.vertices]
+        k, h = math.pi / (max(xs) - min(xs)), d.fill_level - min(zs)
+    elif isinstance(d, InclinedTank):
+        k, h = math.pi / (d.length + d.depth * math.tan(math.radians(d.angle))), d.depth
+    else:
+        h = d.depth if d.depth is not None else max(b.hi[-1] for b in d.water)
+        k = math.pi / max(d.length, d.width or 0.0)
+    return 2 * math.pi / math.sqrt(g * k * math.tanh(k * h))
+
+
+def _check_ground_motion(s, dim) -> None:
+    """Each record of a :class:`GroundMotion`: its direction, its file (read as the builder
+    reads it), a record that lasts the scene (or ``hold``), and a sampling step that
+    resolves the water's first sloshing period (:func:`first_sloshing_period`) at least 10
+    times: a coarser record cannot carry the motion that excites it. (A record sampled
+    more finely than the fluid steps is fine: the walls are placed from the exactly
+    integrated record at every stage of every step.)"""
+    b = s.base_motion
+    if len(b.components) > dim:
+        raise SceneError("base_motion.components", f"has {len(b.components)} records; a {dim}-D scene moves along "
+                         f"at most {dim} axes {'(x, z)' if dim == 2 else '(x, y, z)'}: give one record per direction")
+    t1 = first_sloshing_period(s)
+    for i, c in enumerate(b.components):
+        key = f"base_motion.components[{i}]"
+        _dim_vec(c.direction, dim, f"{key}.direction", "direction")
+        _file(c.file, f"{key}.file")
+        rec = _check_at2(c.file, b.baseline_degree, f"{key}.file")
+        dt, end = rec.times[1] - rec.times[0], rec.times[-1]
+        if end < s.world.duration and not b.hold:
+            raise SceneError(f"{key}.file", f"the record ends at {end:.6g} s, before world.duration = "
+                             f"{s.world.duration:.6g} s; shorten world.duration to at most {end:.6g} s, or set "
+                             "base_motion.hold = true to keep the tank at rest after the record")
+        if t1 is not None and dt > t1 / 10:
+            raise SceneError(f"{key}.file", f"sampled every {dt:.4g} s: too coarse for the water's first sloshing "
+                             f"period of {t1:.3g} s (linear theory), which needs at least 10 samples (DT <= "
+                             f"{t1 / 10:.3g} s); the record cannot carry the motion that excites it: give a record "
+                             "sampled more finely")
 
 
 def _rows_of_numbers(path, key, strict: bool) -> list[list[float]]:

@@ -14,7 +14,7 @@ A scene is made of
   (3-D), :class:`PolygonTank` (2-D); wall layers follow from the kernel;
 - excitations: ``waves`` (:class:`Piston`, :class:`Flap`, :class:`PaddleRecord`: a flume's
   wavemaker) or ``base_motion`` of a tank (:class:`Shake`, :class:`Roll`,
-  :class:`TableMotion`, :class:`Earthquake`);
+  :class:`TableMotion`, :class:`Earthquake`, :class:`GroundMotion`);
 - ``bodies`` (:class:`Box`, :class:`Cylinder`, :class:`Sphere`, :class:`MJCF`), placed at a
   given pose or ``place="floating"`` (at the hydrostatic equilibrium, computed);
 - :class:`Moorings`: :class:`Line` records and the one field ``model`` that picks the
@@ -373,7 +373,42 @@ class Earthquake(Spec):
                                     "end conditions, 6 is usual", lo=3, hi=12)
 
 
-BASE_MOTIONS = (Shake, Roll, TableMotion, Earthquake)
+@dataclass(frozen=True)
+class Record(Spec):
+    """One component of a :class:`GroundMotion`: a PEER NGA ``.AT2`` accelerogram (in g)
+    applied along ``direction`` ((x, z) in 2-D, (x, y, z) in 3-D), times ``scale``."""
+
+    file: str = required(text(None, "the .AT2 accelerogram"))
+    direction: tuple = required(vec(None, "direction of this component", nonzero=True))
+    scale: float = num(1.0, "factor on this record")
+
+
+@dataclass(frozen=True)
+class GroundMotion(Spec):
+    """Base motion from several earthquake records at once, each along its own direction
+    (horizontal and vertical: seed 003 §4.2's "El Centro NS + vertical"; three in 3-D):
+    the tank translates by the sum of the components' displacements, each read by
+    ``fluid.motion.read_at2``, baseline-corrected and integrated exactly, all starting at
+    t = 0. The records' times must cover ``world.duration`` unless ``hold`` lets the tank
+    rest after them; each must sample the water's first sloshing period at least 10
+    times. ``cosim/refdata/earthquake_el_centro_1940`` ships El Centro 1940 (NS, EW, UP)."""
+
+    TAG = ("kind", "ground_motion")
+    kind: str = tag("ground_motion")
+    components: tuple = parts("the records, one per direction, at most one per axis of the scene", (Record,))
+    scale: float = num(1.0, "factor on every record")
+    baseline_degree: int = whole(6, "degree of the baseline correction polynomial: 3 is the least that meets both "
+                                    "end conditions, 6 is usual", lo=3, hi=12)
+    hold: bool = flag(False, "true: each record's motion stops where its record ends, the tank at rest there "
+                             "(false: a scene longer than a record is refused)")
+
+    def validate(self):
+        if not self.components:
+            raise SceneError("components", "is empty; give at least one record, e.g. [{ file = \"ELC180.AT2\", "
+                             "direction = [1.0, 0.0] }]")
+
+
+BASE_MOTIONS = (Shake, Roll, TableMotion, Earthquake, GroundMotion)
 
 
 # ------------------------------------------------------------------------ bodies
@@ -611,5 +646,5 @@ class Scene(Spec):
 
 __all__ = ["World", "NoFluid", "Analytic", "SPH", "Block", "Tank", "Beach", "Flume", "InclinedTank",
            "CylinderTank", "PolygonTank", "Piston", "Flap", "PaddleRecord", "Shake", "Roll", "TableMotion",
-           "Earthquake", "Box", "Cylinder", "Sphere", "MJCF", "Line", "Moorings", "Patch", "Probes", "Coupling",
+           "Earthquake", "Record", "GroundMotion", "Box", "Cylinder", "Sphere", "MJCF", "Line", "Moorings", "Patch", "Probes", "Coupling",
            "Scene", "SceneError", "MOORING_MODELS", "SETUPS"]
