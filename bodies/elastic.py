@@ -361,3 +361,79 @@ def modal_frequencies(model, data) -> np.ndarray:
     K, M = linearise(model, data)
     w2 = eigh(K, M, eigvals_only=True)
     return np.sqrt(np.clip(w2, 0.0, None)) / (2.0 * math.pi)
+
+
+class ElasticBody:
+    """A beam's boundary particles and loads inside a :class:`MujocoBodies` participant
+    whose coupled bodies include the beam's links (``bodies=[..., *beam.link_names]``).
+
+    Particles (:meth:`BeamModel.boundary_particles`) are stored in their link's frame
+    and placed every step from the link's pose, ``x = origin + R p``, ``u = V + Omega x
+    (x - com)`` (:func:`bodies.sampling.place`, seed 004 Eq. 13), so they never drift;
+    the forces on them go back to the links that carry them as one wrench per link
+    (:func:`link_wrenches`), which is the same generalised force as applying each force
+    at its particle (MuJoCo applies ``xfrc_applied`` at the centre of mass by
+    ``mj_applyFT``, linear in the wrench). The welded foot link's share goes into the
+    clamp."""
+
+    def __init__(self, beam: BeamModel, bodies, dx: float, layers: int, dim: int = 3):
+        names = list(bodies.body_names)
+        missing = [n for n in beam.link_names if n not in names]
+        if missing:
+            raise InputError(f"elastic beam '{beam.name}': the MuJoCo participant does not couple the links "
+                             f"{missing[:3]}{'...' if len(missing) > 3 else ''}; build it with "
+                             f"bodies=[..., *beam.link_names]")
+        self.beam, self.bodies = beam, bodies
+        self.link_index = np.array([names.index(n) for n in beam.link_names])  #: coupled-body index per link
+        self.points_b, self.link = beam.boundary_particles(dx, layers, dim)  #: link frame [m]; link number
+        self.owner = self.link_index[self.link]  #: coupled-body index of each particle
+        self._sites = {s: bodies.site(f"{beam.name}_{s}")[0] for s in ("tip", "corner")}
+        self._site0 = {s: bodies.site_positions([i])[0].copy() for s, i in self._sites.items()}
+
+    def place(self):
+        """World positions [m] and velocities [m/s] of the particles, ``(n, 3)`` each."""
+        from bodies.sampling import place
+
+        return place(self.points_b, self.owner, self.bodies.kinematics())
+
+    def wrenches(self, forces_w, points_w=None):
+        """The force [N] and torque about the centre of mass [N m] of every coupled body,
+        ``(n_bodies, 3)`` each, from the forces on this beam's particles ``(n, 3)``
+        (world frame; at ``points_w``, by default where :meth:`place` puts them now).
+        Zero rows for the bodies that are not this beam's: add the arrays of several
+        bodies before :meth:`MujocoBodies.set_wrenches`."""
+        kin = self.bodies.kinematics()
+        if points_w is None:
+            points_w = self.place()[0]
+        f = np.asarray(forces_w, float)
+        if f.shape != self.points_b.shape:
+            raise InputError(f"elastic beam '{self.beam.name}': give one force per particle, shape "
+                             f"{self.points_b.shape}, got {f.shape}")
+        return link_wrenches(points_w, f, self.owner, kin.com, self.bodies.n_bodies)
+
+    def displacement(self, site: str = "corner") -> np.ndarray:
+        """Displacement [m] ``(3,)`` from the start of the ``"tip"`` (top centre) or
+        ``"corner"`` (top, -x face: seed 002 Figure 6's upper left corner) site."""
+        i = self._sites[site]
+        return self.bodies.site_positions([i])[0] - self._site0[site]
+
+    def check(self) -> None:
+        """Raise :class:`InstabilityError` naming the first element whose link left the
+        finite numbers or turned more than 90 degrees against its neighbour (a chain
+        that went unstable), with a remedy."""
+        from cosim.errors import InstabilityError
+
+        kin = self.bodies.kinematics()
+        R = kin.rotation[self.link_index]
+        x = kin.origin[self.link_index]
+        bad = ~np.isfinite(x).all(axis=1) | ~np.isfinite(R).all(axis=(1, 2))
+        axis = R[:, :, 2]  # each link's own z, along the beam
+        kink = np.einsum("ij,ij->i", axis[1:], axis[:-1]) < 0.0
+        bad[1:] |= kink
+        if bad.any():
+            k = int(np.argmax(bad))
+            raise InstabilityError(
+                f"elastic beam '{self.beam.name}': element {k} (body '{self.beam.link_names[k]}') went unstable at "
+                f"t = {self.bodies.data.time:.9g} s (non-finite, or bent more than 90 degrees against its "
+                f"neighbour); use a MuJoCo timestep below {self.beam.stable_dt():.3g} s (the chain's stable RK4 "
+                f"step), add damping (beta), or check the loads")

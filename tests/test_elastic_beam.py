@@ -14,11 +14,11 @@ import numpy as np
 import pytest
 
 from bodies import builders
-from bodies.elastic import (BETA_L, elastic_beam, link_wrenches, linearise, modal_frequencies,
+from bodies.elastic import (BETA_L, ElasticBody, elastic_beam, link_wrenches, linearise, modal_frequencies,
                             timoshenko_frequencies)
 from bodies.mujoco_bodies import MujocoBodies
 from bodies.sampling import place
-from cosim.errors import InputError
+from cosim.errors import InputError, InstabilityError
 
 SEED = dict(length=0.08, thickness=0.012, E=1e6, rho=2500.0)  # seed 002 §3.3, 2-D (W = 1 m)
 SLENDER = dict(length=0.5, thickness=0.005, width=0.02, E=2e9, rho=1200.0)  # L/h = 100
@@ -164,6 +164,45 @@ def test_time_stepped_chain_settles_on_the_static_deflection_through_the_coupler
     assert abs(dx[1]) < 1e-15  # stays in the x-z plane
 
 
+def elastica_tip(alpha):
+    """Tip (x/L, z/L) of the inextensible elastica clamped at s = 0 along z under a tip load
+    of fixed direction x, ``alpha = P L^2 / (E I)``: ``theta'' = -alpha cos(theta)``,
+    ``theta(0) = 0``, ``theta'(1) = 0`` (Bisshopp & Drucker 1945), by shooting."""
+    from scipy.integrate import solve_ivp
+    from scipy.optimize import brentq
+
+    def shoot(k):
+        rhs = lambda s, y: [y[1], -alpha * math.cos(y[0]), math.sin(y[0]), math.cos(y[0])]  # noqa: E731
+        return solve_ivp(rhs, (0.0, 1.0), [0.0, k, 0.0, 0.0], rtol=1e-11, atol=1e-12).y[:, -1]
+
+    y = shoot(brentq(lambda k: shoot(k)[1], 1e-9, alpha, xtol=1e-13))
+    return y[2], y[3]
+
+
+def test_large_deflection_meets_the_elastica():
+    """P L^2 / (E I) = 2: the tip moves half the length sideways and drops 16 % (tip
+    rotation 45 degrees, as in the dam-break case); the load keeps its direction while the
+    tip link turns, applied through link_wrenches every step."""
+    x_ref, z_ref = elastica_tip(2.0)
+    assert (x_ref, z_ref) == pytest.approx((0.49346, 0.83936), abs=1e-5)  # alpha = 1 gives 0.30172, 0.94357
+    b = elastic_beam("s", **SLENDER, n_elements=16, shear=False, beta=0.05)
+    body = MujocoBodies(builders.scene(b.xml, gravity=0.0, timestep=1e-3, integrator="implicitfast"),
+                        bodies=b.link_names)
+    tip = body.site("s_tip")[0]
+    x0 = body.site_positions([tip])[0].copy()
+    P = 2.0 * b.E * b.I / b.length**2
+    t = 0.0
+    for _ in range(500):
+        F, T = link_wrenches(body.site_positions([tip]), [[P, 0.0, 0.0]], [b.n_elements], body.kinematics().com,
+                             len(b.link_names))
+        body.set_wrenches(F, T)
+        body.advance(t, 0.002)
+        t += 0.002
+    d = (body.site_positions([tip])[0] - x0) / b.length
+    assert d[0] == pytest.approx(x_ref, rel=3e-3)  # measured -0.12 %
+    assert 1.0 + d[2] == pytest.approx(z_ref, rel=1e-3)  # measured -0.03 % of the drop
+
+
 # -- time stepping at the coupler's step -----------------------------------------------
 
 def test_free_vibration_at_the_coupling_step_has_the_first_natural_frequency():
@@ -250,6 +289,49 @@ def test_link_wrenches_keep_force_and_moment_exactly():
     assert F.sum(axis=0) == pytest.approx(f.sum(axis=0), abs=1e-12)
     # the moment about any point is kept: sum over links of T + com x F = sum over points of p x f
     assert (T + np.cross(com, F)).sum(axis=0) == pytest.approx(np.cross(p, f).sum(axis=0), abs=1e-11)
+
+
+def test_elastic_body_forces_are_the_same_generalised_forces_as_point_forces():
+    """One wrench per link at its centre of mass moves the chain exactly as the particle
+    forces applied at the particles would (mj_applyFT each): the exchange is exact."""
+    b = elastic_beam("p", **SEED, n_elements=8)
+    body = MujocoBodies(builders.scene(b.xml, gravity=0.0), bodies=b.link_names)
+    body.data.qpos[:] = np.linspace(0.05, 0.2, body.model.nq)  # bent
+    mujoco.mj_forward(body.model, body.data)
+    eb = ElasticBody(b, body, dx=0.002, layers=3, dim=2)
+    x, _ = eb.place()
+    f = np.random.default_rng(1).normal(size=x.shape) * [1.0, 0.0, 1.0]
+    F, T = eb.wrenches(f)
+    m, d = body.model, body.data
+    by_point, by_link = np.zeros(m.nv), np.zeros(m.nv)
+    for xi, fi, k in zip(x, f, eb.owner):
+        mujoco.mj_applyFT(m, d, fi, np.zeros(3), xi, int(body.body_ids[k]), by_point)
+    com = body.kinematics().com
+    for k, bid in enumerate(body.body_ids):
+        mujoco.mj_applyFT(m, d, F[k], T[k], com[k], int(bid), by_link)
+    assert by_link == pytest.approx(by_point, abs=1e-12 * np.abs(by_point).max())
+    assert F.sum(axis=0) == pytest.approx(f.sum(axis=0), abs=1e-12)
+
+
+def test_elastic_body_places_particles_and_reports_the_corner():
+    b = elastic_beam("p", **SEED, n_elements=8)
+    body = MujocoBodies(builders.scene(b.xml, gravity=0.0), bodies=b.link_names)
+    eb = ElasticBody(b, body, dx=0.0025, layers=2, dim=2)
+    x, u = eb.place()
+    assert len(x) == len(eb.points_b) and (u == 0).all()
+    assert eb.displacement() == pytest.approx(np.zeros(3), abs=1e-15)
+    body.data.qpos[:] = 0.01
+    mujoco.mj_forward(body.model, body.data)
+    x1, _ = eb.place()
+    assert eb.displacement()[0] > 0 and eb.displacement("tip")[0] > 0
+    assert (x1[:, 0] - x[:, 0]).max() == pytest.approx(eb.displacement()[0], rel=0.1)
+    eb.check()  # fine
+    body.data.qpos[2] = 2.0  # one hinge turned by 115 degrees
+    mujoco.mj_forward(body.model, body.data)
+    with pytest.raises(InstabilityError, match=r"element 2 \(body 'p_link2'\) went unstable.*timestep below"):
+        eb.check()
+    with pytest.raises(InputError, match="does not couple the links"):
+        ElasticBody(b, MujocoBodies(builders.scene(b.xml, gravity=0.0), bodies=b.link_names[:3]), 0.0025, 2, 2)
 
 
 # -- bad input -----------------------------------------------------------------------
