@@ -1,0 +1,180 @@
+"""Tanks of seed 001 beyond the vertical wall (VALIDATION.md, "Fluid"): the inclined side
+(001_14936b82710365b2.txt §3.2) under the base excitation of §3.1."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from cosim import refdata
+from cosim.validation import case
+from cosim.validations.sloshing import _harmonic_fit, face_pressure
+from cosim.validations.tank_potential import wall_profiles
+from fluid.geometry import assemble, set_hydrostatic
+from fluid.motion import Harmonic, Translation
+from fluid.particles import Kind
+from fluid.shapes import inclined_tank
+from fluid.solver import Fluid, FluidConfig
+
+G = 9.81
+RHO0 = 1000.0
+ANGLES = (15.0, 30.0, 45.0)
+
+
+def chwang_profile(beta_deg: float) -> tuple[np.ndarray, np.ndarray]:
+    """(y/H, k_p) on an inclined dam face ``beta_deg`` from the vertical, Chwang's
+    semi-infinite reservoir (refdata analytic_hydrodynamics/inclined_dam_Cp_FEM_thiswork.csv,
+    which tabulates theta = 90 - beta, the face's angle with the horizontal)."""
+    text = refdata.path("analytic_hydrodynamics", "inclined_dam_Cp_FEM_thiswork.csv").read_text().splitlines()
+    rows = np.genfromtxt([s for s in text if not s.startswith("#")], delimiter=",", names=True)
+    theta = 90.0 - beta_deg
+    hit = np.flatnonzero(np.isclose(rows["theta_deg"], theta))
+    if hit.size == 0:
+        raise ValueError(f"no tabulated face at {beta_deg} deg from the vertical (theta = {theta} deg)")
+    row = rows[hit[0]]
+    y = np.linspace(0.0, 1.0, 11)
+    return y, np.array([row[f"Cp_y{k // 10}{k % 10}H"] for k in range(0, 11)])
+
+
+def run_inclined(beta_deg: float, dx: float, c0: float = 1430.0, periods_skip: int = 2, periods_fit: int = 3,
+                 samples_per_period: int = 40, a0: float = 0.5 * G, Tp: float = 0.03, length: float = 3.0,
+                 H: float = 1.0, height: float = 1.5, **overrides) -> dict:
+    """The 2-D section of 001 §3.2's tank: bottom ``length`` [m], vertical left side, right
+    side inclined ``beta_deg`` from the vertical leaning outwards (:func:`fluid.shapes.inclined_tank`,
+    walls offset from the true outline, one layer of fluid conforming to them), water
+    ``H`` [m], under the base acceleration ``a0 sin(2 pi t / Tp)`` from rest, c0 [m/s]
+    the paper's (Eq. 17). The flow is uniform across the 3-D tank's width (its front and
+    back are parallel planes), so the section is the 3-D problem for inviscid water.
+
+    Extraction as :func:`cosim.validations.sloshing.run_westergaard`: at face points every
+    dx in height on both sides, the fluid pressure carried to the face (``face_pressure``,
+    001 Eq. 15 with the wall's momentum balance), fitted with ``c0 + c1 t + s sin(w t) +
+    k cos(w t)`` over ``periods_fit`` periods after ``periods_skip``; k_p = s / (rho a0 H)
+    on the left side and -s / (rho a0 H) on the inclined one (positive where the tank
+    accelerates towards the water, 001 Eq. 18).
+
+    References: Chwang's semi-infinite reservoir (refdata, :func:`chwang_profile`), the
+    criterion the issue states; and the exact incompressible pressure of this finite tank
+    (:func:`cosim.validations.tank_potential.wall_profiles`, 1-3 % below Chwang's at the
+    base for L = 3 m) on both sides: what a perfect model of the tank would give.
+    """
+    built = inclined_tank(2, dx, beta_deg, length, H, height)
+    src = built.particles
+    fl = src.kind == Kind.FLUID
+    ps = assemble(2, dx, RHO0, src.pos[fl], [(src.pos[~fl], Kind.MOVING_WALL, 0)]).particles
+    cfg = FluidConfig(dim=2, dx=dx, c0=c0, **overrides)
+    set_hydrostatic(ps, H, RHO0, cfg.speed_of_sound, cfg.gamma, cfg.g)
+    f = Fluid(cfg, ps)
+    shake = Translation((1.0, 0.0), Harmonic.from_peak_acceleration(a0, Tp, from_rest=True))
+    f.prescribe_motion(0, shake)
+    f.initialize(0.0)
+    b = math.radians(beta_deg)
+    z = dx * (0.5 + np.arange(int(math.floor(H / dx))))
+    sides = {"left": (np.stack([np.zeros_like(z), z], 1), np.array([1.0, 0.0])),
+             "right": (np.stack([length + z * math.tan(b), z], 1), np.array([-math.cos(b), math.sin(b)]))}
+    dt_s = Tp / samples_per_period
+    n_skip, n_fit = periods_skip * samples_per_period, periods_fit * samples_per_period
+    rec = {k: [] for k in sides}
+    times = []
+    t = 0.0
+    for i in range(n_skip + n_fit):
+        f.advance(t, dt_s)
+        t = (i + 1) * dt_s
+        if i + 1 <= n_skip:
+            continue
+        for k, (pts, n) in sides.items():
+            here = shake(t, pts)[0]  # the face points, carried by the tank
+            rec[k].append(face_pressure(f, here, here, n, shake.acceleration(t), cfg.gravity))
+        times.append(t)
+    times = np.asarray(times)
+    scale = RHO0 * a0 * H
+    w = 2 * math.pi / Tp
+    kp, kout = {}, {}
+    for k, sign in (("left", 1.0), ("right", -1.0)):
+        s, c = _harmonic_fit(times, np.asarray(rec[k]), w)
+        kp[k], kout[k] = sign * s / scale, np.abs(c) / scale
+    tank = wall_profiles(length, H, beta_deg)
+    ref = {"left_tank": np.interp(z, tank["z"], tank["left"]), "right_tank": np.interp(z, tank["z"], tank["right"])}
+    yc, cp = chwang_profile(beta_deg)
+    ref["right_chwang"] = np.interp(z / H, yc, cp)
+    rms = lambda a, r: float(np.sqrt(np.mean((a - r) ** 2)))
+    metrics = {"rms_right_vs_chwang": rms(kp["right"], ref["right_chwang"]),
+               "rms_right_vs_tank": rms(kp["right"], ref["right_tank"]),
+               "rms_left_vs_tank": rms(kp["left"], ref["left_tank"]),
+               "kp_max_right": float(kp["right"].max()), "kp_max_right_tank": float(ref["right_tank"].max()),
+               "kp_max_right_chwang": float(cp.max()),
+               "kp_out_of_phase_max": float(max(kout["left"].max(), kout["right"].max())),
+               "beta_deg": beta_deg, "dx_m": dx, "c0_m_s": c0, "rows": int(z.size),
+               "max_speed_m_s": float(f.max_speed())}
+    return {"metrics": metrics, "particles": int(f.ps.n), "steps": int(f.counters.steps),
+            "profile": {"z_m": z.tolist(), "kp_left": kp["left"].tolist(), "kp_right": kp["right"].tolist(),
+                        **{f"kp_{k}": v.tolist() for k, v in ref.items()}}}
+
+
+#: the stated target of the inclined-wall row of docs/VALIDATION.md
+INCLINED_TARGET = ("RMS of k_p along the inclined face against Chwang's exact theory (refdata "
+                   "inclined_dam_Cp_FEM_thiswork.csv) < 0.04 at 15, 30 and 45 deg")
+
+
+def inclined_series_plot(profiles: dict) -> dict:
+    """The report's plot: k_p up the inclined face per angle, ours against Chwang's
+    semi-infinite reservoir and the exact pressure of this tank."""
+    curves = {}
+    for beta, p in profiles.items():
+        z = p["z_m"]
+        curves[f"{beta:g} deg: SPH (ours)"] = {"x": p["kp_right"], "y": z, "style": "o-"}
+        curves[f"{beta:g} deg: Chwang (refdata)"] = {"x": p["kp_right_chwang"], "y": z, "style": "--"}
+        curves[f"{beta:g} deg: this tank, exact"] = {"x": p["kp_right_tank"], "y": z, "style": ":"}
+    return {"inclined face": {"xlabel": "k_p = p_d / (rho a0 H)", "ylabel": "height above the bottom [m]",
+                              "curves": curves}}
+
+
+@case("inclined-wall", "2-D section of 001 §3.2's tank (bottom 3.0 m, right side 15/30/45 deg from the vertical, "
+      "water 1.0 m), base acceleration 0.5 g sin(2 pi t / 0.03 s): k_p up the inclined face vs Chwang's exact "
+      "theory, RMS < 0.04", target=INCLINED_TARGET,
+      quick="dx = 0.1 m (10 rows), 1 + 2 periods: k_p up the inclined face within 0.06 RMS of Chwang's theory at "
+            "each angle (first-order errors of ~dx/H, as westergaard's quick variant: the stated 0.04 is met at the "
+            "paper's dx = 0.05 m, the full variant)")
+def inclined_wall(quick: bool) -> dict:
+    """001_14936b82710365b2.txt §3.2 (Fig. 12): see :func:`run_inclined` for the set-up and
+    the extraction. c0 = 1430 m/s (the paper's), tank walls carrying the fluid's pressure
+    (``walls="adami"``, as the westergaard case), the solver's other defaults; 40 samples
+    a period. Judged: the RMS of k_p up the inclined face against Chwang's semi-infinite
+    reservoir at each angle; reported beside it, the RMS against the exact pressure of
+    this finite tank on both sides (the 3 m tank's inclined face carries 1-3 % less
+    than Chwang's reservoir at the base).
+
+    Measured (2026-11-25, AMD EPYC, 2 cores under load; ``cosim validate inclined-wall
+    [--quick]``; RMS of k_p up the inclined face; "tank": the exact pressure of this tank):
+
+    ======  ===========  ==========  ==========  ==========  ===========  ===========
+    dx [m]  periods      15 deg      30 deg      45 deg      left, tank   wall [s]
+    ======  ===========  ==========  ==========  ==========  ===========  ===========
+    0.10    1 + 2        0.045       0.021       0.0055      0.048        23 (3 runs)
+    0.05    2 + 3        0.035       0.022       0.0067      0.026        195
+    ======  ===========  ==========  ==========  ==========  ===========  ===========
+
+    The errors are largest on the steepest face: at 15 deg the face k_p scatters by
+    +-0.03 from row to row (the conformed wall and first fluid layer along a face that
+    crosses the lattice rows at a shallow angle) and reads 0.03 above the tank's exact
+    maximum; at 45 deg it is within 0.01 everywhere. The vertical left side of the same
+    tank is within 0.026 of its exact pressure at 0.05 m (the two rows next to the free
+    surface read high, as in westergaard).
+    """
+    dx, skip, fit = (0.1, 1, 2) if quick else (0.05, 2, 3)
+    metrics, profiles, particles, steps = {}, {}, 0, 0
+    for beta in ANGLES:
+        r = run_inclined(beta, dx, periods_skip=skip, periods_fit=fit, walls="adami")
+        for k, v in r["metrics"].items():
+            if k not in ("dx_m", "c0_m_s", "beta_deg"):
+                metrics[f"{k}_{beta:g}"] = v
+        profiles[beta] = r["profile"]
+        particles, steps = max(particles, r["particles"]), steps + r["steps"]
+    metrics.update({"dx_m": dx, "c0_m_s": 1430.0})
+    out = {"metrics": metrics, "tolerances": {f"rms_right_vs_chwang_{b:g}": 0.04 for b in ANGLES},
+           "particles": particles, "steps": steps, "series": inclined_series_plot(profiles)}
+    if quick:
+        out["stated_tolerances"] = out["tolerances"]
+        out["tolerances"] = {f"rms_right_vs_chwang_{b:g}": 0.06 for b in ANGLES}
+    return out

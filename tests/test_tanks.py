@@ -1,0 +1,63 @@
+"""The inclined-wall tank of seed 001 §3.2: the exact impulsive pressure of the finite tank
+(cosim.validations.tank_potential) against the closed forms and the refdata table, and the
+validation case's quick run."""
+
+import numpy as np
+import pytest
+
+from cosim import validation
+from cosim.validations.sloshing import westergaard_series
+from cosim.validations.tank_potential import impulsive_pressure, wall_profiles
+from cosim.validations.tanks import ANGLES, chwang_profile
+
+
+def test_the_vertical_tank_is_westergaards_finite_tank_series_converging_at_first_order():
+    errs = []
+    for nz in (30, 60, 120):
+        w = wall_profiles(3.0, 1.0, 0.0, nz)
+        exact = westergaard_series(1.0 - w["z"], 1.0, 3.0)
+        errs.append(np.abs(w["left"] - exact).max())
+        np.testing.assert_allclose(w["right"], w["left"], atol=1e-10)  # antisymmetric pressure, equal k_p
+    assert errs[-1] < 1e-3
+    rate = np.log2(np.array(errs[:-1]) / np.array(errs[1:]))
+    assert np.all(rate > 0.9), rate  # the free-surface corner limits it to first order in the max norm
+
+
+@pytest.mark.parametrize("beta", ANGLES)
+def test_a_long_reservoir_reproduces_chwangs_table(beta):
+    """L = 12 H is Chwang's semi-infinite reservoir (the far wall's modes decay as
+    exp(-pi L / 2H)); 60 elements over the depth reproduce the table to 2e-4; the 3 m
+    tank's face carries less (the far wall's pressure of opposite sign)."""
+    y, cp = chwang_profile(beta)
+    long = wall_profiles(12.0, 1.0, beta, 60)
+    np.testing.assert_allclose(np.interp(y, long["z"], long["right"]), cp, atol=2.5e-4)
+    tank = wall_profiles(3.0, 1.0, beta, 60)
+    low = cp[0] - np.interp(0.0, tank["z"], tank["right"])
+    assert 0.005 < low < 0.03
+
+
+def test_the_pressure_is_harmonic_and_vanishes_at_the_surface():
+    nodes, kp, nz, nx = impulsive_pressure(3.0, 1.0, 30.0, nz=40)
+    top = nodes[:, 1] == 1.0
+    assert np.all(kp[top] == 0.0) and top.sum() == nx + 1
+    # discrete mean-value check away from the walls: the 5-point mean of a harmonic field on
+    # a mapped grid row is its centre value to O(h^2)
+    grid = kp.reshape(nz + 1, nx + 1)
+    j, i = nz // 2, nx // 2
+    mean = 0.25 * (grid[j - 1, i] + grid[j + 1, i] + grid[j, i - 1] + grid[j, i + 1])
+    assert mean == pytest.approx(grid[j, i], abs=1e-3)
+    with pytest.raises(ValueError):
+        impulsive_pressure(3.0, 1.0, 90.0)
+
+
+def test_inclined_wall_quick():
+    r = validation.run("inclined-wall", quick=True)
+    m = r["metrics"]
+    assert r["passed"] and r["target"].startswith("quick: ")  # judged by its declared tolerances (0.06)
+    assert r["stated"]["tolerances"] == {f"rms_right_vs_chwang_{b:g}": 0.04 for b in ANGLES}
+    assert all(m[f"rms_right_vs_chwang_{b:g}"] < 0.06 for b in ANGLES)
+    for b in ANGLES:
+        assert m[f"kp_out_of_phase_max_{b:g}"] < 0.05  # the impulsive pressure follows the acceleration
+        assert m[f"rms_left_vs_tank_{b:g}"] < 0.06  # the vertical side of the same tank
+    # the steeper the face, the less it carries (Chwang; ours)
+    assert m["kp_max_right_15"] > m["kp_max_right_30"] > m["kp_max_right_45"]
