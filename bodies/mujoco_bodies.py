@@ -251,6 +251,14 @@ class MujocoBodies:
                 out[k] += d.efc_force[r]
         return out
 
+    def release_tether(self, name: str) -> None:
+        """Remove the length limit of the tether ``name`` (a broken line): from the next
+        step it holds nothing. Model data, not state: release it again after loading a
+        state saved after the release."""
+        if name not in self.tethers:
+            raise InputError(f"{self.name}: no tether named {name!r}; tethers: {self.tethers}")
+        self.model.tendon_limited[mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_TENDON, name)] = 0
+
     def masses(self) -> np.ndarray:
         """Mass of each coupled body [kg], from MuJoCo's geometry or the MJCF's values."""
         return self.model.body_mass[self.body_ids].copy()

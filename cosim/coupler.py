@@ -322,7 +322,28 @@ class Coupler:
             raise type(exc)(f"step {self.steps + 1}, t = {t:.9g} s: {exc}") from exc
         self.clock.advance(n)
         self.steps += 1
+        if self.bodies is not None:
+            self._check_line_breaks()
         return StepInfo(self.steps, self.clock.t, dt, limiter)
+
+    def _check_line_breaks(self) -> None:
+        """Moorings whose lines break (``moorings.breaking.BreakingMooring``) look at their
+        tensions after the step, the tension of a line's length constraint included; a
+        released line loses its constraint."""
+        tt = None
+        for a in self.moorings:
+            check = getattr(a.mooring, "check_breaks", None)
+            if check is not None:
+                tt = self.tether_tensions() if tt is None else tt
+                check(self.t, [tt.get(f"{a.mooring.name}.{i}", 0.0) for i in range(a.mooring.n_lines)])
+        if tt is not None:
+            self._release_tethers()
+
+    def _release_tethers(self) -> None:
+        for a in self.moorings:
+            for i in getattr(a.mooring, "released_lines", lambda: [])():
+                if f"{a.mooring.name}.{i}" in self.bodies.tethers:
+                    self.bodies.release_tether(f"{a.mooring.name}.{i}")
 
     def _loads(self, kin) -> tuple[np.ndarray, ...]:
         """Fluid force and torque, mooring force and torque on each body, for the
@@ -592,6 +613,7 @@ class Coupler:
             self.added_mass.load_state(state["added_mass"])
         self.watch.load_state(state["watch"])
         if self.bodies is not None and self._initialized:
+            self._release_tethers()  # model data, not state: lines released before the checkpoint
             kin = self.bodies.kinematics()
             if self.fluid is not None:
                 self.fluid.set_body_kinematics(kin)

@@ -8,6 +8,8 @@
 - :class:`FMUMooring`: any co-simulation FMU with fairlead positions in and
   forces out; :func:`export_catenary_fmu` writes the catenary law as one.
 - :class:`MoorDynMooring`: MoorDyn v2 lines (optional ``moordyn`` package).
+- :class:`BreakingMooring`: any of them, its lines reported (and optionally released)
+  when their tension passes their ``break_load``.
 
 Swapping models is one constructor call: every model takes the same list of
 ``MooringLine``. Models are imported on first use, so a scene loads (and
@@ -24,6 +26,7 @@ _LAZY = {
     "SPHCableMooring": "moorings.sph_cable",
     "FMUMooring": "moorings.fmu_mooring",
     "MoorDynMooring": "moorings.moordyn_mooring",
+    "BreakingMooring": "moorings.breaking",
     "export_catenary_fmu": "moorings.fmu_export",
     "catenary_fmu_variable_map": "moorings.fmu_export",
 }

@@ -47,6 +47,10 @@ class MooringLine:
         drag and added mass.
     name:
         Label used in messages and outputs; the mooring system numbers unnamed lines.
+    break_load:
+        Tension [N] at which the line breaks (``None``: never); a mooring system
+        wrapped in :class:`moorings.breaking.BreakingMooring` reports it, and may
+        release the line.
     """
 
     anchor: tuple[float, ...]
@@ -56,6 +60,7 @@ class MooringLine:
     mass_per_length: float | None = None
     diameter: float | None = None
     name: str = ""
+    break_load: float | None = None
 
     def __post_init__(self):
         label = f"mooring line '{self.name}'" if self.name else "mooring line"
@@ -72,10 +77,11 @@ class MooringLine:
         if self.EA is not None:
             ea = _positive(label, "EA", self.EA, "N", "axial stiffness; use EA=None for an inextensible line")
             object.__setattr__(self, "EA", ea)
-        for name, unit in (("mass_per_length", "kg/m"), ("diameter", "m")):
+        for name, unit, hint in (("mass_per_length", "kg/m", "or leave it None"), ("diameter", "m", "or leave it None"),
+                                 ("break_load", "N", "the tension at which the line breaks; None: it never breaks")):
             v = getattr(self, name)
             if v is not None:
-                object.__setattr__(self, name, _positive(label, name, v, unit, "or leave it None"))
+                object.__setattr__(self, name, _positive(label, name, v, unit, hint))
 
     @property
     def dim(self) -> int:
