@@ -227,17 +227,29 @@ def test_free_vibration_at_the_coupling_step_has_the_first_natural_frequency():
     assert np.abs(x).max() < 1.01 * abs(x[0])  # no energy gained
 
 
-def test_stable_dt_is_the_rk4_limit():
-    b = elastic_beam("p", **SEED, n_elements=8)
+@pytest.mark.parametrize("beta", [0.0, 1e-3])
+def test_stable_dt_is_the_rk4_limit(beta):
+    """Undamped, 2 sqrt 2 / omega_max; stiffness-proportional damping (beta) is explicit
+    under RK4 and shrinks it (by 3 here)."""
+    b = elastic_beam("p", **SEED, n_elements=8, beta=beta)
     dt = b.stable_dt()
-    assert dt > 1e-4  # the SPH step (~1e-5 to 1e-4 s) is well inside it
+    assert dt > 1e-4  # the SPH step (~1e-5 to 1e-4 s) is inside it
+    if beta == 0.0:
+        w_max = 2 * math.pi * modal_frequencies(*compiled(b))[-1]
+        assert dt == pytest.approx(2 * math.sqrt(2) / w_max, rel=1e-6)
+    else:
+        assert dt < 0.5 * elastic_beam("p", **SEED, n_elements=8).stable_dt()
 
     def peak(step):
         m, d = compiled(b, timestep=step, integrator="RK4")
         d.qvel[:] = 1e-3
+        top = 0.0
         for _ in range(400):
             mujoco.mj_step(m, d)
-        return np.abs(d.qvel).max()
+            top = max(top, np.abs(d.qvel).max())
+            if d.warning[mujoco.mjtWarning.mjWARN_BADQACC].number:  # MuJoCo reset the state
+                return math.inf
+        return top
 
     assert peak(0.95 * dt) < 1.0  # bounded (the 1e-3 start spreads over the modes: ~0.15 rad/s peaks)
     assert not peak(1.05 * dt) < 100.0  # runs away (or overflows to inf/nan)
