@@ -33,7 +33,7 @@ rho_s = 2500 kg/m^3, E = 1 MPa, nu = 0``, W = 1 m, against Timoshenko ``f = 5.97
 off by 1.5 / 10 / 21 %)::
 
     model      size  dofs   f1 %   f2 %   f3 %  tip %  dt_stable  s per simulated s
-    chain      N=8     16  +0.35  +1.00  +1.00  -0.39    8.3e-4     0.15-0.3 (RK4, dt 1e-4)
+    chain      N=8     16  +0.35  +1.00  +1.00  -0.39    8.4e-4     0.15-0.3 (RK4, dt 1e-4)
     chain      N=16    32  +0.09  +0.25  +0.25  -0.10    3.8e-4     0.4-0.9 (varies with the other jobs)
     chain-EB   N=16    16  +1.11  +6.87  +13.8  -1.43    3.8e-4     0.2     (no shear slides)
     flex2d     6x48  1008  +2.94  +2.32  +1.70  -7.75    6.0e-5     2.5-2.9 (Euler, dt 5.4e-5)
@@ -50,6 +50,14 @@ dearer). The chain gives one rigid body per element, which the coupler already m
 and loads (:class:`bodies.mujoco_bodies.MujocoBodies`), and needs no plugin. Its stable
 RK4 step (:meth:`BeamModel.stable_dt`, exact for the linearised chain) is 3.8e-4 s at
 N = 16, above the SPH step.
+
+Limits: the chain is inextensible (the plate's first axial mode, ``sqrt(E / rho) / (4 L)``
+= 62.5 Hz at E = 1 MPa, lies between bending modes 2 and 3 and is left out: MuJoCo's
+flex shows it); its boundary particles ride rigidly on their links, so at a joint bent
+by ``dtheta`` the outer face opens by about ``h dtheta / 2`` (seed 002's 48 mm tip
+deflection at N = 16: about 0.9 mm at the foot, 0.36 of a 2.5 mm spacing); a plate
+thinner than ``dx`` gets one column of particles (the thin-wall treatment is the
+coupling step's).
 
 Units: SI (m, kg, s, Pa, N). 2-D scenes live in the x-z plane: every joint turns
 about y or slides along x, so the beam stays in the plane by construction.
