@@ -35,6 +35,11 @@ the acceleration" step of the PEER processing): the least-squares polynomial
 ``q'(T) = v(T)``, and removed from displacement, velocity and acceleration. Starting at
 ``t^2`` keeps the start at rest; the two constraints make the corrected record end at rest
 exactly; the change of the acceleration is the smooth ``q''(t)``, small where the drift is.
+The fit cannot tell drift from genuine motion as slow as the record itself: a record that
+is one slow pulse of displacement is erased with its drift (PEER's processed records,
+``cosim/refdata/earthquake_el_centro_1940``, end at rest already and change by 1-2 % of
+their peak displacement; ``tests/test_records.py``). Give ``baseline_degree=None`` to
+:func:`read_at2` to keep a record as it is.
 """
 
 from __future__ import annotations

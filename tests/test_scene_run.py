@@ -166,6 +166,30 @@ def test_failed_run_leaves_readable_outputs(tmp_path, monkeypatch):
         np.testing.assert_array_equal(f["series/probes/gauges/t"][:], [0.0, 0.05, 0.1])
 
 
+def test_a_probe_that_fails_mid_run_leaves_whole_rows(tmp_path, monkeypatch):
+    """The energy probe fails at its third sample, after the gauges were taken: the run
+    stops with that error (not a reshape error of half a row) and the outputs hold the
+    two whole rows sampled before."""
+    import fluid.probes
+
+    calls, real = [], fluid.probes.fluid_energies
+
+    def failing(sph):
+        calls.append(sph.t)
+        if len(calls) == 3:
+            raise RuntimeError("energy probe failed")
+        return real(sph)
+
+    monkeypatch.setattr(fluid.probes, "fluid_energies", failing)
+    with pytest.raises(RuntimeError, match="energy probe failed"):
+        shaken_tank(duration=0.2).run(tmp_path, progress=False)
+    s = json.loads((tmp_path / "summary.json").read_text())
+    assert s["error"] == "RuntimeError: energy probe failed"
+    for name in ("gauges", "energy"):
+        rows = (tmp_path / f"{name}.csv").read_text().splitlines()
+        assert len(rows) == 3, rows  # the header and the samples at 0 and 0.05 s
+
+
 def test_fluid_only_scene_shakes_the_tank(tmp_path):
     """No bodies: the SPH fluid runs as a plain participant; the shaken tank's water
     gains energy, and its initial state is at rest (hydrostatic densities)."""

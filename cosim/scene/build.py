@@ -37,6 +37,7 @@ class Built:
     level: float | None = None  #: still-water level [m]
     start_heights: dict = field(default_factory=dict)  #: floating bodies: their computed centre height [m]
     wavemaker: object = None  #: fluid.wavemaker.RegularWavemaker, for regular waves
+    base_motion: object = None  #: the tank's rigid motion ``motion(t, ref) -> (pos, vel)`` (fluid.motion), or None
 
 
 def site_name(fairlead: str) -> str:
@@ -276,7 +277,7 @@ def _build_sph(scene, out: Built) -> None:
         motions[PADDLE] = paddle
         back = 0.5 * stroke + cfg.dx
     if scene.base_motion is not None:
-        motions[WALLS] = _base_motion(scene)
+        motions[WALLS] = out.base_motion = _base_motion(scene)
     pts, walls = domain_points(scene, cfg, back)
     if out.bodies is not None:
         from cosim.sph_fluid import SPHFluid

@@ -13,6 +13,11 @@ that become one HDF5 series, one CSV and one plot each:
 - ``gauges``: free-surface elevation above the still water [m] at each gauge;
 - ``pressure``: each wall patch's pressure [Pa];
 - ``energy``: the SPH fluid's kinetic and potential energy [J] (2-D: per metre, J/m).
+
+Gauges and wall patches are fixed to the tank: under base motion they move with it, as
+instruments on a shaking table do (a gauge at x measures, on the vertical through where
+the tank's point (x, still level) is now, the surface's height above that point; a
+patch's centre and normal are carried rigidly).
 """
 
 from __future__ import annotations
@@ -99,23 +104,37 @@ def groups(scene, built) -> list[Group]:
                 + ([f"{n}.tether" for n in lines] if tethered else []))
         out.append(Group("tensions", cols, ["N"] * len(cols), tensions))
     sph = built.sph
+    move = built.base_motion  # a moving tank carries its gauges and wall patches along
+
+    def in_tank(points):
+        """Points [m] fixed to the tank, where they are now (rigidly moved with it)."""
+        pts = np.asarray(points, float)
+        return pts if move is None else np.asarray(move(sph.t, pts)[0], float)
+
     if sph is not None and p.gauges:
         from fluid.probes import surface_elevation
 
         g = np.array([x for x in p.gauges], float)
         level = built.level
+        base = np.column_stack([g.reshape(len(g), -1), np.full(len(g), level)])  # the still surface under each gauge
 
         def gauges():
-            return surface_elevation(sph, g) - level
+            w = in_tank(base)
+            return surface_elevation(sph, w[:, 0] if dim == 2 else w[:, :2]) - w[:, -1]
 
         out.append(Group("gauges", [f"gauge{i + 1}.eta" for i in range(len(g))], ["m"] * len(g), gauges))
     if sph is not None and p.pressure:
         from fluid.probes import wall_patch_pressure
 
         patches = p.pressure
+        ends = [np.array([q.centre, np.add(q.centre, q.normal)], float) for q in patches]
 
         def pressure():
-            return np.array([wall_patch_pressure(sph, q.centre, q.normal, q.size) for q in patches])
+            row = []
+            for q, e in zip(patches, ends):
+                c, tip = in_tank(e)
+                row.append(wall_patch_pressure(sph, c, tip - c, q.size))
+            return np.array(row)
 
         out.append(Group("pressure", [f"{q.name}.p" for q in patches], ["Pa"] * len(patches), pressure))
     if sph is not None and p.energy:

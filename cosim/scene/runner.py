@@ -118,7 +118,9 @@ class _Recorder:
                 self.h5.series(f"probes/{g.name}", t, **dict(zip(g.columns, self.rows[g.name][k])))
 
     def sample(self, t: float):
-        self.times.append(t)
+        """One row of every group at ``t`` [s], recorded only when all of them could be
+        taken (a probe that fails leaves the rows so far whole, for the outputs)."""
+        values = []
         for g in self.groups:
             v = np.asarray(g.sample(), float)
             bad = ~np.isfinite(v)
@@ -127,6 +129,9 @@ class _Recorder:
 
                 raise InstabilityError(f"t = {t:.9g} s: probe {g.columns[int(np.argmax(bad))]!r} is not finite "
                                        f"({v[bad][0]})")
+            values.append(v)
+        self.times.append(t)
+        for g, v in zip(self.groups, values):
             self.rows[g.name].append(v)
             self.h5.series(f"probes/{g.name}", t, **dict(zip(g.columns, v)))
 

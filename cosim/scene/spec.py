@@ -556,7 +556,8 @@ class Probes(Spec):
     x [m] (2-D) or (x, y) [m] (3-D), the elevation above the still water; ``pressure``:
     wall patches; ``motion``: the bodies whose surge, sway, heave, roll, pitch, yaw are
     recorded (``["all"]``: every body); ``tensions``: each fairlead's tension;
-    ``loads``: fluid and mooring force on each body; ``energy``: the SPH fluid's energy."""
+    ``loads``: fluid and mooring force on each body; ``energy``: the SPH fluid's energy.
+    Gauges and patches are fixed to the tank: under ``base_motion`` they move with it."""
 
     gauges: tuple = gauges("wave gauges: x (2-D) or (x, y) (3-D)")
     pressure: tuple = parts("wall-pressure patches", Patch)
