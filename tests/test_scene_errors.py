@@ -268,6 +268,7 @@ def case(id, base, change, path, says, python, files=None):
 
 INCLINED = {"kind": "inclined-tank", "angle": 95.0, "length": 1.0, "depth": 0.2, "height": 0.6, "width": 0.5}
 LINE_DYN = {"EA": 1e5, "mass_per_length": 0.6, "diameter": 0.01}
+LINEAR = {"kind": "linear", "height": 0.7, "period": 20.0, "depth": 20.0}  # seed 004's waves
 
 CASES = [
     # -- keys: unknown, misspelt, missing
@@ -330,6 +331,16 @@ CASES = [
          "is out of range; give a number [N/m] > 0", "Line.weight"),
     case("zero EA", "analytic", ("moorings.lines[0].EA", 0.0), "moorings.lines[0].EA",
          "0.0 [N] is out of range; give a number [N] > 0 (axial stiffness", "Line.EA"),
+    case("zero break load", "analytic", ("moorings.lines[0].break_load", 0.0), "moorings.lines[0].break_load",
+         "0.0 [N] is out of range; give a number [N] > 0 (tension at which the line breaks", "Line.break_load"),
+    case("negative break load", "analytic", ("moorings.lines[1].break_load", -1.4e6), "moorings.lines[1].break_load",
+         "-1400000.0 [N] is out of range; give a number [N] > 0", "Line.break_load"),
+    case("zero wave height", "analytic", ("waves", dict(LINEAR, height=0.0)), "waves.height",
+         "0.0 [m] is out of range; give a number [m] > 0 (wave height H", "LinearWaves.height"),
+    case("negative wave period", "analytic", ("waves", dict(LINEAR, period=-20.0)), "waves.period",
+         "-20.0 [s] is out of range; give a number [s] > 0 (wave period T)", "LinearWaves.period"),
+    case("zero water depth of the waves", "analytic", ("waves", dict(LINEAR, depth=0.0)), "waves.depth",
+         "0.0 [m] is out of range; give a number [m] > 0 (still-water depth over the seabed", "LinearWaves.depth"),
     case("negative radius", "tank3d", ("bodies[0].radius", -0.05), "bodies[0].radius",
          "is out of range; give a number [m] > 0 (radius)", "Sphere.radius"),
     case("a zero edge", "analytic", ("bodies[0].size", [2.0, 0.0]), "bodies[0].size",
@@ -411,6 +422,16 @@ CASES = [
                                          ("base_motion", {"kind": "roll", "amplitude": 4.0, "period": 1.5,
                                                           "point": [1.5, 0.0], "axis": [0.0, 1.0, 0.0]})),
          "base_motion.axis", "a 2-D roll is about +y; leave axis out", "Scene.base_motion.axis"),
+    # -- waves and fluids
+    case("linear waves on the SPH fluid", "flume", ("waves", LINEAR), "waves.kind",
+         "linear waves act on the analytic fluid's bodies (fluid.model = \"analytic\"); the 'sph' fluid has none: "
+         "make waves with a piston or flap in a flume", "Scene.waves.kind"),
+    case("a piston on the analytic fluid", "analytic", ("waves", {"kind": "piston", "height": 0.04, "period": 1.0}),
+         "waves.kind", "the analytic fluid takes the waves themselves: kind = \"linear\"", "Scene.waves.kind"),
+    case("linear waves across a 2-D scene", "analytic", ("waves", dict(LINEAR, direction=30.0)), "waves.direction",
+         "30.0 deg: a 2-D scene's waves travel along +x (0) or -x (180)", "Scene.waves.direction"),
+    case("linear waves beyond breaking", "analytic", ("waves", dict(LINEAR, height=1.0, period=2.0)), "waves.height",
+         "H/λ = 0.160 is beyond the breaking limit 1/7 (Michell 1893); lower H or lengthen T", "Scene.waves.height"),
     # -- names and references
     case("a fairlead on an unknown body", "analytic", ("moorings.lines[0].fairlead", "boat.left"),
          "moorings.lines[0].fairlead", "no body named 'boat'; bodies: ['box', 'buoy']",

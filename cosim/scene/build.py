@@ -17,7 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
-from cosim.scene.spec import (MJCF, SPH, Analytic, Box, Cylinder, CylinderTank, Earthquake, Flap, Flume,
+from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, Box, Cylinder, CylinderTank, Earthquake, Flap, Flume,
                               GroundMotion, InclinedTank, Piston, PolygonTank, Roll, Shake, Sphere, TableMotion, Tank)
 
 PADDLE, WALLS = 1, 0  # the flume's paddle group and every tank's wall group
@@ -202,7 +202,8 @@ def _mooring(scene, level, rho, workdir: Path):
     m, g = scene.moorings, scene.world.gravity
     mjcf = any(isinstance(b, MJCF) for b in scene.bodies)
     lines = [MooringLine(ln.anchor, ln.length, ln.weight, EA=ln.EA, mass_per_length=ln.mass_per_length,
-                         diameter=ln.diameter, name=ln.name or ln.fairlead) for ln in m.lines]
+                         diameter=ln.diameter, name=ln.name or ln.fairlead, break_load=ln.break_load)
+             for ln in m.lines]
     sites = [ln.fairlead.split(".")[1] if mjcf else site_name(ln.fairlead) for ln in m.lines]
     surface = level if level is not None else math.inf
     if m.model == "catenary":
@@ -225,6 +226,10 @@ def _mooring(scene, level, rho, workdir: Path):
         workdir.mkdir(parents=True, exist_ok=True)
         path = export_catenary_fmu(lines, workdir / "mooring.fmu")
         mooring = FMUMooring(path, lines, catenary_fmu_variable_map(lines))
+    if any(ln.break_load is not None for ln in lines):
+        from moorings.breaking import BreakingMooring
+
+        mooring = BreakingMooring(mooring, release=m.release_broken)
     return mooring, sites, [ln.name for ln in lines]
 
 
@@ -247,10 +252,16 @@ def build(scene, workdir: Path) -> Built:
     elif isinstance(scene.fluid, Analytic):
         from fluid.analytic import AnalyticFluid
 
-        f = scene.fluid
+        f, w = scene.fluid, scene.waves
+        waves = None
+        if isinstance(w, LinearWaves):
+            from fluid.analytic import LinearWave
+
+            waves = LinearWave(w.height, w.period, w.depth, w.direction, w.ramp * w.period, scene.world.gravity)
         out.fluid = AnalyticFluid(rho=f.rho, g=scene.world.gravity, free_surface_z=f.level,
                                   linear_damping=f.linear_damping or None,
-                                  quadratic_damping=f.quadratic_damping or None, added_mass=f.added_mass or None)
+                                  quadratic_damping=f.quadratic_damping or None, added_mass=f.added_mass or None,
+                                  waves=waves)
     scheme = scene.coupling.scheme
     if scheme == "auto":
         scheme = "fluid-first" if isinstance(scene.fluid, SPH) else "predictor-corrector"

@@ -20,7 +20,7 @@ from __future__ import annotations
 import math
 
 from cosim.scene.fields import SceneError
-from cosim.scene.spec import (MJCF, SPH, Analytic, Box, CylinderTank, Cylinder, Earthquake, Flap, Flume,
+from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, Box, CylinderTank, Cylinder, Earthquake, Flap, Flume,
                               GroundMotion, InclinedTank, NoFluid, PaddleRecord, Piston, PolygonTank, Roll, Sphere,
                               TableMotion, Tank)
 
@@ -128,8 +128,33 @@ def _check_fluid_and_domain(s, dim):
                              f"{depth:g} m; refine dx to at most {depth / 4:.3g} m (4 layers)")
 
 
+def _check_linear_waves(s, dim):
+    w = s.waves
+    if not isinstance(s.fluid, Analytic):
+        raise SceneError("waves.kind", f"linear waves act on the analytic fluid's bodies (fluid.model = "
+                         f"\"analytic\"); the {s.fluid.model!r} fluid has none: "
+                         + ("make waves with a piston or flap in a flume" if isinstance(s.fluid, SPH) else
+                            "set fluid.model = \"analytic\""))
+    if dim == 2 and w.direction not in (0.0, 180.0):
+        raise SceneError("waves.direction", f"{w.direction} deg: a 2-D scene's waves travel along +x (0) or -x "
+                         f"(180)")
+    if s.world.gravity <= 0:
+        raise SceneError("world.gravity", "waves need gravity > 0 (their length follows from it)")
+    from fluid.analytic import LinearWave
+
+    try:
+        LinearWave(w.height, w.period, w.depth, w.direction, w.ramp * w.period, s.world.gravity)
+    except Exception as e:  # the wave's own limits (breaking)
+        raise SceneError("waves.height", str(e).removeprefix("linear wave: ")) from None
+
+
 def _check_excitations(s, dim):
-    if s.waves is not None:
+    if isinstance(s.waves, LinearWaves):
+        _check_linear_waves(s, dim)
+    elif s.waves is not None:
+        if isinstance(s.fluid, Analytic):
+            raise SceneError("waves.kind", f"a {s.waves.kind} wavemaker moves the SPH fluid's paddle; the analytic "
+                             f"fluid takes the waves themselves: kind = \"linear\" with height, period and depth")
         if not isinstance(s.domain, Flume):
             raise SceneError("waves", "a wavemaker needs a flume (domain.kind = \"flume\"); shake a tank with "
                              "base_motion instead")

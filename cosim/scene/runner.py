@@ -358,6 +358,8 @@ def _summary(scene, built, series, units, steps, loop_s, build_s, cpu_s, wall_be
         s["wavemaker"] = {"stroke_m": built.wavemaker.stroke, "wavelength_m": built.wavemaker.wavelength}
     if built.mooring is not None:
         s["mooring"] = {"model": scene.moorings.model, "lines": built.line_names}
+        if hasattr(built.mooring, "events"):  # lines with a break load (moorings.breaking)
+            s["line_breaks"] = [e.as_dict() for e in built.mooring.events]
     s["series"] = {k: {"unit": units[k], "min": float(v.min()), "max": float(v.max()), "mean": float(v.mean()),
                        "last": float(v[-1])} for k, v in series.items() if len(v)}
     if error is not None:

@@ -13,7 +13,8 @@ A scene is made of
   :class:`Flume` (2-D, with a :class:`Beach`), :class:`InclinedTank`, :class:`CylinderTank`
   (3-D), :class:`PolygonTank` (2-D); wall layers follow from the kernel;
 - excitations: ``waves`` (:class:`Piston`, :class:`Flap`, :class:`PaddleRecord`: a flume's
-  wavemaker) or ``base_motion`` of a tank (:class:`Shake`, :class:`Roll`,
+  wavemaker; :class:`LinearWaves`: regular waves on the analytic fluid's bodies) or
+  ``base_motion`` of a tank (:class:`Shake`, :class:`Roll`,
   :class:`TableMotion`, :class:`Earthquake`, :class:`GroundMotion`);
 - ``bodies`` (:class:`Box`, :class:`Cylinder`, :class:`Sphere`, :class:`MJCF`), placed at a
   given pose or ``place="floating"`` (at the hydrostatic equilibrium, computed);
@@ -77,7 +78,8 @@ class NoFluid(Spec):
 @dataclass(frozen=True)
 class Analytic(Spec):
     """The analytic fluid (``fluid.analytic.AnalyticFluid``): hydrostatics of the
-    submerged volume under a flat free surface at ``level``, plus damping per body (6
+    submerged volume under the free surface at ``level`` (moved by ``waves``, kind
+    ``"linear"``, where the scene has them), plus damping per body (6
     coefficients each, world axes: 3 translational, then 3 rotational) and added mass per
     degree of freedom (moved into the body's inertia)."""
 
@@ -307,7 +309,28 @@ class PaddleRecord(Spec):
     t_shift: float = num(0.0, "added to the record's times", "s")
 
 
-WAVES = (Piston, Flap, PaddleRecord)
+@dataclass(frozen=True)
+class LinearWaves(Spec):
+    """Regular linear (Airy) waves acting on the bodies of the analytic fluid
+    (``fluid.analytic.LinearWave``): height ``height`` [m], period ``period`` [s], in water
+    ``depth`` [m] deep under ``fluid.level``, travelling along ``direction`` [deg] (from +x
+    towards +y; 2-D: 0 or 180), crest at x = y = 0 at t = 0, faded in over ``ramp``
+    periods. The free surface moves the buoyancy; the water's velocity and acceleration
+    load the bodies (Morison: Froude-Krylov and added-mass inertia, drag on the relative
+    velocity through the damping coefficients). No wavemaker: the SPH fluid makes its
+    waves with a piston or flap in a flume."""
+
+    TAG = ("kind", "linear")
+    kind: str = tag("linear")
+    height: float = required(num(None, "wave height H, crest to trough", "m", lo=0, lo_open=True, optional=False))
+    period: float = required(num(None, "wave period T", "s", lo=0, lo_open=True, optional=False))
+    depth: float = required(num(None, "still-water depth over the seabed (for the dispersion relation and the decay "
+                                "of the kinematics)", "m", lo=0, lo_open=True, optional=False))
+    direction: float = num(0.0, "heading of propagation, from +x towards +y (2-D: 0 or 180)", "deg")
+    ramp: float = num(2.0, "periods over which the waves fade in", lo=0)
+
+
+WAVES = (Piston, Flap, PaddleRecord, LinearWaves)
 
 
 @dataclass(frozen=True)
@@ -509,6 +532,8 @@ class Line(Spec):
     mass_per_length: float = num(None, "mass per metre in air", "kg/m", lo=0, lo_open=True)
     diameter: float = num(None, "hydrodynamic diameter", "m", lo=0, lo_open=True)
     name: str = text("", "label in outputs (default: the fairlead's name)")
+    break_load: float = num(None, "tension at which the line breaks (unset: never); reported, and released with "
+                            "moorings.release_broken", "N", lo=0, lo_open=True)
 
     def validate(self):
         if self.fairlead.count(".") != 1 or not all(self.fairlead.split(".")):
@@ -519,12 +544,16 @@ class Line(Spec):
 class Moorings(Spec):
     """The mooring lines and the one field that picks their model: ``"catenary"``
     (quasi-static, seed 004 §3), ``"sph-cable"`` (seed 000), ``"moordyn"`` or ``"fmu"``
-    (the catenary exported as an FMU and run through FMPy)."""
+    (the catenary exported as an FMU and run through FMPy). A line with a ``break_load``
+    is watched: the time, line and tension at which its fairlead tension first passes it
+    go into the log and ``summary.json`` (``line_breaks``)."""
 
     model: str = choice("catenary", "the mooring model", MOORING_MODELS)
     lines: tuple = parts("the lines", Line)
     segments: int = whole(20, "segments per line of the dynamic models (SPH-cable particles, MoorDyn segments)",
                           lo=2)
+    release_broken: bool = flag(False, "true: a line whose tension passes its break_load stops acting (false: the "
+                                "break is reported and the line holds)")
 
     def validate(self):
         if not self.lines:
@@ -589,7 +618,7 @@ class Scene(Spec):
     world: World = part(World(), "dimension, gravity, duration, output times", World)
     fluid: Spec = part(NoFluid(), "none, analytic or SPH", FLUIDS)
     domain: Spec = part(None, "the SPH fluid's container", DOMAINS)
-    waves: Spec = part(None, "a flume's wavemaker", WAVES)
+    waves: Spec = part(None, "a flume's wavemaker, or linear waves on the analytic fluid", WAVES)
     base_motion: Spec = part(None, "motion of the tank", BASE_MOTIONS)
     bodies: tuple = parts("the bodies", BODIES)
     moorings: Moorings = part(None, "mooring lines and their model", Moorings)
@@ -646,6 +675,7 @@ class Scene(Spec):
 
 
 __all__ = ["World", "NoFluid", "Analytic", "SPH", "Block", "Tank", "Beach", "Flume", "InclinedTank",
-           "CylinderTank", "PolygonTank", "Piston", "Flap", "PaddleRecord", "Shake", "Roll", "TableMotion",
+           "CylinderTank", "PolygonTank", "Piston", "Flap", "PaddleRecord", "LinearWaves",
+           "Shake", "Roll", "TableMotion",
            "Earthquake", "Record", "GroundMotion", "Box", "Cylinder", "Sphere", "MJCF", "Line", "Moorings", "Patch", "Probes", "Coupling",
            "Scene", "SceneError", "MOORING_MODELS", "SETUPS"]

@@ -6,8 +6,9 @@ Statistics of a series x(t) sampled at the run's probe times:
 - ``peak``: max |x|; ``max``, ``min``, ``mean``, ``last``;
 - ``amplitude``: half the range (max - min) / 2 over the last half of the run (the steady
   part of a forced response);
-- ``period``: 1 / the frequency of the largest peak of the FFT of x - mean over the last
-  half of the run, refined by the parabola through the peak and its neighbours [s];
+- ``period``: 1 / the frequency of the largest peak of the spectrum of x over the last half
+  of the run (:func:`spectral_peak`: Hann window, zero padding, parabolic vertex; periods
+  longer than two thirds of that half are not searched) [s];
 - ``arrival``: the first time |x - x(0)| exceeds half of max |x - x(0)| [s];
 - ``rms``: the RMS difference between x and the reference series (interpolated onto x's
   times over their common span), over the reference's RMS about its mean: a relative
@@ -21,6 +22,26 @@ import numpy as np
 from cosim.errors import InputError
 
 STATS = ("peak", "max", "min", "mean", "last", "amplitude", "period", "arrival", "rms")
+
+
+def spectral_peak(t: np.ndarray, y: np.ndarray, f_lo: float, f_hi: float, pad: int = 64):
+    """Frequency [Hz] of the largest peak of the FFT of ``y`` (uniform times ``t`` [s])
+    between ``f_lo`` and ``f_hi`` [Hz]: mean removed, Hann window, zero padding ``pad``
+    times, and a parabola through the log-magnitude of the top bin and its neighbours
+    (the window's main lobe is near-Gaussian there, so the vertex is the peak to a small
+    fraction of a padded bin). Returns (frequency, the FFT's frequencies, |FFT|)."""
+    dt = t[1] - t[0]
+    y = (y - y.mean()) * np.hanning(y.size)
+    n = pad * y.size
+    spec = np.abs(np.fft.rfft(y, n))
+    f = np.fft.rfftfreq(n, dt)
+    band = np.flatnonzero((f >= f_lo) & (f <= f_hi))[1:-1]  # a neighbour on each side
+    if band.size == 0:
+        raise InputError(f"no frequency between {f_lo:.4g} and {f_hi:.4g} Hz in a series of {y.size} samples")
+    i = band[np.argmax(spec[band])]
+    a, b, c = np.log(spec[i - 1:i + 2] + 1e-300)
+    shift = 0.5 * (a - c) / (a - 2 * b + c) if (a - 2 * b + c) != 0 else 0.0
+    return float(f[i] + shift * (f[1] - f[0])), f, spec
 
 
 def parse(spec: str) -> tuple[str, str]:
@@ -58,13 +79,7 @@ def value(stat: str, t: np.ndarray, x: np.ndarray, ref: tuple | None = None) -> 
         tt, y = _last_half(t, x)
         if len(y) < 8:
             raise InputError("a period needs at least 8 samples in the last half of the run")
-        dt = float(np.mean(np.diff(tt)))
-        spec = np.abs(np.fft.rfft(y - y.mean()))
-        k = int(np.argmax(spec[1:])) + 1
-        if 1 <= k < len(spec) - 1:  # parabolic refinement of the peak's position
-            a, b, c = np.log(spec[k - 1:k + 2] + 1e-300)
-            k = k + 0.5 * (a - c) / (a - 2 * b + c) if (a - 2 * b + c) != 0 else k
-        return float(len(y) * dt / k)
+        return 1.0 / spectral_peak(tt, y, 1.5 / (tt[-1] - tt[0]), np.inf)[0]
     if stat == "arrival":
         d = np.abs(x - x[0])
         if d.max() == 0:

@@ -7,6 +7,7 @@ import math
 import numpy as np
 
 from cosim import refdata
+from cosim.study.metrics import spectral_peak
 from cosim.validation import case
 from fluid.geometry import assemble, block, set_hydrostatic, tank_walls
 from fluid.motion import Harmonic, Rotation, Tabulated, Translation
@@ -465,24 +466,6 @@ def sloshing_omega(L: float, h: float, mode: int = 1, g: float = G) -> float:
     ``k = (2n - 1) pi / L`` (refdata/analytic_hydrodynamics/sloshing_frequencies_housner.csv)."""
     k = (2 * mode - 1) * math.pi / L
     return math.sqrt(g * k * math.tanh(k * h))
-
-
-def spectral_peak(t: np.ndarray, y: np.ndarray, f_lo: float, f_hi: float, pad: int = 64):
-    """Frequency [Hz] of the largest peak of the FFT of ``y`` (uniform times ``t`` [s])
-    between ``f_lo`` and ``f_hi`` [Hz]: mean removed, Hann window, zero padding ``pad``
-    times, and a parabola through the log-magnitude of the top bin and its neighbours
-    (the window's main lobe is near-Gaussian there, so the vertex is the peak to a small
-    fraction of a padded bin)."""
-    dt = t[1] - t[0]
-    y = (y - y.mean()) * np.hanning(y.size)
-    n = pad * y.size
-    spec = np.abs(np.fft.rfft(y, n))
-    f = np.fft.rfftfreq(n, dt)
-    band = np.flatnonzero((f >= f_lo) & (f <= f_hi))
-    i = band[np.argmax(spec[band])]
-    a, b, c = np.log(spec[i - 1:i + 2] + 1e-300)
-    shift = 0.5 * (a - c) / (a - 2 * b + c)
-    return float(f[i] + shift * (f[1] - f[0])), f, spec
 
 
 def run_sloshing_frequency(dx: float, L: float = 1.0, h: float = 0.5, amplitude: float = 0.002,

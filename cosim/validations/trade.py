@@ -63,8 +63,9 @@ class TradeStudy:
 
 
 STUDIES = {s.case: s for s in [
-    TradeStudy("hydrostatic", {"fluid.dx": [0.02, 0.01, 0.005]}, ("bottom.p:mean",), 0.01,
-               "the mean pressure on a 0.1 m patch of the bottom over 3 s against rho g H (the case: every "
+    TradeStudy("hydrostatic", {"fluid.dx": [0.02, 0.01, 0.005]}, ("bottom.p:mean", "side.p:mean"), 0.01,
+               "the mean pressure over 3 s on a 0.1 m patch of the bottom against rho g H (the column's weight) "
+               "and on a 0.04 m patch of the side wall at mid-depth against rho g H / 2 (the case: every "
                "particle's pressure against rho g (H - z), RMS)"),
     TradeStudy("sloshing-frequency", {"fluid.dx": [0.05, 0.0333, 0.025], "fluid.c0_factor": [10, 20]},
                ("left_wall.p:period", "gauge1.eta:period"), 0.02,

@@ -1,0 +1,76 @@
+"""Linear waves and line breaking in scenes (issue 18): the analytic fluid's waves from
+``waves = LinearWaves(...)``, break loads and ``moorings.release_broken``, in TOML and Python."""
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+from cosim.scene import Analytic, Box, Line, LinearWaves, Moorings, Probes, Scene, World
+from cosim.scene.build import build
+
+CHAIN = dict(length=25.0, weight=50.0, EA=5e7)
+
+
+def moored(break_load=None, release=False, dim=2, duration=12.0):
+    """A 2 x 1 m box on two chains in 6 s waves, 1.5 m high, 10 m deep (3-D: a 2 x 2 x 1 m
+    box, the waves at 0 deg)."""
+    size, pos = ((2.0, 1.0), (0.0, 0.0)) if dim == 2 else ((2.0, 2.0, 1.0), (0.0, 0.0, 0.0))
+    fl = ({"left": (-1.0, -0.5), "right": (1.0, -0.5)} if dim == 2 else
+          {"left": (-1.0, 0.0, -0.5), "right": (1.0, 0.0, -0.5)})
+    anchors = [(-20.0, -10.0), (20.0, -10.0)] if dim == 2 else [(-20.0, 0.0, -10.0), (20.0, 0.0, -10.0)]
+    damping = [800.0, 800.0, 1500.0, 1500.0, 1500.0, 1500.0]
+    return Scene(
+        name="waves_break",
+        world=World(dim=dim, duration=duration, sample_every=0.1),
+        fluid=Analytic(rho=1025.0, linear_damping={"box": damping},
+                       added_mass={"box": [500.0, 1000.0, 100.0] if dim == 2 else [500.0, 500.0, 1000.0] + [100.0] * 3}),
+        waves=LinearWaves(height=1.5, period=6.0, depth=10.0, ramp=1.0),
+        bodies=[Box("box", size=size, pos=pos, density=500.0, fairleads=fl)],
+        moorings=Moorings(lines=[Line("box.left", anchor=anchors[0], name="left", break_load=break_load, **CHAIN),
+                                 Line("box.right", anchor=anchors[1], name="right", **CHAIN)],
+                          release_broken=release),
+        probes=Probes(loads=False),
+    )
+
+
+def test_scene_fields_round_trip_through_toml(tmp_path):
+    s = moored(800.0, release=True)
+    text = s.to_toml()
+    assert 'kind = "linear"' in text and "break_load = 800.0" in text and "release_broken = true" in text
+    s.to_toml(tmp_path / "s.toml")
+    assert Scene.from_toml(tmp_path / "s.toml") == s
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_the_scene_gives_the_analytic_fluid_its_waves(tmp_path, dim):
+    s = moored(dim=dim)
+    b = build(s, tmp_path)
+    w = b.fluid.waves
+    assert (w.H, w.T, w.depth, w.direction, w.ramp, w.g) == (1.5, 6.0, 10.0, 0.0, 6.0, s.world.gravity)
+    assert w.k == pytest.approx((2 * math.pi / 6.0) ** 2 / 9.81 / math.tanh(w.k * 10.0), rel=1e-12)
+    assert b.mooring.n_lines == 2 and not hasattr(b.mooring, "events")  # no break load: the model itself
+    b.coupler.run(1.0)
+
+
+def test_a_break_is_reported_in_the_summary_and_the_run_goes_on(tmp_path):
+    r = moored(800.0).run(tmp_path / "out")
+    heave = r["box.heave"][r.t > 6.0]
+    assert 0.5 < np.ptp(heave) / 1.5 < 1.2  # the box rides the waves (2 m wide in a 46 m wave)
+    ev = r.summary["line_breaks"]
+    assert len(ev) == 1 and ev[0]["line"] == "left" and ev[0]["released"] is False
+    assert ev[0]["tension_N"] > 800.0 and 0 < ev[0]["t_s"] < 12.0
+    assert json.loads((tmp_path / "out" / "summary.json").read_text())["line_breaks"] == ev
+    t = r["left.tension"]
+    assert t[r.t > ev[0]["t_s"]].max() > 0  # it holds: report only
+    assert r.t[np.argmax(t > 800.0)] >= ev[0]["t_s"] - 0.1  # no sample saw it past the load earlier
+
+
+def test_a_released_line_stops_pulling(tmp_path):
+    r = moored(800.0, release=True).run(tmp_path / "out")
+    ev = r.summary["line_breaks"][0]
+    assert ev["released"] is True and ev["line"] == "left"
+    after = r.t >= ev["t_s"]
+    assert np.all(r["left.tension"][after] == 0.0) and r["right.tension"][after].min() > 0
+    assert r["box.surge"][-1] > 1.0  # the right line pulls the box away
