@@ -94,11 +94,26 @@ def test_a_released_line_stops_acting():
     assert np.all(got[first:, 1] == 0.0)  # the left line no longer pulls
     assert got[-1, 3] > ref[-1, 3] + 1.0  # the right line drags the box away to the right
     assert c.ledger.arrays()["mooring_force"][-1, 0, 0] > 0
-    # a checkpoint keeps the break
+    # a checkpoint keeps the break, and the run goes on from it bit for bit
     state = c.save_state()
     c2, m2, b2 = moored_box((load, None), release=True)
     c2.load_state(state)
     assert m2.released_lines() == [0] and m2.events == m.events
+    np.testing.assert_array_equal(run(c, m, b, 14.0), run(c2, m2, b2, 14.0))
+
+
+def test_a_released_tether_stays_released_after_a_checkpoint():
+    net = (RHO - 500.0) * G * 1.0
+    c, m, b = tension_leg(0.8 * net, release=True)
+    c.run(1.0)
+    assert m.released_lines() == [0]
+    state = c.save_state()
+    c2, m2, b2 = tension_leg(0.8 * net, release=True)
+    c2.load_state(state)  # the tether is model data: the coupler releases it again
+    c.run(3.0)
+    c2.run(3.0)
+    np.testing.assert_allclose(b.kinematics().com, b2.kinematics().com, rtol=1e-12, atol=1e-12)
+    assert b2.kinematics().com[0, 2] > -1.0
 
 
 def tension_leg(break_load=None, release=False):
