@@ -276,60 +276,17 @@ def run_westergaard(dx: float, c0: float = 1430.0, dim: int = 2, periods_skip: i
 def westergaard(quick: bool) -> dict:
     """001_14936b82710365b2.txt §3.1 (Fig. 5): see :func:`run_westergaard` for set-up and
     extraction. c0 = 1430 m/s (the paper's c_p); tank walls carrying the fluid's pressure
-    (``walls="adami"``, see below); Wendland, h = sqrt(2) dx, alpha = 0.01, Fourtakas
-    delta = 0.1, CFL 0.2 (the defaults); 2 periods skipped, 3 fitted (quick: 1 and 2),
-    40 samples a period. The first table is the plain dynamic walls'.
+    (``walls="adami"``: fluid.wall_density, with the wall acceleration of Adami et al.
+    2012 Eq. 27); Wendland, h = sqrt(2) dx, alpha = 0.01, Fourtakas delta = 0.1, CFL 0.2
+    (the defaults); 2 periods skipped, 3 fitted (quick: 1 and 2), 40 samples a period.
 
     Reference: the exact incompressible wall pressure of this 3 m tank
     (:func:`westergaard_series`; base k_p = 0.728, Westergaard's semi-infinite 0.742, the
     7/8 parabola 0.875); the compressible series with c0 = 1430 m/s differs from it by
     0.4 %.
 
-    Measured (NUMBA_NUM_THREADS=1, `cosim validate westergaard`; RMS of k_p over the
-    wall rows below the surface, vs exact):
-
-    ======  ==========  =====  ==========  ==========  ==========  =========
-    dx [m]  particles   steps  raw         Eq. 15      Eq. 15 face base k_p
-    ======  ==========  =====  ==========  ==========  ==========  =========
-    0.10    498         4560   0.252       0.095       0.049       0.689
-    0.05    1578        15200  0.193       0.052       0.024       0.718
-    0.025   5538        30400  0.173       0.030       0.0135      0.718
-    ======  ==========  =====  ==========  ==========  ==========  =========
-
-    (dx = 0.10 m: 1 + 2 periods, the quick run; base k_p: "face", exact 0.728.) 3-D:
-    the case ``westergaard-3d`` (at dx = 0.1 m raw 0.225, Eq. 15 0.086, face 0.047, as in
-    2-D: the flow is uniform across). The face error halves with dx (first order); the
-    full run (dx = 0.025 m) meets 0.02.
-    The paper's own numbers (dx = 0.05 m, against the 7/8 parabola): 0.0411 raw, 0.02
-    with Eq. 15; ours against the parabola at dx = 0.05 m: 0.153 raw, 0.102 Eq. 15, 0.065
-    face (the parabola is 0.15 above the exact series at the base, so an accurate model
-    cannot come close to it there).
-
-    The speed of sound (dx = 0.05 m, benchmarks/sloshing_trade.py): c0 = 1430, 700, 350
-    m/s (4H/c0 = 0.09, 0.19, 0.38 Tp) give face RMS 0.024, 0.019, 0.048 against the
-    incompressible series and 0.025, 0.020, 0.019 against the compressible series of the
-    same c0: the SPH follows the compressible solution, so c0 may drop to ~700 m/s (half
-    the steps) while 4H/c0 < Tp/5 keeps the compressible excess below 2 %.
-
-    What limits the error: (1) plain Eq. 15 reports the pressure at the mean position of
-    the fluid it averages, ~1.1 dx into the water, where the impulsive pressure is lower
-    by ``rho a0 x``: k_p low by ~1.1 dx/H everywhere (0.055 at dx = 0.05 m). Carrying each
-    fluid pressure to the wall face with the exact normal momentum balance of a rigid
-    wall (:func:`face_pressure`) removes it. (2) The two rows next to the free surface
-    read high (k_p 0.17 vs 0.08 at depth dx/2 for dx = 0.05 m): the SPH free surface,
-    where kernel truncation stands in for p = 0, holds p_d away from zero over ~dx; it
-    dominates the remaining RMS and shrinks with dx. (3) The raw pressure of a dynamic
-    boundary particle is its own EOS pressure, which must exceed the face pressure to
-    hold the fluid off (the boundary particles' density is also clamped at rho0, so it
-    never reads suction): 25 % high at depth, so the raw target (the paper's 0.041 with
-    its MLS re-initialisation) is not met by this boundary model.
-
-    The tank walls' pressure carried from the fluid (``FluidConfig(walls="adami")``,
-    fluid.wall_density, with the wall acceleration of Adami et al. 2012 Eq. 27) removes
-    (3): the wall particle then holds the fluid's pressure at its position.
-
-    Measured trade (the case's set-up: ``run_westergaard(dx, walls="adami")``, quick
-    periods at 0.10 m; RMS of k_p over the wall rows below the surface, vs exact):
+    Measured trade (``run_westergaard(dx, walls="adami")``, quick periods at 0.10 m; RMS
+    of k_p over the wall rows below the surface, vs exact; NUMBA_NUM_THREADS=1):
 
     ======  ==========  =====  ==========  ==========  ==========  =========
     dx [m]  particles   steps  raw         Eq. 15      Eq. 15 face base k_p
@@ -338,17 +295,22 @@ def westergaard(quick: bool) -> dict:
     0.025   5538        30400  0.018       0.0165      0.009       0.737
     ======  ==========  =====  ==========  ==========  ==========  =========
 
-    (and at dx = 0.05 m, benchmarks/sloshing_trade.py: raw 0.031, Eq. 15 0.038, face 0.017;
-    c0 = 700 / 350 m/s there: raw 0.040 / 0.078, face 0.021 / 0.056.)
+    (and at dx = 0.05 m, benchmarks/sloshing_trade.py: raw 0.031, Eq. 15 0.038, face
+    0.017; c0 = 700 / 350 m/s there: raw 0.040 / 0.078, face 0.021 / 0.056: the SPH
+    follows the compressible solution of its own c0, so c0 may drop to ~700 m/s while
+    4H/c0 < Tp/5.) Both targets are met from dx = 0.05 m on; the full run (0.025 m)
+    takes 91 s.
 
-    So both targets are
-    met from dx = 0.05 m on (the full run, 0.025 m: 91 s; 72 s in the trade run), and the
-    case runs with
-    ``walls="adami"`` (session 4; before, it kept the solver's default walls, which fail
-    the raw target at every dx above). :data:`fluid.solver.WAVES_2D` (h = 2 dx as well)
-    gives raw / face 0.081 / 0.073 at dx = 0.10 m, 0.035 / 0.030 at 0.05 m and 0.016 /
-    0.013 at 0.025 m (73 s, 21 600 steps): also within both targets at the full
-    resolution, the face pressure less close than with the shorter support.
+    What limits the error: (1) plain Eq. 15 reports the pressure at the mean position of
+    the fluid it averages, ~1.1 dx into the water, where the impulsive pressure is lower
+    by ``rho a0 x``; carrying each fluid pressure to the wall face with the normal
+    momentum balance of a rigid wall (:func:`face_pressure`) removes it. (2) The two rows
+    next to the free surface read high: the SPH free surface holds p_d away from zero over
+    ~dx; it dominates the remaining RMS and shrinks with dx. The paper's own numbers
+    (dx = 0.05 m, against the 7/8 parabola): 0.0411 raw, 0.02 with Eq. 15; the parabola
+    is 0.15 above the exact series at the base, so an accurate model cannot come close to
+    it there. What was tried before (the default walls, whose raw pressure misses the
+    target at every dx; the wave set-up): docs/validation/westergaard_history.md.
     """
     out = (run_westergaard(0.1, periods_skip=1, periods_fit=2, walls="adami") if quick
            else run_westergaard(0.025, walls="adami"))
