@@ -319,6 +319,8 @@ class AnalyticFluid:
         self.volume = np.bincount(self._owner, self._w, minlength=self.n_bodies)
         self._membership = np.zeros((self.n_bodies, len(self._owner)))  # 1 where a cell belongs to a body
         self._membership[self._owner, np.arange(len(self._owner))] = 1.0
+        edges = np.searchsorted(self._owner, np.arange(self.n_bodies + 1))  # each body's cells are contiguous
+        self._cells_of = [slice(a, b) for a, b in zip(edges[:-1], edges[1:])]
         self._lin = np.zeros((self.n_bodies, 6))
         self._quad = np.zeros((self.n_bodies, 6))
         for table, arr in ((self._coeffs["linear_damping"], self._lin), (self._coeffs["quadratic_damping"], self._quad)):
@@ -372,9 +374,11 @@ class AnalyticFluid:
 
     def _update(self) -> None:
         kin = self._kin
-        R = kin.rotation[self._owner]
-        p_w = kin.origin[self._owner] + np.einsum("nij,nj->ni", R, self._pts)
-        height = np.abs(np.einsum("nj,njk->nk", R[:, 2, :], self._cell_axes)).sum(axis=1)  # vertical cell extent
+        p_w, height = np.empty_like(self._pts), np.empty(len(self._pts))
+        for b, cells in enumerate(self._cells_of):  # a rigid motion per body
+            R = kin.rotation[b]
+            p_w[cells] = kin.origin[b] + self._pts[cells] @ R.T
+            height[cells] = np.abs(np.einsum("j,njk->nk", R[2], self._cell_axes[cells])).sum(axis=1)  # vertical
         surface = self.eta if self.waves is None else self.eta + self.waves.elevation(p_w, self.t)
         frac = np.clip((surface - p_w[:, 2]) / height + 0.5, 0.0, 1.0)  # exact for cells level with the surface
         wv = self._w * frac

@@ -390,11 +390,13 @@ def _check_probes(s, dim, mj):
                              f"{mj['coupled']} (or \"all\"); name one of them, or add it to bodies[0].bodies")
         if n != "all" and n not in names:
             raise SceneError(f"probes.motion[{i}]", f"no body named {n!r}; bodies: {sorted(names)} (or \"all\")")
-    fluid_probes = p.gauges or p.pressure or p.energy
+    linear = isinstance(s.waves, LinearWaves)  # the analytic fluid's gauges read its linear waves
+    fluid_probes = (p.gauges and not linear) or p.pressure or p.energy
     if fluid_probes and not isinstance(s.fluid, SPH):
-        which = "gauges" if p.gauges else "pressure" if p.pressure else "energy"
+        which = "gauges" if p.gauges and not linear else "pressure" if p.pressure else "energy"
         raise SceneError(f"probes.{which}", "wave gauges, pressure patches and the fluid's energy need the SPH "
-                         "fluid (fluid.model = \"sph\")")
+                         "fluid (fluid.model = \"sph\")" + ("; the analytic fluid's gauges read its linear waves "
+                                                             "(waves.kind = \"linear\")" if which == "gauges" else ""))
     for i, g in enumerate(p.gauges):
         n = 1 if isinstance(g, float) else len(g)
         if n != dim - 1:

@@ -10,7 +10,8 @@ that become one HDF5 series, one CSV and one plot each:
   not) and ``.tether`` [N], the load a taut inextensible catenary line carries as a length
   constraint;
 - ``loads``: per body, the fluid's and the moorings' force [N] over the last step;
-- ``gauges``: free-surface elevation above the still water [m] at each gauge;
+- ``gauges``: free-surface elevation above the still water [m] at each gauge (the SPH
+  fluid's, or the analytic fluid's linear waves);
 - ``pressure``: each wall patch's pressure [Pa];
 - ``energy``: the SPH fluid's kinetic and potential energy [J] (2-D: per metre, J/m).
 
@@ -123,6 +124,16 @@ def groups(scene, built) -> list[Group]:
             return surface_elevation(sph, w[:, 0] if dim == 2 else w[:, :2]) - w[:, -1]
 
         out.append(Group("gauges", [f"gauge{i + 1}.eta" for i in range(len(g))], ["m"] * len(g), gauges))
+    waves = getattr(built.fluid, "waves", None) if sph is None else None  # the analytic fluid's linear waves
+    if waves is not None and p.gauges:
+        g = np.array([x for x in p.gauges], float).reshape(len(p.gauges), -1)
+        at = np.column_stack([g, np.zeros(len(g))]) if dim == 2 else g  # (x, y)
+        c = built.coupler
+
+        def wave_gauges():
+            return waves.elevation(at, c.t)
+
+        out.append(Group("gauges", [f"gauge{i + 1}.eta" for i in range(len(g))], ["m"] * len(g), wave_gauges))
     if sph is not None and p.pressure:
         from fluid.probes import wall_patch_pressure
 
