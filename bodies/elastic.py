@@ -53,11 +53,14 @@ N = 16, above the SPH step.
 
 Limits: the chain is inextensible (the plate's first axial mode, ``sqrt(E / rho) / (4 L)``
 = 62.5 Hz at E = 1 MPa, lies between bending modes 2 and 3 and is left out: MuJoCo's
-flex shows it); its boundary particles ride rigidly on their links, so at a joint bent
-by ``dtheta`` the outer face opens by about ``h dtheta / 2`` (seed 002's 48 mm tip
-deflection at N = 16: about 0.9 mm at the foot, 0.36 of a 2.5 mm spacing); a plate
-thinner than ``dx`` gets one column of particles (the thin-wall treatment is the
-coupling step's).
+flex shows it). Boundary particles (:class:`ElasticBody`) blend the frames of the two
+links nearest them (hat weights on nodes ``k l``, :meth:`BeamModel.blend`), so the
+deformed surface stays closed at the joints (on rigid links alone the outer face would
+open by about ``h dtheta / 2`` at a joint bent by ``dtheta``: 0.9 mm at the foot for
+seed 002's 48 mm tip deflection at N = 16, 0.36 of a 2.5 mm spacing); the force on each
+is split between the two links with the same weights. A plate thinner than ``dx`` gets
+one column of particles (the thin-wall treatment is the fluid's:
+:mod:`cosim.sph_fluid`).
 
 Units: SI (m, kg, s, Pa, N). 2-D scenes live in the x-z plane: every joint turns
 about y or slides along x, so the beam stays in the plane by construction.
@@ -68,6 +71,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numba
 import numpy as np
 
 from cosim.errors import InputError
@@ -227,6 +231,50 @@ class BeamModel:
         p_b = p.copy()
         p_b[:, 2] -= bounds[owner, 0]  # each link's frame sits at its lower end
         return p_b, owner
+
+    def blend(self, s):
+        """The two links whose frames carry a point at arc length ``s`` [m] from the clamp,
+        and the weight of the first: ``(a, b = a + 1, w)``. The weights are the linear
+        (hat) shape functions of nodes at ``s_k = k l``, ``k = 0..N`` (the welded foot
+        link's lower end, the centres of links 1..N-1, the tip link's upper end), so a
+        point between nodes ``k`` and ``k + 1`` moves ``w = (s_{k+1} - s) / l`` with link
+        ``k`` and ``1 - w`` with link ``k + 1``: the deformed surface is continuous across
+        every joint (rigid links alone leave the outer face open by about ``h dtheta / 2``
+        at a joint bent by ``dtheta``), and a point on a node rides on its link alone."""
+        s = np.asarray(s, float)
+        l = self.length / self.n_elements
+        a = np.clip(np.floor(s / l).astype(np.int64), 0, self.n_elements - 1)
+        w = np.clip((a + 1) - s / l, 0.0, 1.0)
+        return a, a + 1, w
+
+    def blended_particles(self, dx: float, layers: int, dim: int = 3):
+        """The boundary particles of :meth:`boundary_particles`, each carried by two
+        links (:meth:`blend`): returns ``(plate, a, b, w, p_a, p_b)``, the undeformed
+        positions in the plate's frame (x across, y along the width, z = s from the
+        clamp) [m] ``(n, 3)``, the link numbers ``a``, ``b`` and the weight ``w`` of
+        ``a``, and the positions in each link's frame [m] ``(n, 3)`` each."""
+        pts, owner = self.boundary_particles(dx, layers, dim)
+        start = self.link_bounds[:, 0]
+        plate = pts.copy()
+        plate[:, 2] += start[owner]
+        a, b, w = self.blend(plate[:, 2])
+        p_a, p_b = plate.copy(), plate.copy()
+        p_a[:, 2] -= start[a]
+        p_b[:, 2] -= start[b]
+        return plate, a, b, w, p_a, p_b
+
+    def ghost_offsets(self, plate, dim: int = 3) -> np.ndarray:
+        """Vectors [m] ``(n, 3)``, plate frame, from particles at ``plate`` (undeformed,
+        plate frame) to their mDBC ghost nodes: the mirror images across the nearest of
+        the faces the fluid touches (the two sides, the top, in 3-D the two edges; not the
+        foot, which stands on the floor: :func:`bodies.sampling.ghost_offsets` on the
+        plate as one box reaching far below the floor)."""
+        from bodies.sampling import GeomShape, ghost_offsets
+
+        below = 10.0 * self.length
+        box = GeomShape("box", np.array([self.thickness / 2, self.width / 2, (self.length + below) / 2]),
+                        np.array([0.0, 0.0, (self.length - below) / 2]), np.eye(3))
+        return ghost_offsets([box], plate, dim)
 
 
 def elastic_beam(name: str, length: float, thickness: float, *, E: float, rho: float, width: float = 1.0,
@@ -392,18 +440,62 @@ def modal_frequencies(model, data) -> np.ndarray:
     return np.sqrt(np.clip(w2, 0.0, None)) / (2.0 * math.pi)
 
 
+@numba.njit(cache=True)
+def _place_blended(a, b, w, p_a, p_b, origin, R, com, V, Om, x, u):
+    """``x_i = w (o_a + R_a p_a) + (1 - w) (o_b + R_b p_b)`` and the same blend of the
+    two links' rigid-body velocities ``V + Omega x (x_k - com)`` at their own points."""
+    for i in range(a.shape[0]):
+        for side in range(2):
+            k = a[i] if side == 0 else b[i]
+            wt = w[i] if side == 0 else 1.0 - w[i]
+            p = p_a[i] if side == 0 else p_b[i]
+            q0 = origin[k, 0] + R[k, 0, 0] * p[0] + R[k, 0, 1] * p[1] + R[k, 0, 2] * p[2]
+            q1 = origin[k, 1] + R[k, 1, 0] * p[0] + R[k, 1, 1] * p[1] + R[k, 1, 2] * p[2]
+            q2 = origin[k, 2] + R[k, 2, 0] * p[0] + R[k, 2, 1] * p[1] + R[k, 2, 2] * p[2]
+            r0, r1, r2 = q0 - com[k, 0], q1 - com[k, 1], q2 - com[k, 2]
+            x[i, 0] += wt * q0
+            x[i, 1] += wt * q1
+            x[i, 2] += wt * q2
+            u[i, 0] += wt * (V[k, 0] + Om[k, 1] * r2 - Om[k, 2] * r1)
+            u[i, 1] += wt * (V[k, 1] + Om[k, 2] * r0 - Om[k, 0] * r2)
+            u[i, 2] += wt * (V[k, 2] + Om[k, 0] * r1 - Om[k, 1] * r0)
+
+
+@numba.njit(cache=True)
+def _split_wrenches(a, b, w, F, M, com, F_out, T_out):
+    """Each particle's force ``F_i`` and its moment about the world origin ``M_i``
+    (``x_i x F_i``, or its time average) go to links ``a`` and ``b`` with weights ``w`` and
+    ``1 - w``: ``F_k += w F_i``, ``T_k += w (M_i - com_k x F_i)`` (about the link's centre
+    of mass). Sum over links of ``F_k`` and of ``T_k + com_k x F_k`` = the particles' sums."""
+    for i in range(a.shape[0]):
+        for side in range(2):
+            k = a[i] if side == 0 else b[i]
+            wt = w[i] if side == 0 else 1.0 - w[i]
+            f0, f1, f2 = wt * F[i, 0], wt * F[i, 1], wt * F[i, 2]
+            F_out[k, 0] += f0
+            F_out[k, 1] += f1
+            F_out[k, 2] += f2
+            T_out[k, 0] += wt * M[i, 0] - (com[k, 1] * f2 - com[k, 2] * f1)
+            T_out[k, 1] += wt * M[i, 1] - (com[k, 2] * f0 - com[k, 0] * f2)
+            T_out[k, 2] += wt * M[i, 2] - (com[k, 0] * f1 - com[k, 1] * f0)
+
+
 class ElasticBody:
     """A beam's boundary particles and loads inside a :class:`MujocoBodies` participant
-    whose coupled bodies include the beam's links (``bodies=[..., *beam.link_names]``).
+    whose coupled bodies include the beam's links (``bodies=[..., *beam.link_names]``,
+    the welded foot link too).
 
-    Particles (:meth:`BeamModel.boundary_particles`) are stored in their link's frame
-    and placed every step from the link's pose, ``x = origin + R p``, ``u = V + Omega x
-    (x - com)`` (:func:`bodies.sampling.place`, seed 004 Eq. 13), so they never drift;
-    the forces on them go back to the links that carry them as one wrench per link
-    (:func:`link_wrenches`), which is the same generalised force as applying each force
-    at its particle (MuJoCo applies ``xfrc_applied`` at the centre of mass by
-    ``mj_applyFT``, linear in the wrench). The welded foot link's share goes into the
-    clamp."""
+    Particles (:meth:`BeamModel.blended_particles`) are stored in the frames of the two
+    links that carry them and placed every step as the blend of both rigid placements
+    (:meth:`BeamModel.blend`), ``x = w (o_a + R_a p_a) + (1 - w) (o_b + R_b p_b)``, with
+    the same blend of the links' rigid-body velocities ``V + Omega x (x_k - com)`` (seed
+    004 Eq. 13 on each link), so they never drift and the surface stays closed at the
+    joints. The force on a particle is split with the same weights (:func:`_split_wrenches`):
+    link ``a`` gets ``w f`` and link ``b`` ``(1 - w) f``, both acting at the particle, one
+    wrench per link about its centre of mass; the sums of force and of moment about any
+    point are the particles' (momentum is exchanged exactly), and the power ``f . u`` the
+    fluid puts in is what the links take (the velocity is the same blend). The welded
+    foot link's share goes into the clamp."""
 
     def __init__(self, beam: BeamModel, bodies, dx: float, layers: int, dim: int = 3):
         names = list(bodies.body_names)
@@ -413,32 +505,62 @@ class ElasticBody:
                              f"{missing[:3]}{'...' if len(missing) > 3 else ''}; build it with "
                              f"bodies=[..., *beam.link_names]")
         self.beam, self.bodies = beam, bodies
+        self.dim = dim
         self.link_index = np.array([names.index(n) for n in beam.link_names])  #: coupled-body index per link
-        self.points_b, self.link = beam.boundary_particles(dx, layers, dim)  #: link frame [m]; link number
-        self.owner = self.link_index[self.link]  #: coupled-body index of each particle
+        #: undeformed positions in the plate frame [m] (x across, y along the width, z from the clamp)
+        self.plate, a, b, self.w, self.p_a, self.p_b = beam.blended_particles(dx, layers, dim)
+        #: coupled-body indices of the two links that carry each particle; ``w``: the weight of ``a``
+        self.a, self.b = self.link_index[a], self.link_index[b]
+        self.owner = np.where(self.w >= 0.5, self.a, self.b)  #: the link that carries most of each particle
+        self.n = len(self.plate)
         self._sites = {s: bodies.site(f"{beam.name}_{s}")[0] for s in ("tip", "corner")}
         self._site0 = {s: bodies.site_positions([i])[0].copy() for s, i in self._sites.items()}
 
-    def place(self):
-        """World positions [m] and velocities [m/s] of the particles, ``(n, 3)`` each."""
-        from bodies.sampling import place
+    def place(self, kin=None):
+        """World positions [m] and velocities [m/s] of the particles, ``(n, 3)`` each, for
+        the links' kinematics ``kin`` (default: the bodies' now)."""
+        kin = self.bodies.kinematics() if kin is None else kin
+        x, u = np.zeros((self.n, 3)), np.zeros((self.n, 3))
+        _place_blended(self.a, self.b, self.w, self.p_a, self.p_b, kin.origin, kin.rotation, kin.com,
+                       kin.velocity, kin.omega, x, u)
+        return x, u
 
-        return place(self.points_b, self.owner, self.bodies.kinematics())
+    def rotate(self, v_plate, kin=None) -> np.ndarray:
+        """Vectors given in the plate frame ``(n, 3)`` (e.g. ghost-node offsets), turned
+        with the particles' blended frames into the world frame."""
+        kin = self.bodies.kinematics() if kin is None else kin
+        w = self.w[:, None]
+        return (w * np.einsum("nij,nj->ni", kin.rotation[self.a], v_plate)
+                + (1.0 - w) * np.einsum("nij,nj->ni", kin.rotation[self.b], v_plate))
+
+    def split(self, forces_w, moments_w, com_w):
+        """Link wrenches from particle loads: forces [N] ``(n, 3)`` and their moments about
+        the world origin [N m] ``(n, 3)`` (world frame; time averages over a step are fine,
+        which is what a fluid exchanged), about the centres of mass ``com_w`` ``(n_bodies,
+        3)``; returns force and torque ``(n_bodies, 3)`` each, zero rows for the bodies
+        that are not this beam's."""
+        n_b = self.bodies.n_bodies
+        F, T = np.zeros((n_b, 3)), np.zeros((n_b, 3))
+        _split_wrenches(self.a, self.b, self.w, np.ascontiguousarray(forces_w, dtype=np.float64),
+                        np.ascontiguousarray(moments_w, dtype=np.float64),
+                        np.ascontiguousarray(com_w, dtype=np.float64), F, T)
+        return F, T
 
     def wrenches(self, forces_w, points_w=None):
         """The force [N] and torque about the centre of mass [N m] of every coupled body,
         ``(n_bodies, 3)`` each, from the forces on this beam's particles ``(n, 3)``
-        (world frame; at ``points_w``, by default where :meth:`place` puts them now).
-        Zero rows for the bodies that are not this beam's: add the arrays of several
-        bodies before :meth:`MujocoBodies.set_wrenches`."""
+        (world frame; at ``points_w``, by default where :meth:`place` puts them now),
+        split between the two links that carry each (:meth:`split`). Zero rows for the
+        bodies that are not this beam's: add the arrays of several bodies before
+        :meth:`MujocoBodies.set_wrenches`."""
         kin = self.bodies.kinematics()
         if points_w is None:
-            points_w = self.place()[0]
+            points_w = self.place(kin)[0]
         f = np.asarray(forces_w, float)
-        if f.shape != self.points_b.shape:
+        if f.shape != (self.n, 3):
             raise InputError(f"elastic beam '{self.beam.name}': give one force per particle, shape "
-                             f"{self.points_b.shape}, got {f.shape}")
-        return link_wrenches(points_w, f, self.owner, kin.com, self.bodies.n_bodies)
+                             f"{(self.n, 3)}, got {f.shape}")
+        return self.split(f, np.cross(np.asarray(points_w, float), f), kin.com)
 
     def displacement(self, site: str = "corner") -> np.ndarray:
         """Displacement [m] ``(3,)`` from the start of the ``"tip"`` (top centre) or

@@ -77,10 +77,19 @@ class SPHFluid:
         Prescribed motions of wall groups, ``{group: motion}`` (a wavemaker's paddle, a
         shaking tank; see ``fluid.solver.Fluid.prescribe_motion``), set when the fluid is
         built at attachment.
+    elastic:
+        Elastic cantilevers among the bodies (``bodies.elastic.BeamModel``, their links
+        coupled: ``bodies=[..., *beam.link_names]``). Their boundary particles are laid over
+        the whole plate and follow its deformed surface (``bodies.elastic.ElasticBody``:
+        each particle blends the frames of the two links that carry it); each particle is
+        its own boundary group, so that the impulse the fluid exchanged with it over an
+        advance, and its moment about the origin, are known and split between its two
+        links with the blending weights (momentum exchanged exactly, as for rigid bodies).
     """
 
     def __init__(self, config: FluidConfig, fluid_points, walls=(), *, z_surface: float | None = None,
-                 body_layers: int | None = None, boundary: str = "mdbc", motions: dict | None = None):
+                 body_layers: int | None = None, boundary: str = "mdbc", motions: dict | None = None,
+                 elastic=()):
         if boundary not in ("mdbc", "dbc"):
             raise InputError(f"SPH fluid: boundary={boundary!r}; choose 'mdbc' or 'dbc'")
         self.boundary = boundary
@@ -94,6 +103,8 @@ class SPHFluid:
         self.removed_overlap = 0
         self.displaced_volume = 0.0
         self.motions = dict(motions or {})
+        self.elastic_beams = list(elastic)
+        self.elastic = []  #: bodies.elastic.ElasticBody per beam, made at attachment
 
     # -- coupling ----------------------------------------------------------------
     #: fewest boundary particles a body's geom may have across any of its axes [-]. With
@@ -114,8 +125,11 @@ class SPHFluid:
         size, dx and the fix."""
         dx, dim = self.config.dx, self.config.dim
         names = getattr(bodies, "body_names", None)
+        links = {n for beam in self.elastic_beams for n in beam.link_names}
         for k, shapes in enumerate(bodies.geoms()):
             body = names[k] if names is not None else str(k)
+            if body in links:  # an elastic beam's particles are laid over the whole plate
+                continue
             for i, g in enumerate(shapes):
                 axes, extent, n = particles_across(g, dx, dim)
                 j = int(np.argmin(n))
@@ -133,10 +147,16 @@ class SPHFluid:
         self.check_body_resolution(bodies)
         kin = bodies.kinematics()
         pb, owner = bodies.boundary_particles(c.dx, self.body_layers, c.dim)
+        self._attach_elastic(bodies)
+        rigid = ~np.isin(owner, self._elastic_rows)  # the links' own geom samples give way to the plate's
+        pb, owner = pb[rigid], owner[rigid]
         x, _ = place(pb, owner, kin)
         self._g0 = 1 + max([int(g) for _, _, g in self._walls], default=-1)
         pts = self._to_dim(x)
         body_sets = [(pts[owner == k], Kind.BODY, self._g0 + k) for k in range(bodies.n_bodies)]
+        g_e = self._g0 + bodies.n_bodies  # each beam one group here, one per particle after assembly
+        for j, e in enumerate(self.elastic):
+            body_sets.append((self._to_dim(e.place(kin)[0]), Kind.BODY, g_e + j))
         # the bodies' boundary particles fill only a band inside their surface: fluid
         # inside a body is found from its geoms, not from the distance to particles
         inside = self._inside_bodies(bodies.geoms(), kin)
@@ -153,6 +173,15 @@ class SPHFluid:
         for k in range(bodies.n_bodies):
             self._ids[owner == k] = ps.ids[ps.group == self._g0 + k]
         self._pb, self._owner = pb, owner
+        self._elastic_ids, self._elastic_groups = [], []
+        g_next = g_e + len(self.elastic)
+        for j, e in enumerate(self.elastic):
+            rows = np.flatnonzero(ps.group == g_e + j)
+            rows = rows[np.argsort(ps.ids[rows])]  # assembly order: the beam's particle order
+            ps.group[rows] = g_next + np.arange(len(rows))
+            self._elastic_ids.append(ps.ids[rows].copy())
+            self._elastic_groups.append(g_next + np.arange(len(rows)))
+            g_next += len(rows)
         if self.z_surface is not None:
             set_hydrostatic(ps, self.z_surface, c.rho0, c.speed_of_sound, c.gamma, c.g)
         self.fluid = Fluid(c, ps)
@@ -165,10 +194,40 @@ class SPHFluid:
             self._ghost_b = np.zeros_like(pb)
             for k in range(bodies.n_bodies):
                 self._ghost_b[owner == k] = ghost_offsets(geoms[k], pb[owner == k], c.dim)
+            self._elastic_ghost = [e.beam.ghost_offsets(e.plate, c.dim) for e in self.elastic]
             self._mdbc = MDBC(c.dim, c.h, c.rho0, c.kernel, int(ps.ids.max()) + 1)
             self._set_ghosts(kin)
             walls = self.fluid.boundary_correction  # the tank walls' own (FluidConfig.walls), if any
             self.fluid.boundary_correction = self._mdbc if walls is None else _Both(walls, self._mdbc)
+
+    def _attach_elastic(self, bodies) -> None:
+        """One :class:`bodies.elastic.ElasticBody` per elastic beam; the coupled-body rows of
+        their links (which take no geom-sampled particles)."""
+        from bodies.elastic import ElasticBody
+
+        c = self.config
+        self.elastic = [ElasticBody(beam, bodies, c.dx, self.body_layers, c.dim) for beam in self.elastic_beams]
+        rows = [e.link_index for e in self.elastic]
+        self._elastic_rows = np.concatenate(rows) if rows else np.zeros(0, np.int64)
+        self._kin = None  # the kinematics the particles were last placed from
+
+    def _elastic_wrenches(self, F, M):
+        """The links' loads from the per-particle groups' (F (G, dim), M): each particle's
+        force and moment about the origin (its group's moment point), split between its two
+        links about their centres of mass where the particles were last placed."""
+        n = self.n_bodies
+        F3, T3 = np.zeros((n, 3)), np.zeros((n, 3))
+        for e, groups in zip(self.elastic, self._elastic_groups):
+            f, m = F[groups], M[groups]
+            if self.config.dim == 2:
+                f3, m3 = np.zeros((len(groups), 3)), np.zeros((len(groups), 3))
+                f3[:, 0], f3[:, 2], m3[:, 1] = f[:, 0], f[:, 1], m[:, 0]
+            else:
+                f3, m3 = f, m
+            Fe, Te = e.split(f3, m3, self._kin.com)
+            F3 += Fe
+            T3 += Te
+        return F3, T3
 
     def _inside_bodies(self, geoms, kin) -> np.ndarray:
         """Fluid points whose cell (half a spacing around them) reaches into a body. A
@@ -196,6 +255,8 @@ class SPHFluid:
         """Ghost-node vectors of the body particles in the world frame (rotate with the body)."""
         g = np.einsum("nij,nj->ni", kin.rotation[self._owner], self._ghost_b)
         self._mdbc.set_offsets(self._ids, self._to_dim(g))
+        for e, ids, ghost in zip(self.elastic, self._elastic_ids, self._elastic_ghost):
+            self._mdbc.set_offsets(ids, self._to_dim(e.rotate(ghost, kin)))
 
     def set_body_kinematics(self, kin) -> None:
         if self._mdbc is not None:
@@ -203,6 +264,10 @@ class SPHFluid:
         x, u = place(self._pb, self._owner, kin)
         self.fluid.set_particle_motion(self._ids, self._to_dim(x), self._to_dim(u))
         self.fluid.moment_points[self._g0:self._g0 + self.n_bodies] = self._to_dim(kin.com)
+        self._kin = kin
+        for e, ids in zip(self.elastic, self._elastic_ids):  # moment points stay at the origin
+            x, u = e.place(kin)
+            self.fluid.set_particle_motion(ids, self._to_dim(x), self._to_dim(u))
 
     def body_wrenches(self):
         """Force [N] and torque about the centre of mass [N m] of the fluid on each
@@ -217,14 +282,19 @@ class SPHFluid:
         exactly (the coupler's "fluid-first" scheme)."""
         return self._to_wrench3(*self.fluid.group_loads())
 
-    def _to_wrench3(self, F, M):
-        F, M = F[self._g0:self._g0 + self.n_bodies], M[self._g0:self._g0 + self.n_bodies]
+    def _to_wrench3(self, F_all, M_all):
+        F, M = F_all[self._g0:self._g0 + self.n_bodies], M_all[self._g0:self._g0 + self.n_bodies]
         if self.config.dim == 3:
-            return F.copy(), M.copy()
-        n = self.n_bodies
-        F3, T3 = np.zeros((n, 3)), np.zeros((n, 3))
-        F3[:, 0], F3[:, 2] = F[:, 0], F[:, 1]
-        T3[:, 1] = M[:, 0]
+            F3, T3 = F.copy(), M.copy()
+        else:
+            n = self.n_bodies
+            F3, T3 = np.zeros((n, 3)), np.zeros((n, 3))
+            F3[:, 0], F3[:, 2] = F[:, 0], F[:, 1]
+            T3[:, 1] = M[:, 0]
+        if self.elastic:
+            Fe, Te = self._elastic_wrenches(F_all, M_all)
+            F3 += Fe
+            T3 += Te
         return F3, T3
 
     # -- participant protocol (delegated) ------------------------------------------

@@ -316,13 +316,49 @@ def test_elastic_body_forces_are_the_same_generalised_forces_as_point_forces():
     F, T = eb.wrenches(f)
     m, d = body.model, body.data
     by_point, by_link = np.zeros(m.nv), np.zeros(m.nv)
-    for xi, fi, k in zip(x, f, eb.owner):
-        mujoco.mj_applyFT(m, d, fi, np.zeros(3), xi, int(body.body_ids[k]), by_point)
+    for xi, fi, a, b, w in zip(x, f, eb.a, eb.b, eb.w):  # each split between its two links
+        mujoco.mj_applyFT(m, d, w * fi, np.zeros(3), xi, int(body.body_ids[a]), by_point)
+        mujoco.mj_applyFT(m, d, (1 - w) * fi, np.zeros(3), xi, int(body.body_ids[b]), by_point)
     com = body.kinematics().com
     for k, bid in enumerate(body.body_ids):
         mujoco.mj_applyFT(m, d, F[k], T[k], com[k], int(bid), by_link)
     assert by_link == pytest.approx(by_point, abs=1e-12 * np.abs(by_point).max())
     assert F.sum(axis=0) == pytest.approx(f.sum(axis=0), abs=1e-12)
+    assert (T + np.cross(com, F)).sum(axis=0) == pytest.approx(np.cross(x, f).sum(axis=0), abs=1e-12)
+
+
+def test_blended_particles_close_the_bent_surface_and_move_with_the_links():
+    """Each particle blends its two links' frames (hat weights on nodes k l): undeformed
+    they agree; bent, the outer face stays closed at every joint (rigid links alone open
+    it by about h dtheta / 2), and the velocities are the time derivative of the placement."""
+    b = elastic_beam("p", **SEED, n_elements=8)
+    body = MujocoBodies(builders.scene(b.xml, gravity=0.0), bodies=b.link_names)
+    dx = 0.001
+    eb = ElasticBody(b, body, dx=dx, layers=1, dim=2)
+    x0, _ = eb.place()
+    assert x0[:, [0, 2]] == pytest.approx(eb.plate[:, [0, 2]], abs=1e-15)
+    assert ((eb.w >= 0) & (eb.w <= 1)).all() and (eb.b == eb.a + 1).all()
+    hinge = [mujoco.mj_name2id(body.model, mujoco.mjtObj.mjOBJ_JOINT, f"p_bend{k}") for k in range(1, 9)]
+    body.data.qpos[body.model.jnt_qposadr[hinge]] = 0.1  # 0.1 rad per joint: 0.8 rad at the tip
+    body.data.qvel[:] = np.linspace(-0.5, 0.5, body.model.nv)
+    mujoco.mj_forward(body.model, body.data)
+    x1, u1 = eb.place()
+    pts, owner = b.boundary_particles(dx, 1, 2)
+    rigid, _ = place(pts, eb.link_index[owner], body.kinematics())
+
+    def widest_gap(x):  # along the outer (-x) face, the largest step between neighbours
+        face = np.isclose(eb.plate[:, 0], eb.plate[:, 0].min()) & (eb.plate[:, 2] < b.length - dx)
+        order = np.argsort(eb.plate[face, 2])
+        return np.linalg.norm(np.diff(x[face][order], axis=0), axis=1).max()
+
+    assert widest_gap(rigid) > 1.5 * dx  # the rigid links open the face at the joints ...
+    # ... the blend keeps it closed: the outer fibre stretches by 1 + kappa h / 2 = 1.06 (kappa = 10 /m)
+    assert widest_gap(x1) < 1.08 * dx
+    eps = 1e-7
+    body.data.qpos[:] += eps * body.data.qvel
+    mujoco.mj_forward(body.model, body.data)
+    x2, _ = eb.place()
+    assert np.abs((x2 - x1) / eps - u1).max() < 1e-5 * np.abs(u1).max()
 
 
 def test_elastic_body_places_particles_and_reports_the_corner():
@@ -330,7 +366,7 @@ def test_elastic_body_places_particles_and_reports_the_corner():
     body = MujocoBodies(builders.scene(b.xml, gravity=0.0), bodies=b.link_names)
     eb = ElasticBody(b, body, dx=0.0025, layers=2, dim=2)
     x, u = eb.place()
-    assert len(x) == len(eb.points_b) and (u == 0).all()
+    assert len(x) == len(eb.plate) == eb.n and (u == 0).all()
     assert eb.displacement() == pytest.approx(np.zeros(3), abs=1e-15)
     body.data.qpos[:] = 0.01
     mujoco.mj_forward(body.model, body.data)
