@@ -23,7 +23,7 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 from cosim.errors import InputError
-from fluid.geometry import Built, assemble, block
+from fluid.geometry import Built, _axes, assemble, block
 from fluid.particles import Kind
 
 
@@ -65,6 +65,23 @@ def inside_polygon(points, vertices) -> np.ndarray:
     return out
 
 
+def _lattice_inside(lo, hi, dx: float, v: np.ndarray) -> np.ndarray:
+    """:func:`inside_polygon` of the points of ``block(lo, hi, dx)``, in its order, row by
+    row (the edges' crossings of each lattice row z, sorted once): the same test and the
+    same numbers, without the points x vertices work (a 140 m arch rib at dx = 25 mm:
+    5.6e6 points, 400 vertices)."""
+    xs, zs = _axes(lo, hi, dx)
+    x0, z0 = v[:, 0], v[:, 1]
+    x1, z1 = np.roll(x0, -1), np.roll(z0, -1)
+    mask = np.empty((xs.size, zs.size), bool)
+    for j, z in enumerate(zs):
+        crosses = (z0 > z) != (z1 > z)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            xc = np.sort((x0 + (z - z0) * (x1 - x0) / (z1 - z0))[crosses])
+        mask[:, j] = (xc.size - np.searchsorted(xc, xs, side="right")) % 2 == 1  # crossings right of x
+    return mask.ravel()
+
+
 def polygon_fluid(vertices, dx: float, conform_layers: int = 0) -> np.ndarray:
     """Fluid points (spacing ``dx`` [m]) inside the closed polygon: (N, 2) [m]. Each
     stands for ``dx^2`` of fluid; the count times ``dx^2`` approaches the area with an
@@ -84,7 +101,7 @@ def polygon_fluid(vertices, dx: float, conform_layers: int = 0) -> np.ndarray:
     lo = np.floor(v.min(0) / dx) * dx
     hi = np.ceil(v.max(0) / dx) * dx
     pts = block(lo, hi, dx)
-    pts = pts[inside_polygon(pts, v)]
+    pts = pts[_lattice_inside(lo, hi, dx, v)]
     n = int(conform_layers)
     if n == 0:
         return pts

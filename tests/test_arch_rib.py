@@ -103,7 +103,7 @@ def test_particle_counts_match_the_papers_three_resolutions():
     the paper's 36,910 x 0.05^2 = 92.3 m^2; the paper gives neither) and 3 wall layers,
     the counts of 003 §4.1 come out within 1 %: fluid 36,910 / 73,098 / 147,700 and
     boundary 18,159 / 25,665 / 36,287 at dx = 0.05, 0.05/sqrt(2), 0.025 m (measured
-    36,826 / 73,694 / 147,390 and 18,204 / 25,818 / 36,440; 9, 18, 63 s to build here): the
+    36,826 / 73,694 / 147,390 and 18,204 / 25,818 / 36,440; 3, 4, 28 s to build here): the
     paper's walls line the whole cavity, crown included."""
     v = arch_rib_cavity(SPAN, RISE, HC, M)
     for dx, fluid, walls in ((0.05, 36910, 18159), (0.05 / math.sqrt(2), 73098, 25665), (0.025, 147700, 36287)):
