@@ -232,7 +232,7 @@ def arch_rib_cavity(span: float, rise: float, inner_height: float, m: float, n: 
     if not (inner_height > 0 and math.isfinite(inner_height)):
         raise InputError(f"arch_rib_cavity: inner_height={inner_height!r} m must be positive")
     a = catenary_arch_axis(span, rise, m, n)
-    x, z = a[:, 0], a[:, 1]
+    x = a[:, 0]
     # the axis' slope and curvature, exactly
     xi = 2 * x / span
     k = math.acosh(m) if m > 1 else 0.0

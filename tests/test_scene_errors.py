@@ -658,11 +658,13 @@ FILE_CASES = [
     case("an .AT2 record with a gap", "tank2d", ("base_motion", {"kind": "earthquake", "file": "gap.AT2"}),
          "base_motion.file", "read_at2: line 6 of gap.AT2 holds 2 value(s) where the other data lines hold 5: a gap "
          "in the record", "Scene.base_motion.file",
-         files={"gap.AT2": AT2_HEAD + "NPTS=   10, DT=   .0100 SEC\n0.0 0.01 0.02 0.01 0.0\n-0.01 -0.02\n0.0 0.0 0.0\n"}),
+         files={"gap.AT2": AT2_HEAD + "NPTS=   10, DT=   .0100 SEC\n0.0 0.01 0.02 0.01 0.0\n-0.01 -0.02\n"
+                           "0.0 0.0 0.0\n"}),
     case("an .AT2 record with a non-finite value", "tank2d", ("base_motion", {"kind": "earthquake", "file": "nan.AT2"}),
          "base_motion.file", "read_at2: nan.AT2 holds a non-finite value (nan) at sample 7 (t = 7 DT)",
          "Scene.base_motion.file",
-         files={"nan.AT2": AT2_HEAD + "NPTS=   10, DT=   .0100 SEC\n0.0 0.01 0.02 0.01 0.0\n-0.01 -0.02 NaN 0.0 0.0\n"}),
+         files={"nan.AT2": AT2_HEAD + "NPTS=   10, DT=   .0100 SEC\n0.0 0.01 0.02 0.01 0.0\n"
+                           "-0.01 -0.02 NaN 0.0 0.0\n"}),
     case("a velocity record given as an accelerogram", "tank2d",
          ("base_motion", {"kind": "earthquake", "file": "quake.VT2"}), "base_motion.file",
          "read_at2: line 3 of quake.VT2 is 'VELOCITY TIME SERIES IN UNITS OF CM/SEC': a velocity record (.VT2)",
@@ -680,7 +682,8 @@ FILE_CASES = [
          "base_motion.components[1].file", "sampled every 0.5 s: too coarse for the water's first sloshing period "
          "of 1.32 s (linear theory), which needs at least 10 samples (DT <= 0.132 s)",
          "Scene.base_motion.components[1].file",
-         files={"coarse.AT2": AT2_HEAD + "NPTS=   10, DT=   .5000 SEC\n0.0 0.01 0.02 0.01 0.0\n-0.01 -0.02 -0.01 0.0 0.0\n"}),
+         files={"coarse.AT2": AT2_HEAD + "NPTS=   10, DT=   .5000 SEC\n0.0 0.01 0.02 0.01 0.0\n"
+                              "-0.01 -0.02 -0.01 0.0 0.0\n"}),
     # -- a table of motion
     case("a table that is not numbers", "tank2d", ("base_motion.file", "labelled.txt"), "base_motion.file",
          "line 1 of 'labelled.txt' is not a row of numbers: 'time displacement'; give rows of numbers separated by "

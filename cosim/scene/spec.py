@@ -677,5 +677,6 @@ class Scene(Spec):
 __all__ = ["World", "NoFluid", "Analytic", "SPH", "Block", "Tank", "Beach", "Flume", "InclinedTank",
            "CylinderTank", "PolygonTank", "Piston", "Flap", "PaddleRecord", "LinearWaves",
            "Shake", "Roll", "TableMotion",
-           "Earthquake", "Record", "GroundMotion", "Box", "Cylinder", "Sphere", "MJCF", "Line", "Moorings", "Patch", "Probes", "Coupling",
+           "Earthquake", "Record", "GroundMotion", "Box", "Cylinder", "Sphere", "MJCF", "Line", "Moorings", "Patch",
+           "Probes", "Coupling",
            "Scene", "SceneError", "MOORING_MODELS", "SETUPS"]
