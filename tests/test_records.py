@@ -341,6 +341,28 @@ def test_scene_refuses_more_records_than_axes_and_a_direction_of_the_wrong_size(
         GroundMotion(components=[])
 
 
+def test_three_components_move_a_3d_tank(tmp_path):
+    """3-D: NS along x, EW along y, UP along z at once; the built motion is their sum and
+    the tank's walls are moving walls."""
+    from cosim.scene.build import build
+    from fluid.particles import Kind
+
+    scene = Scene(world=World(dim=3, duration=0.01, sample_every=0.005, snapshot_every=0), fluid=SPH(dx=0.05),
+                  domain=Tank(length=0.3, width=0.2, height=0.3, depth=0.15),
+                  base_motion=GroundMotion(components=[Record(file=str(NS), direction=(1.0, 0.0, 0.0)),
+                                                       Record(file=str(EW), direction=(0.0, 1.0, 0.0)),
+                                                       Record(file=str(UP), direction=(0.0, 0.0, 1.0))], scale=2.0))
+    b = build(scene, tmp_path)
+    assert (b.sph.ps.kind == Kind.MOVING_WALL).any()
+    d, v, a = b.base_motion.state(2.18)
+    want = [2.0 * read_at2(p).state(2.18)[0] for p in (NS, EW, UP)]
+    np.testing.assert_allclose(d, want, rtol=1e-12, atol=1e-15)
+    with pytest.raises(SceneError, match=r"components\[2\].direction: \[0.0, 1.0\] has 2 coordinates"):
+        scene.replace(base_motion=GroundMotion(components=[Record(file=str(NS), direction=(1.0, 0.0, 0.0)),
+                                                           Record(file=str(EW), direction=(0.0, 1.0, 0.0)),
+                                                           Record(file=str(UP), direction=(0.0, 1.0))]))
+
+
 def test_ground_motion_round_trips_through_toml(tmp_path):
     scene = _scene([Record(file=str(NS), direction=(1.0, 0.0), scale=0.5),
                     Record(file=str(UP), direction=(0.0, 1.0))], scale=2.0, hold=True)
