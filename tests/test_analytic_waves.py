@@ -142,10 +142,10 @@ def test_still_water_loads_are_unchanged_by_a_vanishing_wave():
 
 
 # ------------------------------------------------------------------------ a small body riding a long wave
-def ride(dim, direction=0.0, H=0.7, T=20.0, d=20.0, periods=3):
+def ride(dim, direction=0.0, H=0.7, T=20.0, d=20.0, periods=2):
     """A 1 m box (0.5 m tall, half as dense as the water) free in a long wave, ramped in
-    over one period; returns (t, com, wave, com0)."""
-    wave = LinearWave(H, T, d, direction=direction, ramp=T, g=G)
+    over half a period; returns (t, com, wave, com0, fluid)."""
+    wave = LinearWave(H, T, d, direction=direction, ramp=0.5 * T, g=G)
     size = (1.0, 0.5) if dim == 2 else (1.0, 1.0, 0.5)
     draft = 0.25
     xml = builders.box("b", size, (0, 0, 0.25 - draft), density=RHO / 2, planar=dim == 2)
@@ -174,17 +174,19 @@ def test_small_floating_box_rides_a_long_wave(dim, direction):
     water particles, surge amplitude a / tanh(kd) at the surface, along the heading."""
     t, com, wave, com0, f = ride(dim, direction)
     assert f.dt_limit == "hydrostatic stiffness"
-    last = t > 25.0  # after the ramp (one period) and its transient
+    last = t > 20.0  # the second period, after the ramp
     a, w = 0.5 * wave.H, wave.omega
     heave, ph = harmonic(t[last], com[last, 2] - com0[2], w)
-    assert heave / a == pytest.approx(1.0, abs=0.01)  # measured 1.0006
-    eta = np.array([wave.elevation(com0[None, :], s)[0] for s in t[last]])
+    assert heave / a == pytest.approx(1.0, abs=0.01)  # measured 0.9998
+    mean = com0.copy()  # the ramp leaves the box drifted by ~0.55 m: η where it rides
+    mean[:2] = com[last, :2].mean(axis=0)
+    eta = np.array([wave.elevation(mean[None, :], s)[0] for s in t[last]])
     assert harmonic(t[last], eta, w)[0] == pytest.approx(a, rel=1e-9)
-    assert abs(math.remainder(ph - harmonic(t[last], eta, w)[1], 2 * math.pi)) < 0.01  # measured 0.0014 rad
+    assert abs(math.remainder(ph - harmonic(t[last], eta, w)[1], 2 * math.pi)) < 2e-3  # measured 1.4e-4, 1.9e-4 rad
     horiz = (com[last, :2] - com0[:2]) @ wave.heading[:2]
     surge, _ = harmonic(t[last], horiz, w)
     orbit = a / math.tanh(wave.k * wave.depth)
-    assert surge / orbit == pytest.approx(1.0, abs=0.02)  # measured 0.9991
+    assert surge / orbit == pytest.approx(1.0, abs=0.01)  # measured 0.99996
     if dim == 3:  # the motion is along the heading
         across = (com[last, :2] - com0[:2]) @ np.array([-wave.heading[1], wave.heading[0]])
         assert harmonic(t[last], across, w)[0] < 1e-3 * surge
