@@ -13,8 +13,7 @@ one line. Per body:
 - linear and quadratic (Morison-type) damping of the centre-of-mass velocity and
   of the angular velocity, world axes, scaled by the submerged fraction;
 - added mass and inertia, moved into MuJoCo's implicit inertia (``dof_armature``:
-  inertia without weight), which keeps explicit coupling stable for light bodies.
-
+  inertia without weight), which keeps explicit coupling stable for light bodies;
 - optionally a regular linear (Airy) wave, :class:`LinearWave`, whose free surface
   moves the hydrostatics (the buoyancy is that of the volume under the instantaneous
   surface) and whose water velocity and acceleration enter the Morison equation
@@ -28,7 +27,8 @@ one line. Per body:
   ∫_V(η) −∇p dV = ∫_V(η) ρ (g e_z + ∂u/∂t) dV (linearised Euler equation). The third
   is the diffraction (added-mass) part, with the same added mass m_a that the body
   carries in its inertia, so that the inertia force is C_m ρ V ā_w with
-  C_m = 1 + C_a, C_a = m_a / (ρ V), and the body's own −m_a dU/dt stays implicit.
+  C_m = 1 + C_a, C_a = m_a / (ρ V) (V the submerged volume V(η)), and the body's own
+  −m_a dU/dt stays implicit.
   ``ā_w``, ``ū_w`` are the wave acceleration and velocity averaged over the submerged
   volume; the drag (the damping coefficients) acts on the velocity relative to the
   water. Rotational damping acts on the body's angular velocity (the wave is
@@ -249,8 +249,10 @@ class AnalyticFluid:
         ``free_surface_z + η`` over each cell, and the wave's kinematics load the
         bodies (Froude–Krylov and added-mass inertia, drag on the relative velocity;
         see the module docstring). The diffraction term uses each body's
-        translational ``added_mass`` (3-D: its first 3 values; 2-D: x and z); a body
-        whose joints are neither free nor planar gets the Froude–Krylov part only.
+        translational ``added_mass``: of 6 values (a free joint) the first 3, along
+        x, y, z; of 3 values, the first two, along x and z (the planar joints slide
+        x, slide z, hinge y of a 2-D body, as ``bodies.builders`` makes them); a
+        body with other joints gets the Froude–Krylov part only.
     """
 
     #: its loads do not react to body acceleration (added mass goes into the bodies'
