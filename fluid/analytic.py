@@ -131,7 +131,14 @@ class LinearWave:
     all times ``r(t)`` (the accelerations also carry ``r'(t)`` times the velocity, so
     that they are the exact time derivative). Above the still water (under a crest)
     the kinematics are those at ``ζ = 0`` (constant extrapolation); below the seabed
-    those at ``ζ = −d``."""
+    those at ``ζ = −d``.
+
+    ``source`` [m] (None: the fade-in acts everywhere at once): the wave is made at the
+    plane ``x cos β + y sin β = source`` (a wavemaker's paddle) and its fade-in travels
+    from there with the group velocity ``c_g = ω/k · (1/2)(1 + 2kd / sinh 2kd)`` (Dean &
+    Dalrymple 1991 eq. 4.79): a point a distance ``s > 0`` ahead of the paddle sees
+    ``r(t − s / c_g)``. (A linear wave group's envelope moves at ``c_g``; its front
+    disperses, which this sharp delay does not model.)"""
 
     H: float
     T: float
@@ -139,6 +146,7 @@ class LinearWave:
     direction: float = 0.0
     ramp: float = 0.0
     g: float = 9.81
+    source: float | None = None
     k: float = field(default=math.nan, init=False, compare=False)  #: wavenumber [rad/m], from the dispersion relation
 
     def __post_init__(self):
@@ -174,6 +182,13 @@ class LinearWave:
         return 2.0 * math.pi / self.k
 
     @property
+    def group_velocity(self) -> float:
+        """c_g [m/s] (Dean & Dalrymple 1991 eq. 4.79)."""
+        kd = self.k * self.depth
+        n = 0.5 * (1.0 + (2.0 * kd / math.sinh(2.0 * kd) if kd < 350 else 0.0))
+        return n * self.omega / self.k
+
+    @property
     def heading(self) -> np.ndarray:
         """Unit vector of propagation, (cos β, sin β, 0)."""
         b = math.radians(self.direction)
@@ -187,6 +202,21 @@ class LinearWave:
         s = math.pi * t / self.ramp
         return 0.5 * (1.0 - math.cos(s)), 0.5 * math.pi / self.ramp * math.sin(s)
 
+    def _ramp_at(self, p, t: float):
+        """The fade-in and its rate at points ``p``: at once everywhere, or delayed by the
+        travel from the ``source`` plane at the group velocity."""
+        if self.source is None:
+            return self._ramp(t)
+        p = np.asarray(p, float)
+        e = self.heading
+        s = np.maximum(p[..., 0] * e[0] + p[..., 1] * e[1] - self.source, 0.0)
+        tau = t - s / self.group_velocity
+        if self.ramp <= 0:
+            return (tau >= 0).astype(float), np.zeros_like(tau)
+        q = np.clip(tau / self.ramp, 0.0, 1.0)
+        inside = (q > 0) & (q < 1)
+        return 0.5 * (1.0 - np.cos(math.pi * q)), np.where(inside, 0.5 * math.pi / self.ramp * np.sin(math.pi * q), 0.0)
+
     def _phase(self, p) -> np.ndarray:
         p = np.asarray(p, float)
         e = self.heading
@@ -195,14 +225,14 @@ class LinearWave:
     def elevation(self, p, t: float) -> np.ndarray:
         """η [m] above the still water at the horizontal positions of points ``p`` [m]
         (``(..., 2)`` or ``(..., 3)``: x, y first) at time ``t`` [s]."""
-        r, _ = self._ramp(t)
+        r, _ = self._ramp_at(p, t)
         return r * 0.5 * self.H * np.cos(self._phase(p) - self.omega * t)
 
     def kinematics(self, p, t: float, level: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
         """Water velocity [m/s] and acceleration ∂u/∂t [m/s^2] at points ``p`` [m]
         (``(n, 3)``, world frame, z up), the still water at ``level`` [m]."""
         p = np.asarray(p, float)
-        r, dr = self._ramp(t)
+        r, dr = self._ramp_at(p, t)
         k, d, w, a = self.k, self.depth, self.omega, 0.5 * self.H
         zeta = np.clip(p[:, 2] - level, -d, 0.0)
         # cosh k(ζ+d)/sinh kd and sinh k(ζ+d)/sinh kd without overflow in deep water

@@ -48,7 +48,7 @@ def site_name(fairlead: str) -> str:
 def water_level(scene) -> float | None:
     d = scene.domain
     if isinstance(scene.fluid, Analytic):
-        return scene.fluid.level
+        return scene.fluid.level if d is None else d.level  # a flume's depth: its seabed at z = 0
     if d is None:
         return None
     if isinstance(d, Tank) and d.water:
@@ -105,6 +105,36 @@ def _base_motion(scene):
     return Translation(b.direction, _scaled(read_at2(b.file, b.baseline_degree), b.scale))
 
 
+def far_field_wave(scene):
+    """The wavemaker of a flume scene and the wave it makes far from its paddle, as the
+    analytic fluid's :class:`fluid.analytic.LinearWave` (one field swaps the SPH fluid's
+    flume for the analytic fluid).
+
+    Linear wavemaker theory (Dean & Dalrymple 1991 §6.2; ``fluid.wavemaker``): the paddle
+    moves as ``x_p = (S/2) r(t) sin ωt`` (piston; a flap turns by ``x_p / d``), ``S`` its
+    stroke; the progressive mode it radiates has the height ``H = S · (H/S)(kd)`` (piston
+    ``2 (cosh 2kd − 1) / (sinh 2kd + 2kd)``, flap ``4 (sinh kd / kd)(kd sinh kd − cosh kd +
+    1) / (sinh 2kd + 2kd)``) and its horizontal velocity at the paddle is in phase with the
+    paddle's velocity ``(S/2) ω cos ωt``, so ``η = (H/2) cos(k x − ω t)``: the wave's crest
+    at x = 0 at t = 0, its phase at a body at ``x`` is ``k x``. The paddle's fade-in
+    reaches x after ``x / c_g`` (``LinearWave.source = 0``).
+
+    What this approximates: the evanescent (standing) modes near the paddle, which decay
+    as ``exp(−k_n x)`` (within about 2-3 depths of it), are left out; the wave is the
+    far-field one everywhere ahead of the paddle (x >= 0; behind it, x < 0, no water). No
+    reflection from the far wall or a beach (a perfectly absorbing end); no second-order
+    (Stokes) or set-down terms; the paddle's own displacement is not the water's edge. In
+    3-D the wave is long-crested across the flume's width (the paddle spans it; no side-wall
+    effects)."""
+    from fluid.analytic import LinearWave
+    from fluid.wavemaker import RegularWavemaker, height_to_stroke
+
+    w, d = scene.waves, scene.domain
+    wm = RegularWavemaker(w.kind, w.height, w.period, d.depth, w.ramp, scene.world.gravity)
+    H = wm.stroke * height_to_stroke(w.kind, wm.k * d.depth)  # what the paddle's stroke makes
+    return wm, LinearWave(H, w.period, d.depth, 0.0, w.ramp * w.period, scene.world.gravity, source=0.0)
+
+
 def domain_points(scene, cfg, back: float = 0.0):
     """(fluid points, walls) of the scene's domain: walls as ``(points, kind, group)``,
     ``layers`` = ceil(2 h / dx) wall layers (the kernel's support)."""
@@ -119,7 +149,7 @@ def domain_points(scene, cfg, back: float = 0.0):
         from fluid.flume import flume
 
         fl = flume(dx, d.length, d.depth, d.height, layers=layers, back=back,
-                   beach=None if d.beach is None else (d.beach.toe, d.beach.slope))
+                   beach=None if d.beach is None else (d.beach.toe, d.beach.slope), width=d.width)
         return fl.fluid, fl.walls
     if isinstance(d, Tank) and d.water:
         inner = [d.length] + ([d.width] if dim == 3 else []) + [d.height]
@@ -258,7 +288,9 @@ def build(scene, workdir: Path) -> Built:
             from fluid.analytic import LinearWave
 
             waves = LinearWave(w.height, w.period, w.depth, w.direction, w.ramp * w.period, scene.world.gravity)
-        out.fluid = AnalyticFluid(rho=f.rho, g=scene.world.gravity, free_surface_z=f.level,
+        elif isinstance(w, (Piston, Flap)):
+            out.wavemaker, waves = far_field_wave(scene)
+        out.fluid = AnalyticFluid(rho=f.rho, g=scene.world.gravity, free_surface_z=level,
                                   linear_damping=f.linear_damping or None,
                                   quadratic_damping=f.quadratic_damping or None, added_mass=f.added_mass or None,
                                   waves=waves)

@@ -80,13 +80,24 @@ def _check_fluid_and_domain(s, dim):
         if d is None:
             raise SceneError("domain", "the SPH fluid needs a domain: a tank, flume, inclined-tank, cylinder-tank or "
                              "polygon")
+    elif isinstance(s.fluid, Analytic) and isinstance(d, Flume):
+        # the analytic fluid takes a flume's depth (the still level) and its wavemaker's far-field wave
+        if s.fluid.level not in (0.0, d.depth):
+            raise SceneError("fluid.level", f"{s.fluid.level} m: with a flume the still level is its depth "
+                             f"({d.depth} m, the seabed at z = 0); leave fluid.level out")
     elif d is not None:
-        raise SceneError("domain", f"a domain holds the SPH fluid's particles; with fluid.model = "
-                         f"{s.fluid.model!r} leave it out (the analytic fluid's surface is fluid.level)")
+        raise SceneError("domain", f"a {d.kind} holds the SPH fluid's particles; with fluid.model = "
+                         f"{s.fluid.model!r} leave it out (the analytic fluid's surface is fluid.level; it takes "
+                         f"a flume, for its depth and wavemaker)")
     if d is None:
         return
-    if isinstance(d, (Flume, PolygonTank)) and dim != 2:
+    if isinstance(d, PolygonTank) and dim != 2:
         raise SceneError("domain.kind", f"a {d.kind} is 2-D; set world.dim = 2 or use a tank")
+    if isinstance(d, Flume):
+        if dim == 3 and d.width is None:
+            raise SceneError("domain.width", "a 3-D flume (a wave tank) needs its width along y [m]")
+        if dim == 2 and d.width is not None:
+            raise SceneError("domain.width", "a 2-D flume is the x-z plane; leave width out")
     if isinstance(d, CylinderTank) and dim != 3:
         raise SceneError("domain.kind", "a cylinder-tank is 3-D; set world.dim = 3")
     if isinstance(d, (Tank, InclinedTank)):
@@ -152,9 +163,10 @@ def _check_excitations(s, dim):
     if isinstance(s.waves, LinearWaves):
         _check_linear_waves(s, dim)
     elif s.waves is not None:
-        if isinstance(s.fluid, Analytic):
+        if isinstance(s.fluid, Analytic) and (isinstance(s.waves, PaddleRecord) or not isinstance(s.domain, Flume)):
             raise SceneError("waves.kind", f"a {s.waves.kind} wavemaker moves the SPH fluid's paddle; the analytic "
-                             f"fluid takes the waves themselves: kind = \"linear\" with height, period and depth")
+                             f"fluid takes the waves themselves: kind = \"linear\" with height, period and depth, "
+                             f"or a piston or flap in a flume (its far-field wave)")
         if not isinstance(s.domain, Flume):
             raise SceneError("waves", "a wavemaker needs a flume (domain.kind = \"flume\"); shake a tank with "
                              "base_motion instead")
@@ -390,7 +402,8 @@ def _check_probes(s, dim, mj):
                              f"{mj['coupled']} (or \"all\"); name one of them, or add it to bodies[0].bodies")
         if n != "all" and n not in names:
             raise SceneError(f"probes.motion[{i}]", f"no body named {n!r}; bodies: {sorted(names)} (or \"all\")")
-    linear = isinstance(s.waves, LinearWaves)  # the analytic fluid's gauges read its linear waves
+    # the analytic fluid's gauges read its linear waves (given, or a flume's wavemaker's far-field wave)
+    linear = isinstance(s.fluid, Analytic) and isinstance(s.waves, (LinearWaves, Piston, Flap))
     fluid_probes = (p.gauges and not linear) or p.pressure or p.energy
     if fluid_probes and not isinstance(s.fluid, SPH):
         which = "gauges" if p.gauges and not linear else "pressure" if p.pressure else "energy"
@@ -488,7 +501,7 @@ def _sd_domain(d, dim, p) -> float:
     if isinstance(d, CylinderTank):
         return max(math.hypot(p[0], p[1]) - 0.5 * d.diameter, -p[2], p[2] - d.height)
     across = max(-p[1], p[1] - d.width)
-    if isinstance(d, InclinedTank):
+    if isinstance(d, (InclinedTank, Flume)):  # the section's outline (a beach), extruded across y
         return max(_sd_polygon(_outline(d), (p[0], p[2])), across)
     return max(-p[0], p[0] - d.length, across, -p[2], p[2] - d.height)
 

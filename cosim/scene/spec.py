@@ -10,7 +10,8 @@ A scene is made of
   (spacing ``dx``; its set-up chosen from the scene, :mod:`cosim.scene.setup`, each
   setting overridable);
 - a domain for the SPH fluid: :class:`Tank` (filled to a depth, or holding water blocks),
-  :class:`Flume` (2-D, with a :class:`Beach`), :class:`InclinedTank`, :class:`CylinderTank`
+  :class:`Flume` (2-D or 3-D, with a :class:`Beach`; the analytic fluid takes a flume's
+  depth and wavemaker too), :class:`InclinedTank`, :class:`CylinderTank`
   (3-D), :class:`PolygonTank` (2-D); wall layers follow from the kernel;
 - excitations: ``waves`` (:class:`Piston`, :class:`Flap`, :class:`PaddleRecord`: a flume's
   wavemaker; :class:`LinearWaves`: regular waves on the analytic fluid's bodies) or
@@ -182,8 +183,11 @@ class Beach(Spec):
 
 @dataclass(frozen=True)
 class Flume(Spec):
-    """A 2-D wave flume: the paddle at x = 0, the far wall at ``length``, water ``depth``
-    deep, walls ``height`` high, an optional :class:`Beach`."""
+    """A wave flume: the paddle at x = 0, the far wall at ``length``, water ``depth``
+    deep, walls ``height`` high, an optional :class:`Beach`; 3-D: a wave tank ``width``
+    wide along y (side walls at y = 0 and ``width``), the paddle across the whole width.
+    With ``fluid.model = "analytic"`` the flume gives the still level (its depth, the
+    seabed at z = 0) and its wavemaker's far-field wave (``cosim.scene.build``)."""
 
     TAG = ("kind", "flume")
     kind: str = tag("flume")
@@ -191,6 +195,7 @@ class Flume(Spec):
     depth: float = required(num(None, "still-water depth", "m", lo=0, lo_open=True, optional=False))
     height: float = required(num(None, "wall height", "m", lo=0, lo_open=True, optional=False))
     beach: Beach = part(None, "a sloping beach that absorbs the waves", Beach)
+    width: float = num(None, "width along y between the side walls (3-D only)", "m", lo=0, lo_open=True)
 
     def validate(self):
         if self.depth >= self.height:
@@ -617,7 +622,8 @@ class Scene(Spec):
 
     world: World = part(World(), "dimension, gravity, duration, output times", World)
     fluid: Spec = part(NoFluid(), "none, analytic or SPH", FLUIDS)
-    domain: Spec = part(None, "the SPH fluid's container", DOMAINS)
+    domain: Spec = part(None, "the SPH fluid's container (the analytic fluid: a flume, for its depth and wavemaker)",
+                        DOMAINS)
     waves: Spec = part(None, "a flume's wavemaker, or linear waves on the analytic fluid", WAVES)
     base_motion: Spec = part(None, "motion of the tank", BASE_MOTIONS)
     bodies: tuple = parts("the bodies", BODIES)

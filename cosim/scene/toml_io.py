@@ -235,13 +235,36 @@ def with_values(scene: Scene, assignments) -> Scene:
                 hint = f"; give an entry, e.g. {where}[0].{k}" if isinstance(node, list) and node else ""
                 raise SceneError(path, f"{where or 'the scene'} is {_what(node)}, not a table{hint}")
             if i == len(keys) - 1:
-                node[k] = parse_value(text)
+                value = parse_value(text)
+                if isinstance(node, dict) and isinstance(k, str) and node.get(k, value) != value:
+                    _drop_foreign(node, k, value, where)
+                node[k] = value
             elif isinstance(k, int):
                 node = node[k]
             else:
                 node = node.setdefault(k, [] if isinstance(keys[i + 1], int) else {})
             where = f"{where}[{k}]" if isinstance(k, int) else _key(where, k)
     return from_dict(data)
+
+
+def _drop_foreign(node: dict, key: str, value, where: str) -> None:
+    """A part's kind changed by ``--set`` (``fluid.model=sph``): its fields that the new
+    kind does not have go (logged), so that one field swaps, e.g., the analytic fluid for
+    the SPH fluid; the fields both kinds have stay."""
+    import logging
+
+    from cosim.scene import spec
+
+    new = [c for c in vars(spec).values() if isinstance(c, type) and issubclass(c, Spec) and c.TAG == (key, value)]
+    if len(new) != 1:
+        return  # not a tag, or an unknown kind: from_dict names it
+    known = {name for name, _, _ in spec_fields(new[0])} | {key}
+    gone = sorted(set(node) - known)
+    for name in gone:
+        del node[name]
+    if gone:
+        logging.getLogger(__name__).info("%s = %r: dropped %s (not fields of a %s)", _key(where, key), value,
+                                         ", ".join(gone), new[0].__name__)
 
 
 def _what(v) -> str:
