@@ -58,6 +58,10 @@ def test_pareto_front():
     rows = [{"case": c, "wall_s": w, "max_error": e, "error": None} for c, w, e in
             (("a", 1, 0.5), ("b", 2, 0.1), ("c", 3, 0.2), ("d", 4, 0.01))]
     assert [r["case"] for r in pareto_front(rows)] == ["a", "b", "d"]
+    # the CPU time ranks where it was measured: a run slowed down by its neighbours in a
+    # sweep (wall 9 s for 2 s of CPU) is still the cheaper one
+    rows[2].update(wall_s=9.0, cpu_s=1.5)
+    assert [r["case"] for r in pareto_front(rows)] == ["a", "c", "b", "d"]
 
 
 @pytest.fixture(scope="module")
