@@ -18,6 +18,7 @@ import numpy as np
 from cosim.errors import InputError, TautLineError
 from moorings.catenary import TAUT, LineSolution, solve_packed
 from moorings.line import MooringLine, named_lines, per_line
+from moorings.line_events import LineStateLog
 
 
 class CatenaryMooring:
@@ -67,6 +68,8 @@ class CatenaryMooring:
         self._pos: np.ndarray | None = None
         self.solution: LineSolution | None = None  #: per-line H, V, touchdown, state
         self._forces = np.zeros((self.n_lines, self.dim))
+        #: when each line became fully lifted or taut (seed 004 Fig. 5), after every step
+        self.state_log = LineStateLog([ln.name for ln in self.lines])
         if fairleads is not None:
             self.set_fairlead_motion(fairleads)
 
@@ -78,21 +81,31 @@ class CatenaryMooring:
                 f"or pass fairleads= before the run"
             )
         self.t = float(t0)
+        if self.state_log.state is None:  # a resumed run keeps its log
+            self.state_log.update(self.t, self.solution.state)
 
     def max_dt(self) -> float:
         """Unlimited: a quasi-static law has no stability limit."""
         return math.inf
 
     def advance(self, t: float, dt: float) -> None:
-        """Nothing to integrate: the forces follow the fairlead positions."""
+        """Nothing to integrate: the forces follow the fairlead positions (given for
+        ``t + dt`` before this call); the lines' states at ``t + dt`` go into
+        :attr:`state_log`."""
         self.t = t + dt
+        if self.solution is not None:
+            self.state_log.update(self.t, self.solution.state)
 
     def save_state(self):
-        return None if self._pos is None else self._pos.copy()
+        return None if self._pos is None else {"pos": self._pos.copy(), "states": self.state_log.save()}
 
     def load_state(self, state) -> None:
-        if state is not None:
-            self.set_fairlead_motion(state)
+        if state is None:
+            return
+        if isinstance(state, dict):
+            self.state_log.load(state["states"])
+            state = state["pos"]
+        self.set_fairlead_motion(state)
 
     # -- mooring interface ---------------------------------------------------
     def set_fairlead_motion(self, positions, velocities=None) -> None:
@@ -159,6 +172,11 @@ class CatenaryMooring:
             self.set_fairlead_motion(self._pos)
 
     # -- reporting -----------------------------------------------------------
+    def line_states(self) -> np.ndarray:
+        """Each line's :class:`~moorings.catenary.LineState` now (seed 004 Fig. 5 a-d), as
+        integers 0-3; a line held by its length constraint is ``TAUT``."""
+        return np.asarray(self.solution.state, dtype=np.int8).copy()
+
     def fairlead_tensions(self) -> np.ndarray:
         """Line tension at each fairlead [N]: ``sqrt(H^2 + V^2)``."""
         return np.hypot(self.solution.H, self.solution.V)

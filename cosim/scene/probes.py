@@ -5,6 +5,8 @@ that become one HDF5 series, one CSV and one plot each:
 - ``motion``: per body, surge, heave and pitch (2-D: rotation about +y) or surge, sway,
   heave, roll, pitch, yaw (3-D, z-y-x Euler angles), displacements from the start [m]
   and angles [deg];
+- ``line_states``: per catenary line, its state (seed 004 Fig. 5: 0 resting, 1 partly
+  lifted, 2 fully lifted, 3 taut; :class:`moorings.catenary.LineState`);
 - ``tensions``: per line, the tension at its fairlead [N], at its anchor
   (``.anchor_tension`` [N]; the catenary, the SPH cable and MoorDyn report it, an FMU does
   not) and ``.tether`` [N], the load a taut inextensible catenary line carries as a length
@@ -104,6 +106,9 @@ def groups(scene, built) -> list[Group]:
         cols = ([f"{n}.tension" for n in lines] + ([f"{n}.anchor_tension" for n in lines] if anchors else [])
                 + ([f"{n}.tether" for n in lines] if tethered else []))
         out.append(Group("tensions", cols, ["N"] * len(cols), tensions))
+    if m is not None and p.tensions and callable(getattr(m, "line_states", None)):  # the catenary (seed 004 Fig. 5)
+        out.append(Group("line_states", [f"{n}.state" for n in built.line_names], ["-"] * len(built.line_names),
+                         lambda: np.asarray(m.line_states(), float)))
     sph = built.sph
     move = built.base_motion  # a moving tank carries its gauges and wall patches along
 

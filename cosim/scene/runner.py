@@ -13,6 +13,8 @@ samples (``world.sample_every``), particle snapshots (``snapshot_every``), check
 - ``GROUP.csv`` per probe group (header ``t [s]`` then ``NAME [UNIT]``), ``ledger.csv``;
 - ``GROUP.png`` per probe group, ``particles_tT.png`` at each ``plot_at`` time;
 - ``summary.json``: set-up, scheme, sizes, steps, wall and CPU time, each series' range;
+  lines that broke (``line_breaks``) and, for catenary lines, when each went fully lifted
+  or taut and back (``line_events``, :mod:`moorings.line_events`);
 - ``checkpoint.pkl``: the latest checkpoint (pickle: read back only your own).
 
 ``resume=True`` continues from ``checkpoint.pkl`` in the folder, bit for bit, to the
@@ -360,6 +362,9 @@ def _summary(scene, built, series, units, steps, loop_s, build_s, cpu_s, wall_be
         s["mooring"] = {"model": scene.moorings.model, "lines": built.line_names}
         if hasattr(built.mooring, "events"):  # lines with a break load (moorings.breaking)
             s["line_breaks"] = [e.as_dict() for e in built.mooring.events]
+        log_ = getattr(built.mooring, "state_log", None)  # the catenary: when lines go fully lifted, taut
+        if log_ is not None:
+            s["line_events"] = dict(zip(built.line_names, log_.summary().values()))
     s["series"] = {k: {"unit": units[k], "min": float(v.min()), "max": float(v.max()), "mean": float(v.mean()),
                        "last": float(v[-1])} for k, v in series.items() if len(v)}
     if error is not None:
