@@ -113,6 +113,10 @@ class BeamModel:
     shear: bool  #: shear slides (Timoshenko) or not (Rayleigh)
     beta: float  #: stiffness-proportional damping [s]
     xml: str  #: the ``<body>`` element, for :func:`bodies.builders.scene`
+    #: two-sided thin-wall boundary: where fewer than two particles fit across the plate,
+    #: lay two columns at +-dx/2 about its mid-plane anyway, each taking its mDBC density
+    #: from the fluid on its own side (see :meth:`boundary_particles`)
+    thin_wall: bool = False
 
     # -- derived ---------------------------------------------------------------
     @property
@@ -197,6 +201,18 @@ class BeamModel:
         return lo
 
     # -- coupling --------------------------------------------------------------
+    def particles_across(self, dx: float) -> int:
+        """Boundary particles across the thickness on a lattice of spacing ``dx`` [m]:
+        ``max(1, round(h / dx))`` (two with :attr:`thin_wall` where that is fewer)."""
+        n = max(1, int(round(self.thickness / dx)))
+        return max(n, 2) if self.thin_wall else n
+
+    def wall_thickness(self, dx: float) -> float:
+        """The thickness [m] the fluid meets: ``h``, or with the thin-wall columns of a plate
+        fewer than two particles thick, ``2 dx`` (the fluid stands off the plate by
+        ``dx - h / 2`` on each side, under a spacing)."""
+        return 2.0 * dx if self.thin_wall and round(self.thickness / dx) < 2 else self.thickness
+
     def boundary_particles(self, dx: float, layers: int, dim: int = 3):
         """Boundary particles on a lattice of spacing ``dx`` [m] laid over the whole
         undeformed plate (cell-centred, as :mod:`bodies.sampling` lays them), ``layers``
@@ -218,7 +234,7 @@ class BeamModel:
             n = max(1, int(round((hi - lo) / dx)))
             return lo + (np.arange(n) + 0.5) * (hi - lo) / n
 
-        h2, w2 = self.thickness / 2, self.width / 2
+        h2, w2 = self.wall_thickness(dx) / 2, self.width / 2
         xs, zs = grid(-h2, h2), grid(0.0, self.length)
         ys = grid(-w2, w2) if dim == 3 else np.array([0.0])
         p = np.stack(np.meshgrid(xs, ys, zs, indexing="ij"), axis=-1).reshape(-1, 3)
@@ -263,23 +279,26 @@ class BeamModel:
         p_b[:, 2] -= start[b]
         return plate, a, b, w, p_a, p_b
 
-    def ghost_offsets(self, plate, dim: int = 3) -> np.ndarray:
+    def ghost_offsets(self, plate, dim: int = 3, dx: float | None = None) -> np.ndarray:
         """Vectors [m] ``(n, 3)``, plate frame, from particles at ``plate`` (undeformed,
         plate frame) to their mDBC ghost nodes: the mirror images across the nearest of
         the faces the fluid touches (the two sides, the top, in 3-D the two edges; not the
         foot, which stands on the floor: :func:`bodies.sampling.ghost_offsets` on the
-        plate as one box reaching far below the floor)."""
+        plate as one box reaching far below the floor). With the thin-wall columns (give
+        ``dx``) the faces are those of the band the particles fill, ``2 dx`` thick, so each
+        column mirrors into the fluid on its own side."""
         from bodies.sampling import GeomShape, ghost_offsets
 
         below = 10.0 * self.length
-        box = GeomShape("box", np.array([self.thickness / 2, self.width / 2, (self.length + below) / 2]),
+        h = self.thickness if dx is None else self.wall_thickness(dx)
+        box = GeomShape("box", np.array([h / 2, self.width / 2, (self.length + below) / 2]),
                         np.array([0.0, 0.0, (self.length - below) / 2]), np.eye(3))
         return ghost_offsets([box], plate, dim)
 
 
 def elastic_beam(name: str, length: float, thickness: float, *, E: float, rho: float, width: float = 1.0,
                  nu: float = 0.0, kappa: float = 5.0 / 6.0, n_elements: int = 16, base=(0.0, 0.0, 0.0),
-                 shear: bool = True, beta: float = 0.0) -> BeamModel:
+                 shear: bool = True, beta: float = 0.0, thin_wall: bool = False) -> BeamModel:
     """An elastic cantilever clamped at ``base`` [m] (the centre of its foot) and
     rising along +z, as a chain of MuJoCo bodies (see the module docstring).
 
@@ -287,7 +306,9 @@ def elastic_beam(name: str, length: float, thickness: float, *, E: float, rho: f
     1 m for 2-D scenes), ``E`` Young's modulus [Pa], ``rho`` density [kg/m^3], ``nu``
     Poisson's ratio (for ``G``; pass ``E / (1 - nu^2)`` as E for a wide plate in
     cylindrical bending), ``kappa`` shear coefficient, ``n_elements`` N >= 4, ``shear``
-    Timoshenko (True) or Rayleigh (False), ``beta`` stiffness-proportional damping [s]
+    Timoshenko (True) or Rayleigh (False), ``thin_wall`` the two-sided boundary for a
+    plate fewer than two particles thick (:attr:`BeamModel.thin_wall`), ``beta``
+    stiffness-proportional damping [s]
     (joint damping ``beta k``; explicit under RK4, where it shrinks the stable step once
     ``beta omega_max`` nears 1, see :meth:`BeamModel.stable_dt`: prefer ``implicitfast``
     for a heavily damped chain).
@@ -337,7 +358,8 @@ def elastic_beam(name: str, length: float, thickness: float, *, E: float, rho: f
     parts.append(f'<site name="{name}_tip" pos="0 0 {l / 2!r}" size="{h / 4!r}"/>'
                  f'<site name="{name}_corner" pos="{-h / 2!r} 0 {l / 2!r}" size="{h / 4!r}"/>')
     xml = "".join(parts) + "</body>" * (N + 1)
-    return BeamModel(name, L, h, W, E, rho, float(nu), kappa, N, base, bool(shear), float(beta), xml)
+    return BeamModel(name, L, h, W, E, rho, float(nu), kappa, N, base, bool(shear), float(beta), xml,
+                     bool(thin_wall))
 
 
 def timoshenko_frequencies(length: float, thickness: float, E: float, rho: float, nu: float = 0.0,
@@ -568,13 +590,13 @@ class ElasticBody:
         i = self._sites[site]
         return self.bodies.site_positions([i])[0] - self._site0[site]
 
-    def check(self) -> None:
+    def check(self, kin=None) -> None:
         """Raise :class:`InstabilityError` naming the first element whose link left the
         finite numbers or turned more than 90 degrees against its neighbour (a chain
         that went unstable), with a remedy."""
         from cosim.errors import InstabilityError
 
-        kin = self.bodies.kinematics()
+        kin = self.bodies.kinematics() if kin is None else kin
         R = kin.rotation[self.link_index]
         x = kin.origin[self.link_index]
         bad = ~np.isfinite(x).all(axis=1) | ~np.isfinite(R).all(axis=(1, 2))

@@ -116,6 +116,7 @@ class MujocoBodies:
         d.xfrc_applied[self.body_ids, :3] = self._force
         d.xfrc_applied[self.body_ids, 3:] = self._torque
         m.opt.timestep = dt / n
+        resets = d.warning[mujoco.mjtWarning.mjWARN_BADQACC].number
         try:
             for k in range(n):
                 mujoco.mj_step(m, d)
@@ -124,6 +125,16 @@ class MujocoBodies:
             d.xfrc_applied[:] = 0.0
             self._force[:] = 0.0
             self._torque[:] = 0.0
+        if d.warning[mujoco.mjtWarning.mjWARN_BADQACC].number > resets:
+            # MuJoCo met a non-finite or huge acceleration and reset the state to the model's
+            # initial pose: say so, naming the body, instead of running on from there
+            dof = int(d.warning[mujoco.mjtWarning.mjWARN_BADQACC].lastinfo)
+            body = mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_BODY, int(m.dof_bodyid[dof])) if 0 <= dof < m.nv else "?"
+            raise InstabilityError(
+                f"{self.name}: MuJoCo found a non-finite or huge acceleration at degree of freedom {dof} (body "
+                f"'{body}') between t = {t:.9g} and {t + dt:.9g} s and reset its state; reduce the coupling step or "
+                f"the MJCF timestep (an elastic chain: below its stable step, bodies.elastic.BeamModel.stable_dt), "
+                f"or check the loads given to this body")
         d.time = t + dt  # the coupler's clock, not n accumulated sub-steps
         self.substeps = n
         self._check_finite(n)

@@ -125,6 +125,16 @@ class SPHFluid:
         size, dx and the fix."""
         dx, dim = self.config.dx, self.config.dim
         names = getattr(bodies, "body_names", None)
+        for beam in self.elastic_beams:
+            n = beam.particles_across(dx)
+            if n < self.MIN_PARTICLES_ACROSS:
+                raise InputError(
+                    f"SPH fluid: elastic plate '{beam.name}' is {beam.thickness:.4g} m thick, {n} particle(s) across "
+                    f"at dx = {dx:.4g} m; its boundary needs at least {self.MIN_PARTICLES_ACROSS} across (a single "
+                    f"column sits on the mid-plane, with no face of its own for its ghost node). Refine dx to "
+                    f"{beam.thickness / self.MIN_PARTICLES_ACROSS:.3g} m or less, or give the plate the thin-wall "
+                    f"treatment (thin_wall=True: two columns at +-dx/2, the fluid standing off by "
+                    f"{max(dx - beam.thickness / 2, 0.0):.3g} m on each side)")
         links = {n for beam in self.elastic_beams for n in beam.link_names}
         for k, shapes in enumerate(bodies.geoms()):
             body = names[k] if names is not None else str(k)
@@ -194,7 +204,7 @@ class SPHFluid:
             self._ghost_b = np.zeros_like(pb)
             for k in range(bodies.n_bodies):
                 self._ghost_b[owner == k] = ghost_offsets(geoms[k], pb[owner == k], c.dim)
-            self._elastic_ghost = [e.beam.ghost_offsets(e.plate, c.dim) for e in self.elastic]
+            self._elastic_ghost = [e.beam.ghost_offsets(e.plate, c.dim, c.dx) for e in self.elastic]
             self._mdbc = MDBC(c.dim, c.h, c.rho0, c.kernel, int(ps.ids.max()) + 1)
             self._set_ghosts(kin)
             walls = self.fluid.boundary_correction  # the tank walls' own (FluidConfig.walls), if any
@@ -210,6 +220,11 @@ class SPHFluid:
         rows = [e.link_index for e in self.elastic]
         self._elastic_rows = np.concatenate(rows) if rows else np.zeros(0, np.int64)
         self._kin = None  # the kinematics the particles were last placed from
+
+    @property
+    def elastic_rows(self) -> list[int]:
+        """The coupled-body indices of the elastic beams' links (after attachment)."""
+        return [int(k) for k in getattr(self, "_elastic_rows", ())]
 
     def _elastic_wrenches(self, F, M):
         """The links' loads from the per-particle groups' (F (G, dim), M): each particle's
@@ -266,6 +281,7 @@ class SPHFluid:
         self.fluid.moment_points[self._g0:self._g0 + self.n_bodies] = self._to_dim(kin.com)
         self._kin = kin
         for e, ids in zip(self.elastic, self._elastic_ids):  # moment points stay at the origin
+            e.check(kin)  # a chain gone unstable stops the run here, naming its element
             x, u = e.place(kin)
             self.fluid.set_particle_motion(ids, self._to_dim(x), self._to_dim(u))
 

@@ -408,3 +408,16 @@ def test_other_bad_input_is_refused():
         elastic_beam("p", **SEED, base=(0.0, 0.0))
     with pytest.raises(InputError, match="dx"):
         elastic_beam("p", **SEED).boundary_particles(0.0, 2)
+
+
+def test_mujoco_resetting_a_blown_up_chain_stops_the_run_naming_the_body():
+    """Stepped at 12 times its stable RK4 step, the chain's accelerations blow up and MuJoCo
+    resets its state to the initial pose (mjWARN_BADQACC): MujocoBodies.advance says so,
+    naming the body, rather than going on from a plate at rest."""
+    b = elastic_beam("p", **{**SEED, "E": 1e10}, n_elements=8)
+    body = MujocoBodies(builders.scene(b.xml, gravity=0.0, timestep=1e-4), bodies=b.link_names)
+    assert b.stable_dt() < 1e-5
+    body.data.qvel[:] = 1e-3
+    with pytest.raises(InstabilityError, match=r"(reset its state|non-finite).*body '?p_link\d"):
+        for k in range(200):
+            body.advance(k * 1e-4, 1e-4)

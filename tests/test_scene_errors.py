@@ -195,6 +195,31 @@ lines = [{ fairlead = "float.top", anchor = [0.0, 0.0, -10.0], length = 12.0, we
 [probes]
 motion = ["float"]
 """,
+    "plate": """
+# 2-D: a dam break on an elastic plate (seed 002 §3.3)
+[world]
+dim = 2
+duration = 0.4
+
+[fluid]
+model = "sph"
+dx = 0.005
+
+[domain]
+kind = "tank"
+length = 0.584
+height = 0.32
+water = [{ lo = [0.0, 0.0], hi = [0.146, 0.292] }]
+
+[[bodies]]
+shape = "elastic-plate"
+name = "plate"
+length = 0.08
+thickness = 0.012
+E = 1e6
+density = 2500.0
+base = [0.298, 0.0]
+""",
 }
 
 #: the files beside the base scenes (in the working folder): valid, as the scenes read them
@@ -582,6 +607,27 @@ CASES = [
          "normal into the domain is (-1, 0); give that normal, e.g. [-1.0, 0.0]", "Scene.probes.pressure[0].normal"),
     case("a pressure patch smaller than dx", "flume", ("probes.pressure[0].size", 0.01), "probes.pressure[0].size",
          "0.01 m is less than one particle spacing (fluid.dx = 0.02 m)", "Scene.probes.pressure[0].size"),
+    # -- elastic plates
+    case("an elastic plate beyond the tank's end", "plate", ("bodies[0].base", [0.7, 0.0]), "bodies[0].base",
+         "the body reaches 0.694 .. 0.706 m along x, outside the domain's 0 .. 0.584 m; move it inside the tank",
+         "Scene.bodies[0].base"),
+    case("an elastic plate taller than the tank", "plate", ("bodies[0].length", 0.4), "bodies[0].base",
+         "the body reaches 0 .. 0.4 m along z, outside the domain's 0 .. 0.32 m", "Scene.bodies[0].base"),
+    case("an elastic plate off the floor", "plate", ("bodies[0].base", [0.298, 0.05]), "bodies[0].base",
+         "z = 0.05 m: the plate is clamped by its foot to the tank's floor at z = 0 m; give base z = 0",
+         "Scene.bodies[0].base"),
+    case("an elastic plate under two particle spacings thick", "plate", ("bodies[0].thickness", 0.006),
+         "bodies[0].thickness", "0.006 m is 1.2 particle spacings (dx = 0.005 m): 1 boundary particle across, which "
+         "lies on the mid-plane and holds neither side's fluid properly; refine fluid.dx to 0.003 m or less, or set "
+         "thin_wall = true", "Scene.bodies[0].thickness"),
+    case("an elastic plate with E = 0", "plate", ("bodies[0].E", 0.0), "bodies[0].E",
+         "0.0 [Pa] is out of range; give a number [Pa] > 0 (Young's modulus)", "ElasticPlate.E"),
+    case("an elastic plate of negative density", "plate", ("bodies[0].density", -2500.0), "bodies[0].density",
+         "-2500.0 [kg/m^3] is out of range; give a number [kg/m^3] > 0", "ElasticPlate.density"),
+    case("a 2-D elastic plate with a width", "plate", ("bodies[0].width", 0.1), "bodies[0].width",
+         "a 2-D plate is 1 m wide (the scene's depth); leave width out", "Scene.bodies[0].width"),
+    case("too few elements for an elastic plate", "plate", ("bodies[0].elements", 3), "bodies[0].elements",
+         "3 is out of range; give a whole number >= 4", "ElasticPlate.elements"),
     # -- times and files
     case("plot_at outside the run", "flume", ("world.plot_at", [2.5, 6.0]), "world.plot_at[1]",
          "6.0 s lies outside the run, 0 .. 5.0 s", "World.plot_at[1]"),

@@ -9,11 +9,12 @@ chosen from what a scene contains, :mod:`cosim.scene.runner` for what a run writ
 
 from cosim.scene.fields import SceneError
 from cosim.scene.spec import (MJCF, SPH, Analytic, Beach, Block, Box, Coupling, Cylinder, CylinderTank, Earthquake,
-                              Flap, Flume, GroundMotion, InclinedTank, Line, LinearWaves, Moorings, NoFluid,
+                              ElasticPlate, Flap, Flume, GroundMotion, InclinedTank, Line, LinearWaves, Moorings, NoFluid,
                               PaddleRecord, Patch, Piston, PolygonTank, Probes, Record, Roll, Scene, Shake, Sphere,
                               TableMotion, Tank, World)
 
 __all__ = ["MJCF", "SPH", "Analytic", "Beach", "Block", "Box", "Coupling", "Cylinder", "CylinderTank", "Earthquake",
+           "ElasticPlate",
            "Flap", "Flume", "GroundMotion", "InclinedTank", "Line", "LinearWaves", "Moorings", "NoFluid",
            "PaddleRecord", "Patch", "Piston", "PolygonTank", "Probes", "Record", "Roll", "Scene", "SceneError", "Shake",
            "Sphere", "TableMotion", "Tank", "World"]

@@ -17,8 +17,9 @@ from pathlib import Path
 
 import numpy as np
 
-from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, Box, Cylinder, CylinderTank, Earthquake, Flap, Flume,
-                              GroundMotion, InclinedTank, Piston, PolygonTank, Roll, Shake, Sphere, TableMotion, Tank)
+from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, Box, Cylinder, CylinderTank, Earthquake, ElasticPlate,
+                              Flap, Flume, GroundMotion, InclinedTank, Piston, PolygonTank, Roll, Shake, Sphere,
+                              TableMotion, Tank)
 
 PADDLE, WALLS = 1, 0  # the flume's paddle group and every tank's wall group
 
@@ -38,6 +39,7 @@ class Built:
     start_heights: dict = field(default_factory=dict)  #: floating bodies: their computed centre height [m]
     wavemaker: object = None  #: fluid.wavemaker.RegularWavemaker, for regular waves
     base_motion: object = None  #: the tank's rigid motion ``motion(t, ref) -> (pos, vel)`` (fluid.motion), or None
+    plates: dict = field(default_factory=dict)  #: elastic plates: name -> bodies.elastic.BeamModel
 
 
 def site_name(fairlead: str) -> str:
@@ -181,15 +183,35 @@ def _surface_heights(scene, points):
     return np.full(len(points), water_level(scene))
 
 
+def plates(scene) -> dict:
+    """The scene's elastic plates as MuJoCo chains (``bodies.elastic.elastic_beam``), by name."""
+    from bodies.elastic import elastic_beam
+
+    dim, out = scene.world.dim, {}
+    for b in scene.bodies:
+        if isinstance(b, ElasticPlate):
+            base = (b.base[0], 0.0, b.base[1]) if dim == 2 else tuple(b.base)
+            out[b.name] = elastic_beam(b.name, b.length, b.thickness, E=b.E, rho=b.density,
+                                       width=1.0 if dim == 2 else b.width, nu=b.nu, n_elements=b.elements,
+                                       base=base, beta=b.damping, thin_wall=b.thin_wall)
+    return out
+
+
 def _mjcf_bodies(scene, level, rho):
-    """The MuJoCo model of the scene's builder bodies, floating ones at their computed height."""
+    """The MuJoCo model of the scene's builder bodies, floating ones at their computed height;
+    elastic plates as chains, MuJoCo's step at most half the stiffest chain's stable step."""
     from bodies import builders
 
     from cosim.scene.placement import floating_height
 
     dim, parts, heights = scene.world.dim, [], {}
     lines = scene.moorings.lines if scene.moorings is not None else ()
+    beams = plates(scene)
+    timestep = min([scene.coupling.body_timestep] + [0.5 * m.stable_dt() for m in beams.values()])
     for i, b in enumerate(scene.bodies):
+        if isinstance(b, ElasticPlate):
+            parts.append(beams[b.name].xml)
+            continue
         mine = [k for k, ln in enumerate(lines) if ln.fairlead.split(".")[0] == b.name]
         if b.place == "floating":
             z = floating_height(b, dim, level, rho, scene.world.gravity, [lines[k] for k in mine], i,
@@ -208,7 +230,7 @@ def _mjcf_bodies(scene, level, rho):
         else:
             assert isinstance(b, Sphere)
             parts.append(builders.sphere(b.name, b.radius, pos, **common))
-    xml = builders.scene(*parts, gravity=scene.world.gravity, timestep=scene.coupling.body_timestep)
+    xml = builders.scene(*parts, gravity=scene.world.gravity, timestep=timestep)
     return xml, heights
 
 
@@ -221,7 +243,11 @@ def _bodies(scene, level, rho):
         bodies.model.opt.gravity[:] = (0.0, 0.0, -scene.world.gravity)  # one gravity for every participant
         return bodies, {}
     xml, heights = _mjcf_bodies(scene, level, rho)
-    return MujocoBodies(xml), heights
+    if not any(isinstance(b, ElasticPlate) for b in scene.bodies):
+        return MujocoBodies(xml), heights
+    beams = plates(scene)  # a plate couples every link, the welded foot's too (its load goes into the clamp)
+    coupled = [n for b in scene.bodies for n in (beams[b.name].link_names if b.name in beams else [b.name])]
+    return MujocoBodies(xml, bodies=coupled), heights
 
 
 def _mooring(scene, level, rho, workdir: Path):
@@ -273,6 +299,7 @@ def build(scene, workdir: Path) -> Built:
     out = Built(coupler=None, level=level)
     if scene.bodies:
         out.bodies, out.start_heights = _bodies(scene, level, rho)
+        out.plates = plates(scene)
     moorings = []
     if scene.moorings is not None:
         out.mooring, sites, out.line_names = _mooring(scene, level, rho, Path(workdir))
@@ -326,7 +353,7 @@ def _build_sph(scene, out: Built) -> None:
         from cosim.sph_fluid import SPHFluid
 
         out.fluid = SPHFluid(cfg, pts, walls, z_surface=out.level, boundary=scene.fluid.body_boundary,
-                             motions=motions)
+                             motions=motions, elastic=list(out.plates.values()))
         return
     from fluid.equations import hydrostatic_density
     from fluid.geometry import assemble

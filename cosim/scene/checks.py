@@ -21,8 +21,8 @@ import math
 
 from cosim.scene.fields import SceneError
 from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, Box, CylinderTank, Cylinder, Earthquake, Flap, Flume,
-                              GroundMotion, InclinedTank, NoFluid, PaddleRecord, Piston, PolygonTank, Roll, Sphere,
-                              TableMotion, Tank)
+                              ElasticPlate, GroundMotion, InclinedTank, NoFluid, PaddleRecord, Piston, PolygonTank,
+                              Roll, Sphere, TableMotion, Tank)
 
 
 def body_names(scene) -> list[str]:
@@ -32,6 +32,11 @@ def body_names(scene) -> list[str]:
     for b in scene.bodies:
         out.extend(b.bodies if isinstance(b, MJCF) else [b.name])
     return out
+
+
+def _pos_key(b) -> str:
+    """The field that places a builder body: ``pos``, or an elastic plate's ``base``."""
+    return "base" if isinstance(b, ElasticPlate) else "pos"
 
 
 def _dim_vec(v, dim, path, what="point"):
@@ -234,6 +239,8 @@ def _check_bodies(s, dim):
             names = b.bodies
         else:
             names = [b.name]
+            if isinstance(b, ElasticPlate):
+                _check_plate(s, dim, b, key)
             if b.place == "floating":
                 if len(b.pos) != dim - 1:
                     raise SceneError(f"{key}.pos", f"{list(b.pos)}: a floating body's height is computed; give "
@@ -274,8 +281,34 @@ def _check_bodies(s, dim):
     return mj
 
 
+def _check_plate(s, dim, b, key) -> None:
+    """An elastic plate: its base in the scene's dimension, a width in 3-D only, its foot on
+    the tank's floor, at least two boundary particles across it (or the thin-wall columns)."""
+    _dim_vec(b.base, dim, f"{key}.base")
+    if (b.width is None) == (dim == 3):
+        raise SceneError(f"{key}.width", "a 3-D plate needs its width along y [m]" if dim == 3 else
+                         "a 2-D plate is 1 m wide (the scene's depth); leave width out")
+    if not isinstance(s.fluid, SPH):
+        return
+    dx = s.fluid.dx
+    across = max(1, round(b.thickness / dx))
+    if across < 2 and not b.thin_wall:
+        raise SceneError(f"{key}.thickness", f"{b.thickness:g} m is {b.thickness / dx:.3g} particle spacings "
+                         f"(dx = {dx:g} m): {across} boundary particle across, which lies on the mid-plane and "
+                         f"holds neither side's fluid properly; refine fluid.dx to {b.thickness / 2:.3g} m or less, "
+                         f"or set thin_wall = true (two columns, one per side; the fluid stands off by up to "
+                         f"{max(dx - b.thickness / 2, 0.0):.3g} m on each side)")
+    if s.domain is not None:
+        floor = _domain_box(s.domain, dim)[0][-1]
+        if abs(b.base[-1] - floor) > 1e-9 * max(1.0, abs(floor)):
+            raise SceneError(f"{key}.base", f"z = {b.base[-1]:g} m: the plate is clamped by its foot to the tank's "
+                             f"floor at z = {floor:g} m; give base z = {floor:g}")
+
+
 def _extent(b, dim):
     """Half extents [m] of a builder body along (x, [y,] z), upright."""
+    if isinstance(b, ElasticPlate):
+        return [0.5 * b.thickness] + ([0.5 * b.width] if dim == 3 else []) + [0.5 * b.length]
     if isinstance(b, Box):
         return [0.5 * x for x in b.size]
     if isinstance(b, Cylinder):
@@ -311,7 +344,7 @@ def _check_inside(s, dim):
         for k in range(n):
             if b.pos[k] - half[k] < lo[k] or b.pos[k] + half[k] > hi[k]:
                 axis = "xyz"[k] if dim == 3 else "xz"[k]
-                raise SceneError(f"bodies[{i}].pos", f"the body reaches {b.pos[k] - half[k]:g} .. "
+                raise SceneError(f"bodies[{i}].{_pos_key(b)}", f"the body reaches {b.pos[k] - half[k]:g} .. "
                                  f"{b.pos[k] + half[k]:g} m along {axis}, outside the domain's {lo[k]:g} .. "
                                  f"{hi[k]:g} m; move it inside the tank")
 
@@ -787,7 +820,7 @@ def _solid(b, dim, floating: bool):
         if isinstance(b, Box) or dim == 2:
             return ("box", c, half[:dim - 1])
         return ("ball", c, b.radius)
-    if isinstance(b, Box):
+    if isinstance(b, (Box, ElasticPlate)):
         return ("box", c, half)
     if isinstance(b, Cylinder) and dim == 3:
         return ("cyl", c, b.radius, 0.5 * b.length)
@@ -841,7 +874,8 @@ def _check_overlaps(s, dim) -> None:
                 continue  # one floating, one given: the floating one's height is not known yet
             tol = 1e-9 * max(1.0, *(abs(x) for x in b.pos + a.pos))
             if _overlap(me, other, tol):
-                raise SceneError(f"bodies[{j}].pos", f"body {b.name!r} ({_bounds(b, dim, floating)}) overlaps "
+                raise SceneError(f"bodies[{j}].{_pos_key(b)}",
+                                 f"body {b.name!r} ({_bounds(b, dim, floating)}) overlaps "
                                  f"body {a.name!r} (bodies[{i}], {_bounds(a, dim, floating)}) at the start"
                                  f"{': both float, so their footprints must be apart' if floating else ''}; move "
                                  f"one clear of the other")
@@ -868,9 +902,10 @@ def _check_walls(s, dim) -> None:
         if isinstance(d, CylinderTank):
             R, (x, y) = 0.5 * d.diameter, b.pos[:2]
             far = (max(math.hypot(x + sx * half[0], y + sy * half[1]) for sx in (-1, 1) for sy in (-1, 1))
-                   if isinstance(b, Box) else math.hypot(x, y) + b.radius)
+                   if isinstance(b, (Box, ElasticPlate)) else math.hypot(x, y) + b.radius)
             if far > R + tol:
-                raise SceneError(f"bodies[{i}].pos", f"the body reaches {far:.4g} m from the tank's axis, beyond its "
+                raise SceneError(f"bodies[{i}].{_pos_key(b)}",
+                                 f"the body reaches {far:.4g} m from the tank's axis, beyond its "
                                  f"radius {R:g} m, into the {wall}; {fix}")
             continue
         if floating:
@@ -887,9 +922,10 @@ def _check_walls(s, dim) -> None:
         corners = [(c[0] + sx * hx, c[1] + sz * hz) for sx in (-1, 1) for sz in (-1, 1)]
         depth, q = max((_sd_polygon(v, q), q) for q in corners)
         if depth > tol:
-            raise SceneError(f"bodies[{i}].pos", f"the body's corner {_pt(q)} m (in x-z) lies {depth:.3g} m deep in "
+            raise SceneError(f"bodies[{i}].{_pos_key(b)}",
+                             f"the body's corner {_pt(q)} m (in x-z) lies {depth:.3g} m deep in "
                              f"the {wall}; {fix}")
         for q in v:
             if abs(q[0] - c[0]) < hx - tol and abs(q[1] - c[1]) < hz - tol:
-                raise SceneError(f"bodies[{i}].pos", f"the {wall}'s corner {_pt(q)} m lies inside the body "
+                raise SceneError(f"bodies[{i}].{_pos_key(b)}", f"the {wall}'s corner {_pt(q)} m lies inside the body "
                                  f"({_bounds(b, dim, False)}); {fix}")

@@ -4,14 +4,17 @@ that become one HDF5 series, one CSV and one plot each:
 
 - ``motion``: per body, surge, heave and pitch (2-D: rotation about +y) or surge, sway,
   heave, roll, pitch, yaw (3-D, z-y-x Euler angles), displacements from the start [m]
-  and angles [deg];
+  and angles [deg]; per elastic plate, the displacement from the start [m] of its upper
+  left corner (top, -x face) and of its tip (top centre), ``plate.corner_x``,
+  ``plate.corner_z``, ``plate.tip_x``, ``plate.tip_z`` (3-D also ``_y``);
 - ``line_states``: per catenary line, its state (seed 004 Fig. 5: 0 resting, 1 partly
   lifted, 2 fully lifted, 3 taut; :class:`moorings.catenary.LineState`);
 - ``tensions``: per line, the tension at its fairlead [N], at its anchor
   (``.anchor_tension`` [N]; the catenary, the SPH cable and MoorDyn report it, an FMU does
   not) and ``.tether`` [N], the load a taut inextensible catenary line carries as a length
   constraint;
-- ``loads``: per body, the fluid's and the moorings' force [N] over the last step;
+- ``loads``: per body, the fluid's and the moorings' force [N] over the last step (a
+  plate's: the sum over its links, the clamped foot's share included);
 - ``gauges``: free-surface elevation above the still water [m] at each gauge (the SPH
   fluid's, or the analytic fluid's linear waves);
 - ``pressure``: each wall patch's pressure [Pa];
@@ -55,36 +58,49 @@ def groups(scene, built) -> list[Group]:
     b = built.bodies
     if b is not None:
         names = list(b.body_names)
-        chosen = names if "all" in p.motion else [n for n in p.motion]
-        idx = [names.index(n) for n in chosen]
+        plates = getattr(built, "plates", None) or {}  # elastic plates: their links are coupled bodies
+        links = {k: n for n, m in plates.items() for k in m.link_names}
+        rigid = [n for n in names if n not in links]
+        chosen = rigid + list(plates) if "all" in p.motion else [n for n in p.motion]
+        idx = [names.index(n) for n in chosen if n not in plates]
+        sites = {n: [b.site(f"{n}_corner")[0], b.site(f"{n}_tip")[0]] for n in chosen if n in plates}
+        site0 = {n: b.site_positions(ids) for n, ids in sites.items()}
         com0 = b.kinematics().com.copy()
         lin = ["surge", "heave"] if dim == 2 else ["surge", "sway", "heave"]
         ang = ["pitch"] if dim == 2 else ["roll", "pitch", "yaw"]
         axes = [0, 2] if dim == 2 else [0, 1, 2]
+        comps = "xz" if dim == 2 else "xyz"
 
         def motion():
             k = b.kinematics()
             row = []
             for j in idx:
                 row += [float(k.com[j, a] - com0[j, a]) for a in axes] + _angles(k.rotation[j], dim)
+            for n, ids in sites.items():
+                row += list((b.site_positions(ids) - site0[n])[:, axes].ravel())
             return np.array(row)
 
-        if idx:
-            out.append(Group("motion", [f"{n}.{q}" for n in chosen for q in lin + ang],
-                             [u for _ in chosen for u in ["m"] * len(lin) + ["deg"] * len(ang)], motion))
+        if idx or sites:
+            cols = [f"{names[j]}.{q}" for j in idx for q in lin + ang]
+            cols += [f"{n}.{s}_{c}" for n in sites for s in ("corner", "tip") for c in comps]
+            units = [u for _ in idx for u in ["m"] * len(lin) + ["deg"] * len(ang)] + ["m"] * (2 * len(comps)
+                                                                                              * len(sites))
+            out.append(Group("motion", cols, units, motion))
         if p.loads:
-            comps = "xz" if dim == 2 else "xyz"
             led = built.coupler.ledger
+            rows = [[names.index(n)] for n in rigid] + [[names.index(k) for k in m.link_names]
+                                                        for m in plates.values()]
 
             def loads():
                 last = led.last()
                 if not last:  # before the first step: the loads the coupler would apply now
                     F, _, Fm, _ = built.coupler._loads(b.kinematics())
                     last = {"fluid_force": F, "mooring_force": Fm}
-                return np.concatenate([np.concatenate([last["fluid_force"][j, axes], last["mooring_force"][j, axes]])
-                                       for j in range(len(names))])
+                return np.concatenate([np.concatenate([last["fluid_force"][j][:, axes].sum(axis=0),
+                                                       last["mooring_force"][j][:, axes].sum(axis=0)])
+                                       for j in rows])
 
-            cols = [f"{n}.{src}_F{c}" for n in names for src in ("fluid", "mooring") for c in comps]
+            cols = [f"{n}.{src}_F{c}" for n in rigid + list(plates) for src in ("fluid", "mooring") for c in comps]
             out.append(Group("loads", cols, ["N"] * len(cols), loads))
     m = built.mooring
     if m is not None and p.tensions:

@@ -519,7 +519,45 @@ class MJCF(Spec):
     file: str = required(text(None, "the MJCF file"))
     bodies: tuple = names("names of the coupled bodies (empty: every movable body)")
 
-BODIES = (Box, Cylinder, Sphere, MJCF)
+@dataclass(frozen=True)
+class ElasticPlate(Spec):
+    """An elastic plate (a cantilever) clamped by its foot to the tank's floor at ``base``
+    [m] (the centre of the foot: (x, z) in 2-D, (x, y, z) in 3-D) and rising ``length`` [m]
+    along z; ``thickness`` [m] along x (the bending direction), in 3-D ``width`` [m] along y
+    (2-D: 1 m). A chain of ``elements`` rigid links joined by bending hinges ``E I / l`` and
+    shear slides ``kappa G A / l`` (a discrete Timoshenko beam, :mod:`bodies.elastic`); the
+    SPH fluid's boundary particles follow its deformed surface. Probes: the displacement of
+    its upper left corner (top, -x face) and of its tip (top centre). ``thin_wall``: a plate
+    fewer than two particle spacings thick gets two columns of boundary particles anyway,
+    one for each side (the fluid stands off it by up to half a spacing); without it such a
+    plate is refused."""
+
+    TAG = ("shape", "elastic-plate")
+    shape: str = tag("elastic-plate")
+    name: str = required(text(None, "the body's name", name=True))
+    length: float = required(num(None, "height from the clamp to the top", "m", lo=0, lo_open=True, optional=False))
+    thickness: float = required(num(None, "thickness along x", "m", lo=0, lo_open=True, optional=False))
+    E: float = required(num(None, "Young's modulus", "Pa", lo=0, lo_open=True, optional=False))
+    density: float = required(num(None, "density", "kg/m^3", lo=0, lo_open=True, optional=False))
+    base: tuple = required(vec(None, "centre of the clamped foot, on the floor", "m"))
+    width: float = num(None, "width along y (3-D only)", "m", lo=0, lo_open=True)
+    nu: float = num(0.0, "Poisson's ratio", lo=-1.0, hi=0.5, lo_open=True, hi_open=True)
+    elements: int = whole(8, "elements along the plate (8: first three frequencies within 1 %)", lo=4)
+    damping: float = num(0.0, "stiffness-proportional damping beta (joint damping beta k)", "s", lo=0)
+    thin_wall: bool = flag(False, "two columns of boundary particles for a plate under two spacings thick")
+
+    # what the checks of the other bodies read: a plate stands upright at a given pose
+    place = "given"
+    euler = None
+    fairleads: dict = dataclasses.field(default_factory=dict, init=False, repr=False, compare=False)
+
+    @property
+    def pos(self) -> tuple:
+        """The plate's centre [m] (undeformed)."""
+        return tuple(self.base[:-1]) + (self.base[-1] + 0.5 * self.length,)
+
+
+BODIES = (Box, Cylinder, Sphere, MJCF, ElasticPlate)
 
 
 # ------------------------------------------------------------------------ moorings
@@ -683,6 +721,7 @@ class Scene(Spec):
 __all__ = ["World", "NoFluid", "Analytic", "SPH", "Block", "Tank", "Beach", "Flume", "InclinedTank",
            "CylinderTank", "PolygonTank", "Piston", "Flap", "PaddleRecord", "LinearWaves",
            "Shake", "Roll", "TableMotion",
-           "Earthquake", "Record", "GroundMotion", "Box", "Cylinder", "Sphere", "MJCF", "Line", "Moorings", "Patch",
+           "Earthquake", "Record", "GroundMotion", "Box", "Cylinder", "Sphere", "MJCF", "ElasticPlate", "Line",
+           "Moorings", "Patch",
            "Probes", "Coupling",
            "Scene", "SceneError", "MOORING_MODELS", "SETUPS"]
