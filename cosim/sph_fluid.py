@@ -8,7 +8,10 @@ geoms, is removed and counted). Each body is one ``BODY`` group of the fluid. Ev
 exchange places the group from the body's pose (rigid transform of body
 coordinates: no drift) with velocities ``V + Ω × r`` (seed 004 Eq. 13), and the
 loads on a body are the sum over its particles of the force the fluid exerts on
-them, about its centre of mass (seed 004 Eq. 9-12).
+them, about its centre of mass (seed 004 Eq. 9-12). An elastic plate (``elastic=``,
+:mod:`bodies.elastic`) is laid over whole instead: each of its particles blends the
+poses of the two links nearest it and is its own group, and its exchanged impulse is
+split between those links with the same weights.
 
 By default the bodies' particles take modified dynamic boundary densities (mDBC,
 ``fluid.boundary_correction``): each has a ghost node mirrored across its geom's
