@@ -1,0 +1,94 @@
+"""Seed 004 §5's wind-turbine base (examples/wind_turbine_base.toml): it builds as the
+paper describes it (3-D, 16 000 kg, three 45 m lines of Table 4 at 120 deg, break load
+1400 kN, H = 0.7 m, T = 20 s), floats at the draft that hydrostatics and the three
+catenaries predict together (computed here from the law itself, seed 004 Eq. 35-39), and
+runs with each mooring model changed in one field."""
+
+import dataclasses
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from cosim.scene import Scene
+
+TOML = Path(__file__).resolve().parents[1] / "examples" / "wind_turbine_base.toml"
+G, RHO = 9.81, 1025.0
+
+
+def _partly_lifted_V(X, h, L, w):
+    """Vertical fairlead load [N] of an inextensible line resting partly on the seabed:
+    a = H/w from X = L - s + a asinh(s/a), s = sqrt(h^2 + 2 h a) the hanging length
+    (seed 004 Eq. 35-39), by bisection; V = w s."""
+    lo, hi = 1e-9, 1e7
+    for _ in range(200):
+        a = math.sqrt(lo * hi)
+        s = math.sqrt(h * h + 2 * h * a)
+        lo, hi = (a, hi) if L - s + a * math.asinh(s / a) < X else (lo, a)
+    return w * math.sqrt(h * h + 2 * h * a)
+
+
+def _predicted_draft(scene):
+    """rho g A d = m g + sum V_i(X_i, h(d)), solved by fixed-point iteration."""
+    b, depth = scene.bodies[0], scene.domain.depth
+    A = math.pi * b.radius ** 2
+    d = 1.0
+    for _ in range(100):
+        z_c = depth - d + 0.5 * b.length  # centre of the upright cylinder
+        pull = 0.0
+        for ln in scene.moorings.lines:
+            f = b.fairleads[ln.fairlead.split(".")[1]]
+            p = (b.pos[0] + f[0], b.pos[1] + f[1], z_c + f[2])
+            X = math.dist(p[:2], ln.anchor[:2])
+            pull += _partly_lifted_V(X, p[2] - ln.anchor[2], ln.length, ln.weight)
+        d = (b.mass * G + pull) / (RHO * G * A)
+    return d, pull
+
+
+def test_the_scene_is_the_papers_case():
+    s = Scene.from_toml(TOML)
+    assert s.world.dim == 3 and s.world.duration >= 80 and s.fluid.model == "analytic"
+    assert s.bodies[0].mass == 16000.0 and s.moorings.model == "catenary"
+    assert (s.waves.kind, s.waves.height, s.waves.period) == ("piston", 0.7, 20.0)
+    assert s.domain.depth == 20.0
+    b = s.bodies[0]
+    angles = []
+    for ln in s.moorings.lines:
+        assert (ln.length, ln.mass_per_length, ln.break_load) == (45.0, 442.0, 1.4e6)
+        assert ln.weight == pytest.approx(442.0 * G * (1 - RHO / 7850.0), rel=1e-6)  # steel, Table 4
+        assert ln.anchor[2] == 0.0  # on the seabed, 20 m under the still water
+        angles.append(math.degrees(math.atan2(ln.anchor[1] - b.pos[1], ln.anchor[0] - b.pos[0])) % 360)
+    assert sorted(angles) == pytest.approx([0.0, 120.0, 240.0], abs=1e-3)
+
+
+def test_base_settles_at_hydrostatics_plus_catenaries(tmp_path):
+    s0 = Scene.from_toml(TOML)
+    scene = dataclasses.replace(s0, waves=None, name="static", probes=dataclasses.replace(s0.probes, gauges=()))
+    scene = scene.with_values(["world.duration=15.0", "world.sample_every=0.5"])
+    d_pred, pull = _predicted_draft(scene)
+    assert pull / G == pytest.approx(27.8e3, rel=0.01)  # the lines carry 27.8 t (the header's figure)
+    res = scene.run(tmp_path / "r")
+    z0 = res.summary["floating_start_z_m"]["base"]
+    b = scene.bodies[0]
+    z = z0 + res["base.heave"][-5:].mean()  # after 15 s
+    d_run = scene.domain.depth - (z - 0.5 * b.length)
+    assert d_run == pytest.approx(d_pred, rel=0.02), (d_run, d_pred)
+    assert abs(res["base.heave"]).max() < 0.02 * d_pred  # it starts there and stays
+    assert abs(res["base.surge"]).max() < 1e-3 and abs(res["base.sway"]).max() < 1e-3  # the spread balances
+    assert res.summary["line_breaks"] == []
+    assert set(res.summary["line_events"]) == {"back", "front_port", "front_starboard"}
+
+
+@pytest.mark.parametrize("model, extra", [("moordyn", []), ("fmu", []),
+                                          ("sph-cable", ["coupling.dt=0.005"])])
+def test_each_mooring_model_runs_the_scene(model, extra, tmp_path):
+    """One field swaps the model (the SPH cable of this stiff chain, EA = 1.9e9 N, needs a
+    coupling step under its fairlead spring's period: coupling.dt = 0.005 s)."""
+    pytest.importorskip("moordyn") if model == "moordyn" else None
+    scene = Scene.from_toml(TOML).with_values([f"moorings.model={model}", "world.duration=0.5",
+                                               "world.sample_every=0.05", *extra])
+    res = scene.run(tmp_path / model)
+    assert res.summary["t_reached_s"] == pytest.approx(0.5) and "error" not in res.summary
+    for name in ("back", "front_port", "front_starboard"):
+        assert np.isfinite(res[f"{name}.tension"]).all() and res[f"{name}.tension"].max() > 0
