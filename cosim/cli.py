@@ -99,7 +99,7 @@ def _study_parser(sub):
                    help="a field and its values, e.g. --vary fluid.dx=0.02,0.01 --vary moorings.model=catenary,moordyn")
     p.add_argument("--set", action="append", default=[], metavar="KEY.PATH=VALUE", help="change a field for every run")
     p.add_argument("--metric", action="append", default=[], metavar="SERIES:STAT",
-                   help="a probe series and a statistic: peak, max, min, mean, last, amplitude, period, arrival, rms "
+                   help="a probe series and a statistic: peak, max, min, mean, last, amplitude, harmonic, period, arrival, rms "
                         "(e.g. box.heave:amplitude)")
     p.add_argument("--reference", default="finest", help="finest (default), richardson, or a .json / .csv file")
     p.add_argument("--tol", help="relative tolerance for the recommendation, e.g. 5%% or 0.05")

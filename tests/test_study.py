@@ -46,6 +46,15 @@ def test_the_period_of_a_decaying_tone_over_a_fraction_of_cycles():
     assert M.value("period", t, x) == pytest.approx(T, rel=1e-3)
 
 
+def test_the_harmonic_amplitude_ignores_noise_that_sets_the_range():
+    rng = np.random.default_rng(3)
+    t = np.arange(0.0, 0.18, 0.03 / 40)  # 6 periods of 0.03 s, 40 samples each
+    x = 7000.0 + 3400.0 * np.sin(2 * np.pi * t / 0.03) + 300.0 * rng.standard_normal(t.size)
+    # 120 samples of noise 300: the fit's standard error is 300 sqrt(2/120) = 39 (1.1 %)
+    assert M.value("harmonic", t, x) == pytest.approx(3400.0, rel=0.03)
+    assert M.value("amplitude", t, x) > 3400.0 * 1.1  # the range carries the noise's extremes
+
+
 def test_richardson_recovers_order_and_limit():
     m_star, p = _richardson([0.01, 0.02, 0.04], [1 + 3 * h**1.5 for h in (0.01, 0.02, 0.04)])
     assert m_star == pytest.approx(1.0, abs=1e-12) and p == pytest.approx(1.5, abs=1e-9)

@@ -6,6 +6,9 @@ Statistics of a series x(t) sampled at the run's probe times:
 - ``peak``: max |x|; ``max``, ``min``, ``mean``, ``last``;
 - ``amplitude``: half the range (max - min) / 2 over the last half of the run (the steady
   part of a forced response);
+- ``harmonic``: the amplitude of the sinusoid at the spectrum's peak frequency (as
+  ``period``) fitted by least squares with a constant and a linear drift over the last
+  half of the run: the forced response without the noise that sets a range;
 - ``period``: 1 / the frequency of the largest peak of the spectrum of x over the last half
   of the run (:func:`spectral_peak`: Hann window, zero padding, parabolic vertex; periods
   longer than two thirds of that half are not searched) [s];
@@ -21,7 +24,7 @@ import numpy as np
 
 from cosim.errors import InputError
 
-STATS = ("peak", "max", "min", "mean", "last", "amplitude", "period", "arrival", "rms")
+STATS = ("peak", "max", "min", "mean", "last", "amplitude", "harmonic", "period", "arrival", "rms")
 
 
 def spectral_peak(t: np.ndarray, y: np.ndarray, f_lo: float, f_hi: float, pad: int = 64):
@@ -75,11 +78,17 @@ def value(stat: str, t: np.ndarray, x: np.ndarray, ref: tuple | None = None) -> 
     if stat == "amplitude":
         _, y = _last_half(t, x)
         return float(0.5 * (y.max() - y.min()))
-    if stat == "period":
+    if stat in ("period", "harmonic"):
         tt, y = _last_half(t, x)
         if len(y) < 8:
-            raise InputError("a period needs at least 8 samples in the last half of the run")
-        return 1.0 / spectral_peak(tt, y, 1.5 / (tt[-1] - tt[0]), np.inf)[0]
+            raise InputError(f"a {stat} needs at least 8 samples in the last half of the run")
+        f = spectral_peak(tt, y, 1.5 / (tt[-1] - tt[0]), np.inf)[0]
+        if stat == "period":
+            return 1.0 / f
+        w = 2 * np.pi * f
+        A = np.stack([np.ones_like(tt), tt - tt.mean(), np.sin(w * tt), np.cos(w * tt)], axis=1)
+        c = np.linalg.lstsq(A, y, rcond=None)[0]
+        return float(np.hypot(c[2], c[3]))
     if stat == "arrival":
         d = np.abs(x - x[0])
         if d.max() == 0:
