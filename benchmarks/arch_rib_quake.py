@@ -25,11 +25,17 @@ correlation (the paper: opposite phase under horizontal excitation, Figure 13), 
 quarter-wave prediction for the run's c0. ``--c0`` sets the speed of sound (the paper's
 140 m/s; default: the sloshing set-up's 10 sqrt(g h)).
 
-Measured (2-core machine shared with two soak benchmarks and a test run, so the wall time
-is 5 times the CPU time): dx = 0.2 m (2,310 water particles, 8,646 in all), El Centro EW,
-20 s, c0 = 126 m/s: 33,000 steps, 310 CPU-s (0.92 M particle-steps per CPU-second); the
-patches' first peak 0.81-0.82 Hz with a third near 2.4-2.5 Hz (3 times it), opposite in
-phase (correlation -0.56); the quarter-wave estimate at 126 m/s is 1.0 Hz.
+Measured (dx = 0.2 m: 2,310 water particles, 8,646 in all, 7 across the cavity; El
+Centro EW; FFT of the patches' pressure from 2.5 s on): at c0 = 126 m/s (the set-up's),
+20 s, 33,000 steps, 310 CPU-s (0.92 M particle-steps per CPU-second; 1,555 s of wall on
+the 2-core machine shared with two soak benchmarks and a test run), the first peak at
+0.81-0.82 Hz with another near 2.4-2.5 Hz (3 times it), left and right in opposite phase
+(correlation -0.86); the quarter-wave estimate at 126 m/s is 1.0 Hz. With ``--c0 63``
+(16 s, 240 s of wall) the first peak moves to 0.47-0.49 Hz (0.59 of it; an acoustic mode
+would move to 0.5, a sloshing mode would stay), its 3 times overtone to 1.38-1.41 Hz,
+correlation -0.90. So in our solver too the leading spike of the wall pressure is the
+water column's compressibility mode. Not converged (7 particles across), the section and
+m guessed.
 
     python benchmarks/arch_rib_quake.py --predict
     python benchmarks/arch_rib_quake.py --dx 0.2 --duration 20 --record ew --out out/arch_rib
