@@ -69,24 +69,24 @@ def test_the_shipped_records_end_at_rest_and_the_correction_keeps_them():
 
 def test_baseline_correction_removes_a_drift_from_a_real_record():
     """El Centro NS with an offset of 0.002 g and a trend of 1e-4 g/s (a tilted or
-    mis-zeroed instrument): integrated raw it ends 1.1 m/s and 27 m off; corrected
+    mis-zeroed instrument): integrated raw it ends at 2.47 m/s, 53.6 m off; corrected
     (polynomial fit to the displacement, constrained to end at rest: Boore 2001, BSSA 91(5)
     1199-1211; fluid.motion module docstring) it ends at rest, and its displacement is the
-    clean record's within 10 % of the clean peak (the fit also takes away the record's own
-    slow content), its acceleration within 0.5 % of the PGA."""
+    clean record's within 3 % of the clean peak (measured 1.0 %: the fit also takes some
+    of the record's own slow content), its acceleration within 1e-3 of the PGA (2.5e-5)."""
     clean = read_at2(NS, None)
     t = np.asarray(clean.times)
     drift = (0.002 + 1e-4 * t) * G_STANDARD
     raw = Tabulated(clean.times, tuple(np.asarray(clean.values) + drift), "acceleration")
     end = t[-1] - 1e-9
-    assert abs(raw.state(end)[1]) > 1.0 and abs(raw.state(end)[0]) > 20.0
+    assert abs(raw.state(end)[1]) > 2.0 and abs(raw.state(end)[0]) > 50.0
     cor = baseline_correct(raw, 6)
     assert abs(cor.state(end)[1]) < 1e-5 and abs(cor.state(t[-1])[0]) < 1e-9
     tt = np.linspace(0.0, end, 20001)
     d0, _, a0 = clean.sample(tt)
     d1, _, a1 = cor.sample(tt)
-    assert np.abs(d1 - d0).max() < 0.10 * np.abs(d0).max()
-    assert np.abs(a1 - a0).max() < 0.005 * np.abs(a0).max()
+    assert np.abs(d1 - d0).max() < 0.03 * np.abs(d0).max()
+    assert np.abs(a1 - a0).max() < 1e-3 * np.abs(a0).max()
 
 
 def test_the_record_integrates_exactly_at_its_samples():
