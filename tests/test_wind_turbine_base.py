@@ -80,11 +80,11 @@ def test_base_settles_at_hydrostatics_plus_catenaries(tmp_path):
     assert set(res.summary["line_events"]) == {"back", "front_port", "front_starboard"}
 
 
-@pytest.mark.parametrize("model, extra", [("moordyn", []), ("fmu", []),
+@pytest.mark.parametrize("model, extra", [("moordyn", ["coupling.dt=0.005"]), ("fmu", []),
                                           ("sph-cable", ["coupling.dt=0.005"])])
 def test_each_mooring_model_runs_the_scene(model, extra, tmp_path):
-    """One field swaps the model (the SPH cable of this stiff chain, EA = 1.9e9 N, needs a
-    coupling step under its fairlead spring's period: coupling.dt = 0.005 s)."""
+    """One field swaps the model (the dynamic models of this stiff chain, EA = 1.9e9 N,
+    need a coupling step under its fairlead spring's period: coupling.dt = 0.005 s)."""
     pytest.importorskip("moordyn") if model == "moordyn" else None
     scene = Scene.from_toml(TOML).with_values([f"moorings.model={model}", "world.duration=0.5",
                                                "world.sample_every=0.05", *extra])
