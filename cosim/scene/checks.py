@@ -21,7 +21,7 @@ import math
 
 from cosim.scene.fields import SceneError
 from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, Box, CylinderTank, Cylinder, Earthquake, Flap, Flume,
-                              ElasticPlate, GroundMotion, InclinedTank, NoFluid, PaddleRecord, Piston, PolygonTank,
+                              ArchRib, ElasticPlate, GroundMotion, InclinedTank, NoFluid, PaddleRecord, Piston, PolygonTank,
                               Roll, Sphere, TableMotion, Tank)
 
 
@@ -135,6 +135,9 @@ def _check_fluid_and_domain(s, dim):
     if isinstance(d, PolygonTank):
         _check_outline(d.vertices)
     sph = s.fluid
+    if isinstance(d, ArchRib) and isinstance(sph, SPH) and d.inner_height < 3 * sph.dx:
+        raise SceneError("fluid.dx", f"{sph.dx} m leaves fewer than 3 particles across the rib's cavity "
+                         f"(inner_height {d.inner_height:g} m); refine dx to at most {d.inner_height / 3:.3g} m")
     if isinstance(sph, SPH):
         depth = getattr(d, "level", None)
         if isinstance(d, PolygonTank):
@@ -882,7 +885,8 @@ def _check_overlaps(s, dim) -> None:
         solids.append((j, b, me, floating))
 
 
-_WALLS = {Flume: "beach", InclinedTank: "inclined side", PolygonTank: "polygon's wall", CylinderTank: "round wall"}
+_WALLS = {Flume: "beach", InclinedTank: "inclined side", PolygonTank: "polygon's wall", CylinderTank: "round wall",
+          ArchRib: "rib's wall"}
 
 
 def _check_walls(s, dim) -> None:

@@ -12,7 +12,8 @@ A scene is made of
 - a domain for the SPH fluid: :class:`Tank` (filled to a depth, or holding water blocks),
   :class:`Flume` (2-D or 3-D, with a :class:`Beach`; the analytic fluid takes a flume's
   depth and wavemaker too), :class:`InclinedTank`, :class:`CylinderTank`
-  (3-D), :class:`PolygonTank` (2-D); wall layers follow from the kernel;
+  (3-D), :class:`PolygonTank` (2-D), :class:`ArchRib` (2-D, seed 003); wall layers
+  follow from the kernel;
 - excitations: ``waves`` (:class:`Piston`, :class:`Flap`, :class:`PaddleRecord`: a flume's
   wavemaker; :class:`LinearWaves`: regular waves on the analytic fluid's bodies) or
   ``base_motion`` of a tank (:class:`Shake`, :class:`Roll`,
@@ -270,7 +271,89 @@ class PolygonTank(Spec):
         return self.fill_level
 
 
-DOMAINS = (Tank, Flume, InclinedTank, CylinderTank, PolygonTank)
+@dataclass(frozen=True)
+class ArchRib(PolygonTank):
+    """The water inside a hollow catenary arch rib, 2-D (seed 003_7c74773681ee080c.txt §4):
+    the cavity of ``fluid.shapes.arch_rib_cavity`` (the catenary axis ``z = rise - rise /
+    (m - 1) (cosh(k xi) - 1)``, ``xi = 2 x / span``, ``k = arccosh m``, offset by
+    ``inner_height`` / 2 on both sides), springings at x = -span/2 and +span/2, z = 0,
+    walled all round, each leg filled to ``level`` above the springings. Defaults: the
+    paper's rib (span 140 m, rise 23.333 m, design level 15.56 m); ``m`` and
+    ``inner_height`` are not in its text (m = 2.24 and 1.458 m give its particle counts
+    within 1 %, tests/test_arch_rib.py). :func:`arch_rib_monitors` places the pressure
+    patches B1-B18."""
+
+    TAG = ("kind", "arch-rib")
+    kind: str = tag("arch-rib")
+    # the polygon and its level, made from the fields below (not given)
+    vertices: tuple = dataclasses.field(default=(), init=False, repr=False, compare=False)
+    fill_level: float = dataclasses.field(default=0.0, init=False, repr=False, compare=False)
+    span: float = num(140.0, "horizontal distance between the springings (the axis' ends)", "m", lo=0, lo_open=True)
+    rise: float = num(23.333, "height of the axis' crown above the springings", "m", lo=0, lo_open=True)
+    m: float = num(2.24, "arch-axis coefficient (1: a parabola; the paper does not give it)", lo=1)
+    inner_height: float = num(1.458, "the cavity's inner height across the axis (the box section's, inside)", "m",
+                              lo=0, lo_open=True)
+    level: float = num(15.56, "still-water level in both legs, above the springings (003's design level)", "m")
+
+    def validate(self):
+        from cosim.errors import InputError
+        from fluid.shapes import arch_rib_cavity
+
+        top = self.rise + 0.5 * self.inner_height  # the cavity's highest point: the crown's upper face
+        if self.inner_height >= self.rise:
+            raise SceneError("inner_height", f"{self.inner_height} m is not below the rise {self.rise} m: the rib "
+                             f"would have no legs to hold water; give an inner height well below the rise")
+        if self.level <= 0:
+            raise SceneError("level", f"{self.level} m is at or below the springings (z = 0): the legs would hold "
+                             f"no water; give a level between 0 and the crown's inner top {top:.4g} m (below "
+                             f"{self.rise - 0.5 * self.inner_height:.4g} m the legs hold separate columns)")
+        if self.level >= top:
+            raise SceneError("level", f"{self.level} m is at or above the crown's inner top {top:.4g} m (rise "
+                             f"{self.rise} m + inner_height / 2): the water would not fit, the cavity would be full "
+                             f"with no free surface; give a level below {top:.4g} m")
+        try:
+            v = arch_rib_cavity(self.span, self.rise, self.inner_height, self.m)
+        except InputError as e:
+            raise SceneError("inner_height", str(e).removeprefix("arch_rib_cavity: ")) from None
+        object.__setattr__(self, "vertices", tuple((float(x), float(z)) for x, z in v))
+        object.__setattr__(self, "fill_level", self.level)
+        super().validate()
+
+
+def arch_rib_monitors(rib: ArchRib, size: float, heights=None) -> tuple:
+    """The wall-pressure patches B1-B18 of 003 §4.1 on an :class:`ArchRib`, ``size`` [m]
+    long. The paper places them only in its Figure 6 ("B1 to B9 on the right side of the
+    arch rib, B10 to B18 on the left side, symmetrical about the y-axis", at different
+    depths, on the upper and lower surfaces); our choice: Bk (k = 1..9) on the right leg
+    where the axis is at z = ``heights[k-1]`` [m] (default 1.4 k m: 1.4 .. 12.6 m, under
+    the depth study's lowest level 13 m), on the lower (intrados) face for odd k and the
+    upper face for even k; B(9 + k) its mirror image on the left leg. Each patch's centre
+    lies on the face (the axis offset by inner_height / 2 along its normal), its normal
+    into the water."""
+    import math
+
+    span, rise, m, hc = rib.span, rib.rise, rib.m, rib.inner_height
+    heights = [1.4 * k for k in range(1, 10)] if heights is None else list(heights)
+    kk = math.acosh(m) if m > 1 else 0.0
+    out = []
+    for side, sign in (("right", 1.0), ("left", -1.0)):
+        for i, zc in enumerate(heights):
+            if not 0 < zc < rise:
+                raise SceneError("heights", f"{zc} m: a monitoring point's axis height must lie between the "
+                                 f"springing (0) and the crown ({rise} m)")
+            # xi from z on the right leg (the axis' closed form inverted)
+            xi = (math.acosh(1 + (rise - zc) * (m - 1) / rise) / kk if m > 1 else math.sqrt(1 - zc / rise))
+            dz = (-rise / (m - 1) * kk * math.sinh(kk * xi) if m > 1 else -2 * rise * xi) * 2 / span
+            nx, nz = -dz / math.hypot(1.0, dz), 1.0 / math.hypot(1.0, dz)  # the axis' upward normal
+            x = 0.5 * span * xi
+            face = -1.0 if i % 2 == 0 else 1.0  # odd k: the lower face, its normal into the water is up
+            cx, cz = x + face * 0.5 * hc * nx, zc + face * 0.5 * hc * nz
+            out.append(Patch(f"B{i + 1 + (9 if sign < 0 else 0)}", (sign * cx, cz), (-face * sign * nx, -face * nz),
+                             size))
+    return tuple(out)
+
+
+DOMAINS = (Tank, Flume, InclinedTank, CylinderTank, PolygonTank, ArchRib)
 
 
 # ------------------------------------------------------------------------ excitations
@@ -719,7 +802,7 @@ class Scene(Spec):
 
 
 __all__ = ["World", "NoFluid", "Analytic", "SPH", "Block", "Tank", "Beach", "Flume", "InclinedTank",
-           "CylinderTank", "PolygonTank", "Piston", "Flap", "PaddleRecord", "LinearWaves",
+           "CylinderTank", "PolygonTank", "ArchRib", "arch_rib_monitors", "Piston", "Flap", "PaddleRecord", "LinearWaves",
            "Shake", "Roll", "TableMotion",
            "Earthquake", "Record", "GroundMotion", "Box", "Cylinder", "Sphere", "MJCF", "ElasticPlate", "Line",
            "Moorings", "Patch",
