@@ -149,6 +149,10 @@ def elastic_plate(quick: bool) -> dict:
         5.0         2400     7985      63      46.7     0.228    7.8 / 2.2 / 5.9 / 4.2
         3.5         4436    11220     113      44.2     0.221    6.4 / 2.7 / 4.6 / 4.4
         2.5         8197    15700     166      43.9     0.223    6.1 / 2.9 / 4.3 / 4.5
+
+    In 3-D, as a scene (``shape = "elastic-plate"``, a slice 36 mm wide between the tank's
+    side walls, dx = 6 mm, 45 358 particles, 0.3 s in 1374 s): 43.4 mm at 0.216 s, RMS over
+    0.3 s 6.2 / 2.2 / 4.8 / 4.1 mm.
     """
     dx, t_end = (0.005, 0.3) if quick else (0.0025, 0.4)
     r = run_elastic_plate(dx, t_end)
