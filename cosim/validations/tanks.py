@@ -37,6 +37,45 @@ def chwang_profile(beta_deg: float) -> tuple[np.ndarray, np.ndarray]:
     return y, np.array([row[f"Cp_y{k // 10}{k % 10}H"] for k in range(0, 11)])
 
 
+def _shaken_tank(built, dim: int, dx: float, depth: float, c0: float, a0: float, Tp: float, **overrides):
+    """The fluid of a tank (a :class:`fluid.geometry.Built` with FIXED walls) whose walls,
+    one MOVING group, follow the base acceleration ``a0 sin(2 pi t / Tp)`` along +x from
+    rest, the water at hydrostatic density: (fluid, the motion, its config)."""
+    src = built.particles
+    fl = src.kind == Kind.FLUID
+    ps = assemble(dim, dx, RHO0, src.pos[fl], [(src.pos[~fl], Kind.MOVING_WALL, 0)]).particles
+    cfg = FluidConfig(dim=dim, dx=dx, c0=c0, **overrides)
+    set_hydrostatic(ps, depth, RHO0, cfg.speed_of_sound, cfg.gamma, cfg.g)
+    f = Fluid(cfg, ps)
+    shake = Translation(tuple(np.eye(dim)[0]), Harmonic.from_peak_acceleration(a0, Tp, from_rest=True))
+    f.prescribe_motion(0, shake)
+    f.initialize(0.0)
+    return f, shake, cfg
+
+
+def _face_amplitudes(f, shake, cfg, faces: dict, Tp: float, samples_per_period: int, periods_skip: int,
+                     periods_fit: int) -> dict:
+    """Run ``f`` and fit ``c0 + c1 t + s sin(w t) + k cos(w t)`` to the face pressure
+    (:func:`face_pressure`, points carried by the tank) at each group of ``faces`` ({name:
+    (points (m, dim), normals (dim,) or (m, dim))}) over ``periods_fit`` periods after
+    ``periods_skip``: {name: (s, k)} [Pa]."""
+    dt_s = Tp / samples_per_period
+    n_skip, n_fit = periods_skip * samples_per_period, periods_fit * samples_per_period
+    rec = {k: [] for k in faces}
+    times = []
+    t = 0.0
+    for i in range(n_skip + n_fit):
+        f.advance(t, dt_s)
+        t = (i + 1) * dt_s
+        if i + 1 <= n_skip:
+            continue
+        for k, (pts, n) in faces.items():
+            here = shake(t, pts)[0]
+            rec[k].append(face_pressure(f, here, here, n, shake.acceleration(t), cfg.gravity))
+        times.append(t)
+    return {k: _harmonic_fit(np.asarray(times), np.asarray(v), 2 * math.pi / Tp) for k, v in rec.items()}
+
+
 def run_inclined(beta_deg: float, dx: float, c0: float = 1430.0, periods_skip: int = 2, periods_fit: int = 3,
                  samples_per_period: int = 40, a0: float = 0.5 * G, Tp: float = 0.03, length: float = 3.0,
                  H: float = 1.0, height: float = 1.5, **overrides) -> dict:
@@ -59,40 +98,17 @@ def run_inclined(beta_deg: float, dx: float, c0: float = 1430.0, periods_skip: i
     (:func:`cosim.validations.tank_potential.wall_profiles`, 1-3 % below Chwang's at the
     base for L = 3 m) on both sides: what a perfect model of the tank would give.
     """
-    built = inclined_tank(2, dx, beta_deg, length, H, height)
-    src = built.particles
-    fl = src.kind == Kind.FLUID
-    ps = assemble(2, dx, RHO0, src.pos[fl], [(src.pos[~fl], Kind.MOVING_WALL, 0)]).particles
-    cfg = FluidConfig(dim=2, dx=dx, c0=c0, **overrides)
-    set_hydrostatic(ps, H, RHO0, cfg.speed_of_sound, cfg.gamma, cfg.g)
-    f = Fluid(cfg, ps)
-    shake = Translation((1.0, 0.0), Harmonic.from_peak_acceleration(a0, Tp, from_rest=True))
-    f.prescribe_motion(0, shake)
-    f.initialize(0.0)
+    f, shake, cfg = _shaken_tank(inclined_tank(2, dx, beta_deg, length, H, height), 2, dx, H, c0, a0, Tp,
+                                 **overrides)
     b = math.radians(beta_deg)
     z = dx * (0.5 + np.arange(int(math.floor(H / dx))))
     sides = {"left": (np.stack([np.zeros_like(z), z], 1), np.array([1.0, 0.0])),
              "right": (np.stack([length + z * math.tan(b), z], 1), np.array([-math.cos(b), math.sin(b)]))}
-    dt_s = Tp / samples_per_period
-    n_skip, n_fit = periods_skip * samples_per_period, periods_fit * samples_per_period
-    rec = {k: [] for k in sides}
-    times = []
-    t = 0.0
-    for i in range(n_skip + n_fit):
-        f.advance(t, dt_s)
-        t = (i + 1) * dt_s
-        if i + 1 <= n_skip:
-            continue
-        for k, (pts, n) in sides.items():
-            here = shake(t, pts)[0]  # the face points, carried by the tank
-            rec[k].append(face_pressure(f, here, here, n, shake.acceleration(t), cfg.gravity))
-        times.append(t)
-    times = np.asarray(times)
+    fits = _face_amplitudes(f, shake, cfg, sides, Tp, samples_per_period, periods_skip, periods_fit)
     scale = RHO0 * a0 * H
-    w = 2 * math.pi / Tp
     kp, kout = {}, {}
     for k, sign in (("left", 1.0), ("right", -1.0)):
-        s, c = _harmonic_fit(times, np.asarray(rec[k]), w)
+        s, c = fits[k]
         kp[k], kout[k] = sign * s / scale, np.abs(c) / scale
     tank = wall_profiles(length, H, beta_deg)
     ref = {"left_tank": np.interp(z, tank["z"], tank["left"]), "right_tank": np.interp(z, tank["z"], tank["right"])}
@@ -227,35 +243,15 @@ def run_cylinder(dx: float, c0: float = 1430.0, periods_skip: int = 2, periods_f
     ``s`` [Pa] against ``-rho a0 h k(z) cos(phi)`` (phi from +x: the wall at phi = 180 deg
     pushes the water). Judged on the x-z plane (phi = 0 and 180 deg: the paper's Fig. 17
     profile); over the whole half wall reported."""
-    built = cylinder_tank(dx, diameter, depth, height)
-    src = built.particles
-    fl = src.kind == Kind.FLUID
-    ps = assemble(3, dx, RHO0, src.pos[fl], [(src.pos[~fl], Kind.MOVING_WALL, 0)]).particles
-    cfg = FluidConfig(dim=3, dx=dx, c0=c0, **overrides)
-    set_hydrostatic(ps, depth, RHO0, cfg.speed_of_sound, cfg.gamma, cfg.g)
-    f = Fluid(cfg, ps)
-    shake = Translation((1.0, 0.0, 0.0), Harmonic.from_peak_acceleration(a0, Tp, from_rest=True))
-    f.prescribe_motion(0, shake)
-    f.initialize(0.0)
+    f, shake, cfg = _shaken_tank(cylinder_tank(dx, diameter, depth, height), 3, dx, depth, c0, a0, Tp, **overrides)
     R = 0.5 * diameter
     z = dx * (0.5 + np.arange(int(math.floor(depth / dx + 1e-9))))
     phi = np.radians(np.asarray(angles_deg, float))
     P, Z = np.meshgrid(phi, z, indexing="ij")                     # (angles, rows)
     pts = np.stack([R * np.cos(P), R * np.sin(P), Z], -1).reshape(-1, 3)
     normals = np.stack([-np.cos(P), -np.sin(P), np.zeros_like(P)], -1).reshape(-1, 3)
-    dt_s = Tp / samples_per_period
-    n_skip, n_fit = periods_skip * samples_per_period, periods_fit * samples_per_period
-    rec, times = [], []
-    t = 0.0
-    for i in range(n_skip + n_fit):
-        f.advance(t, dt_s)
-        t = (i + 1) * dt_s
-        if i + 1 <= n_skip:
-            continue
-        here = shake(t, pts)[0]
-        rec.append(face_pressure(f, here, here, normals, shake.acceleration(t), cfg.gravity))
-        times.append(t)
-    s, c = _harmonic_fit(np.asarray(times), np.asarray(rec), 2 * math.pi / Tp)
+    s, c = _face_amplitudes(f, shake, cfg, {"wall": (pts, normals)}, Tp, samples_per_period, periods_skip,
+                            periods_fit)["wall"]
     s, c = s.reshape(P.shape), c.reshape(P.shape)
     scale = RHO0 * a0 * depth
     exact = -scale * cylinder_series(z, depth, R)[None, :] * np.cos(P)
