@@ -39,6 +39,22 @@ m guessed.
 
     python benchmarks/arch_rib_quake.py --predict
     python benchmarks/arch_rib_quake.py --dx 0.2 --duration 20 --record ew --out out/arch_rib
+
+The depth study of 003 §4.3 (Table 5: the first spike against the water depth, 13-21 m)
+as one command, at the paper's c0 = 140 m/s by default, El Centro EW standing in for the
+paper's Wenchuan EW (not available here); one run per level through the validation's
+scene (``cosim.validations.arch_rib.run_rib``: settled 1.5 s, B1-B18; "ours" is the first
+spike of the part of the pressure the record does not force, the symmetric part under EW,
+i.e. the water's own mode; the first spike of all points summed is kept beside it),
+printing ours against Table 5 and against c0/(4L), with each run's CPU time per simulated
+second, settling included (``--json FILE`` keeps the rows)::
+
+    python benchmarks/arch_rib_quake.py --depth-study --dx 0.3 --duration 8
+
+and the resolution study (the first spike at the design level against dx; the cheapest dx
+within 2 % of the finest)::
+
+    python benchmarks/arch_rib_quake.py --convergence 0.4,0.3,0.2 --duration 8
 """
 
 from __future__ import annotations
@@ -141,17 +157,76 @@ def run(dx: float, duration: float, record: str, out: str, c0: float | None) -> 
     return res
 
 
+def depth_study(dx: float, duration: float, c0: float, record: str, levels=None) -> list[dict]:
+    """One run per level of Table 5: ours, Table 5's and the quarter wave's first spike."""
+    from cosim.validations.arch_rib import run_rib
+
+    t5 = {float(r["depth_m"]): float(r["wave_frequency_Hz"]) for r in _paper_table("table5_wave_frequency_vs_depth.csv")}
+    rows = []
+    for d in (levels or sorted(t5)):
+        r = run_rib(dx, duration, tuple(record.split("+")), level=d, c0=c0)
+        f1, qw = r["free_spikes_Hz"][0], r["quarter_wave_Hz"][0]
+        rows.append({"depth_m": d, "ours_Hz": f1, "all_points_first_spike_Hz": r["spikes_Hz"][0],
+                     "table5_Hz": t5.get(d), "quarter_wave_Hz": qw,
+                     "ours_vs_table5": None if d not in t5 else round(f1 / t5[d] - 1, 4),
+                     "ours_vs_quarter_wave": round(f1 / qw - 1, 4), "particles": r["particles"], "steps": r["steps"],
+                     "cpu_s": r["cpu_s"], "cpu_s_per_simulated_s": r["cpu_s_per_simulated_s"]})
+        print(json.dumps(rows[-1]), flush=True)
+    print(f"\n{'depth':>6} {'ours':>7} {'Table 5':>8} {'c0/4L':>7} {'vs T5':>7} {'vs c0/4L':>8} {'CPU-s/s':>8}")
+    for x in rows:
+        t5s = f"{x['table5_Hz']:8.3f}" if x["table5_Hz"] else f"{'-':>8}"
+        vs = f"{100 * x['ours_vs_table5']:6.1f}%" if x["ours_vs_table5"] is not None else f"{'-':>7}"
+        print(f"{x['depth_m']:6.2f} {x['ours_Hz']:7.3f} {t5s} {x['quarter_wave_Hz']:7.3f} {vs} "
+              f"{100 * x['ours_vs_quarter_wave']:7.1f}% {x['cpu_s_per_simulated_s']:8.1f}")
+    return rows
+
+
+def convergence(dxs, duration: float, c0: float, record: str) -> list[dict]:
+    """The first spike at the design level against dx; the cheapest within 2 % of the finest."""
+    from cosim.validations.arch_rib import run_rib
+
+    rows = []
+    for dx in dxs:
+        r = run_rib(dx, duration, tuple(record.split("+")), c0=c0)
+        rows.append({"dx_m": dx, "first_spike_Hz": r["free_spikes_Hz"][0], "free_spikes_Hz": r["free_spikes_Hz"],
+                     "all_points_spikes_Hz": r["spikes_Hz"], "pair_correlation_max": max(r["pair_correlation"]),
+                     "particles": r["particles"], "steps": r["steps"], "cpu_s": r["cpu_s"],
+                     "cpu_s_per_simulated_s": r["cpu_s_per_simulated_s"],
+                     "cpu_s_for_40_s": round(40 * r["cpu_s_per_simulated_s"])})
+        print(json.dumps(rows[-1]), flush=True)
+    ref = min(rows, key=lambda x: x["dx_m"])["first_spike_Hz"]
+    ok = [x for x in rows if abs(x["first_spike_Hz"] / ref - 1) <= 0.02]
+    best = min(ok, key=lambda x: x["cpu_s"])
+    print(f"finest dx {min(dxs)} m: {ref:.3f} Hz; cheapest within 2 %: dx = {best['dx_m']} m "
+          f"({best['cpu_s_per_simulated_s']} CPU-s per simulated s, a 40 s record {best['cpu_s_for_40_s']} CPU-s)")
+    return rows
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--predict", action="store_true", help="the quarter-wave table only (no run)")
     ap.add_argument("--dx", type=float, default=0.2, help="particle spacing [m]")
     ap.add_argument("--duration", type=float, default=20.0, help="seconds of the record [s]")
-    ap.add_argument("--record", default="ew", choices=["ew", "ns", "up", "ew+up", "ns+up"])
+    ap.add_argument("--record", default="ew", choices=["ew", "ns", "up", "ew+up", "ns+up"],
+                    help="El Centro components (one direction for --depth-study / --convergence: the free part)")
     ap.add_argument("--c0", type=float, default=None, help="speed of sound [m/s] (the paper's: 140)")
     ap.add_argument("--out", default="out/arch_rib")
+    ap.add_argument("--depth-study", action="store_true", help="Table 5's levels, one run each (c0 140 by default)")
+    ap.add_argument("--levels", default=None, help="levels [m] for --depth-study, comma-separated (Table 5's)")
+    ap.add_argument("--convergence", default=None, help="dx values [m], comma-separated: the first spike against dx")
+    ap.add_argument("--json", default=None, help="write the study's rows to this file")
     a = ap.parse_args()
     if a.predict:
         predict()
+        return
+    if a.depth_study or a.convergence:
+        c0 = a.c0 or C0_PAPER
+        rows = (depth_study(a.dx, a.duration, c0, a.record,
+                            [float(x) for x in a.levels.split(",")] if a.levels else None) if a.depth_study else
+                convergence([float(x) for x in a.convergence.split(",")], a.duration, c0, a.record))
+        if a.json:
+            with open(a.json, "w") as f:
+                json.dump(rows, f, indent=1)
         return
     print(json.dumps(run(a.dx, a.duration, a.record, a.out, a.c0), indent=1))
 

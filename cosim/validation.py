@@ -32,7 +32,8 @@ from cosim.errors import InputError
 #: modules that register cases; a new family adds its module here
 CASE_MODULES = ("cosim.validations.catenary", "cosim.validations.cable", "cosim.validations.fluid",
                 "cosim.validations.sloshing", "cosim.validations.coupling", "cosim.validations.floating",
-                "cosim.validations.waves", "cosim.validations.tanks", "cosim.validations.elastic")
+                "cosim.validations.waves", "cosim.validations.tanks", "cosim.validations.elastic",
+                "cosim.validations.arch_rib")
 
 #: where the stated targets are written
 VALIDATION_DOC = "docs/VALIDATION.md"

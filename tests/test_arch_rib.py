@@ -110,3 +110,102 @@ def test_particle_counts_match_the_papers_three_resolutions():
         ps = polygon_tank(v, dx, LEVEL, layers=3).particles
         n = int((ps.kind == Kind.FLUID).sum())
         assert n == pytest.approx(fluid, rel=0.01) and ps.n - n == pytest.approx(walls, rel=0.01)
+
+
+# ------------------------------------------------------------------ the scene kind
+def test_the_scene_kind_is_the_papers_rib_and_survives_toml():
+    """``[domain] kind = "arch-rib"``: its polygon is ``arch_rib_cavity`` of its fields,
+    its fill level the level; written to TOML and read back, the same scene (the polygon
+    is made again, not written)."""
+    from cosim.scene import SPH, ArchRib, Probes, Scene, World, arch_rib_monitors
+
+    rib = ArchRib()
+    assert (rib.span, rib.rise, rib.m, rib.inner_height, rib.level) == (SPAN, RISE, M, HC, LEVEL)
+    np.testing.assert_array_equal(np.array(rib.vertices), arch_rib_cavity(SPAN, RISE, HC, M))
+    assert rib.fill_level == LEVEL
+    scene = Scene(world=World(dim=2, duration=1.0), fluid=SPH(dx=0.3, c0=140.0), domain=ArchRib(level=14.0),
+                  probes=Probes(pressure=arch_rib_monitors(rib, 1.2)))
+    text = scene.to_toml()
+    assert 'kind = "arch-rib"' in text and "vertices" not in text and "fill_level" not in text
+    back = Scene.from_dict(__import__("tomllib").loads(text))
+    assert back == scene and back.domain.fill_level == 14.0
+    assert scene.with_values(["domain.level=17.0"]).domain.fill_level == 17.0
+
+
+def test_monitoring_points_lie_on_the_faces_in_mirror_pairs():
+    """B1-B9 on the right leg, B10-B18 their mirror images; each centre on a face of the
+    cavity (the scene's own patch check accepts them: on the wall within half a spacing,
+    normal into the water), odd ones on the lower face (normal up), even ones on the
+    upper (normal down), at the axis heights 1.4 k m."""
+    from cosim.scene import ArchRib, arch_rib_monitors
+    from fluid.shapes import distance_to_polyline
+
+    rib = ArchRib()
+    ps = arch_rib_monitors(rib, 1.0)
+    assert [p.name for p in ps] == [f"B{k}" for k in range(1, 19)]
+    v = np.array(rib.vertices)
+    for k in range(9):
+        a, b = ps[k], ps[k + 9]
+        assert a.centre[0] > 0 and b.centre == pytest.approx((-a.centre[0], a.centre[1]))
+        assert b.normal == pytest.approx((-a.normal[0], a.normal[1]))
+        assert (a.normal[1] > 0) == (k % 2 == 0)
+        assert distance_to_polyline(np.array([a.centre]), v)[0] == pytest.approx(0.0, abs=1e-3)
+    axis = catenary_arch_axis(SPAN, RISE, M, 20001)
+    lower = [ps[k].centre for k in range(0, 9, 2)]
+    for c, zc in zip(lower, (1.4, 4.2, 7.0, 9.8, 12.6)):  # the axis point half an inner height along the normal
+        d = np.hypot(axis[:, 0] - c[0], axis[:, 1] - c[1])
+        assert d.min() == pytest.approx(HC / 2, rel=1e-3) and axis[d.argmin(), 1] == pytest.approx(zc, abs=0.01)
+
+
+def test_a_rib_scene_with_the_monitors_passes_the_scenes_checks():
+    from cosim.scene import SPH, ArchRib, GroundMotion, Probes, Record, Scene, World, arch_rib_monitors
+    from cosim import refdata
+
+    rib = ArchRib(level=13.0)
+    quake = GroundMotion(components=[Record(file=str(refdata.path("earthquake_el_centro_1940",
+                                                                  "RSN6_IMPVALL.I_I-ELC270-hor2.AT2")),
+                                            direction=(1.0, 0.0))])
+    Scene(world=World(dim=2, duration=2.0), fluid=SPH(dx=0.1), domain=rib, base_motion=quake,
+          probes=Probes(pressure=arch_rib_monitors(rib, 0.4)))
+
+
+# ------------------------------------------------------------------ the validation case
+def test_spike_finder_reads_an_organ_pipe_series_under_a_stronger_forcing():
+    """Synthetic pressures: a 0.5 Hz forcing four times stronger than a free quarter-wave
+    series f1 = 1.1 Hz, 3 f1, 5 f1, 7 f1 (decaying) in the symmetric part of each pair: the
+    summed spectrum's first spike is the forcing's, the free (symmetric) part's the
+    series, its overtones at 3, 5, 7 times it within 1 %."""
+    from cosim.validations.arch_rib import spectrum, spikes
+
+    t = np.arange(0, 20, 0.02)
+    free = sum(np.exp(-0.05 * t) * np.sin(2 * np.pi * (2 * n - 1) * 1.1 * t) / (2 * n - 1) for n in range(1, 5))
+    forced = 4 * np.sin(2 * np.pi * 0.5 * t)
+    p = np.column_stack([free + forced] * 9 + [free - forced] * 9)
+    f, a = spectrum(t, p, 1.0)
+    assert spikes(f, a)[0] == pytest.approx(0.5, rel=0.01)
+    fs = spikes(*spectrum(t, (p[:, :9] + p[:, 9:]) / 2, 1.0))
+    np.testing.assert_allclose(np.array(fs) / 1.1, [1, 3, 5, 7], rtol=0.01)
+
+
+def test_quarter_wave_of_the_papers_rib():
+    """c0 / (4 L) with the paper's c0 = 140 m/s (B = 2.8e6 Pa): 1.108 Hz at the design level
+    (L = 31.6 m), within 2.5 % of Table 5 at every depth (003 §4.3; 18 m: -2.44 %)."""
+    from cosim.validations.arch_rib import C0_PAPER, column_length, quarter_wave, table
+
+    assert C0_PAPER == pytest.approx(140.0)
+    assert column_length(LEVEL) == pytest.approx(31.60, abs=0.01)
+    assert quarter_wave(C0_PAPER) == pytest.approx(1.1075, abs=1e-4)
+    for r in table("table5_wave_frequency_vs_depth.csv"):
+        assert quarter_wave(C0_PAPER, float(r["depth_m"])) == pytest.approx(float(r["wave_frequency_Hz"]), rel=0.025)
+
+
+def test_arch_rib_quick_validation():
+    """``cosim validate arch-rib --quick``: dx = 0.3 m, 6 s of El Centro EW at c0 = 140 m/s."""
+    from cosim import validation
+
+    r = validation.run("arch-rib", quick=True)
+    m = r["metrics"]
+    assert r["passed"], (r["outside_tolerance"], m)
+    assert r["departure"]["why"].startswith("the spectrum of all points")
+    assert "first_spike_rel_err" in r["stated"]["measured"]
+    assert "wall-pressure spectrum" in r["series"]
