@@ -182,7 +182,8 @@ def depth_study(dx: float, duration: float, c0: float, record: str, levels=None)
     """One run per level of Table 5: ours, Table 5's and the quarter wave's first spike."""
     from cosim.validations.arch_rib import run_rib
 
-    t5 = {float(r["depth_m"]): float(r["wave_frequency_Hz"]) for r in _paper_table("table5_wave_frequency_vs_depth.csv")}
+    t5 = {float(r["depth_m"]): float(r["wave_frequency_Hz"])
+          for r in _paper_table("table5_wave_frequency_vs_depth.csv")}
     rows = []
     for d in (levels or sorted(t5)):
         r = run_rib(dx, duration, tuple(record.split("+")), level=d, c0=c0)

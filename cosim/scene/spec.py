@@ -802,7 +802,8 @@ class Scene(Spec):
 
 
 __all__ = ["World", "NoFluid", "Analytic", "SPH", "Block", "Tank", "Beach", "Flume", "InclinedTank",
-           "CylinderTank", "PolygonTank", "ArchRib", "arch_rib_monitors", "Piston", "Flap", "PaddleRecord", "LinearWaves",
+           "CylinderTank", "PolygonTank", "ArchRib", "arch_rib_monitors", "Piston", "Flap", "PaddleRecord",
+           "LinearWaves",
            "Shake", "Roll", "TableMotion",
            "Earthquake", "Record", "GroundMotion", "Box", "Cylinder", "Sphere", "MJCF", "ElasticPlate", "Line",
            "Moorings", "Patch",
