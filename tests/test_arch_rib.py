@@ -190,12 +190,12 @@ def test_spike_finder_reads_an_organ_pipe_series_under_a_stronger_forcing():
 def test_quarter_wave_of_the_papers_rib():
     """c0 / (4 L) with the paper's c0 = 140 m/s (B = 2.8e6 Pa): 1.108 Hz at the design level
     (L = 31.6 m), within 2.5 % of Table 5 at every depth (003 §4.3; 18 m: -2.44 %)."""
-    from cosim.validations.arch_rib import C0_PAPER, column_length, quarter_wave, table
+    from cosim.validations.arch_rib import C0_PAPER, column_length, paper_table, quarter_wave
 
     assert C0_PAPER == pytest.approx(140.0)
     assert column_length(LEVEL) == pytest.approx(31.60, abs=0.01)
     assert quarter_wave(C0_PAPER) == pytest.approx(1.1075, abs=1e-4)
-    for r in table("table5_wave_frequency_vs_depth.csv"):
+    for r in paper_table("table5_wave_frequency_vs_depth.csv"):
         assert quarter_wave(C0_PAPER, float(r["depth_m"])) == pytest.approx(float(r["wave_frequency_Hz"]), rel=0.025)
 
 

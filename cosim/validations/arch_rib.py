@@ -49,8 +49,6 @@ from cosim.validation import case
 
 SPAN, RISE, LEVEL = 140.0, 23.333, 15.56  # m, 003 §4
 C0_PAPER = math.sqrt(7 * 2.8e6 / 1000.0)  # m/s: the paper's B = 2.8e6 Pa, gamma = 7, rho0 = 1000 kg/m^3
-RECORDS = {"ns": "RSN6_IMPVALL.I_I-ELC180-hor1.AT2", "ew": "RSN6_IMPVALL.I_I-ELC270-hor2.AT2",
-           "up": "RSN6_IMPVALL.I_I-ELC-UP.AT2"}
 F1_TABLE3 = 1.125  # Hz, 003 Table 3 (all six cases)
 F_MIN = 0.3  # Hz: below it the spectrum holds the record's drift, not a spike
 
@@ -59,7 +57,15 @@ ARCH_RIB_TARGET = ("first FFT spike of the wall pressures at B1-B18 within 5 % o
                    "vertical excitation")
 
 
-def table(name: str) -> list[dict]:
+def record_path(component: str):
+    """The El Centro 1940 record of ``component`` ("ns", "ew" or "up")."""
+    return {"ns": refdata.path("earthquake_el_centro_1940", "RSN6_IMPVALL.I_I-ELC180-hor1.AT2"),
+            "ew": refdata.path("earthquake_el_centro_1940", "RSN6_IMPVALL.I_I-ELC270-hor2.AT2"),
+            "up": refdata.path("earthquake_el_centro_1940", "RSN6_IMPVALL.I_I-ELC-UP.AT2")}[component]
+
+
+def paper_table(name: str) -> list[dict]:
+    """The rows of one of the paper's tables in refdata arch_rib_wang2022."""
     import csv
 
     with open(refdata.path("arch_rib_wang2022", name)) as f:
@@ -92,7 +98,7 @@ def rib_scene(dx: float, duration: float, records=("ew",), level: float = LEVEL,
     from cosim.scene import SPH, ArchRib, GroundMotion, Probes, Record, Scene, World, arch_rib_monitors
 
     rib = ArchRib(level=level)
-    comps = [Record(file=str(refdata.path("earthquake_el_centro_1940", RECORDS[r])),
+    comps = [Record(file=str(record_path(r)),
                     direction=(0.0, 1.0) if r == "up" else (1.0, 0.0)) for r in records]
     return Scene(name="arch_rib", world=World(dim=2, duration=duration, sample_every=sample_every, snapshot_every=0),
                  fluid=SPH(dx=dx, c0=c0, settle=settle), domain=rib, base_motion=GroundMotion(components=comps),
@@ -192,7 +198,7 @@ def _series(runs: dict) -> dict:
             if key in res:
                 f, a = res.pop(key)
                 curves[f"ours, El Centro {label}, {what}"] = {"x": f, "y": a / a[f > F_MIN].max(), "style": "-"}
-    row = {r["case"]: r for r in table("table3_spikes.csv")}["El Centro EW"]
+    row = {r["case"]: r for r in paper_table("table3_spikes.csv")}["El Centro EW"]
     fs = [float(row[f"spike{n}_Hz"]) for n in range(1, 5)]
     curves["003 Table 3, El Centro EW spikes"] = {"x": np.repeat(fs, 3), "y": np.tile([0.0, 1.0, np.nan], 4),
                                                   "style": "k--"}
