@@ -4,7 +4,6 @@ every step (``moorings.line_events``), in a probe column and in summary.json."""
 import math
 
 import numpy as np
-import pytest
 
 from moorings import CatenaryMooring, MooringLine
 from moorings.catenary import LineState
