@@ -45,18 +45,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from bodies import builders  # noqa: E402
 from bodies.elastic import elastic_beam, linearise  # noqa: E402
 
+from machine import cpu_name  # noqa: E402  (benchmarks/machine.py, beside this script)
+
 L, H, E, RHO, W = 0.08, 0.012, 1e6, 2500.0, 1.0
-
-
-def cpu_name() -> str:
-    try:
-        with open("/proc/cpuinfo") as f:
-            for line in f:
-                if line.startswith("model name"):
-                    return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown CPU"
 
 
 def flex_xml(nx: int, nz: int, dim: int, dt: float) -> str:

@@ -157,6 +157,8 @@ import numpy as np
 
 from cosim.clock import TICKS_PER_SECOND, to_ticks
 
+from machine import cpu_name  # noqa: E402  (benchmarks/machine.py, beside this script)
+
 ROOT = Path(__file__).resolve().parents[1]
 SCENE = ROOT / "examples" / "moored_box.toml"
 MODELS = ("catenary", "sph-cable", "fmu", "moordyn")
@@ -170,17 +172,6 @@ def rss_bytes() -> int:
             if line.startswith("VmRSS:"):
                 return int(line.split()[1]) * 1024
     return 0
-
-
-def cpu_model() -> str:
-    try:
-        with open("/proc/cpuinfo") as f:
-            for line in f:
-                if line.startswith("model name"):
-                    return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown"
 
 
 def load1() -> float:
@@ -498,7 +489,7 @@ def main(argv=None) -> int:
         ap.error(f"models among {', '.join(MODELS)} (got {bad}), steps >= 1, dt > 0")
     every = args.every or max(args.steps // 20, 1)
     print(f"soak: {args.steps} steps of {args.dt} s per model, chunks of {every}, ledger {args.ledger}; "
-          f"{cpu_model()}, {os.cpu_count()} CPUs, Python {platform.python_version()}, load {os.getloadavg()}, "
+          f"{cpu_name()}, {os.cpu_count()} CPUs, Python {platform.python_version()}, load {os.getloadavg()}, "
           f"{datetime.datetime.now().isoformat(timespec='seconds')}", flush=True)
     print("  command: python benchmarks/soak.py " + " ".join(sys.argv[1:] if argv is None else argv), flush=True)
     results = []
