@@ -412,15 +412,22 @@ def case_page(rec: dict, case, plots: list[tuple[str, str]], history: str | None
     return "\n".join(out).rstrip() + "\n"
 
 
+def has_study(name: str) -> bool:
+    """Whether case ``name`` has a committed ``cosim study`` (:mod:`cosim.validations.trade`)."""
+    from cosim.validations.trade import STUDIES, study_dir
+
+    return name in STUDIES and (study_dir(name) / "study.md").exists()
+
+
 def study_section(name: str) -> str | None:
     """The case's trade measured by ``cosim study`` (:mod:`cosim.validations.trade`), from
     its committed study folder: the command, what it measures, the table, the Pareto plot
     (``trade/NAME_pareto.png`` beside the page, copied by :func:`write_report`)."""
     from cosim.validations.trade import STUDIES, study_dir
 
-    s = STUDIES.get(name)
-    if s is None or not (study_dir(name) / "study.md").exists():
+    if not has_study(name):
         return None
+    s = STUDIES[name]
     table = (study_dir(name) / "study.md").read_text(encoding="utf-8").split("\n", 1)[1].strip()
     out = ["## Trade measured by `cosim study`", "",
            f"What it compares: {s.quantity}. Reference values and their source: "
@@ -522,7 +529,7 @@ def write_report(folder: Path | str, records: list[dict], series_from: Path | st
                 html_page(f"{name}: history", md_to_html(history)), encoding="utf-8")
         pages[name] = case_page(rec, known.get(name), plots, history)
         pareto = study_dir(name) / "pareto.png"
-        if "trade/" in pages[name] and pareto.exists():
+        if has_study(name) and pareto.exists():
             (folder / "trade").mkdir(exist_ok=True)
             shutil.copyfile(pareto, folder / "trade" / f"{name}_pareto.png")
     for name, md in pages.items():
