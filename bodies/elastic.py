@@ -2,7 +2,10 @@
 
 Physics. A straight cantilever of length ``L``, thickness ``h`` (bending direction,
 world x) and width ``W`` (world y; 1 m in 2-D scenes, so loads per metre of depth are
-loads on the model), clamped at its foot and rising along +z. It is a discrete
+loads on the model), clamped at its foot and rising along +z, or (``direction="down"``)
+clamped at its top and hanging along -z: the same chain turned half a turn about x (x
+stays, y and z flip), e.g. the rubber gate of Antoci et al. (2007) that holds a water
+column, clamped at its top and free at its bottom. It is a discrete
 Timoshenko beam: ``N`` elements of length ``l = L / N``, the compliance of each
 lumped at its midpoint into a hinge about y of stiffness ``k_b = E I / l`` and
 (``shear=True``) a slide along the link's own x of stiffness ``k_s = kappa G A / l``
@@ -101,7 +104,7 @@ class BeamModel:
     analytic answers it is checked against. Lengths [m], E [Pa], rho [kg/m^3]."""
 
     name: str
-    length: float  #: L [m], along +z from the clamp
+    length: float  #: L [m], along +z from the clamp (-z when hanging, :attr:`direction`)
     thickness: float  #: h [m], along x (the bending direction)
     width: float  #: W [m], along y (1 m in 2-D scenes)
     E: float  #: Young's modulus [Pa]
@@ -109,7 +112,7 @@ class BeamModel:
     nu: float  #: Poisson's ratio (enters G only)
     kappa: float  #: shear coefficient (5/6 for a rectangle)
     n_elements: int  #: N, hinges (and shear slides) at element midpoints
-    base: tuple  #: clamp point [m], (3,), the centre of the foot
+    base: tuple  #: clamp point [m], (3,), the centre of the clamped end (the foot, or the top when hanging)
     shear: bool  #: shear slides (Timoshenko) or not (Rayleigh)
     beta: float  #: stiffness-proportional damping [s]
     xml: str  #: the ``<body>`` element, for :func:`bodies.builders.scene`
@@ -117,6 +120,10 @@ class BeamModel:
     #: lay two columns at +-dx/2 about its mid-plane anyway, each taking its mDBC density
     #: from the fluid on its own side (see :meth:`boundary_particles`)
     thin_wall: bool = False
+    #: "up": clamped at ``base`` and rising along +z; "down": clamped at ``base`` and hanging
+    #: along -z (the chain's frame turned half a turn about x: plate-frame x is world x, plate
+    #: z, the arc length from the clamp, points down)
+    direction: str = "up"
 
     # -- derived ---------------------------------------------------------------
     @property
@@ -217,9 +224,10 @@ class BeamModel:
         """Boundary particles on a lattice of spacing ``dx`` [m] laid over the whole
         undeformed plate (cell-centred, as :mod:`bodies.sampling` lays them), ``layers``
         deep inside its faces (all of the section where the plate is thinner than two
-        bands), the clamped foot face left out (it stands on the floor). Each particle
-        belongs to the link whose span holds it and is stored in that link's frame, so
-        :func:`bodies.sampling.place` moves it with the link.
+        bands), the clamped face left out (it stands on the floor; a hanging beam meets
+        the wall it hangs from there). Each particle belongs to the link whose span holds
+        it and is stored in that link's frame, so :func:`bodies.sampling.place` moves it
+        with the link.
 
         Returns points ``(n, 3)`` [m] in their link's frame and the link index of each
         (0 = the welded foot link, ..., N = the tip link; see :attr:`link_names`)."""
@@ -282,9 +290,10 @@ class BeamModel:
     def ghost_offsets(self, plate, dim: int = 3, dx: float | None = None) -> np.ndarray:
         """Vectors [m] ``(n, 3)``, plate frame, from particles at ``plate`` (undeformed,
         plate frame) to their mDBC ghost nodes: the mirror images across the nearest of
-        the faces the fluid touches (the two sides, the top, in 3-D the two edges; not the
-        foot, which stands on the floor: :func:`bodies.sampling.ghost_offsets` on the
-        plate as one box reaching far below the floor). With the thin-wall columns (give
+        the faces the fluid touches (the two sides, the free end, in 3-D the two edges; not
+        the clamped end, which stands on the floor or meets the wall a hanging beam hangs
+        from: :func:`bodies.sampling.ghost_offsets` on the plate as one box reaching far
+        beyond the clamp). With the thin-wall columns (give
         ``dx``) the faces are those of the band the particles fill, ``2 dx`` thick, so each
         column mirrors into the fluid on its own side."""
         from bodies.sampling import GeomShape, ghost_offsets
@@ -298,9 +307,12 @@ class BeamModel:
 
 def elastic_beam(name: str, length: float, thickness: float, *, E: float, rho: float, width: float = 1.0,
                  nu: float = 0.0, kappa: float = 5.0 / 6.0, n_elements: int = 16, base=(0.0, 0.0, 0.0),
-                 shear: bool = True, beta: float = 0.0, thin_wall: bool = False) -> BeamModel:
-    """An elastic cantilever clamped at ``base`` [m] (the centre of its foot) and
-    rising along +z, as a chain of MuJoCo bodies (see the module docstring).
+                 shear: bool = True, beta: float = 0.0, thin_wall: bool = False,
+                 direction: str = "up") -> BeamModel:
+    """An elastic cantilever clamped at ``base`` [m] (the centre of its clamped end) and
+    rising along +z (``direction="up"``, clamped at its foot) or hanging along -z
+    (``direction="down"``, clamped at its top: the chain turned half a turn about x), as a
+    chain of MuJoCo bodies (see the module docstring).
 
     Parameters: ``length`` L [m], ``thickness`` h [m] (along x), ``width`` W [m] (along y;
     1 m for 2-D scenes), ``E`` Young's modulus [Pa], ``rho`` density [kg/m^3], ``nu``
@@ -315,8 +327,9 @@ def elastic_beam(name: str, length: float, thickness: float, *, E: float, rho: f
 
     Returns a :class:`BeamModel`; its ``xml`` is a ``<body>`` for
     :func:`bodies.builders.scene`, its links are named ``{name}_link0`` (welded) to
-    ``{name}_link{N}``, with sites ``{name}_tip`` (top centre) and ``{name}_corner``
-    (top, -x side, the "upper left corner" of seed 002 Figure 6)."""
+    ``{name}_link{N}``, with sites ``{name}_tip`` (the free end's centre: the top, or the
+    bottom when hanging) and ``{name}_corner`` (the free end, -x side: the "upper left
+    corner" of seed 002 Figure 6; the lower upstream corner of a hanging gate)."""
     if not isinstance(name, str) or not name:
         raise InputError(f"elastic beam: name must be a non-empty string, got {name!r}")
     L = _positive(name, "length", "m", length, "give the cantilever's length from clamp to tip")
@@ -334,6 +347,9 @@ def elastic_beam(name: str, length: float, thickness: float, *, E: float, rho: f
         raise InputError(f"elastic beam '{name}': n_elements must be a whole number >= {MIN_ELEMENTS}, got "
                          f"{n_elements!r}; fewer cannot resolve the third bending mode (8 give the first three "
                          f"frequencies within 1 %, 16 within 0.3 %)")
+    if direction not in ("up", "down"):
+        raise InputError(f"elastic beam '{name}': direction must be \"up\" (clamped at its foot, rising along +z) or "
+                         f"\"down\" (clamped at its top, hanging along -z), got {direction!r}")
     base = tuple(float(c) for c in base)
     if len(base) != 3 or not all(math.isfinite(c) for c in base):
         raise InputError(f"elastic beam '{name}': base must be 3 finite coordinates (x, y, z) [m], got {base!r}")
@@ -346,7 +362,8 @@ def elastic_beam(name: str, length: float, thickness: float, *, E: float, rho: f
         return (f'<geom name="{name}_geom{k}" type="box" size="{_fmt([h / 2, W / 2, seg / 2])}" '
                 f'pos="0 0 {seg / 2!r}" density="{rho!r}" contype="0" conaffinity="0"/>')
 
-    parts = [f'<body name="{name}_link0" pos="{_fmt(base)}">{geom(0, l / 2)}']
+    turn = ' quat="0 1 0 0"' if direction == "down" else ""  # half a turn about x: z -> -z, y -> -y
+    parts = [f'<body name="{name}_link0" pos="{_fmt(base)}"{turn}>{geom(0, l / 2)}']
     for k in range(1, N + 1):
         seg = l / 2 if k == N else l
         joints = (f'<joint name="{name}_bend{k}" type="hinge" axis="0 1 0" stiffness="{kb!r}" '
@@ -359,7 +376,7 @@ def elastic_beam(name: str, length: float, thickness: float, *, E: float, rho: f
                  f'<site name="{name}_corner" pos="{-h / 2!r} 0 {l / 2!r}" size="{h / 4!r}"/>')
     xml = "".join(parts) + "</body>" * (N + 1)
     return BeamModel(name, L, h, W, E, rho, float(nu), kappa, N, base, bool(shear), float(beta), xml,
-                     bool(thin_wall))
+                     bool(thin_wall), direction)
 
 
 def timoshenko_frequencies(length: float, thickness: float, E: float, rho: float, nu: float = 0.0,
@@ -585,8 +602,8 @@ class ElasticBody:
         return self.split(f, np.cross(np.asarray(points_w, float), f), kin.com)
 
     def displacement(self, site: str = "corner") -> np.ndarray:
-        """Displacement [m] ``(3,)`` from the start of the ``"tip"`` (top centre) or
-        ``"corner"`` (top, -x face: seed 002 Figure 6's upper left corner) site."""
+        """Displacement [m] ``(3,)`` from the start of the ``"tip"`` (the free end's centre)
+        or ``"corner"`` (the free end, -x face: seed 002 Figure 6's upper left corner) site."""
         i = self._sites[site]
         return self.bodies.site_positions([i])[0] - self._site0[site]
 

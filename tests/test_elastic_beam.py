@@ -143,6 +143,56 @@ def test_slender_beam_static_tip_deflection_meets_euler_bernoulli(load):
     assert static_tip(b, load) == pytest.approx(ref, rel=0.005)
 
 
+# -- a hanging beam: clamped at its top (Antoci et al. 2007's rubber gate) -------------------
+
+GATE = dict(length=0.079, thickness=0.005, E=12e6, rho=1100.0, nu=0.4)  # refdata elastic_gate_antoci2007 SOURCE.txt
+
+
+@pytest.mark.parametrize("load", ["tip", "uniform"])
+def test_hanging_gate_static_tip_deflection_meets_timoshenko(load):
+    """The gate (L/h = 15.8) hanging from its top, under a lateral load along x: the tip
+    deflection meets Timoshenko within 0.5 % at N = 16, converges at second order, and is
+    the upright beam's to round-off (the same chain turned half a turn about x)."""
+    errs = []
+    for n in (8, 16, 32):
+        down = elastic_beam("g", **GATE, n_elements=n, direction="down", base=(0.1, 0.0, 0.14))
+        ref = down.tip_deflection_point(1.0) if load == "tip" else down.tip_deflection_uniform(1.0)
+        d = static_tip(down, load)
+        assert d == pytest.approx(static_tip(elastic_beam("g", **GATE, n_elements=n), load), rel=1e-7)
+        errs.append(abs(d / ref - 1))
+    assert errs[1] < 0.005 and errs[0] > errs[1] > errs[2]
+    assert np.log2(errs[0] / errs[1]) == pytest.approx(2.0, abs=0.1)
+
+
+def test_hanging_beam_hangs_from_its_clamp():
+    """Geometry: the free end L below the clamp, the corner on the -x face, the particles
+    between clamp and tip; the first three frequencies (no gravity) within 0.5 % of
+    Timoshenko; gravity stiffens the hanging beam and softens the upright one."""
+    base = np.array([0.1, 0.0, 0.14])
+    b = elastic_beam("g", **GATE, n_elements=16, direction="down", base=tuple(base))
+    body = MujocoBodies(builders.scene(b.xml, gravity=0.0), bodies=b.link_names)
+    tip, corner = (body.site_positions([body.site(f"g_{s}")[0]])[0] for s in ("tip", "corner"))
+    assert tip == pytest.approx(base - [0.0, 0.0, 0.079], abs=1e-12)
+    assert corner == pytest.approx(base - [0.0025, 0.0, 0.079], abs=1e-12)
+    pts, owner = b.boundary_particles(0.001, layers=2, dim=2)
+    x, _ = place(pts, owner, body.kinematics())
+    assert x[:, 2].min() == pytest.approx(0.14 - 0.079 + 0.0005, abs=1e-9) and x[:, 2].max() < 0.14
+    assert np.abs(x[:, 0] - 0.1).max() == pytest.approx(0.0025 - 0.0005, abs=1e-9)
+    err = frequencies(b) / b.natural_frequencies() - 1
+    assert np.abs(err).max() < 0.005
+    f1 = {}
+    for direction in ("up", "down"):
+        beam = elastic_beam("g", **GATE, n_elements=16, direction=direction)
+        f1[direction] = modal_frequencies(*compiled(beam, gravity=9.81))[0]
+    f0 = frequencies(b)[0]
+    assert f1["up"] < f0 < f1["down"]
+
+
+def test_a_direction_other_than_up_or_down_is_refused():
+    with pytest.raises(InputError, match="direction must be \"up\".*\"down\""):
+        elastic_beam("g", **GATE, direction="sideways")
+
+
 def test_time_stepped_chain_settles_on_the_static_deflection_through_the_coupler_path():
     """MuJoCo itself (implicit damping, 1 ms) under a tip force given as a point force,
     mapped onto the tip link by link_wrenches and applied by MujocoBodies."""
