@@ -159,6 +159,14 @@ def stable_dt(acc, visc, cs, kind, h: float, cfl: float, dt_max: float = math.in
     delta h c0`` [m^2/s] the density diffusion's; ``c_diff`` from
     :func:`diffusion_coefficient` (0.125 for the predictor-corrector)."""
     amax2, cvmin, cmax = _bounds(acc, visc, cs, kind, h) if cs.size else (0.0, math.inf, 0.0)
+    return step_limit(amax2, cvmin, cmax, h, cfl, dt_max, nu, alpha_eff=alpha_eff, nu_delta=nu_delta, c_diff=c_diff)
+
+
+def step_limit(amax2: float, cvmin: float, cmax: float, h: float, cfl: float, dt_max: float = math.inf,
+               nu: float = 0.0, *, alpha_eff: float = 0.0, nu_delta: float = 0.0, c_diff: float = MORRIS) -> StepLimit:
+    """:func:`stable_dt` from its reductions over the particles (``_bounds``: the largest
+    fluid acceleration squared [m^2/s^4], min h / (c + visc) [s], the largest sound speed
+    [m/s]), wherever they were taken (the GPU path takes them on the device)."""
     amax = math.sqrt(amax2)
     dt_f = cfl * math.sqrt(h / amax) if amax > 0 else math.inf
     dt_cv = cfl * cvmin

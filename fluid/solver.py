@@ -151,6 +151,10 @@ class FluidConfig:
     #: "adami" (the fluid's pressure carried to each wall particle, Adami, Hu & Adams 2012,
     #: J. Comput. Phys. 231, Eq. 27; see fluid.wall_density). BODY particles are not affected
     walls: str = "dbc"
+    #: where the fluid steps: "cpu" (numba on the host, the reference) or "cuda" (an NVIDIA
+    #: GPU through numba-cuda, or numba's CUDA simulator with NUMBA_ENABLE_CUDASIM=1;
+    #: fluid.cuda says what it covers)
+    device: str = "cpu"
     #: participant name
     name: str = "fluid"
 
@@ -206,6 +210,11 @@ class FluidConfig:
             raise _bad(f"mls_every={self.mls_every!r}", "give a number of steps >= 0 (0: off; 30 in 001 §2)")
         if self.walls not in WALLS:
             raise _bad(f"walls={self.walls!r}", f"choose one of {WALLS}")
+        if self.device not in ("cpu", "cuda"):
+            raise _bad(f"device={self.device!r}", "choose 'cpu' (default) or 'cuda' (numba-cuda: pip install numba-cuda)")
+        if self.device == "cuda":  # numba.cuda is imported here only
+            from fluid.cuda import check_config
+            check_config(self)
         if self.threads is not None and (not isinstance(self.threads, int) or self.threads < 1):
             raise _bad(f"threads={self.threads!r}", "give a positive number of threads or None")
         if (self.domain_lo is None) != (self.domain_hi is None):
@@ -248,6 +257,12 @@ class Fluid:
     After :meth:`advance`, :meth:`group_loads` gives per boundary group the force and moment
     the fluid exerted on it, averaged over the interval (impulse / dt).
     """
+
+    def __new__(cls, config=None, *args, **kwargs):
+        if cls is Fluid and isinstance(config, FluidConfig) and config.device == "cuda":
+            from fluid.cuda.fluid import CudaFluid  # its step on the GPU (fluid.cuda)
+            cls = CudaFluid
+        return super().__new__(cls)
 
     def __init__(self, config: FluidConfig, particles: ParticleSet):
         if not isinstance(config, FluidConfig):

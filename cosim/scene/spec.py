@@ -125,6 +125,8 @@ class SPH(Spec):
     integrator: str = choice(None, "time integration", ("symplectic", "verlet"))
     mls_every: int = whole(None, "steps between MLS density re-initialisations (0: never)", lo=0)
     threads: int = whole(None, "numba threads (unset: by particle count)", lo=1)
+    device: str = choice(None, "where the fluid steps: cpu, or cuda (an NVIDIA GPU with numba-cuda; see fluid.cuda)",
+                         ("cpu", "cuda"))
     settle: float = num(0.0, "damped relaxation of the particles before the run (clock held at 0)", "s", lo=0)
     body_boundary: str = choice("mdbc", "density of the bodies' boundary particles", ("mdbc", "dbc"))
 

@@ -1,0 +1,87 @@
+"""The fluid's step on an NVIDIA GPU with numba-cuda (``FluidConfig(device="cuda")``).
+
+This package's ``__init__`` never imports ``numba.cuda``: the CPU path runs without
+numba-cuda installed, and :func:`check_config` refuses ``device="cuda"`` with a clear
+error before any work where it cannot run. The kernels (:mod:`fluid.cuda.kernels`), the
+device state (:mod:`fluid.cuda.state`) and the ``Fluid`` that steps on it
+(:mod:`fluid.cuda.fluid`) are imported only when a fluid is built with
+``device="cuda"``.
+
+What the GPU path covers (the same equations as the CPU path, :mod:`fluid.equations`
+and :mod:`fluid.integrator`, term for term and in the same order; float64 throughout):
+the cell build and sort (a counting sort by cell with atomics, then each cell's
+particles ordered by x as the CPU orders them, so both paths hold the particles in the
+same order), the pair loop with both kernels (Wendland, cubic), artificial viscosity
+with ``alpha_wall``, laminar viscosity, the Fourtakas and Molteni density diffusions and
+their fade under the free surface (``diffusion_at_surface=False``), plain dynamic
+boundaries (DBC) for walls and bodies, XSPH, the symplectic and Verlet integrators, the
+time-step reductions of 001_14936b82710365b2.txt Eq. 14 with the diffusion limit, the
+NaN guard (the CPU path's message), particles leaving the domain, the group loads on
+the device, boundary particles placed by id (bodies, prescribed motions).
+
+Not on the GPU yet (refused by :func:`check_config` with the setting to change):
+``diffusion="antuono"`` (its second pair loop for the renormalised gradients),
+``walls="adami"`` (the wall-density pass of fluid.wall_density), ``mls_every > 0`` (the
+MLS re-initialisation) and boundary-correction hooks (the bodies' mDBC,
+fluid.boundary_correction: a scene's ``fluid.body_boundary = "dbc"`` runs). A float32
+variant of the pair loop is not written: float64 is the GPU default and its
+reference, as on the CPU.
+"""
+
+from __future__ import annotations
+
+import os
+
+from cosim.errors import InputError
+
+#: FluidConfig.device values
+DEVICES = ("cpu", "cuda")
+
+_SIM_HINT = ("set NUMBA_ENABLE_CUDASIM=1 in the environment before starting Python to run the GPU path on numba's "
+             "CUDA simulator (slow: tiny cases only), or use device='cpu'")
+
+
+def availability() -> str | None:
+    """None where ``device="cuda"`` can run (a CUDA GPU numba sees, or numba's CUDA
+    simulator enabled with NUMBA_ENABLE_CUDASIM=1); else why not and what to do."""
+    try:
+        from numba import cuda
+    except ImportError as e:  # numba-cuda absent (numba >= 0.61 no longer ships the CUDA target)
+        return (f"numba-cuda is not installed ({e}); pip install numba-cuda (or the project's extra: "
+                f"pip install -e '.[gpu]'), then either run on a machine with an NVIDIA GPU or {_SIM_HINT}")
+    if simulator():
+        return None
+    try:
+        ok = cuda.is_available()
+    except Exception as e:  # noqa: BLE001 - a broken driver reads as no GPU
+        return f"numba.cuda found no usable GPU ({type(e).__name__}: {e}); {_SIM_HINT}"
+    if not ok:
+        return f"numba.cuda finds no CUDA GPU or driver on this machine; {_SIM_HINT}"
+    return None
+
+
+def simulator() -> bool:
+    """True when numba's CUDA simulator runs the kernels (NUMBA_ENABLE_CUDASIM=1)."""
+    try:
+        from numba import config
+        return bool(getattr(config, "ENABLE_CUDASIM", 0)) or os.environ.get("NUMBA_ENABLE_CUDASIM", "0") == "1"
+    except ImportError:
+        return False
+
+
+def check_config(config) -> None:
+    """Refuse a ``FluidConfig(device="cuda")`` the GPU path cannot run, naming the field
+    and the fix (called from its validation, before any work)."""
+    bad = []
+    if config.diffusion == "antuono":
+        bad.append(("diffusion='antuono'", "use diffusion='fourtakas' (default) or 'molteni'"))
+    if config.walls == "adami":
+        bad.append(("walls='adami'", "use walls='dbc' (the Adami wall pass is not on the GPU yet)"))
+    if config.mls_every:
+        bad.append((f"mls_every={config.mls_every}", "use mls_every=0 (MLS re-initialisation is not on the GPU yet)"))
+    if bad:
+        what, fix = bad[0]
+        raise InputError(f"FluidConfig: {what} is not available with device='cuda'; {fix}, or device='cpu'")
+    why = availability()
+    if why is not None:
+        raise InputError(f"FluidConfig: device='cuda' cannot run here: {why}")

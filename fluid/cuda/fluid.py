@@ -1,0 +1,222 @@
+"""``Fluid`` on the GPU: what ``Fluid(FluidConfig(device="cuda"), particles)`` builds.
+
+:class:`CudaFluid` is the CPU ``Fluid`` with its step, sort, rates, NaN guard, group
+loads and boundary placement run on the device (:class:`fluid.cuda.state.DeviceState`);
+everything else (the sub-cycling of ``advance``, the step's order of operations in
+``_end_step``, the time-step limit's arithmetic, the messages) is the CPU class's own.
+
+The particle data live on the device between steps. The host copy (``ps``, the
+integrator's ``_aux``, the rates ``_acc``, ``_drho``, ``_cs``, ``_xsph``, the cell
+offsets ``_start``) is brought back only when something reads it (an output, a probe,
+``wall_pressure``, ``save_state``, the NaN guard's message), and the device takes the
+host copy back before its next step whenever the host copy was handed out (it may have
+been changed: ``set_group_velocity``, ``settle``, ``load_state``). In a coupled step only
+scalars, the group loads and the bodies' placements (by id) cross the bus.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+
+import numba
+import numpy as np
+from numba import cuda
+
+from cosim.errors import InputError, InstabilityError
+from fluid.cuda.state import DeviceState
+from fluid.integrator import step_limit
+from fluid.particles import Kind
+from fluid.solver import Fluid
+
+log = logging.getLogger(__name__)
+
+
+class _Host:
+    """An attribute of the host copy: reading it brings the device state back first (and
+    hands the copy out: the device re-reads it before its next step); writing it marks
+    the device stale."""
+
+    def __set_name__(self, owner, name):
+        self.key = "_host" + name
+
+    def __get__(self, obj, owner=None):
+        if obj is None:
+            return self
+        obj._to_host()
+        obj._host_changed = True
+        return obj.__dict__.get(self.key)
+
+    def __set__(self, obj, value):
+        obj.__dict__[self.key] = value
+        obj._host_changed = True
+
+
+class CudaFluid(Fluid):
+    """The fluid stepped on an NVIDIA GPU (module docstring)."""
+
+    ps = _Host()
+    _aux = _Host()
+    _acc = _Host()
+    _drho = _Host()
+    _cs = _Host()
+    _xsph = _Host()
+    _start = _Host()
+
+    def __init__(self, config, particles):
+        self.__dict__["_dev"] = None
+        self.__dict__["_device_ahead"] = False
+        self.__dict__["_host_changed"] = True
+        super().__init__(config, particles)
+        ps = particles
+        if ps.ids.max() >= 2 ** 31 - 1:
+            raise InputError("fluid: device='cuda' takes particle ids below 2^31")
+        #: kind of every particle by id, and which ids are still in the domain (the
+        #: checks of set_particle_motion without reading the device)
+        self._kind_by_id = np.full(int(ps.ids.max()) + 1, -1, np.int8)
+        self._kind_by_id[ps.ids] = ps.kind
+        self._alive = np.zeros(self._kind_by_id.size, bool)
+        self._alive[ps.ids] = True
+        c = config
+        self._key = (self._kernel, c.dim == 3, c.nu > 0.0, c.xsph_eps > 0.0, c.alpha_wall != 1.0,
+                     not c.diffusion_at_surface)
+        self._prm_dev = None
+
+    def _threads(self) -> int:  # the host's share is transfers and set-up: numba's threads as they are
+        return numba.get_num_threads()
+
+    # ------------------------------------------------------------------ host <-> device
+    def _to_host(self) -> None:
+        """Bring the device state into the host copy if the device is ahead of it."""
+        if not self.__dict__.get("_device_ahead"):
+            return
+        d = self.__dict__
+        ps = d["_hostps"]
+        c = self.config
+        aux, rates = self._dev.pull(ps, c.rho0, c.speed_of_sound, c.gamma)
+        d["_host_aux"] = aux
+        for k in ("acc", "drho", "cs", "xsph", "start"):
+            d["_host_" + k] = rates[k]
+        d["_device_ahead"] = False
+
+    def _to_device(self) -> DeviceState:
+        """The device state, after taking the host copy if it was handed out or changed."""
+        d = self.__dict__
+        if d["_dev"] is None:
+            c = self.config
+            saved = ("vel", "rho") if c.integrator == "verlet" else ("pos", "vel", "rho")
+            d["_dev"] = DeviceState(d["_hostps"].n, c.dim, self._grid, saved, c.xsph_eps > 0.0,
+                                    int(self._kind_by_id.size - 1))
+            self._prm_dev = cuda.to_device(self._prm)
+        if d["_host_changed"]:
+            rates = None
+            if d.get("_host_acc") is not None:
+                rates = {k: d.get("_host_" + k) for k in ("acc", "drho", "cs", "xsph", "start")}
+            d["_dev"].push(d["_hostps"], d.get("_host_aux") or {}, rates)
+            d["_host_changed"] = False
+        d["_device_ahead"] = True
+        return d["_dev"]
+
+    @property
+    def device_memory(self) -> dict:
+        """Device memory this fluid allocated: bytes per particle (arrays sized by the
+        particle count, the id map included), bytes per cell of the grid, and the total
+        [B]."""
+        dev = self._to_device()
+        total = sum(sum(v.values()) for v in dev.device_bytes().values())
+        return {"bytes_per_particle": dev.bytes_per_particle(), "bytes_per_cell": dev.bytes_per_cell(),
+                "cells": dev.ncells, "particles": dev.cap, "total_bytes": total}
+
+    # ------------------------------------------------------------------ the step
+    def step(self, dt: float):
+        c = self.config
+        dev = self._to_device()
+        if c.integrator == "verlet":
+            loads = self._group_sums()
+            euler = self.counters.steps % c.verlet_reset == 0
+            dev.verlet(dt, c.rho0, euler)
+            self._end_step(dt)
+            return loads
+        dev.predictor(dt, c.rho0)
+        self._place_prescribed(self.t + 0.5 * dt)
+        self._sort()
+        self._rates()
+        loads = self._group_sums()
+        self._to_device().corrector(dt, c.rho0)
+        self._end_step(dt)
+        return loads
+
+    def _sort(self):
+        dev = self._to_device()
+        outside = dev.bin()
+        n = dev.n - outside
+        if outside:
+            gone = dev.outside_rows(outside)
+            P, V, rho = dev.rows("P", gone), dev.rows("V", gone), dev.rows("rho", gone)
+            bad = ~(np.isfinite(P).all(axis=0) & np.isfinite(V).all(axis=0) & np.isfinite(rho))
+            if bad.any():
+                self._raise_non_finite(int(gone[np.argmax(bad)]))
+            ids = dev.rows("ids", gone).astype(np.int64)
+            kinds, counts = np.unique(dev.rows("kind", gone), return_counts=True)
+            for k, cnt in zip(kinds, counts):
+                self.counters.removed[Kind(k).name] += int(cnt)
+            self._alive[ids] = False
+            log.warning("fluid: %d particles left the domain at t=%.6g s and were removed (total %s)",
+                        outside, self.t, self.counters.removed)
+            if not (self._kind_by_id[self._alive] == Kind.FLUID).any():
+                raise InstabilityError(f"fluid: every fluid particle has left the domain by t={self.t:.6g} s")
+        dev.gather(n)
+
+    def _rates(self):
+        if self.boundary_correction is not None:
+            raise InputError("fluid: device='cuda' does not run boundary-correction hooks (the bodies' mDBC, "
+                             f"{type(self.boundary_correction).__name__}); give the bodies plain dynamic boundaries "
+                             "(SPHFluid(boundary='dbc'), a scene's fluid.body_boundary = \"dbc\") or device='cpu'")
+        c = self.config
+        dev = self._to_device()
+        dev.rates(self._key, self._prm_dev, c.rho0, c.speed_of_sound, c.gamma)
+        amax2, cvmax, cmax = dev.max_bounds()
+        self._limit = step_limit(amax2, c.h / cvmax if cvmax > 0.0 else math.inf, cmax, c.h, c.cfl, c.dt_max, c.nu,
+                                 **self._diffusivity)
+        self._stale = False
+
+    def _check_finite(self):
+        i = self._to_device().first_non_finite()
+        if i >= 0:
+            self._raise_non_finite(i)
+
+    def _group_sums(self):
+        return self._to_device().group_sums(self.moment_points, self.n_groups)
+
+    def _place_prescribed(self, t: float) -> None:
+        self._t_placed = t
+        if not self._motions:
+            return
+        dev = self._to_device()
+        for group, (motion, ids, ref) in self._motions.items():
+            keep = self._alive[ids]
+            pos, vel = motion(t, ref)
+            pos, vel = np.asarray(pos)[keep], np.asarray(vel)[keep]
+            if not (np.isfinite(pos).all() and np.isfinite(vel).all()):
+                raise InstabilityError(f"fluid: the prescribed motion of group {group} gave non-finite "
+                                       f"positions or velocities at t={t:.9g} s")
+            dev.place(ids[keep], pos, vel)
+
+    def set_particle_motion(self, ids, pos, vel) -> None:
+        ids = np.asarray(ids, np.int64)
+        if ids.size and (ids.min() < 0 or ids.max() >= self._alive.size or not self._alive[ids].all()):
+            raise InputError("fluid: set_particle_motion got ids of particles that do not exist (removed?)")
+        k = self._kind_by_id[ids]
+        if (k == Kind.FLUID).any() or (k == Kind.FIXED_WALL).any():
+            raise InputError("fluid: set_particle_motion moves MOVING_WALL or BODY particles only")
+        pos, vel = np.asarray(pos, np.float64), np.asarray(vel, np.float64)
+        if pos.shape != (len(ids), self.config.dim) or vel.shape != pos.shape:
+            raise InputError(f"fluid: positions and velocities must have shape ({len(ids)}, {self.config.dim})")
+        if not (np.isfinite(pos).all() and np.isfinite(vel).all()):
+            raise InstabilityError("fluid: non-finite positions or velocities given for boundary particles")
+        self._to_device().place(ids, pos, vel)
+        if self._limit is not None:
+            self._stale = True
+
+    def _reinitialise_density(self) -> None:
+        raise InputError("fluid: MLS re-initialisation (mls_every) is not available with device='cuda'")

@@ -1,0 +1,587 @@
+"""CUDA kernels of the GPU path (numba-cuda): cell build and sort, the pair loop, the
+integrators, the time-step reductions, the NaN guard and the group loads.
+
+Each kernel mirrors a CPU function line for line, with the same formulas in the same
+order, so that the two paths agree to round-off in float64:
+
+* :func:`k_bin` is ``fluid.neighbours.bin_particles``; :func:`k_fill` and
+  :func:`k_order` together are ``counting_sort`` followed by ``order_cells_by_x``:
+  the fill by atomics leaves a cell's particles in any order, and the insertion sort by
+  (x, index before the sort) restores the CPU's (a stable counting sort keeps the index
+  order, a stable insertion sort by x then sorts on x), so both paths hold the same
+  particles in the same rows.
+* :func:`make_pair_loop` is ``fluid.equations._make_interact`` (004_1657bd4a51d29840.txt
+  Eq. 6-8, 001_14936b82710365b2.txt Eq. 6, the density diffusions and the laminar
+  viscosity and XSPH of fluid.equations' docstring). It walks the whole row of three
+  cells where the CPU loop walks the row trimmed to 2h in x: what it adds lies beyond
+  2h, where every term is exactly zero (the kernel factors are clamped), so the sums hold
+  the same non-zero terms in the same order; the CPU loop sums them in vector lanes, so
+  the two differ by round-off only.
+* :func:`k_predictor`, :func:`k_corrector`, :func:`k_verlet` are those of
+  ``fluid.integrator``; :func:`k_bounds` its ``_bounds``; :func:`k_first_non_finite`
+  its ``first_non_finite`` (the lowest row, as the CPU's serial scan finds).
+
+Particle arrays are structures of arrays: positions, velocities (and accelerations) as
+``(dim, capacity)`` rows (x, z in 2-D; x, y, z in 3-D), scalars as ``(capacity,)``; only
+the first ``n`` columns hold particles.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import cuda
+
+from fluid import equations as eq
+from fluid.kernels import WENDLAND
+
+#: threads per block of every kernel
+TPB = 128
+#: most blocks of a launch (every kernel loops over its items with the grid's stride)
+MAX_BLOCKS = 65535
+#: the launch on numba's CUDA simulator, which runs each thread as a Python thread: two
+#: blocks of a few threads (the grid-stride loops and the block reduction still run over
+#: several blocks), so that starting threads does not cost more than the kernels' work
+SIM_LAUNCH = (2, 8)
+_SIM = None
+
+
+def launch(n: int) -> tuple:
+    """(blocks, threads per block) for ``n`` items: enough blocks of :data:`TPB` threads,
+    or :data:`SIM_LAUNCH` on the simulator. Results do not depend on it (but for the
+    order of atomic sums)."""
+    global _SIM
+    if _SIM is None:
+        from fluid.cuda import simulator
+        _SIM = simulator()
+    if _SIM:
+        return SIM_LAUNCH
+    return min(MAX_BLOCKS, max(1, (n + TPB - 1) // TPB)), TPB
+
+
+# ------------------------------------------------------------------ SPH kernel (fluid.kernels)
+@cuda.jit(device=True)
+def d_w_value(kernel, q, ad):
+    if kernel == WENDLAND:
+        t = max(1.0 - 0.5 * q, 0.0)
+        return ad * t * t * t * t * (2.0 * q + 1.0)
+    t2 = max(2.0 - q, 0.0)
+    t1 = max(1.0 - q, 0.0)
+    return ad * 0.25 * (t2 * t2 * t2 - 4.0 * t1 * t1 * t1)
+
+
+@cuda.jit(device=True)
+def d_grad_shape(kernel, q):
+    if kernel == WENDLAND:
+        t = max(1.0 - 0.5 * q, 0.0)
+        return t * t * t
+    t2 = max(2.0 - q, 0.0)
+    t1 = max(1.0 - q, 0.0)
+    qs = max(q, 1e-12)
+    return (-0.75 * t2 * t2 + 3.0 * t1 * t1) / qs
+
+
+@cuda.jit(device=True)
+def d_tait(r, rho0, c0, gamma, B, e):
+    """fluid.equations._tait (004_1657bd4a51d29840.txt Eq. 8)."""
+    x = r / rho0
+    if gamma == 7.0:
+        x2 = x * x
+        x3 = x2 * x
+        return B * (x3 * x3 * x - 1.0), c0 * x3
+    return B * (x ** gamma - 1.0), c0 * x ** e
+
+
+@cuda.jit(device=True)
+def d_first_at_or_above(P, j0, j1, x):
+    """First row in [j0, j1) whose x is at least ``x`` (j1 if none): a binary search in a
+    row of cells, which the sort keeps ordered by x as a whole."""
+    while j0 < j1:
+        m = (j0 + j1) // 2
+        if P[0, m] < x:
+            j0 = m + 1
+        else:
+            j1 = m
+    return j0
+
+
+@cuda.jit(device=True)
+def d_clamp_cell(v, lo, inv_cell, nmax):
+    return min(max(int((v - lo) * inv_cell), 0), nmax - 1)
+
+
+# ------------------------------------------------------------------ cell list
+@cuda.jit
+def k_bin(P, n, lo, inv_cell, nx, ny, nz, cell, count):
+    """``bin_particles``: the cell of every particle (``nx ny nz`` outside), and its count
+    into ``count[cell + 1]``."""
+    for i in range(cuda.grid(1), n, cuda.gridsize(1)):
+        three = P.shape[0] == 3
+        zc = P.shape[0] - 1
+        fx = (P[0, i] - lo[0]) * inv_cell
+        fz = (P[zc, i] - lo[zc]) * inv_cell
+        fy = (P[1, i] - lo[1]) * inv_cell if three else 0.0
+        ok = (fx >= 0.0) and (fz >= 0.0) and (fy >= 0.0) and (fx < nx) and (fy < ny) and (fz < nz)
+        if ok:
+            c = int(fx) + nx * (int(fy) + ny * int(fz))
+        else:
+            c = nx * ny * nz
+        cell[i] = c
+        cuda.atomic.add(count, c + 1, 1)
+
+
+#: entries of the offsets array each thread of the scan sums in turn
+SCAN_CHUNK = 256
+
+
+@cuda.jit
+def k_scan_chunks(a, m, sums):
+    """Inclusive scan of ``a[0:m]`` within each chunk of :data:`SCAN_CHUNK`; the chunk's
+    total into ``sums``."""
+    for t in range(cuda.grid(1), (m + SCAN_CHUNK - 1) // SCAN_CHUNK, cuda.gridsize(1)):
+        j0 = t * SCAN_CHUNK
+        j1 = min(j0 + SCAN_CHUNK, m)
+        s = 0
+        for j in range(j0, j1):
+            s += a[j]
+            a[j] = s
+        sums[t] = s
+
+
+@cuda.jit
+def k_scan_sums(sums, k):
+    """Inclusive scan of the chunk totals (one thread: a few thousand at most per million
+    cells)."""
+    if cuda.grid(1) != 0:
+        return
+    s = 0
+    for j in range(k):
+        s += sums[j]
+        sums[j] = s
+
+
+@cuda.jit
+def k_scan_add(a, m, sums, fill):
+    """Add the preceding chunks' total to every entry; copy ``a[:-1]`` into ``fill`` (the
+    cursors of :func:`k_fill`)."""
+    for j in range(cuda.grid(1), m, cuda.gridsize(1)):
+        c = j // SCAN_CHUNK
+        if c > 0:
+            a[j] += sums[c - 1]
+        if j < m - 1:
+            fill[j] = a[j]
+
+
+@cuda.jit
+def k_fill(cell, n, fill, perm):
+    for i in range(cuda.grid(1), n, cuda.gridsize(1)):
+        j = cuda.atomic.add(fill, cell[i], 1)
+        perm[j] = i
+
+
+@cuda.jit
+def k_order(perm, start, P, ncells):
+    """Each cell's particles ordered by (x, index before the sort), the CPU's order
+    (module docstring); the outside cell ``ncells`` by index only."""
+    for c in range(cuda.grid(1), ncells + 1, cuda.gridsize(1)):
+        j0 = start[c]
+        j1 = start[c + 1]
+        by_x = c < ncells
+        for j in range(j0 + 1, j1):
+            p = perm[j]
+            x = P[0, p]
+            i = j - 1
+            while i >= j0:
+                q = perm[i]
+                if by_x:
+                    later = P[0, q] > x or (P[0, q] == x and q > p)
+                else:
+                    later = q > p
+                if not later:
+                    break
+                perm[i + 1] = q
+                i -= 1
+            perm[i + 1] = p
+
+
+@cuda.jit
+def k_gather2(src, dst, perm, n):
+    for i in range(cuda.grid(1), n, cuda.gridsize(1)):
+        j = perm[i]
+        for k in range(src.shape[0]):
+            dst[k, i] = src[k, j]
+
+
+@cuda.jit
+def k_gather1(src, dst, perm, n):
+    for i in range(cuda.grid(1), n, cuda.gridsize(1)):
+        dst[i] = src[perm[i]]
+
+
+@cuda.jit
+def k_slots(ids, n, slot):
+    """Row of every particle by its id (the map :func:`k_place` reads)."""
+    for i in range(cuda.grid(1), n, cuda.gridsize(1)):
+        slot[ids[i]] = i
+
+
+@cuda.jit
+def k_place(slot, ids, pos, vel, P, V):
+    """Place the particles ``ids``: positions ``pos`` and velocities ``vel`` (m, dim)."""
+    for k in range(cuda.grid(1), ids.shape[0], cuda.gridsize(1)):
+        i = slot[ids[k]]
+        for d in range(P.shape[0]):
+            P[d, i] = pos[k, d]
+            V[d, i] = vel[k, d]
+
+
+# ------------------------------------------------------------------ equation of state
+@cuda.jit
+def k_pack(rho, n, rho0, c0, gamma, cs, pr2):
+    """``fluid.equations.pack``'s per-particle part: sound speed and p / rho^2."""
+    for i in range(cuda.grid(1), n, cuda.gridsize(1)):
+        B = c0 * c0 * rho0 / gamma
+        e = 0.5 * (gamma - 1.0)
+        r = rho[i]
+        pi, c = d_tait(r, rho0, c0, gamma, B, e)
+        cs[i] = c
+        pr2[i] = pi / (r * r)
+
+
+# ------------------------------------------------------------------ the pair loop
+_PAIR_LOOPS = {}
+
+
+def make_pair_loop(kernel: int, three: bool, laminar: bool, xsph: bool, wall_visc: bool, fade: bool):
+    """The pair loop compiled for one kernel, dimension and choice of optional terms (the
+    closure's constants fold away, as in fluid.equations._make_interact). Writes, for
+    every particle a < n: ``drho[a]``, ``visc[a]``, ``acc[:, a]`` and, with XSPH,
+    ``xs[:, a]`` (fluid.equations.interact)."""
+    key = (kernel, three, laminar, xsph, wall_visc, fade)
+    if key in _PAIR_LOOPS:
+        return _PAIR_LOOPS[key]
+    P_H, P_AD, P_ALPHA, P_DDT, P_HYDRO = eq.P_H, eq.P_AD, eq.P_ALPHA, eq.P_DDT, eq.P_HYDRO
+    P_RHO0, P_G, P_NU4, P_XSPH, P_AWALL = eq.P_RHO0, eq.P_G, eq.P_NU4, eq.P_XSPH, eq.P_AWALL
+    s0, s1 = eq.SURFACE_FADE
+    zc = 2 if three else 1
+
+    @cuda.jit
+    def pair_loop(P, V, rho, mass, kind, cs, pr2, n, start, lo, cell, nx, ny, nz, prm, drho, visc, acc, xs):
+        for a in range(cuda.grid(1), n, cuda.gridsize(1)):
+            h = prm[P_H]
+            ad = prm[P_AD]
+            ddt = prm[P_DDT]
+            nu4 = prm[P_NU4]
+            awall = prm[P_AWALL]
+            eps2 = 2.0 * prm[P_XSPH] * ad
+            gx = prm[P_G]
+            gy = prm[P_G + 1] if three else 0.0
+            gz = prm[P_G + 2] if three else prm[P_G + 1]
+            Fc = (-5.0 * ad / (h * h)) if kernel == WENDLAND else (ad / (h * h))  # fluid.kernels.grad_scale
+            avh = -prm[P_ALPHA] * h
+            hgz = -0.5 * prm[P_HYDRO] * gz
+            irho0 = 1.0 / prm[P_RHO0]
+            eta2 = 0.01 * h * h
+            R2 = 4.0 * h * h
+            ih = 1.0 / h
+            inv_cell = 1.0 / cell
+            xa = P[0, a]
+            ya = P[1, a] if three else 0.0
+            za = P[zc, a]
+            ux = V[0, a]
+            uy = V[1, a] if three else 0.0
+            uz = V[zc, a]
+            rhoa = rho[a]
+            pa = pr2[a]
+            ca = cs[a]
+            ka = rhoa / (ca * ca)
+            fa = 1.0 if kind[a] == 0 else 0.0
+            cx = d_clamp_cell(xa, lo[0], inv_cell, nx)
+            cz = d_clamp_cell(za, lo[2], inv_cell, nz)
+            cy = d_clamp_cell(ya, lo[1], inv_cell, ny) if three else 0
+            sd = 0.0
+            sdd = 0.0
+            sx = 0.0
+            sy = 0.0
+            sz = 0.0
+            lx = 0.0
+            ly = 0.0
+            lz = 0.0
+            wx = 0.0
+            wy = 0.0
+            wz = 0.0
+            vmax = 0.0
+            gsx = 0.0
+            gsy = 0.0
+            gsz = 0.0
+            tz = za - lo[2] - cz * cell
+            ty = ya - lo[1] - cy * cell
+            ez_lo = tz * tz
+            ez_hi = (cell - tz) * (cell - tz)
+            ey_lo = ty * ty
+            ey_hi = (cell - ty) * (cell - ty)
+            dys = 3 if three else 1
+            for dz in range(-1, 2):
+                for k in range(dys):
+                    dy = k - 1 if three else 0
+                    if three and dy != 0 and dz != 0:
+                        ey2 = ey_lo if dy < 0 else ey_hi
+                        ez2 = ez_lo if dz < 0 else ez_hi
+                        if ey2 + ez2 >= R2:
+                            continue
+                    yy = cy + dy
+                    zz = cz + dz
+                    if yy < 0 or yy >= ny or zz < 0 or zz >= nz:
+                        continue
+                    base = nx * (yy + ny * zz)
+                    j0 = start[base + max(cx - 1, 0)]
+                    j1 = start[base + min(cx + 1, nx - 1) + 1]
+                    j0 = d_first_at_or_above(P, j0, j1, xa - 2.0 * h)
+                    j1 = d_first_at_or_above(P, j0, j1, xa + 2.0 * h)
+                    for b in range(j0, j1):
+                        rx = xa - P[0, b]
+                        rz = za - P[zc, b]
+                        vx = ux - V[0, b]
+                        vz = uz - V[zc, b]
+                        if three:
+                            ry = ya - P[1, b]
+                            vy = uy - V[1, b]
+                            r2 = rx * rx + ry * ry + rz * rz
+                            vr = vx * rx + vy * ry + vz * rz
+                        else:
+                            ry = 0.0
+                            vy = 0.0
+                            r2 = rx * rx + rz * rz
+                            vr = vx * rx + vz * rz
+                        q = math.sqrt(r2) * ih
+                        Fs = d_grad_shape(kernel, q)
+                        fb = 1.0 if kind[b] == 0 else 0.0
+                        mask = max(fa, fb)
+                        mb = mass[b]
+                        mbm = mb * mask
+                        mbF = mbm * Fs
+                        rhob = rho[b]
+                        cb = cs[b]
+                        e2 = r2 + eta2
+                        rs = rhoa + rhob
+                        d = 1.0 / (e2 * rs)
+                        inv = d * rs
+                        sd += mbF * vr
+                        volb = mb / rhob if fb > 0.0 else 0.0
+                        rhoH = hgz * (ka + rhob / (cb * cb)) * rz
+                        sdd += volb * (rhob - rhoa - rhoH) * Fs * r2 * inv
+                        if fade:
+                            vf = (volb + (1.0 - fb) * mb * irho0) * Fs
+                            gsx += vf * rx
+                            gsy += vf * ry
+                            gsz += vf * rz
+                        Pi = avh * (ca + cb) * min(vr, 0.0) * d
+                        if wall_visc:
+                            Pi *= awall + (1.0 - awall) * fa * fb
+                        coef = mbF * (pa + pr2[b] + Pi)
+                        sx -= coef * rx
+                        sy -= coef * ry
+                        sz -= coef * rz
+                        if laminar:
+                            lam = mbF * r2 * d
+                            lx += lam * vx
+                            ly += lam * vy
+                            lz += lam * vz
+                        m2 = (mask if r2 < R2 else 0.0) * vr * inv
+                        m2 = m2 * m2
+                        m4 = m2 * m2
+                        vmax += m4 * m4
+                        if xsph:
+                            wgt = mbm * (d * e2) * d_w_value(kernel, q, 1.0)
+                            wx -= wgt * vx
+                            wy -= wgt * vy
+                            wz -= wgt * vz
+            if fade:
+                sa = h * abs(Fc) * math.sqrt(gsx * gsx + gsy * gsy + gsz * gsz)
+                drho[a] = Fc * (sd - ddt * fa * min(max((s1 - sa) / (s1 - s0), 0.0), 1.0) * sdd)
+            else:
+                drho[a] = Fc * (sd - ddt * fa * sdd)
+            visc[a] = h * math.sqrt(math.sqrt(math.sqrt(vmax)))
+            if laminar:
+                sx += nu4 * lx
+                sy += nu4 * ly
+                sz += nu4 * lz
+            acc[0, a] = Fc * sx + fa * gx
+            if three:
+                acc[1, a] = Fc * sy + fa * gy
+                acc[2, a] = Fc * sz + fa * gz
+            else:
+                acc[1, a] = Fc * sz + fa * gz
+            if xsph:
+                xs[0, a] = eps2 * fa * wx
+                if three:
+                    xs[1, a] = eps2 * fa * wy
+                    xs[2, a] = eps2 * fa * wz
+                else:
+                    xs[1, a] = eps2 * fa * wz
+
+    _PAIR_LOOPS[key] = pair_loop
+    return pair_loop
+
+
+# ------------------------------------------------------------------ integrators (fluid.integrator)
+@cuda.jit
+def k_predictor(P, V, rho, drho, acc, kind, n, rho0, dt, Pn, Vn, rhon, xs, use_xs):
+    for i in range(cuda.grid(1), n, cuda.gridsize(1)):
+        half = 0.5 * dt
+        f = kind[i] == 0
+        r = rho[i]
+        rhon[i] = r
+        rn = r + half * drho[i]
+        rho[i] = rn if f else max(rn, rho0)
+        for k in range(P.shape[0]):
+            v = V[k, i]
+            Vn[k, i] = v
+            Pn[k, i] = P[k, i]
+            P[k, i] += half * (v + xs[k, i]) if use_xs else half * v
+            if f:
+                V[k, i] = v + half * acc[k, i]
+
+
+@cuda.jit
+def k_corrector(P, V, rho, drho, acc, kind, n, rho0, dt, Pn, Vn, rhon, xs, use_xs):
+    for i in range(cuda.grid(1), n, cuda.gridsize(1)):
+        f = kind[i] == 0
+        eps = -drho[i] / rho[i] * dt
+        rn = rhon[i] * (2.0 - eps) / (2.0 + eps)
+        rho[i] = rn if f else max(rn, rho0)
+        for k in range(P.shape[0]):
+            v0 = Vn[k, i]
+            v1 = v0 + dt * acc[k, i] if f else v0
+            V[k, i] = v1
+            P[k, i] = Pn[k, i] + 0.5 * dt * (v0 + v1) + (dt * xs[k, i] if use_xs else 0.0)
+
+
+@cuda.jit
+def k_verlet(P, V, rho, drho, acc, kind, n, rho0, dt, Vm1, rhom1, euler, xs, use_xs):
+    for i in range(cuda.grid(1), n, cuda.gridsize(1)):
+        w = dt if euler else 2.0 * dt
+        f = kind[i] == 0
+        r = rho[i]
+        base = r if euler else rhom1[i]
+        rn = base + w * drho[i]
+        rhom1[i] = r
+        rho[i] = rn if f else max(rn, rho0)
+        for k in range(P.shape[0]):
+            v = V[k, i]
+            if f:
+                vb = v if euler else Vm1[k, i]
+                P[k, i] += dt * (v + xs[k, i] if use_xs else v) + 0.5 * dt * dt * acc[k, i]
+                V[k, i] = vb + w * acc[k, i]
+            else:
+                P[k, i] += dt * v
+            Vm1[k, i] = v
+
+
+@cuda.jit
+def k_damp(V, Vaux, kind, n, factor):
+    """Multiply the fluid velocities (and the integrator's saved ones) by ``factor``
+    (Fluid.settle)."""
+    for i in range(cuda.grid(1), n, cuda.gridsize(1)):
+        if kind[i] != 0:
+            continue
+        for k in range(V.shape[0]):
+            V[k, i] *= factor
+            if Vaux.shape[1] > 0:
+                Vaux[k, i] *= factor
+
+
+# ------------------------------------------------------------------ reductions
+@cuda.jit
+def k_bounds(acc, visc, cs, kind, n, out):
+    """``fluid.integrator._bounds``: out[0] = max |a|^2 over fluid particles, out[1] =
+    max (c + visc), out[2] = max c (out zeroed by the caller). A block reduction in
+    shared memory, then one atomic per block."""
+    sa = cuda.shared.array(TPB, np.float64)
+    sv = cuda.shared.array(TPB, np.float64)
+    sc = cuda.shared.array(TPB, np.float64)
+    t = cuda.threadIdx.x
+    am = 0.0
+    cv = 0.0
+    c = 0.0
+    for i in range(cuda.grid(1), n, cuda.gridsize(1)):
+        a2 = 0.0
+        for k in range(acc.shape[0]):
+            a2 += acc[k, i] * acc[k, i]
+        am = max(am, a2 if kind[i] == 0 else 0.0)
+        cv = max(cv, cs[i] + visc[i])
+        c = max(c, cs[i])
+    sa[t] = am
+    sv[t] = cv
+    sc[t] = c
+    cuda.syncthreads()
+    s = cuda.blockDim.x // 2  # a power of two (TPB, or SIM_TPB on the simulator)
+    while s > 0:
+        if t < s:
+            sa[t] = max(sa[t], sa[t + s])
+            sv[t] = max(sv[t], sv[t + s])
+            sc[t] = max(sc[t], sc[t + s])
+        cuda.syncthreads()
+        s //= 2
+    if t == 0:
+        cuda.atomic.max(out, 0, sa[0])
+        cuda.atomic.max(out, 1, sv[0])
+        cuda.atomic.max(out, 2, sc[0])
+
+
+@cuda.jit
+def k_first_non_finite(P, V, rho, n, out):
+    """Lowest row with a NaN or infinite position, velocity or density into ``out[0]``
+    (set to n by the caller): ``fluid.integrator.first_non_finite``."""
+    for i in range(cuda.grid(1), n, cuda.gridsize(1)):
+        s = rho[i]
+        for k in range(P.shape[0]):
+            s += P[k, i] + V[k, i]
+        if s != s or s == math.inf or s == -math.inf:
+            cuda.atomic.min(out, 0, i)
+
+
+@cuda.jit
+def k_group_sums(P, mass, acc, group, n, centre, F, M):
+    """``fluid.solver._sum_groups``: force m a and moment (r - c) x m a per boundary group,
+    summed with atomics (their order varies: round-off)."""
+    for i in range(cuda.grid(1), n, cuda.gridsize(1)):
+        g = group[i]
+        if g < 0:
+            continue
+        dim = P.shape[0]
+        fx = mass[i] * acc[0, i]
+        fz = mass[i] * acc[dim - 1, i]
+        rx = P[0, i] - centre[g, 0]
+        rz = P[dim - 1, i] - centre[g, dim - 1]
+        cuda.atomic.add(F, (g, 0), fx)
+        cuda.atomic.add(F, (g, dim - 1), fz)
+        if dim == 2:
+            cuda.atomic.add(M, (g, 0), rz * fx - rx * fz)
+        else:
+            fy = mass[i] * acc[1, i]
+            ry = P[1, i] - centre[g, 1]
+            cuda.atomic.add(F, (g, 1), fy)
+            cuda.atomic.add(M, (g, 0), ry * fz - rz * fy)
+            cuda.atomic.add(M, (g, 1), rz * fx - rx * fz)
+            cuda.atomic.add(M, (g, 2), rx * fy - ry * fx)
+
+
+@cuda.jit
+def k_zero_i4(a, m):
+    for j in range(cuda.grid(1), m, cuda.gridsize(1)):
+        a[j] = 0
+
+
+@cuda.jit
+def k_zero_f8(a, m):
+    for j in range(cuda.grid(1), m, cuda.gridsize(1)):
+        a[j] = 0.0
+
+
+@cuda.jit
+def k_read_i4(a, j, out):
+    """``out[0] = a[j]`` (one entry back to the host without a slice)."""
+    if cuda.grid(1) == 0:
+        out[0] = a[j]

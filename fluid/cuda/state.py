@@ -1,0 +1,258 @@
+"""The particle data of a fluid on the GPU, and the operations of a step on it.
+
+:class:`DeviceState` holds every per-particle array on the device between steps (the
+arrays are listed, with their bytes, by :meth:`DeviceState.bytes_per_particle`) and runs
+the kernels of :mod:`fluid.cuda.kernels`; it moves data to and from the host only when
+asked (:meth:`push`, :meth:`pull`), and per step returns scalars only (the stable step's
+bounds, the count of particles that left the domain, the NaN guard's row) and the group
+loads (G x dim).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import cuda
+
+from fluid.cuda import kernels as K
+from fluid.equations import equation_of_state
+
+#: float64 rows: (dim, capacity); the rest (capacity,)
+_F2 = ("P", "V")
+_F1 = ("rho", "mass")
+
+
+class DeviceState:
+    """Particles on the device, sorted by cell on ``grid`` (``fluid.neighbours.Grid``,
+    cells 2h wide, reach 1). ``saved``: the integrator's saved state, ``("pos", "vel",
+    "rho")`` (symplectic) or ``("vel", "rho")`` (Verlet)."""
+
+    def __init__(self, n: int, dim: int, grid, saved: tuple, xsph: bool, ids_max: int):
+        self.cap = n
+        self.n = 0
+        self.dim = dim
+        self.grid = grid
+        nx, ny, nz = grid.shape
+        self.ncells = nx * ny * nz
+        lo = np.zeros(3)
+        if dim == 3:
+            lo[:] = grid.lo
+        else:
+            lo[0], lo[2] = grid.lo
+        self.lo3 = cuda.to_device(lo)  # the pair loop's (x, y, z)
+        self.lo = cuda.to_device(np.asarray(grid.lo, np.float64))  # the binning's (dim,)
+        f2 = lambda: cuda.device_array((dim, n), np.float64)  # noqa: E731
+        f1 = lambda: cuda.device_array(n, np.float64)  # noqa: E731
+        self.a = {"P": f2(), "V": f2(), "rho": f1(), "mass": f1(),
+                  "kind": cuda.device_array(n, np.int8), "group": cuda.device_array(n, np.int32),
+                  "ids": cuda.device_array(n, np.int32)}
+        #: the integrator's saved state, by the names of Fluid._aux
+        self.saved = tuple(saved)
+        for k in self.saved:
+            self.a["aux_" + k] = f2() if k in ("pos", "vel") else f1()
+        # rates
+        self.drho, self.visc, self.cs, self.pr2 = f1(), f1(), f1(), f1()
+        self.acc = f2()
+        self.xsph = xsph
+        self.xs = f2() if xsph else cuda.device_array((dim, 0), np.float64)
+        # the sort: cell of each particle, permutation, one scratch array per kind of array
+        self.cell = cuda.device_array(n, np.int32)
+        self.perm = cuda.device_array(n, np.int32)
+        self.scratch = {"f2": f2(), "f1": f1(), "i4": cuda.device_array(n, np.int32),
+                        "i1": cuda.device_array(n, np.int8)}
+        self.start = cuda.device_array(self.ncells + 2, np.int32)
+        self.fill = cuda.device_array(self.ncells + 1, np.int32)
+        self.nchunks = (self.ncells + 2 + K.SCAN_CHUNK - 1) // K.SCAN_CHUNK
+        self.sums = cuda.device_array(self.nchunks, np.int32)
+        self.slot = cuda.device_array(ids_max + 1, np.int32)
+        self.bounds = cuda.device_array(3, np.float64)
+        self.flag = cuda.device_array(1, np.int64)
+        self.zero_aux = cuda.device_array((dim, 0), np.float64)
+
+    # ------------------------------------------------------------------ memory
+    def device_bytes(self) -> dict:
+        """Bytes of every device array, by name: ``per_particle`` (arrays of the capacity,
+        and the id map), ``per_cell`` (the cell offsets and the sort's cursors), ``fixed``."""
+        part = {f"a.{k}": v.nbytes for k, v in self.a.items()}
+        part.update({f"scratch.{k}": v.nbytes for k, v in self.scratch.items()})
+        for k in ("drho", "visc", "cs", "pr2", "acc", "xs", "cell", "perm", "slot"):
+            part[k] = getattr(self, k).nbytes
+        cells = {k: getattr(self, k).nbytes for k in ("start", "fill", "sums")}
+        fixed = {k: getattr(self, k).nbytes for k in ("bounds", "flag", "lo3", "lo", "zero_aux")}
+        return {"per_particle": part, "per_cell": cells, "fixed": fixed}
+
+    def bytes_per_particle(self) -> float:
+        """Device memory [B] per particle of the arrays sized by the particle capacity (the
+        id map included), over the capacity; the cell offsets come on top
+        (:meth:`bytes_per_cell`)."""
+        return sum(self.device_bytes()["per_particle"].values()) / self.cap
+
+    def bytes_per_cell(self) -> float:
+        """Device memory [B] per cell of the grid (offsets, cursors, scan totals)."""
+        return sum(self.device_bytes()["per_cell"].values()) / self.ncells
+
+    # ------------------------------------------------------------------ transfers
+    def push(self, ps, aux: dict, rates: dict | None) -> None:
+        """Upload the particle set (in its order), the integrator's saved state and, if
+        given, the rates (``drho``, ``acc``, ``cs``, ``xsph``) and ``start``."""
+        n, dim = ps.pos.shape
+        if n > self.cap:
+            raise ValueError(f"{n} particles exceed the device capacity {self.cap}")
+        self.n = n
+        put = self._put
+        put(self.a["P"], ps.pos.T)
+        put(self.a["V"], ps.vel.T)
+        put(self.a["rho"], ps.rho)
+        put(self.a["mass"], ps.mass)
+        put(self.a["kind"], ps.kind)
+        put(self.a["group"], ps.group)
+        put(self.a["ids"], ps.ids)
+        for k in self.saved:
+            if k in aux:
+                v = aux[k]
+                put(self.a["aux_" + k], v.T if v.ndim == 2 else v)
+        if rates is not None:
+            for name, dev in (("drho", self.drho), ("cs", self.cs), ("acc", self.acc), ("xsph", self.xs)):
+                v = rates.get(name)
+                if v is not None and dev.size:
+                    put(dev, v.T if v.ndim == 2 else v)
+            if rates.get("start") is not None:
+                self.start.copy_to_device(rates["start"].astype(np.int32))
+        self._slots()
+
+    def _put(self, dev, host: np.ndarray) -> None:
+        """Copy ``host`` (..., n) into the first n columns of ``dev`` (whole arrays move:
+        a strided device slice is not a valid copy target)."""
+        buf = np.zeros(dev.shape, dev.dtype)
+        buf[..., :host.shape[-1]] = host
+        dev.copy_to_device(buf)
+
+    def pull(self, ps, rho0: float, c0: float, gamma: float):
+        """Download the state into ``ps`` (arrays replaced, current order, ``n``
+        particles; ``p`` from the equation of state as the CPU pack computes it). Returns
+        (aux dict, rates dict)."""
+        n = self.n
+        host = lambda d: d.copy_to_host()[..., :n]  # noqa: E731
+        ps.pos = np.ascontiguousarray(host(self.a["P"]).T)
+        ps.vel = np.ascontiguousarray(host(self.a["V"]).T)
+        ps.rho = host(self.a["rho"])
+        ps.mass = host(self.a["mass"])
+        ps.kind = host(self.a["kind"])
+        ps.group = host(self.a["group"])
+        ps.ids = host(self.a["ids"]).astype(np.int64)
+        ps.p = np.empty(n)
+        cs = np.empty(n)
+        equation_of_state(ps.rho, rho0, c0, gamma, ps.p, cs)
+        aux = {}
+        for k in self.saved:
+            v = host(self.a["aux_" + k])
+            aux[k] = np.ascontiguousarray(v.T) if v.ndim == 2 else v
+        rates = {"drho": host(self.drho), "acc": np.ascontiguousarray(host(self.acc).T), "cs": host(self.cs),
+                 "xsph": np.ascontiguousarray(host(self.xs).T) if self.xsph else None,
+                 "start": self.start.copy_to_host().astype(np.int64)}
+        return aux, rates
+
+    # ------------------------------------------------------------------ the cell list
+    def bin(self) -> int:
+        """Bin and order the particles (perm, start); returns how many lie outside the
+        domain (sorted to the end; :meth:`gather` drops them)."""
+        n, g = self.n, self.grid
+        nx, ny, nz = g.shape
+        m = self.ncells + 2
+        K.k_zero_i4[K.launch(m)](self.start, m)
+        K.k_bin[K.launch(n)](self.a["P"], n, self.lo, 1.0 / g.cell, nx, ny, nz, self.cell, self.start)
+        K.k_scan_chunks[K.launch(self.nchunks)](self.start, m, self.sums)
+        K.k_scan_sums[1, 1](self.sums, self.nchunks)
+        K.k_scan_add[K.launch(m)](self.start, m, self.sums, self.fill)
+        K.k_fill[K.launch(n)](self.cell, n, self.fill, self.perm)
+        K.k_order[K.launch(self.ncells + 1)](self.perm, self.start, self.a["P"], self.ncells)
+        K.k_read_i4[1, 1](self.start, self.ncells, self.flag)
+        inside = int(self.flag.copy_to_host()[0])
+        return n - inside
+
+    def outside_rows(self, outside: int) -> np.ndarray:
+        """Rows (before the gather) of the particles that left the domain, in row order."""
+        return self.perm.copy_to_host()[self.n - outside:self.n].astype(np.int64)
+
+    def rows(self, name: str, rows: np.ndarray) -> np.ndarray:
+        """Host copy of device array ``name`` at ``rows`` (a few particles)."""
+        return self.a[name].copy_to_host()[..., rows]
+
+    def gather(self, keep: int) -> None:
+        """Apply the permutation to every particle array (the first ``keep`` rows: the
+        particles inside the domain) and refresh the id map."""
+        for name, arr in list(self.a.items()):
+            kind = "f2" if arr.ndim == 2 else {np.dtype(np.float64): "f1", np.dtype(np.int32): "i4",
+                                                np.dtype(np.int8): "i1"}[arr.dtype]
+            dst = self.scratch[kind]
+            if arr.ndim == 2:
+                K.k_gather2[K.launch(keep)](arr, dst, self.perm, keep)
+            else:
+                K.k_gather1[K.launch(keep)](arr, dst, self.perm, keep)
+            self.a[name], self.scratch[kind] = dst, arr
+        self.n = keep
+        self._slots()
+
+    def _slots(self) -> None:
+        K.k_slots[K.launch(self.n)](self.a["ids"], self.n, self.slot)
+
+    def place(self, ids: np.ndarray, pos: np.ndarray, vel: np.ndarray) -> None:
+        """Set positions and velocities (m, dim) of the particles ``ids`` (present ones)."""
+        if len(ids) == 0:
+            return
+        K.k_place[K.launch(len(ids))](self.slot, cuda.to_device(np.ascontiguousarray(ids, np.int32)),
+                                             cuda.to_device(np.ascontiguousarray(pos, np.float64)),
+                                             cuda.to_device(np.ascontiguousarray(vel, np.float64)),
+                                             self.a["P"], self.a["V"])
+
+    # ------------------------------------------------------------------ rates and step
+    def rates(self, key: tuple, prm_dev, rho0: float, c0: float, gamma: float) -> None:
+        """Equation of state and the pair loop (fluid.equations.evaluate)."""
+        n, g = self.n, self.grid
+        nx, ny, nz = g.shape
+        K.k_pack[K.launch(n)](self.a["rho"], n, rho0, c0, gamma, self.cs, self.pr2)
+        loop = K.make_pair_loop(*key)
+        loop[K.launch(n)](self.a["P"], self.a["V"], self.a["rho"], self.a["mass"], self.a["kind"], self.cs,
+                                 self.pr2, n, self.start, self.lo3, g.cell, nx, ny, nz, prm_dev, self.drho,
+                                 self.visc, self.acc, self.xs)
+
+    def max_bounds(self):
+        """(max |a|^2 over fluid, max (c + visc), max c): fluid.integrator._bounds."""
+        K.k_zero_f8[K.launch(3)](self.bounds, 3)
+        K.k_bounds[K.launch(self.n)](self.acc, self.visc, self.cs, self.a["kind"], self.n, self.bounds)
+        return self.bounds.copy_to_host()
+
+    def predictor(self, dt: float, rho0: float) -> None:
+        a, n = self.a, self.n
+        K.k_predictor[K.launch(n)](a["P"], a["V"], a["rho"], self.drho, self.acc, a["kind"], n, rho0, dt,
+                                          a["aux_pos"], a["aux_vel"], a["aux_rho"], self.xs, self.xsph)
+
+    def corrector(self, dt: float, rho0: float) -> None:
+        a, n = self.a, self.n
+        K.k_corrector[K.launch(n)](a["P"], a["V"], a["rho"], self.drho, self.acc, a["kind"], n, rho0, dt,
+                                          a["aux_pos"], a["aux_vel"], a["aux_rho"], self.xs, self.xsph)
+
+    def verlet(self, dt: float, rho0: float, euler: bool) -> None:
+        a, n = self.a, self.n
+        K.k_verlet[K.launch(n)](a["P"], a["V"], a["rho"], self.drho, self.acc, a["kind"], n, rho0, dt,
+                                       a["aux_vel"], a["aux_rho"], euler, self.xs, self.xsph)
+
+    def damp(self, factor: float) -> None:
+        a, n = self.a, self.n
+        K.k_damp[K.launch(n)](a["V"], a.get("aux_vel", self.zero_aux), a["kind"], n, factor)
+
+    def first_non_finite(self) -> int:
+        """Lowest row with a non-finite position, velocity or density; -1 if none."""
+        n = self.n
+        self.flag.copy_to_device(np.array([n], np.int64))
+        K.k_first_non_finite[K.launch(n)](self.a["P"], self.a["V"], self.a["rho"], n, self.flag)
+        i = int(self.flag.copy_to_host()[0])
+        return -1 if i >= n else i
+
+    def group_sums(self, centre: np.ndarray, n_groups: int):
+        """Force (G, dim) and moment (G, 1 or 3) on each boundary group: fluid.solver._sum_groups."""
+        F = cuda.to_device(np.zeros((n_groups, self.dim)))
+        M = cuda.to_device(np.zeros((n_groups, 3 if self.dim == 3 else 1)))
+        if n_groups:
+            K.k_group_sums[K.launch(self.n)](self.a["P"], self.a["mass"], self.acc, self.a["group"], self.n,
+                                                    cuda.to_device(np.ascontiguousarray(centre, np.float64)), F, M)
+        return F.copy_to_host(), M.copy_to_host()

@@ -1,0 +1,183 @@
+"""Run by tests/test_fluid_cuda.py in a process of its own with NUMBA_ENABLE_CUDASIM=1 (the
+flag must be set before numba.cuda is first imported, and must not reach the other tests):
+steps small cases on the CPU path and on the GPU path (numba's CUDA simulator) side by side
+and saves what the tests compare into an .npz file.
+
+``python tests/cuda_sim_worker.py OUT.npz``. First, with numba.cuda made unimportable, it
+runs the CPU path and records the error ``FluidConfig(device="cuda")`` gives (the project
+without numba-cuda).
+"""
+
+from __future__ import annotations
+
+import sys
+
+sys.modules["numba.cuda"] = None  # numba-cuda "absent" for the first check
+
+import numpy as np  # noqa: E402
+
+from cosim.errors import InputError, InstabilityError  # noqa: E402
+from fluid.geometry import assemble, block, tank_walls  # noqa: E402
+from fluid.particles import Kind  # noqa: E402
+from fluid.solver import Fluid, FluidConfig  # noqa: E402
+
+OUT = {}
+
+
+def absent_check() -> None:
+    """The CPU path without numba.cuda, and the refusal of device='cuda'."""
+    ps = dam_2d()
+    f = Fluid(FluidConfig(dim=2, dx=0.01, c0=20.0), ps)
+    f.initialize(0.0)
+    f.step(f.max_dt())
+    OUT["absent_cpu_steps"] = np.array(f.counters.steps)
+    try:
+        FluidConfig(dim=2, dx=0.01, c0=20.0, device="cuda")
+        OUT["absent_error"] = np.array("")
+    except InputError as e:
+        OUT["absent_error"] = np.array(str(e))
+
+
+def disturbed(ps, dx: float, seed: int):
+    """Fluid particles moved by up to 0.05 dx, given velocities of 0.1 m/s and densities
+    within 0.5 % of rho0 (every pair term then acts: viscosity, XSPH, diffusion)."""
+    rng = np.random.default_rng(seed)
+    fl = ps.kind == Kind.FLUID
+    ps.pos[fl] += rng.uniform(-0.05, 0.05, (fl.sum(), ps.dim)) * dx
+    ps.vel[fl] = rng.uniform(-0.1, 0.1, (fl.sum(), ps.dim))
+    ps.rho[fl] *= 1.0 + rng.uniform(-0.005, 0.005, fl.sum())
+    return ps
+
+
+#: the id of dam_2d's particle above the water (sent out of the domain in the dam2d case)
+FLYER = 50
+
+
+def dam_2d():
+    """A 2-D dam break: a 0.05 x 0.1 m column in a 0.2 m tank, dx 0.01 m (219 particles,
+    51 fluid), and one fluid particle above the water, id :data:`FLYER`."""
+    dx = 0.01
+    walls = tank_walls(np.zeros(2), np.array([0.2, 0.15]), dx, 3)
+    fl = np.vstack([block(np.zeros(2), np.array([0.05, 0.1]), dx), [[0.15, 0.1445]]])
+    return assemble(2, dx, 1000.0, fl, [(walls, Kind.FIXED_WALL, 0)]).particles
+
+
+def body_2d():
+    """Water 0.06 m deep in a 0.2 m tank and a 0.04 x 0.03 m body (BODY group 1) across
+    its surface, dx 0.01 m."""
+    dx = 0.01
+    walls = tank_walls(np.zeros(2), np.array([0.2, 0.12]), dx, 3)
+    body = block(np.array([0.08, 0.045]), np.array([0.12, 0.075]), dx)
+    fl = block(np.zeros(2), np.array([0.2, 0.06]), dx)
+    return assemble(2, dx, 1000.0, fl, [(walls, Kind.FIXED_WALL, 0), (body, Kind.BODY, 1)]).particles
+
+
+def column_3d():
+    """A 3-D water column 0.06 x 0.04 x 0.08 m on a floor of two layers with one side wall,
+    dx 0.02 m."""
+    dx = 0.02
+    floor = block(np.array([-0.04, -0.04, -0.04]), np.array([0.12, 0.08, 0.0]), dx)
+    side = block(np.array([-0.04, -0.04, 0.0]), np.array([0.0, 0.08, 0.06]), dx)
+    fl = block(np.zeros(3), np.array([0.06, 0.04, 0.08]), dx)
+    return assemble(3, dx, 1000.0, fl, [(np.vstack([floor, side]), Kind.FIXED_WALL, 0)]).particles
+
+
+def by_id(f, a):
+    """``a`` (rows in f.ps's current order) in particle-id order."""
+    return np.asarray(a)[np.argsort(f.ps.ids)]
+
+
+def record(tag, cpu, gpu, pos0_cpu, pos0_gpu, loads=None):
+    for name, f, pos0 in (("cpu", cpu, pos0_cpu), ("gpu", gpu, pos0_gpu)):
+        ps = f.ps
+        order = np.argsort(ps.ids)
+        OUT[f"{tag}.{name}.ids"] = ps.ids[order]
+        OUT[f"{tag}.{name}.rows"] = ps.ids  # the rows' order: the sort's
+        OUT[f"{tag}.{name}.disp"] = ps.pos[order] - pos0[ps.ids[order]]
+        OUT[f"{tag}.{name}.vel"] = ps.vel[order]
+        OUT[f"{tag}.{name}.rho"] = ps.rho[order]
+        OUT[f"{tag}.{name}.acc"] = f._acc[order]
+        OUT[f"{tag}.{name}.drho"] = f._drho[order]
+        OUT[f"{tag}.{name}.dt"] = np.array(f.max_dt())
+        OUT[f"{tag}.{name}.limiter"] = np.array(f.limit.limiter)
+        OUT[f"{tag}.{name}.removed"] = np.array([f.counters.removed[k.name] for k in Kind])
+        F, M = f.group_forces_now()
+        OUT[f"{tag}.{name}.F"] = F
+        OUT[f"{tag}.{name}.M"] = M
+        OUT[f"{tag}.{name}.bforce"] = f.boundary_forces_now()[order]
+    if loads is not None:
+        for name, (F, M) in zip(("cpu", "gpu"), loads):
+            OUT[f"{tag}.cpu_step_F" if name == "cpu" else f"{tag}.gpu_step_F"] = F
+            OUT[f"{tag}.cpu_step_M" if name == "cpu" else f"{tag}.gpu_step_M"] = M
+
+
+def run_case(tag: str, ps, config: dict, steps: int = 10, body=None):
+    """Initialise the case on both paths (the first pair loop), step once, then to
+    ``steps``; with ``body = (group, velocity)`` the body's particles are placed before
+    every step (positions at the step's time, as the coupler places them)."""
+    cpu = Fluid(FluidConfig(**config), ps)
+    gpu = Fluid(FluidConfig(device="cuda", **config), ps)
+    OUT[f"{tag}.gpu_class"] = np.array(type(gpu).__name__)
+    pos0 = ps.pos[np.argsort(ps.ids)].copy()
+    ids_b = ref_b = None
+    if body is not None:
+        sel = ps.group == body[0]
+        ids_b, ref_b = ps.ids[sel], ps.pos[sel].copy()
+    for f in (cpu, gpu):
+        f.initialize(0.0)
+    OUT[f"{tag}.bytes_per_particle"] = np.array(gpu.device_memory["bytes_per_particle"])
+    record(f"{tag}.loop", cpu, gpu, pos0, pos0)
+    t = 0.0
+    for k in range(steps):
+        dt = cpu.max_dt()
+        OUT[f"{tag}.gpu_dt_{k}"] = np.array(gpu.max_dt())
+        OUT[f"{tag}.cpu_dt_{k}"] = np.array(dt)
+        if body is not None:
+            v = np.broadcast_to(np.asarray(body[1], float), ref_b.shape)
+            for f in (cpu, gpu):
+                f.set_particle_motion(ids_b, ref_b + v * t, v)
+        loads = [f.step(dt) for f in (cpu, gpu)]
+        t += dt
+        if k == 0:
+            record(f"{tag}.step1", cpu, gpu, pos0, pos0, loads)
+    record(f"{tag}.step{steps}", cpu, gpu, pos0, pos0, loads)
+
+
+def nan_guard():
+    """A NaN velocity put into one fluid particle: both paths stop with their message."""
+    msgs = []
+    for device in ("cpu", "cuda"):
+        f = Fluid(FluidConfig(dim=2, dx=0.01, c0=20.0, device=device), dam_2d())
+        f.initialize(0.0)
+        ps = f.ps
+        i = int(np.flatnonzero(ps.ids == 40)[0])
+        ps.vel[i, 0] = np.nan
+        try:
+            f.step(f.max_dt())
+            msgs.append("")
+        except InstabilityError as e:
+            msgs.append(str(e))
+    OUT["nan.cpu"], OUT["nan.gpu"] = np.array(msgs[0]), np.array(msgs[1])
+
+
+def main(out: str) -> None:
+    absent_check()
+    del sys.modules["numba.cuda"]
+    from numba import cuda  # noqa: F401  (the simulator: NUMBA_ENABLE_CUDASIM=1 in the environment)
+
+    from fluid.cuda import simulator
+    OUT["simulator"] = np.array(simulator())
+    dam = disturbed(dam_2d(), 0.01, 1)
+    dam.vel[dam.ids == FLYER] = (0.0, 3.0)
+    run_case("dam2d", dam,
+             dict(dim=2, dx=0.01, c0=20.0, nu=1e-3, xsph_eps=0.1, domain_lo=(-0.05, -0.05), domain_hi=(0.25, 0.146)))
+    run_case("body2d", disturbed(body_2d(), 0.01, 2),
+             dict(dim=2, dx=0.01, c0=20.0, kernel="cubic", diffusion="molteni", alpha=0.05, alpha_wall=0.3,
+                  diffusion_at_surface=False, integrator="verlet", verlet_reset=4), body=(1, (0.1, -0.05)))
+    run_case("col3d", disturbed(column_3d(), 0.02, 3), dict(dim=3, dx=0.02, c0=20.0, xsph_eps=0.1))
+    nan_guard()
+    np.savez(out, **OUT)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1])

@@ -1,0 +1,152 @@
+"""The GPU path (fluid.cuda) against the CPU path, on numba's CUDA simulator.
+
+The cases run in a process of their own (tests/cuda_sim_worker.py) with
+NUMBA_ENABLE_CUDASIM=1, which must be set before numba.cuda is first imported and must not
+reach the other tests; the simulator runs each kernel in Python, so the cases are tiny
+(156-274 particles; about 30 s of CPU for all of them). Skipped, with the reason, where
+numba-cuda is not installed.
+
+Tolerance: every compared field (accelerations, density rates, displacements, velocities,
+densities, group forces and moments, per-particle boundary forces) agrees within
+``RTOL = 1e-10`` of the field's largest magnitude over the particles. Why not bit for bit:
+the CPU pair loop sums a particle's neighbour terms in vector lanes (fastmath lets LLVM
+reassociate), the GPU's in sequence, and the group loads are summed with atomics in any
+order. Why 1e-10: a pair sum holds up to ~100 terms, each up to ~100 times the result where
+pressure terms cancel (hydrostatic columns), so reordering moves it by ~100 x 100 x 1.1e-16
+~ 1e-12 of its scale per evaluation, and ten steps accumulate ten of those; a wrong or
+missing term (viscosity, XSPH, diffusion, the fade) moves a field by 1e-6 of its scale or
+more. Measured (2026-11-25): at most 1.4e-13 over all fields and steps.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from cosim.errors import InputError
+from fluid.solver import FluidConfig
+
+HAVE_NUMBA_CUDA = importlib.util.find_spec("numba_cuda") is not None
+requires_numba_cuda = pytest.mark.skipif(not HAVE_NUMBA_CUDA,
+                                         reason="numba-cuda is not installed (pip install -e '.[gpu]')")
+
+WORKER = Path(__file__).with_name("cuda_sim_worker.py")
+RTOL = 1e-10
+CASES = ("dam2d", "body2d", "col3d")
+STAGES = ("loop", "step1", "step10")
+FIELDS = ("acc", "drho", "disp", "vel", "rho", "F", "M", "bforce")
+
+
+@pytest.fixture(scope="module")
+def sim(tmp_path_factory):
+    out = tmp_path_factory.mktemp("cuda") / "sim.npz"
+    env = dict(os.environ, NUMBA_ENABLE_CUDASIM="1")
+    r = subprocess.run([sys.executable, str(WORKER), str(out)], env=env, capture_output=True, text=True,
+                       timeout=900)
+    assert r.returncode == 0, r.stderr[-4000:]
+    return dict(np.load(out))
+
+
+def _close(d, key_a, key_b):
+    a, b = d[key_a], d[key_b]
+    assert a.shape == b.shape, (key_a, a.shape, b.shape)
+    scale = np.abs(a).max()
+    return np.abs(a - b).max() <= RTOL * scale, f"{key_a}: {np.abs(a - b).max():.3g} against scale {scale:.3g}"
+
+
+@requires_numba_cuda
+@pytest.mark.parametrize("case", CASES)
+@pytest.mark.parametrize("stage", STAGES)
+def test_gpu_matches_cpu_to_round_off(sim, case, stage):
+    """The first pair loop (rates of the disturbed initial state), one step and ten steps:
+    the same particles in the same rows (the sort mirrors the CPU's), every field within
+    RTOL of its scale, the same stable step (1e-12) and limiter, the same removals."""
+    assert str(sim[f"{case}.gpu_class"]) == "CudaFluid"
+    p = f"{case}.{stage}"
+    assert np.array_equal(sim[f"{p}.cpu.rows"], sim[f"{p}.gpu.rows"]), "the sort's order differs"
+    for field in FIELDS:
+        ok, msg = _close(sim, f"{p}.cpu.{field}", f"{p}.gpu.{field}")
+        assert ok, msg
+    assert abs(sim[f"{p}.cpu.dt"] - sim[f"{p}.gpu.dt"]) <= 1e-12 * sim[f"{p}.cpu.dt"]
+    assert str(sim[f"{p}.cpu.limiter"]) == str(sim[f"{p}.gpu.limiter"])
+    assert np.array_equal(sim[f"{p}.cpu.removed"], sim[f"{p}.gpu.removed"])
+
+
+@requires_numba_cuda
+@pytest.mark.parametrize("case", CASES)
+def test_loads_that_moved_the_fluid_match(sim, case):
+    """What ``step`` returns (the group loads at the half step, or at the start with
+    Verlet) after the first and the tenth step; the body case moves its body by
+    set_particle_motion before every step."""
+    for stage in ("step1", "step10"):
+        for q in ("F", "M"):
+            ok, msg = _close(sim, f"{case}.{stage}.cpu_step_{q}", f"{case}.{stage}.gpu_step_{q}")
+            assert ok, msg
+    assert np.abs(sim[f"{case}.step10.cpu_step_F"]).max() > 0.0
+
+
+@requires_numba_cuda
+def test_the_cases_exercise_what_they_claim(sim):
+    """The simulator ran; the fluid moved; the flying particle left the domain on both
+    paths (removal); the body case's body carries a load."""
+    assert bool(sim["simulator"])
+    assert sim["dam2d.step10.gpu.removed"][0] == 1 and sim["dam2d.step10.gpu.removed"].sum() == 1
+    for case in CASES:
+        assert np.abs(sim[f"{case}.step10.gpu.disp"]).max() > 1e-5  # [m]
+    assert np.abs(sim["body2d.step10.gpu.F"][1]).max() > 0.1  # [N] on the body (group 1)
+
+
+@requires_numba_cuda
+def test_nan_guard_stops_with_the_cpu_message(sim):
+    msg = str(sim["nan.gpu"])
+    assert msg and msg == str(sim["nan.cpu"])
+    assert "non-finite state" in msg and "particle id 40" in msg
+
+
+def _table(dim: int, saved: tuple, xsph: bool) -> int:
+    """Bytes per particle of the device state's arrays, as fluid.cuda.state allocates them
+    (and benchmarks/fluid_throughput.py's docstring lists them)."""
+    vec, f8 = 8 * dim, 8
+    state = 2 * vec + 2 * f8 + 1 + 4 + 4  # positions, velocities, density, mass, kind, group, id
+    saved_b = sum(vec if k in ("pos", "vel") else f8 for k in saved)
+    scratch = vec + f8 + 4 + 1  # the sort's gather buffers
+    rates = 4 * f8 + vec + (vec if xsph else 0)  # drho, visc, sound speed, p/rho^2, acceleration, XSPH
+    sort = 4 + 4 + 4  # cell, permutation, the id map (ids run 0..N-1 in these cases)
+    return state + saved_b + scratch + rates + sort
+
+
+@requires_numba_cuda
+def test_device_memory_per_particle(sim):
+    """Bytes per particle the device state allocated, against the table of its arrays: 2-D
+    symplectic with XSPH 202 B, 2-D Verlet 170 B, 3-D symplectic with XSPH 258 B."""
+    assert sim["dam2d.bytes_per_particle"] == _table(2, ("pos", "vel", "rho"), True) == 202
+    assert sim["body2d.bytes_per_particle"] == _table(2, ("vel", "rho"), False) == 170
+    assert sim["col3d.bytes_per_particle"] == _table(3, ("pos", "vel", "rho"), True) == 258
+    assert _table(3, ("pos", "vel", "rho"), False) == 234 <= 250
+
+
+@requires_numba_cuda
+def test_cpu_runs_and_cuda_is_refused_without_numba_cuda(sim):
+    """In the worker, before numba.cuda could be imported: a CPU step ran, and
+    device='cuda' was refused saying what to install and how to use the simulator."""
+    assert int(sim["absent_cpu_steps"]) == 1
+    msg = str(sim["absent_error"])
+    assert "numba-cuda is not installed" in msg and "pip install numba-cuda" in msg
+    assert "NUMBA_ENABLE_CUDASIM=1" in msg and "device='cpu'" in msg
+
+
+def test_device_is_validated_with_a_clear_error():
+    with pytest.raises(InputError, match="device='gpu'.*'cpu'.*'cuda'"):
+        FluidConfig(c0=20.0, device="gpu")
+    with pytest.raises(InputError, match="antuono.*device='cuda'"):
+        FluidConfig(c0=20.0, device="cuda", diffusion="antuono")
+    with pytest.raises(InputError, match="walls='adami'.*device='cuda'"):
+        FluidConfig(c0=20.0, device="cuda", walls="adami")
+    with pytest.raises(InputError, match="mls_every"):
+        FluidConfig(c0=20.0, device="cuda", mls_every=30)
