@@ -63,13 +63,22 @@ def dam_2d():
 
 
 def body_2d():
-    """Water 0.06 m deep in a 0.2 m tank and a 0.04 x 0.03 m body (BODY group 1) across
-    its surface, dx 0.01 m."""
+    """Water 0.06 m deep in a 0.2 m tank (MOVING_WALL group 0) and a 0.04 x 0.03 m body
+    (BODY group 1) across its surface, dx 0.01 m."""
     dx = 0.01
     walls = tank_walls(np.zeros(2), np.array([0.2, 0.12]), dx, 3)
     body = block(np.array([0.08, 0.045]), np.array([0.12, 0.075]), dx)
     fl = block(np.zeros(2), np.array([0.2, 0.06]), dx)
-    return assemble(2, dx, 1000.0, fl, [(walls, Kind.FIXED_WALL, 0), (body, Kind.BODY, 1)]).particles
+    return assemble(2, dx, 1000.0, fl, [(walls, Kind.MOVING_WALL, 0), (body, Kind.BODY, 1)]).particles
+
+
+def sway(t, ref):
+    """The tank's prescribed motion: 2 mm at 5 Hz along x (2 m/s^2 at most)."""
+    w = 2.0 * np.pi * 5.0
+    pos, vel = ref.copy(), np.zeros_like(ref)
+    pos[:, 0] += 0.002 * np.sin(w * t)
+    vel[:, 0] = 0.002 * w * np.cos(w * t)
+    return pos, vel
 
 
 def column_3d():
@@ -111,12 +120,16 @@ def record(tag, cpu, gpu, pos0_cpu, pos0_gpu, loads=None):
             OUT[f"{tag}.cpu_step_M" if name == "cpu" else f"{tag}.gpu_step_M"] = M
 
 
-def run_case(tag: str, ps, config: dict, steps: int = 10, body=None):
+def run_case(tag: str, ps, config: dict, steps: int = 10, body=None, motion=None):
     """Initialise the case on both paths (the first pair loop), step once, then to
     ``steps``; with ``body = (group, velocity)`` the body's particles are placed before
-    every step (positions at the step's time, as the coupler places them)."""
+    every step (positions at the step's time, as the coupler places them); ``motion =
+    (group, motion)`` a prescribed wall motion."""
     cpu = Fluid(FluidConfig(**config), ps)
     gpu = Fluid(FluidConfig(device="cuda", **config), ps)
+    if motion is not None:
+        for f in (cpu, gpu):
+            f.prescribe_motion(*motion)
     OUT[f"{tag}.gpu_class"] = np.array(type(gpu).__name__)
     pos0 = ps.pos[np.argsort(ps.ids)].copy()
     ids_b = ref_b = None
@@ -173,7 +186,8 @@ def main(out: str) -> None:
              dict(dim=2, dx=0.01, c0=20.0, nu=1e-3, xsph_eps=0.1, domain_lo=(-0.05, -0.05), domain_hi=(0.25, 0.146)))
     run_case("body2d", disturbed(body_2d(), 0.01, 2),
              dict(dim=2, dx=0.01, c0=20.0, kernel="cubic", diffusion="molteni", alpha=0.05, alpha_wall=0.3,
-                  diffusion_at_surface=False, integrator="verlet", verlet_reset=4), body=(1, (0.1, -0.05)))
+                  diffusion_at_surface=False, integrator="verlet", verlet_reset=4, walls="adami"),
+             body=(1, (0.1, -0.05)), motion=(0, sway))
     run_case("col3d", disturbed(column_3d(), 0.02, 3), dict(dim=3, dx=0.02, c0=20.0, xsph_eps=0.1))
     nan_guard()
     np.savez(out, **OUT)

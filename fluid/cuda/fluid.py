@@ -27,6 +27,7 @@ from cosim.errors import InputError, InstabilityError
 from fluid.cuda.state import DeviceState
 from fluid.integrator import step_limit
 from fluid.particles import Kind
+from fluid.wall_density import AdamiWalls
 from fluid.solver import Fluid
 
 log = logging.getLogger(__name__)
@@ -168,17 +169,39 @@ class CudaFluid(Fluid):
         dev.gather(n)
 
     def _rates(self):
-        if self.boundary_correction is not None:
-            raise InputError("fluid: device='cuda' does not run boundary-correction hooks (the bodies' mDBC, "
-                             f"{type(self.boundary_correction).__name__}); give the bodies plain dynamic boundaries "
-                             "(SPHFluid(boundary='dbc'), a scene's fluid.body_boundary = \"dbc\") or device='cpu'")
         c = self.config
         dev = self._to_device()
+        bc = self.boundary_correction
+        if bc is not None:
+            if not isinstance(bc, AdamiWalls):
+                raise InputError("fluid: device='cuda' runs no boundary-correction hook but the tank walls' "
+                                 f"walls='adami' (got {type(bc).__name__}: the bodies' mDBC?); give the bodies plain "
+                                 "dynamic boundaries (SPHFluid(boundary='dbc'), a scene's fluid.body_boundary = "
+                                 "\"dbc\") or device='cpu'")
+            has = self._wall_accelerations(dev)
+            dev.adami(has, bc.kernel, bc.ad, c.h, c.rho0, bc.B, c.gamma, bc.g, int(Kind.FIXED_WALL),
+                      int(Kind.MOVING_WALL), bc.p_floor)
         dev.rates(self._key, self._prm_dev, c.rho0, c.speed_of_sound, c.gamma)
         amax2, cvmax, cmax = dev.max_bounds()
         self._limit = step_limit(amax2, c.h / cvmax if cvmax > 0.0 else math.inf, cmax, c.h, c.cfl, c.dt_max, c.nu,
                                  **self._diffusivity)
         self._stale = False
+
+    def _wall_accelerations(self, dev, eps: float = 1e-6) -> bool:
+        """The prescribed groups' accelerations onto the device, as
+        Fluid.prescribed_acceleration takes them (central difference over +-eps [s] about
+        the time they were last placed); False when there are none."""
+        if not self._motions or math.isnan(self._t_placed):
+            return False
+        t, ids_all, acc_all = self._t_placed, [], []
+        for group, (motion, ids, ref) in self._motions.items():
+            keep = self._alive[ids]
+            v1 = np.asarray(motion(t + eps, ref)[1])[keep]
+            v0 = np.asarray(motion(t - eps, ref)[1])[keep]
+            ids_all.append(ids[keep])
+            acc_all.append((v1 - v0) / (2.0 * eps))
+        dev.wall_accelerations(np.concatenate(ids_all), np.concatenate(acc_all))
+        return True
 
     def _check_finite(self):
         i = self._to_device().first_non_finite()

@@ -18,7 +18,7 @@ order, so that the two paths agree to round-off in float64:
   the same non-zero terms in the same order; the CPU loop sums them in vector lanes, so
   the two differ by round-off only.
 * :func:`k_predictor`, :func:`k_corrector`, :func:`k_verlet` are those of
-  ``fluid.integrator``; :func:`k_bounds` its ``_bounds``; :func:`k_first_non_finite`
+  ``fluid.integrator``; :func:`d_block_max3` (in the pair loop) its ``_bounds``; :func:`k_first_non_finite`
   its ``first_non_finite`` (the lowest row, as the CPU's serial scan finds).
 
 Particle arrays are structures of arrays: positions, velocities (and accelerations) as
@@ -256,8 +256,9 @@ _PAIR_LOOPS = {}
 def make_pair_loop(kernel: int, three: bool, laminar: bool, xsph: bool, wall_visc: bool, fade: bool):
     """The pair loop compiled for one kernel, dimension and choice of optional terms (the
     closure's constants fold away, as in fluid.equations._make_interact). Writes, for
-    every particle a < n: ``drho[a]``, ``visc[a]``, ``acc[:, a]`` and, with XSPH,
-    ``xs[:, a]`` (fluid.equations.interact)."""
+    every particle a < n: ``drho[a]``, ``acc[:, a]`` and, with XSPH, ``xs[:, a]``
+    (fluid.equations.interact), and the time step's three bounds into ``bounds``
+    (:func:`d_block_max3`; the viscous term of Eq. 14 is used there and not stored)."""
     key = (kernel, three, laminar, xsph, wall_visc, fade)
     if key in _PAIR_LOOPS:
         return _PAIR_LOOPS[key]
@@ -267,7 +268,13 @@ def make_pair_loop(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
     zc = 2 if three else 1
 
     @cuda.jit
-    def pair_loop(P, V, rho, mass, kind, cs, pr2, n, start, lo, cell, nx, ny, nz, prm, drho, visc, acc, xs):
+    def pair_loop(P, V, rho, mass, kind, cs, pr2, n, start, lo, cell, nx, ny, nz, prm, drho, acc, xs, bounds):
+        sh_a = cuda.shared.array(TPB, np.float64)
+        sh_v = cuda.shared.array(TPB, np.float64)
+        sh_c = cuda.shared.array(TPB, np.float64)
+        am = 0.0
+        cvm = 0.0
+        cm = 0.0
         for a in range(cuda.grid(1), n, cuda.gridsize(1)):
             h = prm[P_H]
             ad = prm[P_AD]
@@ -402,7 +409,7 @@ def make_pair_loop(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
                 drho[a] = Fc * (sd - ddt * fa * min(max((s1 - sa) / (s1 - s0), 0.0), 1.0) * sdd)
             else:
                 drho[a] = Fc * (sd - ddt * fa * sdd)
-            visc[a] = h * math.sqrt(math.sqrt(math.sqrt(vmax)))
+            visc = h * math.sqrt(math.sqrt(math.sqrt(vmax)))
             if laminar:
                 sx += nu4 * lx
                 sy += nu4 * ly
@@ -420,6 +427,15 @@ def make_pair_loop(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
                     xs[2, a] = eps2 * fa * wz
                 else:
                     xs[1, a] = eps2 * fa * wz
+            # the time step's bounds (fluid.integrator._bounds), folded in: no array for
+            # the viscous term, no second pass
+            a2 = 0.0
+            for k in range(acc.shape[0]):
+                a2 += acc[k, a] * acc[k, a]
+            am = max(am, a2 if fa > 0.0 else 0.0)
+            cvm = max(cvm, ca + visc)
+            cm = max(cm, ca)
+        d_block_max3(sh_a, sh_v, sh_c, am, cvm, cm, bounds)
 
     _PAIR_LOOPS[key] = pair_loop
     return pair_loop
@@ -493,30 +509,18 @@ def k_damp(V, Vaux, kind, n, factor):
 
 
 # ------------------------------------------------------------------ reductions
-@cuda.jit
-def k_bounds(acc, visc, cs, kind, n, out):
-    """``fluid.integrator._bounds``: out[0] = max |a|^2 over fluid particles, out[1] =
-    max (c + visc), out[2] = max c (out zeroed by the caller). A block reduction in
-    shared memory, then one atomic per block."""
-    sa = cuda.shared.array(TPB, np.float64)
-    sv = cuda.shared.array(TPB, np.float64)
-    sc = cuda.shared.array(TPB, np.float64)
+@cuda.jit(device=True)
+def d_block_max3(sa, sv, sc, a, v, c, out):
+    """The block's largest ``a``, ``v``, ``c`` (one per thread; shared arrays of
+    :data:`TPB`) into ``out[0:3]`` by atomics, one per block (out zeroed before the
+    launch): the reductions of ``fluid.integrator._bounds``, max |a|^2 over fluid
+    particles, max (c + visc), max c."""
     t = cuda.threadIdx.x
-    am = 0.0
-    cv = 0.0
-    c = 0.0
-    for i in range(cuda.grid(1), n, cuda.gridsize(1)):
-        a2 = 0.0
-        for k in range(acc.shape[0]):
-            a2 += acc[k, i] * acc[k, i]
-        am = max(am, a2 if kind[i] == 0 else 0.0)
-        cv = max(cv, cs[i] + visc[i])
-        c = max(c, cs[i])
-    sa[t] = am
-    sv[t] = cv
+    sa[t] = a
+    sv[t] = v
     sc[t] = c
     cuda.syncthreads()
-    s = cuda.blockDim.x // 2  # a power of two (TPB, or SIM_TPB on the simulator)
+    s = cuda.blockDim.x // 2  # a power of two (TPB, or SIM_LAUNCH's on the simulator)
     while s > 0:
         if t < s:
             sa[t] = max(sa[t], sa[t + s])
@@ -581,7 +585,92 @@ def k_zero_f8(a, m):
 
 
 @cuda.jit
+def k_zero2(A, m):
+    """Zero the first m columns of A (rows, capacity)."""
+    for j in range(cuda.grid(1), m, cuda.gridsize(1)):
+        for d in range(A.shape[0]):
+            A[d, j] = 0.0
+
+
+@cuda.jit
 def k_read_i4(a, j, out):
     """``out[0] = a[j]`` (one entry back to the host without a slice)."""
     if cuda.grid(1) == 0:
         out[0] = a[j]
+
+
+# ------------------------------------------------------------------ tank-wall densities (fluid.wall_density)
+@cuda.jit
+def k_adami(P, rho, kind, accw, has_acc, n, start, lo, inv_cell, nx, ny, nz, kernel, ad, h, rho0, B, gamma, g,
+            kmin, kmax, p_floor):
+    """``fluid.wall_density.adami_wall_density`` (Adami, Hu & Adams 2012, Eq. 27): the
+    density of every particle with ``kmin <= kind <= kmax`` from the pressure of the fluid
+    within 2h, carried to it with ``g - a_w`` (``accw`` (dim, capacity) [m/s^2], read if
+    ``has_acc``); whole rows of cells in the CPU's order. It writes wall densities and
+    reads fluid ones only."""
+    three = P.shape[0] == 3
+    zc = P.shape[0] - 1
+    R2 = 4.0 * h * h
+    ih = 1.0 / h
+    inv_gamma = 1.0 / gamma
+    seven = gamma == 7.0
+    for i in range(cuda.grid(1), n, cuda.gridsize(1)):
+        k = kind[i]
+        if k < kmin or k > kmax:
+            continue
+        xw = P[0, i]
+        yw = P[1, i] if three else 0.0
+        zw = P[zc, i]
+        bx = g[0]
+        by = g[1]
+        bz = g[2]
+        if has_acc:
+            bx -= accw[0, i]
+            if three:
+                by -= accw[1, i]
+            bz -= accw[zc, i]
+        sw = 0.0
+        sp = 0.0
+        cx = d_clamp_cell(xw, lo[0], inv_cell, nx)
+        cz = d_clamp_cell(zw, lo[2], inv_cell, nz)
+        cy = d_clamp_cell(yw, lo[1], inv_cell, ny) if three else 0
+        dys = 3 if three else 1
+        for dz in range(-1, 2):
+            for kk in range(dys):
+                dy = kk - 1 if three else 0
+                yy = cy + dy
+                zz = cz + dz
+                if yy < 0 or yy >= ny or zz < 0 or zz >= nz:
+                    continue
+                base = nx * (yy + ny * zz)
+                j0 = start[base + max(cx - 1, 0)]
+                j1 = start[base + min(cx + 1, nx - 1) + 1]
+                for j in range(j0, j1):
+                    if kind[j] != 0:
+                        continue
+                    rx = xw - P[0, j]
+                    ry = yw - P[1, j] if three else 0.0
+                    rz = zw - P[zc, j]
+                    r2 = rx * rx + ry * ry + rz * rz
+                    if r2 >= R2:
+                        continue
+                    w = d_w_value(kernel, math.sqrt(r2) * ih, ad)
+                    x = rho[j] / rho0
+                    if seven:
+                        x3 = x * x * x
+                        pj = B * (x3 * x3 * x - 1.0)
+                    else:
+                        pj = B * (x ** gamma - 1.0)
+                    sw += w
+                    sp += w * (pj + rho0 * (bx * rx + by * ry + bz * rz))
+        p = max(sp / sw, p_floor) if sw > 0.0 else 0.0
+        rho[i] = rho0 * (1.0 + p / B) ** inv_gamma
+
+
+@cuda.jit
+def k_place_one(slot, ids, vec, A):
+    """``A[:, row of ids[k]] = vec[k]`` (m, dim): a per-particle vector set by id."""
+    for k in range(cuda.grid(1), ids.shape[0], cuda.gridsize(1)):
+        i = slot[ids[k]]
+        for d in range(A.shape[0]):
+            A[d, i] = vec[k, d]

@@ -50,7 +50,7 @@ class DeviceState:
         for k in self.saved:
             self.a["aux_" + k] = f2() if k in ("pos", "vel") else f1()
         # rates
-        self.drho, self.visc, self.cs, self.pr2 = f1(), f1(), f1(), f1()
+        self.drho, self.cs, self.pr2 = f1(), f1(), f1()
         self.acc = f2()
         self.xsph = xsph
         self.xs = f2() if xsph else cuda.device_array((dim, 0), np.float64)
@@ -67,6 +67,8 @@ class DeviceState:
         self.bounds = cuda.device_array(3, np.float64)
         self.flag = cuda.device_array(1, np.int64)
         self.zero_aux = cuda.device_array((dim, 0), np.float64)
+        #: the walls' prescribed accelerations (Adami walls with moving walls only; made when first needed)
+        self.accw = None
 
     # ------------------------------------------------------------------ memory
     def device_bytes(self) -> dict:
@@ -74,9 +76,11 @@ class DeviceState:
         and the id map), ``per_cell`` (the cell offsets and the sort's cursors), ``fixed``."""
         part = {f"a.{k}": v.nbytes for k, v in self.a.items()}
         part.update({f"scratch.{k}": v.nbytes for k, v in self.scratch.items()})
-        for k in ("drho", "visc", "cs", "pr2", "acc", "xs", "cell", "perm", "slot"):
+        for k in ("drho", "cs", "pr2", "acc", "xs", "cell", "perm", "slot"):
             part[k] = getattr(self, k).nbytes
         cells = {k: getattr(self, k).nbytes for k in ("start", "fill", "sums")}
+        if self.accw is not None:
+            part["accw"] = self.accw.nbytes
         fixed = {k: getattr(self, k).nbytes for k in ("bounds", "flag", "lo3", "lo", "zero_aux")}
         return {"per_particle": part, "per_cell": cells, "fixed": fixed}
 
@@ -205,20 +209,40 @@ class DeviceState:
                                              self.a["P"], self.a["V"])
 
     # ------------------------------------------------------------------ rates and step
+    def wall_accelerations(self, ids: np.ndarray | None, acc: np.ndarray | None) -> None:
+        """The prescribed accelerations (m, dim) [m/s^2] of the particles ``ids``, zero for
+        every other particle (:meth:`adami` reads them)."""
+        if self.accw is None:
+            self.accw = cuda.device_array((self.dim, self.cap), np.float64)
+        K.k_zero2[K.launch(self.n)](self.accw, self.n)
+        if ids is not None and len(ids):
+            K.k_place_one[K.launch(len(ids))](self.slot, cuda.to_device(np.ascontiguousarray(ids, np.int32)),
+                                              cuda.to_device(np.ascontiguousarray(acc, np.float64)), self.accw)
+
+    def adami(self, has_acc: bool, kernel: int, ad: float, h: float, rho0: float, B: float, gamma: float,
+              g: np.ndarray, kmin: int, kmax: int, p_floor: float) -> None:
+        """Wall densities from the fluid's pressure: fluid.wall_density.adami_wall_density."""
+        g3 = self.grid
+        nx, ny, nz = g3.shape
+        acc = self.accw if has_acc else self.zero_aux
+        K.k_adami[K.launch(self.n)](self.a["P"], self.a["rho"], self.a["kind"], acc, has_acc, self.n, self.start,
+                                    self.lo3, 1.0 / g3.cell, nx, ny, nz, kernel, ad, h, rho0, B, gamma,
+                                    cuda.to_device(np.asarray(g, np.float64)), kmin, kmax, p_floor)
+
     def rates(self, key: tuple, prm_dev, rho0: float, c0: float, gamma: float) -> None:
         """Equation of state and the pair loop (fluid.equations.evaluate)."""
         n, g = self.n, self.grid
         nx, ny, nz = g.shape
         K.k_pack[K.launch(n)](self.a["rho"], n, rho0, c0, gamma, self.cs, self.pr2)
         loop = K.make_pair_loop(*key)
+        K.k_zero_f8[K.launch(3)](self.bounds, 3)
         loop[K.launch(n)](self.a["P"], self.a["V"], self.a["rho"], self.a["mass"], self.a["kind"], self.cs,
-                                 self.pr2, n, self.start, self.lo3, g.cell, nx, ny, nz, prm_dev, self.drho,
-                                 self.visc, self.acc, self.xs)
+                          self.pr2, n, self.start, self.lo3, g.cell, nx, ny, nz, prm_dev, self.drho, self.acc,
+                          self.xs, self.bounds)
 
     def max_bounds(self):
-        """(max |a|^2 over fluid, max (c + visc), max c): fluid.integrator._bounds."""
-        K.k_zero_f8[K.launch(3)](self.bounds, 3)
-        K.k_bounds[K.launch(self.n)](self.acc, self.visc, self.cs, self.a["kind"], self.n, self.bounds)
+        """(max |a|^2 over fluid, max (c + visc), max c) of the last :meth:`rates`:
+        fluid.integrator._bounds."""
         return self.bounds.copy_to_host()
 
     def predictor(self, dt: float, rho0: float) -> None:
