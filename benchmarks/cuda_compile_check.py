@@ -70,9 +70,18 @@ def main() -> int:
         except Exception as e:
             bad += 1
             print(f"ERR {name}: {type(e).__name__}: {str(e)[:800]}")
-    pair_sig = (f8_2, f8_2, f8_1, f8_1, i1_1, f8_1, f8_1, i8, i4_1, f8_1, f8, i8, i8, i8, f8_1, f8_1, f8_2, f8_2, f8_1)
-    for key in [(0, False, False, False, False, False), (1, False, True, True, True, True), (0, True, False, True, False, False),
-                (1, True, True, False, True, True)]:
+    grad_sig = (f8_2, f8_1, f8_1, i1_1, f8_1, i8, i4_1, f8_1, f8, i8, i8, i8, f8_1, f8_2)
+    for key in [(0, False), (1, True)]:
+        try:
+            ptx, _ = cuda.compile_ptx(K.make_gradient_loop(*key).py_func, grad_sig, cc=cc)
+            print(f"ok  gradient_loop{key} {len(ptx)} chars")
+        except Exception as e:
+            bad += 1
+            print(f"ERR gradient_loop{key}: {type(e).__name__}: {str(e)[:1500]}")
+    pair_sig = (f8_2, f8_2, f8_1, f8_1, i1_1, f8_1, f8_1, i8, i4_1, f8_1, f8, i8, i8, i8, f8_1, f8_1, f8_2, f8_2, f8_1,
+                f8_2)
+    for key in [(0, False, False, False, False, False, False), (1, False, True, True, True, True, False),
+                (0, True, False, True, False, False, True), (1, True, True, False, True, True, False)]:
         t = time.time()
         loop = K.make_pair_loop(*key)
         try:

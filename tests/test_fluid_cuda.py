@@ -125,11 +125,11 @@ def _table(dim: int, saved: tuple, xsph: bool) -> int:
 def test_device_memory_per_particle(sim):
     """Bytes per particle the device state allocated, against the table of its arrays: 2-D
     symplectic with XSPH 194 B, 2-D Verlet 162 B (and the moving Adami walls'
-    accelerations, 16 B), 3-D symplectic with XSPH 250 B (the aim:
-    at most 250 B)."""
+    accelerations, 16 B), 3-D symplectic with XSPH 250 B (the aim: at most 250 B) and
+    the renormalised diffusion's gradients (24 B)."""
     assert sim["dam2d.bytes_per_particle"] == _table(2, ("pos", "vel", "rho"), True) == 194
     assert sim["body2d.bytes_per_particle"] == _table(2, ("vel", "rho"), False) + 16 == 178
-    assert sim["col3d.bytes_per_particle"] == _table(3, ("pos", "vel", "rho"), True) == 250
+    assert sim["col3d.bytes_per_particle"] == _table(3, ("pos", "vel", "rho"), True) + 24 == 274
 
 
 @requires_numba_cuda
@@ -145,7 +145,20 @@ def test_cpu_runs_and_cuda_is_refused_without_numba_cuda(sim):
 def test_device_is_validated_with_a_clear_error():
     with pytest.raises(InputError, match="device='gpu'.*'cpu'.*'cuda'"):
         FluidConfig(c0=20.0, device="gpu")
-    with pytest.raises(InputError, match="antuono.*device='cuda'"):
-        FluidConfig(c0=20.0, device="cuda", diffusion="antuono")
-    with pytest.raises(InputError, match="mls_every"):
+    with pytest.raises(InputError, match="mls_every=30 is not available with device='cuda'"):
         FluidConfig(c0=20.0, device="cuda", mls_every=30)
+    if "precision" in FluidConfig.__dataclass_fields__:  # the CPU's float32 pair terms
+        with pytest.raises(InputError, match="precision='float32' is not available with device='cuda'"):
+            FluidConfig(c0=20.0, device="cuda", precision="float32")
+
+
+def test_the_scene_passes_the_device_to_the_fluid():
+    from cosim.scene import SPH, Scene, Tank, World
+    from cosim.scene.setup import choose
+
+    scene = Scene(world=World(dim=2, duration=0.1), fluid=SPH(dx=0.02, device="cuda"),
+                  domain=Tank(length=0.5, height=0.3, depth=0.2))
+    assert choose(scene).config["device"] == "cuda"
+    assert "device" not in choose(scene.with_values(["fluid.dx=0.02"]).replace(fluid=SPH(dx=0.02))).config
+    with pytest.raises(InputError, match="fluid.device"):
+        scene.with_values(["fluid.device='gpu'"])

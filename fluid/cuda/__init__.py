@@ -13,19 +13,21 @@ the cell build and sort (a counting sort by cell with atomics, then each cell's
 particles ordered by x as the CPU orders them, so both paths hold the particles in the
 same order), the pair loop with both kernels (Wendland, cubic), artificial viscosity
 with ``alpha_wall``, laminar viscosity, the Fourtakas and Molteni density diffusions and
-their fade under the free surface (``diffusion_at_surface=False``), plain dynamic
+their fade under the free surface (``diffusion_at_surface=False``), the renormalised
+diffusion of Antuono et al. (``"antuono"``: its gradient loop first), plain dynamic
 boundaries (DBC) for walls and bodies, the tank walls of ``walls="adami"`` (with the
 prescribed walls' accelerations), XSPH, the symplectic and Verlet integrators, the
 time-step reductions of 001_14936b82710365b2.txt Eq. 14 with the diffusion limit, the
 NaN guard (the CPU path's message), particles leaving the domain, the group loads on
 the device, boundary particles placed by id (bodies, prescribed motions).
 
-Not on the GPU yet (refused by :func:`check_config` with the setting to change):
-``diffusion="antuono"`` (its second pair loop for the renormalised gradients),
-``mls_every > 0`` (the MLS re-initialisation) and boundary-correction hooks (the bodies' mDBC,
-fluid.boundary_correction: a scene's ``fluid.body_boundary = "dbc"`` runs). A float32
-variant of the pair loop is not written: float64 is the GPU default and its
-reference, as on the CPU.
+Not on the GPU yet, refused with the setting to change: ``mls_every > 0`` (the MLS
+re-initialisation) and ``precision="float32"`` (the CPU's float32 pair terms), by
+:func:`check_config`; boundary-correction hooks other than the Adami walls (the bodies'
+mDBC, fluid.boundary_correction: ``SPHFluid(boundary="dbc")``, a scene's
+``fluid.body_boundary = "dbc"`` runs), at the first rate evaluation. A float32 variant
+of the GPU pair loop is not written: float64 is the GPU default and its reference, as
+on the CPU.
 """
 
 from __future__ import annotations
@@ -73,8 +75,8 @@ def check_config(config) -> None:
     """Refuse a ``FluidConfig(device="cuda")`` the GPU path cannot run, naming the field
     and the fix (called from its validation, before any work)."""
     bad = []
-    if config.diffusion == "antuono":
-        bad.append(("diffusion='antuono'", "use diffusion='fourtakas' (default) or 'molteni'"))
+    if getattr(config, "precision", "float64") != "float64":
+        bad.append((f"precision={config.precision!r}", "use precision='float64' (the GPU path's pair loop is float64)"))
     if config.mls_every:
         bad.append((f"mls_every={config.mls_every}", "use mls_every=0 (MLS re-initialisation is not on the GPU yet)"))
     if bad:

@@ -80,7 +80,7 @@ class CudaFluid(Fluid):
         self._alive[ps.ids] = True
         c = config
         self._key = (self._kernel, c.dim == 3, c.nu > 0.0, c.xsph_eps > 0.0, c.alpha_wall != 1.0,
-                     not c.diffusion_at_surface)
+                     not c.diffusion_at_surface, c.diffusion == "antuono")
         self._prm_dev = None
 
     def _threads(self) -> int:  # the host's share is transfers and set-up: numba's threads as they are
@@ -107,7 +107,7 @@ class CudaFluid(Fluid):
             c = self.config
             saved = ("vel", "rho") if c.integrator == "verlet" else ("pos", "vel", "rho")
             d["_dev"] = DeviceState(d["_hostps"].n, c.dim, self._grid, saved, c.xsph_eps > 0.0,
-                                    int(self._kind_by_id.size - 1))
+                                    int(self._kind_by_id.size - 1), renorm=c.diffusion == "antuono")
             self._prm_dev = cuda.to_device(self._prm)
         if d["_host_changed"]:
             rates = None

@@ -253,13 +253,16 @@ def k_pack(rho, n, rho0, c0, gamma, cs, pr2):
 _PAIR_LOOPS = {}
 
 
-def make_pair_loop(kernel: int, three: bool, laminar: bool, xsph: bool, wall_visc: bool, fade: bool):
+def make_pair_loop(kernel: int, three: bool, laminar: bool, xsph: bool, wall_visc: bool, fade: bool,
+                   renorm: bool = False):
     """The pair loop compiled for one kernel, dimension and choice of optional terms (the
     closure's constants fold away, as in fluid.equations._make_interact). Writes, for
     every particle a < n: ``drho[a]``, ``acc[:, a]`` and, with XSPH, ``xs[:, a]``
-    (fluid.equations.interact), and the time step's three bounds into ``bounds``
+    (fluid.equations.interact; with ``renorm`` the density diffusion of Antuono et al.
+    with the gradients ``G`` of :func:`make_gradient_loop`), and the time step's three
+    bounds into ``bounds``
     (:func:`d_block_max3`; the viscous term of Eq. 14 is used there and not stored)."""
-    key = (kernel, three, laminar, xsph, wall_visc, fade)
+    key = (kernel, three, laminar, xsph, wall_visc, fade, renorm)
     if key in _PAIR_LOOPS:
         return _PAIR_LOOPS[key]
     P_H, P_AD, P_ALPHA, P_DDT, P_HYDRO = eq.P_H, eq.P_AD, eq.P_ALPHA, eq.P_DDT, eq.P_HYDRO
@@ -268,7 +271,7 @@ def make_pair_loop(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
     zc = 2 if three else 1
 
     @cuda.jit
-    def pair_loop(P, V, rho, mass, kind, cs, pr2, n, start, lo, cell, nx, ny, nz, prm, drho, acc, xs, bounds):
+    def pair_loop(P, V, rho, mass, kind, cs, pr2, n, start, lo, cell, nx, ny, nz, prm, drho, acc, xs, bounds, G):
         sh_a = cuda.shared.array(TPB, np.float64)
         sh_v = cuda.shared.array(TPB, np.float64)
         sh_c = cuda.shared.array(TPB, np.float64)
@@ -304,6 +307,10 @@ def make_pair_loop(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
             ca = cs[a]
             ka = rhoa / (ca * ca)
             fa = 1.0 if kind[a] == 0 else 0.0
+            if renorm:
+                gxa = G[0, a]
+                gya = G[1, a] if three else 0.0
+                gza = G[zc, a]
             cx = d_clamp_cell(xa, lo[0], inv_cell, nx)
             cz = d_clamp_cell(za, lo[2], inv_cell, nz)
             cy = d_clamp_cell(ya, lo[1], inv_cell, ny) if three else 0
@@ -376,7 +383,12 @@ def make_pair_loop(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
                         inv = d * rs
                         sd += mbF * vr
                         volb = mb / rhob if fb > 0.0 else 0.0
-                        rhoH = hgz * (ka + rhob / (cb * cb)) * rz
+                        if renorm:  # seed 000 Eq. 2: minus the mean renormalised gradient
+                            rhoH = -0.5 * ((gxa + G[0, b]) * rx + (gza + G[zc, b]) * rz)
+                            if three:
+                                rhoH -= 0.5 * (gya + G[1, b]) * ry
+                        else:
+                            rhoH = hgz * (ka + rhob / (cb * cb)) * rz
                         sdd += volb * (rhob - rhoa - rhoH) * Fs * r2 * inv
                         if fade:
                             vf = (volb + (1.0 - fb) * mb * irho0) * Fs
@@ -439,6 +451,117 @@ def make_pair_loop(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
 
     _PAIR_LOOPS[key] = pair_loop
     return pair_loop
+
+
+_GRADIENT_LOOPS = {}
+
+
+def make_gradient_loop(kernel: int, three: bool):
+    """``fluid.equations._make_gradient``: the renormalised density gradient ``G[:, a]``
+    [kg/m^4] (rows x, (y,) z) of every fluid particle (000_7d114ab96e048b26.txt Eq. 3-4;
+    the hydrostatic gradient where the matrix is near singular; 0 on boundary particles),
+    for the density diffusion of ``diffusion="antuono"``."""
+    key = (kernel, three)
+    if key in _GRADIENT_LOOPS:
+        return _GRADIENT_LOOPS[key]
+    P_H, P_G = eq.P_H, eq.P_G
+    DET_MIN = eq.DET_MIN
+    zc = 2 if three else 1
+
+    @cuda.jit
+    def gradient_loop(P, rho, mass, kind, cs, n, start, lo, cell, nx, ny, nz, prm, G):
+        h = prm[P_H]
+        gx = prm[P_G]
+        gy = prm[P_G + 1] if three else 0.0
+        gz = prm[P_G + 2] if three else prm[P_G + 1]
+        ih = 1.0 / h
+        inv_cell = 1.0 / cell
+        for a in range(cuda.grid(1), n, cuda.gridsize(1)):
+            if kind[a] != 0:
+                for k in range(G.shape[0]):
+                    G[k, a] = 0.0
+                continue
+            xa = P[0, a]
+            ya = P[1, a] if three else 0.0
+            za = P[zc, a]
+            rhoa = rho[a]
+            cx = d_clamp_cell(xa, lo[0], inv_cell, nx)
+            cz = d_clamp_cell(za, lo[2], inv_cell, nz)
+            cy = d_clamp_cell(ya, lo[1], inv_cell, ny) if three else 0
+            mxx = 0.0
+            mxy = 0.0
+            mxz = 0.0
+            myy = 0.0
+            myz = 0.0
+            mzz = 0.0
+            bx = 0.0
+            by = 0.0
+            bz = 0.0
+            dys = 3 if three else 1
+            for dz in range(-1, 2):
+                for k in range(dys):
+                    dy = k - 1 if three else 0
+                    yy = cy + dy
+                    zz = cz + dz
+                    if yy < 0 or yy >= ny or zz < 0 or zz >= nz:
+                        continue
+                    base = nx * (yy + ny * zz)
+                    j0 = start[base + max(cx - 1, 0)]
+                    j1 = start[base + min(cx + 1, nx - 1) + 1]
+                    j0 = d_first_at_or_above(P, j0, j1, xa - 2.0 * h)
+                    j1 = d_first_at_or_above(P, j0, j1, xa + 2.0 * h)
+                    for b in range(j0, j1):
+                        rx = xa - P[0, b]
+                        rz = za - P[zc, b]
+                        ry = ya - P[1, b] if three else 0.0
+                        q = math.sqrt(rx * rx + ry * ry + rz * rz) * ih
+                        volb = mass[b] / rho[b] if kind[b] == 0 else 0.0
+                        w = volb * d_grad_shape(kernel, q)
+                        d = (rho[b] - rhoa) * w
+                        mxx += w * rx * rx
+                        mxz += w * rx * rz
+                        mzz += w * rz * rz
+                        bx += d * rx
+                        bz += d * rz
+                        if three:
+                            mxy += w * rx * ry
+                            myy += w * ry * ry
+                            myz += w * ry * rz
+                            by += d * ry
+            if three:
+                c00 = myy * mzz - myz * myz
+                c01 = mxz * myz - mxy * mzz
+                c02 = mxy * myz - mxz * myy
+                det = mxx * c00 + mxy * c01 + mxz * c02
+                scale = (mxx + myy + mzz) / 3.0
+                ok = abs(det) > DET_MIN * abs(scale) ** 3
+            else:
+                det = mxx * mzz - mxz * mxz
+                scale = 0.5 * (mxx + mzz)
+                ok = abs(det) > DET_MIN * scale * scale
+            if ok:
+                if three:
+                    c11 = mxx * mzz - mxz * mxz
+                    c12 = mxy * mxz - mxx * myz
+                    c22 = mxx * myy - mxy * mxy
+                    G[0, a] = -(c00 * bx + c01 * by + c02 * bz) / det
+                    G[1, a] = -(c01 * bx + c11 * by + c12 * bz) / det
+                    G[2, a] = -(c02 * bx + c12 * by + c22 * bz) / det
+                else:
+                    G[0, a] = -(mzz * bx - mxz * bz) / det
+                    G[1, a] = -(mxx * bz - mxz * bx) / det
+            else:  # the hydrostatic gradient rho g / c^2
+                ca = cs[a]
+                ka = rhoa / (ca * ca)
+                G[0, a] = ka * gx
+                if three:
+                    G[1, a] = ka * gy
+                    G[2, a] = ka * gz
+                else:
+                    G[1, a] = ka * gz
+
+    _GRADIENT_LOOPS[key] = gradient_loop
+    return gradient_loop
 
 
 # ------------------------------------------------------------------ integrators (fluid.integrator)

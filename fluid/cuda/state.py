@@ -26,7 +26,7 @@ class DeviceState:
     cells 2h wide, reach 1). ``saved``: the integrator's saved state, ``("pos", "vel",
     "rho")`` (symplectic) or ``("vel", "rho")`` (Verlet)."""
 
-    def __init__(self, n: int, dim: int, grid, saved: tuple, xsph: bool, ids_max: int):
+    def __init__(self, n: int, dim: int, grid, saved: tuple, xsph: bool, ids_max: int, renorm: bool = False):
         self.cap = n
         self.n = 0
         self.dim = dim
@@ -54,6 +54,8 @@ class DeviceState:
         self.acc = f2()
         self.xsph = xsph
         self.xs = f2() if xsph else cuda.device_array((dim, 0), np.float64)
+        #: the renormalised density gradients of diffusion="antuono"
+        self.G = f2() if renorm else cuda.device_array((dim, 0), np.float64)
         # the sort: cell of each particle, permutation, one scratch array per kind of array
         self.cell = cuda.device_array(n, np.int32)
         self.perm = cuda.device_array(n, np.int32)
@@ -69,6 +71,8 @@ class DeviceState:
         self.zero_aux = cuda.device_array((dim, 0), np.float64)
         #: the walls' prescribed accelerations (Adami walls with moving walls only; made when first needed)
         self.accw = None
+        self._groups = None  # the group loads' arrays on the device (made when first needed)
+        self._g3 = None  # gravity (x, y, z) of the Adami pass
 
     # ------------------------------------------------------------------ memory
     def device_bytes(self) -> dict:
@@ -76,12 +80,13 @@ class DeviceState:
         and the id map), ``per_cell`` (the cell offsets and the sort's cursors), ``fixed``."""
         part = {f"a.{k}": v.nbytes for k, v in self.a.items()}
         part.update({f"scratch.{k}": v.nbytes for k, v in self.scratch.items()})
-        for k in ("drho", "cs", "pr2", "acc", "xs", "cell", "perm", "slot"):
+        for k in ("drho", "cs", "pr2", "acc", "xs", "G", "cell", "perm", "slot"):
             part[k] = getattr(self, k).nbytes
         cells = {k: getattr(self, k).nbytes for k in ("start", "fill", "sums")}
         if self.accw is not None:
             part["accw"] = self.accw.nbytes
         fixed = {k: getattr(self, k).nbytes for k in ("bounds", "flag", "lo3", "lo", "zero_aux")}
+        fixed.update({f"groups.{i}": a.nbytes for i, a in enumerate(self._groups or ())})
         return {"per_particle": part, "per_cell": cells, "fixed": fixed}
 
     def bytes_per_particle(self) -> float:
@@ -225,20 +230,27 @@ class DeviceState:
         g3 = self.grid
         nx, ny, nz = g3.shape
         acc = self.accw if has_acc else self.zero_aux
+        if self._g3 is None:
+            self._g3 = cuda.to_device(np.asarray(g, np.float64))
         K.k_adami[K.launch(self.n)](self.a["P"], self.a["rho"], self.a["kind"], acc, has_acc, self.n, self.start,
                                     self.lo3, 1.0 / g3.cell, nx, ny, nz, kernel, ad, h, rho0, B, gamma,
-                                    cuda.to_device(np.asarray(g, np.float64)), kmin, kmax, p_floor)
+                                    self._g3, kmin, kmax, p_floor)
 
     def rates(self, key: tuple, prm_dev, rho0: float, c0: float, gamma: float) -> None:
-        """Equation of state and the pair loop (fluid.equations.evaluate)."""
+        """Equation of state, the density gradients if ``key`` (make_pair_loop's) asks for
+        the renormalised diffusion, and the pair loop (fluid.equations.evaluate)."""
         n, g = self.n, self.grid
         nx, ny, nz = g.shape
         K.k_pack[K.launch(n)](self.a["rho"], n, rho0, c0, gamma, self.cs, self.pr2)
+        if key[-1]:  # the renormalised gradients first (diffusion="antuono")
+            grad = K.make_gradient_loop(key[0], key[1])
+            grad[K.launch(n)](self.a["P"], self.a["rho"], self.a["mass"], self.a["kind"], self.cs, n, self.start,
+                              self.lo3, g.cell, nx, ny, nz, prm_dev, self.G)
         loop = K.make_pair_loop(*key)
         K.k_zero_f8[K.launch(3)](self.bounds, 3)
         loop[K.launch(n)](self.a["P"], self.a["V"], self.a["rho"], self.a["mass"], self.a["kind"], self.cs,
                           self.pr2, n, self.start, self.lo3, g.cell, nx, ny, nz, prm_dev, self.drho, self.acc,
-                          self.xs, self.bounds)
+                          self.xs, self.bounds, self.G)
 
     def max_bounds(self):
         """(max |a|^2 over fluid, max (c + visc), max c) of the last :meth:`rates`:
@@ -274,9 +286,16 @@ class DeviceState:
 
     def group_sums(self, centre: np.ndarray, n_groups: int):
         """Force (G, dim) and moment (G, 1 or 3) on each boundary group: fluid.solver._sum_groups."""
-        F = cuda.to_device(np.zeros((n_groups, self.dim)))
-        M = cuda.to_device(np.zeros((n_groups, 3 if self.dim == 3 else 1)))
-        if n_groups:
-            K.k_group_sums[K.launch(self.n)](self.a["P"], self.a["mass"], self.acc, self.a["group"], self.n,
-                                                    cuda.to_device(np.ascontiguousarray(centre, np.float64)), F, M)
-        return F.copy_to_host(), M.copy_to_host()
+        F = np.zeros((n_groups, self.dim))
+        M = np.zeros((n_groups, 3 if self.dim == 3 else 1))
+        if not n_groups:
+            return F, M
+        if self._groups is None or self._groups[0].shape != F.shape:
+            self._groups = (cuda.device_array(F.shape, np.float64), cuda.device_array(M.shape, np.float64),
+                            cuda.device_array((n_groups, self.dim), np.float64))
+        dF, dM, dc = self._groups
+        dF.copy_to_device(F)
+        dM.copy_to_device(M)
+        dc.copy_to_device(np.ascontiguousarray(centre, np.float64))
+        K.k_group_sums[K.launch(self.n)](self.a["P"], self.a["mass"], self.acc, self.a["group"], self.n, dc, dF, dM)
+        return dF.copy_to_host(), dM.copy_to_host()
