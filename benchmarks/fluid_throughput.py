@@ -49,6 +49,31 @@ see the cost measured in that module's docstring.
     .venv/bin/python benchmarks/fluid_throughput.py --case 2d --dp 0.01 --dp 0.005 --dp 0.0025 --steps 20  # scaling
     .venv/bin/python benchmarks/fluid_throughput.py --case 2d --dp 0.01 --threads 1 --nu 1e-6 --xsph 0.1  # optional terms
     .venv/bin/python benchmarks/fluid_throughput.py --case 2d --dp 0.01 --threads 1 --walls adami  # tank walls
+GPU (``--device cuda``; fluid.cuda, numba-cuda): the same cases stepped on an NVIDIA GPU.
+It prints the device (or that it is numba's CUDA simulator, NUMBA_ENABLE_CUDASIM=1, which
+runs every kernel in Python: its timings are meaningless) and ``bytes_per_particle`` from
+the arrays the device state allocated. The GPU path covers the whole CPU step (both
+kernels, artificial and laminar viscosity, alpha_wall, the Fourtakas, Molteni and
+renormalised diffusions, the surface fade, DBC and Adami walls, bodies' boundary
+particles, XSPH, symplectic and Verlet, the time-step reductions, the NaN guard) but MLS
+re-initialisation, float32 pair terms and the bodies' mDBC (refused; fluid.cuda), in
+float64. Device memory per particle (fluid.cuda.state; the state in float64, the sort's
+buffers and the rates included): 3-D symplectic 226 B (250 with XSPH; +24 with
+``diffusion="antuono"``, +24 with moving Adami walls), 3-D Verlet 202 B, 2-D symplectic
+178 B, 2-D Verlet 162 B; the cell offsets add 8 B per cell (0.5 cells per particle in
+the 3-D case: 4 B). So 80 GB hold about 350 M particles (3-D symplectic) or 390 M
+(Verlet). No GPU figure exists yet: no GPU machine was lent to the session that wrote it
+(2026-11-25); on the simulator the tests compare it with the CPU path to round-off
+(tests/test_fluid_cuda.py), and benchmarks/cuda_compile_check.py compiles every kernel
+for sm_90 without a GPU. What a GPU session should measure first: this benchmark's 3-D
+case (``--device cuda --case 3d --dp 0.017 --steps 200``), then 1, 4, 16 M particles
+and the largest that fits, against ``--device cpu`` on the same machine; the share of
+the pair loop (its divisions and the neighbour rows' binary searches) against the sort
+and the host round trips of each step (three small copies: the count inside the domain,
+the step's bounds, the NaN guard's row).
+
+    NUMBA_ENABLE_CUDASIM=1 python benchmarks/fluid_throughput.py --device cuda --case 2d --dp 0.05 --steps 2  # simulator
+    python benchmarks/fluid_throughput.py --device cuda --case 3d --dp 0.017 --steps 200                   # a GPU
 """
 
 from __future__ import annotations
@@ -64,6 +89,29 @@ import time
 # ``fluid`` package: drop that folder
 _here = os.path.dirname(os.path.abspath(__file__))
 sys.path[:] = [p for p in sys.path if os.path.abspath(p or os.curdir) != _here]
+
+
+#: where the fluid steps (--device): FluidConfig.device
+DEVICE = "cpu"
+
+
+def device_line() -> str:
+    """What runs ``--device cuda``: the GPU's name, compute capability and memory, or numba's
+    CUDA simulator; exits with the reason where neither is there."""
+    from fluid.cuda import availability, simulator
+
+    why = availability()
+    if why is not None:
+        raise SystemExit(f"--device cuda: {why}")
+    from numba import cuda
+    if simulator():
+        return ("device: numba's CUDA simulator (NUMBA_ENABLE_CUDASIM=1): every kernel runs in Python, the timings "
+                "below are meaningless")
+    d = cuda.get_current_device()
+    free, total = cuda.current_context().get_memory_info()
+    name = d.name.decode() if isinstance(d.name, bytes) else d.name
+    return (f"device: {name}, compute capability {d.compute_capability[0]}.{d.compute_capability[1]}, "
+            f"{total / 2**30:.1f} GiB ({free / 2**30:.1f} GiB free)")
 
 
 def build(case: str, dp: float, integrator: str = "verlet", nu: float = 0.0, xsph_eps: float = 0.0,
@@ -85,7 +133,7 @@ def build(case: str, dp: float, integrator: str = "verlet", nu: float = 0.0, xsp
         H = 1.0
     walls = tank_walls(inner_lo, inner_hi, dp, layers=2)
     b = assemble(len(inner_lo), dp, 1000.0, col, [(walls, Kind.FIXED_WALL, 0)])
-    cfg = FluidConfig(dim=len(inner_lo), dx=dp, c0=20 * math.sqrt(g * H), alpha=0.02, delta=0.1,
+    cfg = FluidConfig(dim=len(inner_lo), dx=dp, device=DEVICE, c0=20 * math.sqrt(g * H), alpha=0.02, delta=0.1,
                       diffusion="fourtakas", cfl=0.2, integrator=integrator, nu=nu, xsph_eps=xsph_eps, walls=wall_model,
                       domain_lo=tuple(inner_lo - 0.1), domain_hi=tuple(inner_hi + 0.5))
     set_hydrostatic(b.particles, H, 1000.0, cfg.speed_of_sound, cfg.gamma, g)
@@ -112,9 +160,12 @@ def run(case: str, dp: float, steps: int, integrator: str = "verlet", nu: float 
     per_step = wall / steps
     # every array the fluid keeps between steps: particles, the integrator's saved state,
     # the pair loop's workspace (packed table, rates) and the cell list
-    arrays = [getattr(f.ps, k) for k in f.ps.FIELDS] + list(f._aux.values()) \
-        + list(f._work.arrays.values()) + [f._start]
-    mem = sum(a.nbytes for a in arrays)
+    if DEVICE == "cuda":  # every array of the device state (fluid.cuda.state), the cells' included
+        mem = f.device_memory["total_bytes"]
+    else:
+        arrays = [getattr(f.ps, k) for k in f.ps.FIELDS] + list(f._aux.values()) \
+            + list(f._work.arrays.values()) + [f._start]
+        mem = sum(a.nbytes for a in arrays)
     return {
         "case": case, "dp_m": dp, "particles": n,
         "fluid": int((f.ps.kind == Kind.FLUID).sum()), "steps": steps,
@@ -143,6 +194,9 @@ def main(argv=None):
     ap.add_argument("--xsph", type=float, default=0.0, help="XSPH epsilon [-] (0: off, as the reference case)")
     ap.add_argument("--walls", choices=["dbc", "adami"], default="dbc",
                     help="tank-wall densities (FluidConfig.walls; dbc: the reference case)")
+    ap.add_argument("--device", choices=["cpu", "cuda"], default="cpu",
+                    help="where the fluid steps (FluidConfig.device; cuda: numba-cuda, or its simulator with "
+                         "NUMBA_ENABLE_CUDASIM=1)")
     a = ap.parse_args(argv)
     if a.cold:
         os.environ["NUMBA_CACHE_DIR"] = tempfile.mkdtemp(prefix="numba_cold_")
@@ -152,12 +206,17 @@ def main(argv=None):
     t0 = time.perf_counter()
     import fluid.solver  # noqa: F401  (imports numba modules; compilation is lazy)
     print(f"import: {time.perf_counter() - t0:.2f} s; numba cache {'cold' if a.cold else 'as found'}")
+    global DEVICE
+    DEVICE = a.device
+    if a.device == "cuda":
+        print(device_line())
     sizes = {"2d": a.dp or [0.01, 0.005], "3d": a.dp or [0.017]}
     cases = ["2d", "3d"] if a.case == "all" else [a.case]
     for c in cases:
         for dp in sizes[c]:
             r = run(c, dp, a.steps, a.integrator, a.nu, a.xsph, a.walls)
             r["load_avg_1min"] = round(os.getloadavg()[0], 2)  # other work on the machine
+            r["device"] = DEVICE
             print(" ".join(f"{k}={v}" for k, v in r.items()))
             sys.stdout.flush()
 
