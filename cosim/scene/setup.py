@@ -75,7 +75,9 @@ class Setup:
     overridden: tuple = ()
 
 
-def _settings(name: str, dim: int) -> dict:
+def settings(name: str, dim: int) -> dict:
+    """The FluidConfig keyword arguments of the set-up ``name`` in ``dim`` dimensions (the
+    table above)."""
     from fluid.solver import WAVES_2D
 
     if name in ("waves", "sloshing"):
@@ -111,7 +113,7 @@ def choose(scene) -> Setup:
     sph = scene.fluid
     name = _auto(scene) if sph.setup == "auto" else sph.setup
     reason = _REASONS[name] if sph.setup == "auto" else f"asked for (fluid.setup = {name!r})"
-    cfg = _settings(name, scene.world.dim)
+    cfg = settings(name, scene.world.dim)
     cfg["rho0"] = sph.rho0
     overridden = []
     for key in CONFIG_FIELDS:

@@ -32,6 +32,10 @@ Tanks (refdata analytic_hydrodynamics/SOURCE.txt, C):
   not excited by a horizontal motion).
 - vertical cylinder, radius R, polar angle theta from +x: S_n = J1(k_n r) cos(theta),
   k_n = xi_n / R with J1'(xi_n) = 0, b_n = 2 R / ((xi_n^2 - 1) J1(xi_n)) (the Dini series of r).
+- 2-D tank with its right side inclined beta from the vertical (001 §3.2): no closed form;
+  the modes psi_n of :func:`cosim.validations.tank_potential.sloshing_modes` (P1 FEM),
+  b_n = S_n^T M_s x (M_s the surface's mass matrix, S_n^T M_s S_n = 1), x measured from
+  the middle of the still surface; psi_n is no longer a product of S_n and a depth factor.
 
 The excitation here is the paper's, a0 sin(w t) from rest (001 Fig. 3), held for
 ``t_stop`` [s] and zero after it: eta_n in closed form, then free oscillation. No damping:
@@ -60,17 +64,35 @@ class Modes:
     omega: np.ndarray
     b: np.ndarray
     g: float
+    #: the inclined tank's FE modes (:func:`trapezoid_modes`); None for the closed forms
+    fe: dict | None = None
 
     def surface_shapes(self, x, y=None) -> np.ndarray:
         """S_n at points (tank frame: x from the centre [m]; y across [m], the cylinder
         only): shape (modes, points)."""
         x = np.atleast_1d(np.asarray(x, float))
+        if self.fe is not None:
+            return self.psi(x, np.zeros_like(x))
         if self.shape == "rectangular":
             return np.sin(np.outer(self.k, x))
         y = np.zeros_like(x) if y is None else np.atleast_1d(np.asarray(y, float))
         r = np.hypot(x, y)
         cos_t = np.divide(x, r, out=np.zeros_like(x), where=r > 0)
         return special.j1(np.outer(self.k, r)) * cos_t
+
+    def psi(self, x, z, y=None) -> np.ndarray:
+        """The modes' potentials psi_n at points (x from the centre, z <= 0 below the still
+        surface [m]): (modes, points)."""
+        if self.fe is None:
+            return self.surface_shapes(x, y) * self.depth_factor(z)
+        fe = self.fe
+        x = np.atleast_1d(np.asarray(x, float)) + fe["x_mid"]
+        zz = np.clip(np.atleast_1d(np.asarray(z, float)) + self.h, 0.0, self.h)
+        sx = np.clip(x / (fe["length"] + zz * fe["tan_beta"]), 0.0, 1.0)    # the mapped grid's coordinates
+        out = np.empty((self.omega.size, x.size))
+        for i, q in enumerate(fe["grid"]):
+            out[i] = q(np.column_stack([zz, sx]))
+        return out
 
     def depth_factor(self, z) -> np.ndarray:
         """cosh(k_n (z + h)) / cosh(k_n h) at heights z <= 0 [m] below the still surface:
@@ -94,6 +116,29 @@ def cylinder_modes(R: float, h: float, n: int = 200, g: float = 9.81) -> Modes:
     xi = special.jnp_zeros(1, n)
     k = xi / R
     return Modes("cylinder", R, h, k, np.sqrt(g * k * np.tanh(k * h)), 2.0 * R / ((xi**2 - 1) * special.j1(xi)), g)
+
+
+def trapezoid_modes(L: float, h: float, beta_deg: float, n: int = 30, nz: int = 40, g: float = 9.81) -> Modes:
+    """The ``n`` first modes of the 2-D tank with a bottom ``L`` [m] long, a vertical left
+    side and the right side inclined ``beta_deg`` from the vertical, water ``h`` [m] deep
+    (:func:`cosim.validations.tank_potential.sloshing_modes`, ``nz`` elements over the
+    depth). x is measured from the middle of the still surface, (L + h tan beta) / 2 from
+    the left wall."""
+    from scipy.interpolate import RegularGridInterpolator
+
+    from cosim.validations.tank_potential import sloshing_modes
+
+    sm = sloshing_modes(L, h, beta_deg, n, nz)
+    nodes, nz, nx, top = sm["nodes"], sm["nz"], sm["nx"], sm["top"]
+    tb = math.tan(math.radians(beta_deg))
+    x_mid = 0.5 * (L + h * tb)
+    surf = sm["phi"][:, top]
+    b = surf @ sm["surface_mass"] @ (nodes[top, 0] - x_mid)
+    zs, ss = np.linspace(0.0, h, nz + 1), np.linspace(0.0, 1.0, nx + 1)
+    grid = [RegularGridInterpolator((zs, ss), p.reshape(nz + 1, nx + 1)) for p in sm["phi"]]
+    lam = sm["lam"]
+    return Modes("trapezoid", L, h, lam, np.sqrt(g * lam), b, g,
+                 fe={"x_mid": x_mid, "length": L, "tan_beta": tb, "grid": grid, "beta_deg": beta_deg})
 
 
 def housner_omega1(shape: str, size: float, h: float, g: float = 9.81) -> float:
@@ -140,7 +185,7 @@ def pressure(modes: Modes, eta_n: np.ndarray, a: np.ndarray, x, z, y=None, rho: 
     z <= 0 below the still surface): hydrostatic + convective + impulsive (module docstring)."""
     x = np.atleast_1d(np.asarray(x, float))
     z = np.atleast_1d(np.asarray(z, float))
-    psi = modes.surface_shapes(x, y) * modes.depth_factor(z)              # (modes, points)
+    psi = modes.psi(x, z, y)                                               # (modes, points)
     conv = modes.g * psi.T @ eta_n                                         # (points, times)
     imp = (psi.T @ modes.b)[:, None] - x[:, None]                       # x = r cos(theta) in the cylinder
     return rho * (-modes.g * z[:, None] + conv + imp * a[None, :])

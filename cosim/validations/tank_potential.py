@@ -48,14 +48,8 @@ def _mesh(length: float, depth: float, beta_deg: float, nz: int, nx: int):
     return nodes, tri
 
 
-def impulsive_pressure(length: float, depth: float, beta_deg: float, nz: int = 120, nx: int | None = None):
-    """k_p = p / (rho a0 H) at the nodes of the tank's mesh for a base acceleration a0 along
-    +x. Returns (nodes (N, 2) [m], k_p (N,), nz, nx). ``length`` [m]: the bottom; ``depth``
-    [m]: H; ``beta_deg``: the right side's angle from the vertical, leaning outwards."""
-    if not (length > 0 and depth > 0 and 0 <= beta_deg < 90):
-        raise ValueError("length > 0, depth > 0 and 0 <= beta_deg < 90 are needed")
-    nx = nx or int(math.ceil(nz * (length + 0.5 * depth * math.tan(math.radians(beta_deg))) / depth))
-    nodes, tri = _mesh(length, depth, beta_deg, nz, nx)
+def _stiffness(nodes: np.ndarray, tri: np.ndarray):
+    """P1 stiffness matrix (sparse CSR) of the Laplacian on the triangles ``tri`` of ``nodes``."""
     P = nodes[tri]                                                   # (M, 3, 2)
     e1, e2 = P[:, 1] - P[:, 0], P[:, 2] - P[:, 0]
     area2 = e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0]                # 2 A (> 0: counter-clockwise)
@@ -66,7 +60,19 @@ def impulsive_pressure(length: float, depth: float, beta_deg: float, nz: int = 1
     rows = np.repeat(tri, 3, axis=1).ravel()
     cols = np.tile(tri, (1, 3)).ravel()
     n = len(nodes)
-    K = coo_matrix((Ke.ravel(), (rows, cols)), shape=(n, n)).tocsr()
+    return coo_matrix((Ke.ravel(), (rows, cols)), shape=(n, n)).tocsr()
+
+
+def impulsive_pressure(length: float, depth: float, beta_deg: float, nz: int = 120, nx: int | None = None):
+    """k_p = p / (rho a0 H) at the nodes of the tank's mesh for a base acceleration a0 along
+    +x. Returns (nodes (N, 2) [m], k_p (N,), nz, nx). ``length`` [m]: the bottom; ``depth``
+    [m]: H; ``beta_deg``: the right side's angle from the vertical, leaning outwards."""
+    if not (length > 0 and depth > 0 and 0 <= beta_deg < 90):
+        raise ValueError("length > 0, depth > 0 and 0 <= beta_deg < 90 are needed")
+    nx = nx or int(math.ceil(nz * (length + 0.5 * depth * math.tan(math.radians(beta_deg))) / depth))
+    nodes, tri = _mesh(length, depth, beta_deg, nz, nx)
+    K = _stiffness(nodes, tri)
+    n = len(nodes)
     # Neumann loads, dp/dn = -n_x (rho a0 = 1, H = 1 below: k_p = p / H): the left side
     # (n = -x: +1) and the inclined side (n = (cos b, -sin b): -cos b); the bottom has n_x = 0
     f = np.zeros(n)
@@ -89,3 +95,48 @@ def wall_profiles(length: float, depth: float, beta_deg: float, nz: int = 120) -
     nodes, kp, nz, nx = impulsive_pressure(length, depth, beta_deg, nz)
     rows = np.arange(nz + 1) * (nx + 1)
     return {"z": nodes[rows, 1], "left": kp[rows], "right": -kp[rows + nx]}
+
+
+def sloshing_modes(length: float, depth: float, beta_deg: float, n_modes: int = 30, nz: int = 40,
+                   nx: int | None = None) -> dict:
+    """Linear sloshing modes of the same tank (the relative velocity potential: Laplace's
+    equation, no flow through the walls, phi_z = (w^2 / g) phi on the still surface z = H):
+    P1 FEM on the mesh of :func:`impulsive_pressure`, the interior condensed onto the
+    surface nodes (K_ss - K_si K_ii^-1 K_is) phi_s = lambda M_s phi_s with the surface's
+    consistent mass matrix M_s, w_n^2 = g lambda_n; the constant mode (lambda = 0) left out.
+
+    Returns ``nodes`` (N, 2) [m], ``nz``, ``nx``, ``lam`` (n_modes,) [1/m] ascending, and
+    ``phi`` (n_modes, N): each mode at every node, scaled so that its surface values S
+    satisfy S^T M_s S = 1 [m]. The vertical tank (beta = 0) gives lambda = k tanh(k H),
+    k = n pi / L (tests/test_forced_sloshing.py)."""
+    from scipy.linalg import cho_solve_banded, cholesky_banded, eigh
+
+    if not (length > 0 and depth > 0 and 0 <= beta_deg < 90):
+        raise ValueError("length > 0, depth > 0 and 0 <= beta_deg < 90 are needed")
+    nx = nx or int(math.ceil(nz * (length + 0.5 * depth * math.tan(math.radians(beta_deg))) / depth))
+    nodes, tri = _mesh(length, depth, beta_deg, nz, nx)
+    K = _stiffness(nodes, tri).tocsc()
+    n = len(nodes)
+    top = np.arange(nz * (nx + 1), n)
+    inner = np.arange(nz * (nx + 1))
+    Kii, Kis = K[inner][:, inner].tocoo(), K[inner][:, top].toarray()
+    Kss = K[top][:, top].toarray()
+    u = nx + 2                                                       # the mapped grid's bandwidth
+    band = np.zeros((u + 1, inner.size))
+    up = Kii.row <= Kii.col
+    band[u + Kii.row[up] - Kii.col[up], Kii.col[up]] = Kii.data[up]
+    X = cho_solve_banded((cholesky_banded(band), False), Kis)       # K_ii^-1 K_is (SPD, banded)
+    S = Kss - Kis.T @ X
+    S = 0.5 * (S + S.T)
+    seg = np.diff(nodes[top, 0])
+    M = np.zeros((top.size, top.size))
+    i = np.arange(seg.size)
+    M[i, i] += seg / 3
+    M[i + 1, i + 1] += seg / 3
+    M[i, i + 1] += seg / 6
+    M[i + 1, i] += seg / 6
+    lam, vec = eigh(S, M, subset_by_index=[1, n_modes])              # skips lambda_0 = 0
+    phi = np.zeros((n_modes, n))
+    phi[:, top] = vec.T
+    phi[:, inner] = -(X @ vec).T
+    return {"nodes": nodes, "nz": nz, "nx": nx, "lam": lam, "phi": phi, "surface_mass": M, "top": top}
