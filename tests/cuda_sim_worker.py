@@ -120,13 +120,49 @@ def record(tag, cpu, gpu, pos0_cpu, pos0_gpu, loads=None):
             OUT[f"{tag}.cpu_step_M" if name == "cpu" else f"{tag}.gpu_step_M"] = M
 
 
-def run_case(tag: str, ps, config: dict, steps: int = 10, body=None, motion=None):
+class Both:
+    """Two boundary-correction hooks in turn (as cosim.sph_fluid joins the walls' and the
+    bodies' mDBC)."""
+
+    def __init__(self, first, second):
+        self.first, self.second = first, second
+
+    def __call__(self, ps, start, grid) -> None:
+        self.first(ps, start, grid)
+        self.second(ps, start, grid)
+
+
+def box_mdbc(ps, group: int, lo, hi, config: dict):
+    """mDBC for the box-shaped group ``group`` (faces at ``lo``, ``hi`` [m]): each particle's
+    ghost vector is twice its distance to the nearest face, along the face's outward
+    normal (a mirror image, as bodies.sampling.ghost_offsets makes them)."""
+    from fluid.boundary_correction import MDBC
+
+    c = FluidConfig(**config)
+    m = MDBC(c.dim, c.h, c.rho0, c.kernel, int(ps.ids.max()) + 1)
+    sel = ps.group == group
+    p = ps.pos[sel]
+    lo, hi = np.asarray(lo, float), np.asarray(hi, float)
+    d = np.concatenate([p - lo, hi - p], axis=1)  # distances to the faces -x, -z, +x, +z
+    k = np.argmin(d, axis=1)
+    normal = np.zeros_like(p)
+    normal[np.arange(len(p)), k % p.shape[1]] = np.where(k < p.shape[1], -1.0, 1.0)
+    m.set_offsets(ps.ids[sel], 2.0 * d[np.arange(len(p)), k][:, None] * normal)
+    return m
+
+
+def run_case(tag: str, ps, config: dict, steps: int = 10, body=None, motion=None, hook=None):
     """Initialise the case on both paths (the first pair loop), step once, then to
     ``steps``; with ``body = (group, velocity)`` the body's particles are placed before
     every step (positions at the step's time, as the coupler places them); ``motion =
-    (group, motion)`` a prescribed wall motion."""
+    (group, motion)`` a prescribed wall motion; ``hook()`` a boundary correction made for
+    each path, run after the fluid's own."""
     cpu = Fluid(FluidConfig(**config), ps)
     gpu = Fluid(FluidConfig(device="cuda", **config), ps)
+    if hook is not None:
+        for f in (cpu, gpu):
+            own, new = f.boundary_correction, hook()
+            f.boundary_correction = new if own is None else Both(own, new)
     if motion is not None:
         for f in (cpu, gpu):
             f.prescribe_motion(*motion)
@@ -183,11 +219,13 @@ def main(out: str) -> None:
     dam = disturbed(dam_2d(), 0.01, 1)
     dam.vel[dam.ids == FLYER] = (0.0, 3.0)
     run_case("dam2d", dam,
-             dict(dim=2, dx=0.01, c0=20.0, nu=1e-3, xsph_eps=0.1, domain_lo=(-0.05, -0.05), domain_hi=(0.25, 0.146)))
-    run_case("body2d", disturbed(body_2d(), 0.01, 2),
-             dict(dim=2, dx=0.01, c0=20.0, kernel="cubic", diffusion="molteni", alpha=0.05, alpha_wall=0.3,
-                  diffusion_at_surface=False, integrator="verlet", verlet_reset=4, walls="adami"),
-             body=(1, (0.1, -0.05)), motion=(0, sway))
+             dict(dim=2, dx=0.01, c0=20.0, nu=1e-3, xsph_eps=0.1, mls_every=4, domain_lo=(-0.05, -0.05),
+                  domain_hi=(0.25, 0.146)))
+    body = disturbed(body_2d(), 0.01, 2)
+    cfg = dict(dim=2, dx=0.01, c0=20.0, kernel="cubic", diffusion="molteni", alpha=0.05, alpha_wall=0.3,
+               diffusion_at_surface=False, integrator="verlet", verlet_reset=4, walls="adami", mls_every=3)
+    run_case("body2d", body, cfg, body=(1, (0.1, -0.05)), motion=(0, sway),
+             hook=lambda: box_mdbc(body, 1, (0.075, 0.04), (0.125, 0.08), cfg))
     run_case("col3d", disturbed(column_3d(), 0.02, 3), dict(dim=3, dx=0.02, c0=20.0, xsph_eps=0.1, diffusion="antuono"))
     nan_guard()
     np.savez(out, **OUT)

@@ -19,13 +19,14 @@ boundaries (DBC) for walls and bodies, the tank walls of ``walls="adami"`` (with
 prescribed walls' accelerations), XSPH, the symplectic and Verlet integrators, the
 time-step reductions of 001_14936b82710365b2.txt Eq. 14 with the diffusion limit, the
 NaN guard (the CPU path's message), particles leaving the domain, the group loads on
-the device, boundary particles placed by id (bodies, prescribed motions).
+the device, boundary particles placed by id (bodies, prescribed motions), and the
+bodies' mDBC densities (fluid.boundary_correction, the hook cosim.sph_fluid sets; its
+diagnostic ``MDBC.low_order`` is not filled on the GPU), the MLS density
+re-initialisation (``mls_every``, fluid.mls).
 
-Not on the GPU yet, refused with the setting to change: ``mls_every > 0`` (the MLS
-re-initialisation) and ``precision="float32"`` (the CPU's float32 pair terms), by
-:func:`check_config`; boundary-correction hooks other than the Adami walls (the bodies'
-mDBC, fluid.boundary_correction: ``SPHFluid(boundary="dbc")``, a scene's
-``fluid.body_boundary = "dbc"`` runs), at the first rate evaluation. A float32 variant
+Not on the GPU yet, refused with the setting to change: ``precision="float32"`` (the
+CPU's float32 pair terms), by :func:`check_config`; boundary-correction hooks other than
+the Adami walls and mDBC, at the first rate evaluation. A float32 variant
 of the GPU pair loop is not written: float64 is the GPU default and its reference, as
 on the CPU.
 """
@@ -77,8 +78,6 @@ def check_config(config) -> None:
     bad = []
     if getattr(config, "precision", "float64") != "float64":
         bad.append((f"precision={config.precision!r}", "use precision='float64' (the GPU path's pair loop is float64)"))
-    if config.mls_every:
-        bad.append((f"mls_every={config.mls_every}", "use mls_every=0 (MLS re-initialisation is not on the GPU yet)"))
     if bad:
         what, fix = bad[0]
         raise InputError(f"FluidConfig: {what} is not available with device='cuda'; {fix}, or device='cpu'")

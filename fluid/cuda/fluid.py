@@ -25,8 +25,11 @@ from numba import cuda
 
 from cosim.errors import InputError, InstabilityError
 from fluid.cuda.state import DeviceState
+from fluid import mls
 from fluid.integrator import step_limit
+from fluid.kernels import alpha_d
 from fluid.particles import Kind
+from fluid.boundary_correction import MDBC
 from fluid.wall_density import AdamiWalls
 from fluid.solver import Fluid
 
@@ -171,21 +174,33 @@ class CudaFluid(Fluid):
     def _rates(self):
         c = self.config
         dev = self._to_device()
-        bc = self.boundary_correction
-        if bc is not None:
-            if not isinstance(bc, AdamiWalls):
-                raise InputError("fluid: device='cuda' runs no boundary-correction hook but the tank walls' "
-                                 f"walls='adami' (got {type(bc).__name__}: the bodies' mDBC?); give the bodies plain "
-                                 "dynamic boundaries (SPHFluid(boundary='dbc'), a scene's fluid.body_boundary = "
-                                 "\"dbc\") or device='cpu'")
-            has = self._wall_accelerations(dev)
-            dev.adami(has, bc.kernel, bc.ad, c.h, c.rho0, bc.B, c.gamma, bc.g, int(Kind.FIXED_WALL),
-                      int(Kind.MOVING_WALL), bc.p_floor)
+        for hook in _hooks(self.boundary_correction):
+            if isinstance(hook, AdamiWalls):
+                has = self._wall_accelerations(dev)
+                dev.adami(has, hook.kernel, hook.ad, c.h, c.rho0, hook.B, c.gamma, hook.g, int(Kind.FIXED_WALL),
+                          int(Kind.MOVING_WALL), hook.p_floor)
+            elif isinstance(hook, MDBC):
+                lo, hi = self._ghost_range(hook)
+                dev.mdbc(hook.offset[lo:hi], lo, hook.kernel, hook.ad, hook.h, hook.rho0, hook.det_min)
+            else:
+                raise InputError(f"fluid: device='cuda' runs the Adami walls and the bodies' mDBC as boundary "
+                                 f"corrections, not {type(hook).__name__}; use device='cpu' for it")
         dev.rates(self._key, self._prm_dev, c.rho0, c.speed_of_sound, c.gamma)
         amax2, cvmax, cmax = dev.max_bounds()
         self._limit = step_limit(amax2, c.h / cvmax if cvmax > 0.0 else math.inf, cmax, c.h, c.cfl, c.dt_max, c.nu,
                                  **self._diffusivity)
         self._stale = False
+
+    def _ghost_range(self, hook) -> tuple:
+        """The ids [lo, hi) whose mDBC ghost vectors go to the device: those set when the
+        rates were first taken (the bodies' particles; the coupler sets the same ids at
+        every exchange)."""
+        r = self.__dict__.get("_ghost_ids")
+        if r is None:
+            set_ = np.flatnonzero(np.any(hook.offset != 0.0, axis=1))
+            r = (int(set_[0]), int(set_[-1]) + 1) if set_.size else (0, 0)
+            self.__dict__["_ghost_ids"] = r
+        return r
 
     def _wall_accelerations(self, dev, eps: float = 1e-6) -> bool:
         """The prescribed groups' accelerations onto the device, as
@@ -242,4 +257,16 @@ class CudaFluid(Fluid):
             self._stale = True
 
     def _reinitialise_density(self) -> None:
-        raise InputError("fluid: MLS re-initialisation (mls_every) is not available with device='cuda'")
+        c = self.config
+        self._to_device().reinitialise_density(self._kernel, alpha_d(self._kernel, c.dim, c.h), c.h,
+                                               mls.MIN_SCALED_DET)
+
+
+def _hooks(hook) -> list:
+    """The boundary-correction hooks inside ``hook`` (None, one hook, or a pair with
+    ``first`` and ``second``, as cosim.sph_fluid joins the walls' and the bodies')."""
+    if hook is None:
+        return []
+    if hasattr(hook, "first") and hasattr(hook, "second"):
+        return _hooks(hook.first) + _hooks(hook.second)
+    return [hook]

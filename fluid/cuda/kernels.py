@@ -797,3 +797,234 @@ def k_place_one(slot, ids, vec, A):
         i = slot[ids[k]]
         for d in range(A.shape[0]):
             A[d, i] = vec[k, d]
+
+
+# ------------------------------------------------------------------ bodies' mDBC (fluid.boundary_correction)
+@cuda.jit(device=True)
+def d_solve(A, b, n):
+    """``fluid.boundary_correction._solve``: ``A x = b`` in place by Gaussian elimination
+    with partial pivoting; returns the determinant (0 if singular)."""
+    det = 1.0
+    for k in range(n):
+        p = k
+        for r in range(k + 1, n):
+            if abs(A[r, k]) > abs(A[p, k]):
+                p = r
+        if A[p, k] == 0.0:
+            return 0.0
+        if p != k:
+            det = -det
+            for c in range(n):
+                t = A[k, c]
+                A[k, c] = A[p, c]
+                A[p, c] = t
+            t = b[k]
+            b[k] = b[p]
+            b[p] = t
+        det *= A[k, k]
+        for r in range(k + 1, n):
+            f = A[r, k] / A[k, k]
+            for c in range(k, n):
+                A[r, c] -= f * A[k, c]
+            b[r] -= f * b[k]
+    for k in range(n - 1, -1, -1):
+        s = b[k]
+        for c in range(k + 1, n):
+            s -= A[k, c] * b[c]
+        b[k] = s / A[k, k]
+    return det
+
+
+@cuda.jit
+def k_mdbc(P, rho, mass, kind, ids, goff, id_lo, n, start, lo, inv_cell, nx, ny, nz, kernel, ad, h, rho0, det_min):
+    """``fluid.boundary_correction.mdbc_density`` (English et al. 2022, mDBC): the density
+    of every boundary particle whose ghost vector ``goff[:, id - id_lo]`` (dim, m) [m] is
+    non-zero, from the first-order consistent interpolation of the fluid at its ghost
+    node, extrapolated back and clamped below at rho0; whole rows of cells in the CPU's
+    order. It writes boundary densities and reads fluid ones only."""
+    three = P.shape[0] == 3
+    dim = P.shape[0]
+    zc = dim - 1
+    m = dim + 1
+    R2 = 4.0 * h * h
+    Fs = (-5.0 * ad / (h * h)) if kernel == WENDLAND else (ad / (h * h))  # fluid.kernels.grad_scale
+    A = cuda.local.array((4, 4), np.float64)
+    bv = cuda.local.array(4, np.float64)
+    row = cuda.local.array(4, np.float64)
+    col = cuda.local.array(4, np.float64)
+    o = cuda.local.array(3, np.float64)
+    for i in range(cuda.grid(1), n, cuda.gridsize(1)):
+        if kind[i] == 0:
+            continue
+        g = ids[i] - id_lo
+        if g < 0 or g >= goff.shape[1]:
+            continue
+        o2 = 0.0
+        for k in range(dim):
+            o[k] = goff[k, g]
+            o2 += o[k] * o[k]
+        if o2 == 0.0:
+            continue
+        gx = P[0, i] + o[0]
+        gy = P[1, i] + o[1] if three else 0.0
+        gz = P[zc, i] + o[zc]
+        for a in range(4):
+            bv[a] = 0.0
+            for k in range(4):
+                A[a, k] = 0.0
+        col[0] = 1.0
+        cx = d_clamp_cell(gx, lo[0], inv_cell, nx)
+        cz = d_clamp_cell(gz, lo[2], inv_cell, nz)
+        cy = d_clamp_cell(gy, lo[1], inv_cell, ny) if three else 0
+        dys = 3 if three else 1
+        for dz in range(-1, 2):
+            for kk in range(dys):
+                dy = kk - 1 if three else 0
+                yy = cy + dy
+                zz = cz + dz
+                if yy < 0 or yy >= ny or zz < 0 or zz >= nz:
+                    continue
+                base = nx * (yy + ny * zz)
+                j0 = start[base + max(cx - 1, 0)]
+                j1 = start[base + min(cx + 1, nx - 1) + 1]
+                for j in range(j0, j1):
+                    if kind[j] != 0:
+                        continue
+                    rx = P[0, j] - gx
+                    ry = P[1, j] - gy if three else 0.0
+                    rz = P[zc, j] - gz
+                    r2 = rx * rx + ry * ry + rz * rz
+                    if r2 >= R2:
+                        continue
+                    q = math.sqrt(r2) / h
+                    V = mass[j] / rho[j]
+                    VF = -V * (Fs * d_grad_shape(kernel, q))
+                    row[0] = V * d_w_value(kernel, q, ad)
+                    col[1] = rx
+                    row[1] = VF * rx
+                    col[dim] = rz
+                    row[dim] = VF * rz
+                    if three:
+                        col[2] = ry
+                        row[2] = VF * ry
+                    for a in range(m):
+                        for k in range(m):
+                            A[a, k] += row[a] * col[k]
+                        bv[a] += row[a] * rho[j]
+        s0 = A[0, 0]
+        sb = bv[0]
+        det = d_solve(A, bv, m)
+        if abs(det) >= det_min:
+            val = bv[0]
+            for k in range(dim):
+                val -= o[k] * bv[k + 1]
+        elif s0 > 0.0:
+            val = sb / s0
+        else:
+            val = rho0
+        rho[i] = max(val, rho0)
+
+
+# ------------------------------------------------------------------ MLS density re-initialisation (fluid.mls)
+@cuda.jit(device=True)
+def d_det4(m00, m01, m02, m03, m10, m11, m12, m13, m20, m21, m22, m23, m30, m31, m32, m33):
+    """``fluid.mls._det4``: a 4 x 4 determinant by 2 x 2 minors."""
+    s0 = m00 * m11 - m10 * m01
+    s1 = m00 * m12 - m10 * m02
+    s2 = m00 * m13 - m10 * m03
+    s3 = m01 * m12 - m11 * m02
+    s4 = m01 * m13 - m11 * m03
+    s5 = m02 * m13 - m12 * m03
+    c5 = m22 * m33 - m32 * m23
+    c4 = m21 * m33 - m31 * m23
+    c3 = m21 * m32 - m31 * m22
+    c2 = m20 * m33 - m30 * m23
+    c1 = m20 * m32 - m30 * m22
+    c0 = m20 * m31 - m30 * m21
+    return s0 * c5 - s1 * c4 + s2 * c3 + s3 * c2 - s4 * c1 + s5 * c0
+
+
+@cuda.jit
+def k_mls(P, rho, mass, kind, n, start, lo, inv_cell, nx, ny, nz, kernel, ad, h, min_det, out):
+    """``fluid.mls.mls_density`` (001_14936b82710365b2.txt Eq. 9-12): the MLS density of
+    every fluid particle into ``out`` (boundary particles: their own); whole rows of cells
+    in the CPU's order."""
+    three = P.shape[0] == 3
+    zc = P.shape[0] - 1
+    ih = 1.0 / h
+    for a in range(cuda.grid(1), n, cuda.gridsize(1)):
+        if kind[a] != 0:
+            out[a] = rho[a]
+            continue
+        xa = P[0, a]
+        za = P[zc, a]
+        ya = P[1, a] if three else 0.0
+        cx = d_clamp_cell(xa, lo[0], inv_cell, nx)
+        cz = d_clamp_cell(za, lo[2], inv_cell, nz)
+        cy = d_clamp_cell(ya, lo[1], inv_cell, ny) if three else 0
+        a00 = 0.0
+        a01 = 0.0
+        a02 = 0.0
+        a03 = 0.0
+        a11 = 0.0
+        a12 = 0.0
+        a13 = 0.0
+        a22 = 0.0
+        a23 = 0.0
+        a33 = 0.0
+        s0 = 0.0
+        s1 = 0.0
+        s2 = 0.0
+        s3 = 0.0
+        dys = 3 if three else 1
+        for dz in range(-1, 2):
+            for k in range(dys):
+                dy = k - 1 if three else 0
+                yy = cy + dy
+                zz = cz + dz
+                if yy < 0 or yy >= ny or zz < 0 or zz >= nz:
+                    continue
+                base = nx * (yy + ny * zz)
+                j0 = start[base + max(cx - 1, 0)]
+                j1 = start[base + min(cx + 1, nx - 1) + 1]
+                for b in range(j0, j1):
+                    rx = (xa - P[0, b]) * ih
+                    rz = (za - P[zc, b]) * ih
+                    ry = (ya - P[1, b]) * ih if three else 0.0
+                    q = math.sqrt(rx * rx + ry * ry + rz * rz)
+                    mw = mass[b] * d_w_value(kernel, q, ad)
+                    vw = mw / rho[b]
+                    a00 += vw
+                    a01 += vw * rx
+                    a02 += vw * ry
+                    a03 += vw * rz
+                    a11 += vw * rx * rx
+                    a12 += vw * rx * ry
+                    a13 += vw * rx * rz
+                    a22 += vw * ry * ry
+                    a23 += vw * ry * rz
+                    a33 += vw * rz * rz
+                    s0 += mw
+                    s1 += mw * rx
+                    s2 += mw * ry
+                    s3 += mw * rz
+        if not three:
+            a22 = 1.0
+        shepard = s0 / a00
+        scale = a00 * a11 * a22 * a33
+        det = d_det4(a00, a01, a02, a03, a01, a11, a12, a13, a02, a12, a22, a23, a03, a13, a23, a33)
+        if scale > 0.0 and det / scale > min_det:
+            num = d_det4(s0, a01, a02, a03, s1, a11, a12, a13, s2, a12, a22, a23, s3, a13, a23, a33)
+            out[a] = num / det
+        else:
+            out[a] = shepard
+
+
+@cuda.jit
+def k_mls_apply(rho, new, rhom1, shift, n):
+    """The densities from :func:`k_mls`; with ``shift`` (Verlet) the n-1 density moved by
+    the same correction (Fluid._reinitialise_density)."""
+    for i in range(cuda.grid(1), n, cuda.gridsize(1)):
+        if shift:
+            rhom1[i] += new[i] - rho[i]
+        rho[i] = new[i]

@@ -73,6 +73,7 @@ class DeviceState:
         self.accw = None
         self._groups = None  # the group loads' arrays on the device (made when first needed)
         self._g3 = None  # gravity (x, y, z) of the Adami pass
+        self.goff = None  # the bodies' mDBC ghost vectors (dim, ids in their range; made when first needed)
 
     # ------------------------------------------------------------------ memory
     def device_bytes(self) -> dict:
@@ -85,6 +86,8 @@ class DeviceState:
         cells = {k: getattr(self, k).nbytes for k in ("start", "fill", "sums")}
         if self.accw is not None:
             part["accw"] = self.accw.nbytes
+        if self.goff is not None:  # by id over the bodies' id range only
+            part["goff"] = self.goff.nbytes
         fixed = {k: getattr(self, k).nbytes for k in ("bounds", "flag", "lo3", "lo", "zero_aux")}
         fixed.update({f"groups.{i}": a.nbytes for i, a in enumerate(self._groups or ())})
         return {"per_particle": part, "per_cell": cells, "fixed": fixed}
@@ -223,6 +226,31 @@ class DeviceState:
         if ids is not None and len(ids):
             K.k_place_one[K.launch(len(ids))](self.slot, cuda.to_device(np.ascontiguousarray(ids, np.int32)),
                                               cuda.to_device(np.ascontiguousarray(acc, np.float64)), self.accw)
+
+    def reinitialise_density(self, kernel: int, ad: float, h: float, min_det: float) -> None:
+        """MLS densities of the fluid particles (fluid.mls; Fluid._reinitialise_density),
+        into the sort's scratch array, then applied (Verlet's n-1 density shifted with them)."""
+        g3 = self.grid
+        nx, ny, nz = g3.shape
+        new = self.scratch["f1"]
+        K.k_mls[K.launch(self.n)](self.a["P"], self.a["rho"], self.a["mass"], self.a["kind"], self.n, self.start,
+                                  self.lo3, 1.0 / g3.cell, nx, ny, nz, kernel, ad, h, min_det, new)
+        shift = "aux_rho" in self.a and "aux_pos" not in self.a  # Verlet's n-1 density
+        K.k_mls_apply[K.launch(self.n)](self.a["rho"], new, self.a["aux_rho"] if shift else new, shift, self.n)
+
+    def mdbc(self, offsets: np.ndarray, id_lo: int, kernel: int, ad: float, h: float, rho0: float,
+             det_min: float) -> None:
+        """The bodies' mDBC densities (fluid.boundary_correction.mdbc_density); ``offsets``
+        (m, dim) [m] the ghost vectors of the ids ``id_lo .. id_lo + m - 1``."""
+        m = offsets.shape[0]
+        if self.goff is None or self.goff.shape[1] != m:
+            self.goff = cuda.device_array((self.dim, m), np.float64)
+        self.goff.copy_to_device(np.ascontiguousarray(offsets.T))
+        g3 = self.grid
+        nx, ny, nz = g3.shape
+        K.k_mdbc[K.launch(self.n)](self.a["P"], self.a["rho"], self.a["mass"], self.a["kind"], self.a["ids"],
+                                   self.goff, id_lo, self.n, self.start, self.lo3, 1.0 / g3.cell, nx, ny, nz, kernel,
+                                   ad, h, rho0, det_min)
 
     def adami(self, has_acc: bool, kernel: int, ad: float, h: float, rho0: float, B: float, gamma: float,
               g: np.ndarray, kmin: int, kmax: int, p_floor: float) -> None:
