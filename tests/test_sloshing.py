@@ -84,7 +84,7 @@ def test_westergaard_3d_quick():
     assert r["passed"] and r["target"].startswith("quick: ")  # judged by its declared tolerances below
     # the stated target (raw < 0.04, face < 0.02 RMS) is not met at this resolution, and says so
     assert r["stated"]["tolerances"] == {"rms_raw_vs_exact": 0.04, "rms_face_vs_exact": 0.02}
-    assert "slice" in r["departure"]["criterion"]
+    assert r["stated"]["met"] is False and "departure" not in r
     assert r["particles"] > 5000 and m["width_m"] == 0.3
     assert m["rms_face_vs_exact"] < 0.07
     assert m["kp_base_face"] == pytest.approx(m["kp_base_exact"], rel=0.06)
@@ -156,12 +156,15 @@ def test_spheric10_first_impact():
 
 @pytest.mark.slow
 def test_westergaard_3d_full():
-    """A 0.3 m slice at dx = 0.05 m with walls="adami" (the case's set-up): both targets
-    of the 2-D case (measured raw 0.032, face 0.019; see the case's docstring)."""
+    """The whole 3.0 x 1.0 x 1.5 m tank at dx = 0.05 m with walls="adami", 1 + 1 periods
+    (the case's set-up): both targets of the 2-D case on the mid-plane (see the case's
+    docstring for the measured figures), and the rows next to the side walls within 0.02
+    of the mid-plane's (the flow is uniform across in theory; 0.010 at dx = 0.1 m)."""
     r = validation.run("westergaard-3d")
     m = r["metrics"]
     assert r["passed"] and m["rms_raw_vs_exact"] < 0.04 and m["rms_face_vs_exact"] < 0.02
     assert m["kp_base_face"] == pytest.approx(m["kp_base_exact"], rel=0.03)
+    assert m["kp_face_side_vs_mid_max"] < 0.02 and r["particles"] == 44628
 
 
 @pytest.mark.slow
