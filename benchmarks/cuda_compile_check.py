@@ -42,8 +42,8 @@ def main() -> int:
     sigs = {
      "k_bin": (f8_2, i8, f8_1, f8, i8, i8, i8, i4_1, i4_1),
      "k_scan_chunks": (i4_1, i8, i4_1),
-     "k_scan_sums": (i4_1, i8),
-     "k_scan_add": (i4_1, i8, i4_1, i4_1),
+     "k_scan_add": (i4_1, i8, i4_1),
+     "k_copy_i4": (i4_1, i8, i4_1),
      "k_fill": (i4_1, i8, i4_1, i4_1),
      "k_order": (i4_1, i4_1, f8_2, i8),
      "k_gather2": (f8_2, f8_2, i4_1, i8),

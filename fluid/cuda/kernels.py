@@ -40,6 +40,11 @@ from fluid.kernels import WENDLAND
 TPB = 128
 #: most blocks of a launch (every kernel loops over its items with the grid's stride)
 MAX_BLOCKS = 65535
+def _simulator() -> bool:
+    from fluid.cuda import simulator
+    return simulator()
+
+
 #: the launch on numba's CUDA simulator, which runs each thread as a Python thread: two
 #: blocks of a few threads (the grid-stride loops and the block reduction still run over
 #: several blocks), so that starting threads does not cost more than the kernels' work
@@ -53,8 +58,7 @@ def launch(n: int) -> tuple:
     order of atomic sums)."""
     global _SIM
     if _SIM is None:
-        from fluid.cuda import simulator
-        _SIM = simulator()
+        _SIM = _simulator()
     if _SIM:
         return SIM_LAUNCH
     return min(MAX_BLOCKS, max(1, (n + TPB - 1) // TPB)), TPB
@@ -131,8 +135,9 @@ def k_bin(P, n, lo, inv_cell, nx, ny, nz, cell, count):
         cuda.atomic.add(count, c + 1, 1)
 
 
-#: entries of the offsets array each thread of the scan sums in turn
-SCAN_CHUNK = 256
+#: entries of the offsets array each thread of the scan sums in turn (fewer on the
+#: simulator, so that its small grids take the scan's recursion too)
+SCAN_CHUNK = 4 if _simulator() else 256
 
 
 @cuda.jit
@@ -150,27 +155,18 @@ def k_scan_chunks(a, m, sums):
 
 
 @cuda.jit
-def k_scan_sums(sums, k):
-    """Inclusive scan of the chunk totals (one thread: a few thousand at most per million
-    cells)."""
-    if cuda.grid(1) != 0:
-        return
-    s = 0
-    for j in range(k):
-        s += sums[j]
-        sums[j] = s
-
-
-@cuda.jit
-def k_scan_add(a, m, sums, fill):
-    """Add the preceding chunks' total to every entry; copy ``a[:-1]`` into ``fill`` (the
-    cursors of :func:`k_fill`)."""
+def k_scan_add(a, m, sums):
+    """Add the total of the preceding chunks (``sums`` scanned) to every entry of ``a``."""
     for j in range(cuda.grid(1), m, cuda.gridsize(1)):
         c = j // SCAN_CHUNK
         if c > 0:
             a[j] += sums[c - 1]
-        if j < m - 1:
-            fill[j] = a[j]
+
+
+@cuda.jit
+def k_copy_i4(a, m, out):
+    for j in range(cuda.grid(1), m, cuda.gridsize(1)):
+        out[j] = a[j]
 
 
 @cuda.jit

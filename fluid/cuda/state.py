@@ -63,8 +63,12 @@ class DeviceState:
                         "i1": cuda.device_array(n, np.int8)}
         self.start = cuda.device_array(self.ncells + 2, np.int32)
         self.fill = cuda.device_array(self.ncells + 1, np.int32)
-        self.nchunks = (self.ncells + 2 + K.SCAN_CHUNK - 1) // K.SCAN_CHUNK
-        self.sums = cuda.device_array(self.nchunks, np.int32)
+        #: the chunk totals of each level of the scan of the cell counts
+        self.sums = []
+        m = self.ncells + 2
+        while m > 1:
+            m = (m + K.SCAN_CHUNK - 1) // K.SCAN_CHUNK
+            self.sums.append(cuda.device_array(m, np.int32))
         self.slot = cuda.device_array(ids_max + 1, np.int32)
         self.bounds = cuda.device_array(3, np.float64)
         self.flag = cuda.device_array(1, np.int64)
@@ -83,7 +87,8 @@ class DeviceState:
         part.update({f"scratch.{k}": v.nbytes for k, v in self.scratch.items()})
         for k in ("drho", "cs", "pr2", "acc", "xs", "G", "cell", "perm", "slot"):
             part[k] = getattr(self, k).nbytes
-        cells = {k: getattr(self, k).nbytes for k in ("start", "fill", "sums")}
+        cells = {k: getattr(self, k).nbytes for k in ("start", "fill")}
+        cells.update({f"sums.{i}": a.nbytes for i, a in enumerate(self.sums)})
         if self.accw is not None:
             part["accw"] = self.accw.nbytes
         if self.goff is not None:  # by id over the bodies' id range only
@@ -172,14 +177,23 @@ class DeviceState:
         m = self.ncells + 2
         K.k_zero_i4[K.launch(m)](self.start, m)
         K.k_bin[K.launch(n)](self.a["P"], n, self.lo, 1.0 / g.cell, nx, ny, nz, self.cell, self.start)
-        K.k_scan_chunks[K.launch(self.nchunks)](self.start, m, self.sums)
-        K.k_scan_sums[1, 1](self.sums, self.nchunks)
-        K.k_scan_add[K.launch(m)](self.start, m, self.sums, self.fill)
+        self._scan(self.start, m, 0)
+        K.k_copy_i4[K.launch(m - 1)](self.start, m - 1, self.fill)
         K.k_fill[K.launch(n)](self.cell, n, self.fill, self.perm)
         K.k_order[K.launch(self.ncells + 1)](self.perm, self.start, self.a["P"], self.ncells)
         K.k_read_i4[1, 1](self.start, self.ncells, self.flag)
         inside = int(self.flag.copy_to_host()[0])
         return n - inside
+
+    def _scan(self, a, m: int, level: int) -> None:
+        """Inclusive scan of ``a[0:m]`` in place: chunks of K.SCAN_CHUNK scanned in
+        parallel, their totals scanned the same way (recursively), then added back."""
+        sums = self.sums[level]
+        k = (m + K.SCAN_CHUNK - 1) // K.SCAN_CHUNK
+        K.k_scan_chunks[K.launch(k)](a, m, sums)
+        if k > 1:
+            self._scan(sums, k, level + 1)
+            K.k_scan_add[K.launch(m)](a, m, sums)
 
     def outside_rows(self, outside: int) -> np.ndarray:
         """Rows (before the gather) of the particles that left the domain, in row order."""
