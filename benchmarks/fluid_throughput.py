@@ -55,13 +55,13 @@ runs every kernel in Python: its timings are meaningless) and ``bytes_per_partic
 the arrays the device state allocated. The GPU path covers the whole CPU step (both
 kernels, artificial and laminar viscosity, alpha_wall, the Fourtakas, Molteni and
 renormalised diffusions, the surface fade, DBC and Adami walls, bodies' boundary
-particles, XSPH, symplectic and Verlet, the time-step reductions, the NaN guard) but MLS
-re-initialisation, float32 pair terms and the bodies' mDBC (refused; fluid.cuda), in
-float64. Device memory per particle (fluid.cuda.state; the state in float64, the sort's
-buffers and the rates included): 3-D symplectic 226 B (250 with XSPH; +24 with
-``diffusion="antuono"``, +24 with moving Adami walls), 3-D Verlet 202 B, 2-D symplectic
-178 B, 2-D Verlet 162 B; the cell offsets add 8 B per cell (0.5 cells per particle in
-the 3-D case: 4 B). So 80 GB hold about 350 M particles (3-D symplectic) or 390 M
+particles with mDBC, XSPH, MLS re-initialisation, symplectic and Verlet, the time-step
+reductions, the NaN guard) but float32 pair terms (refused; fluid.cuda), in float64.
+Device memory per particle (fluid.cuda.state; the state in float64, the sort's buffers
+and the rates included): 3-D symplectic 226 B (250 with XSPH; +24 with
+``diffusion="antuono"``, +24 with moving Adami walls, +24 per body particle with mDBC),
+3-D Verlet 202 B, 2-D symplectic 178 B, 2-D Verlet 162 B; the cell offsets add 8 B per
+cell (0.5 cells per particle in the 3-D case: 4 B). So 80 GB hold about 350 M particles (3-D symplectic) or 390 M
 (Verlet). No GPU figure exists yet: no GPU machine was lent to the session that wrote it
 (2026-11-25); on the simulator the tests compare it with the CPU path to round-off
 (tests/test_fluid_cuda.py), and benchmarks/cuda_compile_check.py compiles every kernel
