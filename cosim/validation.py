@@ -33,7 +33,8 @@ from cosim.errors import InputError
 CASE_MODULES = ("cosim.validations.catenary", "cosim.validations.cable", "cosim.validations.fluid",
                 "cosim.validations.sloshing", "cosim.validations.coupling", "cosim.validations.floating",
                 "cosim.validations.waves", "cosim.validations.tanks", "cosim.validations.elastic",
-                "cosim.validations.arch_rib")
+                "cosim.validations.arch_rib", "cosim.validations.elastic_gate",
+                "cosim.validations.dambreak_lobovsky")
 
 #: where the stated targets are written
 VALIDATION_DOC = "docs/VALIDATION.md"

@@ -1,0 +1,68 @@
+"""The dambreak-lobovsky case (cosim/validations/dambreak_lobovsky.py; seed 002 Appendix A,
+Lobovsky et al. 2014, H = 0.3 m): the measured levels as refdata SOURCE.txt describes
+them, the arrival time, the comparison's arithmetic and the quick variant."""
+
+import math
+
+import numpy as np
+import pytest
+
+from cosim.validations import dambreak_lobovsky as lob
+
+
+def test_the_measured_levels_are_the_ones_source_txt_describes():
+    data = lob.measured()
+    assert set(data) == set(lob.GAUGES) and [len(r) for r in data.values()] == [1, 2, 2, 2]
+    frame = math.sqrt(9.81 / 0.3) / 300.0  # t* of one 1/300 s frame
+    for runs in data.values():
+        for d in runs.values():
+            assert d.shape == (590, 2) and np.diff(d[:, 0]) == pytest.approx(frame, abs=1.1e-4)  # 6 digits
+            assert d[-1, 0] == pytest.approx(589 * frame, rel=1e-5)
+    assert data["H1"]["ETSIN 01"][0, 1] == 1.0  # inside the column
+    # before the reflected bore the two runs agree within 0.02 H (RMS), after it they do not
+    m = lob.compare(*_measured_as_ours(), 11.0)
+    assert max(m["repeatability_rms_early"].values()) < 0.02
+    assert max(m["repeatability_rms_late"].values()) > 0.1
+
+
+def _measured_as_ours(run="ETSIN 01"):
+    data = lob.measured()
+    t = data["H1"]["ETSIN 01"][:, 0]
+    return t, {g: np.interp(t, r[run][:, 0], r[run][:, 1]) for g, r in data.items()}
+
+
+def test_arrival_is_the_first_crossing_of_the_level():
+    t = np.linspace(0.0, 4.0, 41)
+    assert lob.arrival(t, np.clip(t - 1.0, 0.0, None), 0.05) == pytest.approx(1.05, abs=1e-12)
+    assert math.isnan(lob.arrival(t, np.zeros_like(t)))  # dry: never
+    assert math.isnan(lob.arrival(t, np.ones_like(t)))  # wet from the start (H1)
+
+
+def test_compare_against_a_measured_run_itself():
+    """One measured run taken as ours: zero RMS and zero arrival error against itself, the
+    runs' repeatability against the other, and a level raised by 0.05 H everywhere reads
+    RMS 0.05 over the judged window."""
+    t, h = _measured_as_ours("ETSIN 01")
+    m = lob.compare(t, h, 11.0)
+    for g in ("H2", "H3", "H4"):
+        assert m["rms_early"][f"{g}.ETSIN 01"] < 1e-12
+        assert m["rms_early"][f"{g}.ETSIN 02"] == pytest.approx(m["repeatability_rms_early"][g], rel=1e-6)
+    assert m["arrival_err_abs_max"] < 0.1  # against the mean of both runs
+    m = lob.compare(t, {g: v + 0.05 for g, v in h.items()}, 11.0)
+    assert m["rms_early"]["H1.ETSIN 01"] == pytest.approx(0.05, rel=1e-9)
+
+
+def test_dambreak_lobovsky_validation_quick():
+    """dx = H/20, t* <= 5 (cosim validate dambreak-lobovsky --quick): the surge at the four
+    gauges against both measured runs within the quick variant's 0.06 RMS, its arrival at
+    H2-H4 within 0.25 in t*; the stated 0.05 is kept in the record with its value."""
+    from cosim import validation
+
+    r = validation.run("dambreak-lobovsky", quick=True)
+    assert r["passed"], r["outside_tolerance"]
+    assert r["stated"]["tolerances"]["rms_early_max"] == 0.05
+    m = r["metrics"]
+    assert m["rms_early_max"] < 0.06 and m["arrival_err_abs_max"] < 0.25
+    assert set(m["rms_early"]) == {"H1.ETSIN 01", "H2.ETSIN 01", "H2.ETSIN 02", "H3.ETSIN 01", "H3.ETSIN 02",
+                                   "H4.ETSIN 01", "H4.ETSIN 02"}
+    assert set(m["arrival_t_star"]) == {"H2", "H3", "H4"}
