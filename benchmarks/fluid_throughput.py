@@ -89,6 +89,9 @@ import time
 # ``fluid`` package: drop that folder
 _here = os.path.dirname(os.path.abspath(__file__))
 sys.path[:] = [p for p in sys.path if os.path.abspath(p or os.curdir) != _here]
+sys.path.insert(0, _here)
+from machine import cpu_name, vector_extensions  # noqa: E402  (benchmarks/machine.py, beside this script)
+sys.path.pop(0)
 
 
 #: where the fluid steps (--device): FluidConfig.device
@@ -115,7 +118,7 @@ def device_line() -> str:
 
 
 def build(case: str, dp: float, integrator: str = "verlet", nu: float = 0.0, xsph_eps: float = 0.0,
-          wall_model: str = "dbc"):
+          wall_model: str = "dbc", precision: str = "float64"):
     import numpy as np
 
     from fluid.geometry import assemble, block, set_hydrostatic, tank_walls
@@ -135,17 +138,18 @@ def build(case: str, dp: float, integrator: str = "verlet", nu: float = 0.0, xsp
     b = assemble(len(inner_lo), dp, 1000.0, col, [(walls, Kind.FIXED_WALL, 0)])
     cfg = FluidConfig(dim=len(inner_lo), dx=dp, device=DEVICE, c0=20 * math.sqrt(g * H), alpha=0.02, delta=0.1,
                       diffusion="fourtakas", cfl=0.2, integrator=integrator, nu=nu, xsph_eps=xsph_eps, walls=wall_model,
+                      precision=precision,
                       domain_lo=tuple(inner_lo - 0.1), domain_hi=tuple(inner_hi + 0.5))
     set_hydrostatic(b.particles, H, 1000.0, cfg.speed_of_sound, cfg.gamma, g)
     return cfg, b.particles
 
 
 def run(case: str, dp: float, steps: int, integrator: str = "verlet", nu: float = 0.0, xsph_eps: float = 0.0,
-        walls: str = "dbc") -> dict:
+        walls: str = "dbc", precision: str = "float64") -> dict:
     from fluid.particles import Kind
     from fluid.solver import Fluid
 
-    cfg, ps = build(case, dp, integrator, nu, xsph_eps, walls)
+    cfg, ps = build(case, dp, integrator, nu, xsph_eps, walls, precision)
     t0 = time.perf_counter()
     f = Fluid(cfg, ps)
     f.initialize(0.0)
@@ -174,12 +178,59 @@ def run(case: str, dp: float, steps: int, integrator: str = "verlet", nu: float 
         "ms_per_step": round(per_step * 1e3, 3),
         "particle_steps_per_s": round(n * steps / wall),
         "pair_loops_per_s": round((2 if integrator == "symplectic" else 1) * n * steps / wall),
-        "integrator": integrator, "nu": nu, "xsph_eps": xsph_eps, "walls": walls,
+        "integrator": integrator, "precision": precision, "nu": nu, "xsph_eps": xsph_eps, "walls": walls,
         "particle_steps_per_cpu_s": round(n * steps / cpu),
         "cpu_s_per_wall_s": round(cpu / wall, 2),  # < threads: the machine is shared
         "bytes_per_particle": round(mem / n),
         "threads": __import__("numba").get_num_threads(),
     }
+
+
+def profile(case: str, dp: float, steps: int, integrator: str = "verlet", precision: str = "float64") -> dict:
+    """CPU seconds of each part of a step, summed over ``steps`` steps after a warm-up one,
+    as shares of the whole: every part's function is wrapped with a CPU-time counter."""
+    import fluid.equations as eq
+    import fluid.neighbours as nb
+    import fluid.solver as sv
+    from fluid.particles import ParticleSet
+    from fluid.solver import Fluid
+
+    cost = {}
+
+    def timed(name, fn):
+        def wrapper(*args, **kw):
+            c0 = time.process_time()
+            try:
+                return fn(*args, **kw)
+            finally:
+                cost[name] = cost.get(name, 0.0) + time.process_time() - c0
+        return wrapper
+
+    parts = [(nb, "bin_particles", "sort: binning"), (nb, "counting_sort", "sort: counting sort"),
+             (nb, "order_cells_by_x", "sort: x-order in cells, sub-bin table"),
+             (ParticleSet, "permute", "gather (reorder every array)"), (eq, "pack", "packing (EOS, table)"),
+             (eq, "pack_f32", "packing (float32 table)"),
+             (eq, "interact", "pair loop"), (sv, integrator if integrator == "verlet" else "predictor", "integrator"),
+             (sv, "corrector", "integrator"), (sv, "stable_dt", "time step"),
+             (sv, "first_non_finite", "NaN check"), (Fluid, "_group_sums", "group loads")]
+    saved = [(m, a, getattr(m, a)) for m, a, _ in parts]
+    cfg, ps = build(case, dp, integrator, precision=precision)
+    f = Fluid(cfg, ps)
+    f.initialize(0.0)
+    f.step(f.max_dt())
+    try:
+        for m, a, name in parts:
+            setattr(m, a, timed(name, getattr(m, a)))
+        c0 = time.process_time()
+        for _ in range(steps):
+            f.step(f.max_dt())
+        total = time.process_time() - c0
+    finally:
+        for m, a, fn in saved:
+            setattr(m, a, fn)
+    cost["rest (Python, allocation)"] = total - sum(cost.values())
+    return {"particles": f.ps.n, "steps": steps, "cpu_s_per_step": total / steps,
+            "shares": {k: v / total for k, v in sorted(cost.items(), key=lambda kv: -kv[1])}}
 
 
 def main(argv=None):
@@ -194,6 +245,10 @@ def main(argv=None):
     ap.add_argument("--xsph", type=float, default=0.0, help="XSPH epsilon [-] (0: off, as the reference case)")
     ap.add_argument("--walls", choices=["dbc", "adami"], default="dbc",
                     help="tank-wall densities (FluidConfig.walls; dbc: the reference case)")
+    ap.add_argument("--precision", choices=["float64", "float32"], default="float64",
+                    help="arithmetic of the pair terms (FluidConfig.precision)")
+    ap.add_argument("--profile", action="store_true",
+                    help="print each part's share of a step's CPU time (run it with --threads 1)")
     ap.add_argument("--device", choices=["cpu", "cuda"], default="cpu",
                     help="where the fluid steps (FluidConfig.device; cuda: numba-cuda, or its simulator with "
                          "NUMBA_ENABLE_CUDASIM=1)")
@@ -206,6 +261,8 @@ def main(argv=None):
     t0 = time.perf_counter()
     import fluid.solver  # noqa: F401  (imports numba modules; compilation is lazy)
     print(f"import: {time.perf_counter() - t0:.2f} s; numba cache {'cold' if a.cold else 'as found'}")
+    print(f"cpu: {cpu_name()}; vector extensions: {' '.join(vector_extensions()) or 'none found'}; "
+          f"{os.cpu_count()} cores; numba {numba.__version__}")
     global DEVICE
     DEVICE = a.device
     if a.device == "cuda":
@@ -214,7 +271,15 @@ def main(argv=None):
     cases = ["2d", "3d"] if a.case == "all" else [a.case]
     for c in cases:
         for dp in sizes[c]:
-            r = run(c, dp, a.steps, a.integrator, a.nu, a.xsph, a.walls)
+            if a.profile:
+                r = profile(c, dp, a.steps, a.integrator, a.precision)
+                print(f"{c} dp={dp} particles={r['particles']} steps={r['steps']} "
+                      f"cpu_ms_per_step={1e3 * r['cpu_s_per_step']:.1f} threads={numba.get_num_threads()} "
+                      f"load_avg_1min={os.getloadavg()[0]:.2f}")
+                for k, v in r["shares"].items():
+                    print(f"  {100 * v:5.1f} %  {k}")
+                continue
+            r = run(c, dp, a.steps, a.integrator, a.nu, a.xsph, a.walls, a.precision)
             r["load_avg_1min"] = round(os.getloadavg()[0], 2)  # other work on the machine
             r["device"] = DEVICE
             print(" ".join(f"{k}={v}" for k, v in r.items()))

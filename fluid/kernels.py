@@ -77,6 +77,35 @@ def grad_shape(kernel: int, q: float) -> float:
     return (-0.75 * t2 * t2 + 3.0 * t1 * t1) / qs
 
 
+#: the constants of :func:`grad_shape_f32` and :func:`w_value_f32` as float32 (a float64
+#: literal would promote the whole expression to float64)
+_F0, _F1, _F2, _FH, _F3Q, _F34, _F3, _F4, _FQMIN = (np.float32(v) for v in (0.0, 1.0, 2.0, 0.5, 0.75, 0.25, 3.0,
+                                                                               4.0, 1e-12))
+
+
+@njit(**_OPTS)
+def grad_shape_f32(kernel: int, q):
+    """:func:`grad_shape` in float32 arithmetic (``q`` a float32) for the float32 pair loop."""
+    if kernel == WENDLAND:
+        t = max(_F1 - _FH * q, _F0)
+        return t * t * t
+    t2 = max(_F2 - q, _F0)
+    t1 = max(_F1 - q, _F0)
+    qs = max(q, _FQMIN)
+    return (-_F3Q * t2 * t2 + _F3 * t1 * t1) / qs
+
+
+@njit(**_OPTS)
+def w_value_f32(kernel: int, q):
+    """:func:`w_value` with ``ad = 1`` in float32 arithmetic (``q`` a float32)."""
+    if kernel == WENDLAND:
+        t = max(_F1 - _FH * q, _F0)
+        return t * t * t * t * (_F2 * q + _F1)
+    t2 = max(_F2 - q, _F0)
+    t1 = max(_F1 - q, _F0)
+    return _F34 * (t2 * t2 * t2 - _F4 * t1 * t1 * t1)
+
+
 @njit(**_OPTS)
 def grad_scale(kernel: int, ad: float, h: float) -> float:
     """``F / grad_shape`` [1/m^(dim+2)]: ``-5 alpha_d / h^2`` (Wendland), ``alpha_d / h^2``

@@ -28,6 +28,7 @@ from fluid.solver import Fluid, FluidConfig
     (dict(diffusion_at_surface="no"), "diffusion_at_surface"),
     (dict(integrator="euler"), "integrator"),
     (dict(domain_lo=(0.0, 0.0)), "domain"),
+    (dict(precision="float16"), "precision"),
 ])
 def test_bad_configuration_is_refused_with_the_reason(bad, word):
     args = dict(c0=30.0)
@@ -222,3 +223,23 @@ def test_moving_wall_follows_its_prescribed_velocity_and_pushes_the_fluid():
     assert F[1, 0] < 0
     front = (f.ps.kind == Kind.FLUID) & (f.ps.pos[:, 0] < 0.16)
     assert f.ps.vel[front, 0].mean() > 0.05
+
+
+def test_float32_pair_terms_follow_the_float64_run():
+    """FluidConfig(precision="float32") (float32 pair terms, float64 state): a small tank
+    of sheared water steps like the float64 run, within float32's round-off grown over
+    36 steps (measured 6e-7 of the largest speed, 1.4e-6 kg/m^3), and not equal to it."""
+    cfg, ps = small_tank()
+    ps.vel[ps.kind == Kind.FLUID, 0] = 0.3 * ps.pos[ps.kind == Kind.FLUID, 1]  # a shear, so that every term acts
+    runs = {}
+    for precision in ("float64", "float32"):
+        f = Fluid(FluidConfig(dx=cfg.dx, u_max=1.0, c0_factor=20, precision=precision), ps)
+        f.initialize(0.0)
+        f.advance(0.0, 0.01)
+        o = np.argsort(f.ps.ids)
+        runs[precision] = f.ps.vel[o], f.ps.rho[o], f.counters.steps
+    (v64, r64, n64), (v32, r32, n32) = runs["float64"], runs["float32"]
+    assert n64 == n32 > 5
+    dv = np.abs(v32 - v64).max() / np.abs(v64).max()
+    assert 0.0 < dv < 1e-5
+    assert np.abs(r32 - r64).max() < 1e-5 * cfg.rho0
