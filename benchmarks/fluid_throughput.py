@@ -15,31 +15,46 @@ The machine may be shared: ``cpu_s_per_wall_s`` below the thread count says so, 
 figure to compare between runs with ``--threads 1`` (alternate the runs being compared).
 ``--threads N`` sets NUMBA_NUM_THREADS, so that no idle worker thread spins on the CPU.
 
-Measured on this 2-core machine, quiet (load ~1: this process), 2 threads, session 3
-(DualSPHysics 5 figures of issue 3 in brackets):
+Measured 2026-11-25 on this machine: AMD EPYC (Zen 4), AVX-512 (8 float64 or 16 float32
+lanes; one 512-bit multiply or FMA issued per cycle, 2.6 GHz), 2 cores, loaded (load
+average 19-27 from other jobs), so one thread and CPU time: particle-steps per CPU-second,
+three alternating runs (``--threads 1``):
 
-    2-D dp = 0.01 m,  22 008 particles:  11.5-11.9 M particle-steps/s, 1.85-1.91 ms/step (3.2 M)
-    2-D dp = 0.005 m, 84 008 particles:  10.3-10.5 M, 8.0-8.1 ms/step                  (2.8 M)
-    3-D, 107 012 particles:               2.6-3.1 M, 35-42 ms/step                      (0.5 M)
+    case                                 float64            --precision float32
+    2-D dp = 0.01 m,  22 008 particles   5.45-5.70 M        4.0-5.3 M
+    3-D dp = 0.017 m, 107 012 particles  1.65-1.69 M        1.94-2.03 M (1.22x)
 
-Before this session (same machine, alternating in-process blocks of 30 steps, median):
-8.9-9.2 M in 2-D at dp = 0.01 m against 11.4-11.5 M after. One thread, CPU time (the
-figure that survives a loaded machine): 2-D 6.2-6.3 M per CPU-s (4.2-5.3 M before), 3-D
-1.66 M (1.39 M); the same from 6k to 1.3M particles (5.89, 6.18, 6.04, 5.85, 5.98 M at
-6k, 22k, 84k, 328k, 1.30M): the cost per step is linear in N. 237 bytes per particle
-kept between steps in 2-D, 265 in 3-D. Cold compilation of this case: ~9 s (``--cold``).
-At 1 thread a step is 67 % pair loop, 10 % gather (one pass reorders every array), 9 %
-sort (x-order and the sub-bin table 5 %, counting sort 3 %), 5 % packing, 3 % Verlet, 1 %
-time step, 1 % NaN check. What made the difference (fluid.equations.interact,
-fluid.neighbours): row ranges by table look-up instead of binary searches, the 8-norm's
-root without ``pow``, 256-particle chunks handed to free threads (numba's default, one
-block per thread, left a thread waiting on the one with the free surface), one fused
-gather. On a machine running other work, GNU OpenMP's spinning idle threads can take the
-cores the fluid needs: ``OMP_WAIT_POLICY=PASSIVE`` then helps (2-D, 2 threads beside
-other numba jobs: 1.4-1.6 -> 3.1-3.8 M), at 10-15 % on a quiet machine, so it is not set
-for you. Laminar viscosity adds 7 % to a step, XSPH 8 %, both 14 % (pair loop: 8.5, 9.5,
-17 %); nothing when off (the loop is compiled without them); the renormalised diffusion
-(``diffusion="antuono"``) +70 % (a second pair loop).
+The step's speed-up from 1 to 2 threads could not be measured (the load). Bytes per
+particle kept between steps: 237 (2-D), 265 (3-D); float32 adds 56. Where a step's CPU
+time goes at one thread (``--profile``; 3-D 68 ms, 2-D 4.2 ms per step, float64):
+
+    part                                       3-D      2-D
+    pair loop (fluid.equations.interact)       88.5 %   64.7 %
+    gather (one pass reorders every array)      3.8     10.6
+    packing (EOS, the pair loop's table)        1.9      5.6
+    integrator (Verlet)                         1.4      3.2
+    sort: x-order in cells, sub-bin table       1.1      4.5
+    sort: counting sort (serial)                0.6      2.7
+    sort: binning                               0.5      0.9
+    time step                                   0.5      2.2
+    group loads                                 0.7      1.3
+    NaN check (serial)                          0.5      0.8
+    the rest (Python)                           0.6      3.3
+
+The 3-D pair loop visits 218 pairs per particle (65 of them within 2h: the 9 rows of
+cells, each trimmed to 2h in x, hold 3.4 times the support) and spends about 59 floating-point
+operations on each (per 8-pair pass: 19 multiplications, 13 FMAs, 12 additions, one
+division, one square root), 22.7 GFLOP/s: 27 % of two AVX-512 FMAs per cycle (83 GFLOP/s),
+55 % of what Zen 4 issues (one, 41.5 GFLOP/s); on the pairs within 2h, 9 % and 18 %.
+``--precision float32`` (FluidConfig.precision) puts 16 pairs in a pass: see
+fluid.equations.interact for why that gives 1.22x and not 2. For the ratio to DualSPHysics
+see ``../shared/dualsphysics/README.md`` (measured side by side on other machines: 2-D
+4.6-5.6x on an AVX-512 machine, 3.3x on an AVX2 Zen 3 one, 3-D 2.0x there).
+Laminar viscosity adds 7 % to a 2-D step, XSPH 8 %, both 14 %, the renormalised
+diffusion (``diffusion="antuono"``) 70 % (a second pair loop), nothing when off. On a
+machine running other work, GNU OpenMP's spinning idle threads can take the cores the
+fluid needs: ``OMP_WAIT_POLICY=PASSIVE`` then helps, at 10-15 % on a quiet machine, so it
+is not set for you.
 ``--walls adami`` (tank-wall densities from the fluid's pressure, fluid.wall_density):
 see the cost measured in that module's docstring.
 
@@ -49,6 +64,8 @@ see the cost measured in that module's docstring.
     .venv/bin/python benchmarks/fluid_throughput.py --case 2d --dp 0.01 --dp 0.005 --dp 0.0025 --steps 20  # scaling
     .venv/bin/python benchmarks/fluid_throughput.py --case 2d --dp 0.01 --threads 1 --nu 1e-6 --xsph 0.1  # optional terms
     .venv/bin/python benchmarks/fluid_throughput.py --case 2d --dp 0.01 --threads 1 --walls adami  # tank walls
+    .venv/bin/python benchmarks/fluid_throughput.py --case 3d --threads 1 --steps 20 --precision float32
+    .venv/bin/python benchmarks/fluid_throughput.py --case 3d --threads 1 --steps 20 --profile  # shares of a step
 GPU (``--device cuda``; fluid.cuda, numba-cuda): the same cases stepped on an NVIDIA GPU.
 It prints the device (or that it is numba's CUDA simulator, NUMBA_ENABLE_CUDASIM=1, which
 runs every kernel in Python: its timings are meaningless) and ``bytes_per_particle`` from

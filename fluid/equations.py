@@ -729,11 +729,14 @@ def interact(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, out, acc, xs, G, 
     (3-D dam break after 30 steps; the tests' random sets within 3e-6), and the quick
     validations of the fluid (dambreak-2d, hydrostatic, hydrostatic-3d, westergaard,
     westergaard-3d) unchanged in their first four digits. It pays less than the lanes
-    promise, 1.2 times on the 3-D dam break's step (AMD EPYC Zen 4, one thread): the
-    loop is held by what each row of cells costs (the range look-up, the horizontal sums
-    of the accumulators, a loop of two or three passes whose exit is mispredicted), not
-    by its arithmetic: rounding the ranges up to 16 pairs instead of 8 (12 % more
-    pairs) changed the float64 loop's time by 1 %.
+    promise: the 3-D dam break's step 1.22 times faster (AMD EPYC Zen 4, one thread), the
+    2-D one 0.8-1.0 times (shorter rows, and the extra table :func:`pack_f32`, 5 % of a
+    2-D step). Neither loop reaches the floor its multiplications set on Zen 4 (one
+    512-bit multiply or FMA issued per cycle: 32 per 8 float64 pairs, 37 per 16 float32
+    pairs): float64 runs at 59 % of it, float32 at 45 %; what each row of cells costs
+    apart from its pairs (the range look-up, the horizontal sums of the accumulators,
+    the start and exit of a loop of two to four passes) is 12 % of the 3-D loop,
+    measured with the pair terms removed.
     """
     renorm = bool(prm[P_RENORM] > 0.0)
     f32 = bool(prm[P_F32] > 0.0)

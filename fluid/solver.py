@@ -156,9 +156,9 @@ class FluidConfig:
     #: fluid.cuda says what it covers)
     device: str = "cpu"
     #: arithmetic of the pair terms: "float64" (default, the reference) or "float32" (float32
-    #: terms summed into float64 per row of cells, positions as offsets in their cells:
-    #: 1.2 times faster on the 3-D dam break's pair loop, rates within 5e-7 of float64's;
-    #: fluid.equations.interact); integration and state stay float64
+    #: terms summed into float64 per row of cells, separations from offsets in the cells;
+    #: rates within 5e-7 of float64's; a 3-D step 1.2 times faster, a 2-D one not:
+    #: fluid.equations.interact); integration and state stay float64. CPU only
     precision: str = "float64"
     #: participant name
     name: str = "fluid"
