@@ -58,6 +58,8 @@ def main() -> int:
      "k_first_non_finite": (f8_2, f8_2, f8_1, i8, i8_1),
      "k_group_sums": (f8_2, f8_1, f8_2, i4_1, i8, f8_2, f8_2, f8_2),
      "k_zero_i4": (i4_1, i8), "k_zero_f8": (f8_1, i8), "k_zero2": (f8_2, i8), "k_read_i4": (i4_1, i8, i8_1),
+     "k_set_i8": (i8_1, i8),
+     "k_zero_all": (f8_2,),
      "k_adami": (f8_2, f8_1, i1_1, f8_2, b1, i8, i4_1, f8_1, f8, i8, i8, i8, i8, f8, f8, f8, f8, f8, f8_1, i8, i8, f8),
      "k_place_one": (i4_1, i4_1, f8_2, f8_2),
      "k_mls": (f8_2, f8_1, f8_1, i1_1, i8, i4_1, f8_1, f8, i8, i8, i8, i8, f8, f8, f8, f8_1),

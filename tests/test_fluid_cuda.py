@@ -55,14 +55,17 @@ STAGES = ("loop", "step1", "step10")
 FIELDS = ("acc", "drho", "disp", "vel", "rho", "F", "M", "bforce")
 
 
-@pytest.fixture(scope="module")
-def sim(tmp_path_factory):
-    out = tmp_path_factory.mktemp("cuda") / "sim.npz"
+def _worker(out: Path, *args) -> dict:
     env = dict(os.environ, NUMBA_ENABLE_CUDASIM="1")
-    r = subprocess.run([sys.executable, str(WORKER), str(out)], env=env, capture_output=True, text=True,
-                       timeout=900)
+    r = subprocess.run([sys.executable, str(WORKER), str(out), *args], env=env, capture_output=True, text=True,
+                       timeout=1800)
     assert r.returncode == 0, r.stderr[-4000:]
     return dict(np.load(out))
+
+
+@pytest.fixture(scope="module")
+def sim(tmp_path_factory):
+    return _worker(tmp_path_factory.mktemp("cuda") / "sim.npz")
 
 
 def _close(d, key_a, key_b):
@@ -119,6 +122,22 @@ def test_nan_guard_stops_with_the_cpu_message(sim):
     msg = str(sim["nan.gpu"])
     assert msg and msg == str(sim["nan.cpu"])
     assert "non-finite state" in msg and "particle id 40" in msg
+
+
+@pytest.mark.slow
+@requires_numba_cuda
+def test_a_coupled_scene_moves_its_body_as_on_the_cpu(tmp_path):
+    """A scene with a floating box (MuJoCo, the coupler, mDBC, the body placed every
+    exchange) run with fluid.device = "cuda" on the simulator and on the CPU: the box's
+    heave within RTOL of its largest value (measured: equal to the last digit the probes
+    keep), surge and pitch (zero by symmetry) within 1e-9 m and 1e-9 deg. About 25 s of
+    CPU, hence slow."""
+    d = _worker(tmp_path / "scene.npz", "--scene")
+    cpu, gpu = d["scene.cpu.box.heave"], d["scene.cuda.box.heave"]
+    assert np.abs(cpu).max() > 1e-4  # [m] it moved
+    assert np.abs(cpu - gpu).max() <= RTOL * np.abs(cpu).max()
+    assert np.abs(d["scene.cpu.box.surge"] - d["scene.cuda.box.surge"]).max() <= 1e-9
+    assert np.abs(d["scene.cpu.box.pitch"] - d["scene.cuda.box.pitch"]).max() <= 1e-9
 
 
 def _table(dim: int, saved: tuple, xsph: bool) -> int:

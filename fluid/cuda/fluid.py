@@ -241,6 +241,8 @@ class CudaFluid(Fluid):
             dev.place(ids[keep], pos, vel)
 
     def set_particle_motion(self, ids, pos, vel) -> None:
+        if self._grid is None:  # before initialize (the coupler places its bodies first): on the host copy
+            return super().set_particle_motion(ids, pos, vel)
         ids = np.asarray(ids, np.int64)
         if ids.size and (ids.min() < 0 or ids.max() >= self._alive.size or not self._alive[ids].all()):
             raise InputError("fluid: set_particle_motion got ids of particles that do not exist (removed?)")

@@ -712,6 +712,21 @@ def k_zero2(A, m):
 
 
 @cuda.jit
+def k_zero_all(A):
+    """Zero every entry of the 2-D array A."""
+    m = A.shape[1]
+    for j in range(cuda.grid(1), A.shape[0] * m, cuda.gridsize(1)):
+        A[j // m, j % m] = 0.0
+
+
+@cuda.jit
+def k_set_i8(a, v):
+    """``a[0] = v`` (no host-to-device copy)."""
+    if cuda.grid(1) == 0:
+        a[0] = v
+
+
+@cuda.jit
 def k_read_i4(a, j, out):
     """``out[0] = a[j]`` (one entry back to the host without a slice)."""
     if cuda.grid(1) == 0:

@@ -321,7 +321,7 @@ class DeviceState:
     def first_non_finite(self) -> int:
         """Lowest row with a non-finite position, velocity or density; -1 if none."""
         n = self.n
-        self.flag.copy_to_device(np.array([n], np.int64))
+        K.k_set_i8[1, 1](self.flag, n)
         K.k_first_non_finite[K.launch(n)](self.a["P"], self.a["V"], self.a["rho"], n, self.flag)
         i = int(self.flag.copy_to_host()[0])
         return -1 if i >= n else i
@@ -336,8 +336,8 @@ class DeviceState:
             self._groups = (cuda.device_array(F.shape, np.float64), cuda.device_array(M.shape, np.float64),
                             cuda.device_array((n_groups, self.dim), np.float64))
         dF, dM, dc = self._groups
-        dF.copy_to_device(F)
-        dM.copy_to_device(M)
+        K.k_zero_all[K.launch(dF.size)](dF)
+        K.k_zero_all[K.launch(dM.size)](dM)
         dc.copy_to_device(np.ascontiguousarray(centre, np.float64))
         K.k_group_sums[K.launch(self.n)](self.a["P"], self.a["mass"], self.acc, self.a["group"], self.n, dc, dF, dM)
         return dF.copy_to_host(), dM.copy_to_host()
