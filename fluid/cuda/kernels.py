@@ -17,6 +17,11 @@ order, so that the two paths agree to round-off in float64:
   2h, where every term is exactly zero (the kernel factors are clamped), so the sums hold
   the same non-zero terms in the same order; the CPU loop sums them in vector lanes, so
   the two differ by round-off only.
+* :func:`make_gradient_loop` is ``fluid.equations._make_gradient`` (the renormalised
+  gradients of ``diffusion="antuono"``); :func:`k_adami` is
+  ``fluid.wall_density.adami_wall_density``; :func:`k_mdbc` is
+  ``fluid.boundary_correction.mdbc_density``; :func:`k_mls` is ``fluid.mls.mls_density``
+  (these three walk whole rows of cells, as their CPU functions do).
 * :func:`k_predictor`, :func:`k_corrector`, :func:`k_verlet` are those of
   ``fluid.integrator``; :func:`d_block_max3` (in the pair loop) its ``_bounds``; :func:`k_first_non_finite`
   its ``first_non_finite`` (the lowest row, as the CPU's serial scan finds).
