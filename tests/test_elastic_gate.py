@@ -69,3 +69,17 @@ def test_elastic_gate_validation_quick():
     assert set(m["rms_rel_vs_numerical"]) == {f"{n}.{k}" for n in eg.NUMERICAL for k in "xy"}
     assert r["passed"] == (m["rms_rel_x"] <= 0.15 and m["rms_rel_y"] <= 0.15
                            and abs(m["peak_lag_s_x"]) <= 0.04 and abs(m["peak_lag_s_y"]) <= 0.04)
+
+
+@pytest.mark.slow
+def test_elastic_gate_validation_full():
+    """dx = 1.25 mm, N = 16, 0.4 s (about 155 CPU s): the opening within 15 % of the measured
+    peak, and the whole curve within 12 % (RMS relative to each one's peak) of the three
+    published numerical solutions, which miss the experiment as ours does (docstring)."""
+    from cosim import validation
+
+    r = validation.run("elastic-gate", quick=False)
+    m = r["metrics"]
+    early = [e for t, e in zip(m["t_frames_x"] + m["t_frames_y"], m["err_rel_x"] + m["err_rel_y"]) if t <= 0.085]
+    assert len(early) == 5 and max(map(abs, early)) < 0.15
+    assert max(m["rms_rel_vs_numerical"].values()) < 0.12
