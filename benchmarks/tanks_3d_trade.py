@@ -9,6 +9,12 @@
 Writes the run's metrics, profile, particles, steps and CPU seconds (``time.process_time``,
 all threads of this process) as JSON, and prints one line. Run with NUMBA_NUM_THREADS=1
 on a shared machine: CPU seconds then compare between runs.
+
+    python benchmarks/tanks_3d_trade.py plot DIR RUN.json [RUN.json ...]
+
+draws the runs' profiles beside the references as the validation report does (the
+cases' ``series``: 001 Fig. 5 for the vertical tank, Fig. 12 for the inclined one, the
+inclined runs of one dx on one plot) into DIR/tanks3d_<tank>_dx<dx>.png.
 """
 
 from __future__ import annotations
@@ -16,11 +22,41 @@ from __future__ import annotations
 import argparse
 import json
 import time
+from pathlib import Path
 
 from machine import cpu_name
 
 
+def plot(folder: str, files: list[str]) -> list[Path]:
+    """The PNGs of the runs in ``files`` (JSON written by :func:`main`) into ``folder``."""
+    from cosim.report import plot_series
+    from cosim.validations.sloshing import westergaard_3d_series_plot
+    from cosim.validations.tanks import inclined_3d_series_plot
+
+    runs = [json.loads(Path(f).read_text()) for f in files]
+    groups: dict[tuple, list] = {}
+    for r in runs:
+        groups.setdefault((r["args"]["tank"], r["args"]["dx"]), []).append(r)
+    out = []
+    Path(folder).mkdir(parents=True, exist_ok=True)
+    for (tank, dx), rs in sorted(groups.items()):
+        if tank == "vertical":
+            series = westergaard_3d_series_plot(rs[-1]["profile"])
+        else:
+            series = inclined_3d_series_plot({r["args"]["angle"]: r["profile"] for r in rs})
+        for _, name in plot_series(series, Path(folder), f"tanks3d_{tank}_dx{dx:g}"):
+            out.append(Path(folder) / name)
+    return out
+
+
 def main(argv=None) -> None:
+    import sys
+
+    argv = sys.argv[1:] if argv is None else argv
+    if argv and argv[0] == "plot":
+        for p in plot(argv[1], argv[2:]):
+            print(p)
+        return
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("tank", choices=("vertical", "inclined"))
     ap.add_argument("--dx", type=float, required=True, help="particle spacing [m]")
