@@ -91,3 +91,26 @@ def test_gauges_read_the_analytic_fluids_waves(tmp_path):
         want = [wave.elevation(np.array(at), t) for t in r.t]
         np.testing.assert_allclose(r[f"gauge{i + 1}.eta"], want, rtol=0, atol=1e-12)
     assert np.abs(r["gauge1.eta"]).max() == pytest.approx(0.75, rel=0.01)  # a crest at x = 0 at t = 6 s
+
+
+def test_a_linear_wave_deeper_or_shallower_than_the_flume_is_refused(tmp_path):
+    """The analytic fluid's still surface is the flume's depth over its floor (z = 0): a
+    linear wave whose depth differs would decay to a seabed that is not there (10 m of
+    water, a wave of 20 m depth: tanh(kd) 0.76 against 0.96 at T = 6 s, 20 % in its orbital
+    speed at the floor). Refused naming waves.depth, both depths and the fix; equal depths
+    build."""
+    from cosim.scene import Flume
+    from cosim.scene.fields import SceneError
+
+    s = dataclasses.replace(moored(), domain=Flume(length=200.0, depth=10.0, height=15.0),
+                            bodies=[Box("box", size=(2.0, 1.0), pos=(100.0, 10.0), density=500.0,
+                                        fairleads={"left": (-1.0, -0.5), "right": (1.0, -0.5)})],
+                            moorings=None)
+    s.validate()  # waves.depth = 10 m, the flume's depth
+    for depth in (20.0, 9.5):
+        with pytest.raises(SceneError, match=rf"waves.depth: {depth:g} m differs from the flume's still-water "
+                                             rf"depth 10 m \(domain.depth\).*give waves.depth = 10"):
+            dataclasses.replace(s, waves=dataclasses.replace(s.waves, depth=depth))
+    with pytest.raises(SceneError, match="waves.depth"):
+        s.with_values(["waves.depth=12.0"])
+    assert build(s, tmp_path).fluid.waves.depth == 10.0

@@ -159,6 +159,20 @@ def _check_linear_waves(s, dim):
                          f"(180)")
     if s.world.gravity <= 0:
         raise SceneError("world.gravity", "waves need gravity > 0 (their length follows from it)")
+    d = s.domain
+    if d is not None and d.level is not None:
+        # the analytic fluid's still surface is the domain's level over its floor: the wave's
+        # kinematics must decay to that floor, not to another seabed (refused rather than
+        # taken from the domain: waves.depth is a field the user wrote, and a scene whose
+        # TOML says one depth while another runs would mislead whoever reads it)
+        floor = min(v[1] for v in d.vertices) if isinstance(d, PolygonTank) else 0.0
+        depth = d.level - floor
+        if not math.isclose(w.depth, depth, rel_tol=1e-9, abs_tol=1e-12):
+            key = "domain.fill_level" if isinstance(d, PolygonTank) else "domain.depth"
+            raise SceneError("waves.depth", f"{w.depth:g} m differs from the {d.kind}'s still-water depth "
+                             f"{depth:g} m ({key}): the analytic fluid's free surface lies at the domain's water "
+                             f"level, {depth:g} m above its floor, while the wave's kinematics would decay to a "
+                             f"seabed {w.depth:g} m below it; give waves.depth = {depth:g} (or change {key})")
     from fluid.analytic import LinearWave
 
     try:
