@@ -378,16 +378,17 @@ def westergaard_3d(quick: bool) -> dict:
     whole tank adds over a slice is the measured effect of the side walls.
 
     Full: the whole tank at dx = 0.05 m (the paper's), c0 = 1430 m/s (the paper's c_p),
-    ``walls="adami"`` (as the 2-D case), 1 period skipped and 1 fitted (a third less
-    than the 2 fitted periods of the 2-D case, on 44 628 particles: 24 000 fluid ones, 60 x
-    20 x 20, as the paper's), 40 samples a period. Quick (CI): a 0.3 m slice of the width
+    ``walls="adami"`` (as the 2-D case), 1 period skipped and 1 fitted (2 periods
+    run instead of the slice's 1 + 2, on 44 628 particles: 24 000 fluid ones, 60 x 20 x 20,
+    as the paper's), 40 samples a period. Quick (CI): a 0.3 m slice of the width
     (3 fluid rows between the side walls) at dx = 0.1 m with c0 = 700 m/s (4H/c0 = 0.19
-    Tp: the compressible excess is 1.8 % at the base, see :func:`westergaard`), 1 + 1 periods and the solver's default walls, and
-    the 2-D section with the same settings (1 s): it checks that the 3-D solver (kernel
-    normalisation, neighbour search, wall boundaries in 3-D) gives the 2-D impulsive
-    pressure (``kp_avg_vs_2d_max``, ``kp_face_vs_2d_max``: the largest row-by-row
-    differences). With ``walls="adami"`` the coarse slice's base k_p reads 6.8 % high,
-    which the quick checks (written for the default walls) refuse.
+    Tp: the compressible excess is 1.8 % at the base, see :func:`westergaard`), 1 + 1
+    periods and the solver's default walls, and the 2-D section with the same settings
+    (1 s): it checks that the 3-D solver (kernel normalisation, neighbour search, wall
+    boundaries in 3-D) gives the 2-D impulsive pressure (``kp_avg_vs_2d_max``,
+    ``kp_face_vs_2d_max``: the largest row-by-row differences). With ``walls="adami"``
+    the coarse slice's base k_p reads 6.8 % high, which the quick checks (written for the
+    default walls) refuse.
 
     Measured trade (2026-11-25, AMD EPYC, 2 cores shared with up to 19 other jobs, so
     only CPU seconds compare; ``python benchmarks/tanks_3d_trade.py vertical --dx DX``:
