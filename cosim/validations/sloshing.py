@@ -414,7 +414,7 @@ def westergaard_3d(quick: bool) -> dict:
     0.05 m: 44 628 particles, 6080 steps, ~640 CPU-s by the rate of the row above) was not
     run to its end on 2026-11-25: the machine's two cores were held by higher-priority
     jobs. The 0.3 m slice of sessions 5-8 at dx = 0.05 m (1 + 2 periods) met both
-    targets on its mid-plane (raw 0.032, face 0.019; docs/validation/westergaard_history.md).
+    targets on its mid-plane (raw 0.032, face 0.019; docs/validation/westergaard-3d_history.md).
     The quick slice (dx = 0.1 m, c0 =
     700 m/s, 1 + 1 periods, default walls; 5382 particles, 1520 steps, 22 CPU-s): raw
     0.149, Eq. 15 0.069, face 0.054 on the mid-plane, the 2-D section with the same
