@@ -52,19 +52,29 @@ angular momentum about the centre of mass (I omega against fluid + mooring torqu
 residual dp - J is reported in N s and relative to the gross impulse
 sum_k (|F_fluid| + |F_mooring| + |G|) dt_k; its drift is its least-squares slope against steps.
 
-The full soak, 10^6 steps, catenary and sph-cable (2026-11-25, after the ledger and MoorDyn
-repairs; the two ran side by side on the 2 cores, load 1.9-2.1; ledger truncated each chunk):
+The full soak, 10^6 steps of every model (2026-11-25, after the ledger and MoorDyn repairs;
+ledger truncated each chunk). catenary and sph-cable ran side by side on the 2 cores (load
+1.9-2.1); fmu and moordyn side by side on a machine shared with other jobs (load 2-26), so
+their wall rates are what they got and steps per CPU-second is the figure that compares
+(fmu's rises once the box is at its bit-exact rest, from ~350k steps):
 
     python benchmarks/soak.py --steps 1000000 --every 50000 --models catenary --csv catenary.csv
     python benchmarks/soak.py --steps 1000000 --every 50000 --models sph-cable --csv sph-cable.csv
+    python benchmarks/soak.py --steps 1000000 --every 50000 --models fmu --csv fmu.csv
+    python benchmarks/soak.py --steps 1000000 --every 50000 --models moordyn --csv moordyn.csv
 
     model        steps   wall s  st/s  st/cpu-s  RSS start -> end   B/1000 st  ticks  |dp - J| N s  rel     z per 1e6
     catenary   1000000     2006   499       515  209.4 -> 209.4 MB          0      0  4.50e-09     2e-17  -4.5e-09
     sph-cable  1000000     2480   403       414  231.8 -> 231.8 MB          0      0  4.97e-09     2e-17  -5.0e-09
+    fmu        1000000     3876   258       847  194.9 -> 194.9 MB          0      0  4.52e-09     2e-17  -4.5e-09
+    moordyn    1000000     5156   194       338  190.2 -> 190.3 MB          0      0  8.70e-10     4e-18  -3.0e-10
 
-Flat memory (gc-tracked objects +0 per 1000 steps), an exact clock at every report (a
-float sum t += dt would be 1.7e-7 s off), no momentum drift beyond rounding; fmu (the
-catenary compiled: bit-identical to it over 1e5 steps) and moordyn were not run to 1e6.
+Flat memory (gc-tracked objects +0 per 1000 steps; moordyn +0.1 MB in one step over the
+10^6), an exact clock at every report (a float sum t += dt would be 1.7e-7 s off), no
+momentum drift beyond rounding (angular residual 7.6e-10 and 7.0e-10 kg m^2/s after 10^6
+steps for fmu and moordyn), ``sys.getrefcount(None)`` flat for all 20 chunks of each
+(fmu 44 680, moordyn 39 063). CPU for 10^6 steps: catenary 32 min, sph-cable 40, fmu 20,
+moordyn 49.
 
 Measured 2026-11-25, AMD EPYC (model name as /proc/cpuinfo gives it), 2 cores shared with
 other developers' test runs (1-minute load average over each run given: 0.9 to 4.2, so the
@@ -126,11 +136,8 @@ Findings.
 - moordyn 2.7.2's ``Deserialize`` drops a reference to None per call; the predictor-corrector's
   per-step roll-back aborted Python 3.11 after ~15.3k steps. The adapter now gives the
   reference back (``moorings.moordyn_mooring``); ``--patch-moordyn`` reproduces these runs
-  with an adapter that does not. With the repaired adapter (2026-11-25, session 8, no
-  patch) moordyn ran 50 000 steps with ``sys.getrefcount(None)`` flat (15 438) and fmu
-  150 000 (RSS flat at 99.0 MB, 0 ticks off, |dp - J| 6.4e-10 N s, 1.9e-17 of the gross
-  impulse) before both were stopped: the machine was shared with eight other jobs (load
-  8-11, 26 steps/s), so their 10^6-step soaks wait for a quiet machine.
+  with an adapter that does not. With the repaired adapter moordyn ran the full 10^6 steps
+  with ``sys.getrefcount(None)`` flat (table above).
 - catenary and fmu (the same law compiled as an FMU) give bit-identical trajectories and
   residuals. The sph-cable box never comes to rest: after 475 s it still wanders by +-5 mm
   with |p| up to 7 N s (the SPH cable's own oscillation); catenary and fmu reach a
