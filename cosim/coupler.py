@@ -2,9 +2,12 @@
 
 One coupling step (:meth:`Coupler.step`), in this order (``docs/DESIGN.md``):
 
-1. the step size: the smallest ``max_dt()`` of all participants (or the fixed
-   step the user asked for, if smaller), rounded down to whole clock ticks and
-   clipped so that the run lands exactly on its end time;
+1. the step size: the smallest ``max_dt()`` of all participants and the step the
+   bodies can follow their mooring lines at (:mod:`cosim.line_step`, from each line's
+   ``fairlead_stiffness()``; a fixed step the user asks for above it at the start is
+   refused), or the fixed step the user asked for, if smaller, rounded down to whole
+   clock ticks and clipped so that the run lands exactly on its end time (a step the
+   lines set is evened out towards it instead: no sliver of a step);
 2. the fluid's loads on each body, for the bodies' current kinematics (force,
    and torque about the centre of mass; world frame);
 3. each mooring's force on its fairleads (for the fairlead motion it was last
@@ -85,8 +88,10 @@ class Coupler:
     moorings:
         :class:`MooringAttachment` records (or ``(mooring, sites)`` pairs).
     dt:
-        Fixed coupling step [s]; ``None`` lets the participants' ``max_dt()`` decide.
-        Participants that need less still get less.
+        Fixed coupling step [s]; ``None`` lets the participants' ``max_dt()`` and the
+        mooring lines' limit (:mod:`cosim.line_step`) decide. Participants that need less
+        still get less. A step above the lines' limit at the start is refused
+        (:class:`~cosim.errors.ConfigurationError` naming the line, the limit and the fix).
     t0:
         Start time [s].
     scheme:
@@ -173,6 +178,9 @@ class Coupler:
         self.subiterations = 0  #: fluid advances the last step took (the "subiterate" remedy)
         self._exchanging = roles  # rolled back by the predictor-corrector
         self.dt = dt
+        #: the mooring lines' coupling-step limit at the last step (cosim.line_step), or None
+        self.line_limit = None
+        self._last_dt = math.inf
         self.clock = Clock(t0)
         self.steps = 0
         self.ledger = Ledger(bodies.body_names if bodies is not None else [])
@@ -216,6 +224,29 @@ class Coupler:
             if p is not self.bodies:
                 p.initialize(t0)
         self._initialized = True
+        self._check_line_step()
+
+    def _line_step(self):
+        """The mooring lines' coupling-step limit now (:mod:`cosim.line_step`), or None."""
+        if self.bodies is None or not self.moorings:
+            return None
+        from cosim.line_step import limit
+
+        self.line_limit = limit(self.bodies, self.moorings, self._sites)
+        return self.line_limit
+
+    def _check_line_step(self) -> None:
+        """Refuse a fixed step the bodies cannot follow their mooring lines at."""
+        lim = self._line_step()
+        if lim is None:
+            return
+        log.info("coupler: mooring lines allow a coupling step of %.4g s (%s)", lim.dt, lim.describe())
+        if self.dt is not None and self.dt > lim.dt:
+            raise ConfigurationError(
+                f"coupling step dt = {self.dt:g} s is above {lim.dt:.3g} s, the largest step at which the bodies "
+                f"follow {lim.describe()}: the explicit exchange would go unstable (cosim.line_step). Leave dt "
+                f"unset (a scene: remove coupling.dt) and the coupler takes the stable step itself, or set dt <= "
+                f"{lim.dt:.3g} s")
 
     def _check_gravity(self) -> None:
         """The fluid and the bodies must fall the same way: one gravity for every participant."""
@@ -261,6 +292,10 @@ class Coupler:
             return {}
         return dict(zip(self.bodies.tethers, self.bodies.tether_tensions().tolist()))
 
+    #: the lines' step limit is recomputed every step while it is below this many times the
+    #: last step, else every this many steps [-]
+    LINE_STEP_MARGIN = 10
+
     def _step_size(self, ticks_left: int) -> tuple[int, str]:
         best, limiter = math.inf, "user dt"
         if self.dt is not None:
@@ -274,9 +309,22 @@ class Coupler:
                 )
             if d < best:
                 best, limiter = d, p.name
+        lim = self.line_limit  # as initialize() found it, then refreshed: every step while it is within
+        if lim is not None and self.steps and (lim.dt < self.LINE_STEP_MARGIN * self._last_dt  # a factor of
+                                               or self.steps % self.LINE_STEP_MARGIN == 0):  # the step, else
+            lim = self._line_step()  # every LINE_STEP_MARGIN steps (the lines' state moves with the bodies)
+        if lim is not None and lim.dt < best:
+            best, limiter = lim.dt, lim.mooring
         n = ticks_left if math.isinf(best) else to_ticks(best)
         if n >= ticks_left:
             return ticks_left, "end time"
+        if lim is not None and limiter == lim.mooring and n > 0:
+            # the lines' step: evened out towards the end time rather than leaving a sliver of a
+            # step before it (a dynamic line driven a step ahead, as MoorDyn's fairlead is
+            # extrapolated, jumps when the step changes: on seed 004's chain the slivers before
+            # each output time drove the base's roll)
+            k = -(-ticks_left // n)
+            n = -(-ticks_left // k)
         if n < 1:
             raise InstabilityError(
                 f"step {self.steps + 1}, t = {self.t:.9g} s: participant '{limiter}' asks for a step of "
@@ -327,6 +375,7 @@ class Coupler:
             raise type(exc)(f"step {self.steps + 1}, t = {t:.9g} s: {exc}") from exc
         self.clock.advance(n)
         self.steps += 1
+        self._last_dt = dt
         if self.bodies is not None:
             self._check_line_breaks()
         return StepInfo(self.steps, self.clock.t, dt, limiter)
@@ -598,6 +647,8 @@ class Coupler:
             # the coupler's own memory of past steps: the added-mass term and the watch use it
             "added_mass": None if self.added_mass is None else self.added_mass.save_state(),
             "watch": self.watch.save_state(),
+            "last_dt": self._last_dt,  # when the lines' step limit is next recomputed, and the limit
+            "line_limit": self.line_limit,
         }
 
     def load_state(self, state: dict) -> None:
@@ -617,6 +668,8 @@ class Coupler:
         if self.added_mass is not None:
             self.added_mass.load_state(state["added_mass"])
         self.watch.load_state(state["watch"])
+        self._last_dt = state.get("last_dt", math.inf)
+        self.line_limit = state.get("line_limit", self.line_limit)
         if self.bodies is not None and self._initialized:
             self._release_tethers()  # model data, not state: lines released before the checkpoint
             kin = self.bodies.kinematics()

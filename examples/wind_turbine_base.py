@@ -10,13 +10,14 @@ diameter; the tank; the analytic fluid's added mass and drag).
 `cosim run examples/wind_turbine_base.py` runs it once (analytic fluid, catenary lines);
 run as a script (`python examples/wind_turbine_base.py [--models catenary,fmu,...]`) it
 runs each mooring model, changed in the one field `moorings.model`, and writes the
-figures below into out/wind_turbine_base/models.json. The two dynamic models also get
-`coupling.dt = 0.005` (:data:`EXTRA`): their stiff chain (EA = 1.9e9 N, 20 segments of
-2.25 m) is a fairlead spring of period ~0.05 s against the base's 60 t (with added mass),
-which the explicit load exchange at the analytic fluid's 0.025 s step does not hold:
-MoorDyn at 0.025 s ran to the end but its fairlead tensions swung 1-550 kN and drove the
-heave to 0.50 m, roll/pitch to 10 deg (at 0.005 s: as the table); the SPH cable at
-0.025 s stopped at 0.35 s with the coupler's growing-oscillation error.
+figures below into out/wind_turbine_base/models.json. The two dynamic models need no
+coupling step set by hand: their stiff chain (EA = 1.9e9 N, 442 kg/m, 20 segments of
+2.25 m) resists the fairlead's motion with its axial impedance sqrt(EA m) = 9.2e5 N s/m
+per line, which, held over a coupling step against the base's roll and pitch inertia, is
+stable only below 2 / rate = 0.0062 s (MoorDyn) and 0.0077 s (SPH cable); the coupler
+takes 0.8 of that (cosim.line_step) and refuses a coupling.dt above it. At 0.025 s
+(the analytic fluid's own step) MoorDyn's fairlead tensions swung 1-550 kN and the SPH cable
+stopped at 0.35 s with the coupler's growing-oscillation error.
 
 Measured over the 90 s (surge, heave, pitch: half the peak-to-peak over 30-90 s, after the
 wave has reached the base; mean fairlead tension over 30-90 s of the back line and of the
@@ -33,6 +34,9 @@ fmu        1.585  0.318  0.74   94.8 / 94.3 / 94.3     3600    30.7   13.1
 moordyn    1.661  0.330  1.35   95.0 / 94.5 / 94.5     18000   165.8  72.5
 sph-cable  1.627  0.330  1.21   94.7 / 95.9 / 92.3     18000   100.9  64.6
 =========  =====  =====  =====  =====================  ======  =====  =====
+
+(moordyn and sph-cable at coupling.dt = 0.005 s set by hand; the coupler's own step is now
+0.0050 s for MoorDyn, the same, and 0.0061 s for the SPH cable.)
 
 Within 5 % of each other in surge (the dynamic lines +2.6 % and +4.8 %), 4 % in heave and
 1.2 % in mean tension; pitch differs more (0.74 against 1.2-1.35 deg: the dynamic lines'
@@ -86,10 +90,6 @@ scene = Scene(
     coupling=Coupling(body_timestep=0.005),
 )
 
-#: the one extra field the dynamic models need in this scene (see the docstring)
-EXTRA = {"sph-cable": ["coupling.dt=0.005"], "moordyn": ["coupling.dt=0.005"]}
-
-
 def figures(r, t0: float = 30.0) -> dict:
     """Surge and heave amplitudes [m] (half peak-to-peak after ``t0`` [s]) and mean
     fairlead tensions [N] of a run's results."""
@@ -111,7 +111,7 @@ if __name__ == "__main__":
     out = Path("out/wind_turbine_base")
     rows = {}
     for model in models:
-        r = scene.with_values([f"moorings.model={model}", *EXTRA.get(model, [])]).run(out / model, progress=False)
+        r = scene.with_values([f"moorings.model={model}"]).run(out / model, progress=False)
         rows[model] = f = figures(r)
         t = f["mean_tension"]
         print(f"{model:10s} surge {f['amplitude']['surge']:.3f} m  heave {f['amplitude']['heave']:.3f} m  "

@@ -17,6 +17,7 @@ import numpy as np
 
 from cosim.errors import InputError, TautLineError
 from moorings.catenary import TAUT, LineSolution, solve_packed
+from moorings.fairlead_stiffness import FairleadStiffness, by_differences
 from moorings.line import MooringLine, named_lines, per_line
 from moorings.line_events import LineStateLog
 
@@ -137,25 +138,55 @@ class CatenaryMooring:
                 f"{self._L[i]:.6g} m would have to span {chord[i]:.6g} m (X = {X[i]:.6g} m, h = {h[i]:.6g} m); "
                 f"{why}."
             )
-        # capped: solve at the point of the chord where the slack is `slack`
-        capped = inext & self._tethered & (chord > self._L * (1.0 - self.slack))
-        scale = np.ones(self.n_lines)
-        scale[capped] = self._L[capped] * (1.0 - self.slack) / chord[capped]
-        self._packed[:, 0], self._packed[:, 1] = X * scale, h * scale
-        solve_packed(self._packed, self._out)
-        o = self._out
-        state = np.where(capped, int(TAUT), o[:, 3]).astype(np.int8)
-        sol = LineSolution(o[:, 0].copy(), o[:, 1].copy(), o[:, 2].copy(), state)
-        e = np.divide(horiz, X[:, None], out=np.zeros_like(horiz), where=X[:, None] > 0)
-        self._forces = np.concatenate([-sol.H[:, None] * e, -sol.V[:, None]], axis=1)
+        sol, self._forces = self._law(pos)
         self._pos = pos
         self.solution = sol
+
+    def _law(self, pos: np.ndarray) -> tuple[LineSolution, np.ndarray]:
+        """The lines' solution and fairlead forces [N] for fairlead positions ``pos`` [m]
+        (checked by the caller), without storing them; ``pos`` may stack several sets of
+        the lines' fairleads, ``(r n_lines, dim)`` (:meth:`fairlead_stiffness`)."""
+        r = len(pos) // self.n_lines
+        L, EA, tethered = np.tile(self._L, r), np.tile(self._EA, r), self._tethered
+        d = pos - np.tile(self.anchors, (r, 1))
+        h = d[:, -1]
+        horiz = d[:, :-1]
+        X = np.sqrt(np.sum(horiz**2, axis=1))
+        chord = np.hypot(X, h)
+        inext = np.isinf(EA)
+        # capped: solve at the point of the chord where the slack is `slack`
+        capped = inext & tethered & (chord > L * (1.0 - self.slack))
+        scale = np.ones(len(pos))
+        scale[capped] = L[capped] * (1.0 - self.slack) / chord[capped]
+        if r == 1:
+            packed, out = self._packed, self._out
+        else:
+            packed, out = np.column_stack([X, h, L, np.tile(self._w, r), EA]), np.empty((len(pos), 4))
+        packed[:, 0], packed[:, 1] = X * scale, h * scale
+        solve_packed(packed, out)
+        state = np.where(capped, int(TAUT), out[:, 3]).astype(np.int8)
+        sol = LineSolution(out[:, 0].copy(), out[:, 1].copy(), out[:, 2].copy(), state)
+        e = np.divide(horiz, X[:, None], out=np.zeros_like(horiz), where=X[:, None] > 0)
+        forces = np.concatenate([-sol.H[:, None] * e, -sol.V[:, None]], axis=1)
+        return sol, forces
 
     def fairlead_forces(self) -> np.ndarray:
         """Force [N] each line exerts on its fairlead, ``(n_lines, dim)``, world frame."""
         if self.solution is None:
             raise InputError(f"{self.name}: fairlead positions are not set; call set_fairlead_motion() first")
         return self._forces.copy()
+
+    def fairlead_stiffness(self):
+        """The lines' tangent stiffness ``-dF/dx`` [N/m] at the fairleads now, by central
+        differences of the law (:mod:`moorings.fairlead_stiffness`; no damping: the law is
+        quasi-static). A line held by its length constraint is stiff through the
+        constraint, not through this law (its force is capped there)."""
+        if self._pos is None:
+            raise InputError(f"{self.name}: fairlead positions are not set; call set_fairlead_motion() first")
+        step = 1e-6 * float(self._L.max())
+        with np.errstate(invalid="ignore"):
+            s = by_differences(lambda p: self._law(p)[1], self._pos, step, batched=True)
+        return FairleadStiffness(np.nan_to_num(s.k, nan=0.0, posinf=0.0, neginf=0.0), s.c)
 
     # -- length constraints ----------------------------------------------------
     def tethers(self) -> list[tuple[int, np.ndarray, float]]:

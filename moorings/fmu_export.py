@@ -99,12 +99,15 @@ def fmu_line_names(lines) -> list[str]:
 def catenary_fmu_variable_map(lines) -> dict[str, list[list[str]]]:
     """The ``variable_map`` with which :class:`moorings.fmu_mooring.FMUMooring`
     drives an FMU written by :func:`export_catenary_fmu` from the same lines:
-    ``{"positions": [[<line>.fairlead.<axis>, ...], ...], "forces": [[<line>.force.<axis>, ...], ...]}``."""
+    ``{"positions": [[<line>.fairlead.<axis>, ...], ...], "forces": [[<line>.force.<axis>, ...], ...],
+    "states": [<line>.state, ...]}``."""
     lines = named_lines(lines)
     ax = _axes(lines[0].dim)
     names = fmu_line_names(lines)
-    return {key: [[f"{n}.{var}.{a}" for a in ax] for n in names]
-            for key, var in (("positions", "fairlead"), ("forces", "force"))}
+    out = {key: [[f"{n}.{var}.{a}" for a in ax] for n in names]
+           for key, var in (("positions", "fairlead"), ("forces", "force"))}
+    out["states"] = [f"{n}.state" for n in names]
+    return out
 
 
 class _Var:

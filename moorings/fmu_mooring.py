@@ -6,6 +6,10 @@ The FMU's variable names are mapped in a small dictionary, ``variable_map``:
 ``"positions"``  (required) the Real inputs that receive the fairlead positions [m]
 ``"forces"``     (required) the Real outputs that give the force on each fairlead [N]
 ``"velocities"`` (optional) Real inputs for the fairlead velocities [m/s]
+``"states"``     (optional) Integer outputs, one per line: its state, seed 004 Fig. 5
+                 (0 resting, 1 partly lifted, 2 fully lifted, 3 taut;
+                 :class:`moorings.catenary.LineState`); then :attr:`FMUMooring.state_log`
+                 records when each line goes fully lifted or taut
 
 Each value is either a nested list of names, ``(n_lines, dim)``, or a template
 string formatted per line and axis with ``{line}`` (the line's name), ``{i}``
@@ -33,7 +37,9 @@ from pathlib import Path
 import numpy as np
 
 from cosim.errors import InputError, SolverError, TautLineError
+from moorings.fairlead_stiffness import FairleadStiffness, by_differences
 from moorings.line import MooringLine, named_lines, per_line
+from moorings.line_events import LineStateLog
 
 log = logging.getLogger(__name__)
 
@@ -161,13 +167,18 @@ class FMUMooring:
         if not isinstance(variable_map, dict) or not {"positions", "forces"} <= set(variable_map):
             raise InputError(f"{name}: variable_map must be a dict with 'positions' and 'forces' "
                              f"(and optionally 'velocities'); got {variable_map!r}")
-        unknown = set(variable_map) - {"positions", "forces", "velocities"}
+        unknown = set(variable_map) - {"positions", "forces", "velocities", "states"}
         if unknown:
             raise InputError(f"{name}: unknown variable_map key(s) {sorted(unknown)}")
         self._vr_pos = self._resolve(variable_map["positions"], "positions", ("input",))
         self._vr_force = self._resolve(variable_map["forces"], "forces", ("output",))
         self._vr_vel = (self._resolve(variable_map["velocities"], "velocities", ("input",))
                         if variable_map.get("velocities") is not None else None)
+        self._vr_state = (self._resolve_states(variable_map["states"])
+                          if variable_map.get("states") is not None else None)
+        #: when each line became fully lifted or taut (:mod:`moorings.line_events`), after every
+        #: step; None unless the variable map names the lines' ``states``
+        self.state_log = LineStateLog(self.line_names) if self._vr_state is not None else None
         self._params = []
         for pname, value in (parameters or {}).items():
             v = self._vars.get(pname)
@@ -247,6 +258,21 @@ class FMUMooring:
             vrs.append(v.valueReference)
         return vrs
 
+    def _resolve_states(self, spec):
+        names = ([spec.format(line=ln, i=i) for i, ln in enumerate(self.line_names)] if isinstance(spec, str)
+                 else list(spec) if isinstance(spec, (list, tuple)) else None)
+        if names is None or len(names) != self.n_lines:
+            raise InputError(f"{self.name}: variable_map['states'] must name one Integer output per line "
+                             f"({self.n_lines}), a list or a template with {{line}} or {{i}}; got {spec!r}")
+        vrs = []
+        for n in names:
+            v = self._vars.get(n)
+            if v is None or v.type != "Integer" or v.causality != "output":
+                raise InputError(f"{self.name}: variable_map['states']: {n!r} is not an Integer output of "
+                                 f"{self.path.name}")
+            vrs.append(v.valueReference)
+        return vrs
+
     def _check_array(self, values, what):
         return per_line(values, self.line_names, self.dim, self.name, what)
 
@@ -293,6 +319,8 @@ class FMUMooring:
         self._push_inputs()
         self._call("fmi2ExitInitializationMode", self._fmu.exitInitializationMode)
         self._initialized = True
+        if self.state_log is not None and self.state_log.state is None:  # a resumed run keeps its log
+            self.state_log.update(self.t, self.line_states())
 
     def max_dt(self) -> float:
         """``max_step`` [s] as given (default unlimited)."""
@@ -304,6 +332,8 @@ class FMUMooring:
         self.t = float(t)
         self._call("fmi2DoStep", self._fmu.doStep, currentCommunicationPoint=self.t, communicationStepSize=float(dt))
         self.t = float(t) + float(dt)
+        if self.state_log is not None:
+            self.state_log.update(self.t, self.line_states())
 
     def save_state(self):
         """The FMU's serialised state, the fairlead motion and the time (needs an FMU
@@ -318,11 +348,14 @@ class FMUMooring:
         finally:
             self._fmu.freeFMUstate(st)
         return (blob, None if self._pos is None else self._pos.copy(),
-                None if self._vel is None else self._vel.copy(), self.t)
+                None if self._vel is None else self._vel.copy(), self.t,
+                None if self.state_log is None else self.state_log.save())
 
     def load_state(self, state) -> None:
         self._require_init()
-        blob, pos, vel, t = state
+        blob, pos, vel, t, log_ = state
+        if self.state_log is not None:
+            self.state_log.load(log_)
         st = self._call("fmi2DeSerializeFMUstate", self._fmu.deSerializeFMUstate, blob)
         try:
             self._call("fmi2SetFMUstate", self._fmu.setFMUstate, st)
@@ -345,6 +378,36 @@ class FMUMooring:
         self._require_init()
         f = self._call("reading the fairlead forces", self._fmu.getReal, self._vr_force)
         return np.reshape(np.asarray(f, dtype=float), (self.n_lines, self.dim))
+
+    def line_states(self) -> np.ndarray:
+        """Each line's state now (:class:`~moorings.catenary.LineState` values), as the FMU's
+        ``states`` outputs give it; raises where the variable map names none."""
+        self._require_init()
+        if self._vr_state is None:
+            raise InputError(f"{self.name}: the variable map names no 'states' outputs; add them "
+                             f"(catenary_fmu_variable_map does for an exported catenary FMU)")
+        return np.asarray(self._call("reading the line states", self._fmu.getInteger, self._vr_state), np.int8)
+
+    def fairlead_stiffness(self) -> FairleadStiffness:
+        """The lines' tangent stiffness ``-dF/dx`` [N/m] at the fairleads now, by central
+        differences through the FMU (inputs moved, outputs read, inputs restored; no
+        ``fmi2DoStep``): right for an FMU with direct feedthrough (a quasi-static law such
+        as the exported catenary); a dynamic FMU, whose outputs change only in a step,
+        shows no stiffness this way and reports its own limit through ``max_step``."""
+        self._require_init()
+        pos0 = self._pos.copy()
+
+        def forces_at(p):
+            self._pos = p
+            self._push_inputs()
+            return self.fairlead_forces()
+
+        try:
+            s = by_differences(forces_at, pos0, 1e-6 * max(1.0, float(np.abs(pos0).max())))
+        finally:
+            self._pos = pos0
+            self._push_inputs()
+        return FairleadStiffness(np.nan_to_num(s.k, nan=0.0, posinf=0.0, neginf=0.0), s.c)
 
     def get(self, names) -> np.ndarray:
         """Any Real variables of the FMU by name (e.g. tensions), as an array."""

@@ -14,16 +14,51 @@ times at which a line
 A time is the end of the coupling step in which the state was first seen (so it is known
 to within one step). The paper's wind-turbine base has its two front lines fully extended
 at 71.1 s and 81.1 s (seed 004 §5, Fig. 19).
+
+Where the states come from, per model:
+
+- catenary: the law's own state (:func:`moorings.catenary.solve`); a line held by its
+  length constraint is ``TAUT``;
+- FMU: the FMU's ``<line>.state`` output where its variable map names one (the exported
+  catenary FMU: the same law);
+- SPH cable and MoorDyn, from their nodes (:func:`node_states`): ``TAUT`` where the
+  anchor-fairlead distance is at least the unstretched length, the law's own boundary
+  (Fig. 5 d: the line is stretched straight, its tension along the whole line above
+  zero); ``RESTING`` where ``X <= L - h``, the law's boundary (the line could hang
+  straight down); otherwise ``PARTLY_LIFTED`` while a node other than the anchor lies on
+  the seabed (within a tolerance the model states: its seabed contact's penetration),
+  ``FULLY_LIFTED`` when none does.
 """
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
-from moorings.catenary import FULLY_LIFTED, TAUT, LineState
+from moorings.catenary import FULLY_LIFTED, PARTLY_LIFTED, RESTING, TAUT, LineState
 
 #: events kept per line and kind (a line chattering at a boundary would otherwise fill the summary)
 MAX_EVENTS = 200
+
+
+def node_states(anchors, fairleads, lengths, nodes, seabed_z, tol) -> np.ndarray:
+    """States (``LineState`` values, ``(n_lines,)`` int8) of dynamic lines from their nodes
+    (module docstring): ``anchors``, ``fairleads`` [m] ``(n_lines, dim)``, unstretched
+    ``lengths`` [m], ``nodes`` one ``(n, dim)`` array per line from the anchor to the
+    fairlead [m], ``seabed_z`` [m] and ``tol`` [m] per line."""
+    out = np.empty(len(nodes), np.int8)
+    for i, x in enumerate(nodes):
+        d = np.asarray(fairleads[i], float) - np.asarray(anchors[i], float)
+        h, X = float(d[-1]), float(np.linalg.norm(d[:-1]))
+        if math.hypot(X, h) >= lengths[i]:
+            out[i] = TAUT
+        elif X <= lengths[i] - h:
+            out[i] = RESTING
+        else:
+            grounded = (np.asarray(x, float)[1:-1, -1] <= seabed_z[i] + tol[i]).any()
+            out[i] = PARTLY_LIFTED if grounded else FULLY_LIFTED
+    return out
 
 
 class LineStateLog:
@@ -79,4 +114,4 @@ class LineStateLog:
         self.events = {n: {k: list(v) for k, v in e.items()} for n, e in events.items()}
 
 
-__all__ = ["LineStateLog", "MAX_EVENTS"]
+__all__ = ["LineStateLog", "MAX_EVENTS", "node_states"]

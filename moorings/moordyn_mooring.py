@@ -42,7 +42,9 @@ from pathlib import Path
 import numpy as np
 
 from cosim.errors import InputError, SolverError
+from moorings.fairlead_stiffness import FairleadStiffness, axial
 from moorings.line import named_lines, per_line
+from moorings.line_events import LineStateLog, node_states
 
 log = logging.getLogger(__name__)
 
@@ -342,6 +344,8 @@ class MoorDynMooring:
         self._prev = None  # (t, positions) at the last step's start, for the velocity estimate
         self._forces = None
         self.t = 0.0
+        #: when each line became fully lifted or taut (:mod:`moorings.line_events`), after every step
+        self.state_log = LineStateLog([ln.name for ln in self.lines])
         self._tmp = Path(tempfile.mkdtemp(prefix="cosim_moordyn_"))
         self._box = {}
         self._finalizer = weakref.finalize(self, _close, self._box, str(self._tmp))
@@ -496,6 +500,8 @@ class MoorDynMooring:
         f = [moordyn.GetPointForce(moordyn.GetPoint(system, self.n_lines + i + 1)) for i in range(self.n_lines)]
         self._forces = self._ours(np.asarray(f, dtype=float))
         self._prev = None
+        if self.state_log.state is None:  # a resumed run keeps its log
+            self.state_log.update(self.t, self.line_states())
 
     def max_dt(self) -> float:
         """Unlimited: MoorDyn sub-cycles each coupling step with ``dt_internal``."""
@@ -526,17 +532,19 @@ class MoorDynMooring:
         self._forces = self._ours(f)
         self._prev = (float(t), self._pos.copy())
         self.t = float(t) + float(dt)
+        self.state_log.update(self.t, self.line_states())
 
     def save_state(self):
         import moordyn
 
         return (moordyn.Serialize(self._system()), self._pos.copy(), None if self._vel is None else self._vel.copy(),
-                self._prev, self._forces.copy(), self.t)
+                self._prev, self._forces.copy(), self.t, self.state_log.save())
 
     def load_state(self, state) -> None:
         import moordyn
 
-        blob, pos, vel, prev, forces, t = state
+        blob, pos, vel, prev, forces, t, log_ = state
+        self.state_log.load(log_)
         before = sys.getrefcount(None)
         moordyn.Deserialize(self._system(), blob)
         _restore_none_references(before)
@@ -570,6 +578,50 @@ class MoorDynMooring:
         s = self._system()
         return np.array([float(np.linalg.norm(moordyn.GetLineNodeTen(moordyn.GetLine(s, i + 1), 0)))
                          for i in range(self.n_lines)])
+
+    def nodes(self) -> list[np.ndarray]:
+        """Each line's node positions [m], ``(segments + 1, dim)`` from the anchor to the
+        fairlead, world frame."""
+        import moordyn
+
+        s = self._system()
+        out = []
+        for i in range(self.n_lines):
+            line = moordyn.GetLine(s, i + 1)
+            p = np.array([moordyn.GetLineNodePos(line, k) for k in range(self.segments + 1)], dtype=float)
+            p[:, 2] += self.water_level
+            out.append(p[:, [0, 2]] if self.dim == 2 else p)
+        return out
+
+    def _seabed_tol(self, i: int) -> float:
+        """Nodes this close to the seabed [m] lie on it: MoorDyn's seabed is a spring of
+        ``kbot`` [Pa/m] on a node's contact area ``d l``, so a node resting on it sinks by
+        ``w / (kbot d)`` under its submerged weight ``w`` [N/m]; three times that, and at
+        least a thousandth of a segment."""
+        ln = self.lines[i]
+        sink = ln.weight / max(self._options["seabed_stiffness"] * self._diam[i], 1e-300)
+        return max(3.0 * sink, 1e-3 * ln.length / self.segments)
+
+    def line_states(self) -> np.ndarray:
+        """Each line's :class:`~moorings.catenary.LineState` now, from MoorDyn's nodes
+        (:func:`moorings.line_events.node_states`: taut where the anchor-fairlead distance is
+        at least the unstretched length, lifted where no node but the anchor's lies on the
+        seabed, within :meth:`_seabed_tol`)."""
+        x = self.nodes()
+        return node_states(self.anchors, [p[-1] for p in x], [ln.length for ln in self.lines], x,
+                           self.anchors[:, -1], [self._seabed_tol(i) for i in range(self.n_lines)])
+
+    def fairlead_stiffness(self) -> FairleadStiffness:
+        """Each line's spring and dashpot at its fairlead over a coupling step
+        (:func:`moorings.fairlead_stiffness.axial`): ``EA`` over the suspended length along
+        the last segment, and the axial impedance ``sqrt(EA m)`` plus MoorDyn's internal
+        damping on that segment, ``damping_ratio`` times it (``BA = zeta l sqrt(EA m)``
+        acting on the segment's strain rate)."""
+        arc = np.linspace(0.0, 1.0, self.segments + 1)
+        k, c = zip(*(axial(x, arc * ln.length, ln.EA, m, ln.anchor[-1], self._seabed_tol(i),
+                           self._options["damping_ratio"])
+                     for i, (x, ln, m) in enumerate(zip(self.nodes(), self.lines, self._mass))))
+        return FairleadStiffness(np.array(k), np.array(c))
 
     def close(self) -> None:
         """Free MoorDyn and its files (also done at garbage collection)."""

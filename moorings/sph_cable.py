@@ -131,7 +131,9 @@ from scipy.optimize import brentq
 
 from cosim.errors import InputError, InstabilityError
 from moorings import sph_cable_kernels as _k
+from moorings.fairlead_stiffness import FairleadStiffness, axial
 from moorings.line import MooringLine, named_lines
+from moorings.line_events import LineStateLog, node_states
 
 log = logging.getLogger(__name__)
 
@@ -404,6 +406,15 @@ class SPHCable:
         self._next_handle = 0
         self._rebuild_external()
         self.steps = 0
+        self._state_end_forces()
+
+    def _state_end_forces(self) -> None:
+        """End forces and tensions of the present state (before the first advance: a line
+        that starts hanging pulls its supports from the start)."""
+        _k.state_end_forces(self.x, self.v, self.lam, self.ds, self.m, self.mk, self.lam0, self.EA, self.c0,
+                            self.delta, self.visc_alpha, self.visc_beta, self.omega, self.fext, self._wl, self._wr,
+                            self.hyd, self.water_z, self._bed, self._pidx, self._fend_last, self._tension)
+        self._fend_mean[:] = self._fend_last
 
     # ------------------------------------------------------------------ set-up
     def _end_slot(self, end):
@@ -729,6 +740,8 @@ class SPHCableMooring:
         self._fpos = None
         self._fvel = None
         self.t = 0.0
+        #: when each line became fully lifted or taut (:mod:`moorings.line_events`), after every step
+        self.state_log = LineStateLog([ln.name for ln in self.lines])
         if fairleads is not None:
             self.set_fairlead_motion(fairleads)
 
@@ -772,6 +785,8 @@ class SPHCableMooring:
         self.cables = cables
         self.t = float(t0)
         self.set_fairlead_motion(self._fpos, self._fvel)
+        if self.state_log.state is None:  # a resumed run keeps its log
+            self.state_log.update(self.t, self.line_states())
 
     def _quasi_static_shape(self, ln: MooringLine, fairlead) -> np.ndarray:
         """Particle positions [m] on the elastic catenary with seabed (moorings.catenary) of
@@ -804,6 +819,36 @@ class SPHCableMooring:
         for c in self.cables:
             c.advance(t, dt)
         self.t = float(t + dt)
+        self.state_log.update(self.t, self.line_states())
+
+    def _seabed_tol(self, c) -> float:
+        """Nodes this close to the seabed [m] lie on it: the contact is a projection (a node
+        on the bed sits exactly at its height), so a thousandth of the node spacing."""
+        return 1e-3 * float(c.ds.min())
+
+    def line_states(self) -> np.ndarray:
+        """Each line's :class:`~moorings.catenary.LineState` now, from its particles
+        (:func:`moorings.line_events.node_states`: taut where the anchor-fairlead distance is
+        at least the unstretched length, lifted where no particle but the anchor's lies on
+        the seabed). Without ``seabed`` no particle is ever on it."""
+        if not self.cables:
+            raise InputError(f"{self.name}: not initialised; call initialize() first")
+        bed = [ln.anchor[-1] if self.seabed else -math.inf for ln in self.lines]
+        return node_states(self.anchors, [c.x[-1] for c in self.cables], [ln.length for ln in self.lines],
+                           [c.x for c in self.cables], bed, [self._seabed_tol(c) for c in self.cables])
+
+    def fairlead_stiffness(self) -> FairleadStiffness:
+        """Each line's spring and dashpot at its fairlead over a coupling step
+        (:func:`moorings.fairlead_stiffness.axial`): ``EA`` over the suspended length along
+        the last segment, and the axial impedance ``sqrt(EA m)`` plus the artificial
+        viscosity's dashpot on that segment, ``(15/32) visc_alpha`` times it (module
+        docstring, "Time stepping")."""
+        if not self.cables:
+            raise InputError(f"{self.name}: not initialised; call initialize() first")
+        k, c = zip(*(axial(cb.x, cb.s, ln.EA, ln.mass_per_length, ln.anchor[-1] if self.seabed else -math.inf,
+                           self._seabed_tol(cb), 15.0 / 32.0 * cb.visc_alpha)
+                     for cb, ln in zip(self.cables, self.lines)))
+        return FairleadStiffness(np.array(k), np.array(c))
 
     def fairlead_forces(self) -> np.ndarray:
         """Force [N] each line exerts on its fairlead, ``(n_lines, dim)``, world frame."""
@@ -838,12 +883,13 @@ class SPHCableMooring:
 
     def save_state(self):
         return ([c.save_state() for c in self.cables], None if self._fpos is None else self._fpos.copy(),
-                None if self._fvel is None else self._fvel.copy(), self.t)
+                None if self._fvel is None else self._fvel.copy(), self.t, self.state_log.save())
 
     def load_state(self, state) -> None:
-        cs, self._fpos, self._fvel, self.t = state
+        cs, self._fpos, self._fvel, self.t, log_ = state
         for c, s in zip(self.cables, cs):
             c.load_state(s)
+        self.state_log.load(log_)
 
 
 def load_end_motion(path):

@@ -304,3 +304,31 @@ def advance(x, v, lam, ds, t0, t1, n_sub, m, mk, lam0, EA, c0, delta, alpha, bet
     for a in range(n):
         tension[a] = T[a]
     return OK, n_sub, -1
+
+
+@njit(cache=True, fastmath=_FM, error_model="numpy")
+def state_end_forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, wl, wr, hyd, water_z, bed,
+                     pidx, fend, tension):
+    """The force [N] the cable exerts on each held end's support, ``fend`` (n_presc, dim),
+    and the particle tensions ``tension`` [N] of the present state, as :func:`advance` gives
+    them at its end (the held ends taken at rest): what a cable reports before its first
+    advance."""
+    n, dim = x.shape
+    e = np.empty((n - 1, dim))
+    ell = np.empty(n - 1)
+    T = np.empty(n)
+    fseg = np.empty(n - 1)
+    Tseg = np.empty(n - 1)
+    grad = np.empty(n)
+    F = np.empty((n, dim))
+    acc = np.empty((n, dim))
+    dld = np.empty(n)
+    kfr = np.zeros(n)
+    segments(x, e, ell)
+    forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, wl, wr, hyd, water_z, bed,
+           e, ell, T, fseg, Tseg, grad, F, acc, dld, kfr)
+    for i in range(pidx.shape[0]):
+        for d in range(dim):
+            fend[i, d] = F[pidx[i], d] + fext[pidx[i], d]
+    for a in range(n):
+        tension[a] = T[a]

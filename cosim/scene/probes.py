@@ -7,8 +7,10 @@ that become one HDF5 series, one CSV and one plot each:
   and angles [deg]; per elastic plate, the displacement from the start [m] of its upper
   left corner (top, -x face) and of its tip (top centre), ``plate.corner_x``,
   ``plate.corner_z``, ``plate.tip_x``, ``plate.tip_z`` (3-D also ``_y``);
-- ``line_states``: per catenary line, its state (seed 004 Fig. 5: 0 resting, 1 partly
-  lifted, 2 fully lifted, 3 taut; :class:`moorings.catenary.LineState`);
+- ``line_states``: per line, its state (seed 004 Fig. 5: 0 resting, 1 partly lifted, 2
+  fully lifted, 3 taut; :class:`moorings.catenary.LineState`), from every model that
+  reports them (:mod:`moorings.line_events`: the catenary, the catenary FMU, the SPH cable,
+  MoorDyn);
 - ``tensions``: per line, the tension at its fairlead [N], at its anchor
   (``.anchor_tension`` [N]; the catenary, the SPH cable and MoorDyn report it, an FMU does
   not) and ``.tether`` [N], the load a taut inextensible catenary line carries as a length
@@ -122,7 +124,7 @@ def groups(scene, built) -> list[Group]:
         cols = ([f"{n}.tension" for n in lines] + ([f"{n}.anchor_tension" for n in lines] if anchors else [])
                 + ([f"{n}.tether" for n in lines] if tethered else []))
         out.append(Group("tensions", cols, ["N"] * len(cols), tensions))
-    if m is not None and p.tensions and callable(getattr(m, "line_states", None)):  # the catenary (seed 004 Fig. 5)
+    if m is not None and p.tensions and getattr(m, "state_log", None) is not None:  # seed 004 Fig. 5
         out.append(Group("line_states", [f"{n}.state" for n in built.line_names], ["-"] * len(built.line_names),
                          lambda: np.asarray(m.line_states(), float)))
     sph = built.sph

@@ -362,7 +362,7 @@ def _summary(scene, built, series, units, steps, loop_s, build_s, cpu_s, wall_be
         s["mooring"] = {"model": scene.moorings.model, "lines": built.line_names}
         if hasattr(built.mooring, "events"):  # lines with a break load (moorings.breaking)
             s["line_breaks"] = [e.as_dict() for e in built.mooring.events]
-        log_ = getattr(built.mooring, "state_log", None)  # the catenary: when lines go fully lifted, taut
+        log_ = getattr(built.mooring, "state_log", None)  # when lines go fully lifted, taut (moorings.line_events)
         if log_ is not None:
             s["line_events"] = dict(zip(built.line_names, log_.summary().values()))
     s["series"] = {k: {"unit": units[k], "min": float(v.min()), "max": float(v.max()), "mean": float(v.mean()),
