@@ -433,7 +433,11 @@ def long_period(quick: bool) -> dict:
     frequency changes sign (Tadjbakhsh & Keller 1960; it is small there), the slope's
     does not. The cylinder at 0.5 g, Tp = 0.7 s (3-D, dx = 0.1 m): leaves linear theory at
     1.02 s, run-up 0.45 m while shaken against 0.34 m, wall pressure 0.54 rho g h RMS from
-    it, 54 particles over the 1.0 m wall, free first mode -1.8 %.
+    it, 54 particles over the 1.0 m wall, free first mode -1.8 %. The whole rectangular tank
+    at 0.5 g (3-D, dx = 0.1 m): leaves linear theory at 1.22 s, run-up 0.92 m while shaken
+    (as in 2-D), free first mode -3.2 %; but 362 particles (4 %) thrown out, speeds up to
+    7.3 m/s and a wall pressure 5.8 rho g h RMS from linear theory: slamming beyond what 10
+    rows resolve (the record does not keep the pressure series to show where).
     """
     plan = ({"rectangular 2-D": ("rectangular", 2, 0.1)} if quick else
             {"rectangular 2-D": ("rectangular", 2, 0.05), "inclined 45 deg 2-D": ("inclined", 2, 0.05),
