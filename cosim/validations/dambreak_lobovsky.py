@@ -199,7 +199,7 @@ LOBOVSKY_TARGET = (f"water level h/H at the gauges H1-H4 against Lobovsky et al.
 
 
 @case("dambreak-lobovsky", "2-D dam break of Lobovsky et al. 2014, H = 0.3 m (seed 002 Appendix A, Figure A2): "
-      "water levels at the gauges H1-H4 against the measured runs", target=LOBOVSKY_TARGET, row=None,
+      "water levels at the gauges H1-H4 against the measured runs", target=LOBOVSKY_TARGET,
       quick=f"dx = H/20 = 15 mm, t* <= {T_JUDGED:g}: the surge's arrival at H2-H4 within {TOL_ARRIVAL:g} in t*, "
             f"and the RMS difference within {TOL_RMS_QUICK:g} (the full variant's {TOL_RMS:g} at H/60: at H/20 the "
             f"surge is 5-7 particles thick)")

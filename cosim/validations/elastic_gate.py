@@ -182,7 +182,7 @@ GATE_TARGET = ("the gate's free-end x and y displacement against Antoci et al. 2
 
 
 @case("elastic-gate", "2-D water column released through an elastic rubber gate (Antoci et al. 2007): the gate's "
-      "free end against the measured x and y displacements", target=GATE_TARGET, row=None,
+      "free end against the measured x and y displacements", target=GATE_TARGET,
       quick="dx = 5 mm (one particle across the gate: the thin-wall treatment), 0.3 s, N = 8: the same criteria "
             "over the frames up to 0.3 s")
 def elastic_gate(quick: bool) -> dict:
