@@ -31,22 +31,23 @@ model      surge  heave  pitch  mean tension [kN]      steps   wall   CPU
 =========  =====  =====  =====  =====================  ======  =====  =====
 catenary   1.585  0.318  0.74   94.8 / 94.3 / 94.3     3600    36.2   13.2
 fmu        1.585  0.318  0.74   94.8 / 94.3 / 94.3     3600    30.7   13.1
-moordyn    1.661  0.330  1.35   95.0 / 94.5 / 94.5     18000   165.8  72.5
-sph-cable  1.627  0.330  1.21   94.7 / 95.9 / 92.3     18000   100.9  64.6
+moordyn    1.661  0.331  1.35   95.0 / 94.6 / 94.6     19258   155.0  86.7
+sph-cable  1.625  0.331  1.31   96.0 / 93.9 / 93.4     15705   131.7  65.3
 =========  =====  =====  =====  =====================  ======  =====  =====
 
-(moordyn and sph-cable at coupling.dt = 0.005 s set by hand; the coupler's own step is now
-0.0050 s for MoorDyn, the same, and 0.0061 s for the SPH cable.)
+(moordyn and sph-cable at the coupler's own step, cosim.line_step: 0.0045-0.0050 s and
+0.0057 s on average, moving with the lines' geometry; at coupling.dt = 0.005 s set by hand
+they gave 1.661 / 0.330 m, 72.5 s CPU, and 1.627 / 0.330 m, 64.6 s CPU, on a busier machine.)
 
-Within 5 % of each other in surge (the dynamic lines +2.6 % and +4.8 %), 4 % in heave and
-1.2 % in mean tension; pitch differs more (0.74 against 1.2-1.35 deg: the dynamic lines'
-inertia and drag act at the bottom rim, 1.5 m under the centre); their tensions swing wider (SPH cable 40-219 kN
-against the catenary's 84-108 kN over 30-90 s: the inertia and drag of 60 t of chain). The
-FMU is the catenary law compiled: the same figures to the digits shown. No line breaks
-(largest tension 219 kN against 1400 kN); every line stays partly lifted (summary.json
-line_events, catenary). The surge beats between the 20 s wave and the moored base's own
-surge period (~13 s: 60 t against ~15 kN/m from the three lines), so its amplitude varies
-from window to window (catenary: 0.86-1.59 m over 20 s windows). The wave at the base is
+Within 5 % of each other in surge (the dynamic lines +2.5 % and +4.8 %), 4 % in heave and
+1.3 % in mean tension; pitch differs more (0.74 against 1.3-1.35 deg: the dynamic lines'
+inertia and drag act at the bottom rim, 1.5 m under the centre); their tensions swing wider
+(SPH cable 12-209 kN, MoorDyn 77-111 kN, against the catenary's 84-108 kN over 30-90 s: the
+inertia and drag of 60 t of chain). The FMU is the catenary law compiled: the same figures
+to the digits shown. No line breaks (largest tension over 30-90 s 209 kN against 1400 kN);
+every line of every model stays partly lifted (summary.json line_events). The surge beats
+between the 20 s wave and the moored base's own surge period (~13 s: 60 t against ~15 kN/m
+from the three lines), so its amplitude varies from window to window (catenary: 0.86-1.59 m over 20 s windows). The wave at the base is
 the piston's far field, H = 0.700 m (gauges: 0.35 m amplitude), from a stroke of 1.51 m.
 
 The SPH fluid on the same scene (`--set fluid.model=sph --set fluid.dx=2.0`; at that
