@@ -48,7 +48,8 @@ to the digits shown. No line breaks (largest tension over 30-90 s 209 kN against
 every line of every model stays partly lifted (summary.json line_events). The surge beats
 between the 20 s wave and the moored base's own surge period (~13 s: 60 t against ~15 kN/m
 from the three lines), so its amplitude varies from window to window (catenary: 0.86-1.59 m
-over 20 s windows). The wave at the base is the piston's far field, H = 0.700 m (gauges: 0.35 m amplitude), from a stroke of 1.51 m.
+over 20 s windows). The wave at the base is the piston's far field, H = 0.700 m (gauges:
+0.35 m amplitude), from a stroke of 1.51 m.
 
 The SPH fluid on the same scene (`--set fluid.model=sph --set fluid.dx=2.0`; at that
 spacing the 1.5 m draft is less than one particle, a machinery check only): 35 350
