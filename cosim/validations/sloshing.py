@@ -402,20 +402,23 @@ def westergaard_3d(quick: bool) -> dict:
                                                 mid    mid     mid    side   side
     ======  =======  =========  =====  =======  =====  ======  =====  =====  =====  =====  =====
     0.10    1 + 2    8868       4560   95       0.062  0.072   0.041  0.063  0.045  0.010  0.739
+    0.075   1 + 1    16462      4080   136      0.027  0.067   0.017  0.028  0.019  0.009  0.730
+    0.05    1 + 1    44628      6080   566      0.031  0.035   0.018  0.031  0.020  0.008  0.738
     ======  =======  =========  =====  =======  =====  ======  =====  =====  =====  =====  =====
 
-    (CPU: one thread, NUMBA_NUM_THREADS=1. Against the 7/8 parabola at dx = 0.1 m: raw
-    0.037, Eq. 15 0.117, face 0.053 on the mid-plane; the paper's 0.0411 raw and 0.02
-    with Eq. 15 at dx = 0.05 m are against the parabola, which lies 0.15 above the exact
-    series at the base.) The whole tank at dx = 0.1 m reads as the 2-D section at the same
-    dx and periods (raw 0.062, face 0.040) on its mid-plane, and the rows next to the side
-    walls differ from it by at most 0.010 (face) and 0.0065 (raw), their RMS by 0.003: the
-    side walls do to k_p no more than the resolution's own error. The full variant (dx =
-    0.05 m: 44 628 particles, 6080 steps, ~640 CPU-s by the rate of the row above) was not
-    run to its end on 2026-11-25: the machine's two cores were held by higher-priority
-    jobs. The 0.3 m slice of sessions 5-8 at dx = 0.05 m (1 + 2 periods) met both
-    targets on its mid-plane (raw 0.032, face 0.019; docs/validation/westergaard-3d_history.md).
-    The quick slice (dx = 0.1 m, c0 =
+    (CPU: all threads of the run, NUMBA_NUM_THREADS = 1 / 2 / 6 from the top row down.
+    The last row is the full variant: both stated targets met on the mid-plane, raw 0.031
+    < 0.04 and face 0.018 < 0.02, base k_p 1.5 % above the exact 0.727; next to the side
+    walls raw 0.031 and face 0.0198, within them too. Against the 7/8 parabola (the
+    paper's reference: its 0.0411 raw and 0.02 with Eq. 15 at dx = 0.05 m are against
+    it, and it lies 0.15 above the exact series at the base): raw 0.037 / 0.043 / 0.039,
+    Eq. 15 0.117 / 0.117 / 0.085, face 0.053 / 0.063 / 0.052 down the rows; against
+    Westergaard's semi-infinite series at dx = 0.05 m: raw 0.022, face 0.017.) The rows
+    next to the side walls differ from the mid-plane's by at most 0.010 (face) and 0.0065
+    (raw) at every dx, their RMS by at most 0.0034: the side walls, which in theory change
+    nothing, do to k_p less than the resolution's own error. At dx = 0.1 m the whole tank
+    reads as the 2-D section at the same dx and periods (raw 0.062, face 0.040). The
+    quick slice (dx = 0.1 m, c0 =
     700 m/s, 1 + 1 periods, default walls; 5382 particles, 1520 steps, 22 CPU-s): raw
     0.149, Eq. 15 0.069, face 0.054 on the mid-plane, the 2-D section with the same
     settings 0.264, 0.075, 0.044; Eq. 15 and face within 0.012 and 0.025 of it row by row.
