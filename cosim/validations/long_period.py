@@ -1,6 +1,7 @@
 """The long-period excitations of seed 001 (001_14936b82710365b2.txt §3.1 Fig. 7-8, §3.3
-Fig. 18): the rectangular tank (3.0 m long, 1.0 m wide, water 1.0 m) at T_p = 1.0 s and the
-cylinder (D = 2 m, water 0.6 m) at T_p = 0.7 s, base acceleration 0.5 g sin(2 pi t / T_p)
+Fig. 18, §3.2 Fig. 13): the rectangular tank (3.0 m long, 1.0 m wide, water 1.0 m) and the
+same tank with its right side 45 deg from the vertical at T_p = 1.0 s, and the cylinder
+(D = 2 m, water 0.6 m) at T_p = 0.7 s, base acceleration 0.5 g sin(2 pi t / T_p)
 from rest. The paper shows total wall pressures at some times (the times are in its
 figures, not in its text) and says only that the water climbs the walls with "big churning
 and splattering"; it gives no numbers. So the sloshing is compared with linear
