@@ -274,26 +274,27 @@ def inclined_wall_3d(quick: bool) -> dict:
     0.075   15     1 + 1    7785       4080   77       0.067   0.061   0.022
     0.075   30     1 + 1    8142       4080   80       0.058   0.054   0.022
     0.075   45     1 + 1    8685       4080   85       0.020   0.017   0.022
+    0.05    15     1 + 1    15447      6080   224      0.087   0.081   0.032
+    0.05    30     1 + 1    16191      6080   233      0.048   0.044   0.032
+    0.05    45     1 + 1    17268      6080   246      0.012   0.009   0.031
     ======  =====  =======  =========  =====  =======  ======  ======  ======
 
     (Quick: 45 deg, dx = 0.1 m, c0 = 700 m/s, 1 + 1 periods; 5664 particles, 1520 steps,
     22 CPU-s: 0.010 against Chwang, the 2-D section with the same settings 0.007; the
     slice's face profile within 0.018 of the section's row by row, its vertical side
-    within 0.020; out of phase 0.018.) The full variant (dx = 0.05 m, ~15 000 particles
-    and 6080 steps an angle, ~300 CPU-s an angle by the rate of the rows above) was not
-    run on 2026-11-25: the machine's two cores were held by higher-priority jobs. The
-    stated 0.04 is met at 45 deg at both dx and missed at 30 deg (0.055, 0.058) and at
-    15 deg at dx = 0.075 m (0.067; 0.031 at 0.1): the error does not fall with dx on the
-    steeper faces. There the slice's face reads low over the lower half (15 deg at dx =
-    0.075 m: 0.03-0.09 below the tank's exact pressure from the base to mid-depth, 30
-    deg: 0.07-0.08), high at the row next to the surface (which the SPH surface holds
+    within 0.020; out of phase 0.018.) The last three rows are the full variant: the
+    stated 0.04 is missed at 15 deg (0.087) and 30 deg (0.048) and met at 45 deg
+    (0.012). The error does not fall with dx on the steeper faces (15 deg: 0.031 / 0.067
+    / 0.087 from dx = 0.1 m down; 30 deg: 0.055 / 0.058 / 0.048). There the slice's
+    face reads low over the lower half (15 deg at dx = 0.075 m: 0.03-0.09 below the
+    tank's exact pressure from the base to mid-depth, 30 deg: 0.07-0.08), high at the row next to the surface (which the SPH surface holds
     above zero, as in westergaard) and scatters from row to row; the largest speeds are
-    0.18-0.22 m/s at 15 and 30 deg against 0.08 at 45 (the impulsive flow's is ~0.02), so
+    0.17-0.22 m/s at 15 and 30 deg against 0.08 at 45 (the impulsive flow's is ~0.02), so
     particles move near those slopes, which :func:`fluid.shapes.inclined_tank` warns of
     for slanted walls; the cause was not established further. The 2-D section reads
     0.045 / 0.021 / 0.0055 at dx = 0.1 m and 0.035 / 0.022 / 0.0067 at 0.05 m (1 + 2 and
-    2 + 3 periods; ``inclined-wall``): the 3-D slice is worse at 30 and 45 deg and, at
-    dx = 0.075 m, at 15. Out of phase below 0.042; the
+    2 + 3 periods; ``inclined-wall``): the 3-D slice is worse at every angle at dx = 0.05
+    m (0.087 / 0.048 / 0.012), and the 2-D section meets the target where it does not. Out of phase below 0.042; the
     vertical side within 0.061 of its exact pressure at every angle. The paper gives no
     numbers for Fig. 12 (its SPH against Chwang), so no comparison with its own error is
     possible.
