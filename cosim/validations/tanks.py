@@ -287,8 +287,9 @@ def inclined_wall_3d(quick: bool) -> dict:
     (0.012). The error does not fall with dx on the steeper faces (15 deg: 0.031 / 0.067
     / 0.087 from dx = 0.1 m down; 30 deg: 0.055 / 0.058 / 0.048). There the slice's
     face reads low over the lower half (15 deg at dx = 0.075 m: 0.03-0.09 below the
-    tank's exact pressure from the base to mid-depth, 30 deg: 0.07-0.08), high at the row next to the surface (which the SPH surface holds
-    above zero, as in westergaard) and scatters from row to row; the largest speeds are
+    tank's exact pressure from the base to mid-depth, 30 deg: 0.07-0.08), high at the
+    row next to the surface (which the SPH surface holds above zero, as in westergaard)
+    and scatters from row to row; the largest speeds are
     0.17-0.22 m/s at 15 and 30 deg against 0.08 at 45 (the impulsive flow's is ~0.02), so
     particles move near those slopes, which :func:`fluid.shapes.inclined_tank` warns of
     for slanted walls; the cause was not established further. The 2-D section reads
