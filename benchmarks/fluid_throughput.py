@@ -47,9 +47,9 @@ operations on each (per 8-pair pass: 19 multiplications, 13 FMAs, 12 additions, 
 division, one square root), 22.7 GFLOP/s: 27 % of two AVX-512 FMAs per cycle (83 GFLOP/s),
 55 % of what Zen 4 issues (one, 41.5 GFLOP/s); on the pairs within 2h, 9 % and 18 %.
 ``--precision float32`` (FluidConfig.precision) puts 16 pairs in a pass: see
-fluid.equations.interact for why that gives 1.22x and not 2. For the ratio to DualSPHysics
-see ``../shared/dualsphysics/README.md`` (measured side by side on other machines: 2-D
-4.6-5.6x on an AVX-512 machine, 3.3x on an AVX2 Zen 3 one, 3-D 2.0x there).
+fluid.equations.interact for why that gives 1.22x and not 2. The ratio to DualSPHysics 5.4's
+CPU code, measured side by side on other machines (the developers' notes, not part of this
+repository): 2-D 4.6-5.6x on an AVX-512 machine, 3.3x on an AVX2 Zen 3 one, 3-D 2.0x there.
 Laminar viscosity adds 7 % to a 2-D step, XSPH 8 %, both 14 %, the renormalised
 diffusion (``diffusion="antuono"``) 70 % (a second pair loop), nothing when off. On a
 machine running other work, GNU OpenMP's spinning idle threads can take the cores the
