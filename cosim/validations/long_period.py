@@ -32,8 +32,9 @@ from cosim.errors import InputError
 from cosim.validation import case
 from cosim.scene.setup import settings
 from cosim.validations import forced_sloshing as fs
-from cosim.validations.sloshing import face_pressure
-from fluid.geometry import assemble, block, set_hydrostatic, tank_walls
+from cosim.validations.sloshing import _moving_tank, face_pressure
+from cosim.validations.tanks import moving_walls
+from fluid.geometry import set_hydrostatic
 from fluid.motion import Harmonic, Signal, Translation
 from fluid.particles import Kind
 from fluid.probes import surface_elevation
@@ -71,24 +72,13 @@ def _tank(shape: str, dim: int, dx: float, tank: dict):
     bottom-left corner at the origin, the cylinder's axis on z."""
     L, h, H, W = tank["size"], tank["depth"], tank["height"], tank["width"]
     if shape == "inclined":
-        src = inclined_tank(dim, dx, tank["beta"], L, h, H, width=W).particles
-        fl = src.kind == Kind.FLUID
-        ps = assemble(dim, dx, RHO0, src.pos[fl], [(src.pos[~fl], Kind.MOVING_WALL, 0)]).particles
-        return ps, np.array([_centre_x(tank), 0.5 * W])
+        return moving_walls(inclined_tank(dim, dx, tank["beta"], L, h, H, width=W), dim, dx), \
+            np.array([_centre_x(tank), 0.5 * W])
     if shape == "rectangular":
-        lo = np.zeros(dim)
-        hi = np.array([L, H] if dim == 2 else [L, W, H])
-        top = hi.copy()
-        top[-1] = h
-        walls = tank_walls(lo, hi, dx, 3)
-        ps = assemble(dim, dx, RHO0, block(lo, top, dx), [(walls, Kind.MOVING_WALL, 0)]).particles
-        return ps, np.array([0.5 * L, 0.5 * W])
+        return _moving_tank(dim, dx, L, h, H, W), np.array([0.5 * L, 0.5 * W])
     if dim != 3:
         raise InputError("long-period: the cylinder is 3-D; give dim=3")
-    src = cylinder_tank(dx, L, h, H).particles
-    fl = src.kind == Kind.FLUID
-    ps = assemble(3, dx, RHO0, src.pos[fl], [(src.pos[~fl], Kind.MOVING_WALL, 0)]).particles
-    return ps, np.zeros(2)
+    return moving_walls(cylinder_tank(dx, L, h, H), 3, dx), np.zeros(2)
 
 
 def _mode_basis(shape: str, size: float, xc: np.ndarray, modes) -> np.ndarray:
@@ -130,9 +120,9 @@ def _walls(shape: str, tank: dict, zf: np.ndarray, dim: int):
     """Face points (tank frame: x from the centre, y = 0, z up from the bottom) [m] and
     their normals into the water, left and right, at heights ``zf``; and the x of the
     still surface's ends (where linear theory's run-up is read)."""
-    L, h = tank["size"], tank["depth"]
+    L = tank["size"]
     tb = math.tan(math.radians(tank.get("beta", 0.0)))
-    half = 0.5 * (L + h * tb)
+    half = _centre_x(tank)
     x = {"left": np.full(zf.size, -half),
          "right": (L + zf * tb - half) if shape == "inclined" else np.full(zf.size, half)}
     b = math.atan(tb)

@@ -33,9 +33,13 @@ from scipy.sparse import coo_matrix
 from scipy.sparse.linalg import spsolve
 
 
-def _mesh(length: float, depth: float, beta_deg: float, nz: int, nx: int):
-    """Nodes (N, 2) and triangles (M, 3) of the trapezoid, rows j = 0..nz bottom to top,
-    nx + 1 nodes a row (node j (nx + 1) + i)."""
+def _mesh(length: float, depth: float, beta_deg: float, nz: int, nx: int | None):
+    """Nodes (N, 2), triangles (M, 3) and ``nx`` of the trapezoid, rows j = 0..nz bottom to
+    top, nx + 1 nodes a row (node j (nx + 1) + i); ``nx`` None: elements about square at
+    mid-depth."""
+    if not (length > 0 and depth > 0 and 0 <= beta_deg < 90):
+        raise ValueError("length > 0, depth > 0 and 0 <= beta_deg < 90 are needed")
+    nx = nx or int(math.ceil(nz * (length + 0.5 * depth * math.tan(math.radians(beta_deg))) / depth))
     tb = math.tan(math.radians(beta_deg))
     z = np.linspace(0.0, depth, nz + 1)
     s = np.linspace(0.0, 1.0, nx + 1)
@@ -45,7 +49,7 @@ def _mesh(length: float, depth: float, beta_deg: float, nz: int, nx: int):
     a = (j * (nx + 1) + i).ravel()
     b, c, d = a + 1, a + nx + 2, a + nx + 1
     tri = np.concatenate([np.stack([a, b, c], 1), np.stack([a, c, d], 1)])
-    return nodes, tri
+    return nodes, tri, nx
 
 
 def _stiffness(nodes: np.ndarray, tri: np.ndarray):
@@ -67,10 +71,7 @@ def impulsive_pressure(length: float, depth: float, beta_deg: float, nz: int = 1
     """k_p = p / (rho a0 H) at the nodes of the tank's mesh for a base acceleration a0 along
     +x. Returns (nodes (N, 2) [m], k_p (N,), nz, nx). ``length`` [m]: the bottom; ``depth``
     [m]: H; ``beta_deg``: the right side's angle from the vertical, leaning outwards."""
-    if not (length > 0 and depth > 0 and 0 <= beta_deg < 90):
-        raise ValueError("length > 0, depth > 0 and 0 <= beta_deg < 90 are needed")
-    nx = nx or int(math.ceil(nz * (length + 0.5 * depth * math.tan(math.radians(beta_deg))) / depth))
-    nodes, tri = _mesh(length, depth, beta_deg, nz, nx)
+    nodes, tri, nx = _mesh(length, depth, beta_deg, nz, nx)
     K = _stiffness(nodes, tri)
     n = len(nodes)
     # Neumann loads, dp/dn = -n_x (rho a0 = 1, H = 1 below: k_p = p / H): the left side
@@ -111,10 +112,7 @@ def sloshing_modes(length: float, depth: float, beta_deg: float, n_modes: int = 
     k = n pi / L (tests/test_forced_sloshing.py)."""
     from scipy.linalg import cho_solve_banded, cholesky_banded, eigh
 
-    if not (length > 0 and depth > 0 and 0 <= beta_deg < 90):
-        raise ValueError("length > 0, depth > 0 and 0 <= beta_deg < 90 are needed")
-    nx = nx or int(math.ceil(nz * (length + 0.5 * depth * math.tan(math.radians(beta_deg))) / depth))
-    nodes, tri = _mesh(length, depth, beta_deg, nz, nx)
+    nodes, tri, nx = _mesh(length, depth, beta_deg, nz, nx)
     K = _stiffness(nodes, tri).tocsc()
     n = len(nodes)
     top = np.arange(nz * (nx + 1), n)

@@ -37,18 +37,25 @@ def chwang_profile(beta_deg: float) -> tuple[np.ndarray, np.ndarray]:
     return y, np.array([row[f"Cp_y{k // 10}{k % 10}H"] for k in range(0, 11)])
 
 
-def _shaken_tank(built, dim: int, dx: float, depth: float, c0: float, a0: float, Tp: float,
-                 wall_top: float | None = None, **overrides):
-    """The fluid of a tank (a :class:`fluid.geometry.Built` with FIXED walls) whose walls,
-    one MOVING group, follow the base acceleration ``a0 sin(2 pi t / Tp)`` along +x from
-    rest, the water at hydrostatic density: (fluid, the motion, its config). Wall
-    particles above ``wall_top`` [m] (None: all kept) are left out."""
+def moving_walls(built, dim: int, dx: float, wall_top: float | None = None):
+    """The particles of a tank (a :class:`fluid.geometry.Built` with FIXED walls) with its
+    walls one MOVING_WALL group 0, those above ``wall_top`` [m] (None: all kept) left out;
+    water at rest, its hydrostatic density left to the caller."""
     src = built.particles
     fl = src.kind == Kind.FLUID
     walls = src.pos[~fl]
     if wall_top is not None:
         walls = walls[walls[:, -1] <= wall_top]
-    ps = assemble(dim, dx, RHO0, src.pos[fl], [(walls, Kind.MOVING_WALL, 0)]).particles
+    return assemble(dim, dx, RHO0, src.pos[fl], [(walls, Kind.MOVING_WALL, 0)]).particles
+
+
+def _shaken_tank(built, dim: int, dx: float, depth: float, c0: float, a0: float, Tp: float,
+                 wall_top: float | None = None, **overrides):
+    """The fluid of a tank (a :class:`fluid.geometry.Built` with FIXED walls) whose walls,
+    one MOVING group, follow the base acceleration ``a0 sin(2 pi t / Tp)`` along +x from
+    rest, the water at hydrostatic density: (fluid, the motion, its config). Wall
+    particles above ``wall_top`` [m] (None: all kept) are left out (:func:`moving_walls`)."""
+    ps = moving_walls(built, dim, dx, wall_top)
     cfg = FluidConfig(dim=dim, dx=dx, c0=c0, **overrides)
     set_hydrostatic(ps, depth, RHO0, cfg.speed_of_sound, cfg.gamma, cfg.g)
     f = Fluid(cfg, ps)
