@@ -226,6 +226,9 @@ def test_an_elastic_plate_is_a_scene_body_with_corner_and_tip_probes(tmp_path):
     for q in ("corner_x", "corner_z", "tip_x", "tip_z"):
         assert r.units[f"plate.{q}"] == "m" and len(r[f"plate.{q}"]) == 5
     assert "plate.fluid_Fx" in r and not any(n.startswith("plate_link") for n in r.names)
+    spans = np.array([0.005] + [0.01] * 7 + [0.005])  # node shares of the 8-element plate [m], width 1 m
+    p = np.array([r[f"plate.p{k}"] for k in range(9)])
+    assert r.units["plate.p0"] == "Pa" and np.allclose(spans @ p, r["plate.fluid_Fx"], rtol=1e-12, atol=1e-12)
     assert np.abs(r["plate.corner_x"]).max() < 1e-6  # the water has not arrived yet
 
 

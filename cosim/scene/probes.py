@@ -16,7 +16,12 @@ that become one HDF5 series, one CSV and one plot each:
   not) and ``.tether`` [N], the load a taut inextensible catenary line carries as a length
   constraint;
 - ``loads``: per body, the fluid's and the moorings' force [N] over the last step (a
-  plate's: the sum over its links, the clamped foot's share included);
+  plate's: the sum over its links, the clamped foot's share included); per elastic plate
+  also the net pressure along x [Pa] on each node's share, ``plate.p0`` (the clamp) to
+  ``plate.pN`` (the free end), node ``k`` at ``k L / N`` from the clamp: the fluid's x
+  force on link ``k`` (the hat-weighted share of the boundary particles' forces,
+  :meth:`bodies.elastic.ElasticBody.split`) over its span (``l / 2`` at the two ends,
+  ``l`` between) times the width (one group per plate, ``PLATE_pressure``);
 - ``gauges``: free-surface elevation above the still water [m] at each gauge (the SPH
   fluid's, or the analytic fluid's linear waves);
 - ``pressure``: each wall patch's pressure [Pa];
@@ -104,6 +109,16 @@ def groups(scene, built) -> list[Group]:
 
             cols = [f"{n}.{src}_F{c}" for n in rigid + list(plates) for src in ("fluid", "mooring") for c in comps]
             out.append(Group("loads", cols, ["N"] * len(cols), loads))
+            for n, m in plates.items():  # the net pressure on each node's share of the plate
+                ids = [names.index(k) for k in m.link_names]
+                area = np.diff(m.link_bounds, axis=1)[:, 0] * m.width
+
+                def node_pressure(ids=ids, area=area):
+                    last = led.last()
+                    return np.asarray(last["fluid_force"])[ids, 0] / area if last else 0.0 * area
+
+                out.append(Group(f"{n}_pressure", [f"{n}.p{k}" for k in range(len(ids))], ["Pa"] * len(ids),
+                                 node_pressure))
     m = built.mooring
     if m is not None and p.tensions:
         lines = built.line_names
