@@ -249,3 +249,17 @@ def test_a_3d_elastic_plate_scene_builds_with_the_plate_across_its_width(tmp_pat
     motion = next(g for g in groups(scene, built) if g.name == "motion")
     assert motion.columns == [f"plate.{s}_{c}" for s in ("corner", "tip") for c in "xyz"]
     assert np.abs(motion.sample()).max() == 0.0
+
+
+def test_a_hanging_elastic_plate_scene_passes_its_direction_to_the_chain(tmp_path):
+    """``direction = "down"``: the chain is clamped at ``base`` (its top) and its boundary
+    particles lie between the free end, ``length`` below, and the clamp."""
+    from cosim.scene import Scene
+    from cosim.scene.build import build
+
+    data = __import__("tomllib").loads(PLATE_SCENE)
+    data["bodies"][0].update(base=[0.298, 0.15], direction="down")
+    built = build(Scene.from_dict(data), tmp_path)
+    assert built.plates["plate"].direction == "down"
+    z = built.fluid.elastic[0].place()[0][:, 2]
+    assert (z.min(), z.max()) == pytest.approx((0.07 + 0.005, 0.15 - 0.005))  # cell-centred, dx = 0.01 m

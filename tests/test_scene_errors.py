@@ -646,6 +646,11 @@ CASES = [
          "a 2-D plate is 1 m wide (the scene's depth); leave width out", "Scene.bodies[0].width"),
     case("too few elements for an elastic plate", "plate", ("bodies[0].elements", 3), "bodies[0].elements",
          "3 is out of range; give a whole number >= 4", "ElasticPlate.elements"),
+    case("an elastic plate turned sideways", "plate", ("bodies[0].direction", "sideways"), "bodies[0].direction",
+         "'sideways' is not accepted; give one of 'up', 'down'", "ElasticPlate.direction"),
+    case("a hanging elastic plate through the floor", "plate", ("bodies[0].direction", "down"), "bodies[0].base",
+         "z = 0 m: a hanging plate 0.08 m long clamped there reaches z = -0.08 m, below the tank's floor at z = 0 m; "
+         "give base z >= 0.08 or a shorter length", "Scene.bodies[0].base"),
     # -- times and files
     case("plot_at outside the run", "flume", ("world.plot_at", [2.5, 6.0]), "world.plot_at[1]",
          "6.0 s lies outside the run, 0 .. 5.0 s", "World.plot_at[1]"),

@@ -193,7 +193,7 @@ def plates(scene) -> dict:
             base = (b.base[0], 0.0, b.base[1]) if dim == 2 else tuple(b.base)
             out[b.name] = elastic_beam(b.name, b.length, b.thickness, E=b.E, rho=b.density,
                                        width=1.0 if dim == 2 else b.width, nu=b.nu, n_elements=b.elements,
-                                       base=base, beta=b.damping, thin_wall=b.thin_wall)
+                                       base=base, beta=b.damping, thin_wall=b.thin_wall, direction=b.direction)
     return out
 
 

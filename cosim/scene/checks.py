@@ -317,6 +317,12 @@ def _check_plate(s, dim, b, key) -> None:
                          f"{max(dx - b.thickness / 2, 0.0):.3g} m on each side)")
     if s.domain is not None:
         floor = _domain_box(s.domain, dim)[0][-1]
+        if b.direction == "down":
+            if b.base[-1] - b.length < floor - 1e-9 * max(1.0, abs(floor)):
+                raise SceneError(f"{key}.base", f"z = {b.base[-1]:g} m: a hanging plate {b.length:g} m long clamped "
+                                 f"there reaches z = {b.base[-1] - b.length:g} m, below the tank's floor at z = "
+                                 f"{floor:g} m; give base z >= {floor + b.length:g} or a shorter length")
+            return
         if abs(b.base[-1] - floor) > 1e-9 * max(1.0, abs(floor)):
             raise SceneError(f"{key}.base", f"z = {b.base[-1]:g} m: the plate is clamped by its foot to the tank's "
                              f"floor at z = {floor:g} m; give base z = {floor:g}")

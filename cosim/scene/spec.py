@@ -608,12 +608,15 @@ class MJCF(Spec):
 class ElasticPlate(Spec):
     """An elastic plate (a cantilever) clamped by its foot to the tank's floor at ``base``
     [m] (the centre of the foot: (x, z) in 2-D, (x, y, z) in 3-D) and rising ``length`` [m]
-    along z; ``thickness`` [m] along x (the bending direction), in 3-D ``width`` [m] along y
+    along z, or (``direction = "down"``) clamped by its top at ``base`` and hanging
+    ``length`` along -z, its free end at or above the floor (a gate, e.g. Antoci et al.'s);
+    ``thickness`` [m] along x (the bending direction), in 3-D ``width`` [m] along y
     (2-D: 1 m). A chain of ``elements`` rigid links joined by bending hinges ``E I / l`` and
     shear slides ``kappa G A / l`` (a discrete Timoshenko beam, :mod:`bodies.elastic`); the
     SPH fluid's boundary particles follow its deformed surface. Probes: the displacement of
-    its upper left corner (top, -x face) and of its tip (top centre). ``thin_wall``: a plate
-    fewer than two particle spacings thick gets two columns of boundary particles anyway,
+    its upper left corner (top, -x face) and of its tip (top centre); when hanging, of its
+    free end's (bottom) left corner and centre. ``thin_wall``: a plate fewer than two
+    particle spacings thick gets two columns of boundary particles anyway,
     one for each side (the fluid stands off it by up to half a spacing); without it such a
     plate is refused."""
 
@@ -624,12 +627,14 @@ class ElasticPlate(Spec):
     thickness: float = required(num(None, "thickness along x", "m", lo=0, lo_open=True, optional=False))
     E: float = required(num(None, "Young's modulus", "Pa", lo=0, lo_open=True, optional=False))
     density: float = required(num(None, "density", "kg/m^3", lo=0, lo_open=True, optional=False))
-    base: tuple = required(vec(None, "centre of the clamped foot, on the floor", "m"))
+    base: tuple = required(vec(None, "centre of the clamped end: the foot, on the floor (the top when hanging)", "m"))
     width: float = num(None, "width along y (3-D only)", "m", lo=0, lo_open=True)
     nu: float = num(0.0, "Poisson's ratio", lo=-1.0, hi=0.5, lo_open=True, hi_open=True)
     elements: int = whole(8, "elements along the plate (8: first three frequencies within 1 %)", lo=4)
     damping: float = num(0.0, "stiffness-proportional damping beta (joint damping beta k)", "s", lo=0)
     thin_wall: bool = flag(False, "two columns of boundary particles for a plate under two spacings thick")
+    direction: str = choice("up", "up: clamped by its foot, rising along z; down: clamped by its top, hanging along -z",
+                            ("up", "down"))
 
     # what the checks of the other bodies read: a plate stands upright at a given pose
     place = "given"
@@ -639,7 +644,8 @@ class ElasticPlate(Spec):
     @property
     def pos(self) -> tuple:
         """The plate's centre [m] (undeformed)."""
-        return tuple(self.base[:-1]) + (self.base[-1] + 0.5 * self.length,)
+        half = 0.5 * self.length if self.direction == "up" else -0.5 * self.length
+        return tuple(self.base[:-1]) + (self.base[-1] + half,)
 
 
 BODIES = (Box, Cylinder, Sphere, MJCF, ElasticPlate)
