@@ -76,30 +76,8 @@ steps for fmu and moordyn), ``sys.getrefcount(None)`` flat for all 20 chunks of 
 (fmu 44 680, moordyn 39 063). CPU for 10^6 steps: catenary 32 min, sph-cable 40, fmu 20,
 moordyn 49.
 
-Measured 2026-11-25, AMD EPYC (model name as /proc/cpuinfo gives it), 2 cores shared with
-other developers' test runs (1-minute load average over each run given: 0.9 to 4.2, so the
-wall rates are what this process got; steps per CPU-second is the figure that survives the
-load), Python 3.11.7, moordyn 2.7.2, dt = 0.01 s, ledger truncated each chunk:
-
-    python benchmarks/soak.py --steps 100000 --every 5000 --models catenary,fmu      (load 4.2, 3.7)
-    python benchmarks/soak.py --steps 50000 --every 2500 --models sph-cable           (load 2.1)
-    python benchmarks/soak.py --steps 50000 --every 2500 --models moordyn             (load 0.9: died)
-    python benchmarks/soak.py --steps 50000 --every 2500 --models moordyn --patch-moordyn  (load 1.7)
-
-    model      steps wall s st/s st/cpu-s RSS MB first chunk->end B/1000st ticks |dp-J| N s  z slope/1e6  |dL-JL|
-    catenary  100000   340   294   425     191.3 -> 192.2            477     0   4.1e-10   -4.3e-9 N s   9.3e-12
-    fmu       100000   337   297   434      79.0 ->  79.5           2224     0   4.1e-10   -4.3e-9 N s   9.3e-12
-    sph-cable  50000   123   406   410     212.1 -> 213.8           1658     0   2.5e-10   -5.0e-9 N s   7.5e-13
-    moordyn    15000    53   281   281      66.5 ->  66.8              0     0   7.4e-11   -4.9e-9 N s   7.5e-13  DIED
-    moordyn*   50000   189   264   267      66.7 ->  67.1              0     0   2.5e-10   -4.9e-9 N s   2.8e-12
-
-    * --patch-moordyn. DIED: SIGABRT, see the findings. B/1000st: RSS slope over the second
-    half of the chunks. |dp-J|: momentum residual at the end, 2e-17 of the gross impulse
-    in every run; z slope: its drift. |dL-JL|: angular momentum residual [kg m^2/s].
-    "other" in every run: ncon<=0 nefc<=0 ngeom=1 tendons=0 eq=0 armature=0 damping=0.
-
-    time for 10^6 steps: catenary 39 min of CPU (57 min wall at that load), fmu 38 (56),
-    sph-cable 41 (41), moordyn 62 (63) with the patch: ~3 h of CPU for the four.
+The shorter runs of sessions 7-8 (100 000 steps of catenary and fmu, 50 000 of sph-cable, moordyn
+before and after its repair) are in docs/benchmarks/soak_history.md; the findings below cite them.
 
 Findings.
 
