@@ -762,6 +762,12 @@ FILE_CASES = [
          "Scene.base_motion.components[1].file",
          files={"coarse.AT2": AT2_HEAD + "NPTS=   10, DT=   .5000 SEC\n0.0 0.01 0.02 0.01 0.0\n"
                               "-0.01 -0.02 -0.01 0.0 0.0\n"}),
+    case("an earthquake record too coarse for the first sloshing mode", "tank2d",
+         ("base_motion", {"kind": "earthquake", "file": "coarse.AT2"}), "base_motion.file",
+         "sampled every 0.5 s: too coarse for the water's first sloshing period of 1.32 s (linear theory), which "
+         "needs at least 10 samples (DT <= 0.132 s)", "Scene.base_motion.file",
+         files={"coarse.AT2": AT2_HEAD + "NPTS=   10, DT=   .5000 SEC\n0.0 0.01 0.02 0.01 0.0\n"
+                              "-0.01 -0.02 -0.01 0.0 0.0\n"}),
     # -- a table of motion
     case("a table that is not numbers", "tank2d", ("base_motion.file", "labelled.txt"), "base_motion.file",
          "line 1 of 'labelled.txt' is not a row of numbers: 'time displacement'; give rows of numbers separated by "

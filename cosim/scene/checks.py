@@ -233,7 +233,8 @@ def _check_excitations(s, dim):
         if hasattr(b, "file"):
             _file(b.file, "base_motion.file")
         if isinstance(b, Earthquake):
-            _check_at2(b.file, b.baseline_degree, "base_motion.file")
+            rec = _check_at2(b.file, b.baseline_degree, "base_motion.file")
+            _check_record_sampling(rec.times[1] - rec.times[0], first_sloshing_period(s), "base_motion.file")
         if isinstance(b, TableMotion):
             _check_table_motion(s)
 
@@ -663,11 +664,18 @@ def _check_ground_motion(s, dim) -> None:
             raise SceneError(f"{key}.file", f"the record ends at {end:.6g} s, before world.duration = "
                              f"{s.world.duration:.6g} s; shorten world.duration to at most {end:.6g} s, or set "
                              "base_motion.hold = true to keep the tank at rest after the record")
-        if t1 is not None and dt > t1 / 10:
-            raise SceneError(f"{key}.file", f"sampled every {dt:.4g} s: too coarse for the water's first sloshing "
-                             f"period of {t1:.3g} s (linear theory), which needs at least 10 samples (DT <= "
-                             f"{t1 / 10:.3g} s); the record cannot carry the motion that excites it: give a record "
-                             "sampled more finely")
+        _check_record_sampling(dt, t1, f"{key}.file")
+
+
+def _check_record_sampling(dt, t1, key) -> None:
+    """An accelerogram sampled every ``dt`` [s] must resolve the water's first sloshing
+    period ``t1`` [s] (None: not known) at least 10 times: a coarser record cannot carry the
+    motion that excites it."""
+    if t1 is not None and dt > t1 / 10:
+        raise SceneError(key, f"sampled every {dt:.4g} s: too coarse for the water's first sloshing "
+                         f"period of {t1:.3g} s (linear theory), which needs at least 10 samples (DT <= "
+                         f"{t1 / 10:.3g} s); the record cannot carry the motion that excites it: give a record "
+                         "sampled more finely")
 
 
 def _rows_of_numbers(path, key, strict: bool) -> list[list[float]]:

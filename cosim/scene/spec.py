@@ -475,7 +475,9 @@ class TableMotion(Spec):
 @dataclass(frozen=True)
 class Earthquake(Spec):
     """Base motion from a PEER NGA ``.AT2`` accelerogram (in g), baseline-corrected
-    (``fluid.motion.read_at2``), times ``scale``, along ``direction``."""
+    (``fluid.motion.read_at2``), times ``scale``, along ``direction``. After the record's
+    end the tank rests where the corrected record leaves it. The record must sample the
+    water's first sloshing period at least 10 times."""
 
     TAG = ("kind", "earthquake")
     kind: str = tag("earthquake")
