@@ -305,9 +305,13 @@ def inclined_tank(dim: int, dx: float, angle_deg: float, length: float = 3.0, de
     ny = int(math.floor(width / dx + 1e-9))
     ys = dx * (0.5 + np.arange(ny))
     yw = np.concatenate([ys, -dx * (0.5 + np.arange(layers)), width + dx * (0.5 + np.arange(layers))])
-    # front and back walls cover the wetted section (lattice points clear of the side
-    # walls' particles, as fluid would be) and the side walls' section
-    inner = polygon_fluid(closed, dx)
+    # front and back walls: the section's points as the fluid fills it (its conforming
+    # layers and the lattice, clear of the side walls as assemble clears the fluid, at all
+    # heights) and the side walls' section, so that every y-layer, wall or water, holds
+    # the same (x, z) points and the rows next to the front and back walls are balanced as
+    # the middle ones (a lattice section there, a staircase beside the fluid's conforming
+    # layer, pushes them across the tank and along a slanted side)
+    inner = polygon_fluid(closed, dx, conform_layers)
     d, _ = cKDTree(w2).query(inner, k=1, distance_upper_bound=0.9 * dx)
     sect = np.vstack([inner[~(d < 0.9 * dx)], w2])
     walls = np.vstack([_extrude(w2, ys), _extrude(sect, yw[ny:])])

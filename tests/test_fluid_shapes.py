@@ -131,7 +131,21 @@ def test_inclined_tank_3d_is_the_extruded_section():
     assert cKDTree(w3).query(f3)[0].min() >= 0.9 * dx
     # walls front and back enclose the water along y: none escapes in a straight line
     assert (w3[:, 1] < 0).any() and (w3[:, 1] > 1.0).any()
-    assert cKDTree(w3).query(w3, k=2)[0][:, 1].min() > 0.9 * dx
+    # no wall particles closer together than the water's own (its conforming layer meets
+    # the lattice as close as 0.73 dx at 30 deg, and the front and back walls hold it)
+    gap = lambda p: cKDTree(p).query(p, k=2)[0][:, 1].min()
+    assert gap(w3) >= min(0.9 * dx, gap(f3)) - 1e-9
+    # every front and back wall layer holds the water's (x, z) points (its conforming layer
+    # along the slope included) and the side walls' section: the same points as each row
+    # of water with its side walls, so the rows next to those walls are balanced as the
+    # middle ones (a lattice section there is a staircase beside the conforming layer)
+    row = np.round(f3[np.isclose(f3[:, 1], 0.5 * dx)][:, [0, 2]] / dx, 6)
+    side = np.round(w3[np.isclose(w3[:, 1], 0.5 * dx)][:, [0, 2]] / dx, 6)
+    wet = {tuple(p) for p in np.vstack([row, side])}
+    for y in (-0.5 * dx, -2.5 * dx, 1.0 + 0.5 * dx, 1.0 + 2.5 * dx):
+        layer = np.round(w3[np.isclose(w3[:, 1], y)][:, [0, 2]] / dx, 6)
+        below = {tuple(p) for p in layer if p[1] * dx < 1.0}
+        assert below == {p for p in wet if p[1] * dx < 1.0}
 
 
 def test_cylinder_tank():
