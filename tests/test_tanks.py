@@ -91,7 +91,7 @@ def test_cylinder_tank_quick():
 def test_inclined_wall_3d_quick():
     """The 45 deg tank as a 3-D slice (3 rows, dx = 0.1 m, c0 = 700 m/s, 1 + 1 periods):
     k_p up the inclined face within the stated 0.04 of Chwang and within 0.04 of the 2-D
-    section run with the same settings (measured 0.010, 0.018; the section 0.007)."""
+    section run with the same settings (measured 0.020, 0.018; the section 0.007)."""
     r = validation.run("inclined-wall-3d", quick=True)
     m = r["metrics"]
     assert r["passed"] and r["target"].startswith("quick: ")
@@ -110,11 +110,10 @@ def test_the_3d_slice_refuses_an_even_row_count():
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(reason="measured 2026-11-25: 0.087 / 0.048 / 0.012 against Chwang at 15 / 30 / 45 deg; the stated "
-                          "0.04 is missed on the steeper faces (see the case's docstring)", strict=False)
 def test_inclined_wall_3d_full():
     """dx = 0.05 m, a 0.15 m slice, c0 = 1430 m/s, 1 + 1 periods, at 15, 30, 45 deg: the
-    stated target (RMS < 0.04 against Chwang) at each angle (see the case's docstring)."""
+    stated target (RMS < 0.04 against Chwang) at each angle (measured 2026-11-25: 0.038 /
+    0.025 / 0.0078; see the case's docstring)."""
     r = validation.run("inclined-wall-3d")
     m = r["metrics"]
     assert r["passed"] and all(m[f"rms_right_vs_chwang_{b:g}"] < 0.04 for b in ANGLES)
