@@ -41,7 +41,7 @@ every 1 ms):
 Measured (2026-11-25, AMD EPYC, 2 cores, loaded; single-threaded runs): at dx 2.5 mm
 (8000-9000 particles, 89-125 CPU-s a test) the corner peaks at 3.34 / 2.56 / 3.77 mm (Tests
 1 / 2 / 3: rising with hu at the paper's §4.4 slope), 3.34 / 3.04 / 2.60 mm (Tests 1 / 4 / 5;
-the paper 0.82 / 0.76 / 0.67 mm: the same ratios within 4 %, each of ours 3.9-4.1 times
+the paper 0.82 / 0.76 / 0.67 mm: the same ratios within 0.04, each of ours 3.9-4.1 times
 the paper's), 11.75 / 6.41 / 3.34 mm at E = 7.5 / 15 / 30 MPa (nearly 1/E, quasi-static);
 arrival 0.126 s for every hu (paper 0.138 s); the vibration after the peak 21-24 Hz at E =
 30 MPa (0.64-0.72 of the dry f1, 32.7 Hz; paper 40-50 Hz). Our loads match the momentum
