@@ -639,7 +639,8 @@ def first_sloshing_period(s) -> float | None:
     else:
         h = d.depth if d.depth is not None else max(b.hi[-1] for b in d.water)
         k = math.pi / max(d.length, d.width or 0.0)
-    return 2 * math.pi / math.sqrt(g * k * math.tanh(k * h))
+    w2 = g * k * math.tanh(k * h)
+    return 2 * math.pi / math.sqrt(w2) if w2 > 0 and math.isfinite(w2) else None  # a subnormal g underflows
 
 
 def _check_ground_motion(s, dim) -> None:
