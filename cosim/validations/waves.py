@@ -147,11 +147,12 @@ HZ_NU_ART = 0.01 * (1.2 * math.sqrt(2.0) * 0.002) * (15.0 * math.sqrt(G * 0.4)) 
 
 
 def paddle_wave_heights(kind: str, dx: float, H: float, T: float, depth: float, gauges, t_end: float,
-                        length: float, periods: float = 2.0, **config):
+                        length: float, periods: float = 2.0, width: float | None = None, **config):
     """Regular waves from a paddle in an SPH flume: a ``kind`` ("piston" or "flap")
     :class:`fluid.wavemaker.RegularWavemaker` of height ``H`` [m], period ``T`` [s] in
     water ``depth`` [m] (ramped in over one period), a flume ``length`` [m] long at spacing
-    ``dx`` [m]; ``config``: further :class:`fluid.solver.FluidConfig` settings (default
+    ``dx`` [m], 2-D, or 3-D when ``width`` [m] is given (side walls at y = 0 and ``width``,
+    the gauges on the mid-line); ``config``: further :class:`fluid.solver.FluidConfig` settings (default
     ``u_max = sqrt(g depth)``). Returns a dict: ``H1`` the first-harmonic height [m] at
     each gauge x [m] (increasing, closer than half a wavelength; a least-squares fit of mean + first and second harmonics over the
     last ``periods`` periods before ``t_end`` [s]; choose ``t_end`` after the ramp's end
@@ -167,14 +168,16 @@ def paddle_wave_heights(kind: str, dx: float, H: float, T: float, depth: float, 
 
     wm = RegularWavemaker(kind, H=H, T=T, depth=depth, ramp=1.0)
     back = 0.5 * wm.stroke + dx if kind == "piston" else 0.0
-    f = flume(dx, length, depth, 1.5 * depth, back=back)
+    f = flume(dx, length, depth, 1.5 * depth, back=back, width=width)
     config.setdefault("u_max", math.sqrt(G * depth))
-    cfg = FluidConfig(dim=2, dx=dx, g=G, **config)
-    ps = assemble(2, dx, cfg.rho0, f.fluid, f.walls).particles
+    dim = 2 if width is None else 3
+    cfg = FluidConfig(dim=dim, dx=dx, g=G, **config)
+    ps = assemble(dim, dx, cfg.rho0, f.fluid, f.walls).particles
     set_hydrostatic(ps, depth, cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g)
     fluid = Fluid(cfg, ps)
     fluid.prescribe_motion(PADDLE_GROUP, wm.paddle())
     fluid.initialize(0.0)
+    at = gauges if width is None else [(x, 0.5 * width) for x in gauges]
     t, ts, eta = 0.0, [], []
     while t < t_end - 1e-12:
         dt = min(fluid.max_dt(), 0.01, t_end - t)
@@ -182,7 +185,7 @@ def paddle_wave_heights(kind: str, dx: float, H: float, T: float, depth: float, 
         t += dt
         if t > t_end - periods * T:
             ts.append(t)
-            eta.append(surface_elevation(fluid, gauges) - depth)
+            eta.append(surface_elevation(fluid, at) - depth)
     ts, eta = np.array(ts), np.array(eta)
     w = 2.0 * math.pi / T
     basis = np.stack([np.ones_like(ts), np.cos(w * ts), np.sin(w * ts), np.cos(2 * w * ts), np.sin(2 * w * ts)], 1)
