@@ -50,6 +50,7 @@ from cosim.validation import case
 SPAN, RISE, LEVEL = 140.0, 23.333, 15.56  # m, 003 §4
 C0_PAPER = math.sqrt(7 * 2.8e6 / 1000.0)  # m/s: the paper's B = 2.8e6 Pa, gamma = 7, rho0 = 1000 kg/m^3
 F1_TABLE3 = 1.125  # Hz, 003 Table 3 (all six cases)
+GAUGE_BELOW = 0.4  # m: the gauges' axis point under the still level (rib_scene)
 F_MIN = 0.3  # Hz: below it the spectrum holds the record's drift, not a spike
 
 ARCH_RIB_TARGET = ("first FFT spike of the wall pressures at B1-B18 within 5 % of Table 3's 1.125 Hz, the next "
@@ -82,19 +83,32 @@ def column_length(level: float, m: float = 2.24, rise: float = RISE, span: float
     return float(np.interp(level, right[:, 1], s))
 
 
+def surface_x(level: float, m: float = 2.24, rise: float = RISE, span: float = SPAN) -> float:
+    """x [m] where the rib's axis crosses the level [m] on the right leg (the left's is -x)."""
+    from fluid.shapes import catenary_arch_axis
+
+    a = catenary_arch_axis(span, rise, m, 200001)
+    right = a[a[:, 0] >= 0][::-1]
+    return float(np.interp(level, right[:, 1], right[:, 0]))
+
+
 def quarter_wave(c0: float, level: float = LEVEL, n: int = 1, m: float = 2.24) -> float:
     """``(2n - 1) c0 / (4 L)`` [Hz], the n-th acoustic mode of a leg's water column."""
     return (2 * n - 1) * c0 / (4 * column_length(level, m))
 
 
 def rib_scene(dx: float, duration: float, records=("ew",), level: float = LEVEL, c0: float = C0_PAPER,
-              sample_every: float = 0.02, patch: float | None = None, settle: float = 1.5):
+              sample_every: float = 0.02, patch: float | None = None, settle: float = 1.5, gauges: bool = False):
     """The scene: the paper's rib filled to ``level`` [m], the El Centro components
     ``records`` (``"ew"``, ``"ns"``: along x; ``"up"``: along z) at once, the SPH fluid at
     spacing ``dx`` [m] and speed of sound ``c0`` [m/s], relaxed for ``settle`` [s] before
     the record starts (the hydrostatic start otherwise rings the legs' acoustic mode at
     40 kPa in both legs at once, measured at dx = 0.3 m; settled 1.5 s: 2.6 kPa), B1-B18
-    as patches ``patch`` [m] long (default 4 dx)."""
+    as patches ``patch`` [m] long (default 4 dx), and with ``gauges`` two wave gauges
+    (gauge1 right, gauge2 left: the inner water's surface, Table 4) where the axis is at
+    :data:`GAUGE_BELOW` under the level: the gauge's vertical line crosses the cavity over
+    some 1.9 m around the axis, and a line that holds no water stops the run (at
+    dx = 0.3 m the walls let some water out: the level falls)."""
     from cosim.scene import SPH, ArchRib, GroundMotion, Probes, Record, Scene, World, arch_rib_monitors
 
     rib = ArchRib(level=level)
@@ -102,7 +116,9 @@ def rib_scene(dx: float, duration: float, records=("ew",), level: float = LEVEL,
                     direction=(0.0, 1.0) if r == "up" else (1.0, 0.0)) for r in records]
     return Scene(name="arch_rib", world=World(dim=2, duration=duration, sample_every=sample_every, snapshot_every=0),
                  fluid=SPH(dx=dx, c0=c0, settle=settle), domain=rib, base_motion=GroundMotion(components=comps),
-                 probes=Probes(pressure=arch_rib_monitors(rib, patch or 4 * dx)))
+                 probes=Probes(pressure=arch_rib_monitors(rib, patch or 4 * dx),
+                               gauges=(surface_x(level - GAUGE_BELOW), -surface_x(level - GAUGE_BELOW)) if gauges
+                               else ()))
 
 
 def spectrum(t: np.ndarray, p: np.ndarray, skip: float, pad: int = 8) -> tuple[np.ndarray, np.ndarray]:
@@ -142,7 +158,7 @@ def spikes(f: np.ndarray, a: np.ndarray, n: int = 4, rel: float = 0.2) -> list[f
 
 
 def run_rib(dx: float, duration: float, records=("ew",), level: float = LEVEL, c0: float = C0_PAPER,
-            skip: float = 1.0, settle: float = 1.5) -> dict:
+            skip: float = 1.0, settle: float = 1.5, gauges: bool = False) -> dict:
     """One run of :func:`rib_scene` and what is read from it, from ``skip`` [s] on:
 
     - ``spikes_Hz``: the paper's measure, the spikes of the amplitude spectra of B1-B18
@@ -157,8 +173,14 @@ def run_rib(dx: float, duration: float, records=("ew",), level: float = LEVEL, c
       mirror-symmetric, and a leak of the forced response shows below the mode (at
       dx = 0.3 m, 0.55 Hz at 0.27 of the mode's 0.98 Hz peak over 1-6 s);
     - ``pair_correlation``: the correlation of Bk and B(k+9), k = 1..9 (Figures 13-14);
+    - with ``gauges``: ``inner_wave_Hz``, the first spike (at a fifth, as ``spikes_Hz``) of
+      the two gauges' surface elevation spectra summed, the paper's inner-wave frequency
+      (Table 4, read there from the surface waves of its Figure 16; each gauge's linear
+      drift removed: at dx = 0.3 m water leaks through the walls), and
+      ``free_inner_wave_Hz`` that of their unforced part (as ``free_spikes_Hz``; not for a
+      combined record);
     - the cost (``cpu_s`` includes the settling)."""
-    scene = rib_scene(dx, duration, records, level, c0, settle=settle)
+    scene = rib_scene(dx, duration, records, level, c0, settle=settle, gauges=gauges)
     with tempfile.TemporaryDirectory() as tmp:
         r = scene.run(tmp, progress=None)
     t = r.t
@@ -175,10 +197,22 @@ def run_rib(dx: float, duration: float, records=("ew",), level: float = LEVEL, c
            "c0_m_s": c0_run, "spikes_Hz": [round(x, 4) for x in sp],
            "quarter_wave_Hz": [round(quarter_wave(c0_run, level, n), 4) for n in range(1, 5)],
            "pair_correlation": [round(x, 3) for x in corr],
+
            "particles": s["particles"], "fluid_particles": s["fluid_particles"], "steps": s["steps"],
            "cpu_s": s["cpu_s"], "run_wall_s": s["wall_s"],
            "cpu_s_per_simulated_s": round(s["cpu_s"] / (duration + settle), 2),
-           "_spectrum": (f[f <= 10.0], a[f <= 10.0])}
+           "_spectrum": (f[f <= 10.0], a[f <= 10.0]), "_series": (t, p)}
+    if gauges:
+        eta = np.column_stack([r["gauge1.eta"], r["gauge2.eta"]])
+        eta = eta - np.outer(t - t[keep].mean(), np.polyfit(t[keep], eta[keep], 1)[0])  # the level's drift (a leak)
+        fe, ae = spectrum(t, eta, skip)
+        out["inner_wave_Hz"] = round(spikes(fe, ae, 1)[0], 4)
+        if free is not None:
+            part = (eta[:, :1] + eta[:, 1:]) / 2 if horizontal else (eta[:, :1] - eta[:, 1:]) / 2
+            out["free_inner_wave_Hz"] = round(spikes(*spectrum(t, part, skip), 1, rel=0.5)[0], 4)
+        out["surface_amplitude_m"] = round(float(np.abs(eta[keep] - eta[keep].mean(axis=0)).max()), 3)
+        out["_surface_spectrum"] = (fe[fe <= 10.0], ae[fe <= 10.0])
+        out["_series"] = (t, p, eta)
     if free is not None:
         ff, af = spectrum(t, free, skip)
         fs = spikes(ff, af, rel=0.5)  # its first spike is its largest: a leak of the forced part lies below
@@ -187,6 +221,16 @@ def run_rib(dx: float, duration: float, records=("ew",), level: float = LEVEL, c
         out["free_ratios"] = [round(x / fs[0], 3) for x in fs]
         out["_free_spectrum"] = (ff[ff <= 10.0], af[ff <= 10.0])
     return out
+
+
+def bridge_mode_lines() -> dict:
+    """The bridge's 2nd and 4th modes (003 Table 2: 0.94 and 1.66 Hz, the vertical
+    antisymmetric and symmetric bending the paper compares the first spike with) as
+    vertical lines for a spectrum plot normalised to 1."""
+    modes = {int(r["order"]): float(r["frequency_Hz"]) for r in paper_table("table2_bridge_modes.csv")}
+    fs = [modes[2], modes[4]]
+    return {f"003 Table 2, the bridge's 2nd and 4th modes ({fs[0]:.2f}, {fs[1]:.2f} Hz)":
+            {"x": np.repeat(fs, 3), "y": np.tile([0.0, 1.0, np.nan], 2), "style": "r:"}}
 
 
 def _series(runs: dict) -> dict:
@@ -202,6 +246,7 @@ def _series(runs: dict) -> dict:
     fs = [float(row[f"spike{n}_Hz"]) for n in range(1, 5)]
     curves["003 Table 3, El Centro EW spikes"] = {"x": np.repeat(fs, 3), "y": np.tile([0.0, 1.0, np.nan], 4),
                                                   "style": "k--"}
+    curves.update(bridge_mode_lines())
     return {"wall-pressure spectrum": {"xlabel": "f [Hz]", "ylabel": "amplitude / its largest above 0.3 Hz [-]",
                                        "curves": curves}}
 
@@ -274,10 +319,13 @@ def arch_rib(quick: bool) -> dict:
     fifth, before it became half for the free part): all points 0.57 Hz, free
     (antisymmetric) part 0.65 Hz. So ``passed`` is false: the water's mode is 12.8 %
     below Table 3 (5 % asked) and 11.4 % below c0/(4L), on which the paper's own spike
-    sits within 2.5 % at every depth. The rib's 0.980 Hz at dx = 0.3 m over 6 s and
-    0.981 Hz at 0.2 m over 20 s agree, but a 6 s record reads a spike only to about
-    +-0.1 Hz, so this is no proof of convergence. Why ours lies below the organ-pipe
-    formula: the walls, at so few particles across. A straight vertical column of the
+    sits within 2.5 % at every depth. Against resolution (``benchmarks/arch_rib_quake.py
+    --convergence``, 10 s of EW, spectra over 1-10 s): 0.986, 0.989, 1.046, 1.094 Hz at
+    dx = 0.3, 0.2, 0.15, 0.1 m (4.9, 7.3, 9.7, 14.6 particles across; 8.9, 17.1, 30.5,
+    69.7 CPU-s per simulated second on one thread): flat from 0.3 to 0.2 m, then rising,
+    not yet converged at 0.1 m, where the first spike is 2.8 % under 1.125 Hz (within the
+    stated 5 %) and 1.2 % under c0/(4L); no coarser dx is within 2 % of it. Why ours lies
+    below the organ-pipe formula: the walls, at so few particles across. A straight vertical column of the
     same length and width (``Tank(length=1.458, height=33.6, depth=31.6)``, the same
     set-up, c0 = 140 m/s, unsettled, the bottom's pressure over 0.5-8 s; c0/(4H) = 1.108
     Hz) rings at 0.962 Hz with 5 particles across (dx = 0.3 m, -13.2 %), 1.046 Hz with
@@ -287,10 +335,10 @@ def arch_rib(quick: bool) -> dict:
     (With the solver's defaults, h = sqrt(2) dx and plain dynamic walls, the same column
     rings at 0.54 Hz.) The paper's 0.05 m (29 particles across) would by this estimate
     sit about 2 % under c0/(4L); its Table 5 lies within 2.5 % of it. The cost of a 40 s
-    record: 310 CPU-s at dx = 0.3 m, 670 at 0.2 m; the paper's 0.05 m is estimated at
-    about 25 times 0.2 m per simulated second
-    (6 times the particles, 4 times the steps, less the better parallel use: some 4-5
-    CPU-hours for 40 s; the paper: 160)."""
+    record on one thread: 360 CPU-s at dx = 0.3 m, 680 at 0.2 m, 1,220 at 0.15 m, 2,790
+    at 0.1 m (the cheapest here whose spike meets the 2 % asked of a converged one, as
+    the finest run); the paper's 0.05 m, by the same scaling, some 4-5 CPU-hours (the
+    paper: 160)."""
     stated = {"first_spike_rel_err": 0.05, "spike_ratio_errors": RATIO_TOL,
               "horizontal_pair_correlation_max": [None, -0.5]}
     departure = {
