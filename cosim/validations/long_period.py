@@ -151,12 +151,9 @@ def run_long_period(shape: str = "rectangular", dx: float = 0.05, dim: int = 2, 
     T_p, as the paper's c_p does for its short periods (001 Eq. 17; the compressible excess
     of the impulsive pressure is then 1 / sqrt(1 - (4 h / (c0 T_p))^2) - 1 = 0.5 %), and is
     ~30 times the largest sloshing speed. The rest of the fluid's set-up is the scenes'
-    "sloshing" one (:func:`cosim.scene.setup.settings`: 2-D h = 2 dx and walls carrying the
-    fluid's pressure; 3-D those walls and the density diffusion faded under the surface)
-    with, in 3-D too, h = 2 dx: at the 3-D set-up's h = sqrt(2) dx the first mode runs
-    fast (+7.3 % in the whole rectangular tank, +4.2 % in the cylinder at dx = 0.1 m, 0.05 g;
-    h = 2 dx: +1.0 % in the cylinder), the square lattice's spurious shear stiffness that
-    makes 2-D waves fast at that support (cosim.scene.setup); ``overrides`` on top.
+    "sloshing" one (:func:`cosim.scene.setup.settings`: h = 2 dx and walls carrying the
+    fluid's pressure; in 3-D also the density diffusion faded under the surface);
+    ``overrides`` on top.
 
     Recorded: the free surface (:func:`fluid.probes.surface_elevation`) at ``gauges``
     points on the tank's centre line along x, 2 h from the walls; the run-up at each wall
@@ -186,7 +183,7 @@ def run_long_period(shape: str = "rectangular", dx: float = 0.05, dim: int = 2, 
     hi[0] += drift
     hi[-1] += H                                                  # splashes over the walls stay in the domain
     cfg = FluidConfig(dim=dim, dx=dx, c0=c0, domain_lo=tuple(lo), domain_hi=tuple(hi),
-                      **{**settings("sloshing", dim), "h_coef": 2.0, **overrides})
+                      **{**settings("sloshing", dim), **overrides})
     set_hydrostatic(ps, h, RHO0, cfg.speed_of_sound, cfg.gamma, cfg.g)
     f = Fluid(cfg, ps)
     shake = Translation(tuple(np.eye(dim)[0]), Stopped(harmonic, t_stop))
@@ -398,7 +395,7 @@ def long_period(quick: bool) -> dict:
 
     (lin. peak: linear theory's largest run-up at a wall [m]; w1 of linear theory 2.832,
     2.172 (FE) and 3.807 rad/s; Housner's 2.846 (+0.50 %) and 3.800 (-0.17 %); the sloped
-    tank has none.) With the 3-D set-up's h = sqrt(2) dx instead of 2 dx, the first mode
+    tank has none.) With h = sqrt(2) dx instead of 2 dx the first mode
     ran +7.3 % fast in the whole rectangular tank (forced 0.097, p 0.030) and +4.2 % in
     the cylinder (forced 0.113, p 0.021). The cylinder at dx = 0.1 m has 6 rows over its
     0.6 m: with h = 2 dx the kernel spans two thirds of the depth, and its surface (forced
