@@ -52,6 +52,25 @@ def test_compare_against_a_measured_run_itself():
     assert m["rms_early"]["H1.ETSIN 01"] == pytest.approx(0.05, rel=1e-9)
 
 
+def test_the_measured_pressures_are_the_ones_source_txt_describes():
+    """Four sensors, 20 kHz over t* <= 7.15, the peaks SOURCE.txt names; the comparison
+    against the measured run itself reads zero, and a pressure raised by 0.1 rho g H reads
+    RMS 0.1 and a peak 0.1 / 3.044 high."""
+    data = lob.measured_pressure()
+    step = math.sqrt(9.81 / 0.3) * 5e-5  # t* of one 50 microsecond sample
+    assert list(data) == ["P1", "P2", "P3", "P4"]
+    for d in data.values():
+        assert d.shape == (25001, 2) and np.diff(d[:, 0]) == pytest.approx(step, abs=1e-5)  # 6 digits
+    t = data["P1"][:, 0]
+    m = lob.compare_pressure(t, {k: np.interp(t, d[:, 0], d[:, 1]) for k, d in data.items()}, 11.0)
+    assert m["peak_measured"] == {"P1": 3.0441, "P2": 1.9503, "P3": 1.54383}
+    assert m["peak_t_star_measured"]["P1"] == pytest.approx(2.455, abs=1e-3)
+    assert m["rms_max"] < 1e-12 and max(map(abs, m["peak_rel_err"].values())) < 1e-12
+    m = lob.compare_pressure(t, {k: np.interp(t, d[:, 0], d[:, 1]) + 0.1 for k, d in data.items()}, 11.0)
+    assert m["rms"]["P4"] == pytest.approx(0.1, rel=1e-9)
+    assert m["peak_rel_err"]["P1"] == pytest.approx(0.1 / 3.0441, rel=1e-9)
+
+
 def test_dambreak_lobovsky_validation_quick():
     """dx = H/20, t* <= 5 (cosim validate dambreak-lobovsky --quick): the surge at the four
     gauges against both measured runs within the quick variant's 0.06 RMS, its arrival at
@@ -66,6 +85,8 @@ def test_dambreak_lobovsky_validation_quick():
     assert set(m["rms_early"]) == {"H1.ETSIN 01", "H2.ETSIN 01", "H2.ETSIN 02", "H3.ETSIN 01", "H3.ETSIN 02",
                                    "H4.ETSIN 01", "H4.ETSIN 02"}
     assert set(m["arrival_t_star"]) == {"H2", "H3", "H4"}
+    # the wall pressure is reported (PRESSURE_TARGET): the water reaches the far wall within the run
+    assert set(m["pressure"]["rms"]) == {"P1", "P2", "P3", "P4"} and m["pressure"]["peak"]["P1"] > 1.0
 
 
 @pytest.mark.slow
