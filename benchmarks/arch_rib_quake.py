@@ -49,11 +49,12 @@ i.e. the water's own mode; the first spike of all points summed is kept beside i
 printing ours against Table 5 and against c0/(4L), with each run's CPU time per simulated
 second, settling included (``--json FILE`` keeps the rows)::
 
-    python benchmarks/arch_rib_quake.py --depth-study --dx 0.3 --duration 6 --levels 13,15,17,19,21
+    python benchmarks/arch_rib_quake.py --depth-study --dx 0.1 --duration 10 --levels 13,15,17,19,21
 
-Measured so (the paper's Figure 17 depths; 4,764-5,501 particles, 49-71 CPU-s per level,
-6.5-9.5 CPU-s per simulated second with the 1.5 s settling; 20 min of wall for the five
-on the loaded 2-core machine):
+(dx = 0.1 m: the resolution study below; some 800 CPU-s a level, 70 min for the five on
+one core, not run here.) Measured at dx = 0.3 m over 6 s (the paper's Figure 17 depths;
+4,764-5,501 particles, 49-71 CPU-s per level, 6.5-9.5 CPU-s per simulated second with
+the 1.5 s settling; 2 cores shared with other runs)::
 
     =====  =======  =======  =======  ========  ==========
     depth  ours     Table 5  c0/(4L)  vs T5     vs c0/(4L)
@@ -66,19 +67,95 @@ on the loaded 2-core machine):
     21     0.603    0.67     0.684    -9.9 %    -11.8 %
     =====  =======  =======  =======  ========  ==========
 
-(15.56 m: the validation's quick run.) Ours falls with depth as Table 5 does but lies 5-21 %
-below it: 6 s of record (a 5 s window, 0.2 Hz bins) reads a spike to about +-0.1 Hz, and
-with 5 particles across the cavity the near-wall layers lower the acoustic mode by some
-13 % (a straight column of the leg's size: -13.2 % at 5 particles across, -5.6 % at 10;
-``cosim.validations.arch_rib`` docstring). At 15.56 m the rib gives 0.980 Hz at dx = 0.3 m
-over 6 s and 0.981 Hz at 0.2 m over 20 s; whether that is converged was not settled here.
-Runs worth doing: ``--convergence 0.3,0.2,0.15,0.1 --duration 20`` (dx = 0.1 m about
-1 CPU-hour for 40 s) and the depth study at the dx it picks.
+Ours falls with depth as Table 5 does but lies 5-21 % below it at dx = 0.3 m, where the
+design level's spike is 10 % under the finest run's (the resolution study below).
 
-and the resolution study (the first spike at the design level against dx; the cheapest dx
-within 2 % of the finest)::
+The resolution study (the first spike of the unforced part at the design level against
+dx, El Centro EW, c0 = 140 m/s, settled 1.5 s, spectra over 1-10 s; the cheapest dx
+within 2 % of the finest; ``--spectra FILE.npz`` keeps each run's spectra and B1-B18
+series, ``--spectra-figure --figures DIR`` overlays them)::
 
-    python benchmarks/arch_rib_quake.py --convergence 0.3,0.2,0.15 --duration 20
+    python benchmarks/arch_rib_quake.py --convergence 0.3,0.2,0.15,0.1 --duration 10 --spectra conv.npz
+
+Measured 2026-11-25 (AMD EPYC, one thread, NUMBA_NUM_THREADS=1, on 2 cores shared with
+three other jobs: the run got 56 % of a core, 1,451 CPU-s in 43 min of wall; CPU-s per
+simulated second include the settling; "40 s" projects the paper's record at that rate)::
+
+    =====  ======  =========  =======  ========  =========  ===========
+    dx     across  particles  CPU-s/s  spike     vs finest  40 s, CPU-s
+    =====  ======  =========  =======  ========  =========  ===========
+    0.30   4.9     4,948      8.9      0.986     -9.8 %     358
+    0.20   7.3     8,646      17.1     0.989     -9.6 %     684
+    0.15   9.7     12,450     30.5     1.046     -4.4 %     1,220
+    0.10   14.6    21,386     69.7     1.094     0          2,788
+    =====  ======  =========  =======  ========  =========  ===========
+
+("across": particles across the cavity, 1.458 m / dx; the spikes in Hz; water 1,056,
+2,310, 4,098, 9,256 particles; at dx = 0.3 m 44 water particles leave through the walls
+in 10 s, 77 in 20 s, none at the finer spacings; over 20 s dx = 0.3 m reads 0.945 Hz,
+0.2 m 0.981 Hz, the validation's full run.) No coarser spacing is within 2 % of
+dx = 0.1 m, and 0.1 m is not shown converged: the spike rose 4.6 % from 0.15 m to 0.1 m
+(after none from 0.3 to 0.2 m), and where the 1-10 s window starts and ends moves its
+reading by up to 3 % at 0.1 m (1-6 s: 1.127, 1-8 s: 1.080, 3-10 s: 1.119 Hz), less at
+the coarser ones (0.8-3 %). The cheapest dx meeting the criterion here is therefore the
+finest, dx = 0.1 m (15 particles across): a 40 s record costs 2,800 CPU-s at it, about
+47 CPU-minutes (some 80 min of wall on this loaded machine); its spike, 1.094 Hz, is
+2.8 % under Table 3's 1.125 Hz and 1.2 % under c0/(4L) = 1.108 Hz (the summed spectrum
+of all points: 1.109 Hz, -1.5 %). The same scaling (particles as 1/dx^2, steps as 1/dx)
+puts dx = 0.07 m at about 2 CPU-hours for 40 s; the paper's 0.05 m at some 4-5.
+
+The paper's cases without Wenchuan (003 §4.2: Tables 3-4, Figures 13-15), one run each at
+the design level (``--cases``; settled 1.5 s, spectra from 1 s on): the first spike of
+B1-B18 summed (Table 3), that of the unforced part (symmetric under a horizontal record,
+antisymmetric under the vertical; none for the combined), the inner wave (two gauges on
+the surface where the axis is 0.4 m under the level, each gauge's drift removed; Table 4),
+the pairs' correlation (Figures 13-14), and one PNG per case (the spectra with Table 3's
+first spike, c0/(4L) and the bridge's 2nd and 4th modes of Table 2 marked; the plots of
+docs/validation/arch-rib/)::
+
+    python benchmarks/arch_rib_quake.py --cases ew,ns,up,ew+up,ns+up --dx 0.3 --duration 8 --figures DIR
+
+Measured so (4,948-4,966 particles, 68-70 CPU-s a case, 7.2-7.3 CPU-s per simulated
+second; 36-42 of the 1,056 water particles lost through the walls in 9.5 s; the gauges
+of these runs without the drift removed)::
+
+    =======================  ======  =======  ======  ===============  ========
+    El Centro                all     Table 3  free    pairs            phase
+    =======================  ======  =======  ======  ===============  ========
+    EW                       0.513   1.125    0.985   -0.94 .. -0.61   opposite
+    NS                       0.949   1.125    0.925   -0.98 .. -0.82   opposite
+    vertical                 0.990   1.125    (5.44)  +1.00 .. +1.00   same
+    EW + vertical            0.512   1.125    -       -0.91 .. -0.65   opposite
+    NS + vertical            0.491   1.125    -       -0.90 .. -0.74   opposite
+    =======================  ======  =======  ======  ===============  ========
+
+(Hz.) Figures 13-14 are met: every pair in opposite phase under EW and NS, in the same
+phase under the vertical record (the unforced, antisymmetric part there is numerical
+noise, 5.4 Hz, a thousandth of the symmetric); under EW + vertical the horizontal
+component rules the phase, under NS + vertical too (the paper expects both bending
+shapes to matter there and shows no figure). The water's mode is the same under every record, 0.93-0.99 Hz at this dx
+(the unforced part under EW and NS; all points under the vertical record, which drives
+the symmetric mode directly; the highest peak of all points under the combined records,
+about 0.93-0.95 Hz), as the paper's 1.125 Hz is under all six; the first spike of all
+points (the rule: the lowest peak at a fifth of the highest) is the record's under EW and
+both combined records (0.49-0.51 Hz, a shoulder at 0.2-0.4 of the highest). So Table 3's
+criterion, read on all points, fails by 12-56 % at this dx, and by 12-18 % on the mode.
+The paper finds its spike between the bridge's 2nd and 4th modes, 0.94 and 1.66 Hz, and
+so no resonance; at dx = 0.3 m ours lies on the 2nd (0.925-0.99 Hz, within 5 %), at
+0.1 m (1.094 Hz, the resolution study) 16 % above it, where the paper's is 19 % above.
+At dx = 0.2 m (``--cases ew,ns --dx 0.2``: 8,646 particles, no water lost, 144-149 CPU-s
+a case, 15.2-15.6 CPU-s per simulated second): EW free part 0.987 Hz, NS 0.962 Hz
+(-12.3 %, -14.5 % of 1.125 Hz), all points 0.512 and 0.494 Hz (the record's), the pairs
+-0.98 .. -1.00 and -0.93 .. -0.99 (opposite).
+
+The inner wave (Table 4: 1.10-1.15 Hz, 1.14 under EW, 1.15 under NS) is not what our
+surface gauges show: at dx = 0.2 m the surface's first spike is the record-driven motion,
+0.48 Hz under EW and 0.44 Hz under NS (-58 %, -62 %), its symmetric part's 0.66 and 0.57
+Hz; the acoustic mode shows on the surface only as a second peak near 0.92 Hz (0.65 of
+the highest under EW). The paper does not say how it read its inner-wave frequency
+("after careful calculation"); that it equals its first spike (1.125 Hz) within 2 %
+in every case suggests it was read from the same acoustic mode (Table 4 lies within 4 %
+of c0/(4L), tests/test_arch_rib.py), not from the surface's sloshing.
 """
 
 from __future__ import annotations
@@ -206,14 +283,28 @@ def depth_study(dx: float, duration: float, c0: float, record: str, levels=None)
     return rows
 
 
-def convergence(dxs, duration: float, c0: float, record: str) -> list[dict]:
-    """The first spike at the design level against dx; the cheapest within 2 % of the finest."""
+def _keep_spectra(spectra: dict, label: str, r: dict) -> None:
+    """The run's summed spectra (all points, free part) up to 10 Hz, for ``--spectra``."""
+    for key in ("_spectrum", "_free_spectrum"):
+        if key in r:
+            f, a = r[key]
+            spectra[f"{label}{key}_f"], spectra[f"{label}{key}_a"] = f, a
+
+
+def convergence(dxs, duration: float, c0: float, record: str, spectra_file: str | None = None) -> list[dict]:
+    """The first spike at the design level against dx; the cheapest within 2 % of the finest
+    (``spectra_file``: each run's spectra kept there as it ends)."""
     from cosim.validations.arch_rib import run_rib
 
-    rows = []
+    rows, spectra = [], {}
     for dx in dxs:
         r = run_rib(dx, duration, tuple(record.split("+")), c0=c0)
-        rows.append({"dx_m": dx, "first_spike_Hz": r["free_spikes_Hz"][0], "free_spikes_Hz": r["free_spikes_Hz"],
+        if spectra_file:
+            _keep_spectra(spectra, f"dx{dx}", r)
+            spectra[f"dx{dx}_t"], spectra[f"dx{dx}_p"] = r["_series"][:2]
+            np.savez_compressed(spectra_file, **spectra)
+        rows.append({"dx_m": dx, "particles_across": round(HC / dx, 1), "fluid_particles": r["fluid_particles"],
+                     "first_spike_Hz": r["free_spikes_Hz"][0], "free_spikes_Hz": r["free_spikes_Hz"],
                      "all_points_spikes_Hz": r["spikes_Hz"], "pair_correlation_max": max(r["pair_correlation"]),
                      "particles": r["particles"], "steps": r["steps"], "cpu_s": r["cpu_s"],
                      "cpu_s_per_simulated_s": r["cpu_s_per_simulated_s"],
@@ -221,10 +312,107 @@ def convergence(dxs, duration: float, c0: float, record: str) -> list[dict]:
         print(json.dumps(rows[-1]), flush=True)
     ref = min(rows, key=lambda x: x["dx_m"])["first_spike_Hz"]
     ok = [x for x in rows if abs(x["first_spike_Hz"] / ref - 1) <= 0.02]
+    for x in rows:
+        x["vs_finest"] = round(x["first_spike_Hz"] / ref - 1, 4)
     best = min(ok, key=lambda x: x["cpu_s"])
+    print(f"\n{'dx':>5} {'across':>6} {'particles':>9} {'CPU-s/s':>8} {'spike':>7} {'vs finest':>9} {'40 s [CPU-s]':>12}")
+    for x in rows:
+        print(f"{x['dx_m']:5.2f} {x['particles_across']:6.1f} {x['particles']:9d} {x['cpu_s_per_simulated_s']:8.1f} "
+              f"{x['first_spike_Hz']:7.3f} {100 * x['vs_finest']:8.1f}% {x['cpu_s_for_40_s']:12d}")
     print(f"finest dx {min(dxs)} m: {ref:.3f} Hz; cheapest within 2 %: dx = {best['dx_m']} m "
           f"({best['cpu_s_per_simulated_s']} CPU-s per simulated s, a 40 s record {best['cpu_s_for_40_s']} CPU-s)")
     return rows
+
+
+PAPER_CASE = {"ew": "El Centro EW", "ns": "El Centro NS", "up": "El Centro Vertical",
+              "ew+up": "El Centro EW + Vertical", "ns+up": "El Centro NS + Vertical"}
+
+
+def _phase(corr) -> str:
+    """Figures 13-14's reading of the pairs Bk/B(k+9): all below -0.5 opposite, all above
+    +0.5 the same, else mixed."""
+    return "opposite" if max(corr) < -0.5 else "same" if min(corr) > 0.5 else "mixed"
+
+
+def spectrum_plot(curves: dict, folder: str, name: str, title: str) -> str:
+    """One PNG (``cosim.report.plot_series``) of normalised spectra {label: (f, a)} up to
+    8 Hz, with Table 3's first spike, c0/(4L) at 140 m/s and the bridge's 2nd and 4th
+    modes (Table 2) marked: the paper's comparison of its Figure 15 with Table 2."""
+    from pathlib import Path
+
+    from cosim.report import plot_series
+    from cosim.validations.arch_rib import F_MIN, bridge_mode_lines
+
+    c = {}
+    for label, (f, a) in curves.items():
+        keep = f <= 8.0
+        c[label] = {"x": f[keep].tolist(), "y": (a[keep] / a[(f > F_MIN) & keep].max()).tolist(), "style": "-"}
+    for label, x in bridge_mode_lines().items():
+        c[label] = {"x": x["x"].tolist(), "y": x["y"].tolist(), "style": x["style"]}
+    c[f"003 Table 3 first spike (1.125 Hz); c0/(4L) at 140 m/s ({quarter_wave(C0_PAPER, LEVEL):.3f} Hz)"] = {
+        "x": [1.125, 1.125, math.nan, quarter_wave(C0_PAPER, LEVEL), quarter_wave(C0_PAPER, LEVEL)],
+        "y": [0.0, 1.0, math.nan, 0.0, 1.0], "style": "k--"}
+    Path(folder).mkdir(parents=True, exist_ok=True)
+    out = plot_series({title: {"xlabel": "f [Hz]", "ylabel": "amplitude / its largest above 0.3 Hz [-]",
+                               "curves": c}}, Path(folder), name)
+    return str(Path(folder) / out[0][1])
+
+
+def cases(dx: float, duration: float, c0: float, records, figures: str | None = None,
+          gauges: bool = True) -> list[dict]:
+    """The paper's excitation cases without Wenchuan (003 §4.2, Tables 3-4, Figures 13-15),
+    one run each at the design level: the spikes of B1-B18 summed against Table 3, those
+    of the unforced part (one-direction records), the inner wave (the gauges' surface
+    elevation) against Table 4, and the pairs' phase (Figures 13-14)."""
+    from cosim.errors import InstabilityError
+    from cosim.validations.arch_rib import run_rib
+
+    t3 = {r["case"]: [float(r[f"spike{n}_Hz"]) for n in range(1, 5)] for r in _paper_table("table3_spikes.csv")}
+    t4 = {r["case"]: float(r["wave_frequency_Hz"]) for r in _paper_table("table4_inner_wave_frequency.csv")}
+    rows = []
+    for rec in records:
+        name = PAPER_CASE[rec]
+        try:
+            r = run_rib(dx, duration, tuple(rec.split("+")), c0=c0, gauges=gauges)
+        except InstabilityError as e:  # a gauge left dry (the level fell) stops the run: again without them
+            if not gauges or "gauge" not in str(e):
+                raise
+            print(json.dumps({"case": name, "dx_m": dx, "stopped": str(e), "again": "without gauges"}), flush=True)
+            r = run_rib(dx, duration, tuple(rec.split("+")), c0=c0)
+        rows.append({"case": name, "dx_m": dx, "duration_s": duration, "spikes_Hz": r["spikes_Hz"],
+                     "table3_Hz": t3[name], "free_part": r.get("free_part"), "free_spikes_Hz": r.get("free_spikes_Hz"),
+                     "inner_wave_Hz": r.get("inner_wave_Hz"), "free_inner_wave_Hz": r.get("free_inner_wave_Hz"),
+                     "table4_Hz": t4[name], "surface_amplitude_m": r.get("surface_amplitude_m"),
+                     "pair_correlation": r["pair_correlation"], "phase": _phase(r["pair_correlation"]),
+                     "particles": r["particles"], "fluid_particles": r["fluid_particles"], "steps": r["steps"],
+                     "cpu_s": r["cpu_s"], "cpu_s_per_simulated_s": r["cpu_s_per_simulated_s"]})
+        print(json.dumps(rows[-1]), flush=True)
+        if figures:
+            curves = {"B1-B18 summed": r["_spectrum"]}
+            if "_free_spectrum" in r:
+                curves[f"its {r['free_part']} part (unforced)"] = r["_free_spectrum"]
+            if "_surface_spectrum" in r:
+                curves["surface at the gauges"] = r["_surface_spectrum"]
+            print(spectrum_plot(curves, figures, f"arch-rib_{rec.replace('+', '-')}_dx{dx}",
+                                f"{name}, dx {dx} m, {duration:g} s"), flush=True)
+    print(f"\n{'case':>24} {'first spike':>11} {'T3':>6} {'free':>6} {'wave':>6} {'T4':>6} {'pairs':>14} {'phase':>8}")
+    for x in rows:
+        free = f"{x['free_spikes_Hz'][0]:6.3f}" if x["free_spikes_Hz"] else f"{'-':>6}"
+        wave = f"{x['inner_wave_Hz']:6.3f}" if x["inner_wave_Hz"] else f"{'-':>6}"
+        print(f"{x['case']:>24} {x['spikes_Hz'][0]:11.3f} {x['table3_Hz'][0]:6.3f} {free} {wave} "
+              f"{x['table4_Hz']:6.2f} {min(x['pair_correlation']):6.2f}..{max(x['pair_correlation']):5.2f} "
+              f"{x['phase']:>8}")
+    return rows
+
+
+def convergence_figure(spectra_file: str, folder: str) -> str:
+    """The unforced (symmetric) part's spectrum of every ``--convergence`` run kept in
+    ``--spectra``, overlaid."""
+    z = np.load(spectra_file)
+    dxs = sorted({float(k[2:].split("_")[0]) for k in z.keys() if k.endswith("_free_spectrum_f")}, reverse=True)
+    curves = {f"dx {dx} m ({HC / dx:.1f} particles across), symmetric part":
+              (z[f"dx{dx}_free_spectrum_f"], z[f"dx{dx}_free_spectrum_a"]) for dx in dxs}
+    return spectrum_plot(curves, folder, "arch-rib", "El Centro EW, the unforced part against dx")
 
 
 def main() -> None:
@@ -240,15 +428,36 @@ def main() -> None:
     ap.add_argument("--levels", default=None, help="levels [m] for --depth-study, comma-separated (Table 5's)")
     ap.add_argument("--convergence", default=None, help="dx values [m], comma-separated: the first spike against dx")
     ap.add_argument("--json", default=None, help="write the study's rows to this file")
+    ap.add_argument("--spectra", default=None,
+                    help="write each run's summed spectra and its B1-B18 series to this .npz file")
+    ap.add_argument("--cases", default=None,
+                    help="records, comma-separated (ew,ns,up,ew+up,ns+up: the paper's cases without Wenchuan)")
+    ap.add_argument("--no-gauges", action="store_true", help="--cases without the surface gauges (Table 4)")
+    ap.add_argument("--figures", default=None, help="folder for the spectra's PNGs (--cases, --spectra-figure)")
+    ap.add_argument("--spectra-figure", action="store_true",
+                    help="no run: the PNG of the --spectra file's runs, overlaid, into --figures")
     a = ap.parse_args()
     if a.predict:
         predict()
+        return
+    if a.spectra_figure:
+        print(convergence_figure(a.spectra, a.figures or "."))
+        return
+    if a.cases:
+        recs = a.cases.split(",")
+        bad = [r for r in recs if r not in PAPER_CASE]
+        if bad:
+            ap.error(f"--cases: {bad} unknown; give some of {', '.join(PAPER_CASE)}")
+        rows = cases(a.dx, a.duration, a.c0 or C0_PAPER, recs, a.figures, not a.no_gauges)
+        if a.json:
+            with open(a.json, "w") as f:
+                json.dump(rows, f, indent=1)
         return
     if a.depth_study or a.convergence:
         c0 = a.c0 or C0_PAPER
         rows = (depth_study(a.dx, a.duration, c0, a.record,
                             [float(x) for x in a.levels.split(",")] if a.levels else None) if a.depth_study else
-                convergence([float(x) for x in a.convergence.split(",")], a.duration, c0, a.record))
+                convergence([float(x) for x in a.convergence.split(",")], a.duration, c0, a.record, a.spectra))
         if a.json:
             with open(a.json, "w") as f:
                 json.dump(rows, f, indent=1)
