@@ -445,23 +445,30 @@ def cylinder_tank_case(quick: bool) -> dict:
     the bottom); Petrov-Moiseev (001 Eq. 20, what the paper compares with) is a Ritz
     approximation 0.15 kPa RMS from it on this tank (2.53 kPa at the bottom).
 
-    Measured (2026-11-25, AMD EPYC, 2 cores shared with up to ten other jobs, so the wall
-    times are long; ``cosim validate cylinder-tank [--quick]``):
+    Measured (2026-11-25, AMD EPYC, 2 cores shared with other jobs: CPU seconds of one
+    thread, ``time.process_time``, from ``python benchmarks/tanks_3d_trade.py cylinder --dx
+    DX --skip S --fit F``; wall seconds of ``cosim validate cylinder-tank [--quick]`` on
+    the machine loaded by up to ten other jobs, so long, where measured):
 
-    ======  =====  =========  =====  ==========  ==========  ==========  ======  ========
-    dx [m]  rows   particles  steps  x-z plane   vs Petrov-  round the   base    wall [s]
-                                     RMS [kPa]   Moiseev     wall [kPa]  [kPa]
-    ======  =====  =========  =====  ==========  ==========  ==========  ======  ========
-    0.10    6      5674       3120   0.29        0.42        0.21        2.51    85
-    0.05    12     28176      10200  0.112       0.229       0.081       2.45    4727
-    ======  =====  =========  =====  ==========  ==========  ==========  ======  ========
+    ======  =====  =======  =========  =====  ==========  ==========  ==========  ======  =======  ========
+    dx [m]  rows   periods  particles  steps  x-z plane   vs Petrov-  round the   base    CPU [s]  wall [s]
+                                              RMS [kPa]   Moiseev     wall [kPa]  [kPa]
+    ======  =====  =======  =========  =====  ==========  ==========  ==========  ======  =======  ========
+    0.10    6      1 + 2    5674       3120   0.29        0.42        0.21        2.51    42       85
+    0.10    6      2 + 3    5674       5200   0.30        0.42        0.21        2.51    83
+    0.075   8      2 + 3    10507      6800   0.216       0.336       0.153       2.49    169
+    0.05    12     2 + 3    28176      10200  0.112       0.229       0.081       2.45    630      4727
+    ======  =====  =======  =========  =====  ==========  ==========  ==========  ======  =======  ========
 
     (quick: 1 + 2 periods; full: 2 + 3. Exact base 2.41 / 2.42 kPa at the lowest row's
-    height.) The stated target (0.127 kPa) is met at dx = 0.05 m. Round the wall the
-    amplitude follows cos(phi) within 0.03 kPa at the lowest row; out of phase below 0.09
-    kPa. The row next to the free surface carries most of the error (0.72 against 0.37 kPa
-    at 0.05 m, 1.29 against 0.63 at 0.1 m: the SPH surface holds p_d away from zero over
-    ~dx, as in westergaard); it halves with dx.
+    height.) The stated target (0.127 kPa) is met at dx = 0.05 m; the error falls by 1.4
+    and 1.9 with each step in dx (0.30 / 0.216 / 0.112 kPa), the CPU time rises as
+    dx^-2.9 (particles x steps). Round the wall the amplitude follows its own value at
+    phi = 0 times cos(phi) within 0.03 kPa at the lowest row at every dx; out of phase
+    below 0.11 kPa. The row next to the free surface carries most of the error (0.72
+    against 0.37 kPa at 0.05 m, 1.05 against 0.50 at 0.075 m, 1.29 against 0.63 at 0.1 m:
+    the SPH surface holds p_d away from zero over ~dx, as in westergaard); it halves with
+    dx.
     """
     dx, skip, fit = (0.1, 1, 2) if quick else (0.05, 2, 3)
     r = run_cylinder(dx, periods_skip=skip, periods_fit=fit, walls="adami")
