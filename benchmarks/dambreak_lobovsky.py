@@ -6,7 +6,9 @@ measured runs, and the cost, at each dx.
 
 Prints per dx: particles, steps, CPU seconds (``time.process_time``, all threads) and CPU s per
 simulated s, the largest RMS difference of h/H over t* <= 5 (judged: 0.05), the largest arrival
-error at H2-H4 in t* (judged: 0.25), and the RMS over the reflected bore (t* > 5) against each run.
+error at H2-H4 in t* (judged: 0.25), and the RMS over the reflected bore (t* > 5) against each run;
+then the wall pressure at P1-P4 (reported, PRESSURE_TARGET) read both ways: the first impact peak
+and its time against the measured run's, the RMS over the record, the window means.
 Compare CPU times, not wall times, on a shared machine."""
 
 from __future__ import annotations
@@ -16,7 +18,7 @@ import math
 
 from machine import cpu_name
 
-from cosim.validations.dambreak_lobovsky import H, compare, run_lobovsky
+from cosim.validations.dambreak_lobovsky import H, compare, compare_pressure, run_lobovsky
 
 
 def main(argv=None) -> None:
@@ -37,6 +39,14 @@ def main(argv=None) -> None:
               f"rms t*<=5 max {m['rms_early_max']:.4f} ({early}); "
               f"arrival error max {m['arrival_err_abs_max']:.3f} ({arrive}); "
               f"rms t*>5: {late or '-'}", flush=True)
+        for key in ("p", "p_point"):
+            pm = compare_pressure(r["t_star_p"], r[key], a.t_star)
+            peaks = ", ".join(f"{k} {v:.2f} ({pm['peak_rel_err'][k]:+.0%}) at t* {pm['peak_t_star'][k]:.3f} "
+                              f"({pm['peak_t_err'][k]:+.3f})" for k, v in pm["peak"].items())
+            rms = ", ".join(f"{k} {v:.3f}" for k, v in pm["rms"].items())
+            means = ", ".join(f"{k} {v[0]:.2f}/{v[1]:.2f}" for k, v in pm["window_mean"].items())
+            print(f"  wall pressure p/(rho g H), {'patch' if key == 'p' else 'Eq. 15 at the face'}: first peak "
+                  f"{peaks}; rms {rms}; window means ours/measured {means}", flush=True)
 
 
 if __name__ == "__main__":

@@ -66,6 +66,7 @@ def test_the_measured_pressures_are_the_ones_source_txt_describes():
     assert m["peak_measured"] == {"P1": 3.0441, "P2": 1.9503, "P3": 1.54383}
     assert m["peak_t_star_measured"]["P1"] == pytest.approx(2.455, abs=1e-3)
     assert m["rms_max"] < 1e-12 and max(map(abs, m["peak_rel_err"].values())) < 1e-12
+    assert len(m["window_mean"]) == 16 and all(abs(a - b) < 1e-3 for a, b in m["window_mean"].values())
     m = lob.compare_pressure(t, {k: np.interp(t, d[:, 0], d[:, 1]) + 0.1 for k, d in data.items()}, 11.0)
     assert m["rms"]["P4"] == pytest.approx(0.1, rel=1e-9)
     assert m["peak_rel_err"]["P1"] == pytest.approx(0.1 / 3.0441, rel=1e-9)
