@@ -66,7 +66,12 @@ The wave alone is cheap to check: without the body the flume's wave is the 2-D o
 tank is uniform across), and a 2-D flume of the scene's depth (360 m long, so no
 reflection reaches the gauges before 46 s) makes 0.98 H at the base's x = 70 m at dx = 2 m
 and 0.99 H at dx = 1 m with h = 2 dx, wavenumber 0.97 and 0.99 of theory's (22 and 101
-CPU-s; at h = sqrt(2) dx, dx = 2 m: 0.90 H, 0.95): ``cosim.validations.waves.paddle_wave_heights``.
+CPU-s; at h = sqrt(2) dx, dx = 2 m: 0.90 H, 0.95). In 3-D, a slab of that flume 8 m wide
+(4 rows between side walls, dx = 2 m, the 3-D wave set-up) makes 0.96 / 0.92 / 0.87 H at
+x = 40 / 70 / 100 m (wavenumber 0.96; 1 120 CPU-s; h = sqrt(2) dx: 0.79 / 0.69 / 0.56 H);
+with the artificial viscosity off between the water and the walls (alpha_wall = 0) 1.00 /
+1.00 / 0.97 H: the extra 3-D loss is the side walls' viscous drag, which matters less in
+the scene's 40 m (20 rows) than in the slab.: ``cosim.validations.waves.paddle_wave_heights``.
 
 What the analytic fluid gives here: the base rides the long wave (λ = 271 m, 45 times
 its diameter): heave close to the wave's amplitude (0.35 m), surge close to the water's
