@@ -32,11 +32,9 @@ ARRIVAL_LEVEL = 0.05
 TOL_RMS_QUICK = 0.06
 
 #: pressure sensors P1-P4 on the far (downstream) wall x = TANK_L: their heights [m] above the floor
-#: (refdata SOURCE.txt: TNL-SPH's set-up of the case), and the measured file of each (one
+#: (refdata SOURCE.txt: TNL-SPH's set-up of the case); measured_pressure reads each one's file (one
 #: experimental run, "peak event 5" of the paper's Figure 18)
 SENSORS = {"P1": 0.003, "P2": 0.015, "P3": 0.030, "P4": 0.080}
-PRESSURE_FILES = {"P1": "Fig18_peak_event_5_sensors_5.dat", "P2": "Fig18_peak_event_5_sensors_4.dat",
-                  "P3": "Fig18_peak_event_5_sensors_2.dat", "P4": "Fig18_peak_event_5_sensors_1.dat"}
 #: the first impact: the largest p/(rho g H) at t* <= IMPACT_WINDOW (P1-P3; P4, 80 mm up, has no
 #: impact peak in the measured run: its largest reading comes at t* = 5.95, the reflected bore)
 IMPACT_WINDOW = 3.5
@@ -77,7 +75,14 @@ def measured_pressure() -> dict[str, np.ndarray]:
     (20 kHz, t* <= 7.15, refdata SOURCE.txt)."""
     from cosim.refdata import path
 
-    return {name: np.loadtxt(path(DATASET, f)) for name, f in PRESSURE_FILES.items()}
+    def _pressure_file(name):
+        return np.loadtxt(path(DATASET, name))
+
+    # the files' sensors 5 / 4 / 2 / 1 are P1-P4 (SOURCE.txt)
+    return {"P1": _pressure_file("Fig18_peak_event_5_sensors_5.dat"),
+            "P2": _pressure_file("Fig18_peak_event_5_sensors_4.dat"),
+            "P3": _pressure_file("Fig18_peak_event_5_sensors_2.dat"),
+            "P4": _pressure_file("Fig18_peak_event_5_sensors_1.dat")}
 
 
 def sensor_pressures(f, size: float) -> tuple[np.ndarray, np.ndarray]:
