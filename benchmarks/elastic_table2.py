@@ -28,6 +28,12 @@ sys.path.insert(0, str(ROOT))
 
 from cosim.validations.elastic_table2 import GROUPS, PAPER, SLOPES, TABLE2, metrics, run_cases  # noqa: E402
 
+def _report(c, rec) -> None:
+    """One line per finished run: the test, dx, its CPU seconds, cached or failed."""
+    print(f"  test {c.values['test']} dx {c.values['fluid.dx']}: {rec.get('cpu_s', float('nan')):.1f} CPU-s "
+          f"{'(cached)' if rec.get('cached') else ''} {rec.get('error') or ''}", flush=True)
+
+
 def _tag(dx: float) -> str:
     return f"dx{1e3 * dx:g}mm"
 
@@ -153,7 +159,7 @@ def main(argv=None) -> None:
     docs.mkdir(parents=True, exist_ok=True)
     if a.what == "run":
         dx = float(a.dx or 0.005)
-        res = run_cases(list(TABLE2), [dx], Path(a.out))
+        res = run_cases(list(TABLE2), [dx], Path(a.out), report=_report)
         ms, rows = {"_dx": dx}, []
         for t, _, rec, folder in res:
             if rec.get("error"):
@@ -172,7 +178,7 @@ def main(argv=None) -> None:
         plot(ms, docs)
     else:
         dxs = [float(v) for v in (a.dx or "0.0075,0.005,0.0035,0.0025").split(",")]
-        res = run_cases([1], dxs, Path(a.out))
+        res = run_cases([1], dxs, Path(a.out), report=_report)
         rows, ms = [], []
         for _, dx, rec, folder in res:
             if rec.get("error"):

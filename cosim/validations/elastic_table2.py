@@ -91,18 +91,14 @@ def scene_of(test: int, dx: float | None = None):
     return Scene.from_toml(SCENE).with_values(vals)
 
 
-def run_cases(tests, dxs, out: Path) -> list[tuple[int, float, dict, Path]]:
-    """Run each (test, dx) serially through :mod:`cosim.study.sweep`; (test, dx, record, folder)."""
+def run_cases(tests, dxs, out: Path, report=None) -> list[tuple[int, float, dict, Path]]:
+    """Run each (test, dx) serially through :mod:`cosim.study.sweep`; (test, dx, record,
+    folder). ``report(case, record)`` is called after each run (the sweep's progress hook)."""
     from cosim.study import sweep
 
     version = sweep.code_version()
     plan = [(t, dx) for dx in dxs for t in tests]
     cs = [sweep.case(i, {"test": t, "fluid.dx": dx}, scene_of(t, dx), out, version) for i, (t, dx) in enumerate(plan)]
-
-    def report(c, rec):
-        print(f"  test {c.values['test']} dx {c.values['fluid.dx']}: {rec.get('cpu_s', float('nan')):.1f} CPU-s "
-              f"{'(cached)' if rec.get('cached') else ''} {rec.get('error') or ''}", flush=True)
-
     recs = sweep.execute(cs, workers=1, threads=1, serial=True, version=version, report=report)
     return [(t, dx, r, c.folder) for (t, dx), r, c in zip(plan, recs, cs)]
 
