@@ -196,6 +196,14 @@ def prescribed_state(t, t0, t1, p0, v0, p1, v1, amp, om, t_on, t_off, pos, vel, 
 
 
 @njit(cache=True, fastmath=_FM, error_model="numpy")
+def force_buffers(n, dim):
+    """The work arrays of :func:`segments` and :func:`forces` for ``n`` particles in ``dim``
+    dimensions: e, ell, T, fseg, Tseg, grad, F, acc, dld, kfr (kfr zeroed)."""
+    return (np.empty((n - 1, dim)), np.empty(n - 1), np.empty(n), np.empty(n - 1), np.empty(n - 1), np.empty(n),
+            np.empty((n, dim)), np.empty((n, dim)), np.empty(n), np.zeros(n))
+
+
+@njit(cache=True, fastmath=_FM, error_model="numpy")
 def advance(x, v, lam, ds, t0, t1, n_sub, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, wl, wr,
             hyd, water_z, free, pidx, p0, v0, p1, v1, amp, om, t_on, t_off, bed, fend_mean, fend_last, tension):
     """Leap-frog from ``t0`` to ``t1`` [s] in ``n_sub`` equal sub-steps (000 Section 2).
@@ -216,18 +224,9 @@ def advance(x, v, lam, ds, t0, t1, n_sub, m, mk, lam0, EA, c0, delta, alpha, bet
     n, dim = x.shape
     npr = pidx.shape[0]
     dt = (t1 - t0) / n_sub
-    e = np.empty((n - 1, dim))
-    ell = np.empty(n - 1)
+    e, ell, T, fseg, Tseg, grad, F, acc, dld, kfr = force_buffers(n, dim)
     ell1 = np.empty(n - 1)
     lnr = np.empty(n - 1)
-    Tseg = np.empty(n - 1)
-    T = np.empty(n)
-    fseg = np.empty(n - 1)
-    grad = np.empty(n)
-    F = np.empty((n, dim))
-    acc = np.empty((n, dim))
-    dld = np.empty(n)
-    kfr = np.zeros(n)
     ppos = np.empty((npr, dim))
     pvel = np.empty((npr, dim))
     pacc = np.empty((npr, dim))
@@ -314,16 +313,7 @@ def state_end_forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, ome
     them at its end (the held ends taken at rest): what a cable reports before its first
     advance."""
     n, dim = x.shape
-    e = np.empty((n - 1, dim))
-    ell = np.empty(n - 1)
-    T = np.empty(n)
-    fseg = np.empty(n - 1)
-    Tseg = np.empty(n - 1)
-    grad = np.empty(n)
-    F = np.empty((n, dim))
-    acc = np.empty((n, dim))
-    dld = np.empty(n)
-    kfr = np.zeros(n)
+    e, ell, T, fseg, Tseg, grad, F, acc, dld, kfr = force_buffers(n, dim)
     segments(x, e, ell)
     forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, wl, wr, hyd, water_z, bed,
            e, ell, T, fseg, Tseg, grad, F, acc, dld, kfr)
