@@ -4,7 +4,7 @@
 import math
 
 import numpy as np
-from hypothesis import assume, given, settings
+from hypothesis import assume, example, given, settings
 from hypothesis import strategies as st
 
 from moorings.catenary import FULLY_LIFTED, PARTLY_LIFTED, RESTING, TAUT, lift_off_distance, solve, taut_distance
@@ -120,12 +120,19 @@ def test_inextensible_state_boundaries_are_exact(L, hr, w):
 
 @SETTINGS
 @given(L=lengths, hr=depth_ratio, w=weights, EA=stiffness, f=st.floats(0.0, 1.2))
+@example(L=0.1015625, hr=0.1, w=1.0, EA=None, f=0.9)  # X = L - h: the scaled line rounds to RESTING
 def test_scaling_by_w_and_L(L, hr, w, EA, f):
     """H/(w L), V/(w L) and touchdown/L depend only on X/L, h/L and w L/EA."""
     h, X = hr * L, f * L
     a = solve(X, h, L, w, EA)
     b = solve(X * 3.0, h * 3.0, L * 3.0, w * 7.0, None if EA is None else EA * 21.0)
     assume(math.isfinite(a.H))
-    assert a.state == b.state
+    if a.state != b.state:
+        # X = f L and 3 X = f (3 L) round differently: the scaled line may fall on the
+        # other side of a state boundary, but only when X lies on it to within rounding
+        x_rest, x_lift = seabed_boundaries(h, L, w, EA)
+        x_taut = taut_distance(h, L)
+        assert min(abs(X - x_rest), abs(X - x_lift), abs(X - x_taut)) <= 1e-12 * L
+        assume(math.isfinite(b.H))
     for u, v in ((a.H, b.H / 21.0), (a.V, b.V / 21.0), (a.touchdown, b.touchdown / 3.0)):
         assert abs(u - v) <= 1e-9 * max(abs(u), w * L, 1e-300) or abs(u - v) <= 1e-9 * L
