@@ -41,6 +41,11 @@ def test_bad_input_is_refused_before_any_work():
         run_long_period("square")
     with pytest.raises(InputError, match="cylinder is 3-D"):
         run_long_period("cylinder", dim=2)
+    # 1.0 m of water at dx = 0.075 m: the lattice fills 13 rows (0.975 m), the gauges would read 25 mm low
+    with pytest.raises(InputError, match=r"13.33 particle rows in the rectangular tank's depth 1 m.*1/13 = 0.07692 m"):
+        run_long_period("rectangular", dx=0.075, dim=3)
+    with pytest.raises(InputError, match=r"8.57 particle rows in the cylinder tank's depth 0.6 m"):
+        run_long_period("cylinder", dx=0.07, dim=3)
 
 
 def test_long_period_quick():

@@ -66,6 +66,25 @@ class Stopped(Signal):
         return self.signal.state(self.t_stop)[0], 0.0, 0.0
 
 
+def _check_lattice(shape: str, dx: float, tank: dict) -> None:
+    """Refuse a ``dx`` [m] that does not divide the water depth (every tank) or the
+    rectangle's length: the lattice fills whole rows, so the water would stand lower (1.0
+    m at dx = 0.075 m: 13 rows, 0.975 m, every gauge 25 mm low against a linear peak of
+    0.12 m) or the tank be shorter than linear theory's."""
+    if not dx > 0:
+        raise InputError(f"long-period: dx={dx} m; give a positive particle spacing")
+    sizes = {"depth": tank["depth"]}
+    if shape == "rectangular":
+        sizes["length"] = tank["size"]
+    for name, s in sizes.items():
+        n = s / dx
+        if abs(n - round(n)) > 1e-6 * n:
+            k = max(1, math.floor(n))
+            raise InputError(f"long-period: dx={dx:g} m puts {n:.2f} particle rows in the {shape} tank's {name} "
+                             f"{s:g} m (the lattice fills {math.floor(n + 1e-9)}); give a dx that divides it, e.g. "
+                             f"{s:g}/{k} = {s / k:.4g} m or {s:g}/{k + 1} = {s / (k + 1):.4g} m")
+
+
 def _tank(shape: str, dim: int, dx: float, tank: dict):
     """Particles of the tank (walls one MOVING group 0, water at rest) and its centre (x,
     y) [m] (the middle of the still surface): the rectangle's and the inclined tank's inner
@@ -169,6 +188,7 @@ def run_long_period(shape: str = "rectangular", dx: float = 0.05, dim: int = 2, 
     tank = dict(TANKS[shape])
     period = tank["period"] if period is None else period
     L, h, H = tank["size"], tank["depth"], tank["height"]
+    _check_lattice(shape, dx, tank)
     modes = {"rectangular": lambda: fs.rectangular_modes(L, h), "cylinder": lambda: fs.cylinder_modes(0.5 * L, h),
              "inclined": lambda: fs.trapezoid_modes(L, h, tank["beta"])}[shape]()
     w1 = float(modes.omega[0])
