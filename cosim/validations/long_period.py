@@ -181,7 +181,9 @@ def run_long_period(shape: str = "rectangular", dx: float = 0.05, dim: int = 2, 
     still level (:func:`cosim.validations.sloshing.face_pressure`, 001 Eq. 15 carried to
     the face). Each against linear theory at the same points. The first mode's amplitude
     is the least-squares fit of the gauges to the first modes (:func:`_mode_basis`); its
-    free frequency (:func:`free_frequency`) over the free sloshing.
+    free frequency (:func:`free_frequency`) over the free sloshing. Returned: the metrics,
+    and the record of the series (the gauges and all the fitted modal amplitudes
+    included), each beside linear theory's.
     """
     if shape not in TANKS:
         raise InputError(f"long-period: shape={shape!r}; give one of {sorted(TANKS)}")
@@ -338,6 +340,8 @@ def _compare(rec: dict, modes, shape: str, tank: dict, a0: float, period: float,
             "record": {"t": t.tolist(), "runup_left_m": runup[:, 0].tolist(), "runup_right_m": runup[:, 1].tolist(),
                        "runup_left_linear_m": lin_wall[:, 0].tolist(), "runup_right_linear_m": lin_wall[:, 1].tolist(),
                        "mode1_m": amp[0].tolist(), "mode1_linear_m": amp_lin[0].tolist(),
+                       "gauge_x_m": np.asarray(xg).tolist(), "gauges_m": rec["gauges"].tolist(),
+                       "gauges_linear_m": lin_g.tolist(), "modes_m": amp.tolist(), "modes_linear_m": amp_lin.tolist(),
                        "z_faces_m": zf.tolist(), "profiles": profiles}}
 
 
