@@ -4,8 +4,8 @@ import numpy as np
 import pytest
 
 from cosim.errors import InstabilityError
-from fluid.neighbours import (MAX_PER_CELL, XBINS, Grid, neighbour_pairs, row_range_binned, sort_by_cell,
-                              x_bin_array, x_bins)
+from fluid.neighbours import (MAX_PER_CELL, XBINS, Grid, counting_sort, neighbour_pairs, row_range_binned,
+                              sort_by_cell, x_bin_array, x_bins)
 
 
 def brute(pos, radius):
@@ -62,6 +62,16 @@ def test_sort_is_by_cell_then_by_x():
     assert (np.diff(x)[same] >= 0).all()
     row = np.floor(pos[perm, 1] / 0.1)  # ... so every row of cells is ordered by x
     assert (np.diff(x)[np.diff(row) == 0] >= 0).all()
+
+
+@pytest.mark.parametrize("n, ncells", [(0, 4), (5, 1), (10_001, 97)])
+def test_counting_sort_is_a_stable_sort(n, ncells):
+    """The order is numpy's stable argsort and start[c] the number of particles in the
+    cells below c (the sentinel cell last)."""
+    cell = np.random.default_rng(n).integers(0, ncells + 1, n)
+    perm, start = counting_sort(cell, ncells)
+    assert (perm == np.argsort(cell, kind="stable")).all()
+    assert (start == np.concatenate([[0], np.cumsum(np.bincount(cell, minlength=ncells + 1))])).all()
 
 
 def test_outside_particles_are_counted_and_sorted_last():

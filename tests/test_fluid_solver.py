@@ -8,7 +8,7 @@ import pytest
 from cosim.errors import InputError, InstabilityError
 from cosim.protocol import Participant, check_participant
 from fluid.geometry import set_hydrostatic, tank_with_water
-from fluid.integrator import stable_dt
+from fluid.integrator import first_non_finite, stable_dt
 from fluid.particles import Kind, ParticleSet
 from fluid.solver import Fluid, FluidConfig
 
@@ -123,6 +123,17 @@ def test_nan_stops_the_run_naming_the_particle():
     with pytest.raises(InstabilityError, match=rf"step \d+, t=.*particle id {pid} \(kind FLUID\) at \[") as e:
         f.advance(0.0, 0.01)
     assert "Remedies" in str(e.value)
+
+
+def test_the_nan_check_finds_the_lowest_bad_row():
+    """The run's message names the first bad particle (the CUDA path's kernel finds the same)."""
+    rng = np.random.default_rng(3)
+    pos, vel, rho = rng.random((20_001, 3)), rng.random((20_001, 3)), rng.random(20_001)
+    assert first_non_finite(pos, vel, rho) == -1
+    vel[15_000, 2] = np.inf
+    rho[12_345] = np.nan
+    pos[19_999, 0] = -np.inf
+    assert first_non_finite(pos, vel, rho) == 12_345
 
 
 def test_particles_leaving_the_domain_are_removed_and_counted():
