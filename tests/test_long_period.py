@@ -8,7 +8,7 @@ import pytest
 
 from cosim import validation
 from cosim.errors import InputError
-from cosim.validations.long_period import LINEAR_TOLERANCES, Stopped, free_frequency, run_long_period
+from cosim.validations.long_period import LINEAR_TOLERANCES, Stopped, free_decay, free_frequency, run_long_period
 from fluid.motion import Harmonic
 
 
@@ -34,6 +34,9 @@ def test_free_frequency_of_a_damped_wave_with_a_harmonic():
     y = (0.06 * np.exp(-0.05 * t) * np.cos(w * t + 0.3) + 0.004 * np.cos(2 * w * t) + 0.01
          + 0.002 * rng.standard_normal(t.size))
     assert free_frequency(t, y, 2.83) == pytest.approx(w, rel=2e-3)
+    # and its decay rate, found from a grid of rates (a wave damped 20 times faster)
+    y = 0.06 * np.exp(-1.0 * t) * np.cos(w * t + 0.3) + 0.0005 * rng.standard_normal(t.size)
+    assert free_decay(t, y, 2.83, rates=np.linspace(0.0, 2.0, 11)) == pytest.approx((w, 1.0), rel=1e-2)
 
 
 def test_bad_input_is_refused_before_any_work():

@@ -119,8 +119,15 @@ def _mode_basis(shape: str, size: float, xc: np.ndarray, modes) -> np.ndarray:
 
 def free_frequency(t: np.ndarray, y: np.ndarray, omega0: float) -> float:
     """Angular frequency [rad/s] of the damped sinusoid ``e^(-s t) (A cos w t + B sin w t) + C``
-    that fits ``y(t)`` best, searched within 25 % of ``omega0`` (variable projection: the
-    linear coefficients solved for each w, s)."""
+    that fits ``y(t)`` best, searched within 25 % of ``omega0`` (:func:`free_decay`)."""
+    return free_decay(t, y, omega0)[0]
+
+
+def free_decay(t: np.ndarray, y: np.ndarray, omega0: float, rates=(0.0,)) -> tuple[float, float]:
+    """Angular frequency w [rad/s] and decay rate s [1/s] of the damped sinusoid
+    ``e^(-s t) (A cos w t + B sin w t) + C`` that fits ``y(t)`` best (variable projection:
+    the linear coefficients solved for each w, s), w within 25 % of ``omega0``; the
+    search starts from the best of a grid of w and the decay ``rates`` [1/s] given."""
     tt = t - t[0]
 
     def resid(q):
@@ -129,10 +136,10 @@ def free_frequency(t: np.ndarray, y: np.ndarray, omega0: float) -> float:
         M = np.column_stack([e * np.cos(w * tt), e * np.sin(w * tt), np.ones_like(tt)])
         return M @ np.linalg.lstsq(M, y, rcond=None)[0] - y
 
-    ws = np.linspace(0.75 * omega0, 1.25 * omega0, 101)
-    w0 = ws[np.argmin([np.sum(resid((w, 0.0)) ** 2) for w in ws])]
-    sol = optimize.least_squares(resid, (w0, 0.0), bounds=([0.75 * omega0, -1.0], [1.25 * omega0, 5.0]))
-    return float(sol.x[0])
+    grid = [(w, s) for w in np.linspace(0.75 * omega0, 1.25 * omega0, 101) for s in rates]
+    q0 = grid[int(np.argmin([np.sum(resid(q) ** 2) for q in grid]))]
+    sol = optimize.least_squares(resid, q0, bounds=([0.75 * omega0, -1.0], [1.25 * omega0, 5.0]))
+    return float(sol.x[0]), float(sol.x[1])
 
 
 def _walls(shape: str, tank: dict, zf: np.ndarray, dim: int):
