@@ -45,6 +45,7 @@ import tempfile
 import numpy as np
 
 from cosim import refdata
+from cosim.errors import InputError
 from cosim.validation import case
 
 SPAN, RISE, LEVEL = 140.0, 23.333, 15.56  # m, 003 §4
@@ -52,6 +53,7 @@ C0_PAPER = math.sqrt(7 * 2.8e6 / 1000.0)  # m/s: the paper's B = 2.8e6 Pa, gamma
 F1_TABLE3 = 1.125  # Hz, 003 Table 3 (all six cases)
 GAUGE_BELOW = 0.4  # m: the gauges' axis point under the still level (rib_scene)
 F_MIN = 0.3  # Hz: below it the spectrum holds the record's drift, not a spike
+PULSE_PERIOD = 1.0  # s: the vertical pulse that rings the water's symmetric mode (ring_rib)
 
 ARCH_RIB_TARGET = ("first FFT spike of the wall pressures at B1-B18 within 5 % of Table 3's 1.125 Hz, the next "
                    "spikes near 3, 5, 7 times it; left and right in opposite phase under horizontal, in phase under "
@@ -98,7 +100,8 @@ def quarter_wave(c0: float, level: float = LEVEL, n: int = 1, m: float = 2.24) -
 
 
 def rib_scene(dx: float, duration: float, records=("ew",), level: float = LEVEL, c0: float = C0_PAPER,
-              sample_every: float = 0.02, patch: float | None = None, settle: float = 1.5, gauges: bool = False):
+              sample_every: float = 0.02, patch: float | None = None, settle: float = 1.5, gauges: bool = False,
+              pulse: float | None = None):
     """The scene: the paper's rib filled to ``level`` [m], the El Centro components
     ``records`` (``"ew"``, ``"ns"``: along x; ``"up"``: along z) at once, the SPH fluid at
     spacing ``dx`` [m] and speed of sound ``c0`` [m/s], relaxed for ``settle`` [s] before
@@ -108,14 +111,24 @@ def rib_scene(dx: float, duration: float, records=("ew",), level: float = LEVEL,
     (gauge1 right, gauge2 left: the inner water's surface, Table 4) where the axis is at
     :data:`GAUGE_BELOW` under the level: the gauge's vertical line crosses the cavity over
     some 1.9 m around the axis, and a line that holds no water stops the run (at
-    dx = 0.3 m the walls let some water out: the level falls)."""
-    from cosim.scene import SPH, ArchRib, GroundMotion, Probes, Record, Scene, World, arch_rib_monitors
+    dx = 0.3 m the walls let some water out: the level falls). With ``pulse`` [m] instead of
+    ``records`` (give ``records=()``): one vertical displacement pulse of that amplitude,
+    ``pulse sin(2 pi t / T) w(t)`` with T = :data:`PULSE_PERIOD` and w the half-cosine
+    fade in and out over T/2 (``cosim.scene.Shake``), the rib at rest after t = T."""
+    from cosim.scene import SPH, ArchRib, GroundMotion, Probes, Record, Scene, Shake, World, arch_rib_monitors
 
+    if (pulse is None) == (not records):
+        raise InputError(f"rib_scene: give either records (El Centro components) or pulse [m], one of the two; got "
+                         f"records={records!r}, pulse={pulse!r}")
     rib = ArchRib(level=level)
-    comps = [Record(file=str(record_path(r)),
-                    direction=(0.0, 1.0) if r == "up" else (1.0, 0.0)) for r in records]
+    if pulse is None:
+        motion = GroundMotion(components=[Record(file=str(record_path(r)),
+                                                 direction=(0.0, 1.0) if r == "up" else (1.0, 0.0)) for r in records])
+    else:
+        motion = Shake(period=PULSE_PERIOD, direction=(0.0, 1.0), amplitude=pulse, ramp=PULSE_PERIOD / 2,
+                       stop=PULSE_PERIOD)
     return Scene(name="arch_rib", world=World(dim=2, duration=duration, sample_every=sample_every, snapshot_every=0),
-                 fluid=SPH(dx=dx, c0=c0, settle=settle), domain=rib, base_motion=GroundMotion(components=comps),
+                 fluid=SPH(dx=dx, c0=c0, settle=settle), domain=rib, base_motion=motion,
                  probes=Probes(pressure=arch_rib_monitors(rib, patch or 4 * dx),
                                gauges=(surface_x(level - GAUGE_BELOW), -surface_x(level - GAUGE_BELOW)) if gauges
                                else ()))
@@ -155,6 +168,95 @@ def spikes(f: np.ndarray, a: np.ndarray, n: int = 4, rel: float = 0.2) -> list[f
         near = [i for i in peaks if abs(f[i] - (2 * k - 1) * f1) <= f1]
         out.append(_top(f, a, max(near, key=lambda i: a[i])) if near else math.nan)
     return out
+
+
+def damped_mode(t: np.ndarray, y: np.ndarray, t0: float, t1: float | None = None,
+                f0: float | None = None) -> dict:
+    """The frequency of one damped mode common to the channels ``y`` (samples x channels,
+    or one series) over ``t0 <= t <= t1`` [s]: the least-squares fit of
+
+        y_c(t) = a_c + b_c s + sum_k exp(-sigma_k s) (A_ck cos 2 pi f_k s + B_ck sin 2 pi f_k s)
+
+    (s = t - t0; k = 1, 3: the mode and its overtone near 3 f, the quarter wave's next;
+    f_k, sigma_k shared by the channels; a_c, b_c, A_ck, B_ck each channel's, solved
+    linearly inside the fit: variable projection), started from ``f0`` or the highest
+    peak above :data:`F_MIN` of the channels' summed, zero-padded Hann spectrum (f within
+    +-20 % of it, the overtone within 2.2-3.8 times it). The line absorbs the slow drift
+    of the mean (water lost through the walls at coarse dx); other modes are left in the
+    residual (left out, the overtone biases f by some -0.1 %, tests/test_arch_rib.py). Returns ``f_Hz``, ``f_std_Hz`` (its standard error from the fit's Jacobian,
+    the residual taken as white noise: a floor, not the whole uncertainty: compare fits
+    over other windows), ``sigma_1_s`` (the decay rate [1/s]) and ``residual`` (rms
+    residual / rms signal)."""
+    from scipy.optimize import least_squares
+
+    y = np.asarray(y, float)
+    y = y[:, None] if y.ndim == 1 else y
+    keep = (t >= t0) & (t <= (np.inf if t1 is None else t1))
+    s, y = t[keep] - t0, y[keep]
+    if len(s) < 20:
+        raise InputError(f"damped_mode: {len(s)} samples in [{t0}, {t1}] s; give a window of at least 20 samples")
+    if f0 is None:
+        f, a = spectrum(s, y, -1.0, pad=64)
+        ok = np.flatnonzero(f > F_MIN)
+        f0 = _top(f, a, ok[np.argmax(a[ok])])
+
+    def basis(x):
+        cols = [np.ones_like(s), s]
+        for f, sigma in (x[:2], x[2:]):
+            e = np.exp(-sigma * s)
+            cols += [e * np.cos(2 * np.pi * f * s), e * np.sin(2 * np.pi * f * s)]
+        return np.column_stack(cols)
+
+    def residual(x):
+        b = basis(x)
+        return (y - b @ np.linalg.lstsq(b, y, rcond=None)[0]).ravel()
+
+    fit = least_squares(residual, [f0, 0.1, 3 * f0, 0.3], x_scale=[0.01 * f0, 0.1, 0.03 * f0, 0.1],
+                        bounds=([0.8 * f0, -1.0, 2.2 * f0, -1.0], [1.2 * f0, 5.0, 3.8 * f0, 10.0]))
+    dof = fit.fun.size - 4 - 6 * y.shape[1]
+    cov = np.linalg.pinv(fit.jac.T @ fit.jac) * (fit.fun @ fit.fun) / dof
+    return {"f_Hz": float(fit.x[0]), "f_std_Hz": float(math.sqrt(cov[0, 0])), "sigma_1_s": float(fit.x[1]),
+            "residual": float(np.sqrt(np.mean(fit.fun**2)) / np.std(y))}
+
+
+def ring_rib(dx: float, duration: float = 5.0, level: float = LEVEL, c0: float = C0_PAPER, settle: float = 1.5,
+             pulse: float = 0.02) -> dict:
+    """The water's first symmetric mode rung by one vertical pulse (:func:`rib_scene` with
+    ``pulse`` [m], 1 s long, after ``settle`` [s] of relaxation), read by
+    :func:`damped_mode` on the symmetric part (pR + pL)/2 of the nine pairs Bk/B(k+9)
+    once the pulse is over (t >= :data:`PULSE_PERIOD`, to ``duration`` [s]): the free
+    ringing of the mode that is the paper's first spike (the quarter-wave mode). Under an
+    earthquake record the same mode is driven all along and its spectral peak moves with
+    the window (by 2-4 % over 9 s of El Centro at dx = 0.1 m); ringing free it is one
+    damped sinusoid. Returns ``mode_Hz``, its fit's standard error, the spread of the
+    fits over the windows starting at T, T + 0.5 s and ending at ``duration`` and
+    ``duration`` - 1 s (``mode_window_spread``: (max - min) / mode), the decay rate, the
+    quarter wave c0/(4L), and the cost (``cpu_s`` includes the settling)."""
+    if not duration >= PULSE_PERIOD + 3.0:
+        raise InputError(f"ring_rib: duration={duration!r} s leaves under 3 s of free ringing after the "
+                         f"{PULSE_PERIOD} s pulse; give at least {PULSE_PERIOD + 3.0} s")
+    scene = rib_scene(dx, duration, (), level, c0, settle=settle, pulse=pulse)
+    with tempfile.TemporaryDirectory() as tmp:
+        r = scene.run(tmp, progress=None)
+    t = r.t
+    p = np.column_stack([r[f"B{k}.p"] for k in range(1, 19)])
+    sym = (p[:, :9] + p[:, 9:]) / 2
+    fit = damped_mode(t, sym, PULSE_PERIOD)
+    others = [damped_mode(t, sym, a, b, fit["f_Hz"])["f_Hz"] for a, b in
+              ((PULSE_PERIOD + 0.5, None), (PULSE_PERIOD, duration - 1.0), (PULSE_PERIOD + 0.5, duration - 1.0))]
+    fs = [fit["f_Hz"], *others]
+    s = r.summary
+    c0_run = s["speed_of_sound_m_s"]
+    qw = quarter_wave(c0_run, level)
+    return {"level_m": level, "dx_m": dx, "duration_s": duration, "settle_s": settle, "pulse_m": pulse,
+            "c0_m_s": c0_run, "mode_Hz": round(fit["f_Hz"], 5), "mode_std_Hz": round(fit["f_std_Hz"], 5),
+            "mode_window_Hz": [round(x, 4) for x in fs], "mode_window_spread": round((max(fs) - min(fs)) / fs[0], 4),
+            "sigma_1_s": round(fit["sigma_1_s"], 4), "fit_residual": round(fit["residual"], 3),
+            "quarter_wave_Hz": round(qw, 4), "mode_vs_quarter_wave": round(fit["f_Hz"] / qw - 1, 4),
+            "antisymmetric_over_symmetric": float(np.abs(p[:, :9] - p[:, 9:]).max() / max(np.abs(sym).max(), 1e-30)),
+            "particles": s["particles"], "fluid_particles": s["fluid_particles"], "steps": s["steps"],
+            "cpu_s": s["cpu_s"], "cpu_s_per_simulated_s": round(s["cpu_s"] / (duration + settle), 2),
+            "_series": (t, p)}
 
 
 def run_rib(dx: float, duration: float, records=("ew",), level: float = LEVEL, c0: float = C0_PAPER,
