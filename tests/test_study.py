@@ -114,6 +114,15 @@ def test_a_failed_run_is_a_row(tmp_path):
     assert rec_["returncode"] == 2 and "fluid.level" in rec_["error"]
 
 
+def test_a_run_that_writes_more_than_a_pipe_holds_is_not_stalled(tmp_path):
+    """A run's messages go to its folder's stderr.log: 1 MB of them (a pipe holds 64 KiB)
+    and the run still ends, its exit code and messages kept."""
+    code = "import sys; sys.stderr.write('particles left the domain\\n' * 40000); sys.exit(3)"
+    rc, usage, text = sweep.run_logged([sys.executable, "-c", code], tmp_path / "stderr.log", {})
+    assert rc == 3 and text.count("left the domain") == 40000 and usage.ru_utime >= 0.0
+    assert (tmp_path / "stderr.log").read_text() == text
+
+
 def test_unknown_metric_series_is_named(study):
     scene, out, _ = study
     with pytest.raises(InputError, match="no series 'box.roll'"):

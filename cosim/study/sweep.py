@@ -73,6 +73,17 @@ def cases(scene, vary: dict, out: Path, version: str) -> list[Case]:
             for i, values in enumerate(combinations(vary))]
 
 
+def run_logged(cmd: list[str], log: Path, env: dict) -> tuple[int, object, str]:
+    """Run ``cmd`` with its messages (stderr) written to the file ``log``; returns its exit
+    code, its resource usage (``os.wait4``: CPU of the process alone) and the messages.
+    A file, not a pipe: a pipe holds 64 KiB, and a run that writes more (a warning each
+    time particles leave the domain) would wait on it while this process waits on the run."""
+    with open(log, "w") as err:
+        proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=err, env=env)
+        _, status, usage = os.wait4(proc.pid, 0)
+    return os.waitstatus_to_exitcode(status), usage, Path(log).read_text(errors="replace")
+
+
 def run_case(toml: str, folder: str, threads: int, version: str) -> dict:
     """Run one case in its own process (``cosim run``) unless the same scene and code ran
     before into ``folder``; returns its record (``case.json``)."""
@@ -87,25 +98,20 @@ def run_case(toml: str, folder: str, threads: int, version: str) -> dict:
     (folder / "scene.toml").write_text(toml)
     env = dict(os.environ, NUMBA_NUM_THREADS=str(threads))
     t0 = time.perf_counter()
-    proc = subprocess.Popen([sys.executable, "-m", "cosim.cli", "run", str(folder / "scene.toml"), "--out",
-                             str(folder / "run"), "--quiet"], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
-                            env=env, text=True)
-    _, status, usage = os.wait4(proc.pid, 0)
-    stderr = proc.stderr.read()
-    proc.stderr.close()
-    proc.returncode = os.waitstatus_to_exitcode(status)
+    returncode, usage, stderr = run_logged([sys.executable, "-m", "cosim.cli", "run", str(folder / "scene.toml"),
+                                            "--out", str(folder / "run"), "--quiet"], folder / "stderr.log", env)
     rec = {"version": version, "complete": True, "wall_s": time.perf_counter() - t0,
            "cpu_s": usage.ru_utime + usage.ru_stime, "max_rss_mb": usage.ru_maxrss / 1024.0,
-           "threads": threads, "returncode": proc.returncode, "error": None}
+           "threads": threads, "returncode": returncode, "error": None}
     summary = folder / "run" / "summary.json"
     if summary.is_file():
         s = json.loads(summary.read_text())
         rec.update({k: s.get(k) for k in ("steps", "particles", "t_reached_s", "wall_s_per_simulated_s")})
         rec["run_wall_s"] = s.get("wall_s")
         rec["error"] = s.get("error")
-    if proc.returncode != 0:
+    if returncode != 0:
         lines = [ln for ln in stderr.strip().splitlines() if ln.strip()]
-        last = lines[-1].removeprefix("cosim run: error: ") if lines else f"exit status {proc.returncode}"
+        last = lines[-1].removeprefix("cosim run: error: ") if lines else f"exit status {returncode}"
         rec["error"] = rec["error"] or last
     record.write_text(json.dumps(rec, indent=1))
     rec["cached"] = False
