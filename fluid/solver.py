@@ -256,6 +256,19 @@ class _Counters:
     removed: dict = field(default_factory=lambda: {k.name: 0 for k in Kind})
     limiter: str = ""
 
+    def count_removed(self, kinds: np.ndarray, t: float) -> None:
+        """Count the particles of ``kinds`` that left the domain at ``t`` [s], and warn the
+        first time and whenever the total has doubled: a splash can take one particle a
+        step for thousands of steps (``removed`` keeps the whole count)."""
+        before = sum(self.removed.values())
+        names, counts = np.unique(kinds, return_counts=True)
+        for k, cnt in zip(names, counts):
+            self.removed[Kind(k).name] += int(cnt)
+        total = before + kinds.size
+        if before == 0 or total.bit_length() > before.bit_length():
+            log.warning("fluid: %d particles left the domain at t=%.6g s and were removed (total %s; told again "
+                        "when the total has doubled)", kinds.size, t, dict(self.removed))
+
 
 class Fluid:
     """Weakly-compressible SPH fluid participant.
@@ -735,11 +748,7 @@ class Fluid:
                     & np.isfinite(ps.rho[gone]))
             if bad.any():
                 self._raise_non_finite(int(gone[np.argmax(bad)]))
-            kinds, counts = np.unique(ps.kind[gone], return_counts=True)
-            for k, cnt in zip(kinds, counts):
-                self.counters.removed[Kind(k).name] += int(cnt)
-            log.warning("fluid: %d particles left the domain at t=%.6g s and were removed (total %s)",
-                        outside, self.t, self.counters.removed)
+            self.counters.count_removed(ps.kind[gone], self.t)
             perm = perm[:n]
             if not (ps.kind[perm] == Kind.FLUID).any():
                 raise InstabilityError(f"fluid: every fluid particle has left the domain by t={self.t:.6g} s")

@@ -136,6 +136,21 @@ def test_the_nan_check_finds_the_lowest_bad_row():
     assert first_non_finite(pos, vel, rho) == 12_345
 
 
+def test_removals_are_counted_and_told_when_the_total_doubles(caplog):
+    """One splash particle a step for 100 steps: 100 counted, 7 warnings (totals 1, 2, 4,
+    ..., 64), not 100; then 29 at once pass 128: the eighth."""
+    from fluid.solver import _Counters
+
+    c = _Counters()
+    with caplog.at_level("WARNING", logger="fluid.solver"):
+        for k in range(100):
+            c.count_removed(np.array([int(Kind.FLUID)]), 0.001 * k)
+        c.count_removed(np.array([int(Kind.FLUID)] * 28 + [int(Kind.FIXED_WALL)]), 0.2)
+    assert c.removed["FLUID"] == 128 and c.removed["FIXED_WALL"] == 1
+    told = [r.getMessage() for r in caplog.records if "left the domain" in r.getMessage()]
+    assert len(told) == 8 and "'FLUID': 64," in told[6] and "29 particles" in told[7] and "'FLUID': 128," in told[7]
+
+
 def test_particles_leaving_the_domain_are_removed_and_counted():
     cfg, ps = small_tank()
     # a droplet well above the surface, thrown upwards out of the domain

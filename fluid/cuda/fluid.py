@@ -161,12 +161,8 @@ class CudaFluid(Fluid):
             if bad.any():
                 self._raise_non_finite(int(gone[np.argmax(bad)]))
             ids = dev.rows("ids", gone).astype(np.int64)
-            kinds, counts = np.unique(dev.rows("kind", gone), return_counts=True)
-            for k, cnt in zip(kinds, counts):
-                self.counters.removed[Kind(k).name] += int(cnt)
+            self.counters.count_removed(dev.rows("kind", gone), self.t)
             self._alive[ids] = False
-            log.warning("fluid: %d particles left the domain at t=%.6g s and were removed (total %s)",
-                        outside, self.t, self.counters.removed)
             if not (self._kind_by_id[self._alive] == Kind.FLUID).any():
                 raise InstabilityError(f"fluid: every fluid particle has left the domain by t={self.t:.6g} s")
         dev.gather(n)
