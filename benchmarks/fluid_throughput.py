@@ -66,6 +66,7 @@ see the cost measured in that module's docstring.
     .venv/bin/python benchmarks/fluid_throughput.py --case 2d --dp 0.01 --threads 1 --walls adami  # tank walls
     .venv/bin/python benchmarks/fluid_throughput.py --case 3d --threads 1 --steps 20 --precision float32
     .venv/bin/python benchmarks/fluid_throughput.py --case 3d --threads 1 --steps 20 --profile  # shares of a step
+    .venv/bin/python benchmarks/fluid_throughput.py --case 3d --steps 4 --speedup 16  # 1 -> 2 threads
 GPU (``--device cuda``; fluid.cuda, numba-cuda): the same cases stepped on an NVIDIA GPU.
 It prints the device (or that it is numba's CUDA simulator, NUMBA_ENABLE_CUDASIM=1, which
 runs every kernel in Python: its timings are meaningless) and ``bytes_per_particle`` from
@@ -250,6 +251,37 @@ def profile(case: str, dp: float, steps: int, integrator: str = "verlet", precis
             "shares": {k: v / total for k, v in sorted(cost.items(), key=lambda kv: -kv[1])}}
 
 
+def speedup(case: str, dp: float, steps: int, blocks: int) -> dict:
+    """Wall time per step on one thread and on all of numba's, in ``blocks`` pairs of
+    ``steps`` steps alternating inside one process (``numba.set_num_threads``), so that both
+    see the same particles and the same moment's machine; the speed-up of each pair."""
+    import numba
+    import numpy as np
+
+    from fluid.solver import Fluid
+
+    cfg, ps = build(case, dp)
+    f = Fluid(cfg, ps)
+    f.initialize(0.0)
+    most = numba.config.NUMBA_NUM_THREADS
+    for t in (1, most):  # compile, and wake the threads
+        numba.set_num_threads(t)
+        f.step(f.max_dt())
+    per = {1: [], most: []}
+    for b in range(blocks):
+        for t in ((1, most) if b % 2 == 0 else (most, 1)):
+            numba.set_num_threads(t)
+            t0 = time.perf_counter()
+            for _ in range(steps):
+                f.step(f.max_dt())
+            per[t].append((time.perf_counter() - t0) / steps)
+    ratio = np.array(per[1]) / np.array(per[most])
+    return {"particles": f.ps.n, "threads": most, "ms_per_step_1": 1e3 * float(np.median(per[1])),
+            "ms_per_step_n": 1e3 * float(np.median(per[most])), "speedup_median": float(np.median(ratio)),
+            "speedup_quartiles": (float(np.percentile(ratio, 25)), float(np.percentile(ratio, 75))),
+            "load_avg_1min": os.getloadavg()[0]}
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--case", choices=["2d", "3d", "all"], default="all")
@@ -266,6 +298,9 @@ def main(argv=None):
                     help="arithmetic of the pair terms (FluidConfig.precision)")
     ap.add_argument("--profile", action="store_true",
                     help="print each part's share of a step's CPU time (run it with --threads 1)")
+    ap.add_argument("--speedup", type=int, default=0, metavar="BLOCKS",
+                    help="the step's speed-up from 1 thread to all: BLOCKS pairs of --steps steps, alternating "
+                         "in one process (needs a quiet machine)")
     ap.add_argument("--device", choices=["cpu", "cuda"], default="cpu",
                     help="where the fluid steps (FluidConfig.device; cuda: numba-cuda, or its simulator with "
                          "NUMBA_ENABLE_CUDASIM=1)")
@@ -288,6 +323,13 @@ def main(argv=None):
     cases = ["2d", "3d"] if a.case == "all" else [a.case]
     for c in cases:
         for dp in sizes[c]:
+            if a.speedup:
+                r = speedup(c, dp, a.steps, a.speedup)
+                q = r["speedup_quartiles"]
+                print(f"{c} dp={dp} particles={r['particles']} 1 thread {r['ms_per_step_1']:.1f} ms/step, "
+                      f"{r['threads']} threads {r['ms_per_step_n']:.1f} ms/step: speed-up median "
+                      f"{r['speedup_median']:.2f} (quartiles {q[0]:.2f}-{q[1]:.2f}) load_avg_1min={r['load_avg_1min']:.2f}")
+                continue
             if a.profile:
                 r = profile(c, dp, a.steps, a.integrator, a.precision)
                 print(f"{c} dp={dp} particles={r['particles']} steps={r['steps']} "
