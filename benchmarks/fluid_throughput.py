@@ -328,7 +328,8 @@ def main(argv=None):
                 q = r["speedup_quartiles"]
                 print(f"{c} dp={dp} particles={r['particles']} 1 thread {r['ms_per_step_1']:.1f} ms/step, "
                       f"{r['threads']} threads {r['ms_per_step_n']:.1f} ms/step: speed-up median "
-                      f"{r['speedup_median']:.2f} (quartiles {q[0]:.2f}-{q[1]:.2f}) load_avg_1min={r['load_avg_1min']:.2f}")
+                      f"{r['speedup_median']:.2f} (quartiles {q[0]:.2f}-{q[1]:.2f}) "
+                      f"load_avg_1min={r['load_avg_1min']:.2f}")
                 continue
             if a.profile:
                 r = profile(c, dp, a.steps, a.integrator, a.precision)
