@@ -216,6 +216,27 @@ def test_damped_mode_fit_reads_a_ringing_mode_to_a_tenth_of_a_percent():
         rib_scene(0.3, 5.0, ())
 
 
+def test_the_stratified_column_mode_meets_the_organ_pipe_and_its_travel_time():
+    """stratified_quarter_wave: with gamma = 1 (no stiffening under pressure) it is the
+    organ pipe's c0/(4L) and 3 c0/(4L) to 1e-6; with the Tait gamma = 7 the sound speed
+    rises with depth as sqrt(c0^2 + 6 g d), and the mode lies within 1 % of the WKB
+    estimate 1 / (4 int ds/c) (the travel time along the axis, computed here) at 13, 15.56
+    and 21 m, its second mode within 0.3 % of 3 / (4 int ds/c)."""
+    from cosim.validations.arch_rib import C0_PAPER, RISE, SPAN, quarter_wave, stratified_quarter_wave
+
+    for n in (1, 2):
+        assert stratified_quarter_wave(C0_PAPER, LEVEL, gamma=1.0, n=n) == pytest.approx(
+            quarter_wave(C0_PAPER, LEVEL, n), rel=1e-6)
+    a = catenary_arch_axis(SPAN, RISE, 2.24, 20001)
+    right = a[a[:, 0] >= 0][::-1]
+    ds, zm = np.hypot(*np.diff(right, axis=0).T), 0.5 * (right[1:, 1] + right[:-1, 1])
+    for level in (13.0, LEVEL, 21.0):
+        wet = zm <= level
+        travel = np.sum(ds[wet] / np.sqrt(C0_PAPER**2 + 6 * 9.81 * (level - zm[wet])))
+        assert stratified_quarter_wave(C0_PAPER, level) == pytest.approx(1 / (4 * travel), rel=0.01)
+        assert stratified_quarter_wave(C0_PAPER, level, n=2) == pytest.approx(3 / (4 * travel), rel=0.003)
+
+
 def test_quarter_wave_of_the_papers_rib():
     """c0 / (4 L) with the paper's c0 = 140 m/s (B = 2.8e6 Pa): 1.108 Hz at the design level
     (L = 31.6 m), within 2.5 % of Table 5 at every depth (003 §4.3; 18 m: -2.44 %) and
