@@ -192,7 +192,9 @@ def test_damped_mode_fit_reads_a_ringing_mode_to_a_tenth_of_a_percent():
     sigma = 0.15 /s, each with its own amplitude, phase, mean and drift, plus a faster
     decaying overtone near 3 f and white noise at 5 % of the mode: the fit recovers f
     within 0.1 % over 4 s, within 0.2 % over the window's late 3 s; its standard error is
-    under 0.2 %. Bad windows and both or neither of records and pulse are refused."""
+    under 0.2 %; a mode of two cycles under an overtone 2.5 times stronger is still found
+    (the first spike starts the fit). Bad windows and both or neither of records and pulse
+    are refused."""
     from cosim.errors import InputError
     from cosim.validations.arch_rib import damped_mode, rib_scene
 
@@ -208,6 +210,11 @@ def test_damped_mode_fit_reads_a_ringing_mode_to_a_tenth_of_a_percent():
     assert fit["f_std_Hz"] < 2e-3 * f_true
     assert fit["sigma_1_s"] == pytest.approx(0.15, abs=0.03)
     assert damped_mode(t, y, 2.0)["f_Hz"] == pytest.approx(f_true, rel=2e-3)
+    # a deep level: the mode (0.70 Hz) two cycles long under an overtone 2.5 times stronger: still the mode
+    deep = np.column_stack([a * (np.exp(-0.15 * s) * np.cos(2 * np.pi * 0.6973 * s)
+                                 + 2.5 * np.exp(-0.3 * s) * np.cos(2 * np.pi * 2.08 * s + 0.4))
+                            + 0.05 * a * rng.standard_normal(t.size) for a in np.linspace(1, 0.3, 9)])
+    assert damped_mode(t[t <= 4.0], deep[t <= 4.0], 1.0)["f_Hz"] == pytest.approx(0.6973, rel=2e-3)
     with pytest.raises(InputError, match="window"):
         damped_mode(t, y, 4.9)
     with pytest.raises(InputError, match="records"):
