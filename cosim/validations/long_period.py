@@ -452,38 +452,39 @@ def long_period(quick: bool) -> dict:
     0.10, w1 +2.1 % against 2 %, p 0.032 against 0.03). The rectangle meets its three
     targets at 13 rows, the cylinder at 10 (0.06 m; at 8 rows its surface does not, forced
     0.134). Not run: the rectangle at a third, finer dx (1/15 m, ~30 CPU minutes), and
-    either tank at 0.5 g at these dx, which the full variant would need too; the 0.1 m rows are the runs of the table above (the
-    cylinder's, run again, gave the same figures). Why ours departs from linear theory, with
+    either tank at 0.5 g at these dx, which the full variant would need too; the 0.1 m
+    runs, made again here, gave the table above's figures. Why ours departs from linear theory, with
     ``benchmarks/long_period_modes.py`` (the gauges' fit split by mode; each mode's free
     frequency and decay rate):
 
     - the shorter modes are slow and damped. The rectangle's 3rd and 5th modes (5.54 and
-      7.17 rad/s, either side of the forcing's 6.28) run -2.4 and -5.9 % at dx = 1/13 and
-      decay at 0.11 and 0.29 1/s: what the artificial viscosity's equivalent nu = alpha h
-      c0 / (2 (d + 2)) = 0.0062 m^2/s gives a free-surface wave, 2 nu k^2 = 0.12 and 0.34
-      1/s (Lamb 1932 §348). Linear theory with the three antisymmetric modes' measured
-      frequency and decay leaves forced 0.064 (0.080 as run) and whole 0.057 (0.18): the
-      free sloshing's "whole" error is these modes. The cylinder's third mode (9.151 rad/s)
-      lies 1.9 % above the forcing's 8.976 rad/s: linear theory, undamped, grows it to
+      7.17 rad/s, either side of the forcing's 6.28) run -4.2 and -9.6 % at dx = 0.1, -2.4
+      and -5.9 % at 1/13, and decay at 0.17 and 0.32, 0.11 and 0.29 1/s: what the
+      artificial viscosity's equivalent nu = alpha h c0 / (2 (d + 2)) (0.0080, 0.0062
+      m^2/s) gives a free-surface wave, 2 nu k^2 = 0.16 and 0.44, 0.12 and 0.34 1/s (Lamb
+      1932 §348). Linear theory with the three antisymmetric modes' measured frequency and
+      decay leaves forced 0.096, 0.064 (as run 0.120, 0.080) and whole 0.085, 0.057 (0.22,
+      0.18): the free sloshing's "whole" error is these modes. The cylinder's third mode
+      (9.151 rad/s) lies 1.9 % above the forcing's 8.976 rad/s: linear theory, undamped, grows it to
       0.048 m, k a = 0.41 (a wavelength of 0.74 m: 7.4, 9.8, 12.3 dx); ours runs -20.6,
-      -12.0, -8.3 % slow at dx = 0.1, 0.075, 0.06 and reaches 0.004, 0.007, 0.013 m. With the
-      measured modes linear theory leaves forced 0.140, 0.095, 0.068 (as run 0.183, 0.134,
+      -12.0, -8.3 % slow at dx = 0.1, 0.075, 0.06 and reaches 0.004, 0.007, 0.013 m. With
+      the measured modes linear theory leaves forced 0.140, 0.095, 0.068 (as run 0.183, 0.134,
       0.098) and whole 0.13, 0.11, 0.08 (0.29, 0.25, 0.23). The cylinder's forced target
       thus measures a near-resonant short mode whose linear amplitude lies outside linear
       theory (k a 0.41); kept as stated.
-    - second order: the symmetric modes, which linear theory has none of, carry 0.035 of
-      the rectangle's forced error at 1/13 and 0.04-0.12 of the cylinder's.
+    - second order: the symmetric modes, which linear theory has none of, carry 0.067 and
+      0.035 of the rectangle's forced error at dx = 0.1 and 1/13, and 0.12, 0.07, 0.04 of
+      the cylinder's.
     - the first mode runs fast in the rectangle (+2.1, +1.66 %; its 2-D section +1.1,
-      +0.55 % at dx = 0.1, 0.05): not the depth (the mean level stays within 3 mm of still,
+      +0.55 % at dx = 0.1, 0.05): not the depth (the mean level stays within 6 mm of still,
       where +1.7 % would need 65 mm more water), nor the kernel's dispersion (it makes the
       shorter modes slow). In the cylinder it does not converge monotonically (+0.98,
       +1.63, +0.43 %; its rings' spacing R / round(R / dx) is 0.1, 0.077, 0.059 m).
-    - the run-up: the largest |level - still| at a wall is a drop in every run with a
-      record (all but the rectangle at 0.1 m): at the wall the tank first pulls away
-      from, at 0.44-0.52 s where linear theory has -0.03 to -0.05 m, ours reads 1.0-1.14 dx
-      lower (the reading takes the top fluid particle
+    - the run-up: the largest |level - still| at a wall is a drop in every run: at
+      the wall the tank first pulls away from, at 0.44-0.58 s where linear theory has -0.03
+      to -0.05 m, ours reads 1.0-1.14 dx lower (the reading takes the top fluid particle
       within dx of the wall: the rows above it stand farther off); the largest rise while
-      shaken is 0.062 m in the rectangle at 1/13 (linear 0.072) and 0.006, 0.010, 0.026 m
+      shaken is 0.064 and 0.062 m in the rectangle (linear 0.072) and 0.006, 0.010, 0.026 m
       in the cylinder (0.034). In the 2-D section at dx = 0.1 m likewise (-0.089 m at the
       right wall, at 2.66 s).
 
