@@ -12,8 +12,7 @@ depths and within 2.4 % at all (13-21 m: 1.40 to 0.67 Hz), the overtones come 8-
 above Table 3's (3.32, 5.54, 7.75 against 3.05-3.08, 5.05-5.13, 7.03-7.15 Hz). So the
 spikes the paper reads as the water's natural frequency look like the acoustic modes of
 its artificially compressible water, which move with the speed of sound chosen (real
-water: 1480 m/s, 11.7 Hz). What would settle it: the same run at two c0 (the spike moves
-in proportion for an acoustic mode, not for sloshing).
+water: 1480 m/s, 11.7 Hz).
 
 Run (``--dx 0.2 --duration 20``): the rib (``fluid.shapes.arch_rib_cavity``, m = 2.24,
 inner height 1.458 m: the paper gives neither; these meet its particle counts within 1 %,
@@ -25,84 +24,76 @@ correlation (the paper: opposite phase under horizontal excitation, Figure 13), 
 quarter-wave prediction for the run's c0. ``--c0`` sets the speed of sound (the paper's
 140 m/s; default: the sloshing set-up's 10 sqrt(g h)).
 
-Measured (dx = 0.2 m: 2,310 water particles, 8,646 in all, 7 across the cavity; El
-Centro EW; FFT of the patches' pressure from 2.5 s on): at c0 = 126 m/s (the set-up's),
-20 s, 33,000 steps, 310 CPU-s (0.92 M particle-steps per CPU-second; 1,555 s of wall on
-the 2-core machine shared with two soak benchmarks and a test run), the first peak at
-0.81-0.82 Hz with another near 2.4-2.5 Hz (3 times it), left and right in opposite phase
-(correlation -0.86); the quarter-wave estimate at 126 m/s is 1.0 Hz. With ``--c0 63``
-(16 s, 240 s of wall) the first peak moves to 0.47-0.49 Hz (0.59 of it; an acoustic mode
-would move to 0.5, a sloshing mode would stay), its 3 times overtone to 1.38-1.41 Hz,
-correlation -0.90. So in our solver too the leading spike of the wall pressure is the
-water column's compressibility mode. Not converged (7 particles across), the section and
-m guessed.
+(The first runs, at c0 = 126 and 63 m/s, moved the first peak in proportion to c0: an
+acoustic mode, not sloshing; docs/validation/arch-rib_history.md.)
 
-    python benchmarks/arch_rib_quake.py --predict
-    python benchmarks/arch_rib_quake.py --dx 0.2 --duration 20 --record ew --out out/arch_rib
+The mode rung free (``--ringdown``, ``cosim.validations.arch_rib.ring_rib``): the rib
+settled 1.5 s, one vertical displacement pulse (20 mm, one 1 s sine, faded in and out),
+then free ringing; the symmetric part of B1-B18 from 1 s to the end fitted by one damped
+mode and its overtone (``damped_mode``: frequency and decay shared by the nine pairs,
+each pair's amplitude, phase and drift its own). Under El Centro the same mode is driven
+all along, and the peak of its spectrum over 9 s moves with the window by 0.4-3.6 %
+(dx = 0.3-0.1 m, windows 1-10, 1-8, 3-10, 2-9, 1-9, 2-10 s), as much as the 2 % asked;
+rung free it is one damped sinusoid, and the fits over 1-6, 1.5-6, 1-5, 1.5-5 s agree to
+0.01-0.1 % (1.2 % at dx = 0.3 m, where water leaks out and the level falls). The
+resolution study at the design level, c0 = 140 m/s, against the column's continuum mode
+(``stratified_quarter_wave``: the Tait water's sound speed rises with depth as
+sqrt(c0^2 + 6 g d), 1.124 Hz, 1.5 % above c0/(4L) = 1.108 Hz)::
+
+    python benchmarks/arch_rib_quake.py --convergence 0.3,0.2,0.15,0.1,0.07 --ringdown --duration 6
+
+Measured 2026-11-26 (AMD EPYC, one thread, NUMBA_NUM_THREADS=1, 2 cores shared with two
+other jobs, loaded: 2,106 CPU-s in 44 min of wall; CPU-s per simulated second include the
+1.5 s settling; "40 s": a 40 s record and its settling at that rate)::
+
+    =====  ======  =========  =======  ======  ======  ==========  ===========
+    dx     across  particles  CPU-s/s  mode    spread  vs column   40 s, CPU-s
+    =====  ======  =========  =======  ======  ======  ==========  ===========
+    0.30   4.9     4,970      9.7      0.978   1.2 %   -13.0 %     400
+    0.20   7.3     8,646      17.4     0.983   0.05 %  -12.6 %     720
+    0.15   9.7     12,450     30.2     1.058   0.1 %   -5.9 %      1,250
+    0.10   14.6    21,386     68.3     1.078   0.03 %  -4.2 %      2,840
+    0.07   20.8    36,130     155.3    1.106   0.01 %  -1.6 %      6,440
+    =====  ======  =========  =======  ======  ======  ==========  ===========
+
+(Hz; "across": 1.458 m / dx; "spread": of the four windows' fits.) No Richardson
+extrapolation: from the three finest the mode rises 1.9 % then 2.6 %, the steps growing,
+so no order p fits f = f* + C dx^p (these spacings are not in the asymptotic range; how
+the lattice meets the two walls changes with dx, 0.3 m to 0.2 m moved it only 0.5 %).
+Against the continuum mode, 1.124 Hz (Table 3's 1.125 Hz within 0.1 %), the cheapest dx
+within 2 % is 0.07 m (21 particles across, -1.6 %): a 40 s record costs some 6,400 CPU-s
+there (1.8 CPU-hours on one thread, some 2.7 hours of wall at the 65 % of a core the run
+got here); dx = 0.1 m is 4.2 % under it. That the runs converge to that value is shown
+only as far as the deficit shrinks with dx (12.6, 5.9, 4.2, 1.6 %); a run at 0.05 m (some
+3,200 CPU-s for 6 s) would test it. Under El
+Centro EW (10 s, the symmetric part's peak; history file) dx = 0.2, 0.15, 0.1 m read
+0.989, 1.046, 1.094 Hz: 0.6 % above, 1.1 % below, 1.5 % above the rung mode.
 
 The depth study of 003 §4.3 (Table 5: the first spike against the water depth, 13-21 m)
-as one command, at the paper's c0 = 140 m/s by default, El Centro EW standing in for the
-paper's Wenchuan EW (not available here); one run per level through the validation's
-scene (``cosim.validations.arch_rib.run_rib``: settled 1.5 s, B1-B18; "ours" is the first
-spike of the part of the pressure the record does not force, the symmetric part under EW,
-i.e. the water's own mode; the first spike of all points summed is kept beside it),
-printing ours against Table 5 and against c0/(4L), with each run's CPU time per simulated
-second, settling included (``--json FILE`` keeps the rows)::
+as one command, the mode rung free at each level, at the paper's c0 = 140 m/s; printing
+ours against Table 5, c0/(4L) and the column's continuum mode, with each run's CPU time
+per simulated second (``--json FILE`` keeps the rows; without ``--ringdown``: the first
+spike of the symmetric part under El Centro EW, standing in for the paper's Wenchuan)::
 
-    python benchmarks/arch_rib_quake.py --depth-study --dx 0.1 --duration 10 --levels 13,15,17,19,21
+    python benchmarks/arch_rib_quake.py --depth-study --ringdown --dx 0.1 --duration 4 --levels 13,21,17,19,15
 
-(dx = 0.1 m: the resolution study below; some 800 CPU-s a level, 70 min for the five on
-one core, not run here.) Measured at dx = 0.3 m over 6 s (the paper's Figure 17 depths;
-4,764-5,501 particles, 49-71 CPU-s per level, 6.5-9.5 CPU-s per simulated second with
-the 1.5 s settling; 2 cores shared with other runs)::
+Measured so (loaded as above; the design level from the resolution study, 6 s)::
 
-    =====  =======  =======  =======  ========  ==========
-    depth  ours     Table 5  c0/(4L)  vs T5     vs c0/(4L)
-    =====  =======  =======  =======  ========  ==========
-    13     1.162    1.40     1.398    -17.0 %   -16.9 %
-    15     0.926    1.17     1.163    -20.8 %   -20.4 %
-    15.56  0.980    1.11     1.108    -11.7 %   -11.5 %
-    17     0.894    0.97     0.978    -7.8 %    -8.5 %
-    19     0.786    0.83     0.823    -5.3 %    -4.5 %
-    21     0.603    0.67     0.684    -9.9 %    -11.8 %
-    =====  =======  =======  =======  ========  ==========
+    =====  =====  =======  =======  ======  ======  ========  =========  =======
+    depth  ours   Table 5  c0/(4L)  column  vs T5   vs c0/4L  vs column  CPU-s/s
+    =====  =====  =======  =======  ======  ======  ========  =========  =======
+    13     1.363  1.40     1.398    1.416   -2.6 %  -2.5 %    -3.7 %     62.7
+    15.56  1.078  1.11     1.107    1.124   -2.9 %  -2.7 %    -4.2 %     68.3
+    17     0.958  0.97     0.978    0.994   -1.2 %  -2.0 %    -3.6 %     71.5
+    21     0.685  0.67     0.684    0.697   +2.2 %  +0.1 %    -1.8 %     88.2
+    =====  =====  =======  =======  ======  ======  ========  =========  =======
 
-Ours falls with depth as Table 5 does but lies 5-21 % below it at dx = 0.3 m, where the
-design level's spike is 10 % under the finest run's (the resolution study below).
-
-The resolution study (the first spike of the unforced part at the design level against
-dx, El Centro EW, c0 = 140 m/s, settled 1.5 s, spectra over 1-10 s; the cheapest dx
-within 2 % of the finest; ``--spectra FILE.npz`` keeps each run's spectra and B1-B18
-series, ``--spectra-figure --figures DIR`` overlays them)::
-
-    python benchmarks/arch_rib_quake.py --convergence 0.3,0.2,0.15,0.1 --duration 10 --spectra conv.npz
-
-Measured 2026-11-25 (AMD EPYC, one thread, NUMBA_NUM_THREADS=1, on 2 cores shared with
-three other jobs: the run got 56 % of a core, 1,451 CPU-s in 43 min of wall; CPU-s per
-simulated second include the settling; "40 s" projects the paper's record at that rate)::
-
-    =====  ======  =========  =======  ========  =========  ===========
-    dx     across  particles  CPU-s/s  spike     vs finest  40 s, CPU-s
-    =====  ======  =========  =======  ========  =========  ===========
-    0.30   4.9     4,948      8.9      0.986     -9.8 %     358
-    0.20   7.3     8,646      17.1     0.989     -9.6 %     684
-    0.15   9.7     12,450     30.5     1.046     -4.4 %     1,220
-    0.10   14.6    21,386     69.7     1.094     0          2,788
-    =====  ======  =========  =======  ========  =========  ===========
-
-("across": particles across the cavity, 1.458 m / dx; the spikes in Hz; water 1,056,
-2,310, 4,098, 9,256 particles; at dx = 0.3 m 44 water particles leave through the walls
-in 10 s, 77 in 20 s, none at the finer spacings; over 20 s dx = 0.3 m reads 0.945 Hz,
-0.2 m 0.981 Hz, the validation's full run.) No coarser spacing is within 2 % of
-dx = 0.1 m, and 0.1 m is not shown converged: the spike rose 4.6 % from 0.15 m to 0.1 m
-(after none from 0.3 to 0.2 m), and where the 1-10 s window starts and ends moves its
-reading by up to 3 % at 0.1 m (1-6 s: 1.127, 1-8 s: 1.080, 3-10 s: 1.119 Hz), less at
-the coarser ones (0.8-3 %). The cheapest dx meeting the criterion here is therefore the
-finest, dx = 0.1 m (15 particles across): a 40 s record costs 2,800 CPU-s at it, about
-47 CPU-minutes (some 80 min of wall on this loaded machine); its spike, 1.094 Hz, is
-2.8 % under Table 3's 1.125 Hz and 1.2 % under c0/(4L) = 1.108 Hz (the summed spectrum
-of all points: 1.109 Hz, -1.5 %). The same scaling (particles as 1/dx^2, steps as 1/dx)
-puts dx = 0.07 m at about 2 CPU-hours for 40 s; the paper's 0.05 m at some 4-5.
+(Hz; 19,436-27,054 particles, 345-485 CPU-s a level.) At dx = 0.1 m ours meets Table 5
+within 5 % at every level run (-2.9 to +2.2 %; at dx = 0.3 m under EW it missed by 5-21 %,
+history file), and lies 3.6-4.2 % under the column's continuum mode down to 17 m, as at
+the design level. At 21 m the 4 s run holds only two cycles of the 0.68 Hz mode: the
+1-4 s fit's standard error is 0.15 %, but the shorter windows' fits spread 7 %, so that
+level wants ``--duration 6``. 15 and 19 m not run (time).
 
 The paper's cases without Wenchuan (003 §4.2: Tables 3-4, Figures 13-15), one run each at
 the design level (``--cases``; settled 1.5 s, spectra from 1 s on): the first spike of
@@ -142,7 +133,7 @@ both combined records (0.49-0.51 Hz, a shoulder at 0.2-0.4 of the highest). So T
 criterion, read on all points, fails by 12-56 % at this dx, and by 12-18 % on the mode.
 The paper finds its spike between the bridge's 2nd and 4th modes, 0.94 and 1.66 Hz, and
 so no resonance; at dx = 0.3 m ours lies on the 2nd (0.925-0.99 Hz, within 5 %), at
-0.1 m (1.094 Hz, the resolution study) 16 % above it, where the paper's is 19 % above.
+0.07 m (1.106 Hz, the resolution study) 18 % above it, where the paper's is 19 % above.
 At dx = 0.2 m (``--cases ew,ns --dx 0.2``: 8,646 particles, no water lost, 144-149 CPU-s
 a case, 15.2-15.6 CPU-s per simulated second): EW free part 0.987 Hz, NS 0.962 Hz
 (-12.3 %, -14.5 % of 1.125 Hz), all points 0.512 and 0.494 Hz (the record's), the pairs
