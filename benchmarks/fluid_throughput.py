@@ -24,8 +24,23 @@ three alternating runs (``--threads 1``):
     2-D dp = 0.01 m,  22 008 particles   5.45-5.70 M        4.0-5.3 M
     3-D dp = 0.017 m, 107 012 particles  1.65-1.69 M        1.94-2.03 M (1.22x)
 
-The step's speed-up from 1 to 2 threads could not be measured (the load). Bytes per
-particle kept between steps: 237 (2-D), 265 (3-D); float32 adds 56. Where a step's CPU
+The step's speed-up from 1 to 2 threads (2026-11-26, the machine quiet, load < 1.3;
+``--speedup 10``: ten pairs of blocks alternating 1 and 2 threads in one process, two
+runs each): 3-D 107 012 particles 1.77 / 1.66 (62 -> 35-37 ms), 2-D 84 008 particles
+1.78 / 1.82 (13.8 -> 7.5-7.8 ms); as separate processes, alternated, 1.79-1.98 in 3-D
+(median 1.92 over 7 pairs) and 1.42-1.99 in 2-D. Below the issue's 1.9 in 2-D: at 2
+threads the serial parts (counting sort 0.37 ms, the NaN check, group loads, Python) are
+8.5 % of the step and the gathers and packing scale by 1.65-1.8 only. A parallel counting
+sort (per-thread histograms, offsets cell by cell) was slower here, 0.39-0.46 against
+0.30 ms: the grid has as many cells as particles, and the offsets are O(cells x threads)
+and serial. Other threading layers, quiet, 2 threads: ``OMP_WAIT_POLICY=PASSIVE`` 1.68-1.79
+(3-D) and 1.39-1.49 (2-D), ``GOMP_SPINCOUNT=1000`` 1.68-1.74 / 1.46-1.68, workqueue
+1.67-1.74 / 1.44-1.53, TBB (``pip install tbb``, ``LD_LIBRARY_PATH`` to its lib) 1.70-1.71
+/ 1.52-1.81: none faster than the default OpenMP. Loaded (four jobs on the 2 cores; 2-D
+dp 0.01 m), the 2-thread step against the 1-thread one: OpenMP 0.09 (11 times slower: the
+spinning waits), ``GOMP_SPINCOUNT`` 1e5 0.12, 1e4 0.51, 1e3 0.88, PASSIVE 0.86,
+workqueue 0.92-0.95, TBB 0.94-0.99. Bytes per particle kept between steps: 237 (2-D),
+265 (3-D); float32 adds 56. Where a step's CPU
 time goes at one thread (``--profile``; 3-D 68 ms, 2-D 4.2 ms per step, float64):
 
     part                                       3-D      2-D
