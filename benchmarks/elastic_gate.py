@@ -9,15 +9,17 @@ per simulated s, the RMS difference over the frames relative to the measured pea
 judged 15 %), the peaks and their lag behind the measured ones (judged: within 0.04 s). Compare
 CPU times, not wall times, on a shared machine. ``--zeta``: the damping ratio of the gate's
 first mode (stiffness-proportional, beta = 2 zeta / omega_1, omega_1 the clamped-free
-Euler-Bernoulli mode 1.875^2 sqrt(E I / (rho A)) / L^2 of the dry gate); the validation has none."""
+Euler-Bernoulli mode of the dry gate, ``BeamModel.natural_frequencies``); the validation has none."""
 
 from __future__ import annotations
 
 import argparse
+import math
 
 from machine import cpu_name
 
-from cosim.validations.elastic_gate import E_S, GATE_B, GATE_L, RHO_S, compare, run_elastic_gate
+from bodies.elastic import elastic_beam
+from cosim.validations.elastic_gate import E_S, GATE_B, GATE_L, NU_S, RHO_S, compare, run_elastic_gate
 
 
 def main(argv=None) -> None:
@@ -28,7 +30,8 @@ def main(argv=None) -> None:
     ap.add_argument("--elements", type=int, default=16, help="chain elements N")
     ap.add_argument("--zeta", default="0", help="first-mode damping ratios, comma separated (0: none)")
     a = ap.parse_args(argv)
-    omega1 = 1.875**2 * (a.E * GATE_B**2 / (12.0 * RHO_S)) ** 0.5 / GATE_L**2  # rad/s, dry clamped-free
+    dry = elastic_beam("gate", GATE_L, GATE_B, E=a.E, rho=RHO_S, nu=NU_S)
+    omega1 = 2.0 * math.pi * dry.natural_frequencies(1, "euler-bernoulli")[0]  # rad/s
     runs = [(float(dx), float(z)) for dx in a.dx.split(",") for z in a.zeta.split(",")]
     print(f"elastic-gate, E = {a.E:.4g} Pa, N = {a.elements}, {a.t_end} s; CPU: {cpu_name()}")
     print(f"{'dx [mm]':>8} {'zeta':>5} {'particles':>9} {'steps':>6} {'CPU s':>7} {'CPU s/sim s':>11} "
