@@ -343,6 +343,7 @@ def elastic_beam(name: str, length: float, thickness: float, *, E: float, rho: f
     if not (isinstance(beta, (int, float)) and math.isfinite(beta) and beta >= 0):
         raise InputError(f"elastic beam '{name}': beta (stiffness-proportional damping) must be finite and >= 0 "
                          f"[s], got {beta!r}; give 0 for no damping")
+    nu, beta = float(nu), float(beta)  # a numpy scalar passes the checks but repr()s as np.float64(...) in the XML
     if not (isinstance(n_elements, int) and not isinstance(n_elements, bool) and n_elements >= MIN_ELEMENTS):
         raise InputError(f"elastic beam '{name}': n_elements must be a whole number >= {MIN_ELEMENTS}, got "
                          f"{n_elements!r}; fewer cannot resolve the third bending mode (8 give the first three "

@@ -277,6 +277,15 @@ def test_free_vibration_at_the_coupling_step_has_the_first_natural_frequency():
     assert np.abs(x).max() < 1.01 * abs(x[0])  # no energy gained
 
 
+def test_numpy_scalars_build_the_same_model():
+    """nu and beta computed with numpy (np.float64) give the model plain floats give."""
+    a = elastic_beam("p", **SEED, n_elements=8, nu=0.3, beta=1e-3)
+    b = elastic_beam("p", **SEED, n_elements=8, nu=np.float64(0.3), beta=np.float64(1e-3))
+    assert b.xml == a.xml
+    m, _ = compiled(b)
+    assert m.jnt_stiffness[0] > 0 and m.dof_damping[0] == pytest.approx(1e-3 * m.jnt_stiffness[0])
+
+
 @pytest.mark.parametrize("beta", [0.0, 1e-3])
 def test_stable_dt_is_the_rk4_limit(beta):
     """Undamped, 2 sqrt 2 / omega_max; stiffness-proportional damping (beta) is explicit
