@@ -30,10 +30,8 @@ runs each): 3-D 107 012 particles 1.77 / 1.66 (62 -> 35-37 ms), 2-D 84 008 parti
 1.78 / 1.82 (13.8 -> 7.5-7.8 ms); as separate processes, alternated, 1.79-1.98 in 3-D
 (median 1.92 over 7 pairs) and 1.42-1.99 in 2-D. Below the issue's 1.9 in 2-D: at 2
 threads the serial parts (counting sort 0.37 ms, the NaN check, group loads, Python) are
-8.5 % of the step and the gathers and packing scale by 1.65-1.8 only. A parallel counting
-sort (per-thread histograms, offsets cell by cell) was slower here, 0.39-0.46 against
-0.30 ms: the grid has as many cells as particles, and the offsets are O(cells x threads)
-and serial. Other threading layers, quiet, 2 threads: ``OMP_WAIT_POLICY=PASSIVE`` 1.68-1.79
+8.5 % of the step and the gathers and packing scale by 1.65-1.8 only. Other threading
+layers, quiet, 2 threads: ``OMP_WAIT_POLICY=PASSIVE`` 1.68-1.79
 (3-D) and 1.39-1.49 (2-D), ``GOMP_SPINCOUNT=1000`` 1.68-1.74 / 1.46-1.68, workqueue
 1.67-1.74 / 1.44-1.53, TBB (``pip install tbb``, ``LD_LIBRARY_PATH`` to its lib) 1.70-1.71
 / 1.52-1.81: none faster than the default OpenMP. Loaded (four jobs on the 2 cores; 2-D
