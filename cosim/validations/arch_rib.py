@@ -206,6 +206,14 @@ def spikes(f: np.ndarray, a: np.ndarray, n: int = 4, rel: float = 0.2) -> list[f
     return out
 
 
+def _run_b_points(scene):
+    """Run ``scene`` in a temporary folder: its result (in memory) and the pressure at
+    B1-B18, (samples, 18) [Pa]."""
+    with tempfile.TemporaryDirectory() as tmp:
+        r = scene.run(tmp, progress=None)
+    return r, np.column_stack([r[f"B{k}.p"] for k in range(1, 19)])
+
+
 def damped_mode(t: np.ndarray, y: np.ndarray, t0: float, t1: float | None = None,
                 f0: float | None = None) -> dict:
     """The frequency of one damped mode common to the channels ``y`` (samples x channels,
@@ -269,11 +277,8 @@ def ring_rib(dx: float, duration: float = 5.0, level: float = LEVEL, c0: float =
     if not duration >= PULSE_PERIOD + 3.0:
         raise InputError(f"ring_rib: duration={duration!r} s leaves under 3 s of free ringing after the "
                          f"{PULSE_PERIOD} s pulse; give at least {PULSE_PERIOD + 3.0} s")
-    scene = rib_scene(dx, duration, (), level, c0, settle=settle, pulse=pulse)
-    with tempfile.TemporaryDirectory() as tmp:
-        r = scene.run(tmp, progress=None)
+    r, p = _run_b_points(rib_scene(dx, duration, (), level, c0, settle=settle, pulse=pulse))
     t = r.t
-    p = np.column_stack([r[f"B{k}.p"] for k in range(1, 19)])
     sym = (p[:, :9] + p[:, 9:]) / 2
     fit = damped_mode(t, sym, PULSE_PERIOD)
     others = [damped_mode(t, sym, a, b, fit["f_Hz"])["f_Hz"] for a, b in
@@ -316,11 +321,8 @@ def run_rib(dx: float, duration: float, records=("ew",), level: float = LEVEL, c
       ``free_inner_wave_Hz`` that of their unforced part (as ``free_spikes_Hz``; not for a
       combined record);
     - the cost (``cpu_s`` includes the settling)."""
-    scene = rib_scene(dx, duration, records, level, c0, settle=settle, gauges=gauges)
-    with tempfile.TemporaryDirectory() as tmp:
-        r = scene.run(tmp, progress=None)
+    r, p = _run_b_points(rib_scene(dx, duration, records, level, c0, settle=settle, gauges=gauges))
     t = r.t
-    p = np.column_stack([r[f"B{k}.p"] for k in range(1, 19)])
     f, a = spectrum(t, p, skip)
     sp = spikes(f, a)
     horizontal, vertical = any(x != "up" for x in records), "up" in records
