@@ -423,7 +423,7 @@ RATIO_TOL = 0.15
             "(symmetric) part's first spike within 15 % of 1.125 Hz, its next within 15 % of 3 times it; every pair "
             "Bk/B(k+9) correlated below -0.5 (opposite phase)")
 def arch_rib(quick: bool) -> dict:
-    """See the module docstring. Full: dx = 0.2 m (7 particles across), settled 1.5 s, 20 s
+    """See the module docstring. Full: dx = 0.1 m (14.6 particles across), settled 1.5 s, 20 s
     of El Centro EW and 10 s of El Centro vertical, spectra from 2 s on; quick: dx = 0.3 m,
     settled 1.5 s, 6 s of EW, from 1 s on (settled 1 s, the pairs' correlation is only
     -0.02 to -0.10: the start's symmetric ringing is still as strong as the record's
@@ -503,8 +503,8 @@ def arch_rib(quick: bool) -> dict:
                               "horizontal_pair_correlation_max": [None, -0.5]}}
         out["metrics"]["free_ratio3_err"] = out["metrics"]["free_ratio_errors"][0]
         return out
-    h = run_rib(0.2, 20.0, ("ew",), skip=2.0, settle=1.5)
-    v = run_rib(0.2, 10.0, ("up",), skip=2.0, settle=1.5)
+    h = run_rib(0.1, 20.0, ("ew",), skip=2.0, settle=1.5)
+    v = run_rib(0.1, 10.0, ("up",), skip=2.0, settle=1.5)
     stated["vertical_pair_correlation_min"] = [0.5, None]
     return {"metrics": _metrics(h, v), "particles": h["particles"], "steps": h["steps"] + v["steps"],
             "series": _series({"EW": h, "vertical": v}), "departure": departure, "stated_tolerances": stated,
