@@ -403,8 +403,9 @@ def long_period_plots(runs: dict) -> dict:
 def long_period(quick: bool) -> dict:
     """001 §3.1 (Fig. 7-8), §3.2 (Fig. 13), §3.3 (Fig. 18): see :func:`run_long_period`.
     Three periods of forcing, three first-mode periods free. Full: the 2-D sections of the
-    rectangular and the 45 deg tank at dx = 0.05 m, the whole 3-D rectangular tank and
-    the cylinder at dx = 0.1 m; quick: the rectangular section at dx = 0.1 m.
+    rectangular and the 45 deg tank at dx = 0.05 m, the whole 3-D rectangular tank at
+    dx = 1/13 m (13 rows: dx divides the depth and length) and the cylinder at dx = 0.06 m
+    (10 rows); quick: the rectangular section at dx = 0.1 m.
 
     Measured (2026-11-25, AMD EPYC, 2 cores shared with many other jobs: CPU seconds;
     ``run_long_period(shape, dx=, dim=, a0=)`` with this case's settings, one run each;
@@ -519,7 +520,7 @@ def long_period(quick: bool) -> dict:
     """
     plan = ({"rectangular 2-D": ("rectangular", 2, 0.1)} if quick else
             {"rectangular 2-D": ("rectangular", 2, 0.05), "inclined 45 deg 2-D": ("inclined", 2, 0.05),
-             "rectangular 3-D": ("rectangular", 3, 0.1), "cylinder 3-D": ("cylinder", 3, 0.1)})
+             "rectangular 3-D": ("rectangular", 3, 1 / 13), "cylinder 3-D": ("cylinder", 3, 0.06)})
     runs, metrics, tolerances = {}, {}, {}
     particles = steps = 0
     for name, (shape, dim, dx) in plan.items():
