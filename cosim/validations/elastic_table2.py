@@ -58,6 +58,8 @@ from pathlib import Path
 
 import numpy as np
 
+from cosim.validation import case
+
 SCENE = Path(__file__).with_name("scenes") / "elastic-table2.toml"  #: Test 1
 L_COL, B, H_S, RHO_S = 0.146, 0.012, 0.08, 2500.0  #: column width, structure thickness and height [m], density
 #: seed 002 Table 2: test -> (hu [m], a [m], E [Pa])
@@ -142,3 +144,86 @@ def metrics(test: int, folder: Path) -> dict:
             "z_mm": list(1e3 * z), "f_vib_hz": f_vib, "f1_dry_hz": f1,
             "quasi_static_max_mm": 1e3 * float(quasi.max()), "quasi_static_at_peak_mm": 1e3 * float(quasi[i]),
             "_t": t, "_x": x, "_f": freqs, "_spec": spec, "_after": (t[after][0], t[after][-1])}
+
+
+# ------------------------------------------------------------------ the validation case
+#: §4.2's group: the distance a (Tests 1, 4, 5), the one group the paper gives numbers for
+A_GROUP = (1, 4, 5)
+TABLE2_TARGET = ("the peak x displacement of the structure's upper left corner falls with a in the paper's ratios "
+                 "(0.76 / 0.82 = 0.927 and 0.67 / 0.82 = 0.817 for a = 176 and 206 mm against 146 mm, Tests 4, 5 "
+                 "and 1) within 0.05 each, and the structure starts to move later as a grows; the paper's absolute "
+                 "peaks (0.82 / 0.76 / 0.67 mm) within 15 % reported beside it")
+#: what the full variant judges: the ratios within 0.05, the fall and the onsets in order
+FULL_TOLERANCES = {"ratio_err.a176": 0.05, "ratio_err.a206": 0.05, "peak_falls_with_a": True,
+                   "onset_later_with_a": True}
+
+
+def a_group_metrics(ms: dict) -> dict:
+    """The case's metrics from :func:`metrics` of the tests run (Test 1 and any of 4, 5):
+    peaks, onsets, the ratios to Test 1's against the paper's, whether the peak falls and
+    the onset comes later with a, and each peak's error relative to the paper's."""
+    tests = [t for t in A_GROUP if t in ms]
+    a = {t: f"a{TABLE2[t][1] * 1e3:.0f}" for t in tests}
+    peak = [ms[t]["peak_mm"] for t in tests]
+    onset = [ms[t]["motion_onset_s"] for t in tests]
+    ratio = {a[t]: ms[t]["peak_mm"] / ms[1]["peak_mm"] for t in tests[1:]}
+    paper = {a[t]: PAPER["peak_mm"][t] / PAPER["peak_mm"][1] for t in tests[1:]}
+    rel = {a[t]: ms[t]["peak_mm"] / PAPER["peak_mm"][t] - 1.0 for t in tests}
+    return {"peak_mm": {a[t]: ms[t]["peak_mm"] for t in tests}, "peak_t_s": {a[t]: ms[t]["peak_t_s"] for t in tests},
+            "motion_onset_s": {a[t]: ms[t]["motion_onset_s"] for t in tests},
+            "arrival_s": {a[t]: ms[t]["arrival_s"] for t in tests},
+            "ratio_to_a146": ratio, "paper_ratio_to_a146": paper,
+            "ratio_err": {k: ratio[k] - paper[k] for k in ratio},
+            "peak_falls_with_a": bool(all(p > q for p, q in zip(peak, peak[1:]))),
+            "onset_later_with_a": bool(all(p < q for p, q in zip(onset, onset[1:]))),
+            "paper_peak_mm": {a[t]: PAPER["peak_mm"][t] for t in tests},
+            "peak_rel_err_vs_paper": rel,
+            "paper_peaks_within_15pct": bool(all(abs(v) <= 0.15 for v in rel.values()))}
+
+
+@case("elastic-table2", "Seed 002 §4.2 (Table 2, Tests 1, 4, 5): a 2-D dam break on an elastic cantilever at "
+      "a = 146 / 176 / 206 mm from the column, the structure's peak displacement against the paper's",
+      target=TABLE2_TARGET,
+      quick="Tests 1 and 5 (a = 146 and 206 mm) at dx = 5 mm: the peak at a = 206 mm at least 5 % below the one at "
+            "146 mm (the paper: 18 % below) and its motion starting later; the ratio is reported, not judged "
+            "(0.90 at this spacing against 0.78 at 2.5 mm: the fall needs the finer spacing)")
+def elastic_table2(quick: bool) -> dict:
+    """The a group of seed 002's Table 2 (Tests 1, 4, 5: hu = 292 mm, E = 3.0e7 Pa, a =
+    146 / 176 / 206 mm), each a scene of :func:`scene_of` run by :func:`run_cases` in its own
+    process (one thread) into a temporary folder, measured by :func:`metrics`. The paper's
+    text gives the peak top displacements 0.82 / 0.76 / 0.67 mm (§4.2): our peaks are about 4
+    times those (our load matches the momentum flux of Ritter's dam-break flow, and beam
+    theory under it gives our peak: docs/studies/elastic_dambreak/README.md), so what is
+    judged is the fall with a, its ratios, and the onset's order; the absolute peaks are
+    reported beside it (``peak_rel_err_vs_paper``, ``paper_peaks_within_15pct``).
+
+    Full variant (``cosim validate elastic-table2``; dx = 2.5 mm, the paper's spacing and
+    ours: the peaks move by 2.5 % at most to 1.75 mm; 8000-8400 particles, ~110 CPU-s a
+    test): peaks 3.34 / 3.04 / 2.60 mm, ratios 0.909 / 0.779 against 0.927 / 0.817 (errors
+    -0.018 / -0.038), onsets 0.134 / 0.150 / 0.163 s; the paper's absolute peaks not met
+    (+307 / +300 / +288 %). Quick (dx = 5 mm, Tests 1 and 5): 3.24 / 2.91 mm (ratio 0.90).
+    """
+    import tempfile
+
+    tests, dx = ((1, 5), 0.005) if quick else (A_GROUP, 0.0025)
+    with tempfile.TemporaryDirectory(prefix="elastic_table2_") as tmp:
+        res = run_cases(tests, [dx], Path(tmp))
+        errors = {t: rec["error"] for t, _, rec, _ in res if rec.get("error")}
+        if errors:
+            raise RuntimeError(f"elastic-table2: runs failed: {errors}")
+        ms = {t: metrics(t, folder) for t, _, _, folder in res}
+        particles = max(int(rec.get("particles") or 0) for _, _, rec, _ in res)
+        steps = sum(int(rec.get("steps") or 0) for _, _, rec, _ in res)
+        cpu = {f"a{TABLE2[t][1] * 1e3:.0f}": float(rec.get("cpu_s", float("nan"))) for t, _, rec, _ in res}
+    m = a_group_metrics(ms)
+    m.update({"dx_m": dx, "cpu_s": cpu})
+    curves = {f"Test {t}, a = {TABLE2[t][1] * 1e3:.0f} mm (ours)": {"x": ms[t]["_t"], "y": ms[t]["_x"] * 1e3,
+                                                                   "style": "-"} for t in tests}
+    out = {"metrics": m, "particles": particles, "steps": steps,
+           "series": {"upper left corner": {"xlabel": "t [s]", "ylabel": "x displacement [mm]", "curves": curves}}}
+    if quick:
+        out["tolerances"] = {"ratio_to_a146.a206": [None, 0.95], "onset_later_with_a": True}
+        out["stated_tolerances"] = {"ratio_err.a206": 0.05, "peak_falls_with_a": True, "onset_later_with_a": True}
+    else:
+        out["tolerances"] = dict(FULL_TOLERANCES)
+    return out
