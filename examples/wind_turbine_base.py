@@ -43,7 +43,9 @@ Within 5 % of each other in surge (the dynamic lines +2.5 % and +4.8 %), 4 % in 
 1.3 % in mean tension; pitch differs more (0.74 against 1.3-1.35 deg: the dynamic lines'
 inertia and drag act at the bottom rim, 1.5 m under the centre); their tensions swing wider
 (SPH cable 12-209 kN, MoorDyn 77-111 kN, against the catenary's 84-108 kN over 30-90 s: the
-inertia and drag of 60 t of chain). The FMU is the catenary law compiled: the same figures
+inertia and drag of 60 t of chain; the SPH cable's wider swing is mostly numerical: at the
+coupler's step the base and its SPH cables hold a ~28 Hz limit cycle that swings the
+tensions by some 100 kN, gone at a 0.001 s step, benchmarks/line_step_sweep.py). The FMU is the catenary law compiled: the same figures
 to the digits shown. No line breaks (largest tension over 30-90 s 209 kN against 1400 kN);
 every line of every model stays partly lifted (summary.json line_events). The surge beats
 between the 20 s wave and the moored base's own surge period (~13 s: 60 t against ~15 kN/m
