@@ -198,10 +198,12 @@ def elastic_table2(quick: bool) -> dict:
     reported beside it (``peak_rel_err_vs_paper``, ``paper_peaks_within_15pct``).
 
     Full variant (``cosim validate elastic-table2``; dx = 2.5 mm, the paper's spacing and
-    ours: the peaks move by 2.5 % at most to 1.75 mm; 8000-8400 particles, ~110 CPU-s a
-    test): peaks 3.34 / 3.04 / 2.60 mm, ratios 0.909 / 0.779 against 0.927 / 0.817 (errors
-    -0.018 / -0.038), onsets 0.134 / 0.150 / 0.163 s; the paper's absolute peaks not met
-    (+307 / +300 / +288 %). Quick (dx = 5 mm, Tests 1 and 5): 3.24 / 2.91 mm (ratio 0.90).
+    ours: the peaks move by 2.5 % at most to 1.75 mm; measured 2026-11-26, AMD EPYC, 2
+    cores, loaded, one thread a test: 8056 particles, 111 / 102 / 93 CPU-s): peaks 3.34 /
+    3.04 / 2.60 mm, ratios 0.909 / 0.779 against 0.927 / 0.817 (errors -0.018 / -0.038),
+    onsets 0.134 / 0.150 / 0.163 s: passed; the paper's absolute peaks not met (+307 / +299
+    / +288 %). Quick (dx = 5 mm, Tests 1 and 5, 19 CPU-s each): 3.24 / 2.91 mm (ratio
+    0.896), onsets 0.132 / 0.165 s: passed.
     """
     import tempfile
 
