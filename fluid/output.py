@@ -190,7 +190,7 @@ class H5Output:
                 raise InputError(f"H5Output: series {name!r} value {k} has shape {a.shape}; give ({t.shape[0]},) "
                                  f"or ({t.shape[0]}, k), one row per time")
             block[k] = a
-        s = self._declare(name, {k: a.shape[1:] for k, a in block.items()})
+        self._declare(name, {k: a.shape[1:] for k, a in block.items()})
         self._write_rows(name)
         self._append(name, t, block)
 

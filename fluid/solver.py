@@ -759,7 +759,6 @@ class Fluid:
     def _rates(self):
         c = self.config
         ps = self.ps
-        n = ps.n
         if self.boundary_correction is not None:
             self.boundary_correction(ps, self._start, self._grid)
         self._drho, self._acc, visc, self._cs, self._xsph = eq.evaluate(

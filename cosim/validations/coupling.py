@@ -3,7 +3,6 @@ Bodies and coupling)."""
 
 from __future__ import annotations
 
-import math
 
 import numpy as np
 from scipy.optimize import brentq
