@@ -21,10 +21,10 @@ Measured (2026-11-26, AMD EPYC, 2 cores, loaded), per second over 6 s (4 s where
 - SPH cable, 40 nodes, derived 0.0061 s: 0.048 0.039 0.034 0.034 0.028 0.031; 0.001 s:
   0.0055 0.0039 0.0023 0.0015 0.0011 0.00076 (decaying).
 
-The derived bound (``2 M / c``, the line a semi-infinite bar) does not hold for the SPH
-cable: the wave the fairlead sends returns from the anchor within four coupling steps, and
-the cable's artificial viscosity, acting on approaching pairs only, does not absorb it
-(MoorDyn's internal damping, 0.8 of critical per segment, does).
+The derived bound (``2 M / c``, the line a semi-infinite bar whose radiation damps the
+base) does not hold for the SPH cable: the wave the fairlead sends comes back from the
+anchor within four coupling steps. More axial damping settles it (above); MoorDyn has 0.8
+of critical per segment, and its adapter leads the fairlead by one step.
 """
 
 from __future__ import annotations

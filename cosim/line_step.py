@@ -61,9 +61,10 @@ wind-turbine base, SPH cable (20 particles)    dashpot   0.0077     0.0095 - 0.0
 lies at 0.78-1.39 of the threshold, the chosen step at 0.62-0.80 of it. Not covered: the
 SPH cable row counted a run stable when its motion did not grow; at the chosen step the
 base holds a limit cycle (0.03 rad/s, the tensions swinging by some 100 kN at ~28 Hz)
-where at 0.001 s it settles to 5e-5 rad/s (``benchmarks/line_step_sweep.py``): the wave
-reflected from the anchor returns within four steps and the cable's one-sided artificial
-viscosity does not absorb it (``tests/test_line_step.py``, a strict xfail).
+where at 0.001 s it settles to 5e-5 rad/s (``benchmarks/line_step_sweep.py``): the bound
+takes the line for a semi-infinite bar, whose radiation damps the base, but the wave comes
+back from the anchor within four steps; three times the cable's artificial viscosity
+settles it at its (smaller) derived step (``tests/test_line_step.py``, a strict xfail).
 """
 
 from __future__ import annotations

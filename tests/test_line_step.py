@@ -102,8 +102,8 @@ def test_the_wind_turbine_base_takes_the_lines_step_and_goes_unstable_at_twice_i
 
 @pytest.mark.xfail(strict=True, reason="the SPH cable on the wind-turbine base holds a limit cycle at the derived step "
                    "(0.0061 s): 0.03 rad/s against 5e-5 at 0.001 s (benchmarks/line_step_sweep.py); the bound "
-                   "2 M / c treats the line as a semi-infinite bar, and the SPH cable's one-sided artificial "
-                   "viscosity does not absorb the wave reflected from the anchor")
+                   "2 M / c takes the line for a semi-infinite bar, whose radiation damps the base, but the wave "
+                   "comes back from the anchor within four steps (three times the cable's viscosity settles it)")
 def test_the_base_on_sph_cables_settles_at_the_derived_step(tmp_path):
     """Seed 004's base on three SPH cables (20 nodes), waves 0.01 m: at the step the coupler
     derives, the base's largest angular speed over the fourth second is that of a settled
