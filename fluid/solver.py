@@ -158,7 +158,8 @@ class FluidConfig:
     #: arithmetic of the pair terms: "float64" (default, the reference) or "float32" (float32
     #: terms summed into float64 per row of cells, separations from offsets in the cells;
     #: rates within 5e-7 of float64's; a 3-D step 1.2 times faster, a 2-D one not:
-    #: fluid.equations.interact); integration and state stay float64. CPU only
+    #: fluid.equations.interact); integration and state stay float64. CPU only. Momentum
+    #: is then kept to ~5e-9, not to round-off (benchmarks/float32_validations.py)
     precision: str = "float64"
     #: participant name
     name: str = "fluid"
