@@ -12,7 +12,10 @@ transient) or the run stopped; else "limit cycle".
 
 Measured (2026-11-26, AMD EPYC, 2 cores, loaded), per second over 6 s (4 s where shorter):
 
-- MoorDyn, 20 segments, derived 0.0050 s: 8e-7 ... 9e-7 rad/s, settled (as at 0.001 s).
+- MoorDyn, 20 segments, derived 0.0050 s: 8e-7 ... 9e-7 rad/s, settled (as at 0.001 s);
+  40 segments: 2.6e-5 then 3e-7 ... 1.2e-6, settled. With the adapter's one-step lead taken
+  out (MoorDyn given the step's start and end), 0.032-0.036 (20) and 0.039-0.047 (40): the
+  same limit cycle as the SPH cable's; the lead is what settles it.
 - SPH cable, 20 nodes, derived 0.0061 s: 0.030 0.036 0.025 0.030 0.026 0.031, a limit
   cycle (the tensions swing by some 100 kN at ~28 Hz); 0.0037 s: 0.016 sustained; 0.003 s:
   0.017 0.0081 0.0091 0.011; 0.002 s: 0.012 0.0028 0.0011 0.00048 (decaying); 0.001 s:
