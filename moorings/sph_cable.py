@@ -705,9 +705,9 @@ class SPHCableMooring:
     Hermite curve through the given positions and velocities). Weight per length is the
     line's submerged ``weight``, inertia its ``mass_per_length``, stiffness its ``EA``;
     a line with a ``diameter`` gets Morison drag and added mass (still water).
-    With ``seabed`` a line starts on its quasi-static elastic catenary with seabed contact
-    (moorings.catenary), stretched accordingly, so it starts (nearly) in equilibrium;
-    without, on the inextensible catenary through anchor and fairlead.
+    With ``seabed`` a line starts at the static equilibrium of its own discrete chain
+    (moorings.chain_equilibrium, from the elastic catenary with seabed contact), so it
+    starts at rest; without, on the inextensible catenary through anchor and fairlead.
 
     Parameters
     ----------
@@ -776,7 +776,7 @@ class SPHCableMooring:
             if ln.diameter is not None:
                 opts.setdefault("diameter", ln.diameter)
             if self.seabed and "positions" not in opts:
-                opts["positions"] = self._quasi_static_shape(ln, fp)
+                opts["positions"] = self._quasi_static_shape(ln, fp, opts.get("nodes_at", ()))
             c = SPHCable(ln.length, self.n_particles, ln.EA, ln.mass_per_length, ln.anchor, fp,
                          weight_per_length=ln.weight, seabed_z=ln.anchor[-1] if self.seabed else None,
                          name=ln.name, **opts)
@@ -788,17 +788,35 @@ class SPHCableMooring:
         if self.state_log.state is None:  # a resumed run keeps its log
             self.state_log.update(self.t, self.line_states())
 
-    def _quasi_static_shape(self, ln: MooringLine, fairlead) -> np.ndarray:
-        """Particle positions [m] on the elastic catenary with seabed (moorings.catenary) of
-        the line, in the vertical plane through anchor and fairlead: the line starts at its
-        quasi-static equilibrium, with the matching stretch, instead of settling into it."""
-        from moorings.catenary import shape
+    def _quasi_static_shape(self, ln: MooringLine, fairlead, nodes_at=()) -> np.ndarray:
+        """Particle positions [m] at the static equilibrium of the line's own discrete chain
+        (:func:`moorings.chain_equilibrium.discrete_equilibrium`: its chords stretched by the
+        tension they carry, its nodes' weights, the seabed through the anchor), in the
+        vertical plane through anchor and fairlead, started from the elastic catenary with
+        seabed (moorings.catenary): the line starts at rest instead of settling into it.
+        A resting line (H = 0: it hangs straight and lies slack on the bed) and one whose
+        chain equilibrium is not found (logged) start on the continuous law's curve."""
+        from moorings.catenary import LineState, shape, solve
+        from moorings.chain_equilibrium import discrete_equilibrium
 
         a = np.asarray(ln.anchor, float)
         d = np.asarray(fairlead, float) - a
         horiz = d.copy()
         horiz[-1] = 0.0
         X = float(np.linalg.norm(horiz))
+        ds = np.diff(material_coordinates(ln.length, self.n_particles, nodes_at))
+        half = np.zeros(ds.size + 1)
+        half[:-1] += 0.5 * ds
+        half[1:] += 0.5 * ds
+        law = solve(X, float(d[-1]), ln.length, ln.weight, ln.EA)
+        # a resting line (H = 0) hangs straight: no curved chords to correct
+        found = None if law.state == LineState.RESTING else discrete_equilibrium(
+            a, fairlead, ds, ln.weight * half, ln.EA, (law.H, law.V))
+        if found is not None:
+            return found[0]
+        if law.state != LineState.RESTING:
+            log.warning("%s, line '%s': the discrete chain's equilibrium was not found; the nodes start on the "
+                        "continuous catenary (the line settles in its first steps)", self.name, ln.name)
         eh = horiz / X if X > 0 else np.eye(self.dim)[0]
         _, xs, zs = shape(X, float(d[-1]), ln.length, ln.weight, ln.EA, n=self.n_particles)
         ez = np.zeros(self.dim)
