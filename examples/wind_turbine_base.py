@@ -32,7 +32,7 @@ model      surge  heave  pitch  mean tension [kN]      steps   wall   CPU
 catenary   1.585  0.318  0.74   94.8 / 94.3 / 94.3     3600    36.2   13.2
 fmu        1.585  0.318  0.74   94.8 / 94.3 / 94.3     3600    30.7   13.1
 moordyn    1.661  0.331  1.35   95.0 / 94.6 / 94.6     19258   155.0  86.7
-sph-cable  1.625  0.331  1.31   96.0 / 93.9 / 93.4     15705   131.7  65.3
+sph-cable  1.621  0.333  1.27   95.3 / 94.2 / 94.1     15717   115.6  65.1
 =========  =====  =====  =====  =====================  ======  =====  =====
 
 (moordyn and sph-cable at the coupler's own step, cosim.line_step: 0.0045-0.0050 s and
@@ -42,11 +42,11 @@ they gave 1.661 / 0.330 m, 72.5 s CPU, and 1.627 / 0.330 m, 64.6 s CPU, on a bus
 Within 5 % of each other in surge (the dynamic lines +2.5 % and +4.8 %), 4 % in heave and
 1.3 % in mean tension; pitch differs more (0.74 against 1.3-1.35 deg: the dynamic lines'
 inertia and drag act at the bottom rim, 1.5 m under the centre); their tensions swing wider
-(SPH cable 12-209 kN, MoorDyn 77-111 kN, against the catenary's 84-108 kN over 30-90 s: the
+(SPH cable 19-208 kN, MoorDyn 77-111 kN, against the catenary's 84-108 kN over 30-90 s: the
 inertia and drag of 60 t of chain; the SPH cable's wider swing is mostly numerical: at the
 coupler's step the base and its SPH cables hold a ~28 Hz limit cycle that swings the
 tensions by some 100 kN, gone at a 0.001 s step, benchmarks/line_step_sweep.py). The FMU is the catenary law compiled: the same figures
-to the digits shown. No line breaks (largest tension over 30-90 s 209 kN against 1400 kN);
+to the digits shown. No line breaks (largest tension over 30-90 s 208 kN against 1400 kN);
 every line of every model stays partly lifted (summary.json line_events). The surge beats
 between the 20 s wave and the moored base's own surge period (~13 s: 60 t against ~15 kN/m
 from the three lines), so its amplitude varies from window to window (catenary: 0.86-1.59 m
