@@ -6,10 +6,11 @@ between neighbours, ``T_k = EA max(0, l_k / ds_k - 1)`` (``moorings.sph_cable``)
 placed on the continuous elastic catenary at their arc coordinates have chords shorter
 than the arc between them by ``(kappa ds)^2 / 24`` (kappa the curvature); on a stiff line
 that is more than the elastic stretch itself. The wind-turbine base's chain (EA = 1.9e9 N,
-w = 3770 N/m, H = 24.4 kN, so kappa ds = 1.15 m / 6.5 m at 40 nodes) reads 1.3e-3 of chord
-deficit against a stretch of at most 5e-5: its nodes on the law's curve started at 36 kN
-against the law's 94 kN, and the lines jerked into their own equilibrium in the first
-steps.
+w = 3770 N/m, H = 24.4 kN: kappa ds = 2.37 m / 6.5 m at its 20 nodes, 1.15 / 6.5 at 40)
+reads chord deficits of 5.5e-3 and 1.3e-3 against a stretch of at most 5e-5: on the law's
+curve its fairlead force started at 36 and 82 kN against the law's 94.2 kN, and the nodes
+jerked 22 and 6 mm into their own equilibrium. On this shape: 93.9 and 94.1 kN against the
+law's 94.2, and no node moves (tests/test_cable_mooring.py).
 
 The discrete chain (nodes 0 = anchor .. n-1 = fairlead, rest lengths ``ds_k``, weight
 ``W_k`` at node k, the half-segment shares ``w (ds_{k-1} + ds_k) / 2``; a frictionless
