@@ -75,25 +75,30 @@ ours against Table 5, c0/(4L) and the column's continuum mode, with each run's C
 per simulated second (``--json FILE`` keeps the rows; without ``--ringdown``: the first
 spike of the symmetric part under El Centro EW, standing in for the paper's Wenchuan)::
 
-    python benchmarks/arch_rib_quake.py --depth-study --ringdown --dx 0.1 --duration 4 --levels 13,21,17,19,15
+    python benchmarks/arch_rib_quake.py --depth-study --ringdown --dx 0.1 --duration 4 --levels 13,15,17,19
+    python benchmarks/arch_rib_quake.py --depth-study --ringdown --dx 0.1 --duration 6 --levels 21
 
-Measured so (loaded as above; the design level from the resolution study, 6 s)::
+Measured so (2026-11-26, AMD EPYC, one thread, NUMBA_NUM_THREADS=1, 2 cores shared with
+two other jobs, loaded; the design level from the resolution study, 6 s; 21 m over 6 s,
+where 4 s hold only two cycles of its 0.68 Hz mode)::
 
-    =====  =====  =======  =======  ======  ======  ========  =========  =======
-    depth  ours   Table 5  c0/(4L)  column  vs T5   vs c0/4L  vs column  CPU-s/s
-    =====  =====  =======  =======  ======  ======  ========  =========  =======
-    13     1.363  1.40     1.398    1.416   -2.6 %  -2.5 %    -3.7 %     62.7
-    15.56  1.078  1.11     1.107    1.124   -2.9 %  -2.7 %    -4.2 %     68.3
-    17     0.958  0.97     0.978    0.994   -1.2 %  -2.0 %    -3.6 %     71.5
-    21     0.685  0.67     0.684    0.697   +2.2 %  +0.1 %    -1.8 %     88.2
-    =====  =====  =======  =======  ======  ======  ========  =========  =======
+    =====  =====  =======  =======  ======  ======  ========  =========  =======  =====
+    depth  ours   Table 5  c0/(4L)  column  vs T5   vs c0/4L  vs column  CPU-s/s  CPU-s
+    =====  =====  =======  =======  ======  ======  ========  =========  =======  =====
+    13     1.363  1.40     1.398    1.416   -2.6 %  -2.5 %    -3.7 %     62.7     345
+    15     1.136  1.17     1.163    1.181   -2.9 %  -2.4 %    -3.8 %     64.3     354
+    15.56  1.078  1.11     1.107    1.124   -2.9 %  -2.7 %    -4.2 %     68.3     512
+    17     0.958  0.97     0.978    0.994   -1.2 %  -2.0 %    -3.6 %     71.5     393
+    19     0.813  0.83     0.823    0.838   -2.1 %  -1.2 %    -3.0 %     77.9     429
+    21     0.685  0.67     0.684    0.697   +2.2 %  +0.1 %    -1.8 %     83.6     627
+    =====  =====  =======  =======  ======  ======  ========  =========  =======  =====
 
-(Hz; 19,436-27,054 particles, 345-485 CPU-s a level.) At dx = 0.1 m ours meets Table 5
-within 5 % at every level run (-2.9 to +2.2 %; at dx = 0.3 m under EW it missed by 5-21 %,
-history file), and lies 3.6-4.2 % under the column's continuum mode down to 17 m, as at
-the design level. At 21 m the 4 s run holds only two cycles of the 0.68 Hz mode: the
-1-4 s fit's standard error is 0.15 %, but the shorter windows' fits spread 7 %, so that
-level wants ``--duration 6``. 15 and 19 m not run (time).
+(Hz; 19,436-27,054 particles; CPU-s include the 1.5 s settling; the four windows' fits
+spread 0.09 %, 0.03 %, 0.37 %, 0.11 % at 15, 15.56, 19, 21 m.) At dx = 0.1 m ours meets Table 5 within 5 % at every
+level of the study's six (-2.9 to +2.2 %; at dx = 0.3 m under EW it missed by 5-21 %,
+history file), and lies 3.0-4.2 % under the column's continuum mode down to 19 m, 1.8 %
+at 21 m (the shortest column). The 21 m level over 4 s read the same 0.685 Hz, but its
+shorter windows' fits spread 7 %; over 6 s they agree within 0.11 %.
 
 The paper's cases without Wenchuan (003 §4.2: Tables 3-4, Figures 13-15), one run each at
 the design level (``--cases``; settled 1.5 s, spectra from 1 s on): the first spike of
