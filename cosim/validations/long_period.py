@@ -407,9 +407,11 @@ def long_period(quick: bool) -> dict:
     dx = 1/13 m (13 rows: dx divides the depth and length) and the cylinder at dx = 0.06 m
     (10 rows); quick: the rectangular section at dx = 0.1 m.
 
-    Measured (2026-11-25, AMD EPYC, 2 cores shared with many other jobs: CPU seconds;
-    ``run_long_period(shape, dx=, dim=, a0=)`` with this case's settings, one run each;
-    figures of the full runs in docs/validation/long-period/). At 0.05 g, judged: "forced"
+    Measured (AMD EPYC, 2 cores, loaded: CPU seconds, one thread;
+    ``run_long_period(shape, dx=, dim=, a0=)`` with this case's settings, one run each; the
+    full variant's four tanks (2-D at 0.05 m, 3-D at 1/13 and 0.06 m) from its record of
+    2026-11-26, the other rows 2026-11-25; figures of the full runs in
+    docs/validation/long-period/). At 0.05 g, judged: "forced"
     the gauges' RMS while shaken / linear peak, "w1" the free first mode against linear
     theory, "p" the wall pressure's RMS / rho g h; "whole" the gauges over the whole
     record (the free sloshing drifts in phase by the w1 error and is damped):
@@ -419,13 +421,13 @@ def long_period(quick: bool) -> dict:
                           [m]    icles                                 peak   [s]
     ====================  =====  =====  ======  ======  ======  =====  =====  =====
     rectangular 2-D       0.10   498    0.092   +1.1 %  0.020   0.21   0.12   11
-    rectangular 2-D       0.05   1578   0.033   +0.55 % 0.011   0.10   0.12   30
+    rectangular 2-D       0.05   1578   0.033   +0.55 % 0.011   0.10   0.12   40
     rectangular 2-D       0.025  5538   0.021   +0.27 % 0.009   0.06   0.12   138
     inclined 45 deg 2-D   0.10   564    0.094   -0.84 % 0.020   0.22   0.08   10
-    inclined 45 deg 2-D   0.05   1810   0.042   +0.37 % 0.012   0.14   0.08   46
+    inclined 45 deg 2-D   0.05   1810   0.042   +0.37 % 0.012   0.14   0.08   39
     inclined 45 deg 2-D   0.025  6406   0.032   +0.24 % 0.010   0.09   0.08   205
-    rectangular 3-D       0.10   8868   0.120   +2.1 %  0.023   0.22   0.12   437
-    cylinder 3-D          0.10   5674   0.183   +0.98 % 0.032   0.29   0.05   199
+    rectangular 3-D       1/13   15768  0.080   +1.66 % 0.018   0.18   0.12   1000
+    cylinder 3-D          0.06   18044  0.098   +0.43 % 0.014   0.23   0.05   1112
     ====================  =====  =====  ======  ======  ======  =====  =====  =====
 
     (lin. peak: linear theory's largest run-up at a wall [m]; w1 of linear theory 2.832,
@@ -453,14 +455,15 @@ def long_period(quick: bool) -> dict:
     cylinder 3-D     0.06    10    18044   0.098   +0.43 % 0.014  0.23   0.094   1069
     ===============  ======  ====  ======  ======  ======  =====  =====  ======  =====
 
-    The full variant runs both at 0.1 m and fails there (forced 0.120 and 0.183 against
-    0.10, w1 +2.1 % against 2 %, p 0.032 against 0.03). The rectangle meets its three
-    targets at 13 rows, the cylinder at 10 (0.06 m; at 8 rows its surface does not, forced
-    0.134); its third, coarser dx (0.125 m, 8 rows) misses all three. Not run: the
-    rectangle finer than 1/13 m (1/15 m, ~30 CPU minutes), and either tank at 0.5 g at
-    these dx, which the full variant would need too before it moves to 1/13 and 0.06 m
-    (its 0.05 g runs then 2048 CPU-s against 633); the 0.1 m runs, made again here, gave
-    the table above's figures. In the 2-D sections the forced error falls 2.2-2.8 times from
+    The full variant runs the rectangle at 13 rows (1/13 m) and the cylinder at 10 (0.06 m):
+    the coarsest of these dx at which each meets its three targets. At 0.1 m both fail
+    (forced 0.120 and 0.183 against 0.10, w1 +2.1 % against 2 %, p 0.032 against 0.03); at
+    8 rows the cylinder's surface still does (forced 0.134); the rectangle's third, coarser
+    dx (0.125 m, 8 rows) misses all three. Not run: the rectangle finer than 1/13 m (1/15 m,
+    ~30 CPU minutes). The full variant's record (2026-11-26, ``cosim validate long-period``,
+    NUMBA_NUM_THREADS=1): passed, 5270 CPU-s in all: the 2-D sections 40 + 29 and 39 +
+    41 (0.05 g + 0.5 g; numba's compile in the first), the 3-D rectangle 1000 + 1492, the
+    cylinder 1112 + 1517. In the 2-D sections the forced error falls 2.2-2.8 times from
     dx 0.1 to 0.05 m and 1.3-1.6 times from 0.05 to 0.025 m (0.092 / 0.033 / 0.021 and
     0.094 / 0.042 / 0.032): below first order at the finest, where what linear theory
     leaves out (second order, the short modes' damping) takes the larger share. Why ours departs from linear theory, with
@@ -504,19 +507,22 @@ def long_period(quick: bool) -> dict:
     while shaken and 1.22 m after (0.64 / 0.82 m on the slope) on 1.0 m of water, k A ~
     0.75. Ours climbs higher than linear while shaken at the vertical wall (0.93 m against
     0.72; the crest steepens and runs up), lower on the slope (0.61 against 0.64), then
-    breaks: the run-up falls in jets instead of rising to linear theory's 1.2 m, 48 and 16
-    particles are thrown over the 1.5 m walls (out of ~1500), and the wall pressure leaves
-    linear theory by 0.42 and 0.18 rho g h RMS. The free first mode after it runs -1.0 %
-    (rectangular) and +5.1 % (45 deg) from linear theory: the rectangle's depth ratio h/L
-    = 0.33 lies next to the critical depth 0.3368 where the amplitude correction of the
-    frequency changes sign (Tadjbakhsh & Keller 1960; it is small there), the slope's
-    does not. The cylinder at 0.5 g, Tp = 0.7 s (3-D, dx = 0.1 m): leaves linear theory at
-    1.02 s, run-up 0.45 m while shaken against 0.34 m, wall pressure 0.54 rho g h RMS from
-    it, 54 particles over the 1.0 m wall, free first mode -1.8 %. The whole rectangular tank
-    at 0.5 g (3-D, dx = 0.1 m): leaves linear theory at 1.22 s, run-up 0.92 m while shaken
-    (as in 2-D), free first mode -3.2 %; but 362 particles (4 %) thrown out, speeds up to
-    7.3 m/s and a wall pressure 5.8 rho g h RMS from linear theory: slamming beyond what 10
-    rows resolve (the record does not keep the pressure series to show where).
+    breaks: the run-up falls in jets instead of rising to linear theory's 1.2 m, 27 and 16
+    particles are thrown over the 1.5 m walls (out of 1578 and 1810), and the wall pressure
+    leaves linear theory by 0.42 and 0.18 rho g h RMS. The free first mode after it runs
+    -0.77 % (rectangular) and +5.1 % (45 deg) from linear theory: the rectangle's depth
+    ratio h/L = 0.33 lies next to the critical depth 0.3368 where the amplitude correction
+    of the frequency changes sign (Tadjbakhsh & Keller 1960; it is small there), the
+    slope's does not. The cylinder at 0.5 g, Tp = 0.7 s (3-D, dx = 0.06 m): leaves linear
+    theory at 0.90 s, run-up 0.46 m while shaken against 0.34 m, free first mode -0.04 %;
+    1208 particles (6.7 %) thrown over the 1.0 m wall and a wall pressure 23.6 rho g h RMS
+    from linear theory (at dx = 0.1 m: 1.02 s, 0.45 m, -1.8 %, 54 particles, 0.54). The whole
+    rectangular tank at 0.5 g (3-D, dx = 1/13 m): leaves linear theory at 1.20 s, run-up
+    0.97 m while shaken (0.93 m in 2-D), free first mode -2.18 %; 618 particles (3.9 %)
+    thrown out, 4.9 m/s at the end, and a wall pressure 8.3 rho g h RMS from linear theory
+    (at dx = 0.1 m: 1.22 s, 0.92 m, -3.2 %, 362 particles (4.1 %), 5.8). Both run to the
+    end; the wall pressure's RMS grows as dx shrinks: slamming spikes, which neither
+    resolution resolves (the record does not keep the pressure series to show where).
     """
     plan = ({"rectangular 2-D": ("rectangular", 2, 0.1)} if quick else
             {"rectangular 2-D": ("rectangular", 2, 0.05), "inclined 45 deg 2-D": ("inclined", 2, 0.05),
