@@ -35,8 +35,10 @@ import math
 
 import numpy as np
 
+from moorings.line import vertical_plane
 
-def _shoot(H: float, V: float, X: float, Z: float, ds: np.ndarray, W: np.ndarray, EA: float, seabed: bool):
+
+def _shoot(H: float, V: float, X: float, Z: float, ds: np.ndarray, W: np.ndarray, EA: float):
     """Nodes (x, z) in the line's plane (anchor at 0, 0; fairlead at X, Z) shot down from
     the fairlead with fairlead tension (H, V), and the two residuals (anchor missed by)."""
     n = ds.size + 1
@@ -51,7 +53,7 @@ def _shoot(H: float, V: float, X: float, Z: float, ds: np.ndarray, W: np.ndarray
         if k == 0:
             return x, z, (x[0], z[0])
         below = v - W[k]
-        if seabed and below <= 0.0:  # node k touches down: it and every node below lie on the bed
+        if below <= 0.0:  # node k touches down: it and every node below lie on the bed
             laid = np.cumsum(ds[:k][::-1])[::-1] * (1.0 + H / EA)  # distance of nodes 0..k-1 from node k
             x[:k], z[:k] = x[k] - laid, 0.0
             return x, z, (x[0], z[k])
@@ -60,37 +62,29 @@ def _shoot(H: float, V: float, X: float, Z: float, ds: np.ndarray, W: np.ndarray
 
 
 def discrete_equilibrium(anchor, fairlead, ds, weights, EA: float, guess: tuple[float, float],
-                         seabed: bool = True, tol: float = 1e-10) -> tuple[np.ndarray, float, float] | None:
+                         tol: float = 1e-10) -> tuple[np.ndarray, float, float] | None:
     """The equilibrium node positions ``(n, dim)`` [m] of the chain (module docstring) from
     ``anchor`` to ``fairlead`` (world frame, z last), with rest lengths ``ds`` [m] (n - 1),
     node weights ``weights`` [N] (n; the ends' are carried by the supports), axial
-    stiffness ``EA`` [N], on a frictionless seabed through the anchor if ``seabed``; and
+    stiffness ``EA`` [N], on a frictionless seabed through the anchor; and
     the fairlead tension's (H, V) [N]. ``guess``: (H, V) to start from (the continuous
     law's). None if the root finding does not reach ``tol`` of the line's length (the
     caller falls back to the continuous shape)."""
     from scipy.optimize import root
 
-    a, f = np.asarray(anchor, float), np.asarray(fairlead, float)
     ds, W = np.asarray(ds, float), np.asarray(weights, float)
-    d = f - a
-    horiz = d.copy()
-    horiz[-1] = 0.0
-    X, Z = float(np.linalg.norm(horiz)), float(d[-1])
+    X, Z, in_world = vertical_plane(anchor, fairlead)
     length = float(ds.sum())
     scale = max(float(W.sum()), 1e-12)  # forces in units of the line's weight
 
     def residual(u):
-        _, _, end = _shoot(u[0] * scale, u[1] * scale, X, Z, ds, W, EA, seabed)
+        _, _, end = _shoot(u[0] * scale, u[1] * scale, X, Z, ds, W, EA)
         return np.array(end) / length
 
     sol = root(residual, np.array(guess, float) / scale, method="hybr", options={"xtol": 1e-13})
     H, V = sol.x * scale
     if not np.all(np.isfinite(sol.x)) or H < 0.0 or np.max(np.abs(residual(sol.x))) > tol:
         return None
-    xs, zs, _ = _shoot(H, V, X, Z, ds, W, EA, seabed)
-    eh = horiz / X if X > 0 else np.eye(a.size)[0]
-    ez = np.zeros(a.size)
-    ez[-1] = 1.0
-    pos = a + np.outer(xs, eh) + np.outer(zs, ez)
-    pos[0], pos[-1] = a, f
+    pos = in_world(*_shoot(H, V, X, Z, ds, W, EA)[:2])
+    pos[0], pos[-1] = anchor, fairlead
     return pos, float(H), float(V)

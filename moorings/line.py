@@ -132,4 +132,20 @@ def per_line(values, line_names, dim: int, owner: str, what: str) -> np.ndarray:
     return a
 
 
-__all__ = ["MooringLine", "named_lines", "per_line"]
+def vertical_plane(a, b):
+    """The vertical plane through a line's ends ``a`` and ``b`` (world frame, z last): the
+    horizontal distance ``X`` [m] and the height ``Z`` [m] of ``b`` over ``a``, and the map
+    from in-plane coordinates (``x`` horizontal from ``a`` towards ``b``, ``z`` up) [m] to
+    world points ``(n, dim)`` (along the first axis where ``b`` is straight above ``a``)."""
+    a = np.asarray(a, float)
+    d = np.asarray(b, float) - a
+    horiz = d.copy()
+    horiz[-1] = 0.0
+    X = float(np.linalg.norm(horiz))
+    eh = horiz / X if X > 0 else np.eye(a.size)[0]
+    ez = np.zeros(a.size)
+    ez[-1] = 1.0
+    return X, float(d[-1]), lambda xs, zs: a + np.outer(xs, eh) + np.outer(zs, ez)
+
+
+__all__ = ["MooringLine", "named_lines", "per_line", "vertical_plane"]

@@ -132,12 +132,21 @@ from scipy.optimize import brentq
 from cosim.errors import InputError, InstabilityError
 from moorings import sph_cable_kernels as _k
 from moorings.fairlead_stiffness import FairleadStiffness, axial
-from moorings.line import MooringLine, named_lines
+from moorings.line import MooringLine, named_lines, vertical_plane
 from moorings.line_events import LineStateLog, node_states
 
 log = logging.getLogger(__name__)
 
 G_STANDARD = 9.80665
+
+
+def node_shares(ds) -> np.ndarray:
+    """Each node's share of the line [m]: half of each adjacent segment of rest lengths
+    ``ds`` (n - 1), so ``n`` shares summing to the length (its mass and weight go with it)."""
+    half = np.zeros(len(ds) + 1)
+    half[:-1] += 0.5 * np.asarray(ds)
+    half[1:] += 0.5 * np.asarray(ds)
+    return half
 
 
 def material_coordinates(length: float, n_particles: int, nodes_at=()) -> np.ndarray:
@@ -166,18 +175,11 @@ def catenary_points(a, b, length: float, s) -> np.ndarray:
     hanging from ``a`` to ``b`` (z up, in the vertical plane through both); a straight
     line if the supports are ``length`` or more apart."""
     a = np.asarray(a, float)
-    b = np.asarray(b, float)
+    d = np.asarray(b, float) - a
     s = np.asarray(s, float)
-    dim = a.size
-    d = b - a
-    horiz = d.copy()
-    horiz[-1] = 0.0
-    X = float(np.linalg.norm(horiz))
-    Z = float(d[-1])
-    chord = float(np.linalg.norm(d))
-    if chord >= length * (1 - 1e-12):
+    X, Z, in_world = vertical_plane(a, b)
+    if float(np.linalg.norm(d)) >= length * (1 - 1e-12):
         return a + np.outer(s / length, d)
-    eh = horiz / X if X > 1e-12 * length else np.eye(dim)[0]
     if X <= 1e-9 * length:  # vertical: hang down and back up
         raise InputError("supports on one vertical line: give the initial positions explicitly")
     target = math.sqrt(length * length - Z * Z)
@@ -189,9 +191,7 @@ def catenary_points(a, b, length: float, s) -> np.ndarray:
     x0 = X / 2 - c * math.asinh(Z / (2 * c * math.sinh(X / (2 * c))))
     xs = x0 + c * np.arcsinh(s / c + math.sinh(-x0 / c))
     zs = c * (np.cosh((xs - x0) / c) - math.cosh(x0 / c))
-    zaxis = np.zeros(dim)
-    zaxis[-1] = 1.0
-    return a + np.outer(xs, eh) + np.outer(zs, zaxis)
+    return in_world(xs, zs)
 
 
 @dataclass(frozen=True)
@@ -340,9 +340,7 @@ class SPHCable:
         self._wl[-1] = 1.0
         self.c0 = math.sqrt(self.EA / self.mass_per_length)
         # masses: inertial (half segments at the ends), kernel (mirrored: full at the ends)
-        half = np.zeros(n)
-        half[:-1] += 0.5 * ds
-        half[1:] += 0.5 * ds
+        half = node_shares(ds)
         self._seg_len = half
         kern = half.copy()
         kern[0], kern[-1] = ds[0], ds[-1]
@@ -799,29 +797,19 @@ class SPHCableMooring:
         from moorings.catenary import LineState, shape, solve
         from moorings.chain_equilibrium import discrete_equilibrium
 
-        a = np.asarray(ln.anchor, float)
-        d = np.asarray(fairlead, float) - a
-        horiz = d.copy()
-        horiz[-1] = 0.0
-        X = float(np.linalg.norm(horiz))
+        X, Z, in_world = vertical_plane(ln.anchor, fairlead)
         ds = np.diff(material_coordinates(ln.length, self.n_particles, nodes_at))
-        half = np.zeros(ds.size + 1)
-        half[:-1] += 0.5 * ds
-        half[1:] += 0.5 * ds
-        law = solve(X, float(d[-1]), ln.length, ln.weight, ln.EA)
+        law = solve(X, Z, ln.length, ln.weight, ln.EA)
         # a resting line (H = 0) hangs straight: no curved chords to correct
         found = None if law.state == LineState.RESTING else discrete_equilibrium(
-            a, fairlead, ds, ln.weight * half, ln.EA, (law.H, law.V))
+            ln.anchor, fairlead, ds, ln.weight * node_shares(ds), ln.EA, (law.H, law.V))
         if found is not None:
             return found[0]
         if law.state != LineState.RESTING:
             log.warning("%s, line '%s': the discrete chain's equilibrium was not found; the nodes start on the "
                         "continuous catenary (the line settles in its first steps)", self.name, ln.name)
-        eh = horiz / X if X > 0 else np.eye(self.dim)[0]
-        _, xs, zs = shape(X, float(d[-1]), ln.length, ln.weight, ln.EA, n=self.n_particles)
-        ez = np.zeros(self.dim)
-        ez[-1] = 1.0
-        pos = a + np.outer(xs, eh) + np.outer(zs, ez)
+        _, xs, zs = shape(X, Z, ln.length, ln.weight, ln.EA, n=self.n_particles)
+        pos = in_world(xs, zs)
         pos[-1] = fairlead  # exactly on the fairlead (round-off of the closed form)
         return pos
 
@@ -925,4 +913,5 @@ def load_end_motion(path):
     return data[:, 0], data[:, 1:]
 
 
-__all__ = ["CableStepLimit", "SPHCable", "SPHCableMooring", "material_coordinates", "catenary_points", "load_end_motion"]
+__all__ = ["CableStepLimit", "SPHCable", "SPHCableMooring", "material_coordinates", "node_shares", "catenary_points",
+           "load_end_motion"]
