@@ -54,6 +54,7 @@ stiffer in bending than the one it prints (E = 1.2e8 Pa: 0.91 mm, 54 Hz). With E
 
 from __future__ import annotations
 
+import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -158,12 +159,17 @@ FULL_TOLERANCES = {"ratio_err.a176": 0.05, "ratio_err.a206": 0.05, "peak_falls_w
                    "onset_later_with_a": True}
 
 
+def _a_key(test: int) -> str:
+    """A test's key in the case's metrics: its distance a, "a146" ... "a206"."""
+    return f"a{TABLE2[test][1] * 1e3:.0f}"
+
+
 def a_group_metrics(ms: dict) -> dict:
     """The case's metrics from :func:`metrics` of the tests run (Test 1 and any of 4, 5):
     peaks, onsets, the ratios to Test 1's against the paper's, whether the peak falls and
     the onset comes later with a, and each peak's error relative to the paper's."""
     tests = [t for t in A_GROUP if t in ms]
-    a = {t: f"a{TABLE2[t][1] * 1e3:.0f}" for t in tests}
+    a = {t: _a_key(t) for t in tests}
     peak = [ms[t]["peak_mm"] for t in tests]
     onset = [ms[t]["motion_onset_s"] for t in tests]
     ratio = {a[t]: ms[t]["peak_mm"] / ms[1]["peak_mm"] for t in tests[1:]}
@@ -205,8 +211,6 @@ def elastic_table2(quick: bool) -> dict:
     / +288 %). Quick (dx = 5 mm, Tests 1 and 5, 19 CPU-s each): 3.24 / 2.91 mm (ratio
     0.896), onsets 0.132 / 0.165 s: passed.
     """
-    import tempfile
-
     tests, dx = ((1, 5), 0.005) if quick else (A_GROUP, 0.0025)
     with tempfile.TemporaryDirectory(prefix="elastic_table2_") as tmp:
         res = run_cases(tests, [dx], Path(tmp))
@@ -216,7 +220,7 @@ def elastic_table2(quick: bool) -> dict:
         ms = {t: metrics(t, folder) for t, _, _, folder in res}
         particles = max(int(rec.get("particles") or 0) for _, _, rec, _ in res)
         steps = sum(int(rec.get("steps") or 0) for _, _, rec, _ in res)
-        cpu = {f"a{TABLE2[t][1] * 1e3:.0f}": float(rec.get("cpu_s", float("nan"))) for t, _, rec, _ in res}
+        cpu = {_a_key(t): float(rec.get("cpu_s", float("nan"))) for t, _, rec, _ in res}
     m = a_group_metrics(ms)
     m.update({"dx_m": dx, "cpu_s": cpu})
     curves = {f"Test {t}, a = {TABLE2[t][1] * 1e3:.0f} mm (ours)": {"x": ms[t]["_t"], "y": ms[t]["_x"] * 1e3,
@@ -225,7 +229,9 @@ def elastic_table2(quick: bool) -> dict:
            "series": {"upper left corner": {"xlabel": "t [s]", "ylabel": "x displacement [mm]", "curves": curves}}}
     if quick:
         out["tolerances"] = {"ratio_to_a146.a206": [None, 0.95], "onset_later_with_a": True}
-        out["stated_tolerances"] = {"ratio_err.a206": 0.05, "peak_falls_with_a": True, "onset_later_with_a": True}
+        # the stated target's tolerances on the tests run (Test 4's ratio is not)
+        out["stated_tolerances"] = {k: v for k, v in FULL_TOLERANCES.items()
+                                    if not k.startswith("ratio_err.") or k[len("ratio_err."):] in m["ratio_err"]}
     else:
         out["tolerances"] = dict(FULL_TOLERANCES)
     return out
