@@ -7,7 +7,7 @@ For each run, one line per part:
 
 - the forced gauge error (RMS while shaken / linear theory's peak, the case's "forced")
   split over the least-squares fit of the gauges
-  (:func:`cosim.validations.long_period._mode_basis`): the first mode, the next two
+  (:func:`cosim.validations.long_period.gauge_mode_basis`): the first mode, the next two
   antisymmetric modes (the rectangle's 3rd and 5th, whose frequencies 5.54 and 7.17
   rad/s bracket the forcing's 6.28), the two symmetric modes (second order: linear theory
   has none) and what the fit leaves;
@@ -34,7 +34,7 @@ from scipy.integrate import solve_ivp
 
 from cosim.scene.setup import settings
 from cosim.validations import forced_sloshing as fs
-from cosim.validations.long_period import TANKS, _mode_basis, free_decay
+from cosim.validations.long_period import TANKS, gauge_mode_basis, free_decay
 from fluid.solver import FluidConfig
 
 
@@ -65,7 +65,7 @@ def split(run: dict) -> list[str]:
     forced, free = t <= m["t_stop_s"], t > m["t_stop_s"]
     g, gl = np.asarray(rec["gauges_m"]), np.asarray(rec["gauges_linear_m"])
     amp, amp_lin = np.asarray(rec["modes_m"]), np.asarray(rec["modes_linear_m"])
-    basis = _mode_basis(a["shape"], TANKS[a["shape"]]["size"], np.asarray(rec["gauge_x_m"]), modes)
+    basis = gauge_mode_basis(a["shape"], TANKS[a["shape"]]["size"], np.asarray(rec["gauge_x_m"]), modes)
     peak = np.abs(gl).max()
     err = g - gl
     d = amp - amp_lin

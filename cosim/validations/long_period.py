@@ -100,7 +100,7 @@ def _tank(shape: str, dim: int, dx: float, tank: dict):
     return moving_walls(cylinder_tank(dx, L, h, H), 3, dx), np.zeros(2)
 
 
-def _mode_basis(shape: str, size: float, xc: np.ndarray, modes) -> np.ndarray:
+def gauge_mode_basis(shape: str, size: float, xc: np.ndarray, modes) -> np.ndarray:
     """Least-squares basis along the gauge line (x from the centre [m]): the first three
     antisymmetric modes (the linear response) and two symmetric ones (what second order
     adds), columns in that order; the inclined tank, which has no symmetry: its first five
@@ -187,7 +187,7 @@ def run_long_period(shape: str = "rectangular", dx: float = 0.05, dim: int = 2, 
     along the wall); the total pressure at points on each wall's face every dx up to the
     still level (:func:`cosim.validations.sloshing.face_pressure`, 001 Eq. 15 carried to
     the face). Each against linear theory at the same points. The first mode's amplitude
-    is the least-squares fit of the gauges to the first modes (:func:`_mode_basis`); its
+    is the least-squares fit of the gauges to the first modes (:func:`gauge_mode_basis`); its
     free frequency (:func:`free_frequency`) over the free sloshing. Returned: the metrics,
     and the record of the series (the gauges and all the fitted modal amplitudes
     included), each beside linear theory's.
@@ -301,7 +301,7 @@ def _compare(rec: dict, modes, shape: str, tank: dict, a0: float, period: float,
     y0 = None if shape != "cylinder" else np.zeros(faces["left"][0].shape[0])
     lin_p = {side: fs.pressure(modes, eta_n, a, pts[:, 0], pts[:, -1] - h, y0).T for side, (pts, _) in faces.items()}
     zf = faces["left"][0][:, -1]
-    basis = _mode_basis(shape, L, xg, modes)
+    basis = gauge_mode_basis(shape, L, xg, modes)
     amp = np.linalg.lstsq(basis, rec["gauges"].T, rcond=None)[0]           # (5, times)
     amp_lin = np.linalg.lstsq(basis, lin_g.T, rcond=None)[0]
     forced, free = t <= t_stop, t > t_stop
