@@ -405,7 +405,8 @@ def long_period(quick: bool) -> dict:
     Three periods of forcing, three first-mode periods free. Full: the 2-D sections of the
     rectangular and the 45 deg tank at dx = 0.05 m, the whole 3-D rectangular tank at
     dx = 1/13 m (13 rows: dx divides the depth and length) and the cylinder at dx = 0.06 m
-    (10 rows); quick: the rectangular section at dx = 0.1 m.
+    (10 rows), the coarsest dx at which each 3-D tank meets its three targets; quick: the
+    rectangular section at dx = 0.1 m.
 
     Measured (AMD EPYC, 2 cores, loaded: CPU seconds, one thread;
     ``run_long_period(shape, dx=, dim=, a0=)`` with this case's settings, one run each; the
@@ -432,97 +433,45 @@ def long_period(quick: bool) -> dict:
 
     (lin. peak: linear theory's largest run-up at a wall [m]; w1 of linear theory 2.832,
     2.172 (FE) and 3.807 rad/s; Housner's 2.846 (+0.50 %) and 3.800 (-0.17 %); the sloped
-    tank has none.) With h = sqrt(2) dx instead of 2 dx the first mode
-    ran +7.3 % fast in the whole rectangular tank (forced 0.097, p 0.030) and +4.2 % in
-    the cylinder (forced 0.113, p 0.021).
-
-    The 3-D tanks at three resolutions (0.05 g, one run each,
-    ``benchmarks/long_period_trade.py``, NUMBA_NUM_THREADS=1, the machine loaded: 2-4 jobs
-    on its 2 cores; the rectangle at dx = 1/13 m: 0.075 m would fill its 1.0 m of water
-    with 13 rows, 0.975 m, every gauge 25 mm low, and the case refuses it; "run-up" the
-    largest |level - still| at a wall while shaken, linear theory's 0.072 m in the
-    rectangle, 0.034 m in the cylinder):
-
-    ===============  ======  ====  ======  ======  ======  =====  =====  ======  =====
-    tank             dx      rows  part-   forced  w1      p      whole  run-up  CPU
-                     [m]           icles                                 [m]     [s]
-    ===============  ======  ====  ======  ======  ======  =====  =====  ======  =====
-    rectangular 3-D  0.125   8     5532    0.173   +2.22 % 0.030  0.27   0.186   231
-    rectangular 3-D  0.1     10    8868    0.120   +2.1 %  0.023  0.22   0.157   437
-    rectangular 3-D  1/13    13    15768   0.080   +1.66 % 0.018  0.18   0.130   979
-    cylinder 3-D     0.1     6     5674    0.183   +0.98 % 0.032  0.29   0.142   199
-    cylinder 3-D     0.075   8     10507   0.134   +1.63 % 0.029  0.25   0.118   512
-    cylinder 3-D     0.06    10    18044   0.098   +0.43 % 0.014  0.23   0.094   1069
-    ===============  ======  ====  ======  ======  ======  =====  =====  ======  =====
-
-    The full variant runs the rectangle at 13 rows (1/13 m) and the cylinder at 10 (0.06 m):
-    the coarsest of these dx at which each meets its three targets. At 0.1 m both fail
-    (forced 0.120 and 0.183 against 0.10, w1 +2.1 % against 2 %, p 0.032 against 0.03); at
-    8 rows the cylinder's surface still does (forced 0.134); the rectangle's third, coarser
-    dx (0.125 m, 8 rows) misses all three. Not run: the rectangle finer than 1/13 m (1/15 m,
-    ~30 CPU minutes). The full variant's record (2026-11-26, ``cosim validate long-period``,
-    NUMBA_NUM_THREADS=1): passed, 5270 CPU-s in all: the 2-D sections 40 + 29 and 39 +
-    41 (0.05 g + 0.5 g; numba's compile in the first), the 3-D rectangle 1000 + 1492, the
+    tank has none.) The full variant's record (2026-11-26, ``cosim validate long-period``,
+    NUMBA_NUM_THREADS=1): passed, 5270 CPU-s in all: the 2-D sections 40 + 29 and 39 + 41
+    (0.05 g + 0.5 g; numba's compile in the first), the 3-D rectangle 1000 + 1492, the
     cylinder 1112 + 1517. In the 2-D sections the forced error falls 2.2-2.8 times from
-    dx 0.1 to 0.05 m and 1.3-1.6 times from 0.05 to 0.025 m (0.092 / 0.033 / 0.021 and
-    0.094 / 0.042 / 0.032): below first order at the finest, where what linear theory
-    leaves out (second order, the short modes' damping) takes the larger share. Why ours departs from linear theory, with
-    ``benchmarks/long_period_modes.py`` (the gauges' fit split by mode; each mode's free
-    frequency and decay rate):
-
-    - the shorter modes are slow and damped. The rectangle's 3rd and 5th modes (5.54 and
-      7.17 rad/s, either side of the forcing's 6.28) run -4.2 and -9.6 % at dx = 0.1, -2.4
-      and -5.9 % at 1/13, and decay at 0.17 and 0.32, 0.11 and 0.29 1/s: what the
-      artificial viscosity's equivalent nu = alpha h c0 / (2 (d + 2)) (0.0080, 0.0062
-      m^2/s) gives a free-surface wave, 2 nu k^2 = 0.16 and 0.44, 0.12 and 0.34 1/s (Lamb
-      1932 §348). Linear theory with the three antisymmetric modes' measured frequency and
-      decay leaves forced 0.096, 0.064 (as run 0.120, 0.080) and whole 0.085, 0.057 (0.22,
-      0.18): the free sloshing's "whole" error is these modes. The cylinder's third mode
-      (9.151 rad/s) lies 1.9 % above the forcing's 8.976 rad/s: linear theory, undamped, grows it to
-      0.048 m, k a = 0.41 (a wavelength of 0.74 m: 7.4, 9.8, 12.3 dx); ours runs -20.6,
-      -12.0, -8.3 % slow at dx = 0.1, 0.075, 0.06 and reaches 0.004, 0.007, 0.013 m. With
-      the measured modes linear theory leaves forced 0.140, 0.095, 0.068 (as run 0.183, 0.134,
-      0.098) and whole 0.13, 0.11, 0.08 (0.29, 0.25, 0.23). The cylinder's forced target
-      thus measures a near-resonant short mode whose linear amplitude lies outside linear
-      theory (k a 0.41); kept as stated.
-    - second order: the symmetric modes, which linear theory has none of, carry 0.067 and
-      0.035 of the rectangle's forced error at dx = 0.1 and 1/13, and 0.12, 0.07, 0.04 of
-      the cylinder's.
-    - the first mode runs fast in the rectangle (+2.1, +1.66 %; its 2-D section +1.1,
-      +0.55 % at dx = 0.1, 0.05): not the depth (the mean level stays within 6 mm of still,
-      where +1.7 % would need 65 mm more water), nor the kernel's dispersion (it makes the
-      shorter modes slow). In the cylinder it does not converge monotonically (+0.98,
-      +1.63, +0.43 %; its rings' spacing R / round(R / dx) is 0.1, 0.077, 0.059 m).
-    - the run-up: the largest |level - still| at a wall is a drop in every run: at
-      the wall the tank first pulls away from, at 0.44-0.58 s where linear theory has -0.03
-      to -0.05 m, ours reads 1.0-1.14 dx lower (the reading takes the top fluid particle
-      within dx of the wall: the rows above it stand farther off); the largest rise while
-      shaken is 0.064 and 0.062 m in the rectangle (linear 0.072) and 0.006, 0.010, 0.026 m
-      in the cylinder (0.034). In the 2-D section at dx = 0.1 m likewise (-0.089 m at the
-      right wall, at 2.66 s).
+    dx 0.1 to 0.05 m and 1.3-1.6 times from 0.05 to 0.025 m: below first order at the
+    finest, where what linear theory leaves out (second order, the short modes' damping)
+    takes the larger share. Why ours departs from linear theory
+    (``benchmarks/long_period_modes.py``): the shorter modes run slow and are damped as a
+    free-surface wave is by the artificial viscosity's equivalent nu = alpha h c0 /
+    (2 (d + 2)) (decay 2 nu k^2, Lamb 1932 §348); the cylinder's third mode lies 1.9 %
+    above the forcing, so linear theory, undamped, grows it to k a = 0.41, outside its own
+    range: the cylinder's forced target measures that mode, kept as stated; the symmetric
+    (second-order) modes carry the rest; the first mode runs fast in the rectangle (not
+    from the depth); the largest |level - still| at a wall is a drop of about one dx at the
+    wall the tank first pulls away from. The figures by mode, the 3-D tanks at three
+    resolutions (how the full variant's dx were chosen) and the kernel tried before:
+    docs/validation/long-period_history.md.
 
     At the paper's 0.5 g (reported; dx = 0.05 m in 2-D): the surface leaves linear theory
-    by 20 % of the linear peak at 1.38 s (rectangular; 0.86 s at dx = 0.1 m) and 0.32 s
-    (45 deg), within the first or second period: linear theory's own run-up is 0.72 m
-    while shaken and 1.22 m after (0.64 / 0.82 m on the slope) on 1.0 m of water, k A ~
-    0.75. Ours climbs higher than linear while shaken at the vertical wall (0.93 m against
-    0.72; the crest steepens and runs up), lower on the slope (0.61 against 0.64), then
-    breaks: the run-up falls in jets instead of rising to linear theory's 1.2 m, 27 and 16
-    particles are thrown over the 1.5 m walls (out of 1578 and 1810), and the wall pressure
-    leaves linear theory by 0.42 and 0.18 rho g h RMS. The free first mode after it runs
-    -0.77 % (rectangular) and +5.1 % (45 deg) from linear theory: the rectangle's depth
-    ratio h/L = 0.33 lies next to the critical depth 0.3368 where the amplitude correction
-    of the frequency changes sign (Tadjbakhsh & Keller 1960; it is small there), the
-    slope's does not. The cylinder at 0.5 g, Tp = 0.7 s (3-D, dx = 0.06 m): leaves linear
-    theory at 0.90 s, run-up 0.46 m while shaken against 0.34 m, free first mode -0.04 %;
-    1208 particles (6.7 %) thrown over the 1.0 m wall and a wall pressure 23.6 rho g h RMS
-    from linear theory (at dx = 0.1 m: 1.02 s, 0.45 m, -1.8 %, 54 particles, 0.54). The whole
+    by 20 % of the linear peak at 1.38 s (rectangular) and 0.32 s (45 deg), within the
+    first or second period: linear theory's own run-up is 0.72 m while shaken and 1.22 m
+    after (0.64 / 0.82 m on the slope) on 1.0 m of water, k A ~ 0.75. Ours climbs higher
+    than linear while shaken at the vertical wall (0.93 m against 0.72; the crest steepens
+    and runs up), lower on the slope (0.61 against 0.64), then breaks: the run-up falls in
+    jets instead of rising to linear theory's 1.2 m, 27 and 16 particles are thrown over
+    the 1.5 m walls (out of 1578 and 1810), and the wall pressure leaves linear theory by
+    0.42 and 0.18 rho g h RMS. The free first mode after it runs -0.77 % (rectangular) and
+    +5.1 % (45 deg) from linear theory: the rectangle's depth ratio h/L = 0.33 lies next to
+    the critical depth 0.3368 where the amplitude correction of the frequency changes sign
+    (Tadjbakhsh & Keller 1960; it is small there), the slope's does not. The cylinder at
+    0.5 g, Tp = 0.7 s (3-D, dx = 0.06 m): leaves linear theory at 0.90 s, run-up 0.46 m
+    while shaken against 0.34 m, free first mode -0.04 %; 1208 particles (6.7 %) thrown
+    over the 1.0 m wall and a wall pressure 23.6 rho g h RMS from linear theory. The whole
     rectangular tank at 0.5 g (3-D, dx = 1/13 m): leaves linear theory at 1.20 s, run-up
     0.97 m while shaken (0.93 m in 2-D), free first mode -2.18 %; 618 particles (3.9 %)
-    thrown out, 4.9 m/s at the end, and a wall pressure 8.3 rho g h RMS from linear theory
-    (at dx = 0.1 m: 1.22 s, 0.92 m, -3.2 %, 362 particles (4.1 %), 5.8). Both run to the
-    end; the wall pressure's RMS grows as dx shrinks: slamming spikes, which neither
-    resolution resolves (the record does not keep the pressure series to show where).
+    thrown out, 4.9 m/s at the end, and a wall pressure 8.3 rho g h RMS from linear
+    theory. Both run to the end; the wall pressure's RMS grows as dx shrinks (the coarser
+    runs' figures in the history): slamming spikes, which neither resolution resolves (the
+    record does not keep the pressure series to show where).
     """
     plan = ({"rectangular 2-D": ("rectangular", 2, 0.1)} if quick else
             {"rectangular 2-D": ("rectangular", 2, 0.05), "inclined 45 deg 2-D": ("inclined", 2, 0.05),
