@@ -27,19 +27,15 @@ three alternating runs (``--threads 1``):
 The step's speed-up from 1 to 2 threads (2026-11-26, the machine quiet, load < 1.3;
 ``--speedup 10``: ten pairs of blocks alternating 1 and 2 threads in one process, two
 runs each): 3-D 107 012 particles 1.77 / 1.66 (62 -> 35-37 ms), 2-D 84 008 particles
-1.78 / 1.82 (13.8 -> 7.5-7.8 ms); as separate processes, alternated, 1.79-1.98 in 3-D
-(median 1.92 over 7 pairs) and 1.42-1.99 in 2-D. Below the issue's 1.9 in 2-D: at 2
-threads the serial parts (counting sort 0.37 ms, the NaN check, group loads, Python) are
-8.5 % of the step and the gathers and packing scale by 1.65-1.8 only. Other threading
-layers, quiet, 2 threads: ``OMP_WAIT_POLICY=PASSIVE`` 1.68-1.79
-(3-D) and 1.39-1.49 (2-D), ``GOMP_SPINCOUNT=1000`` 1.68-1.74 / 1.46-1.68, workqueue
-1.67-1.74 / 1.44-1.53, TBB (``pip install tbb``, ``LD_LIBRARY_PATH`` to its lib) 1.70-1.71
-/ 1.52-1.81: none faster than the default OpenMP. Loaded (four jobs on the 2 cores; 2-D
-dp 0.01 m), the 2-thread step against the 1-thread one: OpenMP 0.09 (11 times slower: the
-spinning waits), ``GOMP_SPINCOUNT`` 1e5 0.12, 1e4 0.51, 1e3 0.88, PASSIVE 0.86,
-workqueue 0.92-0.95, TBB 0.94-0.99. Bytes per particle kept between steps: 237 (2-D),
-265 (3-D); float32 adds 56. Where a step's CPU
-time goes at one thread (``--profile``; 3-D 68 ms, 2-D 4.2 ms per step, float64):
+1.78 / 1.82 (13.8 -> 7.5-7.8 ms). Below the issue's 1.9 in 2-D: at 2 threads the serial
+parts (counting sort 0.37 ms, the NaN check, group loads, Python) are 8.5 % of the step
+and the gathers and packing scale by 1.65-1.8 only. The default OpenMP threading layer is
+the fastest on a quiet machine; on a loaded one its spinning idle threads take the cores
+the fluid needs (2 threads 11 times slower than 1 with four jobs on the 2 cores):
+``OMP_WAIT_POLICY=PASSIVE`` then helps, at 10-15 % on a quiet machine, so it is not set
+for you (the other layers and spin counts measured: docs/benchmarks/fluid_throughput_history.md).
+Bytes per particle kept between steps: 237 (2-D), 265 (3-D); float32 adds 56. Where a
+step's CPU time goes at one thread (``--profile``; 3-D 68 ms, 2-D 4.2 ms per step, float64):
 
     part                                       3-D      2-D
     pair loop (fluid.equations.interact)       88.5 %   64.7 %
@@ -64,10 +60,7 @@ fluid.equations.interact for why that gives 1.22x and not 2. The ratio to DualSP
 CPU code, measured side by side on other machines (the developers' notes, not part of this
 repository): 2-D 4.6-5.6x on an AVX-512 machine, 3.3x on an AVX2 Zen 3 one, 3-D 2.0x there.
 Laminar viscosity adds 7 % to a 2-D step, XSPH 8 %, both 14 %, the renormalised
-diffusion (``diffusion="antuono"``) 70 % (a second pair loop), nothing when off. On a
-machine running other work, GNU OpenMP's spinning idle threads can take the cores the
-fluid needs: ``OMP_WAIT_POLICY=PASSIVE`` then helps, at 10-15 % on a quiet machine, so it
-is not set for you.
+diffusion (``diffusion="antuono"``) 70 % (a second pair loop), nothing when off.
 ``--walls adami`` (tank-wall densities from the fluid's pressure, fluid.wall_density):
 see the cost measured in that module's docstring.
 
@@ -93,15 +86,10 @@ and the rates included): 3-D symplectic 226 B (250 with XSPH; +24 with
 ``diffusion="antuono"``, +24 with moving Adami walls, +24 per body particle with mDBC),
 3-D Verlet 202 B, 2-D symplectic 178 B, 2-D Verlet 162 B; the cell offsets add 8 B per
 cell (0.5 cells per particle in the 3-D case: 4 B). So 80 GB hold about 350 M particles (3-D symplectic) or 390 M
-(Verlet). No GPU figure exists yet: no GPU machine was lent to the session that wrote it
-(2026-11-25); on the simulator the tests compare it with the CPU path to round-off
-(tests/test_fluid_cuda.py), and benchmarks/cuda_compile_check.py compiles every kernel
-for sm_90 without a GPU. What a GPU session should measure first: this benchmark's 3-D
-case (``--device cuda --case 3d --dp 0.017 --steps 200``), then 1, 4, 16 M particles
-and the largest that fits, against ``--device cpu`` on the same machine; the share of
-the pair loop (its divisions and the neighbour rows' binary searches) against the sort
-and the host round trips of each step (three small copies: the count inside the domain,
-the step's bounds, the NaN guard's row).
+(Verlet). No GPU figure exists yet (2026-11-25); on the simulator the tests compare it
+with the CPU path to round-off (tests/test_fluid_cuda.py), and
+benchmarks/cuda_compile_check.py compiles every kernel for sm_90 without a GPU. What a
+GPU run should measure: docs/benchmarks/fluid_throughput_history.md.
 
     NUMBA_ENABLE_CUDASIM=1 python benchmarks/fluid_throughput.py --device cuda --case 2d --dp 0.05 --steps 2  # simulator
     python benchmarks/fluid_throughput.py --device cuda --case 3d --dp 0.017 --steps 200                   # a GPU
