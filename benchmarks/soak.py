@@ -76,46 +76,33 @@ steps for fmu and moordyn), ``sys.getrefcount(None)`` flat for all 20 chunks of 
 (fmu 44 680, moordyn 39 063). CPU for 10^6 steps: catenary 32 min, sph-cable 40, fmu 20,
 moordyn 49.
 
-The shorter runs of sessions 7-8 (100 000 steps of catenary and fmu, 50 000 of sph-cable, moordyn
-before and after its repair) are in docs/benchmarks/soak_history.md; the findings below cite them.
+The shorter runs of sessions 7-8 (100 000 steps of catenary and fmu, 50 000 of sph-cable,
+moordyn before and after its repair), the memory steps of the first chunks, the ledger's
+former lists and the full derivation of the z residual: docs/benchmarks/soak_history.md.
 
 Findings.
 
 - Memory, net of the ledger: flat. RSS grows in page-sized steps in the first ~15k steps
-  (JIT, first touches; +0.4 to +1.8 MB from the first chunk to the end in all), then by
-  at most 0.2 MB over the rest (catenary +0.09 MB over 85k steps, fmu +0.17 MB in one
-  step at 65k, moordyn 0 over 37k, sph-cable +0.05 MB over 32k after a one-off +0.7 MB
-  at ~16k): no linear growth; gc-tracked objects constant (0.0 per 1000 steps).
+  (JIT, first touches), then by at most 0.2 MB over the rest: no linear growth; gc-tracked
+  objects constant (0.0 per 1000 steps).
 - Memory with the ledger kept (a run as ``scene.run`` does it): linear by design, one row
-  per step; 168 B per step for one body since the ledger keeps arrays (``cosim.ledger``;
-  these runs measured the former lists of small arrays at 962 B per step).
+  per step; 168 B per step for one body (``cosim.ledger`` keeps arrays).
 - Clock: exact in every run, 0 ticks off at every chunk (1e16 ticks for 10^6 steps fit
   an int), and ``clock.t`` as a float also exact here; ``t += dt`` summed in floats would
   be off by 7.6e-10 s after 10^5 steps and 1.7e-7 s after 10^6.
 - Momentum balance: holds to round-off in every model (relative 2e-17 of the gross
   impulse, 2.2e8 N s over 10^6 steps); x residual flat (~4e-12 N s), angular residual
   ~1e-16 kg m^2/s a step. The z residual grows linearly, by 2e-15 to 5e-15 N s a step
-  (5e-15 in the first seconds of motion, 4.55e-15 at rest; -4.3 to -5.0e-9 N s per 10^6
-  steps overall, i.e. 5e-12 m/s of the box's velocity). Its cause is the float arithmetic between the three floats the ledger
-  books and what MuJoCo integrates, whose exact sums differ by a fraction of an ulp of the
-  9810 N weight, the same sign step after step while the loads are steady: (a) the coupler
-  hands MuJoCo fl(F_fluid + F_mooring); at rest (catenary and fmu reach a bit-exact fixed
-  point from ~35k steps: state identical chunk after chunk, checked after 40k steps)
-  fl(F_fluid_z + F_mooring_z) - 9810.0 = 0 exactly while the exact sum of the booked
-  floats is 4.547e-13 N (2^-41), which is -4.55e-15 N s a step, the measured slope;
-  (b) in motion MuJoCo's weight per kg, 9810.0 N / 1000 kg rounded to 9.81 =
-  9.81 + 5.0e-16 m/s^2, is 5e-15 N s a step more than the booked 9810.0 N. Not a coupling
-  error: the bound is half an ulp of the loads a step (<= 9e-15 N s at 0.01 s). A check
-  with plain float sums sees a far larger, spurious drift (1.4e-6 N s after 10^5 steps,
-  faster than linear: numpy's sum over a strided axis is not pairwise): the checker's own
-  round-off; hence the exact sums here.
-  Reading the ledger alone, dt = np.diff(t) of its float start times is off by up to an
-  ulp of t a step (2.2e-11 N s after 2e4 steps); the ledger does not book dt.
-- moordyn 2.7.2's ``Deserialize`` drops a reference to None per call; the predictor-corrector's
-  per-step roll-back aborted Python 3.11 after ~15.3k steps. The adapter now gives the
-  reference back (``moorings.moordyn_mooring``); ``--patch-moordyn`` reproduces these runs
-  with an adapter that does not. With the repaired adapter moordyn ran the full 10^6 steps
-  with ``sys.getrefcount(None)`` flat (table above).
+  (-4.3 to -5.0e-9 N s per 10^6 steps, i.e. 5e-12 m/s of the box's velocity): the float
+  arithmetic between the three floats the ledger books and what MuJoCo integrates
+  (fl(F_fluid + F_mooring) handed over; the weight per kg rounded to 9.81 m/s^2), a
+  fraction of an ulp of the 9810 N weight of the same sign step after step. Not a
+  coupling error: the bound is half an ulp of the loads a step (<= 9e-15 N s at 0.01 s).
+  The sums here are exact (fractions): plain float sums drift far more by themselves.
+- moordyn 2.7.2's ``Deserialize`` drops a reference to None per call (the
+  predictor-corrector's per-step roll-back aborted Python 3.11 after ~15.3k steps): the
+  adapter gives the reference back (``moorings.moordyn_mooring``); ``--patch-moordyn``
+  runs an adapter that does not.
 - catenary and fmu (the same law compiled as an FMU) give bit-identical trajectories and
   residuals. The sph-cable box never comes to rest: after 475 s it still wanders by +-5 mm
   with |p| up to 7 N s (the SPH cable's own oscillation); catenary and fmu reach a
