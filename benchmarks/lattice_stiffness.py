@@ -1,6 +1,7 @@
 """Lattice stiffness of the SPH fluid under pressure: a candidate for the part of the
-first sloshing mode's +4.5 % that is not in the walls (cosim.validations.sloshing,
-sloshing_frequency), and the stability of the particle lattice at rest.
+first sloshing mode's +4.5 % at the default h = sqrt(2) dx that is not in the walls
+(cosim.validations.sloshing, sloshing_frequency, which runs at h = 2 dx for it), and the
+stability of the particle lattice at rest.
 
 1. Closed box. A closed 2-D box L x H = 1 x 0.5 m (3 wall layers, ``walls="adami"``) is
 filled on the lattice at a uniform pressure p0 [Pa], no gravity, and the fluid particles
@@ -73,9 +74,8 @@ sqrt(2)  unstable (at 8 dx) / unstable stable / stable
 
 It matches the 2-D tank at rest (``run_hydrostatic(2, dx=0.01, t_end=3.0, h_coef=...)``,
 20 layers): h = 1.7 dx grows from 8e-4 to 1.7e-2 sqrt(g H) between 0.3 and 0.7 s and the
-particles move by a spacing, with or without density diffusion, with "adami" walls,
-alpha = 0.05 (later) and damped settling (:meth:`fluid.solver.Fluid.settle`) alike;
-h = 2 dx stays at rest once settled (2.6e-4 sqrt(g H)). At the default h = sqrt(2) dx
+particles move by a spacing, whatever the damping (the remedies tried:
+docs/validation/sloshing-frequency_history.md); h = 2 dx stays at rest once settled (2.6e-4 sqrt(g H)). At the default h = sqrt(2) dx
 only the long waves are (weakly) unstable: the 20-layer tank holds, the 40-layer one
 starts to move after ~0.9 s (cosim.validations.fluid, run_hydrostatic). In 3-D the
 default sqrt(2) dx is stable in the bulk, so the 3-D tank's creep by its vertical edges
