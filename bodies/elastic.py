@@ -29,34 +29,25 @@ frequency equation of Han, Benaroya & Wei (1999, J. Sound Vib. 225(5) 935-988, t
 fixed-free case; Huang 1961) solved here in :func:`timoshenko_frequencies`; tip
 deflections as above (Timoshenko & Gere; the shear term ``P L / (kappa G A)``).
 
-Why a chain and not MuJoCo's flex (measured by ``python benchmarks/elastic_beam.py``,
-AMD EPYC, 2 cores shared with two other jobs; seed 002's plate ``L = 8 cm, h = 1.2 cm,
-rho_s = 2500 kg/m^3, E = 1 MPa, nu = 0``, W = 1 m, against Timoshenko ``f = 5.970,
-34.59, 87.63 Hz``, tip ``1.2012 mm/N``; Euler-Bernoulli would say 6.058, 37.96, 106.3 Hz,
-off by 1.5 / 10 / 21 %)::
+Accuracy (``python benchmarks/elastic_beam.py``, AMD EPYC, 2 cores shared with two other
+jobs; seed 002's plate ``L = 8 cm, h = 1.2 cm, rho_s = 2500 kg/m^3, E = 1 MPa, nu = 0``,
+W = 1 m, against Timoshenko ``f = 5.970, 34.59, 87.63 Hz``, tip ``1.2012 mm/N``;
+Euler-Bernoulli would say 6.058, 37.96, 106.3 Hz, off by 1.5 / 10 / 21 %)::
 
     model      size  dofs   f1 %   f2 %   f3 %  tip %  dt_stable  s per simulated s
     chain      N=8     16  +0.35  +1.00  +1.00  -0.39    8.4e-4     0.15-0.3 (RK4, dt 1e-4)
     chain      N=16    32  +0.09  +0.25  +0.25  -0.10    3.8e-4     0.4-0.9 (varies with the other jobs)
     chain-EB   N=16    16  +1.11  +6.87  +13.8  -1.43    3.8e-4     0.2     (no shear slides)
-    flex2d     6x48  1008  +2.94  +2.32  +1.70  -7.75    6.0e-5     2.5-2.9 (Euler, dt 5.4e-5)
-    flex3d     4x32   960  +5.42  +4.06  +2.93  -13.0    8.7e-5     1.8-2.8 (Euler, dt 7.9e-5)
 
-The chain converges at order 2.00 (error ratio 4 per halving of l). MuJoCo 4.0's flex
-(``<flexcomp>`` with ``<elasticity young poisson>``: linear triangles in plane stress,
-``dim=2 elastic2d="stretch"``, or tetrahedra, ``dim=3``) also converges at order 2 but
-locks in bending, with a constant some 300 times larger: 1000 dofs for 3 % on f1 and
-8 % on the static tip, and its stable step (below 1e-4 s from 4 x 32 cells on) forces
-sub-steps; MuJoCo 4.0 no longer integrates flex elasticity implicitly (``implicit`` and
-``implicitfast`` are refused: "Euler with a small timestep" or ``discrete``, 3-4 times
-dearer). The chain gives one rigid body per element, which the coupler already moves
-and loads (:class:`bodies.mujoco_bodies.MujocoBodies`), and needs no plugin. Its stable
-RK4 step (:meth:`BeamModel.stable_dt`, exact for the linearised chain) is 3.8e-4 s at
-N = 16, above the SPH step.
+The chain converges at order 2.00 (error ratio 4 per halving of l). It gives one rigid
+body per element, which the coupler already moves and loads
+(:class:`bodies.mujoco_bodies.MujocoBodies`), and needs no plugin. Its stable RK4 step
+(:meth:`BeamModel.stable_dt`, exact for the linearised chain) is 3.8e-4 s at N = 16,
+above the SPH step. MuJoCo's flex, measured beside it and not taken (it locks in bending
+and forces sub-steps): docs/benchmarks/elastic_beam_history.md.
 
 Limits: the chain is inextensible (the plate's first axial mode, ``sqrt(E / rho) / (4 L)``
-= 62.5 Hz at E = 1 MPa, lies between bending modes 2 and 3 and is left out: MuJoCo's
-flex shows it). Boundary particles (:class:`ElasticBody`) blend the frames of the two
+= 62.5 Hz at E = 1 MPa, lies between bending modes 2 and 3 and is left out). Boundary particles (:class:`ElasticBody`) blend the frames of the two
 links nearest them (hat weights on nodes ``k l``, :meth:`BeamModel.blend`), so the
 deformed surface stays closed at the joints (on rigid links alone the outer face would
 open by about ``h dtheta / 2`` at a joint bent by ``dtheta``: 0.9 mm at the foot for
