@@ -753,17 +753,14 @@ def sloshing_spheric10(quick: bool) -> dict:
     (refdata/sloshing_spheric_test10; impact peaks 3.68, 3.89, 2.66, 7.15 kPa at 2.375,
     4.067, 5.672, 7.303 s; the record's largest 20 ms mean at the first impact 2.15 kPa).
 
-    Set-up: ``walls="adami"`` (the walls carry the fluid's pressure; with plain dynamic
-    boundaries the first impact reads 0.34 of the measured peak at dx = 9.3 mm against 0.53,
-    and 0.63 of the impulse against 0.83), c0 = 28 m/s (DualSPHysics' own set-up of the
-    case: 30 sqrt(g h)), the default alpha = 0.01, delta = 0.1; the sensor is the wall's
-    normal force over a 10 mm patch about z = 93 mm (:func:`spheric10_sensor`), sampled at
-    10 kHz (the record: 20 kHz). The roll axis is the centre of the tank bottom (SOURCE.txt,
-    DualSPHysics' CaseSloshingHR_Def.xml); VALIDATION.md's row and the seed's case
-    (Brizzolara et al.) put it 184 mm above the bottom, and with that axis (dx = 6.2 mm,
-    8 s, the patch) the first swing reads 0.75 and the first impact's impulse 0.71,
-    0.053 s late, against 0.91 and 0.90, +0.024 s about the bottom: the record fits the
-    bottom axis.
+    Set-up: ``walls="adami"`` (the walls carry the fluid's pressure), c0 = 28 m/s
+    (DualSPHysics' own set-up of the case: 30 sqrt(g h)), the default alpha = 0.01,
+    delta = 0.1; the sensor is the wall's normal force over a 10 mm patch about z = 93 mm
+    (:func:`spheric10_sensor`), sampled at 10 kHz (the record: 20 kHz). The roll axis is
+    the centre of the tank bottom (SOURCE.txt, DualSPHysics' CaseSloshingHR_Def.xml), which
+    the record fits better than the axis 184 mm above the bottom of VALIDATION.md's row and
+    the seed's case (Brizzolara et al.); plain dynamic walls read the first impact lower
+    (both measured: docs/validation/sloshing-spheric10_history.md).
 
     The full case (dx = 3.1 mm, h = sqrt(2) dx, 8 s; NUMBA_NUM_THREADS=1, 320 493 steps,
     ~35 min alone; ratios to the measured record per impact 1-4; the face probe's row is
@@ -783,43 +780,26 @@ def sloshing_spheric10(quick: bool) -> dict:
     the fluid's normal force on a 10 mm patch of the wall (:func:`spheric10_sensor`;
     SOURCE.txt does not give the sensor's size; patches of h, 2h, 4h and 20 mm read the same
     impulses within 1 % and 20 ms means within 4 % at 3.1 mm, their peaks differ by up to
-    40 %). The face probe of sessions 3-5 (:func:`face_pressure`) averages the pressure of
-    the fluid particles near the point, so it reads a thin film or a few splash particles as
-    if they covered the wall: at the first impact, which covers the wall, the two agree; at
-    the later ones, which reach the sensor as a run-up after the first, the face probe reads
+    40 %). The face probe (:func:`face_pressure`) averages the pressure of the fluid
+    particles near the point, so it reads a thin film or a few splash particles as if they
+    covered the wall: at the first impact, which covers the wall, the two agree; at the
+    later ones, which reach the sensor as a run-up after the first, the face probe reads
     too much (the second impact's impulse 1.46 against 1.27 on the patch at 3.1 mm).
 
-    Why the peaks do not converge. The first impact's peak ratio by set-up and dx (face
-    probe; at 3.1 mm the patch reads the same), run to 2.7 s with ``run_spheric10(dx,
-    t_end=2.7, **kw)``; the impulse ratio after the slash:
-
-    ==================================================  =========  =========  =========
-    set-up                                              6.2 mm     3.1 mm     2 mm
-    ==================================================  =========  =========  =========
-    the case's (h = sqrt(2) dx, alpha 0.01, delta 0.1)  1.00/0.91  3.61/0.93  5.80/0.92
-    seed 003 §3: c0 44.3 m/s (B = 2.8e5), MLS every     0.50/0.88  1.87/0.90  6.43/0.89
-    20 steps, no diffusion (``mls_every=20,
-    delta=0.0, c0=44.3``)
-    DualSPHysics' (h = 2 dx, alpha 0.02, alpha_wall 0,  .          .          2.96/1.05
-    c0 28.7; CaseSloshingHR_Def.xml)
-    h = 2 dx (:data:`fluid.solver.WAVES_2D`)            0.87/0.94  2.84/0.92  .
-    MLS every 20 steps only                             4.01/0.99  .          .
-    ==================================================  =========  =========  =========
-
-    The impulse of the first impact stays within 0.88 - 1.05 and its 20 ms mean converges
-    (seed set-up: 0.65, 0.86, 1.03), while the peak ranges from 0.5 to 6.4 and grows as dx
-    shrinks in every set-up. At 3.1 mm the peak is a pulse of 13.2 kPa, 1.5 ms wide at half
-    height (2.3996 s on the patch, 25 ms after the measured front), on a run-up below
-    1.4 kPa: of the size of rho c0 u_n with u_n ~ 0.5 m/s, a water hammer of the weakly
-    compressible model, whose height follows c0 and the front's shape where it meets the
-    wall, sharper as dx shrinks. (With MLS alone the 6.2 mm peak is a sawtooth: a particle
-    squeezed against the wall gains 14 kPa in the 1 ms between two re-initialisations.)
-    The measured peak (the record keeps the largest sample of every 5 ms of a 20 kHz
-    signal), a 3.7 kPa front followed by 20 ms above 2.3 kPa, is most likely set by the
-    entrapped air and the real sound speed, which a single-phase model with an artificial
-    c0 does not have (inferred, not tested). The seed reports "good agreement in amplitude"
-    for its own case (Brizzolara et al., axis 184 mm above the bottom) from a figure,
-    without numbers; at its set-up and dx this record's first peak reads 6.43.
+    Why the peaks do not converge. The first impact's impulse stays within 0.88 - 1.05 of
+    the measured one and its 20 ms mean converges in every set-up tried (the seed's, DualSPHysics',
+    h = 2 dx, MLS re-initialisation: the table in the history file), while its peak ranges
+    from 0.5 to 6.4 and grows as dx shrinks. At 3.1 mm the peak is a pulse of 13.2 kPa,
+    1.5 ms wide at half height (2.3996 s on the patch, 25 ms after the measured front), on a
+    run-up below 1.4 kPa: of the size of rho c0 u_n with u_n ~ 0.5 m/s, a water hammer of
+    the weakly compressible model, whose height follows c0 and the front's shape where it
+    meets the wall, sharper as dx shrinks. The measured peak (the record keeps the largest
+    sample of every 5 ms of a 20 kHz signal), a 3.7 kPa front followed by 20 ms above
+    2.3 kPa, is most likely set by the entrapped air and the real sound speed, which a
+    single-phase model with an artificial c0 does not have (inferred, not tested). The seed
+    reports "good agreement in amplitude" for its own case (Brizzolara et al., axis 184 mm
+    above the bottom) from a figure, without numbers; at its set-up and dx this record's
+    first peak reads 6.43.
 
     Measured trade (convergence, session 5, read with the face probe;
     NUMBA_NUM_THREADS=1, ``run_spheric10(dx, **kw)``, 8 s; ratios to
@@ -841,22 +821,17 @@ def sloshing_spheric10(quick: bool) -> dict:
     dx; +0.022, -0.040, -0.019, -0.045 s at 2 dx), the first impact's impulse and 20 ms mean
     are within 8 %, and the later impulses fall with dx (1.9-2.0 to 1.5; the second impact's
     1.89, 1.46, 1.21 at 6.2, 3.1, 2 mm: converging towards the measured one, so the excess
-    at 6.2 mm discussed in the history file is largely resolution; whether a 3-D loss remains is not
-    settled) but stay 50 % above the measured ones at 3.1 mm; the peaks do not converge (the first impact's 1.00,
-    3.61, 5.80 at 6.2, 3.1, 2 mm grows as the front sharpens): the SPH peak is a 1-2 ms
-    acoustic spike (8.7 kPa at 2.400 s, after 15 ms of run-up pressure below 1.4 kPa), a
-    water-hammer of the weakly compressible model (of order rho c0 u, c0 = 28 m/s) whose
-    height follows the front's shape at contact, while the measured one (the record keeps
-    the maximum of every 5 ms of the 20 kHz signal) is most likely set by the entrapped air
-    and the real sound speed, which a single-phase model with an artificial c0 does not have
-    (inferred, not tested). h = 2 dx (the wave set-up) does not change this: its 4.65 mm
-    run's later impulses (1.15, 1.14, 0.82, history file) were not a converged result. So the
+    at 6.2 mm discussed in the history file is largely resolution; whether a 3-D loss
+    remains is not settled) but stay 50 % above the measured ones at 3.1 mm; the peaks do
+    not converge (the first impact's 1.00, 3.61, 5.80 at 6.2, 3.1, 2 mm grows as the front
+    sharpens; on the face probe at 3.1 mm a 1-2 ms spike of 8.7 kPa at 2.400 s after 15 ms
+    of run-up below 1.4 kPa: the water hammer above). h = 2 dx does not change this. So the
     target (peaks within 20 %) is not met, and the timing is (within 0.05 s). The full case
     runs dx = 3.1 mm, h = sqrt(2) dx (~35 min on one core).
 
     History (sessions 3-6: the sensor, the first impact at four resolutions and the levers
     on it, the full runs at 6.2 mm, the hypotheses about the later impacts, more dissipation
-    and a higher c0): docs/validation/sloshing-spheric10_history.md.
+    and a higher c0, the roll axis and the dynamic walls): docs/validation/sloshing-spheric10_history.md.
     """
     if quick:  # the first swing only (no impact): 5 particle rows over the depth
         out = run_spheric10(0.0186, t_end=1.3, sample_dt=0.005)
