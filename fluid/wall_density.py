@@ -41,27 +41,12 @@ the two differ by p/(gamma B) < 1 % (a weakly compressible fluid), and with rho0
 set up at rest starts with exactly the wall densities the plain dynamic boundaries start
 with (the first rates agree to round-off: tests/test_fluid_wall_density.py).
 
-Measured (NUMBA_NUM_THREADS=1; "dbc" -> "adami"; quick variants of the validations with
-``walls="adami"`` passed through their ``run_*`` functions):
-
-* sloshing-frequency (cosim.validations.sloshing): first mode +9.4 % -> +4.6 % of linear
-  theory (quick), +10.0 % -> +5.1 % (full, dx = 0.025 m); the wall pressure now follows
-  the wave as linear theory says (0.93 ... 0.65 rho g per metre of rise on the four rows
-  below the waterline, where the plain boundaries read -0.57 ... 3.1 rho g and 10 rho g
-  above it). The rest of the bias is not in the walls (that case's docstring).
-* westergaard quick (dx = 0.1 m; RMS of k_p against the exact series): the wall
-  particles' own ("raw") pressure 0.252 -> 0.062 (base k_p 1.083 -> 0.785, exact 0.727:
-  the plain boundary particle must out-press the fluid to hold it off, this one carries
-  the fluid's pressure), Eq. 15 average 0.095 -> 0.077, carried to the face 0.049 ->
-  0.040.
-* dambreak-2d quick: passes either way; front RMS after the release 0.0200 -> 0.0203,
-  pressure noise 0.043 -> 0.033 of rho g H.
-* sloshing-spheric10 quick: passes either way; first swing peak ratio 1.054 -> 1.073,
-  lag -0.043 s both.
-* hydrostatic (2-D quick, dx = 0.02 m, 2 s): pressure RMS 0.76 % -> 0.84 %, but the
-  largest speed 5.7e-4 -> 4.2e-3 sqrt(g H): fails the 1e-3 limit (full, dx = 0.01 m,
-  3 s: RMS 0.65 % -> 0.68 %, speed 2.2e-4 -> 1.3e-3: still fails). hydrostatic-3d quick
-  (failing with "dbc" too): RMS 1.6 % -> 2.3 %, speed 5.9e-3 -> 9.7e-3.
+Measured against the plain dynamic boundaries when these walls came in (the quick
+variants of sloshing-frequency, westergaard, dambreak-2d, sloshing-spheric10 and the
+hydrostatic tanks, "dbc" -> "adami"): docs/validation/modules/wall_density_history.md;
+the cases' current figures are in their docstrings. The sloshing tank's first mode came
+down from +9.4 % to +4.6 % of linear theory (quick), and the wall pressure follows the
+wave as linear theory says.
 
 Cost: 0.14 ms of CPU per rate evaluation for the 2008 wall particles of the 2-D dam
 break of benchmarks/fluid_throughput.py (22 008 particles, one thread; the rates take
@@ -70,29 +55,18 @@ A/B of the benchmark (``--case 2d --dp 0.01 --threads 1 --steps 200 --walls adam
 against ``--walls dbc``, alternating, on a loaded machine) gave +0.2 ... 0.3 ms of CPU
 per step.
 
-Why the hydrostatic tank moves (a free-surface corner, not the start: the first rates
-are those of the plain boundaries). Within ~10 ms the top fluid row settles into SPH's
-free-surface equilibrium, which holds more than rho g dx/2 (dx = 0.02 m: 98 -> ~145 Pa
-beside the wall). The wall particles above the waterline are there on the wall's side
-(p = 0) and missing on the fluid's (air), so through its own pressure term
-``(p_a / rho_a^2) sum_w m_w grad W_aw`` the top fluid particle beside the wall is pushed
-off it and down. The plain dynamic boundary balances that push by itself: the wall
-particle beside the top row loses its density to rho0 within 10 ms (its response to the
-water sliding 0.1 % of dx down along it, the same spring that stiffens the sloshing),
-while the wall particle one row down rises above the fluid's pressure. The "adami" wall
-holds the fluid's pressure there (~120 Pa), so the two top corner particles move 0.15 dx
-off the walls and launch the symmetric sloshing mode (largest speed 2.4e-2 sqrt(g H) at
-0.1 s, 4e-3 still at 2 s: alpha = 0.01 barely damps it). Without the clamp (wall
-pressures below 0 allowed: the hydrostatic extrapolation is antisymmetric about the
-surface and cancels part of the push) the largest speed is 1.6e-3 sqrt(g H), but a wall
-that pulls water is wrong for splashes, so the clamp stays. Hence an option
-(``FluidConfig.walls``), not the default.
-
-It is the start, though, not an instability: relaxed first with damped velocities
-(``Fluid.settle``, 1 s), the corner particles find their place and the tank stays at
-rest, 1.8e-4 sqrt(g H) and 0.82 % RMS at dx = 0.02 m, 1.0e-4 and 0.67 % at 0.01 m
-(session 4; ``run_hydrostatic(2, dx, t_end, settle_s=1.0, walls="adami")``). The wave
-set-up ``fluid.solver.WAVES_2D`` uses these walls.
+A hydrostatic tank started on the lattice moves: a free-surface corner, not the start
+(the first rates are those of the plain boundaries). The top fluid row settles into SPH's
+free-surface equilibrium, which holds more than rho g dx/2 beside the wall; the "adami"
+wall holds the fluid's pressure there, with no wall particles on the air's side to
+balance it, so the two top corner particles move 0.15 dx off the walls and launch the
+symmetric sloshing mode (2-D, dx = 0.02 m: largest speed 2.4e-2 sqrt(g H) at 0.1 s,
+4e-3 still at 2 s). It is the start, though, not an instability: relaxed first with
+damped velocities (``Fluid.settle``, 1 s), the corner particles find their place and the
+tank stays at rest, 1.8e-4 sqrt(g H) and 0.82 % RMS at dx = 0.02 m, 1.0e-4 and 0.67 % at
+0.01 m (``run_hydrostatic(2, dx, t_end, settle_s=1.0, walls="adami")``). Hence an option
+(``FluidConfig.walls``), not the default; the wave set-up ``fluid.solver.WAVES_2D`` uses
+these walls. The mechanism in full and the clamp tried off: the history file named above.
 """
 
 from __future__ import annotations
