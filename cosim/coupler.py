@@ -48,6 +48,7 @@ from cosim.watch import InstabilityWatch
 log = logging.getLogger(__name__)
 
 SCHEMES = ("auto", "explicit", "predictor-corrector", "fluid-first")
+LINES = ("auto", "subiterate", "explicit")
 
 
 @dataclass(frozen=True)
@@ -125,11 +126,21 @@ class Coupler:
         whose acceleration oscillates with growing amplitude, or that outruns the
         fluid (``MAX_MACH``), stops the run with an :class:`InstabilityError` naming the
         step, the body, its mass ratio and remedy (:mod:`cosim.watch`).
+    lines:
+        How the bodies and the dynamic mooring lines (moorings whose ``dynamic`` is true:
+        the SPH cable, MoorDyn) exchange loads. ``"subiterate"`` (what ``"auto"``, the
+        default, takes): the bodies and those lines advance together, each step repeated
+        from saved states until the force the bodies were given is the mean force the
+        lines exerted over the step (:meth:`_advance_with_dynamic_lines`; the step count
+        in :attr:`line_iterations`). ``"explicit"``: the lines' force at the step's start
+        is held over it, one advance of each line per step; on seed 004's chain it holds a
+        limit cycle at the step the coupler derives (``benchmarks/line_step_sweep.py``).
+        Whatever the choice, quasi-static laws (catenary, FMU) are taken as ``scheme`` says.
     """
 
     def __init__(self, participants: Sequence[Participant] = (), *, bodies=None, fluid=None,
                  moorings: Sequence = (), dt: float | None = None, t0: float = 0.0,
-                 scheme: str = "auto", light_body: str = "auto"):
+                 scheme: str = "auto", light_body: str = "auto", lines: str = "auto"):
         self.bodies, self.fluid = bodies, fluid
         self.moorings = [m if isinstance(m, MooringAttachment) else MooringAttachment(m[0], tuple(m[1]))
                          for m in moorings]
@@ -168,6 +179,10 @@ class Coupler:
         if light_body == "added-mass" and fluid is None:
             raise ConfigurationError("light_body='added-mass' moves a fluid's added mass into the bodies: pass fluid=")
         self.light_body = light_body
+        if lines not in LINES:
+            raise InputError(f"lines={lines!r} is not one of {', '.join(LINES)}")
+        self.lines = "subiterate" if lines == "auto" else lines
+        self.line_iterations = 0  #: advances of the dynamic lines the last step took (lines="subiterate")
         #: the light-body remedy chosen for each body, by name ("none" or "added-mass"), set at initialize()
         self.remedies: dict[str, str] = {}
         self.added_mass: AddedMass | None = None
@@ -223,6 +238,10 @@ class Coupler:
         for p in self.participants:
             if p is not self.bodies:
                 p.initialize(t0)
+        for j in self._dynamic_lines():  # the motion they are given is where the bodies took the fairleads
+            drive = getattr(self.moorings[j].mooring, "drive_to_step_end", None)
+            if drive is not None:
+                drive()
         self._initialized = True
         self._check_line_step()
 
@@ -340,11 +359,16 @@ class Coupler:
             return pos[:, [0, 2]], vel[:, [0, 2]]
         return pos, vel
 
-    def _mooring_wrenches(self, kin):
+    def _mooring_wrenches(self, kin, forces=None, only=None):
+        """Force and torque about each body's centre of mass of the moorings' fairlead forces:
+        each mooring's ``fairlead_forces()``, or ``forces[j]`` for the ``j``-th attachment
+        where ``forces`` (a dict) has it; of the attachments in ``only`` if given."""
         n = self.bodies.n_bodies
         F, T = np.zeros((n, 3)), np.zeros((n, 3))
-        for a, (ids, body) in zip(self.moorings, self._sites):
-            f = np.asarray(a.mooring.fairlead_forces(), dtype=float)
+        for j, (a, (ids, body)) in enumerate(zip(self.moorings, self._sites)):
+            if only is not None and j not in only:
+                continue
+            f = forces[j] if forces and j in forces else np.asarray(a.mooring.fairlead_forces(), dtype=float)
             if not np.isfinite(f).all():
                 i = int(np.argmax(~np.isfinite(f).all(axis=1)))
                 raise InstabilityError(
@@ -405,7 +429,7 @@ class Coupler:
         zeros = np.zeros((self.bodies.n_bodies, 3))
         F_fluid, T_fluid = self.fluid.body_wrenches() if self.fluid is not None else (zeros, zeros)
         self._check_loads(F_fluid, T_fluid)
-        return (F_fluid, T_fluid) + self._mooring_wrenches(kin)
+        return (F_fluid, T_fluid) + self._mooring_wrenches(kin, only=self._held_lines())
 
     def _give_kinematics(self, kin) -> None:
         if self.fluid is not None:
@@ -421,14 +445,17 @@ class Coupler:
                     f"has left the fluid's domain or passed through a wall: a heavy body needs a floor to rest on "
                     f"(bodies.builders.scene(floor_z=...)), a fast one a smaller step") from exc
         for a, sites in zip(self.moorings, self._sites):
-            try:
-                a.mooring.set_fairlead_motion(*self._fairlead_motion(a, sites, kin))
-            except InputError as exc:  # mid-run, the bodies carried a fairlead where no line can be
-                if not self._initialized:
-                    raise
-                raise InstabilityError(
-                    f"mooring '{a.mooring.name}' cannot take the fairlead motion ({exc}); the bodies moved there "
-                    f"during the run: unstable coupling, or a body that the lines do not hold") from exc
+            self._give_fairlead_motion(a, sites, kin)
+
+    def _give_fairlead_motion(self, a: MooringAttachment, sites, kin) -> None:
+        try:
+            a.mooring.set_fairlead_motion(*self._fairlead_motion(a, sites, kin))
+        except InputError as exc:  # mid-run, the bodies carried a fairlead where no line can be
+            if not self._initialized:
+                raise
+            raise InstabilityError(
+                f"mooring '{a.mooring.name}' cannot take the fairlead motion ({exc}); the bodies moved there "
+                f"during the run: unstable coupling, or a body that the lines do not hold") from exc
 
     def _fluid_first_loads(self, dt: float, velocity) -> tuple[np.ndarray, np.ndarray]:
         """The loads the fluid exchanged over its advance, the bodies' particles having
@@ -500,10 +527,14 @@ class Coupler:
         if self.added_mass is not None:
             F_am, T_am = self.added_mass.correction()  # m^ a_prev, before the step moves the bodies
             self.added_mass.step_started(dt)
+        dynamic = self._dynamic_lines()
+        # the dynamic lines' force at the step's start: what the explicit exchange holds, and here the
+        # predictions' (the fluid's sub-iterations, the predictor) and the lines' sub-iterations' first guess
+        F_dyn, T_dyn = self._mooring_wrenches(kin0, only=dynamic)
         if self.scheme == "fluid-first":
-            moor = self._mooring_wrenches(kin0)
+            moor = self._mooring_wrenches(kin0, only=self._held_lines())
             if "subiterate" in self.remedies.values():
-                loads = self._subiterated_fluid_loads(t, dt, kin0, moor) + moor
+                loads = self._subiterated_fluid_loads(t, dt, kin0, (moor[0] + F_dyn, moor[1] + T_dyn)) + moor
             else:
                 self.fluid.advance(t, dt)  # the fluid moves the bodies' particles with their current motion
                 loads = self._fluid_first_loads(dt, kin0.velocity) + moor
@@ -513,7 +544,7 @@ class Coupler:
             # predict the bodies' motion with the start loads, take the loads there,
             # go back and advance with the mean of both
             saved = [(p, p.save_state()) for p in self._exchanging]
-            b.set_wrenches(loads[0] + loads[2], loads[1] + loads[3])
+            b.set_wrenches(loads[0] + loads[2] + F_dyn, loads[1] + loads[3] + T_dyn)
             b.advance(t, dt)
             kin1 = b.kinematics()
             if hasattr(self.fluid, "set_time"):  # loads that depend on time (waves): at the predicted time
@@ -525,23 +556,107 @@ class Coupler:
             self._give_kinematics(kin0)
             loads = tuple(0.5 * (a + c) for a, c in zip(loads, end))
         F_fluid, T_fluid, F_moor, T_moor = loads
-        if self.added_mass is not None:
-            # the ledger books the fluid's own load: armature and this term cancel in a steady state
-            b.set_wrenches(F_fluid + F_am + F_moor, T_fluid + T_am + T_moor)
+        # the ledger books the fluid's own load: the armature and the added-mass term cancel in a steady state
+        F_add, T_add = (F_fluid + F_am, T_fluid + T_am) if self.added_mass is not None else (F_fluid, T_fluid)
+        gravity = b.gravity_forces()
+        if dynamic:
+            F_dyn, T_dyn = self._advance_with_dynamic_lines(t, dt, kin0, F_add + F_moor, T_add + T_moor, dynamic)
+            F_moor, T_moor = F_moor + F_dyn, T_moor + T_dyn
         else:
-            b.set_wrenches(F_fluid + F_moor, T_fluid + T_moor)
-        self.ledger.record(t, F_fluid, T_fluid, F_moor, T_moor, b.gravity_forces())
-        try:
-            b.advance(t, dt)
-        except InstabilityError as exc:
-            raise InstabilityError(f"{exc}{self._light_body_hint(range(b.n_bodies))}") from exc
+            b.set_wrenches(F_add + F_moor, T_add + T_moor)
+            self._advance_bodies(t, dt)
+        self.ledger.record(t, F_fluid, T_fluid, F_moor, T_moor, gravity)
         kin1 = b.kinematics()
         self._watch_bodies((b.dof_velocities() - qvel0) / dt, kin1)
         self._give_kinematics(kin1)
         if self.fluid is not None and self.scheme != "fluid-first":
             self.fluid.advance(t, dt)
-        for a in self.moorings:
-            a.mooring.advance(t, dt)
+        for j, a in enumerate(self.moorings):
+            if j not in dynamic:  # those have advanced with the bodies
+                a.mooring.advance(t, dt)
+
+    def _advance_bodies(self, t: float, dt: float) -> None:
+        try:
+            self.bodies.advance(t, dt)
+        except InstabilityError as exc:
+            raise InstabilityError(f"{exc}{self._light_body_hint(range(self.bodies.n_bodies))}") from exc
+
+    def _dynamic_lines(self) -> list[int]:
+        """The attachments whose lines the bodies advance with (``lines="subiterate"``):
+        moorings that say they are ``dynamic`` (their force is an integral over the step)."""
+        if self.lines != "subiterate":
+            return []
+        return [j for j, a in enumerate(self.moorings) if getattr(a.mooring, "dynamic", False)]
+
+    def _held_lines(self) -> list[int]:
+        """The attachments whose force is taken at the step's start (and, with the
+        predictor-corrector, at the predicted end): all but :meth:`_dynamic_lines`."""
+        dynamic = self._dynamic_lines()
+        return [j for j in range(len(self.moorings)) if j not in dynamic]
+
+    #: dynamic lines' sub-iterations: relative tolerance on the lines' mean fairlead forces over a
+    #: step [-] (of the largest of them, at least 1 N) ...
+    LINES_TOL = 1e-4
+    #: ... reached within this many advances of the lines, or the run stops
+    LINES_MAX = 30
+
+    def _advance_with_dynamic_lines(self, t, dt, kin0, F_other, T_other, dynamic):
+        """Advance the bodies and the dynamic lines together over one step (``lines="subiterate"``).
+
+        The bodies advance with the other loads plus a guess of each line's mean fairlead
+        force over the step; the lines advance (from their saved states) with the fairleads
+        moving from the step's start to where the bodies took them, and report the mean force
+        they exerted (``mean_fairlead_forces()``: their impulse on the fairlead over ``dt``);
+        the guess is corrected by Aitken-relaxed fixed-point updates (Küttler & Wall 2008)
+        until the two agree (``LINES_TOL``). Converged, the bodies have received the impulse
+        the lines exerted and the lines have followed the fairleads the bodies moved, within
+        the same step: no force is held from the step's start, so a wave the fairlead sends
+        down a line and back within a few steps cannot pump the body (the explicit exchange's
+        limit cycle, ``benchmarks/line_step_sweep.py``). The first try is the explicit one
+        (the force at the step's start). Returns the lines' force and torque on the bodies;
+        the bodies and the lines stay advanced."""
+        b = self.bodies
+        moorings = [self.moorings[j].mooring for j in dynamic]
+        body_state, line_states = b.save_state(), [m.save_state() for m in moorings]
+        shapes = [np.shape(m.fairlead_forces()) for m in moorings]
+        x = np.concatenate([np.asarray(m.fairlead_forces(), dtype=float).ravel() for m in moorings])
+        cuts = np.cumsum([int(np.prod(sh)) for sh in shapes])[:-1]
+        w, r_prev = 0.5, None
+        for it in range(1, self.LINES_MAX + 1):
+            if it > 1:
+                b.load_state(body_state)
+                for m, st in zip(moorings, line_states):
+                    m.load_state(st)
+            guess = {j: part.reshape(sh) for j, part, sh in zip(dynamic, np.split(x, cuts), shapes)}
+            F_lines, T_lines = self._mooring_wrenches(kin0, guess)
+            b.set_wrenches(F_other + F_lines, T_other + T_lines)
+            self._advance_bodies(t, dt)
+            kin1 = b.kinematics()
+            for j, m in zip(dynamic, moorings):
+                self._give_fairlead_motion(self.moorings[j], self._sites[j], kin1)
+                m.advance(t, dt)
+            got = np.concatenate([np.asarray(m.mean_fairlead_forces(), dtype=float).ravel() for m in moorings])
+            if not np.isfinite(got).all():
+                break  # _mooring_wrenches names the line below
+            r = got - x
+            tol = self.LINES_TOL * max(float(np.abs(got).max()), float(np.abs(x).max()), 1.0)
+            if np.abs(r).max() <= tol:
+                break
+            dr = None if r_prev is None else r - r_prev
+            if dr is not None and np.dot(dr, dr) > 0:
+                w = float(np.clip(-w * np.dot(r_prev, dr) / np.dot(dr, dr), 1e-3, 1.0))
+            x, r_prev = x + w * r, r
+        else:
+            k = int(np.argmax(np.abs(r)))
+            j = int(np.searchsorted(cuts, k, side="right"))
+            line = (k - (cuts[j - 1] if j else 0)) // shapes[j][1]
+            raise ConvergenceError(
+                f"mooring '{moorings[j].name}', line {line} (site '{self.moorings[dynamic[j]].sites[line]}'): the "
+                f"bodies and the dynamic lines did not agree on the line's mean force within {self.LINES_MAX} "
+                f"advances (residual {abs(r[k]):.3g} N, tolerance {tol:.3g} N); a smaller coupling step converges "
+                f"faster, or lines='explicit' holds the force at the step's start")
+        self.line_iterations = it
+        return F_lines, T_lines
 
     def _check_loads(self, F, T) -> None:
         """Nothing non-finite crosses the coupler: a fluid load that is not finite stops the

@@ -127,6 +127,12 @@ class BreakingMooring:
         f[self.released] = 0.0
         return f
 
+    def mean_fairlead_forces(self) -> np.ndarray:
+        """A dynamic model's mean forces [N] over the last step, zero on released lines."""
+        f = np.array(self.inner.mean_fairlead_forces(), dtype=float)
+        f[self.released] = 0.0
+        return f
+
     @property
     def anchor_tensions(self):
         """The wrapped model's ``anchor_tensions()`` [N], zero on released lines (absent

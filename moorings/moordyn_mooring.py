@@ -343,6 +343,9 @@ class MoorDynMooring:
             self.set_fairlead_motion(fairleads)
         self._prev = None  # (t, positions) at the last step's start, for the velocity estimate
         self._forces = None
+        self._mean = None  # mean fairlead force over the last step (mean_fairlead_forces)
+        self._step_end = False  # drive_to_step_end(): the motion given is the step's end state
+        self._start = None  # with it: the fairleads' positions at the start of the next step
         self.t = 0.0
         #: when each line became fully lifted or taut (:mod:`moorings.line_events`), after every step
         self.state_log = LineStateLog([ln.name for ln in self.lines])
@@ -499,7 +502,9 @@ class MoorDynMooring:
         log.debug("%s: MoorDyn console output:\n%s", self.name, console.read_text(errors="replace"))
         f = [moordyn.GetPointForce(moordyn.GetPoint(system, self.n_lines + i + 1)) for i in range(self.n_lines)]
         self._forces = self._ours(np.asarray(f, dtype=float))
+        self._mean = self._forces.copy()
         self._prev = None
+        self._start = self._pos.copy()
         if self.state_log.state is None:  # a resumed run keeps its log
             self.state_log.update(self.t, self.line_states())
 
@@ -507,20 +512,37 @@ class MoorDynMooring:
         """Unlimited: MoorDyn sub-cycles each coupling step with ``dt_internal``."""
         return math.inf
 
+    #: a dynamic line: its force over a step is an integral (the coupler advances it with the bodies)
+    dynamic = True
+
+    def drive_to_step_end(self) -> None:
+        """From now on the fairlead motion given is the state reached at the end of the next
+        advance, and the fairleads move there in a straight line from where the last advance
+        left them (the coupler's exchange with dynamic lines, ``Coupler(lines="subiterate")``).
+        Until then (standalone use) it is the state at the step's start, moving on with its
+        velocity."""
+        self._step_end = True
+        self._start = None if self._pos is None else self._pos.copy()
+
     def advance(self, t: float, dt: float) -> None:
         """Integrate from ``t`` to ``t + dt`` [s], the fairleads starting from the
-        positions last set and moving with their velocities."""
+        positions last set and moving with their velocities (after :meth:`drive_to_step_end`:
+        moving from the last advance's end to the positions last set)."""
         import moordyn
 
         system = self._system()
         self.t = float(t)
-        if self._vel is not None:
+        start = self._pos
+        if self._step_end:
+            start = self._pos if self._start is None else self._start
+            vel = (self._pos - start) / dt
+        elif self._vel is not None:
             vel = self._vel
         elif self._prev is not None and t > self._prev[0]:
             vel = (self._pos - self._prev[1]) / (t - self._prev[0])
         else:
             vel = np.zeros_like(self._pos)
-        x, v = self._md(self._pos).ravel().tolist(), self._md_vec(vel).ravel().tolist()
+        x, v = self._md(start).ravel().tolist(), self._md_vec(vel).ravel().tolist()
         try:
             f = moordyn.Step(system, x, v, float(t), float(dt))
         except Exception as exc:  # noqa: BLE001
@@ -529,8 +551,11 @@ class MoorDynMooring:
         if not np.all(np.isfinite(f)):
             raise self._error(f"between t = {t:.6g} s and {t + dt:.6g} s (non-finite fairlead forces)",
                               RuntimeError("NaN"))
+        # MoorDyn returns the force at the step's end only: the mean over the step by the trapezoid rule
+        self._mean = 0.5 * (self._forces + self._ours(f))
         self._forces = self._ours(f)
         self._prev = (float(t), self._pos.copy())
+        self._start = self._pos.copy()
         self.t = float(t) + float(dt)
         self.state_log.update(self.t, self.line_states())
 
@@ -538,17 +563,19 @@ class MoorDynMooring:
         import moordyn
 
         return (moordyn.Serialize(self._system()), self._pos.copy(), None if self._vel is None else self._vel.copy(),
-                self._prev, self._forces.copy(), self.t, self.state_log.save())
+                self._prev, self._forces.copy(), self.t, self.state_log.save(),
+                None if self._start is None else self._start.copy(), self._mean.copy())
 
     def load_state(self, state) -> None:
         import moordyn
 
-        blob, pos, vel, prev, forces, t, log_ = state
+        blob, pos, vel, prev, forces, t, log_, start, mean = state
         self.state_log.load(log_)
         before = sys.getrefcount(None)
         moordyn.Deserialize(self._system(), blob)
         _restore_none_references(before)
         self._pos, self._vel, self._prev, self._forces, self.t = pos.copy(), vel, prev, forces.copy(), t
+        self._start, self._mean = None if start is None else start.copy(), mean.copy()
 
     # -- mooring interface ---------------------------------------------------
     def set_fairlead_motion(self, positions, velocities=None) -> None:
@@ -563,6 +590,14 @@ class MoorDynMooring:
         if self._forces is None:
             raise InputError(f"{self.name}: call initialize(t0) first")
         return self._forces.copy()
+
+    def mean_fairlead_forces(self) -> np.ndarray:
+        """Mean force [N] each line exerted on its fairlead over the last step, ``(n_lines,
+        dim)``: the trapezoid rule on its forces at the step's start and end (MoorDyn
+        reports no other); after :meth:`initialize`, the initial force."""
+        if self._forces is None:
+            raise InputError(f"{self.name}: call initialize(t0) first")
+        return self._mean.copy()
 
     def fairlead_tensions(self) -> np.ndarray:
         """Magnitude of each fairlead force [N] (the catenary's ``sqrt(H^2 + V^2)``; MoorDyn's

@@ -856,11 +856,21 @@ class SPHCableMooring:
                      for cb, ln in zip(self.cables, self.lines)))
         return FairleadStiffness(np.array(k), np.array(c))
 
+    #: a dynamic line: its force over a step is an integral (the coupler advances it with the bodies)
+    dynamic = True
+
     def fairlead_forces(self) -> np.ndarray:
         """Force [N] each line exerts on its fairlead, ``(n_lines, dim)``, world frame."""
         if not self.cables:
             raise InputError(f"{self.name}: not initialised; call initialize() first")
         return np.array([c.end_forces()[1] for c in self.cables])
+
+    def mean_fairlead_forces(self) -> np.ndarray:
+        """Mean force [N] each line exerted on its fairlead over the last advance (the
+        mean over its sub-steps), ``(n_lines, dim)``."""
+        if not self.cables:
+            raise InputError(f"{self.name}: not initialised; call initialize() first")
+        return np.array([c.end_forces(mean=True)[1] for c in self.cables])
 
     def anchor_forces(self) -> np.ndarray:
         """Force [N] each line exerts on its anchor, ``(n_lines, dim)``."""

@@ -741,6 +741,9 @@ class Coupling(Spec):
     scheme: str = choice("auto", "coupling scheme", ("auto", "explicit", "predictor-corrector", "fluid-first"))
     light_body: str = choice("auto", "remedy for bodies lighter than the fluid they displace",
                              ("auto", "none", "subiterate", "added-mass"))
+    lines: str = choice("auto", "exchange with dynamic mooring lines (SPH cable, MoorDyn): advanced with the bodies "
+                        "until their mean force agrees, or their force at the step's start held",
+                        ("auto", "subiterate", "explicit"))
     dt: float = num(None, "fixed coupling step (unset: the participants' stable step)", "s", lo=0, lo_open=True)
     body_timestep: float = num(1e-3, "MuJoCo's largest step", "s", lo=0, lo_open=True)
 
