@@ -16,10 +16,12 @@ One coupling step (:meth:`Coupler.step`), in this order (``docs/DESIGN.md``):
    contacts, and sub-steps as it needs); with the predictor-corrector scheme the
    loads are first re-taken at the predicted pose and averaged, with the fluid-first
    scheme the fluid has advanced first and 2 is the load it exchanged (see ``scheme``;
-   for light bodies see ``light_body``); the instability watch
-   (:mod:`cosim.watch`) looks at the bodies' new accelerations and speeds;
-5. the fluid gets the new body kinematics and advances; each mooring gets the new
-   fairlead motion and advances (a dynamic line sub-cycles towards it);
+   for light bodies see ``light_body``); dynamic mooring lines advance with the bodies
+   until the bodies' force from them is the lines' mean force over the step (see
+   ``lines``); the instability watch (:mod:`cosim.watch`) looks at the bodies' new
+   accelerations and speeds;
+5. the fluid gets the new body kinematics and advances; each quasi-static mooring gets
+   the new fairlead motion and advances;
 6. any other participant advances; the clock advances by whole ticks (no drift).
 
 The coupler is the only owner of time: participants get ``t`` and ``dt`` with
@@ -359,10 +361,16 @@ class Coupler:
             return pos[:, [0, 2]], vel[:, [0, 2]]
         return pos, vel
 
-    def _mooring_wrenches(self, kin, forces=None, only=None):
+    def _lever_arms(self, kin, only) -> dict:
+        """Each fairlead's position relative to its body's centre of mass now [m], ``(n_lines,
+        3)``, for the attachments in ``only``."""
+        return {j: self.bodies.site_positions(self._sites[j][0]) - kin.com[self._sites[j][1]] for j in only}
+
+    def _mooring_wrenches(self, kin, forces=None, only=None, arms=None):
         """Force and torque about each body's centre of mass of the moorings' fairlead forces:
         each mooring's ``fairlead_forces()``, or ``forces[j]`` for the ``j``-th attachment
-        where ``forces`` (a dict) has it; of the attachments in ``only`` if given."""
+        where ``forces`` (a dict) has it; of the attachments in ``only`` if given; the lever
+        arms ``arms[j]`` where given, else the fairleads' now (:meth:`_lever_arms`)."""
         n = self.bodies.n_bodies
         F, T = np.zeros((n, 3)), np.zeros((n, 3))
         for j, (a, (ids, body)) in enumerate(zip(self.moorings, self._sites)):
@@ -376,7 +384,7 @@ class Coupler:
                     f"force {f[i]} on the fairlead of its line {i} (site '{a.sites[i]}')"
                 )
             f3 = f if a.mooring.dim == 3 else np.stack([f[:, 0], np.zeros(len(f)), f[:, 1]], axis=1)
-            r = self.bodies.site_positions(ids) - kin.com[body]
+            r = arms[j] if arms and j in arms else self.bodies.site_positions(ids) - kin.com[body]
             np.add.at(F, body, f3)
             np.add.at(T, body, np.cross(r, f3))
         return F, T
@@ -621,6 +629,8 @@ class Coupler:
         shapes = [np.shape(m.fairlead_forces()) for m in moorings]
         x = np.concatenate([np.asarray(m.fairlead_forces(), dtype=float).ravel() for m in moorings])
         cuts = np.cumsum([int(np.prod(sh)) for sh in shapes])[:-1]
+        arms0 = self._lever_arms(kin0, dynamic)
+        arms = arms0
         w, r_prev = 0.5, None
         for it in range(1, self.LINES_MAX + 1):
             if it > 1:
@@ -628,10 +638,13 @@ class Coupler:
                 for m, st in zip(moorings, line_states):
                     m.load_state(st)
             guess = {j: part.reshape(sh) for j, part, sh in zip(dynamic, np.split(x, cuts), shapes)}
-            F_lines, T_lines = self._mooring_wrenches(kin0, guess)
+            F_lines, T_lines = self._mooring_wrenches(kin0, guess, dynamic, arms)
             b.set_wrenches(F_other + F_lines, T_other + T_lines)
             self._advance_bodies(t, dt)
             kin1 = b.kinematics()
+            # the moment of the mean force about the moving centre: the mean of the start's and
+            # the end's lever arms (the trapezoid rule, as on the force), the end's from this try
+            arms = {j: 0.5 * (arms0[j] + a1) for j, a1 in self._lever_arms(kin1, dynamic).items()}
             for j, m in zip(dynamic, moorings):
                 self._give_fairlead_motion(self.moorings[j], self._sites[j], kin1)
                 m.advance(t, dt)

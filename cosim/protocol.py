@@ -46,6 +46,14 @@ class Mooring(Participant, Protocol):
     A quasi-static law is a pure function of the fairlead positions; a dynamic
     line has state and sub-cycles inside :meth:`advance`. Both look alike here,
     so a scene swaps one for the other in one line.
+
+    A dynamic line says so (``dynamic = True``) and adds ``mean_fairlead_forces()``: the
+    mean force [N] it exerted on each fairlead over its last advance (its impulse over
+    ``dt``), ``(n_lines, dim)``. The coupler then advances it with the bodies until that
+    mean is the force the bodies were given (``Coupler(lines="subiterate")``), the
+    fairlead motion it gives being where the bodies took the fairleads by the step's end;
+    a model whose own convention differs has ``drive_to_step_end()``, which the coupler
+    calls once before the run (MoorDyn's adapter).
     """
 
     n_lines: int
