@@ -1,33 +1,48 @@
 """The coupling step swept on the wind-turbine base (examples/wind_turbine_base.toml, waves
 0.01 m high: the lines' own dynamics, not the sea): for each mooring model, line
-resolution and step, the base's largest angular speed [rad/s] in each second, and whether
-it grows; beside the step the coupler derives (cosim.line_step). Prints figures; asserts
-nothing.
+resolution, exchange (``coupling.lines``) and step, the base's largest angular speed
+[rad/s] in each second, and whether it grows; beside the step the coupler derives
+(cosim.line_step). Prints figures; asserts nothing.
 
-    python benchmarks/line_step_sweep.py --model sph-cable --segments 20,40 --dt auto,0.004,0.003,0.001 [--seconds 6]
+    python benchmarks/line_step_sweep.py --model sph-cable --segments 20,40 --dt auto,2x,3x --lines subiterate,explicit
 
-Verdict on the last second's largest angular speed: "settled" below 1e-3 rad/s; else
-"grows" when it is more than 3 times the second one's (the first holds the start's
-transient) or the run stopped; else "limit cycle".
+(``--dt``: steps [s], "auto" for the coupler's own, "2x" for twice it.) Verdict on the
+last second's largest angular speed: "settled" below 1e-3 rad/s; else "grows" when it is
+more than 3 times the second one's (the first holds the start's transient) or the run
+stopped; else "limit cycle".
 
-Measured (2026-11-26, AMD EPYC, 2 cores, loaded), per second over 6 s (4 s where shorter):
+Measured (2026-11-26, AMD EPYC, 2 cores, loaded), per second over 6 s; the sub-iterated
+exchange (the default) first, the lines' force held (``--lines explicit``) after:
 
-- MoorDyn, 20 segments, derived 0.0050 s: 8e-7 ... 9e-7 rad/s, settled (as at 0.001 s);
-  40 segments: 2.6e-5 then 3e-7 ... 1.2e-6, settled. With the adapter's one-step lead taken
-  out (MoorDyn given the step's start and end), 0.032-0.036 (20) and 0.039-0.047 (40): the
-  same limit cycle as the SPH cable's; the lead is what settles it.
-- SPH cable, 20 nodes, derived 0.0061 s: 0.030 0.036 0.025 0.030 0.026 0.031, a limit
-  cycle (the tensions swing by some 100 kN at ~28 Hz); 0.0037 s: 0.016 sustained; 0.003 s:
-  0.017 0.0081 0.0091 0.011; 0.002 s: 0.012 0.0028 0.0011 0.00048 (decaying); 0.001 s:
-  0.0039 0.00043 9.9e-5 4.8e-5 2.5e-5 3.2e-5. With visc_alpha = 3 (its dashpot 3 times
-  larger, derived step 0.0037 s): 0.0024 2.2e-5 1.2e-5 9.4e-6, settled.
-- SPH cable, 40 nodes, derived 0.0061 s: 0.048 0.039 0.034 0.034 0.028 0.031; 0.001 s:
-  0.0055 0.0039 0.0023 0.0015 0.0011 0.00076 (decaying).
+=========================  ============  ==============================  ========  ========  ======
+model, nodes               step          max |omega| per second [rad/s]  verdict   advances  CPU-s
+                                                                                  per step
+=========================  ============  ==============================  ========  ========  ======
+SPH cable 20, sub-iter.    auto 0.0061   1.1e-6 ... 1.1e-5               settled   1.69      5.3
+SPH cable 20, sub-iter.    2x  0.0122    1.3e-6 ... 7.1e-6               settled   2.01      2.6
+SPH cable 20, sub-iter.    3x  0.0183    0.025 0.028 ... 0.023           cycle     8.00      3.6
+SPH cable 20, sub-iter.    4x  0.0245    4.7e-5 ... 0.0076               grows     5.71      2.2
+SPH cable 40, sub-iter.    auto 0.0061   1.6e-6 ... 1.5e-5               settled   2.17      6.1
+SPH cable 40, sub-iter.    2x  0.0121    2.5e-6 ... 2.6e-5               settled   2.34      3.0
+SPH cable 40, sub-iter.    3x  0.0182    0.026 0.028 ... 0.025           cycle     7.60      4.7
+SPH cable 40, sub-iter.    4x  0.0242    3.1e-4 0.0092 ... 0.0096        cycle     7.25      4.0
+MoorDyn 20, sub-iter.      auto 0.0050   8.4e-6 ... 1.1e-5               settled   1.56      7.2
+MoorDyn 20, sub-iter.      2x  0.0100    1.5e-5 ... 3.6e-5               settled   2.29      3.6
+MoorDyn 20, sub-iter.      3x  0.0150    1.0e-5 ... 1.2e-5               settled   1.81      2.8
+MoorDyn 20, sub-iter.      4x  0.0199    1.3e-5 ... 6.1e-5               settled   2.09      2.2
+MoorDyn 40, sub-iter.      auto 0.0049   2.0e-5 (every second)           settled   2.17      9.3
+MoorDyn 40, sub-iter.      2x / 3x / 4x  2.0e-5 ... 4.5e-5               settled   1.9-2.8   3.9-6.5
+SPH cable 20, held         auto 0.0061   3.1e-6 3.5e-4 0.022 0.028 ...   cycle     1         4.5
+MoorDyn 20, held (lead)    auto 0.0050   8.3e-7 ... 9.4e-7               settled   1         5.9
+=========================  ============  ==============================  ========  ========  ======
 
-The derived bound (``2 M / c``, the line a semi-infinite bar whose radiation damps the
-base) does not hold for the SPH cable: the wave the fairlead sends comes back from the
-anchor within four coupling steps. More axial damping settles it (above); MoorDyn has 0.8
-of critical per segment, and its adapter leads the fairlead by one step.
+With the force held, the SPH cable holds a ~28 Hz limit cycle at the derived step (the
+tensions swinging by some 100 kN; at 0.001 s it settles, 3e-5 rad/s); the bound takes the
+line for a semi-infinite bar, whose radiation damps the base, but the wave the fairlead
+sends comes back from the anchor within four steps. MoorDyn settles with the held force
+only through its adapter's one-step lead (given the step's own start and end, 0.032-0.047
+rad/s). Advanced with the base until their mean force agrees (the default), both settle
+at the derived step and at twice it.
 """
 
 from __future__ import annotations
