@@ -15,15 +15,19 @@ coupling step set by hand: their stiff chain (EA = 1.9e9 N, 442 kg/m, 20 segment
 2.25 m) resists the fairlead's motion with its axial impedance sqrt(EA m) = 9.2e5 N s/m
 per line, which, held over a coupling step against the base's roll and pitch inertia, is
 stable only below 2 / rate = 0.0062 s (MoorDyn) and 0.0077 s (SPH cable); the coupler
-takes 0.8 of that (cosim.line_step) and refuses a coupling.dt above it. At 0.025 s
-(the analytic fluid's own step) MoorDyn's fairlead tensions swung 1-550 kN and the SPH cable
-stopped at 0.35 s with the coupler's growing-oscillation error.
+takes 0.8 of that (cosim.line_step) and refuses a coupling.dt above it. It advances the
+dynamic lines with the base until their mean force over each step is the force the base
+was given (the coupler's ``lines="subiterate"``, 1.6-2.2 advances of the lines a step).
+At 0.025 s (the analytic fluid's own step), with the force held, MoorDyn's fairlead
+tensions swung 1-550 kN and the SPH cable stopped at 0.35 s with the coupler's
+growing-oscillation error.
 
 Measured over the 90 s (surge, heave, pitch: half the peak-to-peak over 30-90 s, after the
 wave has reached the base; mean fairlead tension over 30-90 s of the back line and of the
 two front lines; coupling steps; wall and CPU time of the run) with
 `python examples/wind_turbine_base.py`, on the project machine's 2 cores (AMD EPYC, as
-/proc/cpuinfo names it) with other jobs beside it (load average 7-9: compare CPU times):
+/proc/cpuinfo names it) with other jobs beside it (compare CPU times; the dynamic rows
+2026-11-26, load 3-4):
 
 =========  =====  =====  =====  =====================  ======  =====  =====
 model      surge  heave  pitch  mean tension [kN]      steps   wall   CPU
@@ -31,21 +35,22 @@ model      surge  heave  pitch  mean tension [kN]      steps   wall   CPU
 =========  =====  =====  =====  =====================  ======  =====  =====
 catenary   1.585  0.318  0.74   94.8 / 94.3 / 94.3     3600    36.2   13.2
 fmu        1.585  0.318  0.74   94.8 / 94.3 / 94.3     3600    30.7   13.1
-moordyn    1.661  0.331  1.35   95.0 / 94.6 / 94.6     19258   155.0  86.7
-sph-cable  1.621  0.333  1.27   95.3 / 94.2 / 94.1     15717   115.6  65.1
+moordyn    1.668  0.330  1.37   95.0 / 94.5 / 94.5     19260   120.7  113.2
+sph-cable  1.620  0.328  1.19   94.9 / 94.7 / 94.7     15716   114.9  87.9
 =========  =====  =====  =====  =====================  ======  =====  =====
 
 (moordyn and sph-cable at the coupler's own step, cosim.line_step: 0.0045-0.0050 s and
-0.0057 s on average, moving with the lines' geometry; at coupling.dt = 0.005 s set by hand
-they gave 1.661 / 0.330 m, 72.5 s CPU, and 1.627 / 0.330 m, 64.6 s CPU, on a busier machine.)
+0.0057 s on average, moving with the lines' geometry.)
 
-Within 5 % of each other in surge (the dynamic lines +2.5 % and +4.8 %), 4 % in heave and
-1.3 % in mean tension; pitch differs more (0.74 against 1.3-1.35 deg: the dynamic lines'
-inertia and drag act at the bottom rim, 1.5 m under the centre); their tensions swing wider
-(SPH cable 19-208 kN, MoorDyn 77-111 kN, against the catenary's 84-108 kN over 30-90 s: the
-inertia and drag of 60 t of chain; the SPH cable's wider swing is mostly numerical: at the
-coupler's step the base and its SPH cables hold a ~28 Hz limit cycle that swings the
-tensions by some 100 kN, gone at a 0.001 s step, benchmarks/line_step_sweep.py). The FMU is the catenary law compiled: the same figures
+Within 5 % of each other in surge (the dynamic lines +2.2 % and +5.2 %), 4 % in heave and
+0.7 % in mean tension; the two dynamic models agree with each other within 3 % in surge
+and 1 % in heave. Pitch differs more (0.74 against 1.2-1.4 deg: the dynamic lines'
+inertia and drag act at the bottom rim, 1.5 m under the centre); their tensions swing a
+little wider (SPH cable 81.5-107.7 kN, MoorDyn 81.5-108.2 kN, against the catenary's
+84-108 kN over 30-90 s: the inertia and drag of 60 t of chain). With the lines' force held
+over each step (``coupling.lines = "explicit"``) the SPH cables swung 19-208 kN: a ~28 Hz
+limit cycle of the exchange (benchmarks/line_step_sweep.py), gone when the lines advance
+with the base. The FMU is the catenary law compiled: the same figures
 to the digits shown. No line breaks (largest tension over 30-90 s 208 kN against 1400 kN);
 every line of every model stays partly lifted (summary.json line_events). The surge beats
 between the 20 s wave and the moored base's own surge period (~13 s: 60 t against ~15 kN/m

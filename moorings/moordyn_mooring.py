@@ -12,7 +12,10 @@ Our coupler owns the clock: :meth:`MoorDynMooring.advance` hands MoorDyn the
 fairlead positions at the step's start time ``t`` and their velocities (given,
 or estimated by a backward difference of the positions of the last two
 steps), and MoorDyn integrates from ``t`` to ``t + dt`` with its own internal
-step ``dt_internal`` (it sub-cycles; the coupling step can be any size).
+step ``dt_internal`` (it sub-cycles; the coupling step can be any size). The
+coupler, which advances MoorDyn with the bodies (``Coupler(lines="subiterate")``),
+calls :meth:`MoorDynMooring.drive_to_step_end` first: the positions it gives are
+then the ones reached at the step's end, from where the last step left them.
 That step is derived from every stiff term the adapter writes into MoorDyn's
 input (:func:`internal_step_limits`, below) and :attr:`MoorDynMooring.dt_limit`
 names the term that set it. MoorDyn's failures (input file, NaN in a line) become
