@@ -72,13 +72,13 @@ on by one step of its velocity; given the step's own start and end, 0.035 rad/s)
 
 The sub-iterated exchange (the default for dynamic lines; ``benchmarks/line_step_sweep.py``
 and ``tests/test_line_step.py``, same machine): the base settles at the chosen step,
-~1e-5 rad/s on SPH cables and on MoorDyn (no lead), 20 or 40 nodes, in 1.6-2.2 advances
-of the lines per step on average, for 18-22 % more CPU than the held force. It settles at
-twice the chosen step too (2.0-2.8 advances); at three times it the SPH cables hold a
-limit cycle of 0.025 rad/s again (MoorDyn settles up to four times it). So the coupler
-keeps this bound for both exchanges: the SPH cable's margin is 2-3. The box on its stiff
-MoorDyn line does not grow at 1.5 times the spring bound 2 / omega (0.025 s), where the
-held force does.
+1-3e-6 rad/s on SPH cables and on MoorDyn (no lead), 20 or 40 nodes, in 1.6-2.3 advances
+of the lines per step on average, for 20-45 % more CPU than the held force. It settles at
+twice the chosen step too (2.0-2.9 advances), where MoorDyn with the held force and its
+lead does not; at three times it the SPH cables hold a limit cycle of 0.025 rad/s again
+(MoorDyn settles up to four times it). So the coupler keeps this bound for both
+exchanges: the SPH cable's margin is 2-3. The box on its stiff MoorDyn line does not grow
+at 1.5 times the spring bound 2 / omega (0.025 s), where the held force does.
 """
 
 from __future__ import annotations

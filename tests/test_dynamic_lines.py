@@ -134,3 +134,12 @@ def test_a_run_with_sub_iterated_lines_restarts_from_a_checkpoint_exactly(tmp_pa
     c.run(0.2)
     assert np.array_equal(c.bodies.kinematics().com, first[0])
     assert np.array_equal(c.moorings[0].mooring.fairlead_forces(), first[1]) and c.line_iterations == first[2]
+
+
+def test_a_dynamic_line_whose_mean_force_is_not_finite_stops_the_run_naming_it():
+    from cosim.errors import InstabilityError
+
+    c, _, _ = pulled_body(0.5, "subiterate", noise=float("nan"))
+    with pytest.raises(InstabilityError, match=r"step 1, t = 0 s: .*mooring 'dashpot' returned a non-finite force "
+                                               r"\[nan nan nan\] on the fairlead of its line 0 \(site 'fl'\)"):
+        c.run(DT)
