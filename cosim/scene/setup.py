@@ -57,7 +57,7 @@ from cosim.scene.spec import PolygonTank, Tank
 #: FluidConfig fields that the SPH scene class can set
 CONFIG_FIELDS = ("c0", "c0_factor", "u_max", "h_coef", "kernel", "walls", "alpha", "alpha_wall", "nu",
                  "xsph_eps", "diffusion", "delta", "diffusion_at_surface", "cfl", "integrator", "mls_every",
-                 "threads", "device")
+                 "threads", "device", "precision")
 
 _WAVES_3D = {"walls": "adami", "diffusion_at_surface": False, "h_coef": 2.0}
 _REASONS = {
