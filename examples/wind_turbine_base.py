@@ -35,18 +35,18 @@ model      surge  heave  pitch  mean tension [kN]      steps   wall   CPU
 =========  =====  =====  =====  =====================  ======  =====  =====
 catenary   1.585  0.318  0.74   94.8 / 94.3 / 94.3     3600    36.2   13.2
 fmu        1.585  0.318  0.74   94.8 / 94.3 / 94.3     3600    30.7   13.1
-moordyn    1.668  0.330  1.37   95.0 / 94.5 / 94.5     19260   120.7  113.2
-sph-cable  1.620  0.328  1.19   94.9 / 94.7 / 94.7     15716   114.9  87.9
+moordyn    1.667  0.330  1.37   95.0 / 94.5 / 94.5     19260   150.5  120.4
+sph-cable  1.620  0.328  1.19   94.9 / 94.7 / 94.7     15716   87.1   87.4
 =========  =====  =====  =====  =====================  ======  =====  =====
 
 (moordyn and sph-cable at the coupler's own step, cosim.line_step: 0.0045-0.0050 s and
 0.0057 s on average, moving with the lines' geometry.)
 
-Within 5 % of each other in surge (the dynamic lines +2.2 % and +5.2 %), 4 % in heave and
+Within 5.2 % of each other in surge (the dynamic lines +2.2 % and +5.2 %), 4 % in heave and
 0.7 % in mean tension; the two dynamic models agree with each other within 3 % in surge
 and 1 % in heave. Pitch differs more (0.74 against 1.2-1.4 deg: the dynamic lines'
 inertia and drag act at the bottom rim, 1.5 m under the centre); their tensions swing a
-little wider (SPH cable 81.5-107.7 kN, MoorDyn 81.5-108.2 kN, against the catenary's
+little wider (SPH cable 81.3-109.9 kN, MoorDyn 80.8-108.2 kN, against the catenary's
 84-108 kN over 30-90 s: the inertia and drag of 60 t of chain). With the lines' force held
 over each step (``coupling.lines = "explicit"``) the SPH cables swung 19-208 kN: a ~28 Hz
 limit cycle of the exchange (benchmarks/line_step_sweep.py), gone when the lines advance
