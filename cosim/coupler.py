@@ -488,9 +488,14 @@ class Coupler:
         mean velocity agrees with the one the fluid moved them with. Every try starts
         from the saved states; the fluid stays advanced with the converged guess, the
         bodies at the start (the caller advances them). Momentum stays exact: the
-        bodies receive the impulse the fluid exchanged."""
+        bodies receive the impulse the fluid exchanged. ``moor``: the held moorings' wrench;
+        dynamic lines (``lines="subiterate"``) advance with the bodies inside every try
+        (:meth:`_advance_with_dynamic_lines`), so that the motion the fluid is matched to is
+        the one the lines allow; they are back at the start on return."""
         b, f = self.bodies, self.fluid
         fs, bs = f.save_state(), b.save_state()
+        dynamic = self._dynamic_lines()
+        line_states = [self.moorings[j].mooring.save_state() for j in dynamic]
         start = np.hstack([kin0.velocity, kin0.omega])
         guess, r_prev = start.copy(), None
         light = min(self.added_mass.ratio.min(), 1.0)
@@ -501,13 +506,17 @@ class Coupler:
             if it > 1:
                 f.load_state(fs)
                 b.load_state(bs)
+                self._load_line_states(dynamic, line_states)
             f.set_body_kinematics(kin0._replace(velocity=guess[:, :3], omega=guess[:, 3:]))
             f.advance(t, dt)
             # the moment about the moving centre, as in _fluid_first_loads: the bodies start a
             # step with their start velocity whatever the fluid was given (angular momentum)
             F_fluid, T_fluid = self._fluid_first_loads(dt, kin0.velocity)
-            b.set_wrenches(F_fluid + F_moor, T_fluid + T_moor)
-            b.advance(t, dt)
+            if dynamic:
+                self._advance_with_dynamic_lines(t, dt, kin0, F_fluid + F_moor, T_fluid + T_moor, dynamic)
+            else:
+                b.set_wrenches(F_fluid + F_moor, T_fluid + T_moor)
+                b.advance(t, dt)
             k1 = b.kinematics()
             r = 0.5 * (start + np.hstack([k1.velocity, k1.omega])) - guess
             tol = self.SUBITER_TOL * (np.abs(guess).max() + g * dt)
@@ -526,7 +535,12 @@ class Coupler:
             )
         self.subiterations = it
         b.load_state(bs)
+        self._load_line_states(dynamic, line_states)
         return F_fluid, T_fluid
+
+    def _load_line_states(self, attachments, states) -> None:
+        for j, st in zip(attachments, states):
+            self.moorings[j].mooring.load_state(st)
 
     def _exchange_and_advance(self, t: float, dt: float) -> None:
         b = self.bodies
@@ -537,12 +551,12 @@ class Coupler:
             self.added_mass.step_started(dt)
         dynamic = self._dynamic_lines()
         # the dynamic lines' force at the step's start: what the explicit exchange holds, and here the
-        # predictions' (the fluid's sub-iterations, the predictor) and the lines' sub-iterations' first guess
+        # predictor's and the lines' sub-iterations' first guess
         F_dyn, T_dyn = self._mooring_wrenches(kin0, only=dynamic)
         if self.scheme == "fluid-first":
             moor = self._mooring_wrenches(kin0, only=self._held_lines())
             if "subiterate" in self.remedies.values():
-                loads = self._subiterated_fluid_loads(t, dt, kin0, (moor[0] + F_dyn, moor[1] + T_dyn)) + moor
+                loads = self._subiterated_fluid_loads(t, dt, kin0, moor) + moor
             else:
                 self.fluid.advance(t, dt)  # the fluid moves the bodies' particles with their current motion
                 loads = self._fluid_first_loads(dt, kin0.velocity) + moor

@@ -143,3 +143,28 @@ def test_a_dynamic_line_whose_mean_force_is_not_finite_stops_the_run_naming_it()
     with pytest.raises(InstabilityError, match=r"step 1, t = 0 s: .*mooring 'dashpot' returned a non-finite force "
                                                r"\[nan nan nan\] on the fairlead of its line 0 \(site 'fl'\)"):
         c.run(DT)
+
+
+def test_a_light_body_on_a_dynamic_line_in_sph_water_rises_at_the_lines_terminal_speed():
+    """A submerged 2-D box of density ratio 0.1 (sub-iterated with the SPH fluid) held by a
+    dashpot line (dynamic, sub-iterated inside each of the fluid's tries) rises steadily at
+    the speed where the dashpot balances the fluid's lift less its weight, (F_z - m g) / c,
+    after ~7 time constants (M + m_a) / c; both sub-iterations take several tries. (The lift is
+    the SPH fluid's at 3 particles across the box, 1.3 times Archimedes' (rho - rho_b) A g.)"""
+    from test_coupling_extremes import L, tank
+
+    ratio, B, H = 0.1, 0.1, 0.06
+    c_line = 1000.0 * (1 - ratio) * B * H * 9.81 / 0.05  # N s/m per metre: 0.05 m/s at Archimedes' lift
+    box = builders.box("box", (B, H), (L / 2, 0.0, 0.1), density=1000.0 * ratio, planar=True,
+                       sites={"fl": (0.0, 0.0, 0.0)})
+    c, b = tank(box, moorings=[(Dashpot(c_line), ["fl"])])
+    c.initialize()
+    assert c.remedies == {"box": "subiterate"} and c.lines == "subiterate"
+    tries, w = [], []
+    c.run(0.06, callback=lambda info: (tries.append((c.subiterations, c.line_iterations)),
+                                       w.append(b.kinematics().velocity[0, 2])))
+    led = c.ledger.arrays()
+    lift = (led["fluid_force"][-10:, 0, 2] + led["gravity"][-10:, 0, 2]).mean()
+    assert np.ptp(w[-10:]) < 0.01 * w[-1]  # steady
+    assert w[-1] == pytest.approx(lift / c_line, rel=0.01)
+    assert max(t[0] for t in tries) >= 2 and max(t[1] for t in tries) >= 2  # both sub-iterated
