@@ -57,8 +57,10 @@ division, one square root), 22.7 GFLOP/s: 27 % of two AVX-512 FMAs per cycle (83
 55 % of what Zen 4 issues (one, 41.5 GFLOP/s); on the pairs within 2h, 9 % and 18 %.
 ``--precision float32`` (FluidConfig.precision) puts 16 pairs in a pass: see
 fluid.equations.interact for why that gives 1.22x and not 2. The ratio to DualSPHysics 5.4's
-CPU code, measured side by side on other machines (the developers' notes, not part of this
-repository): 2-D 4.6-5.6x on an AVX-512 machine, 3.3x on an AVX2 Zen 3 one, 3-D 2.0x there.
+CPU code on the same particles, same step count, one thread, per CPU-second (this machine,
+2026-11-26, loaded): 3-D 2.54x (float32 3.19x), 2-D 4.2x; AVX2 Zen 3 (developers' notes):
+3-D 2.0x, 2-D 3.3x. Our Verlet step is 2.4 times shorter (the density diffusion's limit), so
+per simulated second 1.06x in 3-D and 1.74x in 2-D (docs/benchmarks/fluid_throughput_history.md).
 Laminar viscosity adds 7 % to a 2-D step, XSPH 8 %, both 14 %, the renormalised
 diffusion (``diffusion="antuono"``) 70 % (a second pair loop), nothing when off.
 ``--walls adami`` (tank-wall densities from the fluid's pressure, fluid.wall_density):
