@@ -572,7 +572,8 @@ class MoorDynMooring:
     def load_state(self, state) -> None:
         import moordyn
 
-        blob, pos, vel, prev, forces, t, log_, start, mean = state
+        blob, pos, vel, prev, forces, t, log_ = state[:7]
+        start, mean = state[7:] if len(state) > 7 else (pos, forces)  # a checkpoint written before them
         self.state_log.load(log_)
         before = sys.getrefcount(None)
         moordyn.Deserialize(self._system(), blob)
