@@ -1,0 +1,271 @@
+"""Verlet's density-diffusion step limit at a smaller safety margin (issue 20): how far
+``fluid.integrator.diffusion_coefficient``'s Verlet ``C = 0.125 z_N / 2`` (a factor 2.75
+below the edge ``z_N h^2 / (5.8 nu_eff)`` the module docstring derives) can come down before
+the dam breaks grow density noise, and what each margin gives per simulated second.
+Prints figures; asserts nothing; changes no default (the margin is patched in this process
+and its children only).
+
+``--margin m`` sets the Verlet ``C`` to ``0.125 z_N / 2 * 2.75 / m``: 2.75 is today's,
+1.0 the derived edge, ``inf`` no limit (as DualSPHysics). The predictor-corrector's C is
+left alone.
+
+``fluid``: the dam breaks of benchmarks/fluid_throughput.py (its ``build``: Verlet,
+reset every 40 steps, alpha 0.02, Fourtakas delta 0.1, c0 = 20 sqrt(g H), CFL 0.2, DBC),
+one thread, run to ``--t-end`` [s]. Per margin: the mean step, the limiters' shares,
+particle-steps and simulated seconds per CPU-second of the steps alone, and at intervals
+a density-noise measure: ``noise`` = RMS over fluid particles (by id) of
+``(rho - mean of rho over the last 8 steps) / rho0`` (Verlet's odd/even mode and any
+growing instability show in it; where stable it is the flow's own change over 8 steps, so
+it scales with the step), its largest value in the interval, ``max |rho - rho0| / rho0``
+and the largest fluid speed. ``--cfl`` raises the build's CFL factor 0.2, so that the
+diffusion limit, not the CFL, sets the step at margins near 1.
+
+``validations``: the quick validation cases, run with every SPH fluid forced to Verlet
+(none of the validation scenes uses Verlet: ``grep -ri verlet cosim``), in a child process
+per case and margin, one thread: their judged metrics side by side and CPU seconds.
+
+One thread unless NUMBA_NUM_THREADS says otherwise::
+
+    python benchmarks/verlet_diffusion_margin.py fluid --case 2d --t-end 0.3 --every 0.03
+    python benchmarks/verlet_diffusion_margin.py fluid --case 3d --t-end 0.1 --every 0.01
+    python benchmarks/verlet_diffusion_margin.py fluid --case 2d --cfl 0.4 --t-end 0.1 --margin 1 --margin 0.75
+    python benchmarks/verlet_diffusion_margin.py validations --margin 2.75 --margin 1 --margin inf
+
+Measured 2026-11-26, AMD EPYC (Zen 4), 2 cores, loaded (load average 2-3.5), one thread,
+CPU seconds of the steps alone. DualSPHysics 5.4 on the same particles, one thread
+(fluid_throughput.py): 2-D 1.29 M particle-steps per CPU-s at a mean step of 3.17e-5 s
+(1.86e-3 simulated s per CPU-s), 3-D 0.66 M at 7.63e-5 s (4.71e-4). ``x DSPH``: our
+simulated s per CPU-s over DualSPHysics'; in brackets the same ratio at the side-by-side
+particle-step rates (4.2x 2-D, 2.54x 3-D) times the step ratio, free of this run's load.
+noise: its largest value over the first interval -> its value at the end (CFL 0.2)::
+
+    case (span)       margin  mean dt [s]  limiter            M p-steps  sim s    x DSPH       noise            stable
+                                                              /CPU-s     /CPU-s
+    2-D (0.3 s)       2.75    1.316e-5     density_diffusion  5.40       3.23e-3  1.74 (1.74)  4.2e-5 -> 1.1e-6  yes
+    22 008 particles  1.5     2.413e-5     density_diffusion  5.34       5.86e-3  3.15 (3.20)  7.5e-5 -> 2.0e-6  yes
+                      1.0     3.063e-5     courant_viscous    5.20       7.23e-3  3.89 (4.06)  9.8e-5 -> 2.6e-6  yes
+                      none    3.063e-5     courant_viscous    5.64       7.85e-3  4.22 (4.06)  same run as 1.0   yes
+    3-D (0.1 s)       2.75    3.181e-5     density_diffusion  1.56       4.64e-4  0.99 (1.06)  7.6e-5 -> 1.7e-6  yes
+    107 012 particles 1.5     5.831e-5     density_diffusion  1.52       8.30e-4  1.76 (1.94)  1.4e-4 -> 3.0e-6  yes
+                      1.0     7.478e-5     courant_viscous    1.46       1.02e-3  2.17 (2.49)  1.8e-4 -> 3.9e-6  yes
+                      none    7.478e-5     courant_viscous    1.49       1.04e-3  2.21 (2.49)  same run as 1.0   yes
+
+(2-D 0.3 s: 22 797 / 12 434 / 9 793 steps; 3-D 0.1 s: 3 144 / 1 714 / 1 337.) At CFL 0.2
+the CFL step is 0.83-0.87 of the derived edge in both cases, so margins 1.0 and "none"
+run the same steps (same trajectory; their CPU differs by the load only) and the
+diffusion edge is never reached. The noise's ratio to the step is the same at every
+margin (the flow's own change): none grows. The edge itself, 2-D at ``--cfl 0.4`` (the
+diffusion limit sets the step): margin 1.0 (dt 3.62e-5) grows density noise from
+t = 0.04 s (1.4e-5 at 0.03 s, 1.1e-3 at 0.05 s, 8e-3 at 0.07 s), then blows up (max
+|rho - rho0| / rho0 = 4, 102 particles leave the domain, the step collapses to 9e-6 s
+mean); margin 0.75 (4.81e-5) blows up within 0.01 s (noise 1.7e-2, 3.9 m/s against 0.48).
+
+Quick validations with the fluid forced to Verlet (CPU s of the whole case, one thread;
+none of them runs Verlet as built)::
+
+    case               margin  judged metrics (tolerance)                               CPU [s]
+    dambreak-2d        2.75    front_rms_rel_err 0.01997 (0.05), release delay 0.205 T  19.7, 18.9 (two runs)
+                       1.0     front_rms_rel_err 0.01997 (0.05), release delay 0.205 T   3.7, 4.0
+    dambreak-lobovsky  2.75    rms_early_max 0.05203 (0.06), arrival_err 0.1516 (0.25)  9.0, 8.3
+                       1.0     rms_early_max 0.05202 (0.06), arrival_err 0.1516 (0.25)  4.1, 4.1
+
+All pass at both margins with the metrics unchanged to 3e-4 (surge front and gauge
+arrival: not sensitive to density noise); no limit gives margin 1.0's figures (3.8, 4.2 s).
+dambreak-2d's 4.8x in CPU at margin 2.75 (against the 2.4x of its step) was not examined.
+
+Conclusion: Verlet stays stable on these dam breaks at margin 1.5 (limit binding) and at
+1.0 or with no limit at all only because the CFL 0.2 step then sits 15 % below the
+edge; where the limit itself binds at margin 1.0 (CFL 0.4) the density noise grows within
+0.05 s and the run blows up, as the docstring of fluid.integrator predicts (|G_N| = 1 at
+the edge; its measurement "delta >= 0.15 at cfl 0.2" is the same edge). So the edge is
+real and a margin of 1.0 is not safe; 1.5 is, and gives 1.83x the simulated seconds
+per CPU-second of today's 2.75 (3-D 1.06x -> 1.94x DualSPHysics per simulated second,
+2-D 1.74x -> 3.2x, at the side-by-side particle-step rates). Removing the limit as
+DualSPHysics does gains a further 1.28x / 1.27x on these cases (2.49x / 4.06x), but only
+because delta 0.1 and CFL 0.2 keep the step below the edge: a larger delta or CFL then
+blows up unwarned. The default is unchanged.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+os.environ.setdefault("NUMBA_NUM_THREADS", "1")  # before numba is imported
+ROOT = Path(__file__).resolve().parents[1]
+_here = os.path.dirname(os.path.abspath(__file__))
+sys.path[:] = [p for p in sys.path if os.path.abspath(p or os.curdir) != _here]  # ``fluid`` not shadowed
+sys.path.insert(0, _here)
+import fluid_throughput  # noqa: E402  (beside this script: the dam breaks' build)
+sys.path.pop(0)
+
+#: today's margin of Verlet's C below the derived edge (fluid.integrator docstring)
+TODAY = 2.75
+
+
+def set_margin(margin: float) -> None:
+    """Scale Verlet's C of ``fluid.integrator.diffusion_coefficient`` to ``margin`` below the
+    edge, wherever it is called by name (fluid.integrator, fluid.solver)."""
+    import fluid.integrator as integ
+    import fluid.solver as solver
+
+    original = getattr(integ, "_original_diffusion_coefficient", integ.diffusion_coefficient)
+    integ._original_diffusion_coefficient = original
+
+    def patched(integrator: str, verlet_reset: int) -> float:
+        c = original(integrator, verlet_reset)
+        if integrator != "verlet":
+            return c
+        return math.inf if math.isinf(margin) else c * TODAY / margin
+
+    integ.diffusion_coefficient = patched
+    solver.diffusion_coefficient = patched
+
+
+def run_fluid(case: str, dp: float, margin: float, t_end: float, every: float, cfl: float | None = None) -> dict:
+    import dataclasses
+
+    import numpy as np
+
+    from fluid.particles import Kind
+    from fluid.solver import Fluid
+
+    set_margin(margin)
+    cfg, ps = fluid_throughput.build(case, dp, "verlet")
+    if cfl is not None:  # a larger CFL factor, so that the step can reach the diffusion edge
+        cfg = dataclasses.replace(cfg, cfl=cfl)
+    f = Fluid(cfg, ps)
+    f.initialize(0.0)
+    f.step(f.max_dt())  # compile / load the cache
+    rho0 = cfg.rho0
+    fluid_ids = np.sort(f.ps.ids[f.ps.kind == Kind.FLUID])
+    by_id = np.zeros(int(f.ps.ids.max()) + 1)
+    ring = np.zeros((8, fluid_ids.size))
+    limiters: dict[str, int] = {}
+    steps, cpu, dts = 0, 0.0, 0.0
+    next_print, noise_max, blew, noise = every, 0.0, None, math.nan
+    print(f"{case} dp={dp} margin={margin} cfl={cfg.cfl} particles={f.ps.n} fluid={fluid_ids.size} c_diff="
+          f"{f._diffusivity['c_diff']:.4g}", flush=True)
+    t_start = f.t
+    while f.t < t_end:
+        dt = f.max_dt()
+        c0 = time.process_time()
+        try:
+            f.step(dt)
+        except Exception as e:  # non-finite state: the run blew up
+            blew = f"{type(e).__name__} at t={f.t:.4f} s: {str(e)[:120]}"
+            break
+        cpu += time.process_time() - c0
+        steps += 1
+        dts += dt
+        limiters[f.limit.limiter] = limiters.get(f.limit.limiter, 0) + 1
+        fl = f.ps.kind == Kind.FLUID
+        by_id[f.ps.ids[fl]] = f.ps.rho[fl]
+        ring[steps % 8] = by_id[fluid_ids]
+        if steps >= 8:
+            noise = float(np.sqrt(np.mean((ring[steps % 8] - ring.mean(axis=0)) ** 2))) / rho0
+            noise_max = max(noise_max, noise)
+        if f.t >= next_print or f.t >= t_end:
+            dev = float(np.max(np.abs(ring[steps % 8] - rho0))) / rho0
+            print(f"  t={f.t:.4f} s steps={steps} dt={dt:.3e} ({f.limit.limiter}) noise={noise:.2e} "
+                  f"noise_max_interval={noise_max:.2e} max|rho-rho0|/rho0={dev:.4f} "
+                  f"max|v|={float(np.max(np.linalg.norm(f.ps.vel[fl], axis=1))):.3f} m/s", flush=True)
+            next_print += every
+            noise_max = 0.0
+    n = f.ps.n
+    return {"case": case, "margin": margin, "cfl": cfg.cfl, "particles": n, "steps": steps, "t_s": f.t - t_start,
+            "mean_dt_s": dts / max(steps, 1), "limiters": limiters, "cpu_s": cpu,
+            "particle_steps_per_cpu_s": n * steps / cpu if cpu else math.nan,
+            "sim_s_per_cpu_s": dts / cpu if cpu else math.nan, "blew_up": blew,
+            "load_avg_1min": os.getloadavg()[0]}
+
+
+#: run in the child: the case with every SPH fluid forced to Verlet and the margin set; one JSON line
+CHILD = r"""
+import json, sys, math, resource
+sys.path.insert(0, sys.argv[4])
+margin, name, quick = float(sys.argv[1]), sys.argv[2], sys.argv[3] == "1"
+from verlet_diffusion_margin import set_margin
+set_margin(margin)
+from fluid import solver
+built = []
+post = solver.FluidConfig.__post_init__
+def forced(self):
+    if self.device == "cpu":
+        object.__setattr__(self, "integrator", "verlet")
+    built.append(self.integrator)
+    post(self)
+solver.FluidConfig.__post_init__ = forced
+from cosim import validation
+r = validation.run(name, quick=quick)
+r.pop("series", None)
+u, c = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
+r["_cpu_s"] = u.ru_utime + u.ru_stime + c.ru_utime + c.ru_stime
+r["_fluids"] = sorted(set(built))
+print("RECORD " + json.dumps(r, default=float))
+"""
+
+
+def run_validation(name: str, margin: float, quick: bool) -> dict:
+    env = dict(os.environ, NUMBA_NUM_THREADS="1", PYTHONPATH=str(ROOT))
+    p = subprocess.run([sys.executable, "-c", CHILD, repr(margin), name, "1" if quick else "0", _here], env=env,
+                       capture_output=True, text=True)
+    for line in p.stdout.splitlines():
+        if line.startswith("RECORD "):
+            return json.loads(line[7:])
+    return {"name": name, "error": (p.stderr.strip().splitlines() or ["no output"])[-1][:200]}
+
+
+def _fmt(v) -> str:
+    if isinstance(v, float):
+        return f"{v:.5g}"
+    if isinstance(v, list) and len(v) > 4:
+        return f"[{len(v)} values, max {max(v, key=abs) if all(isinstance(x, (int, float)) for x in v) else '?'}]"
+    return str(v)
+
+
+def main(argv=None) -> None:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("what", choices=["fluid", "validations"])
+    ap.add_argument("names", nargs="*", help="validation cases (validations; default dambreak-2d dambreak-lobovsky)")
+    ap.add_argument("--margin", type=float, action="append", help="factor below the edge (repeatable; inf: no limit)")
+    ap.add_argument("--case", choices=["2d", "3d"], default="2d")
+    ap.add_argument("--dp", type=float, default=None, help="spacing [m] (2d 0.01, 3d 0.017)")
+    ap.add_argument("--t-end", type=float, default=0.3, help="simulated time [s]")
+    ap.add_argument("--every", type=float, default=None, help="print interval [s] (t_end / 10)")
+    ap.add_argument("--cfl", type=float, default=None, help="fluid: CFL factor (default the build's 0.2)")
+    ap.add_argument("--full", action="store_true", help="validations: the full variants")
+    a = ap.parse_args(argv)
+    margins = a.margin or [TODAY, 1.5, 1.0, math.inf]
+    import numba
+    print(f"{fluid_throughput.cpu_name()}; threads {numba.get_num_threads()}; load {os.getloadavg()[0]:.2f}",
+          flush=True)
+    if a.what == "fluid":
+        dp = a.dp or (0.01 if a.case == "2d" else 0.017)
+        for m in margins:
+            r = run_fluid(a.case, dp, m, a.t_end, a.every or a.t_end / 10, a.cfl)
+            print("RESULT " + " ".join(f"{k}={_fmt(v)}" for k, v in r.items()), flush=True)
+        return
+    from cosim.validation import lookup
+    for name in a.names or ["dambreak-2d", "dambreak-lobovsky"]:
+        recs = {m: run_validation(name, m, not a.full) for m in margins}
+        for m, r in recs.items():
+            if "error" in r:
+                print(f"{name} margin {m}: failed ({r['error']})", flush=True)
+                continue
+            print(f"{name} margin {m}: passed {r['passed']} fluids {r['_fluids']} CPU {r['_cpu_s']:.1f} s", flush=True)
+            for key in r.get("tolerances", {}):
+                try:
+                    print(f"    {key}: {_fmt(lookup(r['metrics'], key))}  (tolerance {r['tolerances'][key]})")
+                except KeyError:
+                    pass
+
+
+if __name__ == "__main__":
+    main()
