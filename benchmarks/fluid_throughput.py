@@ -59,8 +59,11 @@ division, one square root), 22.7 GFLOP/s: 27 % of two AVX-512 FMAs per cycle (83
 fluid.equations.interact for why that gives 1.22x and not 2. The ratio to DualSPHysics 5.4's
 CPU code on the same particles, same step count, one thread, per CPU-second (this machine,
 2026-11-26, loaded): 3-D 2.54x (float32 3.19x), 2-D 4.2x; AVX2 Zen 3 (developers' notes):
-3-D 2.0x, 2-D 3.3x. Our Verlet step is 2.4 times shorter (the density diffusion's limit), so
-per simulated second 1.06x in 3-D and 1.74x in 2-D (docs/benchmarks/fluid_throughput_history.md).
+3-D 2.0x, 2-D 3.3x. Per simulated second what counts is also the step: with the density
+diffusion's limit at Morris' factor 2.75 below its edge our Verlet step was 2.4 times
+DualSPHysics' shorter (1.06x in 3-D, 1.74x in 2-D); at the margin 1.5 it now keeps
+(fluid.integrator.VERLET_MARGIN, benchmarks/verlet_diffusion_margin.py) 1.3 times shorter:
+1.94x and 3.2x (docs/benchmarks/fluid_throughput_history.md).
 Laminar viscosity adds 7 % to a 2-D step, XSPH 8 %, both 14 %, the renormalised
 diffusion (``diffusion="antuono"``) 70 % (a second pair loop), nothing when off.
 ``--walls adami`` (tank-wall densities from the fluid's pressure, fluid.wall_density):

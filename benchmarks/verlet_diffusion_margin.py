@@ -1,13 +1,13 @@
-"""Verlet's density-diffusion step limit at a smaller safety margin (issue 20): how far
-``fluid.integrator.diffusion_coefficient``'s Verlet ``C = 0.125 z_N / 2`` (a factor 2.75
-below the edge ``z_N h^2 / (5.8 nu_eff)`` the module docstring derives) can come down before
-the dam breaks grow density noise, and what each margin gives per simulated second.
-Prints figures; asserts nothing; changes no default (the margin is patched in this process
-and its children only).
+"""Verlet's density-diffusion step limit at several safety margins (issue 20): how far below
+the edge ``z_N h^2 / (5.8 nu_eff)`` that ``fluid.integrator``'s docstring derives the Verlet
+``C`` of ``diffusion_coefficient`` must stay before the dam breaks grow density noise, and
+what each margin gives per simulated second. Prints figures; asserts nothing (the margin is
+patched in this process and its children only).
 
-``--margin m`` sets the Verlet ``C`` to ``0.125 z_N / 2 * 2.75 / m``: 2.75 is today's,
-1.0 the derived edge, ``inf`` no limit (as DualSPHysics). The predictor-corrector's C is
-left alone.
+``--margin m`` sets the Verlet ``C`` to ``z_N / (5.8 m)``: 2.75 is Morris' factor (the
+default until these figures), 1.5 the default now (``fluid.integrator.VERLET_MARGIN``), 1.0
+the derived edge, ``inf`` no limit (as DualSPHysics). The predictor-corrector's C is left
+alone.
 
 ``fluid``: the dam breaks of benchmarks/fluid_throughput.py (its ``build``: Verlet,
 reset every 40 steps, alpha 0.02, Fourtakas delta 0.1, c0 = 20 sqrt(g H), CFL 0.2, DBC),
@@ -79,11 +79,11 @@ edge; where the limit itself binds at margin 1.0 (CFL 0.4) the density noise gro
 0.05 s and the run blows up, as the docstring of fluid.integrator predicts (|G_N| = 1 at
 the edge; its measurement "delta >= 0.15 at cfl 0.2" is the same edge). So the edge is
 real and a margin of 1.0 is not safe; 1.5 is, and gives 1.83x the simulated seconds
-per CPU-second of today's 2.75 (3-D 1.06x -> 1.94x DualSPHysics per simulated second,
+per CPU-second of Morris' 2.75 (3-D 1.06x -> 1.94x DualSPHysics per simulated second,
 2-D 1.74x -> 3.2x, at the side-by-side particle-step rates). Removing the limit as
 DualSPHysics does gains a further 1.28x / 1.27x on these cases (2.49x / 4.06x), but only
 because delta 0.1 and CFL 0.2 keep the step below the edge: a larger delta or CFL then
-blows up unwarned. The default is unchanged.
+blows up unwarned. The default is now 1.5 (``fluid.integrator.VERLET_MARGIN``).
 """
 
 from __future__ import annotations
@@ -105,8 +105,6 @@ sys.path.insert(0, _here)
 import fluid_throughput  # noqa: E402  (beside this script: the dam breaks' build)
 sys.path.pop(0)
 
-#: today's margin of Verlet's C below the derived edge (fluid.integrator docstring)
-TODAY = 2.75
 
 
 def set_margin(margin: float) -> None:
@@ -115,6 +113,8 @@ def set_margin(margin: float) -> None:
     import fluid.integrator as integ
     import fluid.solver as solver
 
+    default = integ.VERLET_MARGIN  # the margin the unpatched C has
+
     original = getattr(integ, "_original_diffusion_coefficient", integ.diffusion_coefficient)
     integ._original_diffusion_coefficient = original
 
@@ -122,7 +122,7 @@ def set_margin(margin: float) -> None:
         c = original(integrator, verlet_reset)
         if integrator != "verlet":
             return c
-        return math.inf if math.isinf(margin) else c * TODAY / margin
+        return math.inf if math.isinf(margin) else c * default / margin
 
     integ.diffusion_coefficient = patched
     solver.diffusion_coefficient = patched
@@ -242,7 +242,7 @@ def main(argv=None) -> None:
     ap.add_argument("--cfl", type=float, default=None, help="fluid: CFL factor (default the build's 0.2)")
     ap.add_argument("--full", action="store_true", help="validations: the full variants")
     a = ap.parse_args(argv)
-    margins = a.margin or [TODAY, 1.5, 1.0, math.inf]
+    margins = a.margin or [2.75, 1.5, 1.0, math.inf]
     import numba
     print(f"{fluid_throughput.cpu_name()}; threads {numba.get_num_threads()}; load {os.getloadavg()[0]:.2f}",
           flush=True)

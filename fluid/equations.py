@@ -73,7 +73,7 @@ Equations
   with the kinematic viscosity ``nu0`` [m^2/s]; added to the artificial viscosity, between
   fluid particles and between fluid and boundary particles (no-slip walls), antisymmetric
   in the pair like every other term. Its time-step limit ``dt <= 0.125 h^2 / nu0`` (Morris
-  et al. 1997; 0.0085 h^2 / nu0 with Verlet, and with the artificial viscosity and the
+  et al. 1997; 0.0156 h^2 / nu0 with Verlet, and with the artificial viscosity and the
   density diffusion counted in nu0) is in :func:`fluid.integrator.stable_dt`.
 * XSPH (optional, ``eps > 0``; off by default), Monaghan (1989), 003_7c74773681ee080c.txt
   §2 (the equation after Eq. 15): particles move with

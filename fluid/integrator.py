@@ -54,11 +54,15 @@ keeps a factor 2.75 below that edge for the predictor-corrector. Verlet's leap-f
 ``verlet_reset`` = N steps holds it. Over a cycle (one Euler step, N - 1 leap-frog steps)
 the gain of a mode decaying at ``lambda`` is ``G_N(z)`` of :func:`verlet_diffusion_edge`,
 ``|G_N| <= 1`` for ``|z| <= z_N`` (z_40 = 0.135, z_10 = 0.358, z_1 = 2): Verlet's ``C`` is
-``0.125 z_N / 2`` (0.0085 at N = 40), the same factor 2.75 below its edge. Measured on that
-block: Verlet grew with ``nu`` at 0.2 and was stable at 0.16 times Morris' step (predicted
-edge 0.135 * 2.75 / 2 = 0.19); density noise grew with Verlet at cfl = 0.2 for
-``delta >= 0.15`` (predicted 0.116) and at cfl = 0.3 and 0.4 for the default 0.1; the
-predictor-corrector at cfl 0.4 grew for ``delta = 1`` (predicted edge 0.86). Limiters
+``z_N / (5.8 VERLET_MARGIN)``, a factor ``VERLET_MARGIN`` = 1.5 below its edge (0.0156 at
+N = 40). Measured on that block: Verlet grew with ``nu`` at 0.2 and was stable at 0.16
+times Morris' step (predicted edge 0.135 / 5.8 / 0.125 = 0.19); density noise grew with
+Verlet at cfl = 0.2 for ``delta >= 0.15`` (predicted 0.116) and at cfl = 0.3 and 0.4 for
+the default 0.1; the predictor-corrector at cfl 0.4 grew for ``delta = 1`` (predicted edge
+0.86). On the dam breaks of ``benchmarks/fluid_throughput.py`` at cfl = 0.4, where the limit
+sets the step, Verlet blew up at the edge itself and held at 1.5 times below it (2-D 0.3 s,
+3-D 0.1 s: ``benchmarks/verlet_diffusion_margin.py``, where 2.75, Morris' factor, cost 1.83
+times the CPU per simulated second at cfl 0.2 and changed no dam-break metric). Limiters
 ``"viscous_diffusion"``, ``"artificial_viscosity"``, ``"density_diffusion"`` name the
 largest part of ``nu_eff``.
 
@@ -87,6 +91,10 @@ LIMITERS = ("force", "courant_viscous", "viscous_diffusion", "artificial_viscosi
 
 #: Morris et al. (1997)'s factor on h^2 / nu for the predictor-corrector [-]
 MORRIS = 0.125
+#: the largest eigenvalue of the SPH diffusion operator over nu / h^2 [-] (measured, module docstring)
+LAMBDA_H2 = 5.8
+#: Verlet's diffusion limit lies this factor below its stability edge z_N / LAMBDA_H2 [-]
+VERLET_MARGIN = 1.5
 
 
 @functools.lru_cache(maxsize=None)
@@ -114,9 +122,9 @@ def verlet_diffusion_edge(n: int) -> float:
 
 def diffusion_coefficient(integrator: str, verlet_reset: int) -> float:
     """``C`` [-] of the diffusion limit ``dt <= C h^2 / nu_eff`` (module docstring):
-    Morris' 0.125 for the predictor-corrector, ``0.125 z_N / 2`` for Verlet."""
+    Morris' 0.125 for the predictor-corrector, ``z_N / (LAMBDA_H2 VERLET_MARGIN)`` for Verlet."""
     if integrator == "verlet":
-        return MORRIS * verlet_diffusion_edge(int(verlet_reset)) / 2.0
+        return verlet_diffusion_edge(int(verlet_reset)) / (LAMBDA_H2 * VERLET_MARGIN)
     return MORRIS
 
 
