@@ -59,10 +59,10 @@ N = 40). Measured on that block: Verlet grew with ``nu`` at 0.2 and was stable a
 times Morris' step (predicted edge 0.135 / 5.8 / 0.125 = 0.19); density noise grew with
 Verlet at cfl = 0.2 for ``delta >= 0.15`` (predicted 0.116) and at cfl = 0.3 and 0.4 for
 the default 0.1; the predictor-corrector at cfl 0.4 grew for ``delta = 1`` (predicted edge
-0.86). On the dam breaks of ``benchmarks/fluid_throughput.py`` at cfl = 0.4, where the limit
-sets the step, Verlet blew up at the edge itself and held at 1.5 times below it (2-D 0.3 s,
-3-D 0.1 s: ``benchmarks/verlet_diffusion_margin.py``, where 2.75, Morris' factor, cost 1.83
-times the CPU per simulated second at cfl 0.2 and changed no dam-break metric). Limiters
+0.86). On the dam breaks of ``benchmarks/fluid_throughput.py``, the limit setting the step:
+Verlet held at 1.5 times below the edge (2-D 0.3 s, 3-D 0.1 s) and blew up at the edge
+itself (2-D, cfl = 0.4) (``benchmarks/verlet_diffusion_margin.py``; Morris' factor 2.75
+cost 1.83 times the CPU per simulated second and moved no dam-break metric). Limiters
 ``"viscous_diffusion"``, ``"artificial_viscosity"``, ``"density_diffusion"`` name the
 largest part of ``nu_eff``.
 
