@@ -52,8 +52,6 @@ from __future__ import annotations
 import argparse
 import json
 import math
-import os
-import subprocess
 import sys
 import time
 from pathlib import Path
@@ -61,9 +59,9 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-#: run in the child: the case, with the fluid's precision forced where asked; one JSON line
-CHILD = r"""
-import json, sys, time, resource
+#: run in the child (validation_child.run_child): the fluid's precision forced where asked
+PATCH = r"""
+import sys
 precision, name, quick = sys.argv[1], sys.argv[2], sys.argv[3] == "1"
 from fluid import solver
 built = []
@@ -82,24 +80,13 @@ def case_with(index, values, scene, *args):  # scenes a study runs in its own pr
         built.append(precision)
     return case(index, values, scene, *args)
 sweep.case = case_with
-from cosim import validation
-r = validation.run(name, quick=quick)
-r.pop("series", None)
-u, c = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
-r["_cpu_s"] = u.ru_utime + u.ru_stime + c.ru_utime + c.ru_stime
-r["_fluids"] = sorted(set(built))
-print("RECORD " + json.dumps(r, default=float))
 """
 
 
 def run(name: str, precision: str, quick: bool) -> dict:
-    env = dict(os.environ, NUMBA_NUM_THREADS="1", PYTHONPATH=str(ROOT))
-    p = subprocess.run([sys.executable, "-c", CHILD, precision, name, "1" if quick else "0"], env=env,
-                       capture_output=True, text=True)
-    for line in p.stdout.splitlines():
-        if line.startswith("RECORD "):
-            return json.loads(line[7:])
-    return {"name": name, "error": (p.stderr.strip().splitlines() or ["no output"])[-1][:200]}
+    from validation_child import run_child
+
+    return run_child(PATCH, name, [precision, name, "1" if quick else "0"])
 
 
 def _num(v):

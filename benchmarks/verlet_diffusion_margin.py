@@ -89,10 +89,8 @@ blows up unwarned. The default is now 1.5 (``fluid.integrator.VERLET_MARGIN``).
 from __future__ import annotations
 
 import argparse
-import json
 import math
 import os
-import subprocess
 import sys
 import time
 from pathlib import Path
@@ -102,6 +100,7 @@ ROOT = Path(__file__).resolve().parents[1]
 _here = os.path.dirname(os.path.abspath(__file__))
 sys.path[:] = [p for p in sys.path if os.path.abspath(p or os.curdir) != _here]  # ``fluid`` not shadowed
 sys.path.insert(0, _here)
+from validation_child import run_child  # noqa: E402  (beside this script)
 import fluid_throughput  # noqa: E402  (beside this script: the dam breaks' build)
 sys.path.pop(0)
 
@@ -186,9 +185,9 @@ def run_fluid(case: str, dp: float, margin: float, t_end: float, every: float, c
             "load_avg_1min": os.getloadavg()[0]}
 
 
-#: run in the child: the case with every SPH fluid forced to Verlet and the margin set; one JSON line
-CHILD = r"""
-import json, sys, math, resource
+#: run in the child (validation_child.run_child): every SPH fluid forced to Verlet, the margin set
+PATCH = r"""
+import sys
 sys.path.insert(0, sys.argv[4])
 margin, name, quick = float(sys.argv[1]), sys.argv[2], sys.argv[3] == "1"
 from verlet_diffusion_margin import set_margin
@@ -202,24 +201,11 @@ def forced(self):
     built.append(self.integrator)
     post(self)
 solver.FluidConfig.__post_init__ = forced
-from cosim import validation
-r = validation.run(name, quick=quick)
-r.pop("series", None)
-u, c = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
-r["_cpu_s"] = u.ru_utime + u.ru_stime + c.ru_utime + c.ru_stime
-r["_fluids"] = sorted(set(built))
-print("RECORD " + json.dumps(r, default=float))
 """
 
 
 def run_validation(name: str, margin: float, quick: bool) -> dict:
-    env = dict(os.environ, NUMBA_NUM_THREADS="1", PYTHONPATH=str(ROOT))
-    p = subprocess.run([sys.executable, "-c", CHILD, repr(margin), name, "1" if quick else "0", _here], env=env,
-                       capture_output=True, text=True)
-    for line in p.stdout.splitlines():
-        if line.startswith("RECORD "):
-            return json.loads(line[7:])
-    return {"name": name, "error": (p.stderr.strip().splitlines() or ["no output"])[-1][:200]}
+    return run_child(PATCH, name, [repr(margin), name, "1" if quick else "0", _here])
 
 
 def _fmt(v) -> str:
