@@ -116,10 +116,12 @@ def stopped_record(src: Path, dst: Path, stop: float) -> Path:
     """A copy of the PEER ``.AT2`` record ``src`` that ends at ``stop`` [s], its last
     :data:`TAPER` s faded out by a half cosine (so the tank's acceleration does not jump
     when it comes to rest; ``GroundMotion(hold=True)`` holds it there)."""
+    from fluid.motion import G_STANDARD, read_at2
+
+    rec = read_at2(src, baseline_degree=None)  # the record as given, checked
+    dt = rec.times[1]
+    acc = np.asarray(rec.values) / G_STANDARD  # back to g
     lines = Path(src).read_text().splitlines()
-    n, dt = lines[3].split(",")[0].split("=")[1], lines[3].split(",")[1].split("=")[1].split()[0]
-    dt = float(dt)
-    acc = np.array([float(v) for ln in lines[4:] for v in ln.split()])[:int(n)]
     k = int(round(stop / dt)) + 1
     acc = acc[:k].copy()
     m = int(round(TAPER / dt))
@@ -246,19 +248,10 @@ def state_series(h5: Path, rib, dx: float, c0: float, rho0: float = 1000.0, gamm
 def b_points(h5: Path) -> tuple[np.ndarray, np.ndarray]:
     """(t, the pressure at B1-B18 (samples, 18) [Pa]) from the run's probe series: B1-B9
     on the right leg, B10-B18 their mirror images."""
-    import h5py
+    from fluid.output import read_series
 
-    cols = {}
-    with h5py.File(h5, "r") as f:
-        def visit(name, obj):
-            if isinstance(obj, h5py.Group) and "t" in obj:
-                for k in obj:
-                    if k.startswith("B") and k.endswith(".p"):
-                        cols[k] = obj[k][()]
-                        cols["t"] = obj["t"][()]
-        f["series"].visititems(visit)
-    n = min(len(v) for v in cols.values())
-    return cols["t"][:n], np.column_stack([cols[f"B{k}.p"][:n] for k in range(1, 19)])
+    s = read_series(h5, "probes/pressure")  # the rib scene's wall-pressure probes
+    return s["t"], np.column_stack([s[f"B{k}.p"] for k in range(1, 19)])
 
 
 def _band(t: np.ndarray, y: np.ndarray, lo: float = 0.6, hi: float = 1.6) -> np.ndarray:
