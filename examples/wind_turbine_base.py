@@ -90,8 +90,6 @@ mass transport and the tank's reflection, none of which this fluid has).
 """
 import sys
 
-import numpy as np
-
 from cosim.scene import Analytic, Beach, Coupling, Cylinder, Flume, Line, Moorings, Piston, Probes, Scene, World
 
 G, RHO = 9.81, 1025.0
@@ -115,20 +113,11 @@ scene = Scene(
     coupling=Coupling(body_timestep=0.005),
 )
 
-def figures(r, t0: float = 30.0) -> dict:
-    """Surge and heave amplitudes [m] (half peak-to-peak after ``t0`` [s]) and mean
-    fairlead tensions [N] of a run's results."""
-    late = r.t >= t0
-    amp = {q: 0.5 * float(np.ptp(r[f"base.{q}"][late])) for q in ("surge", "heave", "sway", "pitch")}
-    ten = {n: float(r[f"{n}.tension"][late].mean()) for n in ("back", "front_port", "front_starboard")}
-    return {"amplitude": amp, "mean_tension": ten, "steps": r.summary["steps"], "wall_s": r.summary["wall_s"],
-            "cpu_s": r.summary["cpu_s"], "line_events": r.summary.get("line_events"),
-            "line_breaks": r.summary.get("line_breaks")}
-
-
 if __name__ == "__main__":
     import json
     from pathlib import Path
+
+    from cosim.validations.wind_turbine import model_figures  # what cosim validate wind-turbine-moorings compares
 
     models = ["catenary", "fmu", "moordyn", "sph-cable"]
     if "--models" in sys.argv:
@@ -137,10 +126,9 @@ if __name__ == "__main__":
     rows = {}
     for model in models:
         r = scene.with_values([f"moorings.model={model}"]).run(out / model, progress=False)
-        rows[model] = f = figures(r)
-        t = f["mean_tension"]
-        print(f"{model:10s} surge {f['amplitude']['surge']:.3f} m  heave {f['amplitude']['heave']:.3f} m  "
-              f"tension {t['back'] / 1e3:.1f} / {t['front_port'] / 1e3:.1f} kN  {f['steps']} steps  "
+        rows[model] = f = model_figures(r, t0=30.0)
+        print(f"{model:10s} surge {f['surge_m']:.3f} m  heave {f['heave_m']:.3f} m  pitch {f['pitch_deg']:.2f} deg  "
+              f"tension {f['tension_back_N'] / 1e3:.1f} / {f['tension_front_N'] / 1e3:.1f} kN  {f['steps']} steps  "
               f"{f['wall_s']:.1f} s wall  {f['cpu_s']:.1f} s CPU", flush=True)
     out.mkdir(parents=True, exist_ok=True)
     (out / "models.json").write_text(json.dumps(rows, indent=1))

@@ -61,19 +61,22 @@ LINES = ("back", "front_port", "front_starboard")
 
 
 def model_figures(res, t0: float) -> dict:
-    """Surge and heave amplitudes [m] (half the range after ``t0`` [s]), mean fairlead
-    tensions [N] (back, and the mean of the two front lines), and the lines' states."""
+    """Surge, heave and sway amplitudes [m] and pitch amplitude [deg] (half the range after
+    ``t0`` [s]), mean fairlead tensions [N] (back, and the mean of the two front lines),
+    the lines' states, and the run's steps and cost."""
     late = res.t >= t0
     events = res.summary.get("line_events") or {}
     return {"surge_m": 0.5 * float(np.ptp(res["base.surge"][late])),
             "heave_m": 0.5 * float(np.ptp(res["base.heave"][late])),
+            "sway_m": 0.5 * float(np.ptp(res["base.sway"][late])),
+            "pitch_deg": 0.5 * float(np.ptp(res["base.pitch"][late])),
             "tension_back_N": float(res["back.tension"][late].mean()),
             "tension_front_N": float(0.5 * (res["front_port.tension"][late] + res["front_starboard.tension"][late]).mean()),
             "tension_range_N": [float(min(res[f"{n}.tension"][late].min() for n in LINES)),
                                 float(max(res[f"{n}.tension"][late].max() for n in LINES))],
             "lines_not_partly_lifted": sum(1 for n in LINES if events.get(n, {}).get("state") != "PARTLY_LIFTED"
                                            or events.get(n, {}).get("taut_s") or events.get(n, {}).get("fully_lifted_s")),
-            "steps": res.summary["steps"], "cpu_s": res.summary["cpu_s"]}
+            "steps": res.summary["steps"], "cpu_s": res.summary["cpu_s"], "wall_s": res.summary["wall_s"]}
 
 
 def spread(per_model: dict) -> dict:
