@@ -550,9 +550,6 @@ class Coupler:
             F_am, T_am = self.added_mass.correction()  # m^ a_prev, before the step moves the bodies
             self.added_mass.step_started(dt)
         dynamic = self._dynamic_lines()
-        # the dynamic lines' force at the step's start: what the explicit exchange holds, and here the
-        # predictor's and the lines' sub-iterations' first guess
-        F_dyn, T_dyn = self._mooring_wrenches(kin0, only=dynamic)
         if self.scheme == "fluid-first":
             moor = self._mooring_wrenches(kin0, only=self._held_lines())
             if "subiterate" in self.remedies.values():
@@ -566,6 +563,7 @@ class Coupler:
             # predict the bodies' motion with the start loads, take the loads there,
             # go back and advance with the mean of both
             saved = [(p, p.save_state()) for p in self._exchanging]
+            F_dyn, T_dyn = self._mooring_wrenches(kin0, only=dynamic)  # the dynamic lines' force at the start
             b.set_wrenches(loads[0] + loads[2] + F_dyn, loads[1] + loads[3] + T_dyn)
             b.advance(t, dt)
             kin1 = b.kinematics()
