@@ -4,9 +4,9 @@ wall pressures: does the water change (density, level, particles lost) so that i
 quarter-wave mode f = c / (4 L) falls during the record?
 
 One run of ``cosim.validations.arch_rib.rib_scene`` (the full variant's set-up: c0 = 140
-m/s, settled 1.5 s, El Centro EW from t = 0; ``--stop T``: the record faded out over its
-last 0.5 s before T and the rib at rest after, so that the water rings free from the
-state the record left; ``--ringdown``: the 20 mm vertical pulse of ``ring_rib``) with
+m/s, settled 1.5 s, El Centro EW from t = 0; ``--stop T``: the rib brought to rest at T,
+``GroundMotion.stop``, its velocity faded out over the last 0.5 s, so that the water rings
+free from the state the record left; ``--ringdown``: the 20 mm vertical pulse of ``ring_rib``) with
 particle snapshots every ``--every`` s (0.1), then, per snapshot, in the rib's frame (the
 rib translates rigidly: its displacement is the walls' mean displacement):
 
@@ -81,8 +81,9 @@ record's content over the window), and before it a weak signal whose zero crossi
 scatter 1.00-1.24 Hz per 2 s.
 
 The water rings free, after the record, at the mode rung from rest (``--dx 0.1 --duration
-15 --stop 10 --every 0.5``: the record faded out over 9.5-10 s, the rib at rest after;
-1,177 CPU-s): ``damped_mode`` over 10.5-15, 11-15, 10.5-14 s reads 1.0739-1.0742 Hz on
+15 --stop 10 --every 0.5``, measured when ``--stop`` cut the accelerogram at 10 s, faded
+its last 0.5 s and corrected the cut record's baseline anew, before ``GroundMotion.stop``
+kept the record's own motion to 9.5 s; the rib at rest after 10 s; 1,177 CPU-s): ``damped_mode`` over 10.5-15, 11-15, 10.5-14 s reads 1.0739-1.0742 Hz on
 the right leg's nine points, 1.0742-1.0752 on the left's, 1.0742-1.0745 on the
 antisymmetric part (residual 0.014-0.021), against 1.078 Hz rung free from rest by the
 pulse (``ring_rib``, same dx): -0.3 to -0.4 % after 10 s of shaking, as the state predicts
@@ -109,44 +110,17 @@ import numpy as np
 BANDS = (0.0, 4.0, 8.0, 12.0, 14.0, 99.0)  # m above the springings: depth bands of the mean density
 
 
-TAPER = 0.5  # s: the half-cosine fade of a record stopped early (``--stop``)
-
-
-def stopped_record(src: Path, dst: Path, stop: float) -> Path:
-    """A copy of the PEER ``.AT2`` record ``src`` that ends at ``stop`` [s], its last
-    :data:`TAPER` s faded out by a half cosine (so the tank's acceleration does not jump
-    when it comes to rest; ``GroundMotion(hold=True)`` holds it there)."""
-    from fluid.motion import G_STANDARD, read_at2
-
-    rec = read_at2(src, baseline_degree=None)  # the record as given, checked
-    dt = rec.times[1]
-    acc = np.asarray(rec.values) / G_STANDARD  # back to g
-    lines = Path(src).read_text().splitlines()
-    k = int(round(stop / dt)) + 1
-    acc = acc[:k].copy()
-    m = int(round(TAPER / dt))
-    acc[-m:] *= 0.5 * (1 + np.cos(np.pi * np.arange(1, m + 1) / m))
-    body = [" ".join(f"{v:15.7E}" for v in acc[i:i + 5]) for i in range(0, k, 5)]
-    dst.write_text("\n".join(lines[:3] + [f"NPTS= {k:6d}, DT= {dt:6.4f} SEC,"] + body) + "\n")
-    return dst
-
-
 def make_scene(dx: float, duration: float, every: float, ringdown: bool, settle: float = 1.5,
-               stop: float | None = None, folder: Path | None = None, **fluid):
+               stop: float | None = None, **fluid):
     """The full variant's scene (``rib_scene``) with snapshots every ``every`` [s] and any
     SPH field overridden by ``fluid`` (e.g. ``diffusion="antuono"``); with ``stop`` [s]
-    the record stops there (:func:`stopped_record`, written into ``folder``) and the rib
-    rests after it."""
-    from cosim.scene import GroundMotion, Record
-    from cosim.validations.arch_rib import record_path, rib_scene
+    the record stops there (``GroundMotion.stop``: its velocity faded out over the last
+    0.5 s) and the rib rests after it."""
+    from cosim.validations.arch_rib import rib_scene
 
-    sc = rib_scene(dx, duration, () if ringdown else ("ew",), settle=settle, pulse=0.02 if ringdown else None)
+    sc = rib_scene(dx, duration, () if ringdown else ("ew",), settle=settle, pulse=0.02 if ringdown else None,
+                   stop=stop)
     sc = dataclasses.replace(sc, world=dataclasses.replace(sc.world, snapshot_every=every))
-    if stop is not None:
-        folder.mkdir(parents=True, exist_ok=True)
-        f = stopped_record(record_path("ew"), folder / f"ew_to_{stop:g}s.AT2", stop)
-        sc = dataclasses.replace(sc, base_motion=GroundMotion(components=(Record(file=str(f), direction=(1.0, 0.0)),),
-                                                              hold=True))
     if fluid:
         sc = dataclasses.replace(sc, fluid=dataclasses.replace(sc.fluid, **fluid))
     return sc
@@ -355,7 +329,7 @@ def main(argv=None):
     else:
         folder = Path(a.out or f"/tmp/ardrift_{a.dx:g}")
         fluid = {k: v for k, v in (("diffusion", a.diffusion), ("delta", a.delta)) if v is not None}
-        sc = make_scene(a.dx, a.duration, a.every, a.ringdown, stop=a.stop, folder=folder, **fluid)
+        sc = make_scene(a.dx, a.duration, a.every, a.ringdown, stop=a.stop, **fluid)
         cpu0 = time.process_time()
         r = sc.run(folder, progress=None)
         summ = r.summary

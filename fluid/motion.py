@@ -267,6 +267,49 @@ def baseline_correct(record: Tabulated, degree: int = 6) -> Tabulated:
 
 
 @dataclass(frozen=True)
+class Stopped(Signal):
+    """``signal`` brought to rest at ``stop`` [s]: the signal itself until ``stop - fade``,
+    then its velocity faded out by the half cosine ``w(t) = (1 + cos(pi (t - stop + fade)
+    / fade)) / 2`` over ``fade`` [s], at rest from ``stop`` on where that leaves it:
+
+        s(t) = s(t1) + integral_t1^t w v dt',  v_stopped = w v,  a_stopped = w a + w' v
+
+    (t1 = stop - fade). Velocity and acceleration stay continuous (w' = 0 at both ends);
+    the deceleration is about pi v(t1) / (2 fade). The shaking before ``t1`` is exactly
+    the signal's (a record's free response after an earthquake that ends at ``stop``;
+    cutting the accelerogram and correcting its baseline anew would change the whole
+    shaking). The integral is a cubic spline's antiderivative through ``w v`` sampled
+    every fade / 4000."""
+
+    signal: Signal
+    stop: float
+    fade: float = 0.5
+    _pp: tuple = field(default=(), repr=False, compare=False)
+
+    def __post_init__(self):
+        if not isinstance(self.signal, Signal):
+            raise InputError(f"Stopped: signal must be a Signal (Harmonic, Tabulated, ...), got {self.signal!r}")
+        stop, fade = _finite("stop [s]", self.stop), _finite("fade [s]", self.fade, positive=True)
+        t1 = stop - fade
+        t = np.linspace(t1, stop, 4001)
+        st = np.array([self.signal.state(float(x)) for x in t])
+        wv = 0.5 * (1.0 + np.cos(np.pi * (t - t1) / fade)) * st[:, 1]
+        object.__setattr__(self, "_pp", (float(st[0, 0]), CubicSpline(t, wv).antiderivative()))
+
+    def state(self, t):
+        t1 = self.stop - self.fade
+        if t <= t1:
+            return self.signal.state(t)
+        s1, integral = self._pp
+        if t >= self.stop:
+            return s1 + float(integral(self.stop)), 0.0, 0.0
+        k = math.pi / self.fade
+        w, dw = 0.5 * (1.0 + math.cos(k * (t - t1))), -0.5 * k * math.sin(k * (t - t1))
+        _, v, a = self.signal.state(t)
+        return s1 + float(integral(t)), w * v, w * a + dw * v
+
+
+@dataclass(frozen=True)
 class Ramped(Signal):
     """``w(t) s(t)``: the signal ``signal`` faded in by the half-cosine window
     ``w = (1 - cos(pi (t - t_start) / t_ramp)) / 2`` over ``t_ramp`` [s] from ``t_start``

@@ -119,6 +119,39 @@ def test_read_at2_synthetic_file(tmp_path):
     assert len(read_at2(path, baseline_degree=None).times) == g.size
 
 
+@pytest.mark.parametrize("stop", [6.0, 6.0012])
+def test_a_stopped_record_is_the_record_then_comes_to_rest(stop):
+    """``Stopped``: the baseline-corrected record exactly until ``stop - fade``, then its
+    velocity faded out by the half cosine (acceleration ``w a + w' v``), the displacement
+    the integral of that velocity (its difference quotient), continuous at both ends, and
+    at rest from ``stop`` on: an earthquake that ends at ``stop``."""
+    from fluid.motion import Stopped
+
+    t, _, acc = _ground_motion(T=10.0, n=2001)
+    rec = baseline_correct(Tabulated(tuple(t), tuple(acc), "acceleration"))
+    sig = Stopped(rec, stop, fade=0.5)
+    t1 = stop - 0.5
+    for x in np.linspace(0.0, t1, 37):
+        assert sig.state(x) == rec.state(x)
+    for x in np.linspace(t1 + 1e-3, stop - 1e-3, 23):
+        w = 0.5 * (1 + np.cos(np.pi * (x - t1) / 0.5))
+        dw = -0.5 * np.pi / 0.5 * np.sin(np.pi * (x - t1) / 0.5)
+        _, v, a = rec.state(x)
+        d, vs, as_ = sig.state(x)
+        assert (vs, as_) == pytest.approx((w * v, w * a + dw * v), rel=1e-12, abs=1e-15)
+        h = 1e-5
+        assert (sig.state(x + h)[0] - sig.state(x - h)[0]) / (2 * h) == pytest.approx(vs, rel=1e-6, abs=1e-9)
+    eps = 1e-9
+    assert sig.state(t1 + eps) == pytest.approx(rec.state(t1), abs=1e-6)  # continuous where the fade starts
+    d_stop = sig.state(stop)[0]
+    assert sig.state(stop - eps) == pytest.approx((d_stop, 0.0, 0.0), abs=1e-6)  # and where it ends
+    for x in (stop + 0.1, 9.0, 20.0):
+        assert sig.state(x) == (d_stop, 0.0, 0.0)
+    assert abs(rec.state(t1)[1]) > 0.01  # the record does move there: the fade has work to do
+    with pytest.raises(InputError, match="fade"):
+        Stopped(rec, stop, fade=0.0)
+
+
 def test_read_at2_refuses_bad_files(tmp_path):
     p = tmp_path / "bad.AT2"
     with pytest.raises(InputError, match="no file"):

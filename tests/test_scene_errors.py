@@ -671,6 +671,15 @@ CASES = [
                           "components": [{"file": "quake.AT2", "direction": [0.0, 0.0, 1.0]}]}),
          "base_motion.components[0].direction", "[0.0, 0.0, 1.0] has 3 coordinates; a 2-D scene gives a direction "
          "as (x, z)", "Scene.base_motion.components[0].direction"),
+    case("a ground-motion stop after its records end", "tank2d",
+         ("base_motion", {"kind": "ground_motion", "stop": 0.5, "fade": 0.02,
+                          "components": [{"file": "quake.AT2", "direction": [1.0, 0.0]}]}),
+         "base_motion.stop", "= 0.5 s lies after the end of base_motion.components[0]'s record (0.09 s); give at most "
+         "0.09 s", "Scene.base_motion.stop"),
+    case("a ground-motion stop inside its fade", "tank2d",
+         ("base_motion", {"kind": "ground_motion", "stop": 0.05,
+                          "components": [{"file": "quake.AT2", "direction": [1.0, 0.0]}]}),
+         "base_motion.stop", "= 0.05 s leaves no room for the 0.5 s fade before it", "GroundMotion.stop"),
     case("a missing file", "tank3d",
          ("base_motion", {"kind": "table", "file": "nowhere.csv", "direction": [1.0, 0.0, 0.0]}), "base_motion.file",
          "no file 'nowhere.csv' (a relative path is read from the scene file's folder)", "Scene.base_motion.file"),

@@ -79,7 +79,7 @@ def _wavemaker(scene):
 
 
 def _base_motion(scene):
-    from fluid.motion import Combined, Harmonic, Ramped, Rotation, Tabulated, Translation, read_at2
+    from fluid.motion import Combined, Harmonic, Ramped, Rotation, Stopped, Tabulated, Translation, read_at2
 
     def _scaled(rec, k):  # the baseline correction is linear in the record: scale it with the values
         return rec if k == 1.0 else Tabulated(rec.times, tuple(np.asarray(rec.values) * k), rec.quantity,
@@ -101,8 +101,10 @@ def _base_motion(scene):
         sig = Tabulated(tuple(rows[:, 0]), tuple(rows[:, b.column] * b.scale), b.quantity)
         return Translation(b.direction, sig)
     if isinstance(b, GroundMotion):
-        return Combined(tuple(Translation(c.direction, _scaled(read_at2(c.file, b.baseline_degree), b.scale * c.scale))
-                              for c in b.components))
+        sigs = [_scaled(read_at2(c.file, b.baseline_degree), b.scale * c.scale) for c in b.components]
+        if b.stop is not None:
+            sigs = [Stopped(x, b.stop, b.fade) for x in sigs]
+        return Combined(tuple(Translation(c.direction, x) for c, x in zip(b.components, sigs)))
     assert isinstance(b, Earthquake)
     return Translation(b.direction, _scaled(read_at2(b.file, b.baseline_degree), b.scale))
 

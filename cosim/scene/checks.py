@@ -645,7 +645,7 @@ def first_sloshing_period(s) -> float | None:
 
 def _check_ground_motion(s, dim) -> None:
     """Each record of a :class:`GroundMotion`: its direction, its file (read as the builder
-    reads it), a record that lasts the scene (or ``hold``), and a sampling step that
+    reads it), a record that lasts the scene (or ``hold``, or ``stop``) and reaches ``stop``, and a sampling step that
     resolves the water's first sloshing period (:func:`first_sloshing_period`) at least 10
     times: a coarser record cannot carry the motion that excites it. (A record sampled
     more finely than the fluid steps is fine: the walls are placed from the exactly
@@ -661,7 +661,10 @@ def _check_ground_motion(s, dim) -> None:
         _file(c.file, f"{key}.file")
         rec = _check_at2(c.file, b.baseline_degree, f"{key}.file")
         dt, end = rec.times[1] - rec.times[0], rec.times[-1]
-        if end < s.world.duration and not b.hold:
+        if b.stop is not None and b.stop > end:
+            raise SceneError("base_motion.stop", f"= {b.stop:g} s lies after the end of {key}'s record ({end:.6g} s); "
+                             f"give at most {end:.6g} s, or leave stop out to keep the whole records")
+        if end < s.world.duration and not b.hold and b.stop is None:
             raise SceneError(f"{key}.file", f"the record ends at {end:.6g} s, before world.duration = "
                              f"{s.world.duration:.6g} s; shorten world.duration to at most {end:.6g} s, or set "
                              "base_motion.hold = true to keep the tank at rest after the record")

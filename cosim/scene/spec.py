@@ -508,7 +508,8 @@ class GroundMotion(Spec):
     the tank translates by the sum of the components' displacements, each read by
     ``fluid.motion.read_at2``, baseline-corrected and integrated exactly, all starting at
     t = 0. The records' times must cover ``world.duration`` unless ``hold`` lets the tank
-    rest after them; each must sample the water's first sloshing period at least 10
+    rest after them, or ``stop`` brings the tank to rest at one time (the free response
+    after the earthquake: ``fluid.motion.Stopped``); each must sample the water's first sloshing period at least 10
     times. ``cosim/refdata/earthquake_el_centro_1940`` ships El Centro 1940 (NS, EW, UP)."""
 
     TAG = ("kind", "ground_motion")
@@ -519,8 +520,15 @@ class GroundMotion(Spec):
                                     "end conditions, 6 is usual", lo=3, hi=12)
     hold: bool = flag(False, "true: each record's motion stops where its record ends, the tank at rest there "
                              "(false: a scene longer than a record is refused)")
+    stop: float = num(None, "the shaking ends here: the records' motion as given until `stop - fade`, then its "
+                            "velocity faded out by a half cosine, the tank at rest from `stop` on and the water "
+                            "ringing free", "s", lo=0, lo_open=True)
+    fade: float = num(0.5, "how long the tank takes to come to rest before `stop`", "s", lo=0, lo_open=True)
 
     def validate(self):
+        if self.stop is not None and self.stop <= self.fade:
+            raise SceneError("stop", f"= {self.stop:g} s leaves no room for the {self.fade:g} s fade before it; give "
+                             "a later stop, or a shorter fade")
         if not self.components:
             raise SceneError("components", "is empty; give at least one record, e.g. [{ file = \"ELC180.AT2\", "
                              "direction = [1.0, 0.0] }]")
