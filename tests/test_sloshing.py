@@ -72,6 +72,10 @@ def test_westergaard_quick():
     assert m["kp_base_face"] == pytest.approx(m["kp_base_exact"], rel=0.06)
     assert m["kp_out_of_phase_max_avg"] < 0.05  # the impulsive pressure follows the acceleration
     assert m["rms_avg_vs_exact"] > m["rms_face_vs_exact"]  # the face correction helps
+    # the stated target names plain Eq. 15; it stays in the record with its value beside the face's departure
+    assert r["stated"]["tolerances"] == {"rms_raw_vs_exact": 0.04, "rms_avg_vs_exact": 0.02}
+    assert r["stated"]["measured"]["rms_avg_vs_exact"] == m["rms_avg_vs_exact"]
+    assert "carried to the wall face" in r["departure"]["criterion"]
 
 
 def test_westergaard_3d_quick():
@@ -82,9 +86,9 @@ def test_westergaard_3d_quick():
     r = validation.run("westergaard-3d", quick=True)
     m = r["metrics"]
     assert r["passed"] and r["target"].startswith("quick: ")  # judged by its declared tolerances below
-    # the stated target (raw < 0.04, face < 0.02 RMS) is not met at this resolution, and says so
-    assert r["stated"]["tolerances"] == {"rms_raw_vs_exact": 0.04, "rms_face_vs_exact": 0.02}
-    assert r["stated"]["met"] is False and "departure" not in r
+    # the stated target (raw < 0.04, plain Eq. 15 < 0.02 RMS) is not met at this resolution, and says so
+    assert r["stated"]["tolerances"] == {"rms_raw_vs_exact": 0.04, "rms_avg_vs_exact": 0.02}
+    assert r["stated"]["met"] is False and "carried to the wall face" in r["departure"]["criterion"]
     assert r["particles"] > 5000 and m["width_m"] == 0.3
     assert m["rms_face_vs_exact"] < 0.07
     assert m["kp_base_face"] == pytest.approx(m["kp_base_exact"], rel=0.06)
@@ -163,6 +167,8 @@ def test_westergaard_3d_full():
     r = validation.run("westergaard-3d")
     m = r["metrics"]
     assert r["passed"] and m["rms_raw_vs_exact"] < 0.04 and m["rms_face_vs_exact"] < 0.02
+    # plain Eq. 15 (the stated target's): 0.035 measured, kept visible
+    assert r["stated"]["measured"]["rms_avg_vs_exact"] == m["rms_avg_vs_exact"]
     assert m["kp_base_face"] == pytest.approx(m["kp_base_exact"], rel=0.03)
     assert m["kp_face_side_vs_mid_max"] < 0.02 and r["particles"] == 44628
 

@@ -83,7 +83,10 @@ def test_cylinder_tank_quick():
     r = validation.run("cylinder-tank", quick=True)
     m = r["metrics"]
     assert r["passed"] and r["target"].startswith("quick: ")
-    assert r["stated"]["tolerances"] == {"rms_kpa_plane_vs_exact": 0.127}
+    # the stated target is against Petrov-Moiseev, itself 0.15 kPa RMS from the exact series: kept with its value
+    assert r["stated"]["tolerances"] == {"rms_kpa_plane_vs_petrov_moiseev": 0.127} and r["stated"]["met"] is False
+    assert r["departure"]["criterion"].startswith("the wall's hydrodynamic pressure on the x-z plane against the exact")
+    assert m["rms_kpa_petrov_moiseev_vs_exact"] > 0.127
     assert abs(m["p_base_rel_err"]) < 0.06 and m["rms_kpa_plane_vs_exact"] < 0.35
     assert r["particles"] > 5000
 

@@ -134,7 +134,17 @@ def _harmonic_fit(t: np.ndarray, y: np.ndarray, omega: float):
 #: the stated target of the westergaard row of docs/VALIDATION.md and its tolerances
 WESTERGAARD_TARGET = ("RMS of k_p against the exact solution < 0.04 raw, < 0.02 with the boundary-pressure "
                       "averaging of 001 Eq. 15 (the paper's own figures against the parabola)")
+WESTERGAARD_STATED = {"rms_raw_vs_exact": 0.04, "rms_avg_vs_exact": 0.02}
+#: what is judged: the second tolerance on Eq. 15's average carried to the wall face
 WESTERGAARD_TOLERANCES = {"rms_raw_vs_exact": 0.04, "rms_face_vs_exact": 0.02}
+WESTERGAARD_DEPARTURE = {
+    "criterion": "RMS of k_p against the exact solution < 0.04 raw, < 0.02 with the boundary-pressure averaging of "
+                 "001 Eq. 15 carried to the wall face (face_pressure); plain Eq. 15 reported beside it",
+    "why": "plain Eq. 15 reports the pressure at the mean position of the fluid it averages, about 1.1 dx into the "
+           "water, where the impulsive pressure is lower than at the wall by rho a0 x; the rigid wall's normal "
+           "momentum balance carries it to the face, where k_p is defined. The paper's own 0.02 is against the 7/8 "
+           "parabola, which lies 0.15 above the exact series at the base",
+    "source": "this run"}
 
 
 def westergaard_series_plot(profile: dict) -> dict:
@@ -338,8 +348,8 @@ def westergaard(quick: bool) -> dict:
     out = (run_westergaard(0.1, periods_skip=1, periods_fit=2, walls="adami") if quick
            else run_westergaard(0.025, walls="adami"))
     out["series"] = westergaard_series_plot(out.pop("profile"))
+    out["stated_tolerances"], out["departure"] = dict(WESTERGAARD_STATED), dict(WESTERGAARD_DEPARTURE)
     if quick:
-        out["stated_tolerances"] = out["tolerances"]
         out["tolerances"] = {"rms_face_vs_exact": 0.06, "kp_base_face_rel_err": 0.06, "kp_out_of_phase_max_avg": 0.05,
                              "face_below_avg_rms": True}
     return out
@@ -427,6 +437,7 @@ def westergaard_3d(quick: bool) -> dict:
         out = run_westergaard(0.05, dim=3, width=1.0, periods_skip=1, periods_fit=1, walls="adami")
         out["metrics"]["width_m"] = 1.0
         out["series"] = westergaard_3d_series_plot(out.pop("profile"))
+        out["stated_tolerances"], out["departure"] = dict(WESTERGAARD_STATED), dict(WESTERGAARD_DEPARTURE)
         return out
     settings = dict(c0=700.0, periods_skip=1, periods_fit=1)
     out = run_westergaard(0.1, dim=3, width=0.3, **settings)
@@ -440,7 +451,7 @@ def westergaard_3d(quick: bool) -> dict:
     plot["wall pressure"]["curves"]["2-D section (same settings), Eq. 15 at the face"] = {
         "x": section["profile"]["kp_face"], "y": section["profile"]["depth_m"], "style": "x--"}
     out["series"] = plot
-    out["stated_tolerances"] = dict(WESTERGAARD_TOLERANCES)
+    out["stated_tolerances"], out["departure"] = dict(WESTERGAARD_STATED), dict(WESTERGAARD_DEPARTURE)
     out["tolerances"] = {"rms_face_vs_exact": 0.07, "kp_base_face_rel_err": 0.06, "kp_out_of_phase_max_avg": 0.08,
                          "face_below_avg_rms": True, "kp_avg_vs_2d_max": 0.03, "kp_face_vs_2d_max": 0.05}
     return out

@@ -337,9 +337,17 @@ def inclined_wall_3d(quick: bool) -> dict:
 
 
 # ------------------------------------------------------------------------------------ cylinder
-#: the stated target of the cylinder-tank row of docs/VALIDATION.md
-CYLINDER_TARGET = ("RMS < 0.127 kPa (the paper's SPH error) against the exact series; the RMS against "
-                   "Petrov–Moiseev reported beside it")
+#: the stated target of the cylinder-tank row of docs/VALIDATION.md (issue 16's)
+CYLINDER_TARGET = ("wall pressure against Petrov–Moiseev (001 Eq. 20-21) around the circumference and with depth; "
+                   "RMS < 0.127 kPa (the paper's own SPH error)")
+CYLINDER_DEPARTURE = {
+    "criterion": "the wall's hydrodynamic pressure on the x-z plane against the exact incompressible series "
+                 "(cylinder_series), RMS < 0.127 kPa; round the wall against the same series' cos(phi); "
+                 "Petrov-Moiseev reported beside it",
+    "why": "Petrov-Moiseev (001 Eq. 20) is a Ritz approximation: on this tank at 0.5 g it lies 0.15 kPa RMS from "
+           "the exact series on the x-z plane (2.53 against 2.42 kPa at the bottom), more than the 0.127 kPa asked, "
+           "so the exact solution itself would miss the stated target",
+    "source": "this run"}
 
 
 def cylinder_series(z, h: float, R: float, terms: int = 400) -> np.ndarray:
@@ -403,6 +411,7 @@ def run_cylinder(dx: float, c0: float = 1430.0, periods_skip: int = 2, periods_f
     metrics = {"rms_kpa_plane_vs_exact": rms(s[plane], exact[plane]),
                "rms_kpa_plane_vs_petrov_moiseev": rms(s[plane], pm[plane]),
                "rms_kpa_wall_vs_exact": rms(s, exact),
+               "rms_kpa_wall_vs_petrov_moiseev": rms(s, pm),
                "rms_kpa_petrov_moiseev_vs_exact": rms(pm[plane], exact[plane]),
                "p_base_kpa": float(ours_plane[0] / 1000.0),
                "p_base_exact_kpa": float(p_exact[0] / 1000.0),
@@ -434,7 +443,7 @@ def cylinder_series_plot(profile: dict) -> dict:
 
 @case("cylinder-tank", "3-D cylinder D = 2 m, 1.0 m high, water 0.6 m, base acceleration 0.5 g sin(2 pi t / 0.02 s) "
       "(001 §3.3): the wall's hydrodynamic pressure on the x-z plane vs the exact series, RMS < 0.127 kPa; "
-      "Petrov-Moiseev beside it", target=CYLINDER_TARGET,
+      "Petrov-Moiseev (the stated reference) beside it", target=CYLINDER_TARGET,
       quick="dx = 0.1 m (6 rows over the depth), 1 + 2 periods: the x-z plane's RMS against the exact series "
             "below 0.35 kPa, the base pressure within 6 %, the out-of-phase part below 0.15 kPa (the row next to "
             "the free surface reads high by ~dx/h: the stated 0.127 kPa needs the full variant's dx = 0.05 m)")
@@ -475,9 +484,9 @@ def cylinder_tank_case(quick: bool) -> dict:
     m = r["metrics"]
     m["p_base_rel_err"] = m["p_base_kpa"] / m["p_base_exact_kpa"] - 1
     out = {"metrics": m, "tolerances": {"rms_kpa_plane_vs_exact": 0.127}, "particles": r["particles"],
-           "steps": r["steps"], "series": cylinder_series_plot(r["profile"])}
+           "steps": r["steps"], "series": cylinder_series_plot(r["profile"]),
+           "stated_tolerances": {"rms_kpa_plane_vs_petrov_moiseev": 0.127}, "departure": dict(CYLINDER_DEPARTURE)}
     if quick:
-        out["stated_tolerances"] = out["tolerances"]
         out["tolerances"] = {"rms_kpa_plane_vs_exact": 0.35, "p_base_rel_err": 0.06,
                              "out_of_phase_max_kpa": 0.15}
     return out
