@@ -10,7 +10,9 @@ For each run, one line per part:
   (:func:`cosim.validations.long_period.gauge_mode_basis`): the first mode, the next two
   antisymmetric modes (the rectangle's 3rd and 5th, whose frequencies 5.54 and 7.17
   rad/s bracket the forcing's 6.28), the two symmetric modes (second order: linear theory
-  has none) and what the fit leaves;
+  has none) and what the fit leaves; the 45 deg tank, which has no symmetry: its modes 1,
+  2-3 and 4-5 (:func:`cosim.validations.forced_sloshing.trapezoid_modes`, FE), its "first
+  three" in place of the antisymmetric ones below, and k there the deep-water w^2 / g;
 - each antisymmetric mode's free frequency and decay rate over the free sloshing
   (:func:`cosim.validations.long_period.free_decay`) against linear theory's frequency and
   the decay 2 nu k^2 of a free-surface wave (Lamb 1932 §348) under the artificial
@@ -44,7 +46,7 @@ def _modes(shape: str):
         return fs.rectangular_modes(tank["size"], tank["depth"])
     if shape == "cylinder":
         return fs.cylinder_modes(0.5 * tank["size"], tank["depth"])
-    raise SystemExit(f"{shape}: only the rectangular tank and the cylinder have closed-form modes here")
+    return fs.trapezoid_modes(tank["size"], tank["depth"], tank["beta"])
 
 
 def _damped(modes, j: int, w: float, s: float, a0: float, period: float, t_stop: float, t: np.ndarray) -> np.ndarray:
@@ -69,8 +71,9 @@ def split(run: dict) -> list[str]:
     peak = np.abs(gl).max()
     err = g - gl
     d = amp - amp_lin
-    parts = {"mode 1": basis[:, :1] @ d[:1], "antisymmetric 2-3": basis[:, 1:3] @ d[1:3],
-             "symmetric (2nd order)": basis[:, 3:] @ d[3:]}
+    sloped = a["shape"] == "inclined"                  # no symmetry: its first five modes
+    names = ("modes 2-3", "modes 4-5") if sloped else ("antisymmetric 2-3", "symmetric (2nd order)")
+    parts = {"mode 1": basis[:, :1] @ d[:1], names[0]: basis[:, 1:3] @ d[1:3], names[1]: basis[:, 3:] @ d[3:]}
     parts["left by the fit"] = err.T - sum(parts.values())
 
     def rel(e, sel):
@@ -90,7 +93,7 @@ def split(run: dict) -> list[str]:
         fitted.append(f"w {modes.omega[j]:.3f} -> {w:.3f} ({100 * (w / modes.omega[j] - 1):+.1f} %), "
                       f"s {s:.3f}/s (2 nu k^2 {2 * nu * modes.k[j] ** 2:.3f})")
         model[j] = _damped(modes, j, w, s, a0, T, ts, t) - eta0[j]
-    lines.append(f"{head}: free antisymmetric modes (nu = {nu:.4f} m^2/s): " + "; ".join(fitted))
+    lines.append(f"{head}: free {'first three' if sloped else 'antisymmetric'} modes (nu = {nu:.4f} m^2/s): " + "; ".join(fitted))
     left = err - (basis[:, :3] @ model).T
     lines.append(f"{head}: linear theory with those w, s: forced {rel(left, forced):.3f} "
                  f"(as run {rel(err, forced):.3f}), whole {rel(left, slice(None)):.3f} (as run {rel(err, slice(None)):.3f})")
