@@ -279,6 +279,26 @@ def test_a_stopped_record_leaves_the_rib_at_rest():
         assert np.abs(v).max() == 0.0 and np.abs(a).max() == 0.0
 
 
+def test_the_packaged_scene_is_the_full_variants_el_centro_ew_run():
+    """``cosim/validations/scenes/arch-rib.toml`` (``cosim run``-able) is
+    ``rib_scene(0.1, 25.0, ("ew",), stop=20.0)``, the full variant's EW run, its record
+    named relative to the file."""
+    import dataclasses
+    from pathlib import Path
+
+    from cosim.scene.toml_io import read_toml
+    from cosim.validations.arch_rib import rib_scene
+
+    def resolved(sc):
+        bm = sc.base_motion
+        comps = tuple(dataclasses.replace(c, file=str(Path(c.file).resolve())) for c in bm.components)
+        return dataclasses.replace(sc, base_motion=dataclasses.replace(bm, components=comps))
+
+    path = Path(__import__("cosim.validations", fromlist=["x"]).__file__).with_name("scenes") / "arch-rib.toml"
+    assert 'file = "../../refdata/earthquake_el_centro_1940/' in path.read_text()
+    assert resolved(read_toml(path)) == resolved(rib_scene(0.1, 25.0, ("ew",), stop=20.0))
+
+
 def test_arch_rib_quick_validation():
     """``cosim validate arch-rib --quick``: dx = 0.3 m, El Centro EW for 4 s at c0 = 140 m/s,
     then the water ringing free to 7 s."""

@@ -79,6 +79,22 @@ def test_the_cylinder_series_and_petrov_moiseev():
     assert cylinder_series([0.0], 0.6, 0.3)[0] < cylinder_series([0.0], 0.6, 1.0)[0]
 
 
+def test_the_cylinders_bottom_pressure_and_petrov_moiseevs_eq_21():
+    """The bottom's exact pressure meets the wall's at the corner, tends near the wall of a
+    wide tank to Westergaard's reservoir bottom, sum 2 (-1)^n / a_n^2 exp(-a_n s / h) at a
+    distance s from the wall, and vanishes on the axis; Eq. 21 meets Eq. 20 at the corner."""
+    from cosim.validations.tanks import cylinder_bottom_series, petrov_moiseev_bottom
+
+    assert cylinder_bottom_series([1.0], 0.6, 1.0)[0] == pytest.approx(cylinder_series([0.0], 0.6, 1.0)[0], rel=1e-12)
+    assert petrov_moiseev_bottom([1.0], 0.6, 1.0)[0] == pytest.approx(petrov_moiseev([0.0], 0.6, 1.0)[0], rel=1e-12)
+    assert cylinder_bottom_series([0.0], 0.6, 1.0)[0] == 0.0 and petrov_moiseev_bottom([0.0], 0.6, 1.0)[0] == 0.0
+    s = np.array([0.0, 0.3, 0.6, 1.2])
+    a = (2 * np.arange(400) + 1) * np.pi / 2
+    reservoir = (2 * (-1.0) ** np.arange(400) / a**2 * np.exp(-np.outer(s / 0.6, a))).sum(axis=1)
+    np.testing.assert_allclose(cylinder_bottom_series(1e3 - s, 0.6, 1e3), reservoir, atol=3e-4)
+    assert reservoir[0] == pytest.approx(0.742, abs=1e-3)  # Westergaard's k_p at the base
+
+
 def test_cylinder_tank_quick():
     r = validation.run("cylinder-tank", quick=True)
     m = r["metrics"]
@@ -87,6 +103,9 @@ def test_cylinder_tank_quick():
     assert r["stated"]["tolerances"] == {"rms_kpa_plane_vs_petrov_moiseev": 0.127} and r["stated"]["met"] is False
     assert r["departure"]["criterion"].startswith("the wall's hydrodynamic pressure on the x-z plane against the exact")
     assert m["rms_kpa_petrov_moiseev_vs_exact"] > 0.127
+    # the bottom along x (Eq. 21's place): ours against the exact series (measured 0.024 kPa at dx = 0.1 m), and
+    # Petrov-Moiseev's Eq. 21, 0.14 kPa from it
+    assert m["rms_kpa_bottom_vs_exact"] < 0.1 < m["rms_kpa_petrov_moiseev_bottom_vs_exact"]
     assert abs(m["p_base_rel_err"]) < 0.06 and m["rms_kpa_plane_vs_exact"] < 0.35
     assert r["particles"] > 5000
 
@@ -121,3 +140,30 @@ def test_inclined_wall_3d_full():
     m = r["metrics"]
     assert r["passed"] and all(m[f"rms_right_vs_chwang_{b:g}"] < 0.04 for b in ANGLES)
     assert m["kp_max_right_15"] > m["kp_max_right_30"] > m["kp_max_right_45"]
+
+
+@pytest.mark.parametrize("name", ["westergaard-3d", "cylinder-tank"])
+def test_the_packaged_scenes_are_the_full_variants_set_ups(name):
+    """``cosim/validations/scenes/{westergaard-3d,cylinder-tank}.toml`` (``cosim run``-able)
+    carry the full variants' tank, shaking, resolution, speed of sound, walls and periods:
+    the defaults of :func:`run_westergaard` / :func:`run_cylinder` and the cases' own
+    arguments (dx = 0.05 m; 1 + 1 and 2 + 3 periods; 40 samples a period)."""
+    import inspect
+    from pathlib import Path
+
+    from cosim.scene.toml_io import read_toml
+    from cosim.validations.sloshing import run_westergaard
+    from cosim.validations.tanks import run_cylinder
+
+    sc = read_toml(Path(validation.__file__).with_name("validations") / "scenes" / f"{name}.toml")
+    fn, periods = (run_westergaard, 2) if name == "westergaard-3d" else (run_cylinder, 5)
+    d = {k: p.default for k, p in inspect.signature(fn).parameters.items()}
+    if name == "westergaard-3d":
+        dims = (sc.domain.length, sc.domain.width, sc.domain.height, sc.domain.depth)
+        assert dims == (d["length"], d["width"], d["height"], d["H"])
+    else:
+        assert (sc.domain.diameter, sc.domain.height, sc.domain.depth) == (d["diameter"], d["height"], d["depth"])
+    assert sc.world.dim == 3 and sc.fluid.dx == 0.05 and sc.fluid.c0 == d["c0"] and sc.fluid.walls == "adami"
+    assert sc.base_motion.acceleration == pytest.approx(d["a0"], rel=1e-3) and sc.base_motion.period == d["Tp"]
+    assert sc.world.duration == pytest.approx(periods * d["Tp"])
+    assert sc.world.sample_every == pytest.approx(d["Tp"] / d["samples_per_period"])

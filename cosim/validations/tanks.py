@@ -378,6 +378,30 @@ def petrov_moiseev(z, h: float, R: float) -> np.ndarray:
     return math.sqrt(3) * (y - 0.5 * y**2) * math.tanh(math.sqrt(3) * R / h)
 
 
+def cylinder_bottom_series(r, h: float, R: float, terms: int = 400) -> np.ndarray:
+    """k_b(r) of the exact impulsive pressure on the bottom of the tank of
+    :func:`cylinder_series`: ``p = rho a0 h k_b(r) cos(phi')`` at radius ``r`` [m],
+
+        k_b(r) = sum_n 2 (-1)^n / alpha_n^2 I1(alpha_n r/h) / I1'(alpha_n R/h),
+
+    the same potential at z = 0 (each term of the series is I1(alpha_n r/h) cos(alpha_n
+    z/h) cos(phi'); k_b(R) = k(0)). With the exponentially scaled Bessel functions."""
+    from scipy.special import ive
+
+    n = np.arange(terms)
+    a = (2 * n + 1) * math.pi / 2
+    x = a * R / h
+    rr = np.asarray(r, float)[:, None]
+    ratio = ive(1, a * rr / h) / (0.5 * (ive(0, x) + ive(2, x))) * np.exp(a * (rr - R) / h)
+    return (2 * (-1.0) ** n / a**2 * ratio).sum(axis=1)
+
+
+def petrov_moiseev_bottom(r, h: float, R: float) -> np.ndarray:
+    """k_b(r) on the bottom by Petrov and Moiseev, 001_14936b82710365b2.txt Eq. 21:
+    ``(sqrt(3)/2) sinh(sqrt(3) r/h) / cosh(sqrt(3) R/h)`` (at r = R, Eq. 20 at the bottom)."""
+    return 0.5 * math.sqrt(3) * np.sinh(math.sqrt(3) * np.asarray(r, float) / h) / math.cosh(math.sqrt(3) * R / h)
+
+
 def run_cylinder(dx: float, c0: float = 1430.0, periods_skip: int = 2, periods_fit: int = 3,
                  samples_per_period: int = 40, a0: float = 0.5 * G, Tp: float = 0.02, diameter: float = 2.0,
                  depth: float = 0.6, height: float = 1.0, angles_deg=tuple(range(0, 181, 15)), **overrides) -> dict:
@@ -390,7 +414,9 @@ def run_cylinder(dx: float, c0: float = 1430.0, periods_skip: int = 2, periods_f
     pressure is odd about the y-z plane, even about x-z); the hydrodynamic amplitude
     ``s`` [Pa] against ``-rho a0 h k(z) cos(phi)`` (phi from +x: the wall at phi = 180 deg
     pushes the water). Judged on the x-z plane (phi = 0 and 180 deg: the paper's Fig. 17
-    profile); over the whole half wall reported."""
+    profile); over the whole half wall reported. The bottom's pressure along the x axis
+    (face points every dx, both sides of the axis) against :func:`cylinder_bottom_series`
+    and Petrov-Moiseev's Eq. 21 (:func:`petrov_moiseev_bottom`), reported."""
     f, shake, cfg = _shaken_tank(cylinder_tank(dx, diameter, depth, height), 3, dx, depth, c0, a0, Tp, **overrides)
     R = 0.5 * diameter
     z = dx * (0.5 + np.arange(int(math.floor(depth / dx + 1e-9))))
@@ -398,8 +424,12 @@ def run_cylinder(dx: float, c0: float = 1430.0, periods_skip: int = 2, periods_f
     P, Z = np.meshgrid(phi, z, indexing="ij")                     # (angles, rows)
     pts = np.stack([R * np.cos(P), R * np.sin(P), Z], -1).reshape(-1, 3)
     normals = np.stack([-np.cos(P), -np.sin(P), np.zeros_like(P)], -1).reshape(-1, 3)
-    s, c = _face_amplitudes(f, shake, cfg, {"wall": (pts, normals)}, Tp, samples_per_period, periods_skip,
-                            periods_fit)["wall"]
+    rb = dx * (0.5 + np.arange(int(math.floor(R / dx + 1e-9))))
+    xb = np.concatenate([-rb[::-1], rb])                          # along x, phi = 180 deg then 0
+    bottom = np.stack([xb, np.zeros_like(xb), np.zeros_like(xb)], -1)
+    amp = _face_amplitudes(f, shake, cfg, {"wall": (pts, normals), "bottom": (bottom, np.array([0.0, 0.0, 1.0]))},
+                           Tp, samples_per_period, periods_skip, periods_fit)
+    s, c = amp["wall"]
     s, c = s.reshape(P.shape), c.reshape(P.shape)
     scale = RHO0 * a0 * depth
     p_exact, p_pm = scale * cylinder_series(z, depth, R), scale * petrov_moiseev(z, depth, R)  # [Pa], at phi' = 0
@@ -407,12 +437,18 @@ def run_cylinder(dx: float, c0: float = 1430.0, periods_skip: int = 2, periods_f
     pm = -p_pm[None, :] * np.cos(P)
     plane = np.isclose(np.degrees(phi), 0.0) | np.isclose(np.degrees(phi), 180.0)
     rms = lambda a, r: float(np.sqrt(np.mean((a - r) ** 2)) / 1000.0)
+    sb = amp["bottom"][0]
+    pb_exact = -scale * np.sign(xb) * cylinder_bottom_series(np.abs(xb), depth, R)  # cos(phi) = sign(x)
+    pb_pm = -scale * np.sign(xb) * petrov_moiseev_bottom(np.abs(xb), depth, R)
     ours_plane = 0.5 * (s[np.isclose(np.degrees(phi), 180.0)][0] - s[np.isclose(np.degrees(phi), 0.0)][0])
     metrics = {"rms_kpa_plane_vs_exact": rms(s[plane], exact[plane]),
                "rms_kpa_plane_vs_petrov_moiseev": rms(s[plane], pm[plane]),
                "rms_kpa_wall_vs_exact": rms(s, exact),
                "rms_kpa_wall_vs_petrov_moiseev": rms(s, pm),
                "rms_kpa_petrov_moiseev_vs_exact": rms(pm[plane], exact[plane]),
+               "rms_kpa_bottom_vs_exact": rms(sb, pb_exact),
+               "rms_kpa_bottom_vs_petrov_moiseev": rms(sb, pb_pm),
+               "rms_kpa_petrov_moiseev_bottom_vs_exact": rms(pb_pm, pb_exact),
                "p_base_kpa": float(ours_plane[0] / 1000.0),
                "p_base_exact_kpa": float(p_exact[0] / 1000.0),
                "out_of_phase_max_kpa": float(np.abs(c).max() / 1000.0),
@@ -423,7 +459,10 @@ def run_cylinder(dx: float, c0: float = 1430.0, periods_skip: int = 2, periods_f
                         "p_petrov_moiseev_kpa": (p_pm / 1000.0).tolist(),
                         "angles_deg": np.degrees(phi).tolist(),
                         "p_round_kpa": (-s[:, 0] / 1000.0).tolist(),
-                        "p_round_exact_kpa": (-exact[:, 0] / 1000.0).tolist()}}
+                        "p_round_exact_kpa": (-exact[:, 0] / 1000.0).tolist(),
+                        "x_bottom_m": xb.tolist(), "p_bottom_kpa": (sb / 1000.0).tolist(),
+                        "p_bottom_exact_kpa": (pb_exact / 1000.0).tolist(),
+                        "p_bottom_petrov_moiseev_kpa": (pb_pm / 1000.0).tolist()}}
 
 
 def cylinder_series_plot(profile: dict) -> dict:
@@ -438,7 +477,14 @@ def cylinder_series_plot(profile: dict) -> dict:
             "wall pressure round the wall, lowest row": {
                 "xlabel": "angle from +x [deg]", "ylabel": "hydrodynamic pressure amplitude [kPa]",
                 "curves": {"exact series": {"x": profile["angles_deg"], "y": profile["p_round_exact_kpa"]},
-                           "SPH (ours)": {"x": profile["angles_deg"], "y": profile["p_round_kpa"], "style": "o-"}}}}
+                           "SPH (ours)": {"x": profile["angles_deg"], "y": profile["p_round_kpa"], "style": "o-"}}},
+            "bottom pressure along x": {
+                "xlabel": "x [m] (the shaking pushes the water at x = -R)",
+                "ylabel": "hydrodynamic pressure amplitude [kPa]",
+                "curves": {"exact series": {"x": profile["x_bottom_m"], "y": profile["p_bottom_exact_kpa"]},
+                           "Petrov-Moiseev (001 Eq. 21)": {"x": profile["x_bottom_m"],
+                                                          "y": profile["p_bottom_petrov_moiseev_kpa"], "style": "--"},
+                           "SPH (ours)": {"x": profile["x_bottom_m"], "y": profile["p_bottom_kpa"], "style": "o-"}}}}
 
 
 @case("cylinder-tank", "3-D cylinder D = 2 m, 1.0 m high, water 0.6 m, base acceleration 0.5 g sin(2 pi t / 0.02 s) "
