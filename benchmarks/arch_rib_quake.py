@@ -70,35 +70,47 @@ Centro EW (10 s, the symmetric part's peak; history file) dx = 0.2, 0.15, 0.1 m 
 0.989, 1.046, 1.094 Hz: 0.6 % above, 1.1 % below, 1.5 % above the rung mode.
 
 The depth study of 003 §4.3 (Table 5: the first spike against the water depth, 13-21 m)
-as one command, the mode rung free at each level, at the paper's c0 = 140 m/s; printing
-ours against Table 5, c0/(4L) and the column's continuum mode, with each run's CPU time
-per simulated second (``--json FILE`` keeps the rows; without ``--ringdown``: the first
-spike of the symmetric part under El Centro EW, standing in for the paper's Wenchuan)::
+as one command, the mode rung free at each of Table 5's ten levels, at the paper's
+c0 = 140 m/s; printing ours against Table 5, c0/(4L) and the column's continuum mode, with
+each run's CPU time per simulated second and its length (``--levels`` a subset; ``--json
+FILE`` keeps the rows; without ``--ringdown``: the first spike of the symmetric part under
+El Centro EW, standing in for the paper's Wenchuan)::
 
-    python benchmarks/arch_rib_quake.py --depth-study --ringdown --dx 0.1 --duration 4 --levels 13,15,17,19
-    python benchmarks/arch_rib_quake.py --depth-study --ringdown --dx 0.1 --duration 6 --levels 21
+    python benchmarks/arch_rib_quake.py --depth-study --ringdown --dx 0.1 --duration 4
+
+``--duration`` is the shortest run: ``ring_duration`` adds 2 s until the shortest of
+``ring_rib``'s four fit windows (1.5 s to the end less 1 s) holds 1.2 periods of the
+level's c0/(4L), which gives 4 s down to 19 m and 6 s at 20 and 21 m, whose longer columns
+ring slower. Over 4 s that window holds 1.23 periods at 19 m, and the four fits agree
+within 0.37 %; 1.13 at 20 m, 0.93 % (the first 4 s of its 6 s run); 1.03 at 21 m, 7 %
+(the mode itself read the same within 0.1 % at both lengths). Some 4,300 CPU-s in all.
 
 Measured so (2026-11-26, AMD EPYC, one thread, NUMBA_NUM_THREADS=1, 2 cores shared with
-two other jobs, loaded; the design level from the resolution study, 6 s; 21 m over 6 s,
-where 4 s hold only two cycles of its 0.68 Hz mode)::
+two other jobs, loaded; each level its own run, 4 s down to 19 m, 6 s at 20 and 21 m)::
 
     =====  =====  =======  =======  ======  ======  ========  =========  =======  =====
     depth  ours   Table 5  c0/(4L)  column  vs T5   vs c0/4L  vs column  CPU-s/s  CPU-s
     =====  =====  =======  =======  ======  ======  ========  =========  =======  =====
     13     1.363  1.40     1.398    1.416   -2.6 %  -2.5 %    -3.7 %     62.7     345
+    14     1.241  1.28     1.273    1.291   -3.1 %  -2.5 %    -3.9 %     62.5     343
     15     1.136  1.17     1.163    1.181   -2.9 %  -2.4 %    -3.8 %     64.3     354
-    15.56  1.078  1.11     1.107    1.124   -2.9 %  -2.7 %    -4.2 %     68.3     512
+    15.56  1.078  1.11     1.107    1.124   -2.9 %  -2.6 %    -4.1 %     71.6     394
+    16     1.041  1.06     1.066    1.083   -1.8 %  -2.3 %    -3.8 %     71.6     394
     17     0.958  0.97     0.978    0.994   -1.2 %  -2.0 %    -3.6 %     71.5     393
+    18     0.881  0.92     0.897    0.913   -4.2 %  -1.8 %    -3.5 %     75.4     414
     19     0.813  0.83     0.823    0.838   -2.1 %  -1.2 %    -3.0 %     77.9     429
+    20     0.748  0.74     0.753    0.767   +1.1 %  -0.6 %    -2.5 %     80.6     605
     21     0.685  0.67     0.684    0.697   +2.2 %  +0.1 %    -1.8 %     83.6     627
     =====  =====  =======  =======  ======  ======  ========  =========  =======  =====
 
 (Hz; 19,436-27,054 particles; CPU-s include the 1.5 s settling; the four windows' fits
-spread 0.09 %, 0.03 %, 0.37 %, 0.11 % at 15, 15.56, 19, 21 m.) At dx = 0.1 m ours meets Table 5 within 5 % at every
-level of the study's six (-2.9 to +2.2 %; at dx = 0.3 m under EW it missed by 5-21 %,
-history file), and lies 3.0-4.2 % under the column's continuum mode down to 19 m, 1.8 %
-at 21 m (the shortest column). The 21 m level over 4 s read the same 0.685 Hz, but its
-shorter windows' fits spread 7 %; over 6 s they agree within 0.11 %.
+spread 0.03-0.37 % at 14, 15, 15.56, 16, 18, 19, 20 and 21 m; the design level over 6 s,
+in the resolution study, read the same 1.078 Hz.) At dx = 0.1 m ours meets Table 5 within 5 % at all ten of its
+levels (-4.2 % at 18 m to +2.2 % at 21 m; at dx = 0.3 m under EW it missed by 5-21 %,
+history file); the largest, at 18 m, is where Table 5's 0.92 Hz lies 2.5 % above c0/(4L),
+off the trend of its neighbours, while ours lies 1.8 % under c0/(4L) as at the levels
+around it. Ours lies 3.0-4.1 % under the column's continuum mode down to 19 m, 2.5 % at
+20 m and 1.8 % at 21 m (the longest columns).
 
 The paper's cases without Wenchuan (003 §4.2: Tables 3-4, Figures 13-15), one run each at
 the design level (``--cases``; settled 1.5 s, spectra from 1 s on): the first spike of
@@ -254,24 +266,49 @@ def run(dx: float, duration: float, record: str, out: str, c0: float | None) -> 
     return res
 
 
+MIN_PERIODS = 1.2  # periods of c0/(4L) that ring_rib's shortest fit window must hold (ring_duration)
+
+
+def ring_duration(level: float, c0: float, base: float) -> float:
+    """The length [s] of the ring-down run at ``level`` [m] in the depth study: ``base``,
+    lengthened in 2 s steps until the shortest of ``ring_rib``'s four fit windows (from
+    PULSE_PERIOD + 0.5 s to the run's end less 1 s) holds :data:`MIN_PERIODS` periods of
+    the level's quarter wave c0/(4L). The deeper the water, the longer the column and the
+    slower its mode: at dx = 0.1 m and 4 s the window held 1.23 periods at 19 m and its
+    fits agreed within 0.37 %, 1.13 at 20 m: 0.93 %, 1.03 at 21 m: 7 % (the mode read the same);
+    with base 4 s at 140 m/s it gives 4 s down to 19 m, 6 s at 20 and 21 m."""
+    from cosim.errors import InputError
+    from cosim.validations.arch_rib import PULSE_PERIOD
+
+    if not base >= PULSE_PERIOD + 3.0:
+        raise InputError(f"ring_duration: base={base!r} s (--duration) leaves under 3 s of free ringing after the "
+                         f"{PULSE_PERIOD} s pulse; give at least {PULSE_PERIOD + 3.0} s")
+    d = base
+    while (d - PULSE_PERIOD - 1.5) * quarter_wave(c0, level) < MIN_PERIODS:
+        d += 2.0
+    return d
+
+
 def depth_study(dx: float, duration: float, c0: float, record: str, levels=None, ringdown: bool = False) -> list[dict]:
     """One run per level of Table 5: ours, Table 5's and the quarter wave's first spike
-    (``ringdown``: the mode rung by a vertical pulse, ``cosim.validations.arch_rib.ring_rib``)."""
+    (``ringdown``: the mode rung by a vertical pulse, ``cosim.validations.arch_rib.ring_rib``,
+    over ``ring_duration(level, c0, duration)`` [s]; under El Centro over ``duration``)."""
     from cosim.validations.arch_rib import ring_rib, run_rib, stratified_quarter_wave
 
     t5 = {float(r["depth_m"]): float(r["wave_frequency_Hz"])
           for r in _paper_table("table5_wave_frequency_vs_depth.csv")}
     rows = []
     for d in (levels or sorted(t5)):
+        run_s = ring_duration(d, c0, duration) if ringdown else duration
         if ringdown:
-            r = ring_rib(dx, duration, level=d, c0=c0)
+            r = ring_rib(dx, run_s, level=d, c0=c0)
             f1, qw, extra = r["mode_Hz"], r["quarter_wave_Hz"], {"mode_std_Hz": r["mode_std_Hz"],
                                                                   "mode_window_spread": r["mode_window_spread"]}
         else:
-            r = run_rib(dx, duration, tuple(record.split("+")), level=d, c0=c0)
+            r = run_rib(dx, run_s, tuple(record.split("+")), level=d, c0=c0)
             f1, qw, extra = r["free_spikes_Hz"][0], r["quarter_wave_Hz"][0], {"all_points_first_spike_Hz":
                                                                               r["spikes_Hz"][0]}
-        rows.append({"depth_m": d, "ours_Hz": f1, **extra,
+        rows.append({"depth_m": d, "duration_s": run_s, "ours_Hz": f1, **extra,
                      "table5_Hz": t5.get(d), "quarter_wave_Hz": qw,
                      "ours_vs_table5": None if d not in t5 else round(f1 / t5[d] - 1, 4),
                      "ours_vs_quarter_wave": round(f1 / qw - 1, 4), "particles": r["particles"], "steps": r["steps"],
@@ -280,13 +317,13 @@ def depth_study(dx: float, duration: float, c0: float, record: str, levels=None,
         rows[-1]["ours_vs_stratified"] = round(f1 / rows[-1]["stratified_Hz"] - 1, 4)
         print(json.dumps(rows[-1]), flush=True)
     print(f"\n{'depth':>6} {'ours':>7} {'Table 5':>8} {'c0/4L':>7} {'column':>7} {'vs T5':>7} {'vs c0/4L':>8} "
-          f"{'vs column':>9} {'CPU-s/s':>8}")
+          f"{'vs column':>9} {'CPU-s/s':>8} {'run [s]':>7}")
     for x in rows:
         t5s = f"{x['table5_Hz']:8.3f}" if x["table5_Hz"] else f"{'-':>8}"
         vs = f"{100 * x['ours_vs_table5']:6.1f}%" if x["ours_vs_table5"] is not None else f"{'-':>7}"
         print(f"{x['depth_m']:6.2f} {x['ours_Hz']:7.3f} {t5s} {x['quarter_wave_Hz']:7.3f} {x['stratified_Hz']:7.3f} {vs} "
               f"{100 * x['ours_vs_quarter_wave']:7.1f}% {100 * x['ours_vs_stratified']:8.1f}% "
-              f"{x['cpu_s_per_simulated_s']:8.1f}")
+              f"{x['cpu_s_per_simulated_s']:8.1f} {x['duration_s']:7g}")
     return rows
 
 
@@ -453,7 +490,8 @@ def main() -> None:
     ap.add_argument("--predict", action="store_true", help="the quarter-wave table only (no run)")
     ap.add_argument("--dx", type=float, default=0.2, help="particle spacing [m]")
     ap.add_argument("--duration", type=float, default=None,
-                    help="seconds of the record [s] (default 20; with --ringdown 6: the pulse and the free ringing)")
+                    help="seconds of the record [s] (default 20; with --ringdown 6: the pulse and the free ringing; "
+                         "--depth-study --ringdown: the shortest, longer where the level's mode is slow)")
     ap.add_argument("--ringdown", action="store_true",
                     help="--convergence / --depth-study: the mode rung by one vertical pulse instead of El Centro")
     ap.add_argument("--record", default="ew", choices=["ew", "ns", "up", "ew+up", "ns+up"],
