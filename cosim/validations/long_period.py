@@ -447,12 +447,13 @@ def long_period(quick: bool) -> dict:
     2-D section: at 13 rows it meets the three targets (forced 0.090, w1 -0.35 %, p 0.020;
     the section's 0.094 / -0.84 % / 0.020 at dx 0.1 m, 0.042 / +0.37 % / 0.012 at 0.05 m),
     as the 3-D rectangle does at 1/13 m (and, as it, misses forced at 10 rows); from 8 to 13
-    rows forced falls 2.1 times and p 1.7 times; its first mode does not run fast as the rectangle's; its forced error lies
-    across the modes (1: 0.032, 2-3: 0.030, 4-5: 0.043, beyond the five-mode fit 0.070:
-    ``benchmarks/long_period_modes.py``); its largest run-up reading is the same drop at
-    the vertical wall (-0.112 m at 2.12 s, linear -0.059), its rises 0.054 and 0.063 m at
-    the vertical wall and the slope against linear 0.054 and 0.064. Why ours departs from
-    linear theory (``benchmarks/long_period_modes.py``): the shorter modes run slow and are damped as a
+    rows forced falls 2.1 times and p 1.7 times; its first mode does not run fast as the
+    rectangle's; its forced error lies across the modes (1: 0.032, 2-3: 0.030, 4-5: 0.043,
+    beyond the five-mode fit 0.070: ``benchmarks/long_period_modes.py``); its largest
+    run-up reading is the same drop at the vertical wall (-0.112 m at 2.12 s, linear
+    -0.059), its rises 0.054 and 0.063 m at the vertical wall and the slope against linear
+    0.054 and 0.064. Why ours departs from linear theory
+    (``benchmarks/long_period_modes.py``): the shorter modes run slow and are damped as a
     free-surface wave is by the artificial viscosity's equivalent nu = alpha h c0 /
     (2 (d + 2)) (decay 2 nu k^2, Lamb 1932 §348); the cylinder's third mode lies 1.9 %
     above the forcing, so linear theory, undamped, grows it to k a = 0.41, outside its own
