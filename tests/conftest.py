@@ -1,6 +1,14 @@
-"""Shared test markers, and the property tests' profile."""
+"""Shared test markers, the property tests' profile, and the worker processes' threads."""
 
 import os
+
+# The test command runs the tests in two worker processes (pytest-xdist, pyproject's addopts),
+# which share the cores: OpenMP's idle threads must then sleep instead of spinning, or one
+# worker's parallel loops take the cores the other needs (four jobs on 2 cores: a 2-thread
+# step 11 times slower than 1 thread with spinning, 0.86 of it passive;
+# docs/benchmarks/fluid_throughput_history.md). Set before numba starts its threads.
+if os.environ.get("PYTEST_XDIST_WORKER"):
+    os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
 
 import pytest
 from hypothesis import settings
