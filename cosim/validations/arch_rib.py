@@ -27,11 +27,15 @@ pressure (mean removed, Hann window, from ``skip`` on), as the paper's Figure 15
 all points; the first spike is the lowest-frequency peak above 0.3 Hz reaching a fifth of
 the highest, located by a parabola through the zero-padded spectrum's top three bins.
 
-The water's own modes are read on the part of the pressure the record does not force
-(:func:`run_rib`): under a horizontal record, the symmetric part (pR + pL)/2 of each pair
-(a rib symmetric about x = 0 is forced antisymmetrically); the spectrum of all points
-also carries the record's frequencies (El Centro's energy lies at 0.5-2 Hz, where the
-mode is), so its first spike is the record's as often as the water's. The runs start
+The water's own modes are read where nothing forces them: after the record, the rib
+brought to rest (``GroundMotion.stop``), the pressures ring free as damped modes
+(:func:`run_rib` with ``stop``, :func:`damped_mode`). The spectrum of all points during a
+record also carries the record's frequencies (El Centro's energy lies at 0.5-2 Hz, where
+the mode is), so its first spike is the record's as often as the water's; the part the
+record does not force (under a horizontal record the symmetric part (pR + pL)/2 of each
+pair: a rib symmetric about x = 0 is forced antisymmetrically) holds, late in a long
+record, mostly a small image of the forced response (``benchmarks/arch_rib_drift.py``).
+Both are reported beside the ringing. The runs start
 from a settled state: a hydrostatic start rings the acoustic mode in both legs at once
 (40 kPa at dx = 0.3 m against some 15 kPa of response to the record), which is likely why
 the paper finds the same 1.125 Hz under all six records.
