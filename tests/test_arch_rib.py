@@ -288,13 +288,14 @@ def test_the_packaged_scene_is_the_full_variants_el_centro_ew_run():
 
     from cosim.scene.toml_io import read_toml
     from cosim.validations.arch_rib import rib_scene
+    from cosim.validations.trade import SCENES
 
     def resolved(sc):
         bm = sc.base_motion
         comps = tuple(dataclasses.replace(c, file=str(Path(c.file).resolve())) for c in bm.components)
         return dataclasses.replace(sc, base_motion=dataclasses.replace(bm, components=comps))
 
-    path = Path(__import__("cosim.validations", fromlist=["x"]).__file__).with_name("scenes") / "arch-rib.toml"
+    path = SCENES / "arch-rib.toml"
     assert 'file = "../../refdata/earthquake_el_centro_1940/' in path.read_text()
     assert resolved(read_toml(path)) == resolved(rib_scene(0.1, 25.0, ("ew",), stop=20.0))
 

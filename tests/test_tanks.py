@@ -149,13 +149,13 @@ def test_the_packaged_scenes_are_the_full_variants_set_ups(name):
     the defaults of :func:`run_westergaard` / :func:`run_cylinder` and the cases' own
     arguments (dx = 0.05 m; 1 + 1 and 2 + 3 periods; 40 samples a period)."""
     import inspect
-    from pathlib import Path
 
     from cosim.scene.toml_io import read_toml
     from cosim.validations.sloshing import run_westergaard
     from cosim.validations.tanks import run_cylinder
+    from cosim.validations.trade import SCENES
 
-    sc = read_toml(Path(validation.__file__).with_name("validations") / "scenes" / f"{name}.toml")
+    sc = read_toml(SCENES / f"{name}.toml")
     fn, periods = (run_westergaard, 2) if name == "westergaard-3d" else (run_cylinder, 5)
     d = {k: p.default for k, p in inspect.signature(fn).parameters.items()}
     if name == "westergaard-3d":
