@@ -271,6 +271,17 @@ def damped_mode(t: np.ndarray, y: np.ndarray, t0: float, t1: float | None = None
             "residual": float(np.sqrt(np.mean(fit.fun**2)) / np.std(y - y.mean(axis=0)))}
 
 
+def windowed_mode(t: np.ndarray, y: np.ndarray, t0: float, end: float) -> tuple[dict, list[float]]:
+    """:func:`damped_mode` of ``y`` from ``t0`` [s] to the end, and the frequencies [Hz] of
+    the fits over four windows: from ``t0`` and ``t0`` + 0.5 s, to the end and to ``end``
+    - 1 s (the first is the whole): how much the reading depends on where it starts and
+    stops."""
+    fit = damped_mode(t, y, t0)
+    others = [damped_mode(t, y, a, b, fit["f_Hz"])["f_Hz"] for a, b in
+              ((t0 + 0.5, None), (t0, end - 1.0), (t0 + 0.5, end - 1.0))]
+    return fit, [fit["f_Hz"], *others]
+
+
 def ring_rib(dx: float, duration: float = 5.0, level: float = LEVEL, c0: float = C0_PAPER, settle: float = 1.5,
              pulse: float = 0.02) -> dict:
     """The water's first symmetric mode rung by one vertical pulse (:func:`rib_scene` with
@@ -290,10 +301,7 @@ def ring_rib(dx: float, duration: float = 5.0, level: float = LEVEL, c0: float =
     r, p = _run_b_points(rib_scene(dx, duration, (), level, c0, settle=settle, pulse=pulse))
     t = r.t
     sym = (p[:, :9] + p[:, 9:]) / 2
-    fit = damped_mode(t, sym, PULSE_PERIOD)
-    others = [damped_mode(t, sym, a, b, fit["f_Hz"])["f_Hz"] for a, b in
-              ((PULSE_PERIOD + 0.5, None), (PULSE_PERIOD, duration - 1.0), (PULSE_PERIOD + 0.5, duration - 1.0))]
-    fs = [fit["f_Hz"], *others]
+    fit, fs = windowed_mode(t, sym, PULSE_PERIOD, duration)
     s = r.summary
     c0_run = s["speed_of_sound_m_s"]
     qw = quarter_wave(c0_run, level)
@@ -381,10 +389,8 @@ def run_rib(dx: float, duration: float, records=("ew",), level: float = LEVEL, c
 
 def _ringing(t: np.ndarray, p: np.ndarray, stop: float) -> dict:
     """The free ringing of B1-B18 after the record's ``stop`` [s] (:func:`run_rib`)."""
-    fit = damped_mode(t, p, stop)
     end = float(t[-1])
-    fs = [fit["f_Hz"]] + [damped_mode(t, p, a, b, fit["f_Hz"])["f_Hz"]
-                          for a, b in ((stop + 0.5, None), (stop, end - 1.0), (stop + 0.5, end - 1.0))]
+    fit, fs = windowed_mode(t, p, stop, end)
     fr, ar = spectrum(t, p, stop)
     sp = spikes(fr, ar)
     return {"ringing_window_s": [stop, end], "ringing_Hz": round(fit["f_Hz"], 5),

@@ -350,6 +350,17 @@ CYLINDER_DEPARTURE = {
     "source": "this run"}
 
 
+def _cylinder_terms(h: float, R: float, terms: int):
+    """alpha_n = (2n + 1) pi / 2, 2 (-1)^n / alpha_n^2 and the exponentially scaled
+    I1'(alpha_n R/h) = (I0 + I2)/2 of the exact series (:func:`cylinder_series`)."""
+    from scipy.special import ive
+
+    n = np.arange(terms)
+    a = (2 * n + 1) * math.pi / 2
+    x = a * R / h
+    return a, 2 * (-1.0) ** n / a**2, 0.5 * (ive(0, x) + ive(2, x))
+
+
 def cylinder_series(z, h: float, R: float, terms: int = 400) -> np.ndarray:
     """k(z) of the exact impulsive pressure on the wall of a rigid vertical cylinder of
     radius ``R`` [m] with water ``h`` [m] under a horizontal base acceleration a0:
@@ -363,10 +374,8 @@ def cylinder_series(z, h: float, R: float, terms: int = 400) -> np.ndarray:
     from the exponentially scaled Bessel functions (I1' = (I0 + I2)/2), finite for any R/h."""
     from scipy.special import ive
 
-    n = np.arange(terms)
-    a = (2 * n + 1) * math.pi / 2
-    x = a * R / h
-    coef = 2 * (-1.0) ** n / a**2 * (2 * ive(1, x) / (ive(0, x) + ive(2, x)))
+    a, c, i1p = _cylinder_terms(h, R, terms)
+    coef = c * ive(1, a * R / h) / i1p
     return (coef[None, :] * np.cos(np.outer(np.asarray(z, float) / h, a))).sum(axis=1)
 
 
@@ -388,12 +397,9 @@ def cylinder_bottom_series(r, h: float, R: float, terms: int = 400) -> np.ndarra
     z/h) cos(phi'); k_b(R) = k(0)). With the exponentially scaled Bessel functions."""
     from scipy.special import ive
 
-    n = np.arange(terms)
-    a = (2 * n + 1) * math.pi / 2
-    x = a * R / h
+    a, c, i1p = _cylinder_terms(h, R, terms)
     rr = np.asarray(r, float)[:, None]
-    ratio = ive(1, a * rr / h) / (0.5 * (ive(0, x) + ive(2, x))) * np.exp(a * (rr - R) / h)
-    return (2 * (-1.0) ** n / a**2 * ratio).sum(axis=1)
+    return (c * ive(1, a * rr / h) / i1p * np.exp(a * (rr - R) / h)).sum(axis=1)
 
 
 def petrov_moiseev_bottom(r, h: float, R: float) -> np.ndarray:
