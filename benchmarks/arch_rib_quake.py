@@ -151,10 +151,6 @@ criterion, read on all points, fails by 12-56 % at this dx, and by 12-18 % on th
 The paper finds its spike between the bridge's 2nd and 4th modes, 0.94 and 1.66 Hz, and
 so no resonance; at dx = 0.3 m ours lies on the 2nd (0.925-0.99 Hz, within 5 %), at
 0.07 m (1.106 Hz, the resolution study) 18 % above it, where the paper's is 19 % above.
-At dx = 0.2 m (``--cases ew,ns --dx 0.2``: 8,646 particles, no water lost, 144-149 CPU-s
-a case, 15.2-15.6 CPU-s per simulated second): EW free part 0.987 Hz, NS 0.962 Hz
-(-12.3 %, -14.5 % of 1.125 Hz), all points 0.512 and 0.494 Hz (the record's), the pairs
--0.98 .. -1.00 and -0.93 .. -0.99 (opposite).
 
 After each record (``--cases ew,ns,up,ew+up,ns+up --dx 0.2 --duration 12 --stop 8
 --figures DIR``: each record to 8 s, the rib at rest from 8 s, the water ringing to 12 s,
