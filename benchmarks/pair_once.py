@@ -153,6 +153,13 @@ def finish(S, n, prm, Fc, acc_b, out, acc):
         acc[a, 2] = Fc * acc_b[4, a] + fa * prm[P_G + 2]
 
 
+def check_terms(prm) -> None:
+    """Stop unless ``prm`` switches on the 3-D dam break's terms only (the prototypes' own)."""
+    for p, v in ((P_NU4, 0.0), (P_XSPH, 0.0), (P_RENORM, 0.0), (P_FADE, 0.0), (P_F32, 0.0), (P_AWALL, 1.0)):
+        if prm[p] != v:
+            raise SystemExit("the prototype covers the 3-D dam break's terms only")
+
+
 def main(argv=None) -> None:
     import sys
 
@@ -187,9 +194,7 @@ def main(argv=None) -> None:
     finally:
         eq.interact = real
     S, start, tab, lo, cell, nx, ny, nz, kernel, prm, out, acc, xs, G = seen["args"][:14]
-    for p, v in ((P_NU4, 0.0), (P_XSPH, 0.0), (P_RENORM, 0.0), (P_FADE, 0.0), (P_F32, 0.0), (P_AWALL, 1.0)):
-        if prm[p] != v:
-            raise SystemExit("the prototype covers the 3-D dam break's terms only")
+    check_terms(prm)
     n = acc.shape[0]
     Fc = grad_scale(kernel, prm[P_AD], prm[P_H])
     ref_out, ref_acc = np.zeros_like(out), np.zeros_like(acc)

@@ -286,10 +286,11 @@ def _fill(pos, lo, inv_cell, nx, ny, nz, start, reach, r2max, offsets, out):
                         c += 1
 
 
-def neighbour_pairs(pos: np.ndarray, radius: float, lo=None, hi=None, reach: int = 1) -> np.ndarray:
-    """All ordered pairs (i, j), i != j, closer than ``radius`` [m], in the caller's indexing,
-    found with the cell list (for tests and diagnostics; the solver's loops traverse the
-    cells directly). Returns an (M, 2) int64 array sorted lexicographically."""
+def neighbour_lists(pos: np.ndarray, radius: float, lo=None, hi=None, reach: int = 1):
+    """Every particle's neighbours closer than ``radius`` [m] (itself left out), found with
+    the cell list, as compressed rows in the cell order: returns ``(perm, offsets, idx)``,
+    where the neighbours of particle ``perm[i]`` are ``perm[idx[offsets[i]:offsets[i + 1]]]``
+    (``idx`` indexes ``pos[perm]``). Both passes (count, fill) run in parallel."""
     pos = np.ascontiguousarray(pos, np.float64)
     lo = pos.min(axis=0) if lo is None else np.asarray(lo, np.float64)
     hi = pos.max(axis=0) if hi is None else np.asarray(hi, np.float64)
@@ -303,8 +304,16 @@ def neighbour_pairs(pos: np.ndarray, radius: float, lo=None, hi=None, reach: int
     _count(sp, grid.lo, 1.0 / grid.cell, nx, ny, nz, start, reach, radius * radius, counts)
     offsets = np.zeros(len(sp) + 1, np.int64)
     np.cumsum(counts, out=offsets[1:])
-    out = np.empty(offsets[-1], np.int64)
-    _fill(sp, grid.lo, 1.0 / grid.cell, nx, ny, nz, start, reach, radius * radius, offsets, out)
-    i = np.repeat(np.arange(len(sp)), counts)
-    pairs = np.stack([perm[i], perm[out]], axis=1)
+    idx = np.empty(offsets[-1], np.int64)
+    _fill(sp, grid.lo, 1.0 / grid.cell, nx, ny, nz, start, reach, radius * radius, offsets, idx)
+    return perm, offsets, idx
+
+
+def neighbour_pairs(pos: np.ndarray, radius: float, lo=None, hi=None, reach: int = 1) -> np.ndarray:
+    """All ordered pairs (i, j), i != j, closer than ``radius`` [m], in the caller's indexing,
+    found with the cell list (for tests and diagnostics; the solver's loops traverse the
+    cells directly). Returns an (M, 2) int64 array sorted lexicographically."""
+    perm, offsets, idx = neighbour_lists(pos, radius, lo, hi, reach)
+    i = np.repeat(np.arange(len(perm)), np.diff(offsets))
+    pairs = np.stack([perm[i], perm[idx]], axis=1)
     return pairs[np.lexsort((pairs[:, 1], pairs[:, 0]))]
