@@ -57,13 +57,13 @@ division, one square root), 22.7 GFLOP/s: 27 % of two AVX-512 FMAs per cycle (83
 55 % of what Zen 4 issues (one, 41.5 GFLOP/s); on the pairs within 2h, 9 % and 18 %.
 ``--precision float32`` (FluidConfig.precision) puts 16 pairs in a pass: see
 fluid.equations.interact for why that gives 1.22x and not 2. The ratio to DualSPHysics 5.4's
-CPU code on the same particles, same step count, one thread, per CPU-second (this machine,
-2026-11-26, loaded): 3-D 2.54x (float32 3.19x), 2-D 4.2x; AVX2 Zen 3 (developers' notes):
-3-D 2.0x, 2-D 3.3x. Per simulated second what counts is also the step: with the density
-diffusion's limit at Morris' factor 2.75 below its edge our Verlet step was 2.4 times
-DualSPHysics' shorter (1.06x in 3-D, 1.74x in 2-D); at the margin 1.5 it now keeps
-(fluid.integrator.VERLET_MARGIN, benchmarks/verlet_diffusion_margin.py) 1.3 times shorter:
-1.94x and 3.2x (docs/benchmarks/fluid_throughput_history.md).
+CPU code (its release build) on the same particles, same step count, this machine quiet
+(2026-11-26), best of three alternating runs: 3-D 2.60x at one thread, 2.40x at two
+(float32 3.24x at one), 2-D 4.53x and 4.68x; our code compiled for AVX2 on the same cores
+3-D 2.12x, 2-D 3.87x (the developers' AVX2 Zen 3: 3-D 2.0x, 2-D 3.3x). Per simulated
+second our Verlet step (5.85e-5 s in 3-D, at fluid.integrator.VERLET_MARGIN) is 1.3 times
+shorter than DualSPHysics': 3-D 1.99x and 1.84x, 2-D 3.46x and 3.57x
+(docs/benchmarks/fluid_throughput_history.md).
 Laminar viscosity adds 7 % to a 2-D step, XSPH 8 %, both 14 %, the renormalised
 diffusion (``diffusion="antuono"``) 70 % (a second pair loop), nothing when off.
 ``--walls adami`` (tank-wall densities from the fluid's pressure, fluid.wall_density):
