@@ -361,7 +361,8 @@ class Fluid:
         else:
             lo, hi = np.asarray(c.domain_lo, float), np.asarray(c.domain_hi, float)
         # reach 1 (cells of the support 2h): fewer, longer contiguous rows vectorise
-        # better; reach 2 scans 30 % fewer pairs but measured 1.4 times slower
+        # better; reach 2 visits 9 % fewer candidates in 3-D at the same speed
+        # (docs/benchmarks/fluid_throughput_history.md)
         self._grid = Grid.covering(lo, hi, 2.0 * c.h, reach=1)
         out = ~np.all((pos >= lo) & (pos < hi), axis=1)
         if out.any():
