@@ -1,7 +1,7 @@
 """Run by tests/test_fluid_cuda.py in a process of its own with NUMBA_ENABLE_CUDASIM=1 (the
 flag must be set before numba.cuda is first imported, and must not reach the other tests):
-steps small cases on the CPU path and on the GPU path (numba's CUDA simulator) side by side
-and saves what the tests compare into an .npz file.
+steps small cases on the CPU path and on the GPU path (numba's CUDA simulator, or the GPU
+without the flag) side by side and saves what the tests compare into an .npz file.
 
 ``python tests/cuda_sim_worker.py OUT.npz``. First, with numba.cuda made unimportable, it
 runs the CPU path and records the error ``FluidConfig(device="cuda")`` gives (the project
@@ -234,7 +234,7 @@ def scene_run(out: str) -> None:
 def main(out: str) -> None:
     absent_check()
     del sys.modules["numba.cuda"]
-    from numba import cuda  # noqa: F401  (the simulator: NUMBA_ENABLE_CUDASIM=1 in the environment)
+    from numba import cuda  # noqa: F401  (the simulator where NUMBA_ENABLE_CUDASIM=1, else the GPU)
 
     from fluid.cuda import simulator
     OUT["simulator"] = np.array(simulator())

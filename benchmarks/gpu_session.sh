@@ -1,0 +1,47 @@
+#!/bin/bash
+# Issue 20's GPU measurements in one call of the device tool, for a session lent a GPU (the
+# device image has numba, numba-cuda, numpy, scipy, pytest and hypothesis; nothing else this
+# needs). From the repository root:
+#
+#     run(command="bash benchmarks/gpu_session.sh", timeout_s=560)
+#
+# About 8 minutes, each part under its own timeout so that one failure leaves the others'
+# figures; everything goes to $OUT/gpu_session.log. In order:
+#   1. the machine: GPU, driver, CPU, numba and numba-cuda versions;
+#   2. tests/test_fluid_cuda.py on the GPU (COSIM_CUDA_TESTS=gpu): the GPU path against the
+#      CPU path to round-off, as CI checks it on the simulator (the coupled scene needs
+#      MuJoCo, which the image lacks: deselected);
+#   3. benchmarks/fluid_throughput.py --device cuda: the 3-D dam break of the CPU figures
+#      (107 012 particles, 200 steps), then 3-D and 2-D at about 1, 4 and 16 M particles;
+#   4. the CPU path on the same machine (all its cores): the 3-D dam break and ~1 M.
+# Read the log for particle_steps_per_s and bytes_per_particle of each size; the history
+# (docs/benchmarks/fluid_throughput_history.md, "The GPU path") says what to compare.
+set -u
+export PYTHONPATH=$PWD PYTHONUNBUFFERED=1
+OUTDIR=${OUT:-/tmp}
+exec > >(tee "$OUTDIR/gpu_session.log") 2>&1
+part() { echo "=== $1 ($(date -u +%T))"; }
+PY=python3
+TP=benchmarks/fluid_throughput.py
+
+part "machine"
+nvidia-smi --query-gpu=name,memory.total,driver_version,clocks.max.sm --format=csv,noheader
+lscpu | grep -E "Model name|^CPU\(s\)"
+$PY -c "import numba, numba_cuda; print('numba', numba.__version__, 'numba-cuda', numba_cuda.__version__)"
+
+part "the GPU path against the CPU path, on the GPU"
+COSIM_CUDA_TESTS=gpu timeout 200 $PY -m pytest -q -n 0 -p no:cacheprovider tests/test_fluid_cuda.py \
+    -k "not coupled_scene" 2>&1 | tail -25
+
+part "GPU: the 3-D dam break of the CPU figures"
+timeout 90 $PY $TP --device cuda --case 3d --dp 0.017 --steps 200
+
+# particles ~ 107 012 (0.017 / dp)^3 in 3-D, 22 008 (0.01 / dp)^2 in 2-D
+part "GPU: 3-D scaling, ~1, 4, 16 M particles"
+timeout 150 $PY $TP --device cuda --case 3d --dp 0.008 --dp 0.00505 --dp 0.00318 --steps 20
+part "GPU: 2-D scaling, ~1, 4, 16 M particles"
+timeout 100 $PY $TP --device cuda --case 2d --dp 0.00148 --dp 0.00074 --dp 0.00037 --steps 20
+
+part "CPU path, same machine, all cores"
+timeout 120 $PY $TP --device cpu --case 3d --dp 0.017 --dp 0.008 --steps 10
+part "done"
