@@ -15,27 +15,28 @@ The machine may be shared: ``cpu_s_per_wall_s`` below the thread count says so, 
 figure to compare between runs with ``--threads 1`` (alternate the runs being compared).
 ``--threads N`` sets NUMBA_NUM_THREADS, so that no idle worker thread spins on the CPU.
 
-Measured 2026-11-25 on this machine: AMD EPYC (Zen 4), AVX-512 (8 float64 or 16 float32
-lanes; one 512-bit multiply or FMA issued per cycle, 2.6 GHz), 2 cores, loaded (load
-average 19-27 from other jobs), so one thread and CPU time: particle-steps per CPU-second,
-three alternating runs (``--threads 1``):
+Current figures: AMD EPYC (Zen 4), AVX-512 (8 float64 or 16 float32 lanes; one 512-bit
+multiply or FMA issued per cycle, 2.6 GHz), 2 cores, 2026-11-26, the machine quiet (load
+below 1.5), three alternating runs of DualSPHysics' step count: million particle-steps per
+second, best (range). "AVX2" is our float64 code compiled for a Zen 3 on the same cores
+(``NUMBA_CPU_NAME=znver3``, AVX-512 features off).
 
-    case                                 float64            --precision float32
-    2-D dp = 0.01 m,  22 008 particles   5.45-5.70 M        4.0-5.3 M
-    3-D dp = 0.017 m, 107 012 particles  1.65-1.69 M        1.94-2.03 M (1.22x)
+    case                                  threads  float64          float32          AVX2
+    2-D dp = 0.01 m,  22 008 particles       1     6.53 (5.97-6.53)                  5.58 (5.07-5.58)
+                                             2     12.0 (10.5-12.0)
+    3-D dp = 0.017 m, 107 012 particles      1     1.69 (1.60-1.69)  2.10 (1.78-2.10)  1.37 (1.33-1.37)
+                                             2     3.09 (2.80-3.09)                  2.40 (2.22-2.40)
 
-The step's speed-up from 1 to 2 threads (2026-11-26, the machine quiet, load < 1.3;
-``--speedup 10``: ten pairs of blocks alternating 1 and 2 threads in one process, two
-runs each): 3-D 107 012 particles 1.77 / 1.66 (62 -> 35-37 ms), 2-D 84 008 particles
-1.78 / 1.82 (13.8 -> 7.5-7.8 ms). Below the issue's 1.9 in 2-D: at 2 threads the serial
-parts (counting sort 0.37 ms, the NaN check, group loads, Python) are 8.5 % of the step
-and the gathers and packing scale by 1.65-1.8 only. The default OpenMP threading layer is
-the fastest on a quiet machine; on a loaded one its spinning idle threads take the cores
-the fluid needs (2 threads 11 times slower than 1 with four jobs on the 2 cores):
-``OMP_WAIT_POLICY=PASSIVE`` then helps, at 10-15 % on a quiet machine, so it is not set
-for you (the other layers and spin counts measured: docs/benchmarks/fluid_throughput_history.md).
-Bytes per particle kept between steps: 237 (2-D), 265 (3-D); float32 adds 56. Where a
-step's CPU time goes at one thread (``--profile``; 3-D 68 ms, 2-D 4.2 ms per step, float64):
+Against DualSPHysics 5.4's CPU code (its release build; same particles, same step count,
+alternated with the runs above: 2-D 1.44 / 2.57 M, 3-D 0.649 / 1.29 M at 1 / 2 threads):
+2-D 4.53x / 4.68x, 3-D 2.60x / 2.40x (float32 3.24x, AVX2 2.12x at one thread). Per
+simulated second, our Verlet step being 1.3 times shorter (5.85e-5 s in 3-D): 3-D 1.99x /
+1.84x, 2-D 3.46x / 3.57x. How these were run: docs/benchmarks/fluid_throughput_history.md.
+
+The step's speed-up from 1 to 2 threads (``--speedup 10``, quiet): 3-D 107 012 particles
+1.77 / 1.66, 2-D 84 008 particles 1.78 / 1.82; the 3-D pair loop alone scales 1.80. Bytes
+per particle kept between steps: 237 (2-D), 265 (3-D); float32 adds 56. Where a step's
+CPU time goes at one thread (``--profile``, 2026-11-25; 3-D 68 ms, 2-D 4.2 ms per step):
 
     part                                       3-D      2-D
     pair loop (fluid.equations.interact)       88.5 %   64.7 %
@@ -50,24 +51,13 @@ step's CPU time goes at one thread (``--profile``; 3-D 68 ms, 2-D 4.2 ms per ste
     NaN check (serial)                          0.5      0.8
     the rest (Python)                           0.6      3.3
 
-The 3-D pair loop visits 218 pairs per particle (65 of them within 2h: the 9 rows of
-cells, each trimmed to 2h in x, hold 3.4 times the support) and spends about 59 floating-point
-operations on each (per 8-pair pass: 19 multiplications, 13 FMAs, 12 additions, one
-division, one square root), 22.7 GFLOP/s: 27 % of two AVX-512 FMAs per cycle (83 GFLOP/s),
-55 % of what Zen 4 issues (one, 41.5 GFLOP/s); on the pairs within 2h, 9 % and 18 %.
-``--precision float32`` (FluidConfig.precision) puts 16 pairs in a pass: see
-fluid.equations.interact for why that gives 1.22x and not 2. The ratio to DualSPHysics 5.4's
-CPU code (its release build) on the same particles, same step count, this machine quiet
-(2026-11-26), best of three alternating runs: 3-D 2.60x at one thread, 2.40x at two
-(float32 3.24x at one), 2-D 4.53x and 4.68x; our code compiled for AVX2 on the same cores
-3-D 2.12x, 2-D 3.87x (the developers' AVX2 Zen 3: 3-D 2.0x, 2-D 3.3x). Per simulated
-second our Verlet step (5.85e-5 s in 3-D, at fluid.integrator.VERLET_MARGIN) is 1.3 times
-shorter than DualSPHysics': 3-D 1.99x and 1.84x, 2-D 3.46x and 3.57x
-(docs/benchmarks/fluid_throughput_history.md).
-Laminar viscosity adds 7 % to a 2-D step, XSPH 8 %, both 14 %, the renormalised
-diffusion (``diffusion="antuono"``) 70 % (a second pair loop), nothing when off.
-``--walls adami`` (tank-wall densities from the fluid's pressure, fluid.wall_density):
-see the cost measured in that module's docstring.
+The 3-D pair loop visits 218 candidates per particle (65 within 2h) at about 59
+floating-point operations each: 22.7 GFLOP/s, 55 % of the one 512-bit multiply or FMA
+Zen 4 issues per cycle (fluid.equations.interact says why float32 gives about 1.24x, not 2).
+Laminar viscosity adds 7 % to a 2-D step, XSPH 8 %, both 14 %, the renormalised diffusion
+(``diffusion="antuono"``) 70 %; ``--walls adami``: fluid.wall_density. The default OpenMP
+threading layer is the fastest on a quiet machine; on a loaded one set
+``OMP_WAIT_POLICY=PASSIVE`` (the history has the layers measured).
 
     .venv/bin/python benchmarks/fluid_throughput.py                 # default sizes, warm numba cache
     .venv/bin/python benchmarks/fluid_throughput.py --cold          # compile from scratch (empty cache)
@@ -78,23 +68,13 @@ see the cost measured in that module's docstring.
     .venv/bin/python benchmarks/fluid_throughput.py --case 3d --threads 1 --steps 20 --precision float32
     .venv/bin/python benchmarks/fluid_throughput.py --case 3d --threads 1 --steps 20 --profile  # shares of a step
     .venv/bin/python benchmarks/fluid_throughput.py --case 3d --steps 4 --speedup 16  # 1 -> 2 threads
-GPU (``--device cuda``; fluid.cuda, numba-cuda): the same cases stepped on an NVIDIA GPU.
-It prints the device (or that it is numba's CUDA simulator, NUMBA_ENABLE_CUDASIM=1, which
-runs every kernel in Python: its timings are meaningless) and ``bytes_per_particle`` from
-the arrays the device state allocated. The GPU path covers the whole CPU step (both
-kernels, artificial and laminar viscosity, alpha_wall, the Fourtakas, Molteni and
-renormalised diffusions, the surface fade, DBC and Adami walls, bodies' boundary
-particles with mDBC, XSPH, MLS re-initialisation, symplectic and Verlet, the time-step
-reductions, the NaN guard) but float32 pair terms (refused; fluid.cuda), in float64.
-Device memory per particle (fluid.cuda.state; the state in float64, the sort's buffers
-and the rates included): 3-D symplectic 226 B (250 with XSPH; +24 with
-``diffusion="antuono"``, +24 with moving Adami walls, +24 per body particle with mDBC),
-3-D Verlet 202 B, 2-D symplectic 178 B, 2-D Verlet 162 B; the cell offsets add 8 B per
-cell (0.5 cells per particle in the 3-D case: 4 B). So 80 GB hold about 350 M particles (3-D symplectic) or 390 M
-(Verlet). No GPU figure exists yet (2026-11-25); on the simulator the tests compare it
-with the CPU path to round-off (tests/test_fluid_cuda.py), and
-benchmarks/cuda_compile_check.py compiles every kernel for sm_90 without a GPU. What a
-GPU run should measure: docs/benchmarks/fluid_throughput_history.md.
+GPU (``--device cuda``; fluid.cuda, numba-cuda, which lists what it covers): the same
+cases stepped on an NVIDIA GPU; it prints the device (or that it is numba's CUDA
+simulator, NUMBA_ENABLE_CUDASIM=1, whose timings are meaningless) and
+``bytes_per_particle`` from the arrays the device state allocated: 3-D symplectic 226 B
+(250 with XSPH), 3-D Verlet 202 B, 2-D 178 / 162 B, the cell offsets 4 B more in the 3-D
+case; 80 GB hold about 350 M particles. No GPU figure exists yet (2026-11-26):
+benchmarks/gpu_session.sh measures them in one call of a GPU machine.
 
     NUMBA_ENABLE_CUDASIM=1 python benchmarks/fluid_throughput.py --device cuda --case 2d --dp 0.05 --steps 2  # simulator
     python benchmarks/fluid_throughput.py --device cuda --case 3d --dp 0.017 --steps 200                   # a GPU

@@ -150,7 +150,7 @@ def test_a_coupled_scene_moves_its_body_as_on_the_cpu(tmp_path):
 
 def _table(dim: int, saved: tuple, xsph: bool) -> int:
     """Bytes per particle of the device state's arrays, as fluid.cuda.state allocates them
-    (and benchmarks/fluid_throughput.py's docstring lists them)."""
+    (and fluid.cuda's docstring lists them)."""
     vec, f8 = 8 * dim, 8
     state = 2 * vec + 2 * f8 + 1 + 4 + 4  # positions, velocities, density, mass, kind, group, id
     saved_b = sum(vec if k in ("pos", "vel") else f8 for k in saved)
