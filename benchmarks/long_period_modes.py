@@ -12,10 +12,12 @@ For each run, one line per part:
   rad/s bracket the forcing's 6.28), the two symmetric modes (second order: linear theory
   has none) and what the fit leaves; the 45 deg tank, which has no symmetry: its modes 1,
   2-3 and 4-5 (:func:`cosim.validations.forced_sloshing.trapezoid_modes`, FE), its "first
-  three" in place of the antisymmetric ones below, and k there the deep-water w^2 / g;
+  three" in place of the antisymmetric ones below, and k there the wavenumber of the
+  mode's frequency at the tank's depth (w^2 = g k tanh kh);
 - each antisymmetric mode's free frequency and decay rate over the free sloshing
   (:func:`cosim.validations.long_period.free_decay`) against linear theory's frequency and
-  the decay 2 nu k^2 of a free-surface wave (Lamb 1932 §348) under the artificial
+  the decay 2 nu k^2 of a free-surface wave (Lamb 1932 §348; the potential flow's
+  dissipation gives the same 2 nu k^2 at any depth) under the artificial
   viscosity's equivalent kinematic viscosity nu = alpha h c0 / (2 (d + 2)) (the solver's
   ``alpha_eff``: Monaghan 2005, Rep. Prog. Phys. 68, 1703, §4.4);
 - the gauges' error against linear theory whose three antisymmetric modes take those

@@ -112,6 +112,7 @@ def test_trapezoid_modes_of_a_vertical_tank_are_the_rectangles():
     assert err.max() < 2e-2 and err[0] < 1e-4
     assert np.all(np.diff(err) > 0)                        # the mesh resolves the long modes best
     assert fe.omega[0] == pytest.approx(sloshing_omega(3.0, 1.0), rel=1e-4)
+    assert fe.k[0] == pytest.approx(math.pi / 3.0, rel=1e-4)  # the rectangle's, not omega^2 / g (8 % less)
     assert np.abs(fe.b[1::2]).max() < 1e-10 * np.abs(fe.b).max()           # symmetric modes not excited
     rect = fs.rectangular_modes(3.0, 1.0, 200)
     t = np.linspace(0.0, 6.0, 61)
@@ -120,6 +121,18 @@ def test_trapezoid_modes_of_a_vertical_tank_are_the_rectangles():
     ref = fs.surface(rect, fs.response(rect, 0.05 * G, 1.0, 3.0, t)[0], x)
     # 2 %: mode 3 (k = 5 pi / L, 0.02 of the peak) runs 0.2 % fast on this mesh, 0.09 rad by 6 s
     assert np.abs(got - ref).max() < 0.02 * np.abs(ref).max()
+
+
+def test_depth_wavenumber_solves_the_dispersion_relation():
+    """k tanh(k h) = omega^2 / g from deep (k h = 20) to shallow water (k h = 0.01), and the
+    two limits: omega^2 / g in deep water, omega / sqrt(g h) in shallow."""
+    h = 2.0
+    k_true = np.array([10.0, 1.0, 0.3, 0.05, 0.005])
+    lam = k_true * np.tanh(k_true * h)
+    k = fs.depth_wavenumber(lam, h)
+    assert k == pytest.approx(k_true, rel=1e-13)
+    assert k[0] == pytest.approx(lam[0], rel=1e-15)
+    assert k[-1] == pytest.approx(np.sqrt(lam[-1] / h), rel=1e-4)
 
 
 def test_trapezoid_impulsive_pressure_is_the_direct_solution():

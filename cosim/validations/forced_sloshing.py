@@ -53,7 +53,9 @@ from scipy import special
 
 @dataclass(frozen=True)
 class Modes:
-    """The first modes of a tank: wavenumbers ``k`` [1/m], frequencies ``omega`` [rad/s],
+    """The first modes of a tank: wavenumbers ``k`` [1/m] (the inclined tank, whose modes
+    have none: the wavenumber of each mode's frequency in water ``h`` deep, omega^2 =
+    g k tanh(k h)), frequencies ``omega`` [rad/s],
     coefficients ``b`` [m] of x = sum b_n S_n, depth ``h`` [m], the tank's ``shape``
     ("rectangular" with ``size`` = L, or "cylinder" with ``size`` = R) and g [m/s^2]."""
 
@@ -136,9 +138,25 @@ def trapezoid_modes(L: float, h: float, beta_deg: float, n: int = 30, nz: int = 
     b = surf @ sm["surface_mass"] @ (nodes[top, 0] - x_mid)
     zs, ss = np.linspace(0.0, h, nz + 1), np.linspace(0.0, 1.0, nx + 1)
     grid = [RegularGridInterpolator((zs, ss), p.reshape(nz + 1, nx + 1)) for p in sm["phi"]]
-    lam = sm["lam"]
-    return Modes("trapezoid", L, h, lam, np.sqrt(g * lam), b, g,
+    lam = sm["lam"]  # omega^2 / g
+    return Modes("trapezoid", L, h, depth_wavenumber(lam, h), np.sqrt(g * lam), b, g,
                  fe={"x_mid": x_mid, "length": L, "tan_beta": tb, "grid": grid, "beta_deg": beta_deg})
+
+
+def depth_wavenumber(lam, h: float) -> np.ndarray:
+    """The wavenumbers k [1/m] with k tanh(k h) = ``lam`` [1/m] (omega^2 / g) in water ``h``
+    [m] deep (the dispersion relation), by Newton's method from the larger of the deep and
+    the shallow water's k (both lie below the root: tanh(k h) < 1 and < k h); a handful of
+    iterations to round-off."""
+    lam = np.atleast_1d(np.asarray(lam, float))
+    k = np.maximum(lam, np.sqrt(lam / h))
+    for _ in range(60):
+        t = np.tanh(k * h)
+        step = (k * t - lam) / (t + k * h * (1.0 - t * t))
+        k = k - step
+        if np.all(np.abs(step) <= 1e-15 * k):
+            return k
+    raise ArithmeticError(f"depth_wavenumber: Newton's method did not settle for lam = {lam}, h = {h}")
 
 
 def housner_omega1(shape: str, size: float, h: float, g: float = 9.81) -> float:
