@@ -288,13 +288,13 @@ def ring_duration(level: float, c0: float, base: float) -> float:
     fits agreed within 0.37 %, 1.13 at 20 m: 0.93 %, 1.03 at 21 m: 7 % (the mode read the same);
     with base 4 s at 140 m/s it gives 4 s down to 19 m, 6 s at 20 and 21 m."""
     from cosim.errors import InputError
-    from cosim.validations.arch_rib import PULSE_PERIOD
+    from cosim.validations.arch_rib import PULSE_PERIOD, shortest_window
 
     if not base >= PULSE_PERIOD + 3.0:
         raise InputError(f"ring_duration: base={base!r} s (--duration) leaves under 3 s of free ringing after the "
                          f"{PULSE_PERIOD} s pulse; give at least {PULSE_PERIOD + 3.0} s")
     d = base
-    while (d - PULSE_PERIOD - 1.5) * quarter_wave(c0, level) < MIN_PERIODS:
+    while shortest_window(PULSE_PERIOD, d) * quarter_wave(c0, level) < MIN_PERIODS:
         d += 2.0
     return d
 

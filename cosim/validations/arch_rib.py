@@ -271,14 +271,23 @@ def damped_mode(t: np.ndarray, y: np.ndarray, t0: float, t1: float | None = None
             "residual": float(np.sqrt(np.mean(fit.fun**2)) / np.std(y - y.mean(axis=0)))}
 
 
+#: :func:`windowed_mode`'s later start and earlier end [s]
+WINDOW_SHIFTS = (0.5, 1.0)
+
+
+def shortest_window(t0: float, end: float) -> float:
+    """The length [s] of the shortest of :func:`windowed_mode`'s four windows."""
+    return end - WINDOW_SHIFTS[1] - (t0 + WINDOW_SHIFTS[0])
+
+
 def windowed_mode(t: np.ndarray, y: np.ndarray, t0: float, end: float) -> tuple[dict, list[float]]:
     """:func:`damped_mode` of ``y`` from ``t0`` [s] to the end, and the frequencies [Hz] of
     the fits over four windows: from ``t0`` and ``t0`` + 0.5 s, to the end and to ``end``
-    - 1 s (the first is the whole): how much the reading depends on where it starts and
-    stops."""
+    - 1 s (the first is the whole; :data:`WINDOW_SHIFTS`): how much the reading depends on
+    where it starts and stops."""
+    late, early = t0 + WINDOW_SHIFTS[0], end - WINDOW_SHIFTS[1]
     fit = damped_mode(t, y, t0)
-    others = [damped_mode(t, y, a, b, fit["f_Hz"])["f_Hz"] for a, b in
-              ((t0 + 0.5, None), (t0, end - 1.0), (t0 + 0.5, end - 1.0))]
+    others = [damped_mode(t, y, a, b, fit["f_Hz"])["f_Hz"] for a, b in ((late, None), (t0, early), (late, early))]
     return fit, [fit["f_Hz"], *others]
 
 
