@@ -343,7 +343,8 @@ def _compare(rec: dict, modes, shape: str, tank: dict, a0: float, period: float,
                                  "right_kpa": (rec["p_right"][i] / 1e3).tolist(),
                                  "left_linear_kpa": (lin_p["left"][i] / 1e3).tolist(),
                                  "right_linear_kpa": (lin_p["right"][i] / 1e3).tolist()} for i in idx}
-    return {"metrics": metrics, "particles": int(f.ps.n), "steps": int(f.counters.steps),
+    metrics["particles"] = int(f.ps.n + sum(f.counters.removed.values()))  # the set-up's, lost ones included
+    return {"metrics": metrics, "particles": metrics["particles"], "steps": int(f.counters.steps),
             "record": {"t": t.tolist(), "runup_left_m": runup[:, 0].tolist(), "runup_right_m": runup[:, 1].tolist(),
                        "runup_left_linear_m": lin_wall[:, 0].tolist(), "runup_right_linear_m": lin_wall[:, 1].tolist(),
                        "mode1_m": amp[0].tolist(), "mode1_linear_m": amp_lin[0].tolist(),
