@@ -153,33 +153,24 @@ def finish(S, n, prm, Fc, acc_b, out, acc):
         acc[a, 2] = Fc * acc_b[4, a] + fa * prm[P_G + 2]
 
 
-def check_terms(prm) -> None:
-    """Stop unless ``prm`` switches on the 3-D dam break's terms only (the prototypes' own)."""
-    for p, v in ((P_NU4, 0.0), (P_XSPH, 0.0), (P_RENORM, 0.0), (P_FADE, 0.0), (P_F32, 0.0), (P_AWALL, 1.0)):
-        if prm[p] != v:
-            raise SystemExit("the prototype covers the 3-D dam break's terms only")
-
-
-def main(argv=None) -> None:
+def captured_loop(dp: float, steps: int):
+    """The 3-D dam break of ``benchmarks/fluid_throughput.py`` at spacing ``dp`` [m] after
+    ``steps`` steps: the fluid and the arguments its next step passed to
+    ``fluid.equations.interact``; stops unless they switch on the dam break's terms only
+    (the prototypes' own)."""
     import sys
+    from pathlib import Path
 
-    import numba
-
-    sys.path.insert(0, str(__import__("pathlib").Path(__file__).parent))
     import fluid.equations as eq
     from fluid.solver import Fluid
-    from fluid_throughput import build
-    from machine import cpu_name
 
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--dp", type=float, default=0.017)
-    ap.add_argument("--steps", type=int, default=30)
-    ap.add_argument("--repeat", type=int, default=10)
-    a = ap.parse_args(argv)
-    cfg, ps = build("3d", a.dp)
+    sys.path.insert(0, str(Path(__file__).parent))
+    from fluid_throughput import build  # takes this folder off sys.path again
+
+    cfg, ps = build("3d", dp)
     f = Fluid(cfg, ps)
     f.initialize(0.0)
-    for _ in range(a.steps):
+    for _ in range(steps):
         f.step(f.max_dt())
     seen = {}
     real = eq.interact
@@ -193,8 +184,35 @@ def main(argv=None) -> None:
         f.step(f.max_dt())
     finally:
         eq.interact = real
-    S, start, tab, lo, cell, nx, ny, nz, kernel, prm, out, acc, xs, G = seen["args"][:14]
-    check_terms(prm)
+    args = seen["args"][:14]
+    prm = args[9]
+    for p, v in ((P_NU4, 0.0), (P_XSPH, 0.0), (P_RENORM, 0.0), (P_FADE, 0.0), (P_F32, 0.0), (P_AWALL, 1.0)):
+        if prm[p] != v:
+            raise SystemExit("the prototype covers the 3-D dam break's terms only")
+    return f, args
+
+
+def largest_difference(n: int, ref_out, ref_acc, new_out, new_acc) -> dict:
+    """The largest difference of each rate (density, viscous term, acceleration) between two
+    loops' outputs, relative to the field's largest value."""
+    pairs = {"drho": (ref_out[DRHO, :n], new_out[DRHO, :n]), "visc": (ref_out[VISC, :n], new_out[VISC, :n]),
+             "acc": (ref_acc, new_acc)}
+    return {k: float(np.abs(u - v).max() / np.abs(u).max()) for k, (u, v) in pairs.items()}
+
+
+def main(argv=None) -> None:
+    import numba
+
+    import fluid.equations as eq
+    from machine import cpu_name
+
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--dp", type=float, default=0.017)
+    ap.add_argument("--steps", type=int, default=30)
+    ap.add_argument("--repeat", type=int, default=10)
+    a = ap.parse_args(argv)
+    _, (S, start, tab, lo, cell, nx, ny, nz, kernel, prm, out, acc, xs, G) = captured_loop(a.dp, a.steps)
+    real = eq.interact
     n = acc.shape[0]
     Fc = grad_scale(kernel, prm[P_AD], prm[P_H])
     ref_out, ref_acc = np.zeros_like(out), np.zeros_like(acc)
@@ -210,9 +228,8 @@ def main(argv=None) -> None:
 
     old()
     new()
-    for name, u, v in (("drho", ref_out[DRHO, :n], new_out[DRHO, :n]), ("visc", ref_out[VISC, :n], new_out[VISC, :n]),
-                       ("acc", ref_acc, new_acc)):
-        print(f"{name}: largest difference {np.abs(u - v).max() / np.abs(u).max():.2e} of its largest value")
+    for name, d in largest_difference(n, ref_out, ref_acc, new_out, new_acc).items():
+        print(f"{name}: largest difference {d:.2e} of its largest value")
     t = {"as it is": [], "pair once": []}
     for _ in range(a.repeat):
         for key, fn in (("as it is", old), ("pair once", new)):
