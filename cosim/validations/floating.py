@@ -64,15 +64,14 @@ def box_in_tank(dim: int, dx: float, rho_b: float, *, width: float = 0.1, height
     return Coupler(bodies=bodies, fluid=fluid, scheme="fluid-first"), bodies, fluid, z_eq
 
 
-def water_level(fluid, dx: float, keep_out: float, centre) -> float:
-    """Still-water level [m] away from a body: the mean over lattice columns (of side
-    ``dx`` [m]) farther than ``keep_out`` [m] from ``centre`` (x or (x, y)) of the
-    highest fluid particle, plus half a spacing (the particle's cell)."""
+def water_level(pos, kind, dx: float, keep_out: float, centre) -> float:
+    """Still-water level [m] away from a body, from particle positions ``pos`` (n, dim) [m]
+    and kinds ``kind``: the mean over lattice columns (of side ``dx`` [m]) farther than
+    ``keep_out`` [m] from ``centre`` (x or (x, y)) of the highest fluid particle, plus half
+    a spacing (the particle's cell)."""
     from fluid.particles import Kind
 
-    ps = fluid.fluid.ps
-    fl = ps.kind == Kind.FLUID
-    p = ps.pos[fl]
+    p = np.asarray(pos)[np.asarray(kind) == Kind.FLUID]
     dim = p.shape[1]
     far = np.abs(p[:, 0] - centre[0]) > keep_out
     if dim == 3:
@@ -99,7 +98,8 @@ def settle_draft(dim: int, dx: float, rho_b: float, t_end: float, window: float,
 
     def sample(info):
         if info.t > t_end - window:
-            level = water_level(fluid, dx, 0.5 * width + 0.05, centre)
+            ps = fluid.fluid.ps
+            level = water_level(ps.pos, ps.kind, dx, 0.5 * width + 0.05, centre)
             drafts.append(level - (bodies.kinematics().com[0, 2] - 0.5 * height))
 
     coupler.run(t_end, callback=sample)
