@@ -1,0 +1,147 @@
+"""Issue 18's static check with the SPH fluid: seed 004's wind-turbine base (the scene of
+examples/wind_turbine_base.py: 16 000 kg, a vertical cylinder 6 m across and 3 m high, three
+catenary lines of Table 4 at 120 deg) at rest in still water, against the draft and offset
+that hydrostatics and the three catenaries predict together (``cosim.scene.placement``:
+draft 1.51 m, no offset by symmetry). Target: within 2 % of the draft.
+
+Set-up, chosen so that the CPU can resolve the draft: the water around the base is a pool
+16 m x 16 m, 4 m deep (5 m of water between the base and each wall; the base's draft is
+1.51 m), the seabed of the lines 20 m below the surface as in the scene (the anchors lie
+below the pool's floor, outside the fluid, 37 m from the base's axis). Hydrostatics on the
+base depends on the water next to it only, so the pool stands for the tank at rest. The
+base starts at the predicted height; the SPH fluid (``setup = "still"``, sea water 1025
+kg/m^3) and the coupler's light-body sub-iterations take it from there. Read: the mean
+heave, surge and sway over the second half of the run (the base rings in heave at about
+0.37 Hz and the pool's seiches ring too; the mean over whole periods is the equilibrium),
+the draft it implies, and the error against the prediction.
+
+    python benchmarks/wind_turbine_static.py --dx 0.5 --duration 12
+    python benchmarks/wind_turbine_static.py --dx 0.5,0.375 --duration 12   # refinement
+
+Prints one line per spacing: particles, CPU seconds, the predicted draft, the SPH draft
+below the water level the gauges read away from the base (``draft_sph_m``, judged) and
+below the set-up's level (``draft_nominal_level_m``), the level's shift, the mean offset,
+the heave's swing over the window.
+
+Measured 2026-11-26 (AMD EPYC Zen 4, one thread each, two or three runs at a time; 12 s,
+read over 6-12 s; predicted draft 1.511 m):
+
+    rows in the draft  dx [m]   depth [m]  particles  CPU-s / s  SPH draft  error   level shift  vs set-up level
+    3 (aligned)        0.5036   4.029      16 220      39        1.461 m   -3.3 %  -0.094 m     +3.0 %
+    4 (aligned)        0.3777   4.155      36 056      99        1.442 m   -4.6 %  -0.026 m     -2.9 %
+    3.02 (4 m deep)    0.5      4.0        18 164      50        (no gauges)       +0.175 m heave: -11.6 %
+    4.03 (4 m deep)    0.375    4.0        32 855      91        (no gauges)       -0.10 m heave: +6.5 %
+
+**Not within 2 % at 3-4 rows** (the analytic fluid holds the base at the prediction to
+1e-8 m on the same scene, so the lines and the placement agree; the difference is the
+fluid's). With the bottom face between lattice rows (the last two rows) the base moves by
+up to a third of a spacing from where hydrostatics puts it, up or down as the face lies
+(the floating-box-draft case's set-up rule, module docstring of
+cosim.validations.floating); aligned, the water level drops by 0.03-0.09 m as the fluid
+closes the gaps around the curved side, and the draft below it errs by 3-5 %. The base
+still rings in heave (0.04-0.05 m swing over the window) and nothing shows the error
+falling from 3 to 4 rows: finer runs (5+ rows, 2.5 times the particles per row added)
+are the next step.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import time
+
+import numpy as np
+
+POOL, DEPTH, SEABED = 16.0, 4.0, 20.0  # m: the pool's side and depth; the lines' water depth
+ANCHOR_R = 37.0  # m from the base's axis (examples/wind_turbine_base.py)
+#: (x, y) [m] of the gauges that read the water level away from the base: by the corners
+#: and mid-sides of the pool, 2 m from its walls, 5.7-8.5 m from the base's axis
+GAUGES = ((2.0, 2.0), (14.0, 2.0), (2.0, 14.0), (14.0, 14.0), (8.0, 2.0), (2.0, 8.0), (14.0, 8.0), (8.0, 14.0))
+
+
+def static_scene(dx: float, duration: float, depth: float = DEPTH):
+    """The base in the pool (module docstring), ``depth`` [m] of water, at spacing ``dx`` [m]."""
+    from cosim.scene import SPH, Cylinder, Line, Moorings, Probes, Scene, Tank, World
+
+    chain = dict(length=45.0, weight=3769.85, EA=1.9e9, mass_per_length=442.0, diameter=0.268, break_load=1.4e6)
+    c = 0.5 * POOL
+    floor = depth - SEABED  # the anchors' seabed, below the pool
+    anchors = {k: (c + ANCHOR_R * math.cos(math.radians(a)), c + ANCHOR_R * math.sin(math.radians(a)), floor)
+               for k, a in (("back", 0.0), ("front_port", 120.0), ("front_starboard", 240.0))}
+    fairleads = {"back": (3.0, 0.0, -1.5), "port": (-1.5, 2.5981, -1.5), "starboard": (-1.5, -2.5981, -1.5)}
+    return Scene(
+        name="wind_turbine_static",
+        world=World(dim=3, duration=duration, sample_every=0.05, snapshot_every=1.0),
+        fluid=SPH(dx=dx, rho0=1025.0, setup="still"),
+        domain=Tank(length=POOL, width=POOL, height=depth + 2.5, depth=depth),
+        bodies=[Cylinder("base", radius=3.0, length=3.0, mass=16000.0, pos=(c, c), place="floating",
+                         fairleads=fairleads)],
+        moorings=Moorings(model="catenary", segments=20,
+                          lines=[Line("base.back", name="back", anchor=anchors["back"], **chain),
+                                 Line("base.port", name="front_port", anchor=anchors["front_port"], **chain),
+                                 Line("base.starboard", name="front_starboard", anchor=anchors["front_starboard"],
+                                      **chain)]),
+        probes=Probes(gauges=GAUGES, motion=("base",), loads=False),
+    )
+
+
+def predicted_draft(scene) -> float:
+    """The draft [m] hydrostatics and the catenaries give (cosim.scene.placement)."""
+    from cosim.scene.placement import floating_height
+
+    b, level = scene.bodies[0], scene.domain.depth
+    z = floating_height(b, 3, level, scene.fluid.rho0, scene.world.gravity, scene.moorings.lines)
+    return level - (z - 0.5 * b.length)
+
+
+def aligned(rows: int) -> tuple[float, float]:
+    """The spacing [m] that puts ``rows`` rows of particles in the draft and the pool's
+    depth [m] (the nearest whole number of rows to 4 m) that put the base's bottom face on
+    a face of the fluid's lattice, as the floating-box-draft case sets its box (the fluid
+    removed where the base is then equals its submerged volume)."""
+    d0 = predicted_draft(static_scene(1.0, 1.0))
+    dx = d0 / rows
+    return dx, round(DEPTH / dx) * dx
+
+
+def measure(dx: float, duration: float, out: str, depth: float = DEPTH) -> dict:
+    scene = static_scene(dx, duration, depth)
+    d0 = predicted_draft(scene)
+    level0 = scene.domain.depth
+    c0 = time.process_time()
+    r = scene.run(f"{out}/dx{dx:.4g}", progress=False)
+    cpu = time.process_time() - c0
+    heave, surge, sway = (np.asarray(r[f"base.{k}"], float) for k in ("heave", "surge", "sway"))
+    late = r.t >= 0.5 * duration
+    mean_heave = float(heave[late].mean())
+    sm = r.summary
+    # the draft below the water level the gauges read away from the base (the kernel's
+    # fluid fraction crossing 1/2: fluid.probes.surface_elevation)
+    level = level0 + np.mean([np.asarray(r[f"gauge{k + 1}.eta"], float) for k in range(len(GAUGES))], axis=0)
+    bottom = sm["floating_start_z_m"]["base"] + heave - 0.5 * scene.bodies[0].length
+    drafts = (level - bottom)[late]
+    return {"dx_m": dx, "depth_m": level0, "rows_over_draft": d0 / dx, "particles": sm["particles"], "steps": sm["steps"],
+            "c0_m_s": sm["speed_of_sound_m_s"], "cpu_s": cpu, "cpu_s_per_simulated_s": cpu / duration, "draft_predicted_m": d0,
+            "draft_nominal_level_m": d0 - mean_heave, "error_nominal_level": -mean_heave / d0,
+            "level_shift_m": float(level[late].mean()) - level0, "draft_sph_m": float(np.mean(drafts)),
+            "error_of_draft": float(np.mean(drafts)) / d0 - 1.0,
+            "offset_m": float(math.hypot(surge[late].mean(), sway[late].mean())),
+            "heave_swing_m": float(heave[late].max() - heave[late].min())}
+
+
+def main(argv=None) -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--dx", default="", help="spacings [m], comma-separated (the pool 4 m deep)")
+    ap.add_argument("--rows", default="", help="rows of particles in the draft, comma-separated: the spacing and "
+                    "depth that align the base's bottom with the lattice (aligned)")
+    ap.add_argument("--duration", type=float, default=12.0, help="simulated seconds")
+    ap.add_argument("--out", default="out/wind_turbine_static")
+    a = ap.parse_args(argv)
+    runs = [(float(v), DEPTH) for v in a.dx.split(",") if v] + [aligned(int(k)) for k in a.rows.split(",") if k]
+    for dx, depth in runs:
+        m = measure(dx, a.duration, a.out, depth)
+        print(" ".join(f"{k}={v:.4g}" if isinstance(v, float) else f"{k}={v}" for k, v in m.items()), flush=True)
+
+
+if __name__ == "__main__":
+    main()
