@@ -10,13 +10,16 @@ Set-up, chosen so that the CPU can resolve the draft: the water around the base 
 below the pool's floor, outside the fluid, 37 m from the base's axis). Hydrostatics on the
 base depends on the water next to it only, so the pool stands for the tank at rest. The
 base starts at the predicted height; the SPH fluid (``setup = "still"``, sea water 1025
-kg/m^3) and the coupler's light-body sub-iterations take it from there. Read: the mean
-heave, surge and sway over the second half of the run (the base rings in heave at about
-0.37 Hz and the pool's seiches ring too; the mean over whole periods is the equilibrium),
-the draft it implies, and the error against the prediction.
+kg/m^3) and the coupler's light-body sub-iterations take it from there. Read over the
+second half of the run (the base rings in heave at about 0.37 Hz and the pool's seiches
+ring too; the mean over whole periods is the equilibrium): the base's bottom below the
+water level that eight gauges read away from it, the mean offset, and the error against
+the prediction. ``--rows K`` takes dx = draft / K and the depth nearest 4 m that is a
+whole number of rows, so that the base's bottom face lies on a face of the fluid's
+lattice (how the floating-box-draft case sets its box); ``--dx`` keeps the pool 4 m deep.
 
-    python benchmarks/wind_turbine_static.py --dx 0.5 --duration 12
-    python benchmarks/wind_turbine_static.py --dx 0.5,0.375 --duration 12   # refinement
+    python benchmarks/wind_turbine_static.py --rows 3,4 --duration 12      # aligned, judged
+    python benchmarks/wind_turbine_static.py --dx 0.5,0.375 --duration 12  # the pool 4 m deep
 
 Prints one line per spacing: particles, CPU seconds, the predicted draft, the SPH draft
 below the water level the gauges read away from the base (``draft_sph_m``, judged) and
@@ -40,7 +43,7 @@ up to a third of a spacing from where hydrostatics puts it, up or down as the fa
 cosim.validations.floating); aligned, the water level drops by 0.03-0.09 m as the fluid
 closes the gaps around the curved side, and the draft below it errs by 3-5 %. The base
 still rings in heave (0.04-0.05 m swing over the window) and nothing shows the error
-falling from 3 to 4 rows: finer runs (5+ rows, 2.5 times the particles per row added)
+falling from 3 to 4 rows: finer runs (5 rows and more; 5 rows hold 2.3 times the particles of 4)
 are the next step.
 """
 

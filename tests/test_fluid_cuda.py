@@ -116,8 +116,9 @@ def test_loads_that_moved_the_fluid_match(sim, case):
 
 @requires_numba_cuda
 def test_the_cases_exercise_what_they_claim(sim):
-    """The simulator ran (the GPU with ``COSIM_CUDA_TESTS=gpu``); the fluid moved; the flying particle left the domain on both
-    paths (removal); the body case's body carries a load."""
+    """The simulator ran (the GPU with ``COSIM_CUDA_TESTS=gpu``); the fluid moved; the
+    flying particle left the domain on both paths (removal); the body case's body carries
+    a load."""
     assert bool(sim["simulator"]) != ON_GPU
     assert sim["dam2d.step10.gpu.removed"][0] == 1 and sim["dam2d.step10.gpu.removed"].sum() == 1
     for case in CASES:
