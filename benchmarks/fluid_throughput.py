@@ -122,7 +122,7 @@ def device_line() -> str:
 
 
 def build(case: str, dp: float, integrator: str = "verlet", nu: float = 0.0, xsph_eps: float = 0.0,
-          wall_model: str = "dbc", precision: str = "float64"):
+          wall_model: str = "dbc", precision: str = "float64", wall_loads: bool = True):
     import numpy as np
 
     from fluid.geometry import assemble, block, set_hydrostatic, tank_walls
@@ -142,18 +142,18 @@ def build(case: str, dp: float, integrator: str = "verlet", nu: float = 0.0, xsp
     b = assemble(len(inner_lo), dp, 1000.0, col, [(walls, Kind.FIXED_WALL, 0)])
     cfg = FluidConfig(dim=len(inner_lo), dx=dp, device=DEVICE, c0=20 * math.sqrt(g * H), alpha=0.02, delta=0.1,
                       diffusion="fourtakas", cfl=0.2, integrator=integrator, nu=nu, xsph_eps=xsph_eps, walls=wall_model,
-                      precision=precision,
+                      precision=precision, wall_loads=wall_loads,
                       domain_lo=tuple(inner_lo - 0.1), domain_hi=tuple(inner_hi + 0.5))
     set_hydrostatic(b.particles, H, 1000.0, cfg.speed_of_sound, cfg.gamma, g)
     return cfg, b.particles
 
 
 def run(case: str, dp: float, steps: int, integrator: str = "verlet", nu: float = 0.0, xsph_eps: float = 0.0,
-        walls: str = "dbc", precision: str = "float64") -> dict:
+        walls: str = "dbc", precision: str = "float64", wall_loads: bool = True) -> dict:
     from fluid.particles import Kind
     from fluid.solver import Fluid
 
-    cfg, ps = build(case, dp, integrator, nu, xsph_eps, walls, precision)
+    cfg, ps = build(case, dp, integrator, nu, xsph_eps, walls, precision, wall_loads)
     t0 = time.perf_counter()
     f = Fluid(cfg, ps)
     f.initialize(0.0)
@@ -183,6 +183,7 @@ def run(case: str, dp: float, steps: int, integrator: str = "verlet", nu: float 
         "particle_steps_per_s": round(n * steps / wall),
         "pair_loops_per_s": round((2 if integrator == "symplectic" else 1) * n * steps / wall),
         "integrator": integrator, "precision": precision, "nu": nu, "xsph_eps": xsph_eps, "walls": walls,
+        "wall_loads": wall_loads,
         "particle_steps_per_cpu_s": round(n * steps / cpu),
         "cpu_s_per_wall_s": round(cpu / wall, 2),  # < threads: the machine is shared
         "bytes_per_particle": round(mem / n),
@@ -280,6 +281,9 @@ def main(argv=None):
     ap.add_argument("--xsph", type=float, default=0.0, help="XSPH epsilon [-] (0: off, as the reference case)")
     ap.add_argument("--walls", choices=["dbc", "adami"], default="dbc",
                     help="tank-wall densities (FluidConfig.walls; dbc: the reference case)")
+    ap.add_argument("--wall-loads", choices=["on", "off"], default="on",
+                    help="the fluid's load on the walls computed (FluidConfig.wall_loads; off: the walls get their "
+                         "continuity rate only, as DualSPHysics' fixed boundaries)")
     ap.add_argument("--precision", choices=["float64", "float32"], default="float64",
                     help="arithmetic of the pair terms (FluidConfig.precision)")
     ap.add_argument("--profile", action="store_true",
@@ -325,7 +329,7 @@ def main(argv=None):
                 for k, v in r["shares"].items():
                     print(f"  {100 * v:5.1f} %  {k}")
                 continue
-            r = run(c, dp, a.steps, a.integrator, a.nu, a.xsph, a.walls, a.precision)
+            r = run(c, dp, a.steps, a.integrator, a.nu, a.xsph, a.walls, a.precision, a.wall_loads == "on")
             r["load_avg_1min"] = round(os.getloadavg()[0], 2)  # other work on the machine
             r["device"] = DEVICE
             print(" ".join(f"{k}={v}" for k, v in r.items()))

@@ -264,6 +264,47 @@ def hydrostatic_density(depth, rho0: float, c0: float, gamma: float, g: float) -
     return rho0 * (1.0 + rho0 * g * np.maximum(depth, 0.0) / B) ** (1.0 / gamma)
 
 
+#: what the pair loop computes for the tank-wall particles (FIXED_WALL, MOVING_WALL;
+#: :func:`interact`'s ``walls``): every rate (their loads are read), the continuity rate
+#: only (plain dynamic boundaries whose loads nobody reads), nothing (walls whose densities
+#: come from the fluid, fluid.wall_density)
+WALLS_FULL, WALLS_CONTINUITY, WALLS_NONE = 0, 1, 2
+
+
+@njit(**_OPTS)
+def continuity_sum(S, xa, ya, za, ux, uy, uz, kernel, three, h, lo, cell, cx, cy, cz, nx, ny, nz, start, tab):
+    """``sum_b m_b v_ab . r_ab F_ab / Fc`` over the fluid particles b within 2h of a
+    boundary particle at (xa, ya, za) [m] moving at (ux, uy, uz) [m/s] in cell (cx, cy, cz)
+    (cells ``cell`` = 2h [m] wide, ``lo`` (x, y, z), ``tab`` the sub-bin table):
+    its continuity rate (004_1657bd4a51d29840.txt Eq. 7) without the kernel's constant
+    factor, the same sum, term for term and in the same order, as the pair loop's for a
+    boundary particle (boundary-boundary pairs do not interact; no diffusion)."""
+    R2 = 4.0 * h * h
+    ih = 1.0 / h
+    inv_w = XBINS / cell
+    sd = 0.0
+    dys = 3 if three else 1
+    tz = za - lo[2] - cz * cell
+    ty = ya - lo[1] - cy * cell
+    for dz in range(-1, 2):
+        for k in range(dys):
+            dy = k - 1 if three else 0
+            if three and dy != 0 and dz != 0:
+                ey2 = ty * ty if dy < 0 else (cell - ty) * (cell - ty)
+                ez2 = tz * tz if dz < 0 else (cell - tz) * (cell - tz)
+                if ey2 + ez2 >= R2:
+                    continue
+            j0, j1 = row_range_binned(xa, 2.0 * h, lo[0], inv_w, cy, cz, dy, dz, nx, ny, nz, start, tab, PAD)
+            for b in range(uint64(j0), uint64(j1)):
+                rx = xa - S[X, b]
+                ry = ya - S[Y, b]
+                rz = za - S[Z, b]
+                vr = (ux - S[VX, b]) * rx + (uy - S[VY, b]) * ry + (uz - S[VZ, b]) * rz
+                Fs = grad_shape(kernel, math.sqrt(rx * rx + ry * ry + rz * rz) * ih)
+                sd += S[MASS, b] * S[ISF, b] * Fs * vr
+    return sd
+
+
 def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_visc: bool, renorm: bool,
                    fade: bool, f32: bool = False):
     """The pair loop of :func:`interact` compiled for one kernel, dimension, choice of
@@ -279,7 +320,7 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
     o = -1 if f32 else 0  # float32: T's rows are S's shifted by one (the cell's x index first)
 
     @njit(parallel=True, **_OPTS)
-    def pair_loop(S, T, n, start, tab, lo, cell, nx, ny, nz, prm, out, acc, xs, G):
+    def pair_loop(S, T, n, start, tab, lo, cell, nx, ny, nz, prm, out, acc, xs, G, near, kind, walls):
         h = prm[P_H]
         ad = prm[P_AD]
         ddt = prm[P_DDT]
@@ -306,6 +347,7 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
         inv_cell = 1.0 / cell
         inv_w = XBINS / cell
         dys = 3 if three else 1
+        skip_dry = near.shape[0] > 0
         for a in prange(n):
             xa = S[X, a]
             ya = S[Y, a]
@@ -328,6 +370,21 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
                 gya = F(G[1, a])
                 gza = F(G[2, a])
             cx, cy, cz = cell_coords(xa, ya, za, lo, inv_cell, True, nx, ny, nz)  # packed rows: always x, y, z
+            # a boundary particle with no fluid within 2h: every term below is zero; a
+            # tank-wall particle whose load is not wanted: its continuity rate at most
+            dry = skip_dry and fa == zero and near[cx + nx * (cy + ny * cz)] == 0
+            if dry or (walls != WALLS_FULL and fa == zero and (kind[a] == 1 or kind[a] == 2)):
+                out[VISC, a] = 0.0
+                for d in range(acc.shape[1]):
+                    acc[a, d] = 0.0
+                    if xsph:
+                        xs[a, d] = 0.0
+                if dry or walls == WALLS_NONE:
+                    out[DRHO, a] = 0.0
+                else:
+                    out[DRHO, a] = Fc * continuity_sum(S, xa, ya, za, S[VX, a], S[VY, a], S[VZ, a], kernel, three, h,
+                                                       lo, cell, cx, cy, cz, nx, ny, nz, start, tab)
+                continue
             sd = 0.0
             sdd = 0.0
             sx = 0.0
@@ -667,9 +724,13 @@ def _dynamic_chunks():
 
 
 _LOOPS = {}
+#: ``near`` for a pair loop that skips no particle
+_NOWHERE = np.zeros(0, np.uint8)
+_NO_KINDS = np.zeros(0, np.int8)
 
 
-def interact(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, out, acc, xs, G, T=None):
+def interact(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, out, acc, xs, G, T=None, near=None, kind=None,
+             walls: int = WALLS_FULL):
     """One pass over all pairs of the ``n = acc.shape[0]`` particles; writes, for every
     particle a:
 
@@ -716,6 +777,14 @@ def interact(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, out, acc, xs, G, 
       dominates): a slightly conservative step. Its 8th root is three square roots:
       ``** 0.125`` called ``pow`` for every particle, 12 % of the loop.
 
+    What is not computed: a boundary particle in a cell with no fluid within one cell
+    (``near``, :func:`fluid.neighbours.fluid_near_cells`) gets zero rates without a pass,
+    which is what the pass gives (boundary-boundary pairs do not interact): the dry walls
+    above the water and beyond the support. The tank-wall particles whose loads nobody
+    reads (``walls``, ``FluidConfig.wall_loads = False``) get their continuity rate alone
+    (:func:`continuity_sum`, plain dynamic boundaries) or nothing (walls whose densities
+    come from the fluid); DualSPHysics' fixed boundaries get the continuity rate alone too.
+
     ``prm`` from :func:`params` with ``precision="float32"`` (``FluidConfig.precision``):
     every pair term in float32, 16 pairs per AVX-512 pass instead of 8, read from the
     float32 table ``T`` of :func:`pack_f32` (made here if not given). What keeps it as
@@ -752,7 +821,8 @@ def interact(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, out, acc, xs, G, 
         T = np.empty((N_ROWS_F32, S.shape[1]), np.float32)
         pack_f32(S, prm[P_RHO0], lo, cell, nx, ny, nz, T)
     with _dynamic_chunks():
-        loop(S, S if T is None or not f32 else T, acc.shape[0], start, tab, lo, cell, nx, ny, nz, prm, out, acc, xs, G)
+        loop(S, S if T is None or not f32 else T, acc.shape[0], start, tab, lo, cell, nx, ny, nz, prm, out, acc, xs, G,
+             _NOWHERE if near is None else near, _NO_KINDS if kind is None else kind, walls)
 
 
 class Workspace:
@@ -781,11 +851,17 @@ class Rates(NamedTuple):
 
 
 def evaluate(pos, vel, rho, mass, kind, start, grid, kernel: int, prm, rho0: float, c0: float,
-             gamma: float, p, work: Workspace | None = None, xbins: np.ndarray | None = None) -> Rates:
+             gamma: float, p, work: Workspace | None = None, xbins: np.ndarray | None = None,
+             near: np.ndarray | None = None, walls: int = WALLS_FULL) -> Rates:
     """EOS and all pair rates of particles sorted by cell on ``grid``. Writes the pressure
     into ``p`` [Pa]. With a ``work`` space the returned arrays are its own and are
     overwritten by the next call with it. ``xbins``: the sub-bin table that
-    ``sort_by_cell(pos, grid, xbins)`` filled with ``start`` (tabulated here if not given)."""
+    ``sort_by_cell(pos, grid, xbins)`` filled with ``start`` (tabulated here if not given).
+    ``near``: the cells near the fluid (:func:`fluid.neighbours.fluid_near_cells`); the
+    boundary particles of the other cells get zero rates without a pass over their
+    neighbours (what the pass would give); None: every particle is passed over.
+    ``walls``: what the tank-wall particles get (:data:`WALLS_FULL`, :data:`WALLS_CONTINUITY`,
+    :data:`WALLS_NONE`); their other rates are zero."""
     n, dim = pos.shape
     work = Workspace() if work is None else work
     S = work.get("S", (N_ROWS, n))
@@ -813,7 +889,7 @@ def evaluate(pos, vel, rho, mass, kind, start, grid, kernel: int, prm, rho0: flo
     if prm[P_F32] > 0.0:
         T = work.get("T", (N_ROWS_F32, n), np.float32)
         pack_f32(S, rho0, lo, grid.cell, nx, ny, nz, T)
-    interact(S, start, tab, lo, grid.cell, nx, ny, nz, kernel, prm, out, acc, xs, G, T)
+    interact(S, start, tab, lo, grid.cell, nx, ny, nz, kernel, prm, out, acc, xs, G, T, near, kind, walls)
     return Rates(out[DRHO], acc, out[VISC], S[CS], xs if xsph else None)
 
 

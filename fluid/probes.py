@@ -358,6 +358,9 @@ class GroupLoad:
                              f"0..{fluid.n_groups - 1}")
         F, M = fluid.group_forces_now()
         F, M = F[self.group].copy(), M[self.group].copy()
+        if np.isnan(F).all() and not fluid.config.wall_loads:
+            raise InputError(f"GroupLoad: group {self.group} is a tank wall, whose loads are not computed "
+                             "(FluidConfig.wall_loads=False); set wall_loads=True to read them")
         if self.about is not None:
             if self.about.size != fluid.config.dim:
                 raise InputError(f"GroupLoad: about has {self.about.size} components, the fluid is "

@@ -23,7 +23,7 @@ from fluid import mls
 from fluid.integrator import (StepLimit, corrector, diffusion_coefficient, first_non_finite, predictor,
                               stable_dt, verlet)
 from fluid.kernels import alpha_d, kernel_id
-from fluid.neighbours import Grid, sort_by_cell, x_bin_array, x_bins
+from fluid.neighbours import Grid, fluid_near_cells, sort_by_cell, x_bin_array, x_bins
 from fluid.particles import Kind, ParticleSet
 
 log = logging.getLogger(__name__)
@@ -151,6 +151,15 @@ class FluidConfig:
     #: "adami" (the fluid's pressure carried to each wall particle, Adami, Hu & Adams 2012,
     #: J. Comput. Phys. 231, Eq. 27; see fluid.wall_density). BODY particles are not affected
     walls: str = "dbc"
+    #: the fluid's load on the tank walls (FIXED_WALL and MOVING_WALL particles) is computed
+    #: (group loads of the wall groups, wall-pressure patches). False: the pair loop gives
+    #: the wall particles their continuity rate only ("dbc") or nothing ("adami", whose
+    #: densities come from the fluid): a 3-D dam break's step 10 % shorter, the rates of
+    #: the SPH wind-turbine scene (examples/wind_turbine_base.py, dx = 2 m) half as long
+    #: (docs/benchmarks/fluid_throughput_history.md). The walls' group loads then read NaN
+    #: and boundary_forces_now refuses. The fluid's own rates are unchanged; scenes set it
+    #: from their probes (cosim.scene.build.fluid_config)
+    wall_loads: bool = True
     #: where the fluid steps: "cpu" (numba on the host, the reference) or "cuda" (an NVIDIA
     #: GPU through numba-cuda, or numba's CUDA simulator with NUMBA_ENABLE_CUDASIM=1;
     #: fluid.cuda says what it covers)
@@ -216,6 +225,8 @@ class FluidConfig:
             raise _bad(f"mls_every={self.mls_every!r}", "give a number of steps >= 0 (0: off; 30 in 001 §2)")
         if self.walls not in WALLS:
             raise _bad(f"walls={self.walls!r}", f"choose one of {WALLS}")
+        if not isinstance(self.wall_loads, bool):
+            raise _bad(f"wall_loads={self.wall_loads!r}", "use True (default: the walls' loads are computed) or False")
         if self.precision not in eq.PRECISION:
             raise _bad(f"precision={self.precision!r}", f"choose one of {eq.PRECISION} (float64: the reference)")
         if self.device not in ("cpu", "cuda"):
@@ -314,6 +325,9 @@ class Fluid:
         self._grid = None
         self._work = eq.Workspace()
         self._xbins = None  # the cell list's sub-bin table (fluid.neighbours.order_cells_by_x)
+        #: the cells near the fluid (fluid.neighbours.fluid_near_cells), set before each rate
+        #: evaluation for the boundary_correction hook and the pair loop
+        self.near_fluid = None
         self._limit: StepLimit | None = None
         #: boundary particles were placed since the rates were taken (set_particle_motion)
         self._stale = False
@@ -329,6 +343,14 @@ class Fluid:
         if c.walls == "adami":
             from fluid.wall_density import AdamiWalls
             self.boundary_correction = AdamiWalls(self)
+        #: what the pair loop computes for the wall particles (fluid.equations.WALLS_*)
+        self._walls_rates = (eq.WALLS_FULL if c.wall_loads else
+                             eq.WALLS_NONE if c.walls == "adami" else eq.WALLS_CONTINUITY)
+        #: the groups made of wall particles: their loads are NaN when not computed
+        self._wall_groups = np.zeros(self.n_groups, bool)
+        if not c.wall_loads and self.n_groups:
+            walls = (particles.kind == Kind.FIXED_WALL) | (particles.kind == Kind.MOVING_WALL)
+            self._wall_groups[np.unique(particles.group[walls & (particles.group >= 0)])] = True
 
     # ------------------------------------------------------------------ protocol
     def _threads(self) -> int:
@@ -535,6 +557,9 @@ class Fluid:
         """Force [N] (N, dim) the fluid exerts on each particle at the current state, in the
         current order of ``self.ps``: ``m a`` of the boundary particles from the rates (the
         per-particle terms of :meth:`group_forces_now`), zero rows for the fluid."""
+        if not self.config.wall_loads:
+            raise InputError("fluid: the walls' loads are not computed (FluidConfig.wall_loads=False); "
+                             "set wall_loads=True to read boundary forces")
         self.refresh_rates()
         ps = self.ps
         F = ps.mass[:, None] * self._acc
@@ -617,6 +642,12 @@ class Fluid:
                                        f"positions or velocities at t={t:.9g} s")
             ps.pos[sel] = pos
             ps.vel[sel] = vel
+
+    @property
+    def x_bins(self) -> np.ndarray:
+        """The cell list's sub-bin table (fluid.neighbours.order_cells_by_x) of the current
+        sort, for the boundary_correction hooks' loops."""
+        return self._xbins
 
     def prescribed_acceleration(self, eps: float = 1e-6):
         """Acceleration [m/s^2] (N, dim) of every particle (current order) at the time the
@@ -761,11 +792,13 @@ class Fluid:
     def _rates(self):
         c = self.config
         ps = self.ps
+        self.near_fluid = fluid_near_cells(ps.kind, self._start, self._grid)
         if self.boundary_correction is not None:
             self.boundary_correction(ps, self._start, self._grid)
         self._drho, self._acc, visc, self._cs, self._xsph = eq.evaluate(
             ps.pos, ps.vel, ps.rho, ps.mass, ps.kind, self._start, self._grid, self._kernel,
-            self._prm, c.rho0, c.speed_of_sound, c.gamma, ps.p, self._work, self._xbins)
+            self._prm, c.rho0, c.speed_of_sound, c.gamma, ps.p, self._work, self._xbins, self.near_fluid,
+            self._walls_rates)
         self._limit = stable_dt(self._acc, visc, self._cs, ps.kind, c.h, c.cfl, c.dt_max, c.nu, **self._diffusivity)
         self._stale = False
 
@@ -780,6 +813,8 @@ class Fluid:
         M = np.zeros((self.n_groups, 3 if dim == 3 else 1))
         if self.n_groups:
             _sum_groups(ps.pos, ps.mass, self._acc, ps.group, self.moment_points, F, M)
+            F[self._wall_groups] = np.nan  # FluidConfig.wall_loads = False
+            M[self._wall_groups] = np.nan
         return F, M
 
     def _check_finite(self):

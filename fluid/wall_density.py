@@ -48,12 +48,14 @@ the cases' current figures are in their docstrings. The sloshing tank's first mo
 down from +9.4 % to +4.6 % of linear theory (quick), and the wall pressure follows the
 wave as linear theory says.
 
-Cost: 0.14 ms of CPU per rate evaluation for the 2008 wall particles of the 2-D dam
-break of benchmarks/fluid_throughput.py (22 008 particles, one thread; the rates take
-2.8 ms): +4 % on a Verlet step, twice that on a symplectic one (two evaluations). An
-A/B of the benchmark (``--case 2d --dp 0.01 --threads 1 --steps 200 --walls adami``
-against ``--walls dbc``, alternating, on a loaded machine) gave +0.2 ... 0.3 ms of CPU
-per step.
+Cost: the loop runs as the pair loop does (``adami_wall_density``: rows trimmed to 2h and
+padded to whole vectors, no branch inside), and walls with no fluid within a cell take
+``rho0`` without a pass (``fluid.neighbours.fluid_near_cells``). On the wind-turbine scene
+of examples/wind_turbine_base.py with the SPH fluid (h = 2 dx, 4 wall layers; 28 818 wall
+particles at dx = 2 m, 105 536 at 1 m), one thread of an Intel Xeon (Emerald Rapids,
+AVX-512), 2026-11-26, best of three runs: 20.2 ms per evaluation at dx = 2 m and 72.2 ms
+at 1 m, against 38 and 343 ms for the rest of the scene's rate evaluation (the walls'
+loads not computed, ``FluidConfig.wall_loads``; docs/benchmarks/fluid_throughput_history.md).
 
 A hydrostatic tank started on the lattice moves: a free-surface corner, not the start
 (the first rates are those of the plain boundaries). The top fluid row settles into SPH's
@@ -74,38 +76,80 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit, prange
+from numba import njit, prange, uint64
 
-from fluid.equations import tait_B
+from cosim.errors import InputError
+from fluid.equations import PAD, tait_B
 from fluid.kernels import alpha_d, kernel_id, w_value
-from fluid.neighbours import cell_coords, row_range
+from fluid.neighbours import XBINS, cell_coords, row_range_binned
 from fluid.particles import Kind
 
 _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
+#: the least kernel sum (the kernel's shape, 1 at the centre) that counts as fluid near a
+#: wall: a fluid particle on the support's edge to round-off (2h within 1e-6 h) weighs
+#: less, and which side of 2h it falls on is the rounding's choice (the loop's fused
+#: multiply-adds), not the geometry's
+SW_MIN = 1e-24
 
 
 @njit(parallel=True, **_OPTS)
-def adami_wall_density(pos, rho, kind, acc_w, has_acc, start, lo, inv_cell, nx, ny, nz, reach, kernel, ad, h,
-                       rho0, B, gamma, g, kmin, kmax, p_floor):
+def _fluid_rows(pos, rho, kind, rho0, B, gamma, R):
+    """The rows the wall loop reads, contiguous per quantity: x, y, z [m] (y = 0 in 2-D),
+    the Tait pressure [Pa] of fluid particles (0 for boundary particles) and 1 for fluid,
+    0 for boundary particles."""
+    three = pos.shape[1] == 3
+    zc = pos.shape[1] - 1
+    seven = gamma == 7.0
+    for j in prange(rho.shape[0]):
+        R[0, j] = pos[j, 0]
+        R[1, j] = pos[j, 1] if three else 0.0
+        R[2, j] = pos[j, zc]
+        f = 1.0 if kind[j] == 0 else 0.0
+        x = rho[j] / rho0
+        if seven:  # pow costs more than the rest
+            x3 = x * x * x
+            pj = B * (x3 * x3 * x - 1.0)
+        else:
+            pj = B * (x ** gamma - 1.0)
+        R[3, j] = f * pj
+        R[4, j] = f
+
+
+@njit(parallel=True, **_OPTS)
+def adami_wall_density(R, rho, kind, acc_w, has_acc, start, tab, near, lo, cell, nx, ny, nz, kernel, h, rho0, B,
+                       gamma, g, kmin, kmax, p_floor):
     """Set ``rho`` of every particle with ``kmin <= kind <= kmax`` from Adami et al. (2012)
-    Eq. 27 (module docstring). ``acc_w`` (N, dim) [m/s^2] the wall accelerations (read only
-    if ``has_acc``); ``g`` (3,) [m/s^2] gravity as (x, y, z); particles sorted by cell
-    (``start``); ``lo`` has 3 components (y = 0, ``ny = 1`` in 2-D)."""
-    n, dim = pos.shape
-    three = dim == 3
-    zc = dim - 1
-    dys = 2 * reach + 1 if three else 1
+    Eq. 27 (module docstring). ``R`` the rows of :func:`_fluid_rows`; ``acc_w`` (N, dim)
+    [m/s^2] the wall accelerations (read only if ``has_acc``); ``g`` (3,) [m/s^2] gravity
+    as (x, y, z); particles sorted by cell (``start``) on cells 2h wide, ``tab`` the cell
+    list's sub-bin table (:func:`fluid.neighbours.order_cells_by_x`), ``near`` the cells
+    near the fluid (:func:`fluid.neighbours.fluid_near_cells`; the walls of the others
+    have no fluid within 2h and take ``rho0`` without a pass); ``lo`` has 3 components
+    (y = 0, ``ny = 1`` in 2-D).
+
+    As the pair loop of fluid.equations: each row of cells trimmed to 2h in x and padded
+    to whole vectors (:func:`fluid.neighbours.row_range_binned`), the fluid picked by a 0/1
+    factor and the kernel clamped at its support, so that the inner loop has no branch
+    and vectorises; the kernel's normalisation cancels in the ratio."""
+    n = rho.shape[0]
+    three = ny > 1
+    dys = 3 if three else 1
     R2 = 4.0 * h * h
     ih = 1.0 / h
     inv_gamma = 1.0 / gamma
-    seven = gamma == 7.0
+    inv_cell = 1.0 / cell
+    inv_w = XBINS / cell
     for i in prange(n):
         k = kind[i]
         if k < kmin or k > kmax:
             continue
-        xw = pos[i, 0]
-        yw = pos[i, 1] if three else 0.0
-        zw = pos[i, zc]
+        xw = R[0, i]
+        yw = R[1, i]
+        zw = R[2, i]
+        cx, cy, cz = cell_coords(xw, yw, zw, lo, inv_cell, True, nx, ny, nz)
+        if near[cx + nx * (cy + ny * cz)] == 0:
+            rho[i] = rho0
+            continue
         bx = g[0]
         by = g[1]
         bz = g[2]
@@ -113,33 +157,25 @@ def adami_wall_density(pos, rho, kind, acc_w, has_acc, start, lo, inv_cell, nx, 
             bx -= acc_w[i, 0]
             if three:
                 by -= acc_w[i, 1]
-            bz -= acc_w[i, zc]
+            bz -= acc_w[i, acc_w.shape[1] - 1]
+        bx *= rho0
+        by *= rho0
+        bz *= rho0
         sw = 0.0
         sp = 0.0
-        cx, cy, cz = cell_coords(xw, yw, zw, lo, inv_cell, True, nx, ny, nz)
-        for dz in range(-reach, reach + 1):
+        for dz in range(-1, 2):
             for kk in range(dys):
-                dy = kk - reach if three else 0
-                j0, j1 = row_range(cx, cy, cz, dy, dz, nx, ny, nz, start, reach)
-                for j in range(j0, j1):
-                    if kind[j] != 0:
-                        continue
-                    rx = xw - pos[j, 0]
-                    ry = yw - pos[j, 1] if three else 0.0
-                    rz = zw - pos[j, zc]
+                dy = kk - 1 if three else 0
+                j0, j1 = row_range_binned(xw, 2.0 * h, lo[0], inv_w, cy, cz, dy, dz, nx, ny, nz, start, tab, PAD)
+                for j in range(uint64(j0), uint64(j1)):
+                    rx = xw - R[0, j]
+                    ry = yw - R[1, j]
+                    rz = zw - R[2, j]
                     r2 = rx * rx + ry * ry + rz * rz
-                    if r2 >= R2:
-                        continue
-                    w = w_value(kernel, math.sqrt(r2) * ih, ad)
-                    x = rho[j] / rho0
-                    if seven:  # pow costs more than the rest of the pair
-                        x3 = x * x * x
-                        pj = B * (x3 * x3 * x - 1.0)
-                    else:
-                        pj = B * (x ** gamma - 1.0)
+                    w = w_value(kernel, math.sqrt(r2) * ih, 1.0) * (R[4, j] if r2 < R2 else 0.0)
                     sw += w
-                    sp += w * (pj + rho0 * (bx * rx + by * ry + bz * rz))
-        p = max(sp / sw, p_floor) if sw > 0.0 else 0.0
+                    sp += w * (R[3, j] + bx * rx + by * ry + bz * rz)
+        p = max(sp / sw, p_floor) if sw > SW_MIN else 0.0
         rho[i] = rho0 * (1.0 + p / B) ** inv_gamma
 
 
@@ -166,9 +202,13 @@ class AdamiWalls:
         self._zero = np.zeros((0, c.dim))
         #: lowest wall pressure [Pa] (0: no tension, the clamp of the plain dynamic boundaries)
         self.p_floor = 0.0
+        self._rows = np.empty((5, 0))
 
     def __call__(self, ps, start, grid) -> None:
         c = self.fluid.config
+        if grid.reach != 1 or abs(grid.cell - 2.0 * c.h) > 1e-12 * grid.cell:
+            raise InputError(f"AdamiWalls needs the fluid's grid of cells 2h = {2.0 * c.h} m wide with reach 1, got "
+                             f"cell {grid.cell} m, reach {grid.reach}")
         lo = np.zeros(3)
         if c.dim == 3:
             lo[:] = grid.lo
@@ -177,6 +217,9 @@ class AdamiWalls:
         nx, ny, nz = grid.shape
         acc = self.fluid.prescribed_acceleration()
         has = acc is not None
-        adami_wall_density(ps.pos, ps.rho, ps.kind, acc if has else self._zero, has, start, lo,
-                           1.0 / grid.cell, nx, ny, nz, grid.reach, self.kernel, self.ad, c.h, c.rho0, self.B,
+        if self._rows.shape[1] != ps.n:
+            self._rows = np.empty((5, ps.n))
+        _fluid_rows(ps.pos, ps.rho, ps.kind, c.rho0, self.B, c.gamma, self._rows)
+        adami_wall_density(self._rows, ps.rho, ps.kind, acc if has else self._zero, has, start, self.fluid.x_bins,
+                           self.fluid.near_fluid, lo, grid.cell, nx, ny, nz, self.kernel, c.h, c.rho0, self.B,
                            c.gamma, self.g, int(Kind.FIXED_WALL), int(Kind.MOVING_WALL), self.p_floor)

@@ -2,10 +2,11 @@
 
 import numpy as np
 import pytest
+from scipy.spatial import cKDTree
 
 from cosim.errors import InstabilityError
-from fluid.neighbours import (MAX_PER_CELL, XBINS, Grid, counting_sort, neighbour_pairs, row_range_binned,
-                              sort_by_cell, x_bin_array, x_bins)
+from fluid.neighbours import (MAX_PER_CELL, XBINS, Grid, counting_sort, fluid_near_cells, neighbour_pairs,
+                              row_range_binned, sort_by_cell, x_bin_array, x_bins)
 
 
 def brute(pos, radius):
@@ -129,3 +130,29 @@ def test_a_cell_too_full_for_the_sub_bin_table_stops_the_run():
     grid = Grid.covering([0, 0], [1, 1], 0.1)
     with pytest.raises(InstabilityError, match="collapsed"):
         sort_by_cell(pos, grid, x_bin_array(grid))
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_cells_near_the_fluid(dim):
+    """fluid_near_cells flags exactly the cells within one cell (in every direction) of a
+    cell holding fluid; every boundary particle with fluid within a cell's width lies in a
+    flagged cell, so a loop may skip the others."""
+    rng = np.random.default_rng(7 + dim)
+    n = 3000
+    pos = rng.uniform(0, 1, (n, dim))
+    kind = np.where(pos[:, 0] + 0.5 * pos[:, -1] < 0.45, 0, 1).astype(np.int8)  # fluid in a corner
+    grid = Grid.covering(np.zeros(dim), np.ones(dim), 0.09)
+    perm, start, out = sort_by_cell(pos, grid)
+    assert out == 0
+    pos, kind = pos[perm], kind[perm]
+    near = fluid_near_cells(kind, start, grid)
+    nx, ny, nz = grid.shape
+    ijk = np.stack(np.unravel_index(np.arange(grid.ncells), (nz, ny, nx)), 1)  # (iz, iy, ix)
+    wet = np.zeros(grid.ncells, bool)
+    for c in np.unique(np.searchsorted(start, np.nonzero(kind == 0)[0], side="right") - 1):
+        wet |= (np.abs(ijk - ijk[c]) <= 1).all(axis=1)
+    assert 0 < wet.sum() < grid.ncells
+    assert np.array_equal(near.astype(bool), wet)
+    cell_of = np.searchsorted(start, np.arange(n), side="right") - 1
+    d, _ = cKDTree(pos[kind == 0]).query(pos, k=1)
+    assert (near[cell_of[d < grid.cell]] == 1).all() and (near[cell_of] == 0).any()

@@ -269,3 +269,54 @@ def test_float32_pair_terms_follow_the_float64_run():
     dv = np.abs(v32 - v64).max() / np.abs(v64).max()
     assert 0.0 < dv < 1e-5
     assert np.abs(r32 - r64).max() < 1e-5 * cfg.rho0
+
+
+@pytest.mark.parametrize("walls", ["dbc", "adami"])
+def test_without_wall_loads_the_fluid_and_the_bodies_get_the_same_rates(walls):
+    """FluidConfig(wall_loads=False): the fluid's rates, the walls' continuity rates (plain
+    dynamic boundaries) and a body's load are those of the full pass; the walls' own
+    accelerations are not computed, so their groups' loads read NaN and the readers of
+    wall loads refuse with the reason."""
+    from dataclasses import replace
+
+    from fluid.geometry import block
+    from fluid.probes import GroupLoad
+
+    cfg, ps = small_tank()
+    body = ParticleSet.create(block([0.08, 0.06], [0.12, 0.1], 0.02), 1000.0, ps.mass[0], kind=Kind.BODY, group=2)
+    ps = ps.select(~((ps.kind == Kind.FLUID) & (np.abs(ps.pos[:, 0] - 0.09) < 0.03) & (ps.pos[:, 1] > 0.05)))
+    ps = ParticleSet.concatenate([ps, body])
+    fl = ps.kind == Kind.FLUID
+    ps.vel[fl, 0] = 0.3 * ps.pos[fl, 1]
+    ps.vel[ps.kind == Kind.BODY] = [0.05, -0.02]
+    runs = {}
+    for loads in (True, False):
+        f = Fluid(replace(cfg, walls=walls, wall_loads=loads), ps.copy())
+        f.initialize(0.0)
+        runs[loads] = f
+    full, lite = runs[True], runs[False]
+    assert np.array_equal(full.ps.ids, lite.ps.ids)
+    fl = full.ps.kind == Kind.FLUID
+    wall = full.ps.kind == Kind.FIXED_WALL
+    np.testing.assert_array_equal(lite._acc[fl], full._acc[fl])
+    np.testing.assert_array_equal(lite._drho[fl], full._drho[fl])
+    assert (lite._acc[wall] == 0).all() and np.abs(full._acc[wall]).max() > 1.0
+    if walls == "dbc":  # their densities move with it
+        assert np.abs(full._drho[wall]).max() > 1.0
+        np.testing.assert_allclose(lite._drho[wall], full._drho[wall], rtol=0, atol=1e-12 * np.abs(full._drho).max())
+    else:  # theirs come from the fluid's pressure
+        assert (lite._drho[wall] == 0).all()
+        np.testing.assert_array_equal(lite.ps.rho, full.ps.rho)
+    F_full, M_full = full.group_forces_now()
+    F, M = lite.group_forces_now()
+    assert np.isnan(F[0]).all() and np.isnan(M[0]).all()
+    np.testing.assert_array_equal(F[2], F_full[2])
+    np.testing.assert_array_equal(M[2], M_full[2])
+    assert np.abs(F_full[2]).max() > 0.1
+    with pytest.raises(InputError, match="wall_loads"):
+        lite.boundary_forces_now()
+    with pytest.raises(InputError, match="wall_loads"):
+        GroupLoad(0).sample(lite)
+    assert GroupLoad(2).sample(lite)["F"][1] == F_full[2][1]
+    with pytest.raises(InputError, match="wall_loads"):
+        FluidConfig(dx=0.02, c0=30.0, wall_loads="no")

@@ -18,12 +18,17 @@ from fluid.solver import Fluid, FluidConfig
 G, RHO0 = 9.81, 1000.0
 
 
-def wetted(f):
-    """Mask of the tank-wall particles with a fluid particle within the support 2h."""
+def wetted(f, dry: bool = False):
+    """Mask of the tank-wall particles with a fluid particle within the support 2h (with
+    ``dry``: of those with none). The walls whose nearest fluid particle lies at 2h to
+    round-off (a lattice's neighbours at (2 dx, 2 dx) with h = sqrt(2) dx) are in
+    neither: their kernel weight is zero, and the side of 2h they fall on is the
+    rounding's."""
     ps = f.ps
     fl = ps.kind == Kind.FLUID
     d, _ = cKDTree(ps.pos[fl]).query(ps.pos, k=1)
-    return (ps.kind != Kind.FLUID) & (d < 2 * f.config.h)
+    edge = 2 * f.config.h
+    return (ps.kind != Kind.FLUID) & ((d > edge * (1 + 1e-9)) if dry else (d < edge * (1 - 1e-9)))
 
 
 def test_walls_option_is_validated():
@@ -51,7 +56,7 @@ def test_hydrostatic_wall_pressure_is_exact(dim):
     want = np.maximum(RHO0 * G * (H - z), 0.0)
     assert w.sum() > 50 and (z[w] > H).any() and (z[w] < 0).any()
     np.testing.assert_allclose(f.ps.p[w], want[w], rtol=0, atol=1e-9 * RHO0 * G * H)
-    dry = (f.ps.kind != Kind.FLUID) & ~w
+    dry = wetted(f, dry=True)
     assert dry.any() and (f.ps.rho[dry] == RHO0).all() and (f.ps.p[dry] == 0).all()
 
 

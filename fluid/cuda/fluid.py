@@ -220,7 +220,10 @@ class CudaFluid(Fluid):
             self._raise_non_finite(i)
 
     def _group_sums(self):
-        return self._to_device().group_sums(self.moment_points, self.n_groups)
+        F, M = self._to_device().group_sums(self.moment_points, self.n_groups)
+        F[self._wall_groups] = np.nan  # FluidConfig.wall_loads = False, as on the CPU (computed here all the same)
+        M[self._wall_groups] = np.nan
+        return F, M
 
     def _place_prescribed(self, t: float) -> None:
         self._t_placed = t
