@@ -91,7 +91,7 @@ class Ledger:
             for k, t in enumerate(a["t"]):
                 for j, name in enumerate(self.body_names):
                     vals = np.concatenate([a[f][k, j] for f in FIELDS])
-                    fh.write(f"{t!r},{name}," + ",".join(repr(float(v)) for v in vals) + "\n")
+                    fh.write(f"{float(t)!r},{name}," + ",".join(repr(float(v)) for v in vals) + "\n")
 
     def write_h5(self, out, name: str = "ledger", start: int = 0) -> int:
         """Append steps ``start`` .. ``len(self)`` to ``out`` (a :class:`fluid.output.H5Output`,

@@ -115,6 +115,10 @@ def test_run_writes_outputs_at_exact_times(tmp_path):
         np.testing.assert_array_equal(f["series/probes/motion/box.heave"][:], r["box.heave"])
         assert len(f["snapshot_times"]) == 4 and len(f["series/ledger/box/t"]) == s["steps"]
         Fz = f["series/ledger/box/fluid_force"][:, 2]
+        rows = [r.split(",") for r in (tmp_path / "ledger.csv").read_text().splitlines()]
+        assert rows[0][:3] == ["t_s", "body", "fluid_force_x"] and {r[1] for r in rows[1:]} == {"box"}
+        np.testing.assert_array_equal([float(r[0]) for r in rows[1:]], f["series/ledger/box/t"][:])
+        np.testing.assert_array_equal([float(r[4]) for r in rows[1:]], Fz)
     head = (tmp_path / "tensions.csv").read_text().splitlines()[0]
     assert head == ("t [s],box.left.tension [N],box.right.tension [N],box.left.anchor_tension [N],"
                     "box.right.anchor_tension [N]")
