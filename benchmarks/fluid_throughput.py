@@ -15,45 +15,47 @@ The machine may be shared: ``cpu_s_per_wall_s`` below the thread count says so, 
 figure to compare between runs with ``--threads 1`` (alternate the runs being compared).
 ``--threads N`` sets NUMBA_NUM_THREADS, so that no idle worker thread spins on the CPU.
 
-Current figures: AMD EPYC (Zen 4), AVX-512 (8 float64 or 16 float32 lanes; one 512-bit
-multiply or FMA issued per cycle, 2.6 GHz), 2 cores, 2026-11-26, the machine quiet (load
-below 1.5), three alternating runs of DualSPHysics' step count: million particle-steps per
-second, best (range). "AVX2" is our float64 code compiled for a Zen 3 on the same cores
-(``NUMBA_CPU_NAME=znver3``, AVX-512 features off).
+Current figures: Intel Xeon (Emerald Rapids, family 6 model 207), AVX-512 (8 float64
+lanes), 2 cores, 2026-11-26, the machine quiet (load below 1.8), three alternating runs of
+DualSPHysics' step count over the dam breaks' first 0.03 s (394 steps in 3-D, 944 in
+2-D): million particle-steps per second, best (range); "walls' loads off" is
+``--wall-loads off`` (FluidConfig.wall_loads: the walls get their continuity rate alone,
+as DualSPHysics' fixed boundaries do).
 
-    case                                  threads  float64          float32          AVX2
-    2-D dp = 0.01 m,  22 008 particles       1     6.53 (5.97-6.53)                  5.58 (5.07-5.58)
-                                             2     12.0 (10.5-12.0)
-    3-D dp = 0.017 m, 107 012 particles      1     1.69 (1.60-1.69)  2.10 (1.78-2.10)  1.37 (1.33-1.37)
-                                             2     3.09 (2.80-3.09)                  2.40 (2.22-2.40)
+    case                                  threads  DualSPHysics 5.4     ours              ratio   walls' loads off   ratio
+    2-D dp = 0.01 m,  22 008 particles       1     1.467 (1.430-1.467)  5.48 (4.66-5.48)  3.74x   5.51 (4.56-5.51)   3.76x
+                                             2     2.727 (2.660-2.727)  9.75 (9.47-9.75)  3.58x   9.76 (9.31-9.76)   3.58x
+    3-D dp = 0.017 m, 107 012 particles      1     0.596 (0.586-0.596)  1.79 (1.77-1.79)  3.00x   1.92 (1.73-1.92)   3.22x
+                                             2     1.181 (1.104-1.181)  3.08 (3.01-3.08)  2.61x   3.30 (3.27-3.30)   2.80x
 
-Against DualSPHysics 5.4's CPU code (its release build; same particles, same step count,
-alternated with the runs above: 2-D 1.44 / 2.57 M, 3-D 0.649 / 1.29 M at 1 / 2 threads):
-2-D 4.53x / 4.68x, 3-D 2.60x / 2.40x (float32 3.24x, AVX2 2.12x at one thread). Per
-simulated second, our Verlet step being 1.3 times shorter (5.85e-5 s in 3-D): 3-D 1.99x /
-1.84x, 2-D 3.46x / 3.57x. How these were run: docs/benchmarks/fluid_throughput_history.md.
+DualSPHysics: its CPU release build (-O3 -ffast-math), same particles and step counts.
+Per simulated second (our Verlet step 1.3 times shorter, 5.85e-5 s against 7.6e-5 s in
+3-D, 2.42e-5 against 3.18e-5 in 2-D): 3-D 2.31x / 2.01x (walls' loads off 2.48x / 2.15x),
+2-D 2.86x / 2.73x. How these were run, and the AMD EPYC (Zen 4) figures of the day
+before: docs/benchmarks/fluid_throughput_history.md.
 
-The step's speed-up from 1 to 2 threads (``--speedup 10``, quiet): 3-D 107 012 particles
-1.77 / 1.66, 2-D 84 008 particles 1.78 / 1.82; the 3-D pair loop alone scales 1.80. Bytes
-per particle kept between steps: 237 (2-D), 265 (3-D); float32 adds 56. Where a step's
-CPU time goes at one thread (``--profile``, 2026-11-25; 3-D 68 ms, 2-D 4.2 ms per step):
+The step's speed-up from 1 to 2 threads (``--speedup 10``, quiet, AMD EPYC Zen 4): 3-D
+107 012 particles 1.77 / 1.66, 2-D 84 008 particles 1.78 / 1.82; the 3-D pair loop alone
+scales 1.80. Bytes per particle kept between steps: 237 (2-D), 265 (3-D); float32 adds
+56. Where a step's CPU time goes at one thread (``--profile``, Intel Xeon, 2026-11-26;
+3-D 60 ms, 2-D 4.1 ms per step):
 
     part                                       3-D      2-D
-    pair loop (fluid.equations.interact)       88.5 %   64.7 %
-    gather (one pass reorders every array)      3.8     10.6
-    packing (EOS, the pair loop's table)        1.9      5.6
-    integrator (Verlet)                         1.4      3.2
-    sort: x-order in cells, sub-bin table       1.1      4.5
-    sort: counting sort (serial)                0.6      2.7
-    sort: binning                               0.5      0.9
-    time step                                   0.5      2.2
-    group loads                                 0.7      1.3
-    NaN check (serial)                          0.5      0.8
-    the rest (Python)                           0.6      3.3
+    pair loop (fluid.equations.interact)       87.0 %   71.1 %
+    gather (one pass reorders every array)      3.1      6.2
+    packing (EOS, the pair loop's table)        2.4      4.6
+    integrator (Verlet)                         1.5      2.8
+    sort: x-order in cells, sub-bin table       1.4      5.1
+    sort: counting sort (serial)                0.9      2.3
+    sort: binning                               0.6      1.2
+    time step                                   0.8      1.5
+    group loads                                 0.9      1.0
+    NaN check (serial)                          0.7      1.0
+    the rest (Python)                           0.7      3.0
 
 The 3-D pair loop visits 218 candidates per particle (65 within 2h) at about 59
-floating-point operations each: 22.7 GFLOP/s, 55 % of the one 512-bit multiply or FMA
-Zen 4 issues per cycle (fluid.equations.interact says why float32 gives about 1.24x, not 2).
+floating-point operations each: on the AMD EPYC 22.7 GFLOP/s, 55 % of the one 512-bit
+multiply or FMA Zen 4 issues per cycle (fluid.equations.interact says why float32 gives about 1.24x, not 2).
 Laminar viscosity adds 7 % to a 2-D step, XSPH 8 %, both 14 %, the renormalised diffusion
 (``diffusion="antuono"``) 70 %; ``--walls adami``: fluid.wall_density. The default OpenMP
 threading layer is the fastest on a quiet machine; on a loaded one set
