@@ -109,6 +109,7 @@ from cosim.errors import InputError
 
 from fluid.kernels import grad_scale, grad_shape, grad_shape_f32, w_value, w_value_f32
 from fluid.neighbours import XBINS, cell_coords, row_range, row_range_binned, x_bins
+from fluid.particles import Kind
 
 _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 
@@ -269,6 +270,7 @@ def hydrostatic_density(depth, rho0: float, c0: float, gamma: float, g: float) -
 #: only (plain dynamic boundaries whose loads nobody reads), nothing (walls whose densities
 #: come from the fluid, fluid.wall_density)
 WALLS_FULL, WALLS_CONTINUITY, WALLS_NONE = 0, 1, 2
+FIXED_WALL, MOVING_WALL = int(Kind.FIXED_WALL), int(Kind.MOVING_WALL)
 
 
 @njit(**_OPTS)
@@ -373,7 +375,7 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
             # a boundary particle with no fluid within 2h: every term below is zero; a
             # tank-wall particle whose load is not wanted: its continuity rate at most
             dry = skip_dry and fa == zero and near[cx + nx * (cy + ny * cz)] == 0
-            if dry or (walls != WALLS_FULL and fa == zero and (kind[a] == 1 or kind[a] == 2)):
+            if dry or (walls != WALLS_FULL and fa == zero and (kind[a] == FIXED_WALL or kind[a] == MOVING_WALL)):
                 out[VISC, a] = 0.0
                 for d in range(acc.shape[1]):
                     acc[a, d] = 0.0
@@ -820,6 +822,8 @@ def interact(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, out, acc, xs, G, 
     if f32 and T is None:
         T = np.empty((N_ROWS_F32, S.shape[1]), np.float32)
         pack_f32(S, prm[P_RHO0], lo, cell, nx, ny, nz, T)
+    if walls != WALLS_FULL and (kind is None or kind.shape[0] != acc.shape[0]):
+        raise InputError(f"interact: walls={walls} picks the wall particles by kind; give kind ({acc.shape[0]},)")
     with _dynamic_chunks():
         loop(S, S if T is None or not f32 else T, acc.shape[0], start, tab, lo, cell, nx, ny, nz, prm, out, acc, xs, G,
              _NOWHERE if near is None else near, _NO_KINDS if kind is None else kind, walls)

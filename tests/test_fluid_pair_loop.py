@@ -7,6 +7,7 @@ import math
 import numpy as np
 import pytest
 
+from cosim.errors import InputError
 from fluid import equations as eq
 from fluid.geometry import block
 from fluid.kernels import alpha_d, kernel_id
@@ -230,3 +231,7 @@ def test_boundary_particles_far_from_the_fluid_are_skipped_exactly(dim):
     for a, b in zip(full, (part.drho, part.acc, part.visc, part.xsph)):
         assert np.array_equal(a, b)
     assert (np.abs(full[0][~skipped]) > 0).sum() > 100
+    with pytest.raises(InputError, match="kind"):  # the walls are picked by kind
+        eq.interact(np.zeros((eq.N_ROWS, 1)), start, np.zeros(1, np.uint16), np.zeros(3), 1.0, 1, 1, 1, 0,
+                    args[8], np.zeros((2, 1)), np.zeros((1, dim)), np.zeros((0, dim)), np.zeros((3, 0)),
+                    walls=eq.WALLS_CONTINUITY)
