@@ -40,6 +40,7 @@ from numba import cuda
 
 from fluid import equations as eq
 from fluid.kernels import WENDLAND
+from fluid.wall_density import SW_MIN
 
 #: threads per block of every kernel
 TPB = 128
@@ -802,7 +803,7 @@ def k_adami(P, rho, kind, accw, has_acc, n, start, lo, inv_cell, nx, ny, nz, ker
                         pj = B * (x ** gamma - 1.0)
                     sw += w
                     sp += w * (pj + rho0 * (bx * rx + by * ry + bz * rz))
-        p = max(sp / sw, p_floor) if sw > 0.0 else 0.0
+        p = max(sp / sw, p_floor) if sw > SW_MIN * ad else 0.0  # w carries ad here
         rho[i] = rho0 * (1.0 + p / B) ** inv_gamma
 
 
