@@ -157,8 +157,10 @@ class FluidConfig:
     #: densities come from the fluid): a 3-D dam break's step 10 % shorter, the rates of
     #: the SPH wind-turbine scene (examples/wind_turbine_base.py, dx = 2 m) half as long
     #: (docs/benchmarks/fluid_throughput_history.md). The walls' group loads then read NaN
-    #: and boundary_forces_now refuses. The fluid's own rates are unchanged; scenes set it
-    #: from their probes (cosim.scene.build.fluid_config)
+    #: and boundary_forces_now refuses. The fluid's rates are unchanged, but the walls'
+    #: viscous terms leave the time step's bound (fluid.equations.interact), so the step
+    #: grows: the quick elastic-table2 case's a = 206 mm peak moved by 6 % with it, which is
+    #: why scenes keep the default
     wall_loads: bool = True
     #: where the fluid steps: "cpu" (numba on the host, the reference) or "cuda" (an NVIDIA
     #: GPU through numba-cuda, or numba's CUDA simulator with NUMBA_ENABLE_CUDASIM=1;

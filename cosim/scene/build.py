@@ -61,10 +61,7 @@ def water_level(scene) -> float | None:
 def fluid_config(scene, setup):
     from fluid.solver import FluidConfig
 
-    # the walls' loads only where a probe reads them (wall-pressure patches): a scene pays
-    # for what it contains
-    return FluidConfig(dim=scene.world.dim, dx=scene.fluid.dx, g=scene.world.gravity,
-                       wall_loads=bool(scene.probes.pressure), **setup.config)
+    return FluidConfig(dim=scene.world.dim, dx=scene.fluid.dx, g=scene.world.gravity, **setup.config)
 
 
 def _wavemaker(scene):
