@@ -206,11 +206,7 @@ class MDBC:
     def __call__(self, ps, start, grid) -> None:
         """Overwrite the densities of the corrected particles of ``ps`` (sorted by cell on
         ``grid``, ``start`` its cell offsets)."""
-        lo = np.zeros(3)
-        if self.dim == 3:
-            lo[:] = grid.lo
-        else:
-            lo[0], lo[2] = grid.lo
+        lo = grid.lo3
         nx, ny, nz = grid.shape
         if self.low_order.shape[0] != ps.n:
             self.low_order = np.zeros(ps.n, np.int8)

@@ -829,6 +829,13 @@ def interact(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, out, acc, xs, G, 
              _NOWHERE if near is None else near, _NO_KINDS if kind is None else kind, walls)
 
 
+def require_pair_grid(grid, h: float) -> None:
+    """Refuse a grid other than the pair loops' own: cells 2h wide (``h`` [m]), reach 1."""
+    if grid.reach != 1 or abs(grid.cell - 2.0 * h) > 1e-12 * grid.cell:
+        raise InputError(f"the pair loop needs a grid of cells 2h = {2.0 * h} m wide with reach 1, got "
+                         f"cell {grid.cell} m, reach {grid.reach}: Grid.covering(lo, hi, 2 * h)")
+
+
 class Workspace:
     """Arrays :func:`evaluate` reuses from call to call (allocating and first touching a
     few MB per step costs as much as the equation of state)."""
@@ -874,15 +881,9 @@ def evaluate(pos, vel, rho, mass, kind, start, grid, kernel: int, prm, rho0: flo
     acc = work.get("acc", (n, dim))
     xsph = prm[P_XSPH] > 0.0
     xs = work.get("xsph", (n, dim)) if xsph else work.get("xsph0", (0, dim))
-    lo = np.zeros(3)
-    if dim == 3:
-        lo[:] = grid.lo
-    else:
-        lo[0], lo[2] = grid.lo
+    lo = grid.lo3
     nx, ny, nz = grid.shape
-    if grid.reach != 1 or abs(grid.cell - 2.0 * prm[P_H]) > 1e-12 * grid.cell:
-        raise InputError(f"the pair loop needs a grid of cells 2h = {2.0 * prm[P_H]} m wide with reach 1, got "
-                         f"cell {grid.cell} m, reach {grid.reach}: Grid.covering(lo, hi, 2 * h)")
+    require_pair_grid(grid, prm[P_H])
     tab = x_bins(S[X], start, grid) if xbins is None else xbins
     if prm[P_RENORM] > 0.0:
         G = work.get("grad", (3, n))
@@ -940,11 +941,7 @@ def boundary_pressure(pos, vel, rho, mass, kind, start, grid, rho0: float, c0: f
     S = np.empty((N_ROWS, n))
     p = np.empty(n)
     pack(pos, vel, rho, mass, kind, rho0, c0, gamma, p, S)
-    lo = np.zeros(3)
-    if dim == 3:
-        lo[:] = grid.lo
-    else:
-        lo[0], lo[2] = grid.lo
+    lo = grid.lo3
     out = np.empty(n)
     nx, ny, nz = grid.shape
     _boundary_pressure(S, p, start, lo, 1.0 / grid.cell, nx, ny, nz, 0.5 * grid.cell * grid.reach, out)

@@ -59,6 +59,14 @@ class Grid:
     def ncells(self) -> int:
         return self.shape[0] * self.shape[1] * self.shape[2]
 
+    @property
+    def lo3(self) -> np.ndarray:
+        """The low corner as (x, y, z) [m], y = 0 in 2-D: the pair loops' rows are always
+        x, y, z."""
+        if self.lo.size == 3:
+            return self.lo.copy()
+        return np.array([self.lo[0], 0.0, self.lo[1]])
+
 
 @njit(parallel=True, **_OPTS)
 def bin_particles(pos, lo, inv_cell, nx, ny, nz, cell):
@@ -277,19 +285,23 @@ def _near_cells(kind, start, nx, ny, nz, a, b):
         _or3(a, b, iz * plane, (iz + 1) * plane, plane if iz > 0 else 0, plane if iz < nz - 1 else 0)
 
 
-def fluid_near_cells(kind: np.ndarray, start: np.ndarray, grid: Grid) -> np.ndarray:
+def fluid_near_cells(kind: np.ndarray, start: np.ndarray, grid: Grid, work=None) -> np.ndarray:
     """For particles sorted by cell on ``grid`` (``start`` from :func:`sort_by_cell`, kind 0
     fluid): a uint8 flag per cell, 1 where a fluid particle lies in the cell or in one of the
     cells around it (``reach`` 1: 27 cells in 3-D, 9 in 2-D), i.e. 0 where every particle
     of the cell is farther than one cell from all the fluid. With cells as wide as the
     kernel's support, a boundary particle in a cell flagged 0 has no fluid neighbour: every
     pair term it has vanishes, so the pair loops can skip it (dry walls: the tank above the
-    water, the walls' outer layers beyond the support). O(N + cells)."""
+    water, the walls' outer layers beyond the support). O(N + cells). ``work``: a
+    :class:`fluid.equations.Workspace` whose two flag arrays are reused (and the result is
+    one of them, overwritten by the next call)."""
     if grid.reach != 1:
         raise InputError(f"fluid_near_cells needs a grid of reach 1, got {grid.reach}")
     nx, ny, nz = grid.shape
-    a = np.empty(grid.ncells, np.uint8)
-    b = np.empty(grid.ncells, np.uint8)
+    if work is None:
+        a, b = np.empty(grid.ncells, np.uint8), np.empty(grid.ncells, np.uint8)
+    else:
+        a, b = work.get("near_a", (grid.ncells,), np.uint8), work.get("near_b", (grid.ncells,), np.uint8)
     _near_cells(kind, start, nx, ny, nz, a, b)
     return b
 

@@ -794,7 +794,7 @@ class Fluid:
     def _rates(self):
         c = self.config
         ps = self.ps
-        self.near_fluid = fluid_near_cells(ps.kind, self._start, self._grid)
+        self.near_fluid = fluid_near_cells(ps.kind, self._start, self._grid, self._work)
         if self.boundary_correction is not None:
             self.boundary_correction(ps, self._start, self._grid)
         self._drho, self._acc, visc, self._cs, self._xsph = eq.evaluate(

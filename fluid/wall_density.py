@@ -78,8 +78,7 @@ import math
 import numpy as np
 from numba import njit, prange, uint64
 
-from cosim.errors import InputError
-from fluid.equations import PAD, tait_B
+from fluid.equations import PAD, _tait, require_pair_grid, tait_B
 from fluid.kernels import alpha_d, kernel_id, w_value
 from fluid.neighbours import XBINS, cell_coords, row_range_binned
 from fluid.particles import Kind
@@ -99,19 +98,14 @@ def _fluid_rows(pos, rho, kind, rho0, B, gamma, R):
     0 for boundary particles."""
     three = pos.shape[1] == 3
     zc = pos.shape[1] - 1
-    seven = gamma == 7.0
+    c0 = math.sqrt(gamma * B / rho0)
+    e = 0.5 * (gamma - 1.0)
     for j in prange(rho.shape[0]):
         R[0, j] = pos[j, 0]
         R[1, j] = pos[j, 1] if three else 0.0
         R[2, j] = pos[j, zc]
         f = 1.0 if kind[j] == 0 else 0.0
-        x = rho[j] / rho0
-        if seven:  # pow costs more than the rest
-            x3 = x * x * x
-            pj = B * (x3 * x3 * x - 1.0)
-        else:
-            pj = B * (x ** gamma - 1.0)
-        R[3, j] = f * pj
+        R[3, j] = f * _tait(rho[j], rho0, c0, gamma, B, e)[0]
         R[4, j] = f
 
 
@@ -206,14 +200,8 @@ class AdamiWalls:
 
     def __call__(self, ps, start, grid) -> None:
         c = self.fluid.config
-        if grid.reach != 1 or abs(grid.cell - 2.0 * c.h) > 1e-12 * grid.cell:
-            raise InputError(f"AdamiWalls needs the fluid's grid of cells 2h = {2.0 * c.h} m wide with reach 1, got "
-                             f"cell {grid.cell} m, reach {grid.reach}")
-        lo = np.zeros(3)
-        if c.dim == 3:
-            lo[:] = grid.lo
-        else:
-            lo[0], lo[2] = grid.lo
+        require_pair_grid(grid, c.h)
+        lo = grid.lo3
         nx, ny, nz = grid.shape
         acc = self.fluid.prescribed_acceleration()
         has = acc is not None

@@ -33,12 +33,7 @@ class DeviceState:
         self.grid = grid
         nx, ny, nz = grid.shape
         self.ncells = nx * ny * nz
-        lo = np.zeros(3)
-        if dim == 3:
-            lo[:] = grid.lo
-        else:
-            lo[0], lo[2] = grid.lo
-        self.lo3 = cuda.to_device(lo)  # the pair loop's (x, y, z)
+        self.lo3 = cuda.to_device(grid.lo3)  # the pair loop's (x, y, z)
         self.lo = cuda.to_device(np.asarray(grid.lo, np.float64))  # the binning's (dim,)
         f2 = lambda: cuda.device_array((dim, n), np.float64)  # noqa: E731
         f1 = lambda: cuda.device_array(n, np.float64)  # noqa: E731
