@@ -15,22 +15,25 @@ The machine may be shared: ``cpu_s_per_wall_s`` below the thread count says so, 
 figure to compare between runs with ``--threads 1`` (alternate the runs being compared).
 ``--threads N`` sets NUMBA_NUM_THREADS, so that no idle worker thread spins on the CPU.
 
-Current figures: Intel Xeon (Emerald Rapids, family 6 model 207), AVX-512 (8 float64
-lanes), 2 cores, 2026-11-26, the machine quiet (load below 1.8), three alternating runs of
-DualSPHysics' step count over the dam breaks' first 0.03 s (394 steps in 3-D, 944 in
-2-D): million particle-steps per second, best (range); "walls' loads off" is
-``--wall-loads off`` (FluidConfig.wall_loads: the walls get their continuity rate alone,
-as DualSPHysics' fixed boundaries do).
+Current figures: Intel Xeon (Emerald Rapids, family 6 model 207), AVX-512, of which numba's
+LLVM uses 256-bit vectors here (4 float64 lanes; forcing 512 gains 1.05x in 3-D, nothing
+in 2-D: the history file), 2 cores, 2026-11-26, the machine quiet (load below 1.8), three
+alternating runs of DualSPHysics' step count over the dam breaks' first 0.03 s (394 steps
+in 3-D, 944 in 2-D): million particle-steps per second, best (range); "walls' loads off"
+is ``--wall-loads off`` (FluidConfig.wall_loads: the walls get their continuity rate and
+their viscous bound on the step alone, as DualSPHysics' fixed boundaries do; the 3-D
+figures of that column are from the day's second session, after that change, against
+the first session's DualSPHysics runs).
 
     case                                  threads  DualSPHysics 5.4     ours              ratio   walls' loads off   ratio
     2-D dp = 0.01 m,  22 008 particles       1     1.467 (1.430-1.467)  5.48 (4.66-5.48)  3.74x   5.51 (4.56-5.51)   3.76x
                                              2     2.727 (2.660-2.727)  9.75 (9.47-9.75)  3.58x   9.76 (9.31-9.76)   3.58x
-    3-D dp = 0.017 m, 107 012 particles      1     0.596 (0.586-0.596)  1.79 (1.77-1.79)  3.00x   1.92 (1.73-1.92)   3.22x
-                                             2     1.181 (1.104-1.181)  3.08 (3.01-3.08)  2.61x   3.30 (3.27-3.30)   2.80x
+    3-D dp = 0.017 m, 107 012 particles      1     0.596 (0.586-0.596)  1.79 (1.77-1.79)  3.00x   1.93 (1.86-1.93)   3.24x
+                                             2     1.181 (1.104-1.181)  3.08 (3.01-3.08)  2.61x   3.25 (3.19-3.25)   2.75x
 
 DualSPHysics: its CPU release build (-O3 -ffast-math), same particles and step counts.
 Per simulated second (our Verlet step 1.3 times shorter, 5.85e-5 s against 7.6e-5 s in
-3-D, 2.42e-5 against 3.18e-5 in 2-D): 3-D 2.31x / 2.01x (walls' loads off 2.48x / 2.15x),
+3-D, 2.42e-5 against 3.18e-5 in 2-D): 3-D 2.31x / 2.01x (walls' loads off 2.49x / 2.12x),
 2-D 2.86x / 2.73x. How these were run, and the AMD EPYC (Zen 4) figures of the day
 before: docs/benchmarks/fluid_throughput_history.md.
 
@@ -285,7 +288,7 @@ def main(argv=None):
                     help="tank-wall densities (FluidConfig.walls; dbc: the reference case)")
     ap.add_argument("--wall-loads", choices=["on", "off"], default="on",
                     help="the fluid's load on the walls computed (FluidConfig.wall_loads; off: the walls get their "
-                         "continuity rate only, as DualSPHysics' fixed boundaries)")
+                         "continuity rate and viscous step bound only, as DualSPHysics' fixed boundaries)")
     ap.add_argument("--precision", choices=["float64", "float32"], default="float64",
                     help="arithmetic of the pair terms (FluidConfig.precision)")
     ap.add_argument("--profile", action="store_true",

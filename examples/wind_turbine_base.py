@@ -61,16 +61,17 @@ over 20 s windows). The wave at the base is the piston's far field, H = 0.700 m 
 The SPH fluid on the same scene (``--set fluid.model=sph --set fluid.dx=2.0``, the 3-D
 wave set-up: h = 2 dx, four wall layers): 43 402 particles, c0 = 140 m/s, coupling steps of
 ~5 ms with the light-body sub-iterations the coupler picks (the base weighs 0.18 of the
-water its volume holds); 117 CPU-s per simulated second on one thread of an Intel Xeon
+water its volume holds); 88 CPU-s per simulated second on one thread of an Intel Xeon
 (Emerald Rapids, 2026-11-26, the 0.2 s and 1.2 s runs' CPU differenced, so compilation
-apart; 74 with the tank walls' loads left out, ``FluidConfig.wall_loads``, which a scene
-does not do), about 2.9 CPU-hours for the 90 s. A machinery check only: the 1.51 m draft
+apart; the scene leaves out the tank walls' own accelerations, which no probe of it reads,
+``FluidConfig.wall_loads``: 117 with them, the same motion to every digit), about 2.2
+CPU-hours for the 90 s. A machinery check only: the 1.51 m draft
 is under one spacing, and the boundary particles feel the water over their kernel's
 reach, so at t = 0 the fluid lifts the base with 900 kN where hydrostatics gives 429 kN
-(weight + the lines' pull); the base leaps 2.9 m in 1.2 s. A rate evaluation costs 5.7
-times as much at dx = 1 m (556 against 97 ms, one thread), with twice the steps: ~1 300
-CPU-s per simulated second, ~33 CPU-hours for the 90 s; three spacings over the draft
-(dx = 0.5 m) another ~15 times that, ~500 CPU-hours (extrapolated, not run).
+(weight + the lines' pull); the base leaps 2.9 m in 1.2 s. A rate evaluation costs 6.4
+times as much at dx = 1 m (465 against 72.7 ms, one thread), with twice the steps: ~1 100
+CPU-s per simulated second, ~28 CPU-hours for the 90 s; three spacings over the draft
+(dx = 0.5 m) another ~15 times that, ~400 CPU-hours (extrapolated, not run).
 The wave alone is cheap to check: without the body the flume's wave is the 2-D one (the
 tank is uniform across), and a 2-D flume of the scene's depth (360 m long, so no
 reflection reaches the gauges before 46 s) makes 0.98 H at the base's x = 70 m at dx = 2 m

@@ -153,14 +153,13 @@ class FluidConfig:
     walls: str = "dbc"
     #: the fluid's load on the tank walls (FIXED_WALL and MOVING_WALL particles) is computed
     #: (group loads of the wall groups, wall-pressure patches). False: the pair loop gives
-    #: the wall particles their continuity rate only ("dbc") or nothing ("adami", whose
-    #: densities come from the fluid): a 3-D dam break's step 10 % shorter, the rates of
-    #: the SPH wind-turbine scene (examples/wind_turbine_base.py, dx = 2 m) half as long
-    #: (docs/benchmarks/fluid_throughput_history.md). The walls' group loads then read NaN
-    #: and boundary_forces_now refuses. The fluid's rates are unchanged, but the walls'
-    #: viscous terms leave the time step's bound (fluid.equations.interact), so the step
-    #: grows: the quick elastic-table2 case's a = 206 mm peak moved by 6 % with it, which is
-    #: why scenes keep the default
+    #: the wall particles their continuity rate ("dbc") and their viscous terms' bound on
+    #: the step only, not their accelerations: the fluid's rates and the step are those of
+    #: the full pass (to round-off), the walls' group loads read NaN and
+    #: boundary_forces_now refuses. The rates of the SPH wind-turbine scene
+    #: (examples/wind_turbine_base.py, "adami") take 0.75 / 0.83 of the time at dx = 2 / 1 m,
+    #: a 3-D dam break's ("dbc") 0.96 (docs/benchmarks/fluid_throughput_history.md). Scenes
+    #: set it from their probes (cosim.scene.build.fluid_config)
     wall_loads: bool = True
     #: where the fluid steps: "cpu" (numba on the host, the reference) or "cuda" (an NVIDIA
     #: GPU through numba-cuda, or numba's CUDA simulator with NUMBA_ENABLE_CUDASIM=1;

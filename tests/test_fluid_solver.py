@@ -7,6 +7,7 @@ import pytest
 
 from cosim.errors import InputError, InstabilityError
 from cosim.protocol import Participant, check_participant
+import fluid.equations as eq
 from fluid.geometry import set_hydrostatic, tank_with_water
 from fluid.integrator import first_non_finite, stable_dt
 from fluid.particles import Kind, ParticleSet
@@ -301,6 +302,14 @@ def test_without_wall_loads_the_fluid_and_the_bodies_get_the_same_rates(walls):
     np.testing.assert_array_equal(lite._acc[fl], full._acc[fl])
     np.testing.assert_array_equal(lite._drho[fl], full._drho[fl])
     assert (lite._acc[wall] == 0).all() and np.abs(full._acc[wall]).max() > 1.0
+    # the walls' viscous terms still bound the step
+    ev = dict(zip(("full", "lite"), (eq.evaluate(f.ps.pos, f.ps.vel, f.ps.rho, f.ps.mass, f.ps.kind, f._start, f._grid,
+                                                 f._kernel, f._prm, cfg.rho0, cfg.speed_of_sound, cfg.gamma, f.ps.p,
+                                                 None, f._xbins, f.near_fluid, f._walls_rates).visc.copy()
+                                     for f in (full, lite))))
+    assert (ev["full"][wall] > 1e-3).sum() > 20  # the wetted walls' terms
+    np.testing.assert_allclose(ev["lite"], ev["full"], rtol=1e-14, atol=0)  # the same terms, fused differently
+    np.testing.assert_allclose(lite._limit.dt, full._limit.dt, rtol=1e-14)
     if walls == "dbc":  # their densities move with it
         assert np.abs(full._drho[wall]).max() > 1.0
         np.testing.assert_allclose(lite._drho[wall], full._drho[wall], rtol=0, atol=1e-12 * np.abs(full._drho).max())

@@ -61,8 +61,9 @@ def test_floating_height_balances_weight_and_lines():
 
 def test_scene_equals_hand_wired_coupler(tmp_path):
     """The scene's participants step exactly as the same set-up wired by hand (flume with
-    ceil(2 h / dx) wall layers and the paddle's back space, the wave set-up, the box at its
-    computed height, elastic catenary lines, fluid-first coupling)."""
+    ceil(2 h / dx) wall layers and the paddle's back space, the wave set-up without the
+    walls' loads, the box at its computed height, elastic catenary lines, fluid-first
+    coupling)."""
     from bodies import builders
     from bodies.mujoco_bodies import MujocoBodies
     from cosim.coupler import Coupler
@@ -78,7 +79,8 @@ def test_scene_equals_hand_wired_coupler(tmp_path):
     dx, g = 0.05, 9.81
     wm = RegularWavemaker("piston", 0.04, 1.0, 0.3, 1.0, g)
     fl = flume(dx, 3.0, 0.3, 0.45, layers=4, back=0.5 * wm.stroke + dx, beach=(2.0, 0.3))
-    cfg = FluidConfig(dim=2, dx=dx, g=g, u_max=math.sqrt(g * 0.3), **WAVES_2D)
+    # no pressure patch reads the walls' loads: the scene does not compute them
+    cfg = FluidConfig(dim=2, dx=dx, g=g, u_max=math.sqrt(g * 0.3), wall_loads=False, **WAVES_2D)
     fluid = SPHFluid(cfg, fl.fluid, fl.walls, z_surface=0.3, motions={PADDLE_GROUP: wm.paddle()})
     z = got.start_heights["box"]
     sites = {"box__left": (-0.1, 0.0, -0.05), "box__right": (0.1, 0.0, -0.05)}
@@ -88,7 +90,7 @@ def test_scene_equals_hand_wired_coupler(tmp_path):
              MooringLine((1.9, 0.0), 0.9, 5.0, EA=1e5, mass_per_length=0.588, diameter=0.01, name="box.right")]
     hand = Coupler(bodies=bodies, fluid=fluid, moorings=[(CatenaryMooring(lines), list(sites))], scheme="fluid-first")
     hand.initialize()
-    assert got.coupler.scheme == "fluid-first"
+    assert got.coupler.scheme == "fluid-first" and not got.sph.config.wall_loads
     for c in (got.coupler, hand):
         for _ in range(25):
             c.step(1.0)

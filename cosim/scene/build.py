@@ -61,7 +61,10 @@ def water_level(scene) -> float | None:
 def fluid_config(scene, setup):
     from fluid.solver import FluidConfig
 
-    return FluidConfig(dim=scene.world.dim, dx=scene.fluid.dx, g=scene.world.gravity, **setup.config)
+    # the walls' loads only where a probe reads them (wall-pressure patches): a scene pays
+    # for what it contains, and the fluid's motion and step are the same either way
+    return FluidConfig(dim=scene.world.dim, dx=scene.fluid.dx, g=scene.world.gravity,
+                       wall_loads=bool(scene.probes.pressure), **setup.config)
 
 
 def _wavemaker(scene):

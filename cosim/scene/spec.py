@@ -730,7 +730,8 @@ class Patch(Spec):
 class Probes(Spec):
     """What is sampled every ``world.sample_every``. ``gauges``: free-surface gauges at
     x [m] (2-D) or (x, y) [m] (3-D), the elevation above the still water; ``pressure``:
-    wall patches; ``motion``: the bodies whose surge, sway, heave, roll, pitch, yaw are
+    wall patches (only with them does the SPH fluid compute the walls' loads, up to a
+    quarter of a 3-D step); ``motion``: the bodies whose surge, sway, heave, roll, pitch, yaw are
     recorded (``["all"]``: every body); ``tensions``: each fairlead's tension;
     ``loads``: fluid and mooring force on each body; ``energy``: the SPH fluid's energy.
     Gauges and patches are fixed to the tank: under ``base_motion`` they move with it."""

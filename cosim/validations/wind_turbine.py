@@ -19,7 +19,7 @@ the issue's target is 10 % while no line goes taut (every line stays partly lift
 ``line_events``). It proves that the models give the base the same restoring force and the
 same response when the lines' own dynamics (the chain's inertia and drag, 60 t) matter
 little, i.e. that swapping the model changes the physics, not the coupling. It does not
-test the fluid: the SPH fluid on this scene at a resolving spacing (dx <= 0.5 m, ~500 CPU-h
+test the fluid: the SPH fluid on this scene at a resolving spacing (dx <= 0.5 m, ~400 CPU-h
 for the 90 s) is a GPU's work (``examples/wind_turbine_base.py``). The paper gives no
 numbers for it (Figs. 18-19 only).
 
