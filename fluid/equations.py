@@ -386,7 +386,8 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
                 gza = F(G[2, a])
             cx, cy, cz = cell_coords(xa, ya, za, lo, inv_cell, True, nx, ny, nz)  # packed rows: always x, y, z
             # a boundary particle with no fluid within 2h: every term below is zero; a
-            # tank-wall particle whose load is not wanted: its continuity rate at most
+            # tank-wall particle whose load is not wanted: its continuity rate ("dbc") and
+            # its viscous terms' bound on the step
             dry = skip_dry and fa == zero and near[cx + nx * (cy + ny * cz)] == 0
             if dry or (walls != WALLS_FULL and fa == zero and (kind[a] == FIXED_WALL or kind[a] == MOVING_WALL)):
                 for d in range(acc.shape[1]):

@@ -7,7 +7,7 @@ import pytest
 
 from cosim.errors import InputError, InstabilityError
 from cosim.protocol import Participant, check_participant
-import fluid.equations as eq
+from fluid import equations as eq
 from fluid.geometry import set_hydrostatic, tank_with_water
 from fluid.integrator import first_non_finite, stable_dt
 from fluid.particles import Kind, ParticleSet
