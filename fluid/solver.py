@@ -341,6 +341,9 @@ class Fluid:
         self.boundary_correction = None
         #: time [s] the prescribed groups were last placed at (the stage of the rates)
         self._t_placed = math.nan
+        #: relaxation zones (fluid.relaxation: absorbing layers, imposed waves), applied to
+        #: the fluid's velocities at the end of every step
+        self.zones: list = []
         if c.walls == "adami":
             from fluid.wall_density import AdamiWalls
             self.boundary_correction = AdamiWalls(self)
@@ -753,6 +756,10 @@ class Fluid:
         self.counters.steps += 1
         self.t += dt
         self._place_prescribed(self.t)
+        ps = self.ps
+        for zone in self.zones:
+            zone.apply(ps.pos, ps.vel, ps.kind, self.t, dt, self._aux["vel"] if self.config.integrator == "verlet"
+                       else None)
         self._check_finite()
         self._sort()
         if self.config.mls_every and self.counters.steps % self.config.mls_every == 0:

@@ -134,6 +134,8 @@ class CudaFluid(Fluid):
     # ------------------------------------------------------------------ the step
     def step(self, dt: float):
         c = self.config
+        if self.zones:
+            raise InputError("fluid: relaxation zones (Fluid.zones) run on the CPU only; use device='cpu'")
         dev = self._to_device()
         if c.integrator == "verlet":
             loads = self._group_sums()
