@@ -357,7 +357,11 @@ class AnalyticFluid:
             p_w[cells] = kin.origin[b] + self._pts[cells] @ R.T
             height[cells] = np.abs(np.einsum("j,njk->nk", R[2], self._cell_axes[cells])).sum(axis=1)  # vertical
         sea = self.sea
-        surface = self.eta if sea is None else self.eta + sea.elevation(p_w[:, 0], p_w[:, 1], self.t)
+        if sea is None:
+            surface = self.eta
+        else:
+            eta, u, a = sea.surface_and_kinematics(p_w[:, 0], p_w[:, 1], p_w[:, 2], self.t)
+            surface = self.eta + eta
         frac = np.clip((surface - p_w[:, 2]) / height + 0.5, 0.0, 1.0)  # exact for cells level with the surface
         wv = self._w * frac
         vsub = np.bincount(self._owner, wv, minlength=self.n_bodies)
@@ -368,7 +372,6 @@ class AnalyticFluid:
         T = np.cross(centre - kin.com, F)
         v_rel = kin.velocity
         if sea is not None:
-            u, a = sea.kinematics(p_w[:, 0], p_w[:, 1], p_w[:, 2], self.t)
             f_fk = self.rho * wv[:, None] * a  # Froude–Krylov inertia of each cell [N]
             F += self._per_body(f_fk)
             T += self._per_body(self._cross(p_w - kin.com[self._owner], f_fk))

@@ -7,7 +7,8 @@ Each kind answers the same questions at any points and times (numpy, vectorised:
 - ``velocity(x, y, z, t)``: the water velocity [m/s], shape ``(..., 3)``;
 - ``acceleration(x, y, z, t)``: the local time derivative ∂u/∂t [m/s^2] (not the material
   derivative Du/Dt: the linearised Euler equation and the Froude–Krylov force use ∂u/∂t);
-- ``kinematics(x, y, z, t)``: both at once, sharing the trigonometry;
+- ``kinematics(x, y, z, t)``: both at once, and ``surface_and_kinematics`` with η too,
+  sharing the trigonometry (the cost: a cosine and a sine per point and component);
 - ``dynamic_pressure(x, y, z, t, rho)`` [Pa] and ``pressure(...)``, hydrostatic included;
 - ``components``: the free linear waves (ω, a, phase, k) that make the sea, for fluids that
   need them (a potential-flow solver's excitation, a relaxation zone);
@@ -173,8 +174,12 @@ class Sea:
 
     @property
     def shortest_period(self) -> float:
-        """The shortest period [s] in the sea (a time step should resolve it)."""
-        return float(2.0 * math.pi / self._comp.omega.max())
+        """The period [s] of the highest frequency below which 99.9 % of the sea's variance
+        lies: a time step that resolves it resolves the sea."""
+        w, a = self._comp.omega, self._comp.amplitude
+        order = np.argsort(w)
+        share = np.cumsum(a[order] ** 2) / np.sum(a * a)
+        return float(2.0 * math.pi / w[order][min(np.searchsorted(share, 0.999), len(w) - 1)])
 
     def elevation(self, x, y, t) -> np.ndarray:
         """η [m] above the still water at horizontal positions ``x``, ``y`` [m], time ``t`` [s]."""
@@ -190,7 +195,15 @@ class Sea:
 
     def kinematics(self, x, y, z, t) -> tuple[np.ndarray, np.ndarray]:
         """(velocity [m/s], ∂u/∂t [m/s^2]), each ``(..., 3)``, world frame, z up."""
-        o = self._evaluate(x, y, z, t, ("u", "a"))
+        return self._vectors(self._evaluate(x, y, z, t, ("u", "a")))
+
+    def surface_and_kinematics(self, x, y, z, t) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(η [m] over each point, velocity [m/s], ∂u/∂t [m/s^2]) in one pass: each of the
+        sea's components costs a cosine and a sine per point, shared by the three."""
+        o = self._evaluate(x, y, z, t, ("eta", "u", "a"))
+        return (o["eta"], *self._vectors(o))
+
+    def _vectors(self, o):
         e = self.heading
         u = np.stack([o["uh"] * e[0], o["uh"] * e[1], o["w"]], axis=-1)
         a = np.stack([o["ah"] * e[0], o["ah"] * e[1], o["aw"]], axis=-1)
@@ -608,7 +621,8 @@ class RecordedSea(Sea):
     travelling along ``direction``; at ``at`` the sum reproduces the samples to round-off
     (and is periodic in the record's length N Δt, which must cover the run's ``duration``
     [s] when given). ``min_period`` [s]: components of shorter periods are left out (default
-    none: up to the Nyquist frequency, 2 Δt). The fade-in's front (``source``) travels at the
+    none: up to the Nyquist frequency, 2 Δt); so are those below 1e-13 of the largest (the
+    transform's round-off). The fade-in's front (``source``) travels at the
     group velocity of the largest component. Refused: a record of fewer than 4 samples,
     uneven or not increasing times, non-finite values, no wave at all, Hs/Lp > 0.1."""
 
@@ -669,6 +683,8 @@ class RecordedSea(Sea):
             w, amp, phase = w[keep], amp[keep], phase[keep]
         if not amp.max() > 0:
             raise SeaError(own, "elevation", "the record holds no wave (it is constant); give a measured elevation")
+        keep = amp > 1e-13 * amp.max()  # the others are the transform's round-off
+        w, amp, phase = w[keep], amp[keep], phase[keep]
         k = wavenumbers(w, self.depth, self.g)
         e = self.heading
         object.__setattr__(self, "_s_ref", at[0] * e[0] + at[1] * e[1])
