@@ -189,3 +189,25 @@ def test_the_sph_fluid_refuses_an_incident_sea(waves):
                                          r"fluid has none: make waves with a piston or flap in a flume"):
         Scene(world=World(dim=2), fluid=SPH(dx=0.02), domain=Flume(length=3.0, depth=0.3, height=0.45),
               waves=waves)
+
+
+def test_a_run_writes_the_incident_sea_and_its_spectrum(tmp_path):
+    """sea_components.csv holds the components and, for a spectrum, the target S(ω) beside a² / 2Δω
+    (equal: deterministic amplitudes); without gauges the sea's elevation at the origin is
+    a probe; summary.json names the sea."""
+    w = IrregularWaves(depth=30.0, hs=1.0, tp=6.0, seed=2, components=20, ramp=0.5)
+    s = dataclasses.replace(sea_scene(w, duration=1.0), probes=Probes(loads=False, tensions=False))
+    r = s.run(tmp_path / "out")
+    sea = fw.SpectralSea(1.0, 6.0, 30.0, seed=2, n_components=20, ramp=3.0, duration=1.0)
+    np.testing.assert_allclose(r["sea.eta"], sea.elevation(0.0, 0.0, r.t), rtol=0, atol=1e-12)
+    table = np.loadtxt(tmp_path / "out" / "sea_components.csv", delimiter=",", skiprows=1)
+    header = (tmp_path / "out" / "sea_components.csv").read_text().splitlines()[0].split(",")
+    assert header == ["omega [rad/s]", "amplitude [m]", "phase [rad]", "k [rad/m]", "S [m^2 s/rad]",
+                      "S_components [m^2 s/rad]"]
+    np.testing.assert_allclose(table[:, :4], np.column_stack(sea.components), rtol=1e-15)
+    np.testing.assert_allclose(table[:, 5], table[:, 4], rtol=1e-12)
+    assert (tmp_path / "out" / "sea_spectrum.png").is_file()
+    info = r.summary["sea"]
+    assert info["kind"] == "SpectralSea" and info["hs_m"] == 1.0 and info["components"] == 20
+    assert info["hs_components_m"] == pytest.approx(4 * math.sqrt(sea.moment(0)), rel=1e-12)
+    assert info["repeat_period_s"] == pytest.approx(sea.repeat_period)
