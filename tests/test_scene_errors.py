@@ -483,6 +483,10 @@ CASES = [
          "30.0 deg: a 2-D scene's waves travel along +x (0) or -x (180)", "Scene.waves.direction"),
     case("linear waves beyond breaking", "analytic", ("waves", dict(LINEAR, height=1.0, period=2.0)), "waves.height",
          "H/λ = 0.160 is beyond the breaking limit 1/7 (Michell 1893); lower H or lengthen T", "Scene.waves.height"),
+    case("a piston's wave beyond Miche's limit on the analytic fluid", "flume",
+         (("fluid", {"model": "analytic"}), ("waves", {"kind": "piston", "height": 0.19, "period": 1.04})),
+         "waves.height", "H/λ = 0.1307 is beyond the breaking limit 0.142 tanh(kd) = 0.1222 at kd = 1.3 (Miche 1944)",
+         "Scene.waves.height"),
     case("regular waves on the SPH fluid", "flume",
          ("waves", {"kind": "regular", "height": 0.04, "period": 1.0, "depth": 0.3}), "waves.kind",
          "regular waves act on the analytic fluid's bodies (fluid.model = \"analytic\"); the 'sph' fluid has none: "

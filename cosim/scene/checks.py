@@ -240,6 +240,14 @@ def _check_excitations(s, dim):
                                  s.world.gravity)
             except Exception as e:  # the wavemaker's own limits (breaking)
                 raise SceneError("waves.height", str(e)) from None
+            if isinstance(s.fluid, Analytic):  # the far-field wave it makes: the incident sea's limits
+                from cosim.errors import InputError
+                from cosim.scene.build import far_field_wave
+
+                try:
+                    far_field_wave(s)
+                except InputError as e:
+                    raise SceneError("waves.height", str(e).removeprefix("linear wave: ")) from None
         if isinstance(s.waves, PaddleRecord):
             _file(s.waves.file, "waves.file")
             _check_paddle_record(s)
