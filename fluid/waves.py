@@ -72,7 +72,7 @@ class Components(NamedTuple):
 def wavenumbers(omega, depth: float, g: float = 9.81) -> np.ndarray:
     """k [rad/m] of linear waves of angular frequencies ``omega`` [rad/s] (> 0) in water
     ``depth`` [m] deep: the dispersion relation ω² = g k tanh(k d) (Dean & Dalrymple 1991,
-    eq. 4.20), by Newton's method from Eckart's (1952) estimate, to round-off."""
+    Table 4.1), by Newton's method from Eckart's (1952) estimate, to round-off."""
     w2 = np.asarray(omega, float) ** 2
     k = w2 / g / np.sqrt(np.tanh(w2 * depth / g))
     for _ in range(50):
@@ -215,7 +215,9 @@ class Sea:
         return rho * self._evaluate(x, y, z, t, ("p",))["p"]
 
     def pressure(self, x, y, z, t, rho: float) -> np.ndarray:
-        """Total pressure [Pa] above the atmosphere: ρ g (level − z) + the dynamic pressure."""
+        """Total pressure [Pa] above the atmosphere: ρ g (level − z) + the dynamic pressure
+        (above the still water, the dynamic part is that at the still water: 0 at a linear
+        wave's crest)."""
         zz = np.asarray(z, float)
         return rho * self.g * (self.level - zz) + self.dynamic_pressure(x, y, z, t, rho)
 
@@ -305,14 +307,17 @@ class RegularWave(Sea):
         η = a cos θ,  u_h = a ω cosh k(ζ+d)/sinh kd cos θ,  w = a ω sinh k(ζ+d)/sinh kd sin θ
         p_d = ρ g a cosh k(ζ+d)/cosh kd cos θ
 
+    (u_h along the heading; ∂u/∂t their time derivatives, r' included during the fade-in).
+
     Stokes second order (Sorensen 2006, Eqs. 3.7–3.10; the profile of §3.2) adds, with
     a₂ = (k a²/4) cosh kd (2 + cosh 2kd)/sinh³ kd (→ k a²/2 in deep water)::
 
         η₂ = a₂ cos 2θ,  u₂ = (3/4) a² ω k cosh 2k(ζ+d)/sinh⁴ kd cos 2θ,
         w₂ = (3/4) a² ω k sinh 2k(ζ+d)/sinh⁴ kd sin 2θ
 
-    and the pressure from Bernoulli's equation with that potential, the constant chosen so
-    that the mean pressure at the seabed is hydrostatic (Dean & Dalrymple 1991, §11)::
+    and the pressure from Bernoulli's equation with that potential (derived here; the free-
+    surface conditions hold with it to O(a³), tests/test_waves.py), the constant chosen so
+    that the mean pressure at the seabed is hydrostatic::
 
         p₂ = ρ a² ω² [((3/4) cosh 2k(ζ+d)/sinh⁴ kd − 1/(4 sinh² kd)) cos 2θ
                        − (1/2) sinh² k(ζ+d)/sinh² kd]
@@ -614,7 +619,7 @@ class SpectralSea(Sea):
 
 @dataclass(frozen=True)
 class RecordedSea(Sea):
-    """The sea whose elevation ``elevation`` [m] was recorded at times ``times`` [s] (evenly
+    """The sea whose elevation ``eta`` [m] was recorded at times ``times`` [s] (evenly
     spaced) at the horizontal point ``at`` = (x, y) [m]: the record, less its mean (a
     gauge's datum, not a wave), is split by FFT into linear components of frequencies
     ω_j = 2π j / (N Δt), j = 1 .. N/2, each a free wave with k from the dispersion relation
@@ -655,9 +660,13 @@ class RecordedSea(Sea):
             raise SeaError(own, "times", f"the samples must be evenly spaced and increasing (steps from "
                            f"{dt.min():.6g} to {dt.max():.6g} s); resample the record to one step")
         self._check_frame()
-        at = tuple(float(v) for v in self.at) + (0.0,) * (2 - len(self.at))
-        if len(self.at) not in (1, 2) or not all(map(math.isfinite, at)):
+        try:
+            at = tuple(float(v) for v in self.at)
+        except (TypeError, ValueError):
+            at = ()
+        if len(at) not in (1, 2) or not all(map(math.isfinite, at)):
             raise SeaError(own, "at", f"{self.at!r}; give the record's point as (x, y) [m]")
+        at = at + (0.0,) * (2 - len(at))
         object.__setattr__(self, "at", at)
         if self.duration is not None:
             object.__setattr__(self, "duration", _number(own, "duration", self.duration, "s", "the run's length"))

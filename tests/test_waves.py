@@ -480,6 +480,8 @@ ETA_REC = tuple(0.1 * np.cos(np.arange(16)))
     (RecordedSea, dict(duration=9.0), "duration", "repeats itself every 8 s"),
     (RecordedSea, dict(min_period=100.0), "min_period", "leaves no component"),
     (RecordedSea, dict(eta=tuple(30 * np.cos(np.arange(16)))), "elevation", "Hs/Lp"),
+    (RecordedSea, dict(at=(1.0, 2.0, 3.0)), "at", "give the record's point as (x, y) [m]"),
+    (RecordedSea, dict(at=("x",)), "at", "give the record's point as (x, y) [m]"),
 ])
 def test_bad_sea_input_is_refused_naming_the_field(make, kw, field, says):
     base = {RegularWave: dict(height=1.0, period=8.0, depth=30.0), SpectralSea: dict(hs=2.0, tp=8.0, depth=30.0),
