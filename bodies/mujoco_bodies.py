@@ -15,6 +15,7 @@ from a 2-D fluid are forces on the body.
 
 from __future__ import annotations
 
+import logging
 import math
 from pathlib import Path
 from typing import Sequence
@@ -24,6 +25,21 @@ import numpy as np
 
 from bodies.sampling import BodyKinematics, GeomShape, check_mesh, sample_geoms
 from cosim.errors import InputError, InstabilityError
+
+log = logging.getLogger(__name__)
+
+
+def _log_warning(message: str) -> None:
+    log.warning("MuJoCo: %s", message)
+
+
+def route_warnings() -> None:
+    """MuJoCo's warnings (an unstable simulation, a full contact buffer) into this
+    module's logger. MuJoCo's own handler also appends them to ``MUJOCO_LOG.TXT`` in the
+    working folder, a file a run has no business leaving there. A handler someone else
+    installed is kept."""
+    if mujoco.get_mju_user_warning() is None:
+        mujoco.set_mju_user_warning(_log_warning)
 
 
 _GEOM_KINDS = {
@@ -70,6 +86,7 @@ class MujocoBodies:
     """
 
     def __init__(self, mjcf, bodies: Sequence[str] | None = None, name: str = "bodies"):
+        route_warnings()
         self._spec, self.model = load_spec(mjcf)
         self.data = mujoco.MjData(self.model)
         self.tethers: list[str] = []  #: names of the tendons added by add_tethers, in order

@@ -13,7 +13,9 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import signal
 import sys
+import threading
 
 from cosim.errors import CosimError
 
@@ -51,7 +53,11 @@ def _run_parser(sub):
                         "(repeatable; VALUE is read as TOML, a bare word as a string)")
     p.add_argument("--out", help="output folder (default out/<scene name>)")
     p.add_argument("--resume", action="store_true",
-                   help="continue the run in --out from its last checkpoint (bit for bit; world.duration may grow)")
+                   help="continue the run in --out from its last checkpoint (bit for bit; world.duration may grow). "
+                        "A run writes one every world.checkpoint_wall s of wall time (default 120) and at its end")
+    p.add_argument("--resume-any-version", action="store_true",
+                   help="with --resume: continue from a checkpoint that other code wrote (it may not continue bit "
+                        "for bit)")
     p.add_argument("--quiet", action="store_true", help="no progress line and no summary")
     return p
 
@@ -65,7 +71,10 @@ def cmd_run(args, parser) -> int:
     if args.set:
         scene = scene.with_values(args.set)
     out = Path(args.out) if args.out else Path("out") / scene.name
-    res = scene.run(out, resume=args.resume, progress=False if args.quiet else None)
+    if args.resume_any_version and not args.resume:
+        parser.error("--resume-any-version goes with --resume")
+    res = scene.run(out, resume=args.resume, resume_any_version=args.resume_any_version,
+                    progress=False if args.quiet else None)
     if not args.quiet:
         s = res.summary
         size = f"{s['particles']} particles ({s['fluid_particles']} fluid), " if "particles" in s else ""
@@ -504,6 +513,17 @@ def _json_default(o):
     raise TypeError(f"not JSON serialisable: {type(o).__name__}")
 
 
+class Terminated(KeyboardInterrupt):
+    """SIGTERM, raised as an interrupt so that a run ends as it does on Ctrl-C: its outputs so
+    far written, its temporary folders removed, its participants closed."""
+
+    signum = signal.SIGTERM
+
+
+def _terminate(signum, frame):
+    raise Terminated(f"signal {signum}")
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="cosim", description=__doc__.strip().splitlines()[0])
     sub = parser.add_subparsers(dest="command", required=True)
@@ -512,11 +532,20 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     handler = {"run": cmd_run, "study": cmd_study, "line": cmd_line, "validate": cmd_validate,
                "export-fmu": cmd_export_fmu, "inspect": cmd_inspect}[args.command]
+    main_thread = threading.current_thread() is threading.main_thread()
+    before = signal.signal(signal.SIGTERM, _terminate) if main_thread else None
     try:
         return handler(args, parsers[args.command])
     except CosimError as exc:
         print(f"cosim {args.command}: error: {exc}", file=sys.stderr)
         return 2
+    except KeyboardInterrupt as exc:
+        signum = getattr(exc, "signum", signal.SIGINT)
+        print(f"cosim {args.command}: interrupted ({signal.Signals(signum).name})", file=sys.stderr)
+        return 128 + signum
+    finally:
+        if main_thread:
+            signal.signal(signal.SIGTERM, before)
 
 
 if __name__ == "__main__":

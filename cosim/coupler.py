@@ -737,29 +737,38 @@ class Coupler:
         return "; " + "; ".join(parts)
 
     def write_checkpoint(self, path) -> None:
-        """Write :meth:`save_state` to a file, with the ledger of the steps so far (pickle:
-        read it back only from sources you trust)."""
-        import pickle
+        """Write :meth:`save_state` and the ledger of the steps so far to a checkpoint file
+        (:mod:`cosim.checkpoint`: data only, written atomically)."""
+        from cosim import checkpoint
+        from cosim.version import __version__, code_version
 
-        with open(path, "wb") as f:
-            pickle.dump({"format": "cosim-checkpoint-1", "state": self.save_state(),
-                         "ledger": self.ledger.arrays()}, f)
+        checkpoint.write(path, {"meta": {"of": "coupler", "cosim_version": __version__, "code_version": code_version(),
+                                         "t": self.t, "steps": self.steps},
+                                "state": self.save_state(), "ledger": self.ledger.arrays()})
 
-    def read_checkpoint(self, path) -> None:
-        """Continue from a file written by :meth:`write_checkpoint`, into a coupler set
-        up the same way (same scene, participants and options) as the one that wrote it."""
-        import pickle
+    def read_checkpoint(self, path, any_version: bool = False) -> None:
+        """Continue from a file written by :meth:`write_checkpoint`, into a coupler set up
+        the same way (same participants and options) as the one that wrote it. Refused
+        (:class:`cosim.checkpoint.CheckpointError`, naming the cause): a file that is not
+        one, corrupt or truncated, written by other code (unless ``any_version``), or
+        holding a state no run reaches (a NaN, an infinite time). Nothing in it is run."""
+        from cosim import checkpoint
+        from cosim.version import code_version
 
-        with open(path, "rb") as f:
-            try:
-                blob = pickle.load(f)
-            except (pickle.UnpicklingError, EOFError, ValueError):
-                blob = None
-        if not isinstance(blob, dict) or blob.get("format") != "cosim-checkpoint-1":
-            raise InputError(f"{str(path)!r} is not a checkpoint written by Coupler.write_checkpoint")
-        self.load_state(blob["state"])
-        if "ledger" in blob:  # the steps before the checkpoint, so that the ledger is whole
-            self.ledger.restore(blob["ledger"])
+        ck = checkpoint.read(path)
+        meta = ck.get("meta")
+        if not isinstance(meta, dict) or meta.get("of") != "coupler" or "state" not in ck or "ledger" not in ck:
+            raise checkpoint.CheckpointError(f"{str(path)!r} is a checkpoint but not one written by "
+                                             f"Coupler.write_checkpoint")
+        if meta.get("code_version") != code_version() and not any_version:
+            raise checkpoint.CheckpointError(f"{str(path)!r} was written by other code (sources "
+                                             f"{meta.get('code_version')}, these are {code_version()}); give "
+                                             f"any_version=True to read it anyway")
+        where = checkpoint.first_not_finite({"t": meta.get("t"), "state": ck["state"], "ledger": ck["ledger"]})
+        if where is not None:
+            raise checkpoint.CheckpointError(f"{str(path)!r} holds a state no run reaches ({where})")
+        self.load_state(ck["state"])
+        self.ledger.restore(ck["ledger"])  # the steps before the checkpoint, so that the ledger is whole
 
     def run(self, t_end: float, callback: Callable[[StepInfo], Any] | None = None,
             progress: bool | None = None) -> int:

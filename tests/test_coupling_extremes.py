@@ -245,7 +245,7 @@ def test_checkpoint_restart_of_sph_body_and_catenary_is_bitwise(tmp_path):
     for k, v in fresh.ledger.arrays().items():
         np.testing.assert_array_equal(v, ref_ledger[k])
     path.write_bytes(b"not a checkpoint")
-    with pytest.raises(InputError, match="is not a checkpoint written by Coupler.write_checkpoint"):
+    with pytest.raises(InputError, match=r"run.ckpt is not a checkpoint \(not an HDF5 file\)"):
         fresh.read_checkpoint(path)
 
 

@@ -536,6 +536,24 @@ CASES = [
          "body 'box' has no fairlead 'top'; its fairleads: ['left', 'right']", "Scene.moorings.lines[1].fairlead"),
     case("a fairlead not as BODY.NAME", "analytic", ("moorings.lines[0].fairlead", "box"),
          "moorings.lines[0].fairlead", "give it as BODY.NAME", "Line.fairlead"),
+    # -- names that become folders, files and columns
+    case("a scene name that climbs out of its folder", "analytic", ("name", "../../../x"), "name",
+         "'../../../x' is not accepted; give a name of letters, digits, '_' and '-' (the scene's name: the default "
+         "output folder out/NAME, plot titles)", "Scene.name"),
+    case("a scene name with a path separator", "analytic", ("name", "runs/box"), "name",
+         "'runs/box' is not accepted; give a name of letters, digits, '_' and '-'", "Scene.name"),
+    case("a line name with a comma", "analytic", ("moorings.lines[0].name", "left,1"), "moorings.lines[0].name",
+         "'left,1' is not accepted; give a name of letters, digits, '_' and '-', or names joined by single '.' (as "
+         "BODY.NAME)", "Line.name"),
+    case("a line name with a control character", "analytic", ("moorings.lines[1].name", "right\t"),
+         "moorings.lines[1].name", "'right\\t' is not accepted; give a name of letters, digits", "Line.name"),
+    case("a line name with two dots in a row", "analytic", ("moorings.lines[1].name", "box..right"),
+         "moorings.lines[1].name", "'box..right' is not accepted", "Line.name"),
+    case("a patch name with a comma", "flume", ("probes.pressure[0].name", "wall,1"), "probes.pressure[0].name",
+         "'wall,1' is not accepted; give a name of letters, digits, '_' and '-' (the probe's name)", "Patch.name"),
+    case("a fairlead with a path separator", "analytic", ("moorings.lines[0].fairlead", "box/left.x"),
+         "moorings.lines[0].fairlead", "'box/left.x': give it as BODY.NAME, two names of letters, digits, '_' and "
+         "'-'", "Line.fairlead"),
     case("two lines on one fairlead", "analytic", ("moorings.lines[1].fairlead", "box.left"),
          "moorings.lines[1].fairlead", "'box.left' is also the fairlead of moorings.lines[0]",
          "Scene.moorings.lines[1].fairlead"),
@@ -797,6 +815,12 @@ FILE_CASES = [
          "'statue.xml' has no body that can move (none has a joint)", "Scene.bodies[0].file",
          files={"statue.xml": '<mujoco><worldbody><body name="post"><geom type="sphere" size="1"/></body>'
                               '</worldbody></mujoco>\n'}),
+    case("an MJCF body whose name is not a name", "mjcf", (("bodies[0].file", "odd.xml"), ("bodies[0].bodies", [])),
+         "bodies[0].file", "body 'boat,2' of 'odd.xml' is coupled, and its name goes into the outputs: give it a "
+         "name of letters, digits, '_' and '-' in the file", "Scene.bodies[0].file",
+         files={"odd.xml": '<mujoco><worldbody><body name="float"><freejoint/><geom type="sphere" size="1"/>'
+                           '<site name="top"/></body>\n<body name="boat,2" pos="3 0 0"><freejoint/>'
+                           '<geom type="sphere" size="1"/></body></worldbody></mujoco>\n'}),
     case("a fairlead on a site the MJCF file lacks", "mjcf", ("moorings.lines[0].fairlead", "float.keel"),
          "moorings.lines[0].fairlead", "the MJCF file has no site 'keel'; the sites of body 'float': ['top']",
          "Scene.moorings.lines[0].fairlead"),
@@ -905,17 +929,53 @@ class CliCase:
     args: tuple  # after `cosim run`; the output folder is the --out given (or out/)
     says: str  # a fragment of the message on stderr
     files: tuple = ()
+    prepare: tuple = ()  # commands run first in the folder: ("cosim", ...) or ("python", ...)
 
     @property
     def out(self) -> str:
         return self.args[self.args.index("--out") + 1]
 
 
-def cli(id, args, says, files=None):
-    return CliCase(id, tuple(args), says, tuple((files or {}).items()))
+def cli(id, args, says, files=None, prepare=()):
+    return CliCase(id, tuple(args), says, tuple((files or {}).items()), tuple(tuple(c) for c in prepare))
 
 
 SCENE = {"scene.toml": BASES["analytic"]}
+#: in the folder of every command-line case: what the cases that resume do to the checkpoint
+#: of the run they make first
+CLI_FILES = {"edit_checkpoint.py": '''"""Change out/checkpoint.h5 as the argument says."""
+import pickle
+import sys
+
+from cosim import checkpoint
+
+PATH = "out/checkpoint.h5"
+what = sys.argv[1]
+if what == "truncate":  # the second half lost (a full disk, a copy cut short)
+    data = open(PATH, "rb").read()
+    open(PATH, "wb").write(data[: len(data) // 2])
+elif what == "flip":  # one bit flipped in the ledger's first time
+    import h5py
+
+    with h5py.File(PATH, "r") as f:
+        at = f["ledger/t"].id.get_offset()
+    data = bytearray(open(PATH, "rb").read())
+    data[at] ^= 1
+    open(PATH, "wb").write(data)
+elif what == "pickle":  # a pickle that, loaded, would write the file pwned
+    class Pwn:
+        def __reduce__(self):
+            return (open, ("pwned", "w"))
+
+    open(PATH, "wb").write(pickle.dumps(Pwn()))
+else:  # KEY=VALUE: one value of the checkpoint's meta changed, its checksum made anew
+    key, value = what.split("=")
+    content = checkpoint.read(PATH)
+    content["meta"][key] = float(value) if key == "t" else value
+    checkpoint.write(PATH, content)
+'''}
+FIRST = ("cosim", "run", "scene.toml", "--out", "out", "--set", "world.duration=0.1", "--quiet")
+RESUME = ["scene.toml", "--out", "out", "--resume", "--set", "world.duration=0.2"]
 CLI_CASES = [
     cli("a scene file that does not exist", ["nothing.toml", "--out", "out"],
         "no scene file 'nothing.toml'; give a .toml file or a .py script that defines `scene`"),
@@ -925,13 +985,48 @@ CLI_CASES = [
         "make.py defines no Scene named `scene` (it has ['tank']); assign one: scene = Scene(...)",
         {"make.py": "from cosim.scene import SPH, Scene, Tank\n\n"
                     "tank = Scene(fluid=SPH(dx=0.05), domain=Tank(length=1.0, height=0.5, depth=0.2))\n"}),
+    cli("a script that exits", ["make.py", "--out", "out"],
+        "make.py called sys.exit(0) while it was loaded; a scene script defines `scene` and leaves running it to "
+        "cosim", {"make.py": "import sys\n\nsys.exit(0)\n"}),
+    cli("a script that raises", ["make.py", "--out", "out"],
+        "make.py raised FileNotFoundError: [Errno 2] No such file or directory: 'hull.csv' (at make.py line 1)",
+        {"make.py": "rows = open(\"hull.csv\").read().split()\n"}),
     cli("TOML that does not parse", ["bad.toml", "--out", "out"],
         "bad.toml is not valid TOML: Expected ']' at the end of a table declaration (at line 2, column 7)",
         {"bad.toml": "# a tank\n[world\ndim = 2\n"}),
     cli("--set without '='", ["scene.toml", "--set", "world.duration", "--out", "out"],
         "world.duration: give --set as KEY.PATH=VALUE, e.g. fluid.dx=0.01", SCENE),
     cli("--resume without a checkpoint", ["scene.toml", "--resume", "--out", "out"],
-        "--resume: no checkpoint out/checkpoint.pkl; run without --resume first", SCENE),
+        "--resume: no checkpoint out/checkpoint.h5; run without --resume first", SCENE),
+    cli("--resume-any-version without --resume", ["scene.toml", "--resume-any-version", "--out", "out"],
+        "--resume-any-version goes with --resume", SCENE),
+    cli("--resume from an older cosim's pickle", RESUME,
+        "--resume: out/checkpoint.pkl is a checkpoint of an older cosim, a Python pickle, which cosim does not load "
+        "(loading one runs whatever code it holds)", SCENE | {"out/checkpoint.pkl": "(a pickle)\n"}),
+    cli("--resume from a pickle named checkpoint.h5", RESUME,
+        "--resume: out/checkpoint.h5 is a Python pickle, not a checkpoint: cosim does not load pickles (loading one "
+        "runs whatever code it holds)", SCENE, prepare=[FIRST, ("python", "edit_checkpoint.py", "pickle")]),
+    cli("--resume from a file that is not HDF5", RESUME,
+        "--resume: out/checkpoint.h5 is not a checkpoint (not an HDF5 file)",
+        SCENE | {"out/checkpoint.h5": "t = 1.0\n"}),
+    cli("--resume from a truncated checkpoint", RESUME,
+        "--resume: out/checkpoint.h5 is truncated or corrupt, HDF5 cannot open it",
+        SCENE, prepare=[FIRST, ("python", "edit_checkpoint.py", "truncate")]),
+    cli("--resume from a checkpoint with one bit flipped", RESUME,
+        "--resume: out/checkpoint.h5 is corrupt: its contents do not match their checksum (sha256)",
+        SCENE, prepare=[FIRST, ("python", "edit_checkpoint.py", "flip")]),
+    cli("--resume from a checkpoint whose time is NaN", RESUME,
+        "--resume: out/checkpoint.h5 holds a state no run reaches (t = nan); it is corrupt or was not written by "
+        "cosim", SCENE, prepare=[FIRST, ("python", "edit_checkpoint.py", "t=nan")]),
+    cli("--resume from a checkpoint of other code", RESUME,
+        "--resume: out/checkpoint.h5 was written by other code (cosim 0.1.0, sources 0123456789abcdef; this is "
+        "cosim 0.1.0 with other sources), which may not continue the run bit for bit", SCENE, prepare=[FIRST, ("python", "edit_checkpoint.py", "code_version=0123456789abcdef")]),
+    cli("--resume from a checkpoint of another scene", RESUME,
+        "world.gravity: differs from the run being resumed; a resumed run may change world.duration and "
+        "world.checkpoint_wall only", SCENE, prepare=[FIRST + ("--set", "world.gravity=9.8")]),
+    cli("--resume to a duration before the checkpoint", ["scene.toml", "--out", "out", "--resume", "--set",
+                                                         "world.duration=0.05"],
+        "world.duration: 0.05 s is before the checkpoint at 0.1 s", SCENE, prepare=[FIRST]),
     cli("an output folder under a regular file", ["scene.toml", "--out", "notes.txt/out"],
         "output folder 'notes.txt/out': 'notes.txt' is not a folder; give another --out",
         SCENE | {"notes.txt": "not a folder\n"}),
@@ -1037,18 +1132,35 @@ def build_error(c: Case, out: Path) -> InputError:
     return refusal(lambda: scene.run(out, progress=False))
 
 
+def _listing(folder: Path):
+    """What a folder holds: (name, size, modification time) of each file, or None."""
+    if not folder.is_dir():
+        return None
+    return sorted((str(p.relative_to(folder)), p.stat().st_size, p.stat().st_mtime_ns) for p in folder.rglob("*"))
+
+
+def _cosim(args, cwd) -> subprocess.CompletedProcess:
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(ROOT)] + [x for x in [os.environ.get("PYTHONPATH")] if x]))
+    cmd = [sys.executable] + (["-m", "cosim.cli", *args[1:]] if args[0] == "cosim" else list(args[1:]))
+    return subprocess.run(cmd, capture_output=True, text=True, cwd=cwd, env=env, timeout=300)
+
+
 @functools.lru_cache(maxsize=None)
 def run_cli(c: CliCase) -> tuple[int, str, bool]:
-    """(exit status, stderr, whether the output folder exists) of ``python -m cosim.cli run
-    ARGS`` in a fresh folder holding the case's files."""
+    """(exit status, stderr, whether the output folder was left as it was: not made, or,
+    where the case made it first, unchanged) of ``python -m cosim.cli run ARGS`` in a fresh
+    folder holding the case's files, after the case's ``prepare`` commands."""
     with tempfile.TemporaryDirectory(prefix="scene-errors-cli-") as tmp:
-        for name, text in c.files:
+        for name, text in {**CLI_FILES, **dict(c.files)}.items():
+            Path(tmp, name).parent.mkdir(parents=True, exist_ok=True)
             Path(tmp, name).write_text(text, encoding="utf-8")
-        env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(ROOT)] + [x for x in [os.environ.get("PYTHONPATH")]
-                                                                          if x]))
-        r = subprocess.run([sys.executable, "-m", "cosim.cli", "run", *c.args], capture_output=True, text=True,
-                           cwd=tmp, env=env, timeout=120)
-        return r.returncode, r.stderr, Path(tmp, c.out).exists()
+        for args in c.prepare:
+            r = _cosim(args, tmp)
+            assert r.returncode == 0, f"{' '.join(args)}: {r.stderr[-2000:]}"
+        before = _listing(Path(tmp, c.out))
+        r = _cosim(("cosim", "run") + c.args, tmp)
+        assert not Path(tmp, "pwned").exists(), "the checkpoint's pickle ran"
+        return r.returncode, r.stderr, _listing(Path(tmp, c.out)) == before
 
 
 def cli_message(c: CliCase) -> str:
@@ -1133,13 +1245,13 @@ def test_refused_when_built_before_anything_is_written(c, tmp_path):
 @pytest.mark.parametrize("c", CLI_CASES, ids=[c.id for c in CLI_CASES])
 def test_refused_by_the_command_line(c):
     """``cosim run`` exits with status 2, the last line of stderr says what is wrong (no
-    traceback) and no output folder is made."""
-    rc, err, out_exists = run_cli(c)
+    traceback), no output folder is made and none that was there is written into."""
+    rc, err, untouched = run_cli(c)
     assert rc == 2, err
     assert "Traceback" not in err, err
     assert err.strip().splitlines()[-1] == f"cosim run: error: {cli_message(c)}"
     assert c.says in cli_message(c), err
-    assert not out_exists
+    assert untouched
 
 
 # ------------------------------------------------------------------------ the table
@@ -1186,6 +1298,8 @@ def cli_files(c: CliCase) -> str:
             out.append(f"{_code(name)}: the base scene analytic")
         else:
             out.append(describe_files(dataclasses.replace(c, files=((name, text),))))
+    if c.prepare:
+        out.append("made first: " + ", then ".join(_code(" ".join(a)) for a in c.prepare))
     return "<br>".join(out)
 
 
@@ -1249,8 +1363,10 @@ def render() -> str:
             lines.append(f"| {k} | {_cell(c.id)} | {c.base} | {_cell(describe(c))} | {_code(c.path)} | "
                          f"{_text(build_error(c, Path(tmp) / c.id).problem)} |")
     lines += ["", "## The command line", "", f"{len(CLI_CASES)} inputs: `cosim run ARGS` in a folder holding the "
-              "files; it exits with status 2, prints the message on stderr and makes no output folder (the "
-              "`--out` given).", "",
+              "files (and [edit_checkpoint.py](#edit_checkpointpy)), after the commands that make the case's "
+              "checkpoint; it exits with status 2, prints the message on stderr, makes no output folder (the "
+              "`--out` given) and writes nothing into one that is there. A checkpoint is never run: the pickle "
+              "cases would write the file `pwned` if it were.", "",
               "| # | case | command | files | message |", "|---|---|---|---|---|"]
     for c in CLI_CASES:
         k += 1
@@ -1262,6 +1378,9 @@ def render() -> str:
     lines += ["## Base files", "", "In the working folder of every case."]
     for name, text in BASE_FILES.items():
         lines += ["", f"### {name}", "", "```", text.rstrip("\n"), "```"]
+    lines += ["", "In the folder of every command-line case."]
+    for name, text in CLI_FILES.items():
+        lines += ["", f"### {name}", "", "```python", text.rstrip("\n"), "```"]
     return "\n".join(lines)
 
 

@@ -60,7 +60,7 @@ def test_killed_run_reads_and_resumes_bit_for_bit(whole, after_checkpoints, dela
     checkpoints, probably mid-step, possibly mid-write."""
     run = tmp_path / "run"
     p = _cosim(whole / "scene.toml", "--out", run, wait=False)
-    ck = run / "checkpoint.pkl"
+    ck = run / "checkpoint.h5"
     deadline = time.monotonic() + 300
     seen, last = 0, None
     while seen < after_checkpoints and p.poll() is None and time.monotonic() < deadline:

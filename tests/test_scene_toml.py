@@ -27,7 +27,7 @@ from cosim.errors import InputError
 from cosim.scene import (MJCF, SPH, Analytic, Beach, Block, Box, Coupling, Cylinder, CylinderTank, Earthquake, Flap,
                          Flume, InclinedTank, Line, Moorings, NoFluid, PaddleRecord, Patch, Piston, PolygonTank,
                          Probes, Roll, Scene, SceneError, Shake, Sphere, TableMotion, Tank, World)
-from cosim.scene.toml_io import from_dict, parse_value, read_toml, to_dict, to_toml, with_values
+from cosim.scene.toml_io import from_dict, parse_value, read_toml, to_dict, to_toml, toml_value, with_values
 from fluid.wavemaker import wavenumber
 
 #: files for the fields that name one, valid as the checks read them (scenes here are never
@@ -91,10 +91,10 @@ def nonzero_vec(n):
     return vec(n).filter(lambda v: any(x != 0 for x in v))
 
 
-#: names of bodies, fairleads, patches: letters, digits, '_' and '-' (some not ASCII)
+#: names of scenes, bodies, fairleads, patches: letters, digits, '_' and '-' (some not ASCII)
 NAMES = st.text(alphabet="abcxyzABZ019_-éßΩ", min_size=1, max_size=8)
-#: free text (scene and line names): anything TOML can hold, quotes and escapes included
-TEXT = st.text(alphabet=st.characters(exclude_categories=("Cs",)), max_size=12)
+#: line labels: names joined by single dots
+LABELS = st.lists(NAMES, min_size=1, max_size=3).map(".".join)
 
 
 def maybe(strategy):
@@ -278,7 +278,7 @@ def moorings(draw, dim, body_list):
             if dynamic or draw(st.booleans()):
                 kw[key] = draw(pos_num(hi))
         if draw(st.booleans()):
-            name = draw(TEXT)
+            name = draw(LABELS)
             if name not in labels:  # a line's label (its name, or its fairlead) is its own
                 kw["name"] = name
                 labels.add(name)
@@ -435,7 +435,7 @@ def scenes(draw, dim=None, fluid_kind=None, domain_kind=None):
                                kw["fluid"].dx if fluid_kind == "sph" else None))
     kw["coupling"] = draw(couplings(fluid_kind == "sph"))
     if draw(st.booleans()):
-        kw["name"] = draw(TEXT)
+        kw["name"] = draw(NAMES)
     return Scene(world=world, **kw)
 
 
@@ -588,14 +588,14 @@ def test_set_assignments():
                               "bodies[0].density=600", "moorings.lines[0].EA=1e6", "moorings.lines[1].EA = 2e6",
                               "moorings.lines[0].mass_per_length=1", "moorings.lines[1].mass_per_length=1",
                               "moorings.lines[0].diameter=0.01", "moorings.lines[1].diameter=0.01",
-                              "world.plot_at=[1, 2.5]", "name=my scene"])
+                              "world.plot_at=[1, 2.5]", "name=my_scene"])
     assert new.fluid.dx == 0.01 and isinstance(new.fluid.dx, float)
     assert new.moorings.model == "moordyn"
     assert new.probes.gauges == (0.5, 1.0)
     assert new.bodies[0].density == 600.0 and isinstance(new.bodies[0].density, float)
     assert new.moorings.lines[1].EA == 2e6
     assert new.world.plot_at == (1.0, 2.5) and isinstance(new.world.plot_at[0], float)
-    assert new.name == "my scene"
+    assert new.name == "my_scene"
     # everything else as it was
     assert new.replace(fluid=scene.fluid, moorings=scene.moorings, probes=scene.probes, bodies=scene.bodies,
                        world=scene.world, name=scene.name) == scene
@@ -611,7 +611,7 @@ def test_toml_text_is_valid_and_keeps_ints_and_floats():
     scene = Scene(world=World(dim=3, duration=2, plot_at=[1]), fluid=SPH(dx=0.1, mls_every=20, threads=2),
                   domain=Tank(length=2, width=1, height=1, depth=0.5),
                   bodies=[Sphere("s", radius=0.1, pos=(1, 0.5, 0.7), density=500)],
-                  moorings=None, probes=Probes(gauges=[(1, 0.5)]), name='a "quoted" \\ name\t\n\x7f😀')
+                  moorings=None, probes=Probes(gauges=[(1, 0.5)]), name="tank-Ω")
     text = to_toml(scene)
     data = tomllib.loads(text)
     assert data["world"]["dim"] == 3 and type(data["world"]["dim"]) is int
@@ -622,11 +622,13 @@ def test_toml_text_is_valid_and_keeps_ints_and_floats():
     assert data["probes"]["gauges"] == [[1.0, 0.5]]
     assert data["name"] == scene.name
     assert "dim = 3\n" in text and "duration = 2.0\n" in text
-    # the text is ASCII; TOML forbids raw control characters (DEL included) in strings, and
+    assert text.isascii() and from_dict(data) == scene
+    # a text: ASCII; TOML forbids raw control characters (DEL included) in strings, and
     # escapes of surrogates (a character beyond U+FFFF is one \U escape)
-    assert text.isascii() and "\x7f" not in text and "\\ud83d" not in text.lower()
-    assert "\\U0001f600" in text
-    assert from_dict(data) == scene
+    awkward = 'a "quoted" \\ text\t\n\x7f😀'
+    line = f"x = {toml_value(awkward)}"
+    assert line.isascii() and "\x7f" not in line and "\\ud83d" not in line.lower() and "\\U0001f600" in line
+    assert tomllib.loads(line)["x"] == awkward
 
 
 def test_awkward_floats_keep_every_bit():

@@ -4,6 +4,7 @@ its cache, a failed run as a row, and the same study on a local Dask cluster."""
 
 import json
 import math
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -130,11 +131,17 @@ def test_unknown_metric_series_is_named(study):
 
 
 def test_cli_study_on_dask(tmp_path):
-    """The command line, on a local Dask cluster of two workers."""
+    """The command line, on a local Dask cluster of two workers; it leaves nothing in the
+    temporary folder (Dask's scratch space, the runs' build folders and unpacked FMUs)."""
+    tmp = tmp_path / "tmp"
+    tmp.mkdir()
     out = subprocess.run([sys.executable, "-m", "cosim.cli", "study", str(BOX), "--set", "world.duration=0.5",
                           "--vary", "moorings.model=catenary,fmu", "--metric", "box.left.tension:max", "--tol", "1%",
-                          "--workers", "2", "--out", str(tmp_path)], capture_output=True, text=True, timeout=600)
+                          "--workers", "2", "--out", str(tmp_path / "study")], capture_output=True, text=True,
+                         timeout=600, env=dict(os.environ, TMPDIR=str(tmp)))
     assert out.returncode == 0, out.stderr[-3000:]
+    assert not list(tmp.iterdir())
+    tmp_path = tmp_path / "study"
     js = json.loads((tmp_path / "study.json").read_text())
     a, b = (r["metrics"]["box.left.tension:max"] for r in js["rows"])
     assert a == pytest.approx(b, rel=1e-9)  # the FMU is the catenary law compiled

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import math
 
-from cosim.scene.fields import SceneError
+from cosim.scene.fields import SceneError, is_name
 from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, Box, CylinderTank, Cylinder, Earthquake, Flap, Flume,
                               ArchRib, ElasticPlate, GroundMotion, InclinedTank, IrregularWaves, NoFluid, PaddleRecord,
                               Piston, PolygonTank, RegularWaves, Roll, Sphere, TableMotion, Tank)
@@ -865,6 +865,11 @@ def _check_mjcf(b, key) -> dict:
     if not coupled:
         raise SceneError(f"{key}.file", f"{b.file!r} has no body that can move (none has a joint); give the "
                          f"floating bodies a joint, e.g. <freejoint/>")
+    for n in coupled:  # their names become the outputs' columns and series
+        if not is_name(n):
+            what = f"body {n!r}" if n else f"an unnamed body (the {len(coupled)} movable ones: {coupled})"
+            raise SceneError(f"{key}.file", f"{what} of {b.file!r} is coupled, and its name goes into the outputs: "
+                             f"give it a name of letters, digits, '_' and '-' in the file (name=\"...\")")
     sites = {mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_SITE, k): mujoco.mj_id2name(m, body, int(m.site_bodyid[k]))
              for k in range(m.nsite)}
     return {"all": [x for x in every if x], "coupled": coupled, "sites": sites}

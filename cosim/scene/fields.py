@@ -140,17 +140,38 @@ class Flag(Check):
         return v
 
 
+def is_name(v) -> bool:
+    """The rule of every name that becomes a file name, an HDF5 path or a CSV column
+    (a scene's, a body's, a probe's, a fairlead's): letters, digits, '_' and '-', so no
+    path separator, '..', comma, space or control character."""
+    return isinstance(v, str) and bool(v) and all(c.isalnum() or c in "_-" for c in v)
+
+
+def is_label(v) -> bool:
+    """A line's label: names (:func:`is_name`) joined by single dots, as ``BODY.NAME``."""
+    return isinstance(v, str) and all(is_name(part) for part in v.split("."))
+
+
 class Text(Check):
+    """A text; ``name=True``: a name (:func:`is_name`), ``name="label"``: a label
+    (:func:`is_label`) or empty."""
+
+    RULES = {True: "a name of letters, digits, '_' and '-'",
+             "label": "a name of letters, digits, '_' and '-', or names joined by single '.' (as BODY.NAME)"}
+
     def __init__(self, doc, optional=False, name=False):
         super().__init__(doc, "", optional)
         self.name = name
 
     def expected(self) -> str:
-        what = "a name of letters, digits, '_' and '-'" if self.name else "a text"
-        return f"{what} ({self.doc})"
+        return f"{self.RULES.get(self.name, 'a text')} ({self.doc})"
 
     def check(self, v, path):
-        if not isinstance(v, str) or (self.name and not (v and all(c.isalnum() or c in "_-" for c in v))):
+        if self.name == "label":
+            ok = v == "" or is_label(v)
+        else:
+            ok = is_name(v) if self.name else isinstance(v, str)
+        if not ok:
             raise SceneError(path, f"{v!r} is not accepted; give {self.expected()}")
         return v
 

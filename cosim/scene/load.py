@@ -1,6 +1,7 @@
 """A scene from a file: TOML (``Scene.from_toml``) or a Python script that defines a
 ``Scene`` named ``scene`` (run as a module, not as ``__main__``: its
-``if __name__ == "__main__":`` block stays out)."""
+``if __name__ == "__main__":`` block stays out). A script that raises or exits while it
+is loaded is refused with its message."""
 
 from __future__ import annotations
 
@@ -28,6 +29,10 @@ def load(path):
         raise  # a scene the script made and the checks refused: the message names the field
     except SyntaxError as e:
         raise SceneError("", f"{p.name} line {e.lineno}: {e.msg}; correct the script") from None
+    except SystemExit as e:  # the script's own exit would end cosim silently, with its status
+        raise SceneError("", f"{p.name} called sys.exit({e.code!r}) while it was loaded; a scene "
+                         f"script defines `scene` and leaves running it to cosim (put the exit under "
+                         f"if __name__ == \"__main__\":)") from None
     except Exception as e:
         import traceback
 

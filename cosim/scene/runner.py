@@ -19,21 +19,27 @@ samples (``world.sample_every``), particle snapshots (``snapshot_every``), check
 - ``summary.json``: set-up, scheme, sizes, steps, wall and CPU time, each series' range;
   lines that broke (``line_breaks``) and, for catenary lines, when each went fully lifted
   or taut and back (``line_events``, :mod:`moorings.line_events`);
-- ``checkpoint.pkl``: the latest checkpoint (pickle: read back only your own).
+- ``checkpoint.h5``: the latest checkpoint, data only (:mod:`cosim.checkpoint`,
+  ``docs/checkpoints.md``), replaced atomically: every ``world.checkpoint_wall`` of wall
+  time (stretched so that writing takes at most :data:`CHECKPOINT_SHARE` of the run), at
+  each ``world.checkpoint_every`` of simulated time and at the end; with both 0, none.
 
-``resume=True`` continues from ``checkpoint.pkl`` in the folder, bit for bit, to the
-scene's duration (which may be longer than the first run's: nothing else may differ).
+``resume=True`` continues from ``checkpoint.h5`` in the folder, bit for bit, to the
+scene's duration (which may be longer than the first run's; of the rest only
+``world.checkpoint_wall`` may differ). It refuses, before anything is written, a
+checkpoint of another scene, of other code (unless ``resume_any_version``), one that is
+corrupt or truncated, and one holding values no run reaches (a NaN, an infinite time).
 If the run raises, the outputs so far are written and left readable before the error
-propagates.
+propagates; the build's temporary folder goes in every case.
 """
 
 from __future__ import annotations
 
+import hashlib
 import json
 import logging
 import math
 import os
-import pickle
 import shutil
 import tempfile
 import time
@@ -41,13 +47,20 @@ from pathlib import Path
 
 import numpy as np
 
+from cosim import checkpoint
+from cosim.checkpoint import CheckpointError
 from cosim.errors import InputError
 from cosim.scene.fields import SceneError
 
 log = logging.getLogger(__name__)
 
-CHECKPOINT = "checkpoint.pkl"
-FORMAT = "cosim-scene-checkpoint-1"
+CHECKPOINT = "checkpoint.h5"
+#: what older versions wrote: a pickle, never loaded (loading one runs whatever it holds)
+LEGACY_CHECKPOINT = "checkpoint.pkl"
+#: the largest share of a run's wall time that writing checkpoints may take [-]
+CHECKPOINT_SHARE = 0.02
+#: the world's fields a resumed run may change (nothing it computes depends on them)
+RESUMABLE = ("duration", "checkpoint_wall")
 _TICK = 1e-12  # the coupler's clock resolution [s]
 #: per-particle arrays of each snapshot (attributes of the fluid's particle set)
 SNAPSHOT_FIELDS = ("vel", "rho", "p", "kind", "ids")
@@ -93,7 +106,7 @@ def _event_times(w) -> list[tuple[float, set]]:
     for t in w.plot_at:
         add(t, "plot")
     add(w.duration, "sample")
-    if w.checkpoint_every > 0:
+    if w.checkpoint_every > 0 or w.checkpoint_wall > 0:
         add(w.duration, "checkpoint")
     return [ev[k] for k in sorted(ev)]
 
@@ -136,9 +149,10 @@ class _Recorder:
                 raise InstabilityError(f"t = {t:.9g} s: probe {g.columns[int(np.argmax(bad))]!r} is not finite "
                                        f"({v[bad][0]})")
             values.append(v)
-        self.times.append(t)
         for g, v in zip(self.groups, values):
             self.rows[g.name].append(v)
+        self.times.append(t)  # last: a row counts once every group has it (an interrupt may come between)
+        for g, v in zip(self.groups, values):
             self.h5.series(f"probes/{g.name}", t, **dict(zip(g.columns, v)))
 
     def snapshot(self, t: float):
@@ -156,7 +170,8 @@ class _Recorder:
 
     def table(self, g) -> np.ndarray:
         """The samples of probe group ``g`` so far, (n_samples, n_columns)."""
-        return np.array(self.rows[g.name]).reshape(len(self.times), len(g.columns))
+        n = len(self.times)
+        return np.array(self.rows[g.name][:n], float).reshape(n, len(g.columns))
 
     def series(self):
         out, units = {}, {}
@@ -184,26 +199,62 @@ def _check_writable(out: Path) -> None:
         raise InputError(f"output folder {str(out)!r}: {str(probe)!r} {what}; give another --out")
 
 
-def _check_resume(scene, path: Path):
+def _scene_identity(scene) -> tuple[dict, str]:
+    """The scene as a checkpoint records it (without the fields a resumed run may change,
+    :data:`RESUMABLE`) and the SHA-256 of its canonical JSON."""
+    d = scene.to_dict()
+    d["world"] = {k: v for k, v in d["world"].items() if k not in RESUMABLE}
+    d = json.loads(json.dumps(d, default=_json))
+    return d, hashlib.sha256(json.dumps(d, sort_keys=True, separators=(",", ":")).encode()).hexdigest()
+
+
+def _read_resume(scene, out: Path, any_version: bool) -> dict:
+    """The checkpoint in ``out`` that ``scene`` may continue from, or a refusal naming
+    the cause (see the module docstring); nothing in the file is run."""
+    from cosim.clock import TICKS_PER_SECOND
+    from cosim.version import __version__, code_version
+
+    path = out / CHECKPOINT
     if not path.is_file():
-        raise InputError(f"--resume: no checkpoint {path}; run without --resume first (with world.checkpoint_every "
-                         f"> 0), or give the folder of that run")
-    with open(path, "rb") as f:
+        if (out / LEGACY_CHECKPOINT).is_file():
+            raise CheckpointError(f"--resume: {out / LEGACY_CHECKPOINT} is a checkpoint of an older cosim, a Python "
+                                  f"pickle, which cosim does not load (loading one runs whatever code it holds); run "
+                                  f"the scene again without --resume")
+        raise InputError(f"--resume: no checkpoint {path}; run without --resume first (a run writes one every "
+                         f"world.checkpoint_wall s of wall time and at its end), or give the folder of that run")
+    try:
+        ck = checkpoint.read(path)
+    except CheckpointError as e:
+        raise CheckpointError(f"--resume: {e}") from None
+    meta = ck.get("meta")
+    if not isinstance(meta, dict) or meta.get("of") != "scene run" or not all(
+            k in ck for k in ("scene", "state", "ledger", "probes")):
+        raise CheckpointError(f"--resume: {path} is a checkpoint but not of a scene run (cosim run, Scene.run)")
+    if meta.get("code_version") != code_version() and not any_version:
+        raise CheckpointError(f"--resume: {path} was written by other code (cosim {meta.get('cosim_version')}, "
+                              f"sources {meta.get('code_version')}; this is cosim {__version__} with other sources), "
+                              f"which may not continue the run bit for bit; run the scene again without --resume, or "
+                              f"continue anyway with --resume-any-version")
+    mine, sha = _scene_identity(scene)
+    if meta.get("scene_sha256") != sha:
         try:
-            blob = pickle.load(f)
-        except Exception:
-            blob = None
-    if not isinstance(blob, dict) or blob.get("format") != FORMAT:
-        raise InputError(f"--resume: {path} is not a checkpoint of a scene run")
-    a, b = dict(blob["scene"]), scene.to_dict()
-    a["world"] = {k: v for k, v in a["world"].items() if k != "duration"}
-    b["world"] = {k: v for k, v in b["world"].items() if k != "duration"}
-    if a != b:
-        key = _first_difference(a, b)
-        raise SceneError(key, "differs from the run being resumed; a resumed run may change world.duration only")
-    if scene.world.duration < blob["t"]:
-        raise SceneError("world.duration", f"{scene.world.duration} s is before the checkpoint at {blob['t']} s")
-    return blob
+            theirs = json.loads(ck["scene"])
+        except (TypeError, ValueError):
+            theirs = None
+        raise SceneError(_first_difference(theirs, mine), "differs from the run being resumed; a resumed run may "
+                         "change world.duration and world.checkpoint_wall only")
+    t, ticks = meta.get("t"), ck["state"].get("ticks") if isinstance(ck["state"], dict) else None
+    where = checkpoint.first_not_finite({"t": t, "state": ck["state"], "ledger": ck["ledger"],
+                                          "probes": ck["probes"]})
+    if where is None and not (isinstance(t, float) and isinstance(ticks, int) and t >= 0
+                              and abs(t - ticks / TICKS_PER_SECOND) <= 1e-9 * max(1.0, t)):
+        where = f"t = {t!r} s against the clock's {ticks!r} ticks"
+    if where is not None:
+        raise CheckpointError(f"--resume: {path} holds a state no run reaches ({where}); it is corrupt or was not "
+                              f"written by cosim; run the scene again without --resume")
+    if scene.world.duration < t:
+        raise SceneError("world.duration", f"{scene.world.duration} s is before the checkpoint at {t} s")
+    return ck
 
 
 def _first_difference(a, b, prefix=""):
@@ -236,87 +287,147 @@ def _old_snapshots(path: Path, t_max: float):
             yield read_snapshot(path, k)
 
 
-def _write_checkpoint(path: Path, scene, built, rec, t, wall):
-    tmp = path.with_suffix(".tmp")
+class _Checkpoints:
+    """Writes the run's checkpoint (one file, replaced atomically): when the scene's
+    events ask for one, and every ``world.checkpoint_wall`` s of wall time, that interval
+    stretched to ``cost / CHECKPOINT_SHARE`` when a write takes longer."""
+
+    def __init__(self, path: Path, scene, built, rec, wall_before: float):
+        from cosim.version import __version__, code_version
+
+        self.path, self.built, self.rec = path, built, rec
+        self.every = scene.world.checkpoint_wall
+        self.wall_before, self.loop0, self.next = wall_before, time.perf_counter(), math.inf
+        self.written, self.cost = 0, 0.0
+        mine, sha = _scene_identity(scene)
+        self.fixed = {"of": "scene run", "cosim_version": __version__, "code_version": code_version(),
+                      "scene_sha256": sha}
+        self.scene_json = json.dumps(mine, sort_keys=True)
+
+    def start(self) -> float:
+        """The run's loop starts now (returned): the first checkpoint by wall time is due
+        ``world.checkpoint_wall`` from now."""
+        self.loop0 = time.perf_counter()
+        self.next = self.loop0 + self.every if self.every > 0 else math.inf
+        return self.loop0
+
+    def due(self) -> bool:
+        return time.perf_counter() >= self.next
+
+    def write(self) -> None:
+        c, rec = self.built.coupler, self.rec
+        t0 = time.perf_counter()
+        rows = {g.name: rec.table(g) for g in rec.groups}
+        checkpoint.write(self.path, {
+            "meta": self.fixed | {"t": c.t, "steps": c.steps, "wall_s": self.wall_before + t0 - self.loop0},
+            "scene": self.scene_json, "state": c.save_state(), "ledger": c.ledger.arrays(),
+            "probes": {"t": np.array(rec.times, float), "rows": rows}})
+        done = time.perf_counter()
+        self.written, self.cost = self.written + 1, self.cost + done - t0
+        if self.every > 0:
+            self.next = done + max(self.every, (done - t0) / CHECKPOINT_SHARE)
+
+
+def _restore(ck: dict, built, rec) -> None:
+    """The coupler, its ledger and the probe rows as the checkpoint holds them."""
     c = built.coupler
-    with open(tmp, "wb") as f:
-        pickle.dump({"format": FORMAT, "scene": scene.to_dict(), "t": t, "state": c.save_state(),
-                     "ledger": c.ledger.arrays(), "times": rec.times, "rows": rec.rows, "wall_s": wall}, f)
-    os.replace(tmp, path)
+    rows = ck["probes"]["rows"]
+    want = {g.name: len(g.columns) for g in rec.groups}
+    have = {k: (v.shape[1] if getattr(v, "ndim", 0) == 2 else None) for k, v in rows.items()}
+    times = np.asarray(ck["probes"]["t"], float)
+    if have != want or any(len(v) != len(times) for v in rows.values()):
+        raise CheckpointError(f"--resume: the checkpoint's probe groups {have} are not this run's {want}")
+    try:
+        c.load_state(ck["state"])
+        c.ledger.restore(ck["ledger"])
+    except (KeyError, IndexError, TypeError, ValueError) as e:  # only with --resume-any-version
+        raise CheckpointError(f"--resume: the checkpoint's state does not fit this code's participants "
+                              f"({type(e).__name__}: {e}); run the scene again without --resume") from None
+    rec.times = times.tolist()
+    rec.rows = {k: list(v) for k, v in rows.items()}
 
 
-def run(scene, out, *, resume: bool = False, progress=None) -> Results:
+def run(scene, out, *, resume: bool = False, resume_any_version: bool = False, progress=None) -> Results:
     """Run ``scene`` into the folder ``out``; see the module docstring."""
-    from cosim.progress import Progress
     from cosim.scene.build import build
 
     out = Path(out)
     _check_writable(out)
-    blob = _check_resume(scene, out / CHECKPOINT) if resume else None
+    ck = _read_resume(scene, out, resume_any_version) if resume else None
     wall0, cpu0 = time.perf_counter(), time.process_time()
-    # built before anything is written: a scene that the solvers refuse leaves no folder
-    work = Path(tempfile.mkdtemp(prefix="cosim-build-"))
-    try:
-        built = build(scene, work)
-    except BaseException:
-        shutil.rmtree(work, ignore_errors=True)
-        raise
-    out.mkdir(parents=True, exist_ok=True)
-    for f in work.iterdir():  # files the participants made (an exported FMU) go with the outputs
-        shutil.copy2(f, out / f.name)
+    with tempfile.TemporaryDirectory(prefix="cosim-build-") as work:
+        # built before anything is written: a scene that the solvers refuse leaves no folder
+        built = build(scene, Path(work))
+        try:
+            rec = _Recorder(scene, built, out)
+            if ck is not None:
+                _restore(ck, built, rec)
+            out.mkdir(parents=True, exist_ok=True)
+            for f in Path(work).iterdir():  # files the participants made (an exported FMU) go with the outputs
+                shutil.copy2(f, out / f.name)
+            return _run_built(scene, built, rec, out, ck, progress, wall0, cpu0)
+        finally:
+            _close_participants(built)
+
+
+def _run_built(scene, built, rec, out: Path, ck, progress, wall0: float, cpu0: float) -> Results:
+    from cosim.progress import Progress
+
     build_s = time.perf_counter() - wall0
     c, sph = built.coupler, built.sph
     if scene.world.plot_at and sph is None:
         log.warning("world.plot_at: particle plots need the SPH fluid; this scene has none, so none are drawn")
-    rec = _Recorder(scene, built, out)
-    t_start, wall_before = 0.0, 0.0
-    if blob is not None:
-        c.load_state(blob["state"])
-        c.ledger.restore(blob["ledger"])
-        rec.times, rec.rows, t_start, wall_before = list(blob["times"]), blob["rows"], blob["t"], blob["wall_s"]
-        old = out / "run.h5.old"  # kept until the new file holds its snapshots (a kill here loses nothing)
-        if not old.exists() and (out / "run.h5").exists():
-            os.replace(out / "run.h5", old)
-        rec.open(_old_snapshots(old, t_start) if old.exists() else ())
-        old.unlink(missing_ok=True)
-    else:
-        if sph is not None and scene.fluid.settle > 0:
-            sph.settle(scene.fluid.settle)
-        rec.open()
-    scene.to_toml(out / "scene.toml")
-    _write_sea(out, built)
-    events = [(t, what) for t, what in _event_times(scene.world) if t > t_start + 0.5 * _TICK or
-              (blob is None and t == 0.0)]
-    bar = Progress(t_start, scene.world.duration, enabled=progress)
-    steps0, error = c.steps, None
-    loop0 = time.perf_counter()
-    try:
+    t_start, wall_before = (ck["meta"]["t"], float(ck["meta"].get("wall_s", 0.0))) if ck is not None else (0.0, 0.0)
+    saver = _Checkpoints(out / CHECKPOINT, scene, built, rec, wall_before)
+    steps0, error, bar, loop0 = c.steps, None, None, None
+    try:  # from the first file written on: whatever happens, the outputs so far are left whole
+        if ck is not None:
+            old = out / "run.h5.old"  # kept until the new file holds its snapshots (a kill here loses nothing)
+            if not old.exists() and (out / "run.h5").exists():
+                os.replace(out / "run.h5", old)
+            rec.open(_old_snapshots(old, t_start) if old.exists() else ())
+            old.unlink(missing_ok=True)
+        else:
+            for stale in (CHECKPOINT, CHECKPOINT + ".tmp", LEGACY_CHECKPOINT):  # an earlier run's, in this folder
+                (out / stale).unlink(missing_ok=True)
+            if sph is not None and scene.fluid.settle > 0:
+                sph.settle(scene.fluid.settle)
+            rec.open()
+        scene.to_toml(out / "scene.toml")
+        _write_sea(out, built)
+        events = [(t, what) for t, what in _event_times(scene.world) if t > t_start + 0.5 * _TICK or
+                  (ck is None and t == 0.0)]
+        bar = Progress(t_start, scene.world.duration, enabled=progress)
+        loop0 = saver.start()
         for t, what in events:
             if t > c.t:
-                bar.update(t, c.run(t, progress=False))
+                def between(info, t=t):  # a checkpoint between two events, never on one (its samples are due)
+                    if saver.due() and c.clock.ticks_until(t) > 0:
+                        saver.write()
+
+                bar.update(t, c.run(t, between, progress=False))
             if "sample" in what:
                 rec.sample(c.t)
             if "snapshot" in what:
                 rec.snapshot(c.t)
             if "plot" in what and sph is not None:
                 _plot_particles(out, sph, c.t, scene)
-            if "checkpoint" in what:
-                _write_checkpoint(out / CHECKPOINT, scene, built, rec, c.t,
-                                  wall_before + time.perf_counter() - loop0)
+            if "checkpoint" in what or saver.due():
+                saver.write()
     except BaseException as e:
         error = e
         raise
     finally:
-        bar.close(c.t)
+        if bar is not None:
+            bar.close(c.t)
         rec.close()
-        loop_s = time.perf_counter() - loop0
+        loop_s = 0.0 if loop0 is None else time.perf_counter() - loop0
         series, units = rec.series()
         summary = _summary(scene, built, series, units, c.steps - steps0, loop_s, build_s,
-                           time.process_time() - cpu0, wall_before, blob is not None, error)
+                           time.process_time() - cpu0, wall_before, ck is not None, error)
+        summary["checkpoints"] = {"written": saver.written, "write_s": round(saver.cost, 3)}
         _write_tables(out, rec, built)
         (out / "summary.json").write_text(json.dumps(summary, indent=1, default=_json))
-        _close_participants(built)
-        shutil.rmtree(work, ignore_errors=True)
         if series and rec.times:
             _plot_groups(out, rec, scene)
     return Results(rec.times, series, units, summary, out)

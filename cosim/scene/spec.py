@@ -35,8 +35,8 @@ import dataclasses
 from dataclasses import dataclass
 from pathlib import Path
 
-from cosim.scene.fields import (SceneError, Spec, choice, flag, gauges, names, num, part, parts, required, table,
-                                text, vec, vecs, whole)
+from cosim.scene.fields import (SceneError, Spec, choice, flag, gauges, is_name, names, num, part, parts, required,
+                                table, text, vec, vecs, whole)
 
 MOORING_MODELS = ("catenary", "sph-cable", "moordyn", "fmu")
 SETUPS = ("auto", "still", "waves", "sloshing", "impact", "defaults")
@@ -57,7 +57,11 @@ class World(Spec):
     gravity: float = num(9.81, "acceleration of gravity along -z, for every participant", "m/s^2", lo=0)
     sample_every: float = num(0.01, "interval between probe samples", "s", lo=0, lo_open=True)
     snapshot_every: float = num(0.1, "interval between particle snapshots in run.h5; 0: none", "s", lo=0)
-    checkpoint_every: float = num(0.0, "interval between checkpoints for --resume; 0: none", "s", lo=0)
+    checkpoint_every: float = num(0.0, "simulated time between checkpoints for --resume, landed on exactly; 0: by "
+                                  "wall time only", "s", lo=0)
+    checkpoint_wall: float = num(120.0, "wall-clock time between checkpoints for --resume, stretched where writing one "
+                                 "takes over 2 % of it; 0: none by wall time; 0 here and in checkpoint_every: no "
+                                 "checkpoints", "s", lo=0)
     plot_at: tuple = vecs("times of the particle plots (PNG)", "s", sizes=(0,))
     plot_color: str = choice("velocity", "what colours the particle plots", ("velocity", "pressure"))
 
@@ -763,13 +767,14 @@ class Line(Spec):
     EA: float = num(None, "axial stiffness (unset: inextensible)", "N", lo=0, lo_open=True)
     mass_per_length: float = num(None, "mass per metre in air", "kg/m", lo=0, lo_open=True)
     diameter: float = num(None, "hydrodynamic diameter", "m", lo=0, lo_open=True)
-    name: str = text("", "label in outputs (default: the fairlead's name)")
+    name: str = text("", "label in outputs; empty: the fairlead's name", name="label")
     break_load: float = num(None, "tension at which the line breaks (unset: never); reported, and released with "
                             "moorings.release_broken", "N", lo=0, lo_open=True)
 
     def validate(self):
-        if self.fairlead.count(".") != 1 or not all(self.fairlead.split(".")):
-            raise SceneError("fairlead", f"{self.fairlead!r}: give it as BODY.NAME, e.g. \"box.left\"")
+        if self.fairlead.count(".") != 1 or not all(is_name(x) for x in self.fairlead.split(".")):
+            raise SceneError("fairlead", f"{self.fairlead!r}: give it as BODY.NAME, two names of letters, digits, "
+                             f"'_' and '-', e.g. \"box.left\"")
 
 
 @dataclass(frozen=True)
@@ -861,7 +866,7 @@ class Scene(Spec):
     moorings: Moorings = part(None, "mooring lines and their model", Moorings)
     probes: Probes = part(Probes(), "what is recorded", Probes)
     coupling: Coupling = part(Coupling(), "coupling scheme and light-body remedy", Coupling)
-    name: str = text("scene", "the scene's name (output attributes, plot titles)")
+    name: str = text("scene", "the scene's name: the default output folder out/NAME, plot titles", name=True)
 
     def validate(self):
         from cosim.scene.checks import check_scene
@@ -903,12 +908,14 @@ class Scene(Spec):
 
         return body_names(self)
 
-    def run(self, out=None, *, resume: bool = False, progress=None):
+    def run(self, out=None, *, resume: bool = False, resume_any_version: bool = False, progress=None):
         """Run the scene, writing its outputs into ``out`` (default ``out/<name>``);
-        returns a :class:`cosim.scene.runner.Results`."""
+        returns a :class:`cosim.scene.runner.Results`. ``resume``: continue from the
+        checkpoint in ``out`` (``resume_any_version``: even one written by other code)."""
         from cosim.scene.runner import run
 
-        return run(self, out if out is not None else Path("out") / self.name, resume=resume, progress=progress)
+        return run(self, out if out is not None else Path("out") / self.name, resume=resume,
+                   resume_any_version=resume_any_version, progress=progress)
 
 
 __all__ = ["World", "NoFluid", "Analytic", "SPH", "Block", "Tank", "Beach", "Flume", "InclinedTank",

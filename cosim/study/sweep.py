@@ -18,26 +18,14 @@ import json
 import os
 import subprocess
 import sys
+import tempfile
 import time
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
-_SOURCES = ("cosim", "fluid", "bodies", "moorings")
-
-
-def code_version() -> str:
-    """A hash of the package's source files (Python and the FMU's C): a cached run is
-    reused only by the same code."""
-    root = Path(__file__).resolve().parents[2]
-    h = hashlib.sha256()
-    for pkg in _SOURCES:
-        for p in sorted((root / pkg).rglob("*")):
-            if p.suffix in (".py", ".c", ".h") and "__pycache__" not in p.parts:
-                h.update(str(p.relative_to(root)).encode())
-                h.update(p.read_bytes())
-    return h.hexdigest()[:16]
+from cosim.version import code_version  # noqa: F401 - the studies' cache key (sweep.code_version)
 
 
 @dataclass
@@ -158,26 +146,31 @@ def execute(cs: list[Case], *, workers: int, threads: int, scheduler: str | None
         raise InputError("a study on Dask needs dask.distributed: pip install 'cosim-sph[study]', or run it "
                          "with --serial") from None
 
-    cluster = None
-    if scheduler is None:
-        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None)
-        client = Client(cluster)
-    else:
-        client = Client(scheduler)
-    try:
-        futures = {client.submit(run_case, c.toml, str(c.folder), threads, version, pure=False, key=f"case-{c.key}"): c
-                   for c in cs}
-        for fut in as_completed(futures):
-            c = futures[fut]
-            try:
-                results[c.index] = fut.result()
-            except Exception as e:  # the worker itself failed: the run's row says so
-                results[c.index] = {"version": version, "complete": False, "error": f"{type(e).__name__}: {e}",
-                                    "cached": False}
-            if report:
-                report(c, results[c.index])
-    finally:
-        client.close()
-        if cluster is not None:
-            cluster.close()
+    import dask
+
+    # Dask's scratch space (locks, the workers' folders) in a folder of the study's own, gone at the end
+    with tempfile.TemporaryDirectory(prefix="cosim-dask-", ignore_cleanup_errors=True) as scratch, \
+            dask.config.set({"temporary-directory": scratch}):
+        cluster = None
+        if scheduler is None:
+            cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None)
+            client = Client(cluster)
+        else:
+            client = Client(scheduler)
+        try:
+            futures = {client.submit(run_case, c.toml, str(c.folder), threads, version, pure=False,
+                                     key=f"case-{c.key}"): c for c in cs}
+            for fut in as_completed(futures):
+                c = futures[fut]
+                try:
+                    results[c.index] = fut.result()
+                except Exception as e:  # the worker itself failed: the run's row says so
+                    results[c.index] = {"version": version, "complete": False, "error": f"{type(e).__name__}: {e}",
+                                        "cached": False}
+                if report:
+                    report(c, results[c.index])
+        finally:
+            client.close()
+            if cluster is not None:
+                cluster.close()
     return results
