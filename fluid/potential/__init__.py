@@ -16,5 +16,8 @@ Capytaine is imported only when coefficients are computed.
 
 from fluid.potential.coefficients import Coefficients, cache_dir, compute
 from fluid.potential.hull import Hull, wetted_hull
+from fluid.potential.participant import PotentialFluid, default_omega
+from fluid.potential.waves import Sea, WaveComponent, from_spectrum, regular
 
-__all__ = ["Coefficients", "Hull", "cache_dir", "compute", "wetted_hull"]
+__all__ = ["Coefficients", "Hull", "PotentialFluid", "Sea", "WaveComponent", "cache_dir", "compute",
+           "default_omega", "from_spectrum", "regular", "wetted_hull"]

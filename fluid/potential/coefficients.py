@@ -21,8 +21,8 @@ the waves travel, from +x towards +y):
 
 The irregular frequencies of the hull's interior (John 1950) are removed by a lid on the
 interior free surface (Capytaine's ``lid_mesh``, the extended boundary integral equation),
-placed where Capytaine's ``lowest_lid_position`` puts it for the highest frequency, when the
-first irregular frequency estimate lies within the frequencies asked for.
+placed where Capytaine's ``lowest_lid_position`` puts it for the highest frequency, when
+Capytaine's estimate of the first irregular frequency lies below 1.5 times the highest.
 
 Cache: computed once per hull mesh, lid, rotation centre, ``rho``, ``g``, depth,
 frequencies, headings and Capytaine version (a SHA-256 of all of them keys the file), as
@@ -111,14 +111,18 @@ def _key(hull: Hull, lid, cog, rho, g, depth, omega, headings, version) -> str:
     return h.hexdigest()[:24]
 
 
-def _lid(cpt, mesh, hull: Hull, omega_max: float, g: float):
-    """The lid mesh and its arrays, or (None, empty arrays) when no irregular frequency
-    lies below ``omega_max`` [rad/s]."""
+def _lid(cpt, mesh, hull: Hull, omega_max: float, g: float, lid: bool | None):
+    """The lid mesh and its arrays, or (None, empty arrays) when ``lid`` is False or, None,
+    when no irregular frequency is estimated below 1.5 ``omega_max`` [rad/s] (the estimate is
+    rough and the errors grow on the way to the first irregular frequency)."""
     empty = (np.zeros((0, 3)), np.zeros((0, 4)))
-    bare = cpt.FloatingBody(mesh=mesh)
-    if bare.first_irregular_frequency_estimate(g=g) > omega_max or min(hull.waterline_span) <= 0:
+    if lid is False or min(hull.waterline_span) <= 0:
         return None, empty
-    z = mesh.lowest_lid_position(omega_max, g=g)
+    bare = cpt.FloatingBody(mesh=mesh)
+    if lid is None and bare.first_irregular_frequency_estimate(g=g) > 1.5 * omega_max:
+        return None, empty
+    with np.errstate(invalid="ignore"):  # NaN where no irregular frequency lies below omega_max
+        z = mesh.lowest_lid_position(omega_max, g=g)
     z = 0.0 if not math.isfinite(z) else max(z, -0.5 * hull.draft)  # inside the hull, above its keel
     lid = mesh.generate_lid(z=z)
     return lid, (np.asarray(lid.vertices, float), np.asarray(lid.faces, float))
@@ -126,10 +130,11 @@ def _lid(cpt, mesh, hull: Hull, omega_max: float, g: float):
 
 def compute(hull: Hull, centre_of_mass_z: float, *, omega, headings=(0.0,), depth: float = math.inf,
             rho: float = 1000.0, g: float = 9.81, cache: Path | str | None = None, name: str = "body",
-            use_cache: bool = True) -> Coefficients:
+            lid: bool | None = None, use_cache: bool = True) -> Coefficients:
     """The coefficients of ``hull`` (rotation centre and centre of mass at (0, 0,
     ``centre_of_mass_z``) [m]) at ``omega`` [rad/s] and ``headings`` [deg], read from the
-    cache in ``cache`` (default :func:`cache_dir`) or solved and written there."""
+    cache in ``cache`` (default :func:`cache_dir`) or solved and written there; ``lid``: the
+    irregular-frequency lid always (True), never (False) or where estimated needed (None)."""
     cpt = require_capytaine()
     omega = np.asarray(omega, float)
     headings = np.asarray(headings, float).ravel()
@@ -146,7 +151,7 @@ def compute(hull: Hull, centre_of_mass_z: float, *, omega, headings=(0.0,), dept
                          f"must float clear of the seabed")
     cog = np.array([0.0, 0.0, centre_of_mass_z])
     mesh = cpt.Mesh(vertices=hull.vertices, faces=hull.faces, name=name)
-    lid_mesh, lid = _lid(cpt, mesh, hull, float(omega[-1]), g)
+    lid_mesh, lid = _lid(cpt, mesh, hull, float(omega[-1]), g, lid)
     key = _key(hull, lid, cog, rho, g, depth, omega, headings, cpt.__version__)
     folder = Path(cache) if cache is not None else cache_dir()
     path = folder / f"{name}-{key}.nc"
