@@ -154,6 +154,33 @@ lines = [
   { fairlead = "box.right", anchor = [20.0, -10.0], length = 25.0, weight = 50.0 },
 ]
 """,
+    "potential": """
+# 3-D: linear potential flow (Capytaine), a floating cylinder in linear waves, 20 m of water
+[world]
+dim = 3
+duration = 10.0
+
+[fluid]
+model = "potential"
+panel_size = 1.0
+omega_max = 3.0
+frequencies = 20
+
+[waves]
+kind = "linear"
+height = 0.2
+period = 6.0
+depth = 20.0
+
+[[bodies]]
+shape = "cylinder"
+name = "buoy"
+radius = 3.0
+length = 3.0
+pos = [0.0, 0.0]
+place = "floating"
+density = 500.0
+""",
     "tank2d": """
 # 2-D: SPH tank shaken by a table of displacement (motion.txt)
 [world]
@@ -364,6 +391,24 @@ CASES = [
          "0.0 [m] is out of range; give a number [m] > 0 (wave height H", "LinearWaves.height"),
     case("negative wave period", "analytic", ("waves", dict(LINEAR, period=-20.0)), "waves.period",
          "-20.0 [s] is out of range; give a number [s] > 0 (wave period T)", "LinearWaves.period"),
+    # -- the potential-flow fluid
+    case("potential flow in 2-D", "potential", (("world.dim", 2), ("bodies[0].pos", [0.0]), ("bodies[0].length", OUT)),
+         "world.dim", "linear potential flow about a body is 3-D; set world.dim = 3", "Scene.world.dim"),
+    case("potential flow: a depth other than the waves'", "potential", ("fluid.depth", 30.0), "fluid.depth",
+         "30 m differs from the waves' depth (waves.depth), 20 m", "Scene.fluid.depth"),
+    case("potential flow: a body fully submerged", "potential",
+         (("bodies[0].place", "given"), ("bodies[0].pos", [0.0, 0.0, -2.0])), "bodies[0].pos",
+         "body 'buoy' spans z = -3.5 .. -0.5 m: fully submerged, below the still water at 0 m", "Scene.bodies[0].pos"),
+    case("potential flow: a dry body", "potential", (("bodies[0].place", "given"), ("bodies[0].pos", [0.0, 0.0, 2.0])),
+         "bodies[0].pos", "body 'buoy' spans z = 0.5 .. 3.5 m: dry, above the still water", "Scene.bodies[0].pos"),
+    case("potential flow: waves outside the trusted band", "potential", ("fluid.omega_max", 1.5), "fluid.omega_max",
+         "the waves' 1.047 rad/s (period 6 s) lies outside the band the impulse response is trusted in, "
+         "0.1047 .. 0.75 rad/s", "Scene.fluid.omega_max"),
+    case("potential flow: a memory beyond what the frequencies resolve", "potential", ("fluid.memory", 30.0),
+         "fluid.memory", "30 s is longer than the 20.94 s that 20 frequencies up to 3 rad/s resolve",
+         "Scene.fluid.memory"),
+    case("potential flow: drag for an unknown body", "potential", ("fluid.quadratic_drag.box", [1.0] * 6),
+         "fluid.quadratic_drag.box", "no body named 'box'; bodies: ['buoy']", "Scene.fluid.quadratic_drag.box"),
     case("zero water depth of the waves", "analytic", ("waves", dict(LINEAR, depth=0.0)), "waves.depth",
          "0.0 [m] is out of range; give a number [m] > 0 (still-water depth over the seabed", "LinearWaves.depth"),
     case("waves' depth not the flume's", "flume", (("fluid", {"model": "analytic"}),
@@ -818,6 +863,9 @@ BUILD_CASES = [
     case("a floating body's line too short to reach", "flume", ("moorings.lines[0].length", 0.5),
          "moorings.lines[0].length", "0.5 m is shorter than the straight distance 0.6325 m from its anchor to its "
          "fairlead 'box.left' with body 'box' fully submerged, the nearest it comes", None),
+    case("potential flow: a frequency range too short for the impulse response", "potential",
+         (("fluid.omega_max", 1.0), ("fluid.frequencies", 24), ("waves.period", 20.0)), "fluid.omega_max",
+         "the impulse response rebuilds the", None),
     case("a floating body that sinks", "flume", ("bodies[0].density", 1500.0), "bodies[0].place",
          "body 'box' (30 kg) sinks: fully submerged it displaces 20 kg of water", None),
 ]

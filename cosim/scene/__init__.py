@@ -10,11 +10,11 @@ chosen from what a scene contains, :mod:`cosim.scene.runner` for what a run writ
 from cosim.scene.fields import SceneError
 from cosim.scene.spec import (MJCF, SPH, Analytic, ArchRib, Beach, Block, Box, Coupling, Cylinder, CylinderTank, Earthquake,
                               ElasticPlate, Flap, Flume, GroundMotion, InclinedTank, Line, LinearWaves, Moorings, NoFluid,
-                              PaddleRecord, Patch, Piston, PolygonTank, Probes, Record, Roll, Scene, Shake, Sphere,
-                              TableMotion, Tank, World, arch_rib_monitors)
+                              PaddleRecord, Patch, Piston, PolygonTank, Potential, Probes, Record, Roll, Scene, Shake,
+                              Sphere, TableMotion, Tank, World, arch_rib_monitors)
 
 __all__ = ["MJCF", "SPH", "Analytic", "ArchRib", "Beach", "Block", "Box", "Coupling", "Cylinder", "CylinderTank", "Earthquake",
            "ElasticPlate",
            "Flap", "Flume", "GroundMotion", "InclinedTank", "Line", "LinearWaves", "Moorings", "NoFluid",
-           "PaddleRecord", "Patch", "Piston", "PolygonTank", "Probes", "Record", "Roll", "Scene", "SceneError", "Shake",
+           "PaddleRecord", "Patch", "Piston", "PolygonTank", "Potential", "Probes", "Record", "Roll", "Scene", "SceneError", "Shake",
            "Sphere", "TableMotion", "Tank", "World", "arch_rib_monitors"]

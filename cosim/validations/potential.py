@@ -21,19 +21,20 @@ coupling): potential-hemisphere, potential-cylinder-rao.
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import numpy as np
 
 from cosim.validation import case
 
 RHO, G = 1000.0, 9.81
-HULME = Path(__file__).resolve().parents[1] / "refdata" / "potential_hemisphere_hulme1982" / "hulme1982_table1_heave.csv"
 
 
 def hulme_heave() -> np.ndarray:
     """Hulme (1982) Table 1: rows of (K a, A33 / (ρ 2/3 π a³), B33 / (ρ ω 2/3 π a³))."""
-    return np.loadtxt(HULME, delimiter=",", comments="#")
+    from cosim import refdata
+
+    return np.loadtxt(refdata.path("potential_hemisphere_hulme1982", "hulme1982_table1_heave.csv"), delimiter=",",
+                      comments="#")
 
 
 def hemisphere_coefficients(ka, panel: float, a: float = 1.0, cache=None):
@@ -196,7 +197,7 @@ def potential_cylinder_rao(quick: bool) -> dict:
             rows[f"{dof}_{w:g}"] = {"td_abs": round(abs(r["td"][dof]), 5), "fd_abs": round(abs(r["fd"][dof]), 5),
                                     "td_phase_deg": round(math.degrees(np.angle(r["td"][dof])), 2),
                                     "fd_phase_deg": round(math.degrees(np.angle(r["fd"][dof])), 2)}
-    d = heave_decay(panel, grid, duration=9.0)
+    d = heave_decay(panel, grid, duration=12.0)
     steps += d["steps"]
     T_meas = float(np.mean(d["periods"][:2]))
     fl = d["fluid"]

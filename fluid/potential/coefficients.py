@@ -54,7 +54,7 @@ log = logging.getLogger(__name__)
 #: the six rigid-body degrees of freedom, in Capytaine's names and this order
 DOFS = ("Surge", "Sway", "Heave", "Roll", "Pitch", "Yaw")
 #: bump when what is stored changes meaning (old cache files are then not read)
-CACHE_FORMAT = 1
+CACHE_FORMAT = 2
 ENV_CACHE = "COSIM_POTENTIAL_CACHE"
 EXTRA = "pip install cosim-sph[potential]"
 
@@ -198,10 +198,13 @@ def compute(hull: Hull, centre_of_mass_z: float, *, omega, headings=(0.0,), dept
 
 @contextmanager
 def _quiet(logger: str):
-    """Capytaine's per-problem INFO lines held back (its warnings still show)."""
+    """Capytaine's log held back to its errors while it solves: its per-problem lines, and its
+    warnings, which its handler prints on standard output (where ``cosim validate`` writes
+    JSON) and which say what this module checks itself (the frequencies against the panels,
+    ``fluid.potential.participant.default_omega``; a finite depth at ω = ∞)."""
     lg = logging.getLogger(logger)
     level = lg.level
-    lg.setLevel(max(level, logging.WARNING))
+    lg.setLevel(max(level, logging.ERROR))
     try:
         yield
     finally:

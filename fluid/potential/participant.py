@@ -47,7 +47,7 @@ import numpy as np
 from cosim.errors import InputError
 from fluid.potential.coefficients import Coefficients, compute, require_capytaine
 from fluid.potential.hull import KINDS, check_pierces, default_panel_size, displaced_volume, wetted_hull
-from fluid.potential.radiation import ImpulseResponse, impulse_response
+from fluid.potential.radiation import BAND, ImpulseResponse, SettingError, impulse_response
 from fluid.potential.waves import Excitation, Sea
 
 log = logging.getLogger(__name__)
@@ -58,11 +58,33 @@ PANELS_PER_WAVELENGTH = 6
 STEPS_PER_PERIOD = 50
 
 
-def default_omega(panel_size: float, g: float = 9.81, n: int = 40) -> np.ndarray:
-    """``n`` frequencies [rad/s] evenly spaced from Δω to ω_max, the frequency whose deep-water
-    wavelength ``2π g / ω²`` spans :data:`PANELS_PER_WAVELENGTH` panels of ``panel_size`` [m]."""
+#: the smallest k d at which Capytaine 3.0's finite-depth Green function returns values (it
+#: returned NaN at k d = 0.129 and below, values from 0.143 on, on two depths), with a margin
+KD_MIN = 0.15
+
+
+def lowest_omega(depth: float, g: float = 9.81) -> float:
+    """The lowest frequency [rad/s] Capytaine solves in water ``depth`` [m] deep (k d = :data:`KD_MIN`); 0 when deep."""
+    if not math.isfinite(depth):
+        return 0.0
+    return math.sqrt(g * KD_MIN / depth * math.tanh(KD_MIN))
+
+
+def frequency_grid(omega_max: float, n: int, depth: float = math.inf, g: float = 9.81) -> np.ndarray:
+    """``n`` frequencies [rad/s] evenly spaced up to ``omega_max``: from ``omega_max / n`` (so that
+    the spacing is the lowest frequency), or in shallow water from :func:`lowest_omega` if higher."""
+    lo = max(omega_max / n, lowest_omega(depth, g))
+    if lo >= omega_max:
+        raise SettingError("omega_max", f"potential flow: omega_max = {omega_max:g} rad/s is at or below "
+                           f"{lo:.4g} rad/s, the lowest frequency solvable in {depth:g} m of water; raise it")
+    return np.linspace(lo, omega_max, n)
+
+
+def default_omega(panel_size: float, g: float = 9.81, n: int = 40, depth: float = math.inf) -> np.ndarray:
+    """:func:`frequency_grid` up to ω_max, the frequency whose deep-water wavelength ``2π g / ω²``
+    spans :data:`PANELS_PER_WAVELENGTH` panels of ``panel_size`` [m]."""
     w_max = math.sqrt(2.0 * math.pi * g / (PANELS_PER_WAVELENGTH * panel_size))
-    return w_max / n * np.arange(1, n + 1)
+    return frequency_grid(w_max, n, depth, g)
 
 
 def _rotvec(R: np.ndarray) -> np.ndarray:
@@ -84,8 +106,8 @@ class PotentialFluid:
     depth:
         Water depth [m] under the still surface (inf: deep water).
     omega:
-        BEM frequencies [rad/s], increasing, evenly spaced from their spacing up is best
-        (:func:`default_omega`; None: that, per body, from its panel size).
+        BEM frequencies [rad/s], increasing, evenly spaced (:func:`frequency_grid`; None:
+        :func:`default_omega`, per body, from its panel size).
     headings:
         Wave headings [deg] the excitation is computed for (None: those of ``sea``, or 0).
     panel_size:
@@ -143,6 +165,11 @@ class PotentialFluid:
         self.coefficients: list[Coefficients] = []  #: per body, in the bodies' order
         self.impulse: list[ImpulseResponse] = []  #: per body
 
+    @property
+    def waves(self) -> Sea | None:
+        """The sea (its ``elevation(xy, t)`` is what a scene's wave gauges read)."""
+        return self.sea
+
     # -- set-up ------------------------------------------------------------------
     def _panel_size(self, body: str, kind: str, size) -> float:
         ps = self.panel_size
@@ -151,14 +178,17 @@ class PotentialFluid:
         return default_panel_size(kind, size) if ps is None else float(ps)
 
     def _check_sea(self, name: str, omega) -> None:
+        """The waves lie inside the band the impulse response is trusted in (:mod:`.radiation`)."""
         if self.sea is None:
             return
-        out = (self.sea.omega < omega[0] * (1 - 1e-9)) | (self.sea.omega > omega[-1] * (1 + 1e-9))
+        hi = BAND * omega[-1]
+        out = (self.sea.omega < omega[0] * (1 - 1e-9)) | (self.sea.omega > hi * (1 + 1e-9))
         if out.any():
             w = float(self.sea.omega[out][0])
-            raise InputError(f"potential flow: body '{name}': a wave of {w:.4g} rad/s (period {2 * math.pi / w:.4g} "
-                             f"s) lies outside the coefficients' frequencies {omega[0]:.4g}-{omega[-1]:.4g} rad/s; "
-                             f"widen omega_min/omega_max")
+            raise SettingError("omega_max", f"potential flow: body '{name}': a wave of {w:.4g} rad/s (period "
+                               f"{2 * math.pi / w:.4g} s) lies outside the coefficients' trusted band "
+                               f"{omega[0]:.4g}-{hi:.4g} rad/s (the lowest frequency to {BAND:g} x the highest); "
+                               f"set the frequencies so that it lies inside")
 
     def attach_bodies(self, bodies) -> None:
         """Compute (or read) each body's coefficients at its pose now, its floating pose;
@@ -197,8 +227,13 @@ class PotentialFluid:
             c = self._given.get(name)
             if c is None:
                 ps = self._panel_size(name, geom.kind, geom.size)
-                omega = self.omega if self.omega is not None else default_omega(ps, self.g)
+                omega = self.omega if self.omega is not None else default_omega(ps, self.g, depth=self.depth)
                 self._check_sea(name, omega)  # before the solve
+                if omega[0] < lowest_omega(self.depth, self.g) * (1 - 1e-9):
+                    raise SettingError("frequencies", f"potential flow: body '{name}': the lowest frequency "
+                                       f"{omega[0]:.4g} rad/s is below {lowest_omega(self.depth, self.g):.4g} "
+                                       f"rad/s (k d = {KD_MIN:g} in {self.depth:g} m of water), where Capytaine's "
+                                       f"finite-depth solver returns no value; start the frequencies there")
                 hull = wetted_hull(geom.kind, geom.size, rot, centre, ps, name=name)
                 c = compute(hull, float(kin.com[k, 2] - self.eta), omega=omega, headings=self.headings,
                             depth=self.depth, rho=self.rho, g=self.g, cache=self.cache, name=name)

@@ -45,6 +45,15 @@ import numpy as np
 
 from cosim.errors import InputError
 
+class SettingError(InputError):
+    """A setting of the potential fluid that does not fit the hull or the waves; ``key``
+    names it (``omega_max``, ``frequencies``, ``memory``), for a scene to point at."""
+
+    def __init__(self, key: str, message: str):
+        super().__init__(message)
+        self.key = key
+
+
 #: defaults of the checks (see the module docstring)
 K_TOL = 0.02
 TOL = 0.05
@@ -125,11 +134,11 @@ def impulse_response(omega, A, B, memory: float | None = None, *, name: str = "b
     docstring); ``dt`` [s] its tabulation step (default: 1/40 of the period 2π/ω_max)."""
     omega, A, B = np.asarray(omega, float), np.asarray(A, float), np.asarray(B, float)
     dofs = "surge sway heave roll pitch yaw".split()
-    window = math.pi / float(np.diff(np.concatenate([[0.0], omega])).max())
+    window = math.pi / float(np.diff(omega).max())  # the spacing's period (0 to ω_1 is one linear piece)
     if memory is not None and memory > window * (1 + 1e-12):
-        raise InputError(f"potential flow: body '{name}': a memory of {memory:g} s is longer than the "
-                         f"{window:.4g} s that the frequency spacing resolves (π/Δω); give more frequencies or a "
-                         f"shorter memory")
+        raise SettingError("memory", f"potential flow: body '{name}': a memory of {memory:g} s is longer than the "
+                           f"{window:.4g} s that the frequency spacing resolves (π/Δω); give more frequencies or a "
+                           f"shorter memory")
     dt = dt if dt is not None else 2.0 * math.pi / omega[-1] / 40.0
     span = memory if memory is not None else window
     t = np.linspace(0.0, span, max(int(math.ceil(span / dt)), 8) + 1)
@@ -142,23 +151,25 @@ def impulse_response(omega, A, B, memory: float | None = None, *, name: str = "b
     if memory is None:  # the shortest memory after which K stays below k_tol, within the window
         above = np.flatnonzero(rel.max(axis=(1, 2)) > 0.5 * k_tol)
         end = int(above[-1]) + 1 if above.size else 1
-        if end >= len(t) - 1:
-            raise InputError(f"potential flow: body '{name}': the impulse response is still at "
-                             f"{rel[-1].max():.1%} of its peak at {t[-1]:.4g} s, the end of what the frequency "
-                             f"spacing resolves (π/Δω); give more frequencies (a finer spacing) so that it can "
-                             f"decay below {k_tol:.0%}")
-        n = min(int(math.ceil(end * 1.1)) + 1, len(t))
+        n = int(math.ceil(end / 0.9)) + 2  # the memory's last 10 % lies after it
+        if n > len(t):
+            raise SettingError("frequencies", f"potential flow: body '{name}': the impulse response is still at "
+                               f"{rel[int(0.9 * (len(t) - 1)):].max():.1%} of its peak over the last 10 % of the "
+                               f"{t[-1]:.4g} s that the frequency spacing resolves (π/Δω); give more frequencies "
+                               f"(a finer spacing) so that it can decay below {0.5 * k_tol:.0%}")
         t, K, rel = t[:n], K[:n], rel[:n]
     decay = float(rel[int(0.9 * (len(t) - 1)):].max())
     if decay > k_tol:
-        raise InputError(f"potential flow: body '{name}': the impulse response has decayed only to {decay:.1%} of "
-                         f"its peak over the last 10 % of the {t[-1]:g} s memory (at most {k_tol:.0%}); give a "
-                         f"longer memory, with frequencies spaced finely enough for it (π/Δω >= memory)")
+        raise SettingError("memory", f"potential flow: body '{name}': the impulse response has decayed only to "
+                           f"{decay:.1%} of its peak over the last 10 % of the {t[-1]:g} s memory (at most "
+                           f"{k_tol:.0%}); give a longer memory, with frequencies spaced finely enough for it "
+                           f"(π/Δω >= memory)")
     sin_part, B_td = _rebuilt(t, K, omega)
     trusted = omega <= band * omega[-1] * (1 + 1e-12)
     if trusted.sum() < 2:
-        raise InputError(f"potential flow: body '{name}': fewer than 2 frequencies lie in the trusted band "
-                         f"(<= {band:g} x omega_max = {band * omega[-1]:.4g} rad/s); give more frequencies")
+        raise SettingError("frequencies", f"potential flow: body '{name}': fewer than 2 frequencies lie in the "
+                           f"trusted band (<= {band:g} x omega_max = {band * omega[-1]:.4g} rad/s); give more "
+                           f"frequencies")
     A_inf = np.mean(A[trusted] + sin_part[trusted], axis=0)
     A_inf = 0.5 * (A_inf + A_inf.T)
     err_A = _relative((A_inf - sin_part - A)[trusted], A[trusted])
@@ -166,12 +177,12 @@ def impulse_response(omega, A, B, memory: float | None = None, *, name: str = "b
     for what, err in (("added mass", err_A), ("damping", err_B)):
         if err.max() > tol:
             i = int(np.argmax(err))
-            raise InputError(f"potential flow: body '{name}': the impulse response rebuilds the {dofs[i]} {what} "
-                             f"only within {err[i]:.1%} below {band * omega[-1]:.4g} rad/s (at most {tol:.0%}; "
-                             f"Ogilvie 1964): the frequency range is too short for this hull (its damping is "
-                             f"still {_tail(B)[i]:.0%} of its peak at omega_max = {omega[-1]:.4g} rad/s) or too "
-                             f"coarse; raise omega_max (with a panel size that resolves it) or give more "
-                             f"frequencies")
+            raise SettingError("omega_max", f"potential flow: body '{name}': the impulse response rebuilds the "
+                               f"{dofs[i]} {what} only within {err[i]:.1%} below {band * omega[-1]:.4g} rad/s "
+                               f"(at most {tol:.0%}; Ogilvie 1964): the frequency range is too short for this "
+                               f"hull (its damping is still {_tail(B)[i]:.0%} of its peak at omega_max = {omega[-1]:.4g} rad/s) or too "
+                               f"coarse; raise omega_max (with a panel size that resolves it) or give more "
+                               f"frequencies")
     return ImpulseResponse(t, K, A_inf, decay, float(err_A.max()), float(err_B.max()), float(band * omega[-1]))
 
 
