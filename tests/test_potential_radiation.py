@@ -16,8 +16,8 @@ from fluid.potential.waves import Excitation, Sea, WaveComponent, from_spectrum,
 
 def _gauss_damping(omega, b=2.0e4, s=1.5):
     """B(ω) = b (ω/σ)² exp(−ω²/2σ²) on every diagonal entry; its transform is
-    K(t) = b σ sqrt(2/π) (1 − σ²t²) exp(−σ²t²/2) (from ∫_0^∞ e^{−aω²} cos ωt dω = ½ sqrt(π/a) e^{−t²/4a},
-    differentiated twice in t)."""
+    K(t) = b σ sqrt(2/π) (1 − σ²t²) exp(−σ²t²/2) (from ∫_0^∞ e^{−aω²} cos ωt dω =
+    ½ sqrt(π/a) e^{−t²/4a}, differentiated twice in t)."""
     B = np.zeros((len(omega), 6, 6))
     for i in range(6):
         B[:, i, i] = b * (omega / s) ** 2 * np.exp(-(omega**2) / (2 * s * s))

@@ -337,7 +337,7 @@ CASES = [
     case("missing required: a line's anchor", "analytic", ("moorings.lines[0].anchor", OUT),
          "moorings.lines[0].anchor", "is required: a list of 2 or 3 numbers [m]", TYPE),
     case("missing tag", "flume", ("fluid", {"dx": 0.02}), "fluid.model",
-         "is required: one of 'none', 'analytic', 'sph'", None),
+         "is required: one of 'none', 'analytic', 'potential', 'sph'", None),
     # -- types
     case("text for a number", "flume", ("fluid.dx", "0.01"), "fluid.dx",
          "'0.01' is not a finite number; give a number [m] > 0", "SPH.dx"),
@@ -436,7 +436,7 @@ CASES = [
          "World.gravity"),
     # -- choices
     case("fluid.model misspelt", "flume", ("fluid.model", "sphh"), "fluid.model",
-         "'sphh' is not accepted; did you mean 'sph'? Give one of 'none', 'analytic', 'sph'", None),
+         "'sphh' is not accepted; did you mean 'sph'? Give one of 'none', 'analytic', 'potential', 'sph'", None),
     case("domain.kind misspelt", "flume", ("domain.kind", "flumee"), "domain.kind",
          "'flumee' is not accepted; did you mean 'flume'?", None),
     case("an unknown shape", "analytic", ("bodies[1].shape", "torus"), "bodies[1].shape",

@@ -345,9 +345,9 @@ def build(scene, workdir: Path) -> Built:
 
 def _potential(scene, level):
     """The potential fluid (``fluid.potential.PotentialFluid``) of the scene and the flume's
-    wavemaker, if any: its frequencies (``fluid.potential.participant.frequency_grid``; unset: per
-    body, from its panel size), the scene's waves as one component (a flume's: its far-field wave, faded in
-    everywhere at once rather than travelling from the paddle)."""
+    wavemaker, if any: its frequencies (``fluid.potential.participant.frequency_grid``; unset:
+    per body, from its panel size), the scene's waves as one component (a flume's: its far-field
+    wave, faded in everywhere at once rather than travelling from the paddle)."""
     from cosim.scene.checks import potential_depth
     from fluid.potential import PotentialFluid
     from fluid.potential.participant import frequency_grid

@@ -180,8 +180,8 @@ def impulse_response(omega, A, B, memory: float | None = None, *, name: str = "b
             raise SettingError("omega_max", f"potential flow: body '{name}': the impulse response rebuilds the "
                                f"{dofs[i]} {what} only within {err[i]:.1%} below {band * omega[-1]:.4g} rad/s "
                                f"(at most {tol:.0%}; Ogilvie 1964): the frequency range is too short for this "
-                               f"hull (its damping is still {_tail(B)[i]:.0%} of its peak at omega_max = {omega[-1]:.4g} rad/s) or too "
-                               f"coarse; raise omega_max (with a panel size that resolves it) or give more "
+                               f"hull (its damping is still {_tail(B)[i]:.0%} of its peak at omega_max = "
+                               f"{omega[-1]:.4g} rad/s) or too coarse; raise omega_max (with a panel size that resolves it) or give more "
                                f"frequencies")
     return ImpulseResponse(t, K, A_inf, decay, float(err_A.max()), float(err_B.max()), float(band * omega[-1]))
 
