@@ -864,7 +864,7 @@ BUILD_CASES = [
          "moorings.lines[0].length", "0.5 m is shorter than the straight distance 0.6325 m from its anchor to its "
          "fairlead 'box.left' with body 'box' fully submerged, the nearest it comes", None),
     case("potential flow: a frequency range too short for the impulse response", "potential",
-         (("fluid.omega_max", 1.0), ("fluid.frequencies", 24), ("waves.period", 20.0)), "fluid.omega_max",
+         (("fluid.omega_max", 1.1), ("fluid.frequencies", 24), ("waves.period", 20.0)), "fluid.omega_max",
          "the impulse response rebuilds the", None),
     case("a floating body that sinks", "flume", ("bodies[0].density", 1500.0), "bodies[0].place",
          "body 'box' (30 kg) sinks: fully submerged it displaces 20 kg of water", None),
