@@ -363,7 +363,7 @@ def _potential(scene, level):
         sea = Sea(regular(lw.H, lw.T, lw.direction), depth=depth, g=g, ramp=lw.ramp)
     omega = None if f.omega_max is None else frequency_grid(f.omega_max, f.frequencies, depth, g)
     fluid = PotentialFluid(rho=f.rho, g=g, free_surface_z=level, depth=depth, omega=omega,
-                           panel_size=f.panel_size, memory=f.memory, sea=sea,
+                           frequencies=f.frequencies, panel_size=f.panel_size, memory=f.memory, sea=sea,
                            quadratic_drag=f.quadratic_drag or None)
     return fluid, wavemaker
 

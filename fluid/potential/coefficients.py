@@ -28,8 +28,9 @@ Cache: computed once per hull mesh, lid, rotation centre, ``rho``, ``g``, depth,
 frequencies, headings and Capytaine version (a SHA-256 of all of them keys the file), as
 NetCDF (Capytaine's dataset, complex values split, xarray's writer, engine h5netcdf) in
 :func:`cache_dir` (``$COSIM_POTENTIAL_CACHE``, else ``~/.cache/cosim-sph/potential``).
-A hit is logged, a solve is logged with its panel and problem counts and shows
-Capytaine's progress bar on a terminal.
+A hit is reported, and a solve with its panel and problem counts, as a log record and, on a
+terminal, a line on standard error (as the coupler's progress line) with Capytaine's progress
+bar while it solves.
 """
 
 from __future__ import annotations
@@ -57,6 +58,13 @@ DOFS = ("Surge", "Sway", "Heave", "Roll", "Pitch", "Yaw")
 CACHE_FORMAT = 2
 ENV_CACHE = "COSIM_POTENTIAL_CACHE"
 EXTRA = "pip install cosim-sph[potential]"
+
+
+def _say(msg: str, *args) -> None:
+    """A log record, and on a terminal the same line on standard error."""
+    log.info(msg, *args)
+    if sys.stderr.isatty():
+        print(msg % args, file=sys.stderr, flush=True)
 
 
 def require_capytaine():
@@ -157,17 +165,17 @@ def compute(hull: Hull, centre_of_mass_z: float, *, omega, headings=(0.0,), dept
     path = folder / f"{name}-{key}.nc"
     if use_cache and path.is_file():
         ds = _read(cpt, path)
-        log.info("potential flow: body '%s': coefficients from the cache %s (%d panels, %d frequencies, "
-                 "%d headings)", name, path, hull.panels, len(omega), len(headings))
+        _say("potential flow: body '%s': coefficients from the cache %s (%d panels, %d frequencies, %d headings)",
+             name, path, hull.panels, len(omega), len(headings))
         return _coefficients(ds, key, hull, from_cache=True)
     body = cpt.FloatingBody(mesh=mesh, lid_mesh=lid_mesh, dofs=cpt.rigid_body_dofs(rotation_center=cog),
                             center_of_mass=cog, name=name)
     import xarray as xr
 
     problems = len(omega) * (6 + len(headings)) + 6
-    log.info("potential flow: body '%s': solving %d problems on %d panels (+%d lid panels), %d frequencies "
-             "%.3g-%.3g rad/s and infinity, %d headings, depth %s; cached in %s", name, problems, hull.panels,
-             len(lid[1]), len(omega), omega[0], omega[-1], len(headings), f"{depth:g} m", folder)
+    _say("potential flow: body '%s': solving %d problems on %d panels (+%d lid panels), %d frequencies "
+         "%.3g-%.3g rad/s and infinity, %d headings, depth %s; cached in %s", name, problems, hull.panels,
+         len(lid[1]), len(omega), omega[0], omega[-1], len(headings), f"{depth:g} m", folder)
     common = {"radiating_dof": list(DOFS), "water_depth": [depth], "rho": [rho], "g": [g]}
     waves = xr.Dataset(coords={"omega": omega, "wave_direction": np.radians(headings), **common})
     infinite = xr.Dataset(coords={"omega": [np.inf], **common})  # radiation only: no wave at ω = ∞
@@ -190,7 +198,7 @@ def compute(hull: Hull, centre_of_mass_z: float, *, omega, headings=(0.0,), dept
     ds["centre_of_buoyancy"] = (("xyz",), np.asarray(hs["center_of_buoyancy"], float))
     ds["waterplane_area"] = float(hs["waterplane_area"])
     ds.attrs.update(cosim_key=key, cosim_panels=hull.panels, cosim_lid_panels=len(lid[1]), cosim_solve_s=wall)
-    log.info("potential flow: body '%s': solved in %.1f s", name, wall)
+    _say("potential flow: body '%s': solved in %.1f s", name, wall)
     if use_cache:
         _write(path, ds)
     return _coefficients(ds, key, hull, from_cache=False)

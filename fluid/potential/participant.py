@@ -107,7 +107,7 @@ class PotentialFluid:
         Water depth [m] under the still surface (inf: deep water).
     omega:
         BEM frequencies [rad/s], increasing, evenly spaced (:func:`frequency_grid`; None:
-        :func:`default_omega`, per body, from its panel size).
+        :func:`default_omega`, ``frequencies`` of them, per body, from its panel size).
     headings:
         Wave headings [deg] the excitation is computed for (None: those of ``sea``, or 0).
     panel_size:
@@ -129,7 +129,7 @@ class PotentialFluid:
     loads_carry_added_mass = False  #: A∞ goes into the bodies' inertia (module docstring)
 
     def __init__(self, *, rho: float = 1000.0, g: float = 9.81, free_surface_z: float = 0.0,
-                 depth: float = math.inf, omega: Sequence[float] | None = None,
+                 depth: float = math.inf, omega: Sequence[float] | None = None, frequencies: int = 40,
                  headings: Sequence[float] | None = None, panel_size: float | Mapping[str, float] | None = None,
                  memory: float | None = None, sea: Sea | None = None,
                  quadratic_drag: Mapping[str, Sequence[float]] | None = None, cache=None,
@@ -152,6 +152,9 @@ class PotentialFluid:
             require_capytaine()
         self.rho, self.g, self.eta, self.depth = float(rho), float(g), float(free_surface_z), float(depth)
         self.omega = None if omega is None else np.asarray(omega, float)
+        if int(frequencies) < 4:
+            raise InputError(f"potential fluid: frequencies = {frequencies!r}; give at least 4")
+        self.frequencies = int(frequencies)
         self.headings = (np.asarray(headings, float) if headings is not None else
                          np.unique(sea.heading) if sea is not None else np.array([0.0]))
         self.panel_size, self.memory, self.sea = panel_size, memory, sea
@@ -227,7 +230,7 @@ class PotentialFluid:
             c = self._given.get(name)
             if c is None:
                 ps = self._panel_size(name, geom.kind, geom.size)
-                omega = self.omega if self.omega is not None else default_omega(ps, self.g, depth=self.depth)
+                omega = self.omega if self.omega is not None else default_omega(ps, self.g, self.frequencies, self.depth)
                 self._check_sea(name, omega)  # before the solve
                 if omega[0] < lowest_omega(self.depth, self.g) * (1 - 1e-9):
                     raise SettingError("frequencies", f"potential flow: body '{name}': the lowest frequency "
