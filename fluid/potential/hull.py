@@ -158,9 +158,9 @@ def displaced_volume(kind: str, size, rot, centre_z: float) -> float | None:
 
 def default_panel_size(kind: str, size) -> float:
     """A panel size [m] for a body: a tenth of its smallest horizontal dimension (the
-    circumference of a 3 m radius cylinder in 32 panels; the hemisphere of radius a in
-    about 8 x 32 below the surface), enough for added mass and damping within a few per cent below
-    ``k a ~ 2`` (see ``cosim/validations/potential.py``)."""
+    circumference of a 3 m radius cylinder in 32 panels; a hemisphere of radius a in 0.2 a
+    panels, whose heave added mass and damping are within 3.7 % of Hulme's (1982) for
+    ``K a <= 2``, 1.7 % at 0.1 a: ``cosim/validations/potential.py``)."""
     size = np.asarray(size, float)
     if kind == "box":
         return float(2.0 * min(size[0], size[1]) / 10.0)

@@ -31,23 +31,14 @@ from typing import Sequence
 import numpy as np
 
 from cosim.errors import InputError
+from fluid.wavemaker import wavenumber as _wavenumber
 
 
 def wavenumber(omega: float, depth: float, g: float) -> float:
-    """k [rad/m] from ω² = g k tanh(k d) (Newton's method from the deep-water value)."""
-    k = omega * omega / g
+    """k [rad/m] from ω² = g k tanh(k d) (:func:`fluid.wavemaker.wavenumber`; ω²/g in deep water)."""
     if not math.isfinite(depth):
-        return k
-    k = max(k, omega / math.sqrt(g * depth))  # start above the root: shallow or deep guess
-    for _ in range(100):
-        th = math.tanh(k * depth)
-        f = g * k * th - omega * omega
-        df = g * th + g * k * depth * (1.0 - th * th)
-        step = f / df
-        k -= step
-        if abs(step) < 1e-14 * k:
-            break
-    return k
+        return omega * omega / g
+    return _wavenumber(2.0 * math.pi / omega, depth, g)
 
 
 @dataclass(frozen=True)
