@@ -167,6 +167,12 @@ class Sea:
         return Components(*(np.array(c) for c in self._comp))
 
     @property
+    def phase_reference(self) -> float:
+        """The position along the heading [m] that the components' phases refer to (0 but for
+        a recorded sea, whose phases refer to its gauge)."""
+        return self._s_ref
+
+    @property
     def heading(self) -> np.ndarray:
         """Unit vector of propagation, (cos β, sin β, 0)."""
         b = math.radians(self.direction)

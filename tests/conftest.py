@@ -10,6 +10,13 @@ import os
 if os.environ.get("PYTEST_XDIST_WORKER"):
     os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
 
+# The potential-flow fluid's coefficient cache (fluid.potential.cache_dir) in a temporary folder
+# of this test session, not the user's: inherited by the scenes the tests run in subprocesses.
+if "COSIM_POTENTIAL_CACHE" not in os.environ:
+    import tempfile
+
+    os.environ["COSIM_POTENTIAL_CACHE"] = tempfile.mkdtemp(prefix="cosim-potential-cache-")
+
 import pytest
 from hypothesis import settings
 

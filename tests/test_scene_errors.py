@@ -154,6 +154,33 @@ lines = [
   { fairlead = "box.right", anchor = [20.0, -10.0], length = 25.0, weight = 50.0 },
 ]
 """,
+    "potential": """
+# 3-D: linear potential flow (Capytaine), a floating cylinder in linear waves, 20 m of water
+[world]
+dim = 3
+duration = 10.0
+
+[fluid]
+model = "potential"
+panel_size = 1.0
+omega_max = 3.0
+frequencies = 20
+
+[waves]
+kind = "linear"
+height = 0.2
+period = 6.0
+depth = 20.0
+
+[[bodies]]
+shape = "cylinder"
+name = "buoy"
+radius = 3.0
+length = 3.0
+pos = [0.0, 0.0]
+place = "floating"
+density = 500.0
+""",
     "tank2d": """
 # 2-D: SPH tank shaken by a table of displacement (motion.txt)
 [world]
@@ -323,7 +350,7 @@ CASES = [
     case("missing required: a line's anchor", "analytic", ("moorings.lines[0].anchor", OUT),
          "moorings.lines[0].anchor", "is required: a list of 2 or 3 numbers [m]", TYPE),
     case("missing tag", "flume", ("fluid", {"dx": 0.02}), "fluid.model",
-         "is required: one of 'none', 'analytic', 'sph'", None),
+         "is required: one of 'none', 'analytic', 'potential', 'sph'", None),
     # -- types
     case("text for a number", "flume", ("fluid.dx", "0.01"), "fluid.dx",
          "'0.01' is not a finite number; give a number [m] > 0", "SPH.dx"),
@@ -377,6 +404,24 @@ CASES = [
          "0.0 [m] is out of range; give a number [m] > 0 (wave height H", "LinearWaves.height"),
     case("negative wave period", "analytic", ("waves", dict(LINEAR, period=-20.0)), "waves.period",
          "-20.0 [s] is out of range; give a number [s] > 0 (wave period T)", "LinearWaves.period"),
+    # -- the potential-flow fluid
+    case("potential flow in 2-D", "potential", (("world.dim", 2), ("bodies[0].pos", [0.0]), ("bodies[0].length", OUT)),
+         "world.dim", "linear potential flow about a body is 3-D; set world.dim = 3", "Scene.world.dim"),
+    case("potential flow: a depth other than the waves'", "potential", ("fluid.depth", 30.0), "fluid.depth",
+         "30 m differs from the waves' depth (waves.depth), 20 m", "Scene.fluid.depth"),
+    case("potential flow: a body fully submerged", "potential",
+         (("bodies[0].place", "given"), ("bodies[0].pos", [0.0, 0.0, -2.0])), "bodies[0].pos",
+         "body 'buoy' spans z = -3.5 .. -0.5 m: fully submerged, below the still water at 0 m", "Scene.bodies[0].pos"),
+    case("potential flow: a dry body", "potential", (("bodies[0].place", "given"), ("bodies[0].pos", [0.0, 0.0, 2.0])),
+         "bodies[0].pos", "body 'buoy' spans z = 0.5 .. 3.5 m: dry, above the still water", "Scene.bodies[0].pos"),
+    case("potential flow: waves outside the trusted band", "potential", ("fluid.omega_max", 1.5), "fluid.omega_max",
+         "the waves' 1.047 rad/s (period 6 s) lies outside the band the impulse response is trusted in, "
+         "0.1047 .. 0.75 rad/s", "Scene.fluid.omega_max"),
+    case("potential flow: a memory beyond what the frequencies resolve", "potential", ("fluid.memory", 30.0),
+         "fluid.memory", "30 s is longer than the 20.94 s that 20 frequencies up to 3 rad/s resolve",
+         "Scene.fluid.memory"),
+    case("potential flow: drag for an unknown body", "potential", ("fluid.quadratic_drag.box", [1.0] * 6),
+         "fluid.quadratic_drag.box", "no body named 'box'; bodies: ['buoy']", "Scene.fluid.quadratic_drag.box"),
     case("zero water depth of the waves", "analytic", ("waves", dict(LINEAR, depth=0.0)), "waves.depth",
          "0.0 [m] is out of range; give a number [m] > 0 (still-water depth over the seabed", "LinearWaves.depth"),
     case("waves' depth not the flume's", "flume", (("fluid", {"model": "analytic"}),
@@ -404,7 +449,7 @@ CASES = [
          "World.gravity"),
     # -- choices
     case("fluid.model misspelt", "flume", ("fluid.model", "sphh"), "fluid.model",
-         "'sphh' is not accepted; did you mean 'sph'? Give one of 'none', 'analytic', 'sph'", None),
+         "'sphh' is not accepted; did you mean 'sph'? Give one of 'none', 'analytic', 'potential', 'sph'", None),
     case("domain.kind misspelt", "flume", ("domain.kind", "flumee"), "domain.kind",
          "'flumee' is not accepted; did you mean 'flume'?", None),
     case("an unknown shape", "analytic", ("bodies[1].shape", "torus"), "bodies[1].shape",
@@ -475,8 +520,8 @@ CASES = [
          "base_motion.axis", "a 2-D roll is about +y; leave axis out", "Scene.base_motion.axis"),
     # -- waves and fluids
     case("linear waves on the SPH fluid", "flume", ("waves", LINEAR), "waves.kind",
-         "linear waves act on the analytic fluid's bodies (fluid.model = \"analytic\"); the 'sph' fluid has none: "
-         "make waves with a piston or flap in a flume", "Scene.waves.kind"),
+         "linear waves act on the analytic or potential fluid's bodies (fluid.model = \"analytic\"); the 'sph' fluid "
+         "has none: make waves with a piston or flap in a flume", "Scene.waves.kind"),
     case("a piston on the analytic fluid", "analytic", ("waves", {"kind": "piston", "height": 0.04, "period": 1.0}),
          "waves.kind", "the analytic fluid takes the waves themselves: kind = \"linear\"", "Scene.waves.kind"),
     case("linear waves across a 2-D scene", "analytic", ("waves", dict(LINEAR, direction=30.0)), "waves.direction",
@@ -489,11 +534,11 @@ CASES = [
          "Scene.waves.height"),
     case("regular waves on the SPH fluid", "flume",
          ("waves", {"kind": "regular", "height": 0.04, "period": 1.0, "depth": 0.3}), "waves.kind",
-         "regular waves act on the analytic fluid's bodies (fluid.model = \"analytic\"); the 'sph' fluid has none: "
+         "regular waves act on the analytic or potential fluid's bodies (fluid.model = \"analytic\"); the 'sph' fluid has none: "
          "make waves with a piston or flap in a flume (the SPH fluid takes no incident sea yet)", "Scene.waves.kind"),
     case("an irregular sea on the SPH fluid", "flume",
          ("waves", {"kind": "irregular", "hs": 0.04, "tp": 1.0, "depth": 0.3}), "waves.kind",
-         "irregular waves act on the analytic fluid's bodies", "Scene.waves.kind"),
+         "irregular waves act on the analytic or potential fluid's bodies", "Scene.waves.kind"),
     case("regular waves beyond Miche's limit", "analytic", ("waves", dict(REGULAR, height=6.5, period=6.0, depth=10.0)),
          "waves.height", "H/λ = 0.1343 is beyond the breaking limit 0.142 tanh(kd) = 0.1223 at kd = 1.3 (Miche 1944); "
          "lower H or lengthen T", "Scene.waves.height"),
@@ -918,6 +963,9 @@ BUILD_CASES = [
     case("a floating body's line too short to reach", "flume", ("moorings.lines[0].length", 0.5),
          "moorings.lines[0].length", "0.5 m is shorter than the straight distance 0.6325 m from its anchor to its "
          "fairlead 'box.left' with body 'box' fully submerged, the nearest it comes", None),
+    case("potential flow: a frequency range too short for the impulse response", "potential",
+         (("fluid.omega_max", 1.1), ("fluid.frequencies", 24), ("waves.period", 20.0)), "fluid.omega_max",
+         "the impulse response rebuilds the", None),
     case("a floating body that sinks", "flume", ("bodies[0].density", 1500.0), "bodies[0].place",
          "body 'box' (30 kg) sinks: fully submerged it displaces 20 kg of water", None),
 ]

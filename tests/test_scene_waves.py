@@ -185,7 +185,7 @@ def test_the_sph_fluid_refuses_an_incident_sea(waves):
     from cosim.scene import SPH, Flume
     from cosim.scene.fields import SceneError
 
-    with pytest.raises(SceneError, match=r"waves.kind: \w+ waves act on the analytic fluid's bodies .* the 'sph' "
+    with pytest.raises(SceneError, match=r"waves.kind: \w+ waves act on the analytic or potential fluid's bodies .* the 'sph' "
                                          r"fluid has none: make waves with a piston or flap in a flume"):
         Scene(world=World(dim=2), fluid=SPH(dx=0.02), domain=Flume(length=3.0, depth=0.3, height=0.45),
               waves=waves)

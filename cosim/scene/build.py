@@ -19,8 +19,8 @@ from pathlib import Path
 import numpy as np
 
 from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, Box, Cylinder, CylinderTank, Earthquake, ElasticPlate,
-                              Flap, Flume, GroundMotion, InclinedTank, IrregularWaves, Piston, PolygonTank, RegularWaves,
-                              Roll, Shake, Sphere, TableMotion, Tank)
+                              Flap, Flume, GroundMotion, InclinedTank, IrregularWaves, Piston, PolygonTank, Potential,
+                              RegularWaves, Roll, Shake, Sphere, TableMotion, Tank)
 
 PADDLE, WALLS = 1, 0  # the flume's paddle group and every tank's wall group
 
@@ -50,7 +50,7 @@ def site_name(fairlead: str) -> str:
 
 def water_level(scene) -> float | None:
     d = scene.domain
-    if isinstance(scene.fluid, Analytic):
+    if isinstance(scene.fluid, (Analytic, Potential)):
         return scene.fluid.level if d is None else d.level  # a flume's depth: its seabed at z = 0
     if d is None:
         return None
@@ -353,6 +353,8 @@ def build(scene, workdir: Path) -> Built:
                                   linear_damping=f.linear_damping or None,
                                   quadratic_damping=f.quadratic_damping or None, added_mass=f.added_mass or None,
                                   waves=waves)
+    elif isinstance(scene.fluid, Potential):
+        out.fluid, out.wavemaker = _potential(scene, level)
     scheme = scene.coupling.scheme
     if scheme == "auto":
         scheme = "fluid-first" if isinstance(scene.fluid, SPH) else "predictor-corrector"
@@ -362,10 +364,58 @@ def build(scene, workdir: Path) -> Built:
     else:
         out.coupler = Coupler(bodies=out.bodies, fluid=out.fluid, moorings=moorings, dt=scene.coupling.dt,
                               scheme=scheme, light_body=scene.coupling.light_body, lines=scene.coupling.lines)
-    out.coupler.initialize()
+    _initialize(scene, out.coupler)
     if isinstance(scene.fluid, SPH) and out.bodies is not None:
         out.sph = out.fluid.fluid
     return out
+
+
+def _potential(scene, level):
+    """The potential fluid (``fluid.potential.PotentialFluid``) of the scene and the flume's
+    wavemaker, if any: its frequencies (``fluid.potential.participant.frequency_grid``; unset:
+    per body, from its panel size), the scene's waves as one component (a flume's: its far-field
+    wave, faded in everywhere at once rather than travelling from the paddle)."""
+    from cosim.scene.checks import potential_depth
+    from fluid.potential import PotentialFluid
+    from fluid.potential.participant import frequency_grid
+    from fluid.potential.waves import Sea, regular
+
+    f, w, g = scene.fluid, scene.waves, scene.world.gravity
+    depth = potential_depth(scene)
+    wavemaker, sea = None, None
+    if isinstance(w, LinearWaves):
+        sea = Sea(regular(w.height, w.period, w.direction), depth=depth, g=g, ramp=w.ramp * w.period)
+    elif isinstance(w, (Piston, Flap)):
+        wavemaker, lw = far_field_wave(scene)
+        sea = Sea(regular(lw.H, lw.T, lw.direction), depth=depth, g=g, ramp=lw.ramp)
+    elif isinstance(w, (RegularWaves, IrregularWaves)):  # linear components of fluid.waves' sea
+        from fluid.potential.waves import WaveComponent
+
+        inc = incident_sea(scene)
+        c = inc.components
+        phase = c.phase - c.k * inc.phase_reference
+        sea = Sea([WaveComponent(float(o), float(a), float(p), inc.direction)
+                   for o, a, p in zip(c.omega, c.amplitude, phase) if a > 0], depth=depth, g=g, ramp=inc.ramp)
+    omega = None if f.omega_max is None else frequency_grid(f.omega_max, f.frequencies, depth, g)
+    fluid = PotentialFluid(rho=f.rho, g=g, free_surface_z=level, depth=depth, omega=omega,
+                           frequencies=f.frequencies, panel_size=f.panel_size, memory=f.memory, sea=sea,
+                           quadratic_drag=f.quadratic_drag or None)
+    return fluid, wavemaker
+
+
+def _initialize(scene, coupler) -> None:
+    """Initialise the coupler; the potential fluid's settings that do not fit the hulls (known
+    once their coefficients are) are refused naming the scene's key."""
+    if not isinstance(scene.fluid, Potential):
+        coupler.initialize()
+        return
+    from cosim.scene.fields import SceneError
+    from fluid.potential.radiation import SettingError
+
+    try:
+        coupler.initialize()
+    except SettingError as e:
+        raise SceneError(f"fluid.{e.key}", str(e).removeprefix("potential flow: ")) from None
 
 
 def _build_sph(scene, out: Built) -> None:

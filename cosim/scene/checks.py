@@ -22,7 +22,10 @@ import math
 from cosim.scene.fields import SceneError, is_name
 from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, Box, CylinderTank, Cylinder, Earthquake, Flap, Flume,
                               ArchRib, ElasticPlate, GroundMotion, InclinedTank, IrregularWaves, NoFluid, PaddleRecord,
-                              Piston, PolygonTank, RegularWaves, Roll, Sphere, TableMotion, Tank)
+                              Piston, PolygonTank, Potential, RegularWaves, Roll, Sphere, TableMotion, Tank)
+
+#: the fluids whose free surface is a plane (with an incident sea on it), not particles
+_SURFACE = (Analytic, Potential)
 
 
 def body_names(scene) -> list[str]:
@@ -72,6 +75,8 @@ def check_scene(s) -> None:
     mj = _check_bodies(s, dim)
     _check_moorings(s, dim, mj)
     _check_probes(s, dim, mj)
+    if isinstance(s.fluid, Potential):
+        _check_potential(s, dim)
     if s.coupling.scheme == "fluid-first" and not isinstance(s.fluid, SPH):
         raise SceneError("coupling.scheme", "'fluid-first' needs the SPH fluid (the loads it exchanged); use 'auto'")
     if s.coupling.light_body == "subiterate" and s.coupling.scheme not in ("auto", "fluid-first"):
@@ -85,7 +90,7 @@ def _check_fluid_and_domain(s, dim):
         if d is None:
             raise SceneError("domain", "the SPH fluid needs a domain: a tank, flume, inclined-tank, cylinder-tank or "
                              "polygon")
-    elif isinstance(s.fluid, Analytic) and isinstance(d, Flume):
+    elif isinstance(s.fluid, _SURFACE) and isinstance(d, Flume):
         # the analytic fluid takes a flume's depth (the still level) and its wavemaker's far-field wave
         if s.fluid.level not in (0.0, d.depth):
             raise SceneError("fluid.level", f"{s.fluid.level} m: with a flume the still level is its depth "
@@ -158,11 +163,13 @@ _SEA_KEYS = {"height": "waves.height", "period": "waves.period", "depth": "waves
 def _check_sea(s, dim):
     """Waves of kind linear, regular or irregular: the incident sea of the analytic fluid."""
     w = s.waves
-    if not isinstance(s.fluid, Analytic):
-        raise SceneError("waves.kind", f"{w.kind} waves act on the analytic fluid's bodies (fluid.model = "
+    if not isinstance(s.fluid, _SURFACE):
+        raise SceneError("waves.kind", f"{w.kind} waves act on the analytic or potential fluid's bodies (fluid.model = "
                          f"\"analytic\"); the {s.fluid.model!r} fluid has none: "
                          + ("make waves with a piston or flap in a flume (the SPH fluid takes no incident sea yet)"
                             if isinstance(s.fluid, SPH) else "set fluid.model = \"analytic\""))
+    if isinstance(s.fluid, Potential) and getattr(w, "theory", "linear") != "linear":
+        raise SceneError("waves.theory", f"{w.theory!r}: the potential fluid is linear; give theory = \"linear\"")
     if dim == 2 and w.direction not in (0.0, 180.0):
         raise SceneError("waves.direction", f"{w.direction} deg: a 2-D scene's waves travel along +x (0) or -x "
                          f"(180)")
@@ -217,7 +224,7 @@ def _check_excitations(s, dim):
     if isinstance(s.waves, (LinearWaves, RegularWaves, IrregularWaves)):
         _check_sea(s, dim)
     elif s.waves is not None:
-        if isinstance(s.fluid, Analytic) and (isinstance(s.waves, PaddleRecord) or not isinstance(s.domain, Flume)):
+        if isinstance(s.fluid, _SURFACE) and (isinstance(s.waves, PaddleRecord) or not isinstance(s.domain, Flume)):
             raise SceneError("waves.kind", f"a {s.waves.kind} wavemaker moves the SPH fluid's paddle; the analytic "
                              f"fluid takes the waves themselves: kind = \"linear\" with height, period and depth, "
                              f"kind = \"regular\" or \"irregular\", or a piston or flap in a flume (its far-field "
@@ -500,8 +507,8 @@ def _check_probes(s, dim, mj):
                              f"{mj['coupled']} (or \"all\"); name one of them, or add it to bodies[0].bodies")
         if n != "all" and n not in names:
             raise SceneError(f"probes.motion[{i}]", f"no body named {n!r}; bodies: {sorted(names)} (or \"all\")")
-    # the analytic fluid's gauges read its incident sea (given, or a flume's wavemaker's far-field wave)
-    linear = isinstance(s.fluid, Analytic) and isinstance(s.waves, (LinearWaves, RegularWaves, IrregularWaves,
+    # the analytic and potential fluids' gauges read their incident sea (given, or a flume's wavemaker's far-field wave)
+    linear = isinstance(s.fluid, _SURFACE) and isinstance(s.waves, (LinearWaves, RegularWaves, IrregularWaves,
                                                                       Piston, Flap))
     fluid_probes = (p.gauges and not linear) or p.pressure or p.energy
     if fluid_probes and not isinstance(s.fluid, SPH):
@@ -1013,3 +1020,76 @@ def _check_walls(s, dim) -> None:
             if abs(q[0] - c[0]) < hx - tol and abs(q[1] - c[1]) < hz - tol:
                 raise SceneError(f"bodies[{i}].{_pos_key(b)}", f"the {wall}'s corner {_pt(q)} m lies inside the body "
                                  f"({_bounds(b, dim, False)}); {fix}")
+
+
+def potential_depth(s) -> float:
+    """The potential fluid's water depth [m]: its own, else the flume's or the waves', else deep."""
+    if s.fluid.depth is not None:
+        return s.fluid.depth
+    if isinstance(s.domain, Flume):
+        return s.domain.depth
+    if isinstance(s.waves, (LinearWaves, RegularWaves, IrregularWaves)):
+        return s.waves.depth
+    return math.inf
+
+
+def _check_potential(s, dim) -> None:
+    """The potential fluid: 3-D, builder bodies that pierce the surface, one water depth, waves
+    inside the band its frequencies trust, a memory the frequency spacing resolves."""
+    from fluid.potential.coefficients import EXTRA
+
+    f = s.fluid
+    try:
+        import capytaine  # noqa: F401
+        import h5netcdf  # noqa: F401
+    except ImportError as e:
+        raise SceneError("fluid.model", f"\"potential\" needs Capytaine and h5netcdf ({e.name} is not installed): "
+                         f"{EXTRA}") from None
+    if dim != 3:
+        raise SceneError("world.dim", "linear potential flow about a body is 3-D; set world.dim = 3 (or use the "
+                         "analytic fluid in 2-D)")
+    for i, b in enumerate(s.bodies):
+        if not isinstance(b, (Box, Cylinder, Sphere)):
+            raise SceneError(f"bodies[{i}].shape", f"the potential fluid meshes boxes, cylinders and spheres; a "
+                             f"{b.shape!r} body needs the analytic or SPH fluid")
+        if b.place == "given" and b.euler is None:
+            half = b.size[-1] / 2 if isinstance(b, Box) else b.radius if isinstance(b, Sphere) else b.length / 2
+            lo, hi = b.pos[-1] - half, b.pos[-1] + half
+            if lo >= f.level or hi <= f.level:
+                where = "dry, above" if lo >= f.level else "fully submerged, below"
+                raise SceneError(f"bodies[{i}].pos", f"body '{b.name}' spans z = {lo:g} .. {hi:g} m: {where} the "
+                                 f"still water at {f.level:g} m; linear potential flow takes bodies that pierce the "
+                                 f"surface (place = \"floating\", or a pos whose body crosses fluid.level)")
+    for n in f.quadratic_drag:
+        if n not in body_names(s):
+            raise SceneError(f"fluid.quadratic_drag.{n}", f"no body named {n!r}; bodies: {sorted(body_names(s))}")
+    scene_depth = (s.domain.depth if isinstance(s.domain, Flume) else
+                   s.waves.depth if isinstance(s.waves, (LinearWaves, RegularWaves, IrregularWaves)) else None)
+    if f.depth is not None and scene_depth is not None and not math.isclose(f.depth, scene_depth, rel_tol=1e-9):
+        what = "flume's depth (domain.depth)" if isinstance(s.domain, Flume) else "waves' depth (waves.depth)"
+        raise SceneError("fluid.depth", f"{f.depth:g} m differs from the {what}, {scene_depth:g} m: the coefficients "
+                         f"would be for another sea; leave fluid.depth out (it takes {scene_depth:g} m)")
+    if f.omega_max is None:
+        return
+    from fluid.potential.participant import frequency_grid
+    from fluid.potential.radiation import BAND, SettingError
+
+    try:
+        grid = frequency_grid(f.omega_max, f.frequencies, potential_depth(s), s.world.gravity)
+    except SettingError as e:
+        raise SceneError("fluid.omega_max", str(e).removeprefix("potential flow: omega_max = ")) from None
+    period = (s.waves.period if isinstance(s.waves, (LinearWaves, RegularWaves, Piston, Flap)) else
+              s.waves.tp if isinstance(s.waves, IrregularWaves) and s.waves.spectrum != "series" else None)
+    if period is not None:
+        w = 2 * math.pi / period
+        if not grid[0] <= w <= BAND * f.omega_max:
+            raise SceneError("fluid.omega_max", f"{f.omega_max:g} rad/s: the waves' {w:.4g} rad/s (period "
+                             f"{period:g} s) lies outside the band the impulse response is trusted in, "
+                             f"{grid[0]:.4g} .. {BAND * f.omega_max:.4g} rad/s (the lowest frequency .. omega_max "
+                             f"/ 2); give more frequencies or an omega_max from {w / BAND:.4g} rad/s up")
+    if f.memory is not None:
+        window = math.pi / (grid[1] - grid[0])
+        if f.memory > window:
+            raise SceneError("fluid.memory", f"{f.memory:g} s is longer than the {window:.4g} s that {f.frequencies} "
+                             f"frequencies up to {f.omega_max:g} rad/s resolve (pi / spacing); give more "
+                             f"frequencies or a shorter memory (unset: where the impulse response has decayed)")

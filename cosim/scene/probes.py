@@ -163,7 +163,7 @@ def groups(scene, built) -> list[Group]:
             return surface_elevation(sph, w[:, 0] if dim == 2 else w[:, :2]) - w[:, -1]
 
         out.append(Group("gauges", [f"gauge{i + 1}.eta" for i in range(len(g))], ["m"] * len(g), gauges))
-    sea = getattr(built.fluid, "sea", None) if sph is None else None  # the analytic fluid's incident sea
+    sea = _surface_sea(built.fluid) if sph is None else None  # the analytic or potential fluid's incident sea
     if sea is not None and p.gauges:
         g = np.array([x for x in p.gauges], float).reshape(len(p.gauges), -1)
         gx, gy = (g[:, 0], np.zeros(len(g))) if dim == 2 else (g[:, 0], g[:, 1])
@@ -196,3 +196,25 @@ def groups(scene, built) -> list[Group]:
         out.append(Group("energy", ["fluid.kinetic", "fluid.potential"], ["J/m" if dim == 2 else "J"] * 2,
                          lambda: np.array(fluid_energies(sph))))
     return out
+
+
+class _PotentialSea:
+    """The potential fluid's wave components read as ``elevation(x, y, t)``, as a
+    ``fluid.waves.Sea`` is."""
+
+    def __init__(self, sea):
+        self.sea = sea
+
+    def elevation(self, x, y, t):
+        xy = np.column_stack([np.atleast_1d(np.asarray(x, float)), np.atleast_1d(np.asarray(y, float))])
+        return self.sea.elevation(xy, t)
+
+
+def _surface_sea(fluid):
+    """The incident sea whose elevation the gauges of a fluid without particles read, or None."""
+    from fluid.waves import Sea
+
+    sea = getattr(fluid, "sea", None)
+    if sea is None or isinstance(sea, Sea):
+        return sea
+    return _PotentialSea(sea) if hasattr(sea, "elevation") else None

@@ -474,7 +474,7 @@ def _summary(scene, built, series, units, steps, loop_s, build_s, cpu_s, wall_be
         s["floating_start_z_m"] = built.start_heights
     if built.wavemaker is not None:
         s["wavemaker"] = {"stroke_m": built.wavemaker.stroke, "wavelength_m": built.wavemaker.wavelength}
-    sea = getattr(built.fluid, "sea", None) if built.sph is None else None
+    sea = _incident_sea(built)
     if sea is not None:
         a = sea.components.amplitude
         s["sea"] = {"kind": type(sea).__name__, "peak_period_s": sea.peak_period, "wavelength_m": sea.wavelength,
@@ -510,12 +510,20 @@ def _write_tables(out: Path, rec, built):
         built.coupler.ledger.write_csv(out / "ledger.csv")
 
 
+def _incident_sea(built):
+    """The analytic fluid's incident sea (a ``fluid.waves.Sea``), or None."""
+    from fluid.waves import Sea
+
+    sea = getattr(built.fluid, "sea", None) if built.sph is None else None
+    return sea if isinstance(sea, Sea) else None
+
+
 def _write_sea(out: Path, built) -> None:
     """The incident sea's components and, for an irregular sea, its spectrum
     (``sea_components.csv``, ``sea_spectrum.png``)."""
     from fluid.waves import RecordedSea, SpectralSea
 
-    sea = getattr(built.fluid, "sea", None) if built.sph is None else None
+    sea = _incident_sea(built)
     if sea is None:
         return
     w, a, phase, k = sea.components

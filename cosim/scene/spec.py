@@ -6,7 +6,8 @@ A scene is made of
 
 - :class:`World`: dimension (2: the x-z plane, 1 m thick; 3), gravity (one value for every
   participant), duration, sampling, snapshot, checkpoint and plot times;
-- a fluid: :class:`NoFluid`, :class:`Analytic` (hydrostatics and damping) or :class:`SPH`
+- a fluid: :class:`NoFluid`, :class:`Analytic` (hydrostatics and damping), :class:`Potential`
+  (linear potential flow, coefficients from a boundary-element solver) or :class:`SPH`
   (spacing ``dx``; its set-up chosen from the scene, :mod:`cosim.scene.setup`, each
   setting overridable);
 - a domain for the SPH fluid: :class:`Tank` (filled to a depth, or holding water blocks),
@@ -101,6 +102,33 @@ class Analytic(Spec):
 
 
 @dataclass(frozen=True)
+class Potential(Spec):
+    """Linear potential flow (``fluid.potential.PotentialFluid``, 3-D): each body's added
+    mass, damping and excitation from the boundary-element solver Capytaine on its wetted
+    hull at its floating pose (cached), run in time by the Cummins equation, with linear
+    hydrostatics and optional quadratic drag per body (6 coefficients, world axes). Needs
+    ``pip install cosim-sph[potential]``. Waves: ``kind = "linear"``, or a flume's piston or
+    flap (its far-field wave); the depth is the flume's or the waves' (deep water without
+    either, unless ``depth`` says)."""
+
+    TAG = ("model", "potential")
+    model: str = tag("potential")
+    rho: float = num(1000.0, "water density", "kg/m^3", lo=0, lo_open=True)
+    level: float = num(0.0, "height of the still free surface", "m")
+    depth: float = num(None, "water depth under the still surface (unset: the flume's or the waves' depth, else "
+                       "deep water)", "m", lo=0, lo_open=True)
+    panel_size: float = num(None, "panel size of the hulls (unset: a tenth of each body's smallest horizontal "
+                            "dimension)", "m", lo=0, lo_open=True)
+    omega_max: float = num(None, "highest BEM frequency (unset: 6 panels per deep-water wavelength)", "rad/s", lo=0,
+                           lo_open=True)
+    frequencies: int = whole(40, "BEM frequencies, evenly spaced to omega_max from omega_max / frequencies (in "
+                             "shallow water from where Capytaine solves, k d = 0.15)", lo=4)
+    memory: float = num(None, "radiation memory (unset: where the impulse response has decayed)", "s", lo=0,
+                        lo_open=True)
+    quadratic_drag: dict = table("per body: 6 quadratic drag coefficients [N s^2/m^2, N m s^2]", sizes=(6,))
+
+
+@dataclass(frozen=True)
 class SPH(Spec):
     """The weakly compressible SPH fluid (``fluid.solver``). ``dx`` is the one setting
     every scene gives; the rest come from the set-up (``setup``, see
@@ -143,7 +171,7 @@ class SPH(Spec):
             raise SceneError("c0", "give c0 or u_max, not both (c0 = c0_factor * u_max)")
 
 
-FLUIDS = (NoFluid, Analytic, SPH)
+FLUIDS = (NoFluid, Analytic, Potential, SPH)
 
 
 # ------------------------------------------------------------------------ domains
@@ -857,7 +885,7 @@ class Scene(Spec):
     ``scene.to_toml()``, ``scene.run(out=...)``."""
 
     world: World = part(World(), "dimension, gravity, duration, output times", World)
-    fluid: Spec = part(NoFluid(), "none, analytic or SPH", FLUIDS)
+    fluid: Spec = part(NoFluid(), "none, analytic, potential or SPH", FLUIDS)
     domain: Spec = part(None, "the SPH fluid's container (the analytic fluid: a flume, for its depth and wavemaker)",
                         DOMAINS)
     waves: Spec = part(None, "a flume's wavemaker, or regular or irregular waves on the analytic fluid", WAVES)
@@ -918,7 +946,7 @@ class Scene(Spec):
                    resume_any_version=resume_any_version, progress=progress)
 
 
-__all__ = ["World", "NoFluid", "Analytic", "SPH", "Block", "Tank", "Beach", "Flume", "InclinedTank",
+__all__ = ["World", "NoFluid", "Analytic", "Potential", "SPH", "Block", "Tank", "Beach", "Flume", "InclinedTank",
            "CylinderTank", "PolygonTank", "ArchRib", "arch_rib_monitors", "Piston", "Flap", "PaddleRecord",
            "LinearWaves", "RegularWaves", "IrregularWaves",
            "Shake", "Roll", "TableMotion",

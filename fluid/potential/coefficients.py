@@ -1,0 +1,275 @@
+"""Hydrodynamic coefficients of one body from the boundary-element solver Capytaine, cached.
+
+What: for a :class:`fluid.potential.hull.Hull` with six rigid-body degrees of freedom about
+its centre of mass (surge, sway, heave [m]; roll, pitch, yaw [rad] about the world axes
+through it), water of density ``rho`` [kg/m^3] and ``depth`` [m] (``inf``: deep), gravity
+``g`` [m/s^2], angular frequencies ``omega`` [rad/s] and wave headings [deg] (towards which
+the waves travel, from +x towards +y):
+
+- the added mass ``A(ω)`` [kg, kg m, kg m^2] and radiation damping ``B(ω)`` [N s/m ...]
+  (the radiation force is ``−A ẍ − B ẋ``), symmetrised ``(A + Aᵀ)/2`` (the panel method's
+  matrices are symmetric only to discretisation error; Newman 1977 §6.17);
+- ``A∞``, the added mass at infinite frequency (Capytaine's ``omega = inf`` problem);
+- the excitation force ``X(ω, β)`` [N/m, N m/m] per unit wave amplitude, Froude–Krylov
+  plus diffraction, for the wave ``η = Re(e^{i k (x cos β + y sin β)} e^{−iωt})`` (crest at
+  the centre of mass at ``t = 0``; Capytaine's convention, ``e^{−iωt}``), so that a wave of
+  amplitude ``a`` and phase ``φ`` gives ``F(t) = Re(a e^{iφ} X e^{−iωt})``;
+- hydrostatics of the hull (displaced volume [m^3], centre of buoyancy [m], waterplane
+  area [m^2]) and the buoyancy restoring matrix ``C`` about the centre of mass (Newman
+  1977 §6.16 Eq. 6.186 with the rotation centre at the centre of mass: the weight, which
+  MuJoCo applies at the centre of mass, gives no moment there and is left out).
+
+The irregular frequencies of the hull's interior (John 1950) are removed by a lid on the
+interior free surface (Capytaine's ``lid_mesh``, the extended boundary integral equation),
+placed where Capytaine's ``lowest_lid_position`` puts it for the highest frequency, when
+Capytaine's estimate of the first irregular frequency lies below 1.5 times the highest.
+
+Cache: computed once per hull mesh, lid, rotation centre, ``rho``, ``g``, depth,
+frequencies, headings and Capytaine version (a SHA-256 of all of them keys the file), as
+NetCDF (Capytaine's dataset, complex values split, xarray's writer, engine h5netcdf) in
+:func:`cache_dir` (``$COSIM_POTENTIAL_CACHE``, else ``~/.cache/cosim-sph/potential``).
+A hit is reported, and a solve with its panel and problem counts, as a log record and, on a
+terminal, a line on standard error (as the coupler's progress line) with Capytaine's progress
+bar while it solves.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import logging
+import math
+import os
+import sys
+import time
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from cosim.errors import InputError
+from fluid.potential.hull import Hull
+
+log = logging.getLogger(__name__)
+
+#: the six rigid-body degrees of freedom, in Capytaine's names and this order
+DOFS = ("Surge", "Sway", "Heave", "Roll", "Pitch", "Yaw")
+#: bump when what is stored changes meaning (old cache files are then not read)
+CACHE_FORMAT = 2
+ENV_CACHE = "COSIM_POTENTIAL_CACHE"
+EXTRA = "pip install cosim-sph[potential]"
+
+
+def _say(msg: str, *args) -> None:
+    """A log record, and on a terminal the same line on standard error."""
+    log.info(msg, *args)
+    if sys.stderr.isatty():
+        print(msg % args, file=sys.stderr, flush=True)
+
+
+def require_capytaine():
+    """Capytaine and the NetCDF engine, or an :class:`InputError` naming the extra."""
+    try:
+        import capytaine  # noqa: F401
+        import h5netcdf  # noqa: F401
+    except ImportError as e:
+        raise InputError(f"the potential-flow fluid needs Capytaine and h5netcdf ({e.name} is not installed): "
+                         f"{EXTRA}") from None
+    return capytaine
+
+
+def cache_dir() -> Path:
+    """Where coefficients are cached: ``$COSIM_POTENTIAL_CACHE`` or ``~/.cache/cosim-sph/potential``."""
+    env = os.environ.get(ENV_CACHE)
+    return Path(env) if env else Path.home() / ".cache" / "cosim-sph" / "potential"
+
+
+@dataclass(frozen=True)
+class Coefficients:
+    """One body's frequency-domain coefficients (see the module docstring); dof order
+    surge, sway, heave, roll, pitch, yaw about the centre of mass."""
+
+    omega: np.ndarray  #: angular frequencies [rad/s], (n,), increasing
+    added_mass: np.ndarray  #: A(ω), (n, 6, 6)
+    damping: np.ndarray  #: B(ω), (n, 6, 6)
+    added_mass_inf: np.ndarray  #: A∞, (6, 6)
+    excitation: np.ndarray  #: X(ω, β) per unit amplitude, complex (n, n_headings, 6)
+    headings: np.ndarray  #: wave headings [deg], (n_headings,)
+    stiffness: np.ndarray  #: C, buoyancy restoring about the centre of mass, (6, 6)
+    volume: float  #: displaced volume [m^3]
+    centre_of_buoyancy: np.ndarray  #: relative to the centre of mass horizontally, z from the still water [m]
+    centre_of_mass: np.ndarray  #: same frame [m]: (0, 0, z_G)
+    waterplane_area: float  #: [m^2]
+    rho: float
+    g: float
+    depth: float  #: [m], inf: deep water
+    panels: int  #: hull panels
+    key: str  #: the cache key
+    meta: dict = field(default_factory=dict)  #: solve time [s], lid panels, from the cache or not
+
+
+def _key(hull: Hull, lid, cog, rho, g, depth, omega, headings, version) -> str:
+    h = hashlib.sha256()
+    h.update(f"cosim-potential-{CACHE_FORMAT}|capytaine-{version}|".encode())
+    for arr in (hull.vertices, hull.faces, lid[0], lid[1], cog, omega, headings,
+                np.array([rho, g, depth], float)):
+        a = np.ascontiguousarray(np.round(np.asarray(arr, float), 12))
+        h.update(str(a.shape).encode())
+        h.update(a.tobytes())
+    return h.hexdigest()[:24]
+
+
+def _lid(cpt, mesh, hull: Hull, omega_max: float, g: float, lid: bool | None):
+    """The lid mesh and its arrays, or (None, empty arrays) when ``lid`` is False or, None,
+    when no irregular frequency is estimated below 1.5 ``omega_max`` [rad/s] (the estimate is
+    rough and the errors grow on the way to the first irregular frequency)."""
+    empty = (np.zeros((0, 3)), np.zeros((0, 4)))
+    if lid is False or min(hull.waterline_span) <= 0:
+        return None, empty
+    bare = cpt.FloatingBody(mesh=mesh)
+    if lid is None and bare.first_irregular_frequency_estimate(g=g) > 1.5 * omega_max:
+        return None, empty
+    with np.errstate(invalid="ignore"):  # NaN where no irregular frequency lies below omega_max
+        z = mesh.lowest_lid_position(omega_max, g=g)
+    z = 0.0 if not math.isfinite(z) else max(z, -0.5 * hull.draft)  # inside the hull, above its keel
+    lid = mesh.generate_lid(z=z)
+    return lid, (np.asarray(lid.vertices, float), np.asarray(lid.faces, float))
+
+
+def compute(hull: Hull, centre_of_mass_z: float, *, omega, headings=(0.0,), depth: float = math.inf,
+            rho: float = 1000.0, g: float = 9.81, cache: Path | str | None = None, name: str = "body",
+            lid: bool | None = None, use_cache: bool = True) -> Coefficients:
+    """The coefficients of ``hull`` (rotation centre and centre of mass at (0, 0,
+    ``centre_of_mass_z``) [m]) at ``omega`` [rad/s] and ``headings`` [deg], read from the
+    cache in ``cache`` (default :func:`cache_dir`) or solved and written there; ``lid``: the
+    irregular-frequency lid always (True), never (False) or where estimated needed (None)."""
+    cpt = require_capytaine()
+    omega = np.asarray(omega, float)
+    headings = np.asarray(headings, float).ravel()
+    if omega.ndim != 1 or len(omega) < 2 or not np.all(np.isfinite(omega)) or not np.all(np.diff(omega) > 0) \
+            or omega[0] <= 0:
+        raise InputError(f"potential flow: omega must be at least 2 increasing finite frequencies > 0 rad/s, got "
+                         f"{omega}")
+    if len(headings) < 1 or not np.all(np.isfinite(headings)):
+        raise InputError(f"potential flow: headings must be finite angles [deg], got {headings}")
+    if not (depth > 0):
+        raise InputError(f"potential flow: depth = {depth!r} m; give a depth > 0 (inf: deep water)")
+    if math.isfinite(depth) and hull.draft >= depth:
+        raise InputError(f"potential flow: body '{name}' draws {hull.draft:.4g} m in water {depth:g} m deep; it "
+                         f"must float clear of the seabed")
+    cog = np.array([0.0, 0.0, centre_of_mass_z])
+    mesh = cpt.Mesh(vertices=hull.vertices, faces=hull.faces, name=name)
+    lid_mesh, lid = _lid(cpt, mesh, hull, float(omega[-1]), g, lid)
+    key = _key(hull, lid, cog, rho, g, depth, omega, headings, cpt.__version__)
+    folder = Path(cache) if cache is not None else cache_dir()
+    path = folder / f"{name}-{key}.nc"
+    if use_cache and path.is_file():
+        ds = _read(cpt, path)
+        _say("potential flow: body '%s': coefficients from the cache %s (%d panels, %d frequencies, %d headings)",
+             name, path, hull.panels, len(omega), len(headings))
+        return _coefficients(ds, key, hull, from_cache=True)
+    body = cpt.FloatingBody(mesh=mesh, lid_mesh=lid_mesh, dofs=cpt.rigid_body_dofs(rotation_center=cog),
+                            center_of_mass=cog, name=name)
+    import xarray as xr
+
+    problems = len(omega) * (6 + len(headings)) + 6
+    _say("potential flow: body '%s': solving %d problems on %d panels (+%d lid panels), %d frequencies "
+         "%.3g-%.3g rad/s and infinity, %d headings, depth %s; cached in %s", name, problems, hull.panels,
+         len(lid[1]), len(omega), omega[0], omega[-1], len(headings), f"{depth:g} m", folder)
+    common = {"radiating_dof": list(DOFS), "water_depth": [depth], "rho": [rho], "g": [g]}
+    waves = xr.Dataset(coords={"omega": omega, "wave_direction": np.radians(headings), **common})
+    infinite = xr.Dataset(coords={"omega": [np.inf], **common})  # radiation only: no wave at ω = ∞
+    solver = cpt.BEMSolver()
+    t0 = time.perf_counter()
+    with _quiet("capytaine"):
+        ds = solver.fill_dataset(waves, body, progress_bar=sys.stderr.isatty())
+        ds_inf = solver.fill_dataset(infinite, body, progress_bar=False)
+    wall = time.perf_counter() - t0
+    ds = _plain(ds)
+    ds["added_mass_inf"] = _plain(ds_inf)["added_mass"].isel(omega=0, drop=True)
+    # the hydrostatics with a 2 x 2 Gauss-Legendre rule on each panel: its waterplane moments are
+    # exact on flat panels (the one-point rule's second moments are short by A h^2 / 12)
+    exact = cpt.FloatingBody(mesh=mesh.with_quadrature("Gauss-Legendre 2"),
+                             dofs=cpt.rigid_body_dofs(rotation_center=cog), center_of_mass=cog, name=name)
+    hs = exact.compute_hydrostatics(rho=rho, g=g)
+    ds["hydrostatic_stiffness"] = (("influenced_dof", "radiating_dof"),
+                                   np.asarray(hs["hydrostatic_stiffness"], float).reshape(6, 6))
+    ds["disp_volume"] = float(hs["disp_volume"])
+    ds["centre_of_buoyancy"] = (("xyz",), np.asarray(hs["center_of_buoyancy"], float))
+    ds["waterplane_area"] = float(hs["waterplane_area"])
+    ds.attrs.update(cosim_key=key, cosim_panels=hull.panels, cosim_lid_panels=len(lid[1]), cosim_solve_s=wall)
+    _say("potential flow: body '%s': solved in %.1f s", name, wall)
+    if use_cache:
+        _write(path, ds)
+    return _coefficients(ds, key, hull, from_cache=False)
+
+
+@contextmanager
+def _quiet(logger: str):
+    """Capytaine's log held back to its errors while it solves: its per-problem lines, and its
+    warnings, which its handler prints on standard output (where ``cosim validate`` writes
+    JSON) and which say what this module checks itself (the frequencies against the panels,
+    ``fluid.potential.participant.default_omega``; a finite depth at ω = ∞)."""
+    lg = logging.getLogger(logger)
+    level = lg.level
+    lg.setLevel(max(level, logging.ERROR))
+    try:
+        yield
+    finally:
+        lg.setLevel(level)
+
+
+def _plain(ds):
+    """Categorical coordinates (Capytaine's dof names) as plain strings, which NetCDF stores."""
+    for name in ("radiating_dof", "influenced_dof"):
+        if name in ds.coords:
+            ds = ds.assign_coords({name: np.asarray(ds[name].values, dtype=str)})
+    return ds
+
+
+def _write(path: Path, ds) -> None:
+    from capytaine.io.xarray import separate_complex_values
+
+    path.parent.mkdir(parents=True, exist_ok=True)
+    out = separate_complex_values(ds)
+    for k in list(out.attrs):  # NetCDF attributes are numbers or strings
+        if not isinstance(out.attrs[k], (int, float, str, np.number)):
+            out.attrs[k] = str(out.attrs[k])
+    tmp = path.with_suffix(f".{os.getpid()}.tmp")
+    out.to_netcdf(tmp, engine="h5netcdf")
+    os.replace(tmp, path)  # whole or not at all: a reader never sees half a file
+
+
+def _read(cpt, path: Path):
+    import xarray as xr
+    from capytaine.io.xarray import merge_complex_values
+
+    with xr.open_dataset(path, engine="h5netcdf") as f:
+        return merge_complex_values(f.load())
+
+
+def _sym(a: np.ndarray) -> np.ndarray:
+    return 0.5 * (a + np.swapaxes(a, -1, -2))
+
+
+def _coefficients(ds, key: str, hull: Hull, from_cache: bool) -> Coefficients:
+    order = dict(influenced_dof=list(DOFS), radiating_dof=list(DOFS))
+    omega = np.asarray(ds["omega"].values, float)
+    A = np.asarray(ds["added_mass"].sel(**order).transpose("omega", "influenced_dof", "radiating_dof").values)
+    B = np.asarray(ds["radiation_damping"].sel(**order).transpose("omega", "influenced_dof", "radiating_dof").values)
+    X = ds["excitation_force"].sel(influenced_dof=list(DOFS)).transpose("omega", "wave_direction", "influenced_dof")
+    X = np.asarray(X.values)
+    Ainf = np.asarray(ds["added_mass_inf"].sel(**order).values, float)
+    C = np.asarray(ds["hydrostatic_stiffness"].sel(**order).values, float)
+    cob = np.asarray(ds["centre_of_buoyancy"].values, float)
+    cog = np.asarray(ds["center_of_mass"].values, float) if "center_of_mass" in ds.coords else np.zeros(3)
+    if not (np.isfinite(A).all() and np.isfinite(B).all() and np.isfinite(X).all()):
+        raise InputError(f"potential flow: the BEM solve of body '{ds.attrs.get('body', '?')}' left non-finite "
+                         f"coefficients (a degenerate mesh?); refine or coarsen panel_size")
+    return Coefficients(omega=omega, added_mass=_sym(A), damping=_sym(B), added_mass_inf=_sym(Ainf),
+                        excitation=X, headings=np.degrees(np.asarray(ds["wave_direction"].values, float)),
+                        stiffness=C, volume=float(ds["disp_volume"]), centre_of_buoyancy=cob, centre_of_mass=cog,
+                        waterplane_area=float(ds["waterplane_area"]), rho=float(ds["rho"]), g=float(ds["g"]),
+                        depth=float(ds["water_depth"]), panels=hull.panels, key=key,
+                        meta={"from_cache": from_cache, "solve_s": float(ds.attrs.get("cosim_solve_s", math.nan)),
+                              "lid_panels": int(ds.attrs.get("cosim_lid_panels", 0))})

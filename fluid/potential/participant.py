@@ -1,0 +1,400 @@
+"""The potential-flow fluid as a participant: the Cummins equation in time, on MuJoCo bodies.
+
+What: per body, six degrees of freedom about its centre of mass, world axes (Cummins 1962;
+Ogilvie 1964; Newman 1977 §6.20)::
+
+    (M + A∞) ẍ + ∫_0^T K(τ) ẋ(t − τ) dτ + C ξ = F_exc(t) + F_drag
+
+``M`` is MuJoCo's (the body's mass and inertia, gravity included); this participant gives
+the rest as the load on the body:
+
+- hydrostatics, linear about the floating pose the body has when attached (its mesh's):
+  the buoyancy ``ρ g V`` up at the centre of buoyancy (``V`` the shape's exact displaced
+  volume where known, else the mesh's), minus ``C ξ`` with ``ξ`` the centre of
+  mass's displacement and the rotation vector of the body's rotation since then (small-angle
+  linear theory: no change of the waterplane with the pose; the mean pose may drift far
+  horizontally, since ``C`` has no horizontal terms);
+- radiation memory ``−∫ K(τ) ẋ(t − τ) dτ`` over the memory ``T`` (:mod:`.radiation`),
+  trapezoid rule over the velocities of the accepted coupling steps (rest before the start);
+- excitation by the waves of a :class:`~fluid.potential.waves.Sea` (:mod:`.waves`), at the
+  body's rest position;
+- optional quadratic (Morison) drag per body, 6 coefficients [N s²/m², N m s²], on the
+  velocity relative to the undisturbed wave's at the centre of buoyancy (translations) and on
+  the angular velocity (Morison et al. 1950; the drag that potential flow lacks);
+- the infinite-frequency added mass ``A∞`` (the time-domain one, :mod:`.radiation`): its
+  diagonal moves into MuJoCo's implicit inertia (``dof_armature``: translations along world
+  axes, rotations about the body axes at the start), its off-diagonal rest (surge-pitch,
+  sway-roll coupling) acts explicitly as ``−A_rest a``, ``a`` the mean acceleration over the
+  last accepted step. Why: an added-mass force from a previous acceleration alone is
+  unstable once ``A > M`` (a light body; :mod:`cosim.added_mass`), while the rest of a
+  positive-definite ``M + A∞`` against its diagonal is a contraction (each 2 x 2 coupled pair
+  has ``|A_ij| < sqrt(M_ii + A_ii)(M_jj + A_jj)``), so the lag is stable.
+
+Limits: linear potential flow (small motions, small waves); one geom per body (box, cylinder,
+sphere) with a free joint (3-D scenes); bodies do not interact hydrodynamically (each is
+solved alone); no second-order (drift) forces. The loads react to the body's acceleration
+only through the armature, so explicit coupling needs no light-body remedy.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from typing import Mapping, Sequence
+
+import numpy as np
+
+from cosim.errors import InputError
+from fluid.potential.coefficients import Coefficients, compute, require_capytaine
+from fluid.potential.hull import KINDS, check_pierces, default_panel_size, displaced_volume, wetted_hull
+from fluid.potential.radiation import BAND, ImpulseResponse, SettingError, impulse_response
+from fluid.potential.waves import Excitation, Sea
+
+log = logging.getLogger(__name__)
+
+#: panels per wavelength at the highest default frequency (the BEM's resolution rule of thumb)
+PANELS_PER_WAVELENGTH = 6
+#: coupling steps per shortest natural period, wave period and impulse-response period
+STEPS_PER_PERIOD = 50
+
+
+#: the smallest k d at which Capytaine 3.0's finite-depth Green function returns values (it
+#: returned NaN at k d = 0.129 and below, values from 0.143 on, on two depths), with a margin
+KD_MIN = 0.15
+
+
+def lowest_omega(depth: float, g: float = 9.81) -> float:
+    """The lowest frequency [rad/s] Capytaine solves in water ``depth`` [m] deep (k d = :data:`KD_MIN`); 0 when deep."""
+    if not math.isfinite(depth):
+        return 0.0
+    return math.sqrt(g * KD_MIN / depth * math.tanh(KD_MIN))
+
+
+def frequency_grid(omega_max: float, n: int, depth: float = math.inf, g: float = 9.81) -> np.ndarray:
+    """``n`` frequencies [rad/s] evenly spaced up to ``omega_max``: from ``omega_max / n`` (so that
+    the spacing is the lowest frequency), or in shallow water from :func:`lowest_omega` if higher."""
+    lo = max(omega_max / n, lowest_omega(depth, g))
+    if lo >= omega_max:
+        raise SettingError("omega_max", f"potential flow: omega_max = {omega_max:g} rad/s is at or below "
+                           f"{lo:.4g} rad/s, the lowest frequency solvable in {depth:g} m of water; raise it")
+    return np.linspace(lo, omega_max, n)
+
+
+def default_omega(panel_size: float, g: float = 9.81, n: int = 40, depth: float = math.inf) -> np.ndarray:
+    """:func:`frequency_grid` up to ω_max, the frequency whose deep-water wavelength ``2π g / ω²``
+    spans :data:`PANELS_PER_WAVELENGTH` panels of ``panel_size`` [m]."""
+    w_max = math.sqrt(2.0 * math.pi * g / (PANELS_PER_WAVELENGTH * panel_size))
+    return frequency_grid(w_max, n, depth, g)
+
+
+def _rotvec(R: np.ndarray) -> np.ndarray:
+    """The rotation vector (axis times angle [rad]) of a rotation matrix."""
+    from scipy.spatial.transform import Rotation
+
+    return Rotation.from_matrix(R).as_rotvec()
+
+
+class PotentialFluid:
+    """Linear potential flow on the coupled bodies (module docstring).
+
+    Parameters
+    ----------
+    rho, g:
+        Water density [kg/m^3], gravity [m/s^2] (along -z).
+    free_surface_z:
+        Height of the still free surface [m].
+    depth:
+        Water depth [m] under the still surface (inf: deep water).
+    omega:
+        BEM frequencies [rad/s], increasing, evenly spaced (:func:`frequency_grid`; None:
+        :func:`default_omega`, ``frequencies`` of them, per body, from its panel size).
+    headings:
+        Wave headings [deg] the excitation is computed for (None: those of ``sea``, or 0).
+    panel_size:
+        Panel size [m], one for all bodies or per body name (None: a tenth of each body's
+        smallest horizontal dimension, :func:`fluid.potential.hull.default_panel_size`).
+    memory:
+        Radiation memory [s] (None: where the impulse response has decayed).
+    sea:
+        The waves (None: still water).
+    quadratic_drag:
+        Per body name, 6 coefficients [N s^2/m^2, N m s^2] (translations, rotations).
+    cache:
+        Folder of the coefficients' cache (None: :func:`fluid.potential.cache_dir`).
+    coefficients:
+        Precomputed coefficients per body name (their hulls must be the bodies' own): skips
+        the BEM for those bodies.
+    """
+
+    loads_carry_added_mass = False  #: A∞ goes into the bodies' inertia (module docstring)
+
+    def __init__(self, *, rho: float = 1000.0, g: float = 9.81, free_surface_z: float = 0.0,
+                 depth: float = math.inf, omega: Sequence[float] | None = None, frequencies: int = 40,
+                 headings: Sequence[float] | None = None, panel_size: float | Mapping[str, float] | None = None,
+                 memory: float | None = None, sea: Sea | None = None,
+                 quadratic_drag: Mapping[str, Sequence[float]] | None = None, cache=None,
+                 coefficients: Mapping[str, Coefficients] | None = None, name: str = "fluid"):
+        for label, v in (("rho", rho), ("g", g)):
+            if not (math.isfinite(v) and v > 0):
+                raise InputError(f"potential fluid: {label} must be finite and > 0, got {v!r}")
+        if not math.isfinite(free_surface_z):
+            raise InputError(f"potential fluid: free_surface_z must be finite, got {free_surface_z!r}")
+        if not depth > 0:
+            raise InputError(f"potential fluid: depth = {depth!r} m; give a depth > 0 (inf: deep water)")
+        if sea is not None and not isinstance(sea, Sea):
+            raise InputError(f"potential fluid: sea must be a fluid.potential.waves.Sea, got {type(sea).__name__}")
+        if sea is not None and (sea.depth != depth or sea.g != g):
+            raise InputError(f"potential fluid: the sea's depth {sea.depth:g} m and gravity {sea.g:g} m/s^2 differ "
+                             f"from the fluid's {depth:g} m and {g:g} m/s^2; give both the same")
+        if memory is not None and not (math.isfinite(memory) and memory > 0):
+            raise InputError(f"potential fluid: memory = {memory!r} s; give a time > 0 s (None: from the decay)")
+        if not coefficients:
+            require_capytaine()
+        self.rho, self.g, self.eta, self.depth = float(rho), float(g), float(free_surface_z), float(depth)
+        self.omega = None if omega is None else np.asarray(omega, float)
+        if int(frequencies) < 4:
+            raise InputError(f"potential fluid: frequencies = {frequencies!r}; give at least 4")
+        self.frequencies = int(frequencies)
+        self.headings = (np.asarray(headings, float) if headings is not None else
+                         np.unique(sea.heading) if sea is not None else np.array([0.0]))
+        self.panel_size, self.memory, self.sea = panel_size, memory, sea
+        self.quadratic_drag = dict(quadratic_drag or {})
+        self.cache, self.name = cache, name
+        self._given = dict(coefficients or {})
+        self.t = 0.0
+        self._kin = None
+        self._dirty = False
+        self.dt_limit = "none"  #: the condition that set max_dt()
+        self.coefficients: list[Coefficients] = []  #: per body, in the bodies' order
+        self.impulse: list[ImpulseResponse] = []  #: per body
+
+    @property
+    def waves(self) -> Sea | None:
+        """The sea (its ``elevation(xy, t)`` is what a scene's wave gauges read)."""
+        return self.sea
+
+    # -- set-up ------------------------------------------------------------------
+    def _panel_size(self, body: str, kind: str, size) -> float:
+        ps = self.panel_size
+        if isinstance(ps, Mapping):
+            ps = ps.get(body)
+        return default_panel_size(kind, size) if ps is None else float(ps)
+
+    def _check_sea(self, name: str, omega) -> None:
+        """The waves lie inside the band the impulse response is trusted in (:mod:`.radiation`)."""
+        if self.sea is None:
+            return
+        hi = BAND * omega[-1]
+        out = (self.sea.omega < omega[0] * (1 - 1e-9)) | (self.sea.omega > hi * (1 + 1e-9))
+        if out.any():
+            w = float(self.sea.omega[out][0])
+            raise SettingError("omega_max", f"potential flow: body '{name}': a wave of {w:.4g} rad/s (period "
+                               f"{2 * math.pi / w:.4g} s) lies outside the coefficients' trusted band "
+                               f"{omega[0]:.4g}-{hi:.4g} rad/s (the lowest frequency to {BAND:g} x the highest); "
+                               f"set the frequencies so that it lies inside")
+
+    def attach_bodies(self, bodies) -> None:
+        """Compute (or read) each body's coefficients at its pose now, its floating pose;
+        move A∞'s diagonal into its inertia. Called once by the coupler."""
+        names = list(bodies.body_names)
+        unknown = sorted((set(self.quadratic_drag) | set(self._given)) - set(names))
+        if unknown:
+            raise InputError(f"potential fluid: drag or coefficients given for unknown bodies {unknown}; bodies: "
+                             f"{names}")
+        kin = bodies.kinematics()
+        n = len(names)
+        self.n_bodies, self.body_names = n, names
+        self._mass = bodies.masses()
+        self._com0, self._R0 = kin.com.copy(), kin.rotation.copy()
+        self._F0 = np.zeros((n, 6))
+        self._drag = np.zeros((n, 6))
+        self._armature = np.zeros((n, 6))
+        self._exc: list[Excitation | None] = []
+        self._cob = np.zeros((n, 3))
+        self.coefficients, self.impulse = [], []
+        for k, (name, shapes) in enumerate(zip(names, bodies.geoms())):
+            solids = [s for s in shapes if s.kind in KINDS]
+            if len(shapes) != 1 or not solids:
+                raise InputError(f"potential fluid: body '{name}' has {len(shapes)} geoms "
+                                 f"({', '.join(s.kind for s in shapes) or 'none'}); this model takes one box, "
+                                 f"cylinder or sphere per body")
+            dofs = bodies.dofs(k)
+            if dofs.stop - dofs.start != 6:
+                raise InputError(f"potential fluid: body '{name}' has {dofs.stop - dofs.start} degrees of freedom; "
+                                 f"linear potential flow is 3-D: give it a free joint (a 3-D scene)")
+            geom = solids[0]
+            R = kin.rotation[k]
+            rot = R @ geom.rot
+            centre = kin.origin[k] + R @ geom.pos - np.array([kin.com[k, 0], kin.com[k, 1], self.eta])
+            check_pierces(name, geom.kind, geom.size, rot, float(centre[2]))
+            c = self._given.get(name)
+            if c is None:
+                ps = self._panel_size(name, geom.kind, geom.size)
+                omega = self.omega if self.omega is not None else default_omega(ps, self.g, self.frequencies, self.depth)
+                self._check_sea(name, omega)  # before the solve
+                if omega[0] < lowest_omega(self.depth, self.g) * (1 - 1e-9):
+                    raise SettingError("frequencies", f"potential flow: body '{name}': the lowest frequency "
+                                       f"{omega[0]:.4g} rad/s is below {lowest_omega(self.depth, self.g):.4g} "
+                                       f"rad/s (k d = {KD_MIN:g} in {self.depth:g} m of water), where Capytaine's "
+                                       f"finite-depth solver returns no value; start the frequencies there")
+                hull = wetted_hull(geom.kind, geom.size, rot, centre, ps, name=name)
+                c = compute(hull, float(kin.com[k, 2] - self.eta), omega=omega, headings=self.headings,
+                            depth=self.depth, rho=self.rho, g=self.g, cache=self.cache, name=name)
+            irf = impulse_response(c.omega, c.added_mass, c.damping, self.memory, name=name)
+            log.info("potential fluid: body '%s': %d panels, %d frequencies to %.3g rad/s, memory %.3g s (decays "
+                     "to %.2g %%), A(w) rebuilt within %.2g %%, B(w) %.2g %% below %.3g rad/s", name, c.panels,
+                     len(c.omega), c.omega[-1], irf.memory, 100 * irf.decay, 100 * irf.error_A,
+                     100 * irf.error_B, irf.band)
+            self.coefficients.append(c)
+            self.impulse.append(irf)
+            # the buoyancy at rest from the shape's exact volume where known, so that a body placed at
+            # its equilibrium stays there (the flat panels' polygonal waterline holds a little less)
+            exact = displaced_volume(geom.kind, geom.size, rot, float(centre[2]))
+            F0 = np.array([0.0, 0.0, self.rho * self.g * (c.volume if exact is None else exact)])
+            self._cob[k] = c.centre_of_buoyancy - c.centre_of_mass
+            self._F0[k] = np.concatenate([F0, np.cross(self._cob[k], F0)])
+            if name in self.quadratic_drag:
+                d = np.asarray(self.quadratic_drag[name], float)
+                if d.shape != (6,) or (d < 0).any() or not np.isfinite(d).all():
+                    raise InputError(f"potential fluid: quadratic drag of body '{name}' takes 6 finite values >= "
+                                     f"0, got {d}")
+                self._drag[k] = d
+            A = irf.added_mass_inf
+            rr = R.T @ A[3:, 3:] @ R  # the rotational block in the body axes of the free joint
+            arm = np.clip(np.concatenate([np.diag(A[:3, :3]), np.diag(rr)]), 0.0, None)
+            bodies.add_armature(k, arm)
+            self._armature[k] = arm
+            self._exc.append(None if self.sea is None else
+                             Excitation(self.sea, c.omega, c.headings, c.excitation, kin.com[k, :2], name=name))
+        self._inertia = np.array([bodies.dof_inertia(k) for k in range(n)])  # own, armature left out
+        self._hist_t = np.zeros(0)
+        self._hist_v = np.zeros((0, n, 6))
+
+    # -- coupling ----------------------------------------------------------------
+    def set_body_kinematics(self, kin) -> None:
+        """New body kinematics; the loads are for them (at the fluid's time)."""
+        self._kin = kin
+        self._dirty = True
+
+    def set_time(self, t: float) -> None:
+        """Take the loads at time ``t`` [s] for the kinematics last given."""
+        self.t = float(t)
+        self._dirty = True
+
+    def _velocities(self, kin) -> np.ndarray:
+        return np.concatenate([kin.velocity, kin.omega], axis=1)
+
+    def _record(self) -> None:
+        """Append the current velocities at the current time (an accepted step's end)."""
+        keep = self._hist_t < self.t - 1e-12
+        self._hist_t = np.append(self._hist_t[keep], self.t)
+        self._hist_v = np.concatenate([self._hist_v[keep], self._velocities(self._kin)[None]])
+        horizon = max(irf.memory for irf in self.impulse) + 1.0
+        old = np.flatnonzero(self._hist_t < self.t - horizon)
+        if old.size > 1:  # one sample before the window stays, so the window's start is covered
+            self._hist_t, self._hist_v = self._hist_t[old[-1]:], self._hist_v[old[-1]:]
+
+    def radiation_force(self) -> np.ndarray:
+        """∫ K(τ) ẋ(t − τ) dτ per body [N, N m] ``(n, 6)`` (the load is minus this)."""
+        keep = self._hist_t < self.t - 1e-12
+        T = np.append(self._hist_t[keep], self.t)
+        V = np.concatenate([self._hist_v[keep], self._velocities(self._kin)[None]])
+        out = np.zeros((self.n_bodies, 6))
+        if len(T) < 2:
+            return out
+        lag = self.t - T
+        for k, irf in enumerate(self.impulse):
+            inside = lag <= irf.memory
+            tau, v = lag[inside], V[inside, k]
+            if len(tau) < 2:
+                continue
+            w = np.zeros(len(tau))  # trapezoid weights over the (decreasing) lags
+            d = -np.diff(tau)
+            w[:-1] += 0.5 * d
+            w[1:] += 0.5 * d
+            out[k] = np.einsum("n,nij,nj->i", w, irf.at(tau), v)
+        return out
+
+    def _acceleration(self) -> np.ndarray:
+        """The bodies' mean acceleration over the last accepted step, ``(n, 6)`` (0 before one)."""
+        keep = self._hist_t < self.t - 1e-12
+        T, V = self._hist_t[keep], self._hist_v[keep]
+        if len(T) < 2:
+            return np.zeros((self.n_bodies, 6))
+        return (V[-1] - V[-2]) / (T[-1] - T[-2])
+
+    def _update(self) -> None:
+        kin = self._kin
+        n = self.n_bodies
+        F = self._F0.copy()
+        acc = self._acceleration()
+        for k in range(n):
+            c = self.coefficients[k]
+            xi = np.concatenate([kin.com[k] - self._com0[k], _rotvec(kin.rotation[k] @ self._R0[k].T)])
+            F[k] -= c.stiffness @ xi
+            R = kin.rotation[k]
+            arm = np.zeros((6, 6))
+            arm[:3, :3] = np.diag(self._armature[k, :3])
+            arm[3:, 3:] = R @ np.diag(self._armature[k, 3:]) @ R.T
+            F[k] -= (self.impulse[k].added_mass_inf - arm) @ acc[k]
+            if self._exc[k] is not None:
+                F[k] += self._exc[k].force(self.t)
+        F -= self.radiation_force()
+        if self._drag.any():
+            v = kin.velocity.copy()
+            if self.sea is not None:
+                cob = kin.com + np.einsum("nij,nj->ni", kin.rotation @ np.transpose(self._R0, (0, 2, 1)), self._cob)
+                v -= self.sea.velocity(cob, self.t, self.eta)
+            F[:, :3] -= self._drag[:, :3] * np.abs(v) * v
+            F[:, 3:] -= self._drag[:, 3:] * np.abs(kin.omega) * kin.omega
+        self._wrench = (F[:, :3].copy(), F[:, 3:].copy())
+
+    def body_wrenches(self):
+        """Force [N] and torque about the centre of mass [N m] on each body, world frame,
+        for the kinematics last given, at the fluid's time."""
+        if self._dirty and self._kin is not None:
+            self._update()
+            self._dirty = False
+        return self._wrench
+
+    # -- participant protocol ------------------------------------------------------
+    def initialize(self, t0: float) -> None:
+        if self._kin is None:
+            raise InputError("potential fluid: no bodies attached; add it to a Coupler with bodies=")
+        self.t = float(t0)
+        self._hist_t = np.zeros(0)
+        self._hist_v = np.zeros((0, self.n_bodies, 6))
+        self._record()
+        self._dirty = True
+
+    def max_dt(self) -> float:
+        """A fiftieth of the shortest of: each body's natural periods in heave, roll and pitch
+        ``2π sqrt((M_ii + A∞_ii) / C_ii)``, the waves' periods, and the period ``2π/ω_max``
+        that the impulse response resolves (:attr:`dt_limit` says which)."""
+        if self._kin is None:
+            return math.inf
+        limits = {"impulse response": min(2 * math.pi / c.omega[-1] for c in self.coefficients)}
+        nat = math.inf
+        for k, c in enumerate(self.coefficients):
+            m = self._inertia[k] + np.diag(self.impulse[k].added_mass_inf)
+            for i in (2, 3, 4):
+                if c.stiffness[i, i] > 0:
+                    nat = min(nat, 2 * math.pi * math.sqrt(m[i] / c.stiffness[i, i]))
+        limits["natural period"] = nat
+        if self.sea is not None:
+            limits["wave period"] = float(2 * math.pi / self.sea.omega.max())
+        self.dt_limit = min(limits, key=limits.get)
+        return float(limits[self.dt_limit]) / STEPS_PER_PERIOD
+
+    def advance(self, t: float, dt: float) -> None:
+        self.t = float(t + dt)
+        self._record()
+        self._dirty = True
+
+    def save_state(self):
+        return self.t, self._hist_t.copy(), self._hist_v.copy()
+
+    def load_state(self, state) -> None:
+        self.t, ht, hv = state
+        self._hist_t, self._hist_v = ht.copy(), hv.copy()
+        self._dirty = True

@@ -1,0 +1,77 @@
+"""The potential-flow fluid in time (the Cummins equation on MuJoCo through the coupler): rest,
+heave decay and a regular-wave response against the frequency domain, on coarse meshes; the
+registered validation cases (quick)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+pytest.importorskip("capytaine")
+pytest.importorskip("h5netcdf")
+
+from cosim import validation  # noqa: E402
+from cosim.errors import InputError  # noqa: E402
+from cosim.validations import potential as P  # noqa: E402
+
+GRID = np.linspace(0.15, 3.0, 20)
+
+
+@pytest.fixture(scope="module", autouse=True)
+def _cache(tmp_path_factory):
+    """One cache for the module: the first test solves, the others read (the cache's own
+    behaviour is tested in test_potential_coefficients.py)."""
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setenv("COSIM_POTENTIAL_CACHE", str(tmp_path_factory.mktemp("potential")))
+        yield
+
+
+def test_a_body_at_its_floating_pose_stays_at_rest():
+    coupler, bodies, fluid = P.floating_cylinder(1.0, GRID)
+    p0 = bodies.data.qpos.copy()
+    coupler.run(5.0)
+    assert np.abs(bodies.data.qpos - p0).max() < 1e-9
+    # A∞'s diagonal went into the implicit inertia; the off-diagonal surge-pitch rest is explicit
+    A = fluid.impulse[0].added_mass_inf
+    assert np.allclose(bodies.model.dof_armature[:5], np.diag(A)[:5], rtol=1e-12)
+
+
+def test_heave_decay_period_is_the_natural_period():
+    d = P.heave_decay(1.0, GRID, duration=12.0)
+    assert np.mean(d["periods"][:2]) == pytest.approx(d["natural_period"], rel=0.015)
+    assert 0.03 < d["damping_ratio"] < 0.1  # a squat cylinder radiates: the decay is visible
+
+
+def test_regular_wave_response_is_the_frequency_domain_rao():
+    r = P.time_domain_rao(1.0, GRID, 0.8, periods=16, fit=6)
+    for dof in ("surge", "heave"):
+        assert abs(r["td"][dof] - r["fd"][dof]) < 0.02 * abs(r["fd"][dof]), dof
+    assert abs(r["fd"]["heave"]) == pytest.approx(1.0, abs=0.05)  # a long wave: the body rides it
+
+
+def test_bad_inputs_are_refused_before_any_solve(tmp_path):
+    from fluid.potential.participant import PotentialFluid
+    from fluid.potential.waves import Sea, regular
+
+    with pytest.raises(InputError, match="depth"):
+        PotentialFluid(depth=0.0)
+    with pytest.raises(InputError, match="differ from the fluid's"):
+        PotentialFluid(depth=20.0, sea=Sea(regular(0.1, 5.0), depth=30.0))
+    with pytest.raises(InputError, match="memory"):
+        PotentialFluid(memory=-1.0)
+    with pytest.raises(InputError, match="outside the coefficients' trusted band 0.15-1.5 rad/s"):
+        P.floating_cylinder(1.0, GRID, sea=Sea(regular(0.1, 2.5)))  # a 2.5 s wave: 2.5 rad/s
+
+
+def test_hemisphere_quick():
+    r = validation.run("potential-hemisphere", quick=True)
+    assert r["passed"], r["metrics"]
+
+
+@pytest.mark.slow
+def test_cylinder_rao_quick():
+    r = validation.run("potential-cylinder-rao", quick=True)
+    assert r["passed"], r["metrics"]
+    assert math.isfinite(r["metrics"]["decay_period_s"])
