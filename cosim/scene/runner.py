@@ -12,7 +12,8 @@ samples (``world.sample_every``), particle snapshots (``snapshot_every``), check
   every coupling step), particle snapshots (``fluid.output``);
 - ``GROUP.csv`` per probe group (header ``t [s]`` then ``NAME [UNIT]``), ``ledger.csv``;
 - ``GROUP.png`` per probe group, ``particles_tT.png`` at each ``plot_at`` time;
-- ``summary.json``: set-up, scheme, sizes, steps, wall and CPU time, each series' range;
+- ``summary.json``: set-up, scheme, sizes, steps, wall and CPU time, each series' range, the
+  warnings of the build (``warnings``, :attr:`cosim.scene.build.Built.warnings`);
   lines that broke (``line_breaks``) and, for catenary lines, when each went fully lifted
   or taut and back (``line_events``, :mod:`moorings.line_events`);
 - ``checkpoint.pkl``: the latest checkpoint (pickle: read back only your own).
@@ -356,6 +357,8 @@ def _summary(scene, built, series, units, steps, loop_s, build_s, cpu_s, wall_be
         s["speed_of_sound_m_s"] = built.sph.config.speed_of_sound
     if built.start_heights:
         s["floating_start_z_m"] = built.start_heights
+    if built.warnings:
+        s["warnings"] = list(built.warnings)
     if built.wavemaker is not None:
         s["wavemaker"] = {"stroke_m": built.wavemaker.stroke, "wavelength_m": built.wavemaker.wavelength}
     if built.mooring is not None:
