@@ -8,7 +8,7 @@ re-initialisation (off / every 30 steps,
 001_14936b82710365b2.txt Eq. 9-12), the tank walls' density (plain dynamic boundaries /
 walls="adami", fluid.wall_density), the artificial viscosity with the walls
 (alpha_wall 1 / 0), the smoothing length (h = 2 dx) and the wave set-up
-(fluid.solver.WAVES_2D: h = 2 dx with walls="adami"; the hydrostatic rows start from
+(fluid.solver.SLOSHING_2D: h = 2 dx with walls="adami"; the hydrostatic rows start from
 the lattice, without Fluid.settle).
 
     python benchmarks/fluid_trade.py [--case hydrostatic|dambreak|all] [--quick] [--csv FILE]
@@ -30,12 +30,12 @@ import sys
 import time
 
 from cosim.validations.fluid import run_dambreak, run_hydrostatic
-from fluid.solver import WAVES_2D
+from fluid.solver import SLOSHING_2D
 
 LEVERS = [{"c0_factor": 10.0}, {"c0_factor": 20.0}, {"c0_factor": 40.0}, {"kernel": "cubic"},
           {"diffusion": "molteni"}, {"diffusion": "none"}, {"diffusion": "antuono"}, {"delta": 0.03},
           {"diffusion_at_surface": False}, {"mls_every": 30}, {"walls": "adami"}, {"alpha_wall": 0.0},
-          {"h_coef": 2.0}, dict(WAVES_2D)]
+          {"h_coef": 2.0}, dict(SLOSHING_2D)]
 #: each case's own c0_factor (its "defaults" row): hydrostatic 20, dam break 10
 C0_DEFAULT = {"hydrostatic": 20.0, "dambreak-2d": 10.0}
 

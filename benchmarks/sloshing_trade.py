@@ -27,15 +27,15 @@ import argparse
 import time
 
 from cosim.validations.sloshing import run_sloshing_frequency, run_spheric10, run_westergaard
-from fluid.solver import WAVES_2D
+from fluid.solver import SLOSHING_2D
 
-#: the cases' own set-ups (westergaard: walls="adami"; sloshing-frequency: WAVES_2D), then
+#: the cases' own set-ups (westergaard: walls="adami"; sloshing-frequency: SLOSHING_2D), then
 #: the solver's defaults at one resolution for comparison (the last row of each)
 _ADAMI = {"walls": "adami"}
 RUNS = {
     "westergaard": [dict(dx=0.1, **_ADAMI), dict(dx=0.05, **_ADAMI), dict(dx=0.05, c0=700.0, **_ADAMI),
                     dict(dx=0.05, c0=350.0, **_ADAMI), dict(dx=0.025, **_ADAMI), dict(dx=0.05)],
-    "sloshing-frequency": [dict(dx=0.05, **WAVES_2D), dict(dx=0.025, **WAVES_2D), dict(dx=0.0125, **WAVES_2D),
+    "sloshing-frequency": [dict(dx=0.05, **SLOSHING_2D), dict(dx=0.025, **SLOSHING_2D), dict(dx=0.0125, **SLOSHING_2D),
                            dict(dx=0.025)],
     "sloshing-spheric10": [dict(dx=0.0186, t_end=2.7), dict(dx=0.0093, t_end=2.7), dict(dx=0.0062, t_end=2.7),
                            dict(dx=0.00465, t_end=2.7), dict(dx=0.0062, t_end=2.7, sensor="face")],

@@ -14,9 +14,11 @@ one line. Per body:
   of the angular velocity, world axes, scaled by the submerged fraction;
 - added mass and inertia, moved into MuJoCo's implicit inertia (``dof_armature``:
   inertia without weight), which keeps explicit coupling stable for light bodies;
-- optionally a regular linear (Airy) wave, :class:`LinearWave`, whose free surface
-  moves the hydrostatics (the buoyancy is that of the volume under the instantaneous
-  surface) and whose water velocity and acceleration enter the Morison equation
+- optionally an incident sea of :mod:`fluid.waves` (regular linear or Stokes-2 waves, a
+  JONSWAP / Pierson–Moskowitz spectrum, a recorded elevation; or :class:`LinearWave`),
+  whose free surface moves the hydrostatics (the buoyancy is that of the volume under the
+  instantaneous surface) and whose water velocity and acceleration enter the Morison
+  equation
   (Morison et al. 1950; Faltinsen 1990 §7.1 eq. 7.1, Dean & Dalrymple 1991 §10.3)
   on each cell of the submerged volume::
 
@@ -40,6 +42,7 @@ the speed/accuracy trade. Valid for bodies small against the wavelength.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass, field
 from typing import Mapping, Sequence
@@ -48,7 +51,7 @@ import numpy as np
 
 from bodies.sampling import half_extents, mesh_volume, signed_distance
 from cosim.errors import InputError
-from fluid.wavemaker import wavenumber
+from fluid.waves import RegularWave, Sea, SeaError
 
 
 #: exact volumes [m^3] from MuJoCo sizes (half-sizes, radius, half-length)
@@ -115,30 +118,15 @@ class LinearWave:
     """A regular linear (Airy) wave of height ``H`` [m] and period ``T`` [s] in water
     ``depth`` [m] deep, travelling along the horizontal heading ``direction`` [deg]
     (from +x towards +y; a 2-D scene takes 0 or 180), faded in over ``ramp`` [s]
-    (``r(t) = (1 − cos(π t / ramp)) / 2`` up to ``ramp``, then 1; 0: none). ``g``
-    [m/s^2]. With ``a = H/2``, ``ω = 2π/T``, the wavenumber ``k`` from the dispersion
-    relation ``ω² = g k tanh(k d)`` (:func:`fluid.wavemaker.wavenumber`, Newton from
-    Eckart's estimate), the phase ``θ = k (x cos β + y sin β) − ω t`` and ``ζ = z −
-    level`` the height above the still water, ``−d ≤ ζ ≤ 0`` (Dean & Dalrymple 1991,
-    Table 4.1; Faltinsen 1990, Table 2.1)::
+    (``r(t) = (1 − cos(π t / ramp)) / 2`` up to ``ramp``, then 1; 0: none); ``source``
+    [m]: the plane ``x cos β + y sin β = source`` where it is made, its fade-in travelling
+    from there at the group velocity (None: everywhere at once). ``g`` [m/s^2].
 
-        η = a cos θ
-        u_h = a ω cosh k(ζ+d) / sinh kd · cos θ        (along the heading)
-        w   = a ω sinh k(ζ+d) / sinh kd · sin θ
-        ∂u_h/∂t =  a ω² cosh k(ζ+d) / sinh kd · sin θ
-        ∂w/∂t   = −a ω² sinh k(ζ+d) / sinh kd · cos θ
-
-    all times ``r(t)`` (the accelerations also carry ``r'(t)`` times the velocity, so
-    that they are the exact time derivative). Above the still water (under a crest)
-    the kinematics are those at ``ζ = 0`` (constant extrapolation); below the seabed
-    those at ``ζ = −d``.
-
-    ``source`` [m] (None: the fade-in acts everywhere at once): the wave is made at the
-    plane ``x cos β + y sin β = source`` (a wavemaker's paddle) and its fade-in travels
-    from there with the group velocity ``c_g = ω/k · (1/2)(1 + 2kd / sinh 2kd)`` (Dean &
-    Dalrymple 1991 eq. 4.79): a point a distance ``s > 0`` ahead of the paddle sees
-    ``r(t − s / c_g)``. (A linear wave group's envelope moves at ``c_g``; its front
-    disperses, which this sharp delay does not model.)"""
+    The wave is :class:`fluid.waves.RegularWave` (``theory="linear"``; its docstring has
+    the formulas, Dean & Dalrymple 1991, Table 4.1), held in :attr:`sea`; this class keeps
+    the calls of points as rows ``p`` = (x, y[, z]) and the still level given per call.
+    Above the still water (under a crest) the kinematics are those at the still water;
+    below the seabed those at the seabed."""
 
     H: float
     T: float
@@ -148,6 +136,7 @@ class LinearWave:
     g: float = 9.81
     source: float | None = None
     k: float = field(default=math.nan, init=False, compare=False)  #: wavenumber [rad/m], from the dispersion relation
+    sea: RegularWave = field(default=None, init=False, compare=False, repr=False)  #: the wave, still level at z = 0
 
     def __post_init__(self):
         own = "linear wave"
@@ -161,96 +150,44 @@ class LinearWave:
             raise InputError(f"{own}: ramp = {self.ramp!r} s; give a fade-in time >= 0 s (0: none)")
         for name, v in (("H", H), ("T", T), ("depth", d), ("g", g), ("direction", beta), ("ramp", ramp)):
             object.__setattr__(self, name, v)
-        k = wavenumber(T, d, g)
-        object.__setattr__(self, "k", k)
-        steep = H * k / (2.0 * math.pi)
-        if steep > 1.0 / 7.0:
-            raise InputError(f"{own}: H/λ = {steep:.3f} is beyond the breaking limit 1/7 (Michell 1893); lower H "
-                             f"or lengthen T")
-        if H > 0.78 * d:
-            raise InputError(f"{own}: H/d = {H / d:.3f} is beyond the depth-limited breaking limit 0.78 (McCowan "
-                             f"1894); lower H or give a deeper depth")
+        try:
+            sea = RegularWave(H, T, d, direction=beta, ramp=ramp, source=self.source, g=g)
+        except SeaError as e:
+            raise InputError(f"{own}: {e.problem}") from None
+        object.__setattr__(self, "sea", sea)
+        object.__setattr__(self, "k", sea.k)
 
     @property
     def omega(self) -> float:
         """Angular frequency ω = 2π/T [rad/s]."""
-        return 2.0 * math.pi / self.T
+        return self.sea.omega
 
     @property
     def wavelength(self) -> float:
         """λ = 2π/k [m]."""
-        return 2.0 * math.pi / self.k
+        return self.sea.wavelength
 
     @property
     def group_velocity(self) -> float:
         """c_g [m/s] (Dean & Dalrymple 1991 eq. 4.79)."""
-        kd = self.k * self.depth
-        n = 0.5 * (1.0 + (2.0 * kd / math.sinh(2.0 * kd) if kd < 350 else 0.0))
-        return n * self.omega / self.k
+        return self.sea.group_velocity
 
     @property
     def heading(self) -> np.ndarray:
         """Unit vector of propagation, (cos β, sin β, 0)."""
-        b = math.radians(self.direction)
-        return np.array([math.cos(b), math.sin(b), 0.0])
-
-    def _ramp(self, t: float) -> tuple[float, float]:
-        if self.ramp <= 0 or t >= self.ramp:
-            return 1.0, 0.0
-        if t <= 0:
-            return 0.0, 0.0
-        s = math.pi * t / self.ramp
-        return 0.5 * (1.0 - math.cos(s)), 0.5 * math.pi / self.ramp * math.sin(s)
-
-    def _ramp_at(self, p, t: float):
-        """The fade-in and its rate at points ``p``: at once everywhere, or delayed by the
-        travel from the ``source`` plane at the group velocity."""
-        if self.source is None:
-            return self._ramp(t)
-        p = np.asarray(p, float)
-        e = self.heading
-        s = np.maximum(p[..., 0] * e[0] + p[..., 1] * e[1] - self.source, 0.0)
-        tau = t - s / self.group_velocity
-        if self.ramp <= 0:
-            return (tau >= 0).astype(float), np.zeros_like(tau)
-        q = np.clip(tau / self.ramp, 0.0, 1.0)
-        inside = (q > 0) & (q < 1)
-        return 0.5 * (1.0 - np.cos(math.pi * q)), np.where(inside, 0.5 * math.pi / self.ramp * np.sin(math.pi * q), 0.0)
-
-    def _phase(self, p) -> np.ndarray:
-        p = np.asarray(p, float)
-        e = self.heading
-        return self.k * (p[..., 0] * e[0] + p[..., 1] * e[1])
+        return self.sea.heading
 
     def elevation(self, p, t: float) -> np.ndarray:
         """η [m] above the still water at the horizontal positions of points ``p`` [m]
         (``(..., 2)`` or ``(..., 3)``: x, y first) at time ``t`` [s]."""
-        r, _ = self._ramp_at(p, t)
-        return r * 0.5 * self.H * np.cos(self._phase(p) - self.omega * t)
+        p = np.asarray(p, float)
+        return self.sea.elevation(p[..., 0], p[..., 1], t)
 
     def kinematics(self, p, t: float, level: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
         """Water velocity [m/s] and acceleration ∂u/∂t [m/s^2] at points ``p`` [m]
         (``(n, 3)``, world frame, z up), the still water at ``level`` [m]."""
         p = np.asarray(p, float)
-        r, dr = self._ramp_at(p, t)
-        k, d, w, a = self.k, self.depth, self.omega, 0.5 * self.H
-        zeta = np.clip(p[:, 2] - level, -d, 0.0)
-        # cosh k(ζ+d)/sinh kd and sinh k(ζ+d)/sinh kd without overflow in deep water
-        den = -math.expm1(-2.0 * k * d)
-        e1, e2 = np.exp(k * zeta), np.exp(-k * (zeta + 2.0 * d))
-        ch, sh = (e1 + e2) / den, (e1 - e2) / den
-        th = self._phase(p) - w * t
-        c, s = np.cos(th), np.sin(th)
-        uh, wz = a * w * ch * c, a * w * sh * s
-        e = self.heading
-        u = np.empty((len(p), 3))
-        acc = np.empty((len(p), 3))
-        u[:, 0], u[:, 1], u[:, 2] = r * uh * e[0], r * uh * e[1], r * wz
-        ah, az = a * w * w * ch * s, -a * w * w * sh * c
-        acc[:, 0] = (r * ah + dr * uh) * e[0]
-        acc[:, 1] = (r * ah + dr * uh) * e[1]
-        acc[:, 2] = r * az + dr * wz
-        return u, acc
+        return self.sea.kinematics(p[:, 0], p[:, 1], p[:, 2] - level, t)
 
 
 class AnalyticFluid:
@@ -275,7 +212,8 @@ class AnalyticFluid:
         Lattice cells along the longest axis of each geom (accuracy of the
         centre of buoyancy; volumes are exact for submerged geoms).
     waves:
-        A :class:`LinearWave` (None: still water): the free surface is
+        A sea of :mod:`fluid.waves` (its ``level`` the ``free_surface_z``) or a
+        :class:`LinearWave` (None: still water): the free surface is
         ``free_surface_z + η`` over each cell, and the wave's kinematics load the
         bodies (Froude–Krylov and added-mass inertia, drag on the relative velocity;
         see the module docstring). The diffraction term uses each body's
@@ -302,12 +240,19 @@ class AnalyticFluid:
             raise InputError(f"analytic fluid: free_surface_z must be finite, got {free_surface_z!r}")
         if int(cells) < 2:
             raise InputError(f"analytic fluid: cells must be at least 2, got {cells!r}")
-        if waves is not None and not isinstance(waves, LinearWave):
-            raise InputError(f"analytic fluid: waves must be a fluid.analytic.LinearWave, got {type(waves).__name__}")
+        if waves is not None and not isinstance(waves, (LinearWave, Sea)):
+            raise InputError(f"analytic fluid: waves must be a sea of fluid.waves or a fluid.analytic.LinearWave, "
+                             f"got {type(waves).__name__}")
         if waves is not None and not math.isclose(waves.g, g, rel_tol=1e-12):
             raise InputError(f"analytic fluid: the wave's gravity g = {waves.g!r} m/s^2 differs from the fluid's "
                              f"{g!r} m/s^2; give both the same")
-        self.waves = waves
+        if isinstance(waves, Sea) and not math.isclose(waves.level, free_surface_z, rel_tol=1e-12, abs_tol=1e-12):
+            raise InputError(f"analytic fluid: the sea's still level {waves.level!r} m differs from free_surface_z = "
+                             f"{free_surface_z!r} m; give both the same")
+        self.waves = waves  #: as given
+        #: the incident sea (fluid.waves' interface), its still water at free_surface_z
+        self.sea = (dataclasses.replace(waves.sea, level=float(free_surface_z)) if isinstance(waves, LinearWave)
+                    else waves)
         self.rho, self.g, self.eta = float(rho), float(g), float(free_surface_z)
         self.name = name
         self.cells = int(cells)
@@ -381,7 +326,7 @@ class AnalyticFluid:
         """Take the loads at time ``t`` [s] for the kinematics last given (the coupler's
         predictor asks for the loads at the end of its step; only waves depend on it)."""
         self.t = float(t)
-        self._dirty = self._dirty or self.waves is not None
+        self._dirty = self._dirty or self.sea is not None
 
     @property
     def submerged_volume(self) -> np.ndarray:
@@ -411,7 +356,12 @@ class AnalyticFluid:
             R = kin.rotation[b]
             p_w[cells] = kin.origin[b] + self._pts[cells] @ R.T
             height[cells] = np.abs(np.einsum("j,njk->nk", R[2], self._cell_axes[cells])).sum(axis=1)  # vertical
-        surface = self.eta if self.waves is None else self.eta + self.waves.elevation(p_w, self.t)
+        sea = self.sea
+        if sea is None:
+            surface = self.eta
+        else:
+            eta, u, a = sea.surface_and_kinematics(p_w[:, 0], p_w[:, 1], p_w[:, 2], self.t)
+            surface = self.eta + eta
         frac = np.clip((surface - p_w[:, 2]) / height + 0.5, 0.0, 1.0)  # exact for cells level with the surface
         wv = self._w * frac
         vsub = np.bincount(self._owner, wv, minlength=self.n_bodies)
@@ -421,8 +371,7 @@ class AnalyticFluid:
         F[:, 2] = self.rho * self.g * vsub
         T = np.cross(centre - kin.com, F)
         v_rel = kin.velocity
-        if self.waves is not None:
-            u, a = self.waves.kinematics(p_w, self.t, self.eta)
+        if sea is not None:
             f_fk = self.rho * wv[:, None] * a  # Froude–Krylov inertia of each cell [N]
             F += self._per_body(f_fk)
             T += self._per_body(self._cross(p_w - kin.com[self._owner], f_fk))
@@ -459,7 +408,7 @@ class AnalyticFluid:
         dt < m / B (taken with a factor 2 margin) and the hydrostatic spring
         k = ρ g A_wp at least 50 steps per heave period 2π sqrt(m / k) (held loads
         lengthen the period by ~1 % at 20 steps, ~0.2 % at 50); with waves, at least
-        50 steps per wave period. The first two use bounds
+        50 steps per shortest wave period in the sea. The first two use bounds
         valid at any pose (full submergence, the largest waterplane), since a body
         out of or under the water now may cross the surface within the step.
         :attr:`dt_limit` says which one limits."""
@@ -472,8 +421,8 @@ class AnalyticFluid:
             k = self.rho * self.g * self._waterplane_bound
             dt_hydro = np.min(0.02 * 2.0 * math.pi * np.sqrt(self._mass / k))
         limits = {"damping": dt_damp, "hydrostatic stiffness": dt_hydro}
-        if self.waves is not None:
-            limits["wave period"] = 0.02 * self.waves.T
+        if self.sea is not None:
+            limits["wave period"] = 0.02 * self.sea.shortest_period
         self.dt_limit = min(limits, key=limits.get)
         return float(limits[self.dt_limit])
 

@@ -59,20 +59,28 @@ def _sum_groups(pos, mass, acc, group, centre, F, M):
 WALLS = ("dbc", "adami")
 
 
-#: the 2-D set-up for waves, sloshing and wall pressures: ``FluidConfig(..., **WAVES_2D)``.
-#: Wendland with h = 2 dx, the one support near the usual ones at which the square
-#: particle lattice under pressure is stable (benchmarks/lattice_stiffness.py
-#: --stability; at the default sqrt(2) dx its spurious shear stiffness makes waves 5-8 %
-#: fast), and tank walls that carry the fluid's pressure ("adami": plain dynamic walls
-#: put a stiff spring at the contact line). Measured: first sloshing mode +0.84 % (default
-#: +10 %), piston waves 0.97-1.00 of linear theory's height (0.90), Westergaard raw wall
-#: pressure 0.016 RMS (0.17). Twice the pairs of the default but 1.4-1.5 times its step:
-#: the dam break of cosim.validations.fluid and the main example cost 1.0-1.15 times as much
-#: per simulated second. It needs the resolution: at 10 particle layers over the depth
-#: the 4 dx support's truncation at the surface costs 1.5 % of rho g H in a tank at rest
-#: (the default 0.76 %). Start a tank from rest with Fluid.settle (the lattice's
-#: free-surface corners otherwise ring for seconds).
-WAVES_2D = {"h_coef": 2.0, "walls": "adami"}
+#: the 2-D set-up for sloshing and wall pressures (standing waves in a tank):
+#: ``FluidConfig(..., **SLOSHING_2D)``. Wendland with h = 2 dx, the one support near the usual
+#: ones at which the square particle lattice under pressure is stable
+#: (benchmarks/lattice_stiffness.py --stability; at the default sqrt(2) dx its spurious shear
+#: stiffness makes waves 5-8 % fast), and tank walls that carry the fluid's pressure
+#: ("adami": plain dynamic walls put a stiff spring at the contact line). It needs the
+#: resolution: at 10 particle layers over the depth the 4 dx support's truncation at the
+#: surface costs 1.5 % of rho g H in a tank at rest. Start a tank from rest with
+#: Fluid.settle. Measured figures: the docstring of cosim.scene.setup.
+SLOSHING_2D = {"h_coef": 2.0, "walls": "adami"}
+
+#: the set-up for waves that travel (a flume's wavemaker, 2-D and 3-D): that of
+#: :data:`SLOSHING_2D`, and what keeps a wave's height along the flume (docs/validation/
+#: wave-propagation_history.md; ``cosim validate wave-propagation``). Measured, the height a wave loses per
+#: wavelength comes from three terms: the density diffusion where the free surface cuts
+#: the kernel's support (there it is a first-derivative flux, not a Laplacian: faded out,
+#: ``diffusion_at_surface=False``), the artificial viscosity's friction on the floor
+#: (a laminar boundary layer of nu ~ alpha h c0 / 8: slip walls, ``alpha_wall=0``) and
+#: the artificial viscosity in the interior (2 nu k^2 / c_g per metre, Lamb 1932 §348:
+#: ``alpha`` lowered from 0.01)
+TRAVELLING_WAVES = {"h_coef": 2.0, "walls": "adami", "diffusion_at_surface": False, "alpha_wall": 0.0,
+                    "alpha": 0.002}
 
 
 def _bad(what: str, fix: str):

@@ -67,7 +67,7 @@ symmetric sloshing mode (2-D, dx = 0.02 m: largest speed 2.4e-2 sqrt(g H) at 0.1
 damped velocities (``Fluid.settle``, 1 s), the corner particles find their place and the
 tank stays at rest, 1.8e-4 sqrt(g H) and 0.82 % RMS at dx = 0.02 m, 1.0e-4 and 0.67 % at
 0.01 m (``run_hydrostatic(2, dx, t_end, settle_s=1.0, walls="adami")``). Hence an option
-(``FluidConfig.walls``), not the default; the wave set-up ``fluid.solver.WAVES_2D`` uses
+(``FluidConfig.walls``), not the default; the wave set-up ``fluid.solver.SLOSHING_2D`` uses
 these walls. The mechanism in full and the clamp tried off: the history file named above.
 """
 

@@ -33,14 +33,14 @@ def test_hydrostatic_full(name):
 
 @pytest.mark.slow
 def test_hydrostatic_2d_40_layers_wave_setup_at_rest():
-    """dx = 0.005 m (40 layers), 3 s after 1 s of settling, fluid.solver.WAVES_2D (h = 2 dx,
+    """dx = 0.005 m (40 layers), 3 s after 1 s of settling, fluid.solver.SLOSHING_2D (h = 2 dx,
     at which the square lattice is stable; walls="adami"): measured 0.31 % RMS, largest
     speed 1.2e-4 sqrt(g H). With the defaults (h = sqrt(2) dx, weakly unstable to long
     shear waves) the same tank reaches 5.4e-3 (run_hydrostatic's docstring)."""
     from cosim.validations.fluid import run_hydrostatic
-    from fluid.solver import WAVES_2D
+    from fluid.solver import SLOSHING_2D
 
-    m = run_hydrostatic(2, dx=0.005, t_end=3.0, settle_s=1.0, **WAVES_2D)["metrics"]
+    m = run_hydrostatic(2, dx=0.005, t_end=3.0, settle_s=1.0, **SLOSHING_2D)["metrics"]
     assert m["p_rms_err_time_avg"] < 0.01 and m["max_speed_over_sqrt_gH"] < 1e-3
 
 

@@ -12,7 +12,7 @@ from cosim.validations.sloshing import G, RHO0, _moving_tank
 from fluid.geometry import set_hydrostatic
 from fluid.motion import Harmonic, Translation
 from fluid.particles import Kind
-from fluid.solver import WAVES_2D, Fluid, FluidConfig
+from fluid.solver import SLOSHING_2D, Fluid, FluidConfig
 
 
 def _tank(**overrides):
@@ -54,7 +54,7 @@ def test_settle_damps_the_start_up_motion():
     of magnitude quieter."""
     speeds = []
     for settle in (0.0, 0.5):
-        f = _tank(c0_factor=20.0, **WAVES_2D)
+        f = _tank(c0_factor=20.0, **SLOSHING_2D)
         f.initialize(0.0)
         if settle:
             f.settle(settle)
@@ -80,5 +80,5 @@ def test_wave_setup_at_rest_after_settling():
     the tank meets the hydrostatic targets at 20 layers (measured 0.56 % RMS, 2.6e-4
     sqrt(g H); without settling 1.3e-3 to 4e-3 over 3 s: the free-surface corners ring. At
     10 layers the 4 dx support's truncation at the surface gives 1.5 % RMS)."""
-    m = run_hydrostatic(2, dx=0.01, t_end=2.0, settle_s=1.0, **WAVES_2D)["metrics"]
+    m = run_hydrostatic(2, dx=0.01, t_end=2.0, settle_s=1.0, **SLOSHING_2D)["metrics"]
     assert m["p_rms_err_time_avg"] < 0.01 and m["max_speed_over_sqrt_gH"] < 1e-3

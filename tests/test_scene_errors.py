@@ -294,6 +294,19 @@ def case(id, base, change, path, says, python, files=None):
 INCLINED = {"kind": "inclined-tank", "angle": 95.0, "length": 1.0, "depth": 0.2, "height": 0.6, "width": 0.5}
 LINE_DYN = {"EA": 1e5, "mass_per_length": 0.6, "diameter": 0.01}
 LINEAR = {"kind": "linear", "height": 0.7, "period": 20.0, "depth": 20.0}  # seed 004's waves
+REGULAR = {"kind": "regular", "height": 0.7, "period": 20.0, "depth": 20.0}
+JONSWAP = {"kind": "irregular", "depth": 20.0, "hs": 1.0, "tp": 8.0}
+SERIES = {"kind": "irregular", "depth": 20.0, "spectrum": "series", "file": "eta.txt"}
+
+
+def eta_rows(n=24, a=0.1, late=None):
+    """A record of a 6 s wave of amplitude ``a`` [m], ``n`` samples 0.5 s apart (sample
+    ``late`` 0.1 s late)."""
+    return "t [s], eta [m]\n" + "".join(f"{0.5 * i + 0.1 * (i == late)}, {a * math.cos(math.pi * i / 6):.6f}\n"
+                                         for i in range(n))
+
+
+ETA_TXT = eta_rows()  # 12 s long: the analytic base scene runs 10 s
 
 CASES = [
     # -- keys: unknown, misspelt, missing
@@ -468,6 +481,51 @@ CASES = [
          "30.0 deg: a 2-D scene's waves travel along +x (0) or -x (180)", "Scene.waves.direction"),
     case("linear waves beyond breaking", "analytic", ("waves", dict(LINEAR, height=1.0, period=2.0)), "waves.height",
          "H/λ = 0.160 is beyond the breaking limit 1/7 (Michell 1893); lower H or lengthen T", "Scene.waves.height"),
+    case("a piston's wave beyond Miche's limit on the analytic fluid", "flume",
+         (("fluid", {"model": "analytic"}), ("waves", {"kind": "piston", "height": 0.19, "period": 1.04})),
+         "waves.height", "H/λ = 0.1307 is beyond the breaking limit 0.142 tanh(kd) = 0.1222 at kd = 1.3 (Miche 1944)",
+         "Scene.waves.height"),
+    case("regular waves on the SPH fluid", "flume",
+         ("waves", {"kind": "regular", "height": 0.04, "period": 1.0, "depth": 0.3}), "waves.kind",
+         "regular waves act on the analytic fluid's bodies (fluid.model = \"analytic\"); the 'sph' fluid has none: "
+         "make waves with a piston or flap in a flume (the SPH fluid takes no incident sea yet)", "Scene.waves.kind"),
+    case("an irregular sea on the SPH fluid", "flume",
+         ("waves", {"kind": "irregular", "hs": 0.04, "tp": 1.0, "depth": 0.3}), "waves.kind",
+         "irregular waves act on the analytic fluid's bodies", "Scene.waves.kind"),
+    case("regular waves beyond Miche's limit", "analytic", ("waves", dict(REGULAR, height=6.5, period=6.0, depth=10.0)),
+         "waves.height", "H/λ = 0.1343 is beyond the breaking limit 0.142 tanh(kd) = 0.1223 at kd = 1.3 (Miche 1944); "
+         "lower H or lengthen T", "Scene.waves.height"),
+    case("Stokes-2 waves with a secondary crest", "analytic",
+         ("waves", dict(REGULAR, height=1.2, period=7.6, depth=5.0, theory="stokes2")), "waves.height",
+         "a secondary crest rises in the trough, outside Stokes second order's range (Sorensen 2006, Eq. 3.6: H/λ <= "
+         "0.0203 at d/λ = 0.0998; here H/λ = 0.0239, Ursell number H λ²/d³ = 24.1); lower H, or use theory = "
+         "'linear'", "Scene.waves.height"),
+    case("an unknown wave theory", "analytic", ("waves", dict(REGULAR, theory="stokes5")), "waves.theory",
+         "'stokes5' is not accepted; did you mean 'stokes2'? Give one of 'linear', 'stokes2'", "RegularWaves.theory"),
+    case("an unknown spectrum", "analytic", ("waves", dict(JONSWAP, spectrum="bretschneider")), "waves.spectrum",
+         "'bretschneider' is not accepted; give one of 'jonswap', 'pierson-moskowitz', 'series'",
+         "IrregularWaves.spectrum"),
+    case("a spectrum without Hs", "analytic", ("waves", {k: v for k, v in JONSWAP.items() if k != "hs"}), "waves.hs",
+         "is required with spectrum = 'jonswap': give the significant wave height [m]", "IrregularWaves.hs"),
+    case("a JONSWAP gamma below 1", "analytic", ("waves", dict(JONSWAP, gamma=0.5)), "waves.gamma",
+         "0.5 is out of range; give a number >= 1 and <= 7 (JONSWAP peak enhancement factor", "IrregularWaves.gamma"),
+    case("a gamma for Pierson-Moskowitz", "analytic",
+         ("waves", dict(JONSWAP, spectrum="pierson-moskowitz", gamma=2.0)), "waves.gamma",
+         "the Pierson-Moskowitz spectrum has no peak enhancement; leave gamma out", "IrregularWaves.gamma"),
+    case("a sea too steep", "analytic", ("waves", dict(JONSWAP, hs=9.0)), "waves.hs",
+         "is beyond 0.1 (Lp the linear wavelength at the peak period): its largest waves would break",
+         "Scene.waves.hs"),
+    case("too few components for the run", "analytic", (("waves", dict(JONSWAP, components=20)),
+                                                        ("world.duration", 600.0)), "waves.components",
+         "the sea repeats itself every 45.71 s (2π/Δω), less than the run's 600 s; give at least 263 components",
+         "Scene.waves.components"),
+    case("an irregular sea across a 2-D scene", "analytic", ("waves", dict(JONSWAP, direction=30.0)),
+         "waves.direction", "30.0 deg: a 2-D scene's waves travel along +x (0) or -x (180)", "Scene.waves.direction"),
+    case("a series' field with a spectrum", "analytic", ("waves", dict(JONSWAP, min_period=1.0)), "waves.min_period",
+         "belongs to spectrum = \"series\"; leave it out with 'jonswap'", "IrregularWaves.min_period"),
+    case("a series without its file", "analytic", ("waves", {k: v for k, v in SERIES.items() if k != "file"}),
+         "waves.file",
+         "is required with spectrum = \"series\": give the record's file", "IrregularWaves.file"),
     # -- names and references
     case("a fairlead on an unknown body", "analytic", ("moorings.lines[0].fairlead", "boat.left"),
          "moorings.lines[0].fairlead", "no body named 'boat'; bodies: ['box', 'buoy']",
@@ -710,6 +768,24 @@ MOVING_XML = ('<mujoco><worldbody><body name="float"><freejoint/>\n'
 
 #: the contents of the files a scene names (written into the working folder first)
 FILE_CASES = [
+    # -- an elevation record
+    case("Hs with a series", "analytic", ("waves", dict(SERIES, hs=1.0)), "waves.hs",
+         "a series' sea is its record; leave hs out", "IrregularWaves.hs", files={"eta.txt": ETA_TXT}),
+    case("a series that does not exist", "analytic", ("waves", dict(SERIES, file="none.txt")), "waves.file",
+         "no file 'none.txt' (a relative path is read from the scene file's folder)", "Scene.waves.file"),
+    case("a series shorter than the run", "analytic", ("waves", dict(SERIES, file="short.txt")), "waves.file",
+         "the sea repeats itself every 8 s (2π/Δω), less than the run's 10 s; give a record at least as long as the "
+         "run", "Scene.waves.file", files={"short.txt": eta_rows(16)}),
+    case("a series sampled unevenly", "analytic", ("waves", dict(SERIES, file="uneven.txt")), "waves.file",
+         "the samples must be evenly spaced and increasing (steps from 0.4 to 0.6 s); resample the record to one "
+         "step", "Scene.waves.file", files={"uneven.txt": eta_rows(late=5)}),
+    case("a series without the column", "analytic", ("waves", dict(SERIES, column=2)), "waves.column",
+         "2 is beyond the last column of 'eta.txt' (2 column(s), 0 is the time); give one of 1 .. 1",
+         "Scene.waves.column", files={"eta.txt": ETA_TXT}),
+    case("a series measured at a 3-D point in 2-D", "analytic", ("waves", dict(SERIES, at=[1.0, 2.0])), "waves.at",
+         "[1.0, 2.0]: a 2-D scene gives the record's point as x [m]", "Scene.waves.at", files={"eta.txt": ETA_TXT}),
+    case("a series too steep", "analytic", ("waves", dict(SERIES, file="steep.txt")), "waves.file",
+         "Hs/Lp = 0.1028 is beyond 0.1", "Scene.waves.file", files={"steep.txt": eta_rows(a=2.0)}),
     # -- an MJCF model
     case("an MJCF file that is not XML", "mjcf", ("bodies[0].file", "notes.xml"), "bodies[0].file",
          "'notes.xml' is not XML (syntax error: line 1, column 0); give an MJCF file", "Scene.bodies[0].file",

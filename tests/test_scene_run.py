@@ -70,7 +70,7 @@ def test_scene_equals_hand_wired_coupler(tmp_path):
     from cosim.scene.build import build
     from cosim.sph_fluid import SPHFluid
     from fluid.flume import PADDLE_GROUP, flume
-    from fluid.solver import WAVES_2D, FluidConfig
+    from fluid.solver import TRAVELLING_WAVES, FluidConfig
     from fluid.wavemaker import RegularWavemaker
     from moorings import CatenaryMooring, MooringLine
 
@@ -80,7 +80,7 @@ def test_scene_equals_hand_wired_coupler(tmp_path):
     wm = RegularWavemaker("piston", 0.04, 1.0, 0.3, 1.0, g)
     fl = flume(dx, 3.0, 0.3, 0.45, layers=4, back=0.5 * wm.stroke + dx, beach=(2.0, 0.3))
     # no pressure patch reads the walls' loads: the scene does not compute them
-    cfg = FluidConfig(dim=2, dx=dx, g=g, u_max=math.sqrt(g * 0.3), wall_loads=False, **WAVES_2D)
+    cfg = FluidConfig(dim=2, dx=dx, g=g, u_max=math.sqrt(g * 0.3), wall_loads=False, **TRAVELLING_WAVES)
     fluid = SPHFluid(cfg, fl.fluid, fl.walls, z_surface=0.3, motions={PADDLE_GROUP: wm.paddle()})
     z = got.start_heights["box"]
     sites = {"box__left": (-0.1, 0.0, -0.05), "box__right": (0.1, 0.0, -0.05)}

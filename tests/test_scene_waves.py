@@ -1,5 +1,6 @@
-"""Linear waves and line breaking in scenes (issue 18): the analytic fluid's waves from
-``waves = LinearWaves(...)``, break loads and ``moorings.release_broken``, in TOML and Python."""
+"""Waves and line breaking in scenes (issue 18): the analytic fluid's waves from
+``waves = LinearWaves(...)``, ``RegularWaves`` and ``IrregularWaves``, break loads
+and ``moorings.release_broken``, in TOML and Python."""
 
 import dataclasses
 import json
@@ -8,8 +9,9 @@ import math
 import numpy as np
 import pytest
 
-from cosim.scene import Analytic, Box, Line, LinearWaves, Moorings, Probes, Scene, World
+from cosim.scene import Analytic, Box, IrregularWaves, Line, LinearWaves, Moorings, Probes, RegularWaves, Scene, World
 from cosim.scene.build import build
+from fluid import waves as fw
 
 CHAIN = dict(length=25.0, weight=50.0, EA=5e7)
 
@@ -114,3 +116,98 @@ def test_a_linear_wave_deeper_or_shallower_than_the_flume_is_refused(tmp_path):
     with pytest.raises(SceneError, match="waves.depth"):
         s.with_values(["waves.depth=12.0"])
     assert build(s, tmp_path).fluid.waves.depth == 10.0
+
+
+# ------------------------------------------------------------------------ regular and irregular kinds
+def sea_scene(waves, dim=2, duration=3.0, sample_every=0.1, gauges=(0.0, 7.5)):
+    """A thin floating box (few analytic-fluid cells) under gauges, 30 m of water."""
+    size = (2.0, 0.2) if dim == 2 else (2.0, 1.0, 0.2)
+    return Scene(name="sea", world=World(dim=dim, duration=duration, sample_every=sample_every),
+                 fluid=Analytic(rho=1025.0, linear_damping={"box": [800.0, 800.0, 1500.0, 1500.0, 1500.0, 1500.0]}),
+                 waves=waves, bodies=[Box("box", size=size, pos=(0.0,) * (dim - 1), density=500.0,
+                                          place="floating")],
+                 probes=Probes(gauges=list(gauges), loads=False, tensions=False))
+
+
+def test_regular_and_irregular_kinds_round_trip_through_toml(tmp_path):
+    (tmp_path / "eta.txt").write_text("t eta\n" + "".join(f"{0.5 * i} {0.1 * math.sin(0.7 * i)}\n"
+                                                          for i in range(64)))
+    for w in (RegularWaves(height=1.0, period=6.0, depth=30.0, theory="stokes2", phase=90.0),
+              IrregularWaves(depth=30.0, hs=1.5, tp=8.0, gamma=2.0, seed=4, components=50),
+              IrregularWaves(depth=30.0, spectrum="pierson-moskowitz", hs=1.5, tp=8.0),
+              IrregularWaves(depth=30.0, spectrum="series", file=str(tmp_path / "eta.txt"), at=(2.0,), ramp=0.0)):
+        s = sea_scene(w, duration=20.0)
+        s.to_toml(tmp_path / "s.toml")
+        assert Scene.from_toml(tmp_path / "s.toml") == s
+
+
+def test_the_scene_gives_the_analytic_fluid_its_sea(tmp_path):
+    """A kind's fields reach fluid.waves as given: the ramp in periods (of the wave, or the
+    peak), the still level, gravity; a spectrum's components cover the run's duration."""
+    b = build(sea_scene(RegularWaves(height=1.0, period=6.0, depth=30.0, theory="stokes2", phase=90.0,
+                                     direction=180.0)), tmp_path)
+    assert b.fluid.sea == fw.RegularWave(1.0, 6.0, 30.0, theory="stokes2", phase=90.0, direction=180.0,
+                                         ramp=12.0, level=0.0, g=9.81)
+    s = sea_scene(IrregularWaves(depth=30.0, hs=1.5, tp=8.0, seed=4, ramp=1.5), duration=3600.0)
+    sea = build(s, tmp_path).fluid.sea
+    assert isinstance(sea, fw.SpectralSea) and (sea.hs, sea.tp, sea.gamma, sea.seed, sea.ramp) == (1.5, 8.0, 3.3, 4,
+                                                                                                    12.0)
+    assert sea.repeat_period >= 3600.0
+
+
+def test_gauges_read_the_irregular_sea(tmp_path):
+    w = IrregularWaves(depth=30.0, hs=1.0, tp=6.0, seed=2, components=20, ramp=0.5)
+    s = sea_scene(w)
+    r = s.run(tmp_path / "out")
+    sea = fw.SpectralSea(1.0, 6.0, 30.0, seed=2, n_components=20, ramp=3.0, duration=3.0)
+    for i, x in enumerate((0.0, 7.5)):
+        np.testing.assert_allclose(r[f"gauge{i + 1}.eta"], sea.elevation(x, 0.0, r.t), rtol=0, atol=1e-12)
+
+
+def test_a_recorded_series_is_what_its_gauge_reads(tmp_path):
+    """A scene's series sea, read from its file (relative to the scene's folder), gives back
+    the record (less its mean) at the point where it was measured, at the record's times."""
+    t = 0.25 * np.arange(80)
+    eta = 0.05 + 0.2 * np.cos(2 * np.pi * t / 5.0 + 0.3) + 0.07 * np.sin(2 * np.pi * t / 2.5)
+    np.savetxt(tmp_path / "eta.csv", np.column_stack([t, 9.0 * eta, eta]), delimiter=",", header="t, x, eta")
+    text = sea_scene(IrregularWaves(depth=30.0, spectrum="series", file=str(tmp_path / "eta.csv"), column=2,
+                                    at=(7.5,), ramp=0.0), duration=10.0, sample_every=0.25).to_toml()
+    (tmp_path / "s.toml").write_text(text.replace(repr(str(tmp_path / "eta.csv")).replace("'", '"'), '"eta.csv"'))
+    assert 'file = "eta.csv"' in (tmp_path / "s.toml").read_text()
+    r = Scene.from_toml(tmp_path / "s.toml").run(tmp_path / "out")
+    n = len(r.t)
+    np.testing.assert_allclose(r["gauge2.eta"], eta[:n] - eta.mean(), rtol=0, atol=1e-12)
+
+
+@pytest.mark.parametrize("waves", [RegularWaves(height=0.04, period=1.0, depth=0.3),
+                                   IrregularWaves(depth=0.3, hs=0.04, tp=1.0)])
+def test_the_sph_fluid_refuses_an_incident_sea(waves):
+    from cosim.scene import SPH, Flume
+    from cosim.scene.fields import SceneError
+
+    with pytest.raises(SceneError, match=r"waves.kind: \w+ waves act on the analytic fluid's bodies .* the 'sph' "
+                                         r"fluid has none: make waves with a piston or flap in a flume"):
+        Scene(world=World(dim=2), fluid=SPH(dx=0.02), domain=Flume(length=3.0, depth=0.3, height=0.45),
+              waves=waves)
+
+
+def test_a_run_writes_the_incident_sea_and_its_spectrum(tmp_path):
+    """sea_components.csv holds the components and, for a spectrum, the target S(ω) beside a² / 2Δω
+    (equal: deterministic amplitudes); without gauges the sea's elevation at the origin is
+    a probe; summary.json names the sea."""
+    w = IrregularWaves(depth=30.0, hs=1.0, tp=6.0, seed=2, components=20, ramp=0.5)
+    s = dataclasses.replace(sea_scene(w, duration=1.0), probes=Probes(loads=False, tensions=False))
+    r = s.run(tmp_path / "out")
+    sea = fw.SpectralSea(1.0, 6.0, 30.0, seed=2, n_components=20, ramp=3.0, duration=1.0)
+    np.testing.assert_allclose(r["sea.eta"], sea.elevation(0.0, 0.0, r.t), rtol=0, atol=1e-12)
+    table = np.loadtxt(tmp_path / "out" / "sea_components.csv", delimiter=",", skiprows=1)
+    header = (tmp_path / "out" / "sea_components.csv").read_text().splitlines()[0].split(",")
+    assert header == ["omega [rad/s]", "amplitude [m]", "phase [rad]", "k [rad/m]", "S [m^2 s/rad]",
+                      "S_components [m^2 s/rad]"]
+    np.testing.assert_allclose(table[:, :4], np.column_stack(sea.components), rtol=1e-15)
+    np.testing.assert_allclose(table[:, 5], table[:, 4], rtol=1e-12)
+    assert (tmp_path / "out" / "sea_spectrum.png").is_file()
+    info = r.summary["sea"]
+    assert info["kind"] == "SpectralSea" and info["hs_m"] == 1.0 and info["components"] == 20
+    assert info["hs_components_m"] == pytest.approx(4 * math.sqrt(sea.moment(0)), rel=1e-12)
+    assert info["repeat_period_s"] == pytest.approx(sea.repeat_period)

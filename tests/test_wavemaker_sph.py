@@ -57,14 +57,14 @@ def test_piston_waves_have_the_height_of_linear_theory_coarse():
 @pytest.mark.slow
 def test_piston_waves_have_the_height_of_linear_theory_fine():
     """dx = 1 cm in a longer flume (reflection back after 4 s), gauges 2 and 3
-    depths out, the period ending at 3.5 s, the wave set-up (fluid.solver.WAVES_2D:
+    depths out, the period ending at 3.5 s, the wave set-up (fluid.solver.SLOSHING_2D:
     h = 2 dx, walls="adami"): within 10 % of theory. The first-harmonic heights
     (cosim.validations.waves.paddle_wave_heights, the last period): 0.966 and 0.995 H;
     with the solver's defaults (h = sqrt(2) dx) these crest-to-trough heights are 0.895
     and 0.897 H, the smoothing length's loss of the coarse test's docstring."""
-    from fluid.solver import WAVES_2D
+    from fluid.solver import SLOSHING_2D
 
-    fine = piston_wave_heights(0.01, [2 * D, 3 * D], t_end=3.5, length=3.0, **WAVES_2D)
+    fine = piston_wave_heights(0.01, [2 * D, 3 * D], t_end=3.5, length=3.0, **SLOSHING_2D)
     np.testing.assert_allclose(fine / H, 1.0, atol=0.10)
 
 

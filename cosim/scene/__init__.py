@@ -9,12 +9,13 @@ chosen from what a scene contains, :mod:`cosim.scene.runner` for what a run writ
 
 from cosim.scene.fields import SceneError
 from cosim.scene.spec import (MJCF, SPH, Analytic, ArchRib, Beach, Block, Box, Coupling, Cylinder, CylinderTank, Earthquake,
-                              ElasticPlate, Flap, Flume, GroundMotion, InclinedTank, Line, LinearWaves, Moorings, NoFluid,
-                              PaddleRecord, Patch, Piston, PolygonTank, Probes, Record, Roll, Scene, Shake, Sphere,
-                              TableMotion, Tank, World, arch_rib_monitors)
+                              ElasticPlate, Flap, Flume, GroundMotion, InclinedTank, IrregularWaves, Line, LinearWaves,
+                              Moorings, NoFluid, PaddleRecord, Patch, Piston, PolygonTank, Probes, Record, RegularWaves,
+                              Roll, Scene, Shake, Sphere, TableMotion, Tank, World, arch_rib_monitors)
 
 __all__ = ["MJCF", "SPH", "Analytic", "ArchRib", "Beach", "Block", "Box", "Coupling", "Cylinder", "CylinderTank", "Earthquake",
            "ElasticPlate",
-           "Flap", "Flume", "GroundMotion", "InclinedTank", "Line", "LinearWaves", "Moorings", "NoFluid",
-           "PaddleRecord", "Patch", "Piston", "PolygonTank", "Probes", "Record", "Roll", "Scene", "SceneError", "Shake",
+           "Flap", "Flume", "GroundMotion", "InclinedTank", "IrregularWaves", "Line", "LinearWaves", "Moorings",
+           "NoFluid", "PaddleRecord", "Patch", "Piston", "PolygonTank", "Probes", "Record", "RegularWaves", "Roll",
+           "Scene", "SceneError", "Shake",
            "Sphere", "TableMotion", "Tank", "World", "arch_rib_monitors"]

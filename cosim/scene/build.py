@@ -15,6 +15,7 @@ tank) is logged as a warning and kept in :attr:`Built.warnings`.
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 import math
 from dataclasses import dataclass, field
@@ -23,8 +24,8 @@ from pathlib import Path
 import numpy as np
 
 from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, Box, Cylinder, CylinderTank, Earthquake, ElasticPlate,
-                              Flap, Flume, GroundMotion, InclinedTank, Piston, PolygonTank, Roll, Shake, Sphere,
-                              TableMotion, Tank)
+                              Flap, Flume, GroundMotion, InclinedTank, IrregularWaves, Piston, PolygonTank, RegularWaves,
+                              Roll, Shake, Sphere, TableMotion, Tank)
 
 PADDLE, WALLS = 1, 0  # the flume's paddle group and every tank's wall group
 
@@ -148,6 +149,30 @@ def far_field_wave(scene):
     wm = RegularWavemaker(w.kind, w.height, w.period, d.depth, w.ramp, scene.world.gravity)
     H = wm.stroke * height_to_stroke(w.kind, wm.k * d.depth)  # what the paddle's stroke makes
     return wm, LinearWave(H, w.period, d.depth, 0.0, w.ramp * w.period, scene.world.gravity, source=0.0)
+
+
+def incident_sea(scene):
+    """The analytic fluid's incident sea (:mod:`fluid.waves`) for waves of kind "regular"
+    or "irregular": its still water at the scene's level, its ramp in seconds (the scene
+    gives periods: of the wave, or the peak period of a spectrum or of a record's largest
+    component), a spectrum's components enough for the run's duration, a record that must
+    last it."""
+    from fluid import waves as fw
+
+    w, g, level = scene.waves, scene.world.gravity, water_level(scene)
+    frame = dict(direction=w.direction, level=level, g=g)
+    if isinstance(w, RegularWaves):
+        return fw.RegularWave(w.height, w.period, w.depth, theory=w.theory, phase=w.phase, ramp=w.ramp * w.period,
+                              **frame)
+    assert isinstance(w, IrregularWaves)
+    if w.spectrum == "series":
+        at = (0.0, 0.0) if w.at is None else tuple(w.at)
+        sea = fw.RecordedSea.from_file(w.file, w.depth, w.column, at=at, min_period=w.min_period,
+                                       duration=scene.world.duration, **frame)
+        return dataclasses.replace(sea, ramp=w.ramp * sea.peak_period)
+    return fw.SpectralSea(w.hs, w.tp, w.depth, spectrum=w.spectrum, gamma=3.3 if w.gamma is None else w.gamma,
+                          seed=w.seed, n_components=w.components, duration=scene.world.duration,
+                          ramp=w.ramp * w.tp, **frame)
 
 
 def domain_points(scene, cfg, back: float = 0.0):
@@ -490,6 +515,8 @@ def build(scene, workdir: Path) -> Built:
             from fluid.analytic import LinearWave
 
             waves = LinearWave(w.height, w.period, w.depth, w.direction, w.ramp * w.period, scene.world.gravity)
+        elif isinstance(w, (RegularWaves, IrregularWaves)):
+            waves = incident_sea(scene)
         elif isinstance(w, (Piston, Flap)):
             out.wavemaker, waves = far_field_wave(scene)
         out.fluid = AnalyticFluid(rho=f.rho, g=scene.world.gravity, free_surface_z=level,

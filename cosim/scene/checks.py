@@ -21,8 +21,8 @@ import math
 
 from cosim.scene.fields import SceneError
 from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, Box, CylinderTank, Cylinder, Earthquake, Flap, Flume,
-                              ArchRib, ElasticPlate, GroundMotion, InclinedTank, NoFluid, PaddleRecord, Piston, PolygonTank,
-                              Roll, Sphere, TableMotion, Tank)
+                              ArchRib, ElasticPlate, GroundMotion, InclinedTank, IrregularWaves, NoFluid, PaddleRecord,
+                              Piston, PolygonTank, RegularWaves, Roll, Sphere, TableMotion, Tank)
 
 
 def body_names(scene) -> list[str]:
@@ -147,13 +147,22 @@ def _check_fluid_and_domain(s, dim):
                              f"{depth:g} m; refine dx to at most {depth / 4:.3g} m (4 layers)")
 
 
-def _check_linear_waves(s, dim):
+#: each sea input (fluid.waves' field names) as the scene's key
+_SEA_KEYS = {"height": "waves.height", "period": "waves.period", "depth": "waves.depth", "theory": "waves.theory",
+             "phase": "waves.phase", "direction": "waves.direction", "ramp": "waves.ramp", "hs": "waves.hs",
+             "tp": "waves.tp", "gamma": "waves.gamma", "seed": "waves.seed", "n_components": "waves.components",
+             "elevation": "waves.file", "times": "waves.file", "file": "waves.file", "duration": "waves.file",
+             "min_period": "waves.min_period", "at": "waves.at", "g": "world.gravity"}
+
+
+def _check_sea(s, dim):
+    """Waves of kind linear, regular or irregular: the incident sea of the analytic fluid."""
     w = s.waves
     if not isinstance(s.fluid, Analytic):
-        raise SceneError("waves.kind", f"linear waves act on the analytic fluid's bodies (fluid.model = "
+        raise SceneError("waves.kind", f"{w.kind} waves act on the analytic fluid's bodies (fluid.model = "
                          f"\"analytic\"); the {s.fluid.model!r} fluid has none: "
-                         + ("make waves with a piston or flap in a flume" if isinstance(s.fluid, SPH) else
-                            "set fluid.model = \"analytic\""))
+                         + ("make waves with a piston or flap in a flume (the SPH fluid takes no incident sea yet)"
+                            if isinstance(s.fluid, SPH) else "set fluid.model = \"analytic\""))
     if dim == 2 and w.direction not in (0.0, 180.0):
         raise SceneError("waves.direction", f"{w.direction} deg: a 2-D scene's waves travel along +x (0) or -x "
                          f"(180)")
@@ -173,22 +182,46 @@ def _check_linear_waves(s, dim):
                              f"{depth:g} m ({key}): the analytic fluid's free surface lies at the domain's water "
                              f"level, {depth:g} m above its floor, while the wave's kinematics would decay to a "
                              f"seabed {w.depth:g} m below it; give waves.depth = {depth:g} (or change {key})")
-    from fluid.analytic import LinearWave
+    if isinstance(w, IrregularWaves) and w.spectrum == "series":
+        if w.at is not None and len(w.at) != dim - 1:
+            raise SceneError("waves.at", f"{list(w.at)}: a {dim}-D scene gives the record's point as "
+                             f"{'x [m]' if dim == 2 else '(x, y) [m]'}")
+        _file(w.file, "waves.file")
+        rows = _rows_of_numbers(w.file, "waves.file", strict=False)
+        if not rows:
+            raise SceneError("waves.file", f"{w.file!r} holds no row of numbers; give rows of time [s] and "
+                             f"elevation [m]")
+        width = min(len(r) for r in rows)
+        if width <= w.column:
+            raise SceneError("waves.column", f"{w.column} is beyond the last column of {w.file!r} ({width} "
+                             f"column(s), 0 is the time); give one of 1 .. {width - 1}" if width > 1 else
+                             f"{w.file!r} has the time column only; add a column of elevations")
+    if isinstance(w, LinearWaves):
+        from fluid.analytic import LinearWave
+
+        try:
+            LinearWave(w.height, w.period, w.depth, w.direction, w.ramp * w.period, s.world.gravity)
+        except Exception as e:  # the wave's own limits (breaking)
+            raise SceneError("waves.height", str(e).removeprefix("linear wave: ")) from None
+        return
+    from cosim.scene.build import incident_sea
+    from fluid.waves import SeaError
 
     try:
-        LinearWave(w.height, w.period, w.depth, w.direction, w.ramp * w.period, s.world.gravity)
-    except Exception as e:  # the wave's own limits (breaking)
-        raise SceneError("waves.height", str(e).removeprefix("linear wave: ")) from None
+        incident_sea(s)
+    except SeaError as e:  # the sea's own limits (breaking, Stokes-2's range, the repeat period)
+        raise SceneError(_SEA_KEYS.get(e.field, "waves"), e.problem) from None
 
 
 def _check_excitations(s, dim):
-    if isinstance(s.waves, LinearWaves):
-        _check_linear_waves(s, dim)
+    if isinstance(s.waves, (LinearWaves, RegularWaves, IrregularWaves)):
+        _check_sea(s, dim)
     elif s.waves is not None:
         if isinstance(s.fluid, Analytic) and (isinstance(s.waves, PaddleRecord) or not isinstance(s.domain, Flume)):
             raise SceneError("waves.kind", f"a {s.waves.kind} wavemaker moves the SPH fluid's paddle; the analytic "
                              f"fluid takes the waves themselves: kind = \"linear\" with height, period and depth, "
-                             f"or a piston or flap in a flume (its far-field wave)")
+                             f"kind = \"regular\" or \"irregular\", or a piston or flap in a flume (its far-field "
+                             f"wave)")
         if not isinstance(s.domain, Flume):
             raise SceneError("waves", "a wavemaker needs a flume (domain.kind = \"flume\"); shake a tank with "
                              "base_motion instead")
@@ -207,6 +240,14 @@ def _check_excitations(s, dim):
                                  s.world.gravity)
             except Exception as e:  # the wavemaker's own limits (breaking)
                 raise SceneError("waves.height", str(e)) from None
+            if isinstance(s.fluid, Analytic):  # the far-field wave it makes: the incident sea's limits
+                from cosim.errors import InputError
+                from cosim.scene.build import far_field_wave
+
+                try:
+                    far_field_wave(s)
+                except InputError as e:
+                    raise SceneError("waves.height", str(e).removeprefix("linear wave: ")) from None
         if isinstance(s.waves, PaddleRecord):
             _file(s.waves.file, "waves.file")
             _check_paddle_record(s)
@@ -465,14 +506,16 @@ def _check_probes(s, dim, mj):
                              f"{mj['coupled']} (or \"all\"); name one of them, or add it to bodies[0].bodies")
         if n != "all" and n not in names:
             raise SceneError(f"probes.motion[{i}]", f"no body named {n!r}; bodies: {sorted(names)} (or \"all\")")
-    # the analytic fluid's gauges read its linear waves (given, or a flume's wavemaker's far-field wave)
-    linear = isinstance(s.fluid, Analytic) and isinstance(s.waves, (LinearWaves, Piston, Flap))
+    # the analytic fluid's gauges read its incident sea (given, or a flume's wavemaker's far-field wave)
+    linear = isinstance(s.fluid, Analytic) and isinstance(s.waves, (LinearWaves, RegularWaves, IrregularWaves,
+                                                                      Piston, Flap))
     fluid_probes = (p.gauges and not linear) or p.pressure or p.energy
     if fluid_probes and not isinstance(s.fluid, SPH):
         which = "gauges" if p.gauges and not linear else "pressure" if p.pressure else "energy"
         raise SceneError(f"probes.{which}", "wave gauges, pressure patches and the fluid's energy need the SPH "
-                         "fluid (fluid.model = \"sph\")" + ("; the analytic fluid's gauges read its linear waves "
-                                                             "(waves.kind = \"linear\")" if which == "gauges" else ""))
+                         "fluid (fluid.model = \"sph\")" + ("; the analytic fluid's gauges read its incident sea "
+                                                             "(waves.kind = \"linear\", \"regular\" or "
+                                                             "\"irregular\")" if which == "gauges" else ""))
     for i, g in enumerate(p.gauges):
         n = 1 if isinstance(g, float) else len(g)
         if n != dim - 1:

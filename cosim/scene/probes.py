@@ -26,7 +26,8 @@ that become one HDF5 series, one CSV and one plot each:
   :meth:`bodies.elastic.ElasticBody.split`) over its span (``l / 2`` at the two ends,
   ``l`` between) times the width (one group per plate, ``PLATE_pressure``);
 - ``gauges``: free-surface elevation above the still water [m] at each gauge (the SPH
-  fluid's, or the analytic fluid's linear waves);
+  fluid's, or the analytic fluid's incident sea, :mod:`fluid.waves`); ``sea``: with an
+  incident sea and no gauge, its elevation at the origin, ``sea.eta`` [m];
 - ``pressure``: each wall patch's pressure [Pa];
 - ``energy``: the SPH fluid's kinetic and potential energy [J] (2-D: per metre, J/m).
 
@@ -186,16 +187,19 @@ def groups(scene, built) -> list[Group]:
             return surface_elevation(sph, w[:, 0] if dim == 2 else w[:, :2]) - w[:, -1]
 
         out.append(Group("gauges", [f"gauge{i + 1}.eta" for i in range(len(g))], ["m"] * len(g), gauges))
-    waves = getattr(built.fluid, "waves", None) if sph is None else None  # the analytic fluid's linear waves
-    if waves is not None and p.gauges:
+    sea = getattr(built.fluid, "sea", None) if sph is None else None  # the analytic fluid's incident sea
+    if sea is not None and p.gauges:
         g = np.array([x for x in p.gauges], float).reshape(len(p.gauges), -1)
-        at = np.column_stack([g, np.zeros(len(g))]) if dim == 2 else g  # (x, y)
+        gx, gy = (g[:, 0], np.zeros(len(g))) if dim == 2 else (g[:, 0], g[:, 1])
         c = built.coupler
 
         def wave_gauges():
-            return waves.elevation(at, c.t)
+            return sea.elevation(gx, gy, c.t)
 
         out.append(Group("gauges", [f"gauge{i + 1}.eta" for i in range(len(g))], ["m"] * len(g), wave_gauges))
+    elif sea is not None:  # no gauge: the incident sea at the origin
+        c = built.coupler
+        out.append(Group("sea", ["sea.eta"], ["m"], lambda: np.atleast_1d(sea.elevation(0.0, 0.0, c.t))))
     if sph is not None and p.pressure:
         from fluid.probes import wall_patch_pressure
 

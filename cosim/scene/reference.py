@@ -14,7 +14,7 @@ SECTIONS = [
     ("The scene", [spec.Scene, spec.World, spec.Coupling]),
     ("Fluids (`[fluid]`, told apart by `model`)", list(spec.FLUIDS)),
     ("Domains (`[domain]`, by `kind`)", list(spec.DOMAINS) + [spec.Block, spec.Beach]),
-    ("Waves (`[waves]`, by `kind`): wavemakers, linear waves", list(spec.WAVES)),
+    ("Waves (`[waves]`, by `kind`): wavemakers, the incident sea", list(spec.WAVES)),
     ("Base motions (`[base_motion]`, by `kind`)", list(spec.BASE_MOTIONS) + [spec.Record]),
     ("Bodies (`[[bodies]]`, by `shape`)", list(spec.BODIES)),
     ("Moorings (`[moorings]`)", [spec.Moorings, spec.Line]),

@@ -12,6 +12,10 @@ samples (``world.sample_every``), particle snapshots (``snapshot_every``), check
   every coupling step), particle snapshots (``fluid.output``);
 - ``GROUP.csv`` per probe group (header ``t [s]`` then ``NAME [UNIT]``), ``ledger.csv``;
 - ``GROUP.png`` per probe group, ``particles_tT.png`` at each ``plot_at`` time;
+- ``sea_components.csv`` (the analytic fluid's incident sea, :mod:`fluid.waves`): its
+  linear components (ω, amplitude, phase, k) and, for an irregular sea, the spectrum they
+  stand for (the target S(ω), or a record's periodogram a² / 2Δω), plotted in
+  ``sea_spectrum.png``;
 - ``summary.json``: set-up, scheme, sizes, steps, wall and CPU time, each series' range, the
   warnings of the build (``warnings``, :attr:`cosim.scene.build.Built.warnings`);
   lines that broke (``line_breaks``) and, for catenary lines, when each went fully lifted
@@ -281,6 +285,7 @@ def run(scene, out, *, resume: bool = False, progress=None) -> Results:
             sph.settle(scene.fluid.settle)
         rec.open()
     scene.to_toml(out / "scene.toml")
+    _write_sea(out, built)
     events = [(t, what) for t, what in _event_times(scene.world) if t > t_start + 0.5 * _TICK or
               (blob is None and t == 0.0)]
     bar = Progress(t_start, scene.world.duration, enabled=progress)
@@ -361,6 +366,16 @@ def _summary(scene, built, series, units, steps, loop_s, build_s, cpu_s, wall_be
         s["warnings"] = list(built.warnings)
     if built.wavemaker is not None:
         s["wavemaker"] = {"stroke_m": built.wavemaker.stroke, "wavelength_m": built.wavemaker.wavelength}
+    sea = getattr(built.fluid, "sea", None) if built.sph is None else None
+    if sea is not None:
+        a = sea.components.amplitude
+        s["sea"] = {"kind": type(sea).__name__, "peak_period_s": sea.peak_period, "wavelength_m": sea.wavelength,
+                    "shortest_period_s": sea.shortest_period, "components": len(a)}
+        if hasattr(sea, "repeat_period"):  # an irregular sea: its Hs (given) and its components' 4 sqrt(m0)
+            s["sea"] |= {"hs_m": sea.hs, "hs_components_m": 4.0 * math.sqrt(float(np.sum(a * a)) / 2.0),
+                         "repeat_period_s": sea.repeat_period}
+        else:
+            s["sea"]["height_m"] = sea.height
     if built.mooring is not None:
         s["mooring"] = {"model": scene.moorings.model, "lines": built.line_names}
         if hasattr(built.mooring, "events"):  # lines with a break load (moorings.breaking)
@@ -385,6 +400,45 @@ def _write_tables(out: Path, rec, built):
                 f.write(repr(float(t[k])) + "," + ",".join(repr(float(x)) for x in a[k]) + "\n")
     if built.coupler.ledger.body_names:
         built.coupler.ledger.write_csv(out / "ledger.csv")
+
+
+def _write_sea(out: Path, built) -> None:
+    """The incident sea's components and, for an irregular sea, its spectrum
+    (``sea_components.csv``, ``sea_spectrum.png``)."""
+    from fluid.waves import RecordedSea, SpectralSea
+
+    sea = getattr(built.fluid, "sea", None) if built.sph is None else None
+    if sea is None:
+        return
+    w, a, phase, k = sea.components
+    cols = {"omega [rad/s]": w, "amplitude [m]": a, "phase [rad]": phase, "k [rad/m]": k}
+    if isinstance(sea, SpectralSea):
+        cols["S [m^2 s/rad]"] = sea.spectrum_at(w)
+        cols["S_components [m^2 s/rad]"] = a * a / (2.0 * sea.d_omega)
+    elif isinstance(sea, RecordedSea):
+        cols["S_components [m^2 s/rad]"] = a * a / (2.0 * (2.0 * math.pi / sea.repeat_period))
+    with open(out / "sea_components.csv", "w") as f:
+        f.write(",".join(cols) + "\n")
+        for row in zip(*cols.values()):
+            f.write(",".join(repr(float(x)) for x in row) + "\n")
+    if "S_components [m^2 s/rad]" not in cols:
+        return
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(7, 3.5), dpi=110)
+    ax.plot(w, cols["S_components [m^2 s/rad]"], ".", ms=3, label="components, a² / 2Δω")
+    if "S [m^2 s/rad]" in cols:
+        fine = np.linspace(w[0], w[-1], 1000)
+        ax.plot(fine, sea.spectrum_at(fine), "-", lw=1.2, label=f"target ({sea.spectrum})")
+    ax.set_xlabel("ω [rad/s]")
+    ax.set_ylabel("S [m² s/rad]")
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(out / "sea_spectrum.png")
+    plt.close(fig)
 
 
 def _plot_groups(out: Path, rec, scene):

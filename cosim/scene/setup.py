@@ -8,10 +8,12 @@ picks, from the scene:
 ================  ========================================  =========================================
 set-up            picked when the scene has                 FluidConfig settings (2-D / 3-D)
 ================  ========================================  =========================================
-``waves``         a wavemaker (``waves``)                   2-D: ``WAVES_2D`` (h = 2 dx, walls "adami");
-                                                            3-D: h = 2 dx, walls "adami", diffusion
-                                                            faded under the surface
-``sloshing``      a moving tank (``base_motion``)           as ``waves``
+``waves``         a wavemaker (``waves``)                   ``TRAVELLING_WAVES``: h = 2 dx, walls
+                                                            "adami", diffusion faded under the
+                                                            surface, slip walls, alpha = 0.002
+``sloshing``      a moving tank (``base_motion``)           2-D: ``SLOSHING_2D`` (h = 2 dx, walls
+                                                            "adami"); 3-D: the same and the
+                                                            diffusion faded under the surface
 ``impact``        water blocks in a tank (a dam break)      the solver's defaults
 ``still``         still water (a filled tank, no motion)    2-D: defaults; 3-D: diffusion faded under
                                                             the surface
@@ -20,10 +22,14 @@ set-up            picked when the scene has                 FluidConfig settings
 
 Why, with the measured figures (2-D unless said):
 
-- waves and sloshing: at h = sqrt(2) dx the square lattice under pressure has a spurious
+- waves that travel: the sloshing set-up keeps the wave's speed, but a wave loses its
+  height along the flume to the density diffusion at the free surface, the artificial
+  viscosity's friction on the floor and its interior viscosity (fluid.solver.TRAVELLING_WAVES;
+  docs/validation/wave-propagation_history.md has the decay per wavelength of each term);
+- sloshing (and the waves' speed): at h = sqrt(2) dx the square lattice under pressure has a spurious
   shear stiffness that makes waves 5-8 % fast; h = 2 dx is the one support near the usual
   ones at which it is stable. Plain dynamic walls put a stiff spring at the contact line.
-  With ``WAVES_2D``: first sloshing mode +0.84 % (defaults +10 %), piston waves 0.97-1.00
+  With ``SLOSHING_2D``: first sloshing mode +0.84 % (defaults +10 %), piston waves 0.97-1.00
   of linear theory's height (0.90), Westergaard wall pressure 0.016 RMS (0.17). It costs
   twice the pairs per step for a 1.4-1.5 times longer step. In 3-D the same holds: at
   h = sqrt(2) dx the first sloshing mode of the whole 3.0 x 1.0 m tank (water 1.0 m, dx
@@ -59,7 +65,7 @@ CONFIG_FIELDS = ("c0", "c0_factor", "u_max", "h_coef", "kernel", "walls", "alpha
                  "xsph_eps", "diffusion", "delta", "diffusion_at_surface", "cfl", "integrator", "mls_every",
                  "threads", "device", "precision")
 
-_WAVES_3D = {"walls": "adami", "diffusion_at_surface": False, "h_coef": 2.0}
+_SLOSHING_3D = {"walls": "adami", "diffusion_at_surface": False, "h_coef": 2.0}
 _REASONS = {
     "waves": "the scene has a wavemaker: waves keep linear theory's speed and height",
     "sloshing": "the tank moves: sloshing frequencies and wall pressures need the wave set-up",
@@ -84,10 +90,12 @@ class Setup:
 def settings(name: str, dim: int) -> dict:
     """The FluidConfig keyword arguments of the set-up ``name`` in ``dim`` dimensions (the
     table above)."""
-    from fluid.solver import WAVES_2D
+    from fluid.solver import SLOSHING_2D, TRAVELLING_WAVES
 
-    if name in ("waves", "sloshing"):
-        return dict(WAVES_2D) if dim == 2 else dict(_WAVES_3D)
+    if name == "waves":
+        return dict(TRAVELLING_WAVES)
+    if name == "sloshing":
+        return dict(SLOSHING_2D) if dim == 2 else dict(_SLOSHING_3D)
     if name == "still" and dim == 3:
         return {"diffusion_at_surface": False}
     return {}

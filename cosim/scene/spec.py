@@ -15,7 +15,8 @@ A scene is made of
   (3-D), :class:`PolygonTank` (2-D), :class:`ArchRib` (2-D, seed 003); wall layers
   follow from the kernel;
 - excitations: ``waves`` (:class:`Piston`, :class:`Flap`, :class:`PaddleRecord`: a flume's
-  wavemaker; :class:`LinearWaves`: regular waves on the analytic fluid's bodies) or
+  wavemaker; :class:`LinearWaves`, :class:`RegularWaves`, :class:`IrregularWaves`: the
+  incident sea on the analytic fluid's bodies, :mod:`fluid.waves`) or
   ``base_motion`` of a tank (:class:`Shake`, :class:`Roll`,
   :class:`TableMotion`, :class:`Earthquake`, :class:`GroundMotion`);
 - ``bodies`` (:class:`Box`, :class:`Cylinder`, :class:`Sphere`, :class:`MJCF`), placed at a
@@ -80,8 +81,8 @@ class NoFluid(Spec):
 @dataclass(frozen=True)
 class Analytic(Spec):
     """The analytic fluid (``fluid.analytic.AnalyticFluid``): hydrostatics of the
-    submerged volume under the free surface at ``level`` (moved by ``waves``, kind
-    ``"linear"``, where the scene has them), plus damping per body (6
+    submerged volume under the free surface at ``level`` (moved by ``waves`` of kind
+    ``"linear"``, ``"regular"`` or ``"irregular"``, where the scene has them), plus damping per body (6
     coefficients each, world axes: 3 translational, then 3 rotational) and added mass per
     degree of freedom (moved into the body's inertia)."""
 
@@ -405,7 +406,8 @@ class PaddleRecord(Spec):
 @dataclass(frozen=True)
 class LinearWaves(Spec):
     """Regular linear (Airy) waves acting on the bodies of the analytic fluid
-    (``fluid.analytic.LinearWave``): height ``height`` [m], period ``period`` [s], in water
+    (``fluid.analytic.LinearWave``, the linear ``fluid.waves.RegularWave``: the same wave as
+    kind = "regular"): height ``height`` [m], period ``period`` [s], in water
     ``depth`` [m] deep under ``fluid.level``, travelling along ``direction`` [deg] (from +x
     towards +y; 2-D: 0 or 180), crest at x = y = 0 at t = 0, faded in over ``ramp``
     periods. The free surface moves the buoyancy; the water's velocity and acceleration
@@ -423,7 +425,90 @@ class LinearWaves(Spec):
     ramp: float = num(2.0, "periods over which the waves fade in", lo=0)
 
 
-WAVES = (Piston, Flap, PaddleRecord, LinearWaves)
+@dataclass(frozen=True)
+class RegularWaves(Spec):
+    """Regular waves acting on the bodies of the analytic fluid (``fluid.waves.RegularWave``):
+    height ``height`` [m], period ``period`` [s], in water ``depth`` [m] deep under the still
+    level, ``theory`` "linear" (Airy; the same wave as kind = "linear") or "stokes2" (Stokes
+    second order: a sharper crest and flatter trough, refused where a secondary crest would
+    rise in the trough), travelling along ``direction`` [deg] (from +x towards +y; 2-D: 0 or
+    180), ``phase`` [deg] at x = y = 0 at t = 0 (0: a crest there), faded in over ``ramp``
+    periods. Refused beyond breaking: H/L > 0.142 tanh(kd) (Miche 1944), H/d > 0.78. The SPH
+    fluid makes its waves with a piston or flap in a flume."""
+
+    TAG = ("kind", "regular")
+    kind: str = tag("regular")
+    height: float = required(num(None, "wave height H, crest to trough", "m", lo=0, lo_open=True, optional=False))
+    period: float = required(num(None, "wave period T", "s", lo=0, lo_open=True, optional=False))
+    depth: float = required(num(None, "still-water depth over the seabed (for the dispersion relation and the decay "
+                                "of the kinematics)", "m", lo=0, lo_open=True, optional=False))
+    theory: str = choice("linear", "wave theory: linear (Airy) or stokes2 (Stokes second order)",
+                         ("linear", "stokes2"))
+    direction: float = num(0.0, "heading of propagation, from +x towards +y (2-D: 0 or 180)", "deg")
+    phase: float = num(0.0, "phase at x = y = 0 at t = 0 (0: a crest there, 90: an up-crossing)", "deg")
+    ramp: float = num(2.0, "periods over which the waves fade in", lo=0)
+
+
+SPECTRA = ("jonswap", "pierson-moskowitz", "series")
+
+
+@dataclass(frozen=True)
+class IrregularWaves(Spec):
+    """An irregular long-crested sea acting on the bodies of the analytic fluid, in water
+    ``depth`` [m] deep under the still level, travelling along ``direction`` [deg]:
+    ``spectrum`` "jonswap" or "pierson-moskowitz" (``fluid.waves.SpectralSea``: ``hs``
+    [m], ``tp`` [s], JONSWAP's ``gamma``; ``components`` waves of random phases from
+    ``seed``, enough that the sea does not repeat itself within the run), or "series"
+    (``fluid.waves.RecordedSea``: the elevation [m] measured at ``at`` in column ``column``
+    of ``file``, time [s] first, evenly sampled, made into linear waves by FFT; the record
+    must last the run). Faded in over ``ramp`` peak periods. Refused: Hs/Lp > 0.1 (Lp the
+    wavelength at the peak period). The SPH fluid makes its waves with a piston or flap in
+    a flume."""
+
+    TAG = ("kind", "irregular")
+    kind: str = tag("irregular")
+    depth: float = required(num(None, "still-water depth over the seabed (for the dispersion relation and the decay "
+                                "of the kinematics)", "m", lo=0, lo_open=True, optional=False))
+    spectrum: str = choice("jonswap", "the sea's spectrum: jonswap, pierson-moskowitz, or series (a recorded "
+                                      "elevation)", SPECTRA)
+    hs: float = num(None, "significant wave height Hs (jonswap, pierson-moskowitz)", "m", lo=0, lo_open=True)
+    tp: float = num(None, "peak period Tp (jonswap, pierson-moskowitz)", "s", lo=0, lo_open=True)
+    gamma: float = num(None, "JONSWAP peak enhancement factor (unset: 3.3)", lo=1, hi=7)
+    seed: int = whole(0, "seed of the random phases (jonswap, pierson-moskowitz)", lo=0)
+    components: int = whole(None, "number of wave components (unset: 200, or as many as the run's duration needs)",
+                            lo=2)
+    file: str = text(None, "series: the record, a table of time [s] and elevation [m]")
+    column: int = whole(1, "series: the column of the elevation (0 is the time)", lo=1)
+    at: tuple = vec(None, "series: where the record was measured, x (2-D) or (x, y) (3-D); unset: the origin", "m",
+                    sizes=(1, 2))
+    min_period: float = num(None, "series: components of shorter periods are left out (unset: none)", "s", lo=0,
+                            lo_open=True)
+    direction: float = num(0.0, "heading of propagation, from +x towards +y (2-D: 0 or 180)", "deg")
+    ramp: float = num(2.0, "peak periods over which the sea fades in", lo=0)
+
+    def validate(self):
+        if self.spectrum == "series":
+            if self.file is None:
+                raise SceneError("file", "is required with spectrum = \"series\": give the record's file (time [s], "
+                                 "elevation [m])")
+            for name in ("hs", "tp", "gamma", "components"):
+                if getattr(self, name) is not None:
+                    raise SceneError(name, f"a series' sea is its record; leave {name} out (or give spectrum = "
+                                     f"\"jonswap\")")
+            return
+        for name in ("hs", "tp"):
+            if getattr(self, name) is None:
+                raise SceneError(name, f"is required with spectrum = {self.spectrum!r}: give "
+                                 f"{'the significant wave height [m]' if name == 'hs' else 'the peak period [s]'}")
+        if self.spectrum == "pierson-moskowitz" and self.gamma is not None:
+            raise SceneError("gamma", "the Pierson-Moskowitz spectrum has no peak enhancement; leave gamma out (or "
+                             "give spectrum = \"jonswap\")")
+        for name in ("file", "at", "min_period"):
+            if getattr(self, name) is not None:
+                raise SceneError(name, f"belongs to spectrum = \"series\"; leave it out with {self.spectrum!r}")
+
+
+WAVES = (Piston, Flap, PaddleRecord, LinearWaves, RegularWaves, IrregularWaves)
 
 
 @dataclass(frozen=True)
@@ -780,7 +865,7 @@ class Scene(Spec):
     fluid: Spec = part(NoFluid(), "none, analytic or SPH", FLUIDS)
     domain: Spec = part(None, "the SPH fluid's container (the analytic fluid: a flume, for its depth and wavemaker)",
                         DOMAINS)
-    waves: Spec = part(None, "a flume's wavemaker, or linear waves on the analytic fluid", WAVES)
+    waves: Spec = part(None, "a flume's wavemaker, or regular or irregular waves on the analytic fluid", WAVES)
     base_motion: Spec = part(None, "motion of the tank and of the elastic plates clamped to it", BASE_MOTIONS)
     bodies: tuple = parts("the bodies", BODIES)
     moorings: Moorings = part(None, "mooring lines and their model", Moorings)
@@ -838,7 +923,7 @@ class Scene(Spec):
 
 __all__ = ["World", "NoFluid", "Analytic", "SPH", "Block", "Tank", "Beach", "Flume", "InclinedTank",
            "CylinderTank", "PolygonTank", "ArchRib", "arch_rib_monitors", "Piston", "Flap", "PaddleRecord",
-           "LinearWaves",
+           "LinearWaves", "RegularWaves", "IrregularWaves",
            "Shake", "Roll", "TableMotion",
            "Earthquake", "Record", "GroundMotion", "Box", "Cylinder", "Sphere", "MJCF", "ElasticPlate", "Line",
            "Moorings", "Patch",

@@ -46,7 +46,7 @@ def run_hydrostatic(dim: int, dx: float, t_end: float, depth: float = 0.2, lengt
     sqrt(2) dx the square lattice under pressure is weakly unstable to long shear waves
     (benchmarks/lattice_stiffness.py --stability), slow enough for viscosity and walls to
     hold a 20-layer tank but not a 40-layer one. The wave set-up
-    (:data:`fluid.solver.WAVES_2D`, h = 2 dx, at which the lattice is stable, with
+    (:data:`fluid.solver.SLOSHING_2D`, h = 2 dx, at which the lattice is stable, with
     walls="adami"), settled for 1 s first, stays at rest there: 1.2e-4 sqrt(g H), 0.31 %
     RMS (``run_hydrostatic(2, dx=0.005, t_end=3.0, settle_s=1.0, h_coef=2.0,
     walls="adami")``, 56 483 steps, 115 s; 20 layers: 2.6e-4, 0.56 %); at 10 layers its

@@ -13,7 +13,7 @@ from fluid.geometry import assemble, block, set_hydrostatic, tank_walls
 from fluid.motion import Harmonic, Rotation, Tabulated, Translation
 from fluid.particles import Kind
 from fluid.probes import wall_patch_pressure
-from fluid.solver import WAVES_2D, Fluid, FluidConfig
+from fluid.solver import SLOSHING_2D, Fluid, FluidConfig
 
 G = 9.81
 RHO0 = 1000.0
@@ -698,7 +698,7 @@ def run_spheric10(dx: float, t_end: float = 8.0, c0: float = 28.0, sample_dt: fl
 
 @case("sloshing-frequency", "2-D tank 1.0 m long, water 0.5 m, shaken 3 periods then free: first "
       "natural frequency from the FFT of the wall pressure within 2 % of linear theory (fluid set-up "
-      "WAVES_2D: h = 2 dx, walls='adami')", target="first peak of the wall-pressure FFT within 2 %",
+      "SLOSHING_2D: h = 2 dx, walls='adami')", target="first peak of the wall-pressure FFT within 2 %",
       quick="the stated target (within 2 % of linear theory) at dx = 0.05 m (10 rows), c0 = 10 sqrt(g h), 2 "
             "forced and 4 free periods, instead of dx = 0.025 m, 20 sqrt(g h), 3 and 6")
 def sloshing_frequency(quick: bool) -> dict:
@@ -706,7 +706,7 @@ def sloshing_frequency(quick: bool) -> dict:
     ``w1^2 = g (pi/L) tanh(pi h/L)``: f1 = 0.8462 Hz for L = 1 m, h = 0.5 m (refdata
     sloshing_frequencies_housner.csv: T1 = 1.18182 s).
 
-    Set-up (session 4): :data:`fluid.solver.WAVES_2D`, Wendland with h = 2 dx and the
+    Set-up (session 4): :data:`fluid.solver.SLOSHING_2D`, Wendland with h = 2 dx and the
     tank walls carrying the fluid's pressure (``walls="adami"``), the other settings the
     solver's defaults. Why these two:
     the plain dynamic walls make a stiff spring at the contact line (first part below),
@@ -753,8 +753,8 @@ def sloshing_frequency(quick: bool) -> dict:
     History (sessions 1-4): docs/validation/sloshing-frequency_history.md.
     """
     if quick:
-        return run_sloshing_frequency(0.05, cycles_forced=2, cycles_free=4, c0_factor=10.0, **WAVES_2D)
-    return run_sloshing_frequency(0.025, cycles_free=6, **WAVES_2D)
+        return run_sloshing_frequency(0.05, cycles_forced=2, cycles_free=4, c0_factor=10.0, **SLOSHING_2D)
+    return run_sloshing_frequency(0.025, cycles_free=6, **SLOSHING_2D)
 
 
 @case("sloshing-spheric10", "SPHERIC Test 10 (rolling tank 900 x 508 mm, water 93 mm, measured roll): "

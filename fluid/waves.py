@@ -1,0 +1,757 @@
+"""The incident sea: one description of the waves for every fluid.
+
+Each kind answers the same questions at any points and times (numpy, vectorised: ``x``,
+``y``, ``z`` [m] and ``t`` [s] broadcast together, a scalar ``t`` or an array of times):
+
+- ``elevation(x, y, t)``: η [m] above the still water;
+- ``velocity(x, y, z, t)``: the water velocity [m/s], shape ``(..., 3)``;
+- ``acceleration(x, y, z, t)``: the local time derivative ∂u/∂t [m/s^2] (not the material
+  derivative Du/Dt: the linearised Euler equation and the Froude–Krylov force use ∂u/∂t);
+- ``kinematics(x, y, z, t)``: both at once, and ``surface_and_kinematics`` with η too,
+  sharing the trigonometry (the cost: a cosine and a sine per point and component);
+- ``dynamic_pressure(x, y, z, t, rho)`` [Pa] and ``pressure(...)``, hydrostatic included;
+- ``components``: the free linear waves (ω, a, phase, k) that make the sea, for fluids that
+  need them (a potential-flow solver's excitation, a relaxation zone);
+- the wavenumber, wavelength, group velocity and periods of the sea.
+
+Kinds: :class:`RegularWave` (linear Airy, or Stokes second order), :class:`SpectralSea`
+(JONSWAP or Pierson–Moskowitz, random phases) and :class:`RecordedSea` (a measured
+elevation series made into linear components by FFT).
+
+Frame (as ``fluid.analytic.LinearWave``): z up, the still water at ``level`` [m], the flat
+seabed ``depth`` [m] below it; the waves travel along the horizontal heading ``direction``
+[deg] from +x towards +y (long-crested); ``ζ = z − level``. Kinematics are those of the
+potential inside ``−depth ≤ ζ ≤ 0``: above the still water (under a crest) they are taken
+at ζ = 0, below the seabed at ζ = −depth (constant extrapolation; no Wheeler stretching).
+A sea fades in over ``ramp`` [s] (``r = (1 − cos(π t / ramp)) / 2``); with ``source`` [m]
+the fade-in starts at the plane ``x cos β + y sin β = source`` (a wavemaker) and travels
+at the group velocity (of the peak, for an irregular sea): a point a distance ``s`` ahead
+sees ``r(t − s / c_g)``. The accelerations carry ``r'`` so that they are ∂u/∂t exactly.
+
+Every input is checked on construction; a bad one raises :class:`SeaError`
+(a ``cosim.errors.InputError``) naming the field and the limit, including the breaking
+limits (Miche 1944; McCowan 1894) and Stokes second order's range.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import NamedTuple
+
+import numpy as np
+
+from cosim.errors import InputError
+from fluid.wavemaker import wavenumber
+
+#: elements of one (points × components) block: bounds the memory of a many-component sea
+_BLOCK = 1 << 19
+
+
+class SeaError(InputError):
+    """A sea-state input out of range: ``field`` is its name (``height``, ``hs``, ...),
+    ``problem`` what is wrong and how to fix it."""
+
+    def __init__(self, owner: str, name: str, problem: str):
+        self.field, self.problem = name, problem
+        super().__init__(f"{owner}: {name}: {problem}")
+
+
+class Components(NamedTuple):
+    """The free linear waves of a sea, ``η = Σ a cos(k (s − s_ref) − ω t + phase)`` with
+    ``s = x cos β + y sin β`` [m]: angular frequencies ``omega`` [rad/s], amplitudes
+    ``amplitude`` [m], phases ``phase`` [rad], wavenumbers ``k`` [rad/m]."""
+
+    omega: np.ndarray
+    amplitude: np.ndarray
+    phase: np.ndarray
+    k: np.ndarray
+
+
+def wavenumbers(omega, depth: float, g: float = 9.81) -> np.ndarray:
+    """k [rad/m] of linear waves of angular frequencies ``omega`` [rad/s] (> 0) in water
+    ``depth`` [m] deep: the dispersion relation ω² = g k tanh(k d) (Dean & Dalrymple 1991,
+    Table 4.1), by Newton's method from Eckart's (1952) estimate, to round-off."""
+    w2 = np.asarray(omega, float) ** 2
+    k = w2 / g / np.sqrt(np.tanh(w2 * depth / g))
+    for _ in range(50):
+        th = np.tanh(k * depth)
+        step = (g * k * th - w2) / (g * th + g * k * depth * (1.0 - th * th))
+        k = k - step
+        if np.all(np.abs(step) <= 1e-15 * k):
+            break
+    return k
+
+
+def group_velocity(k, depth: float, g: float = 9.81):
+    """c_g = (ω/k) (1/2) (1 + 2kd / sinh 2kd) [m/s] (Dean & Dalrymple 1991, eq. 4.79)."""
+    k = np.asarray(k, float)
+    kd = k * depth
+    with np.errstate(over="ignore"):
+        ratio = np.where(kd < 350, 2.0 * kd / np.sinh(np.minimum(2.0 * kd, 700.0)), 0.0)
+    return 0.5 * (1.0 + ratio) * np.sqrt(g * np.tanh(kd) / k)
+
+
+def pierson_moskowitz(omega, hs: float, tp: float) -> np.ndarray:
+    """The Pierson–Moskowitz spectrum S(ω) [m² s/rad] of significant height ``hs`` [m] and
+    peak period ``tp`` [s] (DNV-RP-C205 2010, §3.5.5.1):
+    ``S = (5/16) Hs² ωp⁴ ω⁻⁵ exp(−(5/4)(ω/ωp)⁻⁴)``, ωp = 2π/Tp; ∫S dω = Hs²/16 exactly."""
+    w = np.asarray(omega, float)
+    wp = 2.0 * math.pi / tp
+    out = np.zeros_like(w)
+    pos = w > 0
+    x = wp / w[pos]
+    out[pos] = 5.0 / 16.0 * hs**2 * wp**4 / w[pos] ** 5 * np.exp(-1.25 * x**4)
+    return out
+
+
+def jonswap(omega, hs: float, tp: float, gamma: float = 3.3) -> np.ndarray:
+    """The JONSWAP spectrum S(ω) [m² s/rad] (Hasselmann et al. 1973; DNV-RP-C205 2010,
+    §3.5.5.2): ``A_γ S_PM(ω) γ^exp(−(ω − ωp)² / (2 σ² ωp²))``, σ = 0.07 for ω ≤ ωp and
+    0.09 above, with the normalising factor ``A_γ = 1 − 0.287 ln γ``. A_γ is an
+    approximation: ∫S dω differs from Hs²/16 by −0.2 % (γ = 2), +0.24 % (3.3), 0 (5),
+    −1.8 % (7), −7 % (γ = 10; hence γ ≤ 7 here)."""
+    w = np.asarray(omega, float)
+    wp = 2.0 * math.pi / tp
+    sigma = np.where(w <= wp, 0.07, 0.09)
+    peak = gamma ** np.exp(-0.5 * ((w - wp) / (sigma * wp)) ** 2)
+    return (1.0 - 0.287 * math.log(gamma)) * pierson_moskowitz(w, hs, tp) * peak
+
+
+def _number(owner, name, value, unit, hint, lo=0.0, lo_open=True) -> float:
+    """A finite float ``value`` above ``lo`` (or unbounded: ``lo=None``), else SeaError."""
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise SeaError(owner, name, f"{value!r} is not a number; give {hint} [{unit}]") from None
+    if not math.isfinite(v) or (lo is not None and (v < lo or (lo_open and v == lo))):
+        bound = "" if lo is None else f" {'>' if lo_open else '>='} {lo:g}"
+        raise SeaError(owner, name, f"{value!r} {unit}; give a finite number{bound} [{unit}] ({hint})")
+    return v
+
+
+class Sea:
+    """The common part of every kind: the frame, the fade-in, and the linear superposition
+    of :attr:`components` (subclasses set ``_comp`` and may add higher-order terms)."""
+
+    owner = "sea"
+    depth: float
+    direction: float
+    ramp: float
+    source: float | None
+    level: float
+    g: float
+    _comp: Components
+    _s_ref: float = 0.0  # the position along the heading of the components' phase reference
+    _c_front: float = 1.0  # the speed of the fade-in's front from ``source`` [m/s]
+
+    # -- checks shared by the kinds ----------------------------------------------------
+    def _check_frame(self) -> None:
+        own = self.owner
+        set_ = lambda name, v: object.__setattr__(self, name, v)  # noqa: E731 - frozen dataclasses
+        set_("depth", _number(own, "depth", self.depth, "m", "the still-water depth over the seabed"))
+        set_("g", _number(own, "g", self.g, "m/s^2", "gravity; waves need it"))
+        set_("direction", _number(own, "direction", self.direction, "deg", "the heading, from +x towards +y",
+                                  lo=None))
+        set_("ramp", _number(own, "ramp", self.ramp, "s", "the fade-in time; 0 for none", lo=0.0, lo_open=False))
+        set_("level", _number(own, "level", self.level, "m", "the height of the still water", lo=None))
+        if self.source is not None:
+            set_("source", _number(own, "source", self.source, "m", "where the waves are made, along the heading",
+                                   lo=None))
+
+    # -- what every kind offers --------------------------------------------------------
+    @property
+    def components(self) -> Components:
+        """The free linear waves of the sea (copies)."""
+        return Components(*(np.array(c) for c in self._comp))
+
+    @property
+    def heading(self) -> np.ndarray:
+        """Unit vector of propagation, (cos β, sin β, 0)."""
+        b = math.radians(self.direction)
+        return np.array([math.cos(b), math.sin(b), 0.0])
+
+    @property
+    def shortest_period(self) -> float:
+        """The period [s] of the highest frequency below which 99.9 % of the sea's variance
+        lies: a time step that resolves it resolves the sea."""
+        w, a = self._comp.omega, self._comp.amplitude
+        order = np.argsort(w)
+        share = np.cumsum(a[order] ** 2) / np.sum(a * a)
+        return float(2.0 * math.pi / w[order][min(np.searchsorted(share, 0.999), len(w) - 1)])
+
+    def elevation(self, x, y, t) -> np.ndarray:
+        """η [m] above the still water at horizontal positions ``x``, ``y`` [m], time ``t`` [s]."""
+        return self._evaluate(x, y, None, t, ("eta",))["eta"]
+
+    def velocity(self, x, y, z, t) -> np.ndarray:
+        """Water velocity [m/s], ``(..., 3)``, at points ``x``, ``y``, ``z`` [m], time ``t`` [s]."""
+        return self.kinematics(x, y, z, t)[0]
+
+    def acceleration(self, x, y, z, t) -> np.ndarray:
+        """The local time derivative ∂u/∂t [m/s^2], ``(..., 3)`` (not Du/Dt)."""
+        return self.kinematics(x, y, z, t)[1]
+
+    def kinematics(self, x, y, z, t) -> tuple[np.ndarray, np.ndarray]:
+        """(velocity [m/s], ∂u/∂t [m/s^2]), each ``(..., 3)``, world frame, z up."""
+        return self._vectors(self._evaluate(x, y, z, t, ("u", "a")))
+
+    def surface_and_kinematics(self, x, y, z, t) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(η [m] over each point, velocity [m/s], ∂u/∂t [m/s^2]) in one pass: each of the
+        sea's components costs a cosine and a sine per point, shared by the three."""
+        o = self._evaluate(x, y, z, t, ("eta", "u", "a"))
+        return (o["eta"], *self._vectors(o))
+
+    def _vectors(self, o):
+        e = self.heading
+        u = np.stack([o["uh"] * e[0], o["uh"] * e[1], o["w"]], axis=-1)
+        a = np.stack([o["ah"] * e[0], o["ah"] * e[1], o["aw"]], axis=-1)
+        return u, a
+
+    def dynamic_pressure(self, x, y, z, t, rho: float) -> np.ndarray:
+        """The wave's pressure [Pa] in water of density ``rho`` [kg/m^3]: the total pressure
+        less the hydrostatic ρ g (level − z)."""
+        return rho * self._evaluate(x, y, z, t, ("p",))["p"]
+
+    def pressure(self, x, y, z, t, rho: float) -> np.ndarray:
+        """Total pressure [Pa] above the atmosphere: ρ g (level − z) + the dynamic pressure
+        (above the still water, the dynamic part is that at the still water: 0 at a linear
+        wave's crest)."""
+        zz = np.asarray(z, float)
+        return rho * self.g * (self.level - zz) + self.dynamic_pressure(x, y, z, t, rho)
+
+    # -- the machinery ---------------------------------------------------------------------
+    def _fade(self, s, t):
+        """The fade-in r and its rate r' [1/s] at positions ``s`` along the heading."""
+        if self.source is None:
+            tau = t
+            if self.ramp <= 0:
+                return np.ones_like(t), np.zeros_like(t)
+        else:
+            tau = t - np.maximum(s - self.source, 0.0) / self._c_front
+            if self.ramp <= 0:
+                return (tau >= 0).astype(float), np.zeros_like(tau)
+        q = np.clip(tau / self.ramp, 0.0, 1.0)
+        inside = (q > 0) & (q < 1)
+        return 0.5 * (1.0 - np.cos(math.pi * q)), np.where(inside, 0.5 * math.pi / self.ramp * np.sin(math.pi * q),
+                                                           0.0)
+
+    def _evaluate(self, x, y, z, t, want) -> dict:
+        """The quantities in ``want`` ("eta", "u" (uh, w), "a" (ah, aw), "p" (p/ρ)) in the
+        broadcast shape of the inputs."""
+        args = [x, y, t] if z is None else [x, y, z, t]
+        arrays = np.broadcast_arrays(*(np.asarray(v, float) for v in args))
+        shape = arrays[0].shape
+        flat = [a.ravel() for a in arrays]
+        xs, ys, ts = flat[0], flat[1], flat[-1]
+        e = self.heading
+        s = xs * e[0] + ys * e[1]
+        zeta = None if z is None else np.clip(flat[2] - self.level, -self.depth, 0.0)
+        r, dr = self._fade(s, ts)
+        out = self._superpose(s, zeta, ts, r, dr, want)
+        self._add_higher_order(out, s, zeta, ts, r, dr, want)
+        return {name: v.reshape(shape) for name, v in out.items()}
+
+    def _superpose(self, s, zeta, t, r, dr, want) -> dict:
+        w, a, ph, k = self._comp
+        d, n = self.depth, len(s)
+        names = {"eta": ["eta"], "u": ["uh", "w"], "a": ["ah", "aw"], "p": ["p"]}
+        out = {name: np.empty(n) for key in want for name in names[key]}
+        # cosh k(ζ+d)/sinh kd and sinh k(ζ+d)/sinh kd without overflow in deep water: with
+        # e1 = exp(kζ), e2 = exp(−k(ζ + 2d)) (both <= 1), they are (e1 ± e2) / (1 − exp(−2kd))
+        den = -np.expm1(-2.0 * k * d)
+        aw, aw2 = a * w, a * w * w
+        ap = self.g * a / (1.0 + np.exp(-2.0 * k * d))  # g a cosh k(ζ+d)/cosh kd = g a (e1 + e2)/(1 + e^-2kd)
+        rows = max(1, _BLOCK // len(w))
+        for lo in range(0, n, rows):
+            sl = slice(lo, lo + rows)
+            th = np.multiply.outer(s[sl] - self._s_ref, k) - np.multiply.outer(t[sl], w) + ph
+            c = np.cos(th)
+            if "eta" in out:
+                out["eta"][sl] = c @ a
+            if zeta is None:
+                continue
+            kz = np.multiply.outer(zeta[sl], k)
+            e1, e2 = np.exp(kz), np.exp(-kz - 2.0 * k * d)
+            if "p" in out:
+                out["p"][sl] = ((e1 + e2) * c) @ ap
+            if "uh" in out or "ah" in out:
+                sn = np.sin(th)
+                ch, sh = (e1 + e2) / den, (e1 - e2) / den
+                uh, wz = (ch * c) @ aw, (sh * sn) @ aw
+                if "uh" in out:
+                    out["uh"][sl], out["w"][sl] = uh, wz
+                if "ah" in out:
+                    out["ah"][sl] = r[sl] * ((ch * sn) @ aw2) + dr[sl] * uh
+                    out["aw"][sl] = -r[sl] * ((sh * c) @ aw2) + dr[sl] * wz
+        for name in ("eta", "uh", "w", "p"):
+            if name in out:
+                out[name] *= r
+        return out
+
+    def _add_higher_order(self, out, s, zeta, t, r, dr, want) -> None:
+        """Terms beyond linear superposition (none for a linear sea)."""
+
+
+# ------------------------------------------------------------------------ regular waves
+@dataclass(frozen=True)
+class RegularWave(Sea):
+    """A regular wave of height ``height`` [m] and period ``period`` [s] in water ``depth``
+    [m] deep, ``theory`` "linear" (Airy) or "stokes2" (Stokes second order); ``phase``
+    [deg]: η at the origin at t = 0 is a cos(phase) (0: a crest there). ``g`` [m/s^2].
+
+    With a = H/2, ω = 2π/T, k from ω² = g k tanh kd, θ = k (x cos β + y sin β) − ω t +
+    phase, linear theory (Dean & Dalrymple 1991, Table 4.1)::
+
+        η = a cos θ,  u_h = a ω cosh k(ζ+d)/sinh kd cos θ,  w = a ω sinh k(ζ+d)/sinh kd sin θ
+        p_d = ρ g a cosh k(ζ+d)/cosh kd cos θ
+
+    (u_h along the heading; ∂u/∂t their time derivatives, r' included during the fade-in).
+
+    Stokes second order (Sorensen 2006, Eqs. 3.7–3.10; the profile of §3.2) adds, with
+    a₂ = (k a²/4) cosh kd (2 + cosh 2kd)/sinh³ kd (→ k a²/2 in deep water)::
+
+        η₂ = a₂ cos 2θ,  u₂ = (3/4) a² ω k cosh 2k(ζ+d)/sinh⁴ kd cos 2θ,
+        w₂ = (3/4) a² ω k sinh 2k(ζ+d)/sinh⁴ kd sin 2θ
+
+    and the pressure from Bernoulli's equation with that potential (derived here; the free-
+    surface conditions hold with it to O(a³), tests/test_waves.py), the constant chosen so
+    that the mean pressure at the seabed is hydrostatic::
+
+        p₂ = ρ a² ω² [((3/4) cosh 2k(ζ+d)/sinh⁴ kd − 1/(4 sinh² kd)) cos 2θ
+                       − (1/2) sinh² k(ζ+d)/sinh² kd]
+
+    The second-order terms fade in with r² (they are those of the amplitude r a). The
+    dispersion relation is linear theory's at this order; the mean Eulerian current is 0
+    (Stokes' first definition of the celerity). Limits: H/λ ≤ 1/7 (Michell 1893) and
+    ≤ 0.142 tanh kd (Miche 1944), H/d ≤ 0.78 (McCowan 1894); Stokes-2 also a₂ ≤ a/4
+    (beyond, a secondary crest rises in the trough; Sorensen 2006, Eq. 3.6)."""
+
+    height: float
+    period: float
+    depth: float
+    theory: str = "linear"
+    direction: float = 0.0
+    phase: float = 0.0
+    ramp: float = 0.0
+    source: float | None = None
+    level: float = 0.0
+    g: float = 9.81
+    k: float = field(default=math.nan, init=False, compare=False)  #: wavenumber [rad/m]
+
+    owner = "regular wave"
+
+    def __post_init__(self):
+        own = self.owner
+        H = _number(own, "height", self.height, "m", "the wave height, crest to trough")
+        T = _number(own, "period", self.period, "s", "the wave period")
+        ph = _number(own, "phase", self.phase, "deg", "the phase at the origin at t = 0", lo=None)
+        for name, v in (("height", H), ("period", T), ("phase", ph)):
+            object.__setattr__(self, name, v)
+        self._check_frame()
+        if self.theory not in ("linear", "stokes2"):
+            raise SeaError(own, "theory", f"{self.theory!r} is not a theory here; give 'linear' or 'stokes2'")
+        k = wavenumber(T, self.depth, self.g)
+        object.__setattr__(self, "k", k)
+        d, kd = self.depth, k * self.depth
+        steep = H * k / (2.0 * math.pi)
+        miche = 0.142 * math.tanh(kd)
+        if steep > 1.0 / 7.0:
+            raise SeaError(own, "height", f"H/λ = {steep:.3f} is beyond the breaking limit 1/7 (Michell 1893); "
+                           f"lower H or lengthen T")
+        if H > 0.78 * d:
+            raise SeaError(own, "height", f"H/d = {H / d:.3f} is beyond the depth-limited breaking limit 0.78 "
+                           f"(McCowan 1894); lower H or give a deeper depth")
+        if steep > miche:
+            raise SeaError(own, "height", f"H/λ = {steep:.4f} is beyond the breaking limit 0.142 tanh(kd) = "
+                           f"{miche:.4f} at kd = {kd:.3g} (Miche 1944); lower H or lengthen T")
+        a = 0.5 * H
+        object.__setattr__(self, "_comp", Components(np.array([self.omega]), np.array([a]),
+                                                     np.array([math.radians(ph)]), np.array([k])))
+        object.__setattr__(self, "_c_front", self.group_velocity)
+        if self.theory == "stokes2" and self.second_harmonic > 0.25 * a:
+            lam = 2.0 * math.pi / k
+            limit = 0.25 * a / self.second_harmonic * steep  # a₂ ∝ H²: the steepness where a₂ = a/4
+            raise SeaError(own, "height", f"the second harmonic's amplitude {self.second_harmonic:.4g} m is above "
+                           f"a quarter of the first's ({0.25 * a:.4g} m): a secondary crest rises in the trough, "
+                           f"outside Stokes second order's range (Sorensen 2006, Eq. 3.6: H/λ <= {limit:.4f} at "
+                           f"d/λ = {d / lam:.3g}; here H/λ = {steep:.4f}, Ursell number H λ²/d³ = "
+                           f"{self.ursell:.3g}); lower H, or use theory = 'linear' (a cnoidal theory would fit "
+                           f"this shallow a wave)")
+
+    @property
+    def omega(self) -> float:
+        """Angular frequency ω = 2π/T [rad/s]."""
+        return 2.0 * math.pi / self.period
+
+    @property
+    def amplitude(self) -> float:
+        """First-order amplitude a = H/2 [m]."""
+        return 0.5 * self.height
+
+    @property
+    def wavenumber(self) -> float:
+        """k [rad/m]."""
+        return self.k
+
+    @property
+    def wavelength(self) -> float:
+        """λ = 2π/k [m]."""
+        return 2.0 * math.pi / self.k
+
+    @property
+    def peak_period(self) -> float:
+        """T [s] (the one period of a regular wave)."""
+        return self.period
+
+    @property
+    def phase_velocity(self) -> float:
+        """c = ω/k [m/s]."""
+        return self.omega / self.k
+
+    @property
+    def group_velocity(self) -> float:
+        """c_g [m/s] (Dean & Dalrymple 1991, eq. 4.79)."""
+        return float(group_velocity(self.k, self.depth, self.g))
+
+    @property
+    def ursell(self) -> float:
+        """Ursell number H λ² / d³."""
+        return self.height * self.wavelength**2 / self.depth**3
+
+    @property
+    def second_harmonic(self) -> float:
+        """a₂ [m], the amplitude of η's second harmonic (0 for linear theory)."""
+        if self.theory != "stokes2":
+            return 0.0
+        kd = self.k * self.depth
+        q = math.exp(-2.0 * kd)
+        inv_sh2 = 4.0 * q / (1.0 - q) ** 2  # 1 / sinh² kd
+        coth = (1.0 + q) / (1.0 - q)
+        # cosh kd (2 + cosh 2kd) / sinh³ kd = coth kd (2 + 3 / sinh² kd)
+        return 0.25 * self.k * self.amplitude**2 * coth * (2.0 + 3.0 * inv_sh2)
+
+    @property
+    def shortest_period(self) -> float:
+        return self.period / (2.0 if self.theory == "stokes2" else 1.0)
+
+    def _add_higher_order(self, out, s, zeta, t, r, dr, want) -> None:
+        if self.theory != "stokes2":
+            return
+        k, w, a, d = self.k, self.omega, self.amplitude, self.depth
+        th2 = 2.0 * (k * s - w * t + math.radians(self.phase))
+        c2, s2 = np.cos(th2), np.sin(th2)
+        r2, dr2 = r * r, 2.0 * r * dr
+        if "eta" in out:
+            out["eta"] += r2 * self.second_harmonic * c2
+        if zeta is None:
+            return
+        q = math.exp(-2.0 * k * d)
+        # cosh 2k(ζ+d)/sinh⁴ kd and sinh 2k(ζ+d)/sinh⁴ kd as 8 (e1 ± e2)/(1 − e^-2kd)⁴ with
+        # e1 = exp(2kζ − 2kd), e2 = exp(−2kζ − 6kd), both <= 1 for −d <= ζ <= 0
+        e1, e2 = np.exp(2.0 * k * zeta - 2.0 * k * d), np.exp(-2.0 * k * zeta - 6.0 * k * d)
+        C2, S2 = 8.0 * (e1 + e2) / (1.0 - q) ** 4, 8.0 * (e1 - e2) / (1.0 - q) ** 4
+        A = 0.75 * a * a * w * k
+        if "uh" in out:
+            out["uh"] += r2 * A * C2 * c2
+            out["w"] += r2 * A * S2 * s2
+        if "ah" in out:
+            out["ah"] += r2 * A * C2 * 2.0 * w * s2 + dr2 * A * C2 * c2
+            out["aw"] += -r2 * A * S2 * 2.0 * w * c2 + dr2 * A * S2 * s2
+        if "p" in out:
+            inv_sh2 = 4.0 * q / (1.0 - q) ** 2
+            # sinh k(ζ+d)/sinh kd, as in the linear terms
+            sh = (np.exp(k * zeta) - np.exp(-k * (zeta + 2.0 * d))) / (-math.expm1(-2.0 * k * d))
+            out["p"] += r2 * a * a * w * w * ((0.75 * C2 - 0.25 * inv_sh2) * c2 - 0.5 * sh * sh)
+
+
+# ------------------------------------------------------------------------ irregular seas
+def _check_duration(owner, name, repeat: float, duration, how: str) -> None:
+    if duration is not None and repeat < duration:
+        raise SeaError(owner, name, f"the sea repeats itself every {repeat:.4g} s (2π/Δω), less than the "
+                       f"run's {duration:.4g} s; {how}")
+
+
+def _check_steepness(owner, name, hs, k_peak) -> None:
+    steep = hs * k_peak / (2.0 * math.pi)
+    if steep > 0.1:
+        raise SeaError(owner, name, f"Hs/Lp = {steep:.4f} is beyond 0.1 (Lp the linear wavelength at the peak "
+                       f"period): its largest waves would break (severe seas have 1/16 to 1/20); lower Hs or "
+                       f"lengthen Tp")
+
+
+@dataclass(frozen=True)
+class SpectralSea(Sea):
+    """A long-crested irregular sea of significant height ``hs`` [m] and peak period ``tp``
+    [s] with the ``spectrum`` "jonswap" (peak enhancement ``gamma``, 1 to 7; see
+    :func:`jonswap`) or "pierson-moskowitz" (:func:`pierson_moskowitz`), in water ``depth``
+    [m] deep: the linear superposition of ``n_components`` waves of frequencies ω_j = j Δω
+    (integers j) spread evenly over ``band`` [rad/s] (default 0.5 ωp to 4 ωp, which holds
+    all but 0.2–0.5 % of the variance), amplitudes a_j = sqrt(2 S(ω_j) Δω) (deterministic)
+    and phases drawn uniformly in [0, 2π) from ``numpy.random.default_rng(seed)``; k_j from
+    the dispersion relation. The record repeats itself every 2π/Δω: give the run's
+    ``duration`` [s] and the default number of components (200, or more) makes that at
+    least the duration, or a given number that is too small is refused. Refused: Hs/Lp >
+    0.1 (Lp the wavelength at Tp)."""
+
+    hs: float
+    tp: float
+    depth: float
+    spectrum: str = "jonswap"
+    gamma: float = 3.3
+    seed: int = 0
+    n_components: int | None = None
+    band: tuple | None = None
+    duration: float | None = None
+    direction: float = 0.0
+    ramp: float = 0.0
+    source: float | None = None
+    level: float = 0.0
+    g: float = 9.81
+
+    owner = "irregular sea"
+    SPECTRA = ("jonswap", "pierson-moskowitz")
+
+    def __post_init__(self):
+        own = self.owner
+        hs = _number(own, "hs", self.hs, "m", "the significant wave height")
+        tp = _number(own, "tp", self.tp, "s", "the peak period")
+        object.__setattr__(self, "hs", hs)
+        object.__setattr__(self, "tp", tp)
+        self._check_frame()
+        if self.spectrum not in self.SPECTRA:
+            raise SeaError(own, "spectrum", f"{self.spectrum!r} is not a spectrum here; give one of "
+                           f"{', '.join(map(repr, self.SPECTRA))}")
+        gamma = 1.0 if self.spectrum == "pierson-moskowitz" else _number(own, "gamma", self.gamma, "-",
+                                                                          "the peak enhancement factor", lo=1.0,
+                                                                          lo_open=False)
+        if gamma > 7.0:
+            raise SeaError(own, "gamma", f"{gamma:g} is above 7: the JONSWAP normalisation A_γ = 1 − 0.287 ln γ "
+                           f"misses the variance by more than 2 % there; give 1 <= gamma <= 7 (3.3: the mean "
+                           f"JONSWAP sea)")
+        object.__setattr__(self, "gamma", gamma)
+        if isinstance(self.seed, bool) or not isinstance(self.seed, (int, np.integer)) or self.seed < 0:
+            raise SeaError(own, "seed", f"{self.seed!r}; give a whole number >= 0 (the random phases' seed)")
+        if self.duration is not None:
+            object.__setattr__(self, "duration", _number(own, "duration", self.duration, "s", "the run's length"))
+        wp = self.omega_peak
+        lo, hi = (0.5 * wp, 4.0 * wp) if self.band is None else self.band
+        lo = _number(own, "band", lo, "rad/s", "the lowest frequency of the components", lo=0.0)
+        hi = _number(own, "band", hi, "rad/s", "the highest frequency of the components", lo=lo)
+        if not lo < wp < hi:
+            raise SeaError(own, "band", f"({lo:.4g}, {hi:.4g}) rad/s leaves out the peak ωp = {wp:.4g} rad/s; give "
+                           f"a band around it")
+        n = self.n_components
+        if n is None:
+            need = 0 if self.duration is None else math.ceil(self.duration * (hi - lo) / (2.0 * math.pi))
+            n = max(200, need)
+        elif isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
+            raise SeaError(own, "n_components", f"{n!r}; give a whole number >= 2 of wave components")
+        dw = (hi - lo) / n
+        if self.duration is not None:
+            _check_duration(own, "n_components", 2.0 * math.pi / dw, self.duration,
+                            f"give at least {math.ceil(self.duration * (hi - lo) / (2.0 * math.pi))} components (or "
+                            f"leave them unset)")
+        j0 = max(1, round(lo / dw + 0.5))  # ω_j = j Δω: the record is periodic in 2π/Δω
+        w = dw * np.arange(j0, j0 + n)
+        a = np.sqrt(2.0 * self.spectrum_at(w) * dw)
+        phase = np.random.default_rng(int(self.seed)).uniform(0.0, 2.0 * math.pi, n)
+        k = wavenumbers(w, self.depth, self.g)
+        object.__setattr__(self, "n_components", int(n))
+        object.__setattr__(self, "_dw", dw)
+        object.__setattr__(self, "_comp", Components(w, a, phase, k))
+        kp = float(wavenumbers(wp, self.depth, self.g))
+        object.__setattr__(self, "_kp", kp)
+        object.__setattr__(self, "_c_front", float(group_velocity(kp, self.depth, self.g)))
+        _check_steepness(own, "hs", hs, kp)
+
+    def spectrum_at(self, omega) -> np.ndarray:
+        """The target spectrum S(ω) [m² s/rad] at ``omega`` [rad/s]."""
+        if self.spectrum == "pierson-moskowitz":
+            return pierson_moskowitz(omega, self.hs, self.tp)
+        return jonswap(omega, self.hs, self.tp, self.gamma)
+
+    @property
+    def omega_peak(self) -> float:
+        """ωp = 2π/Tp [rad/s]."""
+        return 2.0 * math.pi / self.tp
+
+    @property
+    def peak_period(self) -> float:
+        return self.tp
+
+    @property
+    def d_omega(self) -> float:
+        """Δω [rad/s], the spacing of the components."""
+        return self._dw
+
+    @property
+    def repeat_period(self) -> float:
+        """2π/Δω [s]: the record repeats itself after this."""
+        return 2.0 * math.pi / self._dw
+
+    @property
+    def wavenumber(self) -> float:
+        """k at the peak period [rad/m]."""
+        return self._kp
+
+    @property
+    def wavelength(self) -> float:
+        """Lp [m], the linear wavelength at the peak period."""
+        return 2.0 * math.pi / self._kp
+
+    @property
+    def group_velocity(self) -> float:
+        """c_g at the peak period [m/s]."""
+        return self._c_front
+
+    def moment(self, n: int) -> float:
+        """The spectral moment m_n = Σ ω_j^n a_j²/2 of the components [m² (rad/s)^n]."""
+        w, a = self._comp.omega, self._comp.amplitude
+        return float(np.sum(w**n * a * a) / 2.0)
+
+    @property
+    def zero_crossing_period(self) -> float:
+        """Tz = 2π sqrt(m0/m2) [s] of the components."""
+        return 2.0 * math.pi * math.sqrt(self.moment(0) / self.moment(2))
+
+
+@dataclass(frozen=True)
+class RecordedSea(Sea):
+    """The sea whose elevation ``eta`` [m] was recorded at times ``times`` [s] (evenly
+    spaced) at the horizontal point ``at`` = (x, y) [m]: the record, less its mean (a
+    gauge's datum, not a wave), is split by FFT into linear components of frequencies
+    ω_j = 2π j / (N Δt), j = 1 .. N/2, each a free wave with k from the dispersion relation
+    travelling along ``direction``; at ``at`` the sum reproduces the samples to round-off
+    (and is periodic in the record's length N Δt, which must cover the run's ``duration``
+    [s] when given). ``min_period`` [s]: components of shorter periods are left out (default
+    none: up to the Nyquist frequency, 2 Δt); so are those below 1e-13 of the largest (the
+    transform's round-off). The fade-in's front (``source``) travels at the
+    group velocity of the largest component. Refused: a record of fewer than 4 samples,
+    uneven or not increasing times, non-finite values, no wave at all, Hs/Lp > 0.1."""
+
+    times: tuple
+    eta: tuple
+    depth: float
+    at: tuple = (0.0, 0.0)
+    min_period: float | None = None
+    duration: float | None = None
+    direction: float = 0.0
+    ramp: float = 0.0
+    source: float | None = None
+    level: float = 0.0
+    g: float = 9.81
+
+    owner = "recorded sea"
+
+    def __post_init__(self):
+        own = self.owner
+        t = np.asarray(self.times, float)
+        eta = np.asarray(self.eta, float)
+        if t.ndim != 1 or t.shape != eta.shape or t.size < 4:
+            raise SeaError(own, "elevation", f"need matching 1-D times and elevations of at least 4 samples, got "
+                           f"shapes {t.shape} and {eta.shape}")
+        if not (np.isfinite(t).all() and np.isfinite(eta).all()):
+            raise SeaError(own, "elevation", "times and elevations must be finite numbers")
+        dt = np.diff(t)
+        step = (t[-1] - t[0]) / (t.size - 1)
+        if not (dt > 0).all() or np.abs(dt - step).max() > 1e-6 * step:
+            raise SeaError(own, "times", f"the samples must be evenly spaced and increasing (steps from "
+                           f"{dt.min():.6g} to {dt.max():.6g} s); resample the record to one step")
+        self._check_frame()
+        try:
+            at = tuple(float(v) for v in self.at)
+        except (TypeError, ValueError):
+            at = ()
+        if len(at) not in (1, 2) or not all(map(math.isfinite, at)):
+            raise SeaError(own, "at", f"{self.at!r}; give the record's point as (x, y) [m]")
+        at = at + (0.0,) * (2 - len(at))
+        object.__setattr__(self, "at", at)
+        if self.duration is not None:
+            object.__setattr__(self, "duration", _number(own, "duration", self.duration, "s", "the run's length"))
+        if self.min_period is not None:
+            object.__setattr__(self, "min_period", _number(own, "min_period", self.min_period, "s",
+                                                           "the shortest period kept"))
+        n = t.size
+        length = n * step
+        _check_duration(own, "duration", length, self.duration, "give a record at least as long as the run")
+        mean = float(eta.mean())
+        X = np.fft.rfft(eta - mean)
+        j = np.arange(1, n // 2 + 1)
+        w = 2.0 * math.pi * j / length
+        amp = 2.0 * np.abs(X[1:]) / n
+        if n % 2 == 0:
+            amp[-1] *= 0.5  # the Nyquist term appears once
+        phase = w * t[0] - np.angle(X[1:])  # η(t_m) = Σ a cos(ω (t_m − t_0) + arg X) = Σ a cos(φ − ω t_m)
+        if self.min_period is not None:
+            keep = w <= 2.0 * math.pi / self.min_period
+            if not keep.any():
+                raise SeaError(own, "min_period", f"{self.min_period:g} s leaves no component (the longest period "
+                               f"in the record is {length:.4g} s); give a shorter one")
+            w, amp, phase = w[keep], amp[keep], phase[keep]
+        if not amp.max() > 0:
+            raise SeaError(own, "elevation", "the record holds no wave (it is constant); give a measured elevation")
+        keep = amp > 1e-13 * amp.max()  # the others are the transform's round-off
+        w, amp, phase = w[keep], amp[keep], phase[keep]
+        k = wavenumbers(w, self.depth, self.g)
+        e = self.heading
+        object.__setattr__(self, "_s_ref", at[0] * e[0] + at[1] * e[1])
+        object.__setattr__(self, "_comp", Components(w, amp, phase, k))
+        object.__setattr__(self, "mean", mean)
+        object.__setattr__(self, "_length", float(length))
+        peak = int(np.argmax(amp))
+        object.__setattr__(self, "_peak", peak)
+        object.__setattr__(self, "_c_front", float(group_velocity(k[peak], self.depth, self.g)))
+        _check_steepness(own, "elevation", self.hs, k[peak])
+
+    @classmethod
+    def from_file(cls, path, depth: float, column: int = 1, **kw) -> "RecordedSea":
+        """Read a whitespace- or comma-separated table: the time [s] first, the elevation [m]
+        in ``column`` (text lines before the first row of numbers are a header)."""
+        path = Path(path)
+        if not path.is_file():
+            raise SeaError(cls.owner, "file", f"no file {str(path)!r}")
+        rows = []
+        for line in path.read_text().splitlines():
+            parts = line.replace(",", " ").split()
+            try:
+                rows.append((float(parts[0]), float(parts[column])))
+            except (ValueError, IndexError):
+                if rows:
+                    raise SeaError(cls.owner, "file", f"{str(path)!r}: cannot read line {line!r} (time, elevation "
+                                   f"in column {column})") from None
+        if not rows:
+            raise SeaError(cls.owner, "file", f"{str(path)!r} holds no row of numbers")
+        a = np.array(rows)
+        return cls(tuple(a[:, 0]), tuple(a[:, 1]), depth, **kw)
+
+    @property
+    def hs(self) -> float:
+        """Significant height 4 sqrt(m0) [m] of the components."""
+        return 4.0 * math.sqrt(float(np.sum(self._comp.amplitude**2)) / 2.0)
+
+    @property
+    def peak_period(self) -> float:
+        """The period of the largest component [s]."""
+        return float(2.0 * math.pi / self._comp.omega[self._peak])
+
+    @property
+    def repeat_period(self) -> float:
+        """The record's length N Δt [s]: the sea repeats itself after it."""
+        return self._length
+
+    @property
+    def wavenumber(self) -> float:
+        """k of the largest component [rad/m]."""
+        return float(self._comp.k[self._peak])
+
+    @property
+    def wavelength(self) -> float:
+        """The wavelength of the largest component [m]."""
+        return 2.0 * math.pi / self.wavenumber
+
+    @property
+    def group_velocity(self) -> float:
+        """c_g of the largest component [m/s]."""
+        return self._c_front

@@ -1,0 +1,69 @@
+"""Waves that keep their height (cosim.validations.wave_propagation): the incident/reflected
+separation, the viscous decay's closed forms, and the quick case."""
+
+import math
+
+import numpy as np
+import pytest
+
+from cosim import validation
+from cosim.validations.wave_propagation import harmonics, separate, viscous_decay_per_wavelength
+from cosim.validations.waves import viscous_decay
+from fluid.wavemaker import wavenumber
+
+
+def test_incident_and_reflected_waves_are_separated_exactly():
+    """eta = Re(A_i e^{i(wt - kx)} + A_r e^{i(wt + kx)}) sampled over two periods at five
+    gauges over half a wavelength: the fit of the harmonics, then the separation, give back
+    both complex amplitudes to round-off."""
+    k, w = 4.0, 2.0 * math.pi
+    Ai, Ar = 0.02 * np.exp(0.3j), 0.003 * np.exp(-1.1j)
+    x = 1.0 + np.linspace(-0.25, 0.25, 5) * 2 * math.pi / k
+    t = np.linspace(0.0, 2.0, 65)[:, None]
+    eta = np.real(Ai * np.exp(1j * (w * t - k * x)) + Ar * np.exp(1j * (w * t + k * x))) + 0.001
+    eta = eta + 0.004 * np.cos(2 * w * t - 2 * k * x)  # a second harmonic does not leak in
+    a = harmonics(t[:, 0], eta, w)
+    got_i, got_r = separate(x, a, k)
+    assert abs(got_i - Ai) < 1e-14 and abs(got_r - Ar) < 1e-14
+
+
+def test_the_interior_decay_is_lambs_and_the_floor_adds_its_boundary_layer():
+    """Interior: 1 - exp(-2 nu k^2 L / c_g) (Lamb 1932 §348, cosim.validations.waves.viscous_decay
+    per metre); the floor's laminar boundary layer adds sqrt(nu omega / 2) omega^2 /
+    (2 g c_g sinh^2 kd) per metre, which falls as sqrt(nu), the interior as nu."""
+    nu, T, d = 6.4e-4, 1.0, 0.3
+    L = 2 * math.pi / wavenumber(T, d, 9.81)
+    assert viscous_decay_per_wavelength(nu, T, d, floor=False) == pytest.approx(
+        -math.expm1(-viscous_decay(nu, T, d) * L), rel=1e-12)
+    floor = [-math.log1p(-viscous_decay_per_wavelength(n, T, d, True)) + math.log1p(
+        -viscous_decay_per_wavelength(n, T, d, False)) for n in (nu, nu / 4)]
+    assert floor[0] / floor[1] == pytest.approx(2.0, rel=1e-12)
+
+
+def test_quick_waves_keep_their_height_over_three_wavelengths():
+    """cosim validate wave-propagation --quick: 10 rows over the depth, the scenes' wave
+    set-up; judged on its declared tolerances (2.5 % per wavelength, 5 % of a period,
+    reflection 5 %)."""
+    r = validation.run("wave-propagation", quick=True)
+    assert r["passed"], r["outside_tolerance"]
+    m = r["metrics"]
+    assert 0.0 < m["decay_per_wavelength_10"] < 0.025
+    assert m["k_over_linear_10"] == pytest.approx(1.0, abs=0.01)
+
+
+def test_the_linear_reference_is_the_paddles_wave_behind_its_front():
+    """linear_elevation: far behind the ramp's front, the first harmonic at every gauge is
+    the wave of linear wavemaker theory (height H, phase k x behind the paddle's); ahead of
+    the front the water is still."""
+    from cosim.validations.wave_propagation import linear_elevation
+    from fluid.wavemaker import RegularWavemaker
+
+    wm = RegularWavemaker("piston", H=0.04, T=1.0, depth=0.3, ramp=1.0)
+    x = np.array([1.0, 1.3, 2.0])
+    t = 20.0 + np.arange(64) / 32.0
+    a = harmonics(t, linear_elevation(wm, x, t), 2 * math.pi)
+    np.testing.assert_allclose(np.abs(a), 0.02, rtol=2e-3)
+    # the phase falls by k per metre along x
+    np.testing.assert_allclose(np.angle(a[1:] / a[0]), np.angle(np.exp(-1j * wm.k * (x[1:] - x[0]))), atol=2e-3)
+    ahead = linear_elevation(wm, np.array([30.0]), np.array([5.0]))
+    assert abs(ahead[0, 0]) < 1e-4
