@@ -46,6 +46,16 @@ body per element, which the coupler already moves and loads
 above the SPH step. MuJoCo's flex, measured beside it and not taken (it locks in bending
 and forces sub-steps): docs/benchmarks/elastic_beam_history.md.
 
+Moving support (a shaken or rolling tank, :class:`Support`): the clamped link sits on
+slides or a hinge whose motion is prescribed (:meth:`bodies.mujoco_bodies.MujocoBodies.drive`),
+so the chain is a base-excited cantilever: its links feel the support's acceleration
+through their joints, and MuJoCo integrates their motion relative to it as usual.
+
+Self-weight buckling (:func:`self_weight_buckling`): a standing column whose weight
+passes Greenhill's (1881) load is unstable when straight; :meth:`BeamModel.imperfection`
+bends the chain into the buckling mode (the scenes give it ``IMPERFECTION`` = L/1000 at the
+tip), so that it buckles as a real, imperfect one would instead of standing still.
+
 Limits: the chain is inextensible (the plate's first axial mode, ``sqrt(E / rho) / (4 L)``
 = 62.5 Hz at E = 1 MPa, lies between bending modes 2 and 3 and is left out). Boundary particles (:class:`ElasticBody`) blend the frames of the two
 links nearest them (hat weights on nodes ``k l``, :meth:`BeamModel.blend`), so the
@@ -89,6 +99,61 @@ def _positive(beam: str, field: str, unit: str, value, fix: str) -> float:
     return float(value)
 
 
+#: a moving support's joints carry this many times the inertia hanging from them as
+#: armature [-]: the chain's reactions change the support's acceleration by 1e-8 of
+#: themselves (:meth:`bodies.mujoco_bodies.MujocoBodies.drive`)
+SUPPORT_ARMATURE = 1e8
+
+#: the tip deflection of the first-mode imperfection given to a column beyond its
+#: self-weight buckling load, over its length [-] (:meth:`BeamModel.imperfection`)
+IMPERFECTION = 1e-3
+
+#: Greenhill (1881): the uniform weight per length ``q`` at which a column clamped at its
+#: foot and free at its top buckles, ``(q L^3 / (E I))_cr = (9/4) j^2`` with ``j`` the first
+#: zero of the Bessel function ``J_{-1/3}`` (Timoshenko & Gere 1961, Theory of Elastic
+#: Stability, §2.13)
+GREENHILL = 7.837347
+
+
+@dataclass(frozen=True)
+class Support:
+    """What a clamp is fixed to when that moves (a shaken or rolling tank): joints between
+    the world and the clamped link whose motion is prescribed, not integrated
+    (:meth:`bodies.mujoco_bodies.MujocoBodies.drive` drives them). ``slides``: the world
+    axes (unit vectors) the support translates along, one slide each; ``hinge``: ``(point
+    [m], axis)`` of the world axis it turns about, or None. A support does either: the
+    rigid motions of a scene's tank are translations or a turn about one axis.
+
+    Each joint carries :data:`SUPPORT_ARMATURE` times the inertia it holds up (the chain's
+    mass on a slide, its moment of inertia about the axis, bounded above, on the hinge), so
+    the force that gives the support its prescribed acceleration is that armature times the
+    acceleration and the chain's reactions leave the acceleration alone to 1e-8 of itself."""
+
+    slides: tuple = ()
+    hinge: tuple | None = None
+
+    def __post_init__(self):
+        axes = tuple(tuple(float(c) for c in a) for a in self.slides)
+        if any(len(a) != 3 or not math.isclose(math.hypot(*a), 1.0, rel_tol=1e-9) for a in axes):
+            raise InputError(f"Support: slides must be unit vectors (x, y, z), got {self.slides!r}")
+        hinge = self.hinge
+        if hinge is not None:
+            point, axis = (tuple(float(c) for c in v) for v in hinge)
+            if len(point) != 3 or len(axis) != 3 or not math.isclose(math.hypot(*axis), 1.0, rel_tol=1e-9):
+                raise InputError(f"Support: hinge must be (point (x, y, z) [m], unit axis), got {self.hinge!r}")
+            hinge = (point, axis)
+        if axes and hinge is not None:
+            raise InputError("Support: give slides or a hinge, not both")
+        if not axes and hinge is None:
+            raise InputError("Support: give the slides or the hinge of the moving support")
+        object.__setattr__(self, "slides", axes)
+        object.__setattr__(self, "hinge", hinge)
+
+    @property
+    def n_joints(self) -> int:
+        return len(self.slides) if self.slides else 1
+
+
 @dataclass(frozen=True)
 class BeamModel:
     """A cantilever as built by :func:`elastic_beam`: its parameters, its MJCF and the
@@ -115,6 +180,8 @@ class BeamModel:
     #: along -z (the chain's frame turned half a turn about x: plate-frame x is world x, plate
     #: z, the arc length from the clamp, points down)
     direction: str = "up"
+    #: the moving support the clamp is fixed to (None: welded to the world)
+    support: Support | None = None
 
     # -- derived ---------------------------------------------------------------
     @property
@@ -134,8 +201,14 @@ class BeamModel:
 
     @property
     def link_names(self) -> list[str]:
-        """The chain's bodies from the clamp up; the first is welded (no degrees of freedom)."""
+        """The chain's bodies from the clamp up; the first is clamped (welded to the world, no
+        degrees of freedom; or on the joints of its moving :attr:`support`)."""
         return [f"{self.name}_link{k}" for k in range(self.n_elements + 1)]
+
+    @property
+    def support_joints(self) -> list[str]:
+        """The joints of the moving support (:attr:`support`), in its order; none when welded."""
+        return [] if self.support is None else [f"{self.name}_support{k}" for k in range(self.support.n_joints)]
 
     @property
     def link_bounds(self) -> np.ndarray:
@@ -262,6 +335,26 @@ class BeamModel:
         w = np.clip((a + 1) - s / l, 0.0, 1.0)
         return a, a + 1, w
 
+    def imperfection(self, slope, amplitude: float) -> dict:
+        """The hinge angles [rad] that bend the chain into a shape of slope ``slope(s)`` [-]
+        (a callable of the arc length ``s`` [m] from the clamp; e.g. a buckling mode,
+        :func:`self_weight_buckling`) with its tip ``amplitude`` [m] along +x: link ``k``
+        turned by the slope at its centre, each hinge taking the difference from the link
+        below it (the welded one stays straight), the shape scaled so that the tip,
+        ``sum_k l_k sin(theta_k)`` over the links' spans from joint to joint, is
+        ``amplitude``; ``{joint name: angle}`` for :meth:`MujocoBodies.set_joints`. The shear
+        slides stay at zero. Only for a standing chain (``direction = "up"``)."""
+        if self.direction != "up":
+            raise InputError(f"elastic beam '{self.name}': an imperfection bends a standing chain; this one hangs")
+        bounds = self.link_bounds[1:]
+        theta = np.asarray(slope(bounds.mean(axis=1)), float)
+        span = np.diff(np.concatenate([bounds[:, 0], [self.length]]))  # from each hinge to the next, or the tip
+        theta *= amplitude / float(np.dot(span, theta))  # small angles first, then the sines' own
+        for _ in range(3):  # each pass cuts the error by ~theta^2 / 6
+            theta *= amplitude / float(np.dot(span, np.sin(theta)))
+        hinge = np.diff(np.concatenate([[0.0], theta]))
+        return {f"{self.name}_bend{k + 1}": float(a) for k, a in enumerate(hinge)}
+
     def blended_particles(self, dx: float, layers: int, dim: int = 3):
         """The boundary particles of :meth:`boundary_particles`, each carried by two
         links (:meth:`blend`): returns ``(plate, a, b, w, p_a, p_b)``, the undeformed
@@ -299,7 +392,7 @@ class BeamModel:
 def elastic_beam(name: str, length: float, thickness: float, *, E: float, rho: float, width: float = 1.0,
                  nu: float = 0.0, kappa: float = 5.0 / 6.0, n_elements: int = 16, base=(0.0, 0.0, 0.0),
                  shear: bool = True, beta: float = 0.0, thin_wall: bool = False,
-                 direction: str = "up") -> BeamModel:
+                 direction: str = "up", support: Support | None = None) -> BeamModel:
     """An elastic cantilever clamped at ``base`` [m] (the centre of its clamped end) and
     rising along +z (``direction="up"``, clamped at its foot) or hanging along -z
     (``direction="down"``, clamped at its top: the chain turned half a turn about x), as a
@@ -310,8 +403,9 @@ def elastic_beam(name: str, length: float, thickness: float, *, E: float, rho: f
     Poisson's ratio (for ``G``; pass ``E / (1 - nu^2)`` as E for a wide plate in
     cylindrical bending), ``kappa`` shear coefficient, ``n_elements`` N >= 4, ``shear``
     Timoshenko (True) or Rayleigh (False), ``thin_wall`` the two-sided boundary for a
-    plate fewer than two particles thick (:attr:`BeamModel.thin_wall`), ``beta``
-    stiffness-proportional damping [s]
+    plate fewer than two particles thick (:attr:`BeamModel.thin_wall`), ``support`` the
+    moving support the clamp is fixed to (:class:`Support`; None: welded to the world),
+    ``beta`` stiffness-proportional damping [s]
     (joint damping ``beta k``; explicit under RK4, where it shrinks the stable step once
     ``beta omega_max`` nears 1, see :meth:`BeamModel.stable_dt`: prefer ``implicitfast``
     for a heavily damped chain).
@@ -354,8 +448,11 @@ def elastic_beam(name: str, length: float, thickness: float, *, E: float, rho: f
         return (f'<geom name="{name}_geom{k}" type="box" size="{_fmt([h / 2, W / 2, seg / 2])}" '
                 f'pos="0 0 {seg / 2!r}" density="{rho!r}" contype="0" conaffinity="0"/>')
 
+    if support is not None and not isinstance(support, Support):
+        raise InputError(f"elastic beam '{name}': support must be a bodies.elastic.Support or None, got {support!r}")
     turn = ' quat="0 1 0 0"' if direction == "down" else ""  # half a turn about x: z -> -z, y -> -y
-    parts = [f'<body name="{name}_link0" pos="{_fmt(base)}"{turn}>{geom(0, l / 2)}']
+    carried = _support_joints(name, support, base, direction, rho * W * h * L, L)
+    parts = [f'<body name="{name}_link0" pos="{_fmt(base)}"{turn}>{carried}{geom(0, l / 2)}']
     for k in range(1, N + 1):
         seg = l / 2 if k == N else l
         joints = (f'<joint name="{name}_bend{k}" type="hinge" axis="0 1 0" stiffness="{kb!r}" '
@@ -368,7 +465,85 @@ def elastic_beam(name: str, length: float, thickness: float, *, E: float, rho: f
                  f'<site name="{name}_corner" pos="{-h / 2!r} 0 {l / 2!r}" size="{h / 4!r}"/>')
     xml = "".join(parts) + "</body>" * (N + 1)
     return BeamModel(name, L, h, W, E, rho, float(nu), kappa, N, base, bool(shear), float(beta), xml,
-                     bool(thin_wall), direction)
+                     bool(thin_wall), direction, support)
+
+
+def _support_joints(name: str, support: Support | None, base, direction: str, mass: float, length: float) -> str:
+    """The joints of the clamped link on its moving support (none when welded), given in
+    the link's frame (turned half a turn about x when hanging), each with the armature of
+    :class:`Support`: ``SUPPORT_ARMATURE`` times the chain's mass [kg] on a slide, times an
+    upper bound of its moment of inertia about the axis, ``mass (d + L)^2`` [kg m^2] with
+    ``d`` the clamp's distance from the axis' point, on the hinge."""
+    if support is None:
+        return ""
+    flip = np.diag([1.0, -1.0, -1.0]) if direction == "down" else np.eye(3)  # world -> link frame (its own inverse)
+    if support.slides:
+        return "".join(f'<joint name="{name}_support{k}" type="slide" axis="{_fmt(flip @ np.asarray(a))}" '
+                       f'armature="{SUPPORT_ARMATURE * mass!r}"/>' for k, a in enumerate(support.slides))
+    point, axis = (np.asarray(v) for v in support.hinge)
+    reach = float(np.linalg.norm(point - np.asarray(base))) + length
+    return (f'<joint name="{name}_support0" type="hinge" pos="{_fmt(flip @ (point - np.asarray(base)))}" '
+            f'axis="{_fmt(flip @ axis)}" armature="{SUPPORT_ARMATURE * mass * reach**2!r}"/>')
+
+
+def self_weight_buckling(length: float, EI: float, loads, n: int = 8):
+    """The buckling of a column clamped at its foot and free at its top under distributed
+    axial loads: Greenhill's problem (Greenhill 1881; Timoshenko & Gere 1961, Theory of
+    Elastic Stability, §2.13: a uniform weight ``q`` buckles it at ``q L^3 / (E I) =
+    7.837``, :data:`GREENHILL`), for loads that change along it (a plate's weight in air
+    above the water, its weight less its buoyancy below).
+
+    ``length`` L [m], ``EI`` bending stiffness [N m^2]; ``loads``: ``((s0, s1, q), ...)``,
+    a weight ``q`` [N/m] per length pulling the column towards its clamp (negative: away
+    from it, as the buoyancy of a plate lighter than water) over ``s0 .. s1`` [m] from the
+    clamp. The axial compression at ``s`` is ``N(s) = int_s^L q``; the straight column
+    buckles when the loads are multiplied by the smallest ``lambda`` for which ``E I w''''
+    + lambda (N w')' = 0`` (``w = w' = 0`` at the clamp, ``w'' = w''' = 0`` at the top) has
+    a solution. Solved by Rayleigh-Ritz on the energy ``E I / 2 int w''^2 - lambda / 2 int
+    N w'^2`` with ``w'' = sum c_k P_k(2 s / L - 1)``, ``n`` shifted Legendre polynomials
+    (the clamp's conditions hold by construction), integrated exactly by Gauss-Legendre
+    between the loads' ends: an upper bound that meets Greenhill's 7.837347 to 10 digits at
+    n = 8 (``tests/test_plate_buckling.py``).
+
+    Returns ``(factor, slope)``: ``lambda`` (``math.inf`` when no compression can buckle
+    it, e.g. a column in tension) and the buckling mode's slope ``w'(s)`` [-] as a
+    callable of ``s`` [m], scaled to a tip deflection ``w(L) = 1`` (None with an infinite
+    factor)."""
+    from numpy.polynomial import Legendre, Polynomial
+    from scipy.linalg import eigh
+
+    L = _positive("column", "length", "m", length, "give the column's length")
+    EI = _positive("column", "EI", "N m^2", EI, "give the bending stiffness E I")
+    pieces = [(float(a) / L, float(b) / L, float(q)) for a, b, q in loads]
+    if any(not (0.0 <= a < b <= 1.0 + 1e-12) or not math.isfinite(q) for a, b, q in pieces):
+        raise InputError(f"column buckling: loads must be (s0, s1, q) with 0 <= s0 < s1 <= L = {L} m and q finite, "
+                         f"got {list(loads)!r}")
+    # x = s / L; the basis f_k'' = P_k(2x - 1), f_k' its integral from the clamp
+    ddf = [Legendre.basis(k, domain=[0.0, 1.0]).convert(kind=Polynomial) for k in range(n)]
+    df = [p.integ(lbnd=0.0) for p in ddf]
+    K = np.diag(1.0 / (2.0 * np.arange(n) + 1.0))  # int_0^1 P_i P_j dx
+
+    def compression(x):  # N(x L) [N]
+        return sum(q * L * np.clip(b - np.maximum(x, a), 0.0, None) for a, b, q in pieces)
+
+    cuts = np.unique(np.clip([0.0, 1.0] + [c for a, b, _ in pieces for c in (a, b)], 0.0, 1.0))
+    gx, gw = np.polynomial.legendre.leggauss(n + 2)
+    G = np.zeros((n, n))
+    for a, b in zip(cuts[:-1], cuts[1:]):
+        x = 0.5 * (b - a) * gx + 0.5 * (a + b)
+        d = np.array([p(x) for p in df])
+        G += (d * (0.5 * (b - a) * gw * compression(x))) @ d.T
+    # E I / L^3 K c = lambda / L G c  <=>  G c = (1 / lambda) (E I / L^2) K c
+    mu, vec = eigh(G, EI / L**2 * K)
+    if mu[-1] <= 0.0:
+        return math.inf, None
+    c = vec[:, -1] / (L * sum(ck * p.integ(lbnd=0.0)(1.0) for ck, p in zip(vec[:, -1], df)))  # w(L) = 1
+
+    def slope(s):
+        x = np.asarray(s, float) / L
+        return sum(ck * p(x) for ck, p in zip(c, df))
+
+    return 1.0 / mu[-1], slope
 
 
 def timoshenko_frequencies(length: float, thickness: float, E: float, rho: float, nu: float = 0.0,

@@ -8,6 +8,10 @@ and clears after the step, so it is the only writer and nothing persists
 silently. Within a coupling step MuJoCo sub-steps so that its own step never
 exceeds the model's ``timestep``; the loads are held constant over the step.
 
+Hinges and slides may be driven instead (:meth:`MujocoBodies.drive`): a support that
+moves as prescribed, e.g. the clamp of an elastic plate on a shaken tank, carrying what
+hangs from it as a moving base does.
+
 2-D scenes live in the x-z plane: bodies slide in x and z and hinge about y
 (see :mod:`bodies.builders`), and are 1 m thick so that forces per metre of depth
 from a 2-D fluid are forces on the body.
@@ -50,6 +54,8 @@ _GEOM_KINDS = {
     mujoco.mjtGeom.mjGEOM_ELLIPSOID: "ellipsoid",
     mujoco.mjtGeom.mjGEOM_MESH: "mesh",
 }
+
+_DRIVABLE = (int(mujoco.mjtJoint.mjJNT_SLIDE), int(mujoco.mjtJoint.mjJNT_HINGE))  # joints drive() and set_joints() take
 
 
 def load_spec(mjcf) -> tuple[mujoco.MjSpec | None, mujoco.MjModel]:
@@ -112,11 +118,13 @@ class MujocoBodies:
         self._torque = np.zeros((self.n_bodies, 3))
         self._state_spec = mujoco.mjtState.mjSTATE_INTEGRATION
         self.substeps = 0  #: MuJoCo steps taken in the last advance
+        self._drives = []  # (qpos addresses, dof addresses, motion) of the driven joints (drive())
         mujoco.mj_forward(m, self.data)
 
     # -- participant protocol ------------------------------------------------
     def initialize(self, t0: float) -> None:
         self.data.time = t0
+        self._drive_to(t0)
         mujoco.mj_forward(self.model, self.data)
         self._check_finite(0)
 
@@ -134,14 +142,22 @@ class MujocoBodies:
         d.xfrc_applied[self.body_ids, 3:] = self._torque
         m.opt.timestep = dt / n
         resets = d.warning[mujoco.mjtWarning.mjWARN_BADQACC].number
+        h = dt / n
         try:
             for k in range(n):
+                if self._drives:
+                    self._drive_step(t + k * h, h)
                 mujoco.mj_step(m, d)
         finally:
             m.opt.timestep = self.dt_mujoco
             d.xfrc_applied[:] = 0.0
             self._force[:] = 0.0
             self._torque[:] = 0.0
+            for _, dofs, _ in self._drives:
+                d.qfrc_applied[dofs] = 0.0
+        if self._drives:
+            self._drive_to(t + dt)
+            mujoco.mj_forward(m, d)
         if d.warning[mujoco.mjtWarning.mjWARN_BADQACC].number > resets:
             # MuJoCo met a non-finite or huge acceleration and reset the state to the model's
             # initial pose: say so, naming the body, instead of running on from there
@@ -155,6 +171,86 @@ class MujocoBodies:
         d.time = t + dt  # the coupler's clock, not n accumulated sub-steps
         self.substeps = n
         self._check_finite(n)
+
+    # -- prescribed joints ------------------------------------------------------
+    def drive(self, joints: Sequence[str], motion) -> None:
+        """Prescribe the motion of hinge and slide ``joints`` (names; e.g. the support of a
+        clamp on a shaken tank, :class:`bodies.elastic.Support`): ``motion(t)`` returns
+        their positions [m or rad], velocities and accelerations at time ``t`` [s], arrays
+        ``(n,)``. What hangs from them moves as it would on a support that moves so: the
+        joints carry an armature of :attr:`DRIVE_ARMATURE` times the inertia they hold up
+        (unless the model gives a larger one), and before every MuJoCo step they are set to
+        the prescribed position and velocity and given the generalised force ``armature *
+        (v(t + h) - v(t)) / h``; their acceleration is then the prescribed mean over the
+        step to ``1 / DRIVE_ARMATURE`` of the reactions of what they carry, whose
+        dynamics MuJoCo integrates as usual (base-excited structures: the inertial load
+        ``-m a`` of the support's acceleration arises, Coriolis and centrifugal terms of a
+        turning support too). After each advance they are set to the prescribed state at
+        its end exactly. The loads the coupler gives a body on driven joints go into the
+        support (they move it by a ``1 / DRIVE_ARMATURE`` part)."""
+        m = self.model
+        ids = []
+        for j in joints:
+            i = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_JOINT, j)
+            if i < 0:
+                raise InputError(f"{self.name}: no joint named {j!r} to drive")
+            if int(m.jnt_type[i]) not in _DRIVABLE:
+                raise InputError(f"{self.name}: joint {j!r} is not a hinge or a slide; only those can be driven")
+            ids.append(i)
+        if not callable(motion):
+            raise InputError(f"{self.name}: the motion of {list(joints)} must be a callable t -> (q, v, a)")
+        dofs = m.jnt_dofadr[ids].copy()
+        M = np.zeros((m.nv, m.nv))
+        mujoco.mj_fullM(m, self.data, M)
+        carried = np.diag(M)[dofs] - m.dof_armature[dofs]
+        m.dof_armature[dofs] = np.maximum(m.dof_armature[dofs], self.DRIVE_ARMATURE * carried)
+        mujoco.mj_setConst(m, mujoco.MjData(m))
+        self._drives.append((m.jnt_qposadr[ids].copy(), dofs, motion))
+        self._drive_to(float(self.data.time))
+        mujoco.mj_forward(m, self.data)
+
+    #: a driven joint's armature over the inertia it holds up [-] (:meth:`drive`)
+    DRIVE_ARMATURE = 1e8
+
+    @property
+    def driven_dofs(self) -> set:
+        """The degrees of freedom (``qvel`` indices) of the driven joints (:meth:`drive`)."""
+        return {int(i) for _, dofs, _ in self._drives for i in dofs}
+
+    def _prescribed(self, motion, t: float, n: int):
+        q, v, a = (np.asarray(x, float).reshape(-1) for x in motion(t))
+        if not (q.shape == v.shape == a.shape == (n,)) or not (np.isfinite(q).all() and np.isfinite(v).all()):
+            raise InputError(f"{self.name}: a joint motion gave {q}, {v}, {a} at t = {t:.9g} s; it must give {n} "
+                             f"finite positions, velocities and accelerations")
+        return q, v
+
+    def _drive_to(self, t: float) -> None:
+        """The driven joints at their prescribed position and velocity at ``t`` [s]."""
+        d = self.data
+        for qpos, dofs, motion in self._drives:
+            d.qpos[qpos], d.qvel[dofs] = self._prescribed(motion, t, len(dofs))
+
+    def _drive_step(self, t: float, h: float) -> None:
+        """The driven joints before a MuJoCo step from ``t`` to ``t + h`` [s]: their state at
+        ``t`` and the force that gives them the mean acceleration over the step."""
+        d, arm = self.data, self.model.dof_armature
+        for qpos, dofs, motion in self._drives:
+            q, v = self._prescribed(motion, t, len(dofs))
+            v1 = self._prescribed(motion, t + h, len(dofs))[1]
+            d.qpos[qpos], d.qvel[dofs] = q, v
+            d.qfrc_applied[dofs] = arm[dofs] * (v1 - v) / h
+
+    def set_joints(self, values: dict) -> None:
+        """Set hinge and slide joints to positions [m or rad], ``{name: value}`` (e.g. the
+        initial imperfection of a column, :meth:`bodies.elastic.BeamModel.imperfection`),
+        and bring the derived state up to date."""
+        m = self.model
+        for j, v in values.items():
+            i = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_JOINT, j)
+            if i < 0 or int(m.jnt_type[i]) not in _DRIVABLE:
+                raise InputError(f"{self.name}: no hinge or slide named {j!r} to set")
+            self.data.qpos[m.jnt_qposadr[i]] = float(v)
+        mujoco.mj_forward(m, self.data)
 
     def save_state(self):
         buf = np.empty(mujoco.mj_stateSize(self.model, self._state_spec))

@@ -219,6 +219,10 @@ class Coupler:
         if self.bodies is not None:
             self._attach_tethers()
             self.bodies.initialize(t0)
+            driven = getattr(self.bodies, "driven_dofs", set())
+            for k, s in enumerate(self.watch.dofs):  # a prescribed motion (a moving support) is not the coupling's
+                if s.stop > s.start and set(range(s.start, s.stop)) <= driven:
+                    self.watch.dofs[k] = slice(0, 0)
             self._sites = []
             for a in self.moorings:
                 ids = [self.bodies.site(s) for s in a.sites]

@@ -6,12 +6,17 @@ What the builder derives so that the user does not: the fluid's set-up
 flume's floor behind the paddle (half the stroke plus dx), the heights of floating bodies
 (:mod:`cosim.scene.placement`), one gravity for fluid, bodies and moorings, the coupling
 scheme (fluid-first with the SPH fluid), the wavemaker or base motion attached to the
-walls, and fairlead sites named ``BODY.NAME`` in the MuJoCo model.
+walls (and the base motion to the clamps of elastic plates), a standing plate beyond its
+self-weight buckling load bent into its buckling mode, and fairlead sites named
+``BODY.NAME`` in the MuJoCo model. What the user should know of the scene as built (a
+plate beyond its buckling load, an MJCF model's world parts that do not ride a moving
+tank) is logged as a warning and kept in :attr:`Built.warnings`.
 """
 
 from __future__ import annotations
 
 import dataclasses
+import logging
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -23,6 +28,8 @@ from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, Box, Cylinder, C
                               RegularWaves, Roll, Shake, Sphere, TableMotion, Tank)
 
 PADDLE, WALLS = 1, 0  # the flume's paddle group and every tank's wall group
+
+log = logging.getLogger(__name__)
 
 
 @dataclass
@@ -41,6 +48,7 @@ class Built:
     wavemaker: object = None  #: fluid.wavemaker.RegularWavemaker, for regular waves
     base_motion: object = None  #: the tank's rigid motion ``motion(t, ref) -> (pos, vel)`` (fluid.motion), or None
     plates: dict = field(default_factory=dict)  #: elastic plates: name -> bodies.elastic.BeamModel
+    warnings: list = field(default_factory=list)  #: what the user is warned of (logged, and in summary.json)
 
 
 def site_name(fairlead: str) -> str:
@@ -213,17 +221,115 @@ def _surface_heights(scene, points):
     return np.full(len(points), water_level(scene))
 
 
+def _support(scene):
+    """What the clamps of the scene's elastic plates are fixed to (:class:`bodies.elastic.Support`):
+    None in a tank at rest; under base motion the tank, on slides along the scene's world
+    axes (x, z in 2-D; x, y, z in 3-D) for a translation (shake, table, earthquake, ground
+    motion), on the roll's hinge for a roll."""
+    from bodies.elastic import Support
+
+    b, dim = scene.base_motion, scene.world.dim
+    if b is None:
+        return None
+    if isinstance(b, Roll):
+        point = (b.point[0], 0.0, b.point[1]) if dim == 2 else tuple(b.point)
+        axis = (0.0, 1.0, 0.0) if dim == 2 else tuple(np.asarray(b.axis) / np.linalg.norm(b.axis))
+        return Support(hinge=(point, axis))
+    return Support(slides=((1.0, 0.0, 0.0), (0.0, 0.0, 1.0)) if dim == 2 else tuple(map(tuple, np.eye(3))))
+
+
+def support_drive(motion):
+    """The tank's rigid motion (``fluid.motion``: a translation, several, or a turn) as the
+    positions, velocities and accelerations of the support joints of :func:`_support`, a
+    callable of time for :meth:`bodies.mujoco_bodies.MujocoBodies.drive`."""
+    from fluid.motion import Combined, Rotation, Translation
+
+    if isinstance(motion, Rotation):
+        return lambda t: tuple(np.array([x]) for x in motion.signal.state(t))
+    if isinstance(motion, Translation):
+        e = np.asarray(motion.direction)
+        return lambda t: tuple(x * e for x in motion.signal.state(t))
+    assert isinstance(motion, Combined)
+    return motion.state
+
+
+def _water_top(scene, b) -> float | None:
+    """The still water's level [m] around an elastic plate's foot at the start: the
+    domain's level, or the top of the water block it stands in (None: in air)."""
+    d = scene.domain
+    if not isinstance(scene.fluid, SPH):
+        return None
+    if isinstance(d, Tank) and d.water:
+        foot = b.base
+        tops = [w.hi[-1] for w in d.water
+                if all(lo <= x <= hi for lo, x, hi in zip(w.lo[:-1], foot[:-1], w.hi[:-1])) and w.lo[-1] <= foot[-1]]
+        return max(tops, default=None)
+    return water_level(scene)
+
+
+def self_weight(scene, b):
+    """A standing elastic plate's own weight and its buckling (Greenhill's problem,
+    :func:`bodies.elastic.self_weight_buckling`): ``(P, factor, slope)``, the weight it
+    carries [N] (2-D: per metre), the factor on it at which the straight plate buckles
+    (below 1: beyond the limit) and the buckling mode's slope. The weight per length is
+    ``rho_s g h W`` in air and ``(rho_s - rho_w) g h W`` below the still water around its
+    foot: a submerged column buckles under its effective weight, the water's pressure on
+    its bent faces bearing the rest (the effective tension of risers and columns in water,
+    Sparks 2007, Fundamentals of Marine Riser Mechanics). A hanging plate is in tension:
+    ``(P, inf, None)``."""
+    from bodies.elastic import self_weight_buckling
+
+    g, dim = scene.world.gravity, scene.world.dim
+    area = b.thickness * (1.0 if dim == 2 else b.width)
+    q_air = b.density * g * area
+    if b.direction == "down" or g <= 0:
+        return q_air * b.length, math.inf, None
+    loads, top = [], _water_top(scene, b)
+    wet = 0.0 if top is None else min(max(top - b.base[-1], 0.0), b.length)
+    if wet > 0:
+        loads.append((0.0, wet, (b.density - scene.fluid.rho0) * g * area))
+    if wet < b.length:
+        loads.append((wet, b.length, q_air))
+    EI = b.E * (1.0 if dim == 2 else b.width) * b.thickness**3 / 12.0
+    factor, slope = self_weight_buckling(b.length, EI, loads)
+    return sum(q * (s1 - s0) for s0, s1, q in loads), factor, slope
+
+
+def buckling_warning(scene, i: int) -> str | None:
+    """What to tell the user of ``bodies[i]``, an elastic plate, when it stands beyond its
+    self-weight buckling load (:func:`self_weight`); None when it does not."""
+    from bodies.elastic import GREENHILL, IMPERFECTION
+
+    b = scene.bodies[i]
+    P, factor, _ = self_weight(scene, b)
+    if factor >= 1.0:
+        return None
+    EI = b.E * (1.0 if scene.world.dim == 2 else b.width) * b.thickness**3 / 12.0
+    per = " per metre" if scene.world.dim == 2 else ""
+    top = _water_top(scene, b)
+    wet = "; below the still water its weight less its buoyancy" if top is not None and top > b.base[-1] else ""
+    return (f"bodies[{i}] ('{b.name}'): the elastic plate stands on its clamped foot under its own weight beyond its "
+            f"buckling load: it carries {P:.4g} N{per} (mean q L^3 / (E I) = {P * b.length**2 / EI:.4g}{wet}), and a "
+            f"column clamped at its foot and free at its top buckles under {factor * P:.4g} N{per} (Greenhill 1881: "
+            f"q L^3 / (E I) = {GREENHILL:.4g} for a uniform weight q per length). The "
+            f"straight plate is unstable: it starts bent in its buckling mode, its tip {IMPERFECTION * b.length:.3g} m "
+            f"(L/{1 / IMPERFECTION:.0f}) along +x, so that it buckles as a real one would; a stiffer (E, thickness) "
+            f"or shorter plate stands")
+
+
 def plates(scene) -> dict:
-    """The scene's elastic plates as MuJoCo chains (``bodies.elastic.elastic_beam``), by name."""
+    """The scene's elastic plates as MuJoCo chains (``bodies.elastic.elastic_beam``), by
+    name; under base motion their clamps on the tank's support (:func:`_support`)."""
     from bodies.elastic import elastic_beam
 
-    dim, out = scene.world.dim, {}
+    dim, out, support = scene.world.dim, {}, _support(scene)
     for b in scene.bodies:
         if isinstance(b, ElasticPlate):
             base = (b.base[0], 0.0, b.base[1]) if dim == 2 else tuple(b.base)
             out[b.name] = elastic_beam(b.name, b.length, b.thickness, E=b.E, rho=b.density,
                                        width=1.0 if dim == 2 else b.width, nu=b.nu, n_elements=b.elements,
-                                       base=base, beta=b.damping, thin_wall=b.thin_wall, direction=b.direction)
+                                       base=base, beta=b.damping, thin_wall=b.thin_wall, direction=b.direction,
+                                       support=support)
     return out
 
 
@@ -280,6 +386,64 @@ def _bodies(scene, level, rho):
     return MujocoBodies(xml, bodies=coupled), heights
 
 
+def _start_plates(scene, out: Built) -> None:
+    """The elastic plates at the start: under base motion their clamps' supports driven by
+    the tank's motion (:func:`support_drive`); a standing plate beyond its self-weight
+    buckling load bent into its buckling mode, its tip ``IMPERFECTION`` L along +x
+    (:meth:`bodies.elastic.BeamModel.imperfection`), and a warning (:func:`buckling_warning`)."""
+    from bodies.elastic import IMPERFECTION
+
+    for i, b in enumerate(scene.bodies):
+        if not isinstance(b, ElasticPlate):
+            continue
+        beam = out.plates[b.name]
+        if beam.support is not None:
+            out.bodies.drive(beam.support_joints, support_drive(out.base_motion))
+        _, factor, slope = self_weight(scene, b)
+        if factor < 1.0:
+            out.bodies.set_joints(beam.imperfection(slope, IMPERFECTION * b.length))
+            out.warnings.append(buckling_warning(scene, i))
+
+
+def _warn_mjcf_world(scene, out: Built) -> None:
+    """Under base motion, what an MJCF model fixes to its world stays where it is while the
+    tank moves (the model's world is the inertial frame): bodies welded to it, joints that
+    tie a body to it (other than a free joint, or the free slides and hinge of a 2-D
+    body), equality constraints to it and geoms on it that collide. Free bodies ride the
+    water."""
+    if scene.base_motion is None or not any(isinstance(b, MJCF) for b in scene.bodies):
+        return
+    import mujoco
+
+    m, named = out.bodies.model, []
+
+    def name(kind, i):
+        return mujoco.mj_id2name(m, kind, i) or f"#{i}"
+
+    J, B = mujoco.mjtJoint, mujoco.mjtObj.mjOBJ_BODY
+    for k in range(1, m.nbody):
+        if m.body_parentid[k] != 0:
+            continue
+        joints = range(m.body_jntadr[k], m.body_jntadr[k] + m.body_jntnum[k])
+        types = sorted(int(m.jnt_type[j]) for j in joints)
+        free = types == [int(J.mjJNT_FREE)] or (
+            types == sorted([int(J.mjJNT_SLIDE)] * 2 + [int(J.mjJNT_HINGE)])
+            and not any(m.jnt_stiffness[j] or m.jnt_limited[j] for j in joints))
+        if not free:
+            named.append(f"body '{name(B, k)}' ({'welded to' if not types else 'jointed to'} the world)")
+    for e in range(m.neq):
+        if int(m.eq_type[e]) in (int(mujoco.mjtEq.mjEQ_CONNECT), int(mujoco.mjtEq.mjEQ_WELD)) and \
+                0 in (m.eq_obj1id[e], m.eq_obj2id[e]):
+            named.append(f"equality '{name(mujoco.mjtObj.mjOBJ_EQUALITY, e)}' (to the world)")
+    for g in range(m.ngeom):
+        if m.geom_bodyid[g] == 0 and (m.geom_contype[g] or m.geom_conaffinity[g]):
+            named.append(f"geom '{name(mujoco.mjtObj.mjOBJ_GEOM, g)}' (on the world)")
+    if named:
+        out.warnings.append(f"base_motion: the MJCF model's world stands still while the tank moves: "
+                            f"{', '.join(named)} stay where they are, not on the tank (only its free bodies ride "
+                            f"the water); leave them out of the model, or give them a free joint")
+
+
 def _mooring(scene, level, rho, workdir: Path):
     """The mooring participant of the scene's lines and model, with the MuJoCo site of
     each fairlead."""
@@ -327,9 +491,15 @@ def build(scene, workdir: Path) -> Built:
     level = water_level(scene)
     rho = scene.fluid.rho0 if isinstance(scene.fluid, SPH) else getattr(scene.fluid, "rho", 1000.0)
     out = Built(coupler=None, level=level)
+    if scene.base_motion is not None:
+        out.base_motion = _base_motion(scene)
     if scene.bodies:
         out.bodies, out.start_heights = _bodies(scene, level, rho)
         out.plates = plates(scene)
+        _start_plates(scene, out)
+        _warn_mjcf_world(scene, out)
+    for w in out.warnings:
+        log.warning("%s", w)
     moorings = []
     if scene.moorings is not None:
         out.mooring, sites, out.line_names = _mooring(scene, level, rho, Path(workdir))
@@ -428,8 +598,8 @@ def _build_sph(scene, out: Built) -> None:
         out.wavemaker, paddle, stroke = _wavemaker(scene)
         motions[PADDLE] = paddle
         back = 0.5 * stroke + cfg.dx
-    if scene.base_motion is not None:
-        motions[WALLS] = out.base_motion = _base_motion(scene)
+    if out.base_motion is not None:
+        motions[WALLS] = out.base_motion
     pts, walls = domain_points(scene, cfg, back)
     if out.bodies is not None:
         from cosim.sph_fluid import SPHFluid

@@ -260,9 +260,11 @@ def _check_excitations(s, dim):
             _check_paddle_record(s)
     b = s.base_motion
     if b is not None:
-        if s.domain is None:
-            raise SceneError("base_motion", "base motion moves the SPH fluid's tank; give a domain and "
-                             "fluid.model = \"sph\"")
+        plates = any(isinstance(x, ElasticPlate) for x in s.bodies)
+        if s.domain is None and not (plates and isinstance(s.fluid, NoFluid)):
+            raise SceneError("base_motion", "base motion moves the SPH fluid's tank and the clamps of elastic plates; "
+                             "give a domain and fluid.model = \"sph\", or (fluid.model = \"none\") an elastic "
+                             "plate to shake")
         if isinstance(s.domain, Flume):
             raise SceneError("base_motion", "a flume does not move as a whole; use a tank")
         if isinstance(b, Roll):
@@ -285,6 +287,10 @@ def _check_excitations(s, dim):
             _check_record_sampling(rec.times[1] - rec.times[0], first_sloshing_period(s), "base_motion.file")
         if isinstance(b, TableMotion):
             _check_table_motion(s)
+        if s.moorings is not None:
+            raise SceneError("moorings", "mooring lines in a moving tank: their anchors are fixed in space and would "
+                             "not move with the tank's floor (the mooring models take fixed anchors); leave out "
+                             "base_motion or the moorings")
 
 
 def _file(path, key):
@@ -816,7 +822,8 @@ def _check_table_motion(s) -> None:
     except (InputError, ValueError) as e:
         raise SceneError("base_motion.file", f"{b.file!r}: {e}; give rows of numbers: the time [s] first, then the "
                          f"values") from None
-    _at_rest(float(sig.state(0.0)[0]), s.fluid.dx, "base_motion.file", "the table moves the tank")
+    if isinstance(s.fluid, SPH):  # without a fluid the clamps it carries start where it puts them
+        _at_rest(float(sig.state(0.0)[0]), s.fluid.dx, "base_motion.file", "the table moves the tank")
 
 
 def _check_paddle_record(s) -> None:

@@ -6,7 +6,10 @@ that become one HDF5 series, one CSV and one plot each:
   heave, roll, pitch, yaw (3-D, z-y-x Euler angles), displacements from the start [m]
   and angles [deg]; per elastic plate, the displacement from the start [m] of its upper
   left corner (top, -x face) and of its tip (top centre), ``plate.corner_x``,
-  ``plate.corner_z``, ``plate.tip_x``, ``plate.tip_z`` (3-D also ``_y``);
+  ``plate.corner_z``, ``plate.tip_x``, ``plate.tip_z`` (3-D also ``_y``), in the tank's
+  frame (under base motion: the deflection a transducer on the tank reads, the clamp
+  fixed), and under base motion the displacement of its clamp from the start in the
+  world, ``plate.clamp_x``, ``plate.clamp_z``: the tank's;
 - ``line_states``: per line, its state (seed 004 Fig. 5: 0 resting, 1 partly lifted, 2
   fully lifted, 3 taut; :class:`moorings.catenary.LineState`), from every model that
   reports them (:mod:`moorings.line_events`: the catenary, the catenary FMU, the SPH cable,
@@ -60,6 +63,22 @@ def _angles(R: np.ndarray, dim: int) -> list[float]:
     return [math.degrees(math.atan2(R[2, 1], R[2, 2])), math.degrees(pitch), math.degrees(math.atan2(R[1, 0], R[0, 0]))]
 
 
+def _in_tank_frame(points, move, t: float, dim: int) -> np.ndarray:
+    """World points ``(n, 3)`` [m] in the frame of a tank that moves rigidly by ``move``
+    (``fluid.motion``: ``move(t, ref)`` places the tank's points ``ref`` at time ``t``;
+    None: at rest), the frame in which the tank was built: ``x_ref = R^T (x - o)``, with
+    ``o`` where the tank's origin is now and ``R`` its turn (the images of the unit
+    vectors)."""
+    p = np.array(points, float)
+    if move is None:
+        return p
+    axes = [0, 2] if dim == 2 else [0, 1, 2]
+    o = np.asarray(move(t, np.zeros((1, dim)))[0][0], float)
+    Rt = np.asarray(move(t, np.eye(dim))[0], float) - o  # row i: R e_i, so this is R^T
+    p[:, axes] = (p[:, axes] - o) @ Rt.T
+    return p
+
+
 def groups(scene, built) -> list[Group]:
     """The probe groups of a built scene."""
     p, dim, out = scene.probes, scene.world.dim, []
@@ -72,8 +91,10 @@ def groups(scene, built) -> list[Group]:
         chosen = rigid + list(plates) if "all" in p.motion else [n for n in p.motion]
         idx = [names.index(n) for n in chosen if n not in plates]
         sites = {n: [b.site(f"{n}_corner")[0], b.site(f"{n}_tip")[0]] for n in chosen if n in plates}
-        site0 = {n: b.site_positions(ids) for n, ids in sites.items()}
-        com0 = b.kinematics().com.copy()
+        move, clock = getattr(built, "base_motion", None), built.coupler
+        site0 = {n: _in_tank_frame(b.site_positions(ids), move, clock.t, dim) for n, ids in sites.items()}
+        clamps = {n: names.index(plates[n].link_names[0]) for n in sites} if move is not None else {}
+        com0, origin0 = b.kinematics().com.copy(), b.kinematics().origin.copy()
         lin = ["surge", "heave"] if dim == 2 else ["surge", "sway", "heave"]
         ang = ["pitch"] if dim == 2 else ["roll", "pitch", "yaw"]
         axes = [0, 2] if dim == 2 else [0, 1, 2]
@@ -85,14 +106,17 @@ def groups(scene, built) -> list[Group]:
             for j in idx:
                 row += [float(k.com[j, a] - com0[j, a]) for a in axes] + _angles(k.rotation[j], dim)
             for n, ids in sites.items():
-                row += list((b.site_positions(ids) - site0[n])[:, axes].ravel())
+                row += list((_in_tank_frame(b.site_positions(ids), move, clock.t, dim) - site0[n])[:, axes].ravel())
+            for n, j in clamps.items():
+                row += [float(k.origin[j, a] - origin0[j, a]) for a in axes]
             return np.array(row)
 
         if idx or sites:
             cols = [f"{names[j]}.{q}" for j in idx for q in lin + ang]
             cols += [f"{n}.{s}_{c}" for n in sites for s in ("corner", "tip") for c in comps]
-            units = [u for _ in idx for u in ["m"] * len(lin) + ["deg"] * len(ang)] + ["m"] * (2 * len(comps)
-                                                                                              * len(sites))
+            cols += [f"{n}.clamp_{c}" for n in clamps for c in comps]
+            units = [u for _ in idx for u in ["m"] * len(lin) + ["deg"] * len(ang)] + ["m"] * (
+                (2 * len(sites) + len(clamps)) * len(comps))
             out.append(Group("motion", cols, units, motion))
         if p.loads:
             led = built.coupler.ledger

@@ -21,6 +21,20 @@ SECTIONS = [
     ("Probes (`[probes]`)", [spec.Probes, spec.Patch]),
 ]
 
+#: a paragraph at the head of a section, where what the section's classes share needs saying once
+NOTES = {
+    "Base motions (`[base_motion]`, by `kind`)": (
+        "What rides with a moving tank: the SPH fluid's walls; the wave gauges and pressure patches (`[probes]`, read "
+        "in the tank's frame); the clamps of elastic plates (their clamped link on joints driven by the tank's "
+        "motion, so that a plate feels the base's acceleration and starts at rest on the tank; its corner and tip "
+        "probes read its deflection in the tank's frame, `PLATE.clamp_x` and `PLATE.clamp_z` the clamp's "
+        "displacement). With `fluid.model = \"none\"` a base motion shakes the plates alone, without a tank: the "
+        "cheap way to a base-excited structure. What does not: free bodies, which the water carries; mooring lines "
+        "(refused: the mooring models hold their anchors fixed in space while the tank's floor would move); what "
+        "an MJCF model fixes to its world (bodies welded or jointed to it, equality constraints to it, its colliding "
+        "geoms), which stands still (warned of when the scene is built)."),
+}
+
 
 def _default(v) -> str:
     if v is dataclasses.MISSING:
@@ -47,7 +61,7 @@ def markdown() -> str:
            "docs/scenes.md` (a test keeps it current). A field left unset takes the value that the text says; "
            "a bad value is refused with its key path (`docs/scene_errors.md`).", ""]
     for title, classes in SECTIONS:
-        out += [f"## {title}", ""]
+        out += [f"## {title}", ""] + ([NOTES[title], ""] if title in NOTES else [])
         for cls in classes:
             doc = " ".join(inspect.cleandoc(cls.__doc__ or "").split("\n\n")[0].split())
             tag = f' — `{cls.TAG[0]} = "{cls.TAG[1]}"`' if cls.TAG else ""

@@ -16,7 +16,8 @@ samples (``world.sample_every``), particle snapshots (``snapshot_every``), check
   linear components (ω, amplitude, phase, k) and, for an irregular sea, the spectrum they
   stand for (the target S(ω), or a record's periodogram a² / 2Δω), plotted in
   ``sea_spectrum.png``;
-- ``summary.json``: set-up, scheme, sizes, steps, wall and CPU time, each series' range;
+- ``summary.json``: set-up, scheme, sizes, steps, wall and CPU time, each series' range, the
+  warnings of the build (``warnings``, :attr:`cosim.scene.build.Built.warnings`);
   lines that broke (``line_breaks``) and, for catenary lines, when each went fully lifted
   or taut and back (``line_events``, :mod:`moorings.line_events`);
 - ``checkpoint.h5``: the latest checkpoint, data only (:mod:`cosim.checkpoint`,
@@ -472,6 +473,8 @@ def _summary(scene, built, series, units, steps, loop_s, build_s, cpu_s, wall_be
         s["speed_of_sound_m_s"] = built.sph.config.speed_of_sound
     if built.start_heights:
         s["floating_start_z_m"] = built.start_heights
+    if built.warnings:
+        s["warnings"] = list(built.warnings)
     if built.wavemaker is not None:
         s["wavemaker"] = {"stroke_m": built.wavemaker.stroke, "wavelength_m": built.wavemaker.wavelength}
     sea = _incident_sea(built)

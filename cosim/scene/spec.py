@@ -748,7 +748,16 @@ class ElasticPlate(Spec):
     free end's (bottom) left corner and centre. ``thin_wall``: a plate fewer than two
     particle spacings thick gets two columns of boundary particles anyway,
     one for each side (the fluid stands off it by up to half a spacing); without it such a
-    plate is refused."""
+    plate is refused. Under ``base_motion`` the clamp rides with the tank (the chain's
+    clamped link on joints driven by the tank's motion, ``bodies.elastic.Support``: the
+    plate feels the base's acceleration as a base-excited cantilever does, and starts at
+    rest on it); its corner and tip probes then read the deflection in the tank's frame,
+    and ``clamp_x``, ``clamp_z`` (3-D ``clamp_y``) the clamp's displacement in the world. A
+    standing plate whose own weight (less its buoyancy below the still water) passes its
+    self-weight buckling load (Greenhill 1881: ``q L^3 / (E I) = 7.837`` for a uniform
+    weight ``q`` per length) is warned of when the scene is built, with both loads, and
+    starts bent in its buckling mode, its tip ``L / 1000`` along +x, so that it buckles
+    rather than stand perfectly still; a hanging plate is in tension and never buckles."""
 
     TAG = ("shape", "elastic-plate")
     shape: str = tag("elastic-plate")
@@ -852,7 +861,8 @@ class Probes(Spec):
     quarter of a 3-D step); ``motion``: the bodies whose surge, sway, heave, roll, pitch, yaw are
     recorded (``["all"]``: every body); ``tensions``: each fairlead's tension;
     ``loads``: fluid and mooring force on each body; ``energy``: the SPH fluid's energy.
-    Gauges and patches are fixed to the tank: under ``base_motion`` they move with it."""
+    Gauges and patches are fixed to the tank: under ``base_motion`` they move with it (and
+    an elastic plate's deflection is read in the tank's frame)."""
 
     gauges: tuple = gauges("wave gauges: x (2-D) or (x, y) (3-D)")
     pressure: tuple = parts("wall-pressure patches", Patch)
@@ -889,7 +899,7 @@ class Scene(Spec):
     domain: Spec = part(None, "the SPH fluid's container (the analytic fluid: a flume, for its depth and wavemaker)",
                         DOMAINS)
     waves: Spec = part(None, "a flume's wavemaker, or regular or irregular waves on the analytic fluid", WAVES)
-    base_motion: Spec = part(None, "motion of the tank", BASE_MOTIONS)
+    base_motion: Spec = part(None, "motion of the tank and of the elastic plates clamped to it", BASE_MOTIONS)
     bodies: tuple = parts("the bodies", BODIES)
     moorings: Moorings = part(None, "mooring lines and their model", Moorings)
     probes: Probes = part(Probes(), "what is recorded", Probes)
