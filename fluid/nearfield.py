@@ -56,12 +56,29 @@ def following_wall(sea):
     return motion
 
 
-def sea_velocity(sea):
+def return_current(sea) -> np.ndarray:
+    """The uniform current [m/s] (3,) that carries back the waves' mass transport, so that a
+    box closed by walls on linear orbits (which carry none) keeps its water where it is:
+    ``-Q / d`` along the heading, ``Q = sum g a^2 k / (2 omega)`` [m^2/s] the volume flux of
+    the waves' Stokes drift per unit crest length (Dean & Dalrymple 1991, §4.9:
+    ``E / (rho c)`` per component)."""
+    c = sea.components
+    q = float(np.sum(sea.g * c.amplitude ** 2 * c.k / (2.0 * c.omega)))
+    return -q / sea.depth * sea.heading
+
+
+def sea_velocity(sea, drift: bool = True):
     """The relaxation target ``target(pos, t) -> vel`` (``fluid.relaxation.Slab``): the sea's
-    velocity at the particles, (N, 2) (x, z) or (N, 3)."""
+    velocity at the particles, (N, 2) (x, z) or (N, 3); ``drift``: with the
+    :func:`return_current` (faded in with the sea)."""
+    back = return_current(sea) if drift else np.zeros(3)
 
     def target(pos, t):
-        v = sea.velocity(*_xyz(np.asarray(pos, float)), t)
+        x, y, z = _xyz(np.asarray(pos, float))
+        v = sea.velocity(x, y, z, t)
+        if drift:  # the mass transport grows as the square of the faded-in amplitude
+            q = min(max(t / sea.ramp, 0.0), 1.0) if sea.ramp > 0 else 1.0
+            v = v + (0.5 * (1.0 - math.cos(math.pi * q))) ** 2 * back
         return v[:, [0, 2]] if pos.shape[1] == 2 else v
 
     return target
@@ -80,10 +97,11 @@ class NearFieldBox:
     x1: float
     zone: float
 
-    def zones(self, sea, rate: float) -> list:
+    def zones(self, sea, rate: float, drift: bool = True) -> list:
         """The two relaxation zones (near end: weight 1 at x0; far end: at x1), relaxing at
-        ``rate`` [1/s] at the walls towards the sea's velocity."""
-        target = sea_velocity(sea)
+        ``rate`` [1/s] at the walls towards the sea's velocity (``drift``: and its return
+        current, :func:`return_current`)."""
+        target = sea_velocity(sea, drift)
         return [Slab(0, self.x0 + self.zone, self.x0, rate, target), Slab(0, self.x1 - self.zone, self.x1, rate, target)]
 
 

@@ -14,7 +14,7 @@ from cosim.validations.waves import G
 
 def nearfield_waves(dx: float, depth: float, H: float, T: float, length: float, zone: float, periods: float,
                     theory: str = "linear", rate_per_omega: float = 2.0, fit_periods: float = 3.0,
-                    gauges: int = 9, progress: bool = False, **config) -> dict:
+                    gauges: int = 9, drift: bool = True, progress: bool = False, **config) -> dict:
     """Regular waves (``fluid.waves.RegularWave``, ``theory``) of height ``H`` [m], period
     ``T`` [s] in ``depth`` [m] of water through a 2-D near-field box ``length`` [m] long at
     spacing ``dx`` [m], with relaxation zones ``zone`` [m] wide relaxing at
@@ -39,8 +39,9 @@ def nearfield_waves(dx: float, depth: float, H: float, T: float, length: float, 
     for group in (NEAR_END_GROUP, FAR_END_GROUP):
         fluid.prescribe_motion(group, following_wall(sea))
     omega = 2.0 * math.pi / T
-    fluid.zones.extend(box.zones(sea, rate_per_omega * omega))
+    fluid.zones.extend(box.zones(sea, rate_per_omega * omega, drift=drift))
     gx = np.linspace(zone, length - zone, gauges)
+    gall = np.linspace(0.5 * dx, length - 0.5 * dx, 41)  # the mean level over the whole box
     fluid.initialize(0.0)
     every = T / 32.0
     n = int(round(periods * 32))
@@ -49,17 +50,19 @@ def nearfield_waves(dx: float, depth: float, H: float, T: float, length: float, 
         t = i * every
         fluid.advance(fluid.t, t - fluid.t)
         ts.append(t)
-        eta.append(surface_elevation(fluid, gx) - depth)
+        eta.append(surface_elevation(fluid, np.concatenate([gx, gall])) - depth)
         if progress and i % 32 == 0:
             print(f"  t = {t:6.2f} s, {fluid.counters.steps} steps", flush=True)
     cpu = time.process_time() - cpu0
-    ts, eta = np.array(ts), np.array(eta)
+    ts, eta_all = np.array(ts), np.array(eta)
+    eta, box_eta = eta_all[:, :len(gx)], eta_all[:, len(gx):]
     fit = ts > ts[-1] - fit_periods * T + 1e-9
     a = harmonics(ts[fit], eta[fit], omega)
     a_sea = harmonics(ts[fit], sea.elevation(gx[None, :], 0.0, ts[fit][:, None]), omega)
     ratio = a / a_sea
     per = int(round(T / every))
     mean_level = eta[: (len(ts) // per) * per].reshape(-1, per, len(gx)).mean(axis=(1, 2))
+    box_level = box_eta[: (len(ts) // per) * per].reshape(-1, per, box_eta.shape[1]).mean(axis=(1, 2))
     return {"gauges_m": gx, "H1_over_H": np.abs(ratio), "lag_periods": -np.angle(ratio) / (2.0 * math.pi),
-            "mean_level_m": mean_level, "particles": int(ps.n), "steps": int(fluid.counters.steps), "cpu_s": cpu,
+            "mean_level_m": mean_level, "box_level_m": box_level, "particles": int(ps.n), "steps": int(fluid.counters.steps), "cpu_s": cpu,
             "removed": int(sum(fluid.counters.removed.values())), "wavelength_m": sea.wavelength}
