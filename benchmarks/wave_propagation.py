@@ -15,10 +15,9 @@ from __future__ import annotations
 
 import argparse
 import json
-import platform
-
 import numpy as np
 
+from machine import cpu_name  # benchmarks/machine.py, beside this script
 from cosim.scene.setup import settings
 from cosim.validations.wave_propagation import WP_DEPTH, WP_HEIGHT, WP_PERIOD, propagate
 
@@ -40,7 +39,7 @@ def main(argv=None) -> None:
     ap.add_argument("--set", nargs="*", default=[], metavar="KEY=VALUE", help="FluidConfig settings on top")
     args = ap.parse_args(argv)
     extra = {k: _value(v) for k, v in (s.split("=", 1) for s in args.set)}
-    print(f"# CPU: {platform.processor() or platform.machine()}")
+    print(f"# CPU: {cpu_name()}")
     table = []
     for setup in args.setup:
         for rows in args.rows:
