@@ -87,6 +87,7 @@ def line_shapes(scene, built) -> list[tuple[str, np.ndarray]]:
     nodes, the SPH cable's particles, else (the catenary, an FMU) the catenary's shape
     through the anchor and where the fairlead is now (:func:`moorings.catenary.shape`;
     a straight line where no catenary exists)."""
+    from cosim.errors import CosimError
     from moorings.catenary import shape
 
     m = built.mooring
@@ -104,7 +105,7 @@ def line_shapes(scene, built) -> list[tuple[str, np.ndarray]]:
             X, h = float(np.linalg.norm(f[:-1] - a[:-1])), float(f[-1] - a[-1])
             try:
                 _, x, z = shape(X, h, ln.length, ln.weight, ln.EA)
-            except Exception:  # taut inextensible, or no solution: the chord
+            except CosimError:  # taut and inextensible: no catenary, the chord
                 x, z = np.array([0.0, X]), np.array([0.0, h])
             u = (f[:-1] - a[:-1]) / X if X > 0 else np.zeros(len(f) - 1)
             pts.append(np.column_stack([a[:-1] + np.outer(x, u), a[-1] + z]))
