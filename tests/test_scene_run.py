@@ -116,7 +116,14 @@ def test_run_writes_outputs_at_exact_times(tmp_path):
         assert len(f["snapshot_times"]) == 4 and len(f["series/ledger/box/t"]) == s["steps"]
         Fz = f["series/ledger/box/fluid_force"][:, 2]
         rows = [r.split(",") for r in (tmp_path / "ledger.csv").read_text().splitlines()]
-        assert rows[0][:3] == ["t_s", "body", "fluid_force_x"] and {r[1] for r in rows[1:]} == {"box"}
+        assert rows[0][:3] == ["t [s]", "body", "fluid_force_x [N]"] and {r[1] for r in rows[1:]} == {"box"}
+        # every dataset says its unit (CF's units attribute), a line's state what its codes mean
+        assert f["series/ledger/box/fluid_torque"].attrs["units"] == "N m"
+        assert f["series/probes/motion/box.pitch"].attrs["units"] == "deg"
+        assert f["series/probes/motion/t"].attrs["units"] == "s" and f["snapshots/0000/p"].attrs["units"] == "Pa"
+        states = f["series/probes/line_states/box.left.state"].attrs
+        assert list(states["flag_values"]) == [0, 1, 2, 3]
+        assert states["flag_meanings"].split() == ["resting", "partly_lifted", "fully_lifted", "taut"]
         np.testing.assert_array_equal([float(r[0]) for r in rows[1:]], f["series/ledger/box/t"][:])
         np.testing.assert_array_equal([float(r[4]) for r in rows[1:]], Fz)
     head = (tmp_path / "tensions.csv").read_text().splitlines()[0]
@@ -158,12 +165,12 @@ def test_resume_refuses_a_changed_scene(tmp_path):
 
 
 def test_failed_run_leaves_readable_outputs(tmp_path, monkeypatch):
-    import cosim.scene.runner as runner
+    import cosim.scene.plots as plots
 
     def broken(*a):
         raise RuntimeError("plotting failed")
 
-    monkeypatch.setattr(runner, "_plot_particles", broken)
+    monkeypatch.setattr(plots, "plot_particles", broken)
     with pytest.raises(RuntimeError, match="plotting failed"):
         shaken_tank(duration=0.2, plot_at=[0.1]).run(tmp_path, progress=False)
     s = json.loads((tmp_path / "summary.json").read_text())

@@ -333,11 +333,11 @@ def probes(draw, dim, sph, names, box, domain=None, dx=None):
 
 
 @st.composite
-def couplings(draw, sph):
+def couplings(draw, sph, dt=None):
     scheme = draw(st.sampled_from(["auto", "explicit", "predictor-corrector"] + (["fluid-first"] if sph else [])))
     light = draw(st.sampled_from(["auto", "none", "added-mass"]
                                  + (["subiterate"] if scheme in ("auto", "fluid-first") else [])))
-    return Coupling(scheme=scheme, light_body=light, dt=draw(maybe(pos_num(1.0))), body_timestep=draw(pos_num(1.0)))
+    return Coupling(scheme=scheme, light_body=light, dt=dt, body_timestep=draw(pos_num(1.0)))
 
 
 @st.composite
@@ -425,7 +425,9 @@ def scenes(draw, dim=None, fluid_kind=None, domain_kind=None):
                                linear_damping=draw(rows), quadratic_damping=draw(rows))
     elif fluid_kind == "none" and draw(st.booleans()):
         kw["fluid"] = NoFluid()
-    if not mjcf:
+    if base is not None:  # mooring lines in a moving tank are refused (their anchors are fixed)
+        pass
+    elif not mjcf:
         kw["moorings"] = draw(moorings(dim, body_list))
     elif names:
         lines = [Line(fairlead=f"{n}.s{n}", anchor=draw(vec(dim)), length=draw(pos_num(1e3)), weight=1.0)
@@ -433,7 +435,12 @@ def scenes(draw, dim=None, fluid_kind=None, domain_kind=None):
         kw["moorings"] = Moorings(lines=lines)
     kw["probes"] = draw(probes(dim, fluid_kind == "sph", names, box, kw.get("domain"),
                                kw["fluid"].dx if fluid_kind == "sph" else None))
-    kw["coupling"] = draw(couplings(fluid_kind == "sph"))
+    dt = None
+    if draw(st.booleans()):  # a fixed step lands on the output intervals (cosim.scene.timing)
+        dt = world.sample_every / draw(st.integers(1, 1000))
+        world = world.replace(**{k: world.sample_every * draw(st.integers(0, 1000))
+                                 for k in ("snapshot_every", "checkpoint_every")})
+    kw["coupling"] = draw(couplings(fluid_kind == "sph", dt))
     if draw(st.booleans()):
         kw["name"] = draw(NAMES)
     return Scene(world=world, **kw)

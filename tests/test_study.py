@@ -78,7 +78,7 @@ def test_pareto_front():
 def study(tmp_path_factory):
     scene = Scene.from_toml(BOX).with_values(["world.duration=2.0"])
     out = tmp_path_factory.mktemp("study")
-    res = run_study(scene, {"coupling.dt": [0.016, 0.008, 0.004]}, ["box.surge:min", "box.left.tension:mean"], out,
+    res = run_study(scene, {"coupling.dt": [0.01, 0.005, 0.0025]}, ["box.surge:min", "box.left.tension:mean"], out,
                     reference="richardson", tol=1e-5, serial=True)
     return scene, out, res
 
@@ -99,7 +99,7 @@ def test_coupling_step_converges_at_second_order(study):
 
 def test_repeated_study_costs_nothing(study):
     scene, out, first = study
-    again = run_study(scene, {"coupling.dt": [0.016, 0.008, 0.004]}, ["box.surge:min"], out,
+    again = run_study(scene, {"coupling.dt": [0.01, 0.005, 0.0025]}, ["box.surge:min"], out,
                       reference="finest", serial=True)
     assert all(r["cached"] for r in again.rows)
     assert [r["metrics"]["box.surge:min"] for r in again.rows] == [r["metrics"]["box.surge:min"] for r in first.rows]
@@ -127,7 +127,7 @@ def test_a_run_that_writes_more_than_a_pipe_holds_is_not_stalled(tmp_path):
 def test_unknown_metric_series_is_named(study):
     scene, out, _ = study
     with pytest.raises(InputError, match="no series 'box.roll'"):
-        run_study(scene, {"coupling.dt": [0.016]}, ["box.roll:max"], out, serial=True)
+        run_study(scene, {"coupling.dt": [0.01]}, ["box.roll:max"], out, serial=True)
 
 
 def test_cli_study_on_dask(tmp_path):
