@@ -981,18 +981,19 @@ BUILD_CASES = [
 @dataclass(frozen=True)
 class CliCase:
     id: str
-    args: tuple  # after `cosim run`; the output folder is the --out given (or out/)
+    args: tuple  # after `cosim COMMAND`; the output folder is the --out given (or out/)
     says: str  # a fragment of the message on stderr
     files: tuple = ()
     prepare: tuple = ()  # commands run first in the folder: ("cosim", ...) or ("python", ...)
+    command: str = "run"  # the cosim command: run, or study
 
     @property
     def out(self) -> str:
         return self.args[self.args.index("--out") + 1]
 
 
-def cli(id, args, says, files=None, prepare=()):
-    return CliCase(id, tuple(args), says, tuple((files or {}).items()), tuple(tuple(c) for c in prepare))
+def cli(id, args, says, files=None, prepare=(), command="run"):
+    return CliCase(id, tuple(args), says, tuple((files or {}).items()), tuple(tuple(c) for c in prepare), command)
 
 
 SCENE = {"scene.toml": BASES["analytic"]}
@@ -1029,6 +1030,14 @@ else:  # KEY=VALUE: one value of the checkpoint's meta changed, its checksum mad
     content["meta"][key] = float(value) if key == "t" else value
     checkpoint.write(PATH, content)
 '''}
+
+
+def study(id, args, says, vary="coupling.dt=0.01,0.005", metric="box.heave:max", files=None):
+    """A case of ``cosim study`` on the analytic base scene, run serially into out/."""
+    return cli(id, ["scene.toml", "--vary", vary, "--metric", metric, "--serial", "--out", "out", *args], says,
+               SCENE | (files or {}), command="study")
+
+
 FIRST = ("cosim", "run", "scene.toml", "--out", "out", "--set", "world.duration=0.1", "--quiet")
 RESUME = ["scene.toml", "--out", "out", "--resume", "--set", "world.duration=0.2"]
 CLI_CASES = [
@@ -1085,6 +1094,28 @@ CLI_CASES = [
     cli("an output folder under a regular file", ["scene.toml", "--out", "notes.txt/out"],
         "output folder 'notes.txt/out': 'notes.txt' is not a folder; give another --out",
         SCENE | {"notes.txt": "not a folder\n"}),
+    # -- cosim study: every spec checked before the first run
+    study("a study with --workers -1", ["--workers", "-1"], "--workers -1: give a whole number >= 1 (runs at once"),
+    study("a study with --workers 0", ["--workers", "0"], "--workers 0: give a whole number >= 1"),
+    study("a study with --threads 0", ["--threads", "0"], "--threads 0: give a whole number >= 1 (numba threads"),
+    study("a study's metric of a series the runs do not record", [], "--metric 'box.roll:max': the runs with "
+          "{'coupling.dt': 0.01} record no series 'box.roll'; they record box.surge, box.heave, box.pitch",
+          metric="box.roll:max"),
+    study("a study's metric of an unknown statistic", [], "--metric 'box.heave:median': unknown statistic 'median'; "
+          "choose from peak, max", metric="box.heave:median"),
+    study("a study's metric without a statistic", [], "--metric 'box.heave': give SERIES:STAT", metric="box.heave"),
+    study("a study's --vary without '='", [], "--vary 'coupling.dt': give KEY.PATH=V1,V2,...", vary="coupling.dt"),
+    study("a study varying a field that does not exist", [], "coupling.dtt: unknown key; did you mean 'dt'?",
+          vary="coupling.dtt=0.01,0.005"),
+    study("a study varying a field to a value it refuses", [], "coupling.dt: -0.01 [s] is out of range; give a "
+          "number [s] > 0", vary="coupling.dt=0.01,-0.01"),
+    study("a study with a value given twice", [], "--vary coupling.dt: the value 0.01 is given twice",
+          vary="coupling.dt=0.01,0.01"),
+    study("a study varying one field twice", ["--vary", "coupling.dt=0.002"], "--vary coupling.dt: given twice; give "
+          "all its values in one --vary"),
+    study("a study with a negative tolerance", ["--tol=-5%"], "--tol -0.05: give a relative tolerance > 0"),
+    study("a study whose reference file lacks a metric", ["--reference", "ref.json"], "--reference ref.json: no "
+          "reference value for box.heave:max", files={"ref.json": '{"box.surge:min": -0.5}\n'}),
 ]
 
 
@@ -1213,7 +1244,7 @@ def run_cli(c: CliCase) -> tuple[int, str, bool]:
             r = _cosim(args, tmp)
             assert r.returncode == 0, f"{' '.join(args)}: {r.stderr[-2000:]}"
         before = _listing(Path(tmp, c.out))
-        r = _cosim(("cosim", "run") + c.args, tmp)
+        r = _cosim(("cosim", c.command) + c.args, tmp)
         assert not Path(tmp, "pwned").exists(), "the checkpoint's pickle ran"
         return r.returncode, r.stderr, _listing(Path(tmp, c.out)) == before
 
@@ -1221,7 +1252,7 @@ def run_cli(c: CliCase) -> tuple[int, str, bool]:
 def cli_message(c: CliCase) -> str:
     rc, err, _ = run_cli(c)
     lines = err.strip().splitlines()
-    return lines[-1].removeprefix("cosim run: error: ") if lines else ""
+    return lines[-1].removeprefix(f"cosim {c.command}: error: ") if lines else ""
 
 
 # ------------------------------------------------------------------------ the tests
@@ -1299,12 +1330,12 @@ def test_refused_when_built_before_anything_is_written(c, tmp_path):
 
 @pytest.mark.parametrize("c", CLI_CASES, ids=[c.id for c in CLI_CASES])
 def test_refused_by_the_command_line(c):
-    """``cosim run`` exits with status 2, the last line of stderr says what is wrong (no
-    traceback), no output folder is made and none that was there is written into."""
+    """``cosim run`` (``cosim study``) exits with status 2, the last line of stderr says what
+    is wrong (no traceback), no output folder is made and none that was there is written into."""
     rc, err, untouched = run_cli(c)
     assert rc == 2, err
     assert "Traceback" not in err, err
-    assert err.strip().splitlines()[-1] == f"cosim run: error: {cli_message(c)}"
+    assert err.strip().splitlines()[-1] == f"cosim {c.command}: error: {cli_message(c)}"
     assert c.says in cli_message(c), err
     assert untouched
 
@@ -1417,7 +1448,8 @@ def render() -> str:
             k += 1
             lines.append(f"| {k} | {_cell(c.id)} | {c.base} | {_cell(describe(c))} | {_code(c.path)} | "
                          f"{_text(build_error(c, Path(tmp) / c.id).problem)} |")
-    lines += ["", "## The command line", "", f"{len(CLI_CASES)} inputs: `cosim run ARGS` in a folder holding the "
+    lines += ["", "## The command line", "", f"{len(CLI_CASES)} inputs: `cosim run ARGS` (or `cosim study ARGS`) "
+              "in a folder holding the "
               "files (and [edit_checkpoint.py](#edit_checkpointpy)), after the commands that make the case's "
               "checkpoint; it exits with status 2, prints the message on stderr, makes no output folder (the "
               "`--out` given) and writes nothing into one that is there. A checkpoint is never run: the pickle "
@@ -1425,7 +1457,8 @@ def render() -> str:
               "| # | case | command | files | message |", "|---|---|---|---|---|"]
     for c in CLI_CASES:
         k += 1
-        lines.append(f"| {k} | {_cell(c.id)} | {_code('cosim run ' + ' '.join(c.args))} | {_cell(cli_files(c))} | "
+        lines.append(f"| {k} | {_cell(c.id)} | {_code(f'cosim {c.command} ' + ' '.join(c.args))} | "
+                     f"{_cell(cli_files(c))} | "
                      f"{_text(cli_message(c))} |")
     lines += ["", "## Base scenes", ""]
     for name, text in BASES.items():
