@@ -727,7 +727,8 @@ class Sphere(_Body):
 class MJCF(Spec):
     """Bodies from an MJCF file (MuJoCo's XML): every body with degrees of freedom, or
     those named in ``bodies``. Fairleads are the file's sites, ``"BODY.SITE"``. The model's
-    own gravity is replaced by the world's."""
+    own gravity is replaced by the world's (one gravity for every participant; where they
+    differ the build warns that it did)."""
 
     TAG = ("shape", "mjcf")
     shape: str = tag("mjcf")
