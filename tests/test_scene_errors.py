@@ -395,9 +395,9 @@ CASES = [
     case("negative line weight", "analytic", ("moorings.lines[1].weight", -50.0), "moorings.lines[1].weight",
          "is out of range; give a number [N/m] > 0", "Line.weight"),
     case("zero EA", "analytic", ("moorings.lines[0].EA", 0.0), "moorings.lines[0].EA",
-         "0.0 [N] is out of range; give a number [N] > 0 (axial stiffness", "Line.EA"),
+         "0.0 [N] is out of range; give a number [N] > 0 and <= 1e+11 (axial stiffness", "Line.EA"),
     case("zero break load", "analytic", ("moorings.lines[0].break_load", 0.0), "moorings.lines[0].break_load",
-         "0.0 [N] is out of range; give a number [N] > 0 (tension at which the line breaks", "Line.break_load"),
+         "0.0 [N] is out of range; give a number [N] > 0 and <= 3e+08 (tension at which the line breaks", "Line.break_load"),
     case("negative break load", "analytic", ("moorings.lines[1].break_load", -1.4e6), "moorings.lines[1].break_load",
          "-1400000.0 [N] is out of range; give a number [N] > 0", "Line.break_load"),
     case("zero wave height", "analytic", ("waves", dict(LINEAR, height=0.0)), "waves.height",
@@ -767,7 +767,7 @@ CASES = [
          "lies on the mid-plane and holds neither side's fluid properly; refine fluid.dx to 0.003 m or less, or set "
          "thin_wall = true", "Scene.bodies[0].thickness"),
     case("an elastic plate with E = 0", "plate", ("bodies[0].E", 0.0), "bodies[0].E",
-         "0.0 [Pa] is out of range; give a number [Pa] > 0 (Young's modulus)", "ElasticPlate.E"),
+         "0.0 [Pa] is out of range; give a number [Pa] > 0 and <= 1.2e+12 (Young's modulus)", "ElasticPlate.E"),
     case("an elastic plate of negative density", "plate", ("bodies[0].density", -2500.0), "bodies[0].density",
          "-2500.0 [kg/m^3] is out of range; give a number [kg/m^3] > 0", "ElasticPlate.density"),
     case("a 2-D elastic plate with a width", "plate", ("bodies[0].width", 0.1), "bodies[0].width",
@@ -779,6 +779,102 @@ CASES = [
     case("a hanging elastic plate through the floor", "plate", ("bodies[0].direction", "down"), "bodies[0].base",
          "z = 0 m: a hanging plate 0.08 m long clamped there reaches z = -0.08 m, below the tank's floor at z = 0 m; "
          "give base z >= 0.08 or a shorter length", "Scene.bodies[0].base"),
+    # -- physics: what cannot happen (cosim.scene.plausible, cosim.scene.limits)
+    case("fairleads given in world coordinates", "analytic",
+         (("bodies[0].fairleads", {"left": [2.0, -0.5], "right": [4.0, -0.5]}), ("moorings.lines[0].EA", 1e7),
+          ("moorings.lines[1].EA", 1e7)), "bodies[0].fairleads.left",
+         "(2, -0.5) m is 2.062 m from the body's centre, beyond 1.677 m (1.5 times its bounding radius 1.118 m): a "
+         "fairlead lies on or near the hull, in the body's frame (from its centre), not in the world's; if (2, -0.5) "
+         "is where it is in the world, give (-1, -0.5)", "Scene.bodies[0].fairleads.left"),
+    case("a turned body's corner below the floor", "tank3d",
+         ("bodies", [{"shape": "box", "name": "box", "size": [0.2, 0.2, 0.1], "pos": [0.5, 0.25, 0.08],
+                      "density": 500.0, "euler": [30.0, 30.0, 0.0]}]), "bodies[0].pos",
+         "the body (turned by euler = (30, 30, 0) deg) reaches -0.0508013 .. 0.210801 m along z, outside the "
+         "domain's 0 .. 0.6 m", "Scene.bodies[0].pos"),
+    case("a 2-D body turned out of its plane", "analytic", ("bodies[0].euler", [10.0, 0.0, 0.0]), "bodies[0].euler",
+         "[10.0, 0.0, 0.0]: a 2-D body turns in the x-z plane, about y only (its 1 m depth stays along y); give [0, "
+         "angle, 0]", "Scene.bodies[0].euler"),
+    case("a 2-D cylinder turned", "analytic", ("bodies[1].euler", [0.0, 30.0, 0.0]), "bodies[1].euler",
+         "a 2-D cylinder is a circle in the x-z plane: turned, it is the same circle; leave euler out",
+         "Scene.bodies[1].euler"),
+    case("a body against a turned one", "analytic", (("bodies[0].euler", [0.0, 45.0, 0.0]), ("bodies[1].pos", [4.1, 0.0])),
+         "bodies[1].pos", "body 'buoy' (x 3.8 .. 4.4 m, z -0.3 .. 0.3 m) overlaps body 'box' (turned by euler = (0, "
+         "45, 0) deg) (bodies[0], x 1.939 .. 4.061 m, z -1.061 .. 1.061 m) at the start", "Scene.bodies[1].pos"),
+    case("a floating body without gravity", "tank3d", ("world.gravity", 0.0), "world.gravity",
+         "0 m/s^2: body 'ball' (bodies[0]) is placed floating, but without gravity there is no buoyancy (nor weight) "
+         "to float it", "Scene.world.gravity"),
+    case("gravity beyond 100 g", "analytic", ("world.gravity", 1e4), "world.gravity",
+         "10000 [m/s^2] is beyond 980.665 [m/s^2], 100 g, the most a geotechnical centrifuge applies to a model",
+         "World.gravity"),
+    case("a body denser than osmium", "analytic", ("bodies[0].density", 1e308), "bodies[0].density",
+         "1e+308 [kg/m^3] is beyond 22590 [kg/m^3], osmium's, the densest element", "Box.density"),
+    case("a body's mass denser than osmium", "analytic", ("bodies[1].mass", 1e7), "bodies[1].mass",
+         "1e+07 kg in 0.2827 m^3 per metre of depth is a mean density of 3.537e+07 kg/m^3, beyond 22590",
+         "Scene.bodies[1].mass"),
+    case("water denser than osmium", "analytic", ("fluid.rho", 1e5), "fluid.rho",
+         "100000 [kg/m^3] is beyond 22590 [kg/m^3]", "Analytic.rho"),
+    case("an elastic plate with E = 1e30", "plate", ("bodies[0].E", 1e30), "bodies[0].E",
+         "1e+30 [Pa] is beyond 1.2e+12 [Pa], diamond's, the stiffest material", "ElasticPlate.E"),
+    case("a line weight of 1e308", "analytic", ("moorings.lines[0].weight", 1e308), "moorings.lines[0].weight",
+         "1e+308 [N/m] is beyond 100000 [N/m], ten times the heaviest offshore chain's", "Line.weight"),
+    case("a line stiffer than any tendon", "analytic", ("moorings.lines[1].EA", 1e13), "moorings.lines[1].EA",
+         "1e+13 [N] is beyond 1e+11 [N], four times a tension-leg platform's steel tendon", "Line.EA"),
+    case("a line heavier in water than in air", "analytic", ("moorings.lines[0].mass_per_length", 1.0),
+         "moorings.lines[0].weight", "50 N/m is more than the line weighs in air, mass_per_length x g = 1 x 9.81 = "
+         "9.81 N/m", "Scene.moorings.lines[0].weight"),
+    case("an elastic line's anchor in millimetres", "analytic",
+         (("moorings.lines[0].anchor", [-20000.0, -10000.0]), ("moorings.lines[0].EA", 1e7)),
+         "moorings.lines[0].length", "25 m is shorter than the straight distance 2.236e+04 m from the anchor (-2e+04, "
+         "-1e+04) m to the fairlead 'box.left' at the start: the elastic line would start stretched by 8.93e+04 %",
+         "Scene.moorings.lines[0].length"),
+    case("an elastic line stretched beyond 30 %", "analytic",
+         (("moorings.lines[1].length", 14.0), ("moorings.lines[1].EA", 1e7)), "moorings.lines[1].length",
+         "14 m is shorter than the straight distance 18.61 m from the anchor (20, -10) m to the fairlead 'box.right' at "
+         "the start: the elastic line would start stretched by 32.9 %, beyond 30 %", "Scene.moorings.lines[1].length"),
+    case("an MJCF line too short to reach", "mjcf", ("moorings.lines[0].length", 5.0), "moorings.lines[0].length",
+         "5 m is shorter than the straight distance 10.25 m from the anchor (0, 0, -10) m to the fairlead 'float.top' at "
+         "the start: an inextensible line cannot reach", "Scene.moorings.lines[0].length"),
+    case("a floating body's elastic line stretched beyond 30 %", "flume",
+         (("moorings.lines[0].anchor", [0.2, 0.0]), ("moorings.lines[0].length", 0.5), ("moorings.lines[0].EA", 1e5)),
+         "moorings.lines[0].length", "0.5 m is shorter than the straight distance 0.922 m from the anchor (0.2, 0) m "
+         "to the fairlead 'box.left' at the nearest it comes, over every draft: the elastic line would start "
+         "stretched by 84.4 %", "Scene.moorings.lines[0].length"),
+    case("a shake beyond 5 g", "tank3d", ("base_motion.amplitude", 2.0), "base_motion.amplitude",
+         "the shaking (2 m at 1 s: amplitude (2 pi / period)^2) peaks at 78.96 m/s^2 (8.05 g), beyond 49.03 m/s^2 (5 g)",
+         "Scene.base_motion.amplitude"),
+    case("a shake's acceleration beyond 5 g", "tank3d",
+         ("base_motion", {"kind": "harmonic", "period": 1.0, "direction": [1.0, 0.0, 0.0], "acceleration": 100.0}),
+         "base_motion.acceleration", "the shaking peaks at 100 m/s^2 (10.2 g), beyond 49.03 m/s^2 (5 g)",
+         "Scene.base_motion.acceleration"),
+    case("a roll beyond 5 g", "tank2d", ("base_motion", {"kind": "roll", "amplitude": 30.0, "period": 0.5,
+                                                         "point": [0.5, 0.0]}), "base_motion.amplitude",
+         "the roll (30 deg at 0.5 s, at the tank's corner 0.781 m from the axis) peaks at", "Scene.base_motion.amplitude"),
+    case("a table of motion scaled beyond 5 g", "tank2d", ("base_motion.scale", 1000.0), "base_motion.scale",
+         "the table's motion (times scale = 1000) peaks at", "Scene.base_motion.scale"),
+    case("an earthquake scaled to 1e8 g", "tank2d", ("base_motion", {"kind": "earthquake", "file": "quake.AT2",
+                                                                     "scale": 1e8}), "base_motion.scale",
+         "the record times scale = 1e+08 peaks at 1.961e+07 m/s^2 (2e+06 g), beyond 49.03 m/s^2 (5 g), more than the "
+         "strongest shaking tables and recorded earthquakes reach (about 3-4 g); give a scale up to 250", "Scene.base_motion.scale"),
+    case("a ground motion scaled beyond 5 g", "tank2d",
+         ("base_motion", {"kind": "ground_motion", "hold": True, "components": [
+             {"file": "quake.AT2", "direction": [1.0, 0.0], "scale": 1000.0}]}), "base_motion.components[0].scale",
+         "record 0 times its scales (1 x 1000) peaks at 196.1 m/s^2 (20 g)", "Scene.base_motion.components[0].scale"),
+    case("two ground-motion records along one axis", "tank2d",
+         ("base_motion", {"kind": "ground_motion", "hold": True, "components": [
+             {"file": "quake.AT2", "direction": [1.0, 0.0]}, {"file": "quake.AT2", "direction": [2.0, 0.0]}]}),
+         "base_motion.components[1].direction", "(2, 0) is along the same axis as base_motion.components[0].direction "
+         "(1, 0) (the angle between them is 0 deg): each record is the ground's motion along its own axis",
+         "Scene.base_motion.components[1].direction"),
+    case("ground-motion records not perpendicular", "tank2d",
+         ("base_motion", {"kind": "ground_motion", "hold": True, "components": [
+             {"file": "quake.AT2", "direction": [1.0, 0.0]}, {"file": "quake.AT2", "direction": [1.0, 1.0]}]}),
+         "base_motion.components[1].direction", "(1, 1) is not perpendicular to base_motion.components[0].direction "
+         "(1, 0) (the angle between them is 45 deg)", "Scene.base_motion.components[1].direction"),
+    case("a paddle stroke beyond the flume", "flume", ("waves.period", 100.0), "waves.period",
+         "waves of 0.04 m at 100 s in 0.3 m of water need a paddle stroke of 3.64 m (linear wavemaker theory): the "
+         "paddle would sweep 1.82 m into the flume", "Scene.waves.period"),
+    case("a body in the paddle's sweep", "flume", ("bodies[0].pos", [0.11]), "bodies[0].pos",
+         "the body starts at x = 0.01 m, within the paddle's sweep", "Scene.bodies[0].pos"),
     # -- times and files
     case("plot_at outside the run", "flume", ("world.plot_at", [2.5, 6.0]), "world.plot_at[1]",
          "6.0 s lies outside the run, 0 .. 5.0 s", "World.plot_at[1]"),
