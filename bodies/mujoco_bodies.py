@@ -121,6 +121,17 @@ class MujocoBodies:
         self._drives = []  # (qpos addresses, dof addresses, motion) of the driven joints (drive())
         mujoco.mj_forward(m, self.data)
 
+    def set_gravity(self, gravity) -> None:
+        """Replace the model's gravity [m/s^2] (3 components, world axes), in the compiled
+        model and in its spec, so that a recompile (:meth:`add_tethers`) keeps it."""
+        g = np.asarray(gravity, float)
+        if g.shape != (3,) or not np.all(np.isfinite(g)):
+            raise InputError(f"{self.name}: gravity must be 3 finite values [m/s^2], got {gravity!r}")
+        self.model.opt.gravity[:] = g
+        if self._spec is not None:
+            self._spec.option.gravity = g.tolist()
+        mujoco.mj_forward(self.model, self.data)
+
     # -- participant protocol ------------------------------------------------
     def initialize(self, t0: float) -> None:
         self.data.time = t0

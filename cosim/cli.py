@@ -185,6 +185,8 @@ def cmd_study(args, parser) -> int:
         if "=" not in v:
             raise InputError(f"--vary {v!r}: give KEY.PATH=V1,V2,...")
         key, values = v.split("=", 1)
+        if key.strip() in vary:
+            raise InputError(f"--vary {key.strip()}: given twice; give all its values in one --vary")
         vary[key.strip()] = [parse_value(x) for x in _split_values(values)]
         if not vary[key.strip()]:
             raise InputError(f"--vary {v!r}: give at least one value")

@@ -55,13 +55,24 @@ def wavenumber(T: float, depth: float, g: float = 9.81) -> float:
 
 
 def height_to_stroke(kind: str, kd: float) -> float:
-    """H/S, wave height over paddle stroke, for ``kind`` "piston" or "flap"."""
+    """H/S, wave height over paddle stroke, for ``kind`` "piston" or "flap" (Dean &
+    Dalrymple 1991, Eq. 6.21 and 6.22). Beyond kd = 20 the same ratios with the
+    hyperbolic functions written through ``a = exp(-kd)``, which do not overflow in deep
+    water: piston ``2 (1 - b)^2 / (1 - b^2 + 4 kd b)`` with ``b = a^2``, flap
+    ``2 (1 - a^2) (kd (1 - a^2) - (1 - a)^2) / (kd (1 - a^4 + 4 kd a^2))``; their deep-water
+    limits are 2 and 2 (kd - 1) / kd."""
+    if kind not in ("piston", "flap"):
+        raise InputError(f"wavemaker kind must be 'piston' or 'flap', got {kind!r}")
+    if kd > 20.0:
+        a = math.exp(-kd)
+        if kind == "piston":
+            b = a * a
+            return 2.0 * (1.0 - b) ** 2 / (1.0 - b * b + 4.0 * kd * b)
+        return 2.0 * (1.0 - a * a) * (kd * (1.0 - a * a) - (1.0 - a) ** 2) / (kd * (1.0 - a ** 4 + 4.0 * kd * a * a))
     s2, c2 = math.sinh(2 * kd), math.cosh(2 * kd)
     if kind == "piston":
         return 2.0 * (c2 - 1.0) / (s2 + 2.0 * kd)
-    if kind == "flap":
-        return 4.0 * (math.sinh(kd) / kd) * (kd * math.sinh(kd) - math.cosh(kd) + 1.0) / (s2 + 2.0 * kd)
-    raise InputError(f"wavemaker kind must be 'piston' or 'flap', got {kind!r}")
+    return 4.0 * (math.sinh(kd) / kd) * (kd * math.sinh(kd) - math.cosh(kd) + 1.0) / (s2 + 2.0 * kd)
 
 
 @dataclass(frozen=True)

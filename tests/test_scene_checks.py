@@ -44,8 +44,12 @@ def _moored(anchor, length, EA=None, pos=(3.0, 0.0), euler=None, dim=2):
 def test_lines_at_the_edge_are_accepted():
     # the fairlead (4, -0.5) at its anchor's height, the line exactly as long as the distance
     _moored(anchor=(20.0, -0.5), length=16.0)
-    # an elastic line may start stretched (a taut, pre-tensioned mooring)
-    _moored(anchor=(20.0, -10.0), length=10.0, EA=1e7)
+    # an elastic line may start stretched (a taut, pre-tensioned mooring), up to the limit:
+    # 18.61 m from anchor to fairlead on 14.31 m of line is 30 %, on 14.30 m beyond it
+    dist = math.hypot(16.0, 9.5)
+    _moored(anchor=(20.0, -10.0), length=dist / 1.3 * (1 + 1e-9), EA=1e7)
+    with pytest.raises(ValueError, match="would start stretched by 30 %, beyond 30 %"):
+        _moored(anchor=(20.0, -10.0), length=dist / 1.3 * (1 - 1e-6), EA=1e7)
     # a 3-D body turned 180 deg about x: its fairlead (z -0.5 in its frame) is at z = +0.5
     _moored(anchor=(20.0, 0.0, 0.4), length=20.0, pos=(3.0, 0.0, 0.0), euler=(180.0, 0.0, 0.0), dim=3)
     with pytest.raises(ValueError, match="below this anchor's seabed"):
@@ -102,3 +106,30 @@ def test_a_floating_body_moored_just_below_its_fairlead_floats_above_the_anchor(
             with pytest.raises(ValueError) as err:
                 floating_height(box, 2, 0.3, 1000.0, 9.81, [line], keys=["moorings.lines[3]"])
             assert err.value.path == "moorings.lines[3].anchor"
+
+
+def test_physical_limits_are_edges():
+    """Each limit of cosim.scene.plausible accepts its edge and refuses just beyond it: a
+    fairlead at 1.5 bounding radii, a shake peaking at 5 g, a turned box whose corner
+    touches the floor."""
+    from cosim.scene import Shake
+    from cosim.scene.limits import FAIRLEAD_REACH, MAX_BASE_ACCELERATION
+
+    reach = FAIRLEAD_REACH * math.hypot(1.0, 0.5)  # the 2 x 1 m box's bounding radius is 1.118 m
+    for k, ok in ((1 - 1e-9, True), (1 + 1e-6, False)):
+        box = Box("box", size=(2.0, 1.0), pos=(3.0, 0.0), density=500.0, fairleads={"f": (reach * k, 0.0)})
+        if ok:
+            Scene(world=W2, fluid=Analytic(), bodies=[box])
+        else:
+            with pytest.raises(ValueError, match=r"beyond 1.677 m \(1.5 times its bounding radius 1.118 m\)"):
+                Scene(world=W2, fluid=Analytic(), bodies=[box])
+    tank = Tank(length=1.0, height=0.6, depth=0.3)
+    top = MAX_BASE_ACCELERATION / (2 * math.pi) ** 2  # the amplitude [m] that peaks at 5 g at a 1 s period
+    Scene(world=W2, fluid=SPH(dx=0.02), domain=tank, base_motion=Shake(period=1.0, amplitude=top * (1 - 1e-12)))
+    with pytest.raises(ValueError, match=r"peaks at 49.03 m/s\^2 \(5 g\), beyond 49.03 m/s\^2 \(5 g\)"):
+        Scene(world=W2, fluid=SPH(dx=0.02), domain=tank, base_motion=Shake(period=1.0, amplitude=top * (1 + 1e-6)))
+    z = 0.1 * math.cos(math.radians(45.0)) + 0.05 * math.sin(math.radians(45.0))  # the turned box's half height
+    turned = dict(size=(0.2, 0.1), density=500.0, euler=(0.0, 45.0, 0.0))
+    Scene(world=W2, fluid=SPH(dx=0.02), domain=tank, bodies=[Box("b", pos=(0.5, z + 1e-12), **turned)])
+    with pytest.raises(ValueError, match=r"the body \(turned by euler = \(0, 45, 0\) deg\) reaches -1e-06"):
+        Scene(world=W2, fluid=SPH(dx=0.02), domain=tank, bodies=[Box("b", pos=(0.5, z - 1e-6), **turned)])

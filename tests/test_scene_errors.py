@@ -395,9 +395,9 @@ CASES = [
     case("negative line weight", "analytic", ("moorings.lines[1].weight", -50.0), "moorings.lines[1].weight",
          "is out of range; give a number [N/m] > 0", "Line.weight"),
     case("zero EA", "analytic", ("moorings.lines[0].EA", 0.0), "moorings.lines[0].EA",
-         "0.0 [N] is out of range; give a number [N] > 0 (axial stiffness", "Line.EA"),
+         "0.0 [N] is out of range; give a number [N] > 0 and <= 1e+11 (axial stiffness", "Line.EA"),
     case("zero break load", "analytic", ("moorings.lines[0].break_load", 0.0), "moorings.lines[0].break_load",
-         "0.0 [N] is out of range; give a number [N] > 0 (tension at which the line breaks", "Line.break_load"),
+         "0.0 [N] is out of range; give a number [N] > 0 and <= 3e+08 (tension at which the line breaks", "Line.break_load"),
     case("negative break load", "analytic", ("moorings.lines[1].break_load", -1.4e6), "moorings.lines[1].break_load",
          "-1400000.0 [N] is out of range; give a number [N] > 0", "Line.break_load"),
     case("zero wave height", "analytic", ("waves", dict(LINEAR, height=0.0)), "waves.height",
@@ -767,7 +767,7 @@ CASES = [
          "lies on the mid-plane and holds neither side's fluid properly; refine fluid.dx to 0.003 m or less, or set "
          "thin_wall = true", "Scene.bodies[0].thickness"),
     case("an elastic plate with E = 0", "plate", ("bodies[0].E", 0.0), "bodies[0].E",
-         "0.0 [Pa] is out of range; give a number [Pa] > 0 (Young's modulus)", "ElasticPlate.E"),
+         "0.0 [Pa] is out of range; give a number [Pa] > 0 and <= 1.2e+12 (Young's modulus)", "ElasticPlate.E"),
     case("an elastic plate of negative density", "plate", ("bodies[0].density", -2500.0), "bodies[0].density",
          "-2500.0 [kg/m^3] is out of range; give a number [kg/m^3] > 0", "ElasticPlate.density"),
     case("a 2-D elastic plate with a width", "plate", ("bodies[0].width", 0.1), "bodies[0].width",
@@ -779,6 +779,102 @@ CASES = [
     case("a hanging elastic plate through the floor", "plate", ("bodies[0].direction", "down"), "bodies[0].base",
          "z = 0 m: a hanging plate 0.08 m long clamped there reaches z = -0.08 m, below the tank's floor at z = 0 m; "
          "give base z >= 0.08 or a shorter length", "Scene.bodies[0].base"),
+    # -- physics: what cannot happen (cosim.scene.plausible, cosim.scene.limits)
+    case("fairleads given in world coordinates", "analytic",
+         (("bodies[0].fairleads", {"left": [2.0, -0.5], "right": [4.0, -0.5]}), ("moorings.lines[0].EA", 1e7),
+          ("moorings.lines[1].EA", 1e7)), "bodies[0].fairleads.left",
+         "(2, -0.5) m is 2.062 m from the body's centre, beyond 1.677 m (1.5 times its bounding radius 1.118 m): a "
+         "fairlead lies on or near the hull, in the body's frame (from its centre), not in the world's; if (2, -0.5) "
+         "is where it is in the world, give (-1, -0.5)", "Scene.bodies[0].fairleads.left"),
+    case("a turned body's corner below the floor", "tank3d",
+         ("bodies", [{"shape": "box", "name": "box", "size": [0.2, 0.2, 0.1], "pos": [0.5, 0.25, 0.08],
+                      "density": 500.0, "euler": [30.0, 30.0, 0.0]}]), "bodies[0].pos",
+         "the body (turned by euler = (30, 30, 0) deg) reaches -0.0508013 .. 0.210801 m along z, outside the "
+         "domain's 0 .. 0.6 m", "Scene.bodies[0].pos"),
+    case("a 2-D body turned out of its plane", "analytic", ("bodies[0].euler", [10.0, 0.0, 0.0]), "bodies[0].euler",
+         "[10.0, 0.0, 0.0]: a 2-D body turns in the x-z plane, about y only (its 1 m depth stays along y); give [0, "
+         "angle, 0]", "Scene.bodies[0].euler"),
+    case("a 2-D cylinder turned", "analytic", ("bodies[1].euler", [0.0, 30.0, 0.0]), "bodies[1].euler",
+         "a 2-D cylinder is a circle in the x-z plane: turned, it is the same circle; leave euler out",
+         "Scene.bodies[1].euler"),
+    case("a body against a turned one", "analytic", (("bodies[0].euler", [0.0, 45.0, 0.0]), ("bodies[1].pos", [4.1, 0.0])),
+         "bodies[1].pos", "body 'buoy' (x 3.8 .. 4.4 m, z -0.3 .. 0.3 m) overlaps body 'box' (turned by euler = (0, "
+         "45, 0) deg) (bodies[0], x 1.939 .. 4.061 m, z -1.061 .. 1.061 m) at the start", "Scene.bodies[1].pos"),
+    case("a floating body without gravity", "tank3d", ("world.gravity", 0.0), "world.gravity",
+         "0 m/s^2: body 'ball' (bodies[0]) is placed floating, but without gravity there is no buoyancy (nor weight) "
+         "to float it", "Scene.world.gravity"),
+    case("gravity beyond 100 g", "analytic", ("world.gravity", 1e4), "world.gravity",
+         "10000 [m/s^2] is beyond 980.665 [m/s^2], 100 g, the most a geotechnical centrifuge applies to a model",
+         "World.gravity"),
+    case("a body denser than osmium", "analytic", ("bodies[0].density", 1e308), "bodies[0].density",
+         "1e+308 [kg/m^3] is beyond 22590 [kg/m^3], osmium's, the densest element", "Box.density"),
+    case("a body's mass denser than osmium", "analytic", ("bodies[1].mass", 1e7), "bodies[1].mass",
+         "1e+07 kg in 0.2827 m^3 per metre of depth is a mean density of 3.537e+07 kg/m^3, beyond 22590",
+         "Scene.bodies[1].mass"),
+    case("water denser than osmium", "analytic", ("fluid.rho", 1e5), "fluid.rho",
+         "100000 [kg/m^3] is beyond 22590 [kg/m^3]", "Analytic.rho"),
+    case("an elastic plate with E = 1e30", "plate", ("bodies[0].E", 1e30), "bodies[0].E",
+         "1e+30 [Pa] is beyond 1.2e+12 [Pa], diamond's, the stiffest material", "ElasticPlate.E"),
+    case("a line weight of 1e308", "analytic", ("moorings.lines[0].weight", 1e308), "moorings.lines[0].weight",
+         "1e+308 [N/m] is beyond 100000 [N/m], ten times the heaviest offshore chain's", "Line.weight"),
+    case("a line stiffer than any tendon", "analytic", ("moorings.lines[1].EA", 1e13), "moorings.lines[1].EA",
+         "1e+13 [N] is beyond 1e+11 [N], four times a tension-leg platform's steel tendon", "Line.EA"),
+    case("a line heavier in water than in air", "analytic", ("moorings.lines[0].mass_per_length", 1.0),
+         "moorings.lines[0].weight", "50 N/m is more than the line weighs in air, mass_per_length x g = 1 x 9.81 = "
+         "9.81 N/m", "Scene.moorings.lines[0].weight"),
+    case("an elastic line's anchor in millimetres", "analytic",
+         (("moorings.lines[0].anchor", [-20000.0, -10000.0]), ("moorings.lines[0].EA", 1e7)),
+         "moorings.lines[0].length", "25 m is shorter than the straight distance 2.236e+04 m from the anchor (-2e+04, "
+         "-1e+04) m to the fairlead 'box.left' at the start: the elastic line would start stretched by 8.93e+04 %",
+         "Scene.moorings.lines[0].length"),
+    case("an elastic line stretched beyond 30 %", "analytic",
+         (("moorings.lines[1].length", 14.0), ("moorings.lines[1].EA", 1e7)), "moorings.lines[1].length",
+         "14 m is shorter than the straight distance 18.61 m from the anchor (20, -10) m to the fairlead 'box.right' at "
+         "the start: the elastic line would start stretched by 32.9 %, beyond 30 %", "Scene.moorings.lines[1].length"),
+    case("an MJCF line too short to reach", "mjcf", ("moorings.lines[0].length", 5.0), "moorings.lines[0].length",
+         "5 m is shorter than the straight distance 10.25 m from the anchor (0, 0, -10) m to the fairlead 'float.top' at "
+         "the start: an inextensible line cannot reach", "Scene.moorings.lines[0].length"),
+    case("a floating body's elastic line stretched beyond 30 %", "flume",
+         (("moorings.lines[0].anchor", [0.2, 0.0]), ("moorings.lines[0].length", 0.5), ("moorings.lines[0].EA", 1e5)),
+         "moorings.lines[0].length", "0.5 m is shorter than the straight distance 0.922 m from the anchor (0.2, 0) m "
+         "to the fairlead 'box.left' at the nearest it comes, over every draft: the elastic line would start "
+         "stretched by 84.4 %", "Scene.moorings.lines[0].length"),
+    case("a shake beyond 5 g", "tank3d", ("base_motion.amplitude", 2.0), "base_motion.amplitude",
+         "the shaking (2 m at 1 s: amplitude (2 pi / period)^2) peaks at 78.96 m/s^2 (8.05 g), beyond 49.03 m/s^2 (5 g)",
+         "Scene.base_motion.amplitude"),
+    case("a shake's acceleration beyond 5 g", "tank3d",
+         ("base_motion", {"kind": "harmonic", "period": 1.0, "direction": [1.0, 0.0, 0.0], "acceleration": 100.0}),
+         "base_motion.acceleration", "the shaking peaks at 100 m/s^2 (10.2 g), beyond 49.03 m/s^2 (5 g)",
+         "Scene.base_motion.acceleration"),
+    case("a roll beyond 5 g", "tank2d", ("base_motion", {"kind": "roll", "amplitude": 30.0, "period": 0.5,
+                                                         "point": [0.5, 0.0]}), "base_motion.amplitude",
+         "the roll (30 deg at 0.5 s, at the tank's corner 0.781 m from the axis) peaks at", "Scene.base_motion.amplitude"),
+    case("a table of motion scaled beyond 5 g", "tank2d", ("base_motion.scale", 1000.0), "base_motion.scale",
+         "the table's motion (times scale = 1000) peaks at", "Scene.base_motion.scale"),
+    case("an earthquake scaled to 1e8 g", "tank2d", ("base_motion", {"kind": "earthquake", "file": "quake.AT2",
+                                                                     "scale": 1e8}), "base_motion.scale",
+         "the record times scale = 1e+08 peaks at 1.961e+07 m/s^2 (2e+06 g), beyond 49.03 m/s^2 (5 g), more than the "
+         "strongest shaking tables and recorded earthquakes reach (about 3-4 g); give a scale up to 250", "Scene.base_motion.scale"),
+    case("a ground motion scaled beyond 5 g", "tank2d",
+         ("base_motion", {"kind": "ground_motion", "hold": True, "components": [
+             {"file": "quake.AT2", "direction": [1.0, 0.0], "scale": 1000.0}]}), "base_motion.components[0].scale",
+         "record 0 times its scales (1 x 1000) peaks at 196.1 m/s^2 (20 g)", "Scene.base_motion.components[0].scale"),
+    case("two ground-motion records along one axis", "tank2d",
+         ("base_motion", {"kind": "ground_motion", "hold": True, "components": [
+             {"file": "quake.AT2", "direction": [1.0, 0.0]}, {"file": "quake.AT2", "direction": [2.0, 0.0]}]}),
+         "base_motion.components[1].direction", "(2, 0) is along the same axis as base_motion.components[0].direction "
+         "(1, 0) (the angle between them is 0 deg): each record is the ground's motion along its own axis",
+         "Scene.base_motion.components[1].direction"),
+    case("ground-motion records not perpendicular", "tank2d",
+         ("base_motion", {"kind": "ground_motion", "hold": True, "components": [
+             {"file": "quake.AT2", "direction": [1.0, 0.0]}, {"file": "quake.AT2", "direction": [1.0, 1.0]}]}),
+         "base_motion.components[1].direction", "(1, 1) is not perpendicular to base_motion.components[0].direction "
+         "(1, 0) (the angle between them is 45 deg)", "Scene.base_motion.components[1].direction"),
+    case("a paddle stroke beyond the flume", "flume", ("waves.period", 100.0), "waves.period",
+         "waves of 0.04 m at 100 s in 0.3 m of water need a paddle stroke of 3.64 m (linear wavemaker theory): the "
+         "paddle would sweep 1.82 m into the flume", "Scene.waves.period"),
+    case("a body in the paddle's sweep", "flume", ("bodies[0].pos", [0.11]), "bodies[0].pos",
+         "the body starts at x = 0.01 m, within the paddle's sweep", "Scene.bodies[0].pos"),
     # -- times and files
     case("plot_at before the run", "flume", ("world.plot_at", [2.5, -1.0]), "world.plot_at[1]",
          "-1.0 s lies before the run's start (0 s); give a time >= 0", "World.plot_at[1]"),
@@ -986,18 +1082,19 @@ BUILD_CASES = [
 @dataclass(frozen=True)
 class CliCase:
     id: str
-    args: tuple  # after `cosim run`; the output folder is the --out given (or out/)
+    args: tuple  # after `cosim COMMAND`; the output folder is the --out given (or out/)
     says: str  # a fragment of the message on stderr
     files: tuple = ()
     prepare: tuple = ()  # commands run first in the folder: ("cosim", ...) or ("python", ...)
+    command: str = "run"  # the cosim command: run, or study
 
     @property
     def out(self) -> str:
         return self.args[self.args.index("--out") + 1]
 
 
-def cli(id, args, says, files=None, prepare=()):
-    return CliCase(id, tuple(args), says, tuple((files or {}).items()), tuple(tuple(c) for c in prepare))
+def cli(id, args, says, files=None, prepare=(), command="run"):
+    return CliCase(id, tuple(args), says, tuple((files or {}).items()), tuple(tuple(c) for c in prepare), command)
 
 
 SCENE = {"scene.toml": BASES["analytic"]}
@@ -1034,6 +1131,14 @@ else:  # KEY=VALUE: one value of the checkpoint's meta changed, its checksum mad
     content["meta"][key] = float(value) if key == "t" else value
     checkpoint.write(PATH, content)
 '''}
+
+
+def study(id, args, says, vary="coupling.dt=0.01,0.005", metric="box.heave:max", files=None):
+    """A case of ``cosim study`` on the analytic base scene, run serially into out/."""
+    return cli(id, ["scene.toml", "--vary", vary, "--metric", metric, "--serial", "--out", "out", *args], says,
+               SCENE | (files or {}), command="study")
+
+
 FIRST = ("cosim", "run", "scene.toml", "--out", "out", "--set", "world.duration=0.1", "--quiet")
 RESUME = ["scene.toml", "--out", "out", "--resume", "--set", "world.duration=0.2"]
 CLI_CASES = [
@@ -1101,6 +1206,28 @@ CLI_CASES = [
     cli("an output folder under a regular file", ["scene.toml", "--out", "notes.txt/out"],
         "output folder 'notes.txt/out': 'notes.txt' is not a folder; give another --out",
         SCENE | {"notes.txt": "not a folder\n"}),
+    # -- cosim study: every spec checked before the first run
+    study("a study with --workers -1", ["--workers", "-1"], "--workers -1: give a whole number >= 1 (runs at once"),
+    study("a study with --workers 0", ["--workers", "0"], "--workers 0: give a whole number >= 1"),
+    study("a study with --threads 0", ["--threads", "0"], "--threads 0: give a whole number >= 1 (numba threads"),
+    study("a study's metric of a series the runs do not record", [], "--metric 'box.roll:max': the runs with "
+          "{'coupling.dt': 0.01} record no series 'box.roll'; they record box.surge, box.heave, box.pitch",
+          metric="box.roll:max"),
+    study("a study's metric of an unknown statistic", [], "--metric 'box.heave:median': unknown statistic 'median'; "
+          "choose from peak, max", metric="box.heave:median"),
+    study("a study's metric without a statistic", [], "--metric 'box.heave': give SERIES:STAT", metric="box.heave"),
+    study("a study's --vary without '='", [], "--vary 'coupling.dt': give KEY.PATH=V1,V2,...", vary="coupling.dt"),
+    study("a study varying a field that does not exist", [], "coupling.dtt: unknown key; did you mean 'dt'?",
+          vary="coupling.dtt=0.01,0.005"),
+    study("a study varying a field to a value it refuses", [], "coupling.dt: -0.01 [s] is out of range; give a "
+          "number [s] > 0", vary="coupling.dt=0.01,-0.01"),
+    study("a study with a value given twice", [], "--vary coupling.dt: the value 0.01 is given twice",
+          vary="coupling.dt=0.01,0.01"),
+    study("a study varying one field twice", ["--vary", "coupling.dt=0.002"], "--vary coupling.dt: given twice; give "
+          "all its values in one --vary"),
+    study("a study with a negative tolerance", ["--tol=-5%"], "--tol -0.05: give a relative tolerance > 0"),
+    study("a study whose reference file lacks a metric", ["--reference", "ref.json"], "--reference ref.json: no "
+          "reference value for box.heave:max", files={"ref.json": '{"box.surge:min": -0.5}\n'}),
 ]
 
 
@@ -1229,7 +1356,7 @@ def run_cli(c: CliCase) -> tuple[int, str, bool]:
             r = _cosim(args, tmp)
             assert r.returncode == 0, f"{' '.join(args)}: {r.stderr[-2000:]}"
         before = _listing(Path(tmp, c.out))
-        r = _cosim(("cosim", "run") + c.args, tmp)
+        r = _cosim(("cosim", c.command) + c.args, tmp)
         assert not Path(tmp, "pwned").exists(), "the checkpoint's pickle ran"
         return r.returncode, r.stderr, _listing(Path(tmp, c.out)) == before
 
@@ -1237,7 +1364,7 @@ def run_cli(c: CliCase) -> tuple[int, str, bool]:
 def cli_message(c: CliCase) -> str:
     rc, err, _ = run_cli(c)
     lines = err.strip().splitlines()
-    return lines[-1].removeprefix("cosim run: error: ") if lines else ""
+    return lines[-1].removeprefix(f"cosim {c.command}: error: ") if lines else ""
 
 
 # ------------------------------------------------------------------------ the tests
@@ -1315,12 +1442,12 @@ def test_refused_when_built_before_anything_is_written(c, tmp_path):
 
 @pytest.mark.parametrize("c", CLI_CASES, ids=[c.id for c in CLI_CASES])
 def test_refused_by_the_command_line(c):
-    """``cosim run`` exits with status 2, the last line of stderr says what is wrong (no
-    traceback), no output folder is made and none that was there is written into."""
+    """``cosim run`` (``cosim study``) exits with status 2, the last line of stderr says what
+    is wrong (no traceback), no output folder is made and none that was there is written into."""
     rc, err, untouched = run_cli(c)
     assert rc == 2, err
     assert "Traceback" not in err, err
-    assert err.strip().splitlines()[-1] == f"cosim run: error: {cli_message(c)}"
+    assert err.strip().splitlines()[-1] == f"cosim {c.command}: error: {cli_message(c)}"
     assert c.says in cli_message(c), err
     assert untouched
 
@@ -1433,7 +1560,8 @@ def render() -> str:
             k += 1
             lines.append(f"| {k} | {_cell(c.id)} | {c.base} | {_cell(describe(c))} | {_code(c.path)} | "
                          f"{_text(build_error(c, Path(tmp) / c.id).problem)} |")
-    lines += ["", "## The command line", "", f"{len(CLI_CASES)} inputs: `cosim run ARGS` in a folder holding the "
+    lines += ["", "## The command line", "", f"{len(CLI_CASES)} inputs: `cosim run ARGS` (or `cosim study ARGS`) "
+              "in a folder holding the "
               "files (and [edit_checkpoint.py](#edit_checkpointpy)), after the commands that make the case's "
               "checkpoint; it exits with status 2, prints the message on stderr, makes no output folder (the "
               "`--out` given) and writes nothing into one that is there. A checkpoint is never run: the pickle "
@@ -1441,7 +1569,8 @@ def render() -> str:
               "| # | case | command | files | message |", "|---|---|---|---|---|"]
     for c in CLI_CASES:
         k += 1
-        lines.append(f"| {k} | {_cell(c.id)} | {_code('cosim run ' + ' '.join(c.args))} | {_cell(cli_files(c))} | "
+        lines.append(f"| {k} | {_cell(c.id)} | {_code(f'cosim {c.command} ' + ' '.join(c.args))} | "
+                     f"{_cell(cli_files(c))} | "
                      f"{_text(cli_message(c))} |")
     lines += ["", "## Base scenes", ""]
     for name, text in BASES.items():

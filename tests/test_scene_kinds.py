@@ -125,6 +125,34 @@ def test_mjcf_bodies(tmp_path):
     assert np.abs(r["float.heave"]).max() < 1e-6  # half its volume under water: afloat at rest
 
 
+def test_an_mjcf_models_own_gravity_is_replaced_with_its_lines_too(tmp_path):
+    """The world's gravity replaces the file's (docs/scenes.md), also once an inextensible
+    line's tether has recompiled the model, and the build warns that it was replaced: the
+    float on its line moves exactly as it does from a file that has the world's gravity."""
+    from cosim.scene import Line, Moorings
+
+    def run(g_file):
+        xml = tmp_path / f"m{g_file}.xml"
+        xml.write_text(f'<mujoco><option gravity="0 0 {g_file}"/><worldbody><body name="float" pos="0 0 0">'
+                       '<freejoint/><geom type="box" size="0.5 0.5 0.5" density="500"/>'
+                       '<site name="top" pos="0 0 0.5"/></body></worldbody></mujoco>')
+        scene = Scene(world=World(dim=3, duration=0.5, sample_every=0.1), fluid=Analytic(level=0.0),
+                      bodies=[MJCF(file=str(xml))],
+                      moorings=Moorings(lines=[Line("float.top", anchor=(8.0, 0.0, -10.0), length=15.0, weight=5.0)]))
+        b = build(scene, tmp_path)
+        assert b.bodies.tethers  # the model was recompiled with the line's length constraint
+        assert tuple(b.bodies.model.opt.gravity) == (0.0, 0.0, -9.81)
+        return b.warnings, scene.run(tmp_path / f"run{g_file}", progress=False)
+
+    warned, r = run(-5)
+    assert any("own gravity [0.0, 0.0, -5.0] m/s^2 is replaced by the world's" in w for w in warned)
+    assert any("is replaced by the world's" in w for w in r.summary["warnings"])
+    same, ref = run(-9.81)
+    assert not same
+    np.testing.assert_array_equal(r["float.heave"], ref["float.heave"])
+    assert np.abs(r["float.heave"]).max() > 1e-3  # the line's weight pulls it down: a test that can fail
+
+
 def test_analytic_added_mass_slows_the_heave(tmp_path):
     """Added mass in the analytic fluid goes into the body's inertia: the heave period grows
     as sqrt((m + m_a) / m) (the hydrostatic stiffness is the same)."""

@@ -2,9 +2,12 @@
 shape hypothesis can build, and the reading side (files, ``--set``) does what it says.
 
 The strategy :func:`scenes` builds only VALID scenes (it keeps to what ``cosim.scene.checks``
-accepts: bodies inside the domain's box, clear of its walls and of each other, dx fine
-enough for the depth, waves below the breaking limit, names that exist, fairleads above
-their anchors with lines that reach them, pressure patches on a wall, files that read),
+and ``cosim.scene.plausible`` accept: bodies inside the domain's box, clear of its walls and
+of each other, no denser than osmium, dx fine enough for the depth, waves below the
+breaking limit and a paddle stroke the flume holds, base motion within 5 g, names that
+exist, fairleads on their body's hull and above their anchors with lines that reach them,
+unstretched, and no heavier in water than in air, pressure patches on a wall, files that
+read),
 then the property is: written as TOML and read back, the scene is the same, field for
 field, and written again, the text is the same. Scenes are only constructed, never run.
 """
@@ -27,8 +30,12 @@ from cosim.errors import InputError
 from cosim.scene import (MJCF, SPH, Analytic, Beach, Block, Box, Coupling, Cylinder, CylinderTank, Earthquake, Flap,
                          Flume, InclinedTank, Line, Moorings, NoFluid, PaddleRecord, Patch, Piston, PolygonTank,
                          Probes, Roll, Scene, SceneError, Shake, Sphere, TableMotion, Tank, World)
+from cosim.scene.limits import (FAIRLEAD_REACH, MAX_BASE_ACCELERATION, MAX_DENSITY, MAX_LINE_EA, MAX_LINE_WEIGHT,
+                                PADDLE_SHARE)
+from cosim.scene.plausible import bounding_radius
+from cosim.scene.placement import volume_and_height
 from cosim.scene.toml_io import from_dict, parse_value, read_toml, to_dict, to_toml, toml_value, with_values
-from fluid.wavemaker import wavenumber
+from fluid.wavemaker import RegularWavemaker, wavenumber
 
 #: files for the fields that name one, valid as the checks read them (scenes here are never
 #: run): a table of time and 9 columns of values, all at rest; a PEER .AT2 record
@@ -108,7 +115,7 @@ def sph_fluids(draw, dx_max):
     kw = {"dx": draw(num(min(1e-4, dx_max / 2), dx_max, open_lo=True))}
     options = {
         "setup": st.sampled_from(["auto", "still", "waves", "sloshing", "impact", "defaults"]),
-        "rho0": pos_num(1e5),
+        "rho0": pos_num(MAX_DENSITY),
         "c0_factor": num(10.0, 1e3),
         "h_coef": num(1.0, 3.0),
         "kernel": st.sampled_from(["wendland", "cubic"]),
@@ -232,6 +239,13 @@ def bodies(draw, dim, names, box, can_float):
             geo, half = {"radius": r}, [r] * dim
         floating = can_float and draw(st.booleans())
         n = dim - 1 if floating else dim
+        shaped = {"box": Box, "cylinder": Cylinder, "sphere": Sphere}[shape](name=name, pos=[0.0] * dim, mass=1.0,
+                                                                              **geo)
+        radius = bounding_radius(shaped, dim)
+        turned = not floating and not (dim == 2 and shape == "cylinder") and draw(st.integers(0, 3)) == 0
+        if turned and box is not None:  # a turned body fits its slot by its bounding sphere
+            turned = all(2 * radius < 0.99 * e for e in ext)
+            half = [radius] * dim if turned else half
         if box is not None:
             margin = [1e-6 * e for e in ext]
             pos = [draw(between(slot[0][k] + half[k] + margin[k], slot[1][k] - half[k] - margin[k]))
@@ -241,23 +255,24 @@ def bodies(draw, dim, names, box, can_float):
             pos[0] = draw(num(-50.0, 50.0)) + 300.0 * j
         kw = dict(name=name, pos=pos, **geo)
         if draw(st.booleans()):
-            kw["density"] = draw(pos_num(1e5))
-        else:
-            kw["mass"] = draw(pos_num(1e9))
+            kw["density"] = draw(pos_num(MAX_DENSITY))
+        else:  # no denser than osmium on average
+            kw["mass"] = draw(between(1e-9, 1.0)) * MAX_DENSITY * volume_and_height(shaped, dim)[0]
         if floating:
             kw["place"] = "floating"
-        elif draw(st.booleans()):
+        elif draw(st.booleans()) or turned:
             kw["place"] = "given"
-            if draw(st.integers(0, 3)) == 0:
-                kw["euler"] = draw(vec(3, -360.0, 360.0))
-        if draw(st.booleans()):
-            kw["fairleads"] = draw(st.dictionaries(NAMES, vec(dim, -10.0, 10.0), max_size=3))
+            if turned:  # in 2-D about y only
+                kw["euler"] = draw(vec(3, -360.0, 360.0)) if dim == 3 else (0.0, draw(num(-360.0, 360.0)), 0.0)
+        if draw(st.booleans()):  # on or near the hull
+            reach = FAIRLEAD_REACH * radius / math.sqrt(dim)
+            kw["fairleads"] = draw(st.dictionaries(NAMES, vec(dim, -reach, reach), max_size=3))
         out.append({"box": Box, "cylinder": Cylinder, "sphere": Sphere}[shape](**kw))
     return out
 
 
 @st.composite
-def moorings(draw, dim, body_list):
+def moorings(draw, dim, body_list, g):
     points = [f"{b.name}.{f}" for b in body_list for f in b.fairleads]
     if not points or not draw(st.booleans()):
         return None
@@ -269,14 +284,20 @@ def moorings(draw, dim, body_list):
     for fl in chosen:
         anchor, length = list(draw(vec(dim))), draw(pos_num(1e4))
         body = by_name[fl.split(".")[0]]
+        reach = math.hypot(*body.fairleads[fl.split(".")[1]])
         if body.place != "floating":  # the fairlead above the anchor's seabed, the line long enough, turned or not
-            reach = math.hypot(*body.fairleads[fl.split(".")[1]])
             anchor[-1] = min(anchor[-1], body.pos[-1] - reach)
             length = max(length, math.dist(anchor, body.pos) + reach)
+        else:  # long enough at any draft: not stretched where the fairlead comes nearest
+            height = volume_and_height(body, dim)[1]
+            length = max(length, math.dist(anchor[:-1], body.pos) + abs(anchor[-1]) + 200.0 + height + reach)
         kw = dict(fairlead=fl, anchor=anchor, length=length, weight=draw(pos_num(1e4)))
-        for key, hi in (("EA", 1e12), ("mass_per_length", 1e4), ("diameter", 10.0)):
+        for key, hi in (("EA", MAX_LINE_EA), ("mass_per_length", 1e4), ("diameter", 10.0)):
             if dynamic or draw(st.booleans()):
                 kw[key] = draw(pos_num(hi))
+        if "mass_per_length" in kw and g > 0:  # no heavier in water than in air
+            kw["mass_per_length"] = max(kw["mass_per_length"], 1e-6)  # its weight in air not below the floats
+            kw["weight"] = draw(between(1e-3, 1.0)) * min(kw["mass_per_length"] * g, MAX_LINE_WEIGHT)
         if draw(st.booleans()):
             name = draw(LABELS)
             if name not in labels:  # a line's label (its name, or its fairlead) is its own
@@ -344,7 +365,8 @@ def couplings(draw, sph, dt=None):
 def worlds(draw, dim, need_gravity):
     duration = draw(num(1e-3, 1e4))
     plot_at = draw(st.lists(between(0.0, duration), max_size=3))
-    return World(dim=dim, duration=duration, gravity=draw(num(1.0, 30.0) if need_gravity else num(0.0, 30.0)),
+    gravity = num(1.0, 30.0) if need_gravity else st.one_of(st.just(0.0), num(0.1, 30.0))  # none, or a world's
+    return World(dim=dim, duration=duration, gravity=draw(gravity),
                  sample_every=draw(between(1e-6 * duration, duration)),
                  snapshot_every=draw(num(0.0, 1e3)), checkpoint_every=draw(num(0.0, 1e3)), plot_at=plot_at,
                  plot_color=draw(st.sampled_from(["velocity", "pressure"])))
@@ -359,19 +381,32 @@ def waves_for(draw, flume, gravity, kind):
     period = draw(num(0.3, 10.0))
     wavelength = 2 * math.pi / wavenumber(period, flume.depth, gravity)
     height = draw(between(1e-3, 0.9)) * wavelength / 7
+    wm = RegularWavemaker(kind, height, period, flume.depth, 1.0, gravity)
+    stroke = wm.stroke if kind == "piston" else wm.stroke * flume.height / wm.depth
+    height *= min(1.0, 0.99 * PADDLE_SHARE * flume.length / (0.5 * stroke))  # the stroke is linear in the height
     return (Piston if kind == "piston" else Flap)(height=height, period=period, ramp=draw(num(0.0, 10.0)))
 
 
 @st.composite
-def base_motions(draw, dim):
+def base_motions(draw, dim, box):
+    """A tank's base motion, peaking within 5 g (``box``: the tank's inner box, for a roll's arm)."""
     kind = draw(st.sampled_from(["shake", "roll", "table", "earthquake"]))
+    top = 0.99 * MAX_BASE_ACCELERATION
     if kind == "shake":
-        kw = dict(period=draw(pos_num(100.0)), direction=draw(nonzero_vec(dim)), ramp=draw(num(0.0, 10.0)),
+        period = draw(pos_num(100.0))
+        kw = dict(period=period, direction=draw(nonzero_vec(dim)), ramp=draw(num(0.0, 10.0)),
                   stop=draw(maybe(pos_num(100.0))))
-        kw[draw(st.sampled_from(["amplitude", "acceleration"]))] = draw(num(-10.0, 10.0))
+        if draw(st.booleans()):
+            w = 2 * math.pi / period
+            kw["amplitude"] = draw(num(-10.0, 10.0)) * min(1.0, top / 10.0 / (w * w))
+        else:
+            kw["acceleration"] = draw(num(-top, top))
         return Shake(**kw)
     if kind == "roll":
-        return Roll(amplitude=draw(num(-45.0, 45.0)), period=draw(pos_num(100.0)), point=draw(vec(dim)),
+        amplitude, point = draw(num(-45.0, 45.0)), draw(vec(dim))
+        arm = max(math.dist([box[m >> k & 1][k] for k in range(dim)], point) for m in range(2 ** dim))
+        fastest = 2 * math.pi * math.sqrt(math.radians(abs(amplitude)) * arm / top)
+        return Roll(amplitude=amplitude, period=max(draw(pos_num(100.0)), fastest), point=point,
                     axis=draw(nonzero_vec(3)) if dim == 3 else None, ramp=draw(num(0.0, 10.0)))
     if kind == "table":
         return TableMotion(file=str(TABLE),
@@ -403,10 +438,15 @@ def scenes(draw, dim=None, fluid_kind=None, domain_kind=None):
         if isinstance(domain, Flume):
             waves = draw(st.sampled_from([None, "piston", "flap", "record"]))
         elif draw(st.booleans()):
-            base = draw(base_motions(dim))
+            base = draw(base_motions(dim, box))
     world = draw(worlds(dim, need_gravity=bool(waves)))
     if waves:
-        kw["waves"] = draw(waves_for(kw["domain"], world.gravity, waves))
+        kw["waves"] = w = draw(waves_for(kw["domain"], world.gravity, waves))
+        if waves in ("piston", "flap"):  # the bodies beyond the paddle's sweep
+            d = kw["domain"]
+            wm = RegularWavemaker(waves, w.height, w.period, d.depth, 1.0, world.gravity)
+            half = 0.5 * (wm.stroke if waves == "piston" else wm.stroke * d.height / wm.depth)
+            clear = ([max(clear[0][0], 1.01 * half)] + list(clear[0][1:]), clear[1])
     if base is not None:
         kw["base_motion"] = base
 
@@ -417,21 +457,26 @@ def scenes(draw, dim=None, fluid_kind=None, domain_kind=None):
     else:
         n = draw(st.integers(0 if fluid_kind == "sph" else 1, 3))
         names = draw(st.lists(NAMES, min_size=n, max_size=n, unique=True))
-        body_list = draw(bodies(dim, names, clear if box else None, can_float=fluid_kind != "none"))
+        can_float = fluid_kind != "none" and world.gravity > 0  # no buoyancy without gravity
+        body_list = draw(bodies(dim, names, clear if box else None, can_float=can_float))
     kw["bodies"] = body_list
     if fluid_kind == "analytic":
         rows = st.dictionaries(st.sampled_from(names), vec(6, 0.0, 1e6), max_size=len(names)) if names else st.just({})
-        kw["fluid"] = Analytic(rho=draw(pos_num(1e5)), level=draw(num(-100.0, 100.0)),
+        kw["fluid"] = Analytic(rho=draw(pos_num(MAX_DENSITY)), level=draw(num(-100.0, 100.0)),
                                linear_damping=draw(rows), quadratic_damping=draw(rows))
     elif fluid_kind == "none" and draw(st.booleans()):
         kw["fluid"] = NoFluid()
-    if base is not None:  # mooring lines in a moving tank are refused (their anchors are fixed)
-        pass
+    if base is not None:
+        pass  # a moving tank takes no mooring lines (their anchors would not move with it)
     elif not mjcf:
-        kw["moorings"] = draw(moorings(dim, body_list))
+        kw["moorings"] = draw(moorings(dim, body_list, world.gravity))
     elif names:
-        lines = [Line(fairlead=f"{n}.s{n}", anchor=draw(vec(dim)), length=draw(pos_num(1e3)), weight=1.0)
-                 for n in names]
+        lines = []
+        for k, n in enumerate(names):  # long enough to reach the site, at (3 k, 0, 0)
+            anchor = draw(vec(dim))
+            site = (3.0 * k, 0.0, 0.0)[:dim] if dim == 3 else (3.0 * k, 0.0)
+            lines.append(Line(fairlead=f"{n}.s{n}", anchor=anchor, weight=1.0,
+                              length=max(draw(pos_num(1e3)), math.dist(anchor, site) * (1 + 1e-9))))
         kw["moorings"] = Moorings(lines=lines)
     kw["probes"] = draw(probes(dim, fluid_kind == "sph", names, box, kw.get("domain"),
                                kw["fluid"].dx if fluid_kind == "sph" else None))
@@ -593,7 +638,7 @@ def test_set_assignments():
                           "left": [-0.5, -0.25], "right": [0.5, -0.25]}}]})
     new = with_values(scene, ["fluid.dx=0.01", "moorings.model=moordyn", "probes.gauges=[0.5, 1.0]",
                               "bodies[0].density=600", "moorings.lines[0].EA=1e6", "moorings.lines[1].EA = 2e6",
-                              "moorings.lines[0].mass_per_length=1", "moorings.lines[1].mass_per_length=1",
+                              "moorings.lines[0].mass_per_length=6", "moorings.lines[1].mass_per_length=6",
                               "moorings.lines[0].diameter=0.01", "moorings.lines[1].diameter=0.01",
                               "world.plot_at=[1, 2.5]", "name=my_scene"])
     assert new.fluid.dx == 0.01 and isinstance(new.fluid.dx, float)

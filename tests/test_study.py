@@ -1,6 +1,7 @@
 """cosim study: metrics against closed forms, Richardson extrapolation recovering a known
 order, a serial study of the moored box whose coupling step converges at second order,
-its cache, a failed run as a row, and the same study on a local Dask cluster."""
+its cache, a failed run as a row, the same study on a local Dask cluster, and every spec
+checked before the first run (the series a scene records known from the scene alone)."""
 
 import json
 import math
@@ -17,6 +18,8 @@ from cosim.scene import Scene
 from cosim.study import _richardson, pareto_front, run_study
 from cosim.study import metrics as M
 from cosim.study import sweep
+from cosim.scene.build import build
+from cosim.scene.probes import groups, series_names
 
 ROOT = Path(__file__).resolve().parents[1]
 BOX = ROOT / "examples" / "moored_box.toml"
@@ -146,3 +149,51 @@ def test_cli_study_on_dask(tmp_path):
     a, b = (r["metrics"]["box.left.tension:max"] for r in js["rows"])
     assert a == pytest.approx(b, rel=1e-9)  # the FMU is the catenary law compiled
     assert js["recommendation"]["case"] is not None and "cheapest within 0.01" in out.stdout
+
+
+# ------------------------------------------------------------------------ specs checked before any run
+PLATE_PROBES = ["probes.gauges=[0.4]", "probes.energy=true",
+                "probes.pressure=[{ name = \"wall\", centre = [0.584, 0.05], normal = [-1.0, 0.0], size = 0.01 }]"]
+LINE_DYN = [f"moorings.lines[{i}].{k}={v}" for i in (0, 1)
+            for k, v in (("EA", 1e7), ("mass_per_length", 5.803665), ("diameter", 0.03))]  # 50 N/m submerged
+
+
+@pytest.mark.parametrize("base,changes", [
+    ("analytic", []), ("analytic", ["moorings.model=moordyn"] + LINE_DYN),
+    ("analytic", ["moorings.lines[0].EA=1e7", "moorings.lines[1].EA=1e7"]), ("analytic", ["moorings.model=fmu"]),
+    ("analytic", ["moorings.lines[0].break_load=1e6"]), ("analytic", ['probes.motion=["buoy"]', "probes.loads=false"]),
+    ("analytic", ["waves={ kind = \"linear\", height = 0.7, period = 20.0, depth = 20.0 }"]),
+    ("mjcf", []), ("plate", PLATE_PROBES),
+], ids=lambda v: v if isinstance(v, str) else ",".join(x.split("=")[0] for x in v) or "as given")
+def test_series_names_are_what_a_run_records(base, changes, tmp_path):
+    """The series a scene's run records, named from the scene alone (what ``cosim study``
+    checks its metrics against), are the columns of the built scene's probe groups, in order."""
+    from test_scene_errors import base_dict, folder
+
+    with folder():
+        scene = Scene.from_dict(base_dict(base)).with_values(changes)
+        built = build(scene, tmp_path)
+        assert series_names(scene) == [c for g in groups(scene, built) for c in g.columns]
+
+
+@pytest.mark.parametrize("kwargs,says", [
+    ({"workers": -1}, "--workers -1: give a whole number >= 1"),
+    ({"workers": 0}, "--workers 0: give a whole number >= 1"),
+    ({"threads": 0}, "--threads 0: give a whole number >= 1"),
+    ({"specs": ["box.roll:max"]}, "--metric 'box.roll:max': the runs with {'coupling.dt': 0.01} record no series "
+                                  "'box.roll'; they record box.surge, box.heave, box.pitch"),
+    ({"specs": ["box.heave:median"]}, "unknown statistic 'median'"),
+    ({"vary": {"coupling.dt": [0.01, 0.01]}}, "--vary coupling.dt: the value 0.01 is given twice"),
+    ({"vary": {"coupling.dtt": [0.01]}}, "coupling.dtt: unknown key; did you mean 'dt'?"),
+    ({"tol": -0.05}, "--tol -0.05: give a relative tolerance > 0"),
+    ({"reference": "ref.json"}, "--reference ref.json: no reference value for box.heave:max"),
+])
+def test_every_spec_is_checked_before_the_first_run(kwargs, says, tmp_path, monkeypatch):
+    """A bad spec is refused before anything runs or is written: the study's folder is not made."""
+    monkeypatch.chdir(tmp_path)
+    Path("ref.json").write_text('{"box.surge:min": 1.0}')
+    args = dict(vary={"coupling.dt": [0.01, 0.005]}, specs=["box.heave:max"], workers=None, threads=1) | kwargs
+    with pytest.raises(InputError) as e:
+        run_study(Scene.from_toml(BOX), args.pop("vary"), args.pop("specs"), tmp_path / "study", serial=True, **args)
+    assert says in str(e.value)
+    assert not (tmp_path / "study").exists()

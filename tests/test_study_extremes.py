@@ -10,7 +10,7 @@ from cosim.study.extremes import _outcome, levers, run_extremes, summary
 
 def test_levers_follow_what_the_scene_has():
     box = Box("b", size=(1.0, 1.0), density=500.0, pos=(0.0, 0.0), fairleads={"f": (0.0, -0.5)})
-    line = Line("b.f", anchor=(5.0, -3.0), length=6.0, weight=10.0, EA=1e6, mass_per_length=1.0, diameter=0.02)
+    line = Line("b.f", anchor=(5.0, -3.0), length=6.0, weight=6.7, EA=1e6, mass_per_length=1.0, diameter=0.02)
     analytic = Scene(fluid=Analytic(), bodies=[box], moorings=Moorings(model="moordyn", lines=[line]))
     assert [lv for lv, _ in levers(analytic)] == ["bodies[0].density", "moorings.lines[*].EA", "moorings.segments",
                                                    "coupling.dt"]

@@ -26,6 +26,25 @@ def test_deep_and_shallow_limits():
     assert height_to_stroke("flap", 1e-3) == pytest.approx(0.5e-3, rel=1e-5)  # H/S -> kd/2
 
 
+@pytest.mark.parametrize("kind", ["piston", "flap"])
+def test_deep_water_does_not_overflow(kind):
+    """Beyond kd = 20 the ratio is the same function written without overflow: it joins the
+    direct form there, and in water deep enough that sinh(2 kd) overflows (kd > 355) it is
+    the deep-water limit (2; flap 2 (kd - 1) / kd)."""
+    import math
+
+    direct = {"piston": lambda x: 2.0 * (math.cosh(2 * x) - 1.0) / (math.sinh(2 * x) + 2.0 * x),
+              "flap": lambda x: 4.0 * (math.sinh(x) / x) * (x * math.sinh(x) - math.cosh(x) + 1.0)
+              / (math.sinh(2 * x) + 2.0 * x)}[kind]
+    for kd in (20.0 + 1e-9, 25.0, 100.0):
+        assert height_to_stroke(kind, kd) == pytest.approx(direct(kd), rel=1e-13)
+    for kd in (400.0, 1e6):
+        limit = 2.0 if kind == "piston" else 2.0 * (kd - 1.0) / kd
+        assert height_to_stroke(kind, kd) == pytest.approx(limit, rel=1e-15)
+    wm = RegularWavemaker(kind, 0.01, 0.3, 30.0)  # kd = 1340: the stroke is H / 2
+    assert wm.k * wm.depth > 355 and wm.stroke == pytest.approx(0.01 / height_to_stroke(kind, wm.k * wm.depth))
+
+
 def test_transfer_functions_grow_with_kd_and_a_flap_makes_smaller_waves():
     """A flap moves less water at depth than a piston of the same stroke: its
     waves are smaller, by half in shallow water and alike in deep water."""

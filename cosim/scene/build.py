@@ -10,7 +10,8 @@ walls (and the base motion to the clamps of elastic plates), a standing plate be
 self-weight buckling load bent into its buckling mode, and fairlead sites named
 ``BODY.NAME`` in the MuJoCo model. What the user should know of the scene as built (a
 plate beyond its buckling load, an MJCF model's world parts that do not ride a moving
-tank) is logged as a warning and kept in :attr:`Built.warnings`.
+tank, an MJCF model's own gravity replaced by the world's) is logged as a warning and kept
+in :attr:`Built.warnings`.
 """
 
 from __future__ import annotations
@@ -370,13 +371,18 @@ def _mjcf_bodies(scene, level, rho):
     return xml, heights
 
 
-def _bodies(scene, level, rho):
+def _bodies(scene, level, rho, warnings):
     from bodies.mujoco_bodies import MujocoBodies
 
     if any(isinstance(b, MJCF) for b in scene.bodies):
         m = scene.bodies[0]
         bodies = MujocoBodies(m.file, bodies=list(m.bodies) or None)
-        bodies.model.opt.gravity[:] = (0.0, 0.0, -scene.world.gravity)  # one gravity for every participant
+        own, world = bodies.model.opt.gravity.tolist(), [0.0, 0.0, -scene.world.gravity]
+        if own != world:  # one gravity for every participant: the world's
+            warnings.append(f"bodies[0].file: the MJCF model's own gravity {own} m/s^2 is replaced by the world's, "
+                            f"{world} m/s^2 (world.gravity = {scene.world.gravity:g}): one gravity for every "
+                            f"participant")
+        bodies.set_gravity(world)
         return bodies, {}
     xml, heights = _mjcf_bodies(scene, level, rho)
     if not any(isinstance(b, ElasticPlate) for b in scene.bodies):
@@ -516,7 +522,7 @@ def build(scene, workdir: Path) -> Built:
     if scene.base_motion is not None:
         out.base_motion = _base_motion(scene)
     if scene.bodies:
-        out.bodies, out.start_heights = _bodies(scene, level, rho)
+        out.bodies, out.start_heights = _bodies(scene, level, rho, out.warnings)
         out.plates = plates(scene)
         _start_plates(scene, out)
         _warn_mjcf_world(scene, out)

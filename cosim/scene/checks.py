@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 
+from cosim.scene import plausible
 from cosim.scene.fields import SceneError, is_name
 from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, Box, CylinderTank, Cylinder, Earthquake, Flap, Flume,
                               ArchRib, ElasticPlate, GroundMotion, InclinedTank, IrregularWaves, NoFluid, PaddleRecord,
@@ -73,7 +74,10 @@ def check_scene(s) -> None:
     _check_fluid_and_domain(s, dim)
     _check_excitations(s, dim)
     mj = _check_bodies(s, dim)
+    plausible.check_bodies(s, dim)
+    plausible.check_excitations(s, dim)
     _check_moorings(s, dim, mj)
+    plausible.check_lines(s, dim, mj)
     _check_probes(s, dim, mj)
     if isinstance(s.fluid, Potential):
         _check_potential(s, dim)
@@ -328,6 +332,13 @@ def _check_bodies(s, dim):
             if isinstance(b, Cylinder) and (b.length is None) == (dim == 3):
                 raise SceneError(f"{key}.length", "a 3-D cylinder needs its length [m]" if dim == 3 else
                                  "a 2-D cylinder is a circle in the x-z plane, 1 m long; leave length out")
+            if dim == 2 and b.euler is not None:
+                if isinstance(b, Cylinder):
+                    raise SceneError(f"{key}.euler", "a 2-D cylinder is a circle in the x-z plane: turned, it is the "
+                                     "same circle; leave euler out")
+                if b.euler[0] != 0 or b.euler[2] != 0:
+                    raise SceneError(f"{key}.euler", f"{list(b.euler)}: a 2-D body turns in the x-z plane, about y "
+                                     f"only (its 1 m depth stays along y); give [0, angle, 0]")
             for name, p in b.fairleads.items():
                 _dim_vec(p, dim, f"{key}.fairleads.{name}")
         for n in names:
@@ -384,14 +395,47 @@ def _check_plate(s, dim, b, key) -> None:
 
 
 def _extent(b, dim):
-    """Half extents [m] of a builder body along (x, [y,] z), upright."""
+    """Half extents [m] of a builder body along the world's (x, [y,] z): of its box
+    upright, of the box round it when turned (``euler``: exact along each axis, the
+    support function of the turned box, or of the turned cylinder, ``L/2 |a_k| + R
+    sqrt(1 - a_k^2)`` for its axis ``a``). A 2-D cylinder is a circle in x-z, turned or not."""
     if isinstance(b, ElasticPlate):
         return [0.5 * b.thickness] + ([0.5 * b.width] if dim == 3 else []) + [0.5 * b.length]
+    if isinstance(b, Sphere) or (isinstance(b, Cylinder) and dim == 2):
+        return [b.radius] * dim
     if isinstance(b, Box):
-        return [0.5 * x for x in b.size]
-    if isinstance(b, Cylinder):
-        return [b.radius] * (dim - 1) + [b.radius if dim == 2 else 0.5 * b.length]
-    return [b.radius] * dim
+        half = [0.5 * x for x in b.size]
+    else:
+        half = [b.radius] * 2 + [0.5 * b.length]
+    if b.euler is None:
+        return half
+    r = _rotation(b.euler)
+    if isinstance(b, Box):
+        h3 = half if dim == 3 else [half[0], 0.5, half[1]]  # a 2-D body is 1 m thick along y
+        e = [sum(abs(r[k][j]) * h3[j] for j in range(3)) for k in range(3)]
+    else:
+        e = [half[2] * abs(r[k][2]) + half[0] * math.sqrt(max(0.0, 1.0 - r[k][2] ** 2)) for k in range(3)]
+    return e if dim == 3 else [e[0], e[2]]
+
+
+def _corners(b, dim):
+    """The corners [m] of a builder body's box (a cylinder's: of the box round it), turned
+    by its ``euler``, as world points (x, y, z); a 2-D body is 1 m thick along y."""
+    if isinstance(b, Box):
+        h3 = [0.5 * x for x in b.size] if dim == 3 else [0.5 * b.size[0], 0.5, 0.5 * b.size[1]]
+    elif isinstance(b, ElasticPlate):
+        h3 = [0.5 * b.thickness, 0.5 * (b.width or 1.0), 0.5 * b.length]
+    else:
+        h3 = [b.radius, b.radius, 0.5 * b.length if dim == 3 else b.radius]
+    c = list(b.pos) if dim == 3 else [b.pos[0], 0.0, b.pos[-1]]
+    r = _rotation(b.euler) if b.euler is not None else [[1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0]]
+    out = []
+    for sx in (-1, 1):
+        for sy in (-1, 1):
+            for sz in (-1, 1):
+                q = (sx * h3[0], sy * h3[1], sz * h3[2])
+                out.append([c[k] + sum(r[k][j] * q[j] for j in range(3)) for k in range(3)])
+    return out
 
 
 def _domain_box(d, dim):
@@ -415,16 +459,21 @@ def _check_inside(s, dim):
     """Bodies at a given pose lie within the domain's inner box (the walls' faces)."""
     lo, hi = _domain_box(s.domain, dim)
     for i, b in enumerate(s.bodies):
-        if isinstance(b, MJCF) or b.euler is not None:
+        if isinstance(b, MJCF):
             continue
         half = _extent(b, dim)
         n = dim - 1 if b.place == "floating" else dim
         for k in range(n):
             if b.pos[k] - half[k] < lo[k] or b.pos[k] + half[k] > hi[k]:
                 axis = "xyz"[k] if dim == 3 else "xz"[k]
-                raise SceneError(f"bodies[{i}].{_pos_key(b)}", f"the body reaches {b.pos[k] - half[k]:g} .. "
-                                 f"{b.pos[k] + half[k]:g} m along {axis}, outside the domain's {lo[k]:g} .. "
+                raise SceneError(f"bodies[{i}].{_pos_key(b)}", f"the body{_turned(b)} reaches {b.pos[k] - half[k]:g} "
+                                 f".. {b.pos[k] + half[k]:g} m along {axis}, outside the domain's {lo[k]:g} .. "
                                  f"{hi[k]:g} m; move it inside the tank")
+
+
+def _turned(b) -> str:
+    """For a message: how a builder body is turned (nothing when upright)."""
+    return "" if b.euler is None else f" (turned by euler = {_pt(b.euler)} deg)"
 
 
 def _check_moorings(s, dim, mj):
@@ -849,7 +898,8 @@ def _check_paddle_record(s) -> None:
 def _check_mjcf(b, key) -> dict:
     """Parse and compile the MJCF file as the builder will (MuJoCo, imported here only);
     the bodies named in ``bodies`` must be in it and free to move. Returns the names of
-    the file's bodies (``all``), of the coupled ones (``coupled``) and each site's body."""
+    the file's bodies (``all``), of the coupled ones (``coupled``), each site's body
+    (``sites``) and where each site starts in the world (``site_pos``, x, y, z [m])."""
     import xml.etree.ElementTree as ET
 
     try:
@@ -886,7 +936,10 @@ def _check_mjcf(b, key) -> dict:
                              f"give it a name of letters, digits, '_' and '-' in the file (name=\"...\")")
     sites = {mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_SITE, k): mujoco.mj_id2name(m, body, int(m.site_bodyid[k]))
              for k in range(m.nsite)}
-    return {"all": [x for x in every if x], "coupled": coupled, "sites": sites}
+    d = mujoco.MjData(m)
+    mujoco.mj_kinematics(m, d)
+    where = {mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_SITE, k): d.site_xpos[k].tolist() for k in range(m.nsite)}
+    return {"all": [x for x in every if x], "coupled": coupled, "sites": sites, "site_pos": where}
 
 
 def _check_mjcf_fairlead(mj, fairlead, key) -> None:
@@ -908,15 +961,24 @@ def _check_mjcf_fairlead(mj, fairlead, key) -> None:
 
 # ------------------------------------------------------------------------ bodies' geometry
 def _solid(b, dim, floating: bool):
-    """A builder body at its pose, upright: ("box", centre, half extents), ("ball",
-    centre, radius) or ("cyl", centre, radius, half length; axis along z). Floating: its
-    footprint (the height is not known before it is built)."""
+    """A builder body at its pose: ("box", centre, half extents), ("ball", centre, radius)
+    or ("cyl", centre, radius, half length; axis along z) upright; turned (``euler``),
+    ("hull", its section's outline in x-z) in 2-D, ("obb", centre, rotation, half
+    extents) in 3-D (a cylinder's: the box round it). Floating: its footprint (the height
+    is not known before it is built)."""
     half = _extent(b, dim)
     c = list(b.pos)
     if floating:
         if isinstance(b, Box) or dim == 2:
             return ("box", c, half[:dim - 1])
         return ("ball", c, b.radius)
+    if isinstance(b, Sphere) or (isinstance(b, Cylinder) and dim == 2):
+        return ("ball", c, b.radius)
+    if b.euler is not None:
+        if dim == 2:
+            return ("hull", _hull([(q[0], q[2]) for q in _corners(b, dim)]))
+        h = [0.5 * x for x in b.size] if isinstance(b, Box) else [b.radius, b.radius, 0.5 * b.length]
+        return ("obb", c, _rotation(b.euler), h)
     if isinstance(b, (Box, ElasticPlate)):
         return ("box", c, half)
     if isinstance(b, Cylinder) and dim == 3:
@@ -924,12 +986,69 @@ def _solid(b, dim, floating: bool):
     return ("ball", c, b.radius)
 
 
+def _convex(a):
+    """A solid of :func:`_solid` as a hull (2-D) or an oriented box (3-D; an upright
+    cylinder: the box round it); a ball stays a ball."""
+    if a[0] in ("ball", "hull", "obb"):
+        return a
+    if a[0] == "cyl":
+        return ("obb", a[1], [[1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0]], [a[2], a[2], a[3]])
+    c, h = a[1], a[2]
+    if len(c) == 2:
+        return ("hull", [(c[0] + sx * h[0], c[1] + sz * h[1]) for sx, sz in ((-1, -1), (1, -1), (1, 1), (-1, 1))])
+    return ("obb", c, [[1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0]], h)
+
+
+def _overlap_turned(a, b, tol) -> bool:
+    """Whether two solids overlap by more than ``tol`` [m] when one is turned: convex
+    outlines (2-D) or oriented boxes (3-D) by the separating axis theorem (Gottschalk et
+    al. 1996: two convex bodies are apart if and only if their projections on some axis
+    are; for boxes the 15 face normals and edge cross products suffice), a ball by its
+    centre's distance from the other."""
+    a, b = _convex(a), _convex(b)
+    if a[0] == "ball":
+        a, b = b, a
+    if b[0] == "ball":
+        p, r = b[1], b[2]
+        if a[0] == "hull":
+            return _sd_polygon(a[1], (p[0], p[-1])) < r - tol
+        c, R, h = a[1:]
+        q = [sum(R[k][j] * (p[k] - c[k]) for k in range(3)) for j in range(3)]  # p in the box's frame
+        return _dist_box(q, [0.0] * 3, h) < r - tol
+    if a[0] == "hull":
+        axes = [(e[1] - d[1], d[0] - e[0]) for poly in (a[1], b[1]) for d, e in zip(poly, poly[1:] + poly[:1])]
+
+        def spans(poly, n):
+            v = [n[0] * x + n[1] * z for x, z in poly]
+            return min(v), max(v)
+    else:
+        ra, rb = [[row[j] for row in a[2]] for j in range(3)], [[row[j] for row in b[2]] for j in range(3)]
+        axes = ra + rb + [[u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]]
+                          for u in ra for w in rb]
+
+        def spans(box, n):
+            mid = sum(x * y for x, y in zip(box[1], n))
+            reach = sum(abs(sum(box[2][k][j] * n[k] for k in range(3))) * box[3][j] for j in range(3))
+            return mid - reach, mid + reach
+    for n in axes:
+        norm = math.sqrt(sum(x * x for x in n))
+        if norm < 1e-12:
+            continue  # parallel edges: a face normal covers it
+        n = [x / norm for x in n]
+        (lo1, hi1), (lo2, hi2) = spans(a if a[0] == "obb" else a[1], n), spans(b if b[0] == "obb" else b[1], n)
+        if min(hi1, hi2) - max(lo1, lo2) <= tol:
+            return False
+    return True
+
+
 def _dist_box(p, c, h) -> float:
-    return math.sqrt(sum(max(abs(x - y) - e, 0.0) ** 2 for x, y, e in zip(p, c, h)))
+    return math.hypot(*(max(abs(x - y) - e, 0.0) for x, y, e in zip(p, c, h)))
 
 
 def _overlap(a, b, tol) -> bool:
     """Whether two solids (:func:`_solid`) overlap by more than ``tol`` [m]."""
+    if "hull" in (a[0], b[0]) or "obb" in (a[0], b[0]):
+        return _overlap_turned(a, b, tol)
     if a[0] > b[0]:
         a, b = b, a
     kinds = (a[0], b[0])
@@ -957,12 +1076,12 @@ def _bounds(b, dim, floating) -> str:
 
 
 def _check_overlaps(s, dim) -> None:
-    """Builder bodies at given poses do not start inside each other; two floating ones
-    do not share their footprint (their heights are computed later). Turned bodies
-    (euler) are left out."""
+    """Builder bodies at given poses do not start inside each other (turned ones by
+    :func:`_overlap_turned`); two floating ones do not share their footprint (their
+    heights are computed later)."""
     solids = []
     for j, b in enumerate(s.bodies):
-        if isinstance(b, MJCF) or b.euler is not None:
+        if isinstance(b, MJCF):
             continue
         floating = b.place == "floating"
         me = _solid(b, dim, floating)
@@ -972,8 +1091,8 @@ def _check_overlaps(s, dim) -> None:
             tol = 1e-9 * max(1.0, *(abs(x) for x in b.pos + a.pos))
             if _overlap(me, other, tol):
                 raise SceneError(f"bodies[{j}].{_pos_key(b)}",
-                                 f"body {b.name!r} ({_bounds(b, dim, floating)}) overlaps "
-                                 f"body {a.name!r} (bodies[{i}], {_bounds(a, dim, floating)}) at the start"
+                                 f"body {b.name!r}{_turned(b)} ({_bounds(b, dim, floating)}) overlaps "
+                                 f"body {a.name!r}{_turned(a)} (bodies[{i}], {_bounds(a, dim, floating)}) at the start"
                                  f"{': both float, so their footprints must be apart' if floating else ''}; move "
                                  f"one clear of the other")
         solids.append((j, b, me, floating))
@@ -986,47 +1105,74 @@ _WALLS = {Flume: "beach", InclinedTank: "inclined side", PolygonTank: "polygon's
 def _check_walls(s, dim) -> None:
     """Beyond the domain's box (:func:`_check_inside`): bodies at a given pose clear of a
     flume's beach, an inclined side and a polygon's walls; any body within a cylinder
-    tank's round wall."""
+    tank's round wall. A turned body by its turned box's corners (a 3-D cylinder's: of the
+    box round it, which errs towards refusing)."""
     d = s.domain
     if type(d) not in _WALLS or (isinstance(d, Flume) and d.beach is None):
         return
     wall = _WALLS[type(d)]
     for i, b in enumerate(s.bodies):
-        if isinstance(b, MJCF) or b.euler is not None:
+        if isinstance(b, MJCF):
             continue
         half, floating = _extent(b, dim), b.place == "floating"
         tol = 1e-9 * max(1.0, *(abs(x) for x in b.pos))
         fix = "move it (or make it smaller) so that it lies in the water"
+        round_ = isinstance(b, Sphere) or (isinstance(b, Cylinder) and dim == 2)
         if isinstance(d, CylinderTank):
             R, (x, y) = 0.5 * d.diameter, b.pos[:2]
-            far = (max(math.hypot(x + sx * half[0], y + sy * half[1]) for sx in (-1, 1) for sy in (-1, 1))
-                   if isinstance(b, (Box, ElasticPlate)) else math.hypot(x, y) + b.radius)
+            if floating:
+                far = (max(math.hypot(x + sx * half[0], y + sy * half[1]) for sx in (-1, 1) for sy in (-1, 1))
+                       if isinstance(b, Box) else math.hypot(x, y) + b.radius)
+            elif isinstance(b, Sphere) or (isinstance(b, Cylinder) and b.euler is None):
+                far = math.hypot(x, y) + b.radius
+            else:
+                far = max(math.hypot(q[0], q[1]) for q in _corners(b, dim))
             if far > R + tol:
                 raise SceneError(f"bodies[{i}].{_pos_key(b)}",
-                                 f"the body reaches {far:.4g} m from the tank's axis, beyond its "
+                                 f"the body{_turned(b)} reaches {far:.4g} m from the tank's axis, beyond its "
                                  f"radius {R:g} m, into the {wall}; {fix}")
             continue
         if floating:
             continue  # its height is computed when it is built
         v = _outline(d)
         c = (b.pos[0], b.pos[-1])
-        hx, hz = half[0], half[-1]
-        if isinstance(b, Sphere) or (isinstance(b, Cylinder) and dim == 2):
+        if round_:
             gap = -_sd_polygon(v, c)
             if gap < b.radius - tol:
                 raise SceneError(f"bodies[{i}].pos", f"the body (radius {b.radius:g} m about {_pt(c)} m in x-z) "
                                  f"reaches {b.radius - gap:.4g} m into the {wall}; {fix}")
             continue
-        corners = [(c[0] + sx * hx, c[1] + sz * hz) for sx in (-1, 1) for sz in (-1, 1)]
-        depth, q = max((_sd_polygon(v, q), q) for q in corners)
+        hull = _hull([(q[0], q[2]) for q in _corners(b, dim)])  # the body seen along y: its section's outline
+        depth, q = max((_sd_polygon(v, q), q) for q in hull)
         if depth > tol:
             raise SceneError(f"bodies[{i}].{_pos_key(b)}",
-                             f"the body's corner {_pt(q)} m (in x-z) lies {depth:.3g} m deep in "
+                             f"the body's corner {_pt(q)} m (in x-z){_turned(b)} lies {depth:.3g} m deep in "
                              f"the {wall}; {fix}")
         for q in v:
-            if abs(q[0] - c[0]) < hx - tol and abs(q[1] - c[1]) < hz - tol:
+            if _sd_polygon(hull, q) < -tol:
                 raise SceneError(f"bodies[{i}].{_pos_key(b)}", f"the {wall}'s corner {_pt(q)} m lies inside the body "
-                                 f"({_bounds(b, dim, False)}); {fix}")
+                                 f"({_bounds(b, dim, False)}){_turned(b)}; {fix}")
+
+
+def _hull(points) -> list[tuple[float, float]]:
+    """The convex hull of 2-D points, counter-clockwise (Andrew's monotone chain)."""
+    pts = sorted(set((float(x), float(z)) for x, z in points))
+    if len(pts) < 3:
+        return pts
+
+    def cross(o, a, b):
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+    lower, upper = [], []
+    for p in pts:
+        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
+            lower.pop()
+        lower.append(p)
+    for p in reversed(pts):
+        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
+            upper.pop()
+        upper.append(p)
+    return lower[:-1] + upper[:-1]
 
 
 def potential_depth(s) -> float:

@@ -71,9 +71,12 @@ class Check:
 
 
 class Num(Check):
-    def __init__(self, doc, unit="", lo=None, hi=None, lo_open=False, hi_open=False, optional=False):
+    """A finite number in ``lo`` .. ``hi``; ``why``: the reason for ``hi`` when it is a
+    physical limit (:mod:`cosim.scene.limits`), said when a value passes it."""
+
+    def __init__(self, doc, unit="", lo=None, hi=None, lo_open=False, hi_open=False, optional=False, why=None):
         super().__init__(doc, unit, optional)
-        self.lo, self.hi, self.lo_open, self.hi_open = lo, hi, lo_open, hi_open
+        self.lo, self.hi, self.lo_open, self.hi_open, self.why = lo, hi, lo_open, hi_open, why
 
     def expected(self) -> str:
         rng = []
@@ -89,6 +92,9 @@ class Num(Check):
         v = float(v)
         bad = ((self.lo is not None and (v < self.lo or (self.lo_open and v == self.lo)))
                or (self.hi is not None and (v > self.hi or (self.hi_open and v == self.hi))))
+        if bad and self.why and self.hi is not None and v >= self.hi:
+            raise SceneError(path, f"{v:g}{self._unit()} is beyond {self.hi:g}{self._unit()}, {self.why}; give "
+                             f"{self.expected()}")
         if bad:
             raise SceneError(path, f"{v!r}{self._unit()} is out of range; give {self.expected()}")
         return v

@@ -266,3 +266,51 @@ def _surface_sea(fluid):
     if sea is None or isinstance(sea, Sea):
         return sea
     return _PotentialSea(sea) if hasattr(sea, "elevation") else None
+
+
+def series_names(scene) -> list[str]:
+    """The names of the series a run of ``scene`` records, known from the scene alone
+    (before it is built: ``cosim study`` checks its ``--metric`` specs with them), in the
+    order of :func:`groups`. An MJCF file's coupled bodies are read from the file."""
+    from cosim.scene.checks import _check_mjcf
+    from cosim.scene.spec import MJCF, SPH, Analytic, ElasticPlate, Flap, IrregularWaves, LinearWaves, Piston, \
+        Potential, RegularWaves
+
+    p, dim, out = scene.probes, scene.world.dim, []
+    comps = "xz" if dim == 2 else "xyz"
+    lin = ["surge", "heave"] if dim == 2 else ["surge", "sway", "heave"]
+    ang = ["pitch"] if dim == 2 else ["roll", "pitch", "yaw"]
+    mjcf = [b for b in scene.bodies if isinstance(b, MJCF)]
+    plates = {b.name: b for b in scene.bodies if isinstance(b, ElasticPlate)}
+    rigid = (_check_mjcf(mjcf[0], "bodies[0]")["coupled"] if mjcf else
+             [b.name for b in scene.bodies if not isinstance(b, ElasticPlate)])
+    if scene.bodies:
+        chosen = rigid + list(plates) if "all" in p.motion else list(p.motion)
+        out += [f"{n}.{q}" for n in chosen if n not in plates for q in lin + ang]
+        out += [f"{n}.{s}_{c}" for n in chosen if n in plates for s in ("corner", "tip") for c in comps]
+        if scene.base_motion is not None:
+            out += [f"{n}.clamp_{c}" for n in chosen if n in plates for c in comps]
+        if p.loads:
+            out += [f"{n}.{src}_F{c}" for n in rigid + list(plates) for src in ("fluid", "mooring") for c in comps]
+            out += [f"{n}.p{k}" for n, b in plates.items() for k in range(b.elements + 1)]
+    m = scene.moorings
+    if m is not None and p.tensions:
+        labels = [ln.name or ln.fairlead for ln in m.lines]
+        breaking = any(ln.break_load is not None for ln in m.lines)
+        out += [f"{n}.tension" for n in labels]
+        if m.model != "fmu" or breaking:  # the models that report it (a breaking line's wrapper always does)
+            out += [f"{n}.anchor_tension" for n in labels]
+        if m.model == "catenary" and any(ln.EA is None for ln in m.lines):  # inextensible lines: tethers
+            out += [f"{n}.tether" for n in labels]
+        out += [f"{n}.state" for n in labels]
+    sph = isinstance(scene.fluid, SPH)
+    sea = (isinstance(scene.fluid, (Analytic, Potential))
+           and isinstance(scene.waves, (LinearWaves, RegularWaves, IrregularWaves, Piston, Flap)))
+    if p.gauges and (sph or sea):
+        out += [f"gauge{i + 1}.eta" for i in range(len(p.gauges))]
+    elif sea:
+        out.append("sea.eta")
+    if sph:
+        out += [f"{q.name}.p" for q in p.pressure]
+        out += ["fluid.kinetic", "fluid.potential"] if p.energy else []
+    return out

@@ -36,6 +36,7 @@ import dataclasses
 from dataclasses import dataclass
 from pathlib import Path
 
+from cosim.scene import limits as L
 from cosim.scene.fields import (SceneError, Spec, choice, flag, gauges, is_name, names, num, part, parts, required,
                                 table, text, vec, vecs, whole)
 
@@ -55,7 +56,8 @@ class World(Spec):
 
     dim: int = whole(2, "2: the x-z plane (bodies 1 m thick), 3: space", lo=2, hi=3)
     duration: float = num(1.0, "simulated time", "s", lo=0, lo_open=True)
-    gravity: float = num(9.81, "acceleration of gravity along -z, for every participant", "m/s^2", lo=0)
+    gravity: float = num(9.81, "acceleration of gravity along -z, for every participant", "m/s^2", lo=0,
+                         hi=L.MAX_GRAVITY, why=L.GRAVITY_WHY)
     sample_every: float = num(0.01, "interval between probe samples", "s", lo=0, lo_open=True)
     snapshot_every: float = num(0.1, "interval between particle snapshots in run.h5; 0: none", "s", lo=0)
     checkpoint_every: float = num(0.0, "simulated time between checkpoints for --resume, landed on exactly; 0: by "
@@ -94,7 +96,7 @@ class Analytic(Spec):
 
     TAG = ("model", "analytic")
     model: str = tag("analytic")
-    rho: float = num(1000.0, "water density", "kg/m^3", lo=0, lo_open=True)
+    rho: float = num(1000.0, "water density", "kg/m^3", lo=0, lo_open=True, hi=L.MAX_DENSITY, why=L.DENSITY_WHY)
     level: float = num(0.0, "height of the still free surface", "m")
     linear_damping: dict = table("per body: 6 linear damping coefficients [N s/m, N m s]", sizes=(6,))
     quadratic_damping: dict = table("per body: 6 quadratic damping coefficients [N s^2/m^2, N m s^2]", sizes=(6,))
@@ -114,7 +116,7 @@ class Potential(Spec):
 
     TAG = ("model", "potential")
     model: str = tag("potential")
-    rho: float = num(1000.0, "water density", "kg/m^3", lo=0, lo_open=True)
+    rho: float = num(1000.0, "water density", "kg/m^3", lo=0, lo_open=True, hi=L.MAX_DENSITY, why=L.DENSITY_WHY)
     level: float = num(0.0, "height of the still free surface", "m")
     depth: float = num(None, "water depth under the still surface (unset: the flume's or the waves' depth, else "
                        "deep water)", "m", lo=0, lo_open=True)
@@ -141,7 +143,8 @@ class SPH(Spec):
     dx: float = required(num(None, "particle spacing", "m", lo=0, lo_open=True, optional=False))
     setup: str = choice("auto", "fluid set-up: auto (from the scene), still, waves, sloshing, impact, defaults",
                         SETUPS)
-    rho0: float = num(1000.0, "reference density", "kg/m^3", lo=0, lo_open=True)
+    rho0: float = num(1000.0, "reference density", "kg/m^3", lo=0, lo_open=True, hi=L.MAX_DENSITY,
+                      why=L.DENSITY_WHY)
     c0: float = num(None, "speed of sound; unset: c0_factor * u_max", "m/s", lo=0, lo_open=True)
     c0_factor: float = num(None, "c0 / u_max (>= 10)", lo=10)
     u_max: float = num(None, "expected largest flow speed; unset: from the scene", "m/s", lo=0, lo_open=True)
@@ -680,7 +683,8 @@ class Box(_Body):
     name: str = required(text(None, "the body's name", name=True))
     size: tuple = required(vec(None, "edge lengths", "m"))
     pos: tuple = required(vec(None, "centre position", "m", sizes=(1, 2, 3)))
-    density: float = num(None, "density (or give mass)", "kg/m^3", lo=0, lo_open=True)
+    density: float = num(None, "density (or give mass)", "kg/m^3", lo=0, lo_open=True, hi=L.MAX_DENSITY,
+                         why=L.DENSITY_WHY)
     mass: float = num(None, "mass (or give density)", "kg", lo=0, lo_open=True)
     place: str = choice("given", "given: at pos; floating: at its hydrostatic equilibrium", ("given", "floating"))
     euler: tuple = vec(None, "initial orientation (Euler angles)", "deg", sizes=(3,))
@@ -702,7 +706,8 @@ class Cylinder(_Body):
     radius: float = required(num(None, "radius", "m", lo=0, lo_open=True, optional=False))
     pos: tuple = required(vec(None, "centre position", "m", sizes=(1, 2, 3)))
     length: float = num(None, "length along its axis (3-D only)", "m", lo=0, lo_open=True)
-    density: float = num(None, "density (or give mass)", "kg/m^3", lo=0, lo_open=True)
+    density: float = num(None, "density (or give mass)", "kg/m^3", lo=0, lo_open=True, hi=L.MAX_DENSITY,
+                         why=L.DENSITY_WHY)
     mass: float = num(None, "mass (or give density)", "kg", lo=0, lo_open=True)
     place: str = choice("given", "given: at pos; floating: at its hydrostatic equilibrium", ("given", "floating"))
     euler: tuple = vec(None, "initial orientation (Euler angles)", "deg", sizes=(3,))
@@ -717,7 +722,8 @@ class Sphere(_Body):
     name: str = required(text(None, "the body's name", name=True))
     radius: float = required(num(None, "radius", "m", lo=0, lo_open=True, optional=False))
     pos: tuple = required(vec(None, "centre position", "m", sizes=(2, 3)))
-    density: float = num(None, "density (or give mass)", "kg/m^3", lo=0, lo_open=True)
+    density: float = num(None, "density (or give mass)", "kg/m^3", lo=0, lo_open=True, hi=L.MAX_DENSITY,
+                         why=L.DENSITY_WHY)
     mass: float = num(None, "mass (or give density)", "kg", lo=0, lo_open=True)
     place: str = choice("given", "given: at pos; floating: at its hydrostatic equilibrium", ("given", "floating"))
     euler: tuple = vec(None, "initial orientation (Euler angles)", "deg", sizes=(3,))
@@ -728,7 +734,8 @@ class Sphere(_Body):
 class MJCF(Spec):
     """Bodies from an MJCF file (MuJoCo's XML): every body with degrees of freedom, or
     those named in ``bodies``. Fairleads are the file's sites, ``"BODY.SITE"``. The model's
-    own gravity is replaced by the world's."""
+    own gravity is replaced by the world's (one gravity for every participant; where they
+    differ the build warns that it did)."""
 
     TAG = ("shape", "mjcf")
     shape: str = tag("mjcf")
@@ -765,8 +772,10 @@ class ElasticPlate(Spec):
     name: str = required(text(None, "the body's name", name=True))
     length: float = required(num(None, "height from the clamp to the top", "m", lo=0, lo_open=True, optional=False))
     thickness: float = required(num(None, "thickness along x", "m", lo=0, lo_open=True, optional=False))
-    E: float = required(num(None, "Young's modulus", "Pa", lo=0, lo_open=True, optional=False))
-    density: float = required(num(None, "density", "kg/m^3", lo=0, lo_open=True, optional=False))
+    E: float = required(num(None, "Young's modulus", "Pa", lo=0, lo_open=True, hi=L.MAX_YOUNG, why=L.YOUNG_WHY,
+                            optional=False))
+    density: float = required(num(None, "density", "kg/m^3", lo=0, lo_open=True, hi=L.MAX_DENSITY,
+                                  why=L.DENSITY_WHY, optional=False))
     base: tuple = required(vec(None, "centre of the clamped end: the foot, on the floor (the top when hanging)", "m"))
     width: float = num(None, "width along y (3-D only)", "m", lo=0, lo_open=True)
     nu: float = num(0.0, "Poisson's ratio", lo=-1.0, hi=0.5, lo_open=True, hi_open=True)
@@ -801,13 +810,18 @@ class Line(Spec):
     fairlead: str = required(text(None, "the fairlead, as BODY.NAME"))
     anchor: tuple = required(vec(None, "anchor position; the seabed is the horizontal plane through it", "m"))
     length: float = required(num(None, "unstretched length", "m", lo=0, lo_open=True, optional=False))
-    weight: float = required(num(None, "submerged weight per metre", "N/m", lo=0, lo_open=True, optional=False))
-    EA: float = num(None, "axial stiffness (unset: inextensible)", "N", lo=0, lo_open=True)
-    mass_per_length: float = num(None, "mass per metre in air", "kg/m", lo=0, lo_open=True)
-    diameter: float = num(None, "hydrodynamic diameter", "m", lo=0, lo_open=True)
+    weight: float = required(num(None, "submerged weight per metre", "N/m", lo=0, lo_open=True,
+                                 hi=L.MAX_LINE_WEIGHT, why=L.LINE_WEIGHT_WHY, optional=False))
+    EA: float = num(None, "axial stiffness (unset: inextensible)", "N", lo=0, lo_open=True, hi=L.MAX_LINE_EA,
+                    why=L.LINE_EA_WHY)
+    mass_per_length: float = num(None, "mass per metre in air", "kg/m", lo=0, lo_open=True, hi=L.MAX_LINE_MASS,
+                                 why=L.LINE_MASS_WHY)
+    diameter: float = num(None, "hydrodynamic diameter", "m", lo=0, lo_open=True, hi=L.MAX_LINE_DIAMETER,
+                          why=L.LINE_DIAMETER_WHY)
     name: str = text("", "label in outputs; empty: the fairlead's name", name="label")
     break_load: float = num(None, "tension at which the line breaks (unset: never); reported, and released with "
-                            "moorings.release_broken", "N", lo=0, lo_open=True)
+                            "moorings.release_broken", "N", lo=0, lo_open=True, hi=L.MAX_BREAK_LOAD,
+                            why=L.BREAK_LOAD_WHY)
 
     def validate(self):
         if self.fairlead.count(".") != 1 or not all(is_name(x) for x in self.fairlead.split(".")):

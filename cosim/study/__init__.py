@@ -99,11 +99,18 @@ def run_study(scene, vary: dict, specs: list[str], out, *, reference: str = "fin
     ``specs``: ``["SERIES:STAT", ...]``; ``tol``: a relative error (0.05 for 5 %)."""
     import time
 
+    sweep.check_workers(workers, threads)
     if not vary:
         raise InputError("a study varies at least one field: --vary KEY.PATH=V1,V2,...")
+    for k, vals in vary.items():
+        twice = [v for i, v in enumerate(vals) if v in vals[:i]]
+        if twice:
+            raise InputError(f"--vary {k}: the value {twice[0]!r} is given twice; give each value once")
     if not specs:
         raise InputError("a study measures at least one metric: --metric SERIES:STAT")
     parsed = [M.parse(s) for s in specs]
+    if tol is not None and not (math.isfinite(tol) and tol > 0):
+        raise InputError(f"--tol {tol!r}: give a relative tolerance > 0, e.g. 5% or 0.05")
     if reference not in ("finest", "richardson") and not Path(reference).is_file():
         raise InputError(f"--reference {reference!r}: give finest, richardson or an existing file")
     refine = refined_field(vary)
@@ -113,6 +120,9 @@ def run_study(scene, vary: dict, specs: list[str], out, *, reference: str = "fin
     out = Path(out)
     version = sweep.code_version()
     cs = sweep.cases(scene, vary, out, version)  # every combination checked before any run
+    _check_metrics(cs, specs, parsed)
+    if reference not in ("finest", "richardson"):
+        _check_reference_file(Path(reference), specs, parsed)
     workers = workers or max(1, (os.cpu_count() or 1) // max(threads, 1))
     out.mkdir(parents=True, exist_ok=True)
     t0 = time.perf_counter()
@@ -160,6 +170,33 @@ def run_study(scene, vary: dict, specs: list[str], out, *, reference: str = "fin
 USED = ("dt_used_s", "dt_min_s", "dt_max_s", "c0_m_s", "setup")
 
 
+def _check_metrics(cs, specs, parsed) -> None:
+    """Every ``--metric`` names a series that each run records (known from its scene,
+    :func:`cosim.scene.probes.series_names`), before the first run."""
+    from cosim.scene.probes import series_names
+
+    for c in cs:
+        names = series_names(c.scene)
+        for s, (name, _) in zip(specs, parsed):
+            if name not in names:
+                where = f" with {c.values}" if len(cs) > 1 else ""
+                raise InputError(f"--metric {s!r}: the runs{where} record no series {name!r}; they record "
+                                 f"{', '.join(names) or 'none'}")
+
+
+def _check_reference_file(path: Path, specs, parsed) -> None:
+    """A reference file holds a value (or, for ``rms``, a series) for every metric, before the first run."""
+    try:
+        ref = _reference_file(path, specs)
+    except (OSError, ValueError, KeyError, TypeError) as e:
+        raise InputError(f"--reference {path}: cannot be read as a reference ({type(e).__name__}: {e}); give JSON "
+                         f"{{\"SERIES:STAT\": value}} or a CSV table, the time [s] first") from None
+    missing = [s for s, (name, stat) in zip(specs, parsed)
+               if (stat == "rms" and name not in ref["series"]) or (stat != "rms" and s not in ref["values"])]
+    if missing:
+        raise InputError(f"--reference {path}: no reference value for {', '.join(missing)}")
+
+
 def refined_field(vary: dict) -> str | None:
     """The varied field that refines the runs: fluid.dx, else coupling.dt, else the first
     varied field whose values are all numbers."""
@@ -201,10 +238,7 @@ def _reference(reference, ok, specs, parsed, vary, refine):
         key = lambda r: tuple(r["values"][k] for k in others)
         return {"kind": "richardson", "value_of": lambda r, s: refs[key(r)][s],
                 "series_of": lambda r: refs[key(r)]["series"]}, orders
-    ref = _reference_file(Path(reference), specs)
-    missing = [s for s, (_, stat) in zip(specs, parsed) if stat != "rms" and s not in ref["values"]]
-    if missing:
-        raise InputError(f"--reference {reference}: no reference value for {', '.join(missing)}")
+    ref = _reference_file(Path(reference), specs)  # its values checked before the runs
     ref["value_of"] = lambda r, s: ref["values"][s]
     ref["file"] = str(reference)
     return ref, {}

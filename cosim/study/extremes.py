@@ -108,6 +108,7 @@ def run_extremes(scene, out, *, workers=None, threads=1, scheduler=None, serial=
     """Run every lever's values; write extremes.csv, .md, .json into ``out``; return the rows."""
     import os
 
+    sweep.check_workers(workers, threads)
     out = Path(out)
     version = sweep.code_version()
     rows, cases = [], []

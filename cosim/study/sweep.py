@@ -38,6 +38,7 @@ class Case:
     toml: str
     key: str
     folder: Path
+    scene: object = None  #: the case's Scene (not sent to the workers: they get its TOML)
 
 
 def combinations(vary: dict) -> list[dict]:
@@ -50,7 +51,7 @@ def case(index: int, values: dict, scene, out: Path, version: str) -> Case:
     """The case of ``scene`` (already changed by ``values``), keyed by its TOML and the code."""
     text = scene.to_toml()
     key = hashlib.sha256((text + version).encode()).hexdigest()[:16]
-    return Case(index, values, text, key, out / "runs" / key)
+    return Case(index, values, text, key, out / "runs" / key, scene)
 
 
 def cases(scene, vary: dict, out: Path, version: str) -> list[Case]:
@@ -59,6 +60,20 @@ def cases(scene, vary: dict, out: Path, version: str) -> list[Case]:
 
     return [case(i, values, scene.with_values([f"{k}={toml_value(v)}" for k, v in values.items()]), out, version)
             for i, values in enumerate(combinations(vary))]
+
+
+def check_workers(workers, threads) -> None:
+    """Refuse a number of runs at once (``workers``; None: the default) or of numba threads
+    per run (``threads``) that is not a whole number >= 1, before any run: 0 or -1 would
+    start no worker and the study would wait for ever."""
+    from cosim.errors import InputError
+
+    for flag, v, what in (("--workers", workers, "runs at once; leave it out for cores / --threads"),
+                          ("--threads", threads, "numba threads per run; default 1")):
+        if v is None and flag == "--workers":
+            continue
+        if isinstance(v, bool) or not isinstance(v, int) or v < 1:
+            raise InputError(f"{flag} {v!r}: give a whole number >= 1 ({what})")
 
 
 def run_logged(cmd: list[str], log: Path, env: dict) -> tuple[int, object, str]:
