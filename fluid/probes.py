@@ -374,18 +374,37 @@ class GroupLoad:
 
 
 # ---------------------------------------------------------------------- energy
+#: particles per block of the energy sums: each block is summed in index order, the blocks
+#: then in block order, so the sums do not depend on the thread count or the threading
+#: layer (a prange reduction's grouping does, in its last bits; a resumed run must
+#: reproduce the uninterrupted one's probes bit for bit)
+_ENERGY_BLOCK = 4096
+
+
 @njit(parallel=True, **_OPTS)
 def _energies(pos, vel, mass, kind, g, z_ref):
     zc = pos.shape[1] - 1
+    n = pos.shape[0]
+    nb = (n + _ENERGY_BLOCK - 1) // _ENERGY_BLOCK
+    ke_b = np.zeros(nb)
+    pe_b = np.zeros(nb)
+    for b in prange(nb):
+        ke = 0.0
+        pe = 0.0
+        for i in range(b * _ENERGY_BLOCK, min(n, (b + 1) * _ENERGY_BLOCK)):
+            if kind[i] == _FLUID:
+                v2 = 0.0
+                for k in range(pos.shape[1]):
+                    v2 += vel[i, k] * vel[i, k]
+                ke += 0.5 * mass[i] * v2
+                pe += mass[i] * g * (pos[i, zc] - z_ref)
+        ke_b[b] = ke
+        pe_b[b] = pe
     ke = 0.0
     pe = 0.0
-    for i in prange(pos.shape[0]):
-        f = 1.0 if kind[i] == _FLUID else 0.0
-        v2 = 0.0
-        for k in range(pos.shape[1]):
-            v2 += vel[i, k] * vel[i, k]
-        ke += 0.5 * f * mass[i] * v2
-        pe += f * mass[i] * g * (pos[i, zc] - z_ref)
+    for b in range(nb):
+        ke += ke_b[b]
+        pe += pe_b[b]
     return ke, pe
 
 

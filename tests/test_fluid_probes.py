@@ -87,6 +87,31 @@ def test_energies_of_a_column_at_rest(tank2d):
         ps.vel[:] = v
 
 
+def test_energies_do_not_depend_on_the_thread_count():
+    """The sums are the same to the last bit on 1 thread and on all (a resumed run must
+    reproduce the uninterrupted one's probes), and equal a plain sum to rounding."""
+    import numba
+
+    from fluid.probes import _energies
+
+    rng = np.random.default_rng(3)
+    n = 50_000
+    pos, vel, mass = rng.random((n, 3)), rng.normal(size=(n, 3)), rng.random(n)
+    kind = np.where(rng.random(n) < 0.8, int(Kind.FLUID), int(Kind.FIXED_WALL)).astype(np.int8)
+    saved = numba.get_num_threads()
+    try:
+        got = []
+        for k in sorted({1, numba.config.NUMBA_NUM_THREADS}):
+            numba.set_num_threads(k)
+            got.append(_energies(pos, vel, mass, kind, G, 0.1))
+    finally:
+        numba.set_num_threads(saved)
+    assert all(g == got[0] for g in got)
+    fl = kind == int(Kind.FLUID)
+    np.testing.assert_allclose(got[0][0], 0.5 * (mass[fl] * (vel[fl] ** 2).sum(axis=1)).sum(), rtol=1e-12)
+    np.testing.assert_allclose(got[0][1], (mass[fl] * G * (pos[fl, 2] - 0.1)).sum(), rtol=1e-12)
+
+
 def test_group_load_carries_the_water_weight_and_moves_its_moment(tank2d):
     F, M = tank2d.group_forces_now()
     s = GroupLoad(0).sample(tank2d)

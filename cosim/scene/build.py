@@ -371,14 +371,14 @@ def _mjcf_bodies(scene, level, rho):
     return xml, heights
 
 
-def _bodies(scene, level, rho, warnings):
+def _bodies(scene, level, rho, warnings=None):
     from bodies.mujoco_bodies import MujocoBodies
 
     if any(isinstance(b, MJCF) for b in scene.bodies):
         m = scene.bodies[0]
         bodies = MujocoBodies(m.file, bodies=list(m.bodies) or None)
         own, world = bodies.model.opt.gravity.tolist(), [0.0, 0.0, -scene.world.gravity]
-        if own != world:  # one gravity for every participant: the world's
+        if own != world and warnings is not None:  # one gravity for every participant: the world's
             warnings.append(f"bodies[0].file: the MJCF model's own gravity {own} m/s^2 is replaced by the world's, "
                             f"{world} m/s^2 (world.gravity = {scene.world.gravity:g}): one gravity for every "
                             f"participant")
