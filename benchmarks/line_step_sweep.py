@@ -77,7 +77,7 @@ def sweep_one(model: str, segments: int, dt: str, seconds: float, lines: str = "
     if dt.endswith("x"):
         ls.SAFETY.update({k: v * float(dt[:-1]) for k, v in safety.items()})
     elif dt != "auto":
-        vals.append(f"coupling.dt={dt}")
+        vals += [f"coupling.dt={dt}", f"world.sample_every={dt}"]  # a step that lands on the samples
     try:
         built = build(Scene.from_toml(SCENE).with_values(vals), Path(tempfile.mkdtemp(prefix="line_step_")))
         lim = built.coupler.line_limit

@@ -237,7 +237,8 @@ def soak(model: str, steps: int, dt: float, every: int, ledger_mode: str, out: s
     rss_import = rss_bytes()
     given = patch_moordyn_deserialize() if (patch_moordyn and model == "moordyn") else [0]
     scene = Scene.from_toml(SCENE).with_values(
-        [f"moorings.model={model}", f"coupling.dt={dt!r}", f"world.duration={max(steps * dt, 1.0)!r}"])
+        [f"moorings.model={model}", f"coupling.dt={dt!r}", f"world.sample_every={dt!r}",
+         f"world.duration={max(steps * dt, 1.0)!r}"])
     n_dt = to_ticks(dt)
     with tempfile.TemporaryDirectory(prefix="soak_") as wd:
         t0 = time.perf_counter()

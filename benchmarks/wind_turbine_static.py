@@ -118,7 +118,7 @@ def measure(dx: float, duration: float, out: str, depth: float = DEPTH) -> dict:
     d0 = predicted_draft(scene)
     level0 = scene.domain.depth
     c0 = time.process_time()
-    r = scene.run(f"{out}/dx{dx:.4g}", progress=False)
+    r = scene.run(f"{out}/dx{dx:.4g}", overwrite=True, progress=False)
     cpu = time.process_time() - c0
     heave, surge, sway = (np.asarray(r[f"base.{k}"], float) for k in ("heave", "surge", "sway"))
     late = r.t >= 0.5 * duration

@@ -4,7 +4,7 @@
 ``cosim study``     the speed/accuracy trade of a scene: runs over varied fields, errors, costs, Pareto
 ``cosim line``      tabulate (and plot) one catenary mooring line against X
 ``cosim validate``  run validation cases, one JSON object per case
-``cosim export-fmu`` write a catenary mooring system as an FMI 2.0 co-simulation FMU
+``cosim export-fmu`` write a scene's mooring lines (catenary) as an FMI 2.0 co-simulation FMU
 ``cosim inspect``   what an output file (HDF5) holds, as JSON; its series as CSV tables
 """
 
@@ -55,6 +55,9 @@ def _run_parser(sub):
     p.add_argument("--resume", action="store_true",
                    help="continue the run in --out from its last checkpoint (bit for bit; world.duration may grow). "
                         "A run writes one every world.checkpoint_wall s of wall time (default 120) and at its end")
+    p.add_argument("--overwrite", action="store_true",
+                   help="clear --out first when it holds an earlier run (a folder that holds files is refused "
+                        "otherwise)")
     p.add_argument("--resume-any-version", action="store_true",
                    help="with --resume: continue from a checkpoint that other code wrote (it may not continue bit "
                         "for bit)")
@@ -89,13 +92,15 @@ def cmd_run(args, parser) -> int:
     out = Path(args.out) if args.out else Path("out") / scene.name
     if args.resume_any_version and not args.resume:
         parser.error("--resume-any-version goes with --resume")
+    if args.overwrite and args.resume:
+        parser.error("--overwrite clears the folder that --resume continues: give one")
     if args.dry_run:
         est = cost.estimate(scene)
         print(f"{scene.name}: estimated cost")
         print("\n".join(est.describe()))
         cost.check(est, out, yes=args.yes)
         return 0
-    res = scene.run(out, resume=args.resume, resume_any_version=args.resume_any_version,
+    res = scene.run(out, resume=args.resume, resume_any_version=args.resume_any_version, overwrite=args.overwrite,
                     progress=False if args.quiet else None, yes=args.yes,
                     ask=_ask if sys.stdin.isatty() and not args.yes else None)
     if not args.quiet:
@@ -104,16 +109,29 @@ def cmd_run(args, parser) -> int:
         print(f"{scene.name}: {size}{s['steps']} steps, {s['wall_s']:.1f} s wall for {s['t_reached_s']:g} s "
               f"simulated")
         if "setup" in s:
-            print(f"fluid set-up: {s['setup']['name']} ({s['setup']['reason']})")
+            c0 = f"; speed of sound {s['speed_of_sound_m_s']:.4g} m/s" if "speed_of_sound_m_s" in s else ""
+            print(f"fluid set-up: {s['setup']['name']} ({s['setup']['reason']}){c0}")
         if "remedies" in s:
             print(f"coupling: {s['scheme']}; light-body remedy: "
                   + ", ".join(f"{k} {v}" for k, v in s["remedies"].items()))
+        print(_steps_line(s.get("coupling", {})))
         for name in res.names:
             v = res[name]
             print(f"  {name:28s} {v.min():12.5g} .. {v.max():<12.5g} [{res.units[name]}]")
         print(f"wrote {out}/: run.h5 (+ run.xmf), " + ", ".join(sorted(p.name for p in out.glob("*.csv")))
               + ", " + ", ".join(sorted(p.name for p in out.glob("*.png"))) + ", summary.json, scene.toml")
     return 0
+
+
+def _steps_line(c: dict) -> str:
+    """The coupling steps a run took (summary.json's ``coupling``), in one line."""
+    if not c.get("steps"):
+        return "coupling steps: none"
+    what = {"user dt": "coupling.dt", "end time": "cut to land on an output time"}
+    by = ", ".join(f"{what.get(k, k)} {v['steps']}" for k, v in c["by_limiter"].items())
+    asked = f"coupling.dt = {c['dt_set_s']:g} s; " if c.get("dt_set_s") else ""
+    return (f"coupling steps: {asked}{c['dt_mean_s']:.4g} s on average, {c['dt_min_s']:.3g} .. {c['dt_max_s']:.3g} s; "
+            f"set by {by}")
 
 
 def _study_parser(sub):
@@ -246,7 +264,10 @@ def _validate_parser(sub):
         "from saved records (the JSON lines printed here) without running anything.",
     )
     p.add_argument("names", nargs="*", help="case names, or 'all' (with --from: all the file holds)")
-    p.add_argument("--list", action="store_true", help="list the cases and exit")
+    p.add_argument("--list", action="store_true",
+                   help="list the cases with the cost (wall time) and status (target met, departure met, not met) of "
+                        "their quick and full variants from the records of a report (--from FILE.jsonl, default "
+                        "docs/validation/records.jsonl where a checkout has one), and exit")
     p.add_argument("--quick", action="store_true", help="coarse variant (what CI runs)")
     p.add_argument("--report", metavar="DIR", help="also write a report into DIR (records.jsonl, series/, "
                    "index.md, index.html, CASE.md, CASE.html, plots)")
@@ -259,16 +280,23 @@ def _validate_parser(sub):
 def _export_fmu_parser(sub):
     p = sub.add_parser(
         "export-fmu",
-        help="write a catenary mooring system as a standalone FMI 2.0 co-simulation FMU",
+        help="write a scene's mooring lines (catenary) as a standalone FMI 2.0 co-simulation FMU",
         description="Write the quasi-static catenary law (compiled C, no Python needed to run it) as an "
         "FMI 2.0 co-simulation FMU: fairlead positions in, fairlead forces, total force and moment, "
         "tensions and line states out; anchors, lengths, weights and EA are tunable parameters. "
-        "The lines come from a TOML or JSON file: a list 'line' of tables with anchor [m] (x, z or "
+        "The lines come from a scene (cosim export-fmu SCENE.toml [--out FILE.fmu]: its moorings.lines, "
+        "the fairleads' start values where the run starts them), or from a TOML or JSON file of lines "
+        "(cosim export-fmu FILE.fmu --lines LINES.toml: a list 'line' of tables with anchor [m] (x, z or "
         "x, y, z), length [m], weight [N/m], optional EA [N] (omit: inextensible), name and fairlead "
-        "[m] (the input's start value).",
+        "[m] (the input's start value)).",
     )
-    p.add_argument("output", help="the .fmu file to write")
-    p.add_argument("--lines", required=True, metavar="FILE", help="TOML or JSON file with the lines")
+    p.add_argument("target", help="a scene (.toml, or a .py script that defines `scene`): export its lines; or, "
+                                   "with --lines, the .fmu file to write")
+    p.add_argument("--out", metavar="FILE.fmu", help="with a scene: the .fmu file to write (default "
+                                                     "<scene name>_mooring.fmu)")
+    p.add_argument("--set", action="append", default=[], metavar="KEY.PATH=VALUE",
+                   help="with a scene: change one of its fields first, as cosim run --set does")
+    p.add_argument("--lines", metavar="FILE", help="TOML or JSON file with the lines (instead of a scene)")
     p.add_argument("--model-identifier", default="catenary_mooring", help="FMU model identifier (a C identifier)")
     p.add_argument("--reference", type=float, nargs="+", metavar="C",
                    help="point of the total moment [m] (2 or 3 coordinates; default the origin)")
@@ -297,7 +325,7 @@ def cmd_inspect(args, parser) -> int:
     from pathlib import Path
 
     from cosim.errors import InputError
-    from fluid.output import describe, read_series, write_csv
+    from fluid.output import describe, read_series, read_units, write_csv
 
     try:
         info = describe(args.file)
@@ -308,7 +336,8 @@ def cmd_inspect(args, parser) -> int:
         folder = Path(args.csv)
         folder.mkdir(parents=True, exist_ok=True)
         for name in info["series"]:
-            write_csv(folder / (name.replace("/", "__") + ".csv"), read_series(args.file, name))
+            write_csv(folder / (name.replace("/", "__") + ".csv"), read_series(args.file, name),
+                      read_units(args.file, name))
         print(f"wrote {len(info['series'])} CSV tables into {folder}", file=sys.stderr)
     return 0
 
@@ -355,6 +384,36 @@ def _read_lines_file(path):
     return lines, fairleads
 
 
+def _scene_lines(args):
+    """The lines of the scene ``args.target``, the fairleads' start values (in the body's
+    frame with ``--body-pose``, and the body's start pose) and the .fmu to write."""
+    from pathlib import Path
+
+    from cosim.errors import InputError
+    from cosim.scene.build import fairleads_at_start, mooring_lines
+    from cosim.scene.load import load
+    from cosim.scene.spec import MJCF
+
+    scene = load(args.target)
+    if args.set:
+        scene = scene.with_values(args.set)
+    if scene.moorings is None:
+        raise InputError(f"{args.target}: the scene has no mooring lines (moorings.lines) to export")
+    out = Path(args.out) if args.out else Path(f"{scene.name}_mooring.fmu")
+    lines, pose = mooring_lines(scene), None
+    if not args.body_pose:
+        return lines, fairleads_at_start(scene), pose, out
+    owners = {ln.fairlead.split(".")[0] for ln in scene.moorings.lines}
+    body = next((b for b in scene.bodies if b.name in owners), None)
+    if len(owners) > 1 or isinstance(body, MJCF) or getattr(body, "euler", None) is not None:
+        raise InputError(f"--body-pose: the scene's lines end on {', '.join(sorted(owners))}; the FMU follows one "
+                         f"upright builder body's pose: export without --body-pose (fairlead positions in)")
+    fairleads = [body.fairleads[ln.fairlead.split(".")[1]] for ln in scene.moorings.lines]
+    start = fairleads_at_start(scene)[0] - fairleads[0]  # the body's origin where the run starts it
+    pose = list(start) + ([0.0] if scene.world.dim == 2 else [1.0, 0.0, 0.0, 0.0])
+    return lines, fairleads, pose, out
+
+
 def cmd_export_fmu(args, parser) -> int:
     import os
 
@@ -362,9 +421,17 @@ def cmd_export_fmu(args, parser) -> int:
 
     from moorings.fmu_export import export_catenary_fmu
 
-    lines, fairleads = _read_lines_file(args.lines)
-    path = export_catenary_fmu(lines, args.output, fairleads=fairleads, reference_point=args.reference,
-                               body_pose=args.body_pose, model_identifier=args.model_identifier,
+    pose = None
+    if args.lines:
+        if args.out or args.set:
+            parser.error("--out and --set go with a scene; with --lines the first argument is the .fmu to write")
+        (lines, fairleads), output = _read_lines_file(args.lines), args.target
+    elif args.target.endswith((".toml", ".py")):
+        lines, fairleads, pose, output = _scene_lines(args)
+    else:
+        parser.error(f"{args.target}: give a scene (.toml or .py), or the .fmu to write with --lines FILE")
+    path = export_catenary_fmu(lines, output, fairleads=fairleads, reference_point=args.reference,
+                               body_pose=args.body_pose, pose=pose, model_identifier=args.model_identifier,
                                compile_binary=not args.sources_only, cc=args.cc)
     problems = validate_fmu(str(path))
     kind = "sources only" if args.sources_only else "sources and a linux64 binary"
@@ -469,7 +536,7 @@ def cmd_line(args, parser) -> int:
         print("TAUT inextensible line: no catenary exists (H = V = inf); give --EA for an elastic line")
     if args.csv:
         with open(args.csv, "w") as f:
-            f.write("X_m,H_N,V_N,T_N,touchdown_m,state\n")
+            f.write("X [m],H [N],V [N],T [N],touchdown [m],state\n")
             for i in range(X.size):
                 nums = (X[i], r.H[i], r.V[i], T[i], r.touchdown[i])
                 f.write(",".join(repr(float(v)) for v in nums) + f",{LineState(r.state[i]).name}\n")
@@ -487,8 +554,14 @@ def cmd_validate(args, parser) -> int:
 
     known = validation.cases()
     if args.list:
-        for c in known.values():
-            print(f"{c.name:28s} {c.description}")
+        from cosim import report
+
+        path = Path(args.from_file) if args.from_file else (Path(__file__).resolve().parents[1]
+                                                            / validation.COMMITTED_RECORDS)
+        records = report.read_records(path) if path.is_file() else None
+        if args.from_file and records is None:
+            parser.error(f"--from {args.from_file}: no such file")
+        print("\n".join(validation.listing(records, str(path))))
         return 0
     if args.from_file:
         from cosim import report
@@ -553,11 +626,17 @@ def _terminate(signum, frame):
     raise Terminated(f"signal {signum}")
 
 
-def main(argv=None) -> int:
+def build_parser() -> tuple[argparse.ArgumentParser, dict]:
+    """The ``cosim`` parser and its subcommands' parsers, by command."""
     parser = argparse.ArgumentParser(prog="cosim", description=__doc__.strip().splitlines()[0])
     sub = parser.add_subparsers(dest="command", required=True)
     parsers = {"run": _run_parser(sub), "study": _study_parser(sub), "line": _line_parser(sub),
                "validate": _validate_parser(sub), "export-fmu": _export_fmu_parser(sub), "inspect": _inspect_parser(sub)}
+    return parser, parsers
+
+
+def main(argv=None) -> int:
+    parser, parsers = build_parser()
     args = parser.parse_args(argv)
     handler = {"run": cmd_run, "study": cmd_study, "line": cmd_line, "validate": cmd_validate,
                "export-fmu": cmd_export_fmu, "inspect": cmd_inspect}[args.command]

@@ -92,9 +92,12 @@ class Coupler:
         :class:`MooringAttachment` records (or ``(mooring, sites)`` pairs).
     dt:
         Fixed coupling step [s]; ``None`` lets the participants' ``max_dt()`` and the
-        mooring lines' limit (:mod:`cosim.line_step`) decide. Participants that need less
-        still get less. A step above the lines' limit at the start is refused
-        (:class:`~cosim.errors.ConfigurationError` naming the line, the limit and the fix).
+        mooring lines' limit (:mod:`cosim.line_step`) decide. A step above a participant's
+        stable step or the lines' limit at the start is refused
+        (:class:`~cosim.errors.ConfigurationError` naming the participant or line, the
+        limit and the fix): it could not be the step used. A participant that needs less
+        later in the run still gets less; :meth:`step_summary` counts the steps each
+        limit set.
     t0:
         Start time [s].
     scheme:
@@ -200,6 +203,7 @@ class Coupler:
         self._last_dt = math.inf
         self.clock = Clock(t0)
         self.steps = 0
+        self._step_stats: dict[str, list] = {}  # what set each step's size (step_summary)
         self.ledger = Ledger(bodies.body_names if bodies is not None else [])
         self._sites: list[tuple[np.ndarray, np.ndarray]] = []  # per attachment: site ids, body index
         self._initialized = False
@@ -249,7 +253,23 @@ class Coupler:
             if drive is not None:
                 drive()
         self._initialized = True
+        self._check_fixed_step()
         self._check_line_step()
+
+    def _check_fixed_step(self) -> None:
+        """Refuse a fixed step that a participant's stable step cuts short at the start: the
+        step asked for would not be the step used."""
+        if self.dt is None:
+            return
+        for p in self.participants:
+            d = p.max_dt()
+            if d < self.dt * (1.0 - 1e-9):
+                why = getattr(p, "dt_limit", None)
+                why = f" (limited by {why})" if isinstance(why, str) and why else ""
+                raise ConfigurationError(
+                    f"coupling step dt = {self.dt:g} s is above the stable step of participant '{p.name}', "
+                    f"{d:.4g} s{why}, which would set the step instead; leave dt unset (a scene: remove "
+                    f"coupling.dt) and the participants choose the step, or give dt <= {d:.4g} s")
 
     def _line_step(self):
         """The mooring lines' coupling-step limit now (:mod:`cosim.line_step`), or None."""
@@ -365,6 +385,14 @@ class Coupler:
             return pos[:, [0, 2]], vel[:, [0, 2]]
         return pos, vel
 
+    def fairlead_positions(self) -> list[np.ndarray]:
+        """Where each attachment's fairleads are now [m], world frame, in the mooring's
+        coordinates (2-D: (x, z)), ``(n_lines, dim)`` per attachment."""
+        if not self._initialized:
+            self.initialize()
+        kin = self.bodies.kinematics()
+        return [self._fairlead_motion(a, sites, kin)[0] for a, sites in zip(self.moorings, self._sites)]
+
     def _lever_arms(self, kin, only) -> dict:
         """Each fairlead's position relative to its body's centre of mass now [m], ``(n_lines,
         3)``, for the attachments in ``only``."""
@@ -412,9 +440,30 @@ class Coupler:
         self.clock.advance(n)
         self.steps += 1
         self._last_dt = dt
+        self._count_step(dt, limiter)
         if self.bodies is not None:
             self._check_line_breaks()
         return StepInfo(self.steps, self.clock.t, dt, limiter)
+
+    def _count_step(self, dt: float, limiter: str) -> None:
+        st = self._step_stats.setdefault(limiter, [0, math.inf, 0.0, 0.0])  # steps, min, max, sum [s]
+        st[0] += 1
+        st[1], st[2], st[3] = min(st[1], dt), max(st[2], dt), st[3] + dt
+
+    def step_summary(self) -> dict:
+        """The steps this coupler took (since it was made: a resumed run counts its own),
+        by what set each (``StepInfo.limiter``: a participant's name, ``"user dt"`` for the
+        fixed step, ``"end time"`` for a step cut to land on the time :meth:`run` was asked
+        to reach): ``{"dt_set_s", "steps", "dt_min_s", "dt_max_s", "dt_mean_s",
+        "by_limiter": {limiter: {"steps", "dt_min_s", "dt_max_s"}}}`` [s]."""
+        st = self._step_stats
+        n = sum(v[0] for v in st.values())
+        out = {"dt_set_s": self.dt, "steps": n}
+        if n:
+            out |= {"dt_min_s": min(v[1] for v in st.values()), "dt_max_s": max(v[2] for v in st.values()),
+                    "dt_mean_s": sum(v[3] for v in st.values()) / n,
+                    "by_limiter": {k: {"steps": v[0], "dt_min_s": v[1], "dt_max_s": v[2]} for k, v in st.items()}}
+        return out
 
     def _check_line_breaks(self) -> None:
         """Moorings whose lines break (``moorings.breaking.BreakingMooring``) look at their

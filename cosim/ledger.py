@@ -1,9 +1,11 @@
 """The per-step book of the loads the coupler put on each body.
 
-Outputs: :meth:`Ledger.write_csv` (one row per step and body) and
-:meth:`Ledger.write_h5`, which appends to a :class:`fluid.output.H5Output` one series per
-body, ``/series/ledger/BODY/{t, fluid_force, fluid_torque, mooring_force, mooring_torque,
-gravity}`` (each (n, 3), world frame [N, N m]). Both signatures are stable.
+Outputs: :meth:`Ledger.write_csv` (one row per step and body; its header names each
+column's unit, ``t [s],body,fluid_force_x [N],...``) and :meth:`Ledger.write_h5`, which
+appends to a :class:`fluid.output.H5Output` one series per body,
+``/series/ledger/BODY/{t, fluid_force, fluid_torque, mooring_force, mooring_torque,
+gravity}`` (each (n, 3), world frame, each dataset's ``units`` attribute from
+:data:`UNITS`). Both signatures are stable.
 """
 
 from __future__ import annotations
@@ -14,6 +16,8 @@ from cosim.errors import InputError
 
 #: the quantities booked for each body and step, world frame (torques about the CoM)
 FIELDS = ("fluid_force", "fluid_torque", "mooring_force", "mooring_torque", "gravity")
+#: the unit of each field
+UNITS = {"fluid_force": "N", "fluid_torque": "N m", "mooring_force": "N", "mooring_torque": "N m", "gravity": "N"}
 
 
 class Ledger:
@@ -85,9 +89,9 @@ class Ledger:
     def write_csv(self, path) -> None:
         """One row per step and body: t, body, then the x, y, z of each field."""
         a = self.arrays()
-        cols = [f"{f}_{c}" for f in FIELDS for c in "xyz"]
+        cols = [f"{f}_{c} [{UNITS[f]}]" for f in FIELDS for c in "xyz"]
         with open(path, "w") as fh:
-            fh.write("t_s,body," + ",".join(cols) + "\n")
+            fh.write("t [s],body," + ",".join(cols) + "\n")
             for k, t in enumerate(a["t"]):
                 for j, name in enumerate(self.body_names):
                     vals = np.concatenate([a[f][k, j] for f in FIELDS])
@@ -109,6 +113,8 @@ class Ledger:
         try:
             if n > start:  # only the new rows: a long run writes its ledger in pieces at O(rows)
                 for j, body in enumerate(self.body_names):
+                    for f in FIELDS:
+                        out.annotate(f"{name}/{body}", f, units=UNITS[f])
                     out.series_block(f"{name}/{body}", self._t[start:n],
                                      **{f: self._rows[f][start:n, j] for f in FIELDS})
         finally:

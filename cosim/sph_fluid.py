@@ -328,6 +328,13 @@ class SPHFluid:
     def max_dt(self) -> float:
         return self._need().max_dt()
 
+    @property
+    def dt_limit(self) -> str:
+        """What sets :meth:`max_dt` now: one of ``fluid.integrator.LIMITERS`` (``force``:
+        the CFL bound on the largest acceleration, ``courant_viscous``: the speed of sound's
+        CFL bound, a diffusion limit or ``dt_max``)."""
+        return self._need()._limit.limiter
+
     def advance(self, t: float, dt: float) -> None:
         self._need().advance(t, dt)
 

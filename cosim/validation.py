@@ -208,3 +208,52 @@ def run(name: str, quick: bool = False) -> dict:
     if series:
         record["series"] = series
     return record
+
+
+# ------------------------------------------------------------------------------- listing
+#: where a checkout keeps the records of the last validation runs (``cosim validate --report``'s
+#: records.jsonl), which ``cosim validate --list`` reads when it is there
+COMMITTED_RECORDS = "docs/validation/records.jsonl"
+
+
+def status(rec: dict) -> str:
+    """What a record says of its case: ``target met`` (judged on the stated target, or on
+    the quick variant's declared one), ``departure met`` (judged on a criterion that departs
+    from the stated target, which is then ``stated target met`` / ``not met`` / unmeasured),
+    or ``not met``."""
+    if not rec.get("passed"):
+        return "not met"
+    if not rec.get("departure"):
+        return "target met"
+    met = (rec.get("stated") or {}).get("met")
+    return "departure met (stated target " + {True: "met", False: "not met"}.get(met, "not measured") + ")"
+
+
+def listing(records: list[dict] | None, source: str = "") -> list[str]:
+    """``cosim validate --list``: each case with the cost (wall time) and status of its quick
+    and full variant in ``records`` (records of :func:`run`, e.g. read from a report's
+    records.jsonl), or, without records, the cases and their targets with a line that says
+    that their costs and statuses are unknown and how to measure them."""
+    known = cases()
+    lines = []
+    if not records:
+        lines += [f"no validation records{f' in {source}' if source else ''}: cost and status unknown until the "
+                  f"cases run (cosim validate all --quick --report DIR; then cosim validate --list --from "
+                  f"DIR/records.jsonl)", ""]
+        lines += [f"{'case':28s} description"]
+        lines += [f"{c.name:28s} {c.description}" for c in known.values()]
+        return lines
+    by = {(r["name"], bool(r.get("quick"))): r for r in records}
+    lines += [f"from {source}" if source else "from the records given", ""]
+    head = f"{'case':28s} {'quick':>9s} {'full':>9s}  status"
+    lines += [head, "-" * len(head)]
+    for c in known.values():
+        q, f = by.get((c.name, True)), by.get((c.name, False))
+        cost = [f"{r['wall_s']:7.3g} s" if r and r.get("wall_s") is not None else f"{'-':>9s}" for r in (q, f)]
+        said = [f"full: {status(f)}" if f else "full: no record", f"quick: {status(q)}" if q else "quick: no record"]
+        lines.append(f"{c.name:28s} {cost[0]} {cost[1]}  {'; '.join(said)}")
+    lines += ["", "wall time of the recorded run; target met: judged on the stated target of "
+              f"{VALIDATION_DOC} (a quick variant: its declared one); departure met: judged on the criterion the "
+              "record names instead"]
+    return lines
+

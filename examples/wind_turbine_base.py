@@ -128,7 +128,7 @@ if __name__ == "__main__":
     out = Path("out/wind_turbine_base")
     rows = {}
     for model in models:
-        r = scene.with_values([f"moorings.model={model}"]).run(out / model, progress=False)
+        r = scene.with_values([f"moorings.model={model}"]).run(out / model, overwrite=True, progress=False)
         rows[model] = f = model_figures(r, t0=30.0)
         print(f"{model:10s} surge {f['surge_m']:.3f} m  heave {f['heave_m']:.3f} m  pitch {f['pitch_deg']:.2f} deg  "
               f"tension {f['tension_back_N'] / 1e3:.1f} / {f['tension_front_N'] / 1e3:.1f} kN  {f['steps']} steps  "

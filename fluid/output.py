@@ -18,6 +18,11 @@ Layout of the HDF5 file (a stable contract: readers, tests and the examples rely
     /snapshots/0000/FIELD   (N,) or (N, k), any numeric dtype (kind stays int8)
     /snapshot_times         (n_snapshots,) time of each snapshot [s]
 
+Units: every time dataset (``t``, ``snapshot_times``) and ``pos`` carry a CF-style
+``units`` attribute (``"s"``, ``"m"``); :meth:`H5Output.annotate` gives any series key or
+snapshot field its attributes (``units``, or ``flag_values`` and ``flag_meanings`` for a
+categorical code, as the CF conventions name them), set when the dataset is made.
+
 Snapshot groups are numbered ``f"{k:04d}"`` (0000, 0001, ...; 10000 after 9999).
 
 Crash safety: series rows are buffered in memory (h5py costs ~30 us per dataset write)
@@ -100,6 +105,7 @@ class H5Output:
         self._snap_meta: list[tuple] = []  # (t, group, N, pos dtype, fields) per snapshot
         self._grids: list[str] = []  # each snapshot's XDMF grid, made once
         self._series: dict[str, dict] = {}  # name -> {"keys": {key: shape}, "rows": [...]}
+        self._attrs: dict[str, dict[str, dict]] = {"snapshots": {"pos": {"units": "m"}}}  # annotate()
         self._zeros_n = 0
         self._closed = False
         self.file = h5py.File(self.path, "w")
@@ -114,6 +120,7 @@ class H5Output:
             self.file.create_group("series")
             self.file.create_group("snapshots")
             self.file.create_dataset("snapshot_times", shape=(0,), maxshape=(None,), chunks=(256,), dtype="f8")
+            self.file["snapshot_times"].attrs["units"] = "s"
             self._write_xdmf()
             self.file.flush()
         except BaseException:
@@ -152,6 +159,17 @@ class H5Output:
     def _require_open(self) -> None:
         if self.closed:
             raise InputError(f"H5Output: {self.path} is closed; write inside the `with` block")
+
+    # ------------------------------------------------------------------ attributes
+    def annotate(self, name: str, key: str, **attrs) -> None:
+        """Attributes of the dataset ``key`` of series ``name`` (``name="snapshots"``: of
+        the snapshot field ``key``), e.g. ``units="m"``: set now where it exists and on
+        every dataset of that key made later (each snapshot's)."""
+        self._require_open()
+        self._attrs.setdefault(name, {}).setdefault(key, {}).update(attrs)
+        g = self.file["series"].get(name) if name != "snapshots" else None
+        if isinstance(g, h5py.Group) and key in g:
+            g[key].attrs.update(attrs)
 
     # ------------------------------------------------------------------ series
     def series(self, name: str, t: float, **values) -> None:
@@ -211,9 +229,11 @@ class H5Output:
             if "t" in g:
                 raise InputError(f"H5Output: series {name!r} clashes with another series' key")
             g.create_dataset("t", shape=(0,), maxshape=(None,), chunks=(self.buffer_rows,), dtype="f8")
+            g["t"].attrs["units"] = "s"
             for k, shp in shapes.items():
                 g.create_dataset(k, shape=(0,) + shp, maxshape=(None,) + shp,
                                  chunks=(self.buffer_rows,) + shp, dtype="f8")
+                g[k].attrs.update(self._attrs.get(name, {}).get(k, {}))
             s = self._series[name] = {"shapes": dict(shapes), "t": [], "rows": {k: [] for k in shapes}}
             return s
         if shapes == s["shapes"]:
@@ -278,6 +298,7 @@ class H5Output:
         g.attrs["index"] = self.n_snapshots
         for k, a in data.items():
             g.create_dataset(k, data=a)
+            g[k].attrs.update(self._attrs["snapshots"].get(k, {}))
         regrid = self.dim == 2 and n > self._zeros_n
         if regrid:
             if "xdmf" in self.file:
@@ -375,6 +396,13 @@ def read_series(path, name: str) -> dict[str, np.ndarray]:
         return {k: g[k][:n] for k in keys}
 
 
+def read_units(path, name: str) -> dict[str, str]:
+    """The ``units`` attribute of each dataset of series ``name`` that has one."""
+    with h5py.File(path, "r") as f:
+        g = f["series"][name]
+        return {k: str(g[k].attrs["units"]) for k in g if isinstance(g[k], h5py.Dataset) and "units" in g[k].attrs}
+
+
 def read_snapshot(path, k: int) -> dict:
     """Snapshot ``k`` of an :class:`H5Output` file: ``t`` [s], ``pos`` and every field."""
     with h5py.File(path, "r") as f:
@@ -387,20 +415,27 @@ def read_snapshot(path, k: int) -> dict:
         return out
 
 
-def write_csv(path, series: dict) -> None:
+def write_csv(path, series: dict, units: dict | None = None) -> None:
     """Write one series (``{"t": (n,) [s], key: (n,) or (n, k)}``, as :func:`read_series`
     reads it) as CSV: a header ``t``, then
-    ``key`` or ``key_0 .. key_{k-1}`` per key, one row per time, full precision."""
+    ``key`` or ``key_0 .. key_{k-1}`` per key, each with ``[UNIT]`` where ``units`` (as
+    :func:`read_units` reads them) has it, one row per time, full precision."""
     if "t" not in series:
         raise InputError("write_csv: the series has no 't' (time) column")
+    units = units or {}
+
+    def label(name, key):
+        return f"{name} [{units[key]}]" if key in units else name
+
     t = np.asarray(series["t"], dtype=np.float64)
-    cols, names = [t[:, None]], ["t"]
+    cols, names = [t[:, None]], [label("t", "t")]
     for k, v in series.items():
         if k == "t":
             continue
         a = np.asarray(v, dtype=np.float64).reshape(t.shape[0], -1)
         cols.append(a)
-        names += [k] if a.shape[1] == 1 and np.ndim(v) == 1 else [f"{k}_{j}" for j in range(a.shape[1])]
+        names += [label(k, k)] if a.shape[1] == 1 and np.ndim(v) == 1 else [label(f"{k}_{j}", k)
+                                                                           for j in range(a.shape[1])]
     np.savetxt(path, np.hstack(cols), delimiter=",", header=",".join(names), comments="", fmt="%.17g")
 
 

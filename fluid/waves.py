@@ -227,6 +227,33 @@ class Sea:
         zz = np.asarray(z, float)
         return rho * self.g * (self.level - zz) + self.dynamic_pressure(x, y, z, t, rho)
 
+    def displacement(self, x, y, z, t) -> tuple[np.ndarray, np.ndarray]:
+        """The linear (first-order) displacement [m] of the water particle whose mean position
+        is ``x``, ``y``, ``z`` [m] from it at time ``t`` [s], and its rate [m/s], each
+        ``(N, 3)`` (points given as 1-D arrays): per component ``ξ_h = −a cosh k(ζ+d)/sinh kd
+        sin θ``, ``ξ_z = a sinh k(ζ+d)/sinh kd cos θ`` (Dean & Dalrymple 1991, §4.8: the
+        orbits of linear theory), faded in with the sea (the rate is the exact derivative of
+        the faded displacement). A wall whose particles move so follows the incident sea
+        without disturbing it (to first order). Higher-order terms (Stokes-2) are left out;
+        above the still water the displacement at it, below the seabed at the seabed."""
+        xs, ys, zs = (np.atleast_1d(np.asarray(v, float)) for v in (x, y, z))
+        w, a, ph, k = self._comp
+        e = self.heading
+        s_pos = xs * e[0] + ys * e[1]
+        zeta = np.clip(zs - self.level, -self.depth, 0.0)
+        th = np.multiply.outer(s_pos - self._s_ref, k) - w * t + ph
+        kz = np.multiply.outer(zeta, k)
+        den = -np.expm1(-2.0 * k * self.depth)
+        e1, e2 = np.exp(kz), np.exp(-kz - 2.0 * k * self.depth)
+        ch, sh = (e1 + e2) / den, (e1 - e2) / den
+        sn, c = np.sin(th), np.cos(th)
+        xh, xz = -(ch * sn) @ a, (sh * c) @ a
+        uh, uz = (ch * c) @ (a * w), (sh * sn) @ (a * w)
+        r, dr = self._fade(s_pos, np.full_like(s_pos, float(t)))
+        disp = np.stack([r * xh * e[0], r * xh * e[1], r * xz], axis=-1)
+        rate = np.stack([(r * uh + dr * xh) * e[0], (r * uh + dr * xh) * e[1], r * uz + dr * xz], axis=-1)
+        return disp, rate
+
     # -- the machinery ---------------------------------------------------------------------
     def _fade(self, s, t):
         """The fade-in r and its rate r' [1/s] at positions ``s`` along the heading."""

@@ -266,7 +266,13 @@ class MoorDynMooring:
         limits only light, thin lines in fast flow.
     ic_time, ic_threshold, ic_drag_scale:
         MoorDyn's initial-condition relaxation: TmaxIC [s], threshIC [-],
-        CdScaleIC [-].
+        CdScaleIC [-]. It runs as upscaled-drag dynamics (``ICgenDynamic 1``: the lines
+        move with their fairleads held and their drag scaled up until the tensions stop
+        changing), so that the lines start settled. MoorDyn 2.7's default, the stationary
+        solver, stops at once on a line that hangs from its fairlead onto the seabed
+        (resting: its catenary guess fails and the straight line it falls back to is
+        slack): such a line started with 0.11 N at its fairlead against the catenary's
+        1.24 N and fell into place over the first 0.2 s, its tension overshooting to 4.4 N.
     name:
         Participant name used in messages.
 
@@ -423,7 +429,8 @@ class MoorDynMooring:
         opts = [(self.dt_internal, "dtM"), (o["seabed_stiffness"], "kbot"), (o["seabed_damping"], "cbot"),
                 (self.rho, "WtrDnsty"), (self.depth, "WtrDpth"), (self.g, "g"), (o["ic_time"], "TmaxIC"),
                 (o["ic_drag_scale"], "CdScaleIC"), (o["ic_threshold"], "threshIC")]
-        opts_text = [f"{_num(v)} {k}" for v, k in opts] + ["RK2 tScheme"]  # dt_internal assumes RK2
+        opts_text = [f"{_num(v)} {k}" for v, k in opts] + ["RK2 tScheme",  # dt_internal assumes RK2
+                                                          "1 ICgenDynamic"]  # settled lines (ic_time's doc)
         return "\n".join([
             "--------------------- MoorDyn Input File ------------------------------------",
             f"written by moorings.moordyn_mooring for {self.name}: lines {', '.join(ln.name for ln in self.lines)}",

@@ -23,9 +23,9 @@ def test_line_table_csv_and_png(tmp_path, capsys):
     # no sample falls between lift-off (6.288 m) and taut (6.457 m): both changes are still reported
     assert [r["state"] for r in rows] == ["RESTING", "PARTLY_LIFTED", "PARTLY_LIFTED", "PARTLY_LIFTED",
                                           "PARTLY_LIFTED", "TAUT"]
-    X = np.array([float(r["X_m"]) for r in rows])
+    X = np.array([float(r["X [m]"]) for r in rows])
     ref = solve(X, 2.651, 6.98, 1.036)
-    np.testing.assert_array_equal([float(r["H_N"]) for r in rows], ref.H)
+    np.testing.assert_array_equal([float(r["H [N]"]) for r in rows], ref.H)
     assert out_png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
@@ -44,11 +44,24 @@ def test_line_bad_input_is_a_clear_error(capsys):
     assert "--length is required" in capsys.readouterr().err
 
 
-def test_validate_list_and_run(capsys):
+def test_validate_list_and_run(capsys, tmp_path):
     assert main(["validate", "--list"]) == 0
     listed = capsys.readouterr().out
     for name in ("catenary-limits", "catenary-johanning-2007", "catenary-johanning-2006", "catenary-two-lines"):
         assert name in listed
+    assert listed.startswith("no validation records in ") and "cost and status unknown" in listed
+    # with records (a report's records.jsonl): each variant's cost and what it met
+    records = tmp_path / "records.jsonl"
+    records.write_text("\n".join(json.dumps(r) for r in (
+        {"name": "catenary-limits", "quick": True, "passed": True, "wall_s": 0.31},
+        {"name": "westergaard", "quick": False, "passed": True, "wall_s": 812.0,
+         "departure": {"criterion": "RMS of k_p", "why": "..."}, "stated": {"met": False}},
+        {"name": "dambreak-2d", "quick": False, "passed": False, "wall_s": 95.0})) + "\n")
+    assert main(["validate", "--list", "--from", str(records)]) == 0
+    rows = {ln.split()[0]: ln for ln in capsys.readouterr().out.splitlines() if ln.strip()}
+    assert "0.31 s" in rows["catenary-limits"] and "quick: target met" in rows["catenary-limits"]
+    assert "812 s" in rows["westergaard"] and "full: departure met (stated target not met)" in rows["westergaard"]
+    assert "full: not met" in rows["dambreak-2d"] and "quick: no record" in rows["dambreak-2d"]
     assert main(["validate", "catenary-limits", "--quick"]) == 0
     rec = json.loads(capsys.readouterr().out)
     assert rec["name"] == "catenary-limits" and rec["passed"] is True and rec["quick"] is True

@@ -20,6 +20,14 @@ def test_inspect_prints_json_and_writes_csv(tmp_path, capsys):
     assert info["snapshots"]["count"] == 1 and info["attrs"]["dx"] == 0.01
     table = np.loadtxt(tmp_path / "csv" / "bodies__box.csv", delimiter=",", skiprows=1)
     np.testing.assert_array_equal(table[1], [0.1, 0.0, 0.0, 0.9])
+    # units the file states go into the header (the time's always: s)
+    with H5Output(tmp_path / "u.h5", dim=2) as out:
+        out.annotate("probes/motion", "box.heave", units="m")
+        out.series("probes/motion", 0.0, **{"box.heave": 0.0, "box.pitch": 1.0})
+    assert main(["inspect", str(tmp_path / "u.h5"), "--csv", str(tmp_path / "u")]) == 0
+    capsys.readouterr()
+    head = (tmp_path / "u" / "probes__motion.csv").read_text().splitlines()[0]
+    assert head == "t [s],box.heave [m],box.pitch"
 
 
 def test_inspect_names_a_file_that_is_not_an_output(tmp_path, capsys):

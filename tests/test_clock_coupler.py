@@ -68,13 +68,25 @@ def test_every_participant_sees_the_same_clock_and_the_end_time_exactly():
     assert a.t_init == 0.0
 
 
-def test_user_dt_and_participant_limit_take_the_smaller():
-    c = Coupler([Recorder("fluid", max_dt=1e-3)], dt=1e-2)
-    info = c.step(1.0)
-    assert info.dt == 1e-3 and info.limiter == "fluid"
-    c = Coupler([Recorder("fluid", max_dt=1.0)], dt=1e-2)
+def test_a_fixed_step_is_the_step_used_or_refused_and_every_other_step_is_counted():
+    """A fixed step above a participant's stable step at the start could not be the step
+    used: refused, naming the participant, its step and the fix. Below it, it is the step;
+    a participant that needs less later gets less, and step_summary() counts each step by
+    what set it."""
+    with pytest.raises(ConfigurationError, match=r"dt = 0.01 s is above the stable step of participant 'fluid', 0.001 s, "
+                                                 r"which would set the step instead; leave dt unset .* dt <= 0.001 s"):
+        Coupler([Recorder("fluid", max_dt=1e-3)], dt=1e-2).step(1.0)
+    p = Recorder("fluid", max_dt=1.0)
+    c = Coupler([p], dt=1e-2)
     info = c.step(1.0)
     assert info.dt == 1e-2 and info.limiter == "user dt"
+    p._max_dt = 4e-3  # later the fluid needs less: 0.004 s steps up to 0.03 s, the last one landing on it
+    c.run(0.03)
+    s = c.step_summary()
+    assert s["dt_set_s"] == 0.01 and s["steps"] == 6
+    assert {k: v["steps"] for k, v in s["by_limiter"].items()} == {"user dt": 1, "fluid": 4, "end time": 1}
+    assert s["dt_min_s"] == pytest.approx(0.004, abs=1e-15) and s["dt_max_s"] == 0.01
+    assert s["dt_mean_s"] == pytest.approx(0.03 / 6, rel=1e-12)
 
 
 def test_checkpoint_restores_clock_and_participants():

@@ -3,6 +3,7 @@
 the same scene."""
 
 import json
+import os
 import runpy
 import subprocess
 import sys
@@ -17,7 +18,11 @@ SCENES = sorted(EXAMPLES.glob("*.toml"))
 
 
 def _run(args, cwd=None, timeout=1800):
-    return subprocess.run([sys.executable, *map(str, args)], capture_output=True, text=True, timeout=timeout, cwd=cwd)
+    """Run in a child process that imports this checkout's packages (a script's own folder,
+    not the checkout, starts its path)."""
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(EXAMPLES.parent), os.environ.get("PYTHONPATH", "")]))
+    return subprocess.run([sys.executable, *map(str, args)], capture_output=True, text=True, timeout=timeout, cwd=cwd,
+                          env=env)
 
 
 @pytest.mark.parametrize("path", SCENES, ids=[p.stem for p in SCENES])
@@ -27,6 +32,35 @@ def test_scene_example_runs_at_default(path, tmp_path):
     s = json.loads((tmp_path / "summary.json").read_text())
     assert s["t_reached_s"] == Scene.from_toml(path).world.duration and "error" not in s
     assert list(tmp_path.glob("*.png")) and list(tmp_path.glob("*.csv"))
+    if path.stem == "moored_box_waves":  # the main example moors its box: the lines lift and go slack
+        import numpy as np
+
+        states = np.loadtxt(tmp_path / "line_states.csv", delimiter=",", skiprows=1)[:, 1:]
+        tension = np.loadtxt(tmp_path / "tensions.csv", delimiter=",", skiprows=1)[:, 1:3]
+        for k in range(2):
+            assert {0.0, 1.0} <= set(states[:, k]), k  # resting and partly lifted, each line
+            assert tension[:, k].max() > 1.25 * tension[:, k].min(), k
+
+
+def test_the_main_example_lines_are_just_lifted_at_rest():
+    """The design of examples/moored_box_waves (its docstring), by the catenary: at the
+    floating box's start each line is partly lifted with a small pull, and a surge of
+    0.022-0.023 m towards its anchor lays it on the seabed (X = L - h)."""
+    import pytest
+
+    from cosim.scene.placement import floating_height
+    from moorings.catenary import LineState, solve
+
+    scene = Scene.from_toml(EXAMPLES / "moored_box_waves.toml")
+    box, lines = scene.bodies[0], scene.moorings.lines
+    h = floating_height(box, 2, 0.3, 1000.0, 9.81, lines) - 0.05  # the fairleads, 0.05 m below the centre
+    for ln, x in zip(lines, (1.1, 1.3)):
+        X = abs(x - ln.anchor[0])
+        r = solve(X, h, ln.length, ln.weight, ln.EA)
+        assert r.state == LineState.PARTLY_LIFTED and 0.0 < r.H < 0.1 * r.V
+        assert 0.022 < X - (ln.length - h) < 0.023
+        assert solve(X - 0.023, h, ln.length, ln.weight, ln.EA).state == LineState.RESTING
+    assert h == pytest.approx(0.2474, abs=1e-3)
 
 
 @pytest.mark.parametrize("path", SCENES, ids=[p.stem for p in SCENES])

@@ -692,3 +692,46 @@ def test_c_sources_compile_without_warnings(tmp_path):
                               str(src / "sources" / "fmi2_catenary.c"), "-o", str(src / "x.so"), "-lm"],
                              capture_output=True, text=True)
         assert res.returncode == 0, res.stderr
+
+
+def test_cli_export_fmu_of_a_scene(tmp_path, capsys):
+    """``cosim export-fmu SCENE.toml``: the scene's own lines, no file of lines to retype;
+    the fairleads start where the run starts them (the floating box's computed height), and
+    the FMU's forces there are the catenary law's."""
+    from fmpy import read_model_description
+
+    from cosim.cli import main
+    from cosim.scene import Scene
+    from cosim.scene.build import mooring_lines
+    from cosim.scene.placement import floating_height
+    from moorings.catenary_mooring import CatenaryMooring
+    from moorings.fmu_export import catenary_fmu_variable_map, fmu_line_names
+    from moorings.fmu_mooring import FMUMooring
+
+    example = Path(__file__).resolve().parents[1] / "examples" / "moored_box_waves.toml"
+    scene = Scene.from_toml(example)
+    out = tmp_path / "m.fmu"
+    assert main(["export-fmu", str(example), "--out", str(out)]) == 0
+    assert "2 line(s), 2-D" in capsys.readouterr().out
+    lines = mooring_lines(scene)
+    left, right = fmu_line_names(lines)
+    v = {x.name: x for x in read_model_description(str(out)).modelVariables}
+    assert float(v[f"{right}.anchor.x"].start) == 1.9 and float(v[f"{left}.length"].start) == 0.825
+    assert float(v[f"{left}.weight"].start) == 10.0 and float(v[f"{left}.EA"].start) == 1e5
+    z = floating_height(scene.bodies[0], 2, 0.3, 1000.0, 9.81, scene.moorings.lines) - 0.05
+    fl = np.array([[float(v[f"{n}.fairlead.{a}"].start) for a in "xz"] for n in (left, right)])
+    np.testing.assert_allclose(fl, [[1.1, z], [1.3, z]], atol=1e-9)
+    fmu = FMUMooring(out, lines, catenary_fmu_variable_map(lines), fairleads=fl)
+    fmu.initialize(0.0)
+    np.testing.assert_allclose(fmu.fairlead_forces(), CatenaryMooring(lines, fairleads=fl).fairlead_forces(),
+                               rtol=1e-12, atol=1e-12)
+    fmu.close()
+    # the box's pose in: its fairleads in the body frame, its start pose the scene's
+    posed = tmp_path / "p.fmu"
+    assert main(["export-fmu", str(example), "--out", str(posed), "--body-pose"]) == 0
+    v = {x.name: x for x in read_model_description(str(posed)).modelVariables}
+    assert float(v["body.x"].start) == pytest.approx(1.2) and float(v["body.z"].start) == pytest.approx(z + 0.05)
+    assert float(v[f"{left}.fairlead_body.x"].start) == -0.1
+    # a scene without lines is a clear error
+    assert main(["export-fmu", str(example.with_name("sloshing_tank.toml")), "--out", str(tmp_path / "n.fmu")]) == 2
+    assert "has no mooring lines" in capsys.readouterr().err and not (tmp_path / "n.fmu").exists()

@@ -63,14 +63,14 @@ def test_scene_reports_line_events_and_a_state_column(tmp_path):
     from cosim.scene import Analytic, Box, Coupling, Line, LinearWaves, Moorings, Scene, World
 
     line = dict(length=30.0, weight=200.0)
-    scene = Scene(name="events", world=World(dim=2, duration=10.0, sample_every=0.05),
+    scene = Scene(name="events", world=World(dim=2, duration=10.0, sample_every=0.01),
                   fluid=Analytic(rho=1025.0, level=0.0, linear_damping={"box": [2000, 0, 4000, 0, 4000, 0]}),
                   waves=LinearWaves(height=2.4, period=10.0, depth=10.0, ramp=0.5),
                   bodies=[Box("box", size=(4.0, 2.0), density=500.0, pos=(0.0,), place="floating",
                               fairleads={"aft": (-2.0, -1.0), "fore": (2.0, -1.0)})],
                   moorings=Moorings(lines=[Line("box.aft", anchor=(-29.0, -10.0), name="stern", **line),
                                            Line("box.fore", anchor=(29.0, -10.0), name="bow", **line)]),
-                  coupling=Coupling(dt=0.05, body_timestep=0.005))
+                  coupling=Coupling(dt=0.01, body_timestep=0.005))  # below the fluid's 0.0195 s: a sample a step
     res = scene.run(tmp_path / "r")
     ev = res.summary["line_events"]["stern"]
     state, t = res["stern.state"], res.t

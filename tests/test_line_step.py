@@ -116,7 +116,8 @@ def test_the_wind_turbine_base_takes_the_lines_step_and_goes_unstable_at_twice_i
         # sub-iterated exchange settles: below)
         assert late < 1.2 * early
     monkeypatch.setattr(ls, "SAFETY", {"spring": 100.0, "dashpot": 100.0})  # let twice the bound through
-    fast = build(base.with_values([f"coupling.dt={2 * 2 / lim.rate:.6g}"]), tmp_path / "2x")
+    dt = f"{2 * 2 / lim.rate:.6g}"  # a step that lands on the samples (cosim.scene.timing)
+    fast = build(base.with_values([f"coupling.dt={dt}", f"world.sample_every={dt}"]), tmp_path / "2x")
     try:
         assert max(run(fast)[1:]) > 100 * max(early, late)  # MoorDyn: 0.15 rad/s
     except InstabilityError:  # the coupler's watch saw the base's acceleration grow (the SPH cable)
@@ -147,9 +148,9 @@ def test_the_base_on_dynamic_lines_settles_at_the_derived_step(model, tmp_path):
 def test_a_given_step_above_the_lines_limit_is_refused_naming_the_line_the_limit_and_the_fix(tmp_path):
     pytest.importorskip("moordyn")
     scene = Scene.from_toml(WT).with_values(["moorings.model=moordyn", "coupling.dt=0.01"])
-    says = (r"coupling step dt = 0.01 s is above 0.00498 s, the largest step at which the bodies follow mooring "
+    says = (r"coupling step dt = 0.01 s is above 0.00499 s, the largest step at which the bodies follow mooring "
             r"'moordyn', line 'front_(port|starboard)': its axial impedance on body 'base'.*Leave dt unset \(a "
-            r"scene: remove coupling.dt\).*or set dt <= 0.00498 s")
+            r"scene: remove coupling.dt\).*or set dt <= 0.00499 s")
     with pytest.raises(ConfigurationError, match=says):
         scene.run(tmp_path / "out")
     assert not (tmp_path / "out" / "summary.json").exists()

@@ -295,3 +295,25 @@ def test_roll_backs_keep_the_reference_count_of_none():
         m.load_state(state)
     assert abs(sys.getrefcount(None) - before) <= 5  # without the repair: 500 fewer
     m.close()
+
+
+@needs_moordyn
+def test_a_line_resting_on_the_seabed_starts_settled():
+    """A line that hangs from its fairlead onto the seabed (RESTING: the catenary's V = w h,
+    H = 0) starts at the catenary's fairlead force and stays there at rest; MoorDyn's
+    default initial solve left it at 0.11 N against 1.24 N, and it fell into place over
+    the first 0.2 s, its tension overshooting to 4.4 N. Tolerance: 6 % (the seabed springs
+    and the lumped top node of 20 segments, measured 5.4 %)."""
+    lines = [MooringLine((0.5, 0.0), 0.9, 5.0, EA=1e5, mass_per_length=0.588, name="left"),
+             MooringLine((1.9, 0.0), 0.9, 5.0, EA=1e5, mass_per_length=0.588, name="right")]
+    fl = np.array([[1.1, 0.2487], [1.3, 0.2487]])  # X = 0.6 m <= L - h = 0.651 m: resting
+    cat = CatenaryMooring(lines, fairleads=fl)
+    assert cat.fairlead_forces()[0] == pytest.approx([0.0, -5.0 * 0.2487], rel=1e-4)  # elastic: 1e-5 off
+    md = MoorDynMooring(lines, fairleads=fl, water_level=0.3, rho=1000.0)
+    md.initialize(0.0)
+    tensions = [md.fairlead_tensions()]
+    for k in range(50):  # 0.5 s at rest
+        md.advance(0.01 * k, 0.01)
+        tensions.append(md.fairlead_tensions())
+    md.close()
+    assert np.all(np.abs(np.array(tensions) / cat.fairlead_tensions() - 1.0) < 0.06), np.array(tensions)

@@ -1,25 +1,119 @@
-"""The README's Python snippets run as written (in a scratch folder: they write outputs)."""
+"""The README as a user meets it: its Python runs as written, its cheap shell commands run
+(the costly ones parse: their flags, the scene they name and its --set values), and the
+Python of the pages moved out of it runs too. Each in a scratch folder: they write outputs."""
 
 import re
+import shlex
+import shutil
+import tomllib
 from pathlib import Path
 
-README = Path(__file__).resolve().parents[1] / "README.md"
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+README = ROOT / "README.md"
+#: the pages that took the README's longer sections, with their Python
+PAGES = [ROOT / "docs" / name for name in ("coupling.md", "fluid.md", "moorings.md")]
 
 
-def test_readme_python_blocks_run(tmp_path, monkeypatch):
+def blocks(path: Path, lang: str) -> list[str]:
+    return re.findall(rf"```{lang}\n(.*?)```", path.read_text(), flags=re.S)
+
+
+def commands(path: Path) -> list[list[str]]:
+    """Every command of the shell blocks, split at ``&&``, comments dropped."""
+    out = []
+    for block in blocks(path, "sh"):
+        for line in block.replace("\\\n", " ").splitlines():
+            line = line.split(" #", 1)[0].strip()
+            out += [shlex.split(c) for c in line.split("&&") if c.strip()]
+    return out
+
+
+def _run_python(path: Path, tmp_path, monkeypatch) -> dict:
     monkeypatch.chdir(tmp_path)
-    blocks = re.findall(r"```python\n(.*?)```", README.read_text(), flags=re.S)
-    assert len(blocks) >= 3
     ran = {}
-    for code in blocks:
+    for code in blocks(path, "python"):
         namespace = {}
-        exec(compile(code, str(README), "exec"), namespace)  # noqa: S102 - our own README
+        exec(compile(code, str(path), "exec"), namespace)  # noqa: S102 - our own pages
         ran.update(namespace)
+    return ran
+
+
+def test_readme_python_runs(tmp_path, monkeypatch):
+    ran = _run_python(README, tmp_path, monkeypatch)
     # the scene ran its 20 s into its folder, and its TOML reads back as the same scene
     assert ran["results"].t[-1] == 20.0 and (tmp_path / "out" / "moored_box" / "summary.json").is_file()
-    assert ran["scene"].from_dict(__import__("tomllib").loads(ran["toml"])) == ran["scene"]
+    assert ran["scene"].from_dict(tomllib.loads(ran["toml"])) == ran["scene"]
+    assert ran["results"].units["box.left.tension"] == "N"
+
+
+def test_pages_python_runs(tmp_path, monkeypatch):
+    ran = {}
+    for page in PAGES:
+        ran |= _run_python(page, tmp_path, monkeypatch)
     # the hand-wired coupled-scene snippet ran its 20 s and booked every step
-    assert ran["coupler"].t == 20.0
-    assert len(ran["coupler"].ledger) == ran["coupler"].steps
+    assert ran["coupler"].t == 20.0 and len(ran["coupler"].ledger) == ran["coupler"].steps
     # the wave set-up's tank settled with its clock held at 0
     assert ran["f"].t == 0.0 and ran["f"].max_speed() < 0.05
+    # the catenary law: seed 004's line partly lifted at 5.5 and 6 m, past its lift-off (6.288 m) at 6.4 m
+    assert ran["r"].state.tolist() == [1, 1, 2] and ran["r"].H.shape == (3,)
+
+
+def _absolute(args: list[str]) -> list[str]:
+    """Arguments that name a file of the checkout, made absolute (the commands run elsewhere)."""
+    return [str(ROOT / a) if (ROOT / a).is_file() and not Path(a).is_absolute() else a for a in args]
+
+
+def test_readme_commands_run_or_parse(tmp_path, monkeypatch, capsys):
+    """`pip install` names extras the project has; `python -m pytest` is what CI runs; `cosim
+    run` parses and its scene loads with its --set values (a run costs 30 s); `cosim line`,
+    `cosim export-fmu` and `cosim validate --list` run, writing what they say."""
+    from cosim.cli import build_parser, main
+    from cosim.scene.load import load
+
+    cmds = commands(README)
+    assert ["python", "-m", "pytest"] in cmds and ["cosim", "run", "examples/moored_box_waves.toml"] in cmds
+    extras = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]["optional-dependencies"]
+    monkeypatch.chdir(tmp_path)
+    seen = set()
+    for cmd in cmds:
+        if cmd[:2] == ["pip", "install"]:
+            spec = cmd[-1]
+            assert cmd[2] == "-e" and spec.split("[")[0] == "."
+            assert all(e in extras for e in re.findall(r"\[(.*)\]", spec)[0].split(",")) if "[" in spec else True
+        elif cmd[0] == "python":
+            assert cmd == ["python", "-m", "pytest"], cmd
+        elif cmd[:2] == ["cosim", "run"]:
+            args = build_parser()[0].parse_args(_absolute(cmd[1:]))
+            scene = load(args.scene)
+            assert scene.with_values(args.set) is not None and args.out is None
+        else:
+            assert cmd[0] == "cosim", cmd
+            if cmd[1] == "export-fmu" and shutil.which("cc") is None and shutil.which("gcc") is None:
+                continue
+            assert main(_absolute(cmd[1:])) == 0, cmd
+            out = capsys.readouterr().out
+            if "--png" in cmd:
+                assert (tmp_path / cmd[cmd.index("--png") + 1]).read_bytes()[:4] == b"\x89PNG"
+            if cmd[1] == "export-fmu":
+                assert (tmp_path / cmd[cmd.index("--out") + 1]).stat().st_size > 0 and "passed" in out
+            if cmd[1:3] == ["validate", "--list"]:
+                assert "catenary-limits" in out
+        seen.add(" ".join(cmd[:2]))
+    assert {"cosim line", "cosim export-fmu", "cosim validate"} <= seen
+
+
+def test_readme_is_short_and_starts_with_the_commands():
+    """A user reaches the first command after one paragraph; the long figures live in docs/."""
+    lines = README.read_text().splitlines()
+    first = next(i for i, ln in enumerate(lines) if ln.startswith("pip install"))
+    assert first < 20 and len(lines) < 150
+    for link in re.findall(r"\]\((docs/[^)#]+)", README.read_text()):
+        assert (ROOT / link).is_file(), link
+
+
+@pytest.mark.parametrize("page", PAGES, ids=[p.name for p in PAGES])
+def test_pages_link_to_files_that_exist(page):
+    for link in re.findall(r"\]\(([^)#:]+)", page.read_text()):
+        assert (page.parent / link).exists(), (page.name, link)

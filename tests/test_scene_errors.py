@@ -896,8 +896,13 @@ CASES = [
     case("a body in the paddle's sweep", "flume", ("bodies[0].pos", [0.11]), "bodies[0].pos",
          "the body starts at x = 0.01 m, within the paddle's sweep", "Scene.bodies[0].pos"),
     # -- times and files
-    case("plot_at outside the run", "flume", ("world.plot_at", [2.5, 6.0]), "world.plot_at[1]",
-         "6.0 s lies outside the run, 0 .. 5.0 s", "World.plot_at[1]"),
+    case("plot_at before the run", "flume", ("world.plot_at", [2.5, -1.0]), "world.plot_at[1]",
+         "-1.0 s lies before the run's start (0 s); give a time >= 0", "World.plot_at[1]"),
+    case("a coupling step that does not divide the samples", "analytic",
+         (("world.sample_every", 0.05), ("coupling.dt", 0.016)), "coupling.dt",
+         "0.016 s does not divide world.sample_every = 0.05 s (3.125 steps): the run stops exactly at each output "
+         "time, so the step before each would be cut short and 0.016 s would not be the step used; give a step that "
+         "divides the output intervals, e.g. 0.0125 s or 0.0166667 s", "Scene.coupling.dt"),
     case("sample_every longer than the run", "flume", ("world.sample_every", 10.0), "world.sample_every",
          "10.0 s is longer than the run (5.0 s)", "World.sample_every"),
     case("the 2-D default direction in 3-D", "tank3d", ("base_motion.direction", OUT), "base_motion.direction",
@@ -1091,9 +1096,9 @@ BUILD_CASES = [
          "the impulse response rebuilds the", None),
     case("a floating body that sinks", "flume", ("bodies[0].density", 1500.0), "bodies[0].place",
          "body 'box' (30 kg) sinks: fully submerged it displaces 20 kg of water", None),
-    case("a coupling step above the lines' stable step", "analytic",
-         (("coupling.dt", 2.0), ("moorings.lines[0].EA", 5e7)), "coupling.dt",
-         "coupling step dt = 2 s is above", None),
+    case("a coupling step above the analytic fluid's stable step", "analytic",
+         (("world.sample_every", 0.1), ("coupling.dt", 0.05)), "coupling.dt",
+         "coupling step dt = 0.05 s is above the stable step of participant 'fluid'", None),
 ]
 
 
@@ -1216,6 +1221,17 @@ CLI_CASES = [
     cli("--resume to a duration before the checkpoint", ["scene.toml", "--out", "out", "--resume", "--set",
                                                          "world.duration=0.05"],
         "world.duration: 0.05 s is before the checkpoint at 0.1 s", SCENE, prepare=[FIRST]),
+    cli("an output folder that holds an earlier run", ["scene.toml", "--out", "out"],
+        "output folder 'out' is not empty (checkpoint.h5, ledger.csv, line_states.csv, line_states.png and 10 more): "
+        "a run would leave the earlier files beside its own; give --overwrite", SCENE, prepare=[FIRST]),
+    cli("--overwrite of a folder no run wrote", ["scene.toml", "--out", "out", "--overwrite"],
+        "--overwrite: output folder 'out' holds notes.txt, none of them a run's output (summary.json, scene.toml, "
+        "run.h5, checkpoint.h5); it is not cleared: give a new or empty --out", SCENE | {"out/notes.txt": "mine\n"}),
+    cli("--overwrite with --resume", ["scene.toml", "--out", "out", "--overwrite", "--resume"],
+        "--overwrite clears the folder that --resume continues: give one", SCENE),
+    cli("a coupling step above the fluid's stable step", ["scene.toml", "--out", "out", "--set",
+                                                          "world.sample_every=0.1", "--set", "coupling.dt=0.05"],
+        "coupling step dt = 0.05 s is above the stable step of participant 'fluid'", SCENE),
     cli("an output folder under a regular file", ["scene.toml", "--out", "notes.txt/out"],
         "output folder 'notes.txt/out': 'notes.txt' is not a folder; give another --out",
         SCENE | {"notes.txt": "not a folder\n"}),
@@ -1566,8 +1582,8 @@ def render() -> str:
         "- [File contents](#file-contents): the files a scene names (an MJCF model, an accelerogram, a table of "
         "motion), read when the scene is constructed, as the builder will read them;",
         "- [Known once built](#known-once-built): what depends on a floating body's computed height or on the "
-        "built model (the lines' stable step), refused by `run` while it builds the scene, before the output folder "
-        "is made;",
+        "built participants (their stable steps), refused by `run` while it builds the scene, before the output "
+        "folder is made;",
         "- [The command line](#the-command-line): `cosim run` itself (with the runs whose estimated cost, "
         "`cosim.scene.cost`, passes the machine's memory or a day of CPU) and `cosim study`.",
         "",

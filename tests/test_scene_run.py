@@ -116,7 +116,14 @@ def test_run_writes_outputs_at_exact_times(tmp_path):
         assert len(f["snapshot_times"]) == 4 and len(f["series/ledger/box/t"]) == s["steps"]
         Fz = f["series/ledger/box/fluid_force"][:, 2]
         rows = [r.split(",") for r in (tmp_path / "ledger.csv").read_text().splitlines()]
-        assert rows[0][:3] == ["t_s", "body", "fluid_force_x"] and {r[1] for r in rows[1:]} == {"box"}
+        assert rows[0][:3] == ["t [s]", "body", "fluid_force_x [N]"] and {r[1] for r in rows[1:]} == {"box"}
+        # every dataset says its unit (CF's units attribute), a line's state what its codes mean
+        assert f["series/ledger/box/fluid_torque"].attrs["units"] == "N m"
+        assert f["series/probes/motion/box.pitch"].attrs["units"] == "deg"
+        assert f["series/probes/motion/t"].attrs["units"] == "s" and f["snapshots/0000/p"].attrs["units"] == "Pa"
+        states = f["series/probes/line_states/box.left.state"].attrs
+        assert list(states["flag_values"]) == [0, 1, 2, 3]
+        assert states["flag_meanings"].split() == ["resting", "partly_lifted", "fully_lifted", "taut"]
         np.testing.assert_array_equal([float(r[0]) for r in rows[1:]], f["series/ledger/box/t"][:])
         np.testing.assert_array_equal([float(r[4]) for r in rows[1:]], Fz)
     head = (tmp_path / "tensions.csv").read_text().splitlines()[0]
@@ -158,12 +165,12 @@ def test_resume_refuses_a_changed_scene(tmp_path):
 
 
 def test_failed_run_leaves_readable_outputs(tmp_path, monkeypatch):
-    import cosim.scene.runner as runner
+    import cosim.scene.plots as plots
 
     def broken(*a):
         raise RuntimeError("plotting failed")
 
-    monkeypatch.setattr(runner, "_plot_particles", broken)
+    monkeypatch.setattr(plots, "plot_particles", broken)
     with pytest.raises(RuntimeError, match="plotting failed"):
         shaken_tank(duration=0.2, plot_at=[0.1]).run(tmp_path, progress=False)
     s = json.loads((tmp_path / "summary.json").read_text())
@@ -274,13 +281,14 @@ def test_output_folder_that_cannot_be_written(tmp_path):
 
 
 def test_unstable_run_names_step_and_body_and_stays_readable(tmp_path):
-    """A speed of sound far below the flow's (0.2 m/s): the body outruns the fluid and the
-    run stops naming the step and the body; what was sampled before stays readable."""
+    """A speed of sound barely above the water's long-wave speed (2 m/s against sqrt(g h) =
+    1.7 m/s; a lower one is refused) in a tank shaken at 4.6 g: the body outruns the fluid
+    and the run stops naming the step and the body; what was sampled before stays readable."""
     from cosim.errors import InstabilityError
     from fluid.output import read_series
 
-    s = Scene(world=World(dim=2, duration=1.0, sample_every=0.005), fluid=SPH(dx=0.02, c0=0.2),
-              domain=Tank(length=0.6, height=0.5, depth=0.3),
+    s = Scene(world=World(dim=2, duration=1.0, sample_every=0.005), fluid=SPH(dx=0.03, c0=2.0),
+              domain=Tank(length=0.6, height=0.5, depth=0.3), base_motion=Shake(period=0.5, acceleration=45.0),
               bodies=[Box("cork", size=(0.12, 0.08), density=10.0, pos=(0.3,), place="floating")])
     with pytest.raises(InstabilityError, match=r"step \d+, t = [0-9.]+ s: body 'cork' moves at .* speed of sound"):
         s.run(tmp_path, progress=False)

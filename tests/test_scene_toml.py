@@ -357,13 +357,11 @@ def probes(draw, dim, sph, names, box, domain=None, dx=None):
 
 
 @st.composite
-def couplings(draw, sph, duration):
+def couplings(draw, sph, dt=None):
     scheme = draw(st.sampled_from(["auto", "explicit", "predictor-corrector"] + (["fluid-first"] if sph else [])))
     light = draw(st.sampled_from(["auto", "none", "added-mass"]
                                  + (["subiterate"] if scheme in ("auto", "fluid-first") else [])))
-    dt = draw(maybe(pos_num(1.0)))  # at most the run's duration
-    return Coupling(scheme=scheme, light_body=light, dt=None if dt is None else min(dt, duration),
-                    body_timestep=draw(pos_num(1.0)))
+    return Coupling(scheme=scheme, light_body=light, dt=dt, body_timestep=draw(pos_num(1.0)))
 
 
 @st.composite
@@ -485,7 +483,12 @@ def scenes(draw, dim=None, fluid_kind=None, domain_kind=None):
         kw["moorings"] = Moorings(lines=lines)
     kw["probes"] = draw(probes(dim, fluid_kind == "sph", names, box, kw.get("domain"),
                                kw["fluid"].dx if fluid_kind == "sph" else None))
-    kw["coupling"] = draw(couplings(fluid_kind == "sph", world.duration))
+    dt = None
+    if draw(st.booleans()):  # a fixed step lands on the output intervals (cosim.scene.timing)
+        dt = world.sample_every / draw(st.integers(1, 1000))
+        world = world.replace(**{k: world.sample_every * draw(st.integers(0, 1000))
+                                 for k in ("snapshot_every", "checkpoint_every")})
+    kw["coupling"] = draw(couplings(fluid_kind == "sph", dt))
     if draw(st.booleans()):
         kw["name"] = draw(NAMES)
     return Scene(world=world, **kw)

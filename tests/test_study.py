@@ -81,7 +81,7 @@ def test_pareto_front():
 def study(tmp_path_factory):
     scene = Scene.from_toml(BOX).with_values(["world.duration=2.0"])
     out = tmp_path_factory.mktemp("study")
-    res = run_study(scene, {"coupling.dt": [0.016, 0.008, 0.004]}, ["box.surge:min", "box.left.tension:mean"], out,
+    res = run_study(scene, {"coupling.dt": [0.01, 0.005, 0.0025]}, ["box.surge:min", "box.left.tension:mean"], out,
                     reference="richardson", tol=1e-5, serial=True)
     return scene, out, res
 
@@ -102,7 +102,7 @@ def test_coupling_step_converges_at_second_order(study):
 
 def test_repeated_study_costs_nothing(study):
     scene, out, first = study
-    again = run_study(scene, {"coupling.dt": [0.016, 0.008, 0.004]}, ["box.surge:min"], out,
+    again = run_study(scene, {"coupling.dt": [0.01, 0.005, 0.0025]}, ["box.surge:min"], out,
                       reference="finest", serial=True)
     assert all(r["cached"] for r in again.rows)
     assert [r["metrics"]["box.surge:min"] for r in again.rows] == [r["metrics"]["box.surge:min"] for r in first.rows]
@@ -130,7 +130,7 @@ def test_a_run_that_writes_more_than_a_pipe_holds_is_not_stalled(tmp_path):
 def test_unknown_metric_series_is_named(study):
     scene, out, _ = study
     with pytest.raises(InputError, match="no series 'box.roll'"):
-        run_study(scene, {"coupling.dt": [0.016]}, ["box.roll:max"], out, serial=True)
+        run_study(scene, {"coupling.dt": [0.01]}, ["box.roll:max"], out, serial=True)
 
 
 def test_cli_study_on_dask(tmp_path):
@@ -180,11 +180,11 @@ def test_series_names_are_what_a_run_records(base, changes, tmp_path):
     ({"workers": -1}, "--workers -1: give a whole number >= 1"),
     ({"workers": 0}, "--workers 0: give a whole number >= 1"),
     ({"threads": 0}, "--threads 0: give a whole number >= 1"),
-    ({"specs": ["box.roll:max"]}, "--metric 'box.roll:max': the runs with {'coupling.dt': 0.016} record no series "
+    ({"specs": ["box.roll:max"]}, "--metric 'box.roll:max': the runs with {'coupling.dt': 0.01} record no series "
                                   "'box.roll'; they record box.surge, box.heave, box.pitch"),
     ({"specs": ["box.heave:median"]}, "unknown statistic 'median'"),
-    ({"vary": {"coupling.dt": [0.016, 0.016]}}, "--vary coupling.dt: the value 0.016 is given twice"),
-    ({"vary": {"coupling.dtt": [0.016]}}, "coupling.dtt: unknown key; did you mean 'dt'?"),
+    ({"vary": {"coupling.dt": [0.01, 0.01]}}, "--vary coupling.dt: the value 0.01 is given twice"),
+    ({"vary": {"coupling.dtt": [0.01]}}, "coupling.dtt: unknown key; did you mean 'dt'?"),
     ({"tol": -0.05}, "--tol -0.05: give a relative tolerance > 0"),
     ({"reference": "ref.json"}, "--reference ref.json: no reference value for box.heave:max"),
 ])
@@ -192,7 +192,7 @@ def test_every_spec_is_checked_before_the_first_run(kwargs, says, tmp_path, monk
     """A bad spec is refused before anything runs or is written: the study's folder is not made."""
     monkeypatch.chdir(tmp_path)
     Path("ref.json").write_text('{"box.surge:min": 1.0}')
-    args = dict(vary={"coupling.dt": [0.016, 0.008]}, specs=["box.heave:max"], workers=None, threads=1) | kwargs
+    args = dict(vary={"coupling.dt": [0.01, 0.005]}, specs=["box.heave:max"], workers=None, threads=1) | kwargs
     with pytest.raises(InputError) as e:
         run_study(Scene.from_toml(BOX), args.pop("vary"), args.pop("specs"), tmp_path / "study", serial=True, **args)
     assert says in str(e.value)

@@ -39,3 +39,27 @@ def test_extremes_of_a_floating_box(tmp_path):
     assert "bodies[0].density: runs at" in summary(rows)[0]
     assert len(json.loads((tmp_path / "extremes.json").read_text())) == len(rows) == 9
     assert (tmp_path / "extremes.md").read_text().startswith("# Extremes")
+
+
+def test_a_body_denser_than_water_sinks_as_physics_says(tmp_path):
+    """The analytic moored box at twice the water's density falls (net weight 20 kN/m on
+    4.1 t/m) until its fairleads pass below its anchors' seabed, where the run stops: that
+    is the physics, told apart from an unstable run; at half the density it floats."""
+    from pathlib import Path
+
+    import pytest
+
+    from cosim.errors import InstabilityError
+    from cosim.study.extremes import _sank
+
+    box = Scene.from_toml(Path(__file__).resolve().parents[1] / "examples" / "moored_box.toml")
+    heavy = box.with_values(["bodies[0].density=2050.0", "world.duration=4.0"])
+    with pytest.raises(InstabilityError, match="below the seabed through its anchor"):
+        heavy.run(tmp_path / "heavy" / "run", progress=False)
+    why = _sank(heavy, "bodies[0].density", tmp_path / "heavy")
+    assert why.startswith("denser than the water, body 'box' sank ") and why.endswith("as physics says")
+    assert float(why.split("sank ")[1].split(" m")[0]) > 9.0  # from z = 0 to the anchors' 10 m down
+    light = box.with_values(["bodies[0].density=512.5", "world.duration=1.0"])
+    light.run(tmp_path / "light" / "run", progress=False)
+    assert _sank(light, "bodies[0].density", tmp_path / "light") is None
+    assert _sank(light, "moorings.lines[*].EA", tmp_path / "light") is None

@@ -555,3 +555,28 @@ def test_analytic_fluid_refuses_a_sea_at_another_level():
 
     with pytest.raises(InputError, match=r"the sea's still level 1.5 m differs from free_surface_z = 0.0 m"):
         AnalyticFluid(waves=SEAS["jonswap"])
+
+
+@pytest.mark.parametrize("make", [
+    lambda: RegularWave(0.04, 1.0, 0.3, level=0.3, ramp=2.0, direction=30.0),
+    lambda: SpectralSea(0.04, 1.0, 0.3, level=0.3, seed=3, ramp=2.0, n_components=40),
+])
+def test_the_orbits_displacement_is_the_time_integral_of_the_velocity(make):
+    """Sea.displacement: its rate is its time derivative (finite differences, through the
+    fade-in too) and, once faded in, the sea's velocity at the mean position; a surface
+    particle rises by the elevation (linear theory's kinematic surface condition) and one on
+    the seabed does not rise."""
+    sea = make()
+    x, y = np.array([0.1, 0.7, 1.3]), np.array([0.0, 0.2, -0.4])
+    z = np.array([0.3, 0.12, 0.0])
+    for t in (0.7, 3.3):
+        d, r = sea.displacement(x, y, z, t)
+        dp, _ = sea.displacement(x, y, z, t + 1e-6)
+        dm, _ = sea.displacement(x, y, z, t - 1e-6)
+        np.testing.assert_allclose((dp - dm) / 2e-6, r, atol=1e-8)
+    np.testing.assert_allclose(r, sea.velocity(x, y, z, 3.3), atol=1e-14)
+    np.testing.assert_allclose(d[0, 2], sea.elevation(x[0], y[0], 3.3), atol=1e-14)
+    assert d[2, 2] == pytest.approx(0.0, abs=1e-15)
+    # horizontal displacements lie along the heading
+    e = sea.heading
+    np.testing.assert_allclose(d[:, 0] * e[1] - d[:, 1] * e[0], 0.0, atol=1e-15)

@@ -450,17 +450,39 @@ def _warn_mjcf_world(scene, out: Built) -> None:
                             f"the water); leave them out of the model, or give them a free joint")
 
 
+def mooring_lines(scene) -> list:
+    """The scene's mooring lines as :class:`moorings.MooringLine` records, each named by its
+    label (its ``name``, else its fairlead ``BODY.NAME``)."""
+    from moorings import MooringLine
+
+    return [MooringLine(ln.anchor, ln.length, ln.weight, EA=ln.EA, mass_per_length=ln.mass_per_length,
+                        diameter=ln.diameter, name=ln.name or ln.fairlead, break_load=ln.break_load)
+            for ln in scene.moorings.lines]
+
+
+def _fairlead_sites(scene) -> list[str]:
+    """The MuJoCo site of each line's fairlead."""
+    mjcf = any(isinstance(b, MJCF) for b in scene.bodies)
+    return [ln.fairlead.split(".")[1] if mjcf else site_name(ln.fairlead) for ln in scene.moorings.lines]
+
+
+def fairleads_at_start(scene) -> np.ndarray:
+    """Where each mooring line's fairlead is when the scene's run starts [m], world frame,
+    ``(n_lines, dim)``: the bodies placed as the run places them (a floating one at its
+    computed height), nothing else built."""
+    level = water_level(scene)
+    rho = scene.fluid.rho0 if isinstance(scene.fluid, SPH) else getattr(scene.fluid, "rho", 1000.0)
+    bodies, _ = _bodies(scene, level, rho)
+    p = bodies.site_positions([bodies.site(s)[0] for s in _fairlead_sites(scene)])
+    return p[:, [0, 2]] if scene.world.dim == 2 else p
+
+
 def _mooring(scene, level, rho, workdir: Path):
     """The mooring participant of the scene's lines and model, with the MuJoCo site of
     each fairlead."""
-    from moorings import MooringLine
-
     m, g = scene.moorings, scene.world.gravity
-    mjcf = any(isinstance(b, MJCF) for b in scene.bodies)
-    lines = [MooringLine(ln.anchor, ln.length, ln.weight, EA=ln.EA, mass_per_length=ln.mass_per_length,
-                         diameter=ln.diameter, name=ln.name or ln.fairlead, break_load=ln.break_load)
-             for ln in m.lines]
-    sites = [ln.fairlead.split(".")[1] if mjcf else site_name(ln.fairlead) for ln in m.lines]
+    lines = mooring_lines(scene)
+    sites = _fairlead_sites(scene)
     surface = level if level is not None else math.inf
     if m.model == "catenary":
         from moorings import CatenaryMooring
@@ -582,7 +604,8 @@ def _potential(scene, level):
 def _initialize(scene, coupler) -> None:
     """Initialise the coupler; what it refuses that only the built scene shows is refused
     naming the scene's key: the potential fluid's settings that do not fit the hulls
-    (known once their coefficients are), a ``coupling.dt`` above the lines' stable step."""
+    (known once their coefficients are), a ``coupling.dt`` above a participant's or the
+    lines' stable step."""
     from cosim.errors import ConfigurationError
     from cosim.scene.fields import SceneError
 
@@ -597,7 +620,7 @@ def _initialize(scene, coupler) -> None:
         except SettingError as e:
             raise SceneError(f"fluid.{e.key}", str(e).removeprefix("potential flow: ")) from None
     except ConfigurationError as e:
-        if scene.coupling.dt is not None and str(e).startswith("coupling step dt"):  # the lines' bound (line_step)
+        if scene.coupling.dt is not None and str(e).startswith("coupling step dt"):  # a participant's, the lines' bound
             raise SceneError("coupling.dt", str(e)) from None
         raise
 

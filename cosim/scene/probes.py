@@ -48,12 +48,34 @@ import numpy as np
 
 @dataclass
 class Group:
-    """Columns sampled together: ``sample()`` returns one value per column."""
+    """Columns sampled together: ``sample()`` returns one value per column. A group of
+    codes (``categories``) holds integers that index those names (a line's state);
+    ``labels``: what a plot calls each column's entity, where its name alone does not say
+    it (a gauge and where it stands)."""
 
     name: str
     columns: list
     units: list
     sample: Callable[[], np.ndarray]
+    categories: tuple | None = None
+    labels: list | None = None
+
+
+def _gauge_labels(gauges, dim: int) -> list[str]:
+    """``gauge1 at x = 0.6 m`` (3-D: at (x, y) = (0.6, 0.2) m)."""
+    out = []
+    for i, g in enumerate(gauges):
+        v = np.ravel(np.asarray(g, float))
+        at = f"x = {v[0]:g} m" if dim == 2 or v.size == 1 else f"(x, y) = ({v[0]:g}, {v[1]:g}) m"
+        out.append(f"gauge{i + 1} at {at}")
+    return out
+
+
+def _state_names() -> tuple:
+    """The line states in code order, as people read them ("partly lifted")."""
+    from moorings.catenary import LineState
+
+    return tuple(s.name.lower().replace("_", " ") for s in sorted(LineState, key=int))
 
 
 def _angles(R: np.ndarray, dim: int) -> list[float]:
@@ -166,7 +188,7 @@ def groups(scene, built) -> list[Group]:
         out.append(Group("tensions", cols, ["N"] * len(cols), tensions))
     if m is not None and p.tensions and getattr(m, "state_log", None) is not None:  # seed 004 Fig. 5
         out.append(Group("line_states", [f"{n}.state" for n in built.line_names], ["-"] * len(built.line_names),
-                         lambda: np.asarray(m.line_states(), float)))
+                         lambda: np.asarray(m.line_states(), float), categories=_state_names()))
     sph = built.sph
     move = built.base_motion  # a moving tank carries its gauges and wall patches along
 
@@ -186,7 +208,8 @@ def groups(scene, built) -> list[Group]:
             w = in_tank(base)
             return surface_elevation(sph, w[:, 0] if dim == 2 else w[:, :2]) - w[:, -1]
 
-        out.append(Group("gauges", [f"gauge{i + 1}.eta" for i in range(len(g))], ["m"] * len(g), gauges))
+        out.append(Group("gauges", [f"gauge{i + 1}.eta" for i in range(len(g))], ["m"] * len(g), gauges,
+                         labels=_gauge_labels(p.gauges, dim)))
     sea = _surface_sea(built.fluid) if sph is None else None  # the analytic or potential fluid's incident sea
     if sea is not None and p.gauges:
         g = np.array([x for x in p.gauges], float).reshape(len(p.gauges), -1)
@@ -196,7 +219,8 @@ def groups(scene, built) -> list[Group]:
         def wave_gauges():
             return sea.elevation(gx, gy, c.t)
 
-        out.append(Group("gauges", [f"gauge{i + 1}.eta" for i in range(len(g))], ["m"] * len(g), wave_gauges))
+        out.append(Group("gauges", [f"gauge{i + 1}.eta" for i in range(len(g))], ["m"] * len(g), wave_gauges,
+                         labels=_gauge_labels(p.gauges, dim)))
     elif sea is not None:  # no gauge: the incident sea at the origin
         c = built.coupler
         out.append(Group("sea", ["sea.eta"], ["m"], lambda: np.atleast_1d(sea.elevation(0.0, 0.0, c.t))))

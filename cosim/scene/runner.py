@@ -9,15 +9,19 @@ samples (``world.sample_every``), particle snapshots (``snapshot_every``), check
 - ``scene.toml``: the scene as run, every field;
 - ``run.h5`` + ``run.xmf`` (ParaView): ``/series/probes/GROUP`` (one column per
   ``ENTITY.QUANTITY``, :mod:`cosim.scene.probes`), ``/series/ledger/BODY`` (the loads of
-  every coupling step), particle snapshots (``fluid.output``);
-- ``GROUP.csv`` per probe group (header ``t [s]`` then ``NAME [UNIT]``), ``ledger.csv``;
-- ``GROUP.png`` per probe group, ``particles_tT.png`` at each ``plot_at`` time;
+  every coupling step), particle snapshots (``fluid.output``); each dataset's unit in its
+  CF-style ``units`` attribute (a line's state: ``flag_values``, ``flag_meanings``);
+- ``GROUP.csv`` per probe group (header ``t [s]`` then ``NAME [UNIT]``; a line's state
+  names its codes, ``[0 resting|1 partly lifted|2 fully lifted|3 taut]``), ``ledger.csv``;
+- ``GROUP.png`` per probe group, ``particles_tT.png`` at each ``plot_at`` time within the
+  run (:mod:`cosim.scene.plots`);
 - ``sea_components.csv`` (the analytic fluid's incident sea, :mod:`fluid.waves`): its
   linear components (ω, amplitude, phase, k) and, for an irregular sea, the spectrum they
   stand for (the target S(ω), or a record's periodogram a² / 2Δω), plotted in
   ``sea_spectrum.png``;
-- ``summary.json``: set-up, scheme, sizes, steps, wall and CPU time, the cost estimated
-  before the run (``estimate``, :mod:`cosim.scene.cost`), each series' range, the
+- ``summary.json``: set-up, scheme, sizes, steps (``coupling``: the steps taken, by what
+  set them), wall and CPU time, the cost estimated before the run (``estimate``,
+  :mod:`cosim.scene.cost`), each series' range, the
   warnings of the build (``warnings``, :attr:`cosim.scene.build.Built.warnings`);
   lines that broke (``line_breaks``) and, for catenary lines, when each went fully lifted
   or taut and back (``line_events``, :mod:`moorings.line_events`);
@@ -25,6 +29,10 @@ samples (``world.sample_every``), particle snapshots (``snapshot_every``), check
   ``docs/checkpoints.md``), replaced atomically: every ``world.checkpoint_wall`` of wall
   time (stretched so that writing takes at most :data:`CHECKPOINT_SHARE` of the run), at
   each ``world.checkpoint_every`` of simulated time and at the end; with both 0, none.
+
+The folder must be new or empty: one that holds files is refused before any work, unless
+``overwrite=True`` (``--overwrite``), which clears a folder an earlier run wrote (one that
+holds one of :data:`RUN_FILES`) once the scene is built, or ``resume=True``.
 
 ``resume=True`` continues from ``checkpoint.h5`` in the folder, bit for bit, to the
 scene's duration (which may be longer than the first run's; of the rest only
@@ -64,8 +72,8 @@ CHECKPOINT_SHARE = 0.02
 #: the world's fields a resumed run may change (nothing it computes depends on them)
 RESUMABLE = ("duration", "checkpoint_wall")
 _TICK = 1e-12  # the coupler's clock resolution [s]
-#: per-particle arrays of each snapshot (attributes of the fluid's particle set)
-SNAPSHOT_FIELDS = ("vel", "rho", "p", "kind", "ids")
+#: per-particle arrays of each snapshot (attributes of the fluid's particle set) and their units
+SNAPSHOT_FIELDS = {"vel": "m/s", "rho": "kg/m^3", "p": "Pa", "kind": "1", "ids": "1"}
 
 
 class Results:
@@ -91,26 +99,44 @@ class Results:
         return f"Results({len(self.t)} samples of {len(self.series)} series in {self.out})"
 
 
-def _event_times(w) -> list[tuple[float, set]]:
-    """(time, what is due) for every event of the run, in order."""
+def _event_times(w, particles: bool = True) -> list[tuple[float, set]]:
+    """(time, what is due) for every event of the run, in order: particle snapshots only
+    where there are particles (``particles``), plots only within the run."""
     ev: dict[int, tuple[float, set]] = {}
 
     def add(t, what):
         k = round(t / _TICK)
         ev.setdefault(k, (t, set()))[1].add(what)
 
-    for every, what in ((w.sample_every, "sample"), (w.snapshot_every, "snapshot"),
+    for every, what in ((w.sample_every, "sample"), (w.snapshot_every if particles else 0.0, "snapshot"),
                         (w.checkpoint_every, "checkpoint")):
         if every > 0:
             n = math.floor(w.duration / every * (1 + 1e-12))
             for k in range(n + 1):
                 add(k * every, what)
     for t in w.plot_at:
-        add(t, "plot")
+        if t <= w.duration:
+            add(t, "plot")
     add(w.duration, "sample")
     if w.checkpoint_every > 0 or w.checkpoint_wall > 0:
         add(w.duration, "checkpoint")
     return [ev[k] for k in sorted(ev)]
+
+
+def _cf_attrs(unit: str, categories=None) -> dict:
+    """The CF-style attributes of a probe column of unit ``unit``: ``units`` ("1" for a
+    pure number), and for a column of codes their values and names (``flag_values``,
+    ``flag_meanings``)."""
+    out = {"units": "1" if unit == "-" else unit}
+    if categories:
+        out |= {"flag_values": np.arange(len(categories), dtype=np.int8),
+                "flag_meanings": " ".join(c.replace(" ", "_") for c in categories)}
+    return out
+
+
+def _header(unit: str, categories=None) -> str:
+    """A CSV column's unit in brackets; for codes, what each one means."""
+    return "|".join(f"{k} {c}" for k, c in enumerate(categories)) if categories else unit
 
 
 class _Recorder:
@@ -131,6 +157,11 @@ class _Recorder:
         s = self.scene
         attrs = {"scene": s.name, "dim": s.world.dim, "duration_s": s.world.duration}
         self.h5 = H5Output(self.out / "run.h5", dim=s.world.dim, attrs={k: v for k, v in attrs.items() if k != "dim"})
+        for f, unit in SNAPSHOT_FIELDS.items():
+            self.h5.annotate("snapshots", f, units=unit)
+        for g in self.groups:
+            for c, u in zip(g.columns, g.units):
+                self.h5.annotate(f"probes/{g.name}", c, **_cf_attrs(u, g.categories))
         for snap in old_snapshots:
             self.h5.snapshot(snap.pop("t"), snap.pop("pos"), **snap)
             self.n_snap += 1
@@ -349,8 +380,38 @@ def _restore(ck: dict, built, rec) -> None:
     rec.rows = {k: list(v) for k, v in rows.items()}
 
 
-def run(scene, out, *, resume: bool = False, resume_any_version: bool = False, progress=None, yes: bool = False,
-        ask=None) -> Results:
+#: what a folder written by a run holds (one of them marks a folder that ``overwrite`` may clear)
+RUN_FILES = ("summary.json", "scene.toml", "run.h5", CHECKPOINT)
+
+
+def _check_empty(out: Path, overwrite: bool) -> None:
+    """Refuse a folder that holds files unless the run may clear it (``overwrite``, and only
+    a folder an earlier run wrote): a run's files beside another's would be taken for one."""
+    if not out.is_dir():
+        return
+    held = sorted(p.name for p in out.iterdir())
+    if not held:
+        return
+    some = ", ".join(held[:4]) + (f" and {len(held) - 4} more" if len(held) > 4 else "")
+    if not overwrite:
+        raise InputError(f"output folder {str(out)!r} is not empty ({some}): a run would leave the earlier files "
+                         f"beside its own; give --overwrite (Scene.run(overwrite=True)) to clear it first, --resume "
+                         f"to continue the run it holds, or another --out")
+    if not any(name in held for name in RUN_FILES):
+        raise InputError(f"--overwrite: output folder {str(out)!r} holds {some}, none of them a run's output "
+                         f"({', '.join(RUN_FILES)}); it is not cleared: give a new or empty --out")
+
+
+def _clear(out: Path) -> None:
+    for p in out.iterdir():
+        if p.is_dir() and not p.is_symlink():
+            shutil.rmtree(p)
+        else:
+            p.unlink()
+
+
+def run(scene, out, *, resume: bool = False, resume_any_version: bool = False, overwrite: bool = False,
+        progress=None, yes: bool = False, ask=None) -> Results:
     """Run ``scene`` into the folder ``out``; see the module docstring. Before anything,
     its cost is estimated (:mod:`cosim.scene.cost`): a run beyond the machine's memory or
     disk is refused, one beyond a day of CPU unless ``yes`` or ``ask(question)`` says so."""
@@ -359,6 +420,10 @@ def run(scene, out, *, resume: bool = False, resume_any_version: bool = False, p
 
     out = Path(out)
     _check_writable(out)
+    if resume and overwrite:
+        raise InputError("--resume continues the run in the output folder and --overwrite clears it: give one")
+    if not resume:
+        _check_empty(out, overwrite)
     ck = _read_resume(scene, out, resume_any_version) if resume else None
     est = cost.estimate(scene)
     cost.check(est, out, yes=yes, ask=ask)
@@ -370,6 +435,8 @@ def run(scene, out, *, resume: bool = False, resume_any_version: bool = False, p
             rec = _Recorder(scene, built, out)
             if ck is not None:
                 _restore(ck, built, rec)
+            if overwrite and out.is_dir():
+                _clear(out)  # only now: a scene the solvers refuse leaves the earlier run whole
             out.mkdir(parents=True, exist_ok=True)
             for f in Path(work).iterdir():  # files the participants made (an exported FMU) go with the outputs
                 shutil.copy2(f, out / f.name)
@@ -383,8 +450,15 @@ def _run_built(scene, built, rec, out: Path, ck, progress, wall0: float, cpu0: f
 
     build_s = time.perf_counter() - wall0
     c, sph = built.coupler, built.sph
+    notices = []  # what the run left out of what the scene asked for (logged, and in summary.json's warnings)
     if scene.world.plot_at and sph is None:
-        log.warning("world.plot_at: particle plots need the SPH fluid; this scene has none, so none are drawn")
+        notices.append("world.plot_at: particle plots need the SPH fluid; this scene has none, so none are drawn")
+    late = [t for t in scene.world.plot_at if t > scene.world.duration]
+    if late and sph is not None:
+        notices.append(f"world.plot_at: {', '.join(f'{t:g}' for t in late)} s lie beyond the run's end "
+                       f"({scene.world.duration:g} s); not drawn")
+    for n in notices:
+        log.warning("%s", n)
     t_start, wall_before = (ck["meta"]["t"], float(ck["meta"].get("wall_s", 0.0))) if ck is not None else (0.0, 0.0)
     saver = _Checkpoints(out / CHECKPOINT, scene, built, rec, wall_before)
     steps0, error, bar, loop0 = c.steps, None, None, None
@@ -403,7 +477,7 @@ def _run_built(scene, built, rec, out: Path, ck, progress, wall0: float, cpu0: f
             rec.open()
         scene.to_toml(out / "scene.toml")
         _write_sea(out, built)
-        events = [(t, what) for t, what in _event_times(scene.world) if t > t_start + 0.5 * _TICK or
+        events = [(t, what) for t, what in _event_times(scene.world, sph is not None) if t > t_start + 0.5 * _TICK or
                   (ck is None and t == 0.0)]
         bar = Progress(t_start, scene.world.duration, enabled=progress)
         loop0 = saver.start()
@@ -419,7 +493,9 @@ def _run_built(scene, built, rec, out: Path, ck, progress, wall0: float, cpu0: f
             if "snapshot" in what:
                 rec.snapshot(c.t)
             if "plot" in what and sph is not None:
-                _plot_particles(out, sph, c.t, scene)
+                from cosim.scene.plots import plot_particles
+
+                plot_particles(out / f"particles_t{c.t:07.3f}.png", scene, built, c.t)
             if "checkpoint" in what or saver.due():
                 saver.write()
     except BaseException as e:
@@ -436,10 +512,14 @@ def _run_built(scene, built, rec, out: Path, ck, progress, wall0: float, cpu0: f
         summary["checkpoints"] = {"written": saver.written, "write_s": round(saver.cost, 3)}
         if est is not None:
             summary["estimate"] = est.as_dict()
+        if notices:
+            summary["warnings"] = summary.get("warnings", []) + notices
         _write_tables(out, rec, built)
         (out / "summary.json").write_text(json.dumps(summary, indent=1, default=_json))
         if series and rec.times:
-            _plot_groups(out, rec, scene)
+            from cosim.scene.plots import plot_groups
+
+            plot_groups(out, rec.times, rec.groups, {g.name: rec.table(g) for g in rec.groups}, scene)
     return Results(rec.times, series, units, summary, out)
 
 
@@ -471,6 +551,9 @@ def _summary(scene, built, series, units, steps, loop_s, build_s, cpu_s, wall_be
         s["wall_s_per_simulated_s"] = round((loop_s + wall_before) / c.t, 3)
     if hasattr(c, "scheme") and built.bodies is not None:
         s["scheme"], s["remedies"] = c.scheme, dict(c.remedies)
+    s["coupling"] = c.step_summary()  # the steps taken and what set them (a participant, coupling.dt, an output time)
+    if c.line_limit is not None:
+        s["coupling"]["line_limit"] = {"dt_s": c.line_limit.dt, "why": c.line_limit.describe()}
     if built.setup is not None:
         s["setup"] = {"name": built.setup.name, "reason": built.setup.reason, "config": built.setup.config,
                       "overridden": list(built.setup.overridden)}
@@ -515,7 +598,7 @@ def _write_tables(out: Path, rec, built):
     for g in rec.groups:
         a = rec.table(g)
         with open(out / f"{g.name}.csv", "w") as f:
-            f.write("t [s]," + ",".join(f"{c} [{u}]" for c, u in zip(g.columns, g.units)) + "\n")
+            f.write("t [s]," + ",".join(f"{c} [{_header(u, g.categories)}]" for c, u in zip(g.columns, g.units)) + "\n")
             for k in range(len(t)):
                 f.write(repr(float(t[k])) + "," + ",".join(repr(float(x)) for x in a[k]) + "\n")
     if built.coupler.ledger.body_names:
@@ -566,64 +649,4 @@ def _write_sea(out: Path, built) -> None:
     ax.legend()
     fig.tight_layout()
     fig.savefig(out / "sea_spectrum.png")
-    plt.close(fig)
-
-
-def _plot_groups(out: Path, rec, scene):
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    t = np.asarray(rec.times)
-    for g in rec.groups:
-        a = rec.table(g)
-        quantities = list(dict.fromkeys(c.rsplit(".", 1)[1] for c in g.columns))
-        fig, axes = plt.subplots(len(quantities), 1, figsize=(7, 1.2 + 1.8 * len(quantities)), dpi=110,
-                                 sharex=True, squeeze=False)
-        for ax, q in zip(axes[:, 0], quantities):
-            for j, c in enumerate(g.columns):
-                if c.rsplit(".", 1)[1] == q:
-                    ax.plot(t, a[:, j], label=c.rsplit(".", 1)[0])
-            unit = g.units[[c.rsplit(".", 1)[1] for c in g.columns].index(q)]
-            ax.set_ylabel(f"{q} [{unit}]")
-            ax.grid(alpha=0.3)
-            if sum(c.rsplit(".", 1)[1] == q for c in g.columns) > 1:
-                ax.legend(fontsize=7, loc="best")
-        axes[-1, 0].set_xlabel("t [s]")
-        axes[0, 0].set_title(f"{scene.name}: {g.name}", fontsize=10)
-        fig.tight_layout()
-        fig.savefig(out / f"{g.name}.png")
-        plt.close(fig)
-
-
-def _plot_particles(out: Path, sph, t: float, scene):
-    """The particles at time ``t`` [s] (3-D: seen from the side, x-z), coloured by speed
-    or pressure; walls grey."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    from fluid.particles import Kind
-
-    ps = sph.ps
-    fl = ps.kind == Kind.FLUID
-    x, z = ps.pos[:, 0], ps.pos[:, -1]
-    speed = scene.world.plot_color == "velocity"
-    c = np.linalg.norm(ps.vel[fl], axis=1) if speed else ps.p[fl]
-    aspect = (np.ptp(z) + 1e-9) / (np.ptp(x) + 1e-9)
-    fig, ax = plt.subplots(figsize=(9, min(max(9 * aspect + 1.0, 2.8), 9)), dpi=110)
-    size = max(0.5, 3000.0 / max(len(x), 1))
-    body = ps.kind == Kind.BODY
-    ax.scatter(x[~fl & ~body], z[~fl & ~body], s=size, c="0.65", lw=0)
-    ax.scatter(x[body], z[body], s=size, c="0.25", lw=0)
-    sc = ax.scatter(x[fl], z[fl], s=size, c=c, cmap="viridis", lw=0)
-    fig.colorbar(sc, ax=ax, label="speed [m/s]" if speed else "pressure [Pa]", fraction=0.03, pad=0.02)
-    ax.set_aspect("equal")
-    ax.set_xlabel("x [m]")
-    ax.set_ylabel("z [m]")
-    ax.set_title(f"{scene.name}: t = {t:.3f} s", fontsize=10)
-    fig.tight_layout()
-    fig.savefig(out / f"particles_t{t:07.3f}.png")
     plt.close(fig)

@@ -65,13 +65,14 @@ class World(Spec):
     checkpoint_wall: float = num(120.0, "wall-clock time between checkpoints for --resume, stretched where writing one "
                                  "takes over 2 % of it; 0: none by wall time; 0 here and in checkpoint_every: no "
                                  "checkpoints", "s", lo=0)
-    plot_at: tuple = vecs("times of the particle plots (PNG)", "s", sizes=(0,))
+    plot_at: tuple = vecs("times of the particle plots (PNG); those beyond the duration are not drawn (the run "
+                          "says so)", "s", sizes=(0,))
     plot_color: str = choice("velocity", "what colours the particle plots", ("velocity", "pressure"))
 
     def validate(self):
         for i, t in enumerate(self.plot_at):
-            if not 0 <= t <= self.duration:
-                raise SceneError(f"plot_at[{i}]", f"{t} s lies outside the run, 0 .. {self.duration} s")
+            if t < 0:
+                raise SceneError(f"plot_at[{i}]", f"{t} s lies before the run's start (0 s); give a time >= 0")
         if self.sample_every > self.duration:
             raise SceneError("sample_every", f"{self.sample_every} s is longer than the run ({self.duration} s)")
 
@@ -898,7 +899,10 @@ class Coupling(Spec):
     lines: str = choice("auto", "exchange with dynamic mooring lines (SPH cable, MoorDyn): advanced with the bodies "
                         "until their mean force agrees, or their force at the step's start held",
                         ("auto", "subiterate", "explicit"))
-    dt: float = num(None, "fixed coupling step (unset: the participants' stable step)", "s", lo=0, lo_open=True)
+    dt: float = num(None, "fixed coupling step (unset: the participants' stable step): the step taken, so it divides "
+                    "the output intervals (world.sample_every, snapshot_every with particles, checkpoint_every) and is "
+                    "not above any participant's stable step at the start, else it is refused; summary.json's "
+                    "coupling counts every step by what set it", "s", lo=0, lo_open=True)
     body_timestep: float = num(1e-3, "MuJoCo's largest step", "s", lo=0, lo_open=True)
 
 
@@ -922,8 +926,10 @@ class Scene(Spec):
 
     def validate(self):
         from cosim.scene.checks import check_scene
+        from cosim.scene.timing import check_fixed_step
 
         check_scene(self)
+        check_fixed_step(self)
 
     # -- convenience (the implementations live in their own modules)
     @classmethod
@@ -960,17 +966,18 @@ class Scene(Spec):
 
         return body_names(self)
 
-    def run(self, out=None, *, resume: bool = False, resume_any_version: bool = False, progress=None,
-            yes: bool = False, ask=None):
-        """Run the scene, writing its outputs into ``out`` (default ``out/<name>``);
-        returns a :class:`cosim.scene.runner.Results`. ``resume``: continue from the
-        checkpoint in ``out`` (``resume_any_version``: even one written by other code).
-        A run whose estimated CPU time passes a day (:mod:`cosim.scene.cost`) runs with
-        ``yes``, or where ``ask(question)`` returns True; else it is refused."""
+    def run(self, out=None, *, resume: bool = False, resume_any_version: bool = False, overwrite: bool = False,
+            progress=None, yes: bool = False, ask=None):
+        """Run the scene, writing its outputs into ``out`` (default ``out/<name>``), a new or
+        empty folder; returns a :class:`cosim.scene.runner.Results`. ``overwrite``: clear
+        the folder of an earlier run first; ``resume``: continue from the checkpoint in
+        ``out`` (``resume_any_version``: even one written by other code). A run whose
+        estimated CPU time passes a day (:mod:`cosim.scene.cost`) runs with ``yes``, or
+        where ``ask(question)`` returns True; else it is refused."""
         from cosim.scene.runner import run
 
         return run(self, out if out is not None else Path("out") / self.name, resume=resume,
-                   resume_any_version=resume_any_version, progress=progress, yes=yes, ask=ask)
+                   resume_any_version=resume_any_version, overwrite=overwrite, progress=progress, yes=yes, ask=ask)
 
 
 __all__ = ["World", "NoFluid", "Analytic", "Potential", "SPH", "Block", "Tank", "Beach", "Flume", "InclinedTank",

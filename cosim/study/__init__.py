@@ -10,9 +10,12 @@ and writes into one folder: ``study.csv`` and ``study.md`` (one row per run), ``
 (the rows, the reference, the recommendation), ``pareto.png`` (error against cost, the
 Pareto front marked) and the runs themselves under ``runs/``.
 
-The reference: ``finest`` (default) the run with the smallest value of the refined field
-(``fluid.dx`` if it is varied, else ``coupling.dt``, else the first varied number; the most
-expensive run if none is); ``richardson`` each metric extrapolated to h -> 0 (h the refined
+Each row holds the values as varied and what the run used: its mean coupling step and
+range (``dt used``, ``summary.json``'s ``coupling``), the fluid's speed of sound and set-up
+where the SPH fluid chose them. The reference: ``finest`` (default) the run with the
+smallest value of the refined field (``fluid.dx`` if it is varied, else ``coupling.dt``,
+taken as the step the run used, else the first varied number; the most expensive run if
+none is); ``richardson`` each metric extrapolated to h -> 0 (h the refined
 field) from the three smallest h of the runs that share the other values, m(h) = m* + C h^p,
 with the observed order p reported (``rms`` metrics, which compare whole series, take the
 finest run's series); or a file: JSON ``{"SERIES:STAT": value}`` or a CSV table whose first
@@ -133,7 +136,8 @@ def run_study(scene, vary: dict, specs: list[str], out, *, reference: str = "fin
     rows = []
     for c, rec in zip(cs, records):
         row = {"case": c.key, "values": c.values, **{k: rec.get(k) for k in (
-            "wall_s", "cpu_s", "wall_s_per_simulated_s", "max_rss_mb", "particles", "steps", "error", "cached")}}
+            "wall_s", "cpu_s", "wall_s_per_simulated_s", "max_rss_mb", "particles", "steps", "error", "cached")},
+               "used": {k: rec.get(k) for k in USED}}
         row["series"] = sweep.series(c.folder) if not rec.get("error") else {}
         row["metrics"] = {}
         for s, (name, stat) in zip(specs, parsed):
@@ -163,6 +167,11 @@ def run_study(scene, vary: dict, specs: list[str], out, *, reference: str = "fin
                       orders)
     _write(res, specs, vary, tol)
     return res
+
+
+#: what each run used, from its summary.json (sweep.run_case): the mean, smallest and largest
+#: coupling step [s], the SPH fluid's speed of sound [m/s] and set-up
+USED = ("dt_used_s", "dt_min_s", "dt_max_s", "c0_m_s", "setup")
 
 
 def _check_metrics(cs, specs, parsed) -> None:
@@ -232,6 +241,8 @@ def refined_field(vary: dict) -> str | None:
 
 def _reference(reference, ok, specs, parsed, vary, refine):
     def dx(r):
+        if refine == "coupling.dt" and r["used"].get("dt_used_s"):
+            return r["used"]["dt_used_s"]  # the step the run took
         return r["values"].get(refine, math.inf) if refine else math.inf
 
     finest = min(ok, key=lambda r: (dx(r), -(r["wall_s"] or 0)))
@@ -307,10 +318,25 @@ def _fmt(v):
 def _write(res: StudyResult, specs, vary, tol):
     out, rows = res.out, res.rows
     cost = ["wall_s", "cpu_s", "wall_s_per_simulated_s", "max_rss_mb", "particles", "steps"]
-    head = list(vary) + [s for s in specs] + [f"error {s}" for s in specs] + cost + ["error"]
+    cost_head = ["wall [s]", "CPU [s]", "wall per simulated s [-]", "peak memory [MB]", "particles", "steps"]
+    used_head = {"dt": "dt used [s]", "c0_m_s": "c0 used [m/s]", "setup": "set-up used"}
+    used = [k for k in used_head if any(r["used"].get("dt_used_s" if k == "dt" else k) for r in rows)]
+
+    def used_cell(r, k):
+        u = r["used"]
+        if k != "dt":
+            return _fmt(u.get(k))
+        if u.get("dt_used_s") is None:
+            return ""
+        same = u.get("dt_min_s") is not None and math.isclose(u["dt_min_s"], u["dt_max_s"], rel_tol=1e-9)
+        return _fmt(u["dt_used_s"]) + ("" if same else f" ({_fmt(u['dt_min_s'])}..{_fmt(u['dt_max_s'])})")
+
+    head = (list(vary) + [used_head[k] for k in used] + [s for s in specs] + [f"error {s}" for s in specs]
+            + cost_head + ["error"])
     table = []
     for r in rows:
-        table.append([_fmt(r["values"][k]) for k in vary] + [_fmt(r["metrics"].get(s)) for s in specs]
+        table.append([_fmt(r["values"][k]) for k in vary] + [used_cell(r, k) for k in used]
+                     + [_fmt(r["metrics"].get(s)) for s in specs]
                      + [_fmt(r["errors"].get(s)) for s in specs] + [_fmt(r.get(k)) for k in cost]
                      + [_fmt(r["error"])])
     import csv

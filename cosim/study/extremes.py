@@ -4,7 +4,11 @@ a time from the scene's own settings, and what happens at each value: the run fi
 (``refused``), the run stops with a clear error naming the step and the entity
 (``unstable``: an InstabilityError, ConvergenceError or TautLineError, or any error of ours
 after the first step), or it fails in a way that is a bug of ours (``crash``: any other
-error; the table says so).
+error; the table says so). A body denser than the water must sink: a run of such a density
+that stops with the body gone down by more than half its height since the start (the
+body's ``heave`` probe) ``sank``, as physics says, rather than being ``unstable`` (on the
+analytic fluid the box sinks until its fairleads pass below its anchors' seabed, where the
+catenary stops the run).
 
 The levers, where the scene has them (values relative to the scene's own):
 
@@ -12,7 +16,7 @@ The levers, where the scene has them (values relative to the scene's own):
 - ``fluid.c0_factor`` 5, 10, 20, 40 (the speed of sound over the expected speed; < 10 refused);
 - ``fluid.cfl`` 0.05, 0.1, 0.2, 0.4, 0.6 (> 0.4 refused);
 - ``bodies[i].density`` 0.001, 0.01, 0.1, 0.5, 2 x the water's (light bodies: added mass; a
-  body heavier than water cannot float);
+  body heavier than water cannot float: refused where it is placed floating, else it sinks);
 - ``moorings.lines[*].EA`` x 1e-3, 1e-1, 1, 10, 1e3 (every line; line stiffness);
 - ``moorings.segments`` 2, 5, 20, 80 (the dynamic lines' resolution);
 - ``coupling.dt`` 1e-3, 1e-2, 0.1, 0.5 s (a fixed coupling step; without the SPH fluid,
@@ -24,11 +28,15 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import numpy as np
+
 from cosim.errors import CosimError
-from cosim.scene.spec import MJCF, SPH
+from cosim.scene.spec import MJCF, SPH, Box, Cylinder, Sphere
 from cosim.study import sweep
 
 UNSTABLE = ("InstabilityError", "ConvergenceError", "TautLineError")
+#: the water densities of the density lever [-]; above 1 a body sinks
+DENSITY_RATIOS = (0.001, 0.01, 0.1, 0.5, 2.0)
 
 
 def levers(scene) -> list[tuple[str, list[tuple[str, list[str]]]]]:
@@ -44,7 +52,7 @@ def levers(scene) -> list[tuple[str, list[tuple[str, list[str]]]]]:
         for i, b in enumerate(scene.bodies):
             if not isinstance(b, MJCF) and b.density is not None:
                 out.append((f"bodies[{i}].density", [(f"{r:g} x water", [f"bodies[{i}].density={r * rho!r}"])
-                                                     for r in (0.001, 0.01, 0.1, 0.5, 2.0)]))
+                                                     for r in DENSITY_RATIOS]))
     m = scene.moorings
     if m is not None:
         if all(ln.EA is not None for ln in m.lines):
@@ -70,6 +78,32 @@ def _outcome(rec: dict) -> str:
     return "crash"
 
 
+def _height(body) -> float | None:
+    """A builder body's height [m] (None for others)."""
+    if isinstance(body, Box):
+        return float(body.size[-1])
+    if isinstance(body, (Cylinder, Sphere)):
+        return 2.0 * float(body.radius)
+    return None
+
+
+def _sank(scene, lever: str, folder) -> str | None:
+    """Why the run of a density lever's value counts as sunk (module docstring), or None:
+    the body (denser than the water) went down by more than half its height."""
+    if not lever.startswith("bodies[") or not lever.endswith("].density"):
+        return None
+    body = scene.bodies[int(lever[len("bodies["):-len("].density")])]
+    tall = _height(body)
+    heave = sweep.series(folder).get(f"{body.name}.heave")
+    if tall is None or heave is None or len(heave[1]) < 2:
+        return None
+    drop = float(heave[1][0] - np.min(heave[1]))
+    if drop <= 0.5 * tall:
+        return None
+    return (f"denser than the water, body '{body.name}' sank {drop:.3g} m (its height: {tall:.3g} m) in "
+            f"{float(heave[0][-1]):.3g} s, as physics says")
+
+
 def run_extremes(scene, out, *, workers=None, threads=1, scheduler=None, serial=False, report=None) -> list[dict]:
     """Run every lever's values; write extremes.csv, .md, .json into ``out``; return the rows."""
     import os
@@ -87,14 +121,18 @@ def run_extremes(scene, out, *, workers=None, threads=1, scheduler=None, serial=
             except CosimError as e:  # refused by the scene's own checks
                 row.update(outcome="refused", message=str(e))
                 continue
-            cases.append((row, sweep.case(len(cases), {lever: label}, s, out, version)))
+            cases.append((row, sweep.case(len(cases), {lever: label}, s, out, version), s))
     out.mkdir(parents=True, exist_ok=True)
     workers = workers or max(1, (os.cpu_count() or 1) // max(threads, 1))
-    records = sweep.execute([c for _, c in cases], workers=workers, threads=threads, scheduler=scheduler,
+    records = sweep.execute([c for _, c, _ in cases], workers=workers, threads=threads, scheduler=scheduler,
                             serial=serial, version=version, report=report)
-    for (row, _), rec in zip(cases, records):
+    for (row, c, s), rec in zip(cases, records):
         row.update(outcome=_outcome(rec), message=rec.get("error") or "", wall_s=rec.get("wall_s"),
                    steps=rec.get("steps"))
+        why = _sank(s, row["lever"], c.folder) if row["outcome"] in ("unstable", "ok") else None
+        if why is not None:
+            row.update(outcome="sank" if row["outcome"] == "unstable" else "ok",
+                       message=why + (f"; the run then stopped: {row['message']}" if row["message"] else ""))
     _write(out, rows)
     return rows
 
@@ -105,7 +143,8 @@ def summary(rows) -> list[str]:
     for lever in dict.fromkeys(r["lever"] for r in rows):
         rs = [r for r in rows if r["lever"] == lever]
         ok = [r["value"] for r in rs if r["outcome"] == "ok"]
-        bad = [f"{r['value']}: {r['outcome']}" for r in rs if r["outcome"] != "ok"]
+        bad = [f"{r['value']}: {'sank, as physics says' if r['outcome'] == 'sank' else r['outcome']}"
+               for r in rs if r["outcome"] != "ok"]
         lines.append(f"{lever}: runs at {', '.join(ok) or 'no value'}" + (f"; {'; '.join(bad)}" if bad else ""))
     return lines
 
@@ -113,10 +152,11 @@ def summary(rows) -> list[str]:
 def _write(out: Path, rows):
     import csv
 
+    keys = ["lever", "value", "outcome", "wall_s", "steps", "message"]
     with open(out / "extremes.csv", "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=["lever", "value", "outcome", "wall_s", "steps", "message"])
-        w.writeheader()
-        w.writerows(rows)
+        w = csv.writer(f)
+        w.writerow(["lever", "value", "outcome", "wall [s]", "steps", "message"])
+        w.writerows([[r[k] for k in keys] for r in rows])
     md = ["# Extremes", "", *[f"- {s}" for s in summary(rows)], "",
           "| lever | value | outcome | wall [s] | steps | message |", "|---|---|---|---|---|---|"]
     for r in rows:

@@ -103,8 +103,8 @@ def run_case(toml: str, folder: str, threads: int, version: str) -> dict:
     t0 = time.perf_counter()
     # --yes: the study checked the runs' costs before the first (cosim.study.check_costs)
     returncode, usage, stderr = run_logged([sys.executable, "-m", "cosim.cli", "run", str(folder / "scene.toml"),
-                                            "--out", str(folder / "run"), "--quiet", "--yes"], folder / "stderr.log",
-                                           env)
+                                            "--out", str(folder / "run"), "--overwrite", "--quiet", "--yes"],
+                                           folder / "stderr.log", env)
     rec = {"version": version, "complete": True, "wall_s": time.perf_counter() - t0,
            "cpu_s": usage.ru_utime + usage.ru_stime, "max_rss_mb": usage.ru_maxrss / 1024.0,
            "threads": threads, "returncode": returncode, "error": None}
@@ -112,6 +112,9 @@ def run_case(toml: str, folder: str, threads: int, version: str) -> dict:
     if summary.is_file():
         s = json.loads(summary.read_text())
         rec.update({k: s.get(k) for k in ("steps", "particles", "t_reached_s", "wall_s_per_simulated_s")})
+        c = s.get("coupling") or {}  # what the run used where the scene left it to the run, or asked for it
+        rec.update(dt_used_s=c.get("dt_mean_s"), dt_min_s=c.get("dt_min_s"), dt_max_s=c.get("dt_max_s"),
+                   c0_m_s=s.get("speed_of_sound_m_s"), setup=(s.get("setup") or {}).get("name"))
         rec["run_wall_s"] = s.get("wall_s")
         rec["error"] = s.get("error")
     if returncode != 0:

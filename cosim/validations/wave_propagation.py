@@ -65,7 +65,8 @@ def linear_elevation(wm, x: np.ndarray, t: np.ndarray, dt: float = 0.005) -> np.
     the paddle ``wm`` (a :class:`fluid.wavemaker.RegularWavemaker`, its ramp included)
     makes in a flume that never ends: the paddle's motion Fourier-transformed, each
     frequency turned into a wave by the wavemaker transfer function (Dean & Dalrymple
-    1991, §6.2) and sent along x with its own wavenumber; the evanescent modes, which die
+    1991, §6.2: the wave in phase with the paddle's velocity) and sent along x with its own
+    wavenumber; the evanescent modes, which die
     out within a depth or two of the paddle, are left out. Sampled every ``dt`` [s] and
     read at ``t`` [s] (rounded to that sampling)."""
     from fluid.wavemaker import height_to_stroke, wavenumber
@@ -86,8 +87,10 @@ def linear_elevation(wm, x: np.ndarray, t: np.ndarray, dt: float = 0.005) -> np.
     k[keep] = [wavenumber(2.0 * math.pi / wi, wm.depth, wm.g) for wi in w[keep]]
     tf = np.zeros_like(w)
     tf[keep] = [height_to_stroke(wm.kind, min(ki * wm.depth, 300.0)) for ki in k[keep]]
+    # the wave is in phase with the paddle's velocity (a progressive wave's u and eta are):
+    # eta = (H/S) * (paddle velocity) / omega, i.e. i (H/S) times the displacement's transform
     idx = np.round(np.asarray(t) / dt).astype(int)
-    return np.stack([np.fft.irfft(S * tf * np.exp(-1j * k * xi), n)[idx] for xi in np.asarray(x)], axis=1)
+    return np.stack([np.fft.irfft(1j * S * tf * np.exp(-1j * k * xi), n)[idx] for xi in np.asarray(x)], axis=1)
 
 
 def propagate(dx: float, depth: float, H: float, T: float, wavelengths: int = 8, absorber: float = 1.5,
@@ -118,10 +121,12 @@ def propagate(dx: float, depth: float, H: float, T: float, wavelengths: int = 8,
     cg = 0.5 * (1.0 + 2.0 * kd / math.sinh(2.0 * kd)) * omega / k
     x_abs = (wavelengths + 0.5) * L
     length = x_abs + absorber * L
-    f = flume(dx, length, depth, 1.5 * depth, back=0.5 * wm.stroke + dx, width=width)
     config.setdefault("u_max", math.sqrt(G * depth))
     dim = 2 if width is None else 3
     cfg = FluidConfig(dim=dim, dx=dx, g=G, **config)
+    # walls as thick as the kernel's support, as the scenes build them
+    f = flume(dx, length, depth, 1.5 * depth, layers=math.ceil(2.0 * cfg.h_coef - 1e-9), back=0.5 * wm.stroke + dx,
+              width=width)
     ps = assemble(dim, dx, cfg.rho0, f.fluid, f.walls).particles
     set_hydrostatic(ps, depth, cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g)
     fluid = Fluid(cfg, ps)

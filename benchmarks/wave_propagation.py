@@ -1,0 +1,60 @@
+"""How far regular waves keep their height: piston waves read at every wavelength of a 2-D
+flume (cosim.validations.wave_propagation.propagate), for a fluid set-up at several
+spacings. Prints one JSON line per run and a table of the decay per wavelength.
+
+    python benchmarks/wave_propagation.py --setup waves sloshing --rows 10 20 --wavelengths 8
+    python benchmarks/wave_propagation.py --set alpha=0 --rows 10
+
+``--setup``: the scenes' set-ups (cosim.scene.setup.settings: "waves" is
+fluid.solver.TRAVELLING_WAVES, "sloshing" the sloshing one); ``--set KEY=VALUE`` adds
+FluidConfig settings on top (numbers, true/false or text). The wave: d = 0.3 m, T = 1 s,
+H = 4 cm (kd = 1.37), as the wave-propagation case.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import numpy as np
+
+from machine import cpu_name  # benchmarks/machine.py, beside this script
+from cosim.scene.setup import settings
+from cosim.validations.wave_propagation import WP_DEPTH, WP_HEIGHT, WP_PERIOD, propagate
+
+
+def _value(text: str):
+    if text in ("true", "false"):
+        return text == "true"
+    try:
+        return float(text)
+    except ValueError:
+        return text
+
+
+def main(argv=None) -> None:
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--setup", nargs="+", default=["waves"], help="scene set-ups to compare")
+    ap.add_argument("--rows", nargs="+", type=int, default=[10, 20], help="particle rows over the depth")
+    ap.add_argument("--wavelengths", type=int, default=8)
+    ap.add_argument("--set", nargs="*", default=[], metavar="KEY=VALUE", help="FluidConfig settings on top")
+    args = ap.parse_args(argv)
+    extra = {k: _value(v) for k, v in (s.split("=", 1) for s in args.set)}
+    print(f"# CPU: {cpu_name()}")
+    table = []
+    for setup in args.setup:
+        for rows in args.rows:
+            cfg = {**settings(setup, 2), **extra}
+            r = propagate(WP_DEPTH / rows, WP_DEPTH, WP_HEIGHT, WP_PERIOD, wavelengths=args.wavelengths, **cfg)
+            line = {k: (np.round(v, 4).tolist() if isinstance(v, np.ndarray) else v) for k, v in r.items()}
+            print(json.dumps({"setup": setup, "rows": rows, "config": cfg, **line}), flush=True)
+            table.append((setup, rows, r))
+    print("\n| set-up | rows over the depth | H1/H at 1, 2, ... wavelengths | decay per wavelength | particles | steps "
+          "| CPU s |\n|---|---|---|---|---|---|---|")
+    for setup, rows, r in table:
+        h = " ".join(f"{v:.3f}" for v in r["H1_over_H"])
+        print(f"| {setup} | {rows} | {h} | {100 * r['decay_per_wavelength']:.2f} % | {r['particles']} | {r['steps']} "
+              f"| {r['cpu_s']:.0f} |")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,68 @@
+"""The SPH near field inside an incident sea (fluid.nearfield): walls on the sea's orbits,
+relaxation zones towards its velocity and return current."""
+
+import math
+
+import numpy as np
+import pytest
+
+from cosim.errors import InputError
+from fluid.nearfield import (FAR_END_GROUP, FIXED_GROUP, NEAR_END_GROUP, following_wall, near_field_box,
+                             return_current, sea_velocity)
+from fluid.particles import Kind
+from fluid.waves import RegularWave
+
+SEA = RegularWave(0.04, 1.0, 0.3, level=0.3, ramp=2.0)
+
+
+def test_a_following_wall_keeps_the_orbits_of_the_water_particles():
+    ref = np.array([[0.0, 0.29], [0.0, 0.1], [1.0, 0.0]])
+    for t in (0.5, 4.2):
+        pos, vel = following_wall(SEA)(t, ref)
+        d, r = SEA.displacement(ref[:, 0], np.zeros(3), ref[:, 1], t)
+        np.testing.assert_allclose(pos - ref, d[:, [0, 2]], atol=1e-15)
+        np.testing.assert_allclose(vel, r[:, [0, 2]], atol=1e-15)
+    # faded in, the wall moves with the water: the sea's velocity at its mean position
+    np.testing.assert_allclose(vel, SEA.velocity(ref[:, 0], 0.0, ref[:, 1], 4.2)[:, [0, 2]], atol=1e-15)
+
+
+def test_the_return_current_carries_back_the_stokes_drift():
+    """Q = g a^2 k / (2 omega) = E / (rho c) per unit crest (Dean & Dalrymple 1991, §4.9),
+    spread over the depth, against the heading; the relaxation target adds it once faded in."""
+    a, k, w = 0.02, SEA.wavenumber, 2 * math.pi
+    c = w / k
+    np.testing.assert_allclose(return_current(SEA), [-(9.81 * a * a / (2 * c)) / 0.3, 0.0, 0.0], rtol=1e-12)
+    pos = np.array([[0.3, 0.2]])
+    v = sea_velocity(SEA)(pos, 5.0)
+    np.testing.assert_allclose(v - SEA.velocity(0.3, 0.0, 0.2, 5.0)[None, [0, 2]], [return_current(SEA)[[0, 2]]],
+                               atol=1e-15)
+    assert np.array_equal(sea_velocity(SEA, drift=False)(pos, 0.0), np.zeros((1, 2)))
+
+
+@pytest.mark.parametrize("width", [None, 0.1])
+def test_the_box_holds_still_water_between_its_walls(width):
+    dx = 0.02
+    box = near_field_box(dx, 0.0, 1.0, SEA, 0.45, 0.3, layers=4, width=width)
+    groups = {g: (pts, kind) for pts, kind, g in box.walls}
+    assert set(groups) == {FIXED_GROUP, NEAR_END_GROUP, FAR_END_GROUP}
+    assert groups[NEAR_END_GROUP][1] == groups[FAR_END_GROUP][1] == Kind.MOVING_WALL
+    f = box.fluid
+    assert f[:, 0].min() == pytest.approx(0.5 * dx) and f[:, 0].max() == pytest.approx(1.0 - 0.5 * dx)
+    assert f[:, -1].max() == pytest.approx(0.3 - 0.5 * dx) and f[:, -1].min() == pytest.approx(0.5 * dx)
+    # the walls are four layers thick, the seabed runs on under the moving walls' excursion
+    near = groups[NEAR_END_GROUP][0]
+    assert near[:, 0].min() == pytest.approx(-4 * dx + 0.5 * dx)
+    floor = groups[FIXED_GROUP][0]
+    excursion = 0.02 / math.tanh(SEA.wavenumber * 0.3)
+    assert floor[:, 0].min() < -4 * dx - excursion
+    every = np.concatenate([f] + [p for p, _, _ in box.walls])
+    assert len(np.unique(np.round(every / dx, 6), axis=0)) == len(every)  # nothing placed twice
+    zones = box.zones(SEA, 10.0)
+    assert [z.inner for z in zones] == [0.3, 0.7] and [z.outer for z in zones] == [0.0, 1.0]
+
+
+def test_a_box_shorter_than_its_zones_is_refused():
+    with pytest.raises(InputError, match="zones"):
+        near_field_box(0.02, 0.0, 0.5, SEA, 0.45, 0.3)
+    with pytest.raises(InputError, match="height"):
+        near_field_box(0.02, 0.0, 2.0, SEA, 0.25, 0.3)
