@@ -398,6 +398,10 @@ class MujocoBodies:
         """Mass of each coupled body [kg], from MuJoCo's geometry or the MJCF's values."""
         return self.model.body_mass[self.body_ids].copy()
 
+    def inertias(self) -> np.ndarray:
+        """Principal moments of inertia of each coupled body [kg m^2], ``(n_bodies, 3)``."""
+        return self.model.body_inertia[self.body_ids].copy()
+
     def gravity_forces(self) -> np.ndarray:
         """Weight of each coupled body [N], world frame, ``(n_bodies, 3)``."""
         return self.masses()[:, None] * self.model.opt.gravity[None, :]

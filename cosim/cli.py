@@ -62,12 +62,28 @@ def _run_parser(sub):
                    help="with --resume: continue from a checkpoint that other code wrote (it may not continue bit "
                         "for bit)")
     p.add_argument("--quiet", action="store_true", help="no progress line and no summary")
+    p.add_argument("--dry-run", action="store_true",
+                   help="print the run's estimated cost (particles, steps, memory, CPU time) and exit, building and "
+                        "writing nothing; the exit status is the run's (2 where it would be refused)")
+    p.add_argument("--yes", action="store_true",
+                   help="run even where the estimated CPU time passes a day (else asked at a terminal, refused "
+                        "elsewhere)")
     return p
+
+
+def _ask(question: str) -> bool:
+    """A yes/no question on the terminal (stderr), answered on stdin."""
+    print(f"cosim: {question}", end="", file=sys.stderr, flush=True)
+    try:
+        return input().strip().lower() in ("y", "yes")
+    except EOFError:
+        return False
 
 
 def cmd_run(args, parser) -> int:
     from pathlib import Path
 
+    from cosim.scene import cost
     from cosim.scene.load import load
 
     scene = load(args.scene)
@@ -78,8 +94,15 @@ def cmd_run(args, parser) -> int:
         parser.error("--resume-any-version goes with --resume")
     if args.overwrite and args.resume:
         parser.error("--overwrite clears the folder that --resume continues: give one")
+    if args.dry_run:
+        est = cost.estimate(scene)
+        print(f"{scene.name}: estimated cost")
+        print("\n".join(est.describe()))
+        cost.check(est, out, yes=args.yes)
+        return 0
     res = scene.run(out, resume=args.resume, resume_any_version=args.resume_any_version, overwrite=args.overwrite,
-                    progress=False if args.quiet else None)
+                    progress=False if args.quiet else None, yes=args.yes,
+                    ask=_ask if sys.stdin.isatty() and not args.yes else None)
     if not args.quiet:
         s = res.summary
         size = f"{s['particles']} particles ({s['fluid_particles']} fluid), " if "particles" in s else ""
@@ -138,6 +161,9 @@ def _study_parser(sub):
     p.add_argument("--extremes", action="store_true",
                    help="push each lever (dx, c0, CFL, bodies' density, line stiffness, segments, coupling step) "
                         "towards its limits and report where the run stays stable and where it stops with a clear error")
+    p.add_argument("--yes", action="store_true",
+                   help="run even where the runs' estimated CPU time together passes a day (else asked at a "
+                        "terminal, refused elsewhere)")
     return p
 
 
@@ -199,7 +225,8 @@ def cmd_study(args, parser) -> int:
     out = Path(args.out) if args.out else Path("out") / f"study_{scene.name}"
 
     res = run_study(scene, vary, args.metric, out, reference=args.reference, tol=tol, workers=args.workers,
-                    threads=args.threads, scheduler=args.scheduler, serial=args.serial, report=report)
+                    threads=args.threads, scheduler=args.scheduler, serial=args.serial, report=report, yes=args.yes,
+                    ask=_ask if sys.stdin.isatty() and not args.yes else None)
     print((out / "study.md").read_text())
     print(f"{len(res.rows)} runs in {res.wall_s:.1f} s wall; wrote {out}/study.csv, study.md, study.json, pareto.png")
     return 0

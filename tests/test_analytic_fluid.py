@@ -93,6 +93,26 @@ def test_undamped_heave_period_matches_hydrostatics_with_added_mass():
     assert errs[2] < 1e-4 * expected
 
 
+def test_a_stiff_rotational_damping_bounds_the_step():
+    """A pitch damping B [N m s] on a 2 x 1 m planar box (1 m thick) bounds the step to I / B,
+    I its smallest principal moment (a safe side of the pitch's own), as a translational
+    one bounds it to m / B: with B = 1e6 the damper, held over a step beyond 2 I / B,
+    overshoots. At that step the box, its hull tilted 10 deg, turns back towards level
+    slowly and monotonically (overdamped), where a step beyond the bound would flip the
+    damper's sign every step."""
+    B = 1e6
+    b, f, c = floating(builders.box("p", (2.0, 1.0), (0, 0, 0.0), density=500.0, planar=True, euler=(0, 10, 0)),
+                       linear_damping={"p": [0.0, 0.0, 0.0, 0.0, B, 0.0]})
+    c.initialize()
+    inertia = b.inertias()[0].min()
+    assert inertia == pytest.approx(1000.0 * (1.0 ** 2 + 1.0 ** 2) / 12.0, rel=1e-9)  # about x: m (b^2 + c^2) / 12
+    assert f.max_dt() == pytest.approx(inertia / B, rel=1e-12) and f.dt_limit == "damping"
+    angles = []
+    c.run(0.05, callback=lambda info: angles.append(b.kinematics().rotation[0][0, 2]))
+    turn = np.diff(np.asarray(angles))
+    assert np.all(np.isfinite(angles)) and (np.all(turn <= 0) or np.all(turn >= 0)) and abs(angles[-1]) < 1e-3
+
+
 def test_bad_input():
     with pytest.raises(InputError, match="rho must be finite"):
         AnalyticFluid(rho=-1.0)

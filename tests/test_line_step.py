@@ -9,8 +9,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from cosim.errors import ConfigurationError, InstabilityError
-from cosim.scene import Analytic, Box, Coupling, Line, Moorings, Probes, Scene, World
+from cosim.errors import InstabilityError
+from cosim.scene import Analytic, Box, Coupling, Line, Moorings, Probes, Scene, SceneError, World
 
 WT = Path(__file__).resolve().parents[1] / "examples" / "wind_turbine_base.toml"
 RHO, G = 1025.0, 9.81
@@ -151,8 +151,9 @@ def test_a_given_step_above_the_lines_limit_is_refused_naming_the_line_the_limit
     says = (r"coupling step dt = 0.01 s is above 0.00499 s, the largest step at which the bodies follow mooring "
             r"'moordyn', line 'front_(port|starboard)': its axial impedance on body 'base'.*Leave dt unset \(a "
             r"scene: remove coupling.dt\).*or set dt <= 0.00499 s")
-    with pytest.raises(ConfigurationError, match=says):
+    with pytest.raises(SceneError, match=says) as e:  # named by the scene's key
         scene.run(tmp_path / "out")
+    assert e.value.path == "coupling.dt"
     assert not (tmp_path / "out" / "summary.json").exists()
 
 

@@ -870,6 +870,26 @@ CASES = [
              {"file": "quake.AT2", "direction": [1.0, 0.0]}, {"file": "quake.AT2", "direction": [1.0, 1.0]}]}),
          "base_motion.components[1].direction", "(1, 1) is not perpendicular to base_motion.components[0].direction "
          "(1, 0) (the angle between them is 45 deg)", "Scene.base_motion.components[1].direction"),
+    case("a body beyond the Earth's radius", "analytic", ("bodies[1].pos", [1e30, 0.0]), "bodies[1].pos",
+         "1e+30 m is beyond 6.371e+06 m, the Earth's radius: a scene lies on the Earth; check the units (m)",
+         "Scene.bodies[1].pos"),
+    case("a box 5e-324 m high", "analytic", ("bodies[0].size", [2.0, 5e-324]), "bodies[0].size",
+         "4.94066e-324 m is below 1e-06 m, a micron: the water round it is no continuum for these models",
+         "Scene.bodies[0].size"),
+    case("a body lighter than air", "analytic", ("bodies[0].density", 1e-3), "bodies[0].density",
+         "0.001 kg/m^3 is below 0.1 kg/m^3, a tenth of air's density: no body or liquid is that light",
+         "Scene.bodies[0].density"),
+    case("a body's mass lighter than air", "analytic", ("bodies[1].mass", 1e-5), "bodies[1].mass",
+         "1e-05 kg in 0.2827 m^3 is a mean density of 3.537e-05 kg/m^3, below 0.1, a tenth of air's",
+         "Scene.bodies[1].mass"),
+    case("a speed of sound below the long-wave speed", "flume", ("fluid.c0", 0.1), "fluid.c0",
+         "gives a speed of sound of 0.1 m/s, below the water's long-wave speed sqrt(g h) = 1.716 m/s",
+         "Scene.fluid.c0"),
+    case("a gauge on the wall", "flume", ("probes.gauges", [0.0, 1.6]), "probes.gauges[0]",
+         "x = 0 m is on the domain's wall (within half a particle spacing, 0.01 m, of 0 .. 3 m), where no free surface "
+         "is found", "Scene.probes.gauges[0]"),
+    case("a coupling step longer than the run", "analytic", ("coupling.dt", 20.0), "coupling.dt",
+         "20 s is longer than the run (10 s)", "Scene.coupling.dt"),
     case("a paddle stroke beyond the flume", "flume", ("waves.period", 100.0), "waves.period",
          "waves of 0.04 m at 100 s in 0.3 m of water need a paddle stroke of 3.64 m (linear wavemaker theory): the "
          "paddle would sweep 1.82 m into the flume", "Scene.waves.period"),
@@ -1076,6 +1096,9 @@ BUILD_CASES = [
          "the impulse response rebuilds the", None),
     case("a floating body that sinks", "flume", ("bodies[0].density", 1500.0), "bodies[0].place",
          "body 'box' (30 kg) sinks: fully submerged it displaces 20 kg of water", None),
+    case("a coupling step above the analytic fluid's stable step", "analytic",
+         (("world.sample_every", 0.1), ("coupling.dt", 0.05)), "coupling.dt",
+         "coupling step dt = 0.05 s is above the stable step of participant 'fluid'", None),
 ]
 
 
@@ -1133,10 +1156,16 @@ else:  # KEY=VALUE: one value of the checkpoint's meta changed, its checksum mad
 '''}
 
 
-def study(id, args, says, vary="coupling.dt=0.01,0.005", metric="box.heave:max", files=None):
-    """A case of ``cosim study`` on the analytic base scene, run serially into out/."""
-    return cli(id, ["scene.toml", "--vary", vary, "--metric", metric, "--serial", "--out", "out", *args], says,
+def study(id, args, says, vary="coupling.dt=0.01,0.005", metric="box.heave:max", files=None, scene="scene.toml"):
+    """A case of ``cosim study`` on a base scene (the analytic one), run serially into out/."""
+    return cli(id, [scene, "--vary", vary, "--metric", metric, "--serial", "--out", "out", *args], says,
                SCENE | (files or {}), command="study")
+
+
+FLUME = {"flume.toml": BASES["flume"]}
+#: the analytic base scene's lines as dynamic ones (50 N/m submerged in water of 1000 kg/m^3)
+DYNAMIC = [x for i in (0, 1) for kv in (("EA", "5e7"), ("mass_per_length", "5.803665"), ("diameter", "0.03"))
+           for x in ("--set", f"moorings.lines[{i}].{kv[0]}={kv[1]}")]
 
 
 FIRST = ("cosim", "run", "scene.toml", "--out", "out", "--set", "world.duration=0.1", "--quiet")
@@ -1228,6 +1257,29 @@ CLI_CASES = [
     study("a study with a negative tolerance", ["--tol=-5%"], "--tol -0.05: give a relative tolerance > 0"),
     study("a study whose reference file lacks a metric", ["--reference", "ref.json"], "--reference ref.json: no "
           "reference value for box.heave:max", files={"ref.json": '{"box.surge:min": -0.5}\n'}),
+    study("a study whose runs together pass a day of CPU", [], "the study's 2 runs would take about",
+          vary="fluid.settle=1e7,2e7", metric="gauge1.eta:max", files=FLUME, scene="flume.toml"),
+    # -- the cost estimated before any work (cosim.scene.cost): memory beyond the machine's, a day of CPU
+    cli("a run of 1e300 s", ["scene.toml", "--set", "world.duration=1e300", "--out", "out"],
+        "world.duration: the run would need about", SCENE),
+    cli("a sample every 1e-12 s", ["scene.toml", "--set", "world.sample_every=1e-12", "--out", "out"],
+        "world.sample_every: the run would need about", SCENE),
+    cli("a coupling step of 1e-9 s", ["scene.toml", "--set", "coupling.dt=1e-9", "--out", "out"],
+        "coupling.dt: the run would need about", SCENE),
+    cli("a particle spacing of 10 um", ["flume.toml", "--set", "fluid.dx=1e-5", "--out", "out"],
+        "fluid.dx: the run would need about", FLUME),
+    cli("settling for 1e9 s", ["flume.toml", "--set", "fluid.settle=1e9", "--out", "out"],
+        "fluid.settle: the run would take about", FLUME),
+    cli("a dry run of a run that would be refused", ["flume.toml", "--dry-run", "--set", "fluid.settle=1e9", "--out",
+                                                     "out"], "fluid.settle: the run would take about", FLUME),
+    cli("MoorDyn lines of 1e5 segments", ["scene.toml", *DYNAMIC, "--set", "moorings.model=moordyn", "--set",
+                                          "moorings.segments=100000", "--out", "out"],
+        "moorings.segments: the run would take about", SCENE),
+    cli("SPH cables of 1e5 particles", ["scene.toml", *DYNAMIC, "--set", "moorings.model=sph-cable", "--set",
+                                        "moorings.segments=100000", "--out", "out"],
+        "moorings.segments: the run would take about", SCENE),
+    cli("an elastic plate of 1e6 elements", ["plate.toml", "--set", "bodies[0].elements=1000000", "--out", "out"],
+        "bodies[0].elements: the run would need about", {"plate.toml": BASES["plate"]}),
 ]
 
 
@@ -1367,6 +1419,12 @@ def cli_message(c: CliCase) -> str:
     return lines[-1].removeprefix(f"cosim {c.command}: error: ") if lines else ""
 
 
+def machine_free(message: str) -> str:
+    """A message for the table, without what depends on the machine that rendered it (its
+    available memory)."""
+    return re.sub(r"this machine's available memory \([^)]*\)", "this machine's available memory (...)", message)
+
+
 # ------------------------------------------------------------------------ the tests
 SCENE_CASES = CASES + FILE_CASES
 IDS = [c.id for c in SCENE_CASES]
@@ -1491,9 +1549,10 @@ def describe_files(c) -> str:
 
 def cli_files(c: CliCase) -> str:
     out = []
+    bases = {text: base for base, text in BASES.items()}
     for name, text in c.files:
-        if (name, text) in SCENE.items():
-            out.append(f"{_code(name)}: the base scene analytic")
+        if text in bases:
+            out.append(f"{_code(name)}: the base scene {bases[text]}")
         else:
             out.append(describe_files(dataclasses.replace(c, files=((name, text),))))
     if c.prepare:
@@ -1522,9 +1581,11 @@ def render() -> str:
         "`cosim run --set KEY.PATH=VALUE` (where the change can be written as assignments) and in Python;",
         "- [File contents](#file-contents): the files a scene names (an MJCF model, an accelerogram, a table of "
         "motion), read when the scene is constructed, as the builder will read them;",
-        "- [Known once built](#known-once-built): what depends on a floating body's computed height, refused "
-        "by `run` while it builds the scene, before the output folder is made;",
-        "- [The command line](#the-command-line): `cosim run` itself.",
+        "- [Known once built](#known-once-built): what depends on a floating body's computed height or on the "
+        "built participants (their stable steps), refused by `run` while it builds the scene, before the output "
+        "folder is made;",
+        "- [The command line](#the-command-line): `cosim run` itself (with the runs whose estimated cost, "
+        "`cosim.scene.cost`, passes the machine's memory or a day of CPU) and `cosim study`.",
         "",
         "An input is a change to one of the valid [base scenes](#base-scenes) (`key = value`, or a key left out), "
         "with the [files beside them](#base-files) and the case's own files in the working folder. "
@@ -1571,7 +1632,7 @@ def render() -> str:
         k += 1
         lines.append(f"| {k} | {_cell(c.id)} | {_code(f'cosim {c.command} ' + ' '.join(c.args))} | "
                      f"{_cell(cli_files(c))} | "
-                     f"{_text(cli_message(c))} |")
+                     f"{_text(machine_free(cli_message(c)))} |")
     lines += ["", "## Base scenes", ""]
     for name, text in BASES.items():
         lines += [f"### {name}", "", "```toml", text.strip(), "```", ""]

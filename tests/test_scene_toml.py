@@ -31,7 +31,7 @@ from cosim.scene import (MJCF, SPH, Analytic, Beach, Block, Box, Coupling, Cylin
                          Flume, InclinedTank, Line, Moorings, NoFluid, PaddleRecord, Patch, Piston, PolygonTank,
                          Probes, Roll, Scene, SceneError, Shake, Sphere, TableMotion, Tank, World)
 from cosim.scene.limits import (FAIRLEAD_REACH, MAX_BASE_ACCELERATION, MAX_DENSITY, MAX_LINE_EA, MAX_LINE_WEIGHT,
-                                PADDLE_SHARE)
+                                MIN_DENSITY, PADDLE_SHARE)
 from cosim.scene.plausible import bounding_radius
 from cosim.scene.placement import volume_and_height
 from cosim.scene.toml_io import from_dict, parse_value, read_toml, to_dict, to_toml, toml_value, with_values
@@ -115,7 +115,7 @@ def sph_fluids(draw, dx_max):
     kw = {"dx": draw(num(min(1e-4, dx_max / 2), dx_max, open_lo=True))}
     options = {
         "setup": st.sampled_from(["auto", "still", "waves", "sloshing", "impact", "defaults"]),
-        "rho0": pos_num(MAX_DENSITY),
+        "rho0": num(MIN_DENSITY, MAX_DENSITY),
         "c0_factor": num(10.0, 1e3),
         "h_coef": num(1.0, 3.0),
         "kernel": st.sampled_from(["wendland", "cubic"]),
@@ -138,7 +138,8 @@ def sph_fluids(draw, dx_max):
         kw[key] = draw(options[key])
     speed = draw(st.sampled_from([None, "c0", "u_max"]))  # one of the two, or neither
     if speed:
-        kw[speed] = draw(pos_num(1e4))
+        # no slower than the long-wave speed sqrt(g h) of any scene drawn here (g <= 30, h <= 20: 24.5 m/s)
+        kw[speed] = draw(num(25.0, 1e4) if speed == "c0" else num(2.5, 1e4))
     return SPH(**kw)
 
 
@@ -255,9 +256,10 @@ def bodies(draw, dim, names, box, can_float):
             pos[0] = draw(num(-50.0, 50.0)) + 300.0 * j
         kw = dict(name=name, pos=pos, **geo)
         if draw(st.booleans()):
-            kw["density"] = draw(pos_num(MAX_DENSITY))
-        else:  # no denser than osmium on average
-            kw["mass"] = draw(between(1e-9, 1.0)) * MAX_DENSITY * volume_and_height(shaped, dim)[0]
+            kw["density"] = draw(num(MIN_DENSITY, MAX_DENSITY))
+        else:  # no denser than osmium on average, nor lighter than a tenth of air
+            kw["mass"] = draw(between(2 * MIN_DENSITY / MAX_DENSITY, 1.0)) * MAX_DENSITY * volume_and_height(shaped,
+                                                                                                          dim)[0]
         if floating:
             kw["place"] = "floating"
         elif draw(st.booleans()) or turned:
@@ -282,7 +284,7 @@ def moorings(draw, dim, body_list, g):
     lines, labels = [], set(chosen)
     by_name = {b.name: b for b in body_list}
     for fl in chosen:
-        anchor, length = list(draw(vec(dim))), draw(pos_num(1e4))
+        anchor, length = list(draw(vec(dim))), draw(num(1e-3, 1e4))
         body = by_name[fl.split(".")[0]]
         reach = math.hypot(*body.fairleads[fl.split(".")[1]])
         if body.place != "floating":  # the fairlead above the anchor's seabed, the line long enough, turned or not
@@ -292,9 +294,9 @@ def moorings(draw, dim, body_list, g):
             height = volume_and_height(body, dim)[1]
             length = max(length, math.dist(anchor[:-1], body.pos) + abs(anchor[-1]) + 200.0 + height + reach)
         kw = dict(fairlead=fl, anchor=anchor, length=length, weight=draw(pos_num(1e4)))
-        for key, hi in (("EA", MAX_LINE_EA), ("mass_per_length", 1e4), ("diameter", 10.0)):
+        for key, lo, hi in (("EA", 0.0, MAX_LINE_EA), ("mass_per_length", 0.0, 1e4), ("diameter", 1e-3, 10.0)):
             if dynamic or draw(st.booleans()):
-                kw[key] = draw(pos_num(hi))
+                kw[key] = draw(num(lo, hi, open_lo=lo == 0.0))
         if "mass_per_length" in kw and g > 0:  # no heavier in water than in air
             kw["mass_per_length"] = max(kw["mass_per_length"], 1e-6)  # its weight in air not below the floats
             kw["weight"] = draw(between(1e-3, 1.0)) * min(kw["mass_per_length"] * g, MAX_LINE_WEIGHT)
@@ -340,10 +342,11 @@ def floor_patch(draw, name, domain, dim, dx):
 @st.composite
 def probes(draw, dim, sph, names, box, domain=None, dx=None):
     kw = {}
-    if sph:  # gauges over the domain's box
-        gauge = (between(box[0][0], box[1][0]) if dim == 2
-                 else st.tuples(between(box[0][0], box[1][0]), between(box[0][1], box[1][1])))
-        kw["gauges"] = draw(st.lists(gauge, max_size=4))
+    if sph:  # gauges over the domain's box, half a spacing off its walls
+        lo, hi = [x + 0.51 * dx for x in box[0]], [x - 0.51 * dx for x in box[1]]
+        gauge = (between(lo[0], hi[0]) if dim == 2 else st.tuples(between(lo[0], hi[0]), between(lo[1], hi[1])))
+        room = all(a < b for a, b in zip(lo[:dim - 1], hi[:dim - 1]))  # a domain narrower than a spacing: none
+        kw["gauges"] = draw(st.lists(gauge, max_size=4 if room else 0))
         patch_names = draw(st.lists(NAMES, max_size=3, unique=True))
         kw["pressure"] = [draw(floor_patch(n, domain, dim, dx)) for n in patch_names]
         kw["energy"] = draw(st.booleans())
@@ -462,7 +465,7 @@ def scenes(draw, dim=None, fluid_kind=None, domain_kind=None):
     kw["bodies"] = body_list
     if fluid_kind == "analytic":
         rows = st.dictionaries(st.sampled_from(names), vec(6, 0.0, 1e6), max_size=len(names)) if names else st.just({})
-        kw["fluid"] = Analytic(rho=draw(pos_num(MAX_DENSITY)), level=draw(num(-100.0, 100.0)),
+        kw["fluid"] = Analytic(rho=draw(num(MIN_DENSITY, MAX_DENSITY)), level=draw(num(-100.0, 100.0)),
                                linear_damping=draw(rows), quadratic_damping=draw(rows))
     elif fluid_kind == "none" and draw(st.booleans()):
         kw["fluid"] = NoFluid()
@@ -476,7 +479,7 @@ def scenes(draw, dim=None, fluid_kind=None, domain_kind=None):
             anchor = draw(vec(dim))
             site = (3.0 * k, 0.0, 0.0)[:dim] if dim == 3 else (3.0 * k, 0.0)
             lines.append(Line(fairlead=f"{n}.s{n}", anchor=anchor, weight=1.0,
-                              length=max(draw(pos_num(1e3)), math.dist(anchor, site) * (1 + 1e-9))))
+                              length=max(draw(num(1e-3, 1e3)), math.dist(anchor, site) * (1 + 1e-9))))
         kw["moorings"] = Moorings(lines=lines)
     kw["probes"] = draw(probes(dim, fluid_kind == "sph", names, box, kw.get("domain"),
                                kw["fluid"].dx if fluid_kind == "sph" else None))

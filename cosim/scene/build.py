@@ -602,18 +602,27 @@ def _potential(scene, level):
 
 
 def _initialize(scene, coupler) -> None:
-    """Initialise the coupler; the potential fluid's settings that do not fit the hulls (known
-    once their coefficients are) are refused naming the scene's key."""
-    if not isinstance(scene.fluid, Potential):
-        coupler.initialize()
-        return
+    """Initialise the coupler; what it refuses that only the built scene shows is refused
+    naming the scene's key: the potential fluid's settings that do not fit the hulls
+    (known once their coefficients are), a ``coupling.dt`` above a participant's or the
+    lines' stable step."""
+    from cosim.errors import ConfigurationError
     from cosim.scene.fields import SceneError
-    from fluid.potential.radiation import SettingError
 
     try:
-        coupler.initialize()
-    except SettingError as e:
-        raise SceneError(f"fluid.{e.key}", str(e).removeprefix("potential flow: ")) from None
+        if not isinstance(scene.fluid, Potential):
+            coupler.initialize()
+            return
+        from fluid.potential.radiation import SettingError
+
+        try:
+            coupler.initialize()
+        except SettingError as e:
+            raise SceneError(f"fluid.{e.key}", str(e).removeprefix("potential flow: ")) from None
+    except ConfigurationError as e:
+        if scene.coupling.dt is not None and str(e).startswith("coupling step dt"):  # a participant's, the lines' bound
+            raise SceneError("coupling.dt", str(e)) from None
+        raise
 
 
 def _build_sph(scene, out: Built) -> None:

@@ -65,6 +65,7 @@ def _span(lo, hi, dim, n=None) -> str:
 
 def check_scene(s) -> None:
     dim = s.world.dim
+    plausible.check_scales(s)
     if not s.bodies and not isinstance(s.fluid, SPH):
         raise SceneError("bodies", "the scene has nothing that moves: give bodies, or the SPH fluid in a domain")
     mjcf = [i for i, b in enumerate(s.bodies) if isinstance(b, MJCF)]
@@ -72,6 +73,7 @@ def check_scene(s) -> None:
         raise SceneError(f"bodies[{mjcf[0]}]", "an MJCF file brings all its bodies: give it as the only entry of "
                          "bodies (builder bodies and several files cannot be mixed)")
     _check_fluid_and_domain(s, dim)
+    plausible.check_fluid(s)
     _check_excitations(s, dim)
     mj = _check_bodies(s, dim)
     plausible.check_bodies(s, dim)
@@ -83,6 +85,9 @@ def check_scene(s) -> None:
         _check_potential(s, dim)
     if s.coupling.scheme == "fluid-first" and not isinstance(s.fluid, SPH):
         raise SceneError("coupling.scheme", "'fluid-first' needs the SPH fluid (the loads it exchanged); use 'auto'")
+    if s.coupling.dt is not None and s.coupling.dt > s.world.duration:
+        raise SceneError("coupling.dt", f"{s.coupling.dt:g} s is longer than the run ({s.world.duration:g} s); give "
+                         f"a step of at most world.duration, or leave coupling.dt out (the participants' stable step)")
     if s.coupling.light_body == "subiterate" and s.coupling.scheme not in ("auto", "fluid-first"):
         raise SceneError("coupling.light_body", "'subiterate' needs the fluid-first scheme; set coupling.scheme to "
                          "'auto' or 'fluid-first'")
@@ -580,10 +585,16 @@ def _check_probes(s, dim, mj):
         if s.domain is not None:
             lo, hi = _domain_box(s.domain, dim)
             for k, x in enumerate((g,) if isinstance(g, float) else g):
+                where = "" if dim == 2 else f"{list(g)}: "
                 if not lo[k] <= x <= hi[k]:
-                    where = "" if dim == 2 else f"{list(g)}: "
                     raise SceneError(f"probes.gauges[{i}]", f"{where}{'xy'[k]} = {x:g} m lies outside the domain's "
                                      f"{lo[k]:g} .. {hi[k]:g} m; put the gauge over the water")
+                half = 0.5 * s.fluid.dx if isinstance(s.fluid, SPH) else 0.0
+                if min(x - lo[k], hi[k] - x) < half:  # the first particles stand half a spacing off the walls
+                    raise SceneError(f"probes.gauges[{i}]", f"{where}{'xy'[k]} = {x:g} m is on the domain's wall "
+                                     f"(within half a particle spacing, {half:g} m, of {lo[k]:g} .. {hi[k]:g} m), "
+                                     f"where no free surface is found; put the gauge over the water, at least "
+                                     f"{half:g} m from the walls")
     seen = set()
     for i, pr in enumerate(p.pressure):
         _dim_vec(pr.centre, dim, f"probes.pressure[{i}].centre")

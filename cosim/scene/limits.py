@@ -59,3 +59,11 @@ FAIRLEAD_REACH = 1.5
 
 #: the largest share of a flume's length the paddle may sweep forward (half its stroke) [-]
 PADDLE_SHARE = 0.25
+
+#: the largest length or coordinate [m]: the Earth's radius (a scene lies on the Earth)
+MAX_LENGTH = 6.371e6
+#: the smallest size [m] of anything a scene declares > 0: a micron, below which the water
+#: around a body is no continuum for these models
+MIN_LENGTH = 1e-6
+#: the lightest matter a body, plate or liquid may be [kg/m^3]: a tenth of air's density
+MIN_DENSITY = 0.1

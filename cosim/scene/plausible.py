@@ -22,9 +22,9 @@ from __future__ import annotations
 
 import math
 
-from cosim.scene.fields import SceneError
-from cosim.scene.limits import (DENSITY_WHY, FAIRLEAD_REACH, G0, MAX_BASE_ACCELERATION, MAX_DENSITY,
-                                MAX_LINE_STRAIN, PADDLE_SHARE)
+from cosim.scene.fields import Gauges, Num, Part, Parts, SceneError, Table, Vec, Vecs, spec_fields
+from cosim.scene.limits import (DENSITY_WHY, FAIRLEAD_REACH, G0, MAX_BASE_ACCELERATION, MAX_DENSITY, MAX_LENGTH,
+                                MAX_LINE_STRAIN, MIN_DENSITY, MIN_LENGTH, PADDLE_SHARE)
 from cosim.scene.spec import (MJCF, Box, Cylinder, Earthquake, ElasticPlate, Flap, Flume, GroundMotion, NoFluid,
                               PaddleRecord, Piston, Roll, Shake, Sphere, TableMotion)
 
@@ -32,6 +32,63 @@ from cosim.scene.spec import (MJCF, Box, Cylinder, Earthquake, ElasticPlate, Fla
 def _g(x: float) -> str:
     """An acceleration [m/s^2] for a message, with its value in g."""
     return f"{x:.4g} m/s^2 ({x / G0:.3g} g)"
+
+
+# ------------------------------------------------------------------------ scales
+def check_scales(spec, prefix: str = "") -> None:
+    """Every length and coordinate [m] the scene declares within :data:`MAX_LENGTH` (the
+    Earth's radius), every size it declares > 0 (and a box's edges) at least
+    :data:`MIN_LENGTH`, every density [kg/m^3] at least :data:`MIN_DENSITY`: beyond them
+    the numbers overflow or vanish in the solvers (a body 1e300 m long, a box of 5e-324 m)
+    and no physical scene needs them. The fields are walked from their declarations."""
+    for name, check, _ in spec_fields(type(spec)):
+        key, v = f"{prefix}{name}", getattr(spec, name)
+        if v is None:
+            continue
+        if isinstance(check, (Part, Parts)):
+            for i, part in enumerate(v if isinstance(check, Parts) else [v]):
+                check_scales(part, f"{key}[{i}]." if isinstance(check, Parts) else f"{key}.")
+            continue
+        if check.unit == "kg/m^3" and isinstance(check, Num) and v < MIN_DENSITY:
+            raise SceneError(key, f"{v:g} kg/m^3 is below {MIN_DENSITY:g} kg/m^3, a tenth of air's density: no body "
+                             f"or liquid is that light; give a density >= {MIN_DENSITY:g}")
+        if check.unit != "m" and not isinstance(check, Gauges):
+            continue
+        values = (list(v.values()) if isinstance(check, Table) else [v] if isinstance(check, Num) else list(v))
+        flat = [x for item in values for x in (item if isinstance(item, tuple) else (item,))]
+        for x in flat:
+            if abs(x) > MAX_LENGTH:
+                raise SceneError(key, f"{x:g} m is beyond {MAX_LENGTH:g} m, the Earth's radius: a scene lies on the "
+                                 f"Earth; check the units (m)")
+        sizes = (flat if isinstance(check, Vec) and name == "size" else
+                 [v] if isinstance(check, Num) and check.lo == 0 and check.lo_open else [])
+        for x in sizes:
+            if x < MIN_LENGTH:
+                raise SceneError(key, f"{x:g} m is below {MIN_LENGTH:g} m, a micron: the water round it is no "
+                                 f"continuum for these models; check the units (m)")
+
+
+# ------------------------------------------------------------------------ the SPH fluid
+def check_fluid(s) -> None:
+    """The SPH fluid's speed of sound at least the water's long-wave speed ``sqrt(g h)``
+    (h the still water's depth, or the highest water block's top): slower, gravity waves
+    outrun sound and the weakly compressible fluid is no longer nearly incompressible
+    (Monaghan 1994 asks c0 >= 10 times the flow's speed, ``fluid.c0_factor``)."""
+    from cosim.scene.spec import SPH
+
+    if not isinstance(s.fluid, SPH) or s.domain is None or s.world.gravity <= 0:
+        return
+    from cosim.scene.build import fluid_config
+    from cosim.scene.setup import choose, u_max
+
+    wave = u_max(s, "still")
+    c0 = fluid_config(s, choose(s)).speed_of_sound
+    if c0 < wave:
+        key = next((f"fluid.{k}" for k in ("c0", "u_max") if getattr(s.fluid, k) is not None), "fluid.c0")
+        raise SceneError(key, f"gives a speed of sound of {c0:.4g} m/s, below the water's long-wave speed sqrt(g h) "
+                         f"= {wave:.4g} m/s: gravity waves would outrun sound and the fluid would be no longer nearly "
+                         f"incompressible; give c0 >= {10 * wave:.4g} m/s (10 sqrt(g h), Monaghan 1994), or leave "
+                         f"c0 and u_max out")
 
 
 # ------------------------------------------------------------------------ bodies
@@ -58,6 +115,10 @@ def check_bodies(s, dim: int) -> None:
                              f"> 0 (9.81 on Earth), or place it at a given pos")
         if b.mass is not None:
             v = volume_and_height(b, dim)[0]
+            if b.mass / v < MIN_DENSITY:
+                raise SceneError(f"bodies[{i}].mass", f"{b.mass:g} kg in {v:.4g} m^3 is a mean density of "
+                                 f"{b.mass / v:.4g} kg/m^3, below {MIN_DENSITY:g}, a tenth of air's: give a mass of "
+                                 f"at least {MIN_DENSITY * v:.4g} kg")
             if b.mass / v > MAX_DENSITY:
                 per = " per metre of depth" if dim == 2 else ""
                 raise SceneError(f"bodies[{i}].mass", f"{b.mass:g} kg in {v:.4g} m^3{per} is a mean density of "

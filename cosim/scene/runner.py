@@ -20,7 +20,8 @@ samples (``world.sample_every``), particle snapshots (``snapshot_every``), check
   stand for (the target S(ω), or a record's periodogram a² / 2Δω), plotted in
   ``sea_spectrum.png``;
 - ``summary.json``: set-up, scheme, sizes, steps (``coupling``: the steps taken, by what
-  set them), wall and CPU time, each series' range, the
+  set them), wall and CPU time, the cost estimated before the run (``estimate``,
+  :mod:`cosim.scene.cost`), each series' range, the
   warnings of the build (``warnings``, :attr:`cosim.scene.build.Built.warnings`);
   lines that broke (``line_breaks``) and, for catenary lines, when each went fully lifted
   or taut and back (``line_events``, :mod:`moorings.line_events`);
@@ -410,8 +411,11 @@ def _clear(out: Path) -> None:
 
 
 def run(scene, out, *, resume: bool = False, resume_any_version: bool = False, overwrite: bool = False,
-        progress=None) -> Results:
-    """Run ``scene`` into the folder ``out``; see the module docstring."""
+        progress=None, yes: bool = False, ask=None) -> Results:
+    """Run ``scene`` into the folder ``out``; see the module docstring. Before anything,
+    its cost is estimated (:mod:`cosim.scene.cost`): a run beyond the machine's memory or
+    disk is refused, one beyond a day of CPU unless ``yes`` or ``ask(question)`` says so."""
+    from cosim.scene import cost
     from cosim.scene.build import build
 
     out = Path(out)
@@ -421,6 +425,8 @@ def run(scene, out, *, resume: bool = False, resume_any_version: bool = False, o
     if not resume:
         _check_empty(out, overwrite)
     ck = _read_resume(scene, out, resume_any_version) if resume else None
+    est = cost.estimate(scene)
+    cost.check(est, out, yes=yes, ask=ask)
     wall0, cpu0 = time.perf_counter(), time.process_time()
     with tempfile.TemporaryDirectory(prefix="cosim-build-") as work:
         # built before anything is written: a scene that the solvers refuse leaves no folder
@@ -434,12 +440,12 @@ def run(scene, out, *, resume: bool = False, resume_any_version: bool = False, o
             out.mkdir(parents=True, exist_ok=True)
             for f in Path(work).iterdir():  # files the participants made (an exported FMU) go with the outputs
                 shutil.copy2(f, out / f.name)
-            return _run_built(scene, built, rec, out, ck, progress, wall0, cpu0)
+            return _run_built(scene, built, rec, out, ck, progress, wall0, cpu0, est)
         finally:
             _close_participants(built)
 
 
-def _run_built(scene, built, rec, out: Path, ck, progress, wall0: float, cpu0: float) -> Results:
+def _run_built(scene, built, rec, out: Path, ck, progress, wall0: float, cpu0: float, est=None) -> Results:
     from cosim.progress import Progress
 
     build_s = time.perf_counter() - wall0
@@ -504,6 +510,8 @@ def _run_built(scene, built, rec, out: Path, ck, progress, wall0: float, cpu0: f
         summary = _summary(scene, built, series, units, c.steps - steps0, loop_s, build_s,
                            time.process_time() - cpu0, wall_before, ck is not None, error)
         summary["checkpoints"] = {"written": saver.written, "write_s": round(saver.cost, 3)}
+        if est is not None:
+            summary["estimate"] = est.as_dict()
         if notices:
             summary["warnings"] = summary.get("warnings", []) + notices
         _write_tables(out, rec, built)

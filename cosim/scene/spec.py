@@ -967,15 +967,17 @@ class Scene(Spec):
         return body_names(self)
 
     def run(self, out=None, *, resume: bool = False, resume_any_version: bool = False, overwrite: bool = False,
-            progress=None):
+            progress=None, yes: bool = False, ask=None):
         """Run the scene, writing its outputs into ``out`` (default ``out/<name>``), a new or
         empty folder; returns a :class:`cosim.scene.runner.Results`. ``overwrite``: clear
         the folder of an earlier run first; ``resume``: continue from the checkpoint in
-        ``out`` (``resume_any_version``: even one written by other code)."""
+        ``out`` (``resume_any_version``: even one written by other code). A run whose
+        estimated CPU time passes a day (:mod:`cosim.scene.cost`) runs with ``yes``, or
+        where ``ask(question)`` returns True; else it is refused."""
         from cosim.scene.runner import run
 
         return run(self, out if out is not None else Path("out") / self.name, resume=resume,
-                   resume_any_version=resume_any_version, overwrite=overwrite, progress=progress)
+                   resume_any_version=resume_any_version, overwrite=overwrite, progress=progress, yes=yes, ask=ask)
 
 
 __all__ = ["World", "NoFluid", "Analytic", "Potential", "SPH", "Block", "Tank", "Beach", "Flume", "InclinedTank",

@@ -94,9 +94,12 @@ def _reference_file(path: Path, specs):
 
 def run_study(scene, vary: dict, specs: list[str], out, *, reference: str = "finest", tol: float | None = None,
               workers: int | None = None, threads: int = 1, scheduler: str | None = None, serial: bool = False,
-              report=None) -> StudyResult:
+              report=None, yes: bool = False, ask=None) -> StudyResult:
     """Run the study; see the module docstring. ``vary``: ``{key path: [values]}``;
-    ``specs``: ``["SERIES:STAT", ...]``; ``tol``: a relative error (0.05 for 5 %)."""
+    ``specs``: ``["SERIES:STAT", ...]``; ``tol``: a relative error (0.05 for 5 %). Before
+    the first run every run's cost is estimated (:mod:`cosim.scene.cost`): one beyond the
+    machine's memory is refused, and runs whose CPU time passes a day together need ``yes``
+    (or ``ask(question)`` to answer True)."""
     import time
 
     sweep.check_workers(workers, threads)
@@ -123,6 +126,7 @@ def run_study(scene, vary: dict, specs: list[str], out, *, reference: str = "fin
     _check_metrics(cs, specs, parsed)
     if reference not in ("finest", "richardson"):
         _check_reference_file(Path(reference), specs, parsed)
+    check_costs(cs, out, yes=yes, ask=ask)
     workers = workers or max(1, (os.cpu_count() or 1) // max(threads, 1))
     out.mkdir(parents=True, exist_ok=True)
     t0 = time.perf_counter()
@@ -195,6 +199,32 @@ def _check_reference_file(path: Path, specs, parsed) -> None:
                if (stat == "rms" and name not in ref["series"]) or (stat != "rms" and s not in ref["values"])]
     if missing:
         raise InputError(f"--reference {path}: no reference value for {', '.join(missing)}")
+
+
+def check_costs(cs, out, *, yes: bool = False, ask=None) -> None:
+    """Each run's estimated cost (:func:`cosim.scene.cost.check`: its memory and disk) and
+    all of them together (their CPU time against a day), before the first run; the runs
+    themselves are then started with ``--yes``."""
+    from cosim.scene import cost
+    from cosim.scene.fields import SceneError
+
+    ests = []
+    for c in cs:
+        est = cost.estimate(c.scene)
+        try:
+            cost.check(est, out, yes=True)
+        except SceneError as e:
+            raise InputError(f"the run with {c.values}: {e}") from None
+        ests.append((est, c))
+    total = sum(e.cpu_s for e, _ in ests)
+    if total > cost.CONFIRM_CPU_S and not yes:
+        worst, c = max(ests, key=lambda x: x[0].cpu_s)
+        question = (f"the study's {len(cs)} runs would take about {cost.human_time(total)} of CPU (the costliest, "
+                    f"{c.values}, {cost.human_time(worst.cpu_s)}, driven by {worst.driver.field})")
+        if ask is not None and ask(question + ". Run them? [y/N] "):
+            return
+        raise InputError(f"{question}, more than {cost.human_time(cost.CONFIRM_CPU_S)}; vary over cheaper values, "
+                         f"or confirm that they should run: cosim study --yes")
 
 
 def refined_field(vary: dict) -> str | None:

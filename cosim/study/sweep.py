@@ -101,8 +101,9 @@ def run_case(toml: str, folder: str, threads: int, version: str) -> dict:
     (folder / "scene.toml").write_text(toml)
     env = dict(os.environ, NUMBA_NUM_THREADS=str(threads))
     t0 = time.perf_counter()
+    # --yes: the study checked the runs' costs before the first (cosim.study.check_costs)
     returncode, usage, stderr = run_logged([sys.executable, "-m", "cosim.cli", "run", str(folder / "scene.toml"),
-                                            "--out", str(folder / "run"), "--overwrite", "--quiet"],
+                                            "--out", str(folder / "run"), "--overwrite", "--quiet", "--yes"],
                                            folder / "stderr.log", env)
     rec = {"version": version, "complete": True, "wall_s": time.perf_counter() - t0,
            "cpu_s": usage.ru_utime + usage.ru_stime, "max_rss_mb": usage.ru_maxrss / 1024.0,
