@@ -78,7 +78,7 @@ from dataclasses import dataclass
 import numba
 import numpy as np
 
-from cosim.errors import InputError
+from errors import InputError
 
 #: the first three roots of 1 + cos(x) cosh(x) = 0 (clamped-free Euler-Bernoulli beam)
 BETA_L = (1.8751040687119611, 4.6940911329741745, 7.8547574382376126)
@@ -778,7 +778,7 @@ class ElasticBody:
         """Raise :class:`InstabilityError` naming the first element whose link left the
         finite numbers or turned more than 90 degrees against its neighbour (a chain
         that went unstable), with a remedy."""
-        from cosim.errors import InstabilityError
+        from errors import InstabilityError
 
         kin = self.bodies.kinematics() if kin is None else kin
         R = kin.rotation[self.link_index]

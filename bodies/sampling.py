@@ -16,7 +16,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from cosim.errors import InputError
+from errors import InputError
 
 
 class GeomShape(NamedTuple):

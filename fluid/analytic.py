@@ -50,7 +50,7 @@ from typing import Mapping, Sequence
 import numpy as np
 
 from bodies.sampling import half_extents, mesh_volume, signed_distance
-from cosim.errors import InputError
+from errors import InputError
 from fluid.waves import RegularWave, Sea, SeaError
 
 

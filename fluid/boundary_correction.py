@@ -42,7 +42,7 @@ import math
 import numpy as np
 from numba import njit, prange
 
-from cosim.errors import InputError
+from errors import InputError
 from fluid.kernels import alpha_d, grad_factor, kernel_id, w_value
 from fluid.neighbours import cell_coords, row_range
 

@@ -105,7 +105,7 @@ import numba
 import numpy as np
 from numba import njit, prange, uint64
 
-from cosim.errors import InputError
+from errors import InputError
 
 from fluid.kernels import grad_scale, grad_shape, grad_shape_f32, w_value, w_value_f32
 from fluid.neighbours import XBINS, cell_coords, row_range, row_range_binned, x_bins

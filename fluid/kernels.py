@@ -23,7 +23,7 @@ import math
 import numpy as np
 from numba import njit
 
-from cosim.errors import InputError
+from errors import InputError
 
 #: kernel ids used inside the numba loops
 WENDLAND = 0

@@ -51,7 +51,7 @@ from pathlib import Path
 import numpy as np
 from scipy.interpolate import CubicSpline, PPoly
 
-from cosim.errors import InputError
+from errors import InputError
 
 G_STANDARD = 9.80665  #: standard gravity [m/s^2], the unit "g" of accelerograms
 

@@ -51,7 +51,7 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-from cosim.errors import InputError
+from errors import InputError
 
 #: XDMF number type and precision per numpy dtype kind and item size
 _XDMF_TYPES = {("f", 4): ("Float", 4), ("f", 8): ("Float", 8),

@@ -14,7 +14,7 @@ from enum import IntEnum
 import numpy as np
 from numba import njit, prange
 
-from cosim.errors import InputError
+from errors import InputError
 
 
 @njit(parallel=True, cache=True)

@@ -22,7 +22,7 @@ import math
 import numpy as np
 from numba import njit, prange
 
-from cosim.errors import InputError
+from errors import InputError
 from fluid.kernels import alpha_d, w_value
 from fluid.neighbours import cell_coords, row_range
 from fluid.particles import Kind

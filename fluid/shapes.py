@@ -22,7 +22,7 @@ import math
 import numpy as np
 from scipy.spatial import cKDTree
 
-from cosim.errors import InputError
+from errors import InputError
 from fluid.geometry import Built, _axes, assemble, block
 from fluid.particles import Kind
 

@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 import numba
 import numpy as np
 
-from cosim.errors import InputError, InstabilityError
+from errors import InputError, InstabilityError
 from fluid import equations as eq
 from fluid import mls
 from fluid.integrator import (StepLimit, corrector, diffusion_coefficient, first_non_finite, predictor,

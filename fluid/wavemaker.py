@@ -32,7 +32,7 @@ from pathlib import Path
 
 import numpy as np
 
-from cosim.errors import InputError
+from errors import InputError
 from fluid.motion import Rotation, Signal, Tabulated, Translation
 
 

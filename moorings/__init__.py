@@ -13,8 +13,8 @@
 
 Swapping models is one constructor call: every model takes the same list of
 ``MooringLine``. Models are imported on first use, so a scene loads (and
-compiles) only the ones it uses. Never imports MuJoCo or the coupler (only
-``cosim.errors``).
+compiles) only the ones it uses. Never imports MuJoCo or ``cosim`` (its errors come
+from the top-level :mod:`errors`).
 """
 
 from importlib import import_module

@@ -27,7 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from cosim.errors import InputError
+from errors import InputError
 
 log = logging.getLogger(__name__)
 

@@ -88,7 +88,7 @@ from typing import NamedTuple
 import numba as nb
 import numpy as np
 
-from cosim.errors import InputError
+from errors import InputError
 
 
 class LineState(IntEnum):
@@ -530,7 +530,7 @@ def shape(X: float, h: float, L: float, w: float, EA: float | None = None, n: in
     Uses the closed-form profile of the solved line (seed 004 Eq. 28-29 on the
     suspended part; Jonkman 2007 Eq. 4-3/4-4 with the elastic terms).
     """
-    from cosim.errors import TautLineError
+    from errors import TautLineError
 
     sol = solve(float(X), float(h), float(L), float(w), EA)
     if math.isinf(sol.H):

@@ -15,7 +15,7 @@ import math
 
 import numpy as np
 
-from cosim.errors import InputError, TautLineError
+from errors import InputError, TautLineError
 from moorings.catenary import TAUT, LineSolution, solve_packed
 from moorings.fairlead_stiffness import FairleadStiffness, by_differences
 from moorings.line import MooringLine, named_lines, per_line

@@ -67,7 +67,7 @@ from xml.sax.saxutils import quoteattr
 
 import numpy as np
 
-from cosim.errors import InputError
+from errors import InputError
 from moorings.line import named_lines
 
 log = logging.getLogger(__name__)
@@ -396,7 +396,7 @@ def export_catenary_fmu(
     arguments or when no C compiler is found (both before anything is written),
     :class:`~cosim.errors.SolverError` if the compilation fails.
     """
-    from cosim.errors import SolverError
+    from errors import SolverError
 
     lines = named_lines(lines)
     n, dim = len(lines), lines[0].dim

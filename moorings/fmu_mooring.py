@@ -36,7 +36,7 @@ from pathlib import Path
 
 import numpy as np
 
-from cosim.errors import InputError, SolverError, TautLineError
+from errors import InputError, SolverError, TautLineError
 from moorings.fairlead_stiffness import FairleadStiffness, by_differences
 from moorings.line import MooringLine, named_lines, per_line
 from moorings.line_events import LineStateLog

@@ -44,7 +44,7 @@ from pathlib import Path
 
 import numpy as np
 
-from cosim.errors import InputError, SolverError
+from errors import InputError, SolverError
 from moorings.fairlead_stiffness import FairleadStiffness, axial
 from moorings.line import named_lines, per_line
 from moorings.line_events import LineStateLog, node_states

@@ -129,7 +129,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
-from cosim.errors import InputError, InstabilityError
+from errors import InputError, InstabilityError
 from moorings import sph_cable_kernels as _k
 from moorings.fairlead_stiffness import FairleadStiffness, axial
 from moorings.line import MooringLine, named_lines, vertical_plane

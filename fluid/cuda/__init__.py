@@ -54,7 +54,7 @@ from __future__ import annotations
 
 import os
 
-from cosim.errors import InputError
+from errors import InputError
 
 _SIM_HINT = ("set NUMBA_ENABLE_CUDASIM=1 in the environment before starting Python to run the GPU path on numba's "
              "CUDA simulator (slow: tiny cases only), or use device='cpu'")
