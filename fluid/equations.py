@@ -9,15 +9,15 @@ neighbour, ``r_ab = r_a - r_b``, ``v_ab = v_a - v_b``, ``grad_a W_ab = F_ab r_ab
 
 Equations
 ---------
-* Continuity, 004_1657bd4a51d29840.txt Eq. 7:
+* Continuity, Barreiro et al. 2016, Eq. 7:
   ``drho_a/dt = sum_b m_b v_ab . grad_a W_ab + D_a``.
 * Density diffusion ``D_a = delta h c0 sum_b (m_b/rho_b) psi_ab . grad_a W_ab`` with
   ``psi_ab = 2 (rho_b - rho_a - rho^H_ba) r_ba / (|r_ab|^2 + eta^2)``:
 
   - ``"molteni"``: Molteni & Colagrossi (2009), ``rho^H = 0``; this is
-    000_7d114ab96e048b26.txt Eq. 1-2 without the renormalised density gradients of
+    Dinçer & Demir 2020, Eq. 1-2 without the renormalised density gradients of
     Eq. 3-4.
-  - ``"antuono"``: delta-SPH of Antuono et al. (2010), 000_7d114ab96e048b26.txt Eq. 1-4:
+  - ``"antuono"``: delta-SPH of Antuono et al. (2010), Dinçer & Demir 2020, Eq. 1-4:
     ``rho^H_ba = (<grad rho>_a + <grad rho>_b) . r_ba / 2`` with the renormalised
     gradients of :func:`density_gradients`, so that the term vanishes for any linear
     density field whatever the particle arrangement (Fourtakas' only for the hydrostatic
@@ -56,37 +56,37 @@ Equations
   to 2.8 % (the surface rows are a third of a thin flow), so it is the set-up for still
   and slowly moving water, not the default. It costs 5-8 % of a step (a compiled variant
   of the pair loop: nothing when off).
-* Momentum, 004_1657bd4a51d29840.txt Eq. 6 (001_14936b82710365b2.txt Eq. 5):
+* Momentum, Barreiro et al. 2016, Eq. 6 (Sunara et al. 2021, Eq. 5):
   ``dv_a/dt = -sum_b m_b (P_a/rho_a^2 + P_b/rho_b^2 + Pi_ab) grad_a W_ab + g``.
-* Artificial viscosity, 001_14936b82710365b2.txt Eq. 6 (Monaghan 1992):
+* Artificial viscosity, Sunara et al. 2021, Eq. 6 (Monaghan 1992):
   ``Pi_ab = -alpha cbar_ab mu_ab / rhobar_ab`` if ``v_ab . r_ab < 0`` else 0,
   ``mu_ab = h v_ab . r_ab / (r_ab^2 + eta^2)``, ``eta^2 = 0.01 h^2``. Between a fluid and
   a boundary particle alpha is multiplied by ``alpha_wall`` (default 1; DualSPHysics'
   ViscoBoundFactor): the viscosity acts on the wall as a friction far stronger than
   water's (``nu ~ alpha h c0 / 8``, some 100 times water's at a centimetre's
   resolution), which damps waves running over a bed; 0 makes the walls slip, as in the
-  DualSPHysics set-up of the floating box in waves (seed 004 §4.1).
+  DualSPHysics set-up of the floating box in waves (Barreiro et al. 2016, §4.1).
 * Laminar viscosity (optional, ``nu > 0``; off by default), the form of Lo & Shao (2002,
   Appl. Ocean Res. 24) that DualSPHysics uses for "Laminar" viscosity (named in
-  004_1657bd4a51d29840.txt §2.3 after Eq. 6; Morris et al. 1997):
+  Barreiro et al. 2016, §2.3 after Eq. 6; Morris et al. 1997):
   ``(dv_a/dt)_lam = sum_b m_b 4 nu0 (r_ab . grad_a W_ab) / ((rho_a + rho_b)(r_ab^2 + eta^2)) v_ab``
   with the kinematic viscosity ``nu0`` [m^2/s]; added to the artificial viscosity, between
   fluid particles and between fluid and boundary particles (no-slip walls), antisymmetric
   in the pair like every other term. Its time-step limit ``dt <= 0.125 h^2 / nu0`` (Morris
   et al. 1997; 0.0156 h^2 / nu0 with Verlet, and with the artificial viscosity and the
   density diffusion counted in nu0) is in :func:`fluid.integrator.stable_dt`.
-* XSPH (optional, ``eps > 0``; off by default), Monaghan (1989), 003_7c74773681ee080c.txt
+* XSPH (optional, ``eps > 0``; off by default), Monaghan (1989), Wang et al. 2022,
   §2 (the equation after Eq. 15): particles move with
   ``v_a + eps sum_b (m_b / rhobar_ab) v_ba W_ab``, ``rhobar_ab = (rho_a + rho_b)/2``. The
-  extracted text of 003 reads ``u_ab`` in the sum, which with a plus sign would sharpen
+  extracted text of Wang et al. 2022 reads ``u_ab`` in the sum, which with a plus sign would sharpen
   velocity differences instead of smoothing them; Monaghan's form, with ``v_ba = v_b - v_a``,
-  is used. 003 applies the corrected velocity in the continuity equation too; here it only
+  is used. Wang et al. apply the corrected velocity in the continuity equation too; here it only
   moves the particles (fluid.integrator), so that mass and momentum balances are those of
   the uncorrected equations. Boundary particles keep their prescribed motion.
-* Tait equation of state, 004_1657bd4a51d29840.txt Eq. 8 with
-  ``B = c0^2 rho0 / gamma`` (001_14936b82710365b2.txt Eq. 8); sound speed
+* Tait equation of state, Barreiro et al. 2016, Eq. 8 with
+  ``B = c0^2 rho0 / gamma`` (Sunara et al. 2021, Eq. 8); sound speed
   ``c = c0 (rho/rho0)^((gamma-1)/2)``.
-* Dynamic boundaries, 004_1657bd4a51d29840.txt §2.6: boundary particles obey the
+* Dynamic boundaries, Barreiro et al. 2016, §2.6: boundary particles obey the
   continuity equation (summed over fluid neighbours; boundary-boundary pairs are masked),
   their pressure follows from the same equation of state, their motion is prescribed.
   Their "acceleration" computed here is the force per unit mass the fluid exerts on
@@ -163,13 +163,13 @@ def params(h, ad, alpha, delta, diffusion, rho0, c0, g, nu=0.0, xsph=0.0, alpha_
 
 
 def tait_B(rho0: float, c0: float, gamma: float) -> float:
-    """Tait stiffness B = c0^2 rho0 / gamma [Pa] (004_1657bd4a51d29840.txt Eq. 8)."""
+    """Tait stiffness B = c0^2 rho0 / gamma [Pa] (Barreiro et al. 2016, Eq. 8)."""
     return c0 * c0 * rho0 / gamma
 
 
 @njit(**_OPTS)
 def _tait(r, rho0, c0, gamma, B, e):
-    """Pressure [Pa] and sound speed [m/s] at density ``r`` (004_1657bd4a51d29840.txt
+    """Pressure [Pa] and sound speed [m/s] at density ``r`` (Barreiro et al. 2016,
     Eq. 8); for water (gamma = 7) the powers by multiplication: pow costs more than all
     the rest of :func:`pack`."""
     x = r / rho0
@@ -182,7 +182,7 @@ def _tait(r, rho0, c0, gamma, B, e):
 
 @njit(parallel=True, **_OPTS)
 def equation_of_state(rho, rho0, c0, gamma, p, cs):
-    """Tait EOS (004_1657bd4a51d29840.txt Eq. 8): pressure ``p`` [Pa] and sound speed
+    """Tait EOS (Barreiro et al. 2016, Eq. 8): pressure ``p`` [Pa] and sound speed
     ``cs`` [m/s] of every particle from its density [kg/m^3]."""
     B = c0 * c0 * rho0 / gamma
     e = 0.5 * (gamma - 1.0)
@@ -208,7 +208,7 @@ PAD_F32 = 16
 
 @njit(parallel=True, **_OPTS)
 def pack(pos, vel, rho, mass, kind, rho0, c0, gamma, p, S):
-    """Tait EOS (004_1657bd4a51d29840.txt Eq. 8) into ``p`` [Pa], and the packed table
+    """Tait EOS (Barreiro et al. 2016, Eq. 8) into ``p`` [Pa], and the packed table
     ``S`` (N_ROWS, N) the pair loop reads: one contiguous row per quantity (positions
     and velocities per component, y = 0 in 2-D, density, mass, sound speed
     ``c = c0 (rho/rho0)^((gamma-1)/2)``, ``p/rho^2``, ``m/rho`` (fluid; 0 for boundary particles), ``rho/c^2`` and 1 for fluid,
@@ -279,9 +279,9 @@ def wall_sums(S, xa, ya, za, ux, uy, uz, rhoa, kernel, three, h, lo, cell, cx, c
     """Over the fluid particles b within 2h of a boundary particle at (xa, ya, za) [m]
     moving at (ux, uy, uz) [m/s] with density ``rhoa`` [kg/m^3] in cell (cx, cy, cz) (cells
     ``cell`` = 2h [m] wide, ``lo`` (x, y, z), ``tab`` the sub-bin table):
-    ``sum_b m_b v_ab . r_ab F_ab / Fc``, its continuity rate (004_1657bd4a51d29840.txt Eq. 7)
+    ``sum_b m_b v_ab . r_ab F_ab / Fc``, its continuity rate (Barreiro et al. 2016, Eq. 7)
     without the kernel's constant factor, and ``sum_b (mu_ab / h)^8``, the 8-norm of Eq. 14's
-    viscous terms (001_14936b82710365b2.txt) before its root: the same sums, term for term
+    viscous terms (Sunara et al. 2021) before its root: the same sums, term for term
     and in the same order, as the pair loop's for a boundary particle (boundary-boundary
     pairs do not interact; no diffusion), so that its step bound is the one the full pass
     gives."""
@@ -509,7 +509,7 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
                         # density diffusion, fluid-fluid pairs (VOL is zero for boundary
                         # particles, fa applied after the loop):
                         # psi_ab . grad W = -2 (rho_b - rho_a - rho^H_ba) F r^2/(r^2+eta^2)
-                        if renorm:  # seed 000 Eq. 2: minus the mean renormalised gradient
+                        if renorm:  # Dinçer & Demir 2020, Eq. 2: minus the mean renormalised gradient
                             rhoH = F(-0.5) * ((gxa + F(G[0, b])) * rx + (gza + F(G[2, b])) * rz)
                             if three:
                                 rhoH -= F(0.5) * (gya + F(G[1, b])) * ry
@@ -521,7 +521,7 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
                             qgx += vf * rx
                             qgy += vf * ry
                             qgz += vf * rz
-                        # momentum (Eq. 6) with artificial viscosity (001 Eq. 6)
+                        # momentum (Eq. 6) with artificial viscosity (Sunara et al. 2021, Eq. 6)
                         Pi = avh * (ca + T[CS - o, b]) * min(vr, zero) * d
                         if wall_visc:  # alpha_wall alpha between fluid and boundary particles
                             Pi *= awall + (one - awall) * fa * fb
@@ -710,9 +710,9 @@ _GRADIENTS = {}
 
 def density_gradients(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, G) -> None:
     """The renormalised density gradient ``G[:, a]`` [kg/m^4] (rows x, y, z; y = 0 in 2-D)
-    of every fluid particle a, 000_7d114ab96e048b26.txt Eq. 3-4:
+    of every fluid particle a, Dinçer & Demir 2020, Eq. 3-4:
     ``<grad rho>_a = L_a sum_b V_b (rho_b - rho_a) grad_a W_ab`` with
-    ``L_a = [sum_b V_b r_ba (x) grad_a W_ab]^-1`` over the fluid neighbours (the seed prints
+    ``L_a = [sum_b V_b r_ba (x) grad_a W_ab]^-1`` over the fluid neighbours (the paper prints
     ``r_ab``, which gives the gradient's negative with ``grad_a W_ab``; with ``r_ba = r_b -
     r_a`` it reproduces any linear field exactly). Where ``L_a`` is near singular (|det| of
     its inverse below :data:`DET_MIN` of the mean diagonal's power), the hydrostatic
@@ -756,7 +756,7 @@ def interact(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, out, acc, xs, G, 
     [m/s^2] momentum rate (Eq. 6 with artificial and, if ``nu > 0``, laminar viscosity;
     gravity added for fluid only, see module docstring), ``out[VISC, a]`` [m/s]
     ~ max_b |h v_ab.r_ab / (r_ab^2 + eta^2)| over the support for the time step
-    (001_14936b82710365b2.txt Eq. 14) and, if ``prm[P_XSPH] > 0``, the XSPH velocity
+    (Sunara et al. 2021, Eq. 14) and, if ``prm[P_XSPH] > 0``, the XSPH velocity
     correction ``xs[a]`` [m/s] (fluid only; zero for boundary particles). Particles must
     be sorted by cell (``start`` and the sub-bin table ``tab`` from
     :func:`fluid.neighbours.sort_by_cell` or :func:`fluid.neighbours.x_bins`, cells ``cell``
@@ -954,7 +954,7 @@ def boundary_pressure(pos, vel, rho, mass, kind, start, grid, rho0: float, c0: f
     """Pressure [Pa] for reporting at every particle: fluid particles their own; boundary
     particles the inverse-distance average of the fluid pressures within the support 2h,
     ``P_a = sum_b (P_b / |r_b - r_a|) / sum_b (1 / |r_b - r_a|)``
-    (001_14936b82710365b2.txt Eq. 15); 0 for a boundary particle with no fluid near it.
+    (Sunara et al. 2021, Eq. 15); 0 for a boundary particle with no fluid near it.
     Particles sorted by cell on ``grid`` (reach 1, cell 2h)."""
     n, dim = pos.shape
     S = np.empty((N_ROWS, n))

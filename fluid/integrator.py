@@ -1,7 +1,7 @@
 """Time integration: the symplectic position-Verlet predictor-corrector of DualSPHysics
-(Monaghan 2005; "standard predictor-corrector", 001_14936b82710365b2.txt §2.2), with a
+(Monaghan 2005; "standard predictor-corrector", Sunara et al. 2021, §2.2), with a
 variable step from the force and Courant-viscous conditions of
-001_14936b82710365b2.txt Eq. 14:
+Sunara et al. 2021, Eq. 14:
 
     dt = CFL * min(dt_f, dt_cv),  dt_f = min_a sqrt(h / |f_a|),
     dt_cv = min_a h / (c_a + max_b |h v_ab . r_ab / (r_ab^2 + eta^2)|)
@@ -35,9 +35,9 @@ of the rates (DualSPHysics applies none; for a small ``dx`` and a large ``nu`` i
 
 - ``nu`` [m^2/s]: the laminar viscosity (Lo & Shao 2002, fluid.equations), whose SPH
   Laplacian bounds the step by ``0.125 h^2 / nu`` (Morris, Fox & Zhu 1997, J. Comput. Phys.
-  136; the criterion 001_14936b82710365b2.txt §2.2 cites as "viscous diffusion term").
+  136; the criterion Sunara et al. 2021, §2.2 cites as "viscous diffusion term").
 - ``alpha h c / (2 (d + 2))``: the shear viscosity that Monaghan's artificial viscosity
-  (001 Eq. 6) amounts to in the continuum (Monaghan 2005, Rep. Prog. Phys. 68;
+  (Sunara et al. 2021, Eq. 6) amounts to in the continuum (Monaghan 2005, Rep. Prog. Phys. 68;
   ``alpha h c0 / 8`` in 2-D, fluid.equations), ``c_max`` the largest sound speed now.
 - ``delta h c0``: the density diffusion (fluid.equations), the same SPH Laplacian
   operator (``2 V_b |F_ab| (rho_b - rho_a)`` against the laminar ``2 V_b |F_ab| v_ba``)
@@ -66,7 +66,7 @@ cost 1.83 times the CPU per simulated second and moved no dam-break metric). Lim
 ``"viscous_diffusion"``, ``"artificial_viscosity"``, ``"density_diffusion"`` name the
 largest part of ``nu_eff``.
 
-Covered by 001 Eq. 14 as it stands: the sound speed (``h / c_a``) and the relative
+Covered by Sunara et al. 2021, Eq. 14 as it stands: the sound speed (``h / c_a``) and the relative
 particle speed (``|h v_ab . r_ab| / r^2``, the ``|v|`` of a CFL on ``c0 + |v|``), the force
 criterion ``sqrt(h / |f_a|)`` (Monaghan 1992, Annu. Rev. Astron. Astrophys. 30), and, in
 the predictor-corrector, the artificial viscosity: its ``lambda dt`` is
@@ -160,7 +160,7 @@ def _bounds(acc, visc, cs, kind, h):
 def stable_dt(acc, visc, cs, kind, h: float, cfl: float, dt_max: float = math.inf,
               nu: float = 0.0, *, alpha_eff: float = 0.0, nu_delta: float = 0.0,
               c_diff: float = MORRIS) -> StepLimit:
-    """001_14936b82710365b2.txt Eq. 14 with factor ``cfl``; ``dt_max`` [s] caps it; and the
+    """Sunara et al. 2021, Eq. 14 with factor ``cfl``; ``dt_max`` [s] caps it; and the
     diffusion limit ``c_diff h^2 / nu_eff`` (module docstring) with
     ``nu_eff = nu + alpha_eff h c_max + nu_delta``: ``nu`` [m^2/s] the laminar viscosity,
     ``alpha_eff = alpha / (2 (d + 2))`` [-] the artificial viscosity's share, ``nu_delta =

@@ -2,7 +2,7 @@
 Hu & Adams (2012, J. Comput. Phys. 231, 7057-7075, Eq. 27) for the FIXED_WALL and
 MOVING_WALL particles.
 
-Why: plain dynamic boundary particles (004_1657bd4a51d29840.txt §2.6) integrate the
+Why: plain dynamic boundary particles (Barreiro et al. 2016, §2.6) integrate the
 continuity equation, ``drho_w/dt = sum_f m_f (v_w - v_f) . grad_w W_wf``. A wall particle
 does not move with the fluid, so water sliding along the wall changes the fluid it sees:
 at the waterline, where the kernel sum of the fluid drops from its full value to zero
@@ -19,7 +19,7 @@ its position by the momentum balance of the wall (Adami et al. 2012, Eq. 27):
 
 ``r_wf = r_w - r_f``, ``W_wf = W(|r_wf|, h)``, the sums over the fluid particles within
 the support 2h, ``g`` the gravity vector and ``a_w`` the wall's (prescribed)
-acceleration; its density is the Tait density of that pressure (004 Eq. 8 inverted),
+acceleration; its density is the Tait density of that pressure (Barreiro et al. 2016, Eq. 8 inverted),
 ``rho_w = rho0 (1 + p_w / B)^(1/gamma)``, clamped below at ``rho0`` (``p_w >= 0``: the
 wall holds no tension, as the clamp of the plain dynamic boundaries in
 ``fluid.integrator``). A wall particle with no fluid within 2h takes ``rho0``.

@@ -17,7 +17,7 @@ their fade under the free surface (``diffusion_at_surface=False``), the renormal
 diffusion of Antuono et al. (``"antuono"``: its gradient loop first), plain dynamic
 boundaries (DBC) for walls and bodies, the tank walls of ``walls="adami"`` (with the
 prescribed walls' accelerations), XSPH, the symplectic and Verlet integrators, the
-time-step reductions of 001_14936b82710365b2.txt Eq. 14 with the diffusion limit, the
+time-step reductions of Sunara et al. 2021, Eq. 14 with the diffusion limit, the
 NaN guard (the CPU path's message), particles leaving the domain, the group loads on
 the device, boundary particles placed by id (bodies, prescribed motions), and the
 bodies' mDBC densities (fluid.boundary_correction, the hook cosim.sph_fluid sets; its
