@@ -30,7 +30,7 @@ fixed-free case; Huang 1961) solved here in :func:`timoshenko_frequencies`; tip
 deflections as above (Timoshenko & Gere; the shear term ``P L / (kappa G A)``).
 
 Accuracy (``python benchmarks/elastic_beam.py``, AMD EPYC, 2 cores shared with two other
-jobs; seed 002's plate ``L = 8 cm, h = 1.2 cm, rho_s = 2500 kg/m^3, E = 1 MPa, nu = 0``,
+jobs; Yang & Li 2020's plate ``L = 8 cm, h = 1.2 cm, rho_s = 2500 kg/m^3, E = 1 MPa, nu = 0``,
 W = 1 m, against Timoshenko ``f = 5.970, 34.59, 87.63 Hz``, tip ``1.2012 mm/N``;
 Euler-Bernoulli would say 6.058, 37.96, 106.3 Hz, off by 1.5 / 10 / 21 %)::
 
@@ -61,7 +61,7 @@ Limits: the chain is inextensible (the plate's first axial mode, ``sqrt(E / rho)
 links nearest them (hat weights on nodes ``k l``, :meth:`BeamModel.blend`), so the
 deformed surface stays closed at the joints (on rigid links alone the outer face would
 open by about ``h dtheta / 2`` at a joint bent by ``dtheta``: 0.9 mm at the foot for
-seed 002's 48 mm tip deflection at N = 16, 0.36 of a 2.5 mm spacing); the force on each
+Yang & Li 2020's 48 mm tip deflection at N = 16, 0.36 of a 2.5 mm spacing); the force on each
 is split between the two links with the same weights. A plate thinner than ``dx`` gets
 one column of particles (the thin-wall treatment is the fluid's:
 :mod:`cosim.sph_fluid`).
@@ -83,7 +83,7 @@ from errors import InputError
 #: the first three roots of 1 + cos(x) cosh(x) = 0 (clamped-free Euler-Bernoulli beam)
 BETA_L = (1.8751040687119611, 4.6940911329741745, 7.8547574382376126)
 
-#: fewest elements: N = 4 has the first three frequencies 1.4 / 4.2 / 4.5 % off (seed 002's plate), fewer
+#: fewest elements: N = 4 has the first three frequencies 1.4 / 4.2 / 4.5 % off (Yang & Li 2020's plate), fewer
 #: leave the third mode to the last two or three links
 MIN_ELEMENTS = 4
 
@@ -414,13 +414,13 @@ def elastic_beam(name: str, length: float, thickness: float, *, E: float, rho: f
     :func:`bodies.builders.scene`, its links are named ``{name}_link0`` (welded) to
     ``{name}_link{N}``, with sites ``{name}_tip`` (the free end's centre: the top, or the
     bottom when hanging) and ``{name}_corner`` (the free end, -x side: the "upper left
-    corner" of seed 002 Figure 6; the lower upstream corner of a hanging gate)."""
+    corner" of Yang & Li 2020, Figure 6; the lower upstream corner of a hanging gate)."""
     if not isinstance(name, str) or not name:
         raise InputError(f"elastic beam: name must be a non-empty string, got {name!r}")
     L = _positive(name, "length", "m", length, "give the cantilever's length from clamp to tip")
     h = _positive(name, "thickness", "m", thickness, "give the plate's thickness in the bending direction (x)")
     W = _positive(name, "width", "m", width, "give the width along y (1 m in a 2-D scene)")
-    E = _positive(name, "E", "Pa", E, "give Young's modulus, e.g. E=1e6 for seed 002's plate")
+    E = _positive(name, "E", "Pa", E, "give Young's modulus, e.g. E=1e6 for Yang & Li 2020's plate")
     rho = _positive(name, "rho", "kg/m^3", rho, "give the material density, e.g. rho=2500")
     kappa = _positive(name, "kappa", "-", kappa, "give the shear coefficient, 5/6 for a rectangular section")
     if not (isinstance(nu, (int, float)) and math.isfinite(nu) and -1.0 < nu < 0.5):
@@ -694,8 +694,8 @@ class ElasticBody:
     Particles (:meth:`BeamModel.blended_particles`) are stored in the frames of the two
     links that carry them and placed every step as the blend of both rigid placements
     (:meth:`BeamModel.blend`), ``x = w (o_a + R_a p_a) + (1 - w) (o_b + R_b p_b)``, with
-    the same blend of the links' rigid-body velocities ``V + Omega x (x_k - com)`` (seed
-    004 Eq. 13 on each link), so they never drift and the surface stays closed at the
+    the same blend of the links' rigid-body velocities ``V + Omega x (x_k - com)``
+    (Barreiro et al. 2016, Eq. 13 on each link), so they never drift and the surface stays closed at the
     joints. The force on a particle is split with the same weights (:func:`_split_wrenches`):
     link ``a`` gets ``w f`` and link ``b`` ``(1 - w) f``, both acting at the particle, one
     wrench per link about its centre of mass; the sums of force and of moment about any
@@ -770,7 +770,7 @@ class ElasticBody:
 
     def displacement(self, site: str = "corner") -> np.ndarray:
         """Displacement [m] ``(3,)`` from the start of the ``"tip"`` (the free end's centre)
-        or ``"corner"`` (the free end, -x face: seed 002 Figure 6's upper left corner) site."""
+        or ``"corner"`` (the free end, -x face: Yang & Li 2020, Figure 6's upper left corner) site."""
         i = self._sites[site]
         return self.bodies.site_positions([i])[0] - self._site0[site]
 

@@ -3,12 +3,12 @@ r"""The quasi-static catenary mooring law, inextensible and elastic, with a seab
 Public entry point: :func:`solve` (``solve(X, h, L, w, EA=None)``), a pure
 function of the line geometry; :func:`shape` gives the line's coordinates.
 
-Geometry (seed 004, Fig. 3): the anchor lies on a flat seabed; the fairlead is at
+Geometry (Barreiro et al. 2016, Fig. 3): the anchor lies on a flat seabed; the fairlead is at
 horizontal distance ``X`` and height ``h`` above it. The line has unstretched
 length ``L``, submerged weight ``w`` per unit length and axial stiffness ``EA``
 (``None``: inextensible). No current, no seabed friction, no bending stiffness.
 
-States (seed 004 Fig. 5), with boundaries along X at fixed h:
+States (Barreiro et al. 2016, Fig. 5), with boundaries along X at fixed h:
 
 ====================  ==============================================================
 ``RESTING``           ``X <= L - h``: the line hangs straight down from the fairlead
@@ -27,13 +27,13 @@ States (seed 004 Fig. 5), with boundaries along X at fixed h:
                       ``touchdown = 0`` rather than raising, so that arrays of lines
                       stay solvable. In a coupled scene the mooring system holds
                       such a line with a length constraint on the bodies (so taut
-                      lines share a load by statics, not by seed 004 Eq. 40's
+                      lines share a load by statics, not by Barreiro et al. 2016, Eq. 40's
                       proportional split); alone, it raises
                       :class:`~cosim.errors.TautLineError` naming the line.
 ====================  ==============================================================
 
 Boundaries are exact: ``X = L - h`` is ``RESTING``; the lift-off point
-``X_lift = (L^2 - h^2)/h * atanh(h/L)`` (inextensible; seed 004 Eq. 37 with
+``X_lift = (L^2 - h^2)/h * atanh(h/L)`` (inextensible; Barreiro et al. 2016, Eq. 37 with
 ``l_s = L`` in Eq. 39) is ``FULLY_LIFTED``; the taut point ``X = sqrt(L^2 - h^2)``
 is ``TAUT``. ``H`` and ``V`` are continuous across the first two and tend to
 infinity at the third (inextensible), where the problem is ill-conditioned: the
@@ -42,7 +42,7 @@ point itself; it stays finite up to the last double below it.
 
 Method
 ------
-The inextensible law is seed 004 Eq. 35-39 (Faltinsen 1993): with ``a = H/w``
+The inextensible law is Barreiro et al. 2016, Eq. 35-39 (Faltinsen 1993): with ``a = H/w``
 (Eq. 34) the lifted length ``l_s`` obeys ``l_s^2 = h^2 + 2 h a`` (Eq. 37) and
 ``X = L - l_s + a acosh(1 + h/a)`` (Eq. 39). The elastic law with seabed contact
 and no friction is the one of Jonkman (2007, NREL/TP-500-41958, §4.1, Eq. 4-1/4-2
@@ -57,7 +57,7 @@ and fully suspended (``V >= w L``), with ``V_a = V - w L`` at the anchor::
     X = (H/w) (asinh(V/H) - asinh(V_a/H)) + H L / EA
     h = (H/w) (sqrt(1 + (V/H)^2) - sqrt(1 + (V_a/H)^2)) + (V L - w L^2 / 2) / EA
 
-For ``EA -> inf`` both reduce to seed 004 Eq. 28-29 and 35-39.
+For ``EA -> inf`` both reduce to Barreiro et al. 2016, Eq. 28-29 and 35-39.
 
 Each regime is reduced here to one equation in one unknown, solved with a
 bracketed, safeguarded Newton iteration (bisection whenever a Newton step
@@ -92,7 +92,7 @@ from errors import InputError
 
 
 class LineState(IntEnum):
-    """State of a catenary line (seed 004 Fig. 5 a-d)."""
+    """State of a catenary line (Barreiro et al. 2016, Fig. 5 a-d)."""
 
     RESTING = 0
     PARTLY_LIFTED = 1
@@ -240,7 +240,7 @@ def _taut_x(h, L):
 
 @nb.njit(**_JIT)
 def _lift_x(h, L):
-    """X [m] of the inextensible lift-off point (seed 004 Eq. 37, 39 with l_s = L)."""
+    """X [m] of the inextensible lift-off point (Barreiro et al. 2016, Eq. 37, 39 with l_s = L)."""
     if h <= 0.0:
         return L
     r = h / L
@@ -439,7 +439,7 @@ def solve(X, h, L, w, EA=None) -> LineSolution:
         Submerged weight per unit length [N/m], > 0.
     EA : float, array_like or None
         Axial stiffness [N], > 0; ``None`` (or ``inf``) for an inextensible line
-        (seed 004 Eq. 35-39), otherwise the elastic catenary with seabed contact
+        (Barreiro et al. 2016, Eq. 35-39), otherwise the elastic catenary with seabed contact
         and no friction (see the module docstring).
 
     Returns
@@ -507,7 +507,7 @@ def _first_bad(X, h, L, w, EA):
 
 
 def lift_off_distance(h: float, L: float) -> float:
-    """X [m] at which an inextensible line lifts off entirely (seed 004 Eq. 37, 39
+    """X [m] at which an inextensible line lifts off entirely (Barreiro et al. 2016, Eq. 37, 39
     with ``l_s = L``): ``(L^2 - h^2)/h * atanh(h/L)``; ``L`` when ``h = 0``.
     :func:`solve` returns ``FULLY_LIFTED`` exactly here."""
     return _lift_x(float(h), float(L))
@@ -527,7 +527,7 @@ def shape(X: float, h: float, L: float, w: float, EA: float | None = None, n: in
     seabed from the anchor to below the fairlead, its slack spread evenly along the bed
     (points closer than their arc length: no tension).
 
-    Uses the closed-form profile of the solved line (seed 004 Eq. 28-29 on the
+    Uses the closed-form profile of the solved line (Barreiro et al. 2016, Eq. 28-29 on the
     suspended part; Jonkman 2007 Eq. 4-3/4-4 with the elastic terms).
     """
     from errors import TautLineError

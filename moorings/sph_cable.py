@@ -1,23 +1,23 @@
-"""The SPH cable of seed 000 (Dinçer & Demir 2020): a 1-D chain of SPH particles with
+"""The SPH cable of Dinçer & Demir 2020: a 1-D chain of SPH particles with
 axial stiffness in tension only, as a stand-alone solver (:class:`SPHCable`) and as a
 mooring model (:class:`SPHCableMooring`, the ``cosim.protocol.Mooring`` interface).
 
-Equations (``000_7d114ab96e048b26.txt`` Eq. 1-12) and how they are read here
+Equations (Dinçer & Demir 2020, Eq. 1-12) and how they are read here
 -----------------------------------------------------------------------------
 The cable is a 1-D continuum: the cross-section is integrated out, so density is the
 line density ``lam = rho A`` [kg/m] and stress is the tension ``T = sigma A`` [N]. The
-Wendland C2 kernel (000 Section 2, support 2h) is taken with h = ds in the cable's own
+Wendland C2 kernel (Dinçer & Demir 2020, Section 2, support 2h) is taken with h = ds in the cable's own
 1-D coordinate, the unstretched arc length ``s`` (total-Lagrangian SPH), so every SPH
-sum runs over a particle's two neighbours. Why each choice (all measured on seed 000
+sum runs over a particle's two neighbours. Why each choice (all measured on Dinçer & Demir 2020,
 Case 1 and Experiment 2 while building this):
 
-- Kernel on the current straight-line distance (as the seed does): the pair force grows
+- Kernel on the current straight-line distance (as the paper does): the pair force grows
   as neighbours approach in tension (|W'| peaks at q = 2/3), the SPH tensile
   instability; a hanging cable blew up at ~10/s. Across a bend the chord also shortens
   without stretch (2 % across the 0.4 rad kink of Case 1, ten times the real strain),
   which the continuity equation reads as compression.
 - Wider supports (h > ds) smear a point-load kink over 2h: the corner is cut by
-  ~theta·h/8, 0.05-0.1 m at the seed's 312 particles, against a 0.028 m tolerance.
+  ~theta·h/8, 0.05-0.1 m at the paper's 312 particles, against a 0.028 m tolerance.
 
 * Continuity, Eq. 1-4 (particles). In 1-D the velocity divergence is d ln(l)/dt of the
   neighbouring segments; Eq. 4's renormalisation (a 2x2/3x3 matrix as printed, singular
@@ -65,14 +65,14 @@ Case 1 and Experiment 2 while building this):
   the cable (it vanishes for a cable swinging as a whole, which Fig. 15 damps) and
   ``omega`` must be in 1/s for the units to close. Section 4 states the intent: Rayleigh
   damping proportional to mass, "mass times velocity". Implemented as that:
-  ``f_a = -omega m_a v_a`` with ``omega`` [1/s] (default 0.04, the seed's 0.03-0.05). It
+  ``f_a = -omega m_a v_a`` with ``omega`` [1/s] (default 0.04, the paper's 0.03-0.05). It
   leaves every equilibrium unchanged, so a larger ``omega`` is a legitimate way to settle
   a static case (each underdamped mode decays at omega/2).
 * Time stepping: leap-frog in kick-drift form (velocities staggered half a step; the
   whole sub-cycling loop runs in compiled code, :func:`moorings.sph_cable_kernels.advance`)
   with the step of :meth:`SPHCable.step_limit` (``dt_limit`` names what set it):
 
-  - ``courant``: ``cfl * min(segment) / (c0 + max speed)`` (000 Section 2's CFL).
+  - ``courant``: ``cfl * min(segment) / (c0 + max speed)`` (Dinçer & Demir 2020, Section 2's CFL).
   - ``viscosity``, ``mass_damping``, ``drag``: the highest axial mode of the taut chain
     (neighbours in antiphase, ``omega_hm = 2 c0 / ds``) with every explicit damping rate
     on it, ``gamma = gamma_visc + omega + gamma_drag``, taken in the kick at v^n. For
@@ -105,7 +105,7 @@ Usage::
 
     from moorings.sph_cable import SPHCable, SPHCableMooring
     c = SPHCable(312.73, 313, 7.184e7, 4.703, (0, 0), (304.8, 0), weight_per_length=46.12,
-                 omega=2.5, nodes_at=(125.88,))          # seed 000 Case 1
+                 omega=2.5, nodes_at=(125.88,))          # Dinçer & Demir 2020, Case 1
     c.advance(0.0, 30.0)                                 # one call, compiled sub-steps
     c.add_point_load(125.88, (0.0, -35586.0)); c.advance(30.0, 30.0)
     c.position_at(125.88), c.end_forces(), c.tension
@@ -222,7 +222,7 @@ class _Load:
 
 
 class SPHCable:
-    """One cable of SPH particles between two ends (000_7d114ab96e048b26.txt Eq. 1-12).
+    """One cable of SPH particles between two ends (Dinçer & Demir 2020, Eq. 1-12).
 
     Parameters
     ----------
@@ -241,9 +241,9 @@ class SPHCable:
     cfl : Courant number on the axial wave speed sqrt(EA/mass_per_length) [-]; the step
         also obeys the damping and diffusion bounds of :meth:`step_limit` (module docstring).
     safety : factor [-] on the damping and diffusion bounds of :meth:`step_limit` (0.8).
-    omega : mass-proportional damping rate of 000 Eq. 12 [1/s].
-    visc_alpha, visc_beta : artificial viscosity coefficients varphi, phi of 000 Eq. 10 [-].
-    delta : δ-SPH diffusion coefficient of 000 Eq. 1 [-] (0.1 in the seed; 0 by default,
+    omega : mass-proportional damping rate of Dinçer & Demir 2020, Eq. 12 [1/s].
+    visc_alpha, visc_beta : artificial viscosity coefficients varphi, phi of Dinçer & Demir 2020, Eq. 10 [-].
+    delta : δ-SPH diffusion coefficient of Dinçer & Demir 2020, Eq. 1 [-] (0.1 in the paper; 0 by default,
         see the module docstring: in a solid it makes the cable creep).
     max_strain : largest strain the cable takes elastically [-]; supports farther apart
         than ``length * (1 + max_strain)`` are rejected.
@@ -331,7 +331,7 @@ class SPHCable:
         n = self.n = self.s.size
         ds = np.diff(self.s)
         self.ds = np.ascontiguousarray(ds)
-        # renormalised (000 Eq. 4) neighbour weights: the half-segment shares, mirrored ends
+        # renormalised (Dinçer & Demir 2020, Eq. 4) neighbour weights: the half-segment shares, mirrored ends
         self._wl = np.zeros(n)
         self._wr = np.zeros(n)
         self._wl[1:-1] = ds[:-1] / (ds[:-1] + ds[1:])
@@ -461,7 +461,7 @@ class SPHCable:
 
     def add_point_mass(self, s, mass, t_on=None, t_off=None) -> int:
         """Attach a point mass [kg] (its inertia and its weight mass·gravity) at ``s`` [m],
-        from ``t_on`` to ``t_off`` [s] as for :meth:`add_point_load` (seed 000 Case 2
+        from ``t_on`` to ``t_off`` [s] as for :meth:`add_point_load` (Dinçer & Demir 2020, Case 2
         removes one at a given time)."""
         mass = float(mass)
         if not (math.isfinite(mass) and mass > 0):
