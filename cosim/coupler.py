@@ -138,7 +138,7 @@ class Coupler:
         from saved states until the force the bodies were given is the mean force the
         lines exerted over the step (:meth:`_advance_with_dynamic_lines`; the step count
         in :attr:`line_iterations`). ``"explicit"``: the lines' force at the step's start
-        is held over it, one advance of each line per step; on seed 004's chain it holds a
+        is held over it, one advance of each line per step; on Barreiro et al. 2016's chain it holds a
         limit cycle at the step the coupler derives (``benchmarks/line_step_sweep.py``).
         Whatever the choice, quasi-static laws (catenary, FMU) are taken as ``scheme`` says.
     """
@@ -366,7 +366,7 @@ class Coupler:
         if lim is not None and limiter == lim.mooring and n > 0:
             # the lines' step: evened out towards the end time rather than leaving a sliver of a
             # step before it (a dynamic line driven a step ahead, as MoorDyn's fairlead is
-            # extrapolated, jumps when the step changes: on seed 004's chain the slivers before
+            # extrapolated, jumps when the step changes: on Barreiro et al. 2016's chain the slivers before
             # each output time drove the base's roll)
             k = -(-ticks_left // n)
             n = -(-ticks_left // k)
@@ -668,8 +668,8 @@ class Coupler:
         return [j for j in range(len(self.moorings)) if j not in dynamic]
 
     #: dynamic lines' sub-iterations: relative tolerance on the lines' mean fairlead forces over a
-    #: step [-] (of the largest of them, at least 1 N); what is left of it moves the bodies (seed
-    #: 004's base at rest: 1e-4 leaves 1e-5 rad/s, 1e-5 1-2e-6 and 1e-6 3-7e-7, the last as the
+    #: step [-] (of the largest of them, at least 1 N); what is left of it moves the bodies (Barreiro
+    #: et al. 2016's base at rest: 1e-4 leaves 1e-5 rad/s, 1e-5 1-2e-6 and 1e-6 3-7e-7, the last as the
     #: waves alone move it, in 1.7, 1.7 and 1.7-2.4 advances of the lines a step) ...
     LINES_TOL = 1e-5
     #: ... reached within this many advances of the lines, or the run stops

@@ -34,7 +34,7 @@ mapped through each fairlead site's Jacobian, ``K = sum J^T k J``):
   undamped line is slow and the fluid's damping holds it.
 - ``dashpot``: ``dt < 2 / lambda_max``, ``lambda_max`` the largest eigenvalue of
   ``C v = lambda M v``: a dynamic line's axial impedance held over the step overshoots
-  (the bound ``2 M / c`` above). For seed 004's chain (EA = 1.9e9 N, 442 kg/m) on the
+  (the bound ``2 M / c`` above). For Barreiro et al. 2016's chain (EA = 1.9e9 N, 442 kg/m) on the
   wind-turbine base this is the one that limits: the impedance of the three lines makes
   the base's roll and pitch overdamped (``zeta ~ 1``).
 - The bound ``dt < 2 c / k`` (a lightly damped line) is not applied: the lines damp the

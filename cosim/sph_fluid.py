@@ -6,9 +6,9 @@ enough layers to fill the kernel support), placed from the body's pose, and
 assembled with the fluid and its walls (fluid inside a body, found from its
 geoms, is removed and counted). Each body is one ``BODY`` group of the fluid. Every
 exchange places the group from the body's pose (rigid transform of body
-coordinates: no drift) with velocities ``V + Ω × r`` (seed 004 Eq. 13), and the
+coordinates: no drift) with velocities ``V + Ω × r`` (Barreiro et al. 2016, Eq. 13), and the
 loads on a body are the sum over its particles of the force the fluid exerts on
-them, about its centre of mass (seed 004 Eq. 9-12). An elastic plate (``elastic=``,
+them, about its centre of mass (Barreiro et al. 2016, Eq. 9-12). An elastic plate (``elastic=``,
 :mod:`bodies.elastic`) is laid over whole instead: each of its particles blends the
 poses of the two links nearest it and is its own group, and its exchanged impulse is
 split between those links with the same weights.
@@ -73,7 +73,7 @@ class SPHFluid:
         How the bodies' boundary particles get their density: ``"mdbc"`` (default;
         modified dynamic boundaries, ``fluid.boundary_correction``: the fluid rests
         against the geometric surface, so a body displaces its own volume) or
-        ``"dbc"`` (plain dynamic boundaries, seed 004 §2.6: the fluid stands off by
+        ``"dbc"`` (plain dynamic boundaries, Barreiro et al. 2016, §2.6: the fluid stands off by
         a gap of order h and a floating body rides high by a fraction of dx).
         The tank walls follow ``config.walls`` (``fluid.solver.FluidConfig``).
     motions:

@@ -10,7 +10,7 @@ that become one HDF5 series, one CSV and one plot each:
   frame (under base motion: the deflection a transducer on the tank reads, the clamp
   fixed), and under base motion the displacement of its clamp from the start in the
   world, ``plate.clamp_x``, ``plate.clamp_z``: the tank's;
-- ``line_states``: per line, its state (seed 004 Fig. 5: 0 resting, 1 partly lifted, 2
+- ``line_states``: per line, its state (Barreiro et al. 2016, Fig. 5: 0 resting, 1 partly lifted, 2
   fully lifted, 3 taut; :class:`moorings.catenary.LineState`), from every model that
   reports them (:mod:`moorings.line_events`: the catenary, the catenary FMU, the SPH cable,
   MoorDyn);
@@ -186,7 +186,7 @@ def groups(scene, built) -> list[Group]:
         cols = ([f"{n}.tension" for n in lines] + ([f"{n}.anchor_tension" for n in lines] if anchors else [])
                 + ([f"{n}.tether" for n in lines] if tethered else []))
         out.append(Group("tensions", cols, ["N"] * len(cols), tensions))
-    if m is not None and p.tensions and getattr(m, "state_log", None) is not None:  # seed 004 Fig. 5
+    if m is not None and p.tensions and getattr(m, "state_log", None) is not None:  # Barreiro et al. 2016, Fig. 5
         out.append(Group("line_states", [f"{n}.state" for n in built.line_names], ["-"] * len(built.line_names),
                          lambda: np.asarray(m.line_states(), float), categories=_state_names()))
     sph = built.sph

@@ -13,7 +13,7 @@ A scene is made of
 - a domain for the SPH fluid: :class:`Tank` (filled to a depth, or holding water blocks),
   :class:`Flume` (2-D or 3-D, with a :class:`Beach`; the analytic fluid takes a flume's
   depth and wavemaker too), :class:`InclinedTank`, :class:`CylinderTank`
-  (3-D), :class:`PolygonTank` (2-D), :class:`ArchRib` (2-D, seed 003); wall layers
+  (3-D), :class:`PolygonTank` (2-D), :class:`ArchRib` (2-D, Wang et al. 2022); wall layers
   follow from the kernel;
 - excitations: ``waves`` (:class:`Piston`, :class:`Flap`, :class:`PaddleRecord`: a flume's
   wavemaker; :class:`LinearWaves`, :class:`RegularWaves`, :class:`IrregularWaves`: the
@@ -265,7 +265,7 @@ class _Filled:
 
 @dataclass(frozen=True)
 class InclinedTank(_Filled, Spec):
-    """A tank whose right side leans outwards ``angle`` [deg] from the vertical (seed 001
+    """A tank whose right side leans outwards ``angle`` [deg] from the vertical (Sunara et al. 2021,
     §3.2), bottom ``length`` long; 3-D: ``width`` along y."""
 
     TAG = ("kind", "inclined-tank")
@@ -280,7 +280,7 @@ class InclinedTank(_Filled, Spec):
 
 @dataclass(frozen=True)
 class CylinderTank(_Filled, Spec):
-    """A vertical cylindrical tank (3-D, seed 001 §3.3), axis along z through the origin."""
+    """A vertical cylindrical tank (3-D, Sunara et al. 2021, §3.3), axis along z through the origin."""
 
     TAG = ("kind", "cylinder-tank")
     kind: str = tag("cylinder-tank")
@@ -315,7 +315,7 @@ class PolygonTank(Spec):
 
 @dataclass(frozen=True)
 class ArchRib(PolygonTank):
-    """The water inside a hollow catenary arch rib, 2-D (seed 003_7c74773681ee080c.txt §4):
+    """The water inside a hollow catenary arch rib, 2-D (Wang et al. 2022, §4):
     the cavity of ``fluid.shapes.arch_rib_cavity`` (the catenary axis ``z = rise - rise /
     (m - 1) (cosh(k xi) - 1)``, ``xi = 2 x / span``, ``k = arccosh m``, offset by
     ``inner_height`` / 2 on both sides), springings at x = -span/2 and +span/2, z = 0,
@@ -335,7 +335,7 @@ class ArchRib(PolygonTank):
     m: float = num(2.24, "arch-axis coefficient (1: a parabola; the paper does not give it)", lo=1)
     inner_height: float = num(1.458, "the cavity's inner height across the axis (the box section's, inside)", "m",
                               lo=0, lo_open=True)
-    level: float = num(15.56, "still-water level in both legs, above the springings (003's design level)", "m")
+    level: float = num(15.56, "still-water level in both legs, above the springings (Wang et al. 2022's design level)", "m")
 
     def validate(self):
         from cosim.errors import InputError
@@ -363,7 +363,7 @@ class ArchRib(PolygonTank):
 
 
 def arch_rib_monitors(rib: ArchRib, size: float, heights=None) -> tuple:
-    """The wall-pressure patches B1-B18 of 003 §4.1 on an :class:`ArchRib`, ``size`` [m]
+    """The wall-pressure patches B1-B18 of Wang et al. 2022, §4.1 on an :class:`ArchRib`, ``size`` [m]
     long. The paper places them only in its Figure 6 ("B1 to B9 on the right side of the
     arch rib, B10 to B18 on the left side, symmetrical about the y-axis", at different
     depths, on the upper and lower surfaces); our choice: Bk (k = 1..9) on the right leg
@@ -550,7 +550,7 @@ WAVES = (Piston, Flap, PaddleRecord, LinearWaves, RegularWaves, IrregularWaves)
 @dataclass(frozen=True)
 class Shake(Spec):
     """Harmonic base motion of the tank along ``direction``: give ``amplitude`` [m] or the
-    peak ``acceleration`` [m/s^2] (the ground acceleration a0 sin(2 pi t / T) of seed 001
+    peak ``acceleration`` [m/s^2] (the ground acceleration a0 sin(2 pi t / T) of Sunara et al. 2021,
     §3.1, started from rest), ramped in over ``ramp`` [s], stopped smoothly at ``stop``."""
 
     TAG = ("kind", "harmonic")
@@ -625,7 +625,7 @@ class Record(Spec):
 @dataclass(frozen=True)
 class GroundMotion(Spec):
     """Base motion from several earthquake records at once, each along its own direction
-    (horizontal and vertical: seed 003 §4.2's "El Centro NS + vertical"; three in 3-D):
+    (horizontal and vertical: Wang et al. 2022, §4.2's "El Centro NS + vertical"; three in 3-D):
     the tank translates by the sum of the components' displacements, each read by
     ``fluid.motion.read_at2``, baseline-corrected and integrated exactly, all starting at
     t = 0. The records' times must cover ``world.duration`` unless ``hold`` lets the tank
@@ -832,7 +832,7 @@ class Line(Spec):
 @dataclass(frozen=True)
 class Moorings(Spec):
     """The mooring lines and the one field that picks their model: ``"catenary"``
-    (quasi-static, seed 004 §3), ``"sph-cable"`` (seed 000), ``"moordyn"`` or ``"fmu"``
+    (quasi-static, Barreiro et al. 2016, §3), ``"sph-cable"`` (Dinçer & Demir 2020), ``"moordyn"`` or ``"fmu"``
     (the catenary exported as an FMU and run through FMPy). A line with a ``break_load``
     is watched: the time, line and tension at which its fairlead tension first passes it
     go into the log and ``summary.json`` (``line_breaks``)."""

@@ -1,4 +1,4 @@
-"""The water inside the hollow arch rib of seed 003 (003_7c74773681ee080c.txt §4) under
+"""The water inside the hollow arch rib of Wang et al. 2022 (§4) under
 the 1940 El Centro records: the spike frequencies of the wall pressures (Table 3), their
 phase between the legs (Figures 13-14), as a scene (:class:`cosim.scene.ArchRib`).
 
@@ -52,9 +52,9 @@ from cosim import refdata
 from cosim.errors import InputError
 from cosim.validation import case
 
-SPAN, RISE, LEVEL = 140.0, 23.333, 15.56  # m, 003 §4
+SPAN, RISE, LEVEL = 140.0, 23.333, 15.56  # m, Wang et al. 2022, §4
 C0_PAPER = math.sqrt(7 * 2.8e6 / 1000.0)  # m/s: the paper's B = 2.8e6 Pa, gamma = 7, rho0 = 1000 kg/m^3
-F1_TABLE3 = 1.125  # Hz, 003 Table 3 (all six cases)
+F1_TABLE3 = 1.125  # Hz, Wang et al. 2022, Table 3 (all six cases)
 GAUGE_BELOW = 0.4  # m: the gauges' axis point under the still level (rib_scene)
 F_MIN = 0.3  # Hz: below it the spectrum holds the record's drift, not a spike
 PULSE_PERIOD = 1.0  # s: the vertical pulse that rings the water's symmetric mode (ring_rib)
@@ -107,7 +107,7 @@ def quarter_wave(c0: float, level: float = LEVEL, n: int = 1, m: float = 2.24) -
 def stratified_quarter_wave(c0: float, level: float = LEVEL, gamma: float = 7.0, g: float = 9.81,
                             m: float = 2.24, n: int = 1) -> float:
     """The n-th acoustic mode [Hz] of a leg's water column with the sound speed of the
-    model's water at rest: the Tait equation (004_1657bd4a51d29840.txt Eq. 8, B = rho0
+    model's water at rest: the Tait equation (Barreiro et al. 2016, Eq. 8, B = rho0
     c0^2 / gamma) under its own hydrostatic pressure gives, at a depth d under the level,
 
         c(d)^2 = c0^2 + (gamma - 1) g d
@@ -411,12 +411,12 @@ def _ringing(t: np.ndarray, p: np.ndarray, stop: float) -> dict:
 
 
 def bridge_mode_lines() -> dict:
-    """The bridge's 2nd and 4th modes (003 Table 2: 0.94 and 1.66 Hz, the vertical
+    """The bridge's 2nd and 4th modes (Wang et al. 2022, Table 2: 0.94 and 1.66 Hz, the vertical
     antisymmetric and symmetric bending the paper compares the first spike with) as
     vertical lines for a spectrum plot normalised to 1."""
     modes = {int(r["order"]): float(r["frequency_Hz"]) for r in paper_table("table2_bridge_modes.csv")}
     fs = [modes[2], modes[4]]
-    return {f"003 Table 2, the bridge's 2nd and 4th modes ({fs[0]:.2f}, {fs[1]:.2f} Hz)":
+    return {f"Wang et al. 2022, Table 2, the bridge's 2nd and 4th modes ({fs[0]:.2f}, {fs[1]:.2f} Hz)":
             {"x": np.repeat(fs, 3), "y": np.tile([0.0, 1.0, np.nan], 2), "style": "r:"}}
 
 
@@ -432,7 +432,7 @@ def _series(runs: dict) -> dict:
                 curves[f"ours, El Centro {label}, {what}"] = {"x": f, "y": a / a[f > F_MIN].max(), "style": "-"}
     row = {r["case"]: r for r in paper_table("table3_spikes.csv")}["El Centro EW"]
     fs = [float(row[f"spike{n}_Hz"]) for n in range(1, 5)]
-    curves["003 Table 3, El Centro EW spikes"] = {"x": np.repeat(fs, 3), "y": np.tile([0.0, 1.0, np.nan], 4),
+    curves["Wang et al. 2022, Table 3, El Centro EW spikes"] = {"x": np.repeat(fs, 3), "y": np.tile([0.0, 1.0, np.nan], 4),
                                                   "style": "k--"}
     curves.update(bridge_mode_lines())
     return {"wall-pressure spectrum": {"xlabel": "f [Hz]", "ylabel": "amplitude / its largest above 0.3 Hz [-]",
@@ -473,7 +473,7 @@ RATIO_TOL = 0.15
 QUICK_STOP, QUICK_DURATION = 4.0, 7.0  # s: the quick variant's record stops, its run ends
 
 
-@case("arch-rib", "Water inside the hollow catenary arch rib of seed 003 §4 under El Centro 1940 (EW, vertical): "
+@case("arch-rib", "Water inside the hollow catenary arch rib of Wang et al. 2022, §4 under El Centro 1940 (EW, vertical): "
       "the spike frequencies of the wall pressures at B1-B18 against Table 3, the legs' phase against Figures 13-14",
       target=ARCH_RIB_TARGET,
       quick=f"dx = 0.3 m (5 particles across the cavity), c0 = 140 m/s, settled 1.5 s, El Centro EW stopped at "

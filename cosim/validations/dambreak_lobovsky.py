@@ -1,7 +1,7 @@
-"""Validation case ``dambreak-lobovsky`` (issue 17; seed 002 Appendix A,
-002_1507eb345a9709e6.txt, Figures A1-A2): the 2-D dam break of Lobovsky et al. (2014),
+"""Validation case ``dambreak-lobovsky`` (issue 17; Yang & Li 2020, Appendix A,
+Yang & Li 2020, Figures A1-A2): the 2-D dam break of Lobovsky et al. (2014),
 H = 0.3 m, water levels at the gauges H1-H4 against the measured ones (refdata
-``dambreak_lobovsky2014``, SOURCE.txt), plotted as the seed plots them: h/H against
+``dambreak_lobovsky2014``, SOURCE.txt), plotted as Yang & Li 2020 plot them: h/H against
 t* = t sqrt(g/H)."""
 
 from __future__ import annotations
@@ -21,7 +21,7 @@ TANK_H = 1.0  #: side-wall height [m]: the run-up at the far wall stays below it
 GAUGES = {"H1": 0.300, "H2": 0.865, "H3": 1.114, "H4": 1.3625}
 
 #: the judged window: t* up to 5, the surge's passage before the bore reflected from the far wall
-#: reaches H4 (t* about 5.5): what seed 002 says its curves "almost overlap" on
+#: reaches H4 (t* about 5.5): what Yang & Li 2020 says its curves "almost overlap" on
 T_JUDGED = 5.0
 #: judged: RMS of (h_ours - h_measured) / H over t* <= T_JUDGED at each gauge, against each run
 TOL_RMS = 0.05
@@ -89,7 +89,7 @@ def sensor_pressures(f, size: float) -> tuple[np.ndarray, np.ndarray]:
     """The pressure [Pa] at the sensors :data:`SENSORS` on the far wall's face x = TANK_L:
     as a flush transducer of length ``size`` [m] reads it (:func:`fluid.probes.wall_patch_pressure`,
     the wall's momentum balance), and the fluid's pressure averaged at the face point
-    (:func:`fluid.probes.pressure_at`, 001_14936b82710365b2.txt Eq. 15)."""
+    (:func:`fluid.probes.pressure_at`, Sunara et al. 2021, Eq. 15)."""
     from fluid.probes import pressure_at, wall_patch_pressure
 
     zs = list(SENSORS.values())
@@ -167,7 +167,7 @@ def run_lobovsky(dx: float, t_star_end: float = 11.0, sample_star: float = 0.05,
     """The dam break (2-D, x-z): a column ``L_COL`` x ``H`` at rest against the left wall
     of a tank ``TANK_L`` long, released at once at t = 0 (the gate's removal is not
     modelled). Fluid: the solver's defaults (Wendland, h = sqrt(2) dx, alpha = 0.01,
-    Fourtakas delta = 0.1, CFL 0.2, dynamic boundaries), c0 = 10 sqrt(2 g H) (seed 002 Eq.
+    Fourtakas delta = 0.1, CFL 0.2, dynamic boundaries), c0 = 10 sqrt(2 g H) (Yang & Li 2020, Eq.
     6's rule); the column starts hydrostatic. The level at each gauge (``h``) is the top of
     the water standing on the floor there (:func:`layer_level`); ``h_top`` is the highest
     free surface on the gauge's line (:func:`fluid.probes.surface_elevation`: the highest z
@@ -271,7 +271,7 @@ def compare(t_star, h: dict, t_end: float) -> dict:
 
 
 def series_plot(t_star, h: dict, h_top: dict | None = None) -> dict:
-    """The report's plots, seed 002 Figure A2 (a)-(d): h/H against t* at H1-H4, ours (the
+    """The report's plots, Yang & Li 2020, Figure A2 (a)-(d): h/H against t* at H1-H4, ours (the
     standing layer, and where given the highest surface) against each measured run."""
     out = {}
     for name, runs in measured().items():
@@ -301,14 +301,14 @@ def pressure_plot(t_star, p: dict, p_point: dict | None = None) -> dict:
     return out
 
 
-LOBOVSKY_TARGET = (f"water level h/H at the gauges H1-H4 against Lobovsky et al. 2014's measured runs, as seed 002 "
+LOBOVSKY_TARGET = (f"water level h/H at the gauges H1-H4 against Lobovsky et al. 2014's measured runs, as Yang & Li 2020 "
                    f"Figure A2 plots them: over t* = t sqrt(g/H) <= {T_JUDGED:g} (the surge, before the reflected "
                    f"bore) the RMS difference within {TOL_RMS:g} at each gauge against each run, and the surge's "
                    f"arrival (h/H >= {ARRIVAL_LEVEL:g}) at H2-H4 within {TOL_ARRIVAL:g} in t* of the measured one; the "
                    f"reflected bore (t* > {T_JUDGED:g}) reported with the runs' own spread")
 
 
-@case("dambreak-lobovsky", "2-D dam break of Lobovsky et al. 2014, H = 0.3 m (seed 002 Appendix A, Figure A2): "
+@case("dambreak-lobovsky", "2-D dam break of Lobovsky et al. 2014, H = 0.3 m (Yang & Li 2020, Appendix A, Figure A2): "
       "water levels at the gauges H1-H4 against the measured runs", target=LOBOVSKY_TARGET,
       quick=f"dx = H/20 = 15 mm, t* <= {T_JUDGED:g}: the surge's arrival at H2-H4 within {TOL_ARRIVAL:g} in t*, "
             f"and the RMS difference within {TOL_RMS_QUICK:g} (the full variant's {TOL_RMS:g} at H/60: at H/20 the "

@@ -70,7 +70,7 @@ def run_elastic_gate(dx: float, t_end: float = 0.4, n_elements: int = 16, sample
     flows out under it onto a floor ``TANK_L`` long.
 
     Fluid: the solver's defaults (Wendland, h = sqrt(2) dx, alpha = 0.01, Fourtakas delta =
-    0.1, CFL 0.2), c0 = 10 sqrt(2 g COL_H) (seed 002 Eq. 6's rule), tank and upper wall
+    0.1, CFL 0.2), c0 = 10 sqrt(2 g COL_H) (Yang & Li 2020, Eq. 6's rule), tank and upper wall
     plain dynamic boundaries, the gate's particles mDBC; the column starts hydrostatic.
     Gate: the MuJoCo chain of :mod:`bodies.elastic` hanging from its clamp
     (``direction="down"``), ``n_elements`` Timoshenko elements, RK4, no damping (``beta``

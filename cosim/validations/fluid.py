@@ -25,7 +25,7 @@ def run_hydrostatic(dim: int, dx: float, t_end: float, depth: float = 0.2, lengt
     alpha = 0.01, Fourtakas diffusion delta = 0.1, CFL 0.2 (the defaults).
 
     Wall pressure: on the first layer of the side walls, beside the water, the average of
-    the fluid pressures near each wall particle (001_14936b82710365b2.txt Eq. 15), against
+    the fluid pressures near each wall particle (Sunara et al. 2021, Eq. 15), against
     the same reference at the wall particle's height. Reported, not yet part of the pass
     criterion: it is 1.3 % RMS at dx = 0.01 m and 3.6 % at 0.02 m (first order in dx),
     because near the free surface and the bottom corner the fluid neighbours lie on one
@@ -80,7 +80,7 @@ def run_hydrostatic(dim: int, dx: float, t_end: float, depth: float = 0.2, lengt
         raise ValueError(f"t_end={t_end} s is shorter than the sloshing period {T1:.3f} s")
     n_fl = int((ps.kind == Kind.FLUID).sum())
     acc = np.zeros(n_fl)
-    # first layer of the side walls, beside the water: the wall pressure of 001 Eq. 15
+    # first layer of the side walls, beside the water: the wall pressure of Sunara et al. 2021, Eq. 15
     x = ps.pos[:, 0]
     side = (ps.kind != Kind.FLUID) & (np.isclose(x, -0.5 * dx) | np.isclose(x, length + 0.5 * dx)) \
         & (ps.pos[:, -1] > 0) & (ps.pos[:, -1] < H)

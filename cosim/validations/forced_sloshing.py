@@ -1,5 +1,5 @@
 """Linear (potential-flow) sloshing of a rigid tank under horizontal base acceleration: the
-reference of the long-period cases of seed 001 (001_14936b82710365b2.txt §3.1-3.3, T_p =
+reference of the long-period cases of Sunara et al. 2021 (§3.1-3.3, T_p =
 1.0 s and 0.7 s), where the paper shows pressures but no numbers.
 
 Set-up. A tank of depth ``h`` [m] (still surface z = 0, bottom z = -h) moves along x with
@@ -32,12 +32,12 @@ Tanks (refdata analytic_hydrodynamics/SOURCE.txt, C):
   not excited by a horizontal motion).
 - vertical cylinder, radius R, polar angle theta from +x: S_n = J1(k_n r) cos(theta),
   k_n = xi_n / R with J1'(xi_n) = 0, b_n = 2 R / ((xi_n^2 - 1) J1(xi_n)) (the Dini series of r).
-- 2-D tank with its right side inclined beta from the vertical (001 §3.2): no closed form;
+- 2-D tank with its right side inclined beta from the vertical (Sunara et al. 2021, §3.2): no closed form;
   the modes psi_n of :func:`cosim.validations.tank_potential.sloshing_modes` (P1 FEM),
   b_n = S_n^T M_s x (M_s the surface's mass matrix, S_n^T M_s S_n = 1), x measured from
   the middle of the still surface; psi_n is no longer a product of S_n and a depth factor.
 
-The excitation here is the paper's, a0 sin(w t) from rest (001 Fig. 3), held for
+The excitation here is the paper's, a0 sin(w t) from rest (Sunara et al. 2021, Fig. 3), held for
 ``t_stop`` [s] and zero after it: eta_n in closed form, then free oscillation. No damping:
 linear inviscid theory.
 """

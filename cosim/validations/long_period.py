@@ -1,4 +1,4 @@
-"""The long-period excitations of seed 001 (001_14936b82710365b2.txt §3.1 Fig. 7-8, §3.3
+"""The long-period excitations of Sunara et al. 2021 (§3.1 Fig. 7-8, §3.3
 Fig. 18, §3.2 Fig. 13): the rectangular tank (3.0 m long, 1.0 m wide, water 1.0 m) and the
 same tank with its right side 45 deg from the vertical at T_p = 1.0 s, and the cylinder
 (D = 2 m, water 0.6 m) at T_p = 0.7 s, base acceleration 0.5 g sin(2 pi t / T_p)
@@ -174,7 +174,7 @@ def run_long_period(shape: str = "rectangular", dx: float = 0.05, dim: int = 2, 
     water is not at rest against the slope, none for the others).
 
     c0 [m/s]: 40 m/s puts the acoustic period 4 h / c0 (0.1 s at h = 1 m) at a tenth of
-    T_p, as the paper's c_p does for its short periods (001 Eq. 17; the compressible excess
+    T_p, as the paper's c_p does for its short periods (Sunara et al. 2021, Eq. 17; the compressible excess
     of the impulsive pressure is then 1 / sqrt(1 - (4 h / (c0 T_p))^2) - 1 = 0.5 %), and is
     ~30 times the largest sloshing speed. The rest of the fluid's set-up is the scenes'
     "sloshing" one (:func:`cosim.scene.setup.settings`: h = 2 dx and walls carrying the
@@ -185,7 +185,7 @@ def run_long_period(shape: str = "rectangular", dx: float = 0.05, dim: int = 2, 
     points on the tank's centre line along x, 2 h from the walls; the run-up at each wall
     (the top of the fluid within one dx of the wall, + dx/2, the median over the columns
     along the wall); the total pressure at points on each wall's face every dx up to the
-    still level (:func:`cosim.validations.sloshing.face_pressure`, 001 Eq. 15 carried to
+    still level (:func:`cosim.validations.sloshing.face_pressure`, Sunara et al. 2021, Eq. 15 carried to
     the face). Each against linear theory at the same points. The first mode's amplitude
     is the least-squares fit of the gauges to the first modes (:func:`gauge_mode_basis`); its
     free frequency (:func:`free_frequency`) over the free sloshing. Returned: the metrics,
@@ -359,7 +359,7 @@ def _compare(rec: dict, modes, shape: str, tank: dict, a0: float, period: float,
 LINEAR_TOLERANCES = {"gauge_rms_rel_forced": 0.10, "omega1_free_rel_err": 0.02, "wall_pressure_rms_rel": 0.03}
 #: the quick variant (dx = 0.1 m, 10 rows over the depth): first-order errors of ~dx / h
 QUICK_TOLERANCES = {"gauge_rms_rel_forced": 0.15, "omega1_free_rel_err": 0.03, "wall_pressure_rms_rel": 0.04}
-#: the target column of docs/VALIDATION.md's row (001 gives figures, no numbers: ours)
+#: the target column of docs/VALIDATION.md's row (Sunara et al. 2021 give figures, no numbers: ours)
 LONG_PERIOD_TARGET = ("at 0.05 g, each tank: the surface at 25 gauges within 10 % RMS of the linear peak while "
                       "forced, the first mode's free frequency within 2 % of linear theory, the total wall "
                       "pressure within 3 % RMS of rho g h; at 0.5 g reported")
@@ -369,7 +369,7 @@ PAPER_A0 = 0.5 * G
 
 def long_period_plots(runs: dict) -> dict:
     """The report's plots: per tank, the run-up at the left wall and the first mode's
-    amplitude against linear theory in both regimes, and the paper's figure (001 Fig. 7,
+    amplitude against linear theory in both regimes, and the paper's figure (Sunara et al. 2021, Fig. 7,
     13, 18): the total pressure up both walls at times of the first period at 0.5 g."""
     out = {}
     for tank, regimes in runs.items():
@@ -390,19 +390,19 @@ def long_period_plots(runs: dict) -> dict:
             for i, (t, p) in enumerate(rec["profiles"].items()):
                 curves[f"t = {t} s, SPH"] = {"x": p[f"{side}_kpa"], "y": z, "style": f"C{i}o"}
                 curves[f"t = {t} s, linear"] = {"x": p[f"{side}_linear_kpa"], "y": z, "style": f"C{i}-"}
-            out[f"{tank}, 0.5 g: total pressure on the {side} wall (001 Fig. 7/13/18)"] = {
+            out[f"{tank}, 0.5 g: total pressure on the {side} wall (Sunara et al. 2021, Fig. 7/13/18)"] = {
                 "xlabel": "total pressure [kPa]", "ylabel": "height above the bottom [m]", "curves": curves}
     return out
 
 
-@case("long-period", "The long periods of seed 001 (rectangular and 45 deg tanks at T_p = 1.0 s, the cylinder at "
+@case("long-period", "The long periods of Sunara et al. 2021 (rectangular and 45 deg tanks at T_p = 1.0 s, the cylinder at "
       "0.7 s): sloshing against linear potential theory (every mode; Housner's first mode beside it), at 0.05 g "
       "where it holds and at the paper's 0.5 g where it does not",
       target=LONG_PERIOD_TARGET,
       quick="the 2-D section of the rectangular tank at dx = 0.1 m (10 rows): 15 %, 3 %, 4 % (first-order errors "
             "of ~dx/h); 0.5 g reported")
 def long_period(quick: bool) -> dict:
-    """001 §3.1 (Fig. 7-8), §3.2 (Fig. 13), §3.3 (Fig. 18): see :func:`run_long_period`.
+    """Sunara et al. 2021, §3.1 (Fig. 7-8), §3.2 (Fig. 13), §3.3 (Fig. 18): see :func:`run_long_period`.
     Three periods of forcing, three first-mode periods free. Full: the 2-D sections of the
     rectangular and the 45 deg tank at dx = 0.05 m, the whole 3-D rectangular tank at
     dx = 1/13 m (13 rows: dx divides the depth and length) and the cylinder at dx = 0.06 m

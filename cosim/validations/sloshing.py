@@ -38,7 +38,7 @@ def westergaard_series(depth, H: float, length: float = math.inf, c: float = mat
     Westergaard's exact series ``(8/pi^2) sum_{m odd} sin(m pi y / 2H) / m^2`` (base value
     0.74245, refdata/analytic_hydrodynamics/SOURCE.txt A); the compressible factor
     ``1/sqrt(1 - (4H / (c T))^2 / (2n-1)^2)`` is the ``c_n`` of the same file. Valid while
-    ``T > 4H/c`` (001_14936b82710365b2.txt Eq. 17: the first acoustic period of the column).
+    ``T > 4H/c`` (Sunara et al. 2021, Eq. 17: the first acoustic period of the column).
     """
     y = np.asarray(depth, np.float64)
     z = H - y
@@ -55,7 +55,7 @@ def westergaard_series(depth, H: float, length: float = math.inf, c: float = mat
 
 def westergaard_parabola(depth, H: float) -> np.ndarray:
     """Westergaard's approximation ``k_p = 7/8 sqrt(y/H)``, y the depth below the surface
-    (001_14936b82710365b2.txt Eq. 16/18; Eq. 16 prints ``sqrt(h (h - y))`` with y "the
+    (Sunara et al. 2021, Eq. 16/18; Eq. 16 prints ``sqrt(h (h - y))`` with y "the
     depth from the free surface", which would make it largest at the surface: the
     physical, Westergaard (1933) form is ``sqrt(h y)``, as VALIDATION.md notes)."""
     return 0.875 * np.sqrt(np.asarray(depth, np.float64) / H)
@@ -75,7 +75,7 @@ def _moving_tank(dim: int, dx: float, length: float, depth: float, height: float
 
 def face_pressure(f: Fluid, centres: np.ndarray, faces: np.ndarray, normals, accel, g_vec) -> np.ndarray:
     """Pressure [Pa] at points ``faces`` (m, dim) [m] on a wall face: the
-    001_14936b82710365b2.txt Eq. 15 inverse-distance average over the fluid within 2h of
+    Sunara et al. 2021, Eq. 15 inverse-distance average over the fluid within 2h of
     ``centres`` (m, dim) [m] (a wall particle, or the face point itself), each fluid
     pressure first carried to the face along the unit wall ``normals`` ((dim,) or (m,
     dim), into the water) with the momentum balance at a rigid wall, ``dp/dn = rho (g -
@@ -133,13 +133,13 @@ def _harmonic_fit(t: np.ndarray, y: np.ndarray, omega: float):
 # ------------------------------------------------------------------------------------ westergaard
 #: the stated target of the westergaard row of docs/VALIDATION.md and its tolerances
 WESTERGAARD_TARGET = ("RMS of k_p against the exact solution < 0.04 raw, < 0.02 with the boundary-pressure "
-                      "averaging of 001 Eq. 15 (the paper's own figures against the parabola)")
+                      "averaging of Sunara et al. 2021, Eq. 15 (the paper's own figures against the parabola)")
 WESTERGAARD_STATED = {"rms_raw_vs_exact": 0.04, "rms_avg_vs_exact": 0.02}
 #: what is judged: the second tolerance on Eq. 15's average carried to the wall face
 WESTERGAARD_TOLERANCES = {"rms_raw_vs_exact": 0.04, "rms_face_vs_exact": 0.02}
 WESTERGAARD_DEPARTURE = {
     "criterion": "RMS of k_p against the exact solution < 0.04 raw, < 0.02 with the boundary-pressure averaging of "
-                 "001 Eq. 15 carried to the wall face (face_pressure); plain Eq. 15 reported beside it",
+                 "Sunara et al. 2021, Eq. 15 carried to the wall face (face_pressure); plain Eq. 15 reported beside it",
     "why": "plain Eq. 15 reports the pressure at the mean position of the fluid it averages, about 1.1 dx into the "
            "water, where the impulsive pressure is lower than at the wall by rho a0 x; the rigid wall's normal "
            "momentum balance carries it to the face, where k_p is defined. The paper's own 0.02 is against the 7/8 "
@@ -152,7 +152,7 @@ def westergaard_series_plot(profile: dict) -> dict:
     (raw, Eq. 15, Eq. 15 at the face) against the exact series and the 7/8 parabola."""
     d = profile["depth_m"]
     curves = {"exact incompressible series": {"x": profile["kp_exact"], "y": d},
-              "7/8 parabola (001 Eq. 16)": {"x": profile["kp_parabola"], "y": d, "style": "--"}}
+              "7/8 parabola (Sunara et al. 2021, Eq. 16)": {"x": profile["kp_parabola"], "y": d, "style": "--"}}
     for q, label in (("raw", "raw boundary pressure"), ("avg", "Eq. 15"), ("face", "Eq. 15 at the face")):
         curves[f"SPH (ours), {label}"] = {"x": profile[f"kp_{q}"], "y": d, "style": "o-"}
     return {"wall pressure": {"xlabel": "k_p = p_d / (rho a0 H)", "ylabel": "depth below the surface [m]",
@@ -165,7 +165,7 @@ def run_westergaard(dx: float, c0: float = 1430.0, dim: int = 2, periods_skip: i
                     width: float = 1.0, **overrides) -> dict:
     """Rigid tank ``length`` x ``height`` (x ``width`` in 3-D) [m] with water to ``H`` [m]
     under the horizontal base acceleration ``a0 sin(2 pi t / Tp)`` (a0 [m/s^2], Tp [s]),
-    started from rest (001_14936b82710365b2.txt §3.1: 3.0 m long x 1.0 m wide x 1.5 m
+    started from rest (Sunara et al. 2021, §3.1: 3.0 m long x 1.0 m wide x 1.5 m
     high, water 1.0 m, a0 = 0.5 g, Tp = 0.03 s, dx = 0.05 m, Fig. 5; the paper's 38 170
     particles at dx = 0.05 m are 24 000 fluid ones, 60 x 20 x 20, and its boundary: the
     1.0 m is the width, 1.5 m the height).
@@ -187,7 +187,7 @@ def run_westergaard(dx: float, c0: float = 1430.0, dim: int = 2, periods_skip: i
     should vanish: the impulsive pressure follows the acceleration).
 
     Wall pressures: "raw" is the dynamic boundary particle's own pressure (its EOS
-    pressure); "avg" is 001 Eq. 15 (inverse-distance average of the fluid pressure
+    pressure); "avg" is Sunara et al. 2021, Eq. 15 (inverse-distance average of the fluid pressure
     near the wall particle, :meth:`Fluid.wall_pressure`); "face" is Eq. 15 with each
     fluid pressure carried to the wall face by the wall's momentum balance
     (:func:`face_pressure`).
@@ -307,7 +307,7 @@ def run_westergaard(dx: float, c0: float = 1430.0, dim: int = 2, periods_skip: i
             "value within 6 %, the out-of-phase part below 0.05, the face correction better than plain Eq. 15 "
             "(first-order errors of ~dx/H: the stated 0.04 / 0.02 need dx <= 0.05 m)")
 def westergaard(quick: bool) -> dict:
-    """001_14936b82710365b2.txt §3.1 (Fig. 5): see :func:`run_westergaard` for set-up and
+    """Sunara et al. 2021, §3.1 (Fig. 5): see :func:`run_westergaard` for set-up and
     extraction. c0 = 1430 m/s (the paper's c_p); tank walls carrying the fluid's pressure
     (``walls="adami"``: fluid.wall_density, with the wall acceleration of Adami et al.
     2012 Eq. 27); Wendland, h = sqrt(2) dx, alpha = 0.01, Fourtakas delta = 0.1, CFL 0.2
@@ -370,7 +370,7 @@ def westergaard_3d_series_plot(profile: dict) -> dict:
     return plot
 
 
-@case("westergaard-3d", "the whole 3-D tank of 001 §3.1, 3.0 m long x 1.0 m wide x 1.5 m high, water 1.0 m, "
+@case("westergaard-3d", "the whole 3-D tank of Sunara et al. 2021, §3.1, 3.0 m long x 1.0 m wide x 1.5 m high, water 1.0 m, "
       "base acceleration 0.5 g sin(2 pi t / 0.03 s): wall k_p on the mid-plane and next to the side walls vs the "
       "exact incompressible series, the targets of westergaard (walls='adami', dx 0.05 m; quick: a 0.3 m slice "
       "at dx 0.1 m, default walls, also checked against the 2-D section)", target=WESTERGAARD_TARGET, row="westergaard",
@@ -379,7 +379,7 @@ def westergaard_3d_series_plot(profile: dict) -> dict:
             "correction better than plain Eq. 15, and the 2-D section's profile (same settings) within 0.03 "
             "(Eq. 15) and 0.05 (face) row by row")
 def westergaard_3d(quick: bool) -> dict:
-    """The 3-D tank of 001_14936b82710365b2.txt §3.1 (3.0 m long x 1.0 m wide x 1.5 m high,
+    """The 3-D tank of Sunara et al. 2021, §3.1 (3.0 m long x 1.0 m wide x 1.5 m high,
     water 1.0 m, a0 = 0.5 g, Tp = 0.03 s; the paper's 38 170 particles at dx = 0.05 m fix
     the 1.0 m as the width: 60 x 20 x 20 fluid particles): :func:`run_westergaard` with
     ``dim=3``. k_p is read on the end walls' rows on the tank's mid-plane (y = 0.5 m) and on
@@ -477,7 +477,7 @@ def run_sloshing_frequency(dx: float, L: float = 1.0, h: float = 0.5, amplitude:
     ``cycles_forced`` periods (half-cosine ramps of one period in and out, so the tank
     stops at rest with no jump in velocity), then left still for ``cycles_free`` periods
     (free decay). The first natural frequency is the peak of the FFT (:func:`spectral_peak`)
-    of the wall pressure (001 Eq. 15, :meth:`Fluid.wall_pressure`) on the left wall at
+    of the wall pressure (Sunara et al. 2021, Eq. 15, :meth:`Fluid.wall_pressure`) on the left wall at
     ``sensor_depth`` [m] below the surface, over the free decay only, searched between
     0.5 and 1.5 w1 (the next mode a horizontal motion excites is at 2.3 w1 for h/L = 0.5);
     compared with linear theory ``w1^2 = g (pi/L) tanh(pi h/L)`` (:func:`sloshing_omega`).
@@ -578,7 +578,7 @@ def spheric10_sensor(f: Fluid, roll: Rotation, t: float, kind: str = "patch") ->
     the fluid exerts on the wall over a ``SPHERIC10_SENSOR`` long patch about the sensor's
     centre, divided by its length: what a flush transducer measures, a momentum balance
     in which a half-wet face reads half and a splash particle its push. ``kind="face"``:
-    :func:`face_pressure`, 001 Eq. 15 over 2h carried to the face with the wall's
+    :func:`face_pressure`, Sunara et al. 2021, Eq. 15 over 2h carried to the face with the wall's
     acceleration and fitted along the wall: an average of the fluid's own pressure near
     the point, which reads a thin film or a few splash particles as if they filled the
     support (and extrapolates wildly where only two or three particles are near)."""
@@ -614,7 +614,7 @@ def run_spheric10(dx: float, t_end: float = 8.0, c0: float = 28.0, sample_dt: fl
     tank bottom; pressure on the left wall at the still-water level (z = 0.093 m in the
     tank frame).
 
-    The seed (003_7c74773681ee080c.txt §3) validates its SPH on the same kind of test
+    Wang et al. 2022 (§3) validate their SPH on the same kind of test
     (Brizzolara et al. 2011: a 900 x 508 mm tank rolled +-4 deg about an axis 184 mm above
     the bottom, in a 2-D section); the record we hold is the SPHERIC Test 10 data as
     packaged by DualSPHysics, whose axis is the centre of the bottom (SOURCE.txt), so we
@@ -773,7 +773,7 @@ def sloshing_spheric10(quick: bool) -> dict:
     (:func:`spheric10_sensor`), sampled at 10 kHz (the record: 20 kHz). The roll axis is
     the centre of the tank bottom (SOURCE.txt, DualSPHysics' CaseSloshingHR_Def.xml), which
     the record fits better than the axis 184 mm above the bottom of VALIDATION.md's row and
-    the seed's case (Brizzolara et al.); plain dynamic walls read the first impact lower
+    the case of Wang et al. 2022 (Brizzolara et al.); plain dynamic walls read the first impact lower
     (both measured: docs/validation/sloshing-spheric10_history.md).
 
     The full case (dx = 3.1 mm, h = sqrt(2) dx, 8 s; NUMBA_NUM_THREADS=1, 320 493 steps,
@@ -801,7 +801,7 @@ def sloshing_spheric10(quick: bool) -> dict:
     too much (the second impact's impulse 1.46 against 1.27 on the patch at 3.1 mm).
 
     Why the peaks do not converge. The first impact's impulse stays within 0.88 - 1.05 of
-    the measured one and its 20 ms mean converges in every set-up tried (the seed's, DualSPHysics',
+    the measured one and its 20 ms mean converges in every set-up tried (Wang et al.'s, DualSPHysics',
     h = 2 dx, MLS re-initialisation: the table in the history file), while its peak ranges
     from 0.5 to 6.4 and grows as dx shrinks. At 3.1 mm the peak is a pulse of 13.2 kPa,
     1.5 ms wide at half height (2.3996 s on the patch, 25 ms after the measured front), on a
@@ -810,8 +810,8 @@ def sloshing_spheric10(quick: bool) -> dict:
     meets the wall, sharper as dx shrinks. The measured peak (the record keeps the largest
     sample of every 5 ms of a 20 kHz signal), a 3.7 kPa front followed by 20 ms above
     2.3 kPa, is most likely set by the entrapped air and the real sound speed, which a
-    single-phase model with an artificial c0 does not have (inferred, not tested). The seed
-    reports "good agreement in amplitude" for its own case (Brizzolara et al., axis 184 mm
+    single-phase model with an artificial c0 does not have (inferred, not tested). Wang et al.
+    report "good agreement in amplitude" for its own case (Brizzolara et al., axis 184 mm
     above the bottom) from a figure, without numbers; at its set-up and dx this record's
     first peak reads 6.43.
 
@@ -829,8 +829,8 @@ def sloshing_spheric10(quick: bool) -> dict:
     2.0, r2    250105  3550    5.80 4.13            2.94 1.72            1.27 1.09            0.92 1.21
     =========  ======  ======  ===================  ===================  ===================  ===================
 
-    (10 337 and 10 487 particles at 3.1 mm; the 2 mm run, 23 547 particles, the seed's
-    resolution (003 §3), to 4.4 s: two impacts, lags +0.027, -0.041 s.) At 3.1 mm every
+    (10 337 and 10 487 particles at 3.1 mm; the 2 mm run, 23 547 particles, the paper's
+    resolution (Wang et al. 2022, §3), to 4.4 s: two impacts, lags +0.027, -0.041 s.) At 3.1 mm every
     impact is in phase with either support (lags +0.025, -0.025, -0.028, -0.039 s at sqrt(2)
     dx; +0.022, -0.040, -0.019, -0.045 s at 2 dx), the first impact's impulse and 20 ms mean
     are within 8 %, and the later impulses fall with dx (1.9-2.0 to 1.5; the second impact's

@@ -26,7 +26,7 @@ def moored_equilibrium(width, height, rho_b, spread, length, weight, depth, rho=
     [kg/m^3], 1 m thick) floating in water of ``depth`` [m] (floor z = 0) on two
     symmetric catenary lines from its lower corners to anchors on the floor
     ``spread`` [m] either side of its centre (``length`` [m], submerged ``weight``
-    [N/m]): buoyancy = weight + the lines' vertical pull (seed 004 Eq. 35-39),
+    [N/m]): buoyancy = weight + the lines' vertical pull (Barreiro et al. 2016, Eq. 35-39),
     at no offset and no tilt (symmetry)."""
     from moorings.catenary import solve
 
@@ -85,7 +85,7 @@ def moored_body_sph(quick: bool) -> dict:
     either side. Released 4 cm to +x at its free-floating draft, it oscillates in
     surge (period ~1.1 s, from the lines' stiffness) and heave (~0.4 s), damped
     by the waves it radiates. Reference: the equilibrium of buoyancy, weight and
-    the lines' vertical pull (:func:`moored_equilibrium`, catenary of seed 004
+    the lines' vertical pull (:func:`moored_equilibrium`, catenary of Barreiro et al. 2016,
     Eq. 35-39): 15 mm deeper than free floating. Measured: the mean centre over
     the last second (several heave periods, about one surge period) against it.
 
@@ -393,7 +393,7 @@ def _peaks(t, v, window):
       quick="a smoke run of the whole set-up at dx = 2 cm from 1 to 1.3 s (the packet reaches the box after 6 s): "
             "every value finite, the box within one spacing of its initial position, no particle lost")
 def floating_box_waves(quick: bool) -> dict:
-    """Set-up (seed 004 §4.1; Hadzic, Hennig, Peric & Xing-Kaeding 2005, Appl.
+    """Set-up (Barreiro et al. 2016, §4.1; Hadzic, Hennig, Peric & Xing-Kaeding 2005, Appl.
     Math. Modelling 29:1196-1210; the DualSPHysics case CaseFloatingWavesVal as in
     refdata SOURCE.txt): 2-D flume, still water 0.4 m, flap hinged at the bottom of
     x = 0 driven by the measured angle (the file's sign is away from the water:

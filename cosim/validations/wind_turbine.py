@@ -1,4 +1,4 @@
-"""Seed 004 §5's wind-turbine base (004_1657bd4a51d29840.txt §5, Table 4, Figs. 17-19) on
+"""The wind-turbine base of Barreiro et al. 2016 (§5, Table 4, Figs. 17-19) on
 its three lines in regular waves (H = 0.7 m, T = 20 s), with each mooring model changed in
 the one field ``moorings.model``: the models against each other (issue 18's model
 agreement).
@@ -95,7 +95,7 @@ def run_models(models, duration: float, t0: float, out: Path) -> dict:
                              .run(out / m, progress=False), t0) for m in models}
 
 
-@case("wind-turbine-moorings", "seed 004's wind-turbine base in waves (analytic fluid): every mooring model against "
+@case("wind-turbine-moorings", "Barreiro et al. 2016's wind-turbine base in waves (analytic fluid): every mooring model against "
       "the others",
       target="surge and heave amplitudes and mean fairlead tensions of the mooring models within 10 % of each other "
              "while no line goes taut",
