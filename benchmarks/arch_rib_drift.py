@@ -1,4 +1,4 @@
-"""The state of the water in the arch rib of seed 003 (003_7c74773681ee080c.txt §4) while
+"""The state of the water in the arch rib of Wang et al. 2022 (§4) while
 El Centro EW shakes it, against the frequency read from the free (symmetric) part of the
 wall pressures: does the water change (density, level, particles lost) so that its
 quarter-wave mode f = c / (4 L) falls during the record?
@@ -11,7 +11,7 @@ particle snapshots every ``--every`` s (0.1), then, per snapshot, in the rib's f
 rib translates rigidly: its displacement is the walls' mean displacement):
 
 - ``rho``: the water's mean density; ``dev``: the mean of rho / rho_h - 1 over the water
-  inside the cavity, rho_h the Tait density (004_1657bd4a51d29840.txt Eq. 8) of the
+  inside the cavity, rho_h the Tait density (Barreiro et al. 2016, Eq. 8) of the
   hydrostatic rest state at the particle's height under the still level
   (``fluid.equations.hydrostatic_density``), all and in height bands (0-4, 4-8, 8-12,
   12-14, 14 m up): the water's expansion (< 0) or compression against rest;

@@ -1,4 +1,4 @@
-"""The water in the hollow arch rib of seed 003 (003_7c74773681ee080c.txt §4) under the
+"""The water in the hollow arch rib of Wang et al. 2022 (§4) under the
 1940 El Centro records: a coarse run, and what the paper's spike frequencies are.
 
 ``--predict`` (no run, a second): the quarter-wave acoustic resonance of the water column
@@ -69,7 +69,7 @@ only as far as the deficit shrinks with dx (12.6, 5.9, 4.2, 1.6 %); a run at 0.0
 Centro EW (10 s, the symmetric part's peak; history file) dx = 0.2, 0.15, 0.1 m read
 0.989, 1.046, 1.094 Hz: 0.6 % above, 1.1 % below, 1.5 % above the rung mode.
 
-The depth study of 003 §4.3 (Table 5: the first spike against the water depth, 13-21 m)
+The depth study of Wang et al. 2022, §4.3 (Table 5: the first spike against the water depth, 13-21 m)
 as one command, the mode rung free at each of Table 5's ten levels, at the paper's
 c0 = 140 m/s; printing ours against Table 5, c0/(4L) and the column's continuum mode, with
 each run's CPU time per simulated second and its length (``--levels`` a subset; ``--json
@@ -112,7 +112,7 @@ off the trend of its neighbours, while ours lies 1.8 % under c0/(4L) as at the l
 around it. Ours lies 3.0-4.1 % under the column's continuum mode down to 19 m, 2.5 % at
 20 m and 1.8 % at 21 m (the longest columns).
 
-The paper's cases without Wenchuan (003 §4.2: Tables 3-4, Figures 13-15), one run each at
+The paper's cases without Wenchuan (Wang et al. 2022, §4.2: Tables 3-4, Figures 13-15), one run each at
 the design level (``--cases``; settled 1.5 s, spectra from 1 s on): the first spike of
 B1-B18 summed (Table 3), that of the unforced part (symmetric under a horizontal record,
 antisymmetric under the vertical; none for the combined), the inner wave (two gauges on
@@ -188,7 +188,7 @@ import numpy as np
 from cosim import refdata
 from fluid.shapes import arch_rib_cavity, catenary_arch_axis
 
-SPAN, RISE, LEVEL = 140.0, 23.333, 15.56  # m, 003 §4
+SPAN, RISE, LEVEL = 140.0, 23.333, 15.56  # m, Wang et al. 2022, §4
 M, HC = 2.24, 1.458  # arch-axis coefficient [-], inner height [m]: chosen (see the docstring)
 C0_PAPER = math.sqrt(7 * 2.8e6 / 1000.0)  # m/s, from the paper's B = 2.8e6 Pa and gamma = 7
 
@@ -220,14 +220,14 @@ def _paper_table(name):
 def predict() -> None:
     t5 = [(float(r["depth_m"]), float(r["wave_frequency_Hz"]))
           for r in csv.DictReader(open(refdata.path("arch_rib_wang2022", "table5_wave_frequency_vs_depth.csv")))]
-    print(f"quarter-wave mode c0/(4L), c0 = {C0_PAPER:.1f} m/s (the paper's B), against 003 Table 5 and Eq. 18")
+    print(f"quarter-wave mode c0/(4L), c0 = {C0_PAPER:.1f} m/s (the paper's B), against Wang et al. 2022, Table 5 and Eq. 18")
     print(f"{'depth [m]':>10} {'L [m]':>7} " + " ".join(f"{'m=' + str(m):>8}" for m in (1.5, 2.24, 3.0))
           + f" {'Table 5':>8} {'Eq. 18':>8}")
     for d, f5 in t5:
         eq18 = (4.10239 * (d / RISE) ** 2 - 9.22848 * (d / RISE) + 6.06132) / math.sqrt(RISE / 9.81)
         row = " ".join(f"{quarter_wave(C0_PAPER, d, m):8.3f}" for m in (1.5, 2.24, 3.0))
         print(f"{d:10.2f} {column_length(d):7.2f} {row} {f5:8.2f} {eq18:8.3f}")
-    print("\novertones at 15.56 m (quarter wave: 1, 3, 5, 7 times the first) against 003 Table 3 [Hz]:")
+    print("\novertones at 15.56 m (quarter wave: 1, 3, 5, 7 times the first) against Wang et al. 2022, Table 3 [Hz]:")
     f1 = quarter_wave(C0_PAPER, LEVEL)
     print(f"{'quarter wave, m = 2.24':>26}: " + ", ".join(f"{(2 * n - 1) * f1:.3f}" for n in range(1, 5)))
     for r in _paper_table("table3_spikes.csv"):
@@ -429,7 +429,7 @@ def spectrum_plot(curves: dict, folder: str, name: str, title: str) -> str:
         c[label] = {"x": f[keep].tolist(), "y": (a[keep] / a[(f > F_MIN) & keep].max()).tolist(), "style": "-"}
     for label, x in bridge_mode_lines().items():
         c[label] = {"x": x["x"].tolist(), "y": x["y"].tolist(), "style": x["style"]}
-    c[f"003 Table 3 first spike (1.125 Hz); c0/(4L) at 140 m/s ({quarter_wave(C0_PAPER, LEVEL):.3f} Hz)"] = {
+    c[f"Wang et al. 2022, Table 3 first spike (1.125 Hz); c0/(4L) at 140 m/s ({quarter_wave(C0_PAPER, LEVEL):.3f} Hz)"] = {
         "x": [1.125, 1.125, math.nan, quarter_wave(C0_PAPER, LEVEL), quarter_wave(C0_PAPER, LEVEL)],
         "y": [0.0, 1.0, math.nan, 0.0, 1.0], "style": "k--"}
     Path(folder).mkdir(parents=True, exist_ok=True)
@@ -440,7 +440,7 @@ def spectrum_plot(curves: dict, folder: str, name: str, title: str) -> str:
 
 def cases(dx: float, duration: float, c0: float, records, figures: str | None = None,
           gauges: bool = True, stop: float | None = None) -> list[dict]:
-    """The paper's excitation cases without Wenchuan (003 §4.2, Tables 3-4, Figures 13-15),
+    """The paper's excitation cases without Wenchuan (Wang et al. 2022, §4.2, Tables 3-4, Figures 13-15),
     one run each at the design level: the spikes of B1-B18 summed against Table 3, those
     of the unforced part (one-direction records), the inner wave (the gauges' surface
     elevation) against Table 4, and the pairs' phase (Figures 13-14); with ``stop`` [s]

@@ -1,6 +1,6 @@
 """The fluid-level speed/accuracy trade on one moored-body scene: the analytic fluid
 against SPH at three spacings, the scene changed in the one field ``fluid.model`` (issue
-18 asks it of seed 004's 3-D base, whose resolving SPH runs need a GPU; this is the 2-D
+18 asks it of Barreiro et al. 2016's 3-D base, whose resolving SPH runs need a GPU; this is the 2-D
 moored box in waves of ``examples/moored_box_waves.py``, which the CPU can resolve).
 Prints figures; asserts nothing.
 

@@ -14,7 +14,7 @@ displacement u,
     omega^2 = -sum a . u / sum u . u   [rad^2/s^2],
 
 is zero for a fluid; for the SPH fluid it is not. With uniform pressure the momentum
-equation (004_1657bd4a51d29840.txt Eq. 6) reduces to ``-(2 p0 / rho^2) grad_a sum_b m_b
+equation (Barreiro et al. 2016, Eq. 6) reduces to ``-(2 p0 / rho^2) grad_a sum_b m_b
 W_ab``: the gradient of the kernel sum of the displaced particles, which for a smooth
 divergence-free displacement vanishes in the continuum but not on the lattice, by a
 factor set by the kernel and h/dx only. So omega^2 grows in proportion to p0 and does
@@ -172,7 +172,7 @@ def lattice_stability(dim: int, h_coef: float, kernel: str = "wendland", n: int 
     """Linear stability of the square (cubic) particle lattice of the SPH fluid under a
     uniform pressure p0, infinite and without gravity (module docstring, 3.).
 
-    Bloch modes u_a = U exp(i k . R_a) of the momentum equation (004_1657bd4a51d29840.txt
+    Bloch modes u_a = U exp(i k . R_a) of the momentum equation (Barreiro et al. 2016,
     Eq. 6) with the continuity equation (Eq. 7) and p = p0 + c0^2 (rho - rho0) give
     ``omega^2 U = (2 p0 / rho0) V D(k) U + V^2 (c0^2 - 2 p0 / rho0) S (S . U)`` with
     ``D(k) = sum_R (1 - cos k.R) Hess W(R)`` and ``S(k) = sum_R sin(k.R) grad W(R)``.

@@ -6,7 +6,7 @@ support is visited once: particle ``a`` visits only the rows of cells ahead of i
 and y + 1 in its own z) and, in its own row, the particles after it; every term is added
 to ``a`` and, with the sign and the mass or volume of ``a``, to ``b`` (continuity and
 the 8-norm of the viscous term are symmetric in the pair, momentum and diffusion
-antisymmetric: seed 001 Eq. 6-7 with ``m_a`` for ``m_b``). The inner loop stays
+antisymmetric: Sunara et al. 2021, Eq. 5-7 with ``m_a`` for ``m_b``). The inner loop stays
 contiguous in ``b``, so the writes to ``b`` are vector loads and stores; they conflict
 between threads, so the prototype is serial, compared with the loop as it is on one thread.
 

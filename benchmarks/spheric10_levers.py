@@ -11,7 +11,7 @@ time steps is not missed:
 - ``patch``: the case's sensor (:func:`~cosim.validations.sloshing.spheric10_sensor`:
   the wall's normal force over a 10 mm patch, as a transducer reads it; since session 6);
 - ``face2h``: the case's probe of sessions 3-5 (:func:`~cosim.validations.sloshing.face_pressure`:
-  001 Eq. 15 over 2h, carried to the wall face, fitted along the wall) at z = 93 mm;
+  Sunara et al. 2021, Eq. 15 over 2h, carried to the wall face, fitted along the wall) at z = 93 mm;
 - ``face1h``: the same with a support of h;
 - ``face_sensor``: ``face2h`` averaged over the sensor's face (``--sensor-d`` [m], the
   diameter, along the wall about z = 93 mm; 5 points);

@@ -1,4 +1,4 @@
-"""Issue 18's static check with the SPH fluid: seed 004's wind-turbine base (the scene of
+"""Issue 18's static check with the SPH fluid: Barreiro et al. 2016's wind-turbine base (the scene of
 examples/wind_turbine_base.py: 16 000 kg, a vertical cylinder 6 m across and 3 m high, three
 catenary lines of Table 4 at 120 deg) at rest in still water, against the draft and offset
 that hydrostatics and the three catenaries predict together (``cosim.scene.placement``:
