@@ -223,7 +223,7 @@ lines = [{ fairlead = "float.top", anchor = [0.0, 0.0, -10.0], length = 12.0, we
 motion = ["float"]
 """,
     "plate": """
-# 2-D: a dam break on an elastic plate (seed 002 §3.3)
+# 2-D: a dam break on an elastic plate (Yang & Li 2020, §3.3)
 [world]
 dim = 2
 duration = 0.4
@@ -320,7 +320,7 @@ def case(id, base, change, path, says, python, files=None):
 
 INCLINED = {"kind": "inclined-tank", "angle": 95.0, "length": 1.0, "depth": 0.2, "height": 0.6, "width": 0.5}
 LINE_DYN = {"EA": 1e5, "mass_per_length": 0.6, "diameter": 0.01}
-LINEAR = {"kind": "linear", "height": 0.7, "period": 20.0, "depth": 20.0}  # seed 004's waves
+LINEAR = {"kind": "linear", "height": 0.7, "period": 20.0, "depth": 20.0}  # Barreiro et al. 2016's waves
 REGULAR = {"kind": "regular", "height": 0.7, "period": 20.0, "depth": 20.0}
 JONSWAP = {"kind": "irregular", "depth": 20.0, "hs": 1.0, "tp": 8.0}
 SERIES = {"kind": "irregular", "depth": 20.0, "spectrum": "series", "file": "eta.txt"}
