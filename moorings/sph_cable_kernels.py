@@ -1,7 +1,7 @@
 """Compiled kernels of the SPH cable (Dinçer & Demir 2020, Eq. 1-12).
 
 Everything here is a numba ``njit`` function on plain arrays; the physics, the
-derivations of the paper's ambiguous equations and the units are documented in
+derivations of the paper's ambiguous equations and the units are in docs/sph_cable.md and
 :mod:`moorings.sph_cable`. One call of :func:`advance` runs the whole sub-cycling
 loop from ``t0`` to ``t1`` inside compiled code.
 
