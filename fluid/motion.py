@@ -26,20 +26,16 @@ returns are the exact time derivatives of the positions it returns:
 Baseline correction (:func:`baseline_correct`): a recorded accelerogram integrated twice
 drifts (a small offset in acceleration grows quadratically in displacement), so a table
 shaking the tank would wander off and end moving. The papers do not say how they processed
-their records (Wang et al. 2022, §4.1 applies the Wenchuan and El Centro records to
-the arch rib without details), so we use the classical polynomial fit to the displacement
-(e.g. Boore 2001, BSSA 91(5) 1199-1211; Boore, Stephens & Joyner 2002, BSSA 92(4)
-1543-1560, the "fit a polynomial to the displacement and remove its second derivative from
-the acceleration" step of the PEER processing): the least-squares polynomial
+their records (Wang et al. 2022, §4.1), so we use the classical polynomial fit to the
+displacement (Boore 2001, BSSA 91(5) 1199-1211; Boore, Stephens & Joyner 2002, BSSA 92(4)
+1543-1560; a step of the PEER processing): the least-squares polynomial
 ``q(t) = sum_{k=2..n} c_k t^k`` is fitted to the displacement subject to ``q(T) = d(T)`` and
 ``q'(T) = v(T)``, and removed from displacement, velocity and acceleration. Starting at
 ``t^2`` keeps the start at rest; the two constraints make the corrected record end at rest
 exactly; the change of the acceleration is the smooth ``q''(t)``, small where the drift is.
-The fit cannot tell drift from genuine motion as slow as the record itself: a record that
-is one slow pulse of displacement is erased with its drift (PEER's processed records,
-``cosim/refdata/earthquake_el_centro_1940``, end at rest already and change by 1-2 % of
-their peak displacement; ``tests/test_records.py``). Give ``baseline_degree=None`` to
-:func:`read_at2` to keep a record as it is.
+The fit cannot tell drift from motion as slow as the record itself (one slow pulse of
+displacement is erased with its drift; PEER's processed records end at rest already:
+``tests/test_records.py``); ``baseline_degree=None`` (:func:`read_at2`) keeps a record as it is.
 """
 
 from __future__ import annotations
