@@ -776,76 +776,14 @@ def sloshing_spheric10(quick: bool) -> dict:
     the case of Wang et al. 2022 (Brizzolara et al.); plain dynamic walls read the first impact lower
     (both measured: docs/validation/sloshing-spheric10_history.md).
 
-    The full case (dx = 3.1 mm, h = sqrt(2) dx, 8 s; NUMBA_NUM_THREADS=1, 320 493 steps,
-    ~35 min alone; ratios to the measured record per impact 1-4; the face probe's row is
-    the same run in session 5, the trajectory does not depend on the probe):
-
-    ======  ===================  ===================  ===================  ==========================
-    sensor  peak (one sample)    20 ms mean           impulse              lag [s]
-    ======  ===================  ===================  ===================  ==========================
-    patch   3.58 4.72 3.92 1.34  1.05 0.88 2.24 1.40  0.92 1.27 1.43 1.48  +0.025 -0.025 -0.024 -0.033
-    face    3.61 5.76 6.57 1.28  1.05 1.02 2.44 1.43  0.93 1.46 1.54 1.54  +0.025 -0.025 -0.028 -0.039
-    ======  ===================  ===================  ===================  ==========================
-
-    Every impact is in phase (the 0.05 s target), the first carries the measured impulse
-    and 20 ms mean, and no peak is within 20 %: the target is not met.
-
-    The sensor. A transducer reads the force on its face over its area: the case's sensor is
-    the fluid's normal force on a 10 mm patch of the wall (:func:`spheric10_sensor`;
-    SOURCE.txt does not give the sensor's size; patches of h, 2h, 4h and 20 mm read the same
-    impulses within 1 % and 20 ms means within 4 % at 3.1 mm, their peaks differ by up to
-    40 %). The face probe (:func:`face_pressure`) averages the pressure of the fluid
-    particles near the point, so it reads a thin film or a few splash particles as if they
-    covered the wall: at the first impact, which covers the wall, the two agree; at the
-    later ones, which reach the sensor as a run-up after the first, the face probe reads
-    too much (the second impact's impulse 1.46 against 1.27 on the patch at 3.1 mm).
-
-    Why the peaks do not converge. The first impact's impulse stays within 0.88 - 1.05 of
-    the measured one and its 20 ms mean converges in every set-up tried (Wang et al.'s, DualSPHysics',
-    h = 2 dx, MLS re-initialisation: the table in the history file), while its peak ranges
-    from 0.5 to 6.4 and grows as dx shrinks. At 3.1 mm the peak is a pulse of 13.2 kPa,
-    1.5 ms wide at half height (2.3996 s on the patch, 25 ms after the measured front), on a
-    run-up below 1.4 kPa: of the size of rho c0 u_n with u_n ~ 0.5 m/s, a water hammer of
-    the weakly compressible model, whose height follows c0 and the front's shape where it
-    meets the wall, sharper as dx shrinks. The measured peak (the record keeps the largest
-    sample of every 5 ms of a 20 kHz signal), a 3.7 kPa front followed by 20 ms above
-    2.3 kPa, is most likely set by the entrapped air and the real sound speed, which a
-    single-phase model with an artificial c0 does not have (inferred, not tested). Wang et al.
-    report "good agreement in amplitude" for its own case (Brizzolara et al., axis 184 mm
-    above the bottom) from a figure, without numbers; at its set-up and dx this record's
-    first peak reads 6.43.
-
-    Measured trade (convergence, session 5, read with the face probe;
-    NUMBA_NUM_THREADS=1, ``run_spheric10(dx, **kw)``, 8 s; ratios to
-    the measured record per impact 1-4; dx in mm, h = sqrt(2) dx ("r2") or 2 dx; "5 ms" the
-    largest 5 ms mean):
-
-    =========  ======  ======  ===================  ===================  ===================  ===================
-    dx, h      steps   wall s  peak (one sample)    5 ms mean            20 ms mean           impulse
-    =========  ======  ======  ===================  ===================  ===================  ===================
-    6.2, r2    160277  372     1.00 3.00 7.15 3.78  .                    0.82 1.71 2.81 1.73  0.91 1.89 2.03 1.94
-    3.1, r2    320493  2042    3.61 5.76 6.57 1.28  2.32 2.13 2.48 1.09  1.05 1.02 2.44 1.43  0.93 1.46 1.54 1.54
-    3.1, 2 dx  241091  2119    2.84 2.09 2.21 3.07  2.40 1.41 1.88 2.20  1.05 1.03 1.70 1.82  0.92 1.53 1.63 1.93
-    2.0, r2    250105  3550    5.80 4.13            2.94 1.72            1.27 1.09            0.92 1.21
-    =========  ======  ======  ===================  ===================  ===================  ===================
-
-    (10 337 and 10 487 particles at 3.1 mm; the 2 mm run, 23 547 particles, the paper's
-    resolution (Wang et al. 2022, §3), to 4.4 s: two impacts, lags +0.027, -0.041 s.) At 3.1 mm every
-    impact is in phase with either support (lags +0.025, -0.025, -0.028, -0.039 s at sqrt(2)
-    dx; +0.022, -0.040, -0.019, -0.045 s at 2 dx), the first impact's impulse and 20 ms mean
-    are within 8 %, and the later impulses fall with dx (1.9-2.0 to 1.5; the second impact's
-    1.89, 1.46, 1.21 at 6.2, 3.1, 2 mm: converging towards the measured one, so the excess
-    at 6.2 mm discussed in the history file is largely resolution; whether a 3-D loss
-    remains is not settled) but stay 50 % above the measured ones at 3.1 mm; the peaks do
-    not converge (the first impact's 1.00, 3.61, 5.80 at 6.2, 3.1, 2 mm grows as the front
-    sharpens; on the face probe at 3.1 mm a 1-2 ms spike of 8.7 kPa at 2.400 s after 15 ms
-    of run-up below 1.4 kPa: the water hammer above). h = 2 dx does not change this. So the
-    target (peaks within 20 %) is not met, and the timing is (within 0.05 s). The full case
-    runs dx = 3.1 mm, h = sqrt(2) dx (~35 min on one core).
-
-    History (sessions 3-6: the sensor, the first impact at four resolutions and the levers
-    on it, the full runs at 6.2 mm, the hypotheses about the later impacts, more dissipation
-    and a higher c0, the roll axis and the dynamic walls): docs/validation/sloshing-spheric10_history.md.
+    The full case runs dx = 3.1 mm, h = sqrt(2) dx, 8 s: every impact in phase (the 0.05 s
+    target), the first carries the measured impulse and 20 ms mean, and no peak is within 20 %:
+    the target is not met. The peaks are the weakly compressible model's water hammer (of the
+    size of rho c0 u_n, sharper as dx shrinks); the measured peak is most likely set by the
+    entrapped air and the real sound speed, which a single-phase model does not have (inferred,
+    not tested). The sensor is a 10 mm patch because a transducer reads the force over its face
+    (:func:`face_pressure` reads a film or splash as if it covered the wall). The measured table,
+    the convergence trade and the history: docs/validation/sloshing-spheric10_history.md.
     """
     if quick:  # the first swing only (no impact): 5 particle rows over the depth
         out = run_spheric10(0.0186, t_end=1.3, sample_dt=0.005)

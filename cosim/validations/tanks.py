@@ -265,48 +265,11 @@ def inclined_wall_3d(quick: bool) -> dict:
     semi-infinite reservoir at each angle; reported beside it, the RMS against the exact
     pressure of this finite tank (:mod:`cosim.validations.tank_potential`) on both sides.
 
-    Measured trade (2026-11-25, AMD EPYC, 2 cores shared with 3-5 other jobs, so only CPU
-    seconds compare; ``python benchmarks/tanks_3d_trade.py inclined --dx DX --angle BETA``:
-    the full variant's settings at each dx, one thread; RMS of k_p up the inclined face on
-    the mid-plane against Chwang; "tank": against the exact pressure of this tank; left:
-    the vertical side against the tank's exact pressure; 2-D: the section
-    (``run_inclined(BETA, DX, dim=2, periods_skip=1, periods_fit=1, walls="adami")``)
-    against Chwang with the same settings):
-
-    ======  =====  =======  =========  =====  =======  ======  ======  ======  ======
-    dx [m]  beta   periods  particles  steps  CPU [s]  Chwang  tank    left    2-D
-    ======  =====  =======  =========  =====  =======  ======  ======  ======  ======
-    0.10    15     1 + 1    5094       3040   56       0.050   0.053   0.060   0.045
-    0.10    30     1 + 1    5331       3040   43       0.022   0.021   0.060   0.022
-    0.10    45     1 + 1    5694       3040   46       0.010   0.010   0.061   0.0065
-    0.075   15     1 + 1    7821       4080   80       0.037   0.034   0.021   0.038
-    0.075   30     1 + 1    8184       4080   82       0.029   0.026   0.021   0.029
-    0.075   45     1 + 1    8727       4080   88       0.0053  0.0054  0.021   0.0084
-    0.05    15     1 + 1    15501      6080   246      0.038   0.034   0.031   0.036
-    0.05    30     1 + 1    16251      6080   246      0.025   0.026   0.031   0.023
-    0.05    45     1 + 1    17322      6080   259      0.0078  0.0098  0.030   0.0044
-    ======  =====  =======  =========  =====  =======  ======  ======  ======  ======
-
-    (Quick: 45 deg, dx = 0.1 m, c0 = 700 m/s, 1 + 1 periods; 5694 particles, 1520 steps:
-    0.020 against Chwang, the 2-D section with the same settings 0.007; the slice's face
-    profile within 0.018 of the section's row by row, its vertical side within 0.021; out
-    of phase 0.014.) The last three rows are the full variant: the stated 0.04 is met at
-    every angle (0.038 / 0.025 / 0.0078), and at dx = 0.075 m; at dx = 0.1 m the 15 deg
-    face misses it (0.050). The slice's RMS is within 0.005 of the 2-D section's at every
-    angle and dx of the table: its front and back walls hold the section's own points
-    (:func:`fluid.shapes.inclined_tank`), so every row of the slice sees the section's
-    balance. The errors are largest on the steepest face (15 deg), in 3-D as in 2-D, and
-    do not fall from dx = 0.075 to 0.05 m there: the face k_p scatters by up to 0.04 from
-    row to row and reads 0.03-0.07 below the tank's exact pressure at mid-depth (dx = 0.05
-    m), where the fluid's conforming layer along the face meets the lattice as close as
-    0.53 dx (0.56-0.73 dx at 30 deg, 0.91 dx at 45 deg), and the particles by the face move
-    at up to 0.09-0.12 m/s at 15 and 30 deg (0.06-0.09 m/s in 2-D; 0.06-0.07 m/s at 45
-    deg) against ~0.02 m/s for the impulsive flow. Out of phase below 0.03; the vertical
-    side within 0.061 of its exact pressure at every angle. The paper gives no numbers for
-    Fig. 12 (its SPH against Chwang), so no comparison with its own error is possible.
-    Figures: docs/validation/figures/tanks3d_inclined_dx{0.1,0.075,0.05}_inclined-face.png,
-    drawn from the table's runs by ``python benchmarks/tanks_3d_trade.py plot
-    docs/validation/figures RUN.json ...``.
+    At the full variant's dx = 0.05 m the stated 0.04 is met at every angle, and the slice's
+    RMS is within 0.005 of the 2-D section's (its walls hold the section's own points); the
+    steepest face (15 deg) errs most. The measured trade (``python benchmarks/tanks_3d_trade.py
+    inclined --dx DX --angle BETA``), the quick variant and the figures:
+    docs/validation/inclined-wall-3d_history.md.
     """
     if quick:
         settings = dict(periods_skip=1, periods_fit=1, c0=700.0, walls="adami")
