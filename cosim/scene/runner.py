@@ -13,18 +13,14 @@ samples (``world.sample_every``), particle snapshots (``snapshot_every``), check
   CF-style ``units`` attribute (a line's state: ``flag_values``, ``flag_meanings``);
 - ``GROUP.csv`` per probe group (header ``t [s]`` then ``NAME [UNIT]``; a line's state
   names its codes, ``[0 resting|1 partly lifted|2 fully lifted|3 taut]``), ``ledger.csv``;
-- ``GROUP.png`` per probe group, ``particles_tT.png`` at each ``plot_at`` time within the
-  run (:mod:`cosim.scene.plots`);
-- ``sea_components.csv`` (the analytic fluid's incident sea, :mod:`fluid.waves`): its
-  linear components (ω, amplitude, phase, k) and, for an irregular sea, the spectrum they
-  stand for (the target S(ω), or a record's periodogram a² / 2Δω), plotted in
-  ``sea_spectrum.png``;
+- ``GROUP.png`` per probe group, ``particles_tT.png`` at each ``plot_at`` time (:mod:`cosim.scene.plots`);
+- ``sea_components.csv`` (the analytic fluid's incident sea, :mod:`fluid.waves`): its linear
+  components (ω, amplitude, phase, k) and, for an irregular sea, the spectrum they stand for
+  (the target S(ω), or a record's periodogram a² / 2Δω), plotted in ``sea_spectrum.png``;
 - ``summary.json``: set-up, scheme, sizes, steps (``coupling``: the steps taken, by what
   set them), wall and CPU time, the cost estimated before the run (``estimate``,
-  :mod:`cosim.scene.cost`), each series' range, the
-  warnings of the build (``warnings``, :attr:`cosim.scene.build.Built.warnings`);
-  lines that broke (``line_breaks``) and, for catenary lines, when each went fully lifted
-  or taut and back (``line_events``, :mod:`moorings.line_events`);
+  :mod:`cosim.scene.cost`), each series' range, the build's ``warnings``, the lines that
+  broke (``line_breaks``) and the catenary lines' ``line_events`` (:mod:`moorings.line_events`);
 - ``checkpoint.h5``: the latest checkpoint, data only (:mod:`cosim.checkpoint`,
   ``docs/checkpoints.md``), replaced atomically: every ``world.checkpoint_wall`` of wall
   time (stretched so that writing takes at most :data:`CHECKPOINT_SHARE` of the run), at

@@ -21,8 +21,7 @@ acoustic mode, and keep the issue's criterion (first spike within 5 % of 1.125 H
 next near 3, 5, 7 times it) with its measured value, beside the quarter-wave prediction.
 
 Monitoring points: :func:`cosim.scene.arch_rib_monitors` (B1-B9 on the right leg, B10-B18
-their mirror images: the paper's Figure 6 is not in its text; our choice is stated
-there). The spectrum is the sum over B1-B18 of the amplitude spectra of each point's
+their mirror images; the paper's Figure 6 is not in its text). The spectrum is the sum over B1-B18 of the amplitude spectra of each point's
 pressure (mean removed, Hann window, from ``skip`` on), as the paper's Figure 15 overlays
 all points; the first spike is the lowest-frequency peak above 0.3 Hz reaching a fifth of
 the highest, located by a parabola through the zero-padded spectrum's top three bins.
@@ -35,10 +34,9 @@ the mode is), so its first spike is the record's as often as the water's; the pa
 record does not force (under a horizontal record the symmetric part (pR + pL)/2 of each
 pair: a rib symmetric about x = 0 is forced antisymmetrically) holds, late in a long
 record, mostly a small image of the forced response (``benchmarks/arch_rib_drift.py``).
-Both are reported beside the ringing. The runs start
-from a settled state: a hydrostatic start rings the acoustic mode in both legs at once
-(40 kPa at dx = 0.3 m against some 15 kPa of response to the record), which is likely why
-the paper finds the same 1.125 Hz under all six records.
+Both are reported beside the ringing. The runs start settled: a hydrostatic start rings
+the acoustic mode in both legs at once (40 kPa at dx = 0.3 m against some 15 kPa of
+response), likely why the paper finds the same 1.125 Hz under all six records.
 """
 
 from __future__ import annotations
@@ -503,20 +501,9 @@ def arch_rib(quick: bool) -> dict:
     and why ours lies below the continuum mode (the near-wall layers, at so few particles
     across), is in ``docs/validation/arch-rib_history.md``.
 
-    Measured 2026-11-26 (AMD EPYC, one thread, NUMBA_NUM_THREADS=1, 2 cores shared with
-    three other jobs). Full (21,386 particles, 9,256 of water; 90,385 + 36,000 steps;
-    1,923 + 844 CPU-s, 72.5 and 73.4 CPU-s per simulated second, settling included; 89 min
-    of wall): passed. The ringing over 20-25 s, 1.0739 Hz (-4.5 % of 1.125 Hz, -3.0 % of
-    c0/(4L) = 1.108 Hz; the four windows within 0.05 %, the fit's residual 0.019, the
-    decay 0.14 /s), its spectrum's spikes 1.074, 3.224, 5.389, 7.479 Hz (3.00, 5.02, 6.96
-    times it); the mode rung free from rest by a pulse at the same dx, 1.078 Hz
-    (:func:`ring_rib`). Kept beside it: all points over 2-20 s, 0.799 Hz (-28.9 %), then
-    3.13, 3.28, 5.40 Hz; the symmetric part over 2-20 s, 1.016 Hz (-9.6 %), then 3.24,
-    4.36, 6.34 Hz; pairs -0.990 (B9/B18) to -0.998 under EW, +1.000 under vertical
-    (all points 0.573 Hz, its antisymmetric part 0.909 Hz). Quick (4,976 particles;
-    67 CPU-s): the ringing over 4-7 s 0.971 Hz (-13.7 %; the windows within 3.2 %; the
-    mode rung free at dx 0.3 m: 0.978 Hz), 3.16, 5.50, 7.37 times it; every pair at -0.65 or
-    below.
+    Measured: the full variant passes, its free ringing 1.0739 Hz (-4.5 % of 1.125 Hz) with
+    spikes near 3, 5 and 7 times it, the pairs in opposite phase under EW; the figures of the
+    full and quick runs: docs/validation/arch-rib_history.md.
     """
     stated = {"first_spike_rel_err": 0.05, "spike_ratio_errors": RATIO_TOL,
               "horizontal_pair_correlation_max": [None, -0.5]}

@@ -301,7 +301,7 @@ def pressure_plot(t_star, p: dict, p_point: dict | None = None) -> dict:
     return out
 
 
-LOBOVSKY_TARGET = (f"water level h/H at the gauges H1-H4 against Lobovsky et al. 2014's measured runs, as Yang & Li 2020 "
+LOBOVSKY_TARGET = (f"water level h/H at the gauges H1-H4 against Lobovsky et al. 2014's measured runs, as Yang & Li 2020, "
                    f"Figure A2 plots them: over t* = t sqrt(g/H) <= {T_JUDGED:g} (the surge, before the reflected "
                    f"bore) the RMS difference within {TOL_RMS:g} at each gauge against each run, and the surge's "
                    f"arrival (h/H >= {ARRIVAL_LEVEL:g}) at H2-H4 within {TOL_ARRIVAL:g} in t* of the measured one; the "

@@ -134,25 +134,10 @@ def elastic_plate(quick: bool) -> dict:
     Yang & Li 2020 describes the same case (b = 1.2 cm, rho_s = 2500 kg/m^3, E = 1e6 Pa) but prints
     hu = 25.2 cm in its Table 1 set-up; the curves it compares with (Figure 6) are these.
 
-    Full variant (``cosim validate elastic-plate``; dx = 2.5 mm, 4.8 particles across the
-    plate, 8197 particles, 15 700 coupling steps, N = 8 elements; 166 s for the run on the
-    2-core machine beside other jobs): peak 43.9 mm at 0.223 s (-9.0 % of Idelsohn's 48.3
-    mm); RMS difference over 0.4 s: 6.1 mm to Idelsohn (PFEM), 2.9 to Bogaers, 4.3 to Liu,
-    4.5 to Sun. Quick (dx = 5 mm, 0.3 s, 20 s): 46.7 mm at 0.228 s (-3.2 %), RMS 5.4 mm to
-    Idelsohn. The four references themselves peak at 45.0-48.3 mm between 0.217 and 0.260 s.
-    With N = 16 elements (dx = 2.5 mm, 421 s): 44.9 mm at 0.222 s, RMS 6.2 / 2.5 / 4.4 / 4.2
-    mm: the chain is converged to 2 % of the peak, the fluid's resolution sets the rest.
-    Resolution (N = 8, 0.4 s, ``run_elastic_plate(dx)``; wall time beside other jobs)::
-
-        dx [mm]  particles  steps   wall [s]  peak [mm]  at [s]   RMS to Idelsohn/Bogaers/Liu/Sun [mm]
-        7.5         1203     5312      17      45.8     0.228    8.9 / 4.0 / 6.6 / 5.8
-        5.0         2400     7985      63      46.7     0.228    7.8 / 2.2 / 5.9 / 4.2
-        3.5         4436    11220     113      44.2     0.221    6.4 / 2.7 / 4.6 / 4.4
-        2.5         8197    15700     166      43.9     0.223    6.1 / 2.9 / 4.3 / 4.5
-
-    In 3-D, as a scene (``shape = "elastic-plate"``, a slice 36 mm wide between the tank's
-    side walls, dx = 6 mm, 45 358 particles, 0.3 s in 1374 s): 43.4 mm at 0.216 s, RMS over
-    0.3 s 6.2 / 2.2 / 4.8 / 4.1 mm.
+    Full variant (dx = 2.5 mm, N = 8): peak 43.9 mm at 0.223 s, -9.0 % of Idelsohn's 48.3 mm,
+    within the four references' spread (45.0-48.3 mm); the chain converged to 2 % of the peak, the
+    fluid's resolution sets the rest. The measured resolution table and the 3-D slice:
+    docs/validation/elastic-plate_history.md.
     """
     dx, t_end = (0.005, 0.3) if quick else (0.0025, 0.4)
     r = run_elastic_plate(dx, t_end)

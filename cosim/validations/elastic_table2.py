@@ -9,16 +9,9 @@ rho_s = 2500 kg/m^3, clamped to the floor with its left face a beyond the column
 L + a + b / 2), in the 0.584 m tank of Walhorn et al. (walls 0.4 m high); 2-D (x-z, 1 m
 deep); the structure an 8-element MuJoCo chain (:mod:`bodies.elastic`, no damping), the
 fluid the scene's dam-break set-up (c0 = 10 sqrt(2 g hu), Yang & Li 2020, Eq. 6's rule). Table 2
-(E in Pa: the table prints kPa, which the paper's sub-millimetre displacements rule out)::
-
-    test  hu [mm]  a [mm]  E [Pa]        the group it belongs to
-     1      292     146    3.0e7         every group's base case
-     2      252     146    3.0e7         hu
-     3      332     146    3.0e7         hu
-     4      292     176    3.0e7         a
-     5      292     206    3.0e7         a
-     6      292     146    1.5e7         E
-     7      292     146    7.5e6         E
+(E in Pa: the table prints kPa, which the paper's sub-millimetre displacements rule out):
+Test 1, hu = 292 mm, a = 146 mm, E = 3.0e7 Pa, is every group's base case; Tests 2, 3 vary
+hu (252, 332 mm), Tests 4, 5 a (176, 206 mm), Tests 6, 7 E (1.5e7, 7.5e6 Pa).
 
 Each test is a scene (:func:`scene_of`) run by :mod:`cosim.study.sweep` (:func:`run_cases`:
 its own process, cached by scene and code, CPU time measured). Per test (:func:`metrics`,
@@ -38,18 +31,9 @@ every 1 ms):
 - the quasi-static check: the tip deflection the nodal loads (5 ms means) would give on a
   static cantilever (``sum_k F_k (z_k^2 (3 L - z_k) / (6 E I) + z_k / (kappa G A))``).
 
-Measured (2026-11-25, AMD EPYC, 2 cores, loaded; single-threaded runs): at dx 2.5 mm
-(8000-9000 particles, 89-125 CPU-s a test) the corner peaks at 3.34 / 2.56 / 3.77 mm (Tests
-1 / 2 / 3: rising with hu at the paper's §4.4 slope), 3.34 / 3.04 / 2.60 mm (Tests 1 / 4 / 5;
-the paper 0.82 / 0.76 / 0.67 mm: the same ratios within 0.04, each of ours 3.9-4.1 times
-the paper's), 11.75 / 6.41 / 3.34 mm at E = 7.5 / 15 / 30 MPa (nearly 1/E, quasi-static);
-arrival 0.126 s for every hu (paper 0.138 s); the vibration after the peak 21-24 Hz at E =
-30 MPa (0.64-0.72 of the dry f1, 32.7 Hz; paper 40-50 Hz). Our loads match the momentum
-flux of Ritter's dam-break flow (235 N/m against our 284 N/m peak), and static beam theory
-under them gives our peak; the paper's 0.82 mm and 40-50 Hz fit a structure 3-4 times
-stiffer in bending than the one it prints (E = 1.2e8 Pa: 0.91 mm, 54 Hz). With E = 3e10 Pa
-(kPa read literally) Test 1 at dx 5 mm moves by at most 0.014 mm. Test 1's peak at dx 7.5 /
-5 / 3.5 mm is -14.9 / -2.9 / -2.5 % off the 2.5 mm run's.
+What was measured (the corner's peaks rise with hu, fall with a and go nearly as 1/E; ours
+3.9-4.1 times the paper's, whose figures fit a structure 3-4 times stiffer in bending than
+the one it prints): docs/studies/elastic_dambreak/README.md.
 """
 
 from __future__ import annotations
@@ -203,16 +187,10 @@ def elastic_table2(quick: bool) -> dict:
     judged is the fall with a, its ratios, and the onset's order; the absolute peaks are
     reported beside it (``peak_rel_err_vs_paper``, ``paper_peaks_within_15pct``).
 
-    Full variant (``cosim validate elastic-table2``; dx = 2.5 mm, the paper's spacing and
-    ours: the peaks move by 2.5 % at most to 1.75 mm; measured 2026-11-26, AMD EPYC, 2
-    cores, loaded, one thread a test: 8056 particles, 111 / 102 / 93 CPU-s): peaks 3.34 /
-    3.04 / 2.60 mm, ratios 0.909 / 0.779 against 0.927 / 0.817 (errors -0.018 / -0.038),
-    onsets 0.134 / 0.150 / 0.163 s: passed; the paper's absolute peaks not met (+307 / +299
-    / +288 %). Quick (dx = 5 mm, Tests 1 and 5, 19 CPU-s each): 3.24 / 2.91 mm (ratio
-    0.896), onsets 0.132 / 0.165 s: passed. At this spacing the peaks follow the time step:
-    with the CFL number at 0.18 / 0.16 instead of 0.2 they are 3.49 / 3.00 and 3.10 / 2.87 mm
-    (ratios 0.860 and 0.927; Intel Xeon, 2026-11-26), so the quick ratio carries about
-    +-0.04 of the step's noise against its 0.95 bound.
+    Full variant (dx = 2.5 mm, the paper's spacing): passed (peaks 3.34 / 3.04 / 2.60 mm, ratios
+    within 0.04 of the paper's), the paper's absolute peaks not met (about +300 %). Quick (dx =
+    5 mm, Tests 1 and 5): passed, the ratio carrying about +-0.04 of the time step's noise
+    against its 0.95 bound. The figures: docs/studies/elastic_dambreak/README.md.
     """
     tests, dx = ((1, 5), 0.005) if quick else (A_GROUP, 0.0025)
     with tempfile.TemporaryDirectory(prefix="elastic_table2_") as tmp:

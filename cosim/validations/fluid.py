@@ -423,9 +423,12 @@ def dambreak_2d(quick: bool) -> dict:
     residual height at the back wall against Martin & Moyce's tables and Fig. 3 (see
     :func:`run_dambreak`).
 
-    Measured trade (error and cost; T_end = 7, tank 12 a; wall time of one process on this
-    2-core machine shared with other jobs; ``python benchmarks/dambreak_front.py --what
-    resolution --fine``):
+    The judged error settles near 2-3 % from 20 particles on, the fitted offset converging to
+    about 0.3; the measured trade (``python benchmarks/dambreak_front.py --what resolution
+    --fine``): docs/validation/dambreak-2d_history.md.
+
+    Measured trade (error and cost; T_end = 7, tank 12 a; wall time of one process;
+    ``python benchmarks/dambreak_front.py --what resolution --fine``):
 
     ====  =========  =====  ======  ==============  ==============  =======  ======  =======
     n_a   particles  steps  wall s  as measured,    as measured,    fitted   judged  H, 1st
@@ -436,14 +439,6 @@ def dambreak_2d(quick: bool) -> dict:
     40    5378       15262  58      11.8 %          12.1 %          0.255    2.2 %   1.2 %
     80    17138      30425  367     13.2 %          13.2 %          0.285    2.6 %   1.2 %
     ====  =========  =====  ======  ==============  ==============  =======  ======  =======
-
-    (* the tip layer tears at 10 particles.) The fitted offset converges (increments 0.105,
-    0.05, 0.03) to about 0.3; the judged error settles near 2-3 %: from 40 to 80 particles
-    the pointwise errors move less than half as much as from 20 to 40, the late Fig. 3 points
-    (T = 5.1-6.8, the thinnest surge, where the missing bed friction would act most) ending
-    1-4 % ahead. Its largest point (5.6, 6.6, 6.9 %) is Fig. 3's T = 4.03, on either side
-    of which the digitised front moves at 1.18 and 2.44 per unit T, the latter above
-    Ritter's bound of 2: a digitising slip.
     """
     out = run_dambreak(20 if quick else 40)
     out["stated_tolerances"] = {"front_rms_rel_err_mm1952": 0.05, "front_rms_rel_err_mm1952_table2": 0.05}

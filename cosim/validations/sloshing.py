@@ -199,10 +199,9 @@ def run_westergaard(dx: float, c0: float = 1430.0, dim: int = 2, periods_skip: i
     the difference is the side walls' numerical effect.
 
     References: the exact incompressible pressure on the wall of this finite tank
-    (:func:`westergaard_series` with L = 3 m: 1.5 % below Westergaard's semi-infinite
-    reservoir at the base), Westergaard's semi-infinite series (refdata), the 7/8 parabola
-    (Eq. 16), and the compressible series with the run's c0 (what a perfect WCSPH model
-    would give).
+    (:func:`westergaard_series`, L = 3 m: 1.5 % below the semi-infinite reservoir at the base),
+    Westergaard's semi-infinite series (refdata), the 7/8 parabola (Eq. 16), and the
+    compressible series with the run's c0 (what a perfect WCSPH model would give).
     """
     if dim not in (2, 3):
         raise ValueError("dim is 2 or 3")
@@ -382,9 +381,8 @@ def westergaard_3d(quick: bool) -> dict:
     """The 3-D tank of Sunara et al. 2021, §3.1 (3.0 m long x 1.0 m wide x 1.5 m high,
     water 1.0 m, a0 = 0.5 g, Tp = 0.03 s; the paper's 38 170 particles at dx = 0.05 m fix
     the 1.0 m as the width: 60 x 20 x 20 fluid particles): :func:`run_westergaard` with
-    ``dim=3``. k_p is read on the end walls' rows on the tank's mid-plane (y = 0.5 m) and on
-    the rows next to the side walls (y = dx/2 and 1 m - dx/2, averaged); the references
-    and targets are those of :func:`westergaard`, judged on the mid-plane. In theory the
+    ``dim=3``. k_p is read on the end walls' rows on the mid-plane (y = 0.5 m) and next to
+    the side walls (averaged); references and targets as :func:`westergaard`'s. In theory the
     flow is uniform across the tank (the side walls are parallel to the shaking and carry
     no pressure gradient), so the 3-D profile is the 2-D one everywhere across; what the
     whole tank adds over a slice is the measured effect of the side walls.
@@ -402,12 +400,14 @@ def westergaard_3d(quick: bool) -> dict:
     the coarse slice's base k_p reads 6.8 % high, which the quick checks (written for the
     default walls) refuse.
 
-    Measured trade (2026-11-25, AMD EPYC, 2 cores shared with up to 19 other jobs, so
-    only CPU seconds compare; ``python benchmarks/tanks_3d_trade.py vertical --dx DX``:
-    the full variant's settings at each dx; RMS of k_p over the wall rows
-    below the surface against the exact series of this 3 m tank; "mid": the mid-plane,
-    "side": the rows next to the side walls; "diff": the largest row-by-row difference
-    side - mid of the face k_p; base: face k_p at the deepest row, exact 0.727):
+    At the full variant both targets are met on the mid-plane (raw 0.031 < 0.04, face 0.018 <
+    0.02, the second a declared departure: plain Eq. 15 misses it), and the rows next to the side
+    walls differ from it by less than the resolution's own error (the quick slice, the notes:
+    docs/validation/westergaard-3d_history.md).
+
+    Measured trade (``python benchmarks/tanks_3d_trade.py vertical --dx DX``; RMS of k_p
+    against the exact series of this tank; "mid" the mid-plane, "side" next to the side walls;
+    "diff" their largest row-by-row difference; base: face k_p at the deepest row, exact 0.727):
 
     ======  =======  =========  =====  =======  =====  ======  =====  =====  =====  =====  =====
     dx [m]  periods  particles  steps  CPU [s]  raw    Eq. 15  face   raw    face   diff   base
@@ -417,24 +417,6 @@ def westergaard_3d(quick: bool) -> dict:
     0.075   1 + 1    16462      4080   136      0.027  0.067   0.017  0.028  0.019  0.009  0.730
     0.05    1 + 1    44628      6080   566      0.031  0.035   0.018  0.031  0.020  0.008  0.738
     ======  =======  =========  =====  =======  =====  ======  =====  =====  =====  =====  =====
-
-    (CPU: all threads of the run, NUMBA_NUM_THREADS = 1 / 2 / 6 from the top row down.
-    The last row is the full variant: both targets met on the mid-plane, raw 0.031 < 0.04
-    and face 0.018 < 0.02 (the second a declared departure: plain Eq. 15, the stated
-    target's, reads 0.035 and misses it), base k_p 1.5 % above the exact 0.727; next to the side
-    walls raw 0.031 and face 0.0198, within them too. Against the 7/8 parabola (the
-    paper's reference: its 0.0411 raw and 0.02 with Eq. 15 at dx = 0.05 m are against
-    it, and it lies 0.15 above the exact series at the base): raw 0.037 / 0.043 / 0.039,
-    Eq. 15 0.117 / 0.117 / 0.085, face 0.053 / 0.063 / 0.052 down the rows; against
-    Westergaard's semi-infinite series at dx = 0.05 m: raw 0.022, face 0.017.) The rows
-    next to the side walls differ from the mid-plane's by at most 0.010 (face) and 0.0065
-    (raw) at every dx, their RMS by at most 0.0034: the side walls, which in theory change
-    nothing, do to k_p less than the resolution's own error. At dx = 0.1 m the whole tank
-    reads as the 2-D section at the same dx and periods (raw 0.062, face 0.040). The
-    quick slice (dx = 0.1 m, c0 =
-    700 m/s, 1 + 1 periods, default walls; 5382 particles, 1520 steps, 22 CPU-s): raw
-    0.149, Eq. 15 0.069, face 0.054 on the mid-plane, the 2-D section with the same
-    settings 0.264, 0.075, 0.044; Eq. 15 and face within 0.012 and 0.025 of it row by row.
     """
     if not quick:
         out = run_westergaard(0.05, dim=3, width=1.0, periods_skip=1, periods_fit=1, walls="adami")
@@ -706,7 +688,7 @@ def sloshing_frequency(quick: bool) -> dict:
     ``w1^2 = g (pi/L) tanh(pi h/L)``: f1 = 0.8462 Hz for L = 1 m, h = 0.5 m (refdata
     sloshing_frequencies_housner.csv: T1 = 1.18182 s).
 
-    Set-up (session 4): :data:`fluid.solver.SLOSHING_2D`, Wendland with h = 2 dx and the
+    Set-up: :data:`fluid.solver.SLOSHING_2D`, Wendland with h = 2 dx and the
     tank walls carrying the fluid's pressure (``walls="adami"``), the other settings the
     solver's defaults. Why these two:
     the plain dynamic walls make a stiff spring at the contact line (first part below),
@@ -716,8 +698,14 @@ def sloshing_frequency(quick: bool) -> dict:
     (``benchmarks/lattice_stiffness.py --stability``); at h = 1.7 dx (DualSPHysics' coefh
     1.2), which also gives +0.9 %, a tank at rest rearranges its lattice.
 
-    Measured trade (``run_sloshing_frequency(dx, ..., h_coef=2.0, walls="adami")``,
-    NUMBA_NUM_THREADS=1):
+    With this set-up the first mode meets the target (+0.84 % at dx = 0.025 m); with the
+    solver's defaults it runs +9.4-10 % fast: the plain dynamic walls put a stiff spring at
+    the contact line, and at h = sqrt(2) dx the lattice under pressure has a spurious shear
+    stiffness; the two levers are needed together. The measured trade and the search:
+    docs/validation/sloshing-frequency_history.md.
+
+    Measured trade (``run_sloshing_frequency(dx, ..., h_coef=2.0, walls="adami")``, one
+    thread; the last two rows: ``benchmarks/sloshing_trade.py --cases sloshing-frequency``):
 
     ======  =========  ======  ===============  =============================
     dx [m]  particles  steps   f1 / linear - 1  run
@@ -728,29 +716,6 @@ def sloshing_frequency(quick: bool) -> dict:
     0.05    368        29480   -0.0001          c0_factor 20, 8 free periods, 15 s
     0.0125  3818       116160  +0.0103          c0_factor 20, 8 free periods, 276 s
     ======  =========  ======  ===============  =============================
-
-    (the last two rows: ``benchmarks/sloshing_trade.py --cases sloshing-frequency``.)
-
-    With the solver's defaults (h = sqrt(2) dx, dynamic walls) the same runs give +9.4 %
-    and +10.0 %; h = 2 dx with dynamic walls +11.4 % (quick); the two levers are needed
-    together.
-
-    Why (the search, its measurements and the experiments that did not confirm a cause are
-    in the history file): (1) the dynamic boundary particles of the side walls integrate the
-    continuity equation, and next to the waterline their density follows how far the water
-    slides along the wall: a stiff spring at the contact line (a 5 mm rise makes ~5 kPa
-    against rho g eta ~ 50 Pa), set by h/dx and not by c0 or dx. The walls carrying the
-    fluid's pressure (``walls="adami"``, fluid.wall_density: each tank-wall particle takes
-    the fluid's pressure carried to it by the wall's momentum balance) follow linear theory
-    there and halve the error (+9.4 % -> +4.6 % quick). (2) With them +4.5 ... 5.1 % remains
-    at h = sqrt(2) dx at every dx; it depends on the kernel and h/dx, not on c0, the
-    artificial viscosity, the density diffusion, the sensor depth or the wave amplitude: the
-    particle lattice under pressure has a shear stiffness that the continuum lacks
-    (benchmarks/lattice_stiffness.py: the configuration alone, displaced by the linear mode,
-    is +3.2 % stiff at dx = 0.05 m and +4.0 % at 0.025 m; a candidate, not a proof). With
-    the "adami" walls, h = 2 dx meets the target (+0.84 % at dx = 0.025 m).
-
-    History (sessions 1-4): docs/validation/sloshing-frequency_history.md.
     """
     if quick:
         return run_sloshing_frequency(0.05, cycles_forced=2, cycles_free=4, c0_factor=10.0, **SLOSHING_2D)
@@ -784,6 +749,19 @@ def sloshing_spheric10(quick: bool) -> dict:
     not tested). The sensor is a 10 mm patch because a transducer reads the force over its face
     (:func:`face_pressure` reads a film or splash as if it covered the wall). The measured table,
     the convergence trade and the history: docs/validation/sloshing-spheric10_history.md.
+
+    Measured trade (convergence, read with the face probe; ``run_spheric10(dx, **kw)``, 8 s,
+    one thread; ratios to the measured record per impact 1-4; dx in mm, h = sqrt(2) dx ("r2")
+    or 2 dx; "5 ms" the largest 5 ms mean):
+
+    =========  ======  ======  ===================  ===================  ===================  ===================
+    dx, h      steps   wall s  peak (one sample)    5 ms mean            20 ms mean           impulse
+    =========  ======  ======  ===================  ===================  ===================  ===================
+    6.2, r2    160277  372     1.00 3.00 7.15 3.78  .                    0.82 1.71 2.81 1.73  0.91 1.89 2.03 1.94
+    3.1, r2    320493  2042    3.61 5.76 6.57 1.28  2.32 2.13 2.48 1.09  1.05 1.02 2.44 1.43  0.93 1.46 1.54 1.54
+    3.1, 2 dx  241091  2119    2.84 2.09 2.21 3.07  2.40 1.41 1.88 2.20  1.05 1.03 1.70 1.82  0.92 1.53 1.63 1.93
+    2.0, r2    250105  3550    5.80 4.13            2.94 1.72            1.27 1.09            0.92 1.21
+    =========  ======  ======  ===================  ===================  ===================  ===================
     """
     if quick:  # the first swing only (no impact): 5 particle rows over the depth
         out = run_spheric10(0.0186, t_end=1.3, sample_dt=0.005)

@@ -194,22 +194,9 @@ def inclined_wall(quick: bool) -> dict:
     this finite tank on both sides (the 3 m tank's inclined face carries 1-3 % less
     than Chwang's reservoir at the base).
 
-    Measured (2026-11-25, AMD EPYC, 2 cores under load; ``cosim validate inclined-wall
-    [--quick]``; RMS of k_p up the inclined face; "tank": the exact pressure of this tank):
-
-    ======  ===========  ==========  ==========  ==========  ===========  ===========
-    dx [m]  periods      15 deg      30 deg      45 deg      left, tank   wall [s]
-    ======  ===========  ==========  ==========  ==========  ===========  ===========
-    0.10    1 + 2        0.045       0.021       0.0055      0.048        23 (3 runs)
-    0.05    2 + 3        0.035       0.022       0.0067      0.026        195
-    ======  ===========  ==========  ==========  ==========  ===========  ===========
-
-    The errors are largest on the steepest face: at 15 deg the face k_p scatters by
-    +-0.03 from row to row (the conformed wall and first fluid layer along a face that
-    crosses the lattice rows at a shallow angle) and reads 0.03 above the tank's exact
-    maximum; at 45 deg it is within 0.01 everywhere. The vertical left side of the same
-    tank is within 0.026 of its exact pressure at 0.05 m (the two rows next to the free
-    surface read high, as in westergaard).
+    The errors are largest on the steepest face (15 deg: the face k_p scatters by +-0.03 from
+    row to row); the measured table (``cosim validate inclined-wall [--quick]``):
+    docs/validation/inclined-wall_history.md.
     """
     dx, skip, fit = (0.1, 1, 2) if quick else (0.05, 2, 3)
     metrics, profiles, particles, steps = {}, {}, 0, 0
@@ -270,6 +257,24 @@ def inclined_wall_3d(quick: bool) -> dict:
     steepest face (15 deg) errs most. The measured trade (``python benchmarks/tanks_3d_trade.py
     inclined --dx DX --angle BETA``), the quick variant and the figures:
     docs/validation/inclined-wall-3d_history.md.
+
+    Measured trade (``python benchmarks/tanks_3d_trade.py inclined --dx DX --angle BETA``, one
+    thread; RMS of k_p up the inclined face on the mid-plane against Chwang; "tank": against
+    this tank's exact pressure; left: the vertical side; 2-D: the section, same settings):
+
+    ======  =====  =======  =========  =====  =======  ======  ======  ======  ======
+    dx [m]  beta   periods  particles  steps  CPU [s]  Chwang  tank    left    2-D
+    ======  =====  =======  =========  =====  =======  ======  ======  ======  ======
+    0.10    15     1 + 1    5094       3040   56       0.050   0.053   0.060   0.045
+    0.10    30     1 + 1    5331       3040   43       0.022   0.021   0.060   0.022
+    0.10    45     1 + 1    5694       3040   46       0.010   0.010   0.061   0.0065
+    0.075   15     1 + 1    7821       4080   80       0.037   0.034   0.021   0.038
+    0.075   30     1 + 1    8184       4080   82       0.029   0.026   0.021   0.029
+    0.075   45     1 + 1    8727       4080   88       0.0053  0.0054  0.021   0.0084
+    0.05    15     1 + 1    15501      6080   246      0.038   0.034   0.031   0.036
+    0.05    30     1 + 1    16251      6080   246      0.025   0.026   0.031   0.023
+    0.05    45     1 + 1    17322      6080   259      0.0078  0.0098  0.030   0.0044
+    ======  =====  =======  =========  =====  =======  ======  ======  ======  ======
     """
     if quick:
         settings = dict(periods_skip=1, periods_fit=1, c0=700.0, walls="adami")
@@ -469,35 +474,11 @@ def cylinder_tank_case(quick: bool) -> dict:
     the bottom); Petrov-Moiseev (Sunara et al. 2021, Eq. 20, what the paper compares with) is a Ritz
     approximation 0.15 kPa RMS from it on this tank (2.53 kPa at the bottom).
 
-    Measured (2026-11-25, AMD EPYC, 2 cores shared with other jobs: CPU seconds of one
-    thread, ``time.process_time``, from ``python benchmarks/tanks_3d_trade.py cylinder --dx
-    DX --skip S --fit F``; wall seconds of ``cosim validate cylinder-tank [--quick]`` on
-    the machine loaded by up to ten other jobs, so long, where measured):
-
-    ======  =====  =======  =========  =====  ==========  ==========  ==========  ======  =======  ========
-    dx [m]  rows   periods  particles  steps  x-z plane   vs Petrov-  round the   base    CPU [s]  wall [s]
-                                              RMS [kPa]   Moiseev     wall [kPa]  [kPa]
-    ======  =====  =======  =========  =====  ==========  ==========  ==========  ======  =======  ========
-    0.10    6      1 + 2    5674       3120   0.29        0.42        0.21        2.51    42       85
-    0.10    6      2 + 3    5674       5200   0.30        0.42        0.21        2.51    83
-    0.075   8      2 + 3    10507      6800   0.216       0.336       0.153       2.49    169
-    0.05    12     2 + 3    28176      10200  0.112       0.229       0.081       2.45    630      4727
-    ======  =====  =======  =========  =====  ==========  ==========  ==========  ======  =======  ========
-
-    (quick: 1 + 2 periods; full: 2 + 3. Exact base 2.41 / 2.42 kPa at the lowest row's
-    height.) The stated target (0.127 kPa) is met at dx = 0.05 m; the error falls by 1.4
-    and 1.9 with each step in dx (0.30 / 0.216 / 0.112 kPa), the CPU time rises as
-    dx^-2.9 (particles x steps). Round the wall the amplitude follows its own value at
-    phi = 0 times cos(phi) within 0.03 kPa at the lowest row at every dx; out of phase
-    below 0.11 kPa. The row next to the free surface carries most of the error (0.72
-    against 0.37 kPa at 0.05 m, 1.05 against 0.50 at 0.075 m, 1.29 against 0.63 at 0.1 m:
-    the SPH surface holds p_d away from zero over ~dx, as in westergaard); it halves with
-    dx. The stated target is against Petrov-Moiseev (Sunara et al. 2021, Eq. 20-21): 0.42 / 0.336 / 0.229
-    kPa (not met at any dx; Eq. 20 itself lies 0.149 kPa from the exact series), so the
-    exact series is judged, a declared departure. The bottom along x (Eq. 21's place,
-    reported; 2026-11-26, ``cosim validate cylinder-tank``, 11.8 CPU-min at 0.05 m, loaded):
-    ours 0.024 / 0.012 kPa RMS from the exact series (:func:`cylinder_bottom_series`) at
-    dx = 0.1 / 0.05 m, 0.146 / 0.147 kPa from Eq. 21, which lies 0.140 kPa from the exact.
+    The stated target (0.127 kPa) is met at dx = 0.05 m against the exact series; against
+    Petrov-Moiseev (Sunara et al. 2021, Eq. 20-21), itself 0.149 kPa from the exact series, it is
+    not met at any dx, so the exact series is judged, a declared departure. The measured table
+    (``python benchmarks/tanks_3d_trade.py cylinder --dx DX``), the row next to the free surface
+    and the bottom along x: docs/validation/cylinder-tank_history.md.
     Figures: ``docs/validation/figures/cylinder-tank_dx0.05_*.png``.
     """
     dx, skip, fit = (0.1, 1, 2) if quick else (0.05, 2, 3)
