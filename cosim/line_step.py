@@ -7,7 +7,7 @@ step and held over it while MuJoCo moves the body (RK4 sub-steps: the body's mot
 the held force is exact); then the line moves to the body's new fairlead. The coupler's
 default for dynamic lines (``lines="subiterate"``) advances them with the bodies until the
 bodies' force is the lines' mean force over the step; the coupler applies the same bound
-to it, where it has margin (measured below).
+to it, where it has margin (measured: docs/benchmarks/line_step_sweep.md).
 Each model tells what its line is to the body over a step (``fairlead_stiffness()``,
 :mod:`moorings.fairlead_stiffness`): a spring ``k`` and a dashpot ``c`` at the fairlead.
 

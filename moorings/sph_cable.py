@@ -434,7 +434,7 @@ class SPHCable:
 
     # ------------------------------------------------------------------ stepping
     def step_limit(self) -> CableStepLimit:
-        """The cable's stable step now and what sets it (module docstring, "Time stepping"):
+        """The cable's stable step now and what sets it (module docstring; docs/sph_cable.md, "Time stepping"):
         ``min(courant, safety * damped highest mode, safety * density diffusion)``."""
         seg = np.linalg.norm(np.diff(self.x, axis=0), axis=1)
         ds = float(self.ds.min())

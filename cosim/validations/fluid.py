@@ -163,7 +163,7 @@ def hydrostatic_3d(quick: bool) -> dict:
     truncation bias of the surface rows plus the acoustic noise no longer damped). Fading
     the diffusion where the kernel support is cut by the free surface keeps it by the walls,
     where it does no harm, and takes it from the two rows under the surface: at rest and
-    within 1 %. Its cost in violent flow is in fluid.equations (the 2-D dam break's pressure
+    within 1 %. Its cost in violent flow is in docs/fluid_equations.md (the 2-D dam break's pressure
     noise x 4), so it is this case's set-up, not the solver's default. A 5-layer tank cannot
     meet 1 % at all: 3 of its 5 layers lie within 2h of the surface, and the kernel
     truncation there and at the walls biases the pressure 1.3-1.5 % of rho g H high.
