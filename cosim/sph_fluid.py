@@ -88,11 +88,14 @@ class SPHFluid:
         its own boundary group, so that the impulse the fluid exchanged with it over an
         advance, and its moment about the origin, are known and split between its two
         links with the blending weights (momentum exchanged exactly, as for rigid bodies).
+    zones:
+        Relaxation zones (``fluid.relaxation.Slab``: a near field's, ``fluid.nearfield``),
+        given to the fluid when it is built at attachment.
     """
 
     def __init__(self, config: FluidConfig, fluid_points, walls=(), *, z_surface: float | None = None,
                  body_layers: int | None = None, boundary: str = "mdbc", motions: dict | None = None,
-                 elastic=()):
+                 elastic=(), zones=()):
         if boundary not in ("mdbc", "dbc"):
             raise InputError(f"SPH fluid: boundary={boundary!r}; choose 'mdbc' or 'dbc'")
         self.boundary = boundary
@@ -108,6 +111,7 @@ class SPHFluid:
         self.motions = dict(motions or {})
         self.elastic_beams = list(elastic)
         self.elastic = []  #: bodies.elastic.ElasticBody per beam, made at attachment
+        self.zones = list(zones)  #: relaxation zones (fluid.relaxation), given to the fluid at attachment
 
     # -- coupling ----------------------------------------------------------------
     #: fewest boundary particles a body's geom may have across any of its axes [-]. With
@@ -200,6 +204,7 @@ class SPHFluid:
         self.fluid = Fluid(c, ps)
         for group, motion in self.motions.items():
             self.fluid.prescribe_motion(group, motion)
+        self.fluid.zones.extend(self.zones)
         self.n_bodies = bodies.n_bodies
         self._mdbc = None
         if self.boundary == "mdbc":

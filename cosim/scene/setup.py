@@ -8,7 +8,7 @@ picks, from the scene:
 ================  ========================================  =========================================
 set-up            picked when the scene has                 FluidConfig settings (2-D / 3-D)
 ================  ========================================  =========================================
-``waves``         a wavemaker (``waves``)                   ``TRAVELLING_WAVES``: h = 2 dx, walls
+``waves``         waves (a wavemaker, a near field's sea)   ``TRAVELLING_WAVES``: h = 2 dx, walls
                                                             "adami", diffusion faded under the
                                                             surface, slip walls, alpha = 0.002
 ``sloshing``      a moving tank (``base_motion``)           2-D: ``SLOSHING_2D`` (h = 2 dx, walls
@@ -47,7 +47,8 @@ CONFIG_FIELDS = ("c0", "c0_factor", "u_max", "h_coef", "kernel", "walls", "alpha
 
 _SLOSHING_3D = {"walls": "adami", "diffusion_at_surface": False, "h_coef": 2.0}
 _REASONS = {
-    "waves": "the scene has a wavemaker: waves keep linear theory's speed and height",
+    "waves": "the scene has waves (a wavemaker, or an incident sea through a near field): waves keep linear theory's "
+             "speed and height",
     "sloshing": "the tank moves: sloshing frequencies and wall pressures need the wave set-up",
     "impact": "water blocks in a tank (a dam break): the solver's defaults, which keep violent flow's pressure "
               "noise low",

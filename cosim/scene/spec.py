@@ -395,7 +395,47 @@ def arch_rib_monitors(rib: ArchRib, size: float, heights=None) -> tuple:
     return tuple(out)
 
 
-DOMAINS = (Tank, Flume, InclinedTank, CylinderTank, PolygonTank, ArchRib)
+@dataclass(frozen=True)
+class NearField(Spec):
+    """An SPH near field inside the scene's incident sea (``waves`` of kind "regular" or
+    "irregular", travelling along +x): a box of water ``depth`` [m] deep over a seabed at
+    z = 0 around the bodies, whose end walls keep the sea's orbits and whose relaxation
+    zones inside them pull the water towards the sea's velocity, so that the incident waves
+    pass through and what the bodies send out dies there (:mod:`fluid.nearfield`). 3-D:
+    slip walls across y at -width/2 and width/2 (the incident flow runs along them), with
+    zones inside them too. The mooring lines are not in the SPH fluid: their anchors may
+    lie outside the box. Extents left unset are chosen from the bodies and the sea
+    (:func:`fluid.nearfield.choose_box`: zones half the wavelength of the shortest wave the
+    bodies send out with energy, water beyond the bodies' reach) and reported with the
+    reasons in summary.json."""
+
+    TAG = ("kind", "nearfield")
+    kind: str = tag("nearfield")
+    depth: float = required(num(None, "still-water depth over the seabed at z = 0", "m", lo=0, lo_open=True,
+                                optional=False))
+    height: float = num(None, "wall height above the seabed (unset: the depth, the sea's highest crest twice, and "
+                              "a margin)", "m", lo=0, lo_open=True)
+    x0: float = num(None, "near end of the water, the zone's wall side (unset: chosen)", "m")
+    x1: float = num(None, "far end of the water (unset: chosen)", "m")
+    width: float = num(None, "3-D: width across y between the side walls, centred on y = 0 (unset: chosen)", "m",
+                       lo=0, lo_open=True)
+    zone: float = num(None, "width of each relaxation zone inside the end (and, 3-D, side) walls (unset: chosen)",
+                      "m", lo=0, lo_open=True)
+    rate: float = num(2.0, "relaxation rate at the walls, in the sea's (peak) angular frequencies", lo=0,
+                      lo_open=True, hi=50)
+
+    def validate(self):
+        if self.height is not None and self.height <= self.depth:
+            raise SceneError("height", f"{self.height} m must exceed the depth {self.depth} m")
+        if self.x0 is not None and self.x1 is not None and not self.x1 > self.x0:
+            raise SceneError("x1", f"{self.x1} m must exceed x0 = {self.x0} m")
+
+    @property
+    def level(self):
+        return self.depth
+
+
+DOMAINS = (Tank, Flume, InclinedTank, CylinderTank, PolygonTank, ArchRib, NearField)
 
 
 # ------------------------------------------------------------------------ excitations
@@ -981,7 +1021,7 @@ class Scene(Spec):
 
 
 __all__ = ["World", "NoFluid", "Analytic", "Potential", "SPH", "Block", "Tank", "Beach", "Flume", "InclinedTank",
-           "CylinderTank", "PolygonTank", "ArchRib", "arch_rib_monitors", "Piston", "Flap", "PaddleRecord",
+           "CylinderTank", "PolygonTank", "ArchRib", "NearField", "arch_rib_monitors", "Piston", "Flap", "PaddleRecord",
            "LinearWaves", "RegularWaves", "IrregularWaves",
            "Shake", "Roll", "TableMotion",
            "Earthquake", "Record", "GroundMotion", "Box", "Cylinder", "Sphere", "MJCF", "ElasticPlate", "Line",
