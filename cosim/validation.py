@@ -36,7 +36,8 @@ CASE_MODULES = ("cosim.validations.catenary", "cosim.validations.cable", "cosim.
                 "cosim.validations.arch_rib", "cosim.validations.elastic_gate",
                 "cosim.validations.dambreak_lobovsky", "cosim.validations.long_period",
                 "cosim.validations.elastic_table2", "cosim.validations.wind_turbine",
-                "cosim.validations.wave_propagation", "cosim.validations.potential")
+                "cosim.validations.wave_propagation", "cosim.validations.potential",
+                "cosim.validations.nearfield")
 
 #: where the stated targets are written
 VALIDATION_DOC = "docs/VALIDATION.md"

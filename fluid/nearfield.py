@@ -170,6 +170,11 @@ def near_field_box(dx: float, x0: float, x1: float, sea, height: float, zone: fl
 #: the fewest kernel supports (2 h) a relaxation zone spans, and the water kept between a
 #: body's reach and a zone: a zone thinner than a few supports is a wall to the waves
 MIN_ZONE_SUPPORTS, MIN_MARGIN_SUPPORTS = 4, 2
+#: ``k size`` below which bodies count as small against the sea's wavelength (their zones
+#: sized by their own periods): their scattered and radiated waves at the sea's period are
+#: then small (diffraction is commonly neglected up to D/L ~ 0.2, k a ~ 0.6, the Morison
+#: regime of Sarpkaya & Isaacson 1981; stricter here, for radiation near resonance)
+SMALL_BODY_KA = 0.1
 
 
 @dataclass(frozen=True)
@@ -189,9 +194,9 @@ class BoxChoice:
                 "height_m": self.height, "reasons": dict(self.reasons)}
 
 
-def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(), symmetric: bool = False,
-               dim: int = 2, zone: float | None = None, x=(None, None), width: float | None = None,
-               height: float | None = None) -> BoxChoice:
+def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(), size: float = 0.0,
+               symmetric: bool = False, dim: int = 2, zone: float | None = None, x=(None, None),
+               width: float | None = None, height: float | None = None) -> BoxChoice:
     """A near-field box for bodies whose horizontal extent is ``footprint = (lo, hi)``
     ((x,) or (x, y) corners [m]; no bodies: a point), in ``sea`` (heading +x), at smoothing
     length ``h`` [m].
@@ -200,11 +205,14 @@ def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(
       bodies' own natural ``periods`` [s] (heave, pitch: a free body rings at them). A
       relaxation zone reflects the less the wider it is against the wavelength (Jacobsen,
       Fuhrman & Fredsøe 2012 use one to two); the zone is half the wavelength of the
-      longest of those periods that is not longer than the sea's peak period (its
-      reflection measured in docs/validation/nearfield.md), and at least
-      ``MIN_ZONE_SUPPORTS`` kernel supports. Waves longer than the
-      sea's are not absorbed by width but pass with the sea: a body small against the
-      wavelength radiates little at the sea's period (its damping falls as (ka)^n).
+      longest of those periods that is not longer than the sea's peak period, and at least
+      ``MIN_ZONE_SUPPORTS`` kernel supports. The sea's own period counts unless the bodies
+      are small against its wavelength, ``k size <= SMALL_BODY_KA`` (``size`` [m] the
+      largest body's half extent across the waves): a small body scatters and radiates
+      little at the sea's period, and the waves it rings with are its own, shorter ones.
+      Longer waves are not absorbed by width but pass with the sea. Measured on a 2-D
+      moored box (k size = 0.46, docs/validation/nearfield.md): zones of half its heave
+      period's wavelength cut its heave by a third, half the sea's left it within 6 %.
     - Between the bodies and the zones: ``reach`` [m] (how far a body moves from its place:
       the sea's orbit amplitude, its drift) and ``MIN_MARGIN_SUPPORTS`` supports of still
       water, so that no body enters a zone.
@@ -217,12 +225,19 @@ def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(
     reasons = {}
     peak = sea.peak_period
     if zone is None:
-        kept = [p for p in periods if 0.0 < p <= peak]
+        ka = float(wavenumbers(2.0 * math.pi / peak, sea.depth, sea.g)) * size
+        small = bool(periods) and ka <= SMALL_BODY_KA
+        kept = [p for p in periods if 0.0 < p <= peak] if small else []
         p = max(kept, default=peak)
         wl = 2.0 * math.pi / float(wavenumbers(2.0 * math.pi / p, sea.depth, sea.g))
         floor = MIN_ZONE_SUPPORTS * 2.0 * h
         zone = max(0.5 * wl, floor)
-        what = ("the bodies' natural period" if kept else "the sea's peak period") + f" {p:.4g} s"
+        if kept:
+            what = f"the bodies' natural period {p:.4g} s (small against the sea's wavelength: k size = {ka:.3g})"
+        elif periods and not small:
+            what = f"the sea's peak period {p:.4g} s (the bodies are not small against it: k size = {ka:.3g})"
+        else:
+            what = f"the sea's peak period {p:.4g} s"
         reasons["zone"] = (f"half the wavelength {wl:.4g} m of {what}" if zone > floor else
                            f"{MIN_ZONE_SUPPORTS} kernel supports (half the wavelength of {what} is less)")
     else:

@@ -66,3 +66,14 @@ def test_a_box_shorter_than_its_zones_is_refused():
         near_field_box(0.02, 0.0, 0.5, SEA, 0.45, 0.3)
     with pytest.raises(InputError, match="height"):
         near_field_box(0.02, 0.0, 2.0, SEA, 0.25, 0.3)
+
+
+@pytest.mark.slow
+def test_the_quick_near_field_case_carries_the_sea():
+    """cosim validate nearfield-waves --quick: linear and Stokes-2 waves and a JONSWAP sea
+    through the box at H/dx = 3, judged by the case's own tolerances (heights 5 %, phases
+    5 % of a period, the level's drift 1 % of the depth, Hs, Tp 5 %, spectrum 10 %)."""
+    from cosim import validation
+
+    r = validation.run("nearfield-waves", quick=True)
+    assert r["passed"], r["outside_tolerance"]

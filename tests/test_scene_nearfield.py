@@ -103,9 +103,14 @@ def test_a_scene_gets_its_box_from_its_bodies_and_sea(tmp_path):
     sea = RegularWave(0.04, 1.0, 0.3, level=0.3)
     kd = sea.wavenumber * 0.3
     assert reach(s) == pytest.approx(2 * 0.02 / math.tanh(kd))
-    tn = heave_period(s.bodies[0], 2, 1000.0, G)
-    assert c.zone == pytest.approx(0.5 * _wavelength(tn, 0.3), rel=1e-9)
+    # k size = 0.46: not small against the sea's wavelength, whose half sets the zones
+    assert c.zone == pytest.approx(0.5 * sea.wavelength, rel=1e-9) and "not small" in c.reasons["zone"]
     assert 0.5 * (c.x[0] + c.x[1]) == pytest.approx(1.2)  # the body in the middle
+    # a small body (k size <= 0.1): its own heave period's wavelength
+    tiny = _scene(tmp_path, SCENE, "bodies[0].size=[0.04, 0.02]")
+    tn = heave_period(tiny.bodies[0], 2, 1000.0, G)
+    assert box_for(tiny).zone == pytest.approx(max(0.5 * _wavelength(tn, 0.3), MIN_ZONE_SUPPORTS * 2 * 0.04),
+                                               rel=1e-9)
     # no body: the sea's wavelength sets the zones
     bare = _scene(tmp_path, SCENE.split("[[bodies]]")[0] + "[probes]\ngauges = [0.0]\n")
     assert box_for(bare).zone == pytest.approx(0.5 * sea.wavelength, rel=1e-9)

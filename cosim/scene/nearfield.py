@@ -8,6 +8,7 @@ import math
 
 import numpy as np
 
+from cosim.scene.checks import _extent
 from cosim.scene.spec import MJCF, Box, Cylinder, ElasticPlate
 
 
@@ -40,8 +41,6 @@ def heave_period(b, dim: int, rho: float, g: float) -> float | None:
 def footprint(scene) -> tuple:
     """The bodies' horizontal extent ``(lo, hi)``: (x,) or (x, y) corners [m] of the boxes
     round them (a point at the origin without bodies)."""
-    from cosim.scene.checks import _extent
-
     dim = scene.world.dim
     n = dim - 1
     lo, hi = [math.inf] * n, [-math.inf] * n
@@ -76,11 +75,12 @@ def box_for(scene):
     periods = [p for p in (heave_period(b, dim, rho, g) for b in scene.bodies if not isinstance(b, (MJCF, ElasticPlate)))
                if p is not None]
     if any(isinstance(b, MJCF) for b in scene.bodies):
-        fp = ((0.0,) * (dim - 1), (0.0,) * (dim - 1))
+        fp, size = ((0.0,) * (dim - 1), (0.0,) * (dim - 1)), 0.0
     else:
         fp = footprint(scene)
-    return choose_box(sea, h, fp, reach=reach(scene), periods=periods, dim=dim, zone=d.zone, x=(d.x0, d.x1),
-                      width=d.width, height=d.height)
+        size = max((_extent(b, dim)[0] for b in scene.bodies), default=0.0)
+    return choose_box(sea, h, fp, reach=reach(scene), periods=periods, size=size, dim=dim, zone=d.zone,
+                      x=(d.x0, d.x1), width=d.width, height=d.height)
 
 
 def reach(scene) -> float:
