@@ -92,7 +92,7 @@ class NearFieldBox:
     2, to be moved by :func:`following_wall`), the x range ``x0 .. x1`` [m] of the water,
     3-D its y range ``y`` [m] (None in 2-D), the relaxation zones' width ``zone`` [m] inside
     each end wall and ``side_zone`` [m] inside each side wall (None: no side zones, a
-    channel), none along a symmetry plane at ``y[0]`` (``symmetric``)."""
+    channel)."""
 
     fluid: np.ndarray
     walls: list
@@ -101,31 +101,28 @@ class NearFieldBox:
     zone: float
     y: tuple | None = None
     side_zone: float | None = None
-    symmetric: bool = False
 
     def zones(self, sea, rate: float, drift: bool = True) -> list:
         """The relaxation zones (weight 1 at the walls), relaxing at ``rate`` [1/s] there
         towards the sea's velocity (``drift``: and its return current,
         :func:`return_current`): one inside each end wall, 3-D one inside each side wall
-        that is not a symmetry plane when the box has side zones."""
+        when the box has side zones."""
         target = sea_velocity(sea, drift)
         out = [Slab(0, self.x0 + self.zone, self.x0, rate, target), Slab(0, self.x1 - self.zone, self.x1, rate, target)]
         if self.y is not None and self.side_zone is not None:
             (y0, y1), w = self.y, self.side_zone
-            out.append(Slab(1, y1 - w, y1, rate, target))
-            if not self.symmetric:
-                out.append(Slab(1, y0 + w, y0, rate, target))
+            out += [Slab(1, y1 - w, y1, rate, target), Slab(1, y0 + w, y0, rate, target)]
         return out
 
 
 def near_field_box(dx: float, x0: float, x1: float, sea, height: float, zone: float, *, layers: int = 4,
-                   y: tuple | None = None, side_zone: float | None = None, symmetric: bool = False,
+                   y: tuple | None = None, side_zone: float | None = None,
                    slack: float | None = None) -> NearFieldBox:
     """Water from ``x0`` to ``x1`` [m] over the sea's seabed (``sea.level - sea.depth``) up
     to its still level, spacing ``dx`` [m]; walls ``height`` [m] above the seabed and
     ``layers`` thick; relaxation zones ``zone`` [m] wide inside each end wall; 3-D across
     ``y = (y0, y1)`` [m] with fixed side walls beyond, zones ``side_zone`` [m] wide inside
-    them (None: none) but for a symmetry plane at ``y0`` (``symmetric``). The seabed runs on beyond each end wall by
+    them (None: none). The seabed runs on beyond each end wall by
     ``slack`` [m] (default: the sea's largest horizontal excursion there and a layer), so
     that the moving walls always stand on it."""
     for name, v in (("dx", dx), ("height", height), ("zone", zone)):
@@ -134,7 +131,7 @@ def near_field_box(dx: float, x0: float, x1: float, sea, height: float, zone: fl
     if not x1 - x0 > 2.0 * zone:
         raise InputError(f"near field: the box {x0} .. {x1} m is not longer than its two zones of {zone} m; "
                          "lengthen it or narrow the zones")
-    if y is not None and side_zone is not None and not y[1] - y[0] > (1.0 if symmetric else 2.0) * side_zone:
+    if y is not None and side_zone is not None and not y[1] - y[0] > 2.0 * side_zone:
         raise InputError(f"near field: the box's width {y[0]} .. {y[1]} m is not wider than its side zones of "
                          f"{side_zone} m; widen it or narrow the zones")
     bed = sea.level - sea.depth
@@ -164,7 +161,7 @@ def near_field_box(dx: float, x0: float, x1: float, sea, height: float, zone: fl
     walls = [(np.concatenate([floor] + sides), Kind.FIXED_WALL, FIXED_GROUP), (near, Kind.MOVING_WALL, NEAR_END_GROUP),
              (far, Kind.MOVING_WALL, FAR_END_GROUP)]
     return NearFieldBox(water, walls, float(x0), float(x1), float(zone), None if y is None else tuple(map(float, y)),
-                        None if y is None or side_zone is None else float(side_zone), bool(symmetric and y is not None))
+                        None if y is None or side_zone is None else float(side_zone))
 
 
 #: the fewest kernel supports (2 h) a relaxation zone spans, and the water kept between a
@@ -195,7 +192,7 @@ class BoxChoice:
 
 
 def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(), size: float = 0.0,
-               symmetric: bool = False, dim: int = 2, zone: float | None = None, x=(None, None),
+               dim: int = 2, zone: float | None = None, x=(None, None),
                width: float | None = None, height: float | None = None) -> BoxChoice:
     """A near-field box for bodies whose horizontal extent is ``footprint = (lo, hi)``
     ((x,) or (x, y) corners [m]; no bodies: a point), in ``sea`` (heading +x), at smoothing
@@ -220,7 +217,7 @@ def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(
       of its amplitudes) and two supports.
 
     ``zone``, ``x = (x0, x1)``, ``width`` and ``height`` given are kept (reason "given").
-    3-D: the box is centred on y = 0 (``symmetric``: from y = 0, a symmetry plane)."""
+    3-D: the box is centred across y on the bodies."""
     lo, hi = (np.atleast_1d(np.asarray(v, float)) for v in footprint)
     reasons = {}
     peak = sea.peak_period
@@ -250,13 +247,14 @@ def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(
     reasons["x1"] = "given" if x[1] is not None else why
     y = None
     if dim == 3:
+        centre = 0.5 * float(lo[1] + hi[1])
         if width is None:
-            half = max(abs(lo[1]), abs(hi[1])) + margin + zone
-            reasons["width"] = why + (" (y >= 0: a symmetry plane at y = 0)" if symmetric else ", on both sides")
+            half = max(hi[1] - centre, centre - lo[1]) + margin + zone
+            reasons["width"] = why + ", on both sides"
         else:
             half = 0.5 * float(width)
             reasons["width"] = "given"
-        y = (0.0 if symmetric else -half, half)
+        y = (centre - half, centre + half)
     if height is None:
         crest = 2.0 * float(np.sum(sea.components.amplitude))
         height = sea.depth + 2.0 * crest + 2.0 * 2.0 * h

@@ -92,9 +92,10 @@ def test_the_zone_is_half_the_wavelength_of_the_longest_natural_period_within_th
     assert (g.zone, g.x[0], g.height) == (0.3, -1.0, 0.5)
     assert g.reasons["zone"] == g.reasons["x0"] == g.reasons["height"] == "given"
     assert "natural period" in c.reasons["zone"] and "peak period" in choose_box(sea, h, ((0,), (0,))).reasons["zone"]
-    # 3-D: across y as along x, centred on y = 0
+    # 3-D: across y as along x, centred on the bodies
     c3 = choose_box(sea, h, ((1.1, -0.2), (1.3, 0.3)), reach=0.05, periods=(0.7,), dim=3)
-    assert c3.y == pytest.approx((-(0.3 + margin + c3.zone), 0.3 + margin + c3.zone))
+    assert c3.y == pytest.approx((-0.2 - margin - c3.zone, 0.3 + margin + c3.zone))
+    assert choose_box(sea, h, ((1.1, -0.2), (1.3, 0.3)), dim=3, width=2.0).y == pytest.approx((-0.95, 1.05))
 
 
 def test_a_scene_gets_its_box_from_its_bodies_and_sea(tmp_path):

@@ -72,8 +72,8 @@ def box_for(scene):
     sea = incident_sea(scene)
     h = fluid_config(scene, choose(scene)).h
     rho, g = scene.fluid.rho0, scene.world.gravity
-    periods = [p for p in (heave_period(b, dim, rho, g) for b in scene.bodies if not isinstance(b, (MJCF, ElasticPlate)))
-               if p is not None]
+    rigid = [b for b in scene.bodies if not isinstance(b, (MJCF, ElasticPlate))]
+    periods = [p for p in (heave_period(b, dim, rho, g) for b in rigid) if p is not None]
     if any(isinstance(b, MJCF) for b in scene.bodies):
         fp, size = ((0.0,) * (dim - 1), (0.0,) * (dim - 1)), 0.0
     else:

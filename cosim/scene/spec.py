@@ -402,12 +402,12 @@ class NearField(Spec):
     z = 0 around the bodies, whose end walls keep the sea's orbits and whose relaxation
     zones inside them pull the water towards the sea's velocity, so that the incident waves
     pass through and what the bodies send out dies there (:mod:`fluid.nearfield`). 3-D:
-    slip walls across y at -width/2 and width/2 (the incident flow runs along them), with
-    zones inside them too. The mooring lines are not in the SPH fluid: their anchors may
-    lie outside the box. Extents left unset are chosen from the bodies and the sea
-    (:func:`fluid.nearfield.choose_box`: zones half the wavelength of the shortest wave the
-    bodies send out with energy, water beyond the bodies' reach) and reported with the
-    reasons in summary.json."""
+    slip walls across y, width/2 each side of the bodies (the incident flow runs along
+    them), with zones inside them too. The mooring lines are not in the SPH fluid: their
+    anchors may lie outside the box. Extents left unset are chosen from the bodies and the
+    sea (:func:`fluid.nearfield.choose_box`: zones half the sea's wavelength, or half that
+    of the bodies' heave period when they are small against the sea's; water beyond the
+    bodies' reach) and reported with the reasons in summary.json."""
 
     TAG = ("kind", "nearfield")
     kind: str = tag("nearfield")
@@ -417,7 +417,7 @@ class NearField(Spec):
                               "a margin)", "m", lo=0, lo_open=True)
     x0: float = num(None, "near end of the water, the zone's wall side (unset: chosen)", "m")
     x1: float = num(None, "far end of the water (unset: chosen)", "m")
-    width: float = num(None, "3-D: width across y between the side walls, centred on y = 0 (unset: chosen)", "m",
+    width: float = num(None, "3-D: width across y between the side walls, centred on the bodies (unset: chosen)", "m",
                        lo=0, lo_open=True)
     zone: float = num(None, "width of each relaxation zone inside the end (and, 3-D, side) walls (unset: chosen)",
                       "m", lo=0, lo_open=True)
