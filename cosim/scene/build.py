@@ -478,37 +478,18 @@ def fairleads_at_start(scene) -> np.ndarray:
 
 
 def _mooring(scene, level, rho, workdir: Path):
-    """The mooring participant of the scene's lines and model, with the MuJoCo site of
-    each fairlead."""
-    m, g = scene.moorings, scene.world.gravity
+    """The mooring participant of the scene's lines and model
+    (:data:`cosim.scene.registry.MOORINGS`), with the MuJoCo site of each fairlead."""
+    from cosim.scene.registry import MOORINGS
+
+    m = scene.moorings
     lines = mooring_lines(scene)
-    sites = _fairlead_sites(scene)
-    surface = level if level is not None else math.inf
-    if m.model == "catenary":
-        from moorings import CatenaryMooring
-
-        mooring = CatenaryMooring(lines)
-    elif m.model == "sph-cable":
-        from moorings.sph_cable import SPHCableMooring
-
-        mooring = SPHCableMooring(lines, n_particles=m.segments, water_z=surface, gravity=g, rho_water=rho)
-    elif m.model == "moordyn":
-        from moorings.moordyn_mooring import MoorDynMooring
-
-        mooring = MoorDynMooring(lines, segments=m.segments, water_level=level if level is not None else 0.0,
-                                 rho=rho, g=g)
-    else:
-        from moorings.fmu_export import catenary_fmu_variable_map, export_catenary_fmu
-        from moorings.fmu_mooring import FMUMooring
-
-        workdir.mkdir(parents=True, exist_ok=True)
-        path = export_catenary_fmu(lines, workdir / "mooring.fmu")
-        mooring = FMUMooring(path, lines, catenary_fmu_variable_map(lines))
+    mooring = MOORINGS[m.model].from_scene(scene, lines, level=level, rho=rho, workdir=workdir)
     if any(ln.break_load is not None for ln in lines):
         from moorings.breaking import BreakingMooring
 
         mooring = BreakingMooring(mooring, release=m.release_broken)
-    return mooring, sites, [ln.name for ln in lines]
+    return mooring, _fairlead_sites(scene), [ln.name for ln in lines]
 
 
 def build(scene, workdir: Path) -> Built:

@@ -18,10 +18,11 @@ on this code, ``benchmarks/cost_estimate.py``, ``docs/benchmarks/cost_estimate.m
   stable step from the highest modes of its chain of ``n`` links ``l = L / n`` long
   (bending ``2 sqrt(12 E I / (rho A l^2 (l^2 + t^2)))``, shear ``(2 / l) sqrt(kappa G /
   rho)``, RK4's ``2 sqrt 2 / omega``), ``C_MJ`` per link or body and step.
-- ``lines`` (SPH cable, MoorDyn): each node's internal step, the SPH cable's Courant step
-  ``cfl ds / c`` (``c = sqrt(EA / m)``), MoorDyn's
-  :func:`moorings.moordyn_mooring.internal_step_limits`, advanced ``LINE_ADVANCES`` times
-  per coupling step (the sub-iterated exchange), ``C_NODE`` per node and step.
+- ``lines`` (SPH cable, MoorDyn): each node's internal step (the model's
+  :meth:`~cosim.scene.mooring_models.MooringModel.internal_step`: the SPH cable's Courant
+  step ``cfl ds / c``, ``c = sqrt(EA / m)``, MoorDyn's
+  :func:`moorings.moordyn_mooring.internal_step_limits`), advanced ``LINE_ADVANCES`` times
+  per coupling step (the sub-iterated exchange), the model's ``node_cost`` per node and step.
 - ``coupling``: ``duration / dt_c`` steps, at least one per event; ``dt_c`` the smallest
   of ``coupling.dt``, the SPH step, the analytic fluid's (50 steps per heave period,
   ``m / B`` of its damping, 50 per wave period: ``fluid.analytic.AnalyticFluid.max_dt``) and
@@ -41,6 +42,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+from cosim.scene.registry import MOORINGS
 from cosim.scene.spec import (MJCF, SPH, Analytic, ArchRib, Box, Cylinder, CylinderTank, ElasticPlate, Flap, Flume,
                               InclinedTank, IrregularWaves, LinearWaves, PaddleRecord, Piston, PolygonTank,
                               RegularWaves, Sphere, Tank)
@@ -66,8 +68,6 @@ C_STEP = 3e-4
 C_BODY_STEP = 1.6e-3
 #: CPU [s] per MuJoCo step and body (or plate link)
 C_MJ = 2e-6
-#: CPU [s] per dynamic line node and internal step, by model (measured)
-C_NODE = {"moordyn": 2.3e-7, "sph-cable": 3.3e-7}
 #: the lines' advances per coupling step with the sub-iterated exchange (cosim.line_step)
 LINE_ADVANCES = 2.0
 #: memory [bytes] per event of the run (its time and what is due), per probe sample and column
@@ -318,30 +318,13 @@ def line_steps(scene) -> list[tuple[int, float, float, float]]:
     """Each dynamic line's (index, nodes, internal step [s], simulated time [s] before the
     run: MoorDyn's initial-condition relaxation ``ic_time``)."""
     m = scene.moorings
-    if m is None or m.model not in ("sph-cable", "moordyn"):
+    if m is None:
         return []
     out = []
     for i, ln in enumerate(m.lines):
-        if m.model == "sph-cable":
-            import inspect
-
-            from moorings.sph_cable import SPHCable
-
-            cfl = inspect.signature(SPHCable).parameters["cfl"].default
-            dt, before = cfl * (ln.length / m.segments) / math.sqrt(ln.EA / ln.mass_per_length), 0.0  # Courant
-        else:
-            import inspect
-
-            from moorings.moordyn_mooring import RK2_SAFETY, MoorDynMooring, internal_step_limits
-
-            o = {k: p.default for k, p in inspect.signature(MoorDynMooring).parameters.items()}
-            rho = getattr(scene.fluid, "rho", getattr(scene.fluid, "rho0", o["rho"]))
-            lim = internal_step_limits(ln.length, m.segments, ln.EA, ln.mass_per_length, ln.diameter, rho=rho,
-                                       **{k: o[k] for k in ("damping_ratio", "cd_normal", "ca_normal", "cd_axial",
-                                                            "ca_axial", "seabed_stiffness", "seabed_damping",
-                                                            "drag_speed")})
-            dt, before = RK2_SAFETY * min(lim.values()), o["ic_time"]
-        out.append((i, m.segments + 1, dt, before))
+        step = MOORINGS[m.model].internal_step(scene, ln)
+        if step is not None:
+            out.append((i, m.segments + 1, *step))
     return out
 
 
@@ -430,8 +413,7 @@ def line_coupling_step(scene) -> tuple[float, str]:
     if m is None:
         return math.inf, ""
     dim = scene.world.dim
-    dynamic = m.model in ("sph-cable", "moordyn")
-    damping = 0.8 if m.model == "moordyn" else 15.0 / 32.0 if m.model == "sph-cable" else 0.0
+    dynamic, damping = MOORINGS[m.model].dynamic, MOORINGS[m.model].damping
     added = getattr(scene.fluid, "added_mass", {}) or {}
     best, key = math.inf, ""
     for b in scene.bodies:
@@ -584,7 +566,7 @@ def estimate(scene) -> Estimate:
                          for _, n, dt, before in lines)
         i, _, dt, _ = min(lines, key=lambda x: x[2])
         field = "moorings.segments" if scene.moorings.segments > 200 else f"moorings.lines[{i}].EA"
-        per_s = C_NODE[scene.moorings.model] * node_steps / T
+        per_s = MOORINGS[scene.moorings.model].node_cost * node_steps / T
         terms.append(Term("lines", _by(10 * per_s, CONFIRM_CPU_S, field if _over(T, dt) >= steps else c_field, T),
                           f"{sum(x[1] for x in lines)} nodes, internal steps of {dt:.3g} s ({scene.moorings.model})",
                           per_s * T, 0.0, per_s))

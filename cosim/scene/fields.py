@@ -121,9 +121,16 @@ class Whole(Check):
 
 
 class Choice(Check):
+    """One of ``choices``: a sequence, or a registry (:mod:`cosim.scene.registry`) whose
+    names are read when a value is checked."""
+
     def __init__(self, doc, choices, optional=False):
         super().__init__(doc, "", optional)
-        self.choices = tuple(choices)
+        self._choices = choices if hasattr(choices, "names") else tuple(choices)
+
+    @property
+    def choices(self) -> tuple:
+        return tuple(self._choices.names()) if hasattr(self._choices, "names") else self._choices
 
     def expected(self) -> str:
         return f"one of {', '.join(repr(c) for c in self.choices)} ({self.doc})"

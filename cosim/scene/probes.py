@@ -295,14 +295,18 @@ def series_names(scene) -> list[str]:
             out += [f"{n}.p{k}" for n, b in plates.items() for k in range(b.elements + 1)]
     m = scene.moorings
     if m is not None and p.tensions:
+        from cosim.scene.registry import MOORINGS
+
+        model = MOORINGS[m.model]
         labels = [ln.name or ln.fairlead for ln in m.lines]
         breaking = any(ln.break_load is not None for ln in m.lines)
         out += [f"{n}.tension" for n in labels]
-        if m.model != "fmu" or breaking:  # the models that report it (a breaking line's wrapper always does)
+        if model.anchor_tensions or breaking:  # the models that report it (a breaking line's wrapper always does)
             out += [f"{n}.anchor_tension" for n in labels]
-        if m.model == "catenary" and any(ln.EA is None for ln in m.lines):  # inextensible lines: tethers
+        if model.tethers and any(ln.EA is None for ln in m.lines):  # inextensible lines: tethers
             out += [f"{n}.tether" for n in labels]
-        out += [f"{n}.state" for n in labels]
+        if model.line_states:
+            out += [f"{n}.state" for n in labels]
     sph = isinstance(scene.fluid, SPH)
     sea = (isinstance(scene.fluid, (Analytic, Potential))
            and isinstance(scene.waves, (LinearWaves, RegularWaves, IrregularWaves, Piston, Flap)))

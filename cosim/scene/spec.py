@@ -39,8 +39,8 @@ from pathlib import Path
 from cosim.scene import limits as L
 from cosim.scene.fields import (SceneError, Spec, choice, flag, gauges, is_name, names, num, part, parts, required,
                                 table, text, vec, vecs, whole)
+from cosim.scene.registry import MOORINGS
 
-MOORING_MODELS = ("catenary", "sph-cable", "moordyn", "fmu")
 SETUPS = ("auto", "still", "waves", "sloshing", "impact", "defaults")
 
 
@@ -837,7 +837,7 @@ class Moorings(Spec):
     is watched: the time, line and tension at which its fairlead tension first passes it
     go into the log and ``summary.json`` (``line_breaks``)."""
 
-    model: str = choice("catenary", "the mooring model", MOORING_MODELS)
+    model: str = choice("catenary", "the mooring model", MOORINGS)
     lines: tuple = parts("the lines", Line)
     segments: int = whole(20, "segments per line of the dynamic models (SPH-cable particles, MoorDyn segments)",
                           lo=2)
@@ -847,12 +847,11 @@ class Moorings(Spec):
     def validate(self):
         if not self.lines:
             raise SceneError("lines", "give at least one line (or leave moorings out)")
-        if self.model in ("sph-cable", "moordyn"):
-            for i, ln in enumerate(self.lines):
-                for key in ("EA", "mass_per_length", "diameter"):
-                    if getattr(ln, key) is None:
-                        raise SceneError(f"lines[{i}].{key}", f"the {self.model!r} model needs it for every line; "
-                                         f"give it, or use model = \"catenary\"")
+        for i, ln in enumerate(self.lines):
+            for key in MOORINGS[self.model].line_fields:
+                if getattr(ln, key) is None:
+                    raise SceneError(f"lines[{i}].{key}", f"the {self.model!r} model needs it for every line; "
+                                     f"give it, or use model = \"catenary\"")
 
 
 # ------------------------------------------------------------------------ probes and coupling
@@ -987,4 +986,4 @@ __all__ = ["World", "NoFluid", "Analytic", "Potential", "SPH", "Block", "Tank", 
            "Earthquake", "Record", "GroundMotion", "Box", "Cylinder", "Sphere", "MJCF", "ElasticPlate", "Line",
            "Moorings", "Patch",
            "Probes", "Coupling",
-           "Scene", "SceneError", "MOORING_MODELS", "SETUPS"]
+           "Scene", "SceneError", "SETUPS"]

@@ -31,6 +31,7 @@ from pathlib import Path
 import numpy as np
 
 from cosim.errors import CosimError
+from cosim.scene.registry import MOORINGS
 from cosim.scene.spec import MJCF, SPH, Box, Cylinder, Sphere
 from cosim.study import sweep
 
@@ -59,7 +60,7 @@ def levers(scene) -> list[tuple[str, list[tuple[str, list[str]]]]]:
             out.append(("moorings.lines[*].EA", [(f"{k:g} x", [f"moorings.lines[{i}].EA={ln.EA * k!r}"
                                                                for i, ln in enumerate(m.lines)])
                                                  for k in (1e-3, 1e-1, 1.0, 10.0, 1e3)]))
-        if m.model in ("sph-cable", "moordyn"):
+        if MOORINGS[m.model].dynamic:
             out.append(("moorings.segments", [(str(n), [f"moorings.segments={n}"]) for n in (2, 5, 20, 80)]))
     if not isinstance(f, SPH) and scene.bodies:
         out.append(("coupling.dt", [(f"{v:g} s", [f"coupling.dt={v!r}"]) for v in (1e-3, 1e-2, 0.1, 0.5)]))

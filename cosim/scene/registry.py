@@ -1,0 +1,180 @@
+"""The one place where each kind of scene plug-in is listed. Each registry holds the
+built-in entries (named here, imported on first use, so that a scene loads only what it
+names) and those that other packages declare in an entry-point group of their
+distribution's metadata:
+
+    [project.entry-points."cosim.moorings"]        # pyproject.toml of another package
+    my-line = "my_package.lines:MyLineModel"
+
+====================  =====================  ==============================================
+registry              entry-point group      an entry (see its interface)
+====================  =====================  ==============================================
+:data:`MOORINGS`      ``cosim.moorings``     a :class:`cosim.scene.mooring_models.MooringModel`
+====================  =====================  ==============================================
+
+An entry point's name is the entry's name (a scene class's tag value); what it points to
+is registered by :meth:`Registry.register`, the same call a package makes by hand. An
+entry that does not fit, or a name taken twice, is refused with a
+:class:`~cosim.errors.ConfigurationError` naming the entry point and its distribution.
+"""
+
+from __future__ import annotations
+
+import difflib
+from importlib import import_module
+from importlib.metadata import entry_points
+from typing import Any, Callable, Iterator
+
+from cosim.errors import ConfigurationError, InputError
+
+
+def _import(target: str):
+    """The object ``"module:attribute"`` names."""
+    module, _, attr = target.partition(":")
+    return getattr(import_module(module), attr)
+
+
+class Registry:
+    """Named entries of one kind, in registration order: the built-ins, then plug-ins.
+
+    ``what``: the kind, for messages ("mooring model"); ``group``: the entry-point group
+    searched; ``builtins``: ``"module:attribute"`` of the built-in entries, a sequence of
+    scene classes (named by their tag) or a mapping of names to entries, imported on first
+    use; ``check(name, entry)``: returns the entry to keep (it may, e.g., instantiate a
+    class) or raises :class:`~cosim.errors.ConfigurationError` saying what it lacks."""
+
+    def __init__(self, what: str, group: str, builtins: str, check: Callable[[str, Any], Any]):
+        self.what, self.group = what, group
+        self._builtins, self._check = builtins, check
+        self._entries: dict[str, Any] = {}
+        self._discovered = False
+
+    # -- registering
+    def register(self, name: str, entry: Any, *, replace: bool = False) -> Any:
+        """Add ``entry`` under ``name`` (what an entry point of :attr:`group` does);
+        returns the entry kept. A name already taken by another entry is refused unless
+        ``replace``."""
+        self._discover()
+        return self._add(name, entry, replace)
+
+    def _add(self, name, entry, replace=False):
+        if not isinstance(name, str) or not name or not all(c.isalnum() or c in "_-" for c in name):
+            raise ConfigurationError(f"{self.what} {name!r}: a name is letters, digits, '_' and '-'")
+        kept = self._check(name, entry)
+        old = self._entries.get(name)
+        if old is not None and not _same(old, kept) and not replace:
+            raise ConfigurationError(f"{self.what} {name!r} is registered twice ({_where(old)} and {_where(kept)}); "
+                                     f"give one of them another name, or register with replace=True")
+        self._entries[name] = kept
+        return kept
+
+    def unregister(self, name: str) -> None:
+        """Remove the entry ``name`` (a plug-in's, e.g. at the end of a test)."""
+        self._discover()
+        if self._entries.pop(name, None) is None:
+            raise InputError(f"no {self.what} {name!r} is registered")
+
+    def rediscover(self) -> None:
+        """Look again for entry points of :attr:`group` (after a package was installed
+        in a running interpreter); entries registered by hand stay."""
+        self._discovered = False
+        self._discover()
+
+    def _discover(self) -> None:
+        if self._discovered:
+            return
+        self._discovered = True  # first: a built-in module that reads the registry while it loads finds it
+        try:
+            builtins = _import(self._builtins)
+            pairs = builtins.items() if isinstance(builtins, dict) else ((c.TAG[1], c) for c in builtins)
+            for name, entry in pairs:
+                if name not in self._entries:
+                    self._add(name, entry)
+            for ep in entry_points(group=self.group):
+                dist = getattr(getattr(ep, "dist", None), "name", None) or "an installed package"
+                try:
+                    self._add(ep.name, ep.load())
+                except Exception as e:
+                    raise ConfigurationError(f"the entry point {ep.name!r} = {ep.value!r} of {dist} (group "
+                                             f"{self.group!r}) cannot be registered as a {self.what}: {e}; fix or "
+                                             f"uninstall {dist}") from e
+        except BaseException:
+            self._discovered = False
+            raise
+
+    # -- reading
+    def names(self) -> list[str]:
+        self._discover()
+        return list(self._entries)
+
+    def classes(self) -> tuple:
+        """The entries, in order (for a registry of scene classes: the classes a scene accepts)."""
+        self._discover()
+        return tuple(self._entries.values())
+
+    def items(self) -> Iterator[tuple[str, Any]]:
+        self._discover()
+        return iter(list(self._entries.items()))
+
+    def __contains__(self, name) -> bool:
+        self._discover()
+        return name in self._entries
+
+    def __getitem__(self, name: str) -> Any:
+        self._discover()
+        if name not in self._entries:
+            hint = difflib.get_close_matches(name, list(self._entries), n=1) if isinstance(name, str) else []
+            raise InputError(f"no {self.what} {name!r}{'; did you mean ' + repr(hint[0]) + '?' if hint else ''}; "
+                             f"registered: {', '.join(map(repr, self._entries))}")
+        return self._entries[name]
+
+    def __repr__(self) -> str:
+        return f"Registry({self.what!r}, group={self.group!r})"
+
+
+def _same(a, b) -> bool:
+    """The same entry: one object, or two instances of one class (registered twice)."""
+    return a is b or (not isinstance(a, type) and type(a) is type(b))
+
+
+def _where(entry) -> str:
+    obj = entry if isinstance(entry, type) else type(entry)
+    return f"{obj.__module__}.{obj.__qualname__}"
+
+
+def _scene_class(tag: str):
+    """The check of a registry of scene classes: a :class:`~cosim.scene.fields.Spec`
+    subclass whose ``TAG`` is ``(tag, name)``."""
+
+    def check(name, entry):
+        from cosim.scene.fields import Spec
+
+        if not (isinstance(entry, type) and issubclass(entry, Spec)):
+            raise ConfigurationError(f"{name!r}: {entry!r} is not a scene class (a frozen dataclass deriving "
+                                     f"cosim.scene.fields.Spec)")
+        if entry.TAG != (tag, name):
+            raise ConfigurationError(f"{name!r}: {entry.__name__}.TAG is {entry.TAG!r}; give it TAG = ({tag!r}, "
+                                     f"{name!r}) and a field {tag} = tag({name!r})")
+        return entry
+
+    return check
+
+
+def _instance_of(where: str):
+    """The check of a registry of objects deriving the class ``where`` names: a subclass
+    is instantiated without arguments."""
+
+    def check(name, entry):
+        base = _import(where)
+        if isinstance(entry, type) and issubclass(entry, base):
+            entry = entry()
+        if not isinstance(entry, base):
+            raise ConfigurationError(f"{name!r}: {entry!r} is not a {base.__name__} (derive {where.replace(':', '.')} "
+                                     f"and register the class or an instance)")
+        return entry
+
+    return check
+
+
+MOORINGS = Registry("mooring model", "cosim.moorings", "cosim.scene.mooring_models:MODELS",
+                    _instance_of("cosim.scene.mooring_models:MooringModel"))
