@@ -1,20 +1,27 @@
 """A module acting as another package that plugs into cosim's scenes
-(:mod:`cosim.scene.registry`): a mooring model of weightless elastic tethers. Its
-``pyproject.toml`` would declare it as
+(:mod:`cosim.scene.registry`): a mooring model of weightless elastic tethers and a capsule
+body shape. Its ``pyproject.toml`` would declare them as
 
     [project.entry-points."cosim.moorings"]
     tether = "plugin_example:Tether"
 
-and ``tests/test_registry.py`` registers it both ways: by hand, with the call an entry
-point makes, and through a faked entry point."""
+    [project.entry-points."cosim.shapes"]
+    capsule = "plugin_example:Capsule"
+
+and ``tests/test_registry.py`` registers them both ways: by hand, with the call an entry
+point makes, and through faked entry points."""
 
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
+from cosim.scene.fields import SceneError, choice, num, required, table, text, vec
 from cosim.scene.mooring_models import MooringModel
+from cosim.scene.shapes import RigidBody
+from cosim.scene.spec import tag
 
 
 class TetherMooring:
@@ -66,3 +73,45 @@ class Tether(MooringModel):
 
     def from_scene(self, scene, lines, *, level, rho, workdir):
         return TetherMooring(lines)
+
+
+@dataclass(frozen=True)
+class Capsule(RigidBody):
+    """A capsule (3-D): a cylinder of ``radius`` [m] and ``length`` [m] along z capped by two
+    half spheres. Its volume, submerged volume, turned extent and the rest follow from
+    :meth:`half_size` and :meth:`signed_distance` (the defaults of
+    :class:`cosim.scene.shapes.Shape`); MuJoCo's capsule geom (which the SPH fluid samples and
+    the analytic fluid integrates)."""
+
+    TAG = ("shape", "capsule")
+    shape: str = tag("capsule")
+    name: str = required(text(None, "the body's name", name=True))
+    radius: float = required(num(None, "radius", "m", lo=0, lo_open=True, optional=False))
+    length: float = required(num(None, "length of the cylinder between the caps", "m", lo=0, optional=False))
+    pos: tuple = required(vec(None, "centre position", "m", sizes=(2, 3)))
+    density: float = num(None, "density (or give mass)", "kg/m^3", lo=0, lo_open=True)
+    mass: float = num(None, "mass (or give density)", "kg", lo=0, lo_open=True)
+    place: str = choice("given", "given: at pos; floating: at its hydrostatic equilibrium", ("given", "floating"))
+    euler: tuple = vec(None, "initial orientation (Euler angles)", "deg", sizes=(3,))
+    fairleads: dict = table("named points in the body frame", "m")
+
+    geom = "capsule"
+
+    def half_size(self, dim):
+        return [self.radius, self.radius, 0.5 * self.length + self.radius]
+
+    def signed_distance(self, p, dim):
+        z = np.clip(p[:, 2], -0.5 * self.length, 0.5 * self.length)
+        return np.linalg.norm(p - np.column_stack([0 * z, 0 * z, z]), axis=1) - self.radius
+
+    def fit(self, dim):
+        if dim != 3:
+            raise SceneError("shape", "a capsule is 3-D")
+
+    def mjcf(self, pos, dim, sites):
+        mass = f'density="{self.density!r}"' if self.mass is None else f'mass="{self.mass!r}"'
+        turn = "" if self.euler is None else f' euler="{" ".join(map(repr, self.euler))}"'
+        xml_sites = "".join(f'<site name="{k}" pos="{" ".join(map(repr, p))}" size="0.01"/>' for k, p in sites.items())
+        return (f'<body name="{self.name}" pos="{" ".join(map(repr, pos))}"{turn}><freejoint name="{self.name}_free"/>'
+                f'<geom name="{self.name}_geom" type="capsule" size="{self.radius!r} {0.5 * self.length!r}" {mass}/>'
+                f'{xml_sites}</body>')

@@ -24,9 +24,9 @@ from pathlib import Path
 
 import numpy as np
 
-from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, Box, Cylinder, CylinderTank, Earthquake, ElasticPlate,
-                              Flap, Flume, GroundMotion, InclinedTank, IrregularWaves, Piston, PolygonTank, Potential,
-                              RegularWaves, Roll, Shake, Sphere, TableMotion, Tank)
+from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, CylinderTank, Earthquake, ElasticPlate, Flap, Flume,
+                              GroundMotion, InclinedTank, IrregularWaves, Piston, PolygonTank, Potential, RegularWaves,
+                              Roll, Shake, TableMotion, Tank)
 
 PADDLE, WALLS = 1, 0  # the flume's paddle group and every tank's wall group
 
@@ -358,15 +358,7 @@ def _mjcf_bodies(scene, level, rho):
         else:
             pos = (b.pos[0], 0.0, b.pos[1]) if dim == 2 else tuple(b.pos)
         sites = {site_name(f"{b.name}.{k}"): ((p[0], 0.0, p[1]) if dim == 2 else p) for k, p in b.fairleads.items()}
-        common = dict(density=b.density, mass=b.mass, sites=sites)
-        if isinstance(b, Box):
-            parts.append(builders.box(b.name, b.size, pos, planar=dim == 2, euler=b.euler, **common))
-        elif isinstance(b, Cylinder):
-            parts.append(builders.cylinder(b.name, b.radius, b.length or 1.0, pos, planar=dim == 2, euler=b.euler,
-                                           **common))
-        else:
-            assert isinstance(b, Sphere)
-            parts.append(builders.sphere(b.name, b.radius, pos, **common))
+        parts.append(b.mjcf(pos, dim, sites))
     xml = builders.scene(*parts, gravity=scene.world.gravity, timestep=timestep)
     return xml, heights
 

@@ -43,9 +43,9 @@ import math
 from dataclasses import dataclass, field
 
 from cosim.scene.registry import MOORINGS
-from cosim.scene.spec import (MJCF, SPH, Analytic, ArchRib, Box, Cylinder, CylinderTank, ElasticPlate, Flap, Flume,
-                              InclinedTank, IrregularWaves, LinearWaves, PaddleRecord, Piston, PolygonTank,
-                              RegularWaves, Sphere, Tank)
+from cosim.scene.shapes import RigidBody
+from cosim.scene.spec import (MJCF, SPH, Analytic, ArchRib, CylinderTank, ElasticPlate, Flap, Flume, InclinedTank,
+                              IrregularWaves, LinearWaves, PaddleRecord, Piston, PolygonTank, RegularWaves, Tank)
 
 #: CPU [s] per particle and step of the SPH fluid at h = sqrt(2) dx, by dimension (one
 #: thread; measured)
@@ -245,27 +245,8 @@ def sph_particles(scene) -> tuple[float, float, float]:
     for b in scene.bodies:
         if isinstance(b, MJCF):
             continue
-        area, surface = _body_section(b, dim)
-        bodies += min(area, surface * t) / dx ** dim
+        bodies += min(b.volume(dim), b.surface_area(dim) * t) / dx ** dim  # 2-D: area and perimeter
     return water, walls, bodies
-
-
-def _body_section(b, dim) -> tuple[float, float]:
-    """(volume, surface) [m^3, m^2] of a builder body (2-D: area and perimeter of its section)."""
-    if isinstance(b, ElasticPlate):
-        w = b.width if dim == 3 else 1.0
-        return ((b.length * b.thickness, 2 * (b.length + b.thickness)) if dim == 2 else
-                (b.length * b.thickness * w, 2 * (b.length * b.thickness + b.length * w + b.thickness * w)))
-    if isinstance(b, Box):
-        if dim == 2:
-            return b.size[0] * b.size[1], 2 * (b.size[0] + b.size[1])
-        x, y, z = b.size
-        return x * y * z, 2 * (x * y + y * z + x * z)
-    if isinstance(b, Sphere):
-        return 4 / 3 * math.pi * b.radius ** 3, 4 * math.pi * b.radius ** 2
-    if isinstance(b, Cylinder) and dim == 3:
-        return math.pi * b.radius ** 2 * b.length, 2 * math.pi * b.radius * (b.radius + b.length)
-    return math.pi * b.radius ** 2, 2 * math.pi * b.radius
 
 
 def sph_step(scene) -> tuple[float, str]:
@@ -307,11 +288,9 @@ def plate_step(b, dim) -> float:
 
 
 def _body_mass(b, dim, rho) -> float:
-    from cosim.scene.placement import volume_and_height
-
     if b.mass is not None:
         return b.mass
-    return b.density * volume_and_height(b, dim)[0]
+    return b.density * b.volume(dim)
 
 
 def line_steps(scene) -> list[tuple[int, float, float, float]]:
@@ -326,20 +305,6 @@ def line_steps(scene) -> list[tuple[int, float, float, float]]:
         if step is not None:
             out.append((i, m.segments + 1, *step))
     return out
-
-
-def _gyration2(b, dim) -> float:
-    """The smallest squared radius of gyration [m^2] of a builder body about an axis
-    through its centre (solid bodies of uniform density)."""
-    if isinstance(b, Box):
-        sz = list(b.size) if dim == 3 else [b.size[0], b.size[1]]
-        pairs = [(sz[i], sz[j]) for i in range(len(sz)) for j in range(i + 1, len(sz))]
-        return min(a * a + c * c for a, c in pairs) / 12.0
-    if isinstance(b, Sphere):
-        return 0.4 * b.radius ** 2
-    if isinstance(b, Cylinder) and dim == 3:
-        return min(0.5 * b.radius ** 2, (3 * b.radius ** 2 + b.length ** 2) / 12.0)
-    return 0.5 * b.radius ** 2
 
 
 def _fairlead_start(scene, b, offset):
@@ -417,13 +382,13 @@ def line_coupling_step(scene) -> tuple[float, str]:
     added = getattr(scene.fluid, "added_mass", {}) or {}
     best, key = math.inf, ""
     for b in scene.bodies:
-        if isinstance(b, (MJCF, ElasticPlate)):
+        if not isinstance(b, RigidBody):
             continue
         mine = [(i, ln) for i, ln in enumerate(m.lines) if ln.fairlead.split(".")[0] == b.name]
         if not mine:
             continue
         M = _body_mass(b, dim, 0.0) + min(added.get(b.name, [0.0] * 3)[: dim if dim == 3 else 2])
-        g2 = _gyration2(b, dim)
+        g2 = b.gyration2(dim)
         k_sum = c_sum = 0.0
         worst, i_worst = -1.0, mine[0][0]
         for i, ln in mine:
@@ -455,20 +420,18 @@ def analytic_step(scene) -> tuple[float, str]:
     f, dim = scene.fluid, scene.world.dim
     best, key = math.inf, ""
     for i, b in enumerate(scene.bodies):
-        if isinstance(b, (MJCF, ElasticPlate)):
+        if not isinstance(b, RigidBody):
             continue
-        from cosim.scene.plausible import bounding_radius
-
         M = _body_mass(b, dim, f.rho)  # MuJoCo's mass: the added mass is in the joints' armature
 
-        r = bounding_radius(b, dim) if dim == 3 else math.hypot(bounding_radius(b, dim), 0.5)
+        r = b.bounding_radius(dim) if dim == 3 else math.hypot(b.bounding_radius(dim), 0.5)
         k = f.rho * scene.world.gravity * math.pi * r * r
         if k > 0:
             dt = 0.02 * 2.0 * math.pi * math.sqrt(M / k)
             if dt < best:
                 best, key = dt, f"bodies[{i}]"
         row = f.linear_damping.get(b.name, [0.0] * 6)
-        for inertia, B in ((M, max(row[:3])), (M * _gyration2(b, dim), max(row[3:]))):  # translations, rotations
+        for inertia, B in ((M, max(row[:3])), (M * b.gyration2(dim), max(row[3:]))):  # translations, rotations
             if B > 0 and inertia / B < best:
                 best, key = inertia / B, f"fluid.linear_damping.{b.name}"
     w = scene.waves
@@ -596,7 +559,6 @@ def _subiterated(scene) -> bool:
     """Whether the coupler will sub-iterate the SPH fluid for a light body (mass under
     AUTO_THRESHOLD of the fluid it displaces, ``light_body`` auto or subiterate)."""
     from cosim.added_mass import AUTO_THRESHOLD
-    from cosim.scene.placement import volume_and_height
 
     c = scene.coupling
     if c.light_body not in ("auto", "subiterate") or c.scheme not in ("auto", "fluid-first"):
@@ -604,8 +566,8 @@ def _subiterated(scene) -> bool:
     if c.light_body == "subiterate":
         return bool(scene.bodies)
     rho = scene.fluid.rho0
-    return any(_body_mass(b, scene.world.dim, rho) < AUTO_THRESHOLD * rho * volume_and_height(b, scene.world.dim)[0]
-               for b in scene.bodies if not isinstance(b, (MJCF, ElasticPlate)))
+    return any(_body_mass(b, scene.world.dim, rho) < AUTO_THRESHOLD * rho * b.volume(scene.world.dim)
+               for b in scene.bodies if isinstance(b, RigidBody))
 
 
 def _columns(scene) -> int:

@@ -281,12 +281,18 @@ class Table(Check):
 
 class Part(Check):
     """A nested scene object: one class, or one of several told apart by the value of
-    their ``tag`` field (``kind``, ``model``, ``shape``)."""
+    their ``tag`` field (``kind``, ``model``, ``shape``), given as a sequence or as a
+    registry (:mod:`cosim.scene.registry`) whose classes are read when a value is checked."""
 
 
     def __init__(self, doc, classes, optional=False):
         super().__init__(doc, "", optional)
-        self.classes = tuple(classes) if isinstance(classes, (tuple, list)) else (classes,)
+        self._classes = (classes if hasattr(classes, "classes") else
+                         tuple(classes) if isinstance(classes, (tuple, list)) else (classes,))
+
+    @property
+    def classes(self) -> tuple:
+        return self._classes.classes() if hasattr(self._classes, "classes") else self._classes
 
     def expected(self) -> str:
         return f"{' or '.join(c.__name__ for c in self.classes)} ({self.doc})"

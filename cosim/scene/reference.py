@@ -9,6 +9,7 @@ import inspect
 
 from cosim.scene import spec
 from cosim.scene.fields import spec_fields
+from cosim.scene.registry import SHAPES
 
 SECTIONS = [
     ("The scene", [spec.Scene, spec.World, spec.Coupling]),
@@ -16,7 +17,7 @@ SECTIONS = [
     ("Domains (`[domain]`, by `kind`)", list(spec.DOMAINS) + [spec.Block, spec.Beach]),
     ("Waves (`[waves]`, by `kind`): wavemakers, the incident sea", list(spec.WAVES)),
     ("Base motions (`[base_motion]`, by `kind`)", list(spec.BASE_MOTIONS) + [spec.Record]),
-    ("Bodies (`[[bodies]]`, by `shape`)", list(spec.BODIES)),
+    ("Bodies (`[[bodies]]`, by `shape`)", list(SHAPES.classes())),
     ("Moorings (`[moorings]`)", [spec.Moorings, spec.Line]),
     ("Probes (`[probes]`)", [spec.Probes, spec.Patch]),
 ]

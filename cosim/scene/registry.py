@@ -9,6 +9,8 @@ distribution's metadata:
 ====================  =====================  ==============================================
 registry              entry-point group      an entry (see its interface)
 ====================  =====================  ==============================================
+:data:`SHAPES`        ``cosim.shapes``       a scene class tagged ``shape = NAME``; a rigid
+                                             one derives :class:`cosim.scene.shapes.RigidBody`
 :data:`MOORINGS`      ``cosim.moorings``     a :class:`cosim.scene.mooring_models.MooringModel`
 ====================  =====================  ==============================================
 
@@ -176,5 +178,8 @@ def _instance_of(where: str):
     return check
 
 
+SHAPES = Registry("body shape", "cosim.shapes", "cosim.scene.spec:BODIES", _scene_class("shape"))
 MOORINGS = Registry("mooring model", "cosim.moorings", "cosim.scene.mooring_models:MODELS",
                     _instance_of("cosim.scene.mooring_models:MooringModel"))
+#: the registries of scene classes, told apart in a scene by their tag
+TAGGED = (SHAPES,)

@@ -37,9 +37,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from cosim.scene import limits as L
+from cosim.scene import shapes
 from cosim.scene.fields import (SceneError, Spec, choice, flag, gauges, is_name, names, num, part, parts, required,
                                 table, text, vec, vecs, whole)
-from cosim.scene.registry import MOORINGS
+from cosim.scene.registry import MOORINGS, SHAPES
 
 SETUPS = ("auto", "still", "waves", "sloshing", "impact", "defaults")
 
@@ -666,17 +667,7 @@ frame [m], referred to by lines as ``"BODY.NAME"``. Give ``density`` or ``mass``
 
 
 @dataclass(frozen=True)
-class _Body(Spec):
-    def validate(self):
-        if (self.density is None) == (self.mass is None):
-            raise SceneError("density", "give either density [kg/m^3] or mass [kg], one of the two")
-        if self.place == "floating" and self.euler is not None:
-            raise SceneError("euler", "a floating body is placed upright; give place = \"given\" with a full pos "
-                             "to turn it")
-
-
-@dataclass(frozen=True)
-class Box(_Body):
+class Box(shapes.BoxShape):
     __doc__ = "A box body of edge lengths ``size`` [m] ((x, z) in 2-D, (x, y, z) in 3-D). " + _BODY_COMMON
     TAG = ("shape", "box")
     shape: str = tag("box")
@@ -697,7 +688,7 @@ class Box(_Body):
 
 
 @dataclass(frozen=True)
-class Cylinder(_Body):
+class Cylinder(shapes.CylinderShape):
     __doc__ = ("A cylinder of ``radius`` [m]: in 2-D a circle in the x-z plane (1 m long), in "
                "3-D of ``length`` [m] with its axis along z. " + _BODY_COMMON)
     TAG = ("shape", "cylinder")
@@ -715,7 +706,7 @@ class Cylinder(_Body):
 
 
 @dataclass(frozen=True)
-class Sphere(_Body):
+class Sphere(shapes.SphereShape):
     __doc__ = "A sphere of ``radius`` [m] (3-D only). " + _BODY_COMMON
     TAG = ("shape", "sphere")
     shape: str = tag("sphere")
@@ -743,7 +734,7 @@ class MJCF(Spec):
     bodies: tuple = names("names of the coupled bodies (empty: every movable body)")
 
 @dataclass(frozen=True)
-class ElasticPlate(Spec):
+class ElasticPlate(shapes.PlateShape):
     """An elastic plate (a cantilever) clamped by its foot to the tank's floor at ``base``
     [m] (the centre of the foot: (x, z) in 2-D, (x, y, z) in 3-D) and rising ``length`` [m]
     along z, or (``direction = "down"``) clamped by its top at ``base`` and hanging
@@ -917,7 +908,7 @@ class Scene(Spec):
                         DOMAINS)
     waves: Spec = part(None, "a flume's wavemaker, or regular or irregular waves on the analytic fluid", WAVES)
     base_motion: Spec = part(None, "motion of the tank and of the elastic plates clamped to it", BASE_MOTIONS)
-    bodies: tuple = parts("the bodies", BODIES)
+    bodies: tuple = parts("the bodies", SHAPES)
     moorings: Moorings = part(None, "mooring lines and their model", Moorings)
     probes: Probes = part(Probes(), "what is recorded", Probes)
     coupling: Coupling = part(Coupling(), "coupling scheme and light-body remedy", Coupling)

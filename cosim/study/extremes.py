@@ -32,7 +32,8 @@ import numpy as np
 
 from cosim.errors import CosimError
 from cosim.scene.registry import MOORINGS
-from cosim.scene.spec import MJCF, SPH, Box, Cylinder, Sphere
+from cosim.scene.shapes import RigidBody
+from cosim.scene.spec import MJCF, SPH
 from cosim.study import sweep
 
 UNSTABLE = ("InstabilityError", "ConvergenceError", "TautLineError")
@@ -79,13 +80,9 @@ def _outcome(rec: dict) -> str:
     return "crash"
 
 
-def _height(body) -> float | None:
-    """A builder body's height [m] (None for others)."""
-    if isinstance(body, Box):
-        return float(body.size[-1])
-    if isinstance(body, (Cylinder, Sphere)):
-        return 2.0 * float(body.radius)
-    return None
+def _height(body, dim: int) -> float | None:
+    """A rigid builder body's upright height [m] (None for others)."""
+    return 2.0 * float(body.half_size(dim)[-1]) if isinstance(body, RigidBody) else None
 
 
 def _sank(scene, lever: str, folder) -> str | None:
@@ -94,7 +91,7 @@ def _sank(scene, lever: str, folder) -> str | None:
     if not lever.startswith("bodies[") or not lever.endswith("].density"):
         return None
     body = scene.bodies[int(lever[len("bodies["):-len("].density")])]
-    tall = _height(body)
+    tall = _height(body, scene.world.dim)
     heave = sweep.series(folder).get(f"{body.name}.heave")
     if tall is None or heave is None or len(heave[1]) < 2:
         return None
