@@ -1,12 +1,19 @@
 """A module acting as another package that plugs into cosim's scenes
-(:mod:`cosim.scene.registry`): a mooring model of weightless elastic tethers and a capsule
-body shape. Its ``pyproject.toml`` would declare them as
+(:mod:`cosim.scene.registry`): a mooring model of weightless elastic tethers, a capsule body
+shape, a probe of the tethers' elastic energy and a fluid that only drags. Its
+``pyproject.toml`` would declare them as
 
     [project.entry-points."cosim.moorings"]
     tether = "plugin_example:Tether"
 
     [project.entry-points."cosim.shapes"]
     capsule = "plugin_example:Capsule"
+
+    [project.entry-points."cosim.probes"]
+    tether_energy = "plugin_example:TetherEnergy"
+
+    [project.entry-points."cosim.fluids"]
+    drag = "plugin_example:Drag"
 
 and ``tests/test_registry.py`` registers them both ways: by hand, with the call an entry
 point makes, and through faked entry points."""
@@ -18,8 +25,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from cosim.scene.fields import SceneError, choice, num, required, table, text, vec
+from cosim.scene.fields import SceneError, Spec, choice, num, required, table, text, vec
 from cosim.scene.mooring_models import MooringModel
+from cosim.scene.probes import Group, Probe
 from cosim.scene.shapes import RigidBody
 from cosim.scene.spec import tag
 
@@ -115,3 +123,70 @@ class Capsule(RigidBody):
         return (f'<body name="{self.name}" pos="{" ".join(map(repr, pos))}"{turn}><freejoint name="{self.name}_free"/>'
                 f'<geom name="{self.name}_geom" type="capsule" size="{self.radius!r} {0.5 * self.length!r}" {mass}/>'
                 f'{xml_sites}</body>')
+
+
+class TetherEnergy(Probe):
+    """The elastic energy [J] the tethers hold, ``sum (EA / 2 L) (s - L)^2`` over the taut
+    ones, as one series ``tethers.energy``."""
+
+    def names(self, scene):
+        return ["tethers.energy"] if scene.moorings is not None and scene.moorings.model == "tether" else []
+
+    def groups(self, scene, built):
+        if not self.names(scene):
+            return []
+        m = built.mooring
+
+        def energy():
+            stretch = np.maximum(np.linalg.norm(m.anchors - m._pos, axis=1) - m.L, 0.0)
+            return np.array([float(np.sum(0.5 * m.k * stretch ** 2))])
+
+        return [Group("tether_energy", ["tethers.energy"], ["J"], energy)]
+
+
+class DragFluid:
+    """A fluid that only resists motion, a :class:`cosim.protocol.Fluid`: the force
+    ``-c V`` [N] on each body moving at ``V`` [m/s], no torque (linear, Stokes-like drag)."""
+
+    name = "drag"
+    loads_carry_added_mass = False  # no added mass in these loads: no light-body remedy
+
+    def __init__(self, c: float):
+        self.c, self._v = c, None
+
+    def initialize(self, t0: float) -> None:
+        pass
+
+    def max_dt(self) -> float:
+        return math.inf
+
+    def advance(self, t: float, dt: float) -> None:
+        pass
+
+    def save_state(self):
+        return {}
+
+    def load_state(self, state) -> None:
+        pass
+
+    def attach_bodies(self, bodies) -> None:
+        self._v = np.zeros((bodies.n_bodies, 3))
+
+    def set_body_kinematics(self, kinematics) -> None:
+        self._v = np.array(kinematics.velocity, float)
+
+    def body_wrenches(self):
+        return -self.c * self._v, np.zeros_like(self._v)
+
+
+@dataclass(frozen=True)
+class Drag(Spec):
+    """A fluid that only drags: each body feels ``-c V``."""
+
+    TAG = ("model", "drag")
+    model: str = tag("drag")
+    c: float = required(num(None, "linear drag coefficient", "N s/m", lo=0, lo_open=True, optional=False))
+
+    def participant(self, scene, built) -> None:
+        built.fluid = DragFluid(self.c)
+

@@ -1,7 +1,7 @@
-"""Scene plug-ins from outside the package (:mod:`cosim.scene.registry`): a mooring model and
-a body shape (``tests/plugin_example.py``, a module acting as another package) registered
-by hand and through entry points, run by the normal runner, with numbers checked against
-the closed forms they must give."""
+"""Scene plug-ins from outside the package (:mod:`cosim.scene.registry`): a mooring model, a
+body shape, a probe and a fluid (``tests/plugin_example.py``, a module acting as another
+package) registered by hand and through entry points, run by the normal runner, with numbers
+checked against the closed forms they must give."""
 
 import math
 from importlib.metadata import EntryPoint
@@ -12,10 +12,10 @@ import pytest
 import cosim.scene.registry as registry
 from cosim.errors import ConfigurationError, InputError
 from cosim.scene import Box, Cylinder, Line, Moorings, Scene, SceneError, Sphere
-from cosim.scene.registry import MOORINGS, SHAPES
+from cosim.scene.registry import FLUIDS, MOORINGS, PROBES, SHAPES, WAVES
 from cosim.scene.shapes import Shape
 
-from plugin_example import Capsule, Tether
+from plugin_example import Capsule, Drag, Tether, TetherEnergy
 
 # a capsule (3-D, axis vertical) of 0.4 times the water's density floats with its water line
 # D above its lowest point, in the cylinder (the lower cap's 2/3 pi r^3 plus pi r^2 (D - r)
@@ -47,10 +47,13 @@ def _scene(shape: str = "capsule", model: str = "tether") -> Scene:
 def _check(res) -> None:
     """Floating where its displaced water carries it; surging as an undamped mass on a
     spring started DX from rest, ``-DX (1 - cos wt)``, its tethers' tension ``k (PRE + DX)``
-    and ``k (PRE - DX)`` at the start."""
+    and ``k (PRE - DX)`` at the start, their elastic energy ``k (PRE^2 + x^2)`` with ``x``
+    the capsule's offset from their middle."""
     assert res.summary["floating_start_z_m"]["cap"] == pytest.approx(Z_C, abs=1e-4 * D)
     exact = -DX * (1.0 - np.cos(2 * math.pi * res.t / PERIOD))
     assert np.abs(res["cap.surge"] - exact).max() < 2e-3 * DX
+    energy = K_LINE * (PRE ** 2 + (DX + res["cap.surge"]) ** 2)
+    assert np.abs(res["tethers.energy"] - energy).max() < 1e-5 * energy[0]
     assert res["cap.left.tension"][0] == pytest.approx(K_LINE * (PRE + DX), rel=1e-6)
     assert res["cap.right.tension"][0] == pytest.approx(K_LINE * (PRE - DX), rel=1e-6)
 
@@ -59,9 +62,11 @@ def _check(res) -> None:
 def by_hand():
     SHAPES.register("capsule", Capsule)  # what an entry point of group cosim.shapes calls
     MOORINGS.register("tether", Tether)
+    PROBES.register("tether_energy", TetherEnergy)
     yield
     SHAPES.unregister("capsule")
     MOORINGS.unregister("tether")
+    PROBES.unregister("tether_energy")
 
 
 def test_a_shape_and_a_mooring_model_registered_by_hand_run_a_python_scene(by_hand, tmp_path):
@@ -72,11 +77,12 @@ def test_a_shape_and_a_mooring_model_registered_by_hand_run_a_python_scene(by_ha
 
 def test_entry_points_register_them_for_a_toml_scene(monkeypatch, tmp_path):
     fake = {"cosim.shapes": [EntryPoint("capsule", "plugin_example:Capsule", "cosim.shapes")],
-            "cosim.moorings": [EntryPoint("tether", "plugin_example:Tether", "cosim.moorings")]}
+            "cosim.moorings": [EntryPoint("tether", "plugin_example:Tether", "cosim.moorings")],
+            "cosim.probes": [EntryPoint("tether_energy", "plugin_example:TetherEnergy", "cosim.probes")]}
     monkeypatch.setattr(registry, "entry_points", lambda group: fake.get(group, []))
     assert "capsule" not in SHAPES.names() and "tether" not in MOORINGS.names()  # found when looked for again
-    SHAPES.rediscover()
-    MOORINGS.rediscover()
+    for r in (SHAPES, MOORINGS, PROBES):
+        r.rediscover()
     try:
         path = tmp_path / "capsule.toml"
         _scene().to_toml(path)
@@ -88,8 +94,30 @@ def test_entry_points_register_them_for_a_toml_scene(monkeypatch, tmp_path):
     finally:
         SHAPES.unregister("capsule")
         MOORINGS.unregister("tether")
+        PROBES.unregister("tether_energy")
     with pytest.raises(SceneError, match="bodies\\[0\\].shape: 'capsule' is not accepted"):
         Scene.from_toml(path)
+
+
+def test_a_fluid_from_outside_loads_the_bodies(tmp_path):
+    """A box falling under gravity through a fluid that drags it with ``-c V``
+    (tests/plugin_example.py): ``z - z0 = -v_t (t - tau (1 - exp(-t / tau)))``, ``v_t = g
+    tau``, ``tau = m / c``."""
+    FLUIDS.register("drag", Drag)
+    try:
+        m, tau, g = 500.0 * 0.2 * 0.1, 0.2, 9.81
+        res = Scene.from_dict({"world": {"dim": 2, "duration": 0.6, "sample_every": 0.01},
+                               "fluid": {"model": "drag", "c": m / tau},
+                               "bodies": [{"shape": "box", "name": "box", "size": [0.2, 0.1], "pos": [1.0, 0.0],
+                                           "density": 500.0}]}).run(tmp_path / "run", progress=False)
+    finally:
+        FLUIDS.unregister("drag")
+    t = res.t
+    exact = -g * tau * (t - tau * (1.0 - np.exp(-t / tau)))
+    assert np.abs(res["box.heave"] - exact).max() < 1e-3 * abs(exact[-1])
+    # the load over the last coupling step (one sample interval): the predictor-corrector's mean of its ends
+    drag = m * g * (1.0 - np.exp(-t[-2:] / tau))
+    assert res["box.fluid_Fz"][-1] == pytest.approx(drag.mean(), rel=1e-3)
 
 
 def test_a_plugin_is_checked_with_the_scene(by_hand):
@@ -122,6 +150,10 @@ def test_bad_registrations_are_refused_naming_what_to_fix(monkeypatch):
         MOORINGS.register("catenary", Tether)
     with pytest.raises(ConfigurationError, match=r"Capsule.TAG is \('shape', 'capsule'\); give it TAG"):
         SHAPES.register("pill", Capsule)
+    with pytest.raises(ConfigurationError, match="not a scene class of this kind.*seas.IncidentSea"):
+        WAVES.register("capsule", Capsule)
+    with pytest.raises(ConfigurationError, match="not a scene class of this kind.*shapes.RigidBody"):
+        SHAPES.register("drag", Drag)
     with pytest.raises(InputError, match="did you mean 'catenary'"):
         MOORINGS["catenery"]
     broken = [EntryPoint(name="broken", value="plugin_example:NoSuchModel", group="cosim.moorings")]
@@ -132,3 +164,5 @@ def test_bad_registrations_are_refused_naming_what_to_fix(monkeypatch):
     MOORINGS.rediscover()
     assert MOORINGS.names() == ["catenary", "sph-cable", "moordyn", "fmu"]
     assert SHAPES.names() == ["box", "cylinder", "sphere", "mjcf", "elastic-plate"]
+    assert FLUIDS.names() == ["none", "analytic", "potential", "sph"]
+    assert PROBES.names() == ["motion", "loads", "tensions", "line_states", "gauges", "pressure", "energy"]

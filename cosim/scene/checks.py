@@ -21,6 +21,7 @@ import math
 
 from cosim.scene import plausible
 from cosim.scene.fields import SceneError, is_name
+from cosim.scene.seas import IncidentSea
 from cosim.scene.shapes import RigidBody
 from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, CylinderTank, Earthquake, Flap, Flume, ArchRib,
                               ElasticPlate, GroundMotion, InclinedTank, IrregularWaves, NoFluid, PaddleRecord, Piston,
@@ -231,7 +232,7 @@ def _check_sea(s, dim):
 
 
 def _check_excitations(s, dim):
-    if isinstance(s.waves, (LinearWaves, RegularWaves, IrregularWaves)):
+    if isinstance(s.waves, IncidentSea):
         _check_sea(s, dim)
     elif s.waves is not None:
         if isinstance(s.fluid, _SURFACE) and (isinstance(s.waves, PaddleRecord) or not isinstance(s.domain, Flume)):
@@ -535,8 +536,7 @@ def _check_probes(s, dim, mj):
         if n != "all" and n not in names:
             raise SceneError(f"probes.motion[{i}]", f"no body named {n!r}; bodies: {sorted(names)} (or \"all\")")
     # the analytic and potential fluids' gauges read their incident sea (given, or a flume's wavemaker's far-field wave)
-    linear = isinstance(s.fluid, _SURFACE) and isinstance(s.waves, (LinearWaves, RegularWaves, IrregularWaves,
-                                                                      Piston, Flap))
+    linear = isinstance(s.fluid, _SURFACE) and isinstance(s.waves, (IncidentSea, Piston, Flap))
     fluid_probes = (p.gauges and not linear) or p.pressure or p.energy
     if fluid_probes and not isinstance(s.fluid, SPH):
         which = "gauges" if p.gauges and not linear else "pressure" if p.pressure else "energy"
@@ -1133,7 +1133,7 @@ def potential_depth(s) -> float:
         return s.fluid.depth
     if isinstance(s.domain, Flume):
         return s.domain.depth
-    if isinstance(s.waves, (LinearWaves, RegularWaves, IrregularWaves)):
+    if isinstance(s.waves, IncidentSea):
         return s.waves.depth
     return math.inf
 
@@ -1171,7 +1171,7 @@ def _check_potential(s, dim) -> None:
         if n not in body_names(s):
             raise SceneError(f"fluid.quadratic_drag.{n}", f"no body named {n!r}; bodies: {sorted(body_names(s))}")
     scene_depth = (s.domain.depth if isinstance(s.domain, Flume) else
-                   s.waves.depth if isinstance(s.waves, (LinearWaves, RegularWaves, IrregularWaves)) else None)
+                   s.waves.depth if isinstance(s.waves, IncidentSea) else None)
     if f.depth is not None and scene_depth is not None and not math.isclose(f.depth, scene_depth, rel_tol=1e-9):
         what = "flume's depth (domain.depth)" if isinstance(s.domain, Flume) else "waves' depth (waves.depth)"
         raise SceneError("fluid.depth", f"{f.depth:g} m differs from the {what}, {scene_depth:g} m: the coefficients "

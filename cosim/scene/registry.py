@@ -1,4 +1,5 @@
-"""The one place where each kind of scene plug-in is listed. Each registry holds the
+"""The one place where each kind of scene plug-in is listed: fluid models, body shapes,
+wave kinds, mooring models and probes. Each registry holds the
 built-in entries (named here, imported on first use, so that a scene loads only what it
 names) and those that other packages declare in an entry-point group of their
 distribution's metadata:
@@ -9,9 +10,16 @@ distribution's metadata:
 ====================  =====================  ==============================================
 registry              entry-point group      an entry (see its interface)
 ====================  =====================  ==============================================
-:data:`SHAPES`        ``cosim.shapes``       a scene class tagged ``shape = NAME``; a rigid
-                                             one derives :class:`cosim.scene.shapes.RigidBody`
+:data:`FLUIDS`        ``cosim.fluids``       a scene class tagged ``model = NAME`` whose
+                                             ``participant(scene, built)`` puts the fluid
+                                             participant into ``built``
+                                             (:class:`cosim.scene.build.Built`)
+:data:`SHAPES`        ``cosim.shapes``       a scene class tagged ``shape = NAME`` deriving
+                                             :class:`cosim.scene.shapes.RigidBody`
+:data:`WAVES`         ``cosim.waves``        a scene class tagged ``kind = NAME`` deriving
+                                             :class:`cosim.scene.seas.IncidentSea`
 :data:`MOORINGS`      ``cosim.moorings``     a :class:`cosim.scene.mooring_models.MooringModel`
+:data:`PROBES`        ``cosim.probes``       a :class:`cosim.scene.probes.Probe`
 ====================  =====================  ==============================================
 
 An entry point's name is the entry's name (a scene class's tag value); what it points to
@@ -144,19 +152,22 @@ def _where(entry) -> str:
     return f"{obj.__module__}.{obj.__qualname__}"
 
 
-def _scene_class(tag: str):
-    """The check of a registry of scene classes: a :class:`~cosim.scene.fields.Spec`
-    subclass whose ``TAG`` is ``(tag, name)``."""
+def _scene_class(tag: str, bases: tuple[str, ...] = ("cosim.scene.fields:Spec",), needs: tuple[str, ...] = ()):
+    """The check of a registry of scene classes: a subclass of one of ``bases`` (``"module:
+    attribute"``; a plug-in derives the first) whose ``TAG`` is ``(tag, name)`` and which
+    has the methods ``needs``."""
 
     def check(name, entry):
-        from cosim.scene.fields import Spec
-
-        if not (isinstance(entry, type) and issubclass(entry, Spec)):
-            raise ConfigurationError(f"{name!r}: {entry!r} is not a scene class (a frozen dataclass deriving "
-                                     f"cosim.scene.fields.Spec)")
+        kinds = tuple(_import(b) for b in bases)
+        if not (isinstance(entry, type) and issubclass(entry, kinds)):
+            raise ConfigurationError(f"{name!r}: {entry!r} is not a scene class of this kind (a frozen dataclass "
+                                     f"deriving {bases[0].replace(':', '.')})")
         if entry.TAG != (tag, name):
             raise ConfigurationError(f"{name!r}: {entry.__name__}.TAG is {entry.TAG!r}; give it TAG = ({tag!r}, "
                                      f"{name!r}) and a field {tag} = tag({name!r})")
+        lacks = [m for m in needs if not callable(getattr(entry, m, None))]
+        if lacks:
+            raise ConfigurationError(f"{name!r}: {entry.__name__} lacks the method(s) {', '.join(lacks)}")
         return entry
 
     return check
@@ -178,8 +189,15 @@ def _instance_of(where: str):
     return check
 
 
-SHAPES = Registry("body shape", "cosim.shapes", "cosim.scene.spec:BODIES", _scene_class("shape"))
+FLUIDS = Registry("fluid model", "cosim.fluids", "cosim.scene.spec:FLUIDS", _scene_class("model", needs=("participant",)))
+SHAPES = Registry("body shape", "cosim.shapes", "cosim.scene.spec:BODIES",
+                  _scene_class("shape", ("cosim.scene.shapes:RigidBody", "cosim.scene.spec:MJCF",
+                                         "cosim.scene.spec:ElasticPlate")))
+WAVES = Registry("wave kind", "cosim.waves", "cosim.scene.spec:WAVES",
+                 _scene_class("kind", ("cosim.scene.seas:IncidentSea", "cosim.scene.spec:Piston", "cosim.scene.spec:Flap",
+                                       "cosim.scene.spec:PaddleRecord")))
 MOORINGS = Registry("mooring model", "cosim.moorings", "cosim.scene.mooring_models:MODELS",
                     _instance_of("cosim.scene.mooring_models:MooringModel"))
+PROBES = Registry("probe", "cosim.probes", "cosim.scene.probes:PROBES", _instance_of("cosim.scene.probes:Probe"))
 #: the registries of scene classes, told apart in a scene by their tag
-TAGGED = (SHAPES,)
+TAGGED = (FLUIDS, SHAPES, WAVES)

@@ -37,10 +37,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from cosim.scene import limits as L
-from cosim.scene import shapes
+from cosim.scene import seas, shapes
 from cosim.scene.fields import (SceneError, Spec, choice, flag, gauges, is_name, names, num, part, parts, required,
                                 table, text, vec, vecs, whole)
-from cosim.scene.registry import MOORINGS, SHAPES
+from cosim.scene.registry import FLUIDS as FLUID_MODELS, MOORINGS, SHAPES, WAVES as WAVE_KINDS
 
 SETUPS = ("auto", "still", "waves", "sloshing", "impact", "defaults")
 
@@ -86,6 +86,9 @@ class NoFluid(Spec):
     TAG = ("model", "none")
     model: str = tag("none")
 
+    def participant(self, scene, built) -> None:
+        """No fluid participant."""
+
 
 @dataclass(frozen=True)
 class Analytic(Spec):
@@ -103,6 +106,12 @@ class Analytic(Spec):
     quadratic_damping: dict = table("per body: 6 quadratic damping coefficients [N s^2/m^2, N m s^2]", sizes=(6,))
     added_mass: dict = table("per body: one added mass per degree of freedom (2-D: x, z, rotation; 3-D: 3 "
                              "translations, 3 rotations) [kg, kg m^2]", sizes=(3, 6))
+
+    def participant(self, scene, built) -> None:
+        """The analytic fluid and the flume's wavemaker (:mod:`cosim.scene.build`)."""
+        from cosim.scene.build import analytic_fluid
+
+        analytic_fluid(scene, built)
 
 
 @dataclass(frozen=True)
@@ -130,6 +139,12 @@ class Potential(Spec):
     memory: float = num(None, "radiation memory (unset: where the impulse response has decayed)", "s", lo=0,
                         lo_open=True)
     quadratic_drag: dict = table("per body: 6 quadratic drag coefficients [N s^2/m^2, N m s^2]", sizes=(6,))
+
+    def participant(self, scene, built) -> None:
+        """The potential fluid and the flume's wavemaker (:mod:`cosim.scene.build`)."""
+        from cosim.scene.build import potential_fluid
+
+        built.fluid, built.wavemaker = potential_fluid(scene, built.level)
 
 
 @dataclass(frozen=True)
@@ -174,6 +189,13 @@ class SPH(Spec):
     def validate(self):
         if self.c0 is not None and self.u_max is not None:
             raise SceneError("c0", "give c0 or u_max, not both (c0 = c0_factor * u_max)")
+
+    def participant(self, scene, built) -> None:
+        """The SPH fluid in its domain, its set-up, wavemaker and walls' motion
+        (:mod:`cosim.scene.build`)."""
+        from cosim.scene.build import sph_fluid
+
+        sph_fluid(scene, built)
 
 
 FLUIDS = (NoFluid, Analytic, Potential, SPH)
@@ -441,7 +463,7 @@ class PaddleRecord(Spec):
 
 
 @dataclass(frozen=True)
-class LinearWaves(Spec):
+class LinearWaves(seas.IncidentSea):
     """Regular linear (Airy) waves acting on the bodies of the analytic fluid
     (``fluid.analytic.LinearWave``, the linear ``fluid.waves.RegularWave``: the same wave as
     kind = "regular"): height ``height`` [m], period ``period`` [s], in water
@@ -461,9 +483,16 @@ class LinearWaves(Spec):
     direction: float = num(0.0, "heading of propagation, from +x towards +y (2-D: 0 or 180)", "deg")
     ramp: float = num(2.0, "periods over which the waves fade in", lo=0)
 
+    def sea(self, scene):
+        """``fluid.analytic.LinearWave``."""
+        from fluid.analytic import LinearWave
+
+        return LinearWave(self.height, self.period, self.depth, self.direction, self.ramp * self.period,
+                          scene.world.gravity)
+
 
 @dataclass(frozen=True)
-class RegularWaves(Spec):
+class RegularWaves(seas.IncidentSea):
     """Regular waves acting on the bodies of the analytic fluid (``fluid.waves.RegularWave``):
     height ``height`` [m], period ``period`` [s], in water ``depth`` [m] deep under the still
     level, ``theory`` "linear" (Airy; the same wave as kind = "linear") or "stokes2" (Stokes
@@ -485,12 +514,18 @@ class RegularWaves(Spec):
     phase: float = num(0.0, "phase at x = y = 0 at t = 0 (0: a crest there, 90: an up-crossing)", "deg")
     ramp: float = num(2.0, "periods over which the waves fade in", lo=0)
 
+    def sea(self, scene):
+        """``fluid.waves.RegularWave`` (:func:`cosim.scene.build.regular_sea`)."""
+        from cosim.scene.build import regular_sea
+
+        return regular_sea(scene)
+
 
 SPECTRA = ("jonswap", "pierson-moskowitz", "series")
 
 
 @dataclass(frozen=True)
-class IrregularWaves(Spec):
+class IrregularWaves(seas.IncidentSea):
     """An irregular long-crested sea acting on the bodies of the analytic fluid, in water
     ``depth`` [m] deep under the still level, travelling along ``direction`` [deg]:
     ``spectrum`` "jonswap" or "pierson-moskowitz" (``fluid.waves.SpectralSea``: ``hs``
@@ -543,6 +578,12 @@ class IrregularWaves(Spec):
         for name in ("file", "at", "min_period"):
             if getattr(self, name) is not None:
                 raise SceneError(name, f"belongs to spectrum = \"series\"; leave it out with {self.spectrum!r}")
+
+    def sea(self, scene):
+        """``fluid.waves.SpectralSea`` or ``RecordedSea`` (:func:`cosim.scene.build.irregular_sea`)."""
+        from cosim.scene.build import irregular_sea
+
+        return irregular_sea(scene)
 
 
 WAVES = (Piston, Flap, PaddleRecord, LinearWaves, RegularWaves, IrregularWaves)
@@ -903,10 +944,10 @@ class Scene(Spec):
     ``scene.to_toml()``, ``scene.run(out=...)``."""
 
     world: World = part(World(), "dimension, gravity, duration, output times", World)
-    fluid: Spec = part(NoFluid(), "none, analytic, potential or SPH", FLUIDS)
+    fluid: Spec = part(NoFluid(), "none, analytic, potential or SPH", FLUID_MODELS)
     domain: Spec = part(None, "the SPH fluid's container (the analytic fluid: a flume, for its depth and wavemaker)",
                         DOMAINS)
-    waves: Spec = part(None, "a flume's wavemaker, or regular or irregular waves on the analytic fluid", WAVES)
+    waves: Spec = part(None, "a flume's wavemaker, or regular or irregular waves on the analytic fluid", WAVE_KINDS)
     base_motion: Spec = part(None, "motion of the tank and of the elastic plates clamped to it", BASE_MOTIONS)
     bodies: tuple = parts("the bodies", SHAPES)
     moorings: Moorings = part(None, "mooring lines and their model", Moorings)
