@@ -25,7 +25,8 @@ from pathlib import Path
 import numpy as np
 
 from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, CylinderTank, Earthquake, ElasticPlate, Flap, Flume,
-                              GroundMotion, InclinedTank, Piston, PolygonTank, Potential, Roll, Shake, TableMotion, Tank)
+                              GroundMotion, InclinedTank, Piston, PolygonTank, Potential, Roll, Shake, TableMotion,
+                              Tank)
 
 PADDLE, WALLS = 1, 0  # the flume's paddle group and every tank's wall group
 

@@ -189,13 +189,14 @@ def _instance_of(where: str):
     return check
 
 
-FLUIDS = Registry("fluid model", "cosim.fluids", "cosim.scene.spec:FLUIDS", _scene_class("model", needs=("participant",)))
+FLUIDS = Registry("fluid model", "cosim.fluids", "cosim.scene.spec:FLUIDS",
+                  _scene_class("model", needs=("participant",)))
 SHAPES = Registry("body shape", "cosim.shapes", "cosim.scene.spec:BODIES",
                   _scene_class("shape", ("cosim.scene.shapes:RigidBody", "cosim.scene.spec:MJCF",
                                          "cosim.scene.spec:ElasticPlate")))
 WAVES = Registry("wave kind", "cosim.waves", "cosim.scene.spec:WAVES",
-                 _scene_class("kind", ("cosim.scene.seas:IncidentSea", "cosim.scene.spec:Piston", "cosim.scene.spec:Flap",
-                                       "cosim.scene.spec:PaddleRecord")))
+                 _scene_class("kind", ("cosim.scene.seas:IncidentSea", "cosim.scene.spec:Piston",
+                                       "cosim.scene.spec:Flap", "cosim.scene.spec:PaddleRecord")))
 MOORINGS = Registry("mooring model", "cosim.moorings", "cosim.scene.mooring_models:MODELS",
                     _instance_of("cosim.scene.mooring_models:MooringModel"))
 PROBES = Registry("probe", "cosim.probes", "cosim.scene.probes:PROBES", _instance_of("cosim.scene.probes:Probe"))
