@@ -1,4 +1,4 @@
-"""The state of the water in the arch rib of seed 003 (003_7c74773681ee080c.txt §4) while
+"""The state of the water in the arch rib of Wang et al. 2022 (§4) while
 El Centro EW shakes it, against the frequency read from the free (symmetric) part of the
 wall pressures: does the water change (density, level, particles lost) so that its
 quarter-wave mode f = c / (4 L) falls during the record?
@@ -11,7 +11,7 @@ particle snapshots every ``--every`` s (0.1), then, per snapshot, in the rib's f
 rib translates rigidly: its displacement is the walls' mean displacement):
 
 - ``rho``: the water's mean density; ``dev``: the mean of rho / rho_h - 1 over the water
-  inside the cavity, rho_h the Tait density (004_1657bd4a51d29840.txt Eq. 8) of the
+  inside the cavity, rho_h the Tait density (Barreiro et al. 2016, Eq. 8) of the
   hydrostatic rest state at the particle's height under the still level
   (``fluid.equations.hydrostatic_density``), all and in height bands (0-4, 4-8, 8-12,
   12-14, 14 m up): the water's expansion (< 0) or compression against rest;
@@ -26,74 +26,16 @@ rib translates rigidly: its displacement is the walls' mean displacement):
   through the walls), ``removed``: those that left the domain;
 - ``void``: 1 - (the leg's SPH volume) / (the cavity's area under lev_axis).
 
-Over windows: the free part's first spike (``spikes`` at half the highest, as ``run_rib``),
-each leg's and the antisymmetric part's, the state's means, and the quarter-wave
-frequency the state predicts relative to t = 0, ``pred_rel`` = (L(0) / L) (1 + 3 (dev -
-dev(0))) (f = c / (4 L), c = c0 (rho/rho0)^3 under Tait with gamma = 7); how much of the
-symmetric part is the antisymmetric (forced) part leaking into it (``leak_share``: the
-R^2 of the one on the other and its quadrature, both band-passed 0.6-1.6 Hz); per 2 s,
-the zero-crossing frequency and envelope of each part (``cycle_frequency``). With
-``--stop`` / ``--ringdown``: ``damped_mode`` fits of the free ringing (each leg alone, the
-symmetric and antisymmetric parts).
+Over windows: the free part's first spike (``spikes`` at half the highest, as ``run_rib``), each
+leg's and the antisymmetric part's, the state's means, the quarter-wave frequency the state
+predicts relative to t = 0 (``pred_rel`` = (L(0) / L) (1 + 3 (dev - dev(0))): Tait, gamma = 7),
+the forced part's share of the free one (``leak_share``, R^2 in the band 0.6-1.6 Hz), per 2 s
+each part's zero-crossing frequency and envelope; with ``--stop`` / ``--ringdown``, ``damped_mode`` fits.
 
     python benchmarks/arch_rib_drift.py --dx 0.2 --duration 20 --out /tmp/ardrift_02
-    python benchmarks/arch_rib_drift.py --dx 0.1 --duration 20 --out /tmp/ardrift_01
-    python benchmarks/arch_rib_drift.py --dx 0.1 --duration 15 --stop 10 --every 0.5 --windows 2-9.5,5-10 \
-        --out /tmp/ardrift_01_stop10
-    python benchmarks/arch_rib_drift.py --analyse /tmp/ardrift_01 --dx 0.1   # again, from the snapshots
+    python benchmarks/arch_rib_drift.py --analyse /tmp/ardrift_02 --dx 0.2   # again, from the snapshots
 
-Measured 2026-11-26 (AMD EPYC, one thread, NUMBA_NUM_THREADS=1, 2 cores shared with two
-other jobs, loaded). dx = 0.2 m, 20 s (8,646 particles, 2,310 of water; 354 CPU-s):
-nothing drifts. No particle left the domain, 3-4 of 2,310 lie outside the cavity from 4 s
-on; ``dev`` 0.7e-4 at t = 0, 1.4-1.6e-4 over the windows (no expansion: the water stays
-at its hydrostatic density within 0.02 %, every band within 0.05 %); the legs' columns
-31.68 m at t = 0, window means 31.69-31.71 m (the legs apart by up to 0.29 m snapshot to
-snapshot as they swing in opposite phase, by under 5 mm on a window's mean); so
-``pred_rel`` 0.9991-0.9996. The free part's first spike over
-2-11.5, 5-20, 10-20, 15-20 s: 0.986, 0.979, 0.954, 0.986 Hz (the mode rung free, 0.983:
-no trend, -3.0 to +0.3 %); the antisymmetric part's 0.955, 0.953, 0.973, 1.038 Hz. The
-symmetric part is 3-5 % of the antisymmetric in the band, and 23-32 % of its variance
-(75 % over 15-20 s) is explained linearly by the antisymmetric and its quadrature (an
-upper bound on a leak of the forced response into it: two narrow-band signals at the same
-mode correlate so whatever their source).
-
-dx = 0.1 m, 20 s (the full variant's run: 21,386 particles, 9,256 of water; 1,607 CPU-s,
-33 min of wall): the frequency drifts as in the full variant (free part's first spike
-over 2-11.5, 5-20, 10-20, 15-20 s: 1.145, 1.067, 1.067, 1.043 Hz; there 1.142, 1.065,
-1.060, 1.046; over 2-20 s 1.016), but the water does not change. No particle left the
-domain, 0-2 of 9,256 lie outside the cavity; the mean density 1003.49-1003.62 kg/m^3,
-``dev`` -0.7e-5 to 1.3e-4 over the run (every band within 2.6e-4); the columns 31.688 m at
-t = 0, window means 31.719-31.727 m (the legs within 2 mm on a window's mean, up to 0.18 m
-apart snapshot to snapshot), the 99th percentile of the heights 15.45-15.54 m, the packing
-``nfull`` 0.995-1.008. So ``pred_rel`` is 0.9987-0.9990 in every window: the state moves
-the quarter-wave mode by -0.1 %, against the -6.9 % (5-20 s) to -9.0 % (15-20 s) read.
-What moves is what the symmetric part holds. It is small, 0.4-1.2 kPa per 2 s (the
-antisymmetric, forced part 15-47 kPa), 2.4-2.7 % of the antisymmetric in every window,
-and more and more of it is the antisymmetric's image (R^2 above: 0.16, 0.28, 0.74, 0.97
-over the four windows): the start's symmetric ringing decays while a fixed 2-3 % leak of
-the forced response grows with the record (the settled particles at t = 0 are exactly
-mirror-symmetric, water and walls: the asymmetry arises during the run, as round-off
-amplified by the shaken particles' motion or a second-order symmetric response; not
-told apart here). From 10 s on the symmetric part's spike is the forced response's (each leg and
-the antisymmetric part: 1.108, 1.082, 1.090, 1.061, 1.039 Hz over 1-10, 2-11.5, 5-20,
-10-20, 15-20 s: the peak of a response driven by the record, which moves with the
-record's content over the window), and before it a weak signal whose zero crossings
-scatter 1.00-1.24 Hz per 2 s.
-
-The water rings free, after the record, at the mode rung from rest (``--dx 0.1 --duration
-15 --stop 10 --every 0.5``, measured when ``--stop`` cut the accelerogram at 10 s, faded
-its last 0.5 s and corrected the cut record's baseline anew, before ``GroundMotion.stop``
-kept the record's own motion to 9.5 s; the rib at rest after 10 s; 1,177 CPU-s): ``damped_mode`` over 10.5-15, 11-15, 10.5-14 s reads 1.0739-1.0742 Hz on
-the right leg's nine points, 1.0742-1.0752 on the left's, 1.0742-1.0745 on the
-antisymmetric part (residual 0.014-0.021), against 1.078 Hz rung free from rest by the
-pulse (``ring_rib``, same dx): -0.3 to -0.4 % after 10 s of shaking, as the state predicts
-(``pred_rel`` 0.9988-0.999, columns 31.716-31.718 m; no particle lost). The symmetric
-part there is weak and noisy (residual 0.29-0.31; 1.054-1.071 Hz). So the fall of the
-full variant's reading (1.142 -> 1.046 Hz) is not the water's mode falling: it is the
-window's spectrum of a symmetric part that holds, late in the record, mostly a 2-3 %
-image of the record-driven response (whose peak moves with the record); the density
-diffusion (the sloshing set-up's Fourtakas form, with its hydrostatic correction) keeps
-the water at its hydrostatic density within 2.6e-4 all along.
+The runs at dx = 0.2 and 0.1 m, with and without ``--stop``, and what they show: docs/benchmarks/arch_rib_drift.md.
 """
 
 from __future__ import annotations

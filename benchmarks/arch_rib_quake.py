@@ -1,4 +1,4 @@
-"""The water in the hollow arch rib of seed 003 (003_7c74773681ee080c.txt §4) under the
+"""The water in the hollow arch rib of Wang et al. 2022 (§4) under the
 1940 El Centro records: a coarse run, and what the paper's spike frequencies are.
 
 ``--predict`` (no run, a second): the quarter-wave acoustic resonance of the water column
@@ -6,13 +6,11 @@ in each leg of the rib, ``f_n = (2n - 1) c0 / (4 L)`` (a column closed at the sp
 free at the surface; L its length along the rib's axis from the springing to the water
 level, c0 the model's speed of sound), with the paper's c0 = sqrt(7 B / rho0) = 140 m/s
 (B = 2.8e6 Pa, §4), against the paper's first spike / inner-wave frequency over its depth
-study (Table 5, Eq. 18) and its overtones (Table 3: near 3, 5, 7 times the first). For an
-arch-axis coefficient m = 2.24 the first mode meets Table 5 within 1 % at 8 of its 10
-depths and within 2.4 % at all (13-21 m: 1.40 to 0.67 Hz), the overtones come 8-10 %
-above Table 3's (3.32, 5.54, 7.75 against 3.05-3.08, 5.05-5.13, 7.03-7.15 Hz). So the
-spikes the paper reads as the water's natural frequency look like the acoustic modes of
-its artificially compressible water, which move with the speed of sound chosen (real
-water: 1480 m/s, 11.7 Hz).
+study (Table 5, Eq. 18) and its overtones (Table 3: near 3, 5, 7 times the first). At an
+arch-axis coefficient m = 2.24 the first mode meets Table 5 within 2.4 % at all ten depths,
+the overtones 8-10 % above Table 3's: the spikes the paper reads as the water's natural
+frequency look like the acoustic modes of its artificially compressible water, which move
+with the speed of sound chosen (real water: 1480 m/s, 11.7 Hz).
 
 Run (``--dx 0.2 --duration 20``): the rib (``fluid.shapes.arch_rib_cavity``, m = 2.24,
 inner height 1.458 m: the paper gives neither; these meet its particle counts within 1 %,
@@ -24,156 +22,20 @@ correlation (the paper: opposite phase under horizontal excitation, Figure 13), 
 quarter-wave prediction for the run's c0. ``--c0`` sets the speed of sound (the paper's
 140 m/s; default: the sloshing set-up's 10 sqrt(g h)).
 
-(The first runs, at c0 = 126 and 63 m/s, moved the first peak in proportion to c0: an
-acoustic mode, not sloshing; docs/validation/arch-rib_history.md.)
-
-The mode rung free (``--ringdown``, ``cosim.validations.arch_rib.ring_rib``): the rib
-settled 1.5 s, one vertical displacement pulse (20 mm, one 1 s sine, faded in and out),
-then free ringing; the symmetric part of B1-B18 from 1 s to the end fitted by one damped
-mode and its overtone (``damped_mode``: frequency and decay shared by the nine pairs,
-each pair's amplitude, phase and drift its own). Under El Centro the same mode is driven
-all along, and the peak of its spectrum over 9 s moves with the window by 0.4-3.6 %
-(dx = 0.3-0.1 m, windows 1-10, 1-8, 3-10, 2-9, 1-9, 2-10 s), as much as the 2 % asked;
-rung free it is one damped sinusoid, and the fits over 1-6, 1.5-6, 1-5, 1.5-5 s agree to
-0.01-0.1 % (1.2 % at dx = 0.3 m, where water leaks out and the level falls). The
-resolution study at the design level, c0 = 140 m/s, against the column's continuum mode
-(``stratified_quarter_wave``: the Tait water's sound speed rises with depth as
-sqrt(c0^2 + 6 g d), 1.124 Hz, 1.5 % above c0/(4L) = 1.108 Hz)::
+``--ringdown`` rings the mode free (a pulse, then free ringing; ``cosim.validations.arch_rib.ring_rib``,
+fitted by ``damped_mode``) instead of driving it; ``--convergence DXS`` runs the resolution
+study at the design level against the column's continuum mode (``stratified_quarter_wave``:
+the Tait water's sound speed rises with depth as sqrt(c0^2 + 6 g d)); ``--depth-study`` rings
+the mode at each of Table 5's ten levels (``--levels`` a subset, ``--json FILE`` keeps the
+rows); ``--cases ew,ns,up,ew+up,ns+up`` runs one record each at the design level (Tables 3-4,
+Figures 13-15; ``--figures DIR`` one PNG per case); ``--stop T`` holds the rib still from T
+on, the water ringing after the record. For example::
 
     python benchmarks/arch_rib_quake.py --convergence 0.3,0.2,0.15,0.1,0.07 --ringdown --duration 6
-
-Measured 2026-11-26 (AMD EPYC, one thread, NUMBA_NUM_THREADS=1, 2 cores shared with two
-other jobs, loaded: 2,106 CPU-s in 44 min of wall; CPU-s per simulated second include the
-1.5 s settling; "40 s": a 40 s record and its settling at that rate)::
-
-    =====  ======  =========  =======  ======  ======  ==========  ===========
-    dx     across  particles  CPU-s/s  mode    spread  vs column   40 s, CPU-s
-    =====  ======  =========  =======  ======  ======  ==========  ===========
-    0.30   4.9     4,970      9.7      0.978   1.2 %   -13.0 %     400
-    0.20   7.3     8,646      17.4     0.983   0.05 %  -12.6 %     720
-    0.15   9.7     12,450     30.2     1.058   0.1 %   -5.9 %      1,250
-    0.10   14.6    21,386     68.3     1.078   0.03 %  -4.2 %      2,840
-    0.07   20.8    36,130     155.3    1.106   0.01 %  -1.6 %      6,440
-    =====  ======  =========  =======  ======  ======  ==========  ===========
-
-(Hz; "across": 1.458 m / dx; "spread": of the four windows' fits.) No Richardson
-extrapolation: from the three finest the mode rises 1.9 % then 2.6 %, the steps growing,
-so no order p fits f = f* + C dx^p (these spacings are not in the asymptotic range; how
-the lattice meets the two walls changes with dx, 0.3 m to 0.2 m moved it only 0.5 %).
-Against the continuum mode, 1.124 Hz (Table 3's 1.125 Hz within 0.1 %), the cheapest dx
-within 2 % is 0.07 m (21 particles across, -1.6 %): a 40 s record costs some 6,400 CPU-s
-there (1.8 CPU-hours on one thread, some 2.7 hours of wall at the 65 % of a core the run
-got here); dx = 0.1 m is 4.2 % under it. That the runs converge to that value is shown
-only as far as the deficit shrinks with dx (12.6, 5.9, 4.2, 1.6 %); a run at 0.05 m (some
-3,200 CPU-s for 6 s) would test it. Under El
-Centro EW (10 s, the symmetric part's peak; history file) dx = 0.2, 0.15, 0.1 m read
-0.989, 1.046, 1.094 Hz: 0.6 % above, 1.1 % below, 1.5 % above the rung mode.
-
-The depth study of 003 §4.3 (Table 5: the first spike against the water depth, 13-21 m)
-as one command, the mode rung free at each of Table 5's ten levels, at the paper's
-c0 = 140 m/s; printing ours against Table 5, c0/(4L) and the column's continuum mode, with
-each run's CPU time per simulated second and its length (``--levels`` a subset; ``--json
-FILE`` keeps the rows; without ``--ringdown``: the first spike of the symmetric part under
-El Centro EW, standing in for the paper's Wenchuan)::
-
     python benchmarks/arch_rib_quake.py --depth-study --ringdown --dx 0.1 --duration 4
 
-``--duration`` is the shortest run: ``ring_duration`` adds 2 s until the shortest of
-``ring_rib``'s four fit windows (1.5 s to the end less 1 s) holds 1.2 periods of the
-level's c0/(4L), which gives 4 s down to 19 m and 6 s at 20 and 21 m, whose longer columns
-ring slower. Over 4 s that window holds 1.23 periods at 19 m, and the four fits agree
-within 0.37 %; 1.13 at 20 m, 0.93 % (the first 4 s of its 6 s run); 1.03 at 21 m, 7 %
-(the mode itself read the same within 0.1 % at both lengths). Some 4,300 CPU-s in all.
-
-Measured so (2026-11-26, AMD EPYC, one thread, NUMBA_NUM_THREADS=1, 2 cores shared with
-two other jobs, loaded; each level its own run, 4 s down to 19 m, 6 s at 20 and 21 m)::
-
-    =====  =====  =======  =======  ======  ======  ========  =========  =======  =====
-    depth  ours   Table 5  c0/(4L)  column  vs T5   vs c0/4L  vs column  CPU-s/s  CPU-s
-    =====  =====  =======  =======  ======  ======  ========  =========  =======  =====
-    13     1.363  1.40     1.398    1.416   -2.6 %  -2.5 %    -3.7 %     62.7     345
-    14     1.241  1.28     1.273    1.291   -3.1 %  -2.5 %    -3.9 %     62.5     343
-    15     1.136  1.17     1.163    1.181   -2.9 %  -2.4 %    -3.8 %     64.3     354
-    15.56  1.078  1.11     1.107    1.124   -2.9 %  -2.6 %    -4.1 %     71.6     394
-    16     1.041  1.06     1.066    1.083   -1.8 %  -2.3 %    -3.8 %     71.6     394
-    17     0.958  0.97     0.978    0.994   -1.2 %  -2.0 %    -3.6 %     71.5     393
-    18     0.881  0.92     0.897    0.913   -4.2 %  -1.8 %    -3.5 %     75.4     414
-    19     0.813  0.83     0.823    0.838   -2.1 %  -1.2 %    -3.0 %     77.9     429
-    20     0.748  0.74     0.753    0.767   +1.1 %  -0.6 %    -2.5 %     80.6     605
-    21     0.685  0.67     0.684    0.697   +2.2 %  +0.1 %    -1.8 %     83.6     627
-    =====  =====  =======  =======  ======  ======  ========  =========  =======  =====
-
-(Hz; 19,436-27,054 particles; CPU-s include the 1.5 s settling; the four windows' fits
-spread 0.03-0.37 % at 14, 15, 15.56, 16, 18, 19, 20 and 21 m; the design level over 6 s,
-in the resolution study, read the same 1.078 Hz.) At dx = 0.1 m ours meets Table 5 within 5 % at all ten of its
-levels (-4.2 % at 18 m to +2.2 % at 21 m; at dx = 0.3 m under EW it missed by 5-21 %,
-history file); the largest, at 18 m, is where Table 5's 0.92 Hz lies 2.5 % above c0/(4L),
-off the trend of its neighbours, while ours lies 1.8 % under c0/(4L) as at the levels
-around it. Ours lies 3.0-4.1 % under the column's continuum mode down to 19 m, 2.5 % at
-20 m and 1.8 % at 21 m (the longest columns).
-
-The paper's cases without Wenchuan (003 §4.2: Tables 3-4, Figures 13-15), one run each at
-the design level (``--cases``; settled 1.5 s, spectra from 1 s on): the first spike of
-B1-B18 summed (Table 3), that of the unforced part (symmetric under a horizontal record,
-antisymmetric under the vertical; none for the combined), the inner wave (two gauges on
-the surface where the axis is 0.4 m under the level, each gauge's drift removed; Table 4),
-the pairs' correlation (Figures 13-14), and one PNG per case (the spectra with Table 3's
-first spike, c0/(4L) and the bridge's 2nd and 4th modes of Table 2 marked; the plots of
-docs/validation/arch-rib/)::
-
-    python benchmarks/arch_rib_quake.py --cases ew,ns,up,ew+up,ns+up --dx 0.3 --duration 8 --figures DIR
-
-Measured so (4,948-4,966 particles, 68-70 CPU-s a case, 7.2-7.3 CPU-s per simulated
-second; 36-42 of the 1,056 water particles lost through the walls in 9.5 s; the gauges
-of these runs without the drift removed)::
-
-    =======================  ======  =======  ======  ===============  ========
-    El Centro                all     Table 3  free    pairs            phase
-    =======================  ======  =======  ======  ===============  ========
-    EW                       0.513   1.125    0.985   -0.94 .. -0.61   opposite
-    NS                       0.949   1.125    0.925   -0.98 .. -0.82   opposite
-    vertical                 0.990   1.125    (5.44)  +1.00 .. +1.00   same
-    EW + vertical            0.512   1.125    -       -0.91 .. -0.65   opposite
-    NS + vertical            0.491   1.125    -       -0.90 .. -0.74   opposite
-    =======================  ======  =======  ======  ===============  ========
-
-(Hz.) Figures 13-14 are met: every pair in opposite phase under EW and NS, in the same
-phase under the vertical record (the unforced, antisymmetric part there is numerical
-noise, 5.4 Hz, a thousandth of the symmetric); under EW + vertical the horizontal
-component rules the phase, under NS + vertical too (the paper expects both bending
-shapes to matter there and shows no figure). The water's mode is the same under every record, 0.93-0.99 Hz at this dx
-(the unforced part under EW and NS; all points under the vertical record, which drives
-the symmetric mode directly; the highest peak of all points under the combined records,
-about 0.93-0.95 Hz), as the paper's 1.125 Hz is under all six; the first spike of all
-points (the rule: the lowest peak at a fifth of the highest) is the record's under EW and
-both combined records (0.49-0.51 Hz, a shoulder at 0.2-0.4 of the highest). So Table 3's
-criterion, read on all points, fails by 12-56 % at this dx, and by 12-18 % on the mode.
-The paper finds its spike between the bridge's 2nd and 4th modes, 0.94 and 1.66 Hz, and
-so no resonance; at dx = 0.3 m ours lies on the 2nd (0.925-0.99 Hz, within 5 %), at
-0.07 m (1.106 Hz, the resolution study) 18 % above it, where the paper's is 19 % above.
-
-After each record (``--cases ew,ns,up,ew+up,ns+up --dx 0.2 --duration 12 --stop 8
---figures DIR``: each record to 8 s, the rib at rest from 8 s, the water ringing to 12 s,
-``run_rib(stop=8)``, the validation's judged reading; 2026-11-26, AMD EPYC, one thread,
-two runs beside each other; 198-221 CPU-s a case) the water rings at the same mode under
-all five: 0.9725 (EW), 0.9755 (NS), 0.9728 (vertical), 0.9725 (EW + vertical), 0.9751 Hz
-(NS + vertical), within 0.3 % of each other (-13.3 to -13.6 % of 1.125 Hz; the mode rung
-free by a pulse at this dx, 0.983 Hz), each window's fits within 0.02-0.34 %; overtones
-2.93-3.00, 4.0-5.2, 7.28-7.33 Hz. Over the records themselves: all points' first spike
-0.49-0.61 Hz (the records'), the unforced part 0.962 (NS), 0.987 (EW), 0.994 Hz
-(vertical); pairs opposite under every record with a horizontal component (-0.92 to
--1.00), the same under the vertical alone (+1.000). So the paper's "same 1.125 Hz under
-all six cases" is the water's own mode, which every record rings; at dx = 0.2 m ours
-lies 13 % under it, at 0.1 m 4.5 % (the validation's full variant).
-
-The inner wave (Table 4: 1.10-1.15 Hz, 1.14 under EW, 1.15 under NS) is not what our
-surface gauges show: at dx = 0.2 m the surface's first spike is the record-driven motion,
-0.48 Hz under EW and 0.44 Hz under NS (-58 %, -62 %), its symmetric part's 0.66 and 0.57
-Hz; the acoustic mode shows on the surface only as a second peak near 0.92 Hz (0.65 of
-the highest under EW). The paper does not say how it read its inner-wave frequency
-("after careful calculation"); that it equals its first spike (1.125 Hz) within 2 %
-in every case suggests it was read from the same acoustic mode (Table 4 lies within 4 %
-of c0/(4L), tests/test_arch_rib.py), not from the surface's sloshing.
+The measured tables (resolution, depth study, the five records, the inner wave) and what
+they show: docs/benchmarks/arch_rib_quake.md.
 """
 
 from __future__ import annotations
@@ -188,7 +50,7 @@ import numpy as np
 from cosim import refdata
 from fluid.shapes import arch_rib_cavity, catenary_arch_axis
 
-SPAN, RISE, LEVEL = 140.0, 23.333, 15.56  # m, 003 §4
+SPAN, RISE, LEVEL = 140.0, 23.333, 15.56  # m, Wang et al. 2022, §4
 M, HC = 2.24, 1.458  # arch-axis coefficient [-], inner height [m]: chosen (see the docstring)
 C0_PAPER = math.sqrt(7 * 2.8e6 / 1000.0)  # m/s, from the paper's B = 2.8e6 Pa and gamma = 7
 
@@ -220,14 +82,14 @@ def _paper_table(name):
 def predict() -> None:
     t5 = [(float(r["depth_m"]), float(r["wave_frequency_Hz"]))
           for r in csv.DictReader(open(refdata.path("arch_rib_wang2022", "table5_wave_frequency_vs_depth.csv")))]
-    print(f"quarter-wave mode c0/(4L), c0 = {C0_PAPER:.1f} m/s (the paper's B), against 003 Table 5 and Eq. 18")
+    print(f"quarter-wave mode c0/(4L), c0 = {C0_PAPER:.1f} m/s (the paper's B), against Wang et al. 2022, Table 5 and Eq. 18")
     print(f"{'depth [m]':>10} {'L [m]':>7} " + " ".join(f"{'m=' + str(m):>8}" for m in (1.5, 2.24, 3.0))
           + f" {'Table 5':>8} {'Eq. 18':>8}")
     for d, f5 in t5:
         eq18 = (4.10239 * (d / RISE) ** 2 - 9.22848 * (d / RISE) + 6.06132) / math.sqrt(RISE / 9.81)
         row = " ".join(f"{quarter_wave(C0_PAPER, d, m):8.3f}" for m in (1.5, 2.24, 3.0))
         print(f"{d:10.2f} {column_length(d):7.2f} {row} {f5:8.2f} {eq18:8.3f}")
-    print("\novertones at 15.56 m (quarter wave: 1, 3, 5, 7 times the first) against 003 Table 3 [Hz]:")
+    print("\novertones at 15.56 m (quarter wave: 1, 3, 5, 7 times the first) against Wang et al. 2022, Table 3 [Hz]:")
     f1 = quarter_wave(C0_PAPER, LEVEL)
     print(f"{'quarter wave, m = 2.24':>26}: " + ", ".join(f"{(2 * n - 1) * f1:.3f}" for n in range(1, 5)))
     for r in _paper_table("table3_spikes.csv"):
@@ -429,7 +291,7 @@ def spectrum_plot(curves: dict, folder: str, name: str, title: str) -> str:
         c[label] = {"x": f[keep].tolist(), "y": (a[keep] / a[(f > F_MIN) & keep].max()).tolist(), "style": "-"}
     for label, x in bridge_mode_lines().items():
         c[label] = {"x": x["x"].tolist(), "y": x["y"].tolist(), "style": x["style"]}
-    c[f"003 Table 3 first spike (1.125 Hz); c0/(4L) at 140 m/s ({quarter_wave(C0_PAPER, LEVEL):.3f} Hz)"] = {
+    c[f"Wang et al. 2022, Table 3 first spike (1.125 Hz); c0/(4L) at 140 m/s ({quarter_wave(C0_PAPER, LEVEL):.3f} Hz)"] = {
         "x": [1.125, 1.125, math.nan, quarter_wave(C0_PAPER, LEVEL), quarter_wave(C0_PAPER, LEVEL)],
         "y": [0.0, 1.0, math.nan, 0.0, 1.0], "style": "k--"}
     Path(folder).mkdir(parents=True, exist_ok=True)
@@ -440,7 +302,7 @@ def spectrum_plot(curves: dict, folder: str, name: str, title: str) -> str:
 
 def cases(dx: float, duration: float, c0: float, records, figures: str | None = None,
           gauges: bool = True, stop: float | None = None) -> list[dict]:
-    """The paper's excitation cases without Wenchuan (003 §4.2, Tables 3-4, Figures 13-15),
+    """The paper's excitation cases without Wenchuan (Wang et al. 2022, §4.2, Tables 3-4, Figures 13-15),
     one run each at the design level: the spikes of B1-B18 summed against Table 3, those
     of the unforced part (one-direction records), the inner wave (the gauges' surface
     elevation) against Table 4, and the pairs' phase (Figures 13-14); with ``stop`` [s]

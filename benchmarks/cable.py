@@ -1,13 +1,13 @@
-"""Cost of the SPH cable (seed 000) -- a benchmark, not a test.
+"""Cost of the SPH cable (Dinçer & Demir 2020) -- a benchmark, not a test.
 
 Prints
 1. compile time of the compiled kernels (in a fresh process with an empty numba cache)
    and the cache-load time of a warm start;
 2. microseconds per particle-step and wall time per simulated second at several particle
-   counts, for a line in air (seed 000 Experiment 2) and for a 100-particle mooring line
+   counts, for a line in air (Dinçer & Demir 2020, Experiment 2) and for a 100-particle mooring line
    in water (Morison drag, added mass, seabed), next to the cost of one quasi-static
    catenary evaluation (moorings.catenary.solve) for the same line;
-3. the speed/accuracy trade (error and wall time at several particle counts) of seed 000
+3. the speed/accuracy trade (error and wall time at several particle counts) of Dinçer & Demir 2020,
    Case 1 (displacement of L against the exact elastic catenary), Experiment 2 at rest
    (shape and reactions), the mooring line against the quasi-static catenary,
    Experiment 2 shaken (free period against the measured 0.42 s and against the finest
@@ -63,7 +63,7 @@ def main(quick: bool = False) -> None:
     print("compile (empty numba cache): %.2f s; warm start (cache load): %.2f s"
           % (first_call_seconds(True), first_call_seconds(False)))
 
-    print("\nline in air, seed 000 Experiment 2 (EA = 21.4 kN, l = 1.272 m), cfl 0.4")
+    print("\nline in air, Dinçer & Demir 2020, Experiment 2 (EA = 21.4 kN, l = 1.272 m), cfl 0.4")
     print(f"{'particles':>10} {'stable dt [s]':>14} {'us/particle-step':>17} {'wall s per sim s':>17}")
     for n in ([25, 100, 400] if quick else [25, 100, 400, 1600]):
         c = SPHCable(1.272, n, 2.14e4, 0.02708, (0, 0), (1.2, -0.22), weight_per_length=0.2656)
@@ -91,7 +91,7 @@ def main(quick: bool = False) -> None:
 
     from cosim.validations.cable import run_case1, run_exp2_static, run_vs_catenary
 
-    print("\nseed 000 Case 1 (35.586 kN at L): error of the displacement of L against the exact catenary")
+    print("\nDinçer & Demir 2020, Case 1 (35.586 kN at L): error of the displacement of L against the exact catenary")
     print(f"{'particles':>10} {'err dz':>10} {'err dx':>10} {'err dz vs Table 2':>18} {'wall [s]':>9}")
     for n in ([20, 40, 80] if quick else [20, 40, 80, 160, 313]):
         w0 = time.perf_counter()
@@ -99,7 +99,7 @@ def main(quick: bool = False) -> None:
         print(f"{n:>10} {mm['err_dz_vs_exact']:>10.2e} {mm['err_dx_vs_exact']:>10.2e} "
               f"{mm['err_dz_vs_table2']:>18.2e} {time.perf_counter() - w0:>9.2f}")
 
-    print("\nseed 000 Experiment 2 at rest: shape and reactions against the exact catenary")
+    print("\nDinçer & Demir 2020, Experiment 2 at rest: shape and reactions against the exact catenary")
     print(f"{'particles':>10} {'max shape err [m]':>18} {'err H vs exact':>15} {'err weight':>11} {'wall [s]':>9}")
     for n in ([16, 31, 61] if quick else [16, 31, 61, 121]):
         w0 = time.perf_counter()
@@ -125,7 +125,7 @@ def shake_convergence(sizes: list[int]) -> None:
 
     L = fit_length_to_measured_shape()
     bin_ms = 1e3 * EXP2_PERIOD**2 / (SHAKE_NFFT * SHAKE_DT_OUT)
-    print(f"\nseed 000 Experiment 2 shaken (l = {L:.4f} m fitted to Table 5): free period vs the measured "
+    print(f"\nDinçer & Demir 2020, Experiment 2 shaken (l = {L:.4f} m fitted to Table 5): free period vs the measured "
           f"{EXP2_PERIOD} s and vs the finest run\n(FFT peak: one spectral bin is {bin_ms:.1f} ms of period; "
           "wall = both types)")
     print(f"{'particles':>10} {'T1 [s]':>8} {'err T1':>9} {'dT1 [ms]':>9} {'T2 [s]':>8} {'err T2':>9} "
@@ -154,7 +154,7 @@ def free_fall_convergence(sizes: list[int], times=(0.3, 0.6, 0.9, 1.2)) -> None:
         traj = {round(t, 3): np.array([x, z]) for t, x, z in m["free_end_xz_every_0.1s"]}
         runs.append((n, traj, m["dissipated_fraction_of_w_L_L"], time.perf_counter() - w0))
     fine, dfine = runs[-1][1], runs[-1][2]
-    print("\nseed 000 Experiment 1 released at P5: free end |x - x_finest| [mm] at t [s] (max: over 0.1-1.2 s "
+    print("\nDinçer & Demir 2020, Experiment 1 released at P5: free end |x - x_finest| [mm] at t [s] (max: over 0.1-1.2 s "
           "every 0.1 s)\nand energy dissipated by 1.2 s (fraction of w L^2) vs the finest run")
     head = "".join(f"{f't={t:g}':>8}" for t in times)
     print(f"{'particles':>10}{head}{'max':>8} {'dissipated':>11} {'d dissip':>9} {'wall [s]':>9}")

@@ -19,7 +19,7 @@ import numba
 import numpy as np
 from scipy.optimize import brentq
 
-# seed 004 Table 1 line, at a partly lifted and a fully lifted X
+# Barreiro et al. 2016, Table 1 line, at a partly lifted and a fully lifted X
 L, W, H_FAIR = 6.98, 1.036, 2.651
 CASES = [("partly lifted", 5.8), ("fully lifted", 6.4)]
 EA = 1e4
@@ -29,7 +29,7 @@ EA = 1e4
 
 
 def brentq_inextensible(X, h, L, w):
-    """Seed 004 Eq. 39 solved for a = H/w with brentq (partly lifted), or the
+    """Barreiro et al. 2016, Eq. 39 solved for a = H/w with brentq (partly lifted), or the
     two-point catenary (L^2 - h^2 = (2a sinh(X/2a))^2) beyond lift-off."""
     if X <= L - h:
         return 0.0, w * h

@@ -7,9 +7,7 @@ it needs NVVM and NVRTC, which the CUDA toolkit or two wheels provide (no driver
 
 Prints each kernel's PTX size and, for the pair loop's variants, its double-precision
 divisions and fused multiply-adds; exits with the number of kernels that failed.
-Measured (2026-11-25, numba-cuda 0.30.4, NVVM 13.5, sm_90): every kernel compiles; the
-pair loop holds 4 divisions (Wendland, no optional term) to 6 (with the fade or the
-cubic kernel), 1-2 of them per pair.
+Every kernel compiles; the measured divisions per variant: docs/benchmarks/cuda_compile_check.md.
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""Resolution table of the dambreak-lobovsky case (seed 002 Appendix A, Lobovsky et al. 2014,
+"""Resolution table of the dambreak-lobovsky case (Yang & Li 2020, Appendix A, Lobovsky et al. 2014,
 H = 0.3 m; cosim/validations/dambreak_lobovsky.py): the water levels at H1-H4 against the
 measured runs, and the cost, at each dx.
 

@@ -14,45 +14,10 @@ first and last fifths: a run whose wiggle grows is going unstable.
     python benchmarks/density_ratio_sweep.py [--t-end 0.12] [--dx 0.02]
         [--ratios 0.001,0.003,0.01,0.05,0.1,0.2,1] [--cases explicit,fluid-first,fluid-first+subiterate]
 
-Measured (NUMBA_NUM_THREADS=1, defaults, main at a946a8e with the body boundary of
-that day; "stopped N" = the coupler stopped the run at step N, and why; otherwise "ok"
-and the wiggle rms, first -> last fifth [m/s^2]; in brackets the mean fluid advances per
-step of the sub-iterations):
-
-    ratio  explicit            predictor-corrector  fluid-first               fluid-first + subiterate
-    0.001  stopped 12: Mach    stopped 25: Mach     stopped 7: Mach > 0.5     ok 691 -> 11 (3.8)
-           > 0.5               > 0.5
-    0.003  ok 508 -> 4.5       ok 458 -> 4.3        stopped 19: Mach > 0.5    ok 188 -> 2.7 (3.3)
-    0.01   ok 40 -> 0.71       ok 39 -> 0.71        stopped 73: Mach > 0.5    ok 30 -> 0.71 (3.1)
-    0.05   ok 1.6 -> 0.084     ok 1.6 -> 0.088      stopped 220: growing      ok 1.5 -> 0.083 (2.6)
-                                                    oscillation
-    0.1    ok 0.35 -> 0.029    ok 0.35 -> 0.029     ok 0.62 -> 0.095          ok 0.35 -> 0.030 (2.5)
-    0.2    ok 0.070 -> 0.0017  ok 0.070 -> 0.0059   ok 0.087 -> 0.0019        ok 0.069 -> 0.0055 (2.3)
-    1      ok 0.016 -> 0.0014  ok 0.016 -> 0.0014   ok 0.017 -> 0.0015        ok 0.016 -> 0.0014 (2.2)
-
-Where they all ran, they agree on the rise: the largest speed is 0.458 / 0.458 / 0.459
-m/s (explicit / predictor-corrector / sub-iterated) at 0.05, 0.480 / 0.480 / 0.482 at
-0.01, 0.432 at 0.1 (fluid-first alone 0.435, with 3 times the wiggle). With the body
-boundary before (main at 8f949c8, 0.2 s runs) fluid-first also grew at 0.1 and was
-stopped at step 945, and the predictor-corrector flipped sign every step at 0.001.
-
-So with the weakly compressible fluid, explicit and predictor-corrector coupling
-hold down to a ratio of about 0.003 and fluid-first only to about 0.1; the
-fluid-first instability is an oscillation of about 20 steps' period growing a few
-per cent per period near the limit (the body on the fluid's acoustic stiffness) or,
-lighter, a runaway within tens of steps, rather than the period-2 flip of the
-incompressible added-mass instability. Sub-iterating fluid-first (Aitken-relaxed,
-``Coupler(light_body="subiterate")``, which ``"auto"`` picks below a ratio of 0.3)
-holds it down to 0.001 at 2.2 to 3.8 fluid advances per step. Moving an added-mass
-estimate into the body's inertia (``light_body="added-mass"``) made every scheme
-*worse* here (``--ratios 0.05,0.1,0.2 --cases explicit+added-mass,
-predictor-corrector+added-mass,fluid-first+added-mass``: all three were stopped at
-0.05, the body above Mach 0.5 by step 196, and at 0.1 by step 220, oscillating; at
-0.2 they ran but the box reached 0.79 to 0.99 m/s instead of 0.38 and the wiggle
-grew, 0.07 -> 0.76): the SPH fluid's reaction to the body's acceleration comes
-acoustically later, not within the step that remedy assumes, so ``"auto"`` never picks
-it for the SPH fluid (it suits fluids whose loads react at once;
-tests/test_coupling_extremes.py).
+What it found (explicit and predictor-corrector coupling hold down to a ratio of about
+0.003, fluid-first to about 0.1, sub-iterated fluid-first to 0.001; the added-mass remedy
+makes every scheme worse on the SPH fluid, so ``"auto"`` never picks it there), with the
+measured table: docs/benchmarks/density_ratio_sweep.md.
 """
 
 import argparse

@@ -1,6 +1,6 @@
 """Accuracy and cost of two ways to build an elastic cantilever in MuJoCo.
 
-Seed 002's plate (Yang & Li 2020 §3.3: 1.2 cm thick, 8 cm high, rho_s = 2500 kg/m^3,
+Yang & Li 2020's plate (§3.3: 1.2 cm thick, 8 cm high, rho_s = 2500 kg/m^3,
 E = 1 MPa, nu = 0, clamped at its foot; 1 m deep as in a 2-D scene), against the
 clamped-free Timoshenko beam (kappa = 5/6; :func:`bodies.elastic.timoshenko_frequencies`,
 tip load ``P L^3 / (3 E I) + P L / (kappa G A)``):
@@ -155,7 +155,7 @@ def main(argv=None) -> None:
     ref_beam = elastic_beam("p", L, H, E=E, rho=RHO, width=W)
     f_ref = ref_beam.natural_frequencies()
     d_ref = ref_beam.tip_deflection_point(1.0)
-    print(f"# elastic cantilever: seed 002 plate L = {L} m, h = {H} m, W = {W} m, E = {E:g} Pa, "
+    print(f"# elastic cantilever: Yang & Li 2020 plate L = {L} m, h = {H} m, W = {W} m, E = {E:g} Pa, "
           f"rho = {RHO:g} kg/m^3, nu = 0")
     print(f"# Timoshenko: f = {f_ref[0]:.4f}, {f_ref[1]:.3f}, {f_ref[2]:.3f} Hz; tip load {d_ref * 1e3:.4f} mm/N "
           f"(Euler-Bernoulli: {', '.join(f'{x:.3f}' for x in ref_beam.natural_frequencies(theory='euler-bernoulli'))}"

@@ -1,4 +1,4 @@
-"""Seed 002 §4 (Yang & Li 2020, Table 2): the seven tests run as one scene family
+"""Yang & Li 2020, §4 (Table 2): the seven tests run as one scene family
 (:mod:`cosim.validations.elastic_table2`: the tests, their scenes, what is measured), the
 tables written and Figures 7-14 redrawn from our runs.
 
@@ -99,7 +99,7 @@ def plot(ms: dict, docs: Path) -> None:
             ax.plot([], [], "k*", label="paper's peak (text), at our peak's time")
         ax.set_xlabel("t [s]")
         ax.set_ylabel("corner x displacement [mm]")
-        ax.set_title(f"seed 002 Fig. {fa}: top of the structure, {label.split()[0]} varied", fontsize=9)
+        ax.set_title(f"Yang & Li 2020, Fig. {fa}: top of the structure, {label.split()[0]} varied", fontsize=9)
         ax.legend(fontsize=7)
         ax.grid(alpha=0.3)
         bx.axvspan(*PAPER["f_band_hz"], color="0.85", label="paper: 40-50 Hz (tests 1-3)")
@@ -117,7 +117,7 @@ def plot(ms: dict, docs: Path) -> None:
             ax.plot(m["p_extreme_kPa"], m["z_mm"], "o-", label=f"{label.split()[0]} = {TABLE2[t][col] * scale:g}")
         ax.set_xlabel("extreme net pressure on the node's share, 5 ms mean [kPa]")
         ax.set_ylabel("z [mm]")
-        ax.set_title(f"seed 002 Fig. {fb}: extreme pressure, {label.split()[0]} varied", fontsize=9)
+        ax.set_title(f"Yang & Li 2020, Fig. {fb}: extreme pressure, {label.split()[0]} varied", fontsize=9)
         ax.legend(fontsize=7)
         ax.grid(alpha=0.3)
         fig.text(0.01, 0.01, note, fontsize=6, color="0.4")
@@ -142,7 +142,7 @@ def plot(ms: dict, docs: Path) -> None:
             ax.set_ylabel(what)
             ax.grid(alpha=0.3)
             ax.legend(fontsize=7)
-        fig.suptitle(f"seed 002 Fig. {num}: {what} against each parameter", fontsize=9)
+        fig.suptitle(f"Yang & Li 2020, Fig. {num}: {what} against each parameter", fontsize=9)
         fig.text(0.01, 0.01, note, fontsize=7, color="0.4")
         fig.tight_layout(rect=(0, 0.04, 1, 1))
         fig.savefig(docs / f"fig{num}_{'displacement' if num == 13 else 'pressure'}_trends_{_tag(ms['_dx'])}.png")
@@ -171,7 +171,7 @@ def main(argv=None) -> None:
             rows.append(_row(ms[t], rec))
         with open(docs / f"table2_{_tag(dx)}.csv", "w", newline="") as f:
             csv.writer(f).writerows([HEAD] + rows)
-        lines = [f"# Seed 002 Table 2 at dx = {1e3 * dx:g} mm", "", *_table(rows, HEAD), "", *trends(ms), "",
+        lines = [f"# Yang & Li 2020, Table 2 at dx = {1e3 * dx:g} mm", "", *_table(rows, HEAD), "", *trends(ms), "",
                  "Extreme net pressure per node [kPa] (z = " + ", ".join(f"{z:.0f}" for z in ms[1]["z_mm"]) + " mm):",
                  ""] + [f"- test {t}: " + ", ".join(f"{v:.1f}" for v in ms[t]["p_extreme_kPa"])
                         for t in TABLE2 if t in ms]
@@ -184,7 +184,7 @@ def main(argv=None) -> None:
         res = run_cases(tests, dxs, Path(a.out), report=_report)
         head = ["test", "dx [mm]", "particles", "steps", "CPU [s]", "wall [s]", "peak x [mm]", "at [s]", "vs finest",
                 "vs paper", "arrival [s]", "foot p [kPa]", "vs finest", "f vib [Hz]"]
-        lines = [f"# Seed 002 Table 2, test{'s' if len(tests) > 1 else ''} {a.tests}, at several spacings", "",
+        lines = [f"# Yang & Li 2020, Table 2, test{'s' if len(tests) > 1 else ''} {a.tests}, at several spacings", "",
                  "'vs finest': against the same test's finest spacing here; 'vs paper': against the peak the "
                  "paper's text gives (tests 1, 4, 5). 2-core AMD EPYC, loaded: compare CPU, not wall.", ""]
         rows = []

@@ -17,21 +17,8 @@ c0 / 8 (Monaghan 2005, 2-D; cosim.validations.waves.viscous_decay), the fitted h
 the paddle over H (the generation, without the propagation), and the wavenumber of the
 first harmonic's phase along x over the dispersion relation's.
 
-Measured at dx = 2 cm (one core of a shared machine, ~27 s a row):
-
-    flap   h 1.41 dx alpha 0.01  : 0.97 0.93 0.91 0.89 0.87 0.85 0.83  decay 0.167 /m, nu's 0.171; at paddle 1.01; k/k_linear 0.936
-    flap   h 1.41 dx alpha 0.0018: 0.96 0.93 0.93 0.92 0.91 0.90 0.88  decay 0.081 /m, nu's 0.031; at paddle 0.97; k/k_linear 0.943
-    flap   h 1.41 dx alpha 0     : 0.93 0.93 0.93 0.94 0.92 0.92 0.90  decay 0.035 /m, nu's 0.000; at paddle 0.95; k/k_linear 0.947
-    flap   h 1.70 dx alpha 0.01  : 1.00 0.96 0.90 0.88 0.89 0.89 0.86  decay 0.147 /m, nu's 0.205; at paddle 1.01; k/k_linear 1.009
-    flap   h 1.70 dx alpha 0.0015: 0.99 0.97 0.95 0.94 0.97 0.99 0.95  decay 0.020 /m, nu's 0.031; at paddle 0.98; k/k_linear 1.015
-
-At dx = 1 cm (the second and last rows with ``--dx 0.01``, ~150 s a row):
-
-    flap   h 1.41 dx alpha 0.0036: 0.91 0.87 0.85 0.85 0.83 0.85 0.86  decay 0.050 /m, nu's 0.031; at paddle 0.90; k/k_linear 0.925
-    flap   h 1.70 dx alpha 0.003 : 0.96 0.93 0.94 0.93 0.92 0.97 0.94  decay 0.001 /m, nu's 0.031; at paddle 0.94; k/k_linear 0.983
-
-(h = sqrt(2) dx does not converge with dx: its wavenumber error is as large at 1 cm as at
-2 cm.)
+The measured rows at dx = 2 and 1 cm (h = sqrt(2) dx does not converge with dx):
+docs/benchmarks/flap_waves.md.
 
 The flap makes linear theory's height at the paddle. With h = sqrt(2) dx (this code's
 default) the waves travel ~5 % too fast and decay faster than their viscosity explains;

@@ -11,42 +11,9 @@ Quick variants by default (``--full``: the full ones). ``--out`` keeps the recor
 that a case runs through a study in child processes (``elastic-table2``) get the scene's
 ``fluid.precision``.
 
-Measured (2026-11-26, AMD EPYC, 2 cores, loaded, one thread; quick variants; the largest
-relative change of a judged metric, float64 -> float32, and CPU seconds)::
-
-    case                 verdict         largest change                        CPU [s]
-    arch-rib             pass -> pass    free_ratio3_err 0.080 -> 0.068 (-16 %),  57 -> 59
-                                         mode error -0.129 -> -0.123 (6 s of El Centro: chaotic;
-                                         the quick variant then judged the free part during
-                                         the record, now the ringing after it)
-    cylinder-tank        pass -> pass    4e-6                                  43 -> 45
-    dambreak-2d          pass -> pass    8e-7                                   6 -> 7
-    dambreak-lobovsky    pass -> pass    2e-6                                   6 -> 7
-    elastic-gate         fail -> fail    rms_rel_x 0.1966 -> 0.1987 (+1.1 %)    7 -> 8
-    elastic-plate        pass -> pass    peak error -0.0323 -> -0.0331 (-2.5 %) 11 -> 12
-    elastic-table2       pass -> pass    ratio a206/a146 0.89589 -> 0.89533     47 -> 47
-    floating-box-draft   pass -> pass    3e-8                                   5 -> 5
-    floating-box-waves   pass -> pass    sway peak 5e-5                         8 -> 7
-    floating-heave-per.  pass -> pass    1e-7                                   8 -> 8
-    hydrostatic          pass -> pass    1e-5                                   3 -> 3
-    hydrostatic-3d       pass -> pass    1e-5                                  61 -> 53
-    inclined-wall        pass -> pass    5e-6                                  10 -> 11
-    inclined-wall-3d     pass -> pass    7e-6                                  23 -> 23
-    long-period          pass -> pass    3e-6                                  17 -> 16
-    momentum-exchange    pass -> FAIL    drift 1.3e-15 -> 4.9e-9 (linear),       2 -> 2
-                                         1.1e-15 -> 7.0e-9 (angular), against 1e-12
-    moored-body-sph      pass -> pass    5e-5                                   9 -> 10
-    sinking-cylinder     pass -> pass    2e-8                                   3 -> 4
-    sloshing-frequency   pass -> pass    5e-5                                   5 -> 5
-    sloshing-spheric10   pass -> pass    2e-6                                   6 -> 6
-    westergaard          pass -> pass    1e-5                                   4 -> 4
-    westergaard-3d       pass -> pass    1e-5                                  13 -> 11
-
-Every verdict holds but momentum-exchange's: the pair terms, evaluated once from each side
-in float32, are antisymmetric to float32's round-off only, so fluid and body keep their
-momentum to 5e-9, not to float64's round-off. Where a flow is chaotic (a dam break's impact
-on a plate, 6 s of earthquake in the rib) the round-off grows into percent-level changes of
-single figures, as any perturbation would; elsewhere the metrics move by 1e-5 or less.
+Every verdict holds in float32 but momentum-exchange's (the pair terms, evaluated once from
+each side in float32, are antisymmetric to float32's round-off only); the measured changes
+per case: docs/benchmarks/float32_validations.md.
 """
 
 from __future__ import annotations

@@ -1,6 +1,6 @@
 """The fluid-level speed/accuracy trade on one moored-body scene: the analytic fluid
 against SPH at three spacings, the scene changed in the one field ``fluid.model`` (issue
-18 asks it of seed 004's 3-D base, whose resolving SPH runs need a GPU; this is the 2-D
+18 asks it of Barreiro et al. 2016's 3-D base, whose resolving SPH runs need a GPU; this is the 2-D
 moored box in waves of ``examples/moored_box_waves.py``, which the CPU can resolve).
 Prints figures; asserts nothing.
 
@@ -16,19 +16,8 @@ added mass, no damping) and with the heave added mass of a floating flat section
 B^2 / 8 = 15.7 kg per metre (half the infinite-fluid plate's rho pi (B/2)^2; Newman,
 Marine Hydrodynamics §4.13); it has no radiation damping either way.
 
-Measured (2026-11-26, AMD EPYC, 2 cores, loaded, one thread; 5 s, compared over 3-5 s,
-against SPH at dx = 0.01 m):
-
-=====================================  =====  =====  =====  ======  ======  ======  =====  ======
-fluid                                  heave  surge  pitch  heave   surge   pitch   CPU    cost
-                                       [mm]   [mm]   [deg]  error   error   error   [s]    ratio
-=====================================  =====  =====  =====  ======  ======  ======  =====  ======
-analytic, as given                     45.0   55.6   14.13  -0.5 %  +20 %   +70 %   5.0    0.026
-analytic, heave added mass 15.7 kg/m   51.7   58.9   13.76  +14 %   +27 %   +65 %   3.2    0.016
-SPH dx = 0.04 m                        50.1   106.3  8.10   +11 %   +129 %  -3 %    15.3   0.079
-SPH dx = 0.02 m                        43.2   40.2   7.45   -4.5 %  -13 %   -11 %   41.5   0.215
-SPH dx = 0.01 m                        45.2   46.4   8.33   (ref.)  (ref.)  (ref.)  193.0  1
-=====================================  =====  =====  =====  ======  ======  ======  =====  ======
+The measured table (analytic fluid as given and with the heave added mass, SPH at dx =
+0.04, 0.02, 0.01 m): docs/benchmarks/fluid_level_trade.md.
 
 The analytic fluid costs 2-3 % of the finest SPH run (and 8-12 % of dx = 0.02 m) and gets
 the heave (a box riding a wave 15 times its width) but not the pitch, 1.7 times SPH's:

@@ -15,71 +15,18 @@ The machine may be shared: ``cpu_s_per_wall_s`` below the thread count says so, 
 figure to compare between runs with ``--threads 1`` (alternate the runs being compared).
 ``--threads N`` sets NUMBA_NUM_THREADS, so that no idle worker thread spins on the CPU.
 
-Current figures: Intel Xeon (Emerald Rapids, family 6 model 207), AVX-512, of which numba's
-LLVM uses 256-bit vectors here (4 float64 lanes; forcing 512 gains 1.05x in 3-D, nothing
-in 2-D: the history file), 2 cores, 2026-11-26, the machine quiet (load below 1.8), three
-alternating runs of DualSPHysics' step count over the dam breaks' first 0.03 s (394 steps
-in 3-D, 944 in 2-D): million particle-steps per second, best (range); "walls' loads off"
-is ``--wall-loads off`` (FluidConfig.wall_loads: the walls get their continuity rate and
-their viscous bound on the step alone, as DualSPHysics' fixed boundaries do; the 3-D
-figures of that column are from the day's second session, after that change, against
-the first session's DualSPHysics runs).
-
-    case                                  threads  DualSPHysics 5.4     ours              ratio   walls' loads off   ratio
-    2-D dp = 0.01 m,  22 008 particles       1     1.467 (1.430-1.467)  5.48 (4.66-5.48)  3.74x   5.51 (4.56-5.51)   3.76x
-                                             2     2.727 (2.660-2.727)  9.75 (9.47-9.75)  3.58x   9.76 (9.31-9.76)   3.58x
-    3-D dp = 0.017 m, 107 012 particles      1     0.596 (0.586-0.596)  1.79 (1.77-1.79)  3.00x   1.93 (1.86-1.93)   3.24x
-                                             2     1.181 (1.104-1.181)  3.08 (3.01-3.08)  2.61x   3.25 (3.19-3.25)   2.75x
-
-DualSPHysics: its CPU release build (-O3 -ffast-math), same particles and step counts.
-Per simulated second (our Verlet step 1.3 times shorter, 5.85e-5 s against 7.6e-5 s in
-3-D, 2.42e-5 against 3.18e-5 in 2-D): 3-D 2.31x / 2.01x (walls' loads off 2.49x / 2.12x),
-2-D 2.86x / 2.73x. How these were run, and the AMD EPYC (Zen 4) figures of the day
-before: docs/benchmarks/fluid_throughput_history.md.
-
-The step's speed-up from 1 to 2 threads (``--speedup 10``, quiet, AMD EPYC Zen 4): 3-D
-107 012 particles 1.77 / 1.66, 2-D 84 008 particles 1.78 / 1.82; the 3-D pair loop alone
-scales 1.80. Bytes per particle kept between steps: 237 (2-D), 265 (3-D); float32 adds
-56. Where a step's CPU time goes at one thread (``--profile``, Intel Xeon, 2026-11-26;
-3-D 60 ms, 2-D 4.1 ms per step):
-
-    part                                       3-D      2-D
-    pair loop (fluid.equations.interact)       87.0 %   71.1 %
-    gather (one pass reorders every array)      3.1      6.2
-    packing (EOS, the pair loop's table)        2.4      4.6
-    integrator (Verlet)                         1.5      2.8
-    sort: x-order in cells, sub-bin table       1.4      5.1
-    sort: counting sort (serial)                0.9      2.3
-    sort: binning                               0.6      1.2
-    time step                                   0.8      1.5
-    group loads                                 0.9      1.0
-    NaN check (serial)                          0.7      1.0
-    the rest (Python)                           0.7      3.0
-
-The 3-D pair loop visits 218 candidates per particle (65 within 2h) at about 59
-floating-point operations each: on the AMD EPYC 22.7 GFLOP/s, 55 % of the one 512-bit
-multiply or FMA Zen 4 issues per cycle (fluid.equations.interact says why float32 gives about 1.24x, not 2).
-Laminar viscosity adds 7 % to a 2-D step, XSPH 8 %, both 14 %, the renormalised diffusion
-(``diffusion="antuono"``) 70 %; ``--walls adami``: fluid.wall_density. The default OpenMP
-threading layer is the fastest on a quiet machine; on a loaded one set
-``OMP_WAIT_POLICY=PASSIVE`` (the history has the layers measured).
+The current figures against DualSPHysics 5.4, the speed-up from 1 to 2 threads, bytes per
+particle, where a step's time goes, and the optional terms' costs: docs/benchmarks/fluid_throughput_history.md.
 
     .venv/bin/python benchmarks/fluid_throughput.py                 # default sizes, warm numba cache
     .venv/bin/python benchmarks/fluid_throughput.py --cold          # compile from scratch (empty cache)
     .venv/bin/python benchmarks/fluid_throughput.py --case 2d --dp 0.01 --steps 200 --threads 2
-    .venv/bin/python benchmarks/fluid_throughput.py --case 2d --dp 0.01 --dp 0.005 --dp 0.0025 --steps 20  # scaling
-    .venv/bin/python benchmarks/fluid_throughput.py --case 2d --dp 0.01 --threads 1 --nu 1e-6 --xsph 0.1  # optional terms
-    .venv/bin/python benchmarks/fluid_throughput.py --case 2d --dp 0.01 --threads 1 --walls adami  # tank walls
-    .venv/bin/python benchmarks/fluid_throughput.py --case 3d --threads 1 --steps 20 --precision float32
-    .venv/bin/python benchmarks/fluid_throughput.py --case 3d --threads 1 --steps 20 --profile  # shares of a step
     .venv/bin/python benchmarks/fluid_throughput.py --case 3d --steps 4 --speedup 16  # 1 -> 2 threads
+
 GPU (``--device cuda``; fluid.cuda, numba-cuda, which lists what it covers): the same
-cases stepped on an NVIDIA GPU; it prints the device (or that it is numba's CUDA
-simulator, NUMBA_ENABLE_CUDASIM=1, whose timings are meaningless) and
-``bytes_per_particle`` from the arrays the device state allocated: 3-D symplectic 226 B
-(250 with XSPH), 3-D Verlet 202 B, 2-D 178 / 162 B, the cell offsets 4 B more in the 3-D
-case; 80 GB hold about 350 M particles. No GPU figure exists yet (2026-11-26):
-benchmarks/gpu_session.sh measures them in one call of a GPU machine.
+cases stepped on an NVIDIA GPU; it prints the device (or that it is numba's CUDA simulator,
+NUMBA_ENABLE_CUDASIM=1, whose timings are meaningless) and ``bytes_per_particle`` from the
+arrays the device state allocated; benchmarks/gpu_session.sh measures them on a GPU machine.
 
     NUMBA_ENABLE_CUDASIM=1 python benchmarks/fluid_throughput.py --device cuda --case 2d --dp 0.05 --steps 2  # simulator
     python benchmarks/fluid_throughput.py --device cuda --case 3d --dp 0.017 --steps 200                   # a GPU

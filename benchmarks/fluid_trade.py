@@ -5,7 +5,7 @@ kernel (wendland/cubic), density diffusion (fourtakas/molteni/none; Fourtakas wi
 delta = 0.03 instead of 0.1; the renormalised "antuono"; Fourtakas faded under the free
 surface, diffusion_at_surface=False, the set-up of the 3-D hydrostatic case), MLS density
 re-initialisation (off / every 30 steps,
-001_14936b82710365b2.txt Eq. 9-12), the tank walls' density (plain dynamic boundaries /
+Sunara et al. 2021, Eq. 9-12), the tank walls' density (plain dynamic boundaries /
 walls="adami", fluid.wall_density), the artificial viscosity with the walls
 (alpha_wall 1 / 0), the smoothing length (h = 2 dx) and the wave set-up
 (fluid.solver.SLOSHING_2D: h = 2 dx with walls="adami"; the hydrostatic rows start from

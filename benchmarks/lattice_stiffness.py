@@ -14,7 +14,7 @@ displacement u,
     omega^2 = -sum a . u / sum u . u   [rad^2/s^2],
 
 is zero for a fluid; for the SPH fluid it is not. With uniform pressure the momentum
-equation (004_1657bd4a51d29840.txt Eq. 6) reduces to ``-(2 p0 / rho^2) grad_a sum_b m_b
+equation (Barreiro et al. 2016, Eq. 6) reduces to ``-(2 p0 / rho^2) grad_a sum_b m_b
 W_ab``: the gradient of the kernel sum of the displaced particles, which for a smooth
 divergence-free displacement vanishes in the continuum but not on the lattice, by a
 factor set by the kernel and h/dx only. So omega^2 grows in proportion to p0 and does
@@ -29,62 +29,13 @@ quotient of the change of the rates, against linear theory ``g k tanh(k h)``. Th
 static stiffness of the particle configuration alone (the dynamic frequency also has the
 density response, which the motion adjusts to).
 
-Measured (NUMBA_NUM_THREADS=1; first mode of the sloshing tank for scale:
-omega_1^2 = 28.3 rad^2/s^2; last column: the dynamic result, sloshing-frequency quick
-with walls="adami"):
+3. Stability of the lattice (``--stability``): the same stiffness for every wavelength on
+the infinite square (cubic) lattice, from Bloch modes (:func:`lattice_stability`); where the
+pressure-borne term is negative the lattice under pressure rearranges, whatever the damping.
 
-=========  =======  =======  ==================  ====================  ==================
-kernel     h / dx   dx [m]   1. box, omega^2     2. sloshing mode,     sloshing-frequency
-                             at 2.5 kPa          omega / linear - 1    quick, "adami"
-=========  =======  =======  ==================  ====================  ==================
-Wendland   1.2      0.05     -16.1               -0.090                +0.018
-Wendland   sqrt(2)  0.05     +5.2 (+10.4 at 5    +0.032                +0.046
-                             kPa, 0 at 0)
-Wendland   sqrt(2)  0.025    +5.1                +0.040                +0.051 (full)
-Wendland   1.6      0.05     --                  -0.047                +0.020
-Wendland   1.7      0.05     -0.45               --                    no peak (the
-                                                                       lattice rearranges)
-cubic      sqrt(2)  0.05     +11.9               +0.013                +0.058
-=========  =======  =======  ==================  ====================  ==================
+    python benchmarks/lattice_stiffness.py [--h-coef C] [--kernel cubic] [--dx DX] [--sloshing | --stability]
 
-At the default h = sqrt(2) dx the configuration alone is +3 ... 4 % stiff for the
-sloshing mode and does not converge with dx, as the dynamic bias; with other kernels or
-h/dx the two part ways (the density response, which the motion adjusts to, is not in
-the static number), so this is a candidate for the default's residual, not a proof. The density response of the box to the same displacement (the kernel-sum
-change that continuity integrates, at p0 = 0) gives +0.9 rad^2/s^2.
-
-3. Stability of the lattice (``--stability``): the same stiffness for every wavelength,
-on the infinite square (cubic) lattice, from Bloch modes (:func:`lattice_stability`). A
-mode that changes no density is held only by the pressure-borne term, and where that is
-negative the lattice under pressure is unstable: the particles rearrange, whatever the
-damping. Scan of h / dx (Wendland; "short": wavelengths of 8 dx and less, which grow
-fast; "long": longer ones, slow and opposed by gravity, walls and viscosity):
-
-=======  ============================  ============================
-h / dx   2-D short / long              3-D short / long
-=======  ============================  ============================
-1.2      unstable / unstable           unstable / unstable
-1.3      unstable / stable             unstable / unstable
-sqrt(2)  unstable (at 8 dx) / unstable stable / stable
-1.5-1.9  unstable / unstable           unstable / unstable
-2.0      stable / stable               unstable (k = (0, pi, pi)/dx,
-                                       weak) / stable
-2.2      unstable / unstable           unstable / unstable
-=======  ============================  ============================
-
-It matches the 2-D tank at rest (``run_hydrostatic(2, dx=0.01, t_end=3.0, h_coef=...)``,
-20 layers): h = 1.7 dx grows from 8e-4 to 1.7e-2 sqrt(g H) between 0.3 and 0.7 s and the
-particles move by a spacing, whatever the damping (the remedies tried:
-docs/validation/sloshing-frequency_history.md); h = 2 dx stays at rest once settled (2.6e-4 sqrt(g H)). At the default h = sqrt(2) dx
-only the long waves are (weakly) unstable: the 20-layer tank holds, the 40-layer one
-starts to move after ~0.9 s (cosim.validations.fluid, run_hydrostatic). In 3-D the
-default sqrt(2) dx is stable in the bulk, so the 3-D tank's creep by its vertical edges
-(hydrostatic_3d) is not this.
-
-    .venv/bin/python benchmarks/lattice_stiffness.py
-    .venv/bin/python benchmarks/lattice_stiffness.py --h-coef 1.2 --kernel cubic --dx 0.025
-    .venv/bin/python benchmarks/lattice_stiffness.py --sloshing --dx 0.025
-    .venv/bin/python benchmarks/lattice_stiffness.py --stability [--kernel cubic]
+Measured stiffnesses and the h / dx stability scan: docs/benchmarks/lattice_stiffness.md.
 """
 
 from __future__ import annotations
@@ -172,7 +123,7 @@ def lattice_stability(dim: int, h_coef: float, kernel: str = "wendland", n: int 
     """Linear stability of the square (cubic) particle lattice of the SPH fluid under a
     uniform pressure p0, infinite and without gravity (module docstring, 3.).
 
-    Bloch modes u_a = U exp(i k . R_a) of the momentum equation (004_1657bd4a51d29840.txt
+    Bloch modes u_a = U exp(i k . R_a) of the momentum equation (Barreiro et al. 2016,
     Eq. 6) with the continuity equation (Eq. 7) and p = p0 + c0^2 (rho - rho0) give
     ``omega^2 U = (2 p0 / rho0) V D(k) U + V^2 (c0^2 - 2 p0 / rho0) S (S . U)`` with
     ``D(k) = sum_R (1 - cos k.R) Hess W(R)`` and ``S(k) = sum_R sin(k.R) grad W(R)``.

@@ -11,41 +11,8 @@ last second's largest angular speed: "settled" below 1e-3 rad/s; else "grows" wh
 more than 3 times the second one's (the first holds the start's transient) or the run
 stopped; else "limit cycle".
 
-Measured (2026-11-26, AMD EPYC, 2 cores, loaded), per second over 6 s; the sub-iterated
-exchange (the default, ``Coupler.LINES_TOL`` 1e-5) first, the lines' force held
-(``--lines explicit``) after:
-
-=========================  ============  ==============================  ========  ========  ======
-model, nodes               step          max |omega| per second [rad/s]  verdict   advances  CPU-s
-                                                                                  per step
-=========================  ============  ==============================  ========  ========  ======
-SPH cable 20, sub-iter.    auto 0.0061   1.1e-6 ... 1.6e-6               settled   1.74      5.0
-SPH cable 20, sub-iter.    2x  0.0122    1.1e-6 ... 1.4e-6               settled   2.02      2.4
-SPH cable 20, sub-iter.    3x  0.0183    0.021 0.027 ... 0.027           cycle     9.57      4.3
-SPH cable 20, sub-iter.    4x  0.0245    3.6e-6 2.1e-5 ... 0.0071        grows     6.53      2.5
-SPH cable 40, sub-iter.    auto 0.0061   8.2e-7 ... 1.9e-6               settled   2.26      6.3
-SPH cable 40, sub-iter.    2x  0.0121    9.1e-7 ... 2.8e-6               settled   2.44      3.0
-SPH cable 40, sub-iter.    3x / 4x       0.024 / 0.0063 (last)           cycle     8.8-9.4   4.1-5.4
-MoorDyn 20, sub-iter.      auto 0.0050   1.3e-6 ... 1.9e-6               settled   1.59      6.1
-MoorDyn 20, sub-iter.      2x / 3x / 4x  1.3e-6 ... 6.6e-6               settled   1.9-2.3   1.9-3.7
-MoorDyn 40, sub-iter.      auto 0.0049   1.9e-5 2.8e-6 ... 2.6e-6        settled   2.24      9.1
-MoorDyn 40, sub-iter.      2x / 3x / 4x  4.1e-6 ... 4.4e-5               settled   2.4-2.9   4.1-6.3
-SPH cable 20, held         auto 0.0061   3.1e-6 3.5e-4 0.022 0.028 ...   cycle     1         3.5
-MoorDyn 20, held (lead)    auto 0.0050   8.3e-7 ... 9.4e-7               settled   1         5.1
-MoorDyn 20, held (lead)    2x  0.0100    0.072 0.13 ... 0.13             cycle     1         2.7
-MoorDyn 20 / 40, held      3x, 4x        stopped by the coupler's watch  grows     1         <1
-MoorDyn 40, held (lead)    auto 0.0049   2.6e-5 5.9e-7 ... 1.2e-6        settled   1         6.2
-MoorDyn 40, held (lead)    2x  0.0099    0.066 ... 0.11, stopped at 4.3 s grows    1         2.5
-=========================  ============  ==============================  ========  ========  ======
-
-With the force held, the SPH cable holds a ~28 Hz limit cycle at the derived step (the
-tensions swinging by some 100 kN; at 0.001 s it settles, 3e-5 rad/s); the bound takes the
-line for a semi-infinite bar, whose radiation damps the base, but the wave the fairlead
-sends comes back from the anchor within four steps. MoorDyn settles with the held force
-only through its adapter's one-step lead (given the step's own start and end, 0.032-0.047
-rad/s), and not at twice the derived step. Advanced with the base until their mean force
-agrees (the default), both settle at the derived step and at twice it, MoorDyn up to four
-times it; the SPH cable holds a limit cycle again at three times it.
+The measured sweep (SPH cable and MoorDyn, 20 and 40 nodes, sub-iterated and held, up to
+four times the derived step) and what it shows: docs/benchmarks/line_step_sweep.md.
 """
 
 from __future__ import annotations

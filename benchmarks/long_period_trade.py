@@ -1,4 +1,4 @@
-"""Error and cost of the ``long-period`` validation's tanks (seed 001 §3.1-3.3 at
+"""Error and cost of the ``long-period`` validation's tanks (Sunara et al. 2021, §3.1-3.3 at
 T_p = 1.0 s and 0.7 s) at several resolutions: :func:`cosim.validations.long_period.run_long_period`
 with the case's settings, exactly as its full variant calls it (``shape, dx=, dim=, a0=``),
 one run per dx, in turn.

@@ -25,22 +25,9 @@ Prints, per skin (in units of h), the pairs per particle, the CPU time of each l
 (loop + (build + the fluid's sort and reordering) / K) against the rows' (loop + sort and
 reordering, every step).
 
-Measured 2026-11-26 on AMD EPYC (Zen 4, AVX-512), one thread, the machine otherwise quiet,
-107 012 particles after 31 steps (h = 0.0240 m, dt = 5.85e-5 s): the rates agree to 2e-14.
-The row loop visits 218 candidates per particle in 54.9 ms (2.35 ns each); the sort and
-reordering take 3.2 ms.
-
-    skin   pairs/particle   list loop   ns/pair   build    K (Ritter)   list + (build + sort)/K
-    0.1 h       67.4        56.9 ms      7.9     153 ms       3            108.9 ms
-    0.2 h       86.1        71.8 ms      7.8     180 ms       6            102.4 ms
-    0.4 h      118.7        97.9 ms      7.7     226 ms      13            115.5 ms
-
-**Not adopted: the list loop alone is slower than the row loop at every skin**, before any
-build. It vectorises (13 ``vgatherqpd`` per 8 pairs, one per quantity), but a gathered pair
-costs 7.8 ns against 2.35 ns for a contiguous candidate: a third of the pairs at 3.3 times
-the price each. A build once per K steps only adds to that; so would a faster build (this
-one scans whole rows, untrimmed): even free, 0.96 times the speed at the thinnest skin.
-K at Ritter's speed is the bound for the whole run (the state measured is still slow).
+**Not adopted: the list loop alone is slower than the row loop at every skin** (a gathered
+pair costs some three times a contiguous candidate); the measured figures:
+docs/benchmarks/neighbour_list.md.
 """
 
 from __future__ import annotations

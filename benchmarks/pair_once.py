@@ -6,7 +6,7 @@ support is visited once: particle ``a`` visits only the rows of cells ahead of i
 and y + 1 in its own z) and, in its own row, the particles after it; every term is added
 to ``a`` and, with the sign and the mass or volume of ``a``, to ``b`` (continuity and
 the 8-norm of the viscous term are symmetric in the pair, momentum and diffusion
-antisymmetric: seed 001 Eq. 6-7 with ``m_a`` for ``m_b``). The inner loop stays
+antisymmetric: Sunara et al. 2021, Eq. 5-7 with ``m_a`` for ``m_b``). The inner loop stays
 contiguous in ``b``, so the writes to ``b`` are vector loads and stores; they conflict
 between threads, so the prototype is serial, compared with the loop as it is on one thread.
 
@@ -16,14 +16,9 @@ Prints the largest difference of the rates from the loop as it is (relative to e
 field's largest value: round-off, the sums run in another order) and the CPU time of
 each loop, best of ``--repeat`` alternating calls, on the state after ``--steps`` steps.
 
-Measured 2026-11-26 on AMD EPYC (Zen 4, AVX-512), one thread, beside two other
-single-thread jobs on the 2 cores (107 012 particles): rates equal to 1.3e-15; the loop
-as it is 56.2 ms, pair once 74.4 ms: **0.76 times the speed, so not adopted**. Half the
-pairs alone, without the writes to b, take 33 ms (0.58 of the loop: the range look-ups and
-short rows keep it above one half); the writes (six vector read-modify-write streams per
-pair) add 41 ms, more than the halved arithmetic saves. Neither widening the ranges to
-whole vectors from index 0 (0.59) nor two passes with fewer live registers (0.68) helped.
-Threads would add conflicting writes on top.
+Measured on the 3-D dam break: the rates equal to round-off, the pair-once loop **0.76 times
+the speed of the loop as it is, so not adopted** (the writes to b cost more than the halved
+arithmetic saves); the figures: docs/benchmarks/pair_once.md.
 """
 
 from __future__ import annotations

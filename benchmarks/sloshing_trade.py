@@ -10,7 +10,7 @@ fluid set-up in brackets (each case's own, then the solver's defaults in the las
 the case's error metrics:
 
 - westergaard: RMS of k_p on the wall against the exact incompressible series for the
-  3 m tank, with the raw boundary-particle pressure, plain 001 Eq. 15, and Eq. 15 carried
+  3 m tank, with the raw boundary-particle pressure, plain Sunara et al. 2021, Eq. 15, and Eq. 15 carried
   to the wall face; plus against the compressible series for the run's c0 (what a
   perfect weakly compressible model would give);
 - sloshing-frequency: relative error of the first natural frequency (FFT of the wall

@@ -10,26 +10,15 @@
                               [--dt 0.01] [--every K] [--ledger truncate|keep]
                               [--ledger-rows 1000000] [--patch-moordyn] [--csv soak.csv]
 
-The full soak the issue asks for (10^6 steps per model; ~3 h of CPU, 3.6 h of wall time at
-the loaded rates below):
+The full soak the issue asks for (10^6 steps per model)::
 
     python benchmarks/soak.py --steps 1000000 --every 20000 --ledger-rows 1000000 --csv soak.csv
 
-What it does. Each model runs in a fresh interpreter (a subprocess: one model's libraries
-and freed memory do not show in the next one's RSS, and a crash in a C extension ends that
-model only; its chunks so far are kept, one JSON line each). The scene is built with
-``cosim.scene.build.build`` (not ``scene.run``, which would write 10^6 samples) with
-``moorings.model=MODEL``, ``coupling.dt=DT`` and ``world.duration`` = steps x dt, and the
-coupler is stepped with ``coupler.step(t_end)`` in chunks of ``--every`` steps (``t_end``
-one step past the run, so that no step is clipped). After each step the loads the ledger
-booked for it (``ledger.last()``) go into a chunk buffer; at the end of a chunk their
-impulse is added to a running sum kept *exactly* (fractions: each load is a float, each dt
-a whole number of ticks), and with ``--ledger truncate`` (default) the ledger is emptied
-(``ledger.truncate(0)``): memory net of the ledger. ``--ledger keep`` keeps it as a run
-does (one row per step) and at the end checks the incremental balance against
-``ledger.arrays()`` of the whole run. Every chunk records wall and CPU time, steps/s,
-VmRSS, the number of gc-tracked objects, ``sys.getrefcount(None)`` (a C extension that
-loses references shows there), the tick error, the residuals and the load average.
+Each model runs in a fresh interpreter (its libraries, freed memory and a crash in a C
+extension are its own); the scene is built with ``cosim.scene.build.build`` and stepped in
+chunks of ``--every`` steps, each recording wall and CPU time, steps/s, VmRSS, gc-tracked
+objects, ``sys.getrefcount(None)``, the tick error and the residuals. ``--ledger truncate``
+empties the ledger after each chunk (memory net of it); ``--ledger keep`` keeps it as a run does.
 
 Why dt = 0.01 s. The analytic fluid's own stable step for this box is 0.0183 s (its
 hydrostatic stiffness: 50 steps per heave period); 0.01 s is inside it with margin, is a
@@ -37,76 +26,14 @@ whole number of MuJoCo steps (5 x 2 ms, the scene's ``body_timestep``) and of cl
 (10^10 ps), and makes 10^6 steps = 10^4 s simulated (2.8 h, ~7000 heave periods). No
 participant asks for less (every step's limiter is "user dt": counted, 0 in every run).
 
-The balance. Linear momentum of the box p = m v_com (``bodies.kinematics()``); the ledger
-books per step the fluid force, the mooring force and the weight (world frame); the box
-receives fluid + mooring as ``xfrc_applied`` held over the step and MuJoCo adds the weight.
-With the predictor-corrector scheme (what the analytic fluid gets) the ledger books the
-mean of the start and predicted loads, which is exactly what the body is advanced with, so
-m (v_N - v_0) = sum_k (F_fluid + F_mooring + G)_k dt_k  holds up to floating point: RK4
-integrates a load held over the step exactly, the slide x / slide z / hinge y joints of a
-planar body through its centre of mass do not couple, and nothing else acts: no contacts
-(one geom, no floor), no tendons (the lines are elastic, EA = 5e7 N, so the catenary model
-asks for no length constraint), no armature (the analytic fluid's light-body remedy is
-"none"), no joint damping: all checked every chunk, column "other". The same for the
-angular momentum about the centre of mass (I omega against fluid + mooring torques). The
-residual dp - J is reported in N s and relative to the gross impulse
-sum_k (|F_fluid| + |F_mooring| + |G|) dt_k; its drift is its least-squares slope against steps.
+The balance: m (v_N - v_0) = sum_k (F_fluid + F_mooring + G)_k dt_k holds up to floating
+point, since the ledger books the loads the body is advanced with and nothing else acts on
+the box (no contacts, tendons, armature or joint damping: checked every chunk); the same
+for the angular momentum about the centre of mass. The residual dp - J [N s] is reported
+alone and relative to the gross impulse, its drift as its least-squares slope against steps.
 
-The full soak, 10^6 steps of every model (2026-11-25, after the ledger and MoorDyn repairs;
-ledger truncated each chunk). catenary and sph-cable ran side by side on the 2 cores (load
-1.9-2.1); fmu and moordyn side by side on a machine shared with other jobs (load 2-26), so
-their wall rates are what they got and steps per CPU-second is the figure that compares
-(fmu's rises once the box is at its bit-exact rest, from ~350k steps):
-
-    python benchmarks/soak.py --steps 1000000 --every 50000 --models catenary --csv catenary.csv
-    python benchmarks/soak.py --steps 1000000 --every 50000 --models sph-cable --csv sph-cable.csv
-    python benchmarks/soak.py --steps 1000000 --every 50000 --models fmu --csv fmu.csv
-    python benchmarks/soak.py --steps 1000000 --every 50000 --models moordyn --csv moordyn.csv
-
-    model        steps   wall s  st/s  st/cpu-s  RSS start -> end   B/1000 st  ticks  |dp - J| N s  rel     z per 1e6
-    catenary   1000000     2006   499       515  209.4 -> 209.4 MB          0      0  4.50e-09     2e-17  -4.5e-09
-    sph-cable  1000000     2480   403       414  231.8 -> 231.8 MB          0      0  4.97e-09     2e-17  -5.0e-09
-    fmu        1000000     3876   258       847  194.9 -> 194.9 MB          0      0  4.52e-09     2e-17  -4.5e-09
-    moordyn    1000000     5156   194       338  190.2 -> 190.3 MB          0      0  8.70e-10     4e-18  -3.0e-10
-
-Flat memory (gc-tracked objects +0 per 1000 steps; moordyn +0.1 MB in one step over the
-10^6), an exact clock at every report (a float sum t += dt would be 1.7e-7 s off), no
-momentum drift beyond rounding (angular residual 7.6e-10 and 7.0e-10 kg m^2/s after 10^6
-steps for fmu and moordyn), ``sys.getrefcount(None)`` flat for all 20 chunks of each
-(fmu 44 680, moordyn 39 063). CPU for 10^6 steps: catenary 32 min, sph-cable 40, fmu 20,
-moordyn 49.
-
-The shorter runs of sessions 7-8 (100 000 steps of catenary and fmu, 50 000 of sph-cable,
-moordyn before and after its repair), the memory steps of the first chunks, the ledger's
-former lists and the full derivation of the z residual: docs/benchmarks/soak_history.md.
-
-Findings.
-
-- Memory, net of the ledger: flat. RSS grows in page-sized steps in the first ~15k steps
-  (JIT, first touches), then by at most 0.2 MB over the rest: no linear growth; gc-tracked
-  objects constant (0.0 per 1000 steps).
-- Memory with the ledger kept (a run as ``scene.run`` does it): linear by design, one row
-  per step; 168 B per step for one body (``cosim.ledger`` keeps arrays).
-- Clock: exact in every run, 0 ticks off at every chunk (1e16 ticks for 10^6 steps fit
-  an int), and ``clock.t`` as a float also exact here; ``t += dt`` summed in floats would
-  be off by 7.6e-10 s after 10^5 steps and 1.7e-7 s after 10^6.
-- Momentum balance: holds to round-off in every model (relative 2e-17 of the gross
-  impulse, 2.2e8 N s over 10^6 steps); x residual flat (~4e-12 N s), angular residual
-  ~1e-16 kg m^2/s a step. The z residual grows linearly, by 2e-15 to 5e-15 N s a step
-  (-4.3 to -5.0e-9 N s per 10^6 steps, i.e. 5e-12 m/s of the box's velocity): the float
-  arithmetic between the three floats the ledger books and what MuJoCo integrates
-  (fl(F_fluid + F_mooring) handed over; the weight per kg rounded to 9.81 m/s^2), a
-  fraction of an ulp of the 9810 N weight of the same sign step after step. Not a
-  coupling error: the bound is half an ulp of the loads a step (<= 9e-15 N s at 0.01 s).
-  The sums here are exact (fractions): plain float sums drift far more by themselves.
-- moordyn 2.7.2's ``Deserialize`` drops a reference to None per call (the
-  predictor-corrector's per-step roll-back aborted Python 3.11 after ~15.3k steps): the
-  adapter gives the reference back (``moorings.moordyn_mooring``); ``--patch-moordyn``
-  runs an adapter that does not.
-- catenary and fmu (the same law compiled as an FMU) give bit-identical trajectories and
-  residuals. The sph-cable box never comes to rest: after 475 s it still wanders by +-5 mm
-  with |p| up to 7 N s (the SPH cable's own oscillation); catenary and fmu reach a
-  bit-exact rest within ~350 s, moordyn settles to |p| ~0.01 N s.
+How each part works in full, the measured runs (10^6 steps of every model) and the
+findings: docs/benchmarks/soak_history.md.
 """
 
 from __future__ import annotations

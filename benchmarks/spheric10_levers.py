@@ -9,9 +9,9 @@ default 28 m/s) to ``--t-end`` and records several left-wall pressure probes, ev
 time steps is not missed:
 
 - ``patch``: the case's sensor (:func:`~cosim.validations.sloshing.spheric10_sensor`:
-  the wall's normal force over a 10 mm patch, as a transducer reads it; since session 6);
-- ``face2h``: the case's probe of sessions 3-5 (:func:`~cosim.validations.sloshing.face_pressure`:
-  001 Eq. 15 over 2h, carried to the wall face, fitted along the wall) at z = 93 mm;
+  the wall's normal force over a 10 mm patch, as a transducer reads it);
+- ``face2h``: the case's earlier probe (:func:`~cosim.validations.sloshing.face_pressure`:
+  Sunara et al. 2021, Eq. 15 over 2h, carried to the wall face, fitted along the wall) at z = 93 mm;
 - ``face1h``: the same with a support of h;
 - ``face_sensor``: ``face2h`` averaged over the sensor's face (``--sensor-d`` [m], the
   diameter, along the wall about z = 93 mm; 5 points);
@@ -24,31 +24,7 @@ Prints one line per probe: the peak within 0.1 s of the measured impact, its tim
 ratio to 3.68 kPa, the ratio of the largest 20 ms running mean to the record's (2.15 kPa)
 and the ratio of the impulses over 2.300 - 2.475 s (the record: 119 Pa s).
 
-Measured (NUMBA_NUM_THREADS=1, shared 2-core machine; first impact; ``face2h`` probe
-sampled every 50 us over 2.30 - 2.45 s (18.6 mm: from 2.2 s on); rows below the first four branch from the 6.2 mm
-"adami" state saved at 2.0 s with ``--save``/``--load``, one lever changed):
-
-===================================  ==========  ========  ===========  ========  =======
-run                                  peak ratio  lag [s]   20 ms mean   impulse   wall [s]
-===================================  ==========  ========  ===========  ========  =======
-dx 18.6 mm, dbc                      0.39        -0.020    0.49         0.81      38
-dx 18.6 mm, adami                    0.46        -0.007    0.58         1.21      55
-dx 9.3 mm, dbc                       0.34        +0.022    0.51         0.63      88
-dx 9.3 mm, adami                     0.53        +0.036    0.67         0.83      90
-dx 6.2 mm, adami                     1.04        +0.021    0.83         0.84      175
-dx 4.65 mm, adami                    1.74        +0.035    0.86         0.77      327
-6.2 mm adami, c0 56 m/s (from 2 s)   1.53        +0.022    0.79         0.82      52
-6.2 mm adami, c0 112 m/s (from 2 s)  1.01        +0.022    0.75         0.84      68
-6.2 mm adami, alpha_wall 0           0.86        +0.020    0.78         0.89      27
-6.2 mm adami, alpha 0.05             0.68        +0.030    0.80         0.83      21
-6.2 mm adami, delta 0.05             1.21        +0.028    0.88         0.85      22
-===================================  ==========  ========  ===========  ========  =======
-
-Probes at dx 6.2 mm, adami: peak 3841 Pa (``face2h``), 4244 (``face1h``), 4071 (``wall``,
-the wall particle's own pressure), 3720 (``face2h`` every 1 ms); at 4.65 mm 6412, 6700,
-6548 and 5432. The SPH impact rings at an acoustic period (successive maxima 4.8, 3.5,
-4.8 ms apart at c0 = 28 m/s, ~3.3 ms at 56 m/s), and its first maximum is what the peak
-ratio reads.
+The measured levers (dx, walls, c0, viscosity, diffusion) and probes: docs/benchmarks/spheric10_levers.md.
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""Error and cost of seed 001's 3-D tanks at one resolution: the whole vertical-wall tank
+"""Error and cost of Sunara et al. 2021's 3-D tanks at one resolution: the whole vertical-wall tank
 (``cosim.validations.sloshing.run_westergaard`` with ``dim=3``), the inclined tank's
 3-D slice (``cosim.validations.tanks.run_inclined`` with ``dim=3``) or the cylinder
 (``cosim.validations.tanks.run_cylinder``), c0 = 1430 m/s, walls="adami", ``--skip``
@@ -16,7 +16,7 @@ on a shared machine: CPU seconds then compare between runs.
     python benchmarks/tanks_3d_trade.py plot DIR RUN.json [RUN.json ...]
 
 draws the runs' profiles beside the references as the validation report does (the
-cases' ``series``: 001 Fig. 5 for the vertical tank, Fig. 12 for the inclined one, the
+cases' ``series``: Sunara et al. 2021, Fig. 5 for the vertical tank, Fig. 12 for the inclined one, the
 inclined runs of one dx on one plot, Fig. 17 for the cylinder) into
 DIR/tanks3d_<tank>_dx<dx>.png.
 """

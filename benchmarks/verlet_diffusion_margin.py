@@ -31,59 +31,8 @@ One thread unless NUMBA_NUM_THREADS says otherwise::
     python benchmarks/verlet_diffusion_margin.py fluid --case 2d --cfl 0.4 --t-end 0.1 --margin 1 --margin 0.75
     python benchmarks/verlet_diffusion_margin.py validations --margin 2.75 --margin 1 --margin inf
 
-Measured 2026-11-26, AMD EPYC (Zen 4), 2 cores, loaded (load average 2-3.5), one thread,
-CPU seconds of the steps alone. DualSPHysics 5.4 on the same particles, one thread
-(fluid_throughput.py): 2-D 1.29 M particle-steps per CPU-s at a mean step of 3.17e-5 s
-(1.86e-3 simulated s per CPU-s), 3-D 0.66 M at 7.63e-5 s (4.71e-4). ``x DSPH``: our
-simulated s per CPU-s over DualSPHysics'; in brackets the same ratio at the side-by-side
-particle-step rates (4.2x 2-D, 2.54x 3-D) times the step ratio, free of this run's load.
-noise: its largest value over the first interval -> its value at the end (CFL 0.2)::
-
-    case (span)       margin  mean dt [s]  limiter            M p-steps  sim s    x DSPH       noise            stable
-                                                              /CPU-s     /CPU-s
-    2-D (0.3 s)       2.75    1.316e-5     density_diffusion  5.40       3.23e-3  1.74 (1.74)  4.2e-5 -> 1.1e-6  yes
-    22 008 particles  1.5     2.413e-5     density_diffusion  5.34       5.86e-3  3.15 (3.20)  7.5e-5 -> 2.0e-6  yes
-                      1.0     3.063e-5     courant_viscous    5.20       7.23e-3  3.89 (4.06)  9.8e-5 -> 2.6e-6  yes
-                      none    3.063e-5     courant_viscous    5.64       7.85e-3  4.22 (4.06)  same run as 1.0   yes
-    3-D (0.1 s)       2.75    3.181e-5     density_diffusion  1.56       4.64e-4  0.99 (1.06)  7.6e-5 -> 1.7e-6  yes
-    107 012 particles 1.5     5.831e-5     density_diffusion  1.52       8.30e-4  1.76 (1.94)  1.4e-4 -> 3.0e-6  yes
-                      1.0     7.478e-5     courant_viscous    1.46       1.02e-3  2.17 (2.49)  1.8e-4 -> 3.9e-6  yes
-                      none    7.478e-5     courant_viscous    1.49       1.04e-3  2.21 (2.49)  same run as 1.0   yes
-
-(2-D 0.3 s: 22 797 / 12 434 / 9 793 steps; 3-D 0.1 s: 3 144 / 1 714 / 1 337.) At CFL 0.2
-the CFL step is 0.83-0.87 of the derived edge in both cases, so margins 1.0 and "none"
-run the same steps (same trajectory; their CPU differs by the load only) and the
-diffusion edge is never reached. The noise's ratio to the step is the same at every
-margin (the flow's own change): none grows. The edge itself, 2-D at ``--cfl 0.4`` (the
-diffusion limit sets the step): margin 1.0 (dt 3.62e-5) grows density noise from
-t = 0.04 s (1.4e-5 at 0.03 s, 1.1e-3 at 0.05 s, 8e-3 at 0.07 s), then blows up (max
-|rho - rho0| / rho0 = 4, 102 particles leave the domain, the step collapses to 9e-6 s
-mean); margin 0.75 (4.81e-5) blows up within 0.01 s (noise 1.7e-2, 3.9 m/s against 0.48).
-
-Quick validations with the fluid forced to Verlet (CPU s of the whole case, one thread;
-none of them runs Verlet as built)::
-
-    case               margin  judged metrics (tolerance)                               CPU [s]
-    dambreak-2d        2.75    front_rms_rel_err 0.01997 (0.05), release delay 0.205 T  19.7, 18.9 (two runs)
-                       1.0     front_rms_rel_err 0.01997 (0.05), release delay 0.205 T   3.7, 4.0
-    dambreak-lobovsky  2.75    rms_early_max 0.05203 (0.06), arrival_err 0.1516 (0.25)  9.0, 8.3
-                       1.0     rms_early_max 0.05202 (0.06), arrival_err 0.1516 (0.25)  4.1, 4.1
-
-All pass at both margins with the metrics unchanged to 3e-4 (surge front and gauge
-arrival: not sensitive to density noise); no limit gives margin 1.0's figures (3.8, 4.2 s).
-dambreak-2d's 4.8x in CPU at margin 2.75 (against the 2.4x of its step) was not examined.
-
-Conclusion: Verlet stays stable on these dam breaks at margin 1.5 (limit binding) and at
-1.0 or with no limit at all only because the CFL 0.2 step then sits 15 % below the
-edge; where the limit itself binds at margin 1.0 (CFL 0.4) the density noise grows within
-0.05 s and the run blows up, as the docstring of fluid.integrator predicts (|G_N| = 1 at
-the edge; its measurement "delta >= 0.15 at cfl 0.2" is the same edge). So the edge is
-real and a margin of 1.0 is not safe; 1.5 is, and gives 1.83x the simulated seconds
-per CPU-second of Morris' 2.75 (3-D 1.06x -> 1.94x DualSPHysics per simulated second,
-2-D 1.74x -> 3.2x, at the side-by-side particle-step rates). Removing the limit as
-DualSPHysics does gains a further 1.28x / 1.27x on these cases (2.49x / 4.06x), but only
-because delta 0.1 and CFL 0.2 keep the step below the edge: a larger delta or CFL then
-blows up unwarned. The default is now 1.5 (``fluid.integrator.VERLET_MARGIN``).
+The measured steps, noise and costs per margin, and the conclusion (margin 1.0 is the real
+edge and not safe; 1.5, the default, is): docs/benchmarks/verlet_diffusion_margin.md.
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""Issue 18's static check with the SPH fluid: seed 004's wind-turbine base (the scene of
+"""Issue 18's static check with the SPH fluid: Barreiro et al. 2016's wind-turbine base (the scene of
 examples/wind_turbine_base.py: 16 000 kg, a vertical cylinder 6 m across and 3 m high, three
 catenary lines of Table 4 at 120 deg) at rest in still water, against the draft and offset
 that hydrostatics and the three catenaries predict together (``cosim.scene.placement``:
@@ -26,31 +26,9 @@ below the water level the gauges read away from the base (``draft_sph_m``, judge
 below the set-up's level (``draft_nominal_level_m``), the level's shift, the mean offset,
 the heave's swing over the window.
 
-Measured 2026-11-26, 20 s each, read over 10-20 s (Intel Xeon, Emerald Rapids, one thread
-each, two runs at a time; predicted draft 1.511 m; ``--rows 3,4,5 --duration 20``):
-
-    rows in the draft  dx [m]   depth [m]  particles  CPU-s / s  SPH draft  error   level shift  base's mean heave  offset
-    3 (aligned)        0.5036   4.029      16 220      36        1.463 m   -3.2 %  -0.098 m     -0.050 m           0.09 m
-    4 (aligned)        0.3777   4.155      36 056      91        1.441 m   -4.6 %  -0.028 m     +0.042 m           0.01 m
-    5 (aligned)        0.3022   3.928      57 650     186        1.534 m   +1.5 %  -0.027 m     -0.050 m           0.06 m
-    6 (aligned)        0.2518   4.029      95 300     490 (*)    1.551 m   +2.7 %  -0.023 m     -0.064 m           0.05 m
-
-(*) two threads, CPU seconds; the scene no longer computes the walls' loads (same motion).
-
-On an AMD EPYC (Zen 4), 12 s read over 6-12 s: 3 rows -3.3 %, 4 rows -4.6 %; with the pool
-exactly 4 m deep (the bottom face between lattice rows) at 3.02 and 4.03 rows, the base
-moved +0.175 m and -0.10 m in heave.
-
-**Within 2 % at 5 rows (+1.5 %), not at 3 or 4** (the analytic fluid holds the base at the
-prediction to 1e-8 m on the same scene, so the lines and the placement agree; the
-difference is the fluid's). The draft is the prediction less the base's mean heave plus
-the level's shift. The level's shift shrinks with dx (-0.098, -0.028, -0.027 m: the fluid
-closing the gaps around the curved side and settling at the surface), but the base's mean
-heave does not converge: it sits 0.10, 0.11 and 0.16 dx below, above and below the
-prediction at 3, 4 and 5 rows, so 5 rows passing is not a trend: at 6 rows the base sits 0.25 dx below the
-prediction and the draft is +2.7 % (the mean heave, -0.064 m, is what fails). With the bottom face between lattice rows (the pool 4 m deep) the base moves by
-up to a third of a spacing, up or down as the face lies (the floating-box-draft case's
-set-up rule, module docstring of cosim.validations.floating), hence ``--rows``.
+Within 2 % of the draft at 5 rows, not at 3 or 4 (the base's mean heave does not converge
+with dx; the analytic fluid holds the base at the prediction to 1e-8 m, so the difference is
+the fluid's); the measured rows and why ``--rows``: docs/benchmarks/wind_turbine_static.md.
 """
 
 from __future__ import annotations

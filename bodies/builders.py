@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 from typing import Mapping, Sequence
 
-from cosim.errors import InputError
+from errors import InputError
 
 Vec = Sequence[float]
 

@@ -1,73 +1,41 @@
 """Elastic cantilevers (beams and plates in cylindrical bending) as MuJoCo chains.
 
-Physics. A straight cantilever of length ``L``, thickness ``h`` (bending direction,
-world x) and width ``W`` (world y; 1 m in 2-D scenes, so loads per metre of depth are
-loads on the model), clamped at its foot and rising along +z, or (``direction="down"``)
-clamped at its top and hanging along -z: the same chain turned half a turn about x (x
-stays, y and z flip), e.g. the rubber gate of Antoci et al. (2007) that holds a water
-column, clamped at its top and free at its bottom. It is a discrete
-Timoshenko beam: ``N`` elements of length ``l = L / N``, the compliance of each
-lumped at its midpoint into a hinge about y of stiffness ``k_b = E I / l`` and
-(``shear=True``) a slide along the link's own x of stiffness ``k_s = kappa G A / l``
-(``I = W h^3 / 12``, ``A = W h``, ``G = E / (2 (1 + nu))``, ``kappa = 5/6`` for a
-rectangle). The rigid links between the joints are boxes of the beam's section and
-density, so mass and rotary inertia (``rho I`` per length) are the beam's. The
-first link ``[0, l/2]`` is welded to the parent (the clamp), the last is ``[L - l/2,
-L]``. With joints at element midpoints the bending compliance is the midpoint rule of
-the Euler-Bernoulli/Timoshenko integrals, so it converges at second order:
-tip load ``delta = P L^3 / (3 E I) (1 - 1 / (4 N^2)) + P L / (kappa G A)`` (exact
-shear term), uniform load ``q L^4 / (8 E I) (1 - 1 / (2 N^2)) + q L^2 / (2 kappa G A)``.
-The links turn rigidly, so large rotations are handled as MuJoCo's joints handle them.
-Damping (optional) is stiffness-proportional, ``c = beta k`` on every joint.
-``shear=False`` is a Rayleigh beam (rotary inertia, no shear), the Euler-Bernoulli
-limit for slender beams.
+Physics. A straight cantilever of length ``L``, thickness ``h`` (bending direction, world
+x) and width ``W`` (world y; 1 m in 2-D scenes), clamped at its foot and rising along +z,
+or (``direction="down"``) clamped at its top and hanging (the rubber gate of Antoci et al.
+2007). It is a discrete Timoshenko beam: ``N`` elements of length ``l = L / N``, the
+compliance of each lumped at its midpoint into a hinge about y of stiffness ``k_b = E I /
+l`` and (``shear=True``) a slide along the link's x of stiffness ``k_s = kappa G A / l``
+(``I = W h^3 / 12``, ``A = W h``, ``G = E / (2 (1 + nu))``, ``kappa = 5/6``). The rigid
+links are boxes of the beam's section and density (mass and rotary inertia are the
+beam's); the first is welded to the parent (the clamp). Joints at element midpoints make
+the bending compliance the midpoint rule, second order: tip load ``delta = P L^3 / (3 E I)
+(1 - 1 / (4 N^2)) + P L / (kappa G A)``, uniform load ``q L^4 / (8 E I) (1 - 1 / (2 N^2))
++ q L^2 / (2 kappa G A)``. Large rotations are MuJoCo's joints'; damping (optional) is
+stiffness-proportional, ``c = beta k``; ``shear=False`` is a Rayleigh beam.
 
 References, checked by ``tests/test_elastic_beam.py``: Euler-Bernoulli clamped-free
-frequencies ``omega_n = (beta_n L)^2 sqrt(E I / (rho A L^4))``, ``beta_n L = 1.8751,
-4.6941, 7.8548`` (``1 + cos(beta L) cosh(beta L) = 0``); Timoshenko clamped-free
-frequency equation of Han, Benaroya & Wei (1999, J. Sound Vib. 225(5) 935-988, the
-fixed-free case; Huang 1961) solved here in :func:`timoshenko_frequencies`; tip
-deflections as above (Timoshenko & Gere; the shear term ``P L / (kappa G A)``).
+frequencies (``beta_n L = 1.8751, 4.6941, 7.8548``); the Timoshenko clamped-free frequency
+equation of Han, Benaroya & Wei (1999, J. Sound Vib. 225(5) 935-988; Huang 1961), solved in
+:func:`timoshenko_frequencies`; tip deflections as above (Timoshenko & Gere).
 
-Accuracy (``python benchmarks/elastic_beam.py``, AMD EPYC, 2 cores shared with two other
-jobs; seed 002's plate ``L = 8 cm, h = 1.2 cm, rho_s = 2500 kg/m^3, E = 1 MPa, nu = 0``,
-W = 1 m, against Timoshenko ``f = 5.970, 34.59, 87.63 Hz``, tip ``1.2012 mm/N``;
-Euler-Bernoulli would say 6.058, 37.96, 106.3 Hz, off by 1.5 / 10 / 21 %)::
+Accuracy on Yang & Li 2020's plate (``python benchmarks/elastic_beam.py``): at N = 16 within
+0.1-0.25 % of Timoshenko's first three frequencies and its tip deflection, converging at
+order 2; stable RK4 step (:meth:`BeamModel.stable_dt`) 3.8e-4 s, above the SPH step. The
+table, and MuJoCo's flex measured beside it and not taken: docs/benchmarks/elastic_beam_history.md.
 
-    model      size  dofs   f1 %   f2 %   f3 %  tip %  dt_stable  s per simulated s
-    chain      N=8     16  +0.35  +1.00  +1.00  -0.39    8.4e-4     0.15-0.3 (RK4, dt 1e-4)
-    chain      N=16    32  +0.09  +0.25  +0.25  -0.10    3.8e-4     0.4-0.9 (varies with the other jobs)
-    chain-EB   N=16    16  +1.11  +6.87  +13.8  -1.43    3.8e-4     0.2     (no shear slides)
+Moving support (:class:`Support`): the clamp sits on prescribed slides or a hinge
+(:meth:`bodies.mujoco_bodies.MujocoBodies.drive`): a base-excited cantilever. Self-weight
+buckling (:func:`self_weight_buckling`, Greenhill 1881): :meth:`BeamModel.imperfection`
+bends the chain into the buckling mode so that it buckles as a real, imperfect one would.
 
-The chain converges at order 2.00 (error ratio 4 per halving of l). It gives one rigid
-body per element, which the coupler already moves and loads
-(:class:`bodies.mujoco_bodies.MujocoBodies`), and needs no plugin. Its stable RK4 step
-(:meth:`BeamModel.stable_dt`, exact for the linearised chain) is 3.8e-4 s at N = 16,
-above the SPH step. MuJoCo's flex, measured beside it and not taken (it locks in bending
-and forces sub-steps): docs/benchmarks/elastic_beam_history.md.
+Limits: the chain is inextensible (the plate's first axial mode is left out). Boundary
+particles (:class:`ElasticBody`) blend the frames of the two links nearest them
+(:meth:`BeamModel.blend`), so the deformed surface stays closed at the joints, and their
+force is split with the same weights; a plate thinner than ``dx`` gets one column.
 
-Moving support (a shaken or rolling tank, :class:`Support`): the clamped link sits on
-slides or a hinge whose motion is prescribed (:meth:`bodies.mujoco_bodies.MujocoBodies.drive`),
-so the chain is a base-excited cantilever: its links feel the support's acceleration
-through their joints, and MuJoCo integrates their motion relative to it as usual.
-
-Self-weight buckling (:func:`self_weight_buckling`): a standing column whose weight
-passes Greenhill's (1881) load is unstable when straight; :meth:`BeamModel.imperfection`
-bends the chain into the buckling mode (the scenes give it ``IMPERFECTION`` = L/1000 at the
-tip), so that it buckles as a real, imperfect one would instead of standing still.
-
-Limits: the chain is inextensible (the plate's first axial mode, ``sqrt(E / rho) / (4 L)``
-= 62.5 Hz at E = 1 MPa, lies between bending modes 2 and 3 and is left out). Boundary particles (:class:`ElasticBody`) blend the frames of the two
-links nearest them (hat weights on nodes ``k l``, :meth:`BeamModel.blend`), so the
-deformed surface stays closed at the joints (on rigid links alone the outer face would
-open by about ``h dtheta / 2`` at a joint bent by ``dtheta``: 0.9 mm at the foot for
-seed 002's 48 mm tip deflection at N = 16, 0.36 of a 2.5 mm spacing); the force on each
-is split between the two links with the same weights. A plate thinner than ``dx`` gets
-one column of particles (the thin-wall treatment is the fluid's:
-:mod:`cosim.sph_fluid`).
-
-Units: SI (m, kg, s, Pa, N). 2-D scenes live in the x-z plane: every joint turns
-about y or slides along x, so the beam stays in the plane by construction.
+Units: SI (m, kg, s, Pa, N). 2-D scenes live in the x-z plane: every joint turns about y
+or slides along x, so the beam stays in the plane by construction.
 """
 
 from __future__ import annotations
@@ -78,12 +46,12 @@ from dataclasses import dataclass
 import numba
 import numpy as np
 
-from cosim.errors import InputError
+from errors import InputError
 
 #: the first three roots of 1 + cos(x) cosh(x) = 0 (clamped-free Euler-Bernoulli beam)
 BETA_L = (1.8751040687119611, 4.6940911329741745, 7.8547574382376126)
 
-#: fewest elements: N = 4 has the first three frequencies 1.4 / 4.2 / 4.5 % off (seed 002's plate), fewer
+#: fewest elements: N = 4 has the first three frequencies 1.4 / 4.2 / 4.5 % off (Yang & Li 2020's plate), fewer
 #: leave the third mode to the last two or three links
 MIN_ELEMENTS = 4
 
@@ -414,13 +382,13 @@ def elastic_beam(name: str, length: float, thickness: float, *, E: float, rho: f
     :func:`bodies.builders.scene`, its links are named ``{name}_link0`` (welded) to
     ``{name}_link{N}``, with sites ``{name}_tip`` (the free end's centre: the top, or the
     bottom when hanging) and ``{name}_corner`` (the free end, -x side: the "upper left
-    corner" of seed 002 Figure 6; the lower upstream corner of a hanging gate)."""
+    corner" of Yang & Li 2020, Figure 6; the lower upstream corner of a hanging gate)."""
     if not isinstance(name, str) or not name:
         raise InputError(f"elastic beam: name must be a non-empty string, got {name!r}")
     L = _positive(name, "length", "m", length, "give the cantilever's length from clamp to tip")
     h = _positive(name, "thickness", "m", thickness, "give the plate's thickness in the bending direction (x)")
     W = _positive(name, "width", "m", width, "give the width along y (1 m in a 2-D scene)")
-    E = _positive(name, "E", "Pa", E, "give Young's modulus, e.g. E=1e6 for seed 002's plate")
+    E = _positive(name, "E", "Pa", E, "give Young's modulus, e.g. E=1e6 for Yang & Li 2020's plate")
     rho = _positive(name, "rho", "kg/m^3", rho, "give the material density, e.g. rho=2500")
     kappa = _positive(name, "kappa", "-", kappa, "give the shear coefficient, 5/6 for a rectangular section")
     if not (isinstance(nu, (int, float)) and math.isfinite(nu) and -1.0 < nu < 0.5):
@@ -694,8 +662,8 @@ class ElasticBody:
     Particles (:meth:`BeamModel.blended_particles`) are stored in the frames of the two
     links that carry them and placed every step as the blend of both rigid placements
     (:meth:`BeamModel.blend`), ``x = w (o_a + R_a p_a) + (1 - w) (o_b + R_b p_b)``, with
-    the same blend of the links' rigid-body velocities ``V + Omega x (x_k - com)`` (seed
-    004 Eq. 13 on each link), so they never drift and the surface stays closed at the
+    the same blend of the links' rigid-body velocities ``V + Omega x (x_k - com)``
+    (Barreiro et al. 2016, Eq. 13 on each link), so they never drift and the surface stays closed at the
     joints. The force on a particle is split with the same weights (:func:`_split_wrenches`):
     link ``a`` gets ``w f`` and link ``b`` ``(1 - w) f``, both acting at the particle, one
     wrench per link about its centre of mass; the sums of force and of moment about any
@@ -770,7 +738,7 @@ class ElasticBody:
 
     def displacement(self, site: str = "corner") -> np.ndarray:
         """Displacement [m] ``(3,)`` from the start of the ``"tip"`` (the free end's centre)
-        or ``"corner"`` (the free end, -x face: seed 002 Figure 6's upper left corner) site."""
+        or ``"corner"`` (the free end, -x face: Yang & Li 2020, Figure 6's upper left corner) site."""
         i = self._sites[site]
         return self.bodies.site_positions([i])[0] - self._site0[site]
 
@@ -778,7 +746,7 @@ class ElasticBody:
         """Raise :class:`InstabilityError` naming the first element whose link left the
         finite numbers or turned more than 90 degrees against its neighbour (a chain
         that went unstable), with a remedy."""
-        from cosim.errors import InstabilityError
+        from errors import InstabilityError
 
         kin = self.bodies.kinematics() if kin is None else kin
         R = kin.rotation[self.link_index]

@@ -28,7 +28,7 @@ import mujoco
 import numpy as np
 
 from bodies.sampling import BodyKinematics, GeomShape, check_mesh, sample_geoms
-from cosim.errors import InputError, InstabilityError
+from errors import InputError, InstabilityError
 
 log = logging.getLogger(__name__)
 

@@ -1,12 +1,12 @@
 """Boundary particles of bodies: sampled from their geoms, placed rigidly.
 
-Dynamic boundary particles (seed 004 §2.6) fill a band ``layers × dx`` deep
+Dynamic boundary particles (Barreiro et al. 2016, §2.6) fill a band ``layers × dx`` deep
 inside each geom's surface (box, sphere, cylinder, capsule, ellipsoid, or a
 closed triangle mesh), on a lattice of spacing ``dx`` in the geom's own
 frame (cell-centred, so the outer layer sits half a spacing inside the surface,
 as the fluid's own particles sit inside their cells). They are stored once in
 body coordinates and placed every step by the rigid transform of the body's pose,
-with velocities ``u = V + Ω × (r − r_com)`` (seed 004 Eq. 13), so they never
+with velocities ``u = V + Ω × (r − r_com)`` (Barreiro et al. 2016, Eq. 13), so they never
 drift. Plain numpy, no MuJoCo: the geometry here also serves the analytic fluid.
 """
 
@@ -16,7 +16,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from cosim.errors import InputError
+from errors import InputError
 
 
 class GeomShape(NamedTuple):
@@ -315,7 +315,7 @@ def ghost_offsets(geoms, points: np.ndarray, dim: int = 3) -> np.ndarray:
 
 def place(points_b: np.ndarray, owner: np.ndarray, kin: BodyKinematics):
     """World positions [m] and velocities [m/s] of particles stored in body
-    coordinates: ``x = origin + R p``, ``u = V + Ω × (x − r_com)`` (seed 004 Eq. 13)."""
+    coordinates: ``x = origin + R p``, ``u = V + Ω × (x − r_com)`` (Barreiro et al. 2016, Eq. 13)."""
     R = kin.rotation[owner]
     x = kin.origin[owner] + np.einsum("nij,nj->ni", R, points_b)
     u = kin.velocity[owner] + np.cross(kin.omega[owner], x - kin.com[owner])

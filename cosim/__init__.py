@@ -1,6 +1,6 @@
 """cosim: the coupler, the participant protocol, scenes, outputs and the CLI.
 
-Kept light on import: the solver packages import :mod:`cosim.errors` from here,
+Kept light on import: :mod:`cosim.errors` re-exports the top-level :mod:`errors`,
 so nothing heavy (MuJoCo, the fluid) is loaded by ``import cosim``.
 """
 

@@ -19,7 +19,7 @@ import threading
 
 from cosim.errors import CosimError
 
-#: seed 004 Tables 1 and 2 (Johanning et al. 2007, 2006)
+#: Barreiro et al. 2016, Tables 1 and 2 (Johanning et al. 2007, 2006)
 LINE_PRESETS = {
     "johanning-2007": dict(length=6.98, weight=1.036, height=2.651, x_range=(5.50, 6.40)),
     "johanning-2006": dict(length=150.0, weight=918.75, height=50.0, x_range=(102.0, 140.0)),
@@ -236,11 +236,11 @@ def _line_parser(sub):
     p = sub.add_parser(
         "line",
         help="tabulate and plot one catenary line: H, V, touchdown and state against X",
-        description="Solve one quasi-static catenary line (seed 004 §3) over a range of horizontal "
+        description="Solve one quasi-static catenary line (Barreiro et al. 2016, §3) over a range of horizontal "
         "anchor-fairlead distances X and print X, H, V, fairlead tension, touchdown length and state. "
         "Give the line with --length/--weight/--height (and --EA for an elastic line), or --preset.",
     )
-    p.add_argument("--preset", choices=sorted(LINE_PRESETS), help="a line of seed 004 Tables 1-2")
+    p.add_argument("--preset", choices=sorted(LINE_PRESETS), help="a line of Barreiro et al. 2016, Tables 1-2")
     p.add_argument("--length", type=float, help="unstretched line length L [m]")
     p.add_argument("--weight", type=float, help="submerged weight per unit length w [N/m]")
     p.add_argument("--height", type=float, help="fairlead height above the anchor/seabed h [m]")

@@ -82,67 +82,40 @@ class Coupler:
 
     Parameters
     ----------
-    participants:
-        Participants with no data exchange (advanced last, in this order).
-    bodies:
-        The bodies participant (``bodies.MujocoBodies``), if the scene has bodies.
+    participants: participants with no data exchange (advanced last, in this order).
+    bodies: the bodies participant (``bodies.MujocoBodies``), if the scene has bodies.
     fluid:
         A fluid that loads the bodies: besides the participant protocol it has
-        ``attach_bodies(bodies)``, ``set_body_kinematics(kinematics)`` and
-        ``body_wrenches() -> (force, torque)``.
-    moorings:
-        :class:`MooringAttachment` records (or ``(mooring, sites)`` pairs).
+        ``attach_bodies(bodies)``, ``set_body_kinematics(kinematics)``, ``body_wrenches()``.
+    moorings: :class:`MooringAttachment` records (or ``(mooring, sites)`` pairs).
     dt:
-        Fixed coupling step [s]; ``None`` lets the participants' ``max_dt()`` and the
-        mooring lines' limit (:mod:`cosim.line_step`) decide. A step above a participant's
-        stable step or the lines' limit at the start is refused
-        (:class:`~cosim.errors.ConfigurationError` naming the participant or line, the
-        limit and the fix): it could not be the step used. A participant that needs less
-        later in the run still gets less; :meth:`step_summary` counts the steps each
-        limit set.
-    t0:
-        Start time [s].
+        Fixed coupling step [s]; ``None``: the participants' ``max_dt()`` and the lines'
+        limit (:mod:`cosim.line_step`) decide. A step above a participant's stable step or the
+        lines' limit at the start is refused (:class:`~cosim.errors.ConfigurationError` naming
+        it, the limit and the fix); :meth:`step_summary` counts what set each step.
+    t0: start time [s].
     scheme:
-        How body loads are taken over a step. ``"explicit"``: the loads at the
-        start of the step, held (one evaluation; for a load stiffness k on a mass m
-        it adds energy, amplitude growth ~ (ω dt)²/4 per step with ω² = k/m).
-        ``"predictor-corrector"``: the bodies advance with the start
-        loads, the loads are taken at the predicted pose, every exchanging
-        participant is rolled back (``save_state``/``load_state``) and the bodies
-        advance with the mean of both (second order; growth ~ (ω dt)⁴).
-        ``"fluid-first"``: the fluid advances first with the bodies' current motion,
-        then the bodies receive exactly the impulse the fluid exchanged with them
-        (its ``exchanged_wrenches()``): momentum passes between fluid and bodies to
-        round-off. For the SPH fluid, whose own step is what limits dt. ``"auto"``
-        (default): fluid-first with a fluid that reports the loads it exchanged (the SPH
-        fluid), predictor-corrector otherwise.
+        How body loads are taken over a step: ``"explicit"`` (the start loads held; adds
+        energy, growth ~ (ω dt)²/4 per step, ω² = k/m), ``"predictor-corrector"`` (the mean of
+        the start loads and those at the predicted pose, exchanging participants rolled back;
+        growth ~ (ω dt)⁴), ``"fluid-first"`` (the fluid first; the bodies receive exactly the
+        impulse it exchanged, ``exchanged_wrenches()``), ``"auto"`` (default: fluid-first with
+        a fluid that reports its exchanged loads, the SPH fluid; else predictor-corrector).
     light_body:
-        What to do for bodies much lighter than the fluid they displace, whose
-        staggered coupling is unstable (added mass; see :mod:`cosim.added_mass` and the
-        table in ``benchmarks/density_ratio_sweep.py``). ``"auto"`` (default): with the
-        fluid-first scheme, a fluid whose loads carry added mass (the SPH fluid, not
-        the analytic one) and a body whose mass / displaced fluid mass is below
-        ``cosim.added_mass.AUTO_THRESHOLD`` (0.3), ``"subiterate"``; else ``"none"``.
-        ``"subiterate"`` (fluid-first only): each step is repeated from saved states,
-        Aitken-relaxed, until the bodies' motion and the fluid's agree (2 to 4 fluid
-        advances per step in the sweep, stable down to a ratio of 0.001);
-        ``"added-mass"``: an estimate of the added mass goes into each body's inertia
-        and its lagged reaction back into the load (right for fluids that react within
-        the step, harmful for the weakly compressible SPH fluid); ``"none"``. The choice
-        per body is logged and kept in :attr:`remedies`. Whatever the choice, a body
-        whose acceleration oscillates with growing amplitude, or that outruns the
-        fluid (``MAX_MACH``), stops the run with an :class:`InstabilityError` naming the
-        step, the body, its mass ratio and remedy (:mod:`cosim.watch`).
+        For bodies much lighter than the fluid they displace (added mass, :mod:`cosim.added_mass`,
+        ``benchmarks/density_ratio_sweep.py``): ``"auto"`` (default) takes ``"subiterate"`` with
+        fluid-first, a fluid whose loads carry added mass (SPH) and a mass ratio below
+        ``cosim.added_mass.AUTO_THRESHOLD`` (0.3), else ``"none"``; ``"subiterate"`` repeats
+        each step from saved states, Aitken-relaxed, until bodies and fluid agree;
+        ``"added-mass"`` puts an estimate into each body's inertia (not for SPH). The choice
+        is in :attr:`remedies`. A body whose acceleration oscillates with growing amplitude or
+        outruns the fluid (``MAX_MACH``) stops the run with an :class:`InstabilityError`.
     lines:
-        How the bodies and the dynamic mooring lines (moorings whose ``dynamic`` is true:
-        the SPH cable, MoorDyn) exchange loads. ``"subiterate"`` (what ``"auto"``, the
-        default, takes): the bodies and those lines advance together, each step repeated
-        from saved states until the force the bodies were given is the mean force the
-        lines exerted over the step (:meth:`_advance_with_dynamic_lines`; the step count
-        in :attr:`line_iterations`). ``"explicit"``: the lines' force at the step's start
-        is held over it, one advance of each line per step; on seed 004's chain it holds a
-        limit cycle at the step the coupler derives (``benchmarks/line_step_sweep.py``).
-        Whatever the choice, quasi-static laws (catenary, FMU) are taken as ``scheme`` says.
+        How bodies and dynamic lines (SPH cable, MoorDyn) exchange loads: ``"subiterate"``
+        (``"auto"``, the default: each step repeated from saved states until the force the
+        bodies were given is the lines' mean force over it; :attr:`line_iterations`) or
+        ``"explicit"`` (the start force held; on a stiff chain a limit cycle at the derived
+        step, ``benchmarks/line_step_sweep.py``). Quasi-static laws follow ``scheme``.
     """
 
     def __init__(self, participants: Sequence[Participant] = (), *, bodies=None, fluid=None,
@@ -376,7 +349,7 @@ class Coupler:
         if lim is not None and limiter == lim.mooring and n > 0:
             # the lines' step: evened out towards the end time rather than leaving a sliver of a
             # step before it (a dynamic line driven a step ahead, as MoorDyn's fairlead is
-            # extrapolated, jumps when the step changes: on seed 004's chain the slivers before
+            # extrapolated, jumps when the step changes: on Barreiro et al. 2016's chain the slivers before
             # each output time drove the base's roll)
             k = -(-ticks_left // n)
             n = -(-ticks_left // k)
@@ -656,8 +629,8 @@ class Coupler:
         return [j for j in range(len(self.moorings)) if j not in dynamic]
 
     #: dynamic lines' sub-iterations: relative tolerance on the lines' mean fairlead forces over a
-    #: step [-] (of the largest of them, at least 1 N); what is left of it moves the bodies (seed
-    #: 004's base at rest: 1e-4 leaves 1e-5 rad/s, 1e-5 1-2e-6 and 1e-6 3-7e-7, the last as the
+    #: step [-] (of the largest of them, at least 1 N); what is left of it moves the bodies (Barreiro
+    #: et al. 2016's base at rest: 1e-4 leaves 1e-5 rad/s, 1e-5 1-2e-6 and 1e-6 3-7e-7, the last as the
     #: waves alone move it, in 1.7, 1.7 and 1.7-2.4 advances of the lines a step) ...
     LINES_TOL = 1e-5
     #: ... reached within this many advances of the lines, or the run stops

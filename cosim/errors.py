@@ -1,49 +1,30 @@
-"""The project's error hierarchy.
+"""The project's error hierarchy, as seen from the coupler.
 
-Every error raised on purpose by ``cosim``, ``fluid``, ``bodies`` or ``moorings``
-derives from :class:`CosimError`, one subclass per family. A message says what is
-wrong, where (participant, line, particle, step) and how to fix it.
-
-This module is a dependency-free leaf: the solver packages import it (and only it)
-from ``cosim``, so that ``except CosimError`` catches everything the project raises
-while the solvers stay usable without the coupler.
+The classes are defined in the top-level module :mod:`errors` (importable by the solver
+packages, which never import ``cosim``); this module re-exports the same objects, so
+``from cosim.errors import InputError`` and ``from errors import InputError`` name one class.
 """
 
 from __future__ import annotations
 
+from errors import (
+    ConfigurationError,
+    ConvergenceError,
+    CosimError,
+    InputError,
+    InstabilityError,
+    ProtocolError,
+    SolverError,
+    TautLineError,
+)
 
-class CosimError(Exception):
-    """Base class of every error this project raises on purpose."""
-
-
-class InputError(CosimError, ValueError):
-    """A parameter or an input array is invalid; raised before any work is done."""
-
-
-class ConfigurationError(CosimError, ValueError):
-    """Participants or a scene do not fit together (missing inputs, clashing sizes)."""
-
-
-class ProtocolError(CosimError, TypeError):
-    """An object given as a participant lacks part of the participant protocol."""
-
-
-class SolverError(CosimError, RuntimeError):
-    """A solver could not produce a valid result during a run."""
-
-
-class InstabilityError(SolverError):
-    """A run went unstable (NaN, infinite or runaway values); the data up to the last
-    good step stays readable."""
-
-
-class ConvergenceError(SolverError):
-    """An iterative method did not converge within its iteration budget."""
-
-
-class TautLineError(SolverError):
-    """An inextensible mooring line is asked to span more than its length.
-
-    There is no catenary solution; either give the line an axial stiffness ``EA``
-    or let the coupler hold it with a length constraint.
-    """
+__all__ = [
+    "ConfigurationError",
+    "ConvergenceError",
+    "CosimError",
+    "InputError",
+    "InstabilityError",
+    "ProtocolError",
+    "SolverError",
+    "TautLineError",
+]

@@ -7,78 +7,27 @@ step and held over it while MuJoCo moves the body (RK4 sub-steps: the body's mot
 the held force is exact); then the line moves to the body's new fairlead. The coupler's
 default for dynamic lines (``lines="subiterate"``) advances them with the bodies until the
 bodies' force is the lines' mean force over the step; the coupler applies the same bound
-to it, where it has margin (measured below).
+to it, where it has margin (measured: docs/benchmarks/line_step_sweep.md).
 Each model tells what its line is to the body over a step (``fairlead_stiffness()``,
 :mod:`moorings.fairlead_stiffness`): a spring ``k`` and a dashpot ``c`` at the fairlead.
 
-Derivation, one degree of freedom (mass ``M`` [kg] with the added mass in it, line force
-``F = -k x - c v``): with the force of step n held, ``v' = v + dt F/M`` and
-``x' = x + dt v + dt^2 F / (2M)``. With ``omega^2 = k/M``, ``zeta = c / (2 M omega)``,
-``y = omega dt`` and ``u = v dt`` the update matrix is
-``[[1 - y^2/2, 1 - zeta y], [-y^2, 1 - 2 zeta y]]``: trace ``2 - y^2/2 - 2 zeta y``,
-determinant ``1 - 2 zeta y + y^2/2``. The Jury conditions (|det| < 1, 1 + tr + det > 0,
-1 - tr + det > 0) give stability if and only if
+Derivation, one degree of freedom (mass ``M`` [kg] with the added mass, line force ``F =
+-k x - c v`` held over the step): the Jury conditions on the update matrix give stability if
+and only if ``dt < 2 c / k`` and ``dt < 2 M / c``; an undamped spring grows at every step
+size. What is applied, in generalised coordinates (MuJoCo's joint-space mass matrix with
+the added mass as armature, the lines' ``k`` and ``c`` mapped through each fairlead's
+Jacobian, ``K = sum J^T k J``):
 
-    ``y < 4 zeta``  and  ``y < 1 / zeta``,  i.e.  ``dt < 2 c / k``  and  ``dt < 2 M / c``.
+- ``spring``: ``dt < 2 / omega_max``, ``omega_max^2`` the largest eigenvalue of ``K v =
+  omega^2 M v``: beyond it every scheme of the coupler diverges within a few steps.
+- ``dashpot``: ``dt < 2 / lambda_max``, ``lambda_max`` the largest eigenvalue of ``C v =
+  lambda M v``: a dynamic line's axial impedance held over the step overshoots.
+- ``dt < 2 c / k`` is not applied: lines damp the bodies more than their axial impedance
+  alone says, and the quasi-static laws (``c = 0``) take their damping from the fluid.
 
-An undamped spring (``zeta = 0``) grows at every step size, by ``y^2 / 4`` per step (the
-coupler's ``scheme`` docstring); the widest range, ``dt < 2 / omega``, is reached at
-``zeta = 1/2``. What is applied (each bound in generalised coordinates: MuJoCo's
-joint-space mass matrix, added mass included as armature, and the lines' ``k`` and ``c``
-mapped through each fairlead site's Jacobian, ``K = sum J^T k J``):
-
-- ``spring``: ``dt < 2 / omega_max``, ``omega_max^2`` the largest eigenvalue of
-  ``K v = omega^2 M v``: beyond it every scheme of the coupler diverges within a few
-  steps (the predictor-corrector's quasi-static lines too: its growth per step is
-  ``(omega dt)^4 / 8`` below it, ``(1 + y^4/4)^(1/2)`` at it); below it the growth of an
-  undamped line is slow and the fluid's damping holds it.
-- ``dashpot``: ``dt < 2 / lambda_max``, ``lambda_max`` the largest eigenvalue of
-  ``C v = lambda M v``: a dynamic line's axial impedance held over the step overshoots
-  (the bound ``2 M / c`` above). For seed 004's chain (EA = 1.9e9 N, 442 kg/m) on the
-  wind-turbine base this is the one that limits: the impedance of the three lines makes
-  the base's roll and pitch overdamped (``zeta ~ 1``).
-- The bound ``dt < 2 c / k`` (a lightly damped line) is not applied: the lines damp the
-  bodies more than their axial impedance alone says (on the test's taut MoorDyn line the
-  impedance gives ``zeta = 0.06``, i.e. ``dt < 0.002 s``, and the run is stable up to
-  0.012 s: MoorDyn's internal damping over the whole line and its drag), and the
-  quasi-static laws (``c = 0``) take their damping from the fluid.
-
-Each bound is multiplied by its factor in :data:`SAFETY`: ``spring`` 0.5 (``dt < 1 /
-omega``: inside the stable range ``omega dt < min(4 zeta, 1 / zeta)`` for any line damping
-``1/4 < zeta < 1``; ``2 / omega`` itself is reached only at ``zeta = 1/2``), ``dashpot`` 0.8
-(``2 M / c`` is the exact limit of a held dashpot).
-
-Measured (2026-11-25, AMD EPYC, 2 cores, loaded; the coupling step swept with even steps,
-a run counted unstable when its motion and tensions grow; ``tests/test_line_step.py``):
-
-=============================================  ========  =========  ===============  ========
-case                                           bound     derived    threshold        chosen
-                                                         [s]        [s]              [s]
-=============================================  ========  =========  ===============  ========
-box on one vertical taut line, MoorDyn         spring    0.0167     0.012 - 0.013    0.0084
-(2-D, 7.2 + 7.2 t, EA 1.4e9 N, 10 kg/m, 6.8 m)
-wind-turbine base, MoorDyn (3 lines, 20 seg.)  dashpot   0.0062     0.0062 - 0.0080  0.0050
-wind-turbine base, SPH cable (20 particles)    dashpot   0.0077     0.0095 - 0.0100  0.0061
-=============================================  ========  =========  ===============  ========
-
-(threshold: the largest step found stable - the smallest found unstable.) The derived bound
-lies at 0.78-1.39 of the threshold, the chosen step at 0.62-0.80 of it. Not covered by the
-table's criterion (a run whose motion does not grow): with the force held, the base on SPH
-cables holds a limit cycle at the chosen step (0.03 rad/s, the tensions swinging by some
-100 kN at ~28 Hz; the bound takes each line for a semi-infinite bar, whose radiation damps
-the base, but the wave comes back from the anchor within four steps), and MoorDyn settles
-only through its adapter's one-step lead (its fairlead moved from the body's new position
-on by one step of its velocity; given the step's own start and end, 0.035 rad/s).
-
-The sub-iterated exchange (the default for dynamic lines; ``benchmarks/line_step_sweep.py``
-and ``tests/test_line_step.py``, same machine): the base settles at the chosen step,
-1-3e-6 rad/s on SPH cables and on MoorDyn (no lead), 20 or 40 nodes, in 1.6-2.3 advances
-of the lines per step on average, for 20-45 % more CPU than the held force. It settles at
-twice the chosen step too (2.0-2.9 advances), where MoorDyn with the held force and its
-lead does not; at three times it the SPH cables hold a limit cycle of 0.025 rad/s again
-(MoorDyn settles up to four times it). So the coupler keeps this bound for both
-exchanges: the SPH cable's margin is 2-3. The box on its stiff MoorDyn line does not grow
-at 1.5 times the spring bound 2 / omega (0.025 s), where the held force does.
+Each bound is multiplied by its factor in :data:`SAFETY` (``spring`` 0.5, ``dashpot`` 0.8).
+The derivation in full and the thresholds measured against it (the derived bound lies at
+0.78-1.39 of the measured one): docs/benchmarks/line_step_sweep.md.
 """
 
 from __future__ import annotations

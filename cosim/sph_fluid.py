@@ -6,9 +6,9 @@ enough layers to fill the kernel support), placed from the body's pose, and
 assembled with the fluid and its walls (fluid inside a body, found from its
 geoms, is removed and counted). Each body is one ``BODY`` group of the fluid. Every
 exchange places the group from the body's pose (rigid transform of body
-coordinates: no drift) with velocities ``V + Ω × r`` (seed 004 Eq. 13), and the
+coordinates: no drift) with velocities ``V + Ω × r`` (Barreiro et al. 2016, Eq. 13), and the
 loads on a body are the sum over its particles of the force the fluid exerts on
-them, about its centre of mass (seed 004 Eq. 9-12). An elastic plate (``elastic=``,
+them, about its centre of mass (Barreiro et al. 2016, Eq. 9-12). An elastic plate (``elastic=``,
 :mod:`bodies.elastic`) is laid over whole instead: each of its particles blends the
 poses of the two links nearest it and is its own group, and its exchanged impulse is
 split between those links with the same weights.
@@ -73,7 +73,7 @@ class SPHFluid:
         How the bodies' boundary particles get their density: ``"mdbc"`` (default;
         modified dynamic boundaries, ``fluid.boundary_correction``: the fluid rests
         against the geometric surface, so a body displaces its own volume) or
-        ``"dbc"`` (plain dynamic boundaries, seed 004 §2.6: the fluid stands off by
+        ``"dbc"`` (plain dynamic boundaries, Barreiro et al. 2016, §2.6: the fluid stands off by
         a gap of order h and a floating body rides high by a fraction of dx).
         The tank walls follow ``config.walls`` (``fluid.solver.FluidConfig``).
     motions:
@@ -88,11 +88,14 @@ class SPHFluid:
         its own boundary group, so that the impulse the fluid exchanged with it over an
         advance, and its moment about the origin, are known and split between its two
         links with the blending weights (momentum exchanged exactly, as for rigid bodies).
+    zones:
+        Relaxation zones (``fluid.relaxation.Slab``: a near field's, ``fluid.nearfield``),
+        given to the fluid when it is built at attachment.
     """
 
     def __init__(self, config: FluidConfig, fluid_points, walls=(), *, z_surface: float | None = None,
                  body_layers: int | None = None, boundary: str = "mdbc", motions: dict | None = None,
-                 elastic=()):
+                 elastic=(), zones=()):
         if boundary not in ("mdbc", "dbc"):
             raise InputError(f"SPH fluid: boundary={boundary!r}; choose 'mdbc' or 'dbc'")
         self.boundary = boundary
@@ -108,6 +111,7 @@ class SPHFluid:
         self.motions = dict(motions or {})
         self.elastic_beams = list(elastic)
         self.elastic = []  #: bodies.elastic.ElasticBody per beam, made at attachment
+        self.zones = list(zones)  #: relaxation zones (fluid.relaxation), given to the fluid at attachment
 
     # -- coupling ----------------------------------------------------------------
     #: fewest boundary particles a body's geom may have across any of its axes [-]. With
@@ -200,6 +204,7 @@ class SPHFluid:
         self.fluid = Fluid(c, ps)
         for group, motion in self.motions.items():
             self.fluid.prescribe_motion(group, motion)
+        self.fluid.zones.extend(self.zones)
         self.n_bodies = bodies.n_bodies
         self._mdbc = None
         if self.boundary == "mdbc":

@@ -1,9 +1,9 @@
-"""Two opposed catenary lines holding a body (seed 004 §4.2.2, Table 3).
+"""Two opposed catenary lines holding a body (Barreiro et al. 2016, §4.2.2, Table 3).
 
 The body sits at x = 0 between anchors at x = ±55 m, 50 m below the fairlead,
 with 50 kN horizontal pretension. Moving it from −15 m to +15 m, this prints
 each line's horizontal tension and state and the net restoring force, and plots
-them. As printed, seed 004's 75 m lines would be taut 0.90 m from rest, so this
+them. As printed, Barreiro et al. 2016's 75 m lines would be taut 0.90 m from rest, so this
 uses 90 m lines (see ``cosim validate catenary-two-lines``).
 
     python examples/two_line_mooring.py [--out DIR]

@@ -1,5 +1,5 @@
 """The floating base of an offshore wind turbine on three catenary lines in regular waves:
-seed 004 (Barreiro et al. 2016) §5, Table 4, Figs. 17-19, in 3-D. The same scene as
+Barreiro et al. 2016, §5, Table 4, Figs. 17-19, in 3-D. The same scene as
 examples/wind_turbine_base.toml, field for field; that file's header says what is the
 paper's (16 000 kg; depth 20 m, 45 m lines of 442 kg/m steel, break load 1400 kN, at
 120 deg; H = 0.7 m, T = 20 s from a wavemaker; past 80 s) and what is chosen because the

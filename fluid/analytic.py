@@ -17,10 +17,9 @@ one line. Per body:
 - optionally an incident sea of :mod:`fluid.waves` (regular linear or Stokes-2 waves, a
   JONSWAP / Pierson–Moskowitz spectrum, a recorded elevation; or :class:`LinearWave`),
   whose free surface moves the hydrostatics (the buoyancy is that of the volume under the
-  instantaneous surface) and whose water velocity and acceleration enter the Morison
-  equation
-  (Morison et al. 1950; Faltinsen 1990 §7.1 eq. 7.1, Dean & Dalrymple 1991 §10.3)
-  on each cell of the submerged volume::
+  instantaneous surface) and whose water velocity and acceleration enter the Morison equation
+  (Morison et al. 1950; Faltinsen 1990 §7.1 eq. 7.1, Dean & Dalrymple 1991 §10.3) on each
+  cell of the submerged volume::
 
       F = ρ g V(η) e_z + ρ ∫_V(η) a_w dV + m_a ā_w − B_1 v_r − B_2 |v_r| v_r,  v_r = V − ū_w
 
@@ -50,7 +49,7 @@ from typing import Mapping, Sequence
 import numpy as np
 
 from bodies.sampling import half_extents, mesh_volume, signed_distance
-from cosim.errors import InputError
+from errors import InputError
 from fluid.waves import RegularWave, Sea, SeaError
 
 

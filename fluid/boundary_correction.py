@@ -1,6 +1,6 @@
 """Modified dynamic boundary conditions (mDBC) for boundary particles.
 
-Plain dynamic boundary particles (004_1657bd4a51d29840.txt §2.6) take their density
+Plain dynamic boundary particles (Barreiro et al. 2016, §2.6) take their density
 from the continuity equation, which only grows when fluid has already moved into
 them: the fluid stands off the wall by a gap of the order of h, and a body's wetted
 surface (hence its displaced volume) is inflated by that gap. mDBC (English,
@@ -42,7 +42,7 @@ import math
 import numpy as np
 from numba import njit, prange
 
-from cosim.errors import InputError
+from errors import InputError
 from fluid.kernels import alpha_d, grad_factor, kernel_id, w_value
 from fluid.neighbours import cell_coords, row_range
 

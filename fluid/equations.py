@@ -1,98 +1,37 @@
 """Weakly-compressible SPH rates: continuity with density diffusion, momentum with
 artificial viscosity and gravity, Tait equation of state, dynamic boundaries.
 
-All pair loops gather: thread ``a`` writes only particle ``a``'s rates. The loop over
-neighbours has no branch on the pair (kernel factors are clamped at the support edge,
-pair masks are 0/1 factors), the self pair contributes exactly zero because every term
-carries ``r_ab`` or ``v_ab``. Symbols follow the papers: ``a`` the particle, ``b`` its
-neighbour, ``r_ab = r_a - r_b``, ``v_ab = v_a - v_b``, ``grad_a W_ab = F_ab r_ab``.
+All pair loops gather: thread ``a`` writes only particle ``a``'s rates, with no branch on the
+pair (kernel factors clamped at the support edge, pair masks 0/1 factors); the self pair adds
+zero. ``r_ab = r_a - r_b``, ``v_ab = v_a - v_b``, ``grad_a W_ab = F_ab r_ab``.
 
-Equations
----------
-* Continuity, 004_1657bd4a51d29840.txt Eq. 7:
-  ``drho_a/dt = sum_b m_b v_ab . grad_a W_ab + D_a``.
-* Density diffusion ``D_a = delta h c0 sum_b (m_b/rho_b) psi_ab . grad_a W_ab`` with
-  ``psi_ab = 2 (rho_b - rho_a - rho^H_ba) r_ba / (|r_ab|^2 + eta^2)``:
-
-  - ``"molteni"``: Molteni & Colagrossi (2009), ``rho^H = 0``; this is
-    000_7d114ab96e048b26.txt Eq. 1-2 without the renormalised density gradients of
-    Eq. 3-4.
-  - ``"antuono"``: delta-SPH of Antuono et al. (2010), 000_7d114ab96e048b26.txt Eq. 1-4:
-    ``rho^H_ba = (<grad rho>_a + <grad rho>_b) . r_ba / 2`` with the renormalised
-    gradients of :func:`density_gradients`, so that the term vanishes for any linear
-    density field whatever the particle arrangement (Fourtakas' only for the hydrostatic
-    one at the reference state); both factors carry ``r^2 / (r^2 + eta^2)``, so the
-    cancellation is exact pair by pair. It costs a second pair loop for the gradients
-    and 24 bytes per particle.
-  - ``"fourtakas"`` (default): Fourtakas et al. (2019, Comput. Fluids 190), as DualSPHysics'
-    DDT2: the hydrostatic part of the density difference is removed,
-    ``rho^H_ba = rho0 [(1 + rho0 g.(r_b - r_a)/B)^(1/gamma) - 1]``. We use it linearised
-    and with the local density and sound speed, ``rhobar_ab g.(r_b - r_a) / c_ab^2``
-    (``rho/c^2`` averaged over the pair): at the surface this is Fourtakas' term, at depth
-    it follows the compressed fluid, where Fourtakas' form (referred to rho0, c0) leaves a
-    residual of order 1 - (rho/rho0)^(2-gamma) (1.5 % of the Molteni term at p/B = 0.02);
-    the dropped quadratic term is below 1e-7 rho0 for any pair within 2h. Why default: in a fluid at rest under gravity the
-    Molteni term is not zero (density grows with depth) and drives a spurious mass flux
-    upwards that distorts the hydrostatic pressure near the bottom and the free surface;
-    Fourtakas' term vanishes exactly for the hydrostatic state, costs no extra loop, and
-    is the DualSPHysics variant the speed comparison is made against. Diffusion acts
-    between fluid particles only.
-  - ``"none"``.
-
-  ``diffusion_at_surface=False`` (:func:`params`; off by default) fades the term out where
-  a particle's support is cut by the free surface: by ``phi_a = clip((s1 - s_a) /
-  (s1 - s0), 0, 1)`` with ``s_a = h |sum_b V_b grad_a W_ab|`` over fluid (``V_b = m_b /
-  rho_b``) and boundary neighbours (``V_b = m_b / rho0``, so that walls count as filled
-  support) and ``(s0, s1)`` = :data:`SURFACE_FADE`. ``s_a`` is zero on a full support and,
-  on the square (cubic) lattice at h = sqrt(2) dx, 0.62 (0.63) on the free-surface row and
-  0.086 (0.075) on the row below it. Why: with the support cut, the term no longer
-  approximates ``h^2 lap rho`` but a first-derivative flux through the surface, which
-  drives the density of the surface rows towards the hydrostatic one at their height; that
-  is not the discrete equilibrium of the truncated momentum sum there, and in a 3-D tank at
-  rest the two keep a slow circulation going by the vertical edges (largest speed 2-4e-3
-  sqrt(g H), cosim.validations.fluid.hydrostatic_3d). Faded, the tank stays at rest
-  (5e-5). The price in violent flow: the 2-D dam break's pressure noise (20 particles
-  across) rises from 0.043 to 0.17 rho g 2a and its front error after the release from 2.0
-  to 2.8 % (the surface rows are a third of a thin flow), so it is the set-up for still
-  and slowly moving water, not the default. It costs 5-8 % of a step (a compiled variant
-  of the pair loop: nothing when off).
-* Momentum, 004_1657bd4a51d29840.txt Eq. 6 (001_14936b82710365b2.txt Eq. 5):
+* Continuity, Barreiro et al. 2016, Eq. 7: ``drho_a/dt = sum_b m_b v_ab . grad_a W_ab + D_a``.
+* Density diffusion between fluid particles, ``D_a = delta h c0 sum_b (m_b/rho_b) psi_ab .
+  grad_a W_ab``, ``psi_ab = 2 (rho_b - rho_a - rho^H_ba) r_ba / (|r_ab|^2 + eta^2)``:
+  ``"molteni"`` (Molteni & Colagrossi 2009, ``rho^H = 0``: Dinçer & Demir 2020, Eq. 1-2
+  without Eq. 3-4); ``"antuono"`` (Antuono et al. 2010; Dinçer & Demir 2020, Eq. 1-4: zero
+  for any linear density field; a second pair loop); ``"fourtakas"`` (default; Fourtakas et
+  al. 2019, DualSPHysics' DDT2, linearised with the local density and sound speed: zero for
+  the hydrostatic state); ``"none"``. ``diffusion_at_surface=False`` fades it where the free
+  surface cuts the support (:data:`SURFACE_FADE`): for still water, not the default.
+* Momentum, Barreiro et al. 2016, Eq. 6 (Sunara et al. 2021, Eq. 5):
   ``dv_a/dt = -sum_b m_b (P_a/rho_a^2 + P_b/rho_b^2 + Pi_ab) grad_a W_ab + g``.
-* Artificial viscosity, 001_14936b82710365b2.txt Eq. 6 (Monaghan 1992):
-  ``Pi_ab = -alpha cbar_ab mu_ab / rhobar_ab`` if ``v_ab . r_ab < 0`` else 0,
-  ``mu_ab = h v_ab . r_ab / (r_ab^2 + eta^2)``, ``eta^2 = 0.01 h^2``. Between a fluid and
-  a boundary particle alpha is multiplied by ``alpha_wall`` (default 1; DualSPHysics'
-  ViscoBoundFactor): the viscosity acts on the wall as a friction far stronger than
-  water's (``nu ~ alpha h c0 / 8``, some 100 times water's at a centimetre's
-  resolution), which damps waves running over a bed; 0 makes the walls slip, as in the
-  DualSPHysics set-up of the floating box in waves (seed 004 §4.1).
-* Laminar viscosity (optional, ``nu > 0``; off by default), the form of Lo & Shao (2002,
-  Appl. Ocean Res. 24) that DualSPHysics uses for "Laminar" viscosity (named in
-  004_1657bd4a51d29840.txt §2.3 after Eq. 6; Morris et al. 1997):
-  ``(dv_a/dt)_lam = sum_b m_b 4 nu0 (r_ab . grad_a W_ab) / ((rho_a + rho_b)(r_ab^2 + eta^2)) v_ab``
-  with the kinematic viscosity ``nu0`` [m^2/s]; added to the artificial viscosity, between
-  fluid particles and between fluid and boundary particles (no-slip walls), antisymmetric
-  in the pair like every other term. Its time-step limit ``dt <= 0.125 h^2 / nu0`` (Morris
-  et al. 1997; 0.0156 h^2 / nu0 with Verlet, and with the artificial viscosity and the
-  density diffusion counted in nu0) is in :func:`fluid.integrator.stable_dt`.
-* XSPH (optional, ``eps > 0``; off by default), Monaghan (1989), 003_7c74773681ee080c.txt
-  §2 (the equation after Eq. 15): particles move with
-  ``v_a + eps sum_b (m_b / rhobar_ab) v_ba W_ab``, ``rhobar_ab = (rho_a + rho_b)/2``. The
-  extracted text of 003 reads ``u_ab`` in the sum, which with a plus sign would sharpen
-  velocity differences instead of smoothing them; Monaghan's form, with ``v_ba = v_b - v_a``,
-  is used. 003 applies the corrected velocity in the continuity equation too; here it only
-  moves the particles (fluid.integrator), so that mass and momentum balances are those of
-  the uncorrected equations. Boundary particles keep their prescribed motion.
-* Tait equation of state, 004_1657bd4a51d29840.txt Eq. 8 with
-  ``B = c0^2 rho0 / gamma`` (001_14936b82710365b2.txt Eq. 8); sound speed
-  ``c = c0 (rho/rho0)^((gamma-1)/2)``.
-* Dynamic boundaries, 004_1657bd4a51d29840.txt §2.6: boundary particles obey the
-  continuity equation (summed over fluid neighbours; boundary-boundary pairs are masked),
-  their pressure follows from the same equation of state, their motion is prescribed.
-  Their "acceleration" computed here is the force per unit mass the fluid exerts on
-  them (no gravity): ``m_a dv_a/dt`` summed over a group is the fluid load on that group,
-  exactly the negative of what the group exerts on the fluid since every pair term is
-  antisymmetric.
+* Artificial viscosity, Sunara et al. 2021, Eq. 6 (Monaghan 1992): ``Pi_ab = -alpha cbar_ab
+  mu_ab / rhobar_ab`` if ``v_ab . r_ab < 0`` else 0, ``mu_ab = h v_ab . r_ab / (r_ab^2 +
+  eta^2)``, ``eta^2 = 0.01 h^2``; alpha times ``alpha_wall`` between fluid and wall (0: slip).
+* Laminar viscosity (optional, ``nu > 0``): Lo & Shao (2002), DualSPHysics' "Laminar"
+  (Barreiro et al. 2016, §2.3; Morris et al. 1997), fluid-fluid and fluid-wall (no slip);
+  its step limit is in :func:`fluid.integrator.stable_dt`.
+* XSPH (optional, ``eps > 0``; Monaghan 1989, Wang et al. 2022, §2): particles move with
+  ``v_a + eps sum_b (m_b / rhobar_ab) v_ba W_ab`` (Monaghan's sign; positions only).
+* Tait equation of state, Barreiro et al. 2016, Eq. 8, ``B = c0^2 rho0 / gamma`` (Sunara et
+  al. 2021, Eq. 8); sound speed ``c = c0 (rho/rho0)^((gamma-1)/2)``.
+* Dynamic boundaries, Barreiro et al. 2016, §2.6: continuity over fluid neighbours, the same
+  equation of state, prescribed motion; their "acceleration" is the fluid's force per unit
+  mass on them, exactly minus what they exert on the fluid (every pair term is antisymmetric).
+
+Why each choice (the diffusion variants, the surface fade, the wall viscosity, the XSPH
+sign), in full and with its measured effect: docs/fluid_equations.md.
 """
 
 from __future__ import annotations
@@ -105,7 +44,7 @@ import numba
 import numpy as np
 from numba import njit, prange, uint64
 
-from cosim.errors import InputError
+from errors import InputError
 
 from fluid.kernels import grad_scale, grad_shape, grad_shape_f32, w_value, w_value_f32
 from fluid.neighbours import XBINS, cell_coords, row_range, row_range_binned, x_bins
@@ -163,13 +102,13 @@ def params(h, ad, alpha, delta, diffusion, rho0, c0, g, nu=0.0, xsph=0.0, alpha_
 
 
 def tait_B(rho0: float, c0: float, gamma: float) -> float:
-    """Tait stiffness B = c0^2 rho0 / gamma [Pa] (004_1657bd4a51d29840.txt Eq. 8)."""
+    """Tait stiffness B = c0^2 rho0 / gamma [Pa] (Barreiro et al. 2016, Eq. 8)."""
     return c0 * c0 * rho0 / gamma
 
 
 @njit(**_OPTS)
 def _tait(r, rho0, c0, gamma, B, e):
-    """Pressure [Pa] and sound speed [m/s] at density ``r`` (004_1657bd4a51d29840.txt
+    """Pressure [Pa] and sound speed [m/s] at density ``r`` (Barreiro et al. 2016,
     Eq. 8); for water (gamma = 7) the powers by multiplication: pow costs more than all
     the rest of :func:`pack`."""
     x = r / rho0
@@ -182,7 +121,7 @@ def _tait(r, rho0, c0, gamma, B, e):
 
 @njit(parallel=True, **_OPTS)
 def equation_of_state(rho, rho0, c0, gamma, p, cs):
-    """Tait EOS (004_1657bd4a51d29840.txt Eq. 8): pressure ``p`` [Pa] and sound speed
+    """Tait EOS (Barreiro et al. 2016, Eq. 8): pressure ``p`` [Pa] and sound speed
     ``cs`` [m/s] of every particle from its density [kg/m^3]."""
     B = c0 * c0 * rho0 / gamma
     e = 0.5 * (gamma - 1.0)
@@ -208,7 +147,7 @@ PAD_F32 = 16
 
 @njit(parallel=True, **_OPTS)
 def pack(pos, vel, rho, mass, kind, rho0, c0, gamma, p, S):
-    """Tait EOS (004_1657bd4a51d29840.txt Eq. 8) into ``p`` [Pa], and the packed table
+    """Tait EOS (Barreiro et al. 2016, Eq. 8) into ``p`` [Pa], and the packed table
     ``S`` (N_ROWS, N) the pair loop reads: one contiguous row per quantity (positions
     and velocities per component, y = 0 in 2-D, density, mass, sound speed
     ``c = c0 (rho/rho0)^((gamma-1)/2)``, ``p/rho^2``, ``m/rho`` (fluid; 0 for boundary particles), ``rho/c^2`` and 1 for fluid,
@@ -279,9 +218,9 @@ def wall_sums(S, xa, ya, za, ux, uy, uz, rhoa, kernel, three, h, lo, cell, cx, c
     """Over the fluid particles b within 2h of a boundary particle at (xa, ya, za) [m]
     moving at (ux, uy, uz) [m/s] with density ``rhoa`` [kg/m^3] in cell (cx, cy, cz) (cells
     ``cell`` = 2h [m] wide, ``lo`` (x, y, z), ``tab`` the sub-bin table):
-    ``sum_b m_b v_ab . r_ab F_ab / Fc``, its continuity rate (004_1657bd4a51d29840.txt Eq. 7)
+    ``sum_b m_b v_ab . r_ab F_ab / Fc``, its continuity rate (Barreiro et al. 2016, Eq. 7)
     without the kernel's constant factor, and ``sum_b (mu_ab / h)^8``, the 8-norm of Eq. 14's
-    viscous terms (001_14936b82710365b2.txt) before its root: the same sums, term for term
+    viscous terms (Sunara et al. 2021) before its root: the same sums, term for term
     and in the same order, as the pair loop's for a boundary particle (boundary-boundary
     pairs do not interact; no diffusion), so that its step bound is the one the full pass
     gives."""
@@ -509,7 +448,7 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
                         # density diffusion, fluid-fluid pairs (VOL is zero for boundary
                         # particles, fa applied after the loop):
                         # psi_ab . grad W = -2 (rho_b - rho_a - rho^H_ba) F r^2/(r^2+eta^2)
-                        if renorm:  # seed 000 Eq. 2: minus the mean renormalised gradient
+                        if renorm:  # Dinçer & Demir 2020, Eq. 2: minus the mean renormalised gradient
                             rhoH = F(-0.5) * ((gxa + F(G[0, b])) * rx + (gza + F(G[2, b])) * rz)
                             if three:
                                 rhoH -= F(0.5) * (gya + F(G[1, b])) * ry
@@ -521,7 +460,7 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
                             qgx += vf * rx
                             qgy += vf * ry
                             qgz += vf * rz
-                        # momentum (Eq. 6) with artificial viscosity (001 Eq. 6)
+                        # momentum (Eq. 6) with artificial viscosity (Sunara et al. 2021, Eq. 6)
                         Pi = avh * (ca + T[CS - o, b]) * min(vr, zero) * d
                         if wall_visc:  # alpha_wall alpha between fluid and boundary particles
                             Pi *= awall + (one - awall) * fa * fb
@@ -710,9 +649,9 @@ _GRADIENTS = {}
 
 def density_gradients(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, G) -> None:
     """The renormalised density gradient ``G[:, a]`` [kg/m^4] (rows x, y, z; y = 0 in 2-D)
-    of every fluid particle a, 000_7d114ab96e048b26.txt Eq. 3-4:
+    of every fluid particle a, Dinçer & Demir 2020, Eq. 3-4:
     ``<grad rho>_a = L_a sum_b V_b (rho_b - rho_a) grad_a W_ab`` with
-    ``L_a = [sum_b V_b r_ba (x) grad_a W_ab]^-1`` over the fluid neighbours (the seed prints
+    ``L_a = [sum_b V_b r_ba (x) grad_a W_ab]^-1`` over the fluid neighbours (the paper prints
     ``r_ab``, which gives the gradient's negative with ``grad_a W_ab``; with ``r_ba = r_b -
     r_a`` it reproduces any linear field exactly). Where ``L_a`` is near singular (|det| of
     its inverse below :data:`DET_MIN` of the mean diagonal's power), the hydrostatic
@@ -756,77 +695,24 @@ def interact(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, out, acc, xs, G, 
     [m/s^2] momentum rate (Eq. 6 with artificial and, if ``nu > 0``, laminar viscosity;
     gravity added for fluid only, see module docstring), ``out[VISC, a]`` [m/s]
     ~ max_b |h v_ab.r_ab / (r_ab^2 + eta^2)| over the support for the time step
-    (001_14936b82710365b2.txt Eq. 14) and, if ``prm[P_XSPH] > 0``, the XSPH velocity
+    (Sunara et al. 2021, Eq. 14) and, if ``prm[P_XSPH] > 0``, the XSPH velocity
     correction ``xs[a]`` [m/s] (fluid only; zero for boundary particles). Particles must
     be sorted by cell (``start`` and the sub-bin table ``tab`` from
     :func:`fluid.neighbours.sort_by_cell` or :func:`fluid.neighbours.x_bins`, cells ``cell``
     = 2h [m] wide); ``S`` comes from :func:`pack`; ``lo`` has 3 components (x, y, z; y = 0
     and ``ny = 1`` in 2-D).
 
-    How the inner loop is kept vectorised (it compiles to packed AVX-512 instructions,
-    8 pairs per pass, about 50 instructions with one ``vsqrtpd`` and one ``vdivpd``; 2.3
-    times less CPU time than the loop it replaced, which had all of this but the first
-    four points and the last: 2.4 against 5.5 ms for the 22 008 particles of the 2-D
-    reference case of benchmarks/fluid_throughput.py, one thread):
-
-    * it is compiled per kernel, dimension and optional term (:func:`_make_interact`):
-      no branch in it, and no cost for a term switched off;
-    * each neighbour range (a row of 3 cells, 2h wide each, sorted by x) is trimmed to
-      the particles within 2h in x, to within a sixteenth of a cell, by two look-ups in
-      the sub-bin table of the cell list (``tab``, :func:`fluid.neighbours.order_cells_by_x`;
-      a binary search per bound, mispredicted branches, cost a fifth of the loop), and
-      rounded up to a multiple of :data:`PAD` particles within its row
-      (:func:`fluid.neighbours.row_range_binned`), so that it runs entirely in the vector
-      body (the ranges hold about 16 particles in 2-D; scalar tails were a third of the
-      time) over a third fewer pairs;
-    * one division per pair: ``1/((r^2+eta^2)(rho_a+rho_b))`` gives both reciprocals, and
-      constant factors (the kernel's normalisation, ``alpha h``, ``nu``) are applied once
-      per particle, after the loop: the loop is bound by the throughput of its
-      multiplications;
-    * it runs over contiguous rows with an unsigned index (numba then drops the
-      negative-index wrap-around; slices would do too, but their reference counting is an
-      atomic operation shared by all threads and stopped the loop from scaling);
-    * pair masks are 0/1 factors and the kernel factors are clamped at the edge of the
-      support, never branches;
-    * no max-reduction (numba's LLVM does not vectorise one; a loop with ``max`` inside
-      measured 2.8 times slower): the largest viscous term ``max_b |mu_ab|`` of Eq. 14 is taken as
-      the 8-norm ``(sum_b mu_ab^8)^(1/8)`` over the pairs within 2h, an upper bound within
-      a factor ``N_b^(1/8)`` (< 1.6 for 40 neighbours, and close to 1 when one pair
-      dominates): a slightly conservative step. Its 8th root is three square roots:
-      ``** 0.125`` called ``pow`` for every particle, 12 % of the loop.
-
-    What is not computed: a boundary particle in a cell with no fluid within one cell
-    (``near``, :func:`fluid.neighbours.fluid_near_cells`) gets zero rates without a pass,
-    which is what the pass gives (boundary-boundary pairs do not interact): the dry walls
-    above the water and beyond the support. The tank-wall particles whose loads nobody
-    reads (``walls``, ``FluidConfig.wall_loads = False``) get their continuity rate (plain
-    dynamic boundaries; walls whose densities come from the fluid do not) and their viscous
-    terms' 8-norm (:func:`wall_sums`), which still bounds the step: without it the step of
-    the quick elastic-table2 case grew and its peaks moved by up to 6 %, as a 10 % smaller
-    CFL number moves them. DualSPHysics' fixed boundaries get the continuity rate and the
-    viscous bound alone too.
-
-    ``prm`` from :func:`params` with ``precision="float32"`` (``FluidConfig.precision``):
-    every pair term in float32, 16 pairs per AVX-512 pass instead of 8, read from the
-    float32 table ``T`` of :func:`pack_f32` (made here if not given). What keeps it as
-    exact as float32 can be: a pair's separation is taken from the particles' offsets
-    in their cells (``(xo_a - xo_b) + (ix_a - ix_b) cell``; in y and z the neighbour's row
-    of cells fixes the index), never from rounded positions (float32 positions 2 m from
-    the origin are off by 1e-7 m, 1e-5 of a centimetre's spacing); densities enter as
-    ``rho - rho0``; each row's sums are float32 partial sums added to float64 totals; the
-    8-norm's terms carry ``h`` (``(h mu)^8`` stays far inside float32's range up to
-    10^4 m/s). Measured against float64: rates within 5e-7 of each field's largest value
-    (3-D dam break after 30 steps; the tests' random sets within 3e-6), and the quick
-    validations of the fluid (dambreak-2d, hydrostatic, hydrostatic-3d, westergaard,
-    westergaard-3d) unchanged in their first four digits. It pays less than the lanes
-    promise: the 3-D dam break's step 1.22 times faster (AMD EPYC Zen 4, one thread), the
-    2-D one 0.8-1.0 times (shorter rows, and the extra table :func:`pack_f32`, 5 % of a
-    2-D step). Neither loop reaches the floor its multiplications set on Zen 4 (one
-    512-bit multiply or FMA issued per cycle: 32 per 8 float64 pairs, 37 per 16 float32
-    pairs): float64 runs at 59 % of it, float32 at 45 %; what each row of cells costs
-    apart from its pairs (the range look-up, the horizontal sums of the accumulators,
-    the start and exit of a loop of two to four passes) is 12 % of the 3-D loop,
-    measured with the pair terms removed.
+    The inner loop is kept vectorised (packed AVX-512, 8 float64 pairs a pass): compiled per
+    kernel, dimension and optional term (:func:`_make_interact`); each neighbour row trimmed to
+    within 2h in x by the sub-bin table ``tab`` and padded to :data:`PAD`; one division per pair;
+    masks and clamps instead of branches; the largest viscous term ``max_b |mu_ab|`` of Eq. 14
+    taken as the 8-norm over the pairs (an upper bound within ``N_b^(1/8)``: a slightly
+    conservative step). A boundary particle with no fluid within one cell (``near``) gets zero
+    rates without a pass; tank walls whose loads nobody reads (``walls``) get only their
+    continuity rate and viscous bound (:func:`wall_sums`), as DualSPHysics' fixed boundaries.
+    With ``precision="float32"`` every pair term is float32 (16 pairs a pass), read from the
+    table ``T`` of :func:`pack_f32`, separations from in-cell offsets and densities as ``rho -
+    rho0``, summed into float64 totals. Why each, and what it measured: docs/fluid_equations.md.
     """
     renorm = bool(prm[P_RENORM] > 0.0)
     f32 = bool(prm[P_F32] > 0.0)
@@ -954,7 +840,7 @@ def boundary_pressure(pos, vel, rho, mass, kind, start, grid, rho0: float, c0: f
     """Pressure [Pa] for reporting at every particle: fluid particles their own; boundary
     particles the inverse-distance average of the fluid pressures within the support 2h,
     ``P_a = sum_b (P_b / |r_b - r_a|) / sum_b (1 / |r_b - r_a|)``
-    (001_14936b82710365b2.txt Eq. 15); 0 for a boundary particle with no fluid near it.
+    (Sunara et al. 2021, Eq. 15); 0 for a boundary particle with no fluid near it.
     Particles sorted by cell on ``grid`` (reach 1, cell 2h)."""
     n, dim = pos.shape
     S = np.empty((N_ROWS, n))

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from cosim.errors import InputError
+from errors import InputError
 from fluid.geometry import block
 from fluid.particles import Kind
 

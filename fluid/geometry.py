@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.spatial import cKDTree
 
-from cosim.errors import InputError
+from errors import InputError
 from fluid.equations import hydrostatic_density
 from fluid.particles import Kind, ParticleSet
 

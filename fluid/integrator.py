@@ -1,7 +1,7 @@
 """Time integration: the symplectic position-Verlet predictor-corrector of DualSPHysics
-(Monaghan 2005; "standard predictor-corrector", 001_14936b82710365b2.txt §2.2), with a
+(Monaghan 2005; "standard predictor-corrector", Sunara et al. 2021, §2.2), with a
 variable step from the force and Courant-viscous conditions of
-001_14936b82710365b2.txt Eq. 14:
+Sunara et al. 2021, Eq. 14:
 
     dt = CFL * min(dt_f, dt_cv),  dt_f = min_a sqrt(h / |f_a|),
     dt_cv = min_a h / (c_a + max_b |h v_ab . r_ab / (r_ab^2 + eta^2)|)
@@ -28,50 +28,14 @@ predictor ``r^{n+1/2} = r^n + dt/2 (v^n + dv_x^n)``, corrector
 ``r^{n+1} = r^n + dt ((v^n + v^{n+1})/2 + dv_x^{n+1/2})``, Verlet
 ``r^{n+1} = r^n + dt (v^n + dv_x^n) + dt^2/2 a^n``. Velocities are not changed by it.
 
-The step also obeys a diffusion limit, ``dt <= C h^2 / nu_eff``, on every diffusive term
-of the rates (DualSPHysics applies none; for a small ``dx`` and a large ``nu`` it binds):
-
-    nu_eff = nu + alpha h c_max / (2 (d + 2)) + delta h c0
-
-- ``nu`` [m^2/s]: the laminar viscosity (Lo & Shao 2002, fluid.equations), whose SPH
-  Laplacian bounds the step by ``0.125 h^2 / nu`` (Morris, Fox & Zhu 1997, J. Comput. Phys.
-  136; the criterion 001_14936b82710365b2.txt §2.2 cites as "viscous diffusion term").
-- ``alpha h c / (2 (d + 2))``: the shear viscosity that Monaghan's artificial viscosity
-  (001 Eq. 6) amounts to in the continuum (Monaghan 2005, Rep. Prog. Phys. 68;
-  ``alpha h c0 / 8`` in 2-D, fluid.equations), ``c_max`` the largest sound speed now.
-- ``delta h c0``: the density diffusion (fluid.equations), the same SPH Laplacian
-  operator (``2 V_b |F_ab| (rho_b - rho_a)`` against the laminar ``2 V_b |F_ab| v_ba``)
-  acting on the density with diffusivity ``delta h c0``; between fluid particles only, so it
-  is counted whatever ``diffusion`` variant is chosen (0 for ``"none"``).
-
-``C`` follows the scheme: the largest eigenvalue ``lambda`` of the diffusion operator is
-``~5.8 nu / h^2`` (measured: a 2-D block with random velocities, Wendland, h = sqrt(2) dx,
-grows when ``dt > 0.34 h^2 / nu`` with the predictor-corrector, whose velocity update is the
-midpoint rule ``1 + z + z^2 / 2``, stable for ``z = -lambda dt >= -2``). Morris' 0.125
-keeps a factor 2.75 below that edge for the predictor-corrector. Verlet's leap-frog
-``v^{n+1} = v^{n-1} + 2 dt a^n`` is unstable for any diffusion (its second root
-``z - sqrt(z^2 + 1)`` has modulus ``1 + |z|``); only the forward-Euler step every
-``verlet_reset`` = N steps holds it. Over a cycle (one Euler step, N - 1 leap-frog steps)
-the gain of a mode decaying at ``lambda`` is ``G_N(z)`` of :func:`verlet_diffusion_edge`,
-``|G_N| <= 1`` for ``|z| <= z_N`` (z_40 = 0.135, z_10 = 0.358, z_1 = 2): Verlet's ``C`` is
-``z_N / (5.8 VERLET_MARGIN)``, a factor ``VERLET_MARGIN`` = 1.5 below its edge (0.0156 at
-N = 40). Measured on that block: Verlet grew with ``nu`` at 0.2 and was stable at 0.16
-times Morris' step (predicted edge 0.135 / 5.8 / 0.125 = 0.19); density noise grew with
-Verlet at cfl = 0.2 for ``delta >= 0.15`` (predicted 0.116) and at cfl = 0.3 and 0.4 for
-the default 0.1; the predictor-corrector at cfl 0.4 grew for ``delta = 1`` (predicted edge
-0.86). On the dam breaks of ``benchmarks/fluid_throughput.py``, the limit setting the step:
-Verlet held at 1.5 times below the edge (2-D 0.3 s, 3-D 0.1 s) and blew up at the edge
-itself (2-D, cfl = 0.4) (``benchmarks/verlet_diffusion_margin.py``; Morris' factor 2.75
-cost 1.83 times the CPU per simulated second and moved no dam-break metric). Limiters
-``"viscous_diffusion"``, ``"artificial_viscosity"``, ``"density_diffusion"`` name the
-largest part of ``nu_eff``.
-
-Covered by 001 Eq. 14 as it stands: the sound speed (``h / c_a``) and the relative
-particle speed (``|h v_ab . r_ab| / r^2``, the ``|v|`` of a CFL on ``c0 + |v|``), the force
-criterion ``sqrt(h / |f_a|)`` (Monaghan 1992, Annu. Rev. Astron. Astrophys. 30), and, in
-the predictor-corrector, the artificial viscosity: its ``lambda dt`` is
-``~5.8 alpha cfl / 8 <= 0.3`` for ``alpha <= 1``, ``cfl <= 0.4``. XSPH moves positions only
-and adds no limit.
+The step also obeys a diffusion limit that DualSPHysics does not apply, ``dt <= C h^2 /
+nu_eff``, ``nu_eff = nu + alpha h c_max / (2 (d + 2)) + delta h c0`` (the laminar viscosity,
+the continuum shear viscosity of the artificial one (Monaghan 2005), the density diffusion):
+``C`` = 0.125 for the predictor-corrector (Morris, Fox & Zhu 1997), ``z_N / (5.8
+VERLET_MARGIN)`` for Verlet, whose leap-frog is unstable for any diffusion and held only by
+the Euler step every ``verlet_reset`` steps (:func:`verlet_diffusion_edge`). The limiters
+name the largest part of ``nu_eff``. The derivation, its measurements and what Eq. 14
+covers as it stands: docs/fluid_integrator.md.
 """
 
 from __future__ import annotations
@@ -160,7 +124,7 @@ def _bounds(acc, visc, cs, kind, h):
 def stable_dt(acc, visc, cs, kind, h: float, cfl: float, dt_max: float = math.inf,
               nu: float = 0.0, *, alpha_eff: float = 0.0, nu_delta: float = 0.0,
               c_diff: float = MORRIS) -> StepLimit:
-    """001_14936b82710365b2.txt Eq. 14 with factor ``cfl``; ``dt_max`` [s] caps it; and the
+    """Sunara et al. 2021, Eq. 14 with factor ``cfl``; ``dt_max`` [s] caps it; and the
     diffusion limit ``c_diff h^2 / nu_eff`` (module docstring) with
     ``nu_eff = nu + alpha_eff h c_max + nu_delta``: ``nu`` [m^2/s] the laminar viscosity,
     ``alpha_eff = alpha / (2 (d + 2))`` [-] the artificial viscosity's share, ``nu_delta =

@@ -5,11 +5,11 @@ Every kernel is written as ``W(r) = alpha_d * w(q)``, ``q = r / h``, and its gra
 by ``r`` and the self pair contributes exactly zero. Factors are clamped at the edge of the
 support (no branch), which is what lets the pair loop vectorise.
 
-* Wendland C2 (Wendland 1995; the DualSPHysics default, 004_1657bd4a51d29840.txt §2.2,
-  and the cable kernel of 000_7d114ab96e048b26.txt):
+* Wendland C2 (Wendland 1995; the DualSPHysics default, Barreiro et al. 2016, §2.2,
+  and the cable kernel of Dinçer & Demir 2020):
   ``w = (1 - q/2)^4 (2q + 1)``, ``alpha_2 = 7 / (4 pi h^2)``, ``alpha_3 = 21 / (16 pi h^3)``;
   ``F = -5 alpha_d / h^2 (1 - q/2)^3``.
-* Cubic spline (Monaghan & Lattanzio 1985; 001_14936b82710365b2.txt Eq. 4, whose 3-D
+* Cubic spline (Monaghan & Lattanzio 1985; Sunara et al. 2021, Eq. 4, whose 3-D
   factor 1/(pi h^3) is used; the 2-D factor is 10 / (7 pi h^2)):
   ``w = 1 - 3/2 q^2 + 3/4 q^3`` (q < 1), ``(2 - q)^3 / 4`` (1 <= q < 2).
 
@@ -23,7 +23,7 @@ import math
 import numpy as np
 from numba import njit
 
-from cosim.errors import InputError
+from errors import InputError
 
 #: kernel ids used inside the numba loops
 WENDLAND = 0

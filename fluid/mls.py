@@ -1,5 +1,5 @@
 """Density re-initialisation by a first-order moving-least-squares (MLS) interpolation,
-001_14936b82710365b2.txt Eq. 9-12 (also used by 003_7c74773681ee080c.txt; Colagrossi &
+Sunara et al. 2021, Eq. 9-12 (also used by Wang et al. 2022; Colagrossi &
 Landrini 2003, Dilts 1999):
 
     rho_a^new = sum_b m_b W^MLS_ab,

@@ -25,21 +25,17 @@ returns are the exact time derivatives of the positions it returns:
 
 Baseline correction (:func:`baseline_correct`): a recorded accelerogram integrated twice
 drifts (a small offset in acceleration grows quadratically in displacement), so a table
-shaking the tank would wander off and end moving. The seeds do not say how they processed
-their records (003_7c74773681ee080c.txt §4.1 applies the Wenchuan and El Centro records to
-the arch rib without details), so we use the classical polynomial fit to the displacement
-(e.g. Boore 2001, BSSA 91(5) 1199-1211; Boore, Stephens & Joyner 2002, BSSA 92(4)
-1543-1560, the "fit a polynomial to the displacement and remove its second derivative from
-the acceleration" step of the PEER processing): the least-squares polynomial
+shaking the tank would wander off and end moving. The papers do not say how they processed
+their records (Wang et al. 2022, §4.1), so we use the classical polynomial fit to the
+displacement (Boore 2001, BSSA 91(5) 1199-1211; Boore, Stephens & Joyner 2002, BSSA 92(4)
+1543-1560; a step of the PEER processing): the least-squares polynomial
 ``q(t) = sum_{k=2..n} c_k t^k`` is fitted to the displacement subject to ``q(T) = d(T)`` and
 ``q'(T) = v(T)``, and removed from displacement, velocity and acceleration. Starting at
 ``t^2`` keeps the start at rest; the two constraints make the corrected record end at rest
 exactly; the change of the acceleration is the smooth ``q''(t)``, small where the drift is.
-The fit cannot tell drift from genuine motion as slow as the record itself: a record that
-is one slow pulse of displacement is erased with its drift (PEER's processed records,
-``cosim/refdata/earthquake_el_centro_1940``, end at rest already and change by 1-2 % of
-their peak displacement; ``tests/test_records.py``). Give ``baseline_degree=None`` to
-:func:`read_at2` to keep a record as it is.
+The fit cannot tell drift from motion as slow as the record itself (one slow pulse of
+displacement is erased with its drift; PEER's processed records end at rest already:
+``tests/test_records.py``); ``baseline_degree=None`` (:func:`read_at2`) keeps a record as it is.
 """
 
 from __future__ import annotations
@@ -51,7 +47,7 @@ from pathlib import Path
 import numpy as np
 from scipy.interpolate import CubicSpline, PPoly
 
-from cosim.errors import InputError
+from errors import InputError
 
 G_STANDARD = 9.80665  #: standard gravity [m/s^2], the unit "g" of accelerograms
 
@@ -86,7 +82,7 @@ class Harmonic(Signal):
     amplitude: [m] for a translation, [rad] for a rotation (may be negative); period [s];
     phase [rad]. ``from_rest=True`` subtracts the linear function of t that makes
     ``s(0) = s'(0) = 0``: the acceleration is the same sinusoid, the motion starts at rest
-    and drifts at the mean velocity ``-A w cos(phase)`` (001_14936b82710365b2.txt §3.1
+    and drifts at the mean velocity ``-A w cos(phase)`` (Sunara et al. 2021, §3.1
     prescribes the ground *acceleration* a0 sin(2 pi t / Tp), Fig. 3).
     """
 
@@ -464,7 +460,7 @@ class Rotation:
 @dataclass(frozen=True)
 class Combined:
     """Rigid translation by several independent components at once (a ground motion of
-    horizontal and vertical records, 003_7c74773681ee080c.txt §4.2: "El Centro NS +
+    horizontal and vertical records, Wang et al. 2022, §4.2: "El Centro NS +
     vertical"): ``pos = ref + sum_k s_k(t) e_k``, ``vel = sum_k s_k'(t) e_k``, each
     component a :class:`Translation` with its own direction ``e_k`` and signal ``s_k`` (in
     m). The directions need not be orthogonal; all have the same number of components (2:

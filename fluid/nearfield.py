@@ -27,10 +27,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from cosim.errors import InputError
+from errors import InputError
 from fluid.geometry import block
 from fluid.particles import Kind
 from fluid.relaxation import Slab
+from fluid.waves import wavenumbers
 
 FIXED_GROUP, NEAR_END_GROUP, FAR_END_GROUP = 0, 1, 2
 
@@ -88,29 +89,43 @@ def sea_velocity(sea, drift: bool = True):
 class NearFieldBox:
     """A near-field box of water: ``fluid`` (N, dim) points, ``walls`` as ``(points, kind,
     group)`` (seabed and side walls fixed, group 0; the near and far end walls, groups 1 and
-    2, to be moved by :func:`following_wall`), the x range ``x0 .. x1`` [m] of the water and
-    the relaxation zones' width ``zone`` [m] at each end."""
+    2, to be moved by :func:`following_wall`), the x range ``x0 .. x1`` [m] of the water,
+    3-D its y range ``y`` [m] (None in 2-D), the relaxation zones' width ``zone`` [m] inside
+    each end wall and ``side_zone`` [m] inside each side wall (None: no side zones, a
+    channel), none along a symmetry plane at ``y[0]`` (``symmetric``)."""
 
     fluid: np.ndarray
     walls: list
     x0: float
     x1: float
     zone: float
+    y: tuple | None = None
+    side_zone: float | None = None
+    symmetric: bool = False
 
     def zones(self, sea, rate: float, drift: bool = True) -> list:
-        """The two relaxation zones (near end: weight 1 at x0; far end: at x1), relaxing at
-        ``rate`` [1/s] at the walls towards the sea's velocity (``drift``: and its return
-        current, :func:`return_current`)."""
+        """The relaxation zones (weight 1 at the walls), relaxing at ``rate`` [1/s] there
+        towards the sea's velocity (``drift``: and its return current,
+        :func:`return_current`): one inside each end wall, 3-D one inside each side wall
+        that is not a symmetry plane when the box has side zones."""
         target = sea_velocity(sea, drift)
-        return [Slab(0, self.x0 + self.zone, self.x0, rate, target), Slab(0, self.x1 - self.zone, self.x1, rate, target)]
+        out = [Slab(0, self.x0 + self.zone, self.x0, rate, target), Slab(0, self.x1 - self.zone, self.x1, rate, target)]
+        if self.y is not None and self.side_zone is not None:
+            (y0, y1), w = self.y, self.side_zone
+            out.append(Slab(1, y1 - w, y1, rate, target))
+            if not self.symmetric:
+                out.append(Slab(1, y0 + w, y0, rate, target))
+        return out
 
 
 def near_field_box(dx: float, x0: float, x1: float, sea, height: float, zone: float, *, layers: int = 4,
-                   width: float | None = None, slack: float | None = None) -> NearFieldBox:
+                   y: tuple | None = None, side_zone: float | None = None, symmetric: bool = False,
+                   slack: float | None = None) -> NearFieldBox:
     """Water from ``x0`` to ``x1`` [m] over the sea's seabed (``sea.level - sea.depth``) up
     to its still level, spacing ``dx`` [m]; walls ``height`` [m] above the seabed and
-    ``layers`` thick; relaxation zones ``zone`` [m] wide inside each end; 3-D across
-    ``0 .. width`` [m] (side walls beyond). The seabed runs on beyond each end wall by
+    ``layers`` thick; relaxation zones ``zone`` [m] wide inside each end wall; 3-D across
+    ``y = (y0, y1)`` [m] with fixed side walls beyond, zones ``side_zone`` [m] wide inside
+    them (None: none) but for a symmetry plane at ``y0`` (``symmetric``). The seabed runs on beyond each end wall by
     ``slack`` [m] (default: the sea's largest horizontal excursion there and a layer), so
     that the moving walls always stand on it."""
     for name, v in (("dx", dx), ("height", height), ("zone", zone)):
@@ -119,6 +134,9 @@ def near_field_box(dx: float, x0: float, x1: float, sea, height: float, zone: fl
     if not x1 - x0 > 2.0 * zone:
         raise InputError(f"near field: the box {x0} .. {x1} m is not longer than its two zones of {zone} m; "
                          "lengthen it or narrow the zones")
+    if y is not None and side_zone is not None and not y[1] - y[0] > (1.0 if symmetric else 2.0) * side_zone:
+        raise InputError(f"near field: the box's width {y[0]} .. {y[1]} m is not wider than its side zones of "
+                         f"{side_zone} m; widen it or narrow the zones")
     bed = sea.level - sea.depth
     if not height > sea.depth:
         raise InputError(f"near field: the walls' height {height} m must exceed the water depth {sea.depth} m")
@@ -128,21 +146,106 @@ def near_field_box(dx: float, x0: float, x1: float, sea, height: float, zone: fl
         kd = float(np.min(sea.components.k)) * sea.depth
         slack = a * math.cosh(kd) / math.sinh(kd) + dx
     slack = math.ceil(slack / dx) * dx
-    if width is None:
+    span = (x0 - t - slack, x1 + t + slack)
+    if y is None:
         def box(lo, hi):
             return block((lo[0], lo[1]), (hi[0], hi[1]), dx)
         sides = []
+        floor = box((span[0], bed - t), (span[1], bed))
     else:
-        def box(lo, hi, y=(0.0, width)):
-            return block((lo[0], y[0], lo[1]), (hi[0], y[1], hi[1]), dx)
-        span = (x0 - t - slack, x1 + t + slack)
-        sides = [box((span[0], bed), (span[1], bed + height), (-t, 0.0)),
-                 box((span[0], bed), (span[1], bed + height), (width, width + t))]
-    floor = (box((x0 - t - slack, bed - t), (x1 + t + slack, bed)) if width is None else
-             box((x0 - t - slack, bed - t), (x1 + t + slack, bed), (-t, width + t)))
+        def box(lo, hi, across=tuple(y)):
+            return block((lo[0], across[0], lo[1]), (hi[0], across[1], hi[1]), dx)
+        sides = [box((span[0], bed), (span[1], bed + height), (y[0] - t, y[0])),
+                 box((span[0], bed), (span[1], bed + height), (y[1], y[1] + t))]
+        floor = box((span[0], bed - t), (span[1], bed), (y[0] - t, y[1] + t))
     near = box((x0 - t, bed), (x0, bed + height))
     far = box((x1, bed), (x1 + t, bed + height))
     water = box((x0, bed), (x1, sea.level))
     walls = [(np.concatenate([floor] + sides), Kind.FIXED_WALL, FIXED_GROUP), (near, Kind.MOVING_WALL, NEAR_END_GROUP),
              (far, Kind.MOVING_WALL, FAR_END_GROUP)]
-    return NearFieldBox(water, walls, float(x0), float(x1), float(zone))
+    return NearFieldBox(water, walls, float(x0), float(x1), float(zone), None if y is None else tuple(map(float, y)),
+                        None if y is None or side_zone is None else float(side_zone), bool(symmetric and y is not None))
+
+
+#: the fewest kernel supports (2 h) a relaxation zone spans, and the water kept between a
+#: body's reach and a zone: a zone thinner than a few supports is a wall to the waves
+MIN_ZONE_SUPPORTS, MIN_MARGIN_SUPPORTS = 4, 2
+
+
+@dataclass(frozen=True)
+class BoxChoice:
+    """The near-field box chosen for a scene (:func:`choose_box`): the water's x range ``x``
+    and 3-D y range ``y`` [m] (walls outside), the zones' width ``zone`` [m], the wall
+    ``height`` [m] above the seabed, and ``reasons``: for each, what set it."""
+
+    x: tuple
+    y: tuple | None
+    zone: float
+    height: float
+    reasons: dict
+
+    def as_dict(self) -> dict:
+        return {"x_m": list(self.x), "y_m": None if self.y is None else list(self.y), "zone_m": self.zone,
+                "height_m": self.height, "reasons": dict(self.reasons)}
+
+
+def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(), symmetric: bool = False,
+               dim: int = 2, zone: float | None = None, x=(None, None), width: float | None = None,
+               height: float | None = None) -> BoxChoice:
+    """A near-field box for bodies whose horizontal extent is ``footprint = (lo, hi)``
+    ((x,) or (x, y) corners [m]; no bodies: a point), in ``sea`` (heading +x), at smoothing
+    length ``h`` [m].
+
+    - The zones absorb what the bodies send out: waves at the sea's frequencies and at the
+      bodies' own natural ``periods`` [s] (heave, pitch: a free body rings at them). A
+      relaxation zone reflects the less the wider it is against the wavelength (Jacobsen,
+      Fuhrman & Fredsøe 2012 use one to two); the zone is half the wavelength of the
+      longest of those periods that is not longer than the sea's peak period (its
+      reflection measured in docs/validation/nearfield.md), and at least
+      ``MIN_ZONE_SUPPORTS`` kernel supports. Waves longer than the
+      sea's are not absorbed by width but pass with the sea: a body small against the
+      wavelength radiates little at the sea's period (its damping falls as (ka)^n).
+    - Between the bodies and the zones: ``reach`` [m] (how far a body moves from its place:
+      the sea's orbit amplitude, its drift) and ``MIN_MARGIN_SUPPORTS`` supports of still
+      water, so that no body enters a zone.
+    - The walls rise above the seabed by the depth, twice the sea's highest crest (the sum
+      of its amplitudes) and two supports.
+
+    ``zone``, ``x = (x0, x1)``, ``width`` and ``height`` given are kept (reason "given").
+    3-D: the box is centred on y = 0 (``symmetric``: from y = 0, a symmetry plane)."""
+    lo, hi = (np.atleast_1d(np.asarray(v, float)) for v in footprint)
+    reasons = {}
+    peak = sea.peak_period
+    if zone is None:
+        kept = [p for p in periods if 0.0 < p <= peak]
+        p = max(kept, default=peak)
+        wl = 2.0 * math.pi / float(wavenumbers(2.0 * math.pi / p, sea.depth, sea.g))
+        floor = MIN_ZONE_SUPPORTS * 2.0 * h
+        zone = max(0.5 * wl, floor)
+        what = ("the bodies' natural period" if kept else "the sea's peak period") + f" {p:.4g} s"
+        reasons["zone"] = (f"half the wavelength {wl:.4g} m of {what}" if zone > floor else
+                           f"{MIN_ZONE_SUPPORTS} kernel supports (half the wavelength of {what} is less)")
+    else:
+        reasons["zone"] = "given"
+    margin = reach + MIN_MARGIN_SUPPORTS * 2.0 * h
+    why = f"the bodies' reach {reach:.4g} m and {MIN_MARGIN_SUPPORTS} kernel supports of water, then the zone"
+    x0 = lo[0] - margin - zone if x[0] is None else float(x[0])
+    x1 = hi[0] + margin + zone if x[1] is None else float(x[1])
+    reasons["x0"] = "given" if x[0] is not None else why
+    reasons["x1"] = "given" if x[1] is not None else why
+    y = None
+    if dim == 3:
+        if width is None:
+            half = max(abs(lo[1]), abs(hi[1])) + margin + zone
+            reasons["width"] = why + (" (y >= 0: a symmetry plane at y = 0)" if symmetric else ", on both sides")
+        else:
+            half = 0.5 * float(width)
+            reasons["width"] = "given"
+        y = (0.0 if symmetric else -half, half)
+    if height is None:
+        crest = 2.0 * float(np.sum(sea.components.amplitude))
+        height = sea.depth + 2.0 * crest + 2.0 * 2.0 * h
+        reasons["height"] = f"the depth, twice the sea's highest crest ({crest:.4g} m) and two kernel supports"
+    else:
+        reasons["height"] = "given"
+    return BoxChoice((float(x0), float(x1)), y, float(zone), float(height), reasons)

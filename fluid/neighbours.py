@@ -24,7 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit, prange, uint64
 
-from cosim.errors import InputError, InstabilityError
+from errors import InputError, InstabilityError
 
 _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 

@@ -21,24 +21,21 @@ Layout of the HDF5 file (a stable contract: readers, tests and the examples rely
 Units: every time dataset (``t``, ``snapshot_times``) and ``pos`` carry a CF-style
 ``units`` attribute (``"s"``, ``"m"``); :meth:`H5Output.annotate` gives any series key or
 snapshot field its attributes (``units``, or ``flag_values`` and ``flag_meanings`` for a
-categorical code, as the CF conventions name them), set when the dataset is made.
+categorical code, as the CF conventions name them), set when the dataset is made. Snapshot
+groups are numbered ``f"{k:04d}"`` (0000, 0001, ...; 10000 after 9999).
 
-Snapshot groups are numbered ``f"{k:04d}"`` (0000, 0001, ...; 10000 after 9999).
-
-Crash safety: series rows are buffered in memory (h5py costs ~30 us per dataset write)
-and written every ``buffer_rows`` rows, at every snapshot, on :meth:`flush`, on close,
-and at least every ``flush_every_s`` seconds of wall time (a run killed outright loses
-at most that much: ``tests/test_scene_kill.py`` kills runs with SIGKILL and reads their
-files). Leaving the ``with`` block by an exception writes what was buffered and closes
-the file, so a run that raised (an ``InstabilityError``) leaves a readable file with
-its data so far. The XDMF file is rewritten (atomically) after every snapshot.
+Crash safety: series rows are buffered (h5py costs ~30 us per dataset write) and written
+every ``buffer_rows`` rows, at every snapshot, on :meth:`flush`, on close, and at least every
+``flush_every_s`` seconds of wall time (a run killed outright loses at most that much). Leaving the ``with`` block by an exception writes what was buffered and closes the
+file: a run that raised leaves a readable file. The XDMF file is rewritten (atomically)
+after every snapshot.
 
 XDMF: a temporal collection of Polyvertex grids, one per snapshot. 2-D runs live in the
 x-z plane, so 2-D positions are shown as (x, 0, z): the geometry is ``X_Y_Z`` made of
 hyperslabs of ``pos`` and of a shared zero column ``/xdmf/zeros`` (no copy of the
 positions). Fields of shape (N,) are scalars; (N, dim) are vectors (2-D: (x, 0, z)
-joined from hyperslabs); other (N, k) fields appear as k scalars ``FIELD_0`` ...
-Checked with VTK's XDMF (v2) reader, the one ParaView uses for .xmf files.
+joined from hyperslabs); other (N, k) fields appear as k scalars ``FIELD_0`` ... (checked
+with VTK's XDMF (v2) reader, the one ParaView uses for .xmf files).
 """
 
 from __future__ import annotations
@@ -51,7 +48,7 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-from cosim.errors import InputError
+from errors import InputError
 
 #: XDMF number type and precision per numpy dtype kind and item size
 _XDMF_TYPES = {("f", 4): ("Float", 4), ("f", 8): ("Float", 8),

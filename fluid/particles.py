@@ -14,7 +14,7 @@ from enum import IntEnum
 import numpy as np
 from numba import njit, prange
 
-from cosim.errors import InputError
+from errors import InputError
 
 
 @njit(parallel=True, cache=True)
@@ -38,7 +38,7 @@ class Kind(IntEnum):
     """What a particle is. Only ``FLUID`` particles move by the forces on them."""
 
     FLUID = 0
-    #: wall particle at rest (dynamic boundary, 004_1657bd4a51d29840.txt §2.6)
+    #: wall particle at rest (dynamic boundary, Barreiro et al. 2016, §2.6)
     FIXED_WALL = 1
     #: wall particle with prescribed velocity (a moving tank, a wavemaker)
     MOVING_WALL = 2

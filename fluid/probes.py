@@ -22,7 +22,7 @@ import math
 import numpy as np
 from numba import njit, prange
 
-from cosim.errors import InputError
+from errors import InputError
 from fluid.kernels import alpha_d, w_value
 from fluid.neighbours import cell_coords, row_range
 from fluid.particles import Kind
@@ -43,7 +43,7 @@ def _cells(fluid):
 @njit(**_OPTS)  # serial: a handful of probe points, threads would cost more than they gain
 def _idw_pressure(pts, pos, kind, p, start, lo, inv_cell, nx, ny, nz, reach, R2, eps2, out):
     """Inverse-distance average of the fluid pressures within ``sqrt(R2)`` of each point
-    (001_14936b82710365b2.txt Eq. 15); 0 where no fluid is near (a dry point)."""
+    (Sunara et al. 2021, Eq. 15); 0 where no fluid is near (a dry point)."""
     three = pos.shape[1] == 3
     zc = pos.shape[1] - 1
     dys = 2 * reach + 1 if three else 1
@@ -93,7 +93,7 @@ def _inside(fluid, pts, what: str) -> None:
 
 def pressure_at(fluid, points) -> np.ndarray:
     """Pressure [Pa] at ``points`` (M, dim) [m]: the inverse-distance average of the fluid
-    pressures within the kernel support 2h (001_14936b82710365b2.txt Eq. 15), exactly as
+    pressures within the kernel support 2h (Sunara et al. 2021, Eq. 15), exactly as
     :meth:`fluid.solver.Fluid.wall_pressure` reports it at boundary particles; 0 at a dry
     point. On a wall, put the point on the wall face or on the first boundary layer.
     Accuracy: exact for a linear pressure field where the fluid within 2h lies symmetric

@@ -33,7 +33,7 @@ from typing import Callable
 import numpy as np
 from numba import njit, prange
 
-from cosim.errors import InputError
+from errors import InputError
 
 _E1 = math.e - 1.0
 

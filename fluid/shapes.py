@@ -1,11 +1,11 @@
 """Geometry builders beyond boxes: 2-D polygons filled with fluid or used as walls, the
-tank with one inclined side (001_14936b82710365b2.txt §3.2) and the cylindrical tank
-(001_14936b82710365b2.txt §3.3), the cavity of a hollow catenary arch rib
-(003_7c74773681ee080c.txt §4), on the lattice convention of :mod:`fluid.geometry`
+tank with one inclined side (Sunara et al. 2021, §3.2) and the cylindrical tank
+(Sunara et al. 2021, §3.3), the cavity of a hollow catenary arch rib
+(Wang et al. 2022, §4), on the lattice convention of :mod:`fluid.geometry`
 (particles at ``(i + 1/2) dx`` from the origin).
 
 Walls along a slanted or curved surface are not taken from the lattice (a staircase, which
-001 §3.2 names as the cause of its "uneven particle distribution on the sloping walls"):
+Sunara et al. 2021, §3.2 names as the cause of its "uneven particle distribution on the sloping walls"):
 each wall layer ``k = 0..layers-1`` is the boundary offset by ``(k + 1/2) dx`` away from the
 fluid and sampled at a spacing as close to ``dx`` as a whole number of intervals allows.
 Fluid comes from the lattice; fluid that overlaps a wall is removed and counted by
@@ -22,7 +22,7 @@ import math
 import numpy as np
 from scipy.spatial import cKDTree
 
-from cosim.errors import InputError
+from errors import InputError
 from fluid.geometry import Built, _axes, assemble, block
 from fluid.particles import Kind
 
@@ -200,7 +200,7 @@ def catenary_arch_axis(span: float, rise: float, m: float, n: int = 201) -> np.n
     (x = -span/2, z = 0) over the crown (x = 0, z = ``rise``) to the right springing:
     ``z = rise - rise / (m - 1) (cosh(k xi) - 1)``, ``xi = 2 x / span``, ``k = arccosh(m)``,
     the arch-axis curve of (Chinese) masonry and concrete arch bridges, for which the arch
-    rib of 003_7c74773681ee080c.txt §4 is designed ("the arch rib has a catenary curve
+    rib of Wang et al. 2022, §4 is designed ("the arch rib has a catenary curve
     shape"; span 140 m, rise 23.333 m). ``m`` [-] >= 1 is the arch-axis coefficient, the
     ratio of the dead load per length at the springings to that at the crown (usually
     1.3-3.5; m = 1 is the parabola ``z = rise (1 - xi^2)``); the paper does not give it. The
@@ -225,7 +225,7 @@ def arch_rib_cavity(span: float, rise: float, inner_height: float, m: float, n: 
     along its normal on both sides (the inner faces of the rib's box section), closed by
     the section lines at the springings. Counter-clockwise: the lower face from left to
     right, then the upper face back. For :func:`polygon_tank` (the water to a level in
-    both legs) or a scene's ``PolygonTank``. The paper (003 §4, Figure 8) draws the box
+    both legs) or a scene's ``PolygonTank``. The paper (Wang et al. 2022, §4, Figure 8) draws the box
     section but its dimensions are not in the text: from its particle counts (36,910 fluid
     particles of 0.05 m filled to 15.56 m, 92.3 m^2) the inner height is about 1.4-1.5 m
     depending on ``m`` (tests/test_arch_rib.py)."""
@@ -268,7 +268,7 @@ def inclined_tank_outline(length: float, height: float, angle_deg: float) -> np.
 def inclined_tank(dim: int, dx: float, angle_deg: float, length: float = 3.0, depth: float = 1.0,
                   height: float = 1.5, width: float = 1.0, layers: int = 3,
                   rho0: float = 1000.0, conform_layers: int = 1) -> Built:
-    """The tank of 001_14936b82710365b2.txt §3.2: the 3.0 x 1.0 x 1.5 m tank of §3.1
+    """The tank of Sunara et al. 2021, §3.2: the 3.0 x 1.0 x 1.5 m tank of §3.1
     (``length`` x ``width`` x ``height`` [m]) with its right side inclined ``angle_deg``
     [deg] from the vertical (15, 30, 45 in the paper), water ``depth`` [m] (1.0).
     The text gives no figure dimensions for the slope; we keep the bottom ``length`` and let
@@ -282,7 +282,7 @@ def inclined_tank(dim: int, dx: float, angle_deg: float, length: float = 3.0, de
     The fluid's first ``conform_layers`` [-] layers follow the walls (default 1; 0 is the
     paper's pure Cartesian grid). Why: next to a slanted side the lattice fluid lies
     1.0-1.3 dx from the first wall layer instead of dx, and at rest it settles into that
-    gap, which 001 §3.2 also reports as larger errors on the slopes. Measured in 2-D
+    gap, which Sunara et al. 2021, §3.2 also reports as larger errors on the slopes. Measured in 2-D
     (length 0.4 m, depth 0.2 m, dx = 0.02 m, solver defaults, c0 = 20 sqrt(g H), 3 s at
     rest), at 45 deg: lattice fill (0): speeds up to 0.11 sqrt(g H), kinetic energy up to
     7.8e-2 J/m, particles by the lower end of the slope moved 8 dx; one conforming layer
@@ -290,7 +290,7 @@ def inclined_tank(dim: int, dx: float, angle_deg: float, length: float = 3.0, de
     2.5-3 s, largest displacement 1.4 dx; two layers (2) are worse (the lattice then meets
     the second layer as close as 0.62 dx: 6e-2 sqrt(g H)). With a vertical side (0 deg) the
     lattice tank stays below 4e-4 sqrt(g H). Let a slanted tank settle before exciting it.
-    In 3-D (a slice 3 rows wide, the 15 deg tank of 001 §3.2 at dx = 0.1 m, c0 = 1430 m/s,
+    In 3-D (a slice 3 rows wide, the 15 deg tank of Sunara et al. 2021, §3.2 at dx = 0.1 m, c0 = 1430 m/s,
     ``walls="adami"``, 0.06 s at rest) the water moves at up to 0.11 m/s, 0.03 m/s across
     the slice (the 2-D section: 0.07 m/s); front and back walls filled from the lattice
     instead, a staircase beside the water's conforming layer, push the rows next to them
@@ -337,14 +337,14 @@ def _extrude(xz: np.ndarray, ys: np.ndarray) -> np.ndarray:
 
 def cylinder_tank(dx: float, diameter: float = 2.0, depth: float = 0.6, height: float = 1.0,
                   layers: int = 3, rho0: float = 1000.0) -> Built:
-    """The vertical cylindrical tank of 001_14936b82710365b2.txt §3.3 (3-D): inner
+    """The vertical cylindrical tank of Sunara et al. 2021, §3.3 (3-D): inner
     ``diameter`` [m] (2.0), wall ``height`` [m] (1.0), water ``depth`` [m] (0.6), axis
     along z through the origin, bottom at z = 0, open top.
 
     Fluid: at every lattice height, concentric rings at radii ``(j + 1/2) dr``
     (``dr = R / round(R / dx)``, = dx when R is a multiple of dx), each ring sampled at ~dx
     round its circumference: every particle stands for the same volume ~dx^3 (the "equal
-    volume" distribution of 001 §3.3) and the count x dx^3 equals pi R^2 depth up to the
+    volume" distribution of Sunara et al. 2021, §3.3) and the count x dx^3 equals pi R^2 depth up to the
     rounding of the ring counts (the midpoint rule sum_j 2 pi r_j dr is exactly pi R^2),
     while a Cartesian lattice cut at r < R and cleared of the wall would lose a ring of
     ~0.4 dx (4 % at D = 2 m, dx = 5 cm). Side wall: ``layers`` shells at ``R + (k + 1/2) dx``

@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 import numba
 import numpy as np
 
-from cosim.errors import InputError, InstabilityError
+from errors import InputError, InstabilityError
 from fluid import equations as eq
 from fluid import mls
 from fluid.integrator import (StepLimit, corrector, diffusion_coefficient, first_non_finite, predictor,
@@ -105,11 +105,11 @@ class FluidConfig:
     c0: float | None = None
     #: expected maximum flow speed [m/s], used when c0 is None
     u_max: float | None = None
-    #: c0 / u_max [-], at least 10 (004_1657bd4a51d29840.txt §2.5, Monaghan 1994)
+    #: c0 / u_max [-], at least 10 (Barreiro et al. 2016, §2.5, Monaghan 1994)
     c0_factor: float = 10.0
-    #: Tait polytropic exponent gamma [-] (004_1657bd4a51d29840.txt Eq. 8)
+    #: Tait polytropic exponent gamma [-] (Barreiro et al. 2016, Eq. 8)
     gamma: float = 7.0
-    #: artificial viscosity alpha [-] (001_14936b82710365b2.txt Eq. 6; 0.01 as in 003)
+    #: artificial viscosity alpha [-] (Sunara et al. 2021, Eq. 6; 0.01 as in Wang et al. 2022)
     alpha: float = 0.01
     #: factor on alpha between fluid and boundary particles [-] (DualSPHysics'
     #: ViscoBoundFactor; see fluid.equations): 1 the same viscosity as in the fluid, 0 walls
@@ -118,13 +118,13 @@ class FluidConfig:
     #: kinematic viscosity nu0 [m^2/s] of the laminar viscosity term (Lo & Shao 2002, see
     #: fluid.equations; 1e-6 for water), added to the artificial one; 0: off
     nu: float = 0.0
-    #: XSPH coefficient epsilon [-] in [0, 1] (Monaghan 1989; 003_7c74773681ee080c.txt uses
+    #: XSPH coefficient epsilon [-] in [0, 1] (Monaghan 1989; Wang et al. 2022 uses
     #: 0.1): particles move with the velocity smoothed over their neighbours; 0: off
     xsph_eps: float = 0.0
     #: density diffusion: "fourtakas" (default), "antuono" (renormalised, exact for linear
     #: fields; a second pair loop), "molteni" or "none": see fluid.equations
     diffusion: str = "fourtakas"
-    #: density diffusion coefficient delta [-] (000_7d114ab96e048b26.txt Eq. 1 uses 0.1)
+    #: density diffusion coefficient delta [-] (Dinçer & Demir 2020, Eq. 1 uses 0.1)
     delta: float = 0.1
     #: False: the density diffusion fades out where a particle's support is cut by the free
     #: surface (the surface row and the one below it), which keeps a 3-D tank of still
@@ -132,7 +132,7 @@ class FluidConfig:
     diffusion_at_surface: bool = True
     #: gravitational acceleration g [m/s^2], acting along -z
     g: float = 9.81
-    #: CFL factor of the variable time step [-] (001_14936b82710365b2.txt Eq. 14)
+    #: CFL factor of the variable time step [-] (Sunara et al. 2021, Eq. 14)
     cfl: float = 0.2
     #: time integration: "symplectic" (predictor-corrector, 2 pair loops per step) or
     #: "verlet" (1 pair loop per step; see fluid.integrator)
@@ -152,10 +152,10 @@ class FluidConfig:
     #: particle count from which the default ``threads`` uses all threads [-]
     parallel_min_particles: int = 20000
     #: MLS density re-initialisation every ``mls_every`` steps [steps]; 0: never
-    #: (001_14936b82710365b2.txt Eq. 9-12 uses 30; see fluid.mls)
+    #: (Sunara et al. 2021, Eq. 9-12 uses 30; see fluid.mls)
     mls_every: int = 0
     #: density of the tank walls (FIXED_WALL and MOVING_WALL particles): "dbc" (plain
-    #: dynamic boundaries, 004_1657bd4a51d29840.txt §2.6: the continuity equation) or
+    #: dynamic boundaries, Barreiro et al. 2016, §2.6: the continuity equation) or
     #: "adami" (the fluid's pressure carried to each wall particle, Adami, Hu & Adams 2012,
     #: J. Comput. Phys. 231, Eq. 27; see fluid.wall_density). BODY particles are not affected
     walls: str = "dbc"
@@ -202,7 +202,7 @@ class FluidConfig:
             raise _bad(f"u_max={self.u_max!r} m/s", "give a positive expected maximum speed, e.g. sqrt(2 g H)")
         if not num(self.c0_factor) or self.c0_factor < 10:
             raise _bad(f"c0_factor={self.c0_factor!r}",
-                       "use at least 10 so that density varies by less than 1 % (004 §2.5)")
+                       "use at least 10 so that density varies by less than 1 % (Barreiro et al. 2016, §2.5)")
         if not num(self.gamma) or self.gamma < 1:
             raise _bad(f"gamma={self.gamma!r}", "use a polytropic exponent >= 1 (7 for water)")
         if not num(self.alpha) or not 0 <= self.alpha <= 1:
@@ -231,7 +231,7 @@ class FluidConfig:
         if not (isinstance(self.dt_max, (int, float)) and self.dt_max > 0):
             raise _bad(f"dt_max={self.dt_max!r} s", "give a positive upper bound or math.inf")
         if not isinstance(self.mls_every, int) or isinstance(self.mls_every, bool) or self.mls_every < 0:
-            raise _bad(f"mls_every={self.mls_every!r}", "give a number of steps >= 0 (0: off; 30 in 001 §2)")
+            raise _bad(f"mls_every={self.mls_every!r}", "give a number of steps >= 0 (0: off; 30 in Sunara et al. 2021, §2)")
         if self.walls not in WALLS:
             raise _bad(f"walls={self.walls!r}", f"choose one of {WALLS}")
         if not isinstance(self.wall_loads, bool):
@@ -590,7 +590,7 @@ class Fluid:
     def set_group_velocity(self, group: int, velocity) -> None:
         """Prescribe the velocity [m/s] (dim,) of every particle of boundary ``group`` (a
         MOVING_WALL or BODY group), from now on; the particles move with it (dynamic
-        boundaries, 004_1657bd4a51d29840.txt §2.6)."""
+        boundaries, Barreiro et al. 2016, §2.6)."""
         ps = self.ps
         sel = ps.group == group
         if not sel.any():
@@ -719,7 +719,7 @@ class Fluid:
 
     def wall_pressure(self) -> np.ndarray:
         """Pressure [Pa] per particle (current order of ``self.ps``): the fluid's own, and on
-        boundary particles the average of the fluid next to them (001 Eq. 15), which is the
+        boundary particles the average of the fluid next to them (Sunara et al. 2021, Eq. 15), which is the
         wall pressure to report (a dynamic boundary particle's own pressure is not)."""
         self.refresh_rates()
         c = self.config

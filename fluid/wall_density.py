@@ -2,7 +2,7 @@
 Hu & Adams (2012, J. Comput. Phys. 231, 7057-7075, Eq. 27) for the FIXED_WALL and
 MOVING_WALL particles.
 
-Why: plain dynamic boundary particles (004_1657bd4a51d29840.txt §2.6) integrate the
+Why: plain dynamic boundary particles (Barreiro et al. 2016, §2.6) integrate the
 continuity equation, ``drho_w/dt = sum_f m_f (v_w - v_f) . grad_w W_wf``. A wall particle
 does not move with the fluid, so water sliding along the wall changes the fluid it sees:
 at the waterline, where the kernel sum of the fluid drops from its full value to zero
@@ -19,56 +19,21 @@ its position by the momentum balance of the wall (Adami et al. 2012, Eq. 27):
 
 ``r_wf = r_w - r_f``, ``W_wf = W(|r_wf|, h)``, the sums over the fluid particles within
 the support 2h, ``g`` the gravity vector and ``a_w`` the wall's (prescribed)
-acceleration; its density is the Tait density of that pressure (004 Eq. 8 inverted),
+acceleration; its density is the Tait density of that pressure (Barreiro et al. 2016, Eq. 8 inverted),
 ``rho_w = rho0 (1 + p_w / B)^(1/gamma)``, clamped below at ``rho0`` (``p_w >= 0``: the
 wall holds no tension, as the clamp of the plain dynamic boundaries in
 ``fluid.integrator``). A wall particle with no fluid within 2h takes ``rho0``.
 
-For a fluid at rest in any linear (hydrostatic) pressure field ``p = p0 + rho g . r``
-with a uniform density the extrapolation is exact, whatever the neighbours: the wall
-particle holds the pressure of the field at its own position. So a tank started from the
-hydrostatic densities (``fluid.geometry.set_hydrostatic``) starts in equilibrium with it,
-and the wall carries the fluid's pressure field through it (the wetted face of the wall
-sees the pressure the fluid has beside it, not the fluid's kernel sum).
+For a fluid at rest in any linear (hydrostatic) pressure field with a uniform density the
+extrapolation is exact whatever the neighbours, so a tank started from the hydrostatic
+densities (``fluid.geometry.set_hydrostatic``) starts in equilibrium with its walls.
 
-The wall pressure is a Shepard (zero-order) average of the fluid plus the exact
-hydrostatic/inertial correction; the pair loop (``fluid.equations``) is unchanged: this
-module only sets the tank walls' densities before each rate evaluation (the
-``Fluid.boundary_correction`` hook), as ``fluid.boundary_correction.MDBC`` does for bodies.
-Adami et al. weight the correction with the fluid density rho_f; here it is rho0, the
-density ``fluid.geometry.set_hydrostatic`` builds the rest state with (p = rho0 g depth):
-the two differ by p/(gamma B) < 1 % (a weakly compressible fluid), and with rho0 a tank
-set up at rest starts with exactly the wall densities the plain dynamic boundaries start
-with (the first rates agree to round-off: tests/test_fluid_wall_density.py).
-
-Measured against the plain dynamic boundaries when these walls came in (the quick
-variants of sloshing-frequency, westergaard, dambreak-2d, sloshing-spheric10 and the
-hydrostatic tanks, "dbc" -> "adami"): docs/validation/modules/wall_density_history.md;
-the cases' current figures are in their docstrings. The sloshing tank's first mode came
-down from +9.4 % to +4.6 % of linear theory (quick), and the wall pressure follows the
-wave as linear theory says.
-
-Cost: the loop runs as the pair loop does (``adami_wall_density``: rows trimmed to 2h and
-padded to whole vectors, no branch inside), and walls with no fluid within a cell take
-``rho0`` without a pass (``fluid.neighbours.fluid_near_cells``). On the wind-turbine scene
-of examples/wind_turbine_base.py with the SPH fluid (h = 2 dx, 4 wall layers; 28 818 wall
-particles at dx = 2 m, 105 536 at 1 m), one thread of an Intel Xeon (Emerald Rapids,
-AVX-512), 2026-11-26, best of three runs: 20.2 ms per evaluation at dx = 2 m and 72.2 ms
-at 1 m, against 38 and 343 ms for the rest of the scene's rate evaluation (the walls'
-loads not computed, ``FluidConfig.wall_loads``; docs/benchmarks/fluid_throughput_history.md).
-
-A hydrostatic tank started on the lattice moves: a free-surface corner, not the start
-(the first rates are those of the plain boundaries). The top fluid row settles into SPH's
-free-surface equilibrium, which holds more than rho g dx/2 beside the wall; the "adami"
-wall holds the fluid's pressure there, with no wall particles on the air's side to
-balance it, so the two top corner particles move 0.15 dx off the walls and launch the
-symmetric sloshing mode (2-D, dx = 0.02 m: largest speed 2.4e-2 sqrt(g H) at 0.1 s,
-4e-3 still at 2 s). It is the start, though, not an instability: relaxed first with
-damped velocities (``Fluid.settle``, 1 s), the corner particles find their place and the
-tank stays at rest, 1.8e-4 sqrt(g H) and 0.82 % RMS at dx = 0.02 m, 1.0e-4 and 0.67 % at
-0.01 m (``run_hydrostatic(2, dx, t_end, settle_s=1.0, walls="adami")``). Hence an option
-(``FluidConfig.walls``), not the default; the wave set-up ``fluid.solver.SLOSHING_2D`` uses
-these walls. The mechanism in full and the clamp tried off: the history file named above.
+The pair loop is unchanged: this module only sets the tank walls' densities before each
+rate evaluation (the ``Fluid.boundary_correction`` hook, as ``fluid.boundary_correction.MDBC``
+for bodies), weighting the correction with rho0, not rho_f (they differ by p/(gamma B) < 1 %).
+An option (``FluidConfig.walls``), not the default: a tank started at rest on the lattice
+moves at its free-surface corners unless settled first (``Fluid.settle``). The measurements
+against plain dynamic boundaries, the cost and the corners: docs/validation/modules/wall_density_history.md.
 """
 
 from __future__ import annotations

@@ -16,7 +16,7 @@ the paddle sets off without a jump in acceleration.
 
 The SPH fluid moves a paddle as a MOVING_WALL group placed exactly from a
 prescribed motion (``fluid.solver.Fluid.prescribe_motion``; dynamic boundary
-particles, 004_1657bd4a51d29840.txt §2.6): :func:`piston` translates the group
+particles, Barreiro et al. 2016, §2.6): :func:`piston` translates the group
 along x by a displacement history, :func:`flap` rotates it about a hinge line
 along y (through ``hinge`` in the x-z plane). The history is a callable
 ``s(t) -> (value, rate)``: :meth:`RegularWavemaker.motion`, or a record read
@@ -32,7 +32,7 @@ from pathlib import Path
 
 import numpy as np
 
-from cosim.errors import InputError
+from errors import InputError
 from fluid.motion import Rotation, Signal, Tabulated, Translation
 
 

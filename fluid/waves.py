@@ -42,7 +42,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from cosim.errors import InputError
+from errors import InputError
 from fluid.wavemaker import wavenumber
 
 #: elements of one (points × components) block: bounds the memory of a many-component sea

@@ -1,10 +1,10 @@
 """moorings: mooring models behind one interface (``cosim.protocol.Mooring``).
 
 - :class:`MooringLine`: the model-independent description of a line.
-- :mod:`moorings.catenary`: the quasi-static catenary law (seed 004 §3),
+- :mod:`moorings.catenary`: the quasi-static catenary law (Barreiro et al. 2016, §3),
   ``solve(X, h, L, w, EA=None)``.
 - :class:`CatenaryMooring`: a mooring system of catenary lines.
-- :class:`SPHCableMooring`: dynamic lines as SPH cables (seed 000).
+- :class:`SPHCableMooring`: dynamic lines as SPH cables (Dinçer & Demir 2020).
 - :class:`FMUMooring`: any co-simulation FMU with fairlead positions in and
   forces out; :func:`export_catenary_fmu` writes the catenary law as one.
 - :class:`MoorDynMooring`: MoorDyn v2 lines (optional ``moordyn`` package).
@@ -13,8 +13,8 @@
 
 Swapping models is one constructor call: every model takes the same list of
 ``MooringLine``. Models are imported on first use, so a scene loads (and
-compiles) only the ones it uses. Never imports MuJoCo or the coupler (only
-``cosim.errors``).
+compiles) only the ones it uses. Never imports MuJoCo or ``cosim`` (its errors come
+from the top-level :mod:`errors`).
 """
 
 from importlib import import_module

@@ -13,7 +13,7 @@ be driven past what its model accepts), and the coupler removes its length const
 Otherwise (the default) the run goes on with the line intact: a report only.
 
 The tension checked is the one at the fairlead, where a line hanging in still water
-carries its largest tension (seed 004 §3.1: T = H + w z grows with the height above
+carries its largest tension (Barreiro et al. 2016, §3.1: T = H + w z grows with the height above
 the seabed). An inextensible catenary line that snaps taut is stopped by its length
 constraint within one step: its tension then is the impulse over that step, which grows
 as the step shrinks; give the line its ``EA`` where the snap load matters.
@@ -27,7 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from cosim.errors import InputError
+from errors import InputError
 
 log = logging.getLogger(__name__)
 

@@ -3,80 +3,32 @@ r"""The quasi-static catenary mooring law, inextensible and elastic, with a seab
 Public entry point: :func:`solve` (``solve(X, h, L, w, EA=None)``), a pure
 function of the line geometry; :func:`shape` gives the line's coordinates.
 
-Geometry (seed 004, Fig. 3): the anchor lies on a flat seabed; the fairlead is at
+Geometry (Barreiro et al. 2016, Fig. 3): the anchor lies on a flat seabed; the fairlead is at
 horizontal distance ``X`` and height ``h`` above it. The line has unstretched
 length ``L``, submerged weight ``w`` per unit length and axial stiffness ``EA``
 (``None``: inextensible). No current, no seabed friction, no bending stiffness.
 
-States (seed 004 Fig. 5), with boundaries along X at fixed h:
+States (Barreiro et al. 2016, Fig. 5), along X at fixed h (the boundaries are exact):
 
-====================  ==============================================================
-``RESTING``           ``X <= L - h``: the line hangs straight down from the fairlead
-                      and the rest lies slack on the seabed: ``H = 0``, ``V = w h``
-                      (elastic: ``V = w l_s`` with ``l_s (1 + w l_s / 2EA) = h``).
-``PARTLY_LIFTED``     a catenary from a touchdown point (horizontal tangent) to the
-                      fairlead; ``touchdown`` > 0 m of line lies on the seabed.
-``FULLY_LIFTED``      from the lift-off point on (touchdown = 0, the tangent at the
-                      anchor horizontal), the whole line hangs and pulls the anchor
-                      up as well as sideways; up to the taut point.
-``TAUT``              the anchor–fairlead distance is at least the unstretched
-                      length: ``sqrt(X^2 + h^2) >= L``. An elastic line carries it by
-                      stretching (``H``, ``V`` finite, solved as usual); an
-                      inextensible one cannot, and there is no catenary solution:
-                      :func:`solve` returns ``H = V = inf`` (the limit from below) and
-                      ``touchdown = 0`` rather than raising, so that arrays of lines
-                      stay solvable. In a coupled scene the mooring system holds
-                      such a line with a length constraint on the bodies (so taut
-                      lines share a load by statics, not by seed 004 Eq. 40's
-                      proportional split); alone, it raises
-                      :class:`~cosim.errors.TautLineError` naming the line.
-====================  ==============================================================
+- ``RESTING``, ``X <= L - h``: the line hangs straight down, the rest slack on the seabed:
+  ``H = 0``, ``V = w h`` (elastic: ``V = w l_s`` with ``l_s (1 + w l_s / 2EA) = h``).
+- ``PARTLY_LIFTED``: a catenary from a touchdown point (horizontal tangent); ``touchdown`` > 0.
+- ``FULLY_LIFTED``, from (and at) the lift-off point ``X_lift = (L^2 - h^2)/h * atanh(h/L)``
+  (inextensible; Eq. 37 with ``l_s = L`` in Eq. 39): the whole line hangs, pulling the anchor up.
+- ``TAUT``, ``sqrt(X^2 + h^2) >= L``: an elastic line stretches; an inextensible one has no
+  catenary, so :func:`solve` returns ``H = V = inf`` and ``touchdown = 0`` (arrays of lines stay
+  solvable; ``H`` near the taut point is ill-conditioned, about 1e-16 / (1 - X/X_taut)). A
+  coupled scene holds such a line with a length constraint (statics, not Eq. 40's split);
+  alone it raises :class:`~cosim.errors.TautLineError` naming the line.
 
-Boundaries are exact: ``X = L - h`` is ``RESTING``; the lift-off point
-``X_lift = (L^2 - h^2)/h * atanh(h/L)`` (inextensible; seed 004 Eq. 37 with
-``l_s = L`` in Eq. 39) is ``FULLY_LIFTED``; the taut point ``X = sqrt(L^2 - h^2)``
-is ``TAUT``. ``H`` and ``V`` are continuous across the first two and tend to
-infinity at the third (inextensible), where the problem is ill-conditioned: the
-relative error of ``H`` is about 1e-16 / (1 − X/X_taut), the rounding of the taut
-point itself; it stays finite up to the last double below it.
-
-Method
-------
-The inextensible law is seed 004 Eq. 35-39 (Faltinsen 1993): with ``a = H/w``
-(Eq. 34) the lifted length ``l_s`` obeys ``l_s^2 = h^2 + 2 h a`` (Eq. 37) and
-``X = L - l_s + a acosh(1 + h/a)`` (Eq. 39). The elastic law with seabed contact
-and no friction is the one of Jonkman (2007, NREL/TP-500-41958, §4.1, Eq. 4-1/4-2
-with C_B = 0), also used by MAP++ (Masciola et al. 2013) and MoorPy. With ``V``
-the vertical tension at the fairlead, on the seabed (``V < w L``)::
-
-    X = L - V/w + (H/w) asinh(V/H) + H L / EA
-    h = (H/w) (sqrt(1 + (V/H)^2) - 1) + V^2 / (2 EA w)
-
-and fully suspended (``V >= w L``), with ``V_a = V - w L`` at the anchor::
-
-    X = (H/w) (asinh(V/H) - asinh(V_a/H)) + H L / EA
-    h = (H/w) (sqrt(1 + (V/H)^2) - sqrt(1 + (V_a/H)^2)) + (V L - w L^2 / 2) / EA
-
-For ``EA -> inf`` both reduce to seed 004 Eq. 28-29 and 35-39.
-
-Each regime is reduced here to one equation in one unknown, solved with a
-bracketed, safeguarded Newton iteration (bisection whenever a Newton step
-would leave the bracket) in the logarithm of that unknown, so it cannot
-diverge; 4-6 evaluations are typical. In units of ``L`` (lengths) and ``w L`` (forces), with ``ε = w L / EA``:
-
-* on the seabed, the unknown is the fairlead angle ``t = asinh(V/H)``; the ``h``
-  equation is a quadratic in ``H`` with the stable root
-  ``V = 2 h / (tanh(t/2) + sqrt(tanh(t/2)^2 + 2 ε h))``, ``H = V / sinh t``,
-  and ``X(t)`` decreases from the lift-off point (``t = 2 atanh(h - ε/2)``) to
-  the resting point (``t -> inf``);
-* fully suspended, the unknown is ``u`` = half the angle range, ``asinh(V/H) =
-  m + u``, ``asinh(V_a/H) = m - u``; the ``h`` equation gives
-  ``tanh m = h / (1 + (ε/2) coth u)``, then ``H = sqrt(1 - tanh^2 m)/(2 sinh u)``,
-  ``V = 1/2 + tanh m / (2 tanh u)`` and ``X = (2u + ε) H``, decreasing in ``u``
-  up to the lift-off point ``u = atanh(h - ε/2)``.
-
-Neither form evaluates a hyperbolic function of a large argument times a small
-one, so tiny ``w`` and huge ``EA`` neither overflow nor lose the answer.
+Method: the inextensible law is Barreiro et al. 2016, Eq. 35-39 (Faltinsen 1993): with
+``a = H/w`` (Eq. 34), ``l_s^2 = h^2 + 2 h a`` (Eq. 37), ``X = L - l_s + a acosh(1 + h/a)``
+(Eq. 39). The elastic law with seabed contact and no friction is Jonkman's (2007,
+NREL/TP-500-41958, §4.1, Eq. 4-1/4-2 with C_B = 0; also MAP++ and MoorPy); both reduce to
+Eq. 28-29 and 35-39 as ``EA -> inf``. Each regime is one equation in one unknown, solved by a
+bracketed, safeguarded Newton iteration in its logarithm (it cannot diverge; 4-6 evaluations)
+in forms that neither overflow nor lose the answer for tiny ``w`` or huge ``EA``. The
+equations and their reduction: docs/catenary.md.
 """
 
 from __future__ import annotations
@@ -88,11 +40,11 @@ from typing import NamedTuple
 import numba as nb
 import numpy as np
 
-from cosim.errors import InputError
+from errors import InputError
 
 
 class LineState(IntEnum):
-    """State of a catenary line (seed 004 Fig. 5 a-d)."""
+    """State of a catenary line (Barreiro et al. 2016, Fig. 5 a-d)."""
 
     RESTING = 0
     PARTLY_LIFTED = 1
@@ -240,7 +192,7 @@ def _taut_x(h, L):
 
 @nb.njit(**_JIT)
 def _lift_x(h, L):
-    """X [m] of the inextensible lift-off point (seed 004 Eq. 37, 39 with l_s = L)."""
+    """X [m] of the inextensible lift-off point (Barreiro et al. 2016, Eq. 37, 39 with l_s = L)."""
     if h <= 0.0:
         return L
     r = h / L
@@ -439,7 +391,7 @@ def solve(X, h, L, w, EA=None) -> LineSolution:
         Submerged weight per unit length [N/m], > 0.
     EA : float, array_like or None
         Axial stiffness [N], > 0; ``None`` (or ``inf``) for an inextensible line
-        (seed 004 Eq. 35-39), otherwise the elastic catenary with seabed contact
+        (Barreiro et al. 2016, Eq. 35-39), otherwise the elastic catenary with seabed contact
         and no friction (see the module docstring).
 
     Returns
@@ -507,7 +459,7 @@ def _first_bad(X, h, L, w, EA):
 
 
 def lift_off_distance(h: float, L: float) -> float:
-    """X [m] at which an inextensible line lifts off entirely (seed 004 Eq. 37, 39
+    """X [m] at which an inextensible line lifts off entirely (Barreiro et al. 2016, Eq. 37, 39
     with ``l_s = L``): ``(L^2 - h^2)/h * atanh(h/L)``; ``L`` when ``h = 0``.
     :func:`solve` returns ``FULLY_LIFTED`` exactly here."""
     return _lift_x(float(h), float(L))
@@ -527,10 +479,10 @@ def shape(X: float, h: float, L: float, w: float, EA: float | None = None, n: in
     seabed from the anchor to below the fairlead, its slack spread evenly along the bed
     (points closer than their arc length: no tension).
 
-    Uses the closed-form profile of the solved line (seed 004 Eq. 28-29 on the
+    Uses the closed-form profile of the solved line (Barreiro et al. 2016, Eq. 28-29 on the
     suspended part; Jonkman 2007 Eq. 4-3/4-4 with the elastic terms).
     """
-    from cosim.errors import TautLineError
+    from errors import TautLineError
 
     sol = solve(float(X), float(h), float(L), float(w), EA)
     if math.isinf(sol.H):

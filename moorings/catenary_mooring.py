@@ -1,8 +1,8 @@
-"""A mooring system of quasi-static catenary lines (seed 004 §3.1) as a participant.
+"""A mooring system of quasi-static catenary lines (Barreiro et al. 2016, §3.1) as a participant.
 
 Each line runs from a fixed anchor to a fairlead on a body. The force on the
 fairlead has a horizontal component ``H`` along the fairlead→anchor direction
-and a vertical component ``V`` downwards (seed 004 §3.1, ``F_x = T_H cos ψ``,
+and a vertical component ``V`` downwards (Barreiro et al. 2016, §3.1, ``F_x = T_H cos ψ``,
 ``F_y = T_H sin ψ``), both from :func:`moorings.catenary.solve`. The seabed of
 each line is the horizontal plane through its anchor.
 
@@ -15,7 +15,7 @@ import math
 
 import numpy as np
 
-from cosim.errors import InputError, TautLineError
+from errors import InputError, TautLineError
 from moorings.catenary import TAUT, LineSolution, solve_packed
 from moorings.fairlead_stiffness import FairleadStiffness, by_differences
 from moorings.line import MooringLine, named_lines, per_line
@@ -69,7 +69,7 @@ class CatenaryMooring:
         self._pos: np.ndarray | None = None
         self.solution: LineSolution | None = None  #: per-line H, V, touchdown, state
         self._forces = np.zeros((self.n_lines, self.dim))
-        #: when each line became fully lifted or taut (seed 004 Fig. 5), after every step
+        #: when each line became fully lifted or taut (Barreiro et al. 2016, Fig. 5), after every step
         self.state_log = LineStateLog([ln.name for ln in self.lines])
         if fairleads is not None:
             self.set_fairlead_motion(fairleads)
@@ -204,7 +204,7 @@ class CatenaryMooring:
 
     # -- reporting -----------------------------------------------------------
     def line_states(self) -> np.ndarray:
-        """Each line's :class:`~moorings.catenary.LineState` now (seed 004 Fig. 5 a-d), as
+        """Each line's :class:`~moorings.catenary.LineState` now (Barreiro et al. 2016, Fig. 5 a-d), as
         integers 0-3; a line held by its length constraint is ``TAUT``."""
         return np.asarray(self.solution.state, dtype=np.int8).copy()
 

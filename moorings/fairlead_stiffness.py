@@ -15,7 +15,7 @@ and velocity (the line's force changes by ``-k dx - c dv``).
   is a spring ``EA / L_s``; and an axial wave leaves the fairlead into the line, which
   therefore resists the fairlead's velocity with the bar's impedance ``sqrt(EA m)``
   [N s/m] (``m`` the mass per length; a semi-infinite bar, exact for times shorter than
-  the wave's round trip ``2 L_s / sqrt(EA / m)``: 0.025 s on seed 004's chain), plus the
+  the wave's round trip ``2 L_s / sqrt(EA / m)``: 0.025 s on Barreiro et al. 2016's chain), plus the
   model's own axial damping on its first segment (``damping`` times the impedance: the
   SPH cable's artificial viscosity 15/32 alpha, MoorDyn's internal damping ratio).
   Bending, drag and the chain's transverse inertia are left out: they are slower.

@@ -6,27 +6,10 @@ state decisions, tested equal to the Python law) behind the FMI 2.0
 co-simulation interface (``moorings/fmu/fmi2_catenary.c``). It runs where no
 Python exists: the binary depends on the C library and libm only.
 
-Variables of the FMU (2-D scenes use the axes x, z; 3-D x, y, z; ``<line>`` is
-the line's name made an identifier):
-
-=================================  ==========  ======================================
-``<line>.anchor.<axis>``           parameter   anchor position [m]; its vertical
-                                               coordinate is the seabed height (the
-                                               seabed is the plane through the anchor)
-``<line>.length``                  parameter   unstretched length [m]
-``<line>.weight``                  parameter   submerged weight per unit length [N/m]
-``<line>.EA``                      parameter   axial stiffness [N]; 0 = inextensible
-``reference.<axis>``               parameter   point of the total moment [m]
-``<line>.fairlead.<axis>``         input       fairlead position, world frame [m]
-``<line>.force.<axis>``            output      force of the line on its fairlead [N]
-``<line>.tension``                 output      fairlead tension sqrt(H^2 + V^2) [N]
-``<line>.H``, ``<line>.V``         output      horizontal, vertical fairlead tension [N]
-``<line>.touchdown``               output      unstretched length on the seabed [m]
-``<line>.state``                   output      Integer: 0 resting, 1 partly lifted,
-                                               2 fully lifted, 3 taut
-``force.<axis>``                   output      total force of all lines [N]
-``moment.<axis>`` (2-D: ``moment.y``)  output  total moment about the reference [N m]
-=================================  ==========  ======================================
+Variables of the FMU, per line (``<line>`` its name made an identifier; axes x, z in 2-D,
+x, y, z in 3-D): parameters ``anchor``, ``length``, ``weight``, ``EA`` (0: inextensible), the
+input ``fairlead``, outputs ``force``, ``tension``, ``H``, ``V``, ``touchdown``, ``state``; and
+the total ``force`` and ``moment`` about ``reference``: the table is in docs/moorings.md.
 
 With ``body_pose=True`` the fairleads follow a rigid body instead: the inputs
 are the body pose (3-D ``body.x``, ``body.y``, ``body.z`` [m] and a unit
@@ -67,7 +50,7 @@ from xml.sax.saxutils import quoteattr
 
 import numpy as np
 
-from cosim.errors import InputError
+from errors import InputError
 from moorings.line import named_lines
 
 log = logging.getLogger(__name__)
@@ -362,7 +345,7 @@ def export_catenary_fmu(
     lines:
         The :class:`~moorings.line.MooringLine` records (all 2-D or all 3-D);
         they give the parameters' start values (``EA=None`` becomes 0:
-        inextensible). The FMU's variables are described in the module docstring.
+        inextensible). The FMU's variables: the module docstring, docs/moorings.md.
     path:
         The ``.fmu`` file to write (its folder must exist).
     fairleads:
@@ -371,9 +354,8 @@ def export_catenary_fmu(
         length (a resting line). With ``body_pose``: the fairleads in the body
         frame (required), parameters ``<line>.fairlead_body.<axis>``.
     reference_point:
-        Start value of the point about which the total moment is taken [m]
-        (``dim`` values, world frame; body frame with ``body_pose``); default
-        the origin.
+        Start value of the point about which the total moment is taken [m] (``dim``
+        values, world frame; body frame with ``body_pose``); default the origin.
     body_pose:
         Make the body pose the input instead of the fairlead positions: 3-D
         ``body.x, body.y, body.z`` [m] and a unit quaternion ``body.qw, body.qx,
@@ -396,7 +378,7 @@ def export_catenary_fmu(
     arguments or when no C compiler is found (both before anything is written),
     :class:`~cosim.errors.SolverError` if the compilation fails.
     """
-    from cosim.errors import SolverError
+    from errors import SolverError
 
     lines = named_lines(lines)
     n, dim = len(lines), lines[0].dim

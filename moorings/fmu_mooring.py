@@ -6,7 +6,7 @@ The FMU's variable names are mapped in a small dictionary, ``variable_map``:
 ``"positions"``  (required) the Real inputs that receive the fairlead positions [m]
 ``"forces"``     (required) the Real outputs that give the force on each fairlead [N]
 ``"velocities"`` (optional) Real inputs for the fairlead velocities [m/s]
-``"states"``     (optional) Integer outputs, one per line: its state, seed 004 Fig. 5
+``"states"``     (optional) Integer outputs, one per line: its state, Barreiro et al. 2016, Fig. 5
                  (0 resting, 1 partly lifted, 2 fully lifted, 3 taut;
                  :class:`moorings.catenary.LineState`); then :attr:`FMUMooring.state_log`
                  records when each line goes fully lifted or taut
@@ -36,7 +36,7 @@ from pathlib import Path
 
 import numpy as np
 
-from cosim.errors import InputError, SolverError, TautLineError
+from errors import InputError, SolverError, TautLineError
 from moorings.fairlead_stiffness import FairleadStiffness, by_differences
 from moorings.line import MooringLine, named_lines, per_line
 from moorings.line_events import LineStateLog

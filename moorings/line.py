@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from cosim.errors import InputError
+from errors import InputError
 
 
 def _positive(line: str, name: str, value, unit: str, hint: str) -> float:

@@ -1,7 +1,7 @@
-"""When each mooring line changes state: seed 004 Fig. 5's four states of a catenary line
+"""When each mooring line changes state: Barreiro et al. 2016, Fig. 5's four states of a catenary line
 (a: resting on the seabed, b: partly lifted, c: fully lifted, d: fully extended, "taut"),
 classified by the catenary law (:class:`moorings.catenary.LineState`; the boundaries are
-seed 004 Eq. 35-39 and the taut limit ``sqrt(X² + h²) = L``, its §3.2 "fully extended"
+Barreiro et al. 2016, Eq. 35-39 and the taut limit ``sqrt(X² + h²) = L``, its §3.2 "fully extended"
 case, Eq. 40).
 
 :class:`LineStateLog` takes each line's state after every coupling step and records the
@@ -13,7 +13,7 @@ times at which a line
 
 A time is the end of the coupling step in which the state was first seen (so it is known
 to within one step). The paper's wind-turbine base has its two front lines fully extended
-at 71.1 s and 81.1 s (seed 004 §5, Fig. 19).
+at 71.1 s and 81.1 s (Barreiro et al. 2016, §5, Fig. 19).
 
 Where the states come from, per model:
 

@@ -44,7 +44,7 @@ from pathlib import Path
 
 import numpy as np
 
-from cosim.errors import InputError, SolverError
+from errors import InputError, SolverError
 from moorings.fairlead_stiffness import FairleadStiffness, axial
 from moorings.line import named_lines, per_line
 from moorings.line_events import LineStateLog, node_states
@@ -126,34 +126,13 @@ def internal_step_limits(length: float, segments: int, EA: float, mass_per_lengt
     real-axis bound of forward Euler and of MoorDyn's RK2, ``|1 + z + z^2/2| <= 1``), i.e.
     ``dt < 2 / omega`` for a spring and ``dt < 2 m / c`` for a dashpot:
 
-    ``axial_wave``
-        Segment spring ``k = EA / l`` [N/m]. The highest mode of the lumped chain (nodes in
-        antiphase) sees ``4 k`` on ``m_t``: ``omega = 2 sqrt(k / m_t)``, so
-        ``dt < sqrt(m_t l / EA)``; with ``Ca_t = 0`` this is the axial-wave transit time of
-        a segment ``l / sqrt(EA / m)`` (``sqrt(EA / m)`` [m/s] the axial wave speed).
-    ``internal_damping``
-        MoorDyn's negative ``BA`` is ``-zeta``: ``BA = zeta l sqrt(EA m)`` [N s] and the
-        segment damping force is ``BA * (d l / dt) / l``, a dashpot ``c = zeta sqrt(EA m)``
-        [N s/m] between neighbours (``Line::initialize``). The highest mode sees ``4 c``:
-        ``dt < 2 m_t / (4 c) = m_t / (2 zeta sqrt(EA m))`` (the transit time over
-        ``2 zeta`` when ``Ca_t = 0``); unbounded for ``zeta = 0``.
-    ``seabed_stiffness``, ``seabed_damping``
-        A node below the seabed gets the vertical force ``(kb dz - cb dz/dt) d l``
-        (``kb`` [Pa/m], ``cb`` [Pa s/m] per unit of the node's projected contact area
-        ``d l``): a spring ``k_b = kb d l`` [N/m] and a dashpot ``c_b = cb d l`` [N s/m] on
-        the node: ``dt < 2 sqrt(m_min / k_b)`` and ``dt < 2 m_min / c_b``. The vertical is
-        across a line lying flat on the seabed but not at a sloped touch-down node, so the
-        smaller mass ``m_min = min(m_t, m_p)`` is taken. Both ratios ``k_b / m``,
-        ``c_b / m`` are independent of ``N``: the seabed damping bound
-        ``2 (m + rho A Ca) / (cb d)`` is the same for every segment count, and it is the one
-        the axial-wave step of a coarse line overshoots (a chain in a tank with the default
-        ``cb = 3e5 Pa s/m`` needs ``dt < 2e-4 s``).
-    ``drag``
-        Morison drag ``1/2 rho d Cd_n l |v_p| v_p`` across and ``1/2 rho d pi Cd_t l |v_q|
-        v_q`` along the line, linearised at the relative speed ``drag_speed`` ``U`` [m/s]
-        (``d(|v| v)/dv = 2 |v|``): dashpots ``rho d Cd_n l U`` and ``rho d pi Cd_t l U``
-        [N s/m] on ``m_p`` and ``m_t``: ``dt < 2 m_p / (rho d Cd_n l U)`` and
-        ``dt < 2 m_t / (rho d pi Cd_t l U)``.
+    ``axial_wave``: segment spring ``EA / l``, highest mode: ``dt < sqrt(m_t l / EA)``.
+    ``internal_damping``: MoorDyn's ``BA = -zeta``, a dashpot ``zeta sqrt(EA m)`` [N s/m] between
+    neighbours: ``dt < m_t / (2 zeta sqrt(EA m))``; unbounded for ``zeta = 0``.
+    ``seabed_stiffness``, ``seabed_damping``: ``k_b = kb d l``, ``c_b = cb d l`` on the smaller
+    node mass: ``dt < 2 sqrt(m_min / k_b)``, ``dt < 2 m_min / c_b`` (the same for every ``N``).
+    ``drag``: Morison drag linearised at ``drag_speed`` ``U``: ``dt < 2 m_p / (rho d Cd_n l U)``
+    and ``dt < 2 m_t / (rho d pi Cd_t l U)``. Each derivation: docs/moorings_moordyn_step.md.
 
     Not covered because the adapter sets none of them: bending stiffness ``EI`` (0),
     seabed friction (MoorDyn's ``FrictionCoefficient`` defaults to 0), nonlinear
@@ -222,64 +201,36 @@ class MoorDynMooring:
     Parameters
     ----------
     lines:
-        The :class:`~moorings.line.MooringLine` records (2-D lines run in MoorDyn
-        at y = 0). Each needs ``EA`` [N] (MoorDyn lines are elastic) and
-        ``mass_per_length`` [kg/m] or ``diameter`` [m]: the other one follows
-        from the submerged weight, ``w = (m - rho pi d^2 / 4) g``; if both are
-        given they must agree with ``weight`` to 0.1 %.
-    fairleads:
-        Optional initial fairlead positions [m], ``(n_lines, dim)``.
-    water_level:
-        Height of the free surface in our world frame [m] (MoorDyn's z = 0).
-    rho:
-        Water density [kg/m^3].
-    g:
-        Gravity [m/s^2].
-    segments:
-        Number of segments per line (MoorDyn's NumSegs).
+        The :class:`~moorings.line.MooringLine` records (2-D lines run in MoorDyn at y = 0).
+        Each needs ``EA`` [N] (MoorDyn lines are elastic) and ``mass_per_length`` [kg/m] or
+        ``diameter`` [m]: the other follows from the submerged weight, ``w = (m - rho pi d^2 /
+        4) g``; if both are given they must agree with ``weight`` to 0.1 %.
+    fairleads: optional initial fairlead positions [m], ``(n_lines, dim)``.
+    water_level: height of the free surface in our world frame [m] (MoorDyn's z = 0).
+    rho, g: water density [kg/m^3], gravity [m/s^2].
+    segments: number of segments per line (MoorDyn's NumSegs).
     dt_internal:
         MoorDyn's internal time step dtM [s]. Default: ``RK2_SAFETY`` (1/2) times the
-        smallest single-term bound of :func:`internal_step_limits` over all lines and
-        terms (axial wave, internal damping, seabed stiffness and damping, drag); the
-        record is :attr:`dt_limit`. The input file pins MoorDyn's ``tScheme`` to RK2
-        (its default; the midpoint rule, ``|1 + z + z^2/2| <= 1``), whose stability region
-        reaches ``z = -2`` on the real axis, where each single-term bound sits. The factor
-        1/2 keeps two terms acting on one node together (a sloped touch-down node under
-        seabed damping and axial stiffness: ``|lambda_1 + lambda_2| <= 2 max |lambda_k|``)
-        inside that region, and keeps the highest axial mode, whose eigenvalue has damping
-        ratio ``damping_ratio`` (``omega dt <= 1`` at most), inside RK2's region, which
-        along a ray of damping ratio 0.1 reaches ``|z| = 1.05`` (2.2 at 0.8; RK2 never
-        covers the imaginary axis: an undamped oscillation grows at every step size).
-        A given value is used as is; a warning says when it exceeds the derived one.
+        smallest single-term bound of :func:`internal_step_limits` over all lines and terms (the
+        record is :attr:`dt_limit`; RK2 pinned; why 1/2: docs/moorings_moordyn_step.md). A given
+        value is used as is; a warning says when it exceeds the derived one.
     damping_ratio:
-        Axial internal damping as a fraction of the critical damping of a
-        segment (MoorDyn's negative BA) [-]; below 0.1 a warning says that RK2 lets the
-        highest axial mode grow.
-    cd_normal, ca_normal, cd_axial, ca_axial:
-        Drag and added-mass coefficients, normal and axial [-].
-    seabed_stiffness, seabed_damping:
-        MoorDyn's kbot [Pa/m] and cbot [Pa s/m] (per unit of a node's contact area
-        ``d l_seg``).
+        Axial internal damping as a fraction of a segment's critical damping (MoorDyn's
+        negative BA) [-]; below 0.1 a warning says that RK2 lets the highest axial mode grow.
+    cd_normal, ca_normal, cd_axial, ca_axial: drag and added-mass coefficients, normal and axial [-].
+    seabed_stiffness, seabed_damping: MoorDyn's kbot [Pa/m] and cbot [Pa s/m] (per ``d l_seg``).
     drag_speed:
-        Relative flow speed [m/s] at which the quadratic drag is linearised for the
-        default ``dt_internal`` (the drag term of :func:`internal_step_limits`); it
-        limits only light, thin lines in fast flow.
+        Relative flow speed [m/s] at which the quadratic drag is linearised for the default
+        ``dt_internal`` (:func:`internal_step_limits`); it limits only light, thin lines in fast flow.
     ic_time, ic_threshold, ic_drag_scale:
-        MoorDyn's initial-condition relaxation: TmaxIC [s], threshIC [-],
-        CdScaleIC [-]. It runs as upscaled-drag dynamics (``ICgenDynamic 1``: the lines
-        move with their fairleads held and their drag scaled up until the tensions stop
-        changing), so that the lines start settled. MoorDyn 2.7's default, the stationary
-        solver, stops at once on a line that hangs from its fairlead onto the seabed
-        (resting: its catenary guess fails and the straight line it falls back to is
-        slack): such a line started with 0.11 N at its fairlead against the catenary's
-        1.24 N and fell into place over the first 0.2 s, its tension overshooting to 4.4 N.
-    name:
-        Participant name used in messages.
+        MoorDyn's initial-condition relaxation: TmaxIC [s], threshIC [-], CdScaleIC [-], run
+        as upscaled-drag dynamics (``ICgenDynamic 1``) so that the lines start settled (MoorDyn
+        2.7's stationary default starts a line resting on the seabed slack: docs/moorings_moordyn_step.md).
+    name: participant name used in messages.
 
     Attributes
     ----------
-    dt_internal:
-        The internal step MoorDyn runs with [s].
+    dt_internal: the internal step MoorDyn runs with [s].
     dt_limit:
         :class:`InternalStepLimit`: the step, the term that limited it (``limiter``,
         e.g. ``"seabed_damping"``; ``"user"`` for a given ``dt_internal``), the line, the

@@ -1,111 +1,32 @@
-"""The SPH cable of seed 000 (Dinçer & Demir 2020): a 1-D chain of SPH particles with
+"""The SPH cable of Dinçer & Demir 2020: a 1-D chain of SPH particles with
 axial stiffness in tension only, as a stand-alone solver (:class:`SPHCable`) and as a
 mooring model (:class:`SPHCableMooring`, the ``cosim.protocol.Mooring`` interface).
 
-Equations (``000_7d114ab96e048b26.txt`` Eq. 1-12) and how they are read here
------------------------------------------------------------------------------
-The cable is a 1-D continuum: the cross-section is integrated out, so density is the
-line density ``lam = rho A`` [kg/m] and stress is the tension ``T = sigma A`` [N]. The
-Wendland C2 kernel (000 Section 2, support 2h) is taken with h = ds in the cable's own
-1-D coordinate, the unstretched arc length ``s`` (total-Lagrangian SPH), so every SPH
-sum runs over a particle's two neighbours. Why each choice (all measured on seed 000
-Case 1 and Experiment 2 while building this):
+The cable is a 1-D continuum in its unstretched arc length ``s`` (total-Lagrangian SPH,
+Wendland C2 with h = ds: two neighbours per particle); line density ``lam = rho A`` [kg/m],
+tension ``T = sigma A`` [N]. Dinçer & Demir 2020, Eq. 1-12, as read here:
 
-- Kernel on the current straight-line distance (as the seed does): the pair force grows
-  as neighbours approach in tension (|W'| peaks at q = 2/3), the SPH tensile
-  instability; a hanging cable blew up at ~10/s. Across a bend the chord also shortens
-  without stretch (2 % across the 0.4 rad kink of Case 1, ten times the real strain),
-  which the continuity equation reads as compression.
-- Wider supports (h > ds) smear a point-load kink over 2h: the corner is cut by
-  ~theta·h/8, 0.05-0.1 m at the seed's 312 particles, against a 0.028 m tolerance.
+* Continuity, Eq. 1-4, integrated exactly: ``lam = lam0 / (1 + strain)``; the δ-SPH term
+  (``delta``) is off by default (in a solid it is creep).
+* Stress, Eq. 6-9: uniaxial, at stress points midway between particles (Dyka & Ingel 1995),
+  ``T_k = EA max(0, l_k/ds_k - 1)``: engineering strain, tension only.
+* Momentum, Eq. 5: ``m_a dv_a/dt = T_k e_k - T_{k-1} e_{k-1} - (viscous) + weight + loads``;
+  central, antisymmetric pair forces conserve linear and angular momentum.
+* Artificial viscosity, Eq. 10-11, on approaching pairs of taut segments, with a minus
+  sign (as printed, ``+pi_ab`` would not dissipate).
+* Damping, Eq. 12, read as its stated intent (Section 4): ``f_a = -omega m_a v_a``,
+  ``omega`` [1/s] (default 0.04; each underdamped mode decays at omega/2).
+* Leap-frog (kick-drift) sub-steps in compiled code (:func:`moorings.sph_cable_kernels.advance`)
+  within :meth:`SPHCable.step_limit` (Courant; the highest axial mode with every damping
+  rate; the δ-term's diffusion), ``dt_limit`` naming what set it.
 
-* Continuity, Eq. 1-4 (particles). In 1-D the velocity divergence is d ln(l)/dt of the
-  neighbouring segments; Eq. 4's renormalisation (a 2x2/3x3 matrix as printed, singular
-  for particles on a line) is in 1-D the scalar that makes the weights ``wl, wr`` of the
-  two neighbours sum to 1 (they are the half-segment shares, which is the Wendland sum
-  on a uniform spacing and stays exact where ``nodes_at`` changes it). Integrated
-  exactly over a step, ``lam <- lam exp(-(wl ln(l'/l)_left + wr ln(l'/l)_right))``, so
-  ``lam`` is a function of the current geometry: a uniform stretch gives exactly
-  ``lam = lam0/(1 + strain)``. The δ-SPH term (Eq. 1-3, psi_ab with the renormalised
-  gradient of Eq. 3) is implemented (``delta``) but off by default: it diffuses density
-  independently of the positions, which in a solid is creep -- it erases the tension
-  gradient a hanging cable needs within h/(delta c0) (10 ms in Case 1, where
-  delta = 0.1 made the sag grow without bound while the kernel read the particle
-  density). The density noise it removes in a fluid does not arise here.
-* Stress, Eq. 6-9. In the cable's local frame only the axial component exists. Summing
-  Eq. 7 (pressure, bulk modulus K) and Eq. 8 (deviator, ``2/3 E D``) along the axis
-  gives ``dsigma/dt = (K + 2E/3) D``, Hooke's law of a cable only for one particular K;
-  the physics (uniaxial stress, free lateral contraction) requires
-  ``dsigma/dt = E D_ss``. With ``D = -dln(lam)/dt`` this integrates to
-  ``sigma = E (lam0/lam - 1)``, engineering strain on the unstretched length (the
-  convention of the elastic catenary and of ``MooringLine.EA``); tension only:
-  ``T = EA max(0, lam0/lam - 1)`` -- a compressed cable carries no force.
-  The stress is evaluated at *stress points* midway between neighbouring particles
-  (Dyka & Ingel 1995; Randles & Libersky 2000), where the same continuity gives
-  ``lam_k = lam0 ds_k/l_k`` exactly, so ``T_k = EA max(0, l_k/ds_k - 1)``. Stress at the
-  particles themselves averages the two neighbouring segment strains into the pair
-  force, ``(eps_{k-1} + 2 eps_k + eps_{k+1})/4``, which is blind to an alternating strain
-  pattern (a zero-energy mode): in Case 1 it left a 2 mm, resolution-independent error in
-  the horizontal displacement of L. The particle tension reported is the renormalised
-  mean of its two stress points.
-* Momentum, Eq. 5. The stress tensor reduced to the axis is ``T e (x) e``; contracted
-  with the kernel gradient of a pair (Eq. 5's ``sigma^ij dW/dx^j``) it is the tension
-  along the pair's chord ``e_ab``: ``m_a dv_a/dt = T_k e_k - T_{k-1} e_{k-1} - (viscous)
-  + weight + loads``. Pair forces are central and antisymmetric: linear and angular
-  momentum are conserved; a uniformly stretched cable is in exact equilibrium.
-* Artificial viscosity, Eq. 10-11: ``Pi = (phi mu^2 - varphi mu c0)/lam_ab``,
-  ``mu = h v_ab.r_ab/(r^2 + 0.001 h^2)`` for approaching pairs, phi = 0.2, varphi = 1,
-  on taut segments only (with varphi c0 it is a dashpot ~ lam c0 per pair, 500 times a
-  particle's weight in Experiment 1: on slack segments it stops a cable from folding),
-  ``c0 = sqrt(E/rho) = sqrt(EA/mass_per_length)``. Eq. 5 prints ``+pi_ab``; with the
-  tension-positive stress of Eq. 6 the viscous pressure must enter with a minus sign to
-  dissipate (as in Monaghan's form), so ``-Pi`` is used.
-* Damping, Eq. 12. As printed, ``sum_b m_b (omega/A) C_ab grad W_ab`` with
-  ``C_ab = m_a v_a/rho_a^2 + m_b v_b/rho_b^2`` is an SPH *gradient* of ``m v/rho`` along
-  the cable (it vanishes for a cable swinging as a whole, which Fig. 15 damps) and
-  ``omega`` must be in 1/s for the units to close. Section 4 states the intent: Rayleigh
-  damping proportional to mass, "mass times velocity". Implemented as that:
-  ``f_a = -omega m_a v_a`` with ``omega`` [1/s] (default 0.04, the seed's 0.03-0.05). It
-  leaves every equilibrium unchanged, so a larger ``omega`` is a legitimate way to settle
-  a static case (each underdamped mode decays at omega/2).
-* Time stepping: leap-frog in kick-drift form (velocities staggered half a step; the
-  whole sub-cycling loop runs in compiled code, :func:`moorings.sph_cable_kernels.advance`)
-  with the step of :meth:`SPHCable.step_limit` (``dt_limit`` names what set it):
-
-  - ``courant``: ``cfl * min(segment) / (c0 + max speed)`` (000 Section 2's CFL).
-  - ``viscosity``, ``mass_damping``, ``drag``: the highest axial mode of the taut chain
-    (neighbours in antiphase, ``omega_hm = 2 c0 / ds``) with every explicit damping rate
-    on it, ``gamma = gamma_visc + omega + gamma_drag``, taken in the kick at v^n. For
-    kick-drift (symplectic Euler) on ``x'' + gamma x' + omega_hm^2 x = 0`` the update
-    matrix has determinant ``1 - gamma dt`` and trace ``2 - gamma dt - omega_hm^2 dt^2``;
-    the Jury conditions give ``y = omega_hm dt <= 2 (sqrt(zeta^2 + 1) - zeta)`` with
-    ``zeta = gamma / (2 omega_hm)``, i.e. ``dt <= (ds / c0) (sqrt(zeta^2 + 1) - zeta)``:
-    ``ds / c0`` undamped (the Courant bound), ``2 / gamma`` when the damping dominates.
-    The rates: the linear artificial viscosity ``alpha mu c0`` of Eq. 10 is, per pair,
-    a dashpot ``(15/32) alpha sqrt(EA m)`` [N s/m] (``mk_a mk_b |W'(1)| / (lam h^2)`` with
-    ``|W'(1)| h^2 = 15/32``, ``mu`` ~ the approach speed), which the highest mode sees four
-    times on ``m ds``: ``gamma_visc = (15/8) alpha c0 / ds`` (alpha = 1 alone allows
-    ``cfl <= 0.635``: ``cfl`` = 0.8 and 1, both accepted, grew a noisy taut cable's speed
-    100-fold and to an 11 % strain). Eq. 12's ``omega`` [1/s] is a rate itself. The Morison drag
-    ``kn |v| v`` linearised at the current top speed ``U`` (``d(|v| v)/dv = 2 |v|``) is
-    ``gamma_drag = 2 U max(kn / (m + ma_n), kt / (m + ma_t))`` over the particles. This
-    bound is taken with the safety factor ``safety`` (0.8; the viscosity only acts on
-    approaching pairs and the drag grows within a coupling step) and named after the
-    largest of the three rates.
-  - ``density_diffusion`` (delta > 0): the δ-term of Eq. 1 diffuses ``lam`` with
-    diffusivity ``delta ds c0``; its fastest (alternating) mode decays at
-    ``4 delta c0 / ds``, explicit in the update: ``dt <= safety ds / (2 delta c0)``.
-  - Covered without a limit: the seabed contact is a projection (position onto the
-    seabed, downward velocity removed: no stiffness), the seabed friction is applied
-    implicitly in the kick (stable at any step), added and point masses only add inertia,
-    the transverse (geometric) stiffness ``T / l`` is ``EA strain / l``, below the axial
-    ``EA / ds``, and there is no bending stiffness.
+Why each choice, the derivations and the step limits in full: docs/sph_cable.md.
 
 Usage::
 
     from moorings.sph_cable import SPHCable, SPHCableMooring
     c = SPHCable(312.73, 313, 7.184e7, 4.703, (0, 0), (304.8, 0), weight_per_length=46.12,
-                 omega=2.5, nodes_at=(125.88,))          # seed 000 Case 1
+                 omega=2.5, nodes_at=(125.88,))          # Dinçer & Demir 2020, Case 1
     c.advance(0.0, 30.0)                                 # one call, compiled sub-steps
     c.add_point_load(125.88, (0.0, -35586.0)); c.advance(30.0, 30.0)
     c.position_at(125.88), c.end_forces(), c.tension
@@ -113,11 +34,9 @@ Usage::
     moor = SPHCableMooring(lines, fairleads=fairleads, n_particles=40)  # same lines as
     # CatenaryMooring(lines, fairleads): the coupler swaps one for the other
 
-Discretisation: ``n_particles`` nodes at material (unstretched arc) coordinates ``s``,
-the two ends included (they sit on the supports). A node's inertial mass is the mass of
-half of each adjacent segment; ``nodes_at`` forces nodes at given ``s`` (a point load
-between two nodes would cut the corner of its kink by ~ds sin(angle)/4). Point loads or
-masses off a node are split linearly between the two nearest nodes.
+Discretisation: ``n_particles`` nodes at material coordinates ``s``, both ends included;
+a node's mass is half of each adjacent segment's; ``nodes_at`` forces nodes at given ``s``
+(point loads or masses off a node are split linearly between the two nearest).
 """
 
 from __future__ import annotations
@@ -129,7 +48,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
-from cosim.errors import InputError, InstabilityError
+from errors import InputError, InstabilityError
 from moorings import sph_cable_kernels as _k
 from moorings.fairlead_stiffness import FairleadStiffness, axial
 from moorings.line import MooringLine, named_lines, vertical_plane
@@ -222,7 +141,7 @@ class _Load:
 
 
 class SPHCable:
-    """One cable of SPH particles between two ends (000_7d114ab96e048b26.txt Eq. 1-12).
+    """One cable of SPH particles between two ends (Dinçer & Demir 2020, Eq. 1-12).
 
     Parameters
     ----------
@@ -241,10 +160,9 @@ class SPHCable:
     cfl : Courant number on the axial wave speed sqrt(EA/mass_per_length) [-]; the step
         also obeys the damping and diffusion bounds of :meth:`step_limit` (module docstring).
     safety : factor [-] on the damping and diffusion bounds of :meth:`step_limit` (0.8).
-    omega : mass-proportional damping rate of 000 Eq. 12 [1/s].
-    visc_alpha, visc_beta : artificial viscosity coefficients varphi, phi of 000 Eq. 10 [-].
-    delta : δ-SPH diffusion coefficient of 000 Eq. 1 [-] (0.1 in the seed; 0 by default,
-        see the module docstring: in a solid it makes the cable creep).
+    omega : mass-proportional damping rate of Dinçer & Demir 2020, Eq. 12 [1/s].
+    visc_alpha, visc_beta : artificial viscosity coefficients varphi, phi of Dinçer & Demir 2020, Eq. 10 [-].
+    delta : δ-SPH diffusion coefficient of Dinçer & Demir 2020, Eq. 1 [-] (0.1 in the paper; 0 by default: in a solid it is creep).
     max_strain : largest strain the cable takes elastically [-]; supports farther apart
         than ``length * (1 + max_strain)`` are rejected.
     seabed_z : height [m] of a horizontal seabed the particles cannot penetrate (the
@@ -331,7 +249,7 @@ class SPHCable:
         n = self.n = self.s.size
         ds = np.diff(self.s)
         self.ds = np.ascontiguousarray(ds)
-        # renormalised (000 Eq. 4) neighbour weights: the half-segment shares, mirrored ends
+        # renormalised (Dinçer & Demir 2020, Eq. 4) neighbour weights: the half-segment shares, mirrored ends
         self._wl = np.zeros(n)
         self._wr = np.zeros(n)
         self._wl[1:-1] = ds[:-1] / (ds[:-1] + ds[1:])
@@ -461,7 +379,7 @@ class SPHCable:
 
     def add_point_mass(self, s, mass, t_on=None, t_off=None) -> int:
         """Attach a point mass [kg] (its inertia and its weight mass·gravity) at ``s`` [m],
-        from ``t_on`` to ``t_off`` [s] as for :meth:`add_point_load` (seed 000 Case 2
+        from ``t_on`` to ``t_off`` [s] as for :meth:`add_point_load` (Dinçer & Demir 2020, Case 2
         removes one at a given time)."""
         mass = float(mass)
         if not (math.isfinite(mass) and mass > 0):
@@ -516,7 +434,7 @@ class SPHCable:
 
     # ------------------------------------------------------------------ stepping
     def step_limit(self) -> CableStepLimit:
-        """The cable's stable step now and what sets it (module docstring, "Time stepping"):
+        """The cable's stable step now and what sets it (module docstring; docs/sph_cable.md, "Time stepping"):
         ``min(courant, safety * damped highest mode, safety * density diffusion)``."""
         seg = np.linalg.norm(np.diff(self.x, axis=0), axis=1)
         ds = float(self.ds.min())

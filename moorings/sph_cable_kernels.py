@@ -1,7 +1,7 @@
-"""Compiled kernels of the SPH cable (seed 000, Dinçer & Demir 2020, Eq. 1-12).
+"""Compiled kernels of the SPH cable (Dinçer & Demir 2020, Eq. 1-12).
 
 Everything here is a numba ``njit`` function on plain arrays; the physics, the
-derivations of the seed's ambiguous equations and the units are documented in
+derivations of the paper's ambiguous equations and the units are in docs/sph_cable.md and
 :mod:`moorings.sph_cable`. One call of :func:`advance` runs the whole sub-cycling
 loop from ``t0`` to ``t1`` inside compiled code.
 
@@ -11,7 +11,7 @@ segment, mirrored at the ends) and inertial mass ``m`` [kg]; segment ``k`` joins
 particles ``k`` and ``k+1`` and has unstretched length ``ds[k]`` [m]. The Wendland C2
 kernel with support 2h, h = ds, reaches the two neighbours of each particle, so every
 SPH sum runs over the two segments next to a particle; ``wl``/``wr`` are the
-renormalised (000 Eq. 4) weights of its left and right neighbour (they sum to 1).
+renormalised (Dinçer & Demir 2020, Eq. 4) weights of its left and right neighbour (they sum to 1).
 """
 
 from __future__ import annotations
@@ -58,14 +58,14 @@ def forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, 
     diffusion ``dlam_diff`` [kg/(m s)] of the state; ``e``/``ell`` must hold the segments of
     ``x``; ``Tseg`` (n-1,) gets the stress-point tensions [N].
 
-    - 000 Eq. 6-9 on the axis, at the stress point midway between neighbours:
+    - Dinçer & Demir 2020, Eq. 6-9 on the axis, at the stress point midway between neighbours:
       ``T_k = EA max(0, l_k/ds_k - 1)``.
-    - 000 Eq. 5: the pair term of neighbours a, b is the stress-point tension along the chord.
-    - 000 Eq. 10-11: ``Pi_ab`` with mu from the chord; pair force ``mk_a mk_b Pi |W'|``;
+    - Dinçer & Demir 2020, Eq. 5: the pair term of neighbours a, b is the stress-point tension along the chord.
+    - Dinçer & Demir 2020, Eq. 10-11: ``Pi_ab`` with mu from the chord; pair force ``mk_a mk_b Pi |W'|``;
       only on taut segments (the viscosity damps the stiff axial response; a slack cable
       has none, and a viscosity there would stop it folding -- the paper's varphi = 1
       made a slack cable fall ~100 times too slowly).
-    - 000 Eq. 12 as mass-proportional damping ``-omega v``.
+    - Dinçer & Demir 2020, Eq. 12 as mass-proportional damping ``-omega v``.
     - Morison drag and added mass in still water below ``water_z`` [m], per particle
       ``hyd[a] = (kn, kt, ma_n, ma_t)``: drag ``-kn |v_n| v_n - kt |v_t| v_t`` [N] and the
       mass matrix ``m I + ma_n (I - t t) + ma_t t t`` (t: the particle's tangent).
@@ -74,7 +74,7 @@ def forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, 
       ``v_eps`` [m/s]).
     """
     n, dim = x.shape
-    # renormalised density gradient (000 Eq. 3) for the δ-SPH term
+    # renormalised density gradient (Dinçer & Demir 2020, Eq. 3) for the δ-SPH term
     for a in range(n):
         g = 0.0
         if a > 0:
@@ -84,7 +84,7 @@ def forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, 
         grad[a] = g
     for k in range(n - 1):
         # stress point of segment k: its own continuity gives lam_k = lam0 ds/l exactly, so
-        # 000 Eq. 6-9 on the axis read T_k = EA max(0, l/ds - 1) (tension only)
+        # Dinçer & Demir 2020, Eq. 6-9 on the axis read T_k = EA max(0, l/ds - 1) (tension only)
         Tk = EA * max(0.0, ell[k] / ds[k] - 1.0)
         h = ds[k]
         vr = 0.0
@@ -103,7 +103,7 @@ def forces(x, v, lam, ds, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, 
         fl = fseg[a - 1] if a > 0 else 0.0
         fr = fseg[a] if a < n - 1 else 0.0
         dd = 0.0
-        # δ-SPH (000 Eq. 1-2): sum_b V_b psi_ab . grad W_ab, with V_b |W'| ds = weight
+        # δ-SPH (Dinçer & Demir 2020, Eq. 1-2): sum_b V_b psi_ab . grad W_ab, with V_b |W'| ds = weight
         if a > 0:
             psi = 2.0 * (lam[a - 1] - lam[a]) / ds[a - 1] + (grad[a] + grad[a - 1])
             dd += wl[a] * psi / ds[a - 1]
@@ -206,11 +206,11 @@ def force_buffers(n, dim):
 @njit(cache=True, fastmath=_FM, error_model="numpy")
 def advance(x, v, lam, ds, t0, t1, n_sub, m, mk, lam0, EA, c0, delta, alpha, beta, omega, fext, wl, wr,
             hyd, water_z, free, pidx, p0, v0, p1, v1, amp, om, t_on, t_off, bed, fend_mean, fend_last, tension):
-    """Leap-frog from ``t0`` to ``t1`` [s] in ``n_sub`` equal sub-steps (000 Section 2).
+    """Leap-frog from ``t0`` to ``t1`` [s] in ``n_sub`` equal sub-steps (Dinçer & Demir 2020, Section 2).
 
     Per sub-step: forces at (x^n, v^n, lam^n); kick v^{n+1} = v^n + dt a^n (free particles);
     drift x^{n+1} = x^n + dt v^{n+1}; prescribed particles placed at t^{n+1}; continuity
-    (000 Eq. 1) integrated exactly over the step: lam^{n+1} = lam^n exp(-D dt) + dt·δ-term,
+    (Dinçer & Demir 2020, Eq. 1) integrated exactly over the step: lam^{n+1} = lam^n exp(-D dt) + dt·δ-term,
     with D dt = wl ln(l^{n+1}/l^n)_left + wr ln(l^{n+1}/l^n)_right (in 1-D the velocity
     divergence is d ln(l)/dt). Returns (status, step, particle); status 0 is success.
 
@@ -280,7 +280,7 @@ def advance(x, v, lam, ds, t0, t1, n_sub, m, mk, lam0, EA, c0, delta, alpha, bet
         for k in range(n - 1):
             lnr[k] = math.log(max(ell1[k], 1e-300) / max(ell[k], 1e-300))
             ell[k] = ell1[k]
-        # continuity, 000 Eq. 1, exact increment over the step
+        # continuity, Dinçer & Demir 2020, Eq. 1, exact increment over the step
         for a in range(n):
             Ddt = 0.0
             if a > 0:

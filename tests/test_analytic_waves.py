@@ -169,7 +169,7 @@ def harmonic(t, y, w):
 
 @pytest.mark.parametrize("dim, direction", [(2, 0.0), (3, 30.0)])
 def test_small_floating_box_rides_a_long_wave(dim, direction):
-    """T = 20 s in 20 m (the seed-004 wave, λ = 271 m) on a 1 m box: heave RAO = 1 and in
+    """T = 20 s in 20 m (the Barreiro et al. 2016 wave, λ = 271 m) on a 1 m box: heave RAO = 1 and in
     phase with η at the box (quasi-static: its heave period is 1 s); the box moves with the
     water particles, surge amplitude a / tanh(kd) at the surface, along the heading."""
     t, com, wave, com0, f = ride(dim, direction)

@@ -1,4 +1,4 @@
-"""The hollow catenary arch rib of 003_7c74773681ee080c.txt §4 in 2-D (span 140 m, rise
+"""The hollow catenary arch rib of Wang et al. 2022, §4 in 2-D (span 140 m, rise
 23.333 m, water to the design level 15.56 m): the arch axis against its closed forms, the
 cavity's outline (constant inner height, area = height x axis length), its filling by
 ``polygon_tank`` (water in both legs only, symmetric), and the particle counts of the
@@ -13,7 +13,7 @@ from cosim.errors import InputError
 from fluid.particles import Kind
 from fluid.shapes import arch_rib_cavity, catenary_arch_axis, polygon_tank, signed_area
 
-SPAN, RISE, LEVEL = 140.0, 23.333, 15.56  # m (003 §4)
+SPAN, RISE, LEVEL = 140.0, 23.333, 15.56  # m (Wang et al. 2022, §4)
 M, HC = 2.24, 1.458  # arch-axis coefficient [-] and inner height [m]: not in the paper's text (see below)
 
 
@@ -101,7 +101,7 @@ def test_the_rib_fills_both_legs_to_the_design_level():
 def test_particle_counts_match_the_papers_three_resolutions():
     """With M = 2.24 and an inner height of 1.458 m (chosen so that the water's area is
     the paper's 36,910 x 0.05^2 = 92.3 m^2; the paper gives neither) and 3 wall layers,
-    the counts of 003 §4.1 come out within 1 %: fluid 36,910 / 73,098 / 147,700 and
+    the counts of Wang et al. 2022, §4.1 come out within 1 %: fluid 36,910 / 73,098 / 147,700 and
     boundary 18,159 / 25,665 / 36,287 at dx = 0.05, 0.05/sqrt(2), 0.025 m (measured
     36,826 / 73,694 / 147,390 and 18,204 / 25,818 / 36,440; 3, 4, 28 s to build here): the
     paper's walls line the whole cavity, crown included."""
@@ -246,7 +246,7 @@ def test_the_stratified_column_mode_meets_the_organ_pipe_and_its_travel_time():
 
 def test_quarter_wave_of_the_papers_rib():
     """c0 / (4 L) with the paper's c0 = 140 m/s (B = 2.8e6 Pa): 1.108 Hz at the design level
-    (L = 31.6 m), within 2.5 % of Table 5 at every depth (003 §4.3; 18 m: -2.44 %) and
+    (L = 31.6 m), within 2.5 % of Table 5 at every depth (Wang et al. 2022, §4.3; 18 m: -2.44 %) and
     within 4 % of Table 4's six cases (El Centro NS, 1.15 Hz: +3.8 %)."""
     from cosim.validations.arch_rib import C0_PAPER, column_length, paper_table, quarter_wave
 

@@ -27,7 +27,7 @@ def test_five_particles_hang_in_equilibrium():
 
 
 def test_free_fall_slack_then_taut_keeps_energy_bookkept():
-    """Seed 000 Experiment 1 set-up: released at one end, the cable swings down, goes slack
+    """Dinçer & Demir 2020, Experiment 1 set-up: released at one end, the cable swings down, goes slack
     and snaps taut; without damping, total energy may only decrease (artificial viscosity)."""
     n, L = 41, 1.0
     x = np.stack([np.linspace(0.0, 0.88, n), np.zeros(n)], axis=1)  # 12 % slack, straight

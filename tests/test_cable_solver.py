@@ -1,4 +1,4 @@
-"""The SPH cable solver (seed 000 Eq. 1-12) against analytic results and invariants."""
+"""The SPH cable solver (Dinçer & Demir 2020, Eq. 1-12) against analytic results and invariants."""
 
 import math
 
@@ -91,7 +91,7 @@ def test_transverse_string_frequency(dim):
 
 
 def test_mass_proportional_damping_decays_every_mode_at_omega_over_2():
-    """000 Eq. 12 as implemented (f = -omega m v): a string mode decays as exp(-omega t/2)."""
+    """Dinçer & Demir 2020, Eq. 12 as implemented (f = -omega m v): a string mode decays as exp(-omega t/2)."""
     L, EA, mu, strain, n, omega = 10.0, 1.0e5, 0.5, 0.01, 41, 0.6
     span = L * (1 + strain)
     c = SPHCable(L, n, EA, mu, (0, 0), (span, 0), weight_per_length=0.0, omega=omega, visc_alpha=0.0,
@@ -265,7 +265,7 @@ def test_suspended_cable_modes_match_irvine():
 
 
 def test_point_mass_removed_at_a_given_time_inside_one_advance():
-    """Seed 000 Case 2 style: a mass at midspan is released at t = 0.3 s; one advance call
+    """Dinçer & Demir 2020, Case 2 style: a mass at midspan is released at t = 0.3 s; one advance call
     over [0, 0.6] equals stopping at 0.3 s and removing it by hand."""
     def make():
         return SPHCable(10.0, 21, 2e5, 1.0, (0, 0), (9.9, 0), omega=0.0)

@@ -55,7 +55,7 @@ def test_cable_vs_catenary_quick():
 
 
 def test_cable_exp2_shake_quick():
-    """Seed 000 Experiment 2 shaken: the free period within 7 % of the measured
+    """Dinçer & Demir 2020, Experiment 2 shaken: the free period within 7 % of the measured
     0.42 s on the length implied by the measured static shape (Table 5); at the
     stated 1.272 m it is 8-9 % short, which the record reports beside it."""
     r = validation.run("cable-exp2-shake", quick=True)

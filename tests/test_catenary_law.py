@@ -1,4 +1,4 @@
-"""The catenary law: closed forms of seed 004, an independent high-precision
+"""The catenary law: closed forms of Barreiro et al. 2016, an independent high-precision
 oracle for the elastic law, state boundaries, extremes and bad input."""
 
 import math
@@ -21,7 +21,7 @@ from moorings.catenary import (
     taut_distance,
 )
 
-# seed 004 Table 1 (Johanning et al. 2007)
+# Barreiro et al. 2016, Table 1 (Johanning et al. 2007)
 H1, W1, L1 = 2.651, 1.036, 6.98
 
 
@@ -29,7 +29,7 @@ def rel(a, b):
     return abs(a - b) / abs(b)
 
 
-# --- closed forms (seed 004 §3.1) --------------------------------------------
+# --- closed forms (Barreiro et al. 2016, §3.1) --------------------------------------------
 
 
 def test_resting_line_hangs_straight_down():

@@ -141,7 +141,7 @@ def test_a_pulled_body_is_held_at_the_line_length():
 
 def test_two_taut_lines_share_a_load_as_statics_says():
     """A buoyant pull F up on a body held by two taut lines at different angles:
-    T1 e1 + T2 e2 = -F (a two-bar truss), not seed 004 Eq. 40's proportional split."""
+    T1 e1 + T2 e2 = -F (a two-bar truss), not Barreiro et al. 2016, Eq. 40's proportional split."""
     F = np.array([0.0, 0.0, 1000.0])
     a1, a2 = np.array([-6.0, 0.0, -8.0]), np.array([4.0, 0.0, -3.0])
     L1, L2 = 10.0, 5.0  # taut with the fairlead at the origin: T1 = 800 N, T2 = 600 N

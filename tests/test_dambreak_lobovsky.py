@@ -1,4 +1,4 @@
-"""The dambreak-lobovsky case (cosim/validations/dambreak_lobovsky.py; seed 002 Appendix A,
+"""The dambreak-lobovsky case (cosim/validations/dambreak_lobovsky.py; Yang & Li 2020, Appendix A,
 Lobovsky et al. 2014, H = 0.3 m): the measured levels as refdata SOURCE.txt describes
 them, the arrival time, the comparison's arithmetic and the quick variant."""
 

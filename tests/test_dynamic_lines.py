@@ -117,7 +117,7 @@ def test_moordyn_driven_to_the_step_end_ends_on_the_fairlead_given_and_reports_t
 
 
 def test_a_run_with_sub_iterated_lines_restarts_from_a_checkpoint_exactly(tmp_path):
-    """Seed 004's base on SPH cables: 0.1 s, a checkpoint, 0.1 s more; back to the checkpoint
+    """Barreiro et al. 2016's base on SPH cables: 0.1 s, a checkpoint, 0.1 s more; back to the checkpoint
     and the same 0.1 s again give the same bodies and lines to the last bit."""
     from pathlib import Path
 

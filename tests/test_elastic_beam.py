@@ -2,7 +2,7 @@
 Timoshenko beam theory: static tip deflections, the first three natural frequencies,
 second-order convergence, time-stepped behaviour, the coupling helpers and bad input.
 
-Seed 002 (Yang & Li 2020, 002_1507eb345a9709e6.txt §3.3): a plate b = 1.2 cm thick
+Yang & Li 2020 (§3.3): a plate b = 1.2 cm thick
 and 20b/3 = 8 cm high, rho_s = 2500 kg/m^3, E = 1e6 Pa, clamped to the floor; 1 m
 deep (2-D). L/h = 6.7: stubby, so Timoshenko is the reference (Euler-Bernoulli is
 off by 1.5, 10 and 21 % on the first three frequencies)."""
@@ -20,7 +20,7 @@ from bodies.mujoco_bodies import MujocoBodies
 from bodies.sampling import place
 from cosim.errors import InputError, InstabilityError
 
-SEED = dict(length=0.08, thickness=0.012, E=1e6, rho=2500.0)  # seed 002 §3.3, 2-D (W = 1 m)
+SEED = dict(length=0.08, thickness=0.012, E=1e6, rho=2500.0)  # Yang & Li 2020, §3.3, 2-D (W = 1 m)
 SLENDER = dict(length=0.5, thickness=0.005, width=0.02, E=2e9, rho=1200.0)  # L/h = 100
 
 

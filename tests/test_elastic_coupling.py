@@ -16,7 +16,7 @@ from fluid.geometry import block, tank_walls
 from fluid.particles import Kind
 from fluid.solver import FluidConfig
 
-PLATE = dict(length=0.08, thickness=0.012, E=1e6, rho=2500.0, n_elements=8)  # seed 002's plate
+PLATE = dict(length=0.08, thickness=0.012, E=1e6, rho=2500.0, n_elements=8)  # Yang & Li 2020's plate
 
 
 def blob_on_plate(dim, free_base=False, dx=0.004):
@@ -99,7 +99,7 @@ def test_clamped_to_a_free_base_fluid_and_structure_keep_their_momentum():
 
 
 def test_elastic_plate_validation_quick():
-    """The dam break on seed 002's plate at dx = 5 mm over 0.3 s (cosim.validations.elastic):
+    """The dam break on Yang & Li 2020's plate at dx = 5 mm over 0.3 s (cosim.validations.elastic):
     the corner's peak within 15 % of Idelsohn's 48.3 mm, inside 0.20-0.28 s."""
     from cosim import validation
 
@@ -170,7 +170,7 @@ def test_a_plate_under_two_spacings_thick_is_refused_without_the_thin_wall_treat
 
 
 def test_a_chain_stepped_beyond_its_stable_step_stops_the_run_naming_its_element():
-    """A plate 10^4 times stiffer than seed 002's, stepped at the fluid's step (40 times its
+    """A plate 10^4 times stiffer than Yang & Li 2020's, stepped at the fluid's step (40 times its
     stable RK4 step): MuJoCo resets a blown-up state to the initial pose by itself, which
     the run must not take for a plate at rest."""
     beam = elastic_beam("p", **{**PLATE, "E": 1e10}, base=(0.3, 0.0, 0.0))

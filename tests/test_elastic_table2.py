@@ -1,4 +1,4 @@
-"""Seed 002 §4.2 (002_1507eb345a9709e6.txt; Yang & Li 2020, Table 2, Tests 1, 4, 5): the
+"""Yang & Li 2020, §4.2 (Table 2, Tests 1, 4, 5): the
 distance a between the dam-break column and the elastic structure, 146 / 176 / 206 mm, as
 the validation case ``elastic-table2`` (:mod:`cosim.validations.elastic_table2`). The
 paper's text gives the structure's peak top displacement for each: 0.82 / 0.76 / 0.67 mm."""

@@ -115,7 +115,7 @@ def test_fourtakas_diffusion_vanishes_at_the_free_surface_where_molteni_does_not
 
 @pytest.mark.parametrize("dim", [2, 3])
 def test_antuono_diffusion_vanishes_for_any_linear_density_field_where_the_others_do_not(dim):
-    """000_7d114ab96e048b26.txt Eq. 1-4 on a disordered set at rest under gravity, with a
+    """Dinçer & Demir 2020, Eq. 1-4 on a disordered set at rest under gravity, with a
     density field linear in every direction (not the hydrostatic one): the renormalised
     gradients are exact, so the diffusion vanishes to round-off wherever the
     renormalisation holds (here: every particle with a full support); Molteni's term

@@ -1,4 +1,4 @@
-"""MLS density re-initialisation (fluid.mls, 001_14936b82710365b2.txt Eq. 9-12): exact
+"""MLS density re-initialisation (fluid.mls, Sunara et al. 2021, Eq. 9-12): exact
 for constant and linear density fields (first-order consistency), Shepard fallback where
 the moment matrix is degenerate, wired into the solver every ``mls_every`` steps."""
 

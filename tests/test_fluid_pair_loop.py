@@ -45,14 +45,14 @@ def brute_force(pos, vel, rho, mass, kind, h, kernel, alpha, delta, diffusion, g
     mb = mass[None, :] * mask
     eta2 = 0.01 * h * h
     vr = (v * r).sum(-1)
-    # continuity (004 Eq. 7) and density diffusion between fluid particles
+    # continuity (Barreiro et al. 2016, Eq. 7) and density diffusion between fluid particles
     drho = (mb * vr * F).sum(1)
     if diffusion != "none":
         rhoH = 0.0
         if diffusion == "fourtakas":
             kap = rho / c**2
             rhoH = 0.5 * (kap[:, None] + kap[None, :]) * (-(r @ g))  # rhobar/c^2 g.(r_b - r_a)
-        if diffusion == "antuono":  # 000 Eq. 2-4: renormalised gradients over fluid neighbours
+        if diffusion == "antuono":  # Dinçer & Demir 2020, Eq. 2-4: renormalised gradients over fluid neighbours
             w = (mass / rho * fl)[None, :] * F  # V_b F_ab
             M = np.einsum("ab,abi,abj->aij", w, r, r)
             bv = np.einsum("ab,ab,abi->ai", w, rho[None, :] - rho[:, None], r)
@@ -71,7 +71,7 @@ def brute_force(pos, vel, rho, mass, kind, h, kernel, alpha, delta, diffusion, g
             s0, s1 = eq.SURFACE_FADE
             D = D * np.clip((s1 - s) / (s1 - s0), 0, 1)
         drho = drho + D
-    # momentum (004 Eq. 6) with Monaghan's artificial viscosity (001 Eq. 6)
+    # momentum (Barreiro et al. 2016, Eq. 6) with Monaghan's artificial viscosity (Sunara et al. 2021, Eq. 6)
     mu = h * np.minimum(vr, 0) / (r2 + eta2)
     Pi = -alpha * 0.5 * (c[:, None] + c[None, :]) * mu / (0.5 * (rho[:, None] + rho[None, :]))
     Pi = Pi * np.where(fl[:, None] * fl[None, :] > 0, 1.0, alpha_wall)  # fluid-boundary pairs
@@ -81,7 +81,7 @@ def brute_force(pos, vel, rho, mass, kind, h, kernel, alpha, delta, diffusion, g
     lam = mb * 4 * nu * F * r2 / ((rho[:, None] + rho[None, :]) * (r2 + eta2))
     acc += (lam[..., None] * v).sum(1)
     acc += fl[:, None] * g
-    # 8-norm of the viscous term of 001 Eq. 14 over the support (fluid.equations.interact)
+    # 8-norm of the viscous term of Sunara et al. 2021, Eq. 14 over the support (fluid.equations.interact)
     visc = ((mask * (r2 < 4 * h * h) * h * vr / (r2 + eta2)) ** 8).sum(1) ** 0.125
     # XSPH: eps sum_b m_b / rhobar_ab v_ba W_ab, fluid particles only
     xs = eps * fl[:, None] * ((mb / (0.5 * (rho[:, None] + rho[None, :])) * Wab)[..., None] * (-v)).sum(1)

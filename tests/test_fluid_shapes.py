@@ -92,7 +92,7 @@ def test_polygon_tank_removes_and_counts_overlaps():
 
 @pytest.mark.parametrize("angle", [15.0, 30.0, 45.0])
 def test_inclined_tank_2d(angle):
-    # 001 §3.2 at 5 cm (the paper's spacing): the first wall layer of the inclined side lies
+    # Sunara et al. 2021, §3.2 at 5 cm (the paper's spacing): the first wall layer of the inclined side lies
     # on a line at `angle` from the vertical, dx/2 outside the face; the water is the
     # trapezoid 3 m long at the bottom and 1 m deep
     dx = 0.05
@@ -149,7 +149,7 @@ def test_inclined_tank_3d_is_the_extruded_section():
 
 
 def test_cylinder_tank():
-    # 001 §3.3: D = 2 m, water 0.6 m, at dx = 5 cm: equal-volume rings give the exact water
+    # Sunara et al. 2021, §3.3: D = 2 m, water 0.6 m, at dx = 5 cm: equal-volume rings give the exact water
     # volume pi R^2 h to the rounding of the ring counts; the first shell lies dx/2 outside
     # R; spacing ~dx everywhere; no fluid within 0.9 dx of the wall
     dx = 0.05

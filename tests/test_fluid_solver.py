@@ -200,7 +200,7 @@ def test_wall_load_of_fluid_at_rest_is_its_weight():
 
 
 def test_wall_pressure_is_the_inverse_distance_average_of_the_fluid():
-    """001 Eq. 15 on a hand-made set: one wall particle, two fluid particles at distances
+    """Sunara et al. 2021, Eq. 15 on a hand-made set: one wall particle, two fluid particles at distances
     d1, d2 with pressures p1, p2 -> (p1/d1 + p2/d2) / (1/d1 + 1/d2); fluid keep their own."""
     from fluid import equations as eq
 

@@ -52,8 +52,8 @@ def sweep_cases():
     """(X, h, L, w, EA) over all four states, the exact boundaries, both line kinds."""
     cases = []
     lines = [  # (h, L, w)
-        (2.651, 6.98, 1.036),  # seed 004 Table 1
-        (50.0, 150.0, 918.75),  # seed 004 Table 2
+        (2.651, 6.98, 1.036),  # Barreiro et al. 2016, Table 1
+        (50.0, 150.0, 918.75),  # Barreiro et al. 2016, Table 2
         (1e-3, 10.0, 5.0),  # nearly on the seabed
         (9.0, 10.0, 5.0),  # nearly vertical
         (0.0, 10.0, 5.0),  # fairlead on the seabed
@@ -100,7 +100,7 @@ def test_c_law_boundaries_are_exact(claw):
     assert s.state == LineState.TAUT and math.isinf(s.H) and math.isinf(s.V) and s.touchdown == 0.0
     assert claw.lib.cat_lift_x(h, L) == lift_off_distance(h, L)
     assert claw.lib.cat_taut_x(h, L) == taut_distance(h, L)
-    # exactly at lift-off the closed form (seed 004 Eq. 37 with l_s = L): H = w (L^2 - h^2) / 2h, V = w L
+    # exactly at lift-off the closed form (Barreiro et al. 2016, Eq. 37 with l_s = L): H = w (L^2 - h^2) / 2h, V = w L
     s = claw(lift_off_distance(h, L), h, L, w)[1]
     assert s.H == pytest.approx(w * (L * L - h * h) / (2 * h), rel=1e-15) and s.V == w * L
 

@@ -1,4 +1,4 @@
-"""When each catenary line goes fully lifted and taut (seed 004 Fig. 5 c-d), recorded after
+"""When each catenary line goes fully lifted and taut (Barreiro et al. 2016, Fig. 5 c-d), recorded after
 every step (``moorings.line_events``), in a probe column and in summary.json."""
 
 import math
@@ -22,7 +22,7 @@ def _drive(m, xs, dt):
 
 def test_fairlead_out_and_back_times_the_states_at_the_law_boundaries():
     """Out at 1 m/s from X = 25 m to 28.3 m and back: fully lifted from the lift-off
-    point X = (L^2 - h^2)/h atanh(h/L) (seed 004 Eq. 35-39 with the anchor's vertical
+    point X = (L^2 - h^2)/h atanh(h/L) (Barreiro et al. 2016, Eq. 35-39 with the anchor's vertical
     load zero), taut (held by its length constraint) from chord = L (1 - slack)."""
     m = CatenaryMooring([MooringLine((0.0, 0.0), L, W, name="front")])
     m.set_tethered(True)  # as a coupler does: taut inextensible lines become length constraints

@@ -1,4 +1,4 @@
-"""Line states (seed 004 Fig. 5: resting, partly lifted, fully lifted, taut) from every
+"""Line states (Barreiro et al. 2016, Fig. 5: resting, partly lifted, fully lifted, taut) from every
 mooring model: the catenary law's own, the exported catenary FMU's ``<line>.state``
 output, and the SPH cable's and MoorDyn's nodes (moorings.line_events.node_states): one
 line 20 m long, its fairlead 10 m above the anchor, at four spans across the law's

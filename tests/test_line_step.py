@@ -1,6 +1,6 @@
 """The coupling step the bodies can follow their mooring lines at (cosim.line_step): the
 derived bound against the measured instability threshold on a body on one stiff line and
-on seed 004's wind-turbine base, the coupler choosing it when no step is given, and a
+on Barreiro et al. 2016's wind-turbine base, the coupler choosing it when no step is given, and a
 given step above it refused."""
 
 import math
@@ -83,7 +83,7 @@ def test_the_sub_iterated_exchange_holds_a_body_on_a_stiff_line_at_one_and_a_hal
 
 @pytest.mark.parametrize("model", ["moordyn", "sph-cable"])
 def test_the_wind_turbine_base_takes_the_lines_step_and_goes_unstable_at_twice_it(model, tmp_path, monkeypatch):
-    """Seed 004's chain (EA 1.9e9 N, 442 kg/m) on the 16 t base, the lines' force held over
+    """Barreiro et al. 2016's chain (EA 1.9e9 N, 442 kg/m) on the 16 t base, the lines' force held over
     each step (lines="explicit", the exchange the bound is derived for): the three lines'
     axial impedance sqrt(EA m) (plus the model's own axial damping) against the base's roll
     and pitch inertia sets the bound 2 / rate (dashpot). The scene runs with no coupling.dt
@@ -126,7 +126,7 @@ def test_the_wind_turbine_base_takes_the_lines_step_and_goes_unstable_at_twice_i
 
 @pytest.mark.parametrize("model", ["sph-cable", "moordyn"])
 def test_the_base_on_dynamic_lines_settles_at_the_derived_step(model, tmp_path):
-    """Seed 004's base on three dynamic lines (20 nodes / segments), waves 0.01 m, the lines
+    """Barreiro et al. 2016's base on three dynamic lines (20 nodes / segments), waves 0.01 m, the lines
     advanced with the base until their mean force over each step is the force the base was
     given (the coupler's default, lines="subiterate"): at the step the coupler derives, the
     base's largest angular speed over the fourth second is that of a settled base, below

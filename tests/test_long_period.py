@@ -1,4 +1,4 @@
-"""The long-period tanks of seed 001 (cosim.validations.long_period): the excitation that
+"""The long-period tanks of Sunara et al. 2021 (cosim.validations.long_period): the excitation that
 stops, the frequency fit, bad input, and the quick case."""
 
 import math
@@ -70,4 +70,4 @@ def test_long_period_quick():
     assert small["particles_lost"] == 0
     # the set-up's count (particles that leave the domain are counted back in)
     assert paper["particles"] == small["particles"] == _tank("rectangular", 2, small["dx_m"], TANKS["rectangular"])[0].n
-    assert "rectangular 2-D, 0.5 g: total pressure on the left wall (001 Fig. 7/13/18)" in r["series"]
+    assert "rectangular 2-D, 0.5 g: total pressure on the left wall (Sunara et al. 2021, Fig. 7/13/18)" in r["series"]

@@ -203,7 +203,7 @@ def test_swaps_for_the_catenary_in_a_coupled_scene():
 # -- the internal step (moorings.moordyn_mooring.internal_step_limits) ----------------------------
 
 def johanning(segments, **kw):
-    """The Johanning et al. (2007) chain of seed 004 Table 1 (l = 6.98 m, w = 1.036 N/m, fairlead
+    """The Johanning et al. (2007) chain of Barreiro et al. 2016, Table 1 (l = 6.98 m, w = 1.036 N/m, fairlead
     2.651 m above the anchor on the seabed) with EA = 1e4 N and 0.12 kg/m, at X = 6.0 m."""
     line = MooringLine((0.0, 0.0), 6.98, 1.036, EA=1e4, mass_per_length=0.12, name="chain")
     fl = np.array([[6.0, 2.651]])

@@ -39,10 +39,10 @@ def test_the_return_current_carries_back_the_stokes_drift():
     assert np.array_equal(sea_velocity(SEA, drift=False)(pos, 0.0), np.zeros((1, 2)))
 
 
-@pytest.mark.parametrize("width", [None, 0.1])
-def test_the_box_holds_still_water_between_its_walls(width):
+@pytest.mark.parametrize("y", [None, (0.0, 0.1)])
+def test_the_box_holds_still_water_between_its_walls(y):
     dx = 0.02
-    box = near_field_box(dx, 0.0, 1.0, SEA, 0.45, 0.3, layers=4, width=width)
+    box = near_field_box(dx, 0.0, 1.0, SEA, 0.45, 0.3, layers=4, y=y)
     groups = {g: (pts, kind) for pts, kind, g in box.walls}
     assert set(groups) == {FIXED_GROUP, NEAR_END_GROUP, FAR_END_GROUP}
     assert groups[NEAR_END_GROUP][1] == groups[FAR_END_GROUP][1] == Kind.MOVING_WALL

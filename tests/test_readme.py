@@ -56,7 +56,7 @@ def test_pages_python_runs(tmp_path, monkeypatch):
     assert ran["coupler"].t == 20.0 and len(ran["coupler"].ledger) == ran["coupler"].steps
     # the wave set-up's tank settled with its clock held at 0
     assert ran["f"].t == 0.0 and ran["f"].max_speed() < 0.05
-    # the catenary law: seed 004's line partly lifted at 5.5 and 6 m, past its lift-off (6.288 m) at 6.4 m
+    # the catenary law: Barreiro et al. 2016's line partly lifted at 5.5 and 6 m, past its lift-off (6.288 m) at 6.4 m
     assert ran["r"].state.tolist() == [1, 1, 2] and ran["r"].H.shape == (3,)
 
 

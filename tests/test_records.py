@@ -1,4 +1,4 @@
-"""Earthquake records (seed 003 §4.2): the PEER ``.AT2`` reader on the shipped 1940 El
+"""Earthquake records (Wang et al. 2022, §4.2): the PEER ``.AT2`` reader on the shipped 1940 El
 Centro records, their baseline correction, the refusal of bad files, and base motion of
 several components at once (``fluid.motion.Combined``, the scene's ``GroundMotion``): the
 walls move by exactly the integrated record in both directions, and a small tank under

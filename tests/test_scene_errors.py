@@ -201,6 +201,34 @@ depth = 0.3
 kind = "table"
 file = "motion.txt"
 """,
+    "nearfield": """
+# 2-D: an SPH near field in regular waves round a floating box
+[world]
+dim = 2
+duration = 5.0
+
+[fluid]
+model = "sph"
+dx = 0.02
+
+[domain]
+kind = "nearfield"
+depth = 0.3
+
+[waves]
+kind = "regular"
+height = 0.04
+period = 1.0
+depth = 0.3
+
+[[bodies]]
+shape = "box"
+name = "box"
+size = [0.2, 0.1]
+pos = [1.2]
+place = "floating"
+density = 500.0
+""",
     "mjcf": """
 # 3-D: the analytic fluid, the body "float" of an MJCF file (float.xml) on one line
 [world]
@@ -223,7 +251,7 @@ lines = [{ fairlead = "float.top", anchor = [0.0, 0.0, -10.0], length = 12.0, we
 motion = ["float"]
 """,
     "plate": """
-# 2-D: a dam break on an elastic plate (seed 002 §3.3)
+# 2-D: a dam break on an elastic plate (Yang & Li 2020, §3.3)
 [world]
 dim = 2
 duration = 0.4
@@ -320,7 +348,7 @@ def case(id, base, change, path, says, python, files=None):
 
 INCLINED = {"kind": "inclined-tank", "angle": 95.0, "length": 1.0, "depth": 0.2, "height": 0.6, "width": 0.5}
 LINE_DYN = {"EA": 1e5, "mass_per_length": 0.6, "diameter": 0.01}
-LINEAR = {"kind": "linear", "height": 0.7, "period": 20.0, "depth": 20.0}  # seed 004's waves
+LINEAR = {"kind": "linear", "height": 0.7, "period": 20.0, "depth": 20.0}  # Barreiro et al. 2016's waves
 REGULAR = {"kind": "regular", "height": 0.7, "period": 20.0, "depth": 20.0}
 JONSWAP = {"kind": "irregular", "depth": 20.0, "hs": 1.0, "tp": 8.0}
 SERIES = {"kind": "irregular", "depth": 20.0, "spectrum": "series", "file": "eta.txt"}
@@ -533,7 +561,8 @@ CASES = [
     case("regular waves on the SPH fluid", "flume",
          ("waves", {"kind": "regular", "height": 0.04, "period": 1.0, "depth": 0.3}), "waves.kind",
          "regular waves act on the analytic or potential fluid's bodies (fluid.model = \"analytic\"); the 'sph' fluid has none: "
-         "make waves with a piston or flap in a flume (the SPH fluid takes no incident sea yet)", "Scene.waves.kind"),
+         "make waves with a piston or flap in a flume, or take the sea through a near field (domain.kind = \"nearfield\")",
+         "Scene.waves.kind"),
     case("an irregular sea on the SPH fluid", "flume",
          ("waves", {"kind": "irregular", "hs": 0.04, "tp": 1.0, "depth": 0.3}), "waves.kind",
          "irregular waves act on the analytic or potential fluid's bodies", "Scene.waves.kind"),
@@ -571,6 +600,30 @@ CASES = [
     case("a series without its file", "analytic", ("waves", {k: v for k, v in SERIES.items() if k != "file"}),
          "waves.file",
          "is required with spectrum = \"series\": give the record's file", "IrregularWaves.file"),
+    # -- the near field
+    case("a near field without a sea", "nearfield", ("waves", OUT), "waves",
+         "a near field sits in an incident sea: give waves of kind \"regular\" or \"irregular\"", "Scene.waves"),
+    case("a near field with a wavemaker", "nearfield", ("waves", {"kind": "piston", "height": 0.04, "period": 1.0}),
+         "waves", "a near field sits in an incident sea", "Scene.waves"),
+    case("a near field's sea against -x", "nearfield", ("waves.direction", 180.0), "waves.direction",
+         "180 deg: the near field's end walls stand across x; give the sea along +x (0)", "Scene.waves.direction"),
+    case("a near field's depth not the sea's", "nearfield", ("waves.depth", 0.4), "waves.depth",
+         "0.4 m differs from the nearfield's still-water depth 0.3 m", "Scene.waves.depth"),
+    case("a 2-D near field with a width", "nearfield", ("domain.width", 1.0), "domain.width",
+         "a 2-D near field is the x-z plane; leave width out", "Scene.domain.width"),
+    case("walls below the water", "nearfield", ("domain.height", 0.2), "domain.height",
+         "0.2 m must exceed the depth 0.3 m", "NearField.height"),
+    case("a body in a relaxation zone", "nearfield", ("domain.x0", 1.0), "bodies[0].pos",
+         "beyond the near field's water between its relaxation zones", "Scene.bodies[0].pos"),
+    case("a box too short for the body's motion", "nearfield", (("domain.zone", 0.5), ("domain.x0", 0.6),
+                                                                 ("domain.x1", 1.8)), "bodies[0].pos",
+         "the body and its reach 0.0455 m (the sea's orbit, doubled) span", "Scene.bodies[0].pos"),
+    case("a pressure patch on a near field's wall", "nearfield",
+         ("probes", {"pressure": [{"name": "w", "centre": [0.5, 0.1], "normal": [1.0, 0.0], "size": 0.05}]}),
+         "probes.pressure", "a near field's walls are not a structure", "Scene.probes.pressure"),
+    case("a near field shaken", "nearfield",
+         ("base_motion", {"kind": "harmonic", "amplitude": 0.01, "period": 1.0}), "base_motion",
+         "a near field follows its sea and does not move as a whole", "Scene.base_motion"),
     # -- names and references
     case("a fairlead on an unknown body", "analytic", ("moorings.lines[0].fairlead", "boat.left"),
          "moorings.lines[0].fairlead", "no body named 'boat'; bodies: ['box', 'buoy']",

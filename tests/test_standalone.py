@@ -173,7 +173,8 @@ def test_a_missing_dataset_or_file_is_named_with_what_exists():
 
 
 def test_a_non_editable_install_carries_the_reference_data():
-    """pyproject's package list and package data cover cosim.refdata and every file in it
+    """pyproject's package list and package data cover cosim.refdata and every file in it,
+    and its module list the top-level errors module
     (setuptools' globs: ``*`` does not cross a folder)."""
     from setuptools import find_packages
 
@@ -182,6 +183,7 @@ def test_a_non_editable_install_carries_the_reference_data():
     assert find.get("namespaces") is False
     packages = find_packages(str(ROOT), include=find["include"])
     assert {"cosim", "cosim.refdata", "cosim.validations", "fluid", "bodies", "moorings"} <= set(packages)
+    assert cfg["py-modules"] == ["errors"]  # the ground module the solver packages import
     covered = {p for pattern in cfg["package-data"]["cosim.refdata"] for p in refdata.ROOT.glob(pattern) if p.is_file()}
     data = {p for p in refdata.ROOT.rglob("*") if p.is_file() and p.suffix not in (".py", ".pyc")}
     assert data - covered == set()

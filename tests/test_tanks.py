@@ -1,4 +1,4 @@
-"""The inclined-wall tank of seed 001 §3.2: the exact impulsive pressure of the finite tank
+"""The inclined-wall tank of Sunara et al. 2021, §3.2: the exact impulsive pressure of the finite tank
 (cosim.validations.tank_potential) against the closed forms and the refdata table, and the
 validation case's quick run."""
 

@@ -48,7 +48,7 @@ def test_piston_waves_have_the_height_of_linear_theory_coarse():
     the smoothing length's: the first-harmonic heights 1 to 3 depths out over the
     period ending at 3.1 s (cosim.validations.waves.paddle_wave_heights, a 2 m flume)
     are 0.96 0.92 0.85 0.82 0.89 H with this code's default h = sqrt(2) dx, 0.98 0.98
-    0.96 0.96 1.00 H with h = 1.70 dx (the DualSPHysics set-up of seed 004 §4.1; decay
+    0.96 0.96 1.00 H with h = 1.70 dx (the DualSPHysics set-up of Barreiro et al. 2016, §4.1; decay
     0.17 /m -> 0), wavenumber 0.988 and 1.021 of theory's."""
     heights = piston_wave_heights(0.02, [2 * D], t_end=2.5)
     np.testing.assert_allclose(heights / H, 1.0, atol=0.15)

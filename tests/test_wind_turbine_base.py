@@ -1,7 +1,7 @@
-"""Seed 004 §5's wind-turbine base (examples/wind_turbine_base.toml): it builds as the
+"""The wind-turbine base of Barreiro et al. 2016, §5 (examples/wind_turbine_base.toml): it builds as the
 paper describes it (3-D, 16 000 kg, three 45 m lines of Table 4 at 120 deg, break load
 1400 kN, H = 0.7 m, T = 20 s), floats at the draft that hydrostatics and the three
-catenaries predict together (computed here from the law itself, seed 004 Eq. 35-39), and
+catenaries predict together (computed here from the law itself, Barreiro et al. 2016, Eq. 35-39), and
 runs with each mooring model changed in one field."""
 
 import dataclasses
@@ -20,7 +20,7 @@ G, RHO = 9.81, 1025.0
 def _partly_lifted_V(X, h, L, w):
     """Vertical fairlead load [N] of an inextensible line resting partly on the seabed:
     a = H/w from X = L - s + a asinh(s/a), s = sqrt(h^2 + 2 h a) the hanging length
-    (seed 004 Eq. 35-39), by bisection; V = w s."""
+    (Barreiro et al. 2016, Eq. 35-39), by bisection; V = w s."""
     lo, hi = 1e-9, 1e7
     for _ in range(200):
         a = math.sqrt(lo * hi)
@@ -102,7 +102,7 @@ def test_each_mooring_model_runs_the_scene(model, tmp_path):
 
 @pytest.mark.slow
 def test_the_scenes_wavemaker_makes_linear_theorys_wave_at_the_base():
-    """Seed 004's wave generation check, without the body: the scene's flume is uniform
+    """Barreiro et al. 2016's wave generation check, without the body: the scene's flume is uniform
     across its width, so its wave is the 2-D one. A 2-D flume of the scene's depth (20 m)
     with its piston (H = 0.7 m, T = 20 s, the scene's wave set-up h = 2 dx, walls "adami"),
     360 m long so that the far wall's reflection reaches no gauge before 46 s, at the

@@ -25,8 +25,8 @@ from pathlib import Path
 import numpy as np
 
 from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, CylinderTank, Earthquake, ElasticPlate, Flap, Flume,
-                              GroundMotion, InclinedTank, Piston, PolygonTank, Potential, Roll, Shake, TableMotion,
-                              Tank)
+                              GroundMotion, InclinedTank, NearField, Piston, PolygonTank, Potential, Roll, Shake,
+                              TableMotion, Tank)
 
 PADDLE, WALLS = 1, 0  # the flume's paddle group and every tank's wall group
 
@@ -50,6 +50,8 @@ class Built:
     base_motion: object = None  #: the tank's rigid motion ``motion(t, ref) -> (pos, vel)`` (fluid.motion), or None
     plates: dict = field(default_factory=dict)  #: elastic plates: name -> bodies.elastic.BeamModel
     warnings: list = field(default_factory=list)  #: what the user is warned of (logged, and in summary.json)
+    near_field: object = None  #: a near field's box (fluid.nearfield.BoxChoice), as chosen
+    sea: object = None  #: a near field's incident sea (fluid.waves)
 
 
 def site_name(fairlead: str) -> str:
@@ -200,6 +202,9 @@ def domain_points(scene, cfg, back: float = 0.0):
     d, dx, dim = scene.domain, cfg.dx, cfg.dim
     layers = math.ceil(2.0 * cfg.h_coef - 1e-9)
     walls_kind = Kind.MOVING_WALL if scene.base_motion is not None else Kind.FIXED_WALL  # a shaken tank moves
+    if isinstance(d, NearField):
+        box = near_field(scene, cfg)
+        return box.fluid, box.walls
     if isinstance(d, Flume):
         from fluid.flume import flume
 
@@ -615,8 +620,10 @@ def sph_fluid(scene, out: Built) -> None:
 
     out.setup = choose(scene)
     cfg = fluid_config(scene, out.setup)
-    motions, back = {}, 0.0
-    if scene.waves is not None:
+    motions, back, zones = {}, 0.0, []
+    if isinstance(scene.domain, NearField):
+        motions, zones = _near_field(scene, cfg, out)
+    elif scene.waves is not None:
         out.wavemaker, paddle, stroke = _wavemaker(scene)
         motions[PADDLE] = paddle
         back = 0.5 * stroke + cfg.dx
@@ -627,7 +634,7 @@ def sph_fluid(scene, out: Built) -> None:
         from cosim.sph_fluid import SPHFluid
 
         out.fluid = SPHFluid(cfg, pts, walls, z_surface=out.level, boundary=scene.fluid.body_boundary,
-                             motions=motions, elastic=list(out.plates.values()))
+                             motions=motions, elastic=list(out.plates.values()), zones=zones)
         return
     from fluid.equations import hydrostatic_density
     from fluid.geometry import assemble
@@ -643,4 +650,30 @@ def sph_fluid(scene, out: Built) -> None:
     fluid = Fluid(cfg, ps)
     for group, motion in motions.items():
         fluid.prescribe_motion(group, motion)
+    fluid.zones.extend(zones)
     out.fluid = out.sph = fluid
+
+
+def near_field(scene, cfg):
+    """The scene's near-field box at ``cfg``'s spacing and wall layers
+    (:func:`fluid.nearfield.near_field_box`, extents from :func:`cosim.scene.nearfield.box_for`)."""
+    from cosim.scene.nearfield import box_for
+    from fluid.nearfield import near_field_box
+
+    c = box_for(scene)
+    return near_field_box(cfg.dx, c.x[0], c.x[1], incident_sea(scene), c.height, c.zone,
+                          layers=math.ceil(2.0 * cfg.h_coef - 1e-9), y=c.y, side_zone=None if c.y is None else c.zone)
+
+
+def _near_field(scene, cfg, out: Built):
+    """A near field's wall motions ``{group: motion}`` (its end walls on the sea's orbits)
+    and relaxation zones (:mod:`fluid.nearfield`); the box chosen is kept in
+    ``out.near_field``."""
+    from cosim.scene.nearfield import box_for
+    from fluid.nearfield import FAR_END_GROUP, NEAR_END_GROUP, following_wall
+
+    sea = out.sea = incident_sea(scene)
+    out.near_field = box_for(scene)
+    wall = following_wall(sea)
+    zones = near_field(scene, cfg).zones(sea, scene.domain.rate * 2.0 * math.pi / sea.peak_period)
+    return {NEAR_END_GROUP: wall, FAR_END_GROUP: wall}, zones

@@ -24,8 +24,8 @@ from cosim.scene.fields import SceneError, is_name
 from cosim.scene.seas import IncidentSea
 from cosim.scene.shapes import RigidBody
 from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, CylinderTank, Earthquake, Flap, Flume, ArchRib,
-                              ElasticPlate, GroundMotion, InclinedTank, IrregularWaves, NoFluid, PaddleRecord, Piston,
-                              PolygonTank, Potential, RegularWaves, Roll, TableMotion, Tank)
+                              ElasticPlate, GroundMotion, InclinedTank, IrregularWaves, NearField, NoFluid,
+                              PaddleRecord, Piston, PolygonTank, Potential, RegularWaves, Roll, TableMotion, Tank)
 
 #: the fluids whose free surface is a plane (with an incident sea on it), not particles
 _SURFACE = (Analytic, Potential)
@@ -112,6 +112,8 @@ def _check_fluid_and_domain(s, dim):
                          f"a flume, for its depth and wavemaker)")
     if d is None:
         return
+    if isinstance(d, NearField):
+        _check_near_field(s, dim)
     if isinstance(d, PolygonTank) and dim != 2:
         raise SceneError("domain.kind", f"a {d.kind} is 2-D; set world.dim = 2 or use a tank")
     if isinstance(d, Flume):
@@ -174,10 +176,18 @@ _SEA_KEYS = {"height": "waves.height", "period": "waves.period", "depth": "waves
 def _check_sea(s, dim):
     """Waves of kind linear, regular or irregular: the incident sea of the analytic fluid."""
     w = s.waves
-    if not isinstance(s.fluid, _SURFACE):
+    if isinstance(s.domain, NearField):
+        if isinstance(w, LinearWaves):
+            raise SceneError("waves.kind", "a near field takes the sea of kind \"regular\" (theory = \"linear\" is "
+                             "the same wave) or \"irregular\"")
+        if w.direction != 0.0:
+            raise SceneError("waves.direction", f"{w.direction:g} deg: the near field's end walls stand across x; "
+                             f"give the sea along +x (0) and turn the bodies and lines instead")
+    elif not isinstance(s.fluid, _SURFACE):
         raise SceneError("waves.kind", f"{w.kind} waves act on the analytic or potential fluid's bodies (fluid.model = "
                          f"\"analytic\"); the {s.fluid.model!r} fluid has none: "
-                         + ("make waves with a piston or flap in a flume (the SPH fluid takes no incident sea yet)"
+                         + ("make waves with a piston or flap in a flume, or take the sea through a near field "
+                            "(domain.kind = \"nearfield\")"
                             if isinstance(s.fluid, SPH) else "set fluid.model = \"analytic\""))
     if isinstance(s.fluid, Potential) and getattr(w, "theory", "linear") != "linear":
         raise SceneError("waves.theory", f"{w.theory!r}: the potential fluid is linear; give theory = \"linear\"")
@@ -358,7 +368,9 @@ def _check_bodies(s, dim):
                                  f"{3 if dim == 2 else 6} degrees of freedom: give one added mass each")
             if any(x < 0 for x in v):
                 raise SceneError(f"fluid.added_mass.{n}", f"{list(v)}: an added mass is >= 0 [kg, kg m^2]")
-    if isinstance(s.fluid, SPH) and s.domain is not None:
+    if isinstance(s.fluid, SPH) and isinstance(s.domain, NearField):
+        _check_inside_near_field(s, dim)
+    elif isinstance(s.fluid, SPH) and s.domain is not None:
         _check_inside(s, dim)
         _check_walls(s, dim)
     _check_overlaps(s, dim)
@@ -383,7 +395,7 @@ def _check_plate(s, dim, b, key) -> None:
                          f"or set thin_wall = true (two columns, one per side; the fluid stands off by up to "
                          f"{max(dx - b.thickness / 2, 0.0):.3g} m on each side)")
     if s.domain is not None:
-        floor = _domain_box(s.domain, dim)[0][-1]
+        floor = _domain_box(s.domain, dim, s)[0][-1]
         if b.direction == "down":
             if b.base[-1] - b.length < floor - 1e-9 * max(1.0, abs(floor)):
                 raise SceneError(f"{key}.base", f"z = {b.base[-1]:g} m: a hanging plate {b.length:g} m long clamped "
@@ -411,8 +423,14 @@ def _corners(b, dim):
     return out
 
 
-def _domain_box(d, dim):
-    """Lower and upper corners [m] of the domain's inner box (the walls' faces)."""
+def _domain_box(d, dim, s=None):
+    """Lower and upper corners [m] of the domain's inner box (the walls' faces); a near
+    field's as chosen for the scene ``s`` (:func:`cosim.scene.nearfield.box_for`)."""
+    if isinstance(d, NearField):
+        from cosim.scene.nearfield import box_for
+
+        c = box_for(s)
+        return [c.x[0]] + ([c.y[0]] if dim == 3 else []) + [0.0], [c.x[1]] + ([c.y[1]] if dim == 3 else []) + [c.height]
     if isinstance(d, (Tank, Flume, InclinedTank)):
         lo = [0.0] * dim
         hi = [d.length] + ([d.width] if dim == 3 else []) + [d.height]
@@ -428,9 +446,49 @@ def _domain_box(d, dim):
     return lo, hi
 
 
+def _check_near_field(s, dim):
+    """A near field sits in an incident sea, a width only in 3-D, nothing moving it as a
+    whole, no wall-pressure patches on its moving walls."""
+    d = s.domain
+    if not isinstance(s.waves, (RegularWaves, IrregularWaves, LinearWaves)):
+        raise SceneError("waves", "a near field sits in an incident sea: give waves of kind \"regular\" or "
+                         "\"irregular\" (their depth the domain's)")
+    if dim == 2 and d.width is not None:
+        raise SceneError("domain.width", "a 2-D near field is the x-z plane; leave width out")
+    if s.base_motion is not None:
+        raise SceneError("base_motion", "a near field follows its sea and does not move as a whole; use a tank")
+    if s.probes.pressure:
+        raise SceneError("probes.pressure", "a near field's walls are not a structure: its wall-pressure patches "
+                         "would read its moving end walls; read the bodies' loads instead")
+
+
+def _check_inside_near_field(s, dim):
+    """Bodies stand in the near field's water between its zones, clear of them by the
+    reach the box allows for their motion (:func:`cosim.scene.nearfield.box_for`)."""
+    from cosim.scene.nearfield import box_for, reach
+
+    c, r = box_for(s), reach(s)
+    lo = [c.x[0] + c.zone] + ([c.y[0] + c.zone] if dim == 3 else [])
+    hi = [c.x[1] - c.zone] + ([c.y[1] - c.zone] if dim == 3 else [])
+    keys = ("domain.x0 and domain.x1", "domain.width")
+    for i, b in enumerate(s.bodies):
+        if isinstance(b, MJCF):
+            continue
+        half = b.extent(dim)
+        centre = b.base if isinstance(b, ElasticPlate) else b.pos
+        for k in range(dim - 1):
+            a, z = centre[k] - half[k] - r, centre[k] + half[k] + r
+            if a < lo[k] - 1e-9 or z > hi[k] + 1e-9:
+                raise SceneError(f"bodies[{i}].{_pos_key(b)}", f"the body and its reach {r:.3g} m (the sea's orbit, "
+                                 f"doubled) span {a:.4g} .. {z:.4g} m along {'xy'[k]}, beyond the near field's water "
+                                 f"between its relaxation zones ({lo[k]:.4g} .. {hi[k]:.4g} m): a zone would pull the "
+                                 f"water round it towards the sea's; widen the box ({keys[k]}) or narrow the zones "
+                                 f"(domain.zone), or leave them unset to be chosen")
+
+
 def _check_inside(s, dim):
     """Bodies at a given pose lie within the domain's inner box (the walls' faces)."""
-    lo, hi = _domain_box(s.domain, dim)
+    lo, hi = _domain_box(s.domain, dim, s)
     for i, b in enumerate(s.bodies):
         if isinstance(b, MJCF):
             continue
@@ -550,7 +608,7 @@ def _check_probes(s, dim, mj):
             raise SceneError(f"probes.gauges[{i}]", f"{g}: a {dim}-D scene gives a gauge as "
                              f"{'x [m]' if dim == 2 else '(x, y) [m]'}")
         if s.domain is not None:
-            lo, hi = _domain_box(s.domain, dim)
+            lo, hi = _domain_box(s.domain, dim, s)
             for k, x in enumerate((g,) if isinstance(g, float) else g):
                 where = "" if dim == 2 else f"{list(g)}: "
                 if not lo[k] <= x <= hi[k]:
@@ -584,7 +642,7 @@ def _check_patch(s, dim, pr, key) -> None:
                          f"steadier)")
     c = pr.centre
     sd = _sd_domain(d, dim, c)
-    lo, hi = _domain_box(d, dim)
+    lo, hi = _domain_box(d, dim, s)
     if sd > 0.5 * dx:
         raise SceneError(f"{key}.centre", f"{_pt(c)} m lies outside the domain ({_span(lo, hi, dim)}"
                          f"{', less its ' + _WALLS[type(d)] if _outline_differs(d) else ''}), {sd:.3g} m behind "

@@ -45,7 +45,8 @@ from dataclasses import dataclass, field
 from cosim.scene.registry import MOORINGS
 from cosim.scene.shapes import RigidBody
 from cosim.scene.spec import (MJCF, SPH, Analytic, ArchRib, CylinderTank, ElasticPlate, Flap, Flume, InclinedTank,
-                              IrregularWaves, LinearWaves, PaddleRecord, Piston, PolygonTank, RegularWaves, Tank)
+                              IrregularWaves, LinearWaves, NearField, PaddleRecord, Piston, PolygonTank, RegularWaves,
+                              Tank)
 
 #: CPU [s] per particle and step of the SPH fluid at h = sqrt(2) dx, by dimension (one
 #: thread; measured)
@@ -212,7 +213,24 @@ def sph_particles(scene) -> tuple[float, float, float]:
     cfg = fluid_config(scene, choose(scene))
     layers = math.ceil(2.0 * cfg.h_coef - 1e-9)
     t = layers * dx
-    if isinstance(d, CylinderTank):
+    if isinstance(d, NearField):
+        from cosim.scene.nearfield import box_for
+
+        from cosim.scene.build import incident_sea
+
+        c, sea = box_for(scene), incident_sea(scene)
+        length = c.x[1] - c.x[0]
+        kd = float(sea.components.k.min()) * sea.depth
+        slack = float(sea.components.amplitude.sum()) / math.tanh(kd) + 2 * dx  # under the end walls' excursion
+        span = length + 2 * t + 2 * slack
+        if dim == 2:
+            water = length * d.depth / dx ** 2
+            walls = (span * t + 2 * c.height * t) / dx ** 2
+        else:
+            w = c.y[1] - c.y[0]
+            water = length * w * d.depth / dx ** 3
+            walls = (span * (w + 2 * t) * t + 2 * c.height * w * t + 2 * span * c.height * t) / dx ** 3
+    elif isinstance(d, CylinderTank):
         r = 0.5 * d.diameter
         water = math.pi * r * r * d.depth / dx ** 3
         walls = (2 * math.pi * (r + 0.5 * t) * d.height + math.pi * (r + t) ** 2) * t / dx ** 3

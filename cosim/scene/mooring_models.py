@@ -56,7 +56,7 @@ _DYNAMIC_FIELDS = ("EA", "mass_per_length", "diameter")
 
 
 class Catenary(MooringModel):
-    """Quasi-static catenary lines (:class:`moorings.CatenaryMooring`, seed 004 §3)."""
+    """Quasi-static catenary lines (:class:`moorings.CatenaryMooring`, Barreiro et al. 2016, §3)."""
 
     anchor_tensions = line_states = tethers = True
 
@@ -67,7 +67,7 @@ class Catenary(MooringModel):
 
 
 class SPHCable(MooringModel):
-    """Dynamic lines as SPH cables (:class:`moorings.sph_cable.SPHCableMooring`, seed 000)."""
+    """Dynamic lines as SPH cables (:class:`moorings.sph_cable.SPHCableMooring`, Dinçer & Demir 2020)."""
 
     line_fields = _DYNAMIC_FIELDS
     dynamic = anchor_tensions = line_states = True

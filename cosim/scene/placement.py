@@ -10,7 +10,7 @@ the built-in shapes: box: A d; 2-D cylinder, a circle of radius r: the segment r
 acos((r - d)/r) - (r - d) sqrt(2 r d - d^2) per metre; 3-D cylinder, axis vertical: pi r^2
 d; sphere: the cap pi d^2 (3 r - d) / 3) and ``V_line`` the vertical
 force of each line on its fairlead from the quasi-static catenary
-(``moorings.catenary.solve``, 004_1657bd4a51d29840.txt Eq. 35-39, elastic when the line
+(``moorings.catenary.solve``, Barreiro et al. 2016, Eq. 35-39, elastic when the line
 has EA) whatever the scene's mooring model: a static start, which a dynamic line
 relaxes from. Solved by bisection on d to 1e-12 of the body's height.
 """

@@ -16,7 +16,7 @@ import numpy as np
 
 #: what each probe group is, as a plot's title
 TITLES = {"motion": "body motion from the start", "loads": "loads on the bodies over each coupling step",
-          "tensions": "mooring line tensions", "line_states": "mooring line states (seed 004 Fig. 5)",
+          "tensions": "mooring line tensions", "line_states": "mooring line states (Barreiro et al. 2016, Fig. 5)",
           "gauges": "free-surface elevation above still water", "sea": "incident sea at the origin",
           "pressure": "wall pressure", "energy": "fluid energy"}
 #: readable names of the probe columns' quantities (``ENTITY.QUANTITY``), where the column's is terse

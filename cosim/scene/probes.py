@@ -10,7 +10,7 @@ that become one HDF5 series, one CSV and one plot each:
   frame (under base motion: the deflection a transducer on the tank reads, the clamp
   fixed), and under base motion the displacement of its clamp from the start in the
   world, ``plate.clamp_x``, ``plate.clamp_z``: the tank's;
-- ``line_states``: per line, its state (seed 004 Fig. 5: 0 resting, 1 partly lifted, 2
+- ``line_states``: per line, its state (Barreiro et al. 2016, Fig. 5: 0 resting, 1 partly lifted, 2
   fully lifted, 3 taut; :class:`moorings.catenary.LineState`), from every model that
   reports them (:mod:`moorings.line_events`: the catenary, the catenary FMU, the SPH cable,
   MoorDyn);
@@ -296,7 +296,7 @@ class Tensions(Probe):
 
 
 class LineStates(Probe):
-    """``line_states``: each line's state (seed 004 Fig. 5)."""
+    """``line_states``: each line's state (Barreiro et al. 2016, Fig. 5)."""
 
     def names(self, scene):
         m = scene.moorings

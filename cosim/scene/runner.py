@@ -13,18 +13,15 @@ samples (``world.sample_every``), particle snapshots (``snapshot_every``), check
   CF-style ``units`` attribute (a line's state: ``flag_values``, ``flag_meanings``);
 - ``GROUP.csv`` per probe group (header ``t [s]`` then ``NAME [UNIT]``; a line's state
   names its codes, ``[0 resting|1 partly lifted|2 fully lifted|3 taut]``), ``ledger.csv``;
-- ``GROUP.png`` per probe group, ``particles_tT.png`` at each ``plot_at`` time within the
-  run (:mod:`cosim.scene.plots`);
-- ``sea_components.csv`` (the analytic fluid's incident sea, :mod:`fluid.waves`): its
-  linear components (ω, amplitude, phase, k) and, for an irregular sea, the spectrum they
-  stand for (the target S(ω), or a record's periodogram a² / 2Δω), plotted in
-  ``sea_spectrum.png``;
+- ``GROUP.png`` per probe group, ``particles_tT.png`` at each ``plot_at`` time (:mod:`cosim.scene.plots`);
+- ``sea_components.csv`` (the analytic fluid's incident sea, :mod:`fluid.waves`): its linear
+  components (ω, amplitude, phase, k) and, for an irregular sea, the spectrum they stand for
+  (the target S(ω), or a record's periodogram a² / 2Δω), plotted in ``sea_spectrum.png``;
 - ``summary.json``: set-up, scheme, sizes, steps (``coupling``: the steps taken, by what
   set them), wall and CPU time, the cost estimated before the run (``estimate``,
-  :mod:`cosim.scene.cost`), each series' range, the
-  warnings of the build (``warnings``, :attr:`cosim.scene.build.Built.warnings`);
-  lines that broke (``line_breaks``) and, for catenary lines, when each went fully lifted
-  or taut and back (``line_events``, :mod:`moorings.line_events`);
+  :mod:`cosim.scene.cost`), each series' range, the build's ``warnings``, the lines that
+  broke (``line_breaks``), the catenary lines' ``line_events`` (:mod:`moorings.line_events`)
+  and a near field's box as chosen, with the reasons (``near_field``);
 - ``checkpoint.h5``: the latest checkpoint, data only (:mod:`cosim.checkpoint`,
   ``docs/checkpoints.md``), replaced atomically: every ``world.checkpoint_wall`` of wall
   time (stretched so that writing takes at most :data:`CHECKPOINT_SHARE` of the run), at
@@ -567,6 +564,8 @@ def _summary(scene, built, series, units, steps, loop_s, build_s, cpu_s, wall_be
         s["floating_start_z_m"] = built.start_heights
     if built.warnings:
         s["warnings"] = list(built.warnings)
+    if built.near_field is not None:  # the near field's box, as chosen, and why
+        s["near_field"] = built.near_field.as_dict()
     if built.wavemaker is not None:
         s["wavemaker"] = {"stroke_m": built.wavemaker.stroke, "wavelength_m": built.wavemaker.wavelength}
     sea = _incident_sea(built)
@@ -606,9 +605,12 @@ def _write_tables(out: Path, rec, built):
 
 
 def _incident_sea(built):
-    """The analytic fluid's incident sea (a ``fluid.waves.Sea``), or None."""
+    """The incident sea (a ``fluid.waves.Sea``) of the analytic or potential fluid, or of
+    the SPH fluid's near field; None."""
     from fluid.waves import Sea
 
+    if built.sea is not None:
+        return built.sea
     sea = getattr(built.fluid, "sea", None) if built.sph is None else None
     return sea if isinstance(sea, Sea) else None
 

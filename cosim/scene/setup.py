@@ -8,7 +8,7 @@ picks, from the scene:
 ================  ========================================  =========================================
 set-up            picked when the scene has                 FluidConfig settings (2-D / 3-D)
 ================  ========================================  =========================================
-``waves``         a wavemaker (``waves``)                   ``TRAVELLING_WAVES``: h = 2 dx, walls
+``waves``         waves (a wavemaker, a near field's sea)   ``TRAVELLING_WAVES``: h = 2 dx, walls
                                                             "adami", diffusion faded under the
                                                             surface, slip walls, alpha = 0.002
 ``sloshing``      a moving tank (``base_motion``)           2-D: ``SLOSHING_2D`` (h = 2 dx, walls
@@ -20,32 +20,12 @@ set-up            picked when the scene has                 FluidConfig settings
 ``defaults``      (only when asked for)                     the solver's defaults
 ================  ========================================  =========================================
 
-Why, with the measured figures (2-D unless said):
-
-- waves that travel: the sloshing set-up keeps the wave's speed, but a wave loses its
-  height along the flume to the density diffusion at the free surface, the artificial
-  viscosity's friction on the floor and its interior viscosity (fluid.solver.TRAVELLING_WAVES;
-  docs/validation/wave-propagation_history.md has the decay per wavelength of each term);
-- sloshing (and the waves' speed): at h = sqrt(2) dx the square lattice under pressure has a spurious
-  shear stiffness that makes waves 5-8 % fast; h = 2 dx is the one support near the usual
-  ones at which it is stable. Plain dynamic walls put a stiff spring at the contact line.
-  With ``SLOSHING_2D``: first sloshing mode +0.84 % (defaults +10 %), piston waves 0.97-1.00
-  of linear theory's height (0.90), Westergaard wall pressure 0.016 RMS (0.17). It costs
-  twice the pairs per step for a 1.4-1.5 times longer step. In 3-D the same holds: at
-  h = sqrt(2) dx the first sloshing mode of the whole 3.0 x 1.0 m tank (water 1.0 m, dx
-  0.1 m) runs 7.3 % fast and the cylinder's (D = 2 m, water 0.6 m) 4.2 %, at h = 2 dx
-  2.1 % and 1.0 % (``cosim validate long-period``); piston waves in a 3-D flume (dx 2 cm,
-  water 0.3 m, H = 4 cm, T = 1 s, 5 rows between side walls) travel with 0.970 of linear
-  theory's wavenumber, 1.001 at h = 2 dx, and reach 1 depth out at 0.93 H against 0.98 H.
-  It costs 2.4 times the pairs of sqrt(2) dx, 1.25 times the CPU per simulated second
-  (its step is longer). The 3-D set-up takes the walls that carry the pressure
-  (Westergaard 3-D meets its targets with them) and the faded diffusion that keeps a 3-D
-  tank at rest;
-- still water in 3-D: with diffusion everywhere a 3-D tank at rest starts circulating by
-  its vertical edges after ~1 s (2-4e-3 sqrt(gH)); faded under the free surface it stays
-  at rest (5e-5 sqrt(gH) at 3 s). Not for violent flow: it quadruples the 2-D dam break's
-  pressure noise, hence
-- impact: the defaults (the dam-break front within 5 % of Martin & Moyce).
+Why: travelling waves lose height to the diffusion at the surface and the viscosity's
+friction on the floor; at h = sqrt(2) dx the square lattice under pressure makes waves and
+sloshing 5-8 % fast, h = 2 dx is stable, and plain dynamic walls stiffen the contact line;
+in 3-D, diffusion everywhere sets a tank at rest circulating by its edges; an impact keeps
+the defaults (the faded diffusion quadruples a dam break's pressure noise). The measured
+figures: docs/fluid.md ("Why each set-up").
 
 The expected largest speed ``u_max`` that sets the speed of sound (c0 = c0_factor u_max,
 c0_factor 10 unless set) is sqrt(g depth) for still water, waves and sloshing (the long
@@ -67,7 +47,8 @@ CONFIG_FIELDS = ("c0", "c0_factor", "u_max", "h_coef", "kernel", "walls", "alpha
 
 _SLOSHING_3D = {"walls": "adami", "diffusion_at_surface": False, "h_coef": 2.0}
 _REASONS = {
-    "waves": "the scene has a wavemaker: waves keep linear theory's speed and height",
+    "waves": "the scene has waves (a wavemaker, or an incident sea through a near field): waves keep linear theory's "
+             "speed and height",
     "sloshing": "the tank moves: sloshing frequencies and wall pressures need the wave set-up",
     "impact": "water blocks in a tank (a dam break): the solver's defaults, which keep violent flow's pressure "
               "noise low",

@@ -13,7 +13,7 @@ A scene is made of
 - a domain for the SPH fluid: :class:`Tank` (filled to a depth, or holding water blocks),
   :class:`Flume` (2-D or 3-D, with a :class:`Beach`; the analytic fluid takes a flume's
   depth and wavemaker too), :class:`InclinedTank`, :class:`CylinderTank`
-  (3-D), :class:`PolygonTank` (2-D), :class:`ArchRib` (2-D, seed 003); wall layers
+  (3-D), :class:`PolygonTank` (2-D), :class:`ArchRib` (2-D, Wang et al. 2022); wall layers
   follow from the kernel;
 - excitations: ``waves`` (:class:`Piston`, :class:`Flap`, :class:`PaddleRecord`: a flume's
   wavemaker; :class:`LinearWaves`, :class:`RegularWaves`, :class:`IrregularWaves`: the
@@ -288,7 +288,7 @@ class _Filled:
 
 @dataclass(frozen=True)
 class InclinedTank(_Filled, Spec):
-    """A tank whose right side leans outwards ``angle`` [deg] from the vertical (seed 001
+    """A tank whose right side leans outwards ``angle`` [deg] from the vertical (Sunara et al. 2021,
     §3.2), bottom ``length`` long; 3-D: ``width`` along y."""
 
     TAG = ("kind", "inclined-tank")
@@ -303,7 +303,7 @@ class InclinedTank(_Filled, Spec):
 
 @dataclass(frozen=True)
 class CylinderTank(_Filled, Spec):
-    """A vertical cylindrical tank (3-D, seed 001 §3.3), axis along z through the origin."""
+    """A vertical cylindrical tank (3-D, Sunara et al. 2021, §3.3), axis along z through the origin."""
 
     TAG = ("kind", "cylinder-tank")
     kind: str = tag("cylinder-tank")
@@ -338,7 +338,7 @@ class PolygonTank(Spec):
 
 @dataclass(frozen=True)
 class ArchRib(PolygonTank):
-    """The water inside a hollow catenary arch rib, 2-D (seed 003_7c74773681ee080c.txt §4):
+    """The water inside a hollow catenary arch rib, 2-D (Wang et al. 2022, §4):
     the cavity of ``fluid.shapes.arch_rib_cavity`` (the catenary axis ``z = rise - rise /
     (m - 1) (cosh(k xi) - 1)``, ``xi = 2 x / span``, ``k = arccosh m``, offset by
     ``inner_height`` / 2 on both sides), springings at x = -span/2 and +span/2, z = 0,
@@ -358,7 +358,7 @@ class ArchRib(PolygonTank):
     m: float = num(2.24, "arch-axis coefficient (1: a parabola; the paper does not give it)", lo=1)
     inner_height: float = num(1.458, "the cavity's inner height across the axis (the box section's, inside)", "m",
                               lo=0, lo_open=True)
-    level: float = num(15.56, "still-water level in both legs, above the springings (003's design level)", "m")
+    level: float = num(15.56, "still-water level in both legs, above the springings (Wang et al. 2022's design level)", "m")
 
     def validate(self):
         from cosim.errors import InputError
@@ -386,7 +386,7 @@ class ArchRib(PolygonTank):
 
 
 def arch_rib_monitors(rib: ArchRib, size: float, heights=None) -> tuple:
-    """The wall-pressure patches B1-B18 of 003 §4.1 on an :class:`ArchRib`, ``size`` [m]
+    """The wall-pressure patches B1-B18 of Wang et al. 2022, §4.1 on an :class:`ArchRib`, ``size`` [m]
     long. The paper places them only in its Figure 6 ("B1 to B9 on the right side of the
     arch rib, B10 to B18 on the left side, symmetrical about the y-axis", at different
     depths, on the upper and lower surfaces); our choice: Bk (k = 1..9) on the right leg
@@ -418,7 +418,47 @@ def arch_rib_monitors(rib: ArchRib, size: float, heights=None) -> tuple:
     return tuple(out)
 
 
-DOMAINS = (Tank, Flume, InclinedTank, CylinderTank, PolygonTank, ArchRib)
+@dataclass(frozen=True)
+class NearField(Spec):
+    """An SPH near field inside the scene's incident sea (``waves`` of kind "regular" or
+    "irregular", travelling along +x): a box of water ``depth`` [m] deep over a seabed at
+    z = 0 around the bodies, whose end walls keep the sea's orbits and whose relaxation
+    zones inside them pull the water towards the sea's velocity, so that the incident waves
+    pass through and what the bodies send out dies there (:mod:`fluid.nearfield`). 3-D:
+    slip walls across y at -width/2 and width/2 (the incident flow runs along them), with
+    zones inside them too. The mooring lines are not in the SPH fluid: their anchors may
+    lie outside the box. Extents left unset are chosen from the bodies and the sea
+    (:func:`fluid.nearfield.choose_box`: zones half the wavelength of the shortest wave the
+    bodies send out with energy, water beyond the bodies' reach) and reported with the
+    reasons in summary.json."""
+
+    TAG = ("kind", "nearfield")
+    kind: str = tag("nearfield")
+    depth: float = required(num(None, "still-water depth over the seabed at z = 0", "m", lo=0, lo_open=True,
+                                optional=False))
+    height: float = num(None, "wall height above the seabed (unset: the depth, the sea's highest crest twice, and "
+                              "a margin)", "m", lo=0, lo_open=True)
+    x0: float = num(None, "near end of the water, the zone's wall side (unset: chosen)", "m")
+    x1: float = num(None, "far end of the water (unset: chosen)", "m")
+    width: float = num(None, "3-D: width across y between the side walls, centred on y = 0 (unset: chosen)", "m",
+                       lo=0, lo_open=True)
+    zone: float = num(None, "width of each relaxation zone inside the end (and, 3-D, side) walls (unset: chosen)",
+                      "m", lo=0, lo_open=True)
+    rate: float = num(2.0, "relaxation rate at the walls, in the sea's (peak) angular frequencies", lo=0,
+                      lo_open=True, hi=50)
+
+    def validate(self):
+        if self.height is not None and self.height <= self.depth:
+            raise SceneError("height", f"{self.height} m must exceed the depth {self.depth} m")
+        if self.x0 is not None and self.x1 is not None and not self.x1 > self.x0:
+            raise SceneError("x1", f"{self.x1} m must exceed x0 = {self.x0} m")
+
+    @property
+    def level(self):
+        return self.depth
+
+
+DOMAINS = (Tank, Flume, InclinedTank, CylinderTank, PolygonTank, ArchRib, NearField)
 
 
 # ------------------------------------------------------------------------ excitations
@@ -592,7 +632,7 @@ WAVES = (Piston, Flap, PaddleRecord, LinearWaves, RegularWaves, IrregularWaves)
 @dataclass(frozen=True)
 class Shake(Spec):
     """Harmonic base motion of the tank along ``direction``: give ``amplitude`` [m] or the
-    peak ``acceleration`` [m/s^2] (the ground acceleration a0 sin(2 pi t / T) of seed 001
+    peak ``acceleration`` [m/s^2] (the ground acceleration a0 sin(2 pi t / T) of Sunara et al. 2021,
     §3.1, started from rest), ramped in over ``ramp`` [s], stopped smoothly at ``stop``."""
 
     TAG = ("kind", "harmonic")
@@ -667,7 +707,7 @@ class Record(Spec):
 @dataclass(frozen=True)
 class GroundMotion(Spec):
     """Base motion from several earthquake records at once, each along its own direction
-    (horizontal and vertical: seed 003 §4.2's "El Centro NS + vertical"; three in 3-D):
+    (horizontal and vertical: Wang et al. 2022, §4.2's "El Centro NS + vertical"; three in 3-D):
     the tank translates by the sum of the components' displacements, each read by
     ``fluid.motion.read_at2``, baseline-corrected and integrated exactly, all starting at
     t = 0. The records' times must cover ``world.duration`` unless ``hold`` lets the tank
@@ -864,7 +904,7 @@ class Line(Spec):
 @dataclass(frozen=True)
 class Moorings(Spec):
     """The mooring lines and the one field that picks their model: ``"catenary"``
-    (quasi-static, seed 004 §3), ``"sph-cable"`` (seed 000), ``"moordyn"`` or ``"fmu"``
+    (quasi-static, Barreiro et al. 2016, §3), ``"sph-cable"`` (Dinçer & Demir 2020), ``"moordyn"`` or ``"fmu"``
     (the catenary exported as an FMU and run through FMPy). A line with a ``break_load``
     is watched: the time, line and tension at which its fairlead tension first passes it
     go into the log and ``summary.json`` (``line_breaks``)."""
@@ -1012,7 +1052,7 @@ class Scene(Spec):
 
 
 __all__ = ["World", "NoFluid", "Analytic", "Potential", "SPH", "Block", "Tank", "Beach", "Flume", "InclinedTank",
-           "CylinderTank", "PolygonTank", "ArchRib", "arch_rib_monitors", "Piston", "Flap", "PaddleRecord",
+           "CylinderTank", "PolygonTank", "ArchRib", "NearField", "arch_rib_monitors", "Piston", "Flap", "PaddleRecord",
            "LinearWaves", "RegularWaves", "IrregularWaves",
            "Shake", "Roll", "TableMotion",
            "Earthquake", "Record", "GroundMotion", "Box", "Cylinder", "Sphere", "MJCF", "ElasticPlate", "Line",

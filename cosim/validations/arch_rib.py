@@ -1,4 +1,4 @@
-"""The water inside the hollow arch rib of seed 003 (003_7c74773681ee080c.txt §4) under
+"""The water inside the hollow arch rib of Wang et al. 2022 (§4) under
 the 1940 El Centro records: the spike frequencies of the wall pressures (Table 3), their
 phase between the legs (Figures 13-14), as a scene (:class:`cosim.scene.ArchRib`).
 
@@ -21,8 +21,7 @@ acoustic mode, and keep the issue's criterion (first spike within 5 % of 1.125 H
 next near 3, 5, 7 times it) with its measured value, beside the quarter-wave prediction.
 
 Monitoring points: :func:`cosim.scene.arch_rib_monitors` (B1-B9 on the right leg, B10-B18
-their mirror images: the paper's Figure 6 is not in its text; our choice is stated
-there). The spectrum is the sum over B1-B18 of the amplitude spectra of each point's
+their mirror images; the paper's Figure 6 is not in its text). The spectrum is the sum over B1-B18 of the amplitude spectra of each point's
 pressure (mean removed, Hann window, from ``skip`` on), as the paper's Figure 15 overlays
 all points; the first spike is the lowest-frequency peak above 0.3 Hz reaching a fifth of
 the highest, located by a parabola through the zero-padded spectrum's top three bins.
@@ -35,10 +34,9 @@ the mode is), so its first spike is the record's as often as the water's; the pa
 record does not force (under a horizontal record the symmetric part (pR + pL)/2 of each
 pair: a rib symmetric about x = 0 is forced antisymmetrically) holds, late in a long
 record, mostly a small image of the forced response (``benchmarks/arch_rib_drift.py``).
-Both are reported beside the ringing. The runs start
-from a settled state: a hydrostatic start rings the acoustic mode in both legs at once
-(40 kPa at dx = 0.3 m against some 15 kPa of response to the record), which is likely why
-the paper finds the same 1.125 Hz under all six records.
+Both are reported beside the ringing. The runs start settled: a hydrostatic start rings
+the acoustic mode in both legs at once (40 kPa at dx = 0.3 m against some 15 kPa of
+response), likely why the paper finds the same 1.125 Hz under all six records.
 """
 
 from __future__ import annotations
@@ -52,9 +50,9 @@ from cosim import refdata
 from cosim.errors import InputError
 from cosim.validation import case
 
-SPAN, RISE, LEVEL = 140.0, 23.333, 15.56  # m, 003 §4
+SPAN, RISE, LEVEL = 140.0, 23.333, 15.56  # m, Wang et al. 2022, §4
 C0_PAPER = math.sqrt(7 * 2.8e6 / 1000.0)  # m/s: the paper's B = 2.8e6 Pa, gamma = 7, rho0 = 1000 kg/m^3
-F1_TABLE3 = 1.125  # Hz, 003 Table 3 (all six cases)
+F1_TABLE3 = 1.125  # Hz, Wang et al. 2022, Table 3 (all six cases)
 GAUGE_BELOW = 0.4  # m: the gauges' axis point under the still level (rib_scene)
 F_MIN = 0.3  # Hz: below it the spectrum holds the record's drift, not a spike
 PULSE_PERIOD = 1.0  # s: the vertical pulse that rings the water's symmetric mode (ring_rib)
@@ -107,7 +105,7 @@ def quarter_wave(c0: float, level: float = LEVEL, n: int = 1, m: float = 2.24) -
 def stratified_quarter_wave(c0: float, level: float = LEVEL, gamma: float = 7.0, g: float = 9.81,
                             m: float = 2.24, n: int = 1) -> float:
     """The n-th acoustic mode [Hz] of a leg's water column with the sound speed of the
-    model's water at rest: the Tait equation (004_1657bd4a51d29840.txt Eq. 8, B = rho0
+    model's water at rest: the Tait equation (Barreiro et al. 2016, Eq. 8, B = rho0
     c0^2 / gamma) under its own hydrostatic pressure gives, at a depth d under the level,
 
         c(d)^2 = c0^2 + (gamma - 1) g d
@@ -411,12 +409,12 @@ def _ringing(t: np.ndarray, p: np.ndarray, stop: float) -> dict:
 
 
 def bridge_mode_lines() -> dict:
-    """The bridge's 2nd and 4th modes (003 Table 2: 0.94 and 1.66 Hz, the vertical
+    """The bridge's 2nd and 4th modes (Wang et al. 2022, Table 2: 0.94 and 1.66 Hz, the vertical
     antisymmetric and symmetric bending the paper compares the first spike with) as
     vertical lines for a spectrum plot normalised to 1."""
     modes = {int(r["order"]): float(r["frequency_Hz"]) for r in paper_table("table2_bridge_modes.csv")}
     fs = [modes[2], modes[4]]
-    return {f"003 Table 2, the bridge's 2nd and 4th modes ({fs[0]:.2f}, {fs[1]:.2f} Hz)":
+    return {f"Wang et al. 2022, Table 2, the bridge's 2nd and 4th modes ({fs[0]:.2f}, {fs[1]:.2f} Hz)":
             {"x": np.repeat(fs, 3), "y": np.tile([0.0, 1.0, np.nan], 2), "style": "r:"}}
 
 
@@ -432,7 +430,7 @@ def _series(runs: dict) -> dict:
                 curves[f"ours, El Centro {label}, {what}"] = {"x": f, "y": a / a[f > F_MIN].max(), "style": "-"}
     row = {r["case"]: r for r in paper_table("table3_spikes.csv")}["El Centro EW"]
     fs = [float(row[f"spike{n}_Hz"]) for n in range(1, 5)]
-    curves["003 Table 3, El Centro EW spikes"] = {"x": np.repeat(fs, 3), "y": np.tile([0.0, 1.0, np.nan], 4),
+    curves["Wang et al. 2022, Table 3, El Centro EW spikes"] = {"x": np.repeat(fs, 3), "y": np.tile([0.0, 1.0, np.nan], 4),
                                                   "style": "k--"}
     curves.update(bridge_mode_lines())
     return {"wall-pressure spectrum": {"xlabel": "f [Hz]", "ylabel": "amplitude / its largest above 0.3 Hz [-]",
@@ -473,7 +471,7 @@ RATIO_TOL = 0.15
 QUICK_STOP, QUICK_DURATION = 4.0, 7.0  # s: the quick variant's record stops, its run ends
 
 
-@case("arch-rib", "Water inside the hollow catenary arch rib of seed 003 §4 under El Centro 1940 (EW, vertical): "
+@case("arch-rib", "Water inside the hollow catenary arch rib of Wang et al. 2022, §4 under El Centro 1940 (EW, vertical): "
       "the spike frequencies of the wall pressures at B1-B18 against Table 3, the legs' phase against Figures 13-14",
       target=ARCH_RIB_TARGET,
       quick=f"dx = 0.3 m (5 particles across the cavity), c0 = 140 m/s, settled 1.5 s, El Centro EW stopped at "
@@ -503,20 +501,9 @@ def arch_rib(quick: bool) -> dict:
     and why ours lies below the continuum mode (the near-wall layers, at so few particles
     across), is in ``docs/validation/arch-rib_history.md``.
 
-    Measured 2026-11-26 (AMD EPYC, one thread, NUMBA_NUM_THREADS=1, 2 cores shared with
-    three other jobs). Full (21,386 particles, 9,256 of water; 90,385 + 36,000 steps;
-    1,923 + 844 CPU-s, 72.5 and 73.4 CPU-s per simulated second, settling included; 89 min
-    of wall): passed. The ringing over 20-25 s, 1.0739 Hz (-4.5 % of 1.125 Hz, -3.0 % of
-    c0/(4L) = 1.108 Hz; the four windows within 0.05 %, the fit's residual 0.019, the
-    decay 0.14 /s), its spectrum's spikes 1.074, 3.224, 5.389, 7.479 Hz (3.00, 5.02, 6.96
-    times it); the mode rung free from rest by a pulse at the same dx, 1.078 Hz
-    (:func:`ring_rib`). Kept beside it: all points over 2-20 s, 0.799 Hz (-28.9 %), then
-    3.13, 3.28, 5.40 Hz; the symmetric part over 2-20 s, 1.016 Hz (-9.6 %), then 3.24,
-    4.36, 6.34 Hz; pairs -0.990 (B9/B18) to -0.998 under EW, +1.000 under vertical
-    (all points 0.573 Hz, its antisymmetric part 0.909 Hz). Quick (4,976 particles;
-    67 CPU-s): the ringing over 4-7 s 0.971 Hz (-13.7 %; the windows within 3.2 %; the
-    mode rung free at dx 0.3 m: 0.978 Hz), 3.16, 5.50, 7.37 times it; every pair at -0.65 or
-    below.
+    Measured: the full variant passes, its free ringing 1.0739 Hz (-4.5 % of 1.125 Hz) with
+    spikes near 3, 5 and 7 times it, the pairs in opposite phase under EW; the figures of the
+    full and quick runs: docs/validation/arch-rib_history.md.
     """
     stated = {"first_spike_rel_err": 0.05, "spike_ratio_errors": RATIO_TOL,
               "horizontal_pair_correlation_max": [None, -0.5]}

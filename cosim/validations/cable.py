@@ -1,10 +1,10 @@
-"""Validation cases of the SPH cable (seed 000, ``docs/VALIDATION.md``, Moorings).
+"""Validation cases of the SPH cable (Dinçer & Demir 2020, ``docs/VALIDATION.md``, Moorings).
 
 The reference for the static cases is the exact elastic catenary between two supports
 with point loads (Irvine, *Cable Structures* 1981, Eq. 2.24-2.25 generalised piecewise),
 solved here independently of the cable solver: :func:`elastic_catenary`.
 
-Static cases settle with a large mass-proportional damping ``omega`` (000 Eq. 12 as
+Static cases settle with a large mass-proportional damping ``omega`` (Dinçer & Demir 2020, Eq. 12 as
 implemented: it changes no equilibrium) until the fastest particle moves slower than a
 threshold; the reported ``residual_speed`` shows how settled the answer is.
 """
@@ -91,14 +91,14 @@ def _settle(c: SPHCable, t_max: float, v_tol: float, chunk: float) -> float:
     return c.max_speed()
 
 
-#: seed 000 Table 1 (Case 1)
+#: Dinçer & Demir 2020, Table 1 (Case 1)
 CASE1 = dict(length=312.73, span=304.8, E=131e9, A=548.4e-6, w=46.12, P=35586.0, s_L=125.88)
-#: seed 000 Table 2: displacement of L (vertical, horizontal) [m], consensus of 8 methods
+#: Dinçer & Demir 2020, Table 2: displacement of L (vertical, horizontal) [m], consensus of 8 methods
 CASE1_REF = (-5.626, -0.859)
 
 
 def run_case1(n_particles: int, omega: float = 2.5, t_max: float = 60.0, v_tol: float = 1e-6):
-    """Seed 000 Case 1 with ``n_particles``; returns (metrics, cable)."""
+    """Dinçer & Demir 2020, Case 1 with ``n_particles``; returns (metrics, cable)."""
     p = CASE1
     EA = p["E"] * p["A"]
     c = SPHCable(p["length"], n_particles, EA, p["w"] / G_STANDARD, (0.0, 0.0), (p["span"], 0.0),
@@ -126,11 +126,11 @@ def run_case1(n_particles: int, omega: float = 2.5, t_max: float = 60.0, v_tol: 
     return m, c
 
 
-@case("cable-case1", "SPH cable, seed 000 Case 1: self-weight catenary + 35.586 kN point load (Table 1-2)",
+@case("cable-case1", "SPH cable, Dinçer & Demir 2020, Case 1: self-weight catenary + 35.586 kN point load (Table 1-2)",
       target="within 0.5 %",
       quick="the stated target, the displacement of L within 0.5 % of Table 2, with 40 particles instead of 313")
 def cable_case1(quick: bool) -> dict:
-    """Seed 000 Case 1 (Table 1): span 304.8 m, length 312.73 m, E = 131 GPa, A = 548.4 mm²,
+    """Dinçer & Demir 2020, Case 1 (Table 1): span 304.8 m, length 312.73 m, E = 131 GPa, A = 548.4 mm²,
     w = 46.12 N/m; after the self-weight state has settled, 35.586 kN at L (125.88 m of
     unstretched arc from A). Target: the displacement of L within 0.5 % of Table 2
     (-5.626 m vertical, -0.859 m horizontal); also reported against the exact two-segment
@@ -144,7 +144,7 @@ def cable_case1(quick: bool) -> dict:
             "particles": c.n, "steps": c.steps}
 
 
-#: seed 000 Experiment 2 (Section 3.3.2, Table 5)
+#: Dinçer & Demir 2020, Experiment 2 (Section 3.3.2, Table 5)
 EXP2 = dict(length=1.272, support_b=(1.2, -0.22), w=0.2656, E=109e9, d_wire=0.5e-3)
 #: Table 5: (unstretched arc from P0 [m], measured x, y [m]) of P1..P5
 EXP2_POINTS = ((0.212, 0.187, -0.127), (0.424, 0.371, -0.223), (0.636, 0.573, -0.283),
@@ -152,7 +152,7 @@ EXP2_POINTS = ((0.212, 0.187, -0.127), (0.424, 0.371, -0.223), (0.636, 0.573, -0
 
 
 def run_exp2_static(n_particles: int, omega: float = 30.0, t_max: float = 4.0, v_tol: float = 1e-6):
-    """Seed 000 Experiment 2 at rest with ``n_particles``; returns (metrics, cable).
+    """Dinçer & Demir 2020, Experiment 2 at rest with ``n_particles``; returns (metrics, cable).
 
     The cable starts from the catenary of a 2 % shorter line (its segments compressed, so
     slack) and falls into its equilibrium."""
@@ -190,12 +190,12 @@ def run_exp2_static(n_particles: int, omega: float = 30.0, t_max: float = 4.0, v
     return m, c
 
 
-@case("cable-exp2-static", "SPH cable, seed 000 Experiment 2 at rest: reactions and shape (Table 5)",
+@case("cable-exp2-static", "SPH cable, Dinçer & Demir 2020, Experiment 2 at rest: reactions and shape (Table 5)",
       target="shape within 1 mm of the exact catenary; reactions within 1 %; report the distance to the measured "
              "points",
       quick="the stated target (shape within 1 mm, reactions within 1 %) with 31 particles instead of 121")
 def cable_exp2_static(quick: bool) -> dict:
-    """Seed 000 Experiment 2 (Section 3.3.2): supports (0, 0) and (1.2, -0.22) m, l = 1.272 m,
+    """Dinçer & Demir 2020, Experiment 2 (Section 3.3.2): supports (0, 0) and (1.2, -0.22) m, l = 1.272 m,
     w = 0.2656 N/m, E = 109 GPa. The paper gives no wire diameter; 0.5 mm is assumed
     (EA = 21.4 kN; the strain is ~2e-5, so the shape hardly depends on it and the reference
     catenary uses the same EA). Targets: equal horizontal reactions and vertical reactions
@@ -222,7 +222,7 @@ def exp2_static_series(c: SPHCable) -> dict:
         "measured P1-P5 (Table 5)": {"x": meas[:, 0], "y": meas[:, 1], "style": "s"}}}}
 
 
-#: the mooring line of cable-vs-catenary (seed 004 Table 2 geometry: h = 50 m, l = 150 m,
+#: the mooring line of cable-vs-catenary (Barreiro et al. 2016, Table 2 geometry: h = 50 m, l = 150 m,
 #: w = 918.75 N/m; a chain of 107.7 kg/m, EA = 1 GN, d = 0.15 m)
 VS_CAT = dict(h=50.0, length=150.0, w=918.75, EA=1e9, mu=107.7, d=0.15, X0=120.0, X1=140.0)
 
@@ -246,7 +246,7 @@ def run_vs_catenary(n_particles: int, speed: float, dt_couple: float = 0.5, samp
     while m.t < 60.0 - 1e-9:  # settle at rest with a large mass damping
         m.advance(m.t, 1.0)
     cab = m.cables[0]
-    cab.omega = 0.04  # then the seed's damping; water drag does the rest
+    cab.omega = 0.04  # then the paper's damping (Dinçer & Demir 2020); water drag does the rest
     t_start = m.t
     duration = (p["X1"] - p["X0"]) / speed
     errs, rows = [], []
@@ -280,7 +280,7 @@ def cable_vs_catenary(quick: bool) -> dict:
     and added mass) hung from its anchor with seabed contact; the fairlead moves from
     X = 120 m to 140 m (fairlead tension 62 to 250 kN) at 0.05 m/s (quick: 0.1 m/s, 20 particles).
     Target: fairlead tension within 2 % of the quasi-static elastic catenary with seabed
-    (seed 004 §3, moorings.catenary) at every sample."""
+    (Barreiro et al. 2016, §3, moorings.catenary) at every sample."""
     n, speed = (20, 0.1) if quick else (60, 0.05)
     rows = []
     m, moor = run_vs_catenary(n, speed, rows_out=rows)
@@ -295,7 +295,7 @@ def cable_vs_catenary(quick: bool) -> dict:
 
 def fit_length_to_measured_shape() -> float:
     """Unstretched length [m] whose exact catenary passes closest (RMS) to the measured
-    P1-P5 of seed 000 Table 5, with the markers at the same fractions of the length."""
+    P1-P5 of Dinçer & Demir 2020, Table 5, with the markers at the same fractions of the length."""
     from scipy.optimize import minimize_scalar
 
     p = EXP2
@@ -357,16 +357,16 @@ def run_exp2_shake(n_particles: int, frequency: float, length: float, omega: flo
     return period, float(np.sqrt((z[:k] ** 2).mean())), float(np.sqrt((z[-k:] ** 2).mean())), c
 
 
-#: seed 000 §3.3.2: free oscillation period after the excitation [s]
+#: Dinçer & Demir 2020, §3.3.2: free oscillation period after the excitation [s]
 EXP2_PERIOD = 0.42
 
 
-@case("cable-exp2-shake", "SPH cable, seed 000 Experiment 2: free oscillation period after 1.0/1.5 Hz shaking",
+@case("cable-exp2-shake", "SPH cable, Dinçer & Demir 2020, Experiment 2: free oscillation period after 1.0/1.5 Hz shaking",
       target="period within 7 % of 0.42 s",
       quick="as the full variant (the period within 7 % of 0.42 s on the length fitted to the measured shape, "
             "damping lowers the late motion) with 31 particles instead of 61")
 def cable_exp2_shake(quick: bool) -> dict:
-    """Seed 000 Experiment 2, Type1 (1.0 Hz) and Type2 (1.5 Hz), 25 mm at P0 in x (3 cycles
+    """Dinçer & Demir 2020, Experiment 2, Type1 (1.0 Hz) and Type2 (1.5 Hz), 25 mm at P0 in x (3 cycles
     assumed: the paper does not give the duration), then free oscillation; the dominant
     free period -- the fundamental, lowest significant peak of the summed spectra of the
     vertical motion of P1-P5 (which mode dominates depends on the excitation) -- against
@@ -401,14 +401,14 @@ def cable_exp2_shake(quick: bool) -> dict:
             "stated_tolerances": {"err_period_type1_stated": 0.07, "err_period_type2_stated": 0.07},
             "departure": {
                 "criterion": "the free period within 7 % of 0.42 s on the cable length (about 1.286 m) whose exact "
-                             "catenary fits the measured static shape P1-P5 of seed 000 Table 5, instead of the "
+                             "catenary fits the measured static shape P1-P5 of Dinçer & Demir 2020, Table 5, instead of the "
                              "stated 1.272 m",
                 "why": "the measured points P1-P5 lie 15-19 mm below the catenary of the stated 1.272 m (they imply "
                        "a longer cable) and the free period is very sensitive to the sag; the stated length's "
                        "periods are measured beside it"}}
 
 
-#: seed 000 Experiment 1 (Table 4): initial positions of P1-P5 [(s, x, z)] of the 1 m cable
+#: Dinçer & Demir 2020, Experiment 1 (Table 4): initial positions of P1-P5 [(s, x, z)] of the 1 m cable
 EXP1_POINTS = ((0.138, 0.098, -0.086), (0.350, 0.284, -0.183), (0.562, 0.492, -0.207), (0.774, 0.694, -0.143),
                (1.000, 0.880, 0.000))
 
@@ -422,7 +422,7 @@ def _mech_energy(c: SPHCable) -> float:
 
 
 def run_free_fall(n_particles: int, t_end: float = 1.2, dt_out: float = 0.005):
-    """Seed 000 Experiment 1 with ``n_particles``: the 1 m cable hung from (0, 0) and
+    """Dinçer & Demir 2020, Experiment 1 with ``n_particles``: the 1 m cable hung from (0, 0) and
     (0.88, 0), released at P5 and followed for ``t_end`` [s] (checked every ``dt_out`` [s]).
     Returns (metrics, cable); see :func:`cable_free_fall` for the metrics."""
     p = EXP2
@@ -448,12 +448,12 @@ def run_free_fall(n_particles: int, t_end: float = 1.2, dt_out: float = 0.005):
     return m, c
 
 
-@case("cable-free-fall", "SPH cable, seed 000 Experiment 1: released at one end from its catenary (Table 4)",
+@case("cable-free-fall", "SPH cable, Dinçer & Demir 2020, Experiment 1: released at one end from its catenary (Table 4)",
       target="no published trajectory: invariants: the mechanical energy never grows (1e-6 of w L L), the line "
              "stays within its elastic range, the free end swings below z = -0.75 m",
       quick="the same invariants with 48 particles instead of 95", row=None)
 def cable_free_fall(quick: bool) -> dict:
-    """Seed 000 Experiment 1 (§3.3.1): a 1 m cable of the Experiment 2 kind (w = 0.2656 N/m,
+    """Dinçer & Demir 2020, Experiment 1 (§3.3.1): a 1 m cable of the Experiment 2 kind (w = 0.2656 N/m,
     0.5 mm wire at 109 GPa assumed) hangs from (0, 0) and (0.88, 0) and is released at P5.
     No trajectory data is published (the paper's Fig. 6-9 are plots), so the case checks
     invariants: the mechanical energy (kinetic + potential + elastic) never grows (only

@@ -27,11 +27,11 @@ def _rel(a, b):
     return float(np.max(np.abs(a - b) / np.maximum(np.abs(b), 1e-300)))
 
 
-@case("catenary-limits", "inextensible catenary against seed 004 closed forms (Eq. 29, 35-39)",
+@case("catenary-limits", "inextensible catenary against Barreiro et al. 2016 closed forms (Eq. 29, 35-39)",
       target="exact to 1e-10 relative",
       quick="the stated target, exact to 1e-10 relative, on 5 random lines instead of 40")
 def catenary_limits(quick: bool) -> dict:
-    """Closed forms of seed 004 §3.1 over a family of lines, to 1e-10 relative.
+    """Closed forms of Barreiro et al. 2016, §3.1 over a family of lines, to 1e-10 relative.
 
     - RESTING (X <= L - h): H = 0, V = w h, touchdown = L - h (Fig. 5a).
     - PARTLY_LIFTED: the lifted length l_s = V/w obeys l_s^2 = h^2 + 2 h a with
@@ -118,17 +118,17 @@ _SINGLE_QUICK = ("the stated target on 91 values of X instead of 901: H(X) monot
                  "continuous across the lift-off point (1e-4), the solver's lift-off within 1e-12 of the closed form")
 
 
-@case("catenary-johanning-2007", "single line of seed 004 Table 1 (Johanning et al. 2007), X = 5.50-6.40 m",
+@case("catenary-johanning-2007", "single line of Barreiro et al. 2016, Table 1 (Johanning et al. 2007), X = 5.50-6.40 m",
       target=_SINGLE_TARGET, quick=_SINGLE_QUICK)
 def johanning_2007(quick: bool) -> dict:
-    """h = 2.651 m, w = 1.036 N/m, l = 6.98 m, fairlead at the surface (seed 004 Table 1)."""
+    """h = 2.651 m, w = 1.036 N/m, l = 6.98 m, fairlead at the surface (Barreiro et al. 2016, Table 1)."""
     return _single_line(2.651, 1.036, 6.98, 5.50, 6.40, quick, (5.735, 6.367))
 
 
-@case("catenary-johanning-2006", "single line of seed 004 Table 2 (Johanning et al. 2006), X = 102-140 m",
+@case("catenary-johanning-2006", "single line of Barreiro et al. 2016, Table 2 (Johanning et al. 2006), X = 102-140 m",
       target=_SINGLE_TARGET, quick=_SINGLE_QUICK)
 def johanning_2006(quick: bool) -> dict:
-    """h = 50 m, w = 918.75 N/m, l = 150 m (seed 004 Table 2)."""
+    """h = 50 m, w = 918.75 N/m, l = 150 m (Barreiro et al. 2016, Table 2)."""
     return _single_line(50.0, 918.75, 150.0, 102.0, 140.0, quick, (103.0, 138.0))
 
 
@@ -154,13 +154,13 @@ def weight_for_pretension(TH0, L, X, h):
     return TH0 / solve(X, h, L, 1.0).H
 
 
-@case("catenary-two-lines", "two opposed lines of seed 004 Table 3: restoring force odd in the offset",
+@case("catenary-two-lines", "two opposed lines of Barreiro et al. 2016, Table 3: restoring force odd in the offset",
       target="symmetry to 1e-9. As printed, each line is less than 1 m from taut at rest, so ±15 m offsets need "
              "an elastic line (or other numbers): document what you test",
       quick="the stated target on 31 offsets instead of 301: odd symmetry and zero force at rest to 1e-9, "
             "restoring and monotone, the printed 75 m line taut at +15 m")
 def two_lines(quick: bool) -> dict:
-    """Seed 004 Table 3: h = 50 m, anchors at x = ±55 m, T_H0 = 50 kN at rest,
+    """Barreiro et al. 2016, Table 3: h = 50 m, anchors at x = ±55 m, T_H0 = 50 kN at rest,
     body offsets −15 … +15 m.
 
     As printed (l = 75 m) each line is taut at X = sqrt(75² − 50²) = 55.90 m, only

@@ -1,7 +1,7 @@
-"""Validation case ``dambreak-lobovsky`` (issue 17; seed 002 Appendix A,
-002_1507eb345a9709e6.txt, Figures A1-A2): the 2-D dam break of Lobovsky et al. (2014),
+"""Validation case ``dambreak-lobovsky`` (issue 17; Yang & Li 2020, Appendix A,
+Yang & Li 2020, Figures A1-A2): the 2-D dam break of Lobovsky et al. (2014),
 H = 0.3 m, water levels at the gauges H1-H4 against the measured ones (refdata
-``dambreak_lobovsky2014``, SOURCE.txt), plotted as the seed plots them: h/H against
+``dambreak_lobovsky2014``, SOURCE.txt), plotted as Yang & Li 2020 plot them: h/H against
 t* = t sqrt(g/H)."""
 
 from __future__ import annotations
@@ -21,7 +21,7 @@ TANK_H = 1.0  #: side-wall height [m]: the run-up at the far wall stays below it
 GAUGES = {"H1": 0.300, "H2": 0.865, "H3": 1.114, "H4": 1.3625}
 
 #: the judged window: t* up to 5, the surge's passage before the bore reflected from the far wall
-#: reaches H4 (t* about 5.5): what seed 002 says its curves "almost overlap" on
+#: reaches H4 (t* about 5.5): what Yang & Li 2020 says its curves "almost overlap" on
 T_JUDGED = 5.0
 #: judged: RMS of (h_ours - h_measured) / H over t* <= T_JUDGED at each gauge, against each run
 TOL_RMS = 0.05
@@ -89,7 +89,7 @@ def sensor_pressures(f, size: float) -> tuple[np.ndarray, np.ndarray]:
     """The pressure [Pa] at the sensors :data:`SENSORS` on the far wall's face x = TANK_L:
     as a flush transducer of length ``size`` [m] reads it (:func:`fluid.probes.wall_patch_pressure`,
     the wall's momentum balance), and the fluid's pressure averaged at the face point
-    (:func:`fluid.probes.pressure_at`, 001_14936b82710365b2.txt Eq. 15)."""
+    (:func:`fluid.probes.pressure_at`, Sunara et al. 2021, Eq. 15)."""
     from fluid.probes import pressure_at, wall_patch_pressure
 
     zs = list(SENSORS.values())
@@ -167,7 +167,7 @@ def run_lobovsky(dx: float, t_star_end: float = 11.0, sample_star: float = 0.05,
     """The dam break (2-D, x-z): a column ``L_COL`` x ``H`` at rest against the left wall
     of a tank ``TANK_L`` long, released at once at t = 0 (the gate's removal is not
     modelled). Fluid: the solver's defaults (Wendland, h = sqrt(2) dx, alpha = 0.01,
-    Fourtakas delta = 0.1, CFL 0.2, dynamic boundaries), c0 = 10 sqrt(2 g H) (seed 002 Eq.
+    Fourtakas delta = 0.1, CFL 0.2, dynamic boundaries), c0 = 10 sqrt(2 g H) (Yang & Li 2020, Eq.
     6's rule); the column starts hydrostatic. The level at each gauge (``h``) is the top of
     the water standing on the floor there (:func:`layer_level`); ``h_top`` is the highest
     free surface on the gauge's line (:func:`fluid.probes.surface_elevation`: the highest z
@@ -271,7 +271,7 @@ def compare(t_star, h: dict, t_end: float) -> dict:
 
 
 def series_plot(t_star, h: dict, h_top: dict | None = None) -> dict:
-    """The report's plots, seed 002 Figure A2 (a)-(d): h/H against t* at H1-H4, ours (the
+    """The report's plots, Yang & Li 2020, Figure A2 (a)-(d): h/H against t* at H1-H4, ours (the
     standing layer, and where given the highest surface) against each measured run."""
     out = {}
     for name, runs in measured().items():
@@ -301,14 +301,14 @@ def pressure_plot(t_star, p: dict, p_point: dict | None = None) -> dict:
     return out
 
 
-LOBOVSKY_TARGET = (f"water level h/H at the gauges H1-H4 against Lobovsky et al. 2014's measured runs, as seed 002 "
+LOBOVSKY_TARGET = (f"water level h/H at the gauges H1-H4 against Lobovsky et al. 2014's measured runs, as Yang & Li 2020, "
                    f"Figure A2 plots them: over t* = t sqrt(g/H) <= {T_JUDGED:g} (the surge, before the reflected "
                    f"bore) the RMS difference within {TOL_RMS:g} at each gauge against each run, and the surge's "
                    f"arrival (h/H >= {ARRIVAL_LEVEL:g}) at H2-H4 within {TOL_ARRIVAL:g} in t* of the measured one; the "
                    f"reflected bore (t* > {T_JUDGED:g}) reported with the runs' own spread")
 
 
-@case("dambreak-lobovsky", "2-D dam break of Lobovsky et al. 2014, H = 0.3 m (seed 002 Appendix A, Figure A2): "
+@case("dambreak-lobovsky", "2-D dam break of Lobovsky et al. 2014, H = 0.3 m (Yang & Li 2020, Appendix A, Figure A2): "
       "water levels at the gauges H1-H4 against the measured runs", target=LOBOVSKY_TARGET,
       quick=f"dx = H/20 = 15 mm, t* <= {T_JUDGED:g}: the surge's arrival at H2-H4 within {TOL_ARRIVAL:g} in t*, "
             f"and the RMS difference within {TOL_RMS_QUICK:g} (the full variant's {TOL_RMS:g} at H/60: at H/20 the "
@@ -336,41 +336,10 @@ def dambreak_lobovsky(quick: bool) -> dict:
     gap beneath. That alone takes its RMS there to 0.39, which is why the judged level is
     the standing water.
 
-    Measured on 2026-11-25, AMD EPYC, 2 cores shared with a load of 15-22 other jobs. CPU s
-    are ``time.process_time`` of the run (both threads); reproduce with
-    ``python benchmarks/dambreak_lobovsky.py --dx 0.015,0.01,0.005``. t* <= 11 (1.92 s)::
-
-        dx            particles  steps  CPU s  CPU s/sim s  RMS t*<=5  arrival err [t*]   RMS t*>5 at H4:
-                                                         max       H2 / H3 / H4     standing / highest
-        15 mm (H/20)    1535     12690   10.8      5.6      0.052    -0.06/-0.13/-0.15    0.19-0.21 / 0.10-0.11
-        10 mm (H/30)    2901     19107   24.5     12.8      0.042    -0.10/-0.17/-0.19    0.31 / 0.14-0.15
-         5 mm (H/60)    9384     38435  144.6     75        0.033    -0.09/-0.16/-0.19    0.40-0.41 / 0.16-0.18
-
-    The quick variant is the first row's surge (t* <= 5, about 5 CPU s), judged at 0.06: it
-    reads 0.052, above the stated 0.05, which its record keeps.
-
-    Wall pressure at P1-P4 (``pressure``: the transducer patch; ``pressure_point``: Eq. 15
-    at the face point), against the measured run of :data:`PRESSURE_TARGET`: reported, not
-    judged, and not met. Measured 2026-11-25 with the command above, one thread
-    (NUMBA_NUM_THREADS=1), same loaded machine; p/(rho g H), t* = t sqrt(g/H)::
-
-        dx      first peak P1 / P2 / P3 (measured 3.04 / 1.95 / 1.54)  P1 peak's t* err  RMS P1 / P2 / P3 / P4
-        15 mm   patch 4.50 / 6.75 / 8.61                                +0.160            0.53 / 0.51 / 0.56 / 0.18
-        10 mm   patch 6.79 / 9.85 / 4.85                                +0.075            0.51 / 0.44 / 0.35 / 0.17
-         5 mm   patch 6.83 / 7.27 / 3.02                                -0.015            0.44 / 0.32 / 0.23 / 0.13
-         5 mm   Eq. 15 21.2 / 21.5 / 2.07                               -0.015            0.84 / 0.76 / 0.24 / 0.17
-
-    The water reaches the far wall on time at H/60 (P1's first peak 0.015 in t* before the
-    measured one; 0.16 late at H/20, where the surge's thin tip is not resolved), but the
-    first peaks are single-sample spikes (0.005 in t*) of the weakly compressible impact,
-    1.2-4 times the measured ones; the RMS over the record is dominated by the ringing that
-    follows. The level of the pressure is closer: the mean over t* 2.45-2.75 / 2.75-4 /
-    4-5.5 / 5.5-7.15 (``window_mean``) reads with the patch at H/60 1.58 / 1.02 / 0.78 / 0.82
-    at P2 (measured 1.61 / 0.81 / 0.66 / 0.82), 0.93 / 0.91 / 0.71 / 0.76 at P3 (0.95 /
-    0.83 / 0.59 / 0.73), 0.00 / 0.29 / 0.47 / 0.63 at P4 (0.01 / 0.49 / 0.51 / 0.58). At P1,
-    3 mm up, the patch (2h = 14 mm long) reaches below the floor into the tank's corner and
-    reads about half: 0.90 / 0.52 / 0.38 / 0.40 against 1.91 / 0.88 / 0.65 / 0.83, where
-    Eq. 15 at the face reads 1.49 / 0.83 / 0.71 / 0.84.
+    Measured at H/20, H/30 and H/60 (``python benchmarks/dambreak_lobovsky.py --dx
+    0.015,0.01,0.005``), the quick variant's 0.052, and the wall pressure at P1-P4 (reported,
+    not judged, not met: single-sample impact spikes 1.2-4 times the measured peaks, the mean
+    levels close): docs/validation/dambreak-lobovsky_history.md.
     """
     dx, t_end = (0.015, T_JUDGED) if quick else (0.005, 11.0)
     r = run_lobovsky(dx, t_end)

@@ -1,5 +1,5 @@
-"""Validation cases of elastic structures in the SPH fluid (issue 17; seed 002,
-002_1507eb345a9709e6.txt, §3.3 and Figure 6)."""
+"""Validation cases of elastic structures in the SPH fluid (issue 17; Yang & Li 2020,
+Yang & Li 2020, §3.3 and Figure 6)."""
 
 from __future__ import annotations
 
@@ -52,11 +52,11 @@ RHO_S, E_S, NU_S = 2500.0, 1e6, 0.0  #: plate density [kg/m^3], Young's modulus 
 def run_elastic_plate(dx: float, t_end: float = 0.4, n_elements: int = 8, sample: float = 1e-3,
                       light_body: str = "auto", **overrides) -> dict:
     """The dam break on an elastic plate (2-D, x-z; Walhorn et al. 2005, Idelsohn et al.
-    2008; seed 002 §3.3): a water column ``L_COL`` x ``H_COL`` at rest against the left wall
+    2008; Yang & Li 2020, §3.3): a water column ``L_COL`` x ``H_COL`` at rest against the left wall
     of a tank ``TANK_L`` long collapses at t = 0 and strikes a plate ``PLATE_B`` thick and
     ``PLATE_H`` high clamped to the floor with its left face at ``PLATE_X``. Fluid: the
     solver's defaults (Wendland, h = sqrt(2) dx, alpha = 0.01, Fourtakas delta = 0.1, CFL
-    0.2), c0 = 10 sqrt(2 g H_COL) (seed 002 Eq. 6's rule), tank walls plain dynamic, the
+    0.2), c0 = 10 sqrt(2 g H_COL) (Yang & Li 2020, Eq. 6's rule), tank walls plain dynamic, the
     plate's particles mDBC; the column starts hydrostatic. Plate: the MuJoCo chain of
     :mod:`bodies.elastic` (``n_elements`` Timoshenko elements, RK4), coupled fluid-first.
     Returns the corner's x displacement every ``sample`` [s] up to ``t_end`` [s]."""
@@ -113,7 +113,7 @@ def compare(t, x, t_max: float) -> dict:
 
 
 def series_plot(t, x) -> dict:
-    """The report's plot: seed 002 Figure 6, ours against the four published curves."""
+    """The report's plot: Yang & Li 2020, Figure 6, ours against the four published curves."""
     curves = {CURVES[k]: {"x": ref[:, 0], "y": 1e3 * ref[:, 1], "style": "--"} for k, ref in reference_curves().items()}
     curves["SPH + MuJoCo chain (ours)"] = {"x": t, "y": 1e3 * x, "style": "-"}
     return {"upper left corner": {"xlabel": "t [s]", "ylabel": "horizontal displacement [mm]", "curves": curves}}
@@ -123,36 +123,21 @@ ELASTIC_TARGET = ("peak horizontal displacement of the upper left corner within 
                   "at 0.260 s) and inside 0.20-0.28 s; RMS difference to each of the four curves over 0.4 s reported")
 
 
-@case("elastic-plate", "2-D dam break on an elastic plate (seed 002 §3.3, Figure 6; Walhorn 2005, Idelsohn 2008): "
+@case("elastic-plate", "2-D dam break on an elastic plate (Yang & Li 2020, §3.3, Figure 6; Walhorn 2005, Idelsohn 2008): "
       "the plate's upper left corner against four published numerical solutions", target=ELASTIC_TARGET,
       quick="dx = 5 mm (2.4 particles across the plate), 0.3 s: the same peak criteria (within 15 % of 48.3 mm, "
             "inside 0.20-0.28 s) and the RMS difference to Idelsohn's curve over 0.3 s below 7 mm")
 def elastic_plate(quick: bool) -> dict:
     """See :func:`run_elastic_plate`. Geometry of the reference curves (refdata SOURCE.txt):
-    the column 0.146 m wide and 0.292 m high (2L), not seed 002's printed hu = 25.2 cm; the
+    the column 0.146 m wide and 0.292 m high (2L), not Yang & Li 2020's printed hu = 25.2 cm; the
     plate's left face a = L = 0.146 m beyond the column, at x = 0.292 m (the tank's centre).
-    Seed 002 describes the same case (b = 1.2 cm, rho_s = 2500 kg/m^3, E = 1e6 Pa) but prints
+    Yang & Li 2020 describes the same case (b = 1.2 cm, rho_s = 2500 kg/m^3, E = 1e6 Pa) but prints
     hu = 25.2 cm in its Table 1 set-up; the curves it compares with (Figure 6) are these.
 
-    Full variant (``cosim validate elastic-plate``; dx = 2.5 mm, 4.8 particles across the
-    plate, 8197 particles, 15 700 coupling steps, N = 8 elements; 166 s for the run on the
-    2-core machine beside other jobs): peak 43.9 mm at 0.223 s (-9.0 % of Idelsohn's 48.3
-    mm); RMS difference over 0.4 s: 6.1 mm to Idelsohn (PFEM), 2.9 to Bogaers, 4.3 to Liu,
-    4.5 to Sun. Quick (dx = 5 mm, 0.3 s, 20 s): 46.7 mm at 0.228 s (-3.2 %), RMS 5.4 mm to
-    Idelsohn. The four references themselves peak at 45.0-48.3 mm between 0.217 and 0.260 s.
-    With N = 16 elements (dx = 2.5 mm, 421 s): 44.9 mm at 0.222 s, RMS 6.2 / 2.5 / 4.4 / 4.2
-    mm: the chain is converged to 2 % of the peak, the fluid's resolution sets the rest.
-    Resolution (N = 8, 0.4 s, ``run_elastic_plate(dx)``; wall time beside other jobs)::
-
-        dx [mm]  particles  steps   wall [s]  peak [mm]  at [s]   RMS to Idelsohn/Bogaers/Liu/Sun [mm]
-        7.5         1203     5312      17      45.8     0.228    8.9 / 4.0 / 6.6 / 5.8
-        5.0         2400     7985      63      46.7     0.228    7.8 / 2.2 / 5.9 / 4.2
-        3.5         4436    11220     113      44.2     0.221    6.4 / 2.7 / 4.6 / 4.4
-        2.5         8197    15700     166      43.9     0.223    6.1 / 2.9 / 4.3 / 4.5
-
-    In 3-D, as a scene (``shape = "elastic-plate"``, a slice 36 mm wide between the tank's
-    side walls, dx = 6 mm, 45 358 particles, 0.3 s in 1374 s): 43.4 mm at 0.216 s, RMS over
-    0.3 s 6.2 / 2.2 / 4.8 / 4.1 mm.
+    Full variant (dx = 2.5 mm, N = 8): peak 43.9 mm at 0.223 s, -9.0 % of Idelsohn's 48.3 mm,
+    within the four references' spread (45.0-48.3 mm); the chain converged to 2 % of the peak, the
+    fluid's resolution sets the rest. The measured resolution table and the 3-D slice:
+    docs/validation/elastic-plate_history.md.
     """
     dx, t_end = (0.005, 0.3) if quick else (0.0025, 0.4)
     r = run_elastic_plate(dx, t_end)

@@ -70,7 +70,7 @@ def run_elastic_gate(dx: float, t_end: float = 0.4, n_elements: int = 16, sample
     flows out under it onto a floor ``TANK_L`` long.
 
     Fluid: the solver's defaults (Wendland, h = sqrt(2) dx, alpha = 0.01, Fourtakas delta =
-    0.1, CFL 0.2), c0 = 10 sqrt(2 g COL_H) (seed 002 Eq. 6's rule), tank and upper wall
+    0.1, CFL 0.2), c0 = 10 sqrt(2 g COL_H) (Yang & Li 2020, Eq. 6's rule), tank and upper wall
     plain dynamic boundaries, the gate's particles mDBC; the column starts hydrostatic.
     Gate: the MuJoCo chain of :mod:`bodies.elastic` hanging from its clamp
     (``direction="down"``), ``n_elements`` Timoshenko elements, RK4, no damping (``beta``
@@ -216,18 +216,8 @@ def elastic_gate(quick: bool) -> dict:
     experiment is open: the clamp, the release of the gate, flow past its sides in the real
     tank.
 
-    Measured on 2026-11-25, AMD EPYC, 2 cores shared with a load of 12-22 other jobs. CPU s
-    are ``time.process_time`` of the run (both threads); reproduce with
-    ``python benchmarks/elastic_gate.py --dx 0.0025,0.00125`` (the 5 mm row is the quick
-    variant: ``--dx 0.005 --t-end 0.3 --elements 8``)::
-
-        dx [mm]   across  N  t [s]  particles  steps  CPU s  CPU s/sim s  peak x [mm] at [s]  peak y  RMS x / y  lag [s]
-        5 (thin)     1    8   0.3     1266      4218    6.8      23        41.9   0.120    14.5  0.197/0.285  -0.041
-        2.5          2   16   0.4     3666     10998   44.7     112        39.6   0.104    12.5  0.204/0.302  -0.057
-        1.25         4   16   0.4    11918     21526  154       385        39.5   0.108    12.5  0.227/0.329  -0.053
-
-    The full variant (``cosim validate elastic-gate``) is the 1.25 mm row: 154.3 CPU s, 2657 s
-    of wall time under that load.
+    The measured table (``python benchmarks/elastic_gate.py --dx 0.0025,0.00125``; the full
+    variant is the 1.25 mm row): docs/validation/elastic-gate_history.md.
     """
     dx, t_end, n_el = (0.005, 0.3, 8) if quick else (0.00125, 0.4, 16)
     r = run_elastic_gate(dx, t_end, n_elements=n_el)

@@ -4,7 +4,7 @@ floating-box-draft, floating-heave-period, sinking-cylinder.
 Every case couples the SPH fluid (``cosim.sph_fluid.SPHFluid``, bodies as boundary
 particles with modified dynamic boundary conditions, ``fluid.boundary_correction``)
 to MuJoCo bodies through the fluid-first scheme of ``cosim.coupler.Coupler``: the
-body receives exactly the impulse the fluid exchanged (seed 004 Eq. 9-12), and the
+body receives exactly the impulse the fluid exchanged (Barreiro et al. 2016, Eq. 9-12), and the
 fluid places the body's particles from its pose (Eq. 13).
 
 Set-up rule shared by the box cases: the box's faces lie on faces of the fluid's
@@ -240,7 +240,7 @@ def floating_heave_period(quick: bool) -> dict:
 
 def sinking_cylinder(dx: float, t_end: float, *, radius: float = 1.0, rho_c: float = 1200.0,
                      tank: float = 6.0, depth: float = 4.0, boundary: str = "mdbc"):
-    """Seed 004 §4.1 (after Fekken 2004): a 2-D cylinder of ``radius`` [m] and
+    """Barreiro et al. 2016, §4.1 (after Fekken 2004): a 2-D cylinder of ``radius`` [m] and
     density ``rho_c`` [kg/m^3], centre on the still-water surface (half submerged),
     released at rest in the middle of a ``tank`` [m] long tank of ``depth`` [m]
     water; ``dx`` [m] spacing, run for ``t_end`` [s]. Returns the time [s], the
@@ -304,7 +304,7 @@ def sinking_cylinder_reference(t, radius: float = 1.0, rho_c: float = 1200.0):
       quick="dx = 0.1 m (20 particles across), 0.25 s: the velocity over the first 0.25 s within 20 % of the "
             "added-mass + buoyancy model (least-squares ratio), what 20 particles across meet")
 def sinking_cylinder_case(quick: bool) -> dict:
-    """Seed 004 §4.1 (004_1657bd4a51d29840.txt, Fig. 8) compares DualSPHysics with
+    """Barreiro et al. 2016, §4.1 (Fig. 8) compares DualSPHysics with
     Fekken's (2004, PhD thesis, Groningen) VOF displacement and velocity of this
     cylinder but prints no numbers, and we found no published table of Fekken's
     curves: the comparison with them over the first second is NOT made here (the
@@ -350,7 +350,7 @@ def sinking_cylinder_case(quick: bool) -> dict:
             "departure": {
                 "criterion": "the velocity over the first 0.25 s within 10 % (quick: 20 %) of an added-mass + "
                              "buoyancy model (exact at release), by the least-squares ratio",
-                "why": "seed 004 §4.1 plots Fekken's (2004) VOF displacement and velocity but prints no numbers, "
+                "why": "Barreiro et al. 2016, §4.1 plots Fekken's (2004) VOF displacement and velocity but prints no numbers, "
                        "and no published table of them was found: the comparison over the first second with "
                        "the published data is not made (the trajectory is recorded for it)",
                 "stated_measured": {"fekken_2004_velocity_error": None}, "stated_met": None,

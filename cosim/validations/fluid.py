@@ -25,33 +25,18 @@ def run_hydrostatic(dim: int, dx: float, t_end: float, depth: float = 0.2, lengt
     alpha = 0.01, Fourtakas diffusion delta = 0.1, CFL 0.2 (the defaults).
 
     Wall pressure: on the first layer of the side walls, beside the water, the average of
-    the fluid pressures near each wall particle (001_14936b82710365b2.txt Eq. 15), against
+    the fluid pressures near each wall particle (Sunara et al. 2021, Eq. 15), against
     the same reference at the wall particle's height. Reported, not yet part of the pass
     criterion: it is 1.3 % RMS at dx = 0.01 m and 3.6 % at 0.02 m (first order in dx),
     because near the free surface and the bottom corner the fluid neighbours lie on one
     side of the wall particle, so their average is biased by ~ rho g h. A linearly
     corrected (MLS) interpolation at the wall face is the remedy (open).
 
-    What limits the error (measured): particles settle to within 0.01 dx of their lattice
-    sites, and the pressure is too high by ~1 % at the bottom and at the surface, ~0.35 %
-    at three-quarter depth. The bottom part is the lattice quadrature error of the SPH
-    pressure gradient: sum_b V_b r_ab (x) grad W_ab = -(1 - 0.78 %) I for Wendland at
-    h = sqrt(2) dx (0.66 % in 3-D), so the column compresses until the weaker discrete
-    gradient carries the weight. It does not shrink with dx at fixed h/dx (h = 2 dx: 0.08 %);
-    the surface part is the kernel truncation at the free surface.
-
-    Open: at dx = 0.005 m (40 layers, 3 s) the pressure stays within 0.69 % RMS (wall
-    0.57 %) but particles start to move after ~0.9 s (up to 5.4e-3 sqrt(g H)), with and
-    without density diffusion: the square lattice rearranges. Why (session 4): at h =
-    sqrt(2) dx the square lattice under pressure is weakly unstable to long shear waves
-    (benchmarks/lattice_stiffness.py --stability), slow enough for viscosity and walls to
-    hold a 20-layer tank but not a 40-layer one. The wave set-up
-    (:data:`fluid.solver.SLOSHING_2D`, h = 2 dx, at which the lattice is stable, with
-    walls="adami"), settled for 1 s first, stays at rest there: 1.2e-4 sqrt(g H), 0.31 %
-    RMS (``run_hydrostatic(2, dx=0.005, t_end=3.0, settle_s=1.0, h_coef=2.0,
-    walls="adami")``, 56 483 steps, 115 s; 20 layers: 2.6e-4, 0.56 %); at 10 layers its
-    4 dx support's truncation at the surface costs 1.5 % RMS (the defaults: 0.76 %). In 3-D see
-    :func:`hydrostatic_3d` (what was found).
+    What limits the error: the pressure is ~1 % high at the bottom (the lattice quadrature
+    error of the SPH pressure gradient at h = sqrt(2) dx) and at the surface (kernel
+    truncation). At 40 layers the square lattice starts to move after ~0.9 s (weakly unstable
+    to long shear waves at h = sqrt(2) dx); the wave set-up (h = 2 dx, walls="adami") stays at
+    rest. The measurements: docs/validation/hydrostatic-3d_history.md.
 
     "After settling": the residual motion is dominated by the first sloshing mode (period
     T1 from linear theory, weakly damped by alpha = 0.01). The pressure error is therefore
@@ -80,7 +65,7 @@ def run_hydrostatic(dim: int, dx: float, t_end: float, depth: float = 0.2, lengt
         raise ValueError(f"t_end={t_end} s is shorter than the sloshing period {T1:.3f} s")
     n_fl = int((ps.kind == Kind.FLUID).sum())
     acc = np.zeros(n_fl)
-    # first layer of the side walls, beside the water: the wall pressure of 001 Eq. 15
+    # first layer of the side walls, beside the water: the wall pressure of Sunara et al. 2021, Eq. 15
     x = ps.pos[:, 0]
     side = (ps.kind != Kind.FLUID) & (np.isclose(x, -0.5 * dx) | np.isclose(x, length + 0.5 * dx)) \
         & (ps.pos[:, -1] > 0) & (ps.pos[:, -1] < H)
@@ -178,7 +163,7 @@ def hydrostatic_3d(quick: bool) -> dict:
     truncation bias of the surface rows plus the acoustic noise no longer damped). Fading
     the diffusion where the kernel support is cut by the free surface keeps it by the walls,
     where it does no harm, and takes it from the two rows under the surface: at rest and
-    within 1 %. Its cost in violent flow is in fluid.equations (the 2-D dam break's pressure
+    within 1 %. Its cost in violent flow is in docs/fluid_equations.md (the 2-D dam break's pressure
     noise x 4), so it is this case's set-up, not the solver's default. A 5-layer tank cannot
     meet 1 % at all: 3 of its 5 layers lie within 2h of the surface, and the kernel
     truncation there and at the walls biases the pressure 1.3-1.5 % of rho g H high.
@@ -290,50 +275,24 @@ def run_dambreak(n_a: int, T_end: float = 7.0, a: float = 0.05715, tank: float =
     thick, standing against the column, at constant speed by 2.2 a over that T.
 
     Set-up: Martin & Moyce (1952, Phil. Trans. R. Soc. A 244, 312), n^2 = 2, a = 2.25 in =
-    0.05715 m, in a channel long enough for their front to reach Z = 14 (their Fig. 3). The
-    model has no physical scale (c0 = 10 sqrt(2 g 2a); h, dt scale with a): a = 0.146 m,
-    Koshizuka & Oka's column, gives the same T-Z history to 12 digits. Defaults otherwise:
+    0.05715 m, a channel long enough for their front to reach Z = 14 (their Fig. 3). The
+    model has no physical scale (c0 = 10 sqrt(2 g 2a); h, dt scale with a). Defaults otherwise:
     Wendland h = sqrt(2) dx, alpha = 0.01, Fourtakas delta = 0.1, CFL 0.2, dynamic
     boundaries; the column starts at rest with the hydrostatic Tait density.
 
     Scalings (refdata SOURCE.txt; every series is for n^2 = 2, height 2a): T = n t sqrt(g/a)
     = t sqrt(2 g / a), Z = x_front / a from the back wall; residual height at the back wall
-    H = h / (2a) against tau = t sqrt(g/a) = T / sqrt(2). Martin & Moyce's Table 2
-    (tabulated) and Fig. 3 (a = 2.25 in, digitised) agree within 2.4 % where they overlap;
-    the DualSPHysics file labelled "Koshizuka & Oka 1996" holds Table 2's fifteen marks with
-    the time in seconds for a 1 m column (t sqrt(2 g 1 m) = T within 1.5 %, Z within 2 %;
-    both checked in tests/test_fluid_dambreak.py).
+    H = h / (2a) against tau = t sqrt(g/a) = T / sqrt(2). Martin & Moyce's Table 2 and Fig.
+    3 agree within 2.4 % where they overlap (tests/test_fluid_dambreak.py).
 
     Front (:func:`dambreak_front`): the edge of the fluid connected to the column along x,
-    ended by the first gap wider than the kernel support, + dx/2. From 20 particles across
-    the column up no particle ever left it (``front_detached_particles_max`` = 0): it is the
-    farthest particle, and a front at a minimum layer thickness of 0.02 a moves the RMS
-    errors by 0.3 points at most. The error that grew with resolution (7.8, 12.2, 14.7,
-    16.0 % RMS against Fig. 3 over T <= 3 at 10, 20, 40, 80 particles) is not spray. At 10
-    particles the tip layer is one or two particles thick after T = 6 and tears (49
-    particles beyond a 2h gap at T = 7): the late front is not resolved there.
-
-    What the data show (80 particles against Table 2): the computed front passes the first
-    mark (Z = 1.11, T = 0.41) with the experiment and every later mark, Z = 1.22 to 3.67, a
-    nearly constant 0.25 +- 0.03 earlier in T. The whole difference is built between T =
-    0.41 and 0.84, where the measured front moves at a constant 0.26 per unit T: no
-    acceleration, whereas the computed toe, released at once, accelerates. Afterwards the
-    speeds agree (from Z = 1.44 to 3.67: +3.9 %). The computed front converges (first order
-    in dx) to one that leads the experiment's clock by about 0.3 in T, while the back-wall
-    height over the first half of the collapse agrees with that clock (1.2 % RMS at 40 and
-    80 particles). How Martin & Moyce released the column is not in refdata: a gate lifted
-    over T = 0.25 reconciles front and height at 20 particles (``gate_T_open``, a
-    diagnostic), so the judged criterion fits the experiment's time origin instead (below).
-    Published VOF results for this column shift its clock likewise (interFoam agrees to
-    3.0 % after +0.175 in T; Lethe adds the same ``time_correction = 0.175``); this model, with
-    nearly free-slip walls and no air, leads by more (0.29 at 80 particles). The evidence,
-    the sources and the gates tried: docs/validation/dambreak-2d_history.md.
-
-    Koshizuka & Oka (1996, L = 0.146 m, the PySPH digitisation): their front moves at 0.81
-    of Martin & Moyce's speed between Z = 1.5 and 3.0 (0.96 against 1.18 per unit T) at the
-    same aspect ratio, so no model is within 5 % of both, and the file DualSPHysics ships
-    under their name is Martin & Moyce's Table 2. Reported, as measured and after its own
-    fitted offset (4.4, 4.6, 5.2, 5.3 % at 10 ... 80 particles), not judged.
+    ended by the first gap wider than the kernel support, + dx/2. The computed front converges
+    (first order in dx) to one that leads the experiment's clock by about 0.3 in T, built
+    during the release (T = 0.41-0.84), where the measured front does not accelerate: how Martin
+    & Moyce released the column is not known, so the judged criterion fits the experiment's time
+    origin (published VOF results shift it likewise). Koshizuka & Oka (1996) is reported, not
+    judged. The evidence, the sources, the gates and the solver levers tried:
+    docs/validation/dambreak-2d_history.md.
 
     Judged (``passed``): Martin & Moyce, Table 2 from its second mark (T >= 0.84, the end
     of the release phase, :data:`T_RELEASE`) and beyond it Fig. 3 (T > 3.38) up to T_end,
@@ -343,22 +302,11 @@ def run_dambreak(n_a: int, T_end: float = 7.0, a: float = 0.05715, tank: float =
     ``front_rms_rel_err_{mm1952 (Fig. 3), mm1952_table2, mm1952_small (a = 1.125 in),
     ko1996}``.
 
-    Solver levers at 20 particles, one at a time (alpha, c0, laminar viscosity, h, density
-    diffusion, integrator; the history file): every lever that slows the front adds
-    numerical dissipation, and the ones that slow it most (alpha, c0) spoil the collapse;
-    real water viscosity does nothing at this scale (Re = a sqrt(g a) / nu = 43 000).
-    Nothing on the solver side is wrong: it converges to the instantaneous-release answer.
-
-    Open: after the first half of the collapse (H < 0.5, tau = 2.2 to 4.2) the residual
-    height is computed 6 to 24 % above Table 6 (``height_rms_rel_err_mm1952_late``: 13.9,
-    12.1, 14.6, 13.3 % at 10, 20, 40, 80 particles), not converging; part of the excess is a
-    layer held by the wall through the artificial viscosity between fluid and walls
-    (``alpha_wall = 0``: 12.1 -> 8.4 % at 20 particles); the remaining 8 % is not explained
+    Open: the late residual height (H < 0.5) is computed 6-24 % above Table 6, not converging
     (the history file).
 
-    ``p_noise_rms`` is the particle-scale pressure noise (:func:`_pressure_noise`) averaged
-    over T = 1, 2, 3, in units of rho0 g 2a: what MLS re-initialisation (``mls_every``) is
-    for.
+    ``p_noise_rms``: the particle-scale pressure noise (:func:`_pressure_noise`) averaged over
+    T = 1, 2, 3, in units of rho0 g 2a (what MLS re-initialisation, ``mls_every``, is for).
     """
     from fluid.geometry import assemble, block, tank_walls
 
@@ -475,9 +423,12 @@ def dambreak_2d(quick: bool) -> dict:
     residual height at the back wall against Martin & Moyce's tables and Fig. 3 (see
     :func:`run_dambreak`).
 
-    Measured trade (error and cost; T_end = 7, tank 12 a; wall time of one process on this
-    2-core machine shared with other jobs; ``python benchmarks/dambreak_front.py --what
-    resolution --fine``):
+    The judged error settles near 2-3 % from 20 particles on, the fitted offset converging to
+    about 0.3; the measured trade (``python benchmarks/dambreak_front.py --what resolution
+    --fine``): docs/validation/dambreak-2d_history.md.
+
+    Measured trade (error and cost; T_end = 7, tank 12 a; wall time of one process;
+    ``python benchmarks/dambreak_front.py --what resolution --fine``):
 
     ====  =========  =====  ======  ==============  ==============  =======  ======  =======
     n_a   particles  steps  wall s  as measured,    as measured,    fitted   judged  H, 1st
@@ -488,14 +439,6 @@ def dambreak_2d(quick: bool) -> dict:
     40    5378       15262  58      11.8 %          12.1 %          0.255    2.2 %   1.2 %
     80    17138      30425  367     13.2 %          13.2 %          0.285    2.6 %   1.2 %
     ====  =========  =====  ======  ==============  ==============  =======  ======  =======
-
-    (* the tip layer tears at 10 particles.) The fitted offset converges (increments 0.105,
-    0.05, 0.03) to about 0.3; the judged error settles near 2-3 %: from 40 to 80 particles
-    the pointwise errors move less than half as much as from 20 to 40, the late Fig. 3 points
-    (T = 5.1-6.8, the thinnest surge, where the missing bed friction would act most) ending
-    1-4 % ahead. Its largest point (5.6, 6.6, 6.9 %) is Fig. 3's T = 4.03, on either side
-    of which the digitised front moves at 1.18 and 2.44 per unit T, the latter above
-    Ritter's bound of 2: a digitising slip.
     """
     out = run_dambreak(20 if quick else 40)
     out["stated_tolerances"] = {"front_rms_rel_err_mm1952": 0.05, "front_rms_rel_err_mm1952_table2": 0.05}

@@ -1,5 +1,5 @@
 """Linear (potential-flow) sloshing of a rigid tank under horizontal base acceleration: the
-reference of the long-period cases of seed 001 (001_14936b82710365b2.txt §3.1-3.3, T_p =
+reference of the long-period cases of Sunara et al. 2021 (§3.1-3.3, T_p =
 1.0 s and 0.7 s), where the paper shows pressures but no numbers.
 
 Set-up. A tank of depth ``h`` [m] (still surface z = 0, bottom z = -h) moves along x with
@@ -17,29 +17,26 @@ surface amplitude eta_n(t) (eta = sum_n eta_n S_n) obeys
     eta_n'' + w_n^2 eta_n = -(w_n^2 b_n / g) a(t),       w_n^2 = g k_n tanh(k_n h),
 
 (a constant a gives eta_n = -b_n a / g: the surface tilted to -a x / g), and the pressure
-
-    p = -rho g z + rho sum_n (g eta_n + b_n a) psi_n - rho a x.
+``p = -rho g z + rho sum_n (g eta_n + b_n a) psi_n - rho a x``.
 
 The last two terms together are the impulsive pressure (zero at the surface, Westergaard's
-finite-tank series at a wall); the g eta_n terms the convective (sloshing) pressure.
-Housner's mechanical analogue (TID-7024) keeps the first mode with an approximate w_1
-(refdata analytic_hydrodynamics/sloshing_frequencies_housner.csv gives both).
+finite-tank series at a wall); the g eta_n terms the convective (sloshing) pressure. Housner's
+analogue (TID-7024) keeps the first mode with an approximate w_1 (refdata
+analytic_hydrodynamics/sloshing_frequencies_housner.csv gives both).
 
 Tanks (refdata analytic_hydrodynamics/SOURCE.txt, C):
 
-- rectangular, length L along x, x measured from the centre: S_n = sin(k_n x),
-  k_n = (2n - 1) pi / L, b_n = (4 / L) (-1)^(n+1) / k_n^2 (the odd modes; the even ones are
-  not excited by a horizontal motion).
+- rectangular, length L along x, x from the centre: S_n = sin(k_n x), k_n = (2n - 1) pi / L,
+  b_n = (4 / L) (-1)^(n+1) / k_n^2 (the odd modes; a horizontal motion excites no even one).
 - vertical cylinder, radius R, polar angle theta from +x: S_n = J1(k_n r) cos(theta),
   k_n = xi_n / R with J1'(xi_n) = 0, b_n = 2 R / ((xi_n^2 - 1) J1(xi_n)) (the Dini series of r).
-- 2-D tank with its right side inclined beta from the vertical (001 §3.2): no closed form;
-  the modes psi_n of :func:`cosim.validations.tank_potential.sloshing_modes` (P1 FEM),
-  b_n = S_n^T M_s x (M_s the surface's mass matrix, S_n^T M_s S_n = 1), x measured from
-  the middle of the still surface; psi_n is no longer a product of S_n and a depth factor.
+- 2-D tank with its right side inclined beta from the vertical (Sunara et al. 2021, §3.2): no
+  closed form; the P1 FEM modes psi_n of :func:`cosim.validations.tank_potential.sloshing_modes`,
+  b_n = S_n^T M_s x (M_s the surface's mass matrix, S_n^T M_s S_n = 1, x from the surface's middle).
 
-The excitation here is the paper's, a0 sin(w t) from rest (001 Fig. 3), held for
-``t_stop`` [s] and zero after it: eta_n in closed form, then free oscillation. No damping:
-linear inviscid theory.
+The excitation is the paper's, a0 sin(w t) from rest (Sunara et al. 2021, Fig. 3), held for
+``t_stop`` [s] and zero after it: eta_n in closed form, then free oscillation (linear,
+inviscid: no damping).
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""The long-period excitations of seed 001 (001_14936b82710365b2.txt §3.1 Fig. 7-8, §3.3
+"""The long-period excitations of Sunara et al. 2021 (§3.1 Fig. 7-8, §3.3
 Fig. 18, §3.2 Fig. 13): the rectangular tank (3.0 m long, 1.0 m wide, water 1.0 m) and the
 same tank with its right side 45 deg from the vertical at T_p = 1.0 s, and the cylinder
 (D = 2 m, water 0.6 m) at T_p = 0.7 s, base acceleration 0.5 g sin(2 pi t / T_p)
@@ -174,7 +174,7 @@ def run_long_period(shape: str = "rectangular", dx: float = 0.05, dim: int = 2, 
     water is not at rest against the slope, none for the others).
 
     c0 [m/s]: 40 m/s puts the acoustic period 4 h / c0 (0.1 s at h = 1 m) at a tenth of
-    T_p, as the paper's c_p does for its short periods (001 Eq. 17; the compressible excess
+    T_p, as the paper's c_p does for its short periods (Sunara et al. 2021, Eq. 17; the compressible excess
     of the impulsive pressure is then 1 / sqrt(1 - (4 h / (c0 T_p))^2) - 1 = 0.5 %), and is
     ~30 times the largest sloshing speed. The rest of the fluid's set-up is the scenes'
     "sloshing" one (:func:`cosim.scene.setup.settings`: h = 2 dx and walls carrying the
@@ -185,7 +185,7 @@ def run_long_period(shape: str = "rectangular", dx: float = 0.05, dim: int = 2, 
     points on the tank's centre line along x, 2 h from the walls; the run-up at each wall
     (the top of the fluid within one dx of the wall, + dx/2, the median over the columns
     along the wall); the total pressure at points on each wall's face every dx up to the
-    still level (:func:`cosim.validations.sloshing.face_pressure`, 001 Eq. 15 carried to
+    still level (:func:`cosim.validations.sloshing.face_pressure`, Sunara et al. 2021, Eq. 15 carried to
     the face). Each against linear theory at the same points. The first mode's amplitude
     is the least-squares fit of the gauges to the first modes (:func:`gauge_mode_basis`); its
     free frequency (:func:`free_frequency`) over the free sloshing. Returned: the metrics,
@@ -359,7 +359,7 @@ def _compare(rec: dict, modes, shape: str, tank: dict, a0: float, period: float,
 LINEAR_TOLERANCES = {"gauge_rms_rel_forced": 0.10, "omega1_free_rel_err": 0.02, "wall_pressure_rms_rel": 0.03}
 #: the quick variant (dx = 0.1 m, 10 rows over the depth): first-order errors of ~dx / h
 QUICK_TOLERANCES = {"gauge_rms_rel_forced": 0.15, "omega1_free_rel_err": 0.03, "wall_pressure_rms_rel": 0.04}
-#: the target column of docs/VALIDATION.md's row (001 gives figures, no numbers: ours)
+#: the target column of docs/VALIDATION.md's row (Sunara et al. 2021 give figures, no numbers: ours)
 LONG_PERIOD_TARGET = ("at 0.05 g, each tank: the surface at 25 gauges within 10 % RMS of the linear peak while "
                       "forced, the first mode's free frequency within 2 % of linear theory, the total wall "
                       "pressure within 3 % RMS of rho g h; at 0.5 g reported")
@@ -369,7 +369,7 @@ PAPER_A0 = 0.5 * G
 
 def long_period_plots(runs: dict) -> dict:
     """The report's plots: per tank, the run-up at the left wall and the first mode's
-    amplitude against linear theory in both regimes, and the paper's figure (001 Fig. 7,
+    amplitude against linear theory in both regimes, and the paper's figure (Sunara et al. 2021, Fig. 7,
     13, 18): the total pressure up both walls at times of the first period at 0.5 g."""
     out = {}
     for tank, regimes in runs.items():
@@ -390,108 +390,29 @@ def long_period_plots(runs: dict) -> dict:
             for i, (t, p) in enumerate(rec["profiles"].items()):
                 curves[f"t = {t} s, SPH"] = {"x": p[f"{side}_kpa"], "y": z, "style": f"C{i}o"}
                 curves[f"t = {t} s, linear"] = {"x": p[f"{side}_linear_kpa"], "y": z, "style": f"C{i}-"}
-            out[f"{tank}, 0.5 g: total pressure on the {side} wall (001 Fig. 7/13/18)"] = {
+            out[f"{tank}, 0.5 g: total pressure on the {side} wall (Sunara et al. 2021, Fig. 7/13/18)"] = {
                 "xlabel": "total pressure [kPa]", "ylabel": "height above the bottom [m]", "curves": curves}
     return out
 
 
-@case("long-period", "The long periods of seed 001 (rectangular and 45 deg tanks at T_p = 1.0 s, the cylinder at "
+@case("long-period", "The long periods of Sunara et al. 2021 (rectangular and 45 deg tanks at T_p = 1.0 s, the cylinder at "
       "0.7 s): sloshing against linear potential theory (every mode; Housner's first mode beside it), at 0.05 g "
       "where it holds and at the paper's 0.5 g where it does not",
       target=LONG_PERIOD_TARGET,
       quick="the 2-D section of the rectangular tank at dx = 0.1 m (10 rows): 15 %, 3 %, 4 % (first-order errors "
             "of ~dx/h); 0.5 g reported")
 def long_period(quick: bool) -> dict:
-    """001 §3.1 (Fig. 7-8), §3.2 (Fig. 13), §3.3 (Fig. 18): see :func:`run_long_period`.
+    """Sunara et al. 2021, §3.1 (Fig. 7-8), §3.2 (Fig. 13), §3.3 (Fig. 18): see :func:`run_long_period`.
     Three periods of forcing, three first-mode periods free. Full: the 2-D sections of the
     rectangular and the 45 deg tank at dx = 0.05 m, the whole 3-D rectangular tank at
     dx = 1/13 m (13 rows: dx divides the depth and length) and the cylinder at dx = 0.06 m
     (10 rows), the coarsest dx at which each 3-D tank meets its three targets; quick: the
     rectangular section at dx = 0.1 m.
 
-    Measured (AMD EPYC, 2 cores, loaded: CPU seconds, one thread;
-    ``run_long_period(shape, dx=, dim=, a0=)`` with this case's settings, one run each; the
-    full variant's four tanks (2-D at 0.05 m, 3-D at 1/13 and 0.06 m) from its record of
-    2026-11-26, the whole 45 deg tank's rows 2026-11-26 (``benchmarks/long_period_trade.py
-    inclined --dim 3``, 5-6 jobs on the 2 cores), the other rows 2026-11-25; figures of
-    the full runs in docs/validation/long-period/). At 0.05 g, judged: "forced"
-    the gauges' RMS while shaken / linear peak, "w1" the free first mode against linear
-    theory, "p" the wall pressure's RMS / rho g h; "whole" the gauges over the whole
-    record (the free sloshing drifts in phase by the w1 error and is damped):
-
-    ====================  =====  =====  ======  ======  ======  =====  =====  =====
-    tank                  dx     part-  forced  w1      p       whole  lin.   CPU
-                          [m]    icles                                 peak   [s]
-    ====================  =====  =====  ======  ======  ======  =====  =====  =====
-    rectangular 2-D       0.10   498    0.092   +1.1 %  0.020   0.21   0.12   11
-    rectangular 2-D       0.05   1578   0.033   +0.55 % 0.011   0.10   0.12   40
-    rectangular 2-D       0.025  5538   0.021   +0.27 % 0.009   0.06   0.12   138
-    inclined 45 deg 2-D   0.10   564    0.094   -0.84 % 0.020   0.22   0.08   10
-    inclined 45 deg 2-D   0.05   1810   0.042   +0.37 % 0.012   0.14   0.08   39
-    inclined 45 deg 2-D   0.025  6406   0.032   +0.24 % 0.010   0.09   0.08   205
-    rectangular 3-D       1/13   15768  0.080   +1.66 % 0.018   0.18   0.12   1000
-    inclined 45 deg 3-D   0.125  6388   0.188   +0.67 % 0.033   0.28   0.08   314
-    inclined 45 deg 3-D   0.10   10296  0.131   -0.66 % 0.025   0.23   0.08   693
-    inclined 45 deg 3-D   1/13   18421  0.090   -0.35 % 0.020   0.19   0.08   1508
-    cylinder 3-D          0.06   18044  0.098   +0.43 % 0.014   0.23   0.05   1112
-    ====================  =====  =====  ======  ======  ======  =====  =====  =====
-
-    (lin. peak: linear theory's largest run-up at a wall [m]; w1 of linear theory 2.832,
-    2.172 (FE) and 3.807 rad/s; Housner's 2.846 (+0.50 %) and 3.800 (-0.17 %); the sloped
-    tank has none.) The full variant's record (2026-11-26, ``cosim validate long-period``,
-    NUMBA_NUM_THREADS=1): passed, 5270 CPU-s in all: the 2-D sections 40 + 29 and 39 + 41
-    (0.05 g + 0.5 g; numba's compile in the first), the 3-D rectangle 1000 + 1492, the
-    cylinder 1112 + 1517. In the 2-D sections the forced error falls 2.2-2.8 times from
-    dx 0.1 to 0.05 m and 1.3-1.6 times from 0.05 to 0.025 m: below first order at the
-    finest, where what linear theory leaves out (second order, the short modes' damping)
-    takes the larger share. The whole 45 deg tank (3-D; not in the full variant) follows its
-    2-D section: at 13 rows it meets the three targets (forced 0.090, w1 -0.35 %, p 0.020;
-    the section's 0.094 / -0.84 % / 0.020 at dx 0.1 m, 0.042 / +0.37 % / 0.012 at 0.05 m),
-    as the 3-D rectangle does at 1/13 m (and, as it, misses forced at 10 rows); from 8 to 13
-    rows forced falls 2.1 times and p 1.7 times; its first mode does not run fast as the
-    rectangle's; its forced error lies across the modes (1: 0.032, 2-3: 0.030, 4-5: 0.043,
-    beyond the five-mode fit 0.070: ``benchmarks/long_period_modes.py``); its largest
-    run-up reading is the same drop at the vertical wall (-0.112 m at 2.12 s, linear
-    -0.059), its rises 0.054 and 0.063 m at the vertical wall and the slope against linear
-    0.054 and 0.064. Why ours departs from linear theory
-    (``benchmarks/long_period_modes.py``): the shorter modes run slow and are damped as a
-    free-surface wave is by the artificial viscosity's equivalent nu = alpha h c0 /
-    (2 (d + 2)) (decay 2 nu k^2, Lamb 1932 §348); the cylinder's third mode lies 1.9 %
-    above the forcing, so linear theory, undamped, grows it to k a = 0.41, outside its own
-    range: the cylinder's forced target measures that mode, kept as stated; the symmetric
-    (second-order) modes carry the rest; the first mode runs fast in the rectangle (not
-    from the depth); the largest |level - still| at a wall is a drop of about one dx at the
-    wall the tank first pulls away from. The figures by mode, the 3-D tanks at three
-    resolutions (how the full variant's dx were chosen) and the kernel tried before:
-    docs/validation/long-period_history.md.
-
-    At the paper's 0.5 g (reported; dx = 0.05 m in 2-D): the surface leaves linear theory
-    by 20 % of the linear peak at 1.38 s (rectangular) and 0.32 s (45 deg), within the
-    first or second period: linear theory's own run-up is 0.72 m while shaken and 1.22 m
-    after (0.64 / 0.82 m on the slope) on 1.0 m of water, k A ~ 0.75. Ours climbs higher
-    than linear while shaken at the vertical wall (0.93 m against 0.72; the crest steepens
-    and runs up), lower on the slope (0.61 against 0.64), then breaks: the run-up falls in
-    jets instead of rising to linear theory's 1.2 m, 27 and 16 particles are thrown over
-    the 1.5 m walls (out of 1578 and 1810), and the wall pressure leaves linear theory by
-    0.42 and 0.18 rho g h RMS. The free first mode after it runs -0.77 % (rectangular) and
-    +5.1 % (45 deg) from linear theory: the rectangle's depth ratio h/L = 0.33 lies next to
-    the critical depth 0.3368 where the amplitude correction of the frequency changes sign
-    (Tadjbakhsh & Keller 1960; it is small there), the slope's does not. The cylinder at
-    0.5 g, Tp = 0.7 s (3-D, dx = 0.06 m): leaves linear theory at 0.90 s, run-up 0.46 m
-    while shaken against 0.34 m, free first mode -0.04 %; 1208 particles (6.7 %) thrown
-    over the 1.0 m wall and a wall pressure 23.6 rho g h RMS from linear theory. The whole
-    rectangular tank at 0.5 g (3-D, dx = 1/13 m): leaves linear theory at 1.20 s, run-up
-    0.97 m while shaken (0.93 m in 2-D), free first mode -2.18 %; 618 particles (3.9 %)
-    thrown out, 4.9 m/s at the end, and a wall pressure 8.3 rho g h RMS from linear
-    theory. Both run to the end; the wall pressure's RMS grows as dx shrinks (the coarser
-    runs' figures in the history): slamming spikes, which neither resolution resolves (the
-    record does not keep the pressure series to show where). The whole 45 deg tank at 0.5 g
-    (3-D, dx = 0.125 m only, 419 CPU-s, 2026-11-26): leaves linear theory at 0.52 s (its
-    section at 0.05 m: 0.32 s); run-up while shaken 0.61 m at the vertical wall (linear
-    0.54) and 0.53 m on the slope (linear 0.64; the section 0.61), then breaks (0.04 and
-    0.15 m after the shaking against linear theory's 0.52 and 0.82 m); free first mode
-    -5.45 % (the section +5.1 %); 118 of its 1784 water particles (6.6 %) thrown out, 4.5
-    m/s at the end, wall pressure 0.25 rho g h RMS from linear theory (the section 0.18).
+    At 0.05 g each tank meets its three targets at the dx above; at the paper's 0.5 g the
+    surface leaves linear theory within the first or second period and breaks (reported, not
+    judged). The measured table, the full variant's record, why ours departs from linear
+    theory and the 0.5 g runs: docs/validation/long-period_history.md.
     """
     plan = ({"rectangular 2-D": ("rectangular", 2, 0.1)} if quick else
             {"rectangular 2-D": ("rectangular", 2, 0.05), "inclined 45 deg 2-D": ("inclined", 2, 0.05),

@@ -1,5 +1,14 @@
-"""The SPH near field inside an incident sea (:mod:`fluid.nearfield`): regular waves through
-a box with no body, read at gauges across it against the sea's own elevation."""
+"""The SPH near field inside an incident sea (:mod:`fluid.nearfield`): waves through a box
+with no body, read at gauges across it against the sea's own elevation at the same points
+and times.
+
+What is judged: for regular waves the first-harmonic height and phase at every gauge against
+the sea's; for an irregular sea the significant height ``Hs = 4 sqrt(m0)`` and the peak
+period of each gauge's record against those of the sea's elevation there, and the gauge's
+spectrum against the sea's over 0.7-1.5 fp (both by Welch's method with the same segments,
+so the sampling scatter of one realisation is common to both); for every sea the drift of
+the box's mean level over the run.
+"""
 
 from __future__ import annotations
 
@@ -8,61 +17,116 @@ import time
 
 import numpy as np
 
+from cosim.validation import case
 from cosim.validations.wave_propagation import harmonics
 from cosim.validations.waves import G
 
+#: the near-field case's water and waves: 0.3 m deep, regular T = 1.2 s (kd = 1.05), H = 6 cm
+#: (H/L = 0.033, a third of Miche's limit); the JONSWAP sea Hs = 4 cm, Tp = 1.2 s
+NF_DEPTH, NF_PERIOD, NF_HEIGHT, NF_HS = 0.3, 1.2, 0.06, 0.04
+#: H / dx of the quick run and of the full run's three spacings
+NF_QUICK_H_OVER_DX, NF_H_OVER_DX = 5, (5, 10, 20)
+#: targets: height 5 %, phase 5 % of a period, mean-level drift 1 % of the depth, Hs and Tp 5 %,
+#: spectrum 10 % over 0.7-1.5 fp
+NF_HEIGHT_TOL, NF_LAG_TOL, NF_DRIFT_TOL, NF_HS_TOL, NF_SPECTRUM_TOL = 0.05, 0.05, 0.01, 0.05, 0.10
 
-def nearfield_waves(dx: float, depth: float, H: float, T: float, length: float, zone: float, periods: float,
-                    theory: str = "linear", rate_per_omega: float = 2.0, fit_periods: float = 3.0,
-                    gauges: int = 9, drift: bool = True, progress: bool = False, **config) -> dict:
-    """Regular waves (``fluid.waves.RegularWave``, ``theory``) of height ``H`` [m], period
-    ``T`` [s] in ``depth`` [m] of water through a 2-D near-field box ``length`` [m] long at
-    spacing ``dx`` [m], with relaxation zones ``zone`` [m] wide relaxing at
-    ``rate_per_omega`` wave frequencies at the walls, run ``periods`` periods (the sea faded
-    in over two). ``gauges`` gauges spread over the water between the zones. Returns per
-    gauge the first-harmonic height and phase over the sea's [m, periods] over the last
-    ``fit_periods`` periods, the mean level [m] over each period (its drift), the lost
-    fluid particles and the run's cost. ``config``: FluidConfig settings."""
+
+def run_box(sea, dx: float, length: float, zone: float, duration: float, *, width: float | None = None,
+            rate_per_omega: float = 2.0, settle: float = 0.0, gauges: int = 9, samples_per_period: int = 32,
+            drift: bool = True, progress: bool = False, **config) -> dict:
+    """The incident ``sea`` (:mod:`fluid.waves`, still water at ``sea.level = sea.depth``, the
+    seabed at z = 0) through a near-field box ``length`` [m] long at spacing ``dx`` [m] (2-D;
+    3-D a channel ``width`` [m] wide, no side zones, gauges on its centre line) with relaxation zones ``zone`` [m]
+    wide relaxing at ``rate_per_omega`` times the sea's (peak) frequency at the walls, for
+    ``duration`` [s] after ``settle`` [s] of damped relaxation at rest (``Fluid.settle``).
+    Returns the gauges' x [m], the times [s], the elevations there [m] (rows: times), the
+    sea's elevations at the same points and times, the mean level over the box (clear of
+    the end walls' excursion) [m] at each time, the still level the settled water started
+    from (relative to the sea's) [m], the lost fluid particles and the run's cost.
+    ``config``: FluidConfig settings."""
     from fluid.geometry import assemble, set_hydrostatic
     from fluid.nearfield import FAR_END_GROUP, NEAR_END_GROUP, following_wall, near_field_box
     from fluid.probes import surface_elevation
     from fluid.solver import Fluid, FluidConfig
-    from fluid.waves import RegularWave
 
-    sea = RegularWave(H, T, depth, theory=theory, ramp=2.0 * T, level=depth, g=G)
+    dim = 2 if width is None else 3
+    depth = sea.depth
     config.setdefault("u_max", math.sqrt(G * depth))
-    cfg = FluidConfig(dim=2, dx=dx, g=G, **config)
-    box = near_field_box(dx, 0.0, length, sea, 1.6 * depth, zone, layers=math.ceil(2.0 * cfg.h_coef - 1e-9))
-    ps = assemble(2, dx, cfg.rho0, box.fluid, box.walls).particles
+    cfg = FluidConfig(dim=dim, dx=dx, g=G, **config)
+    box = near_field_box(dx, 0.0, length, sea, 1.6 * depth, zone, layers=math.ceil(2.0 * cfg.h_coef - 1e-9),
+                         y=None if width is None else (0.0, width))
+    ps = assemble(dim, dx, cfg.rho0, box.fluid, box.walls).particles
     set_hydrostatic(ps, depth, cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g)
     fluid = Fluid(cfg, ps)
     for group in (NEAR_END_GROUP, FAR_END_GROUP):
         fluid.prescribe_motion(group, following_wall(sea))
-    omega = 2.0 * math.pi / T
+    omega = 2.0 * math.pi / sea.peak_period
     fluid.zones.extend(box.zones(sea, rate_per_omega * omega, drift=drift))
     gx = np.linspace(zone, length - zone, gauges)
-    gall = np.linspace(0.5 * dx, length - 0.5 * dx, 41)  # the mean level over the whole box
+    kd = float(sea.components.k.min()) * depth
+    reach = float(sea.components.amplitude.sum()) / math.tanh(kd) + dx  # clear of the end walls' excursion
+    gall = np.linspace(reach, length - reach, max(8, int(length / dx) // 2))
+    xs = np.concatenate([gx, gall])
+    points = xs if dim == 2 else np.column_stack([xs, np.full(xs.size, 0.5 * width)])
+    cpu0 = time.process_time()
     fluid.initialize(0.0)
-    every = T / 32.0
-    n = int(round(periods * 32))
-    ts, eta, cpu0 = [], [], time.process_time()
-    for i in range(1, n + 1):
-        t = i * every
+    if settle > 0:
+        fluid.settle(settle)
+    start = surface_elevation(fluid, points)[len(gx):].mean() - depth
+    every = sea.peak_period / samples_per_period
+    n = int(round(duration / every))
+    ts, eta = np.arange(1, n + 1) * every, np.empty((n, xs.size))
+    for i, t in enumerate(ts):
         fluid.advance(fluid.t, t - fluid.t)
-        ts.append(t)
-        eta.append(surface_elevation(fluid, np.concatenate([gx, gall])) - depth)
-        if progress and i % 32 == 0:
+        eta[i] = surface_elevation(fluid, points) - depth
+        if progress and (i + 1) % (4 * samples_per_period) == 0:
             print(f"  t = {t:6.2f} s, {fluid.counters.steps} steps", flush=True)
     cpu = time.process_time() - cpu0
-    ts, eta_all = np.array(ts), np.array(eta)
-    eta, box_eta = eta_all[:, :len(gx)], eta_all[:, len(gx):]
-    fit = ts > ts[-1] - fit_periods * T + 1e-9
-    a = harmonics(ts[fit], eta[fit], omega)
-    a_sea = harmonics(ts[fit], sea.elevation(gx[None, :], 0.0, ts[fit][:, None]), omega)
-    ratio = a / a_sea
-    per = int(round(T / every))
-    mean_level = eta[: (len(ts) // per) * per].reshape(-1, per, len(gx)).mean(axis=(1, 2))
-    box_level = box_eta[: (len(ts) // per) * per].reshape(-1, per, box_eta.shape[1]).mean(axis=(1, 2))
-    return {"gauges_m": gx, "H1_over_H": np.abs(ratio), "lag_periods": -np.angle(ratio) / (2.0 * math.pi),
-            "mean_level_m": mean_level, "box_level_m": box_level, "particles": int(ps.n), "steps": int(fluid.counters.steps), "cpu_s": cpu,
-            "removed": int(sum(fluid.counters.removed.values())), "wavelength_m": sea.wavelength}
+    return {"gauges_m": gx, "t": ts, "eta": eta[:, :len(gx)],
+            "sea_eta": sea.elevation(gx[None, :], 0.5 * (width or 0.0), ts[:, None]),
+            "box_level_m": eta[:, len(gx):].mean(axis=1), "settled_level_m": float(start),
+            "particles": int(ps.n), "fluid_particles": int(len(box.fluid)), "steps": int(fluid.counters.steps),
+            "cpu_s": cpu, "removed": int(sum(fluid.counters.removed.values()))}
+
+
+def level_drift(r: dict, period: float, ramp: float) -> float:
+    """The box's mean level [m] over the last whole period of the run less that over the
+    first whole period after the sea's ``ramp`` [s]: its drift over the run."""
+    ts, lev = r["t"], r["box_level_m"]
+    first = (ts > ramp) & (ts <= ramp + period + 1e-9)
+    last = ts > ts[-1] - period + 1e-9
+    return float(lev[last].mean() - lev[first].mean())
+
+
+def regular_metrics(r: dict, period: float, fit_periods: float = 3.0) -> dict:
+    """First-harmonic height ratio and lag [periods] of each gauge against the sea's at the
+    same points, over the run's last ``fit_periods`` periods."""
+    ts = r["t"]
+    fit = ts > ts[-1] - fit_periods * period + 1e-9
+    omega = 2.0 * math.pi / period
+    ratio = harmonics(ts[fit], r["eta"][fit], omega) / harmonics(ts[fit], r["sea_eta"][fit], omega)
+    return {"H1_over_H": np.abs(ratio), "lag_periods": -np.angle(ratio) / (2.0 * math.pi)}
+
+
+def irregular_metrics(r: dict, tp: float, ramp: float) -> dict:
+    """Per gauge, after the sea's ``ramp`` [s]: ``Hs = 4 sqrt(m0)`` and the peak period of
+    the record over the sea's there, and the worst ratio of the record's Welch spectrum to
+    the sea's over 0.7-1.5 fp (segments of 8 peak periods, Hann windows overlapping by
+    half: about 2 (n_segments) degrees of freedom per band each, but the same realisation in
+    both, so the ratio's scatter is what the fluid adds)."""
+    from scipy.signal import welch
+
+    ts = r["t"]
+    keep = ts > ramp
+    fs = 1.0 / (ts[1] - ts[0])
+    nper = min(int(round(8 * tp * fs)), int(keep.sum()))
+    f, s_sph = welch(r["eta"][keep], fs=fs, nperseg=nper, axis=0)
+    _, s_sea = welch(r["sea_eta"][keep], fs=fs, nperseg=nper, axis=0)
+    fp = 1.0 / tp
+    band = (f >= 0.7 * fp) & (f <= 1.5 * fp)
+    df = f[1] - f[0]
+    hs = 4.0 * np.sqrt(s_sph[f > 0].sum(axis=0) * df) / (4.0 * np.sqrt(s_sea[f > 0].sum(axis=0) * df))
+    tp_ratio = f[np.argmax(s_sea, axis=0)] / f[np.argmax(s_sph, axis=0)]
+    return {"Hs_over_sea": hs, "Tp_over_sea": tp_ratio,
+            "spectrum_worst": np.abs(s_sph[band] / s_sea[band] - 1.0).max(axis=0),
+            "f_Hz": f, "S_sph": s_sph.mean(axis=1), "S_sea": s_sea.mean(axis=1)}

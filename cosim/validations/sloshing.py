@@ -38,7 +38,7 @@ def westergaard_series(depth, H: float, length: float = math.inf, c: float = mat
     Westergaard's exact series ``(8/pi^2) sum_{m odd} sin(m pi y / 2H) / m^2`` (base value
     0.74245, refdata/analytic_hydrodynamics/SOURCE.txt A); the compressible factor
     ``1/sqrt(1 - (4H / (c T))^2 / (2n-1)^2)`` is the ``c_n`` of the same file. Valid while
-    ``T > 4H/c`` (001_14936b82710365b2.txt Eq. 17: the first acoustic period of the column).
+    ``T > 4H/c`` (Sunara et al. 2021, Eq. 17: the first acoustic period of the column).
     """
     y = np.asarray(depth, np.float64)
     z = H - y
@@ -55,7 +55,7 @@ def westergaard_series(depth, H: float, length: float = math.inf, c: float = mat
 
 def westergaard_parabola(depth, H: float) -> np.ndarray:
     """Westergaard's approximation ``k_p = 7/8 sqrt(y/H)``, y the depth below the surface
-    (001_14936b82710365b2.txt Eq. 16/18; Eq. 16 prints ``sqrt(h (h - y))`` with y "the
+    (Sunara et al. 2021, Eq. 16/18; Eq. 16 prints ``sqrt(h (h - y))`` with y "the
     depth from the free surface", which would make it largest at the surface: the
     physical, Westergaard (1933) form is ``sqrt(h y)``, as VALIDATION.md notes)."""
     return 0.875 * np.sqrt(np.asarray(depth, np.float64) / H)
@@ -75,7 +75,7 @@ def _moving_tank(dim: int, dx: float, length: float, depth: float, height: float
 
 def face_pressure(f: Fluid, centres: np.ndarray, faces: np.ndarray, normals, accel, g_vec) -> np.ndarray:
     """Pressure [Pa] at points ``faces`` (m, dim) [m] on a wall face: the
-    001_14936b82710365b2.txt Eq. 15 inverse-distance average over the fluid within 2h of
+    Sunara et al. 2021, Eq. 15 inverse-distance average over the fluid within 2h of
     ``centres`` (m, dim) [m] (a wall particle, or the face point itself), each fluid
     pressure first carried to the face along the unit wall ``normals`` ((dim,) or (m,
     dim), into the water) with the momentum balance at a rigid wall, ``dp/dn = rho (g -
@@ -133,13 +133,13 @@ def _harmonic_fit(t: np.ndarray, y: np.ndarray, omega: float):
 # ------------------------------------------------------------------------------------ westergaard
 #: the stated target of the westergaard row of docs/VALIDATION.md and its tolerances
 WESTERGAARD_TARGET = ("RMS of k_p against the exact solution < 0.04 raw, < 0.02 with the boundary-pressure "
-                      "averaging of 001 Eq. 15 (the paper's own figures against the parabola)")
+                      "averaging of Sunara et al. 2021, Eq. 15 (the paper's own figures against the parabola)")
 WESTERGAARD_STATED = {"rms_raw_vs_exact": 0.04, "rms_avg_vs_exact": 0.02}
 #: what is judged: the second tolerance on Eq. 15's average carried to the wall face
 WESTERGAARD_TOLERANCES = {"rms_raw_vs_exact": 0.04, "rms_face_vs_exact": 0.02}
 WESTERGAARD_DEPARTURE = {
     "criterion": "RMS of k_p against the exact solution < 0.04 raw, < 0.02 with the boundary-pressure averaging of "
-                 "001 Eq. 15 carried to the wall face (face_pressure); plain Eq. 15 reported beside it",
+                 "Sunara et al. 2021, Eq. 15 carried to the wall face (face_pressure); plain Eq. 15 reported beside it",
     "why": "plain Eq. 15 reports the pressure at the mean position of the fluid it averages, about 1.1 dx into the "
            "water, where the impulsive pressure is lower than at the wall by rho a0 x; the rigid wall's normal "
            "momentum balance carries it to the face, where k_p is defined. The paper's own 0.02 is against the 7/8 "
@@ -152,7 +152,7 @@ def westergaard_series_plot(profile: dict) -> dict:
     (raw, Eq. 15, Eq. 15 at the face) against the exact series and the 7/8 parabola."""
     d = profile["depth_m"]
     curves = {"exact incompressible series": {"x": profile["kp_exact"], "y": d},
-              "7/8 parabola (001 Eq. 16)": {"x": profile["kp_parabola"], "y": d, "style": "--"}}
+              "7/8 parabola (Sunara et al. 2021, Eq. 16)": {"x": profile["kp_parabola"], "y": d, "style": "--"}}
     for q, label in (("raw", "raw boundary pressure"), ("avg", "Eq. 15"), ("face", "Eq. 15 at the face")):
         curves[f"SPH (ours), {label}"] = {"x": profile[f"kp_{q}"], "y": d, "style": "o-"}
     return {"wall pressure": {"xlabel": "k_p = p_d / (rho a0 H)", "ylabel": "depth below the surface [m]",
@@ -165,7 +165,7 @@ def run_westergaard(dx: float, c0: float = 1430.0, dim: int = 2, periods_skip: i
                     width: float = 1.0, **overrides) -> dict:
     """Rigid tank ``length`` x ``height`` (x ``width`` in 3-D) [m] with water to ``H`` [m]
     under the horizontal base acceleration ``a0 sin(2 pi t / Tp)`` (a0 [m/s^2], Tp [s]),
-    started from rest (001_14936b82710365b2.txt §3.1: 3.0 m long x 1.0 m wide x 1.5 m
+    started from rest (Sunara et al. 2021, §3.1: 3.0 m long x 1.0 m wide x 1.5 m
     high, water 1.0 m, a0 = 0.5 g, Tp = 0.03 s, dx = 0.05 m, Fig. 5; the paper's 38 170
     particles at dx = 0.05 m are 24 000 fluid ones, 60 x 20 x 20, and its boundary: the
     1.0 m is the width, 1.5 m the height).
@@ -187,7 +187,7 @@ def run_westergaard(dx: float, c0: float = 1430.0, dim: int = 2, periods_skip: i
     should vanish: the impulsive pressure follows the acceleration).
 
     Wall pressures: "raw" is the dynamic boundary particle's own pressure (its EOS
-    pressure); "avg" is 001 Eq. 15 (inverse-distance average of the fluid pressure
+    pressure); "avg" is Sunara et al. 2021, Eq. 15 (inverse-distance average of the fluid pressure
     near the wall particle, :meth:`Fluid.wall_pressure`); "face" is Eq. 15 with each
     fluid pressure carried to the wall face by the wall's momentum balance
     (:func:`face_pressure`).
@@ -199,10 +199,9 @@ def run_westergaard(dx: float, c0: float = 1430.0, dim: int = 2, periods_skip: i
     the difference is the side walls' numerical effect.
 
     References: the exact incompressible pressure on the wall of this finite tank
-    (:func:`westergaard_series` with L = 3 m: 1.5 % below Westergaard's semi-infinite
-    reservoir at the base), Westergaard's semi-infinite series (refdata), the 7/8 parabola
-    (Eq. 16), and the compressible series with the run's c0 (what a perfect WCSPH model
-    would give).
+    (:func:`westergaard_series`, L = 3 m: 1.5 % below the semi-infinite reservoir at the base),
+    Westergaard's semi-infinite series (refdata), the 7/8 parabola (Eq. 16), and the
+    compressible series with the run's c0 (what a perfect WCSPH model would give).
     """
     if dim not in (2, 3):
         raise ValueError("dim is 2 or 3")
@@ -307,7 +306,7 @@ def run_westergaard(dx: float, c0: float = 1430.0, dim: int = 2, periods_skip: i
             "value within 6 %, the out-of-phase part below 0.05, the face correction better than plain Eq. 15 "
             "(first-order errors of ~dx/H: the stated 0.04 / 0.02 need dx <= 0.05 m)")
 def westergaard(quick: bool) -> dict:
-    """001_14936b82710365b2.txt §3.1 (Fig. 5): see :func:`run_westergaard` for set-up and
+    """Sunara et al. 2021, §3.1 (Fig. 5): see :func:`run_westergaard` for set-up and
     extraction. c0 = 1430 m/s (the paper's c_p); tank walls carrying the fluid's pressure
     (``walls="adami"``: fluid.wall_density, with the wall acceleration of Adami et al.
     2012 Eq. 27); Wendland, h = sqrt(2) dx, alpha = 0.01, Fourtakas delta = 0.1, CFL 0.2
@@ -370,7 +369,7 @@ def westergaard_3d_series_plot(profile: dict) -> dict:
     return plot
 
 
-@case("westergaard-3d", "the whole 3-D tank of 001 §3.1, 3.0 m long x 1.0 m wide x 1.5 m high, water 1.0 m, "
+@case("westergaard-3d", "the whole 3-D tank of Sunara et al. 2021, §3.1, 3.0 m long x 1.0 m wide x 1.5 m high, water 1.0 m, "
       "base acceleration 0.5 g sin(2 pi t / 0.03 s): wall k_p on the mid-plane and next to the side walls vs the "
       "exact incompressible series, the targets of westergaard (walls='adami', dx 0.05 m; quick: a 0.3 m slice "
       "at dx 0.1 m, default walls, also checked against the 2-D section)", target=WESTERGAARD_TARGET, row="westergaard",
@@ -379,12 +378,11 @@ def westergaard_3d_series_plot(profile: dict) -> dict:
             "correction better than plain Eq. 15, and the 2-D section's profile (same settings) within 0.03 "
             "(Eq. 15) and 0.05 (face) row by row")
 def westergaard_3d(quick: bool) -> dict:
-    """The 3-D tank of 001_14936b82710365b2.txt §3.1 (3.0 m long x 1.0 m wide x 1.5 m high,
+    """The 3-D tank of Sunara et al. 2021, §3.1 (3.0 m long x 1.0 m wide x 1.5 m high,
     water 1.0 m, a0 = 0.5 g, Tp = 0.03 s; the paper's 38 170 particles at dx = 0.05 m fix
     the 1.0 m as the width: 60 x 20 x 20 fluid particles): :func:`run_westergaard` with
-    ``dim=3``. k_p is read on the end walls' rows on the tank's mid-plane (y = 0.5 m) and on
-    the rows next to the side walls (y = dx/2 and 1 m - dx/2, averaged); the references
-    and targets are those of :func:`westergaard`, judged on the mid-plane. In theory the
+    ``dim=3``. k_p is read on the end walls' rows on the mid-plane (y = 0.5 m) and next to
+    the side walls (averaged); references and targets as :func:`westergaard`'s. In theory the
     flow is uniform across the tank (the side walls are parallel to the shaking and carry
     no pressure gradient), so the 3-D profile is the 2-D one everywhere across; what the
     whole tank adds over a slice is the measured effect of the side walls.
@@ -402,12 +400,14 @@ def westergaard_3d(quick: bool) -> dict:
     the coarse slice's base k_p reads 6.8 % high, which the quick checks (written for the
     default walls) refuse.
 
-    Measured trade (2026-11-25, AMD EPYC, 2 cores shared with up to 19 other jobs, so
-    only CPU seconds compare; ``python benchmarks/tanks_3d_trade.py vertical --dx DX``:
-    the full variant's settings at each dx; RMS of k_p over the wall rows
-    below the surface against the exact series of this 3 m tank; "mid": the mid-plane,
-    "side": the rows next to the side walls; "diff": the largest row-by-row difference
-    side - mid of the face k_p; base: face k_p at the deepest row, exact 0.727):
+    At the full variant both targets are met on the mid-plane (raw 0.031 < 0.04, face 0.018 <
+    0.02, the second a declared departure: plain Eq. 15 misses it), and the rows next to the side
+    walls differ from it by less than the resolution's own error (the quick slice, the notes:
+    docs/validation/westergaard-3d_history.md).
+
+    Measured trade (``python benchmarks/tanks_3d_trade.py vertical --dx DX``; RMS of k_p
+    against the exact series of this tank; "mid" the mid-plane, "side" next to the side walls;
+    "diff" their largest row-by-row difference; base: face k_p at the deepest row, exact 0.727):
 
     ======  =======  =========  =====  =======  =====  ======  =====  =====  =====  =====  =====
     dx [m]  periods  particles  steps  CPU [s]  raw    Eq. 15  face   raw    face   diff   base
@@ -417,24 +417,6 @@ def westergaard_3d(quick: bool) -> dict:
     0.075   1 + 1    16462      4080   136      0.027  0.067   0.017  0.028  0.019  0.009  0.730
     0.05    1 + 1    44628      6080   566      0.031  0.035   0.018  0.031  0.020  0.008  0.738
     ======  =======  =========  =====  =======  =====  ======  =====  =====  =====  =====  =====
-
-    (CPU: all threads of the run, NUMBA_NUM_THREADS = 1 / 2 / 6 from the top row down.
-    The last row is the full variant: both targets met on the mid-plane, raw 0.031 < 0.04
-    and face 0.018 < 0.02 (the second a declared departure: plain Eq. 15, the stated
-    target's, reads 0.035 and misses it), base k_p 1.5 % above the exact 0.727; next to the side
-    walls raw 0.031 and face 0.0198, within them too. Against the 7/8 parabola (the
-    paper's reference: its 0.0411 raw and 0.02 with Eq. 15 at dx = 0.05 m are against
-    it, and it lies 0.15 above the exact series at the base): raw 0.037 / 0.043 / 0.039,
-    Eq. 15 0.117 / 0.117 / 0.085, face 0.053 / 0.063 / 0.052 down the rows; against
-    Westergaard's semi-infinite series at dx = 0.05 m: raw 0.022, face 0.017.) The rows
-    next to the side walls differ from the mid-plane's by at most 0.010 (face) and 0.0065
-    (raw) at every dx, their RMS by at most 0.0034: the side walls, which in theory change
-    nothing, do to k_p less than the resolution's own error. At dx = 0.1 m the whole tank
-    reads as the 2-D section at the same dx and periods (raw 0.062, face 0.040). The
-    quick slice (dx = 0.1 m, c0 =
-    700 m/s, 1 + 1 periods, default walls; 5382 particles, 1520 steps, 22 CPU-s): raw
-    0.149, Eq. 15 0.069, face 0.054 on the mid-plane, the 2-D section with the same
-    settings 0.264, 0.075, 0.044; Eq. 15 and face within 0.012 and 0.025 of it row by row.
     """
     if not quick:
         out = run_westergaard(0.05, dim=3, width=1.0, periods_skip=1, periods_fit=1, walls="adami")
@@ -477,7 +459,7 @@ def run_sloshing_frequency(dx: float, L: float = 1.0, h: float = 0.5, amplitude:
     ``cycles_forced`` periods (half-cosine ramps of one period in and out, so the tank
     stops at rest with no jump in velocity), then left still for ``cycles_free`` periods
     (free decay). The first natural frequency is the peak of the FFT (:func:`spectral_peak`)
-    of the wall pressure (001 Eq. 15, :meth:`Fluid.wall_pressure`) on the left wall at
+    of the wall pressure (Sunara et al. 2021, Eq. 15, :meth:`Fluid.wall_pressure`) on the left wall at
     ``sensor_depth`` [m] below the surface, over the free decay only, searched between
     0.5 and 1.5 w1 (the next mode a horizontal motion excites is at 2.3 w1 for h/L = 0.5);
     compared with linear theory ``w1^2 = g (pi/L) tanh(pi h/L)`` (:func:`sloshing_omega`).
@@ -578,7 +560,7 @@ def spheric10_sensor(f: Fluid, roll: Rotation, t: float, kind: str = "patch") ->
     the fluid exerts on the wall over a ``SPHERIC10_SENSOR`` long patch about the sensor's
     centre, divided by its length: what a flush transducer measures, a momentum balance
     in which a half-wet face reads half and a splash particle its push. ``kind="face"``:
-    :func:`face_pressure`, 001 Eq. 15 over 2h carried to the face with the wall's
+    :func:`face_pressure`, Sunara et al. 2021, Eq. 15 over 2h carried to the face with the wall's
     acceleration and fitted along the wall: an average of the fluid's own pressure near
     the point, which reads a thin film or a few splash particles as if they filled the
     support (and extrapolates wildly where only two or three particles are near)."""
@@ -614,7 +596,7 @@ def run_spheric10(dx: float, t_end: float = 8.0, c0: float = 28.0, sample_dt: fl
     tank bottom; pressure on the left wall at the still-water level (z = 0.093 m in the
     tank frame).
 
-    The seed (003_7c74773681ee080c.txt §3) validates its SPH on the same kind of test
+    Wang et al. 2022 (§3) validate their SPH on the same kind of test
     (Brizzolara et al. 2011: a 900 x 508 mm tank rolled +-4 deg about an axis 184 mm above
     the bottom, in a 2-D section); the record we hold is the SPHERIC Test 10 data as
     packaged by DualSPHysics, whose axis is the centre of the bottom (SOURCE.txt), so we
@@ -706,7 +688,7 @@ def sloshing_frequency(quick: bool) -> dict:
     ``w1^2 = g (pi/L) tanh(pi h/L)``: f1 = 0.8462 Hz for L = 1 m, h = 0.5 m (refdata
     sloshing_frequencies_housner.csv: T1 = 1.18182 s).
 
-    Set-up (session 4): :data:`fluid.solver.SLOSHING_2D`, Wendland with h = 2 dx and the
+    Set-up: :data:`fluid.solver.SLOSHING_2D`, Wendland with h = 2 dx and the
     tank walls carrying the fluid's pressure (``walls="adami"``), the other settings the
     solver's defaults. Why these two:
     the plain dynamic walls make a stiff spring at the contact line (first part below),
@@ -716,8 +698,14 @@ def sloshing_frequency(quick: bool) -> dict:
     (``benchmarks/lattice_stiffness.py --stability``); at h = 1.7 dx (DualSPHysics' coefh
     1.2), which also gives +0.9 %, a tank at rest rearranges its lattice.
 
-    Measured trade (``run_sloshing_frequency(dx, ..., h_coef=2.0, walls="adami")``,
-    NUMBA_NUM_THREADS=1):
+    With this set-up the first mode meets the target (+0.84 % at dx = 0.025 m); with the
+    solver's defaults it runs +9.4-10 % fast: the plain dynamic walls put a stiff spring at
+    the contact line, and at h = sqrt(2) dx the lattice under pressure has a spurious shear
+    stiffness; the two levers are needed together. The measured trade and the search:
+    docs/validation/sloshing-frequency_history.md.
+
+    Measured trade (``run_sloshing_frequency(dx, ..., h_coef=2.0, walls="adami")``, one
+    thread; the last two rows: ``benchmarks/sloshing_trade.py --cases sloshing-frequency``):
 
     ======  =========  ======  ===============  =============================
     dx [m]  particles  steps   f1 / linear - 1  run
@@ -728,29 +716,6 @@ def sloshing_frequency(quick: bool) -> dict:
     0.05    368        29480   -0.0001          c0_factor 20, 8 free periods, 15 s
     0.0125  3818       116160  +0.0103          c0_factor 20, 8 free periods, 276 s
     ======  =========  ======  ===============  =============================
-
-    (the last two rows: ``benchmarks/sloshing_trade.py --cases sloshing-frequency``.)
-
-    With the solver's defaults (h = sqrt(2) dx, dynamic walls) the same runs give +9.4 %
-    and +10.0 %; h = 2 dx with dynamic walls +11.4 % (quick); the two levers are needed
-    together.
-
-    Why (the search, its measurements and the experiments that did not confirm a cause are
-    in the history file): (1) the dynamic boundary particles of the side walls integrate the
-    continuity equation, and next to the waterline their density follows how far the water
-    slides along the wall: a stiff spring at the contact line (a 5 mm rise makes ~5 kPa
-    against rho g eta ~ 50 Pa), set by h/dx and not by c0 or dx. The walls carrying the
-    fluid's pressure (``walls="adami"``, fluid.wall_density: each tank-wall particle takes
-    the fluid's pressure carried to it by the wall's momentum balance) follow linear theory
-    there and halve the error (+9.4 % -> +4.6 % quick). (2) With them +4.5 ... 5.1 % remains
-    at h = sqrt(2) dx at every dx; it depends on the kernel and h/dx, not on c0, the
-    artificial viscosity, the density diffusion, the sensor depth or the wave amplitude: the
-    particle lattice under pressure has a shear stiffness that the continuum lacks
-    (benchmarks/lattice_stiffness.py: the configuration alone, displaced by the linear mode,
-    is +3.2 % stiff at dx = 0.05 m and +4.0 % at 0.025 m; a candidate, not a proof). With
-    the "adami" walls, h = 2 dx meets the target (+0.84 % at dx = 0.025 m).
-
-    History (sessions 1-4): docs/validation/sloshing-frequency_history.md.
     """
     if quick:
         return run_sloshing_frequency(0.05, cycles_forced=2, cycles_free=4, c0_factor=10.0, **SLOSHING_2D)
@@ -773,52 +738,21 @@ def sloshing_spheric10(quick: bool) -> dict:
     (:func:`spheric10_sensor`), sampled at 10 kHz (the record: 20 kHz). The roll axis is
     the centre of the tank bottom (SOURCE.txt, DualSPHysics' CaseSloshingHR_Def.xml), which
     the record fits better than the axis 184 mm above the bottom of VALIDATION.md's row and
-    the seed's case (Brizzolara et al.); plain dynamic walls read the first impact lower
+    the case of Wang et al. 2022 (Brizzolara et al.); plain dynamic walls read the first impact lower
     (both measured: docs/validation/sloshing-spheric10_history.md).
 
-    The full case (dx = 3.1 mm, h = sqrt(2) dx, 8 s; NUMBA_NUM_THREADS=1, 320 493 steps,
-    ~35 min alone; ratios to the measured record per impact 1-4; the face probe's row is
-    the same run in session 5, the trajectory does not depend on the probe):
+    The full case runs dx = 3.1 mm, h = sqrt(2) dx, 8 s: every impact in phase (the 0.05 s
+    target), the first carries the measured impulse and 20 ms mean, and no peak is within 20 %:
+    the target is not met. The peaks are the weakly compressible model's water hammer (of the
+    size of rho c0 u_n, sharper as dx shrinks); the measured peak is most likely set by the
+    entrapped air and the real sound speed, which a single-phase model does not have (inferred,
+    not tested). The sensor is a 10 mm patch because a transducer reads the force over its face
+    (:func:`face_pressure` reads a film or splash as if it covered the wall). The measured table,
+    the convergence trade and the history: docs/validation/sloshing-spheric10_history.md.
 
-    ======  ===================  ===================  ===================  ==========================
-    sensor  peak (one sample)    20 ms mean           impulse              lag [s]
-    ======  ===================  ===================  ===================  ==========================
-    patch   3.58 4.72 3.92 1.34  1.05 0.88 2.24 1.40  0.92 1.27 1.43 1.48  +0.025 -0.025 -0.024 -0.033
-    face    3.61 5.76 6.57 1.28  1.05 1.02 2.44 1.43  0.93 1.46 1.54 1.54  +0.025 -0.025 -0.028 -0.039
-    ======  ===================  ===================  ===================  ==========================
-
-    Every impact is in phase (the 0.05 s target), the first carries the measured impulse
-    and 20 ms mean, and no peak is within 20 %: the target is not met.
-
-    The sensor. A transducer reads the force on its face over its area: the case's sensor is
-    the fluid's normal force on a 10 mm patch of the wall (:func:`spheric10_sensor`;
-    SOURCE.txt does not give the sensor's size; patches of h, 2h, 4h and 20 mm read the same
-    impulses within 1 % and 20 ms means within 4 % at 3.1 mm, their peaks differ by up to
-    40 %). The face probe (:func:`face_pressure`) averages the pressure of the fluid
-    particles near the point, so it reads a thin film or a few splash particles as if they
-    covered the wall: at the first impact, which covers the wall, the two agree; at the
-    later ones, which reach the sensor as a run-up after the first, the face probe reads
-    too much (the second impact's impulse 1.46 against 1.27 on the patch at 3.1 mm).
-
-    Why the peaks do not converge. The first impact's impulse stays within 0.88 - 1.05 of
-    the measured one and its 20 ms mean converges in every set-up tried (the seed's, DualSPHysics',
-    h = 2 dx, MLS re-initialisation: the table in the history file), while its peak ranges
-    from 0.5 to 6.4 and grows as dx shrinks. At 3.1 mm the peak is a pulse of 13.2 kPa,
-    1.5 ms wide at half height (2.3996 s on the patch, 25 ms after the measured front), on a
-    run-up below 1.4 kPa: of the size of rho c0 u_n with u_n ~ 0.5 m/s, a water hammer of
-    the weakly compressible model, whose height follows c0 and the front's shape where it
-    meets the wall, sharper as dx shrinks. The measured peak (the record keeps the largest
-    sample of every 5 ms of a 20 kHz signal), a 3.7 kPa front followed by 20 ms above
-    2.3 kPa, is most likely set by the entrapped air and the real sound speed, which a
-    single-phase model with an artificial c0 does not have (inferred, not tested). The seed
-    reports "good agreement in amplitude" for its own case (Brizzolara et al., axis 184 mm
-    above the bottom) from a figure, without numbers; at its set-up and dx this record's
-    first peak reads 6.43.
-
-    Measured trade (convergence, session 5, read with the face probe;
-    NUMBA_NUM_THREADS=1, ``run_spheric10(dx, **kw)``, 8 s; ratios to
-    the measured record per impact 1-4; dx in mm, h = sqrt(2) dx ("r2") or 2 dx; "5 ms" the
-    largest 5 ms mean):
+    Measured trade (convergence, read with the face probe; ``run_spheric10(dx, **kw)``, 8 s,
+    one thread; ratios to the measured record per impact 1-4; dx in mm, h = sqrt(2) dx ("r2")
+    or 2 dx; "5 ms" the largest 5 ms mean):
 
     =========  ======  ======  ===================  ===================  ===================  ===================
     dx, h      steps   wall s  peak (one sample)    5 ms mean            20 ms mean           impulse
@@ -828,24 +762,6 @@ def sloshing_spheric10(quick: bool) -> dict:
     3.1, 2 dx  241091  2119    2.84 2.09 2.21 3.07  2.40 1.41 1.88 2.20  1.05 1.03 1.70 1.82  0.92 1.53 1.63 1.93
     2.0, r2    250105  3550    5.80 4.13            2.94 1.72            1.27 1.09            0.92 1.21
     =========  ======  ======  ===================  ===================  ===================  ===================
-
-    (10 337 and 10 487 particles at 3.1 mm; the 2 mm run, 23 547 particles, the seed's
-    resolution (003 §3), to 4.4 s: two impacts, lags +0.027, -0.041 s.) At 3.1 mm every
-    impact is in phase with either support (lags +0.025, -0.025, -0.028, -0.039 s at sqrt(2)
-    dx; +0.022, -0.040, -0.019, -0.045 s at 2 dx), the first impact's impulse and 20 ms mean
-    are within 8 %, and the later impulses fall with dx (1.9-2.0 to 1.5; the second impact's
-    1.89, 1.46, 1.21 at 6.2, 3.1, 2 mm: converging towards the measured one, so the excess
-    at 6.2 mm discussed in the history file is largely resolution; whether a 3-D loss
-    remains is not settled) but stay 50 % above the measured ones at 3.1 mm; the peaks do
-    not converge (the first impact's 1.00, 3.61, 5.80 at 6.2, 3.1, 2 mm grows as the front
-    sharpens; on the face probe at 3.1 mm a 1-2 ms spike of 8.7 kPa at 2.400 s after 15 ms
-    of run-up below 1.4 kPa: the water hammer above). h = 2 dx does not change this. So the
-    target (peaks within 20 %) is not met, and the timing is (within 0.05 s). The full case
-    runs dx = 3.1 mm, h = sqrt(2) dx (~35 min on one core).
-
-    History (sessions 3-6: the sensor, the first impact at four resolutions and the levers
-    on it, the full runs at 6.2 mm, the hypotheses about the later impacts, more dissipation
-    and a higher c0, the roll axis and the dynamic walls): docs/validation/sloshing-spheric10_history.md.
     """
     if quick:  # the first swing only (no impact): 5 particle rows over the depth
         out = run_spheric10(0.0186, t_end=1.3, sample_dt=0.005)

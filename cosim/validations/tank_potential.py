@@ -3,7 +3,7 @@ right side inclined from the vertical, under a horizontal base acceleration: the
 reference of the inclined-wall case for the tank the SPH runs, where Chwang's solution
 (refdata ``inclined_dam_Cp_FEM_thiswork.csv``) is for a semi-infinite reservoir.
 
-The problem (001_14936b82710365b2.txt §3.2, Chwang 1978 without the infinite reservoir):
+The problem (Sunara et al. 2021, §3.2, Chwang 1978 without the infinite reservoir):
 water of depth H in the trapezoid 0 <= z <= H, 0 <= x <= L + z tan(beta), the tank
 accelerating ``a0`` along +x, the water incompressible and inviscid, the motion small
 (the free surface stays at z = H: the excitation is far above the sloshing frequencies).
@@ -92,7 +92,7 @@ def impulsive_pressure(length: float, depth: float, beta_deg: float, nz: int = 1
 def wall_profiles(length: float, depth: float, beta_deg: float, nz: int = 120) -> dict:
     """k_p along both sides, bottom to top: ``z`` (nz + 1,) [m], ``left`` and ``right`` (the
     right side's suction taken positive: k_p on the wall the tank accelerates towards the
-    water, the convention of 001 Eq. 18)."""
+    water, the convention of Sunara et al. 2021, Eq. 18)."""
     nodes, kp, nz, nx = impulsive_pressure(length, depth, beta_deg, nz)
     rows = np.arange(nz + 1) * (nx + 1)
     return {"z": nodes[rows, 1], "left": kp[rows], "right": -kp[rows + nx]}

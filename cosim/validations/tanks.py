@@ -1,5 +1,5 @@
-"""Tanks of seed 001 beyond the vertical wall (VALIDATION.md, "Fluid"): the inclined side
-(001_14936b82710365b2.txt §3.2) and the cylinder (§3.3) under horizontal base excitation."""
+"""Tanks of Sunara et al. 2021 beyond the vertical wall (VALIDATION.md, "Fluid"): the inclined side
+(Sunara et al. 2021, §3.2) and the cylinder (§3.3) under horizontal base excitation."""
 
 from __future__ import annotations
 
@@ -91,7 +91,7 @@ def _face_amplitudes(f, shake, cfg, faces: dict, Tp: float, samples_per_period: 
 def run_inclined(beta_deg: float, dx: float, c0: float = 1430.0, periods_skip: int = 2, periods_fit: int = 3,
                  samples_per_period: int = 40, a0: float = 0.5 * G, Tp: float = 0.03, length: float = 3.0,
                  H: float = 1.0, height: float = 1.5, dim: int = 2, rows: int = 3, **overrides) -> dict:
-    """The 2-D section of 001 §3.2's tank: bottom ``length`` [m], vertical left side, right
+    """The 2-D section of Sunara et al. 2021, §3.2's tank: bottom ``length`` [m], vertical left side, right
     side inclined ``beta_deg`` from the vertical leaning outwards (:func:`fluid.shapes.inclined_tank`,
     walls offset from the true outline, one layer of fluid conforming to them), water
     ``H`` [m], under the base acceleration ``a0 sin(2 pi t / Tp)`` from rest, c0 [m/s]
@@ -100,10 +100,10 @@ def run_inclined(beta_deg: float, dx: float, c0: float = 1430.0, periods_skip: i
 
     Extraction as :func:`cosim.validations.sloshing.run_westergaard`: at face points every
     dx in height on both sides, the fluid pressure carried to the face (``face_pressure``,
-    001 Eq. 15 with the wall's momentum balance), fitted with ``c0 + c1 t + s sin(w t) +
+    Sunara et al. 2021, Eq. 15 with the wall's momentum balance), fitted with ``c0 + c1 t + s sin(w t) +
     k cos(w t)`` over ``periods_fit`` periods after ``periods_skip``; k_p = s / (rho a0 H)
     on the left side and -s / (rho a0 H) on the inclined one (positive where the tank
-    accelerates towards the water, 001 Eq. 18).
+    accelerates towards the water, Sunara et al. 2021, Eq. 18).
 
     References: Chwang's semi-infinite reservoir (refdata, :func:`chwang_profile`), the
     criterion the issue states; and the exact incompressible pressure of this finite tank
@@ -179,14 +179,14 @@ def inclined_series_plot(profiles: dict) -> dict:
                               "curves": curves}}
 
 
-@case("inclined-wall", "2-D section of 001 §3.2's tank (bottom 3.0 m, right side 15/30/45 deg from the vertical, "
+@case("inclined-wall", "2-D section of Sunara et al. 2021, §3.2's tank (bottom 3.0 m, right side 15/30/45 deg from the vertical, "
       "water 1.0 m), base acceleration 0.5 g sin(2 pi t / 0.03 s): k_p up the inclined face vs Chwang's exact "
       "theory, RMS < 0.04", target=INCLINED_TARGET,
       quick="dx = 0.1 m (10 rows), 1 + 2 periods: k_p up the inclined face within 0.06 RMS of Chwang's theory at "
             "each angle (first-order errors of ~dx/H, as westergaard's quick variant: the stated 0.04 is met at the "
             "paper's dx = 0.05 m, the full variant)")
 def inclined_wall(quick: bool) -> dict:
-    """001_14936b82710365b2.txt §3.2 (Fig. 12): see :func:`run_inclined` for the set-up and
+    """Sunara et al. 2021, §3.2 (Fig. 12): see :func:`run_inclined` for the set-up and
     the extraction. c0 = 1430 m/s (the paper's), tank walls carrying the fluid's pressure
     (``walls="adami"``, as the westergaard case), the solver's other defaults; 40 samples
     a period. Judged: the RMS of k_p up the inclined face against Chwang's semi-infinite
@@ -194,22 +194,9 @@ def inclined_wall(quick: bool) -> dict:
     this finite tank on both sides (the 3 m tank's inclined face carries 1-3 % less
     than Chwang's reservoir at the base).
 
-    Measured (2026-11-25, AMD EPYC, 2 cores under load; ``cosim validate inclined-wall
-    [--quick]``; RMS of k_p up the inclined face; "tank": the exact pressure of this tank):
-
-    ======  ===========  ==========  ==========  ==========  ===========  ===========
-    dx [m]  periods      15 deg      30 deg      45 deg      left, tank   wall [s]
-    ======  ===========  ==========  ==========  ==========  ===========  ===========
-    0.10    1 + 2        0.045       0.021       0.0055      0.048        23 (3 runs)
-    0.05    2 + 3        0.035       0.022       0.0067      0.026        195
-    ======  ===========  ==========  ==========  ==========  ===========  ===========
-
-    The errors are largest on the steepest face: at 15 deg the face k_p scatters by
-    +-0.03 from row to row (the conformed wall and first fluid layer along a face that
-    crosses the lattice rows at a shallow angle) and reads 0.03 above the tank's exact
-    maximum; at 45 deg it is within 0.01 everywhere. The vertical left side of the same
-    tank is within 0.026 of its exact pressure at 0.05 m (the two rows next to the free
-    surface read high, as in westergaard).
+    The errors are largest on the steepest face (15 deg: the face k_p scatters by +-0.03 from
+    row to row); the measured table (``cosim validate inclined-wall [--quick]``):
+    docs/validation/inclined-wall_history.md.
     """
     dx, skip, fit = (0.1, 1, 2) if quick else (0.05, 2, 3)
     metrics, profiles, particles, steps = {}, {}, 0, 0
@@ -243,7 +230,7 @@ def inclined_3d_series_plot(profiles: dict, sections: dict | None = None) -> dic
     return plot
 
 
-@case("inclined-wall-3d", "3-D tank of 001 §3.2 (bottom 3.0 m, right side 15/30/45 deg from the vertical, water "
+@case("inclined-wall-3d", "3-D tank of Sunara et al. 2021, §3.2 (bottom 3.0 m, right side 15/30/45 deg from the vertical, water "
       "1.0 m), a slice 3 particle rows wide between its front and back walls, base acceleration 0.5 g "
       "sin(2 pi t / 0.03 s): k_p up the inclined face on the mid-plane vs Chwang's exact theory, RMS < 0.04",
       target=INCLINED_TARGET, row="inclined-wall",
@@ -251,7 +238,7 @@ def inclined_3d_series_plot(profiles: dict, sections: dict | None = None) -> dic
             "face within the stated 0.04 RMS of Chwang's theory, within 0.04 of the 2-D section run with the "
             "same settings row by row, the out-of-phase part below 0.05")
 def inclined_wall_3d(quick: bool) -> dict:
-    """001_14936b82710365b2.txt §3.2 (Fig. 12) in 3-D: :func:`run_inclined` with ``dim=3``,
+    """Sunara et al. 2021, §3.2 (Fig. 12) in 3-D: :func:`run_inclined` with ``dim=3``,
     a slice of the tank 3 fluid rows wide (3 dx: 0.15 m at dx = 0.05 m) between front and
     back walls of 3 layers, k_p on the mid-plane; c0 = 1430 m/s, ``walls="adami"``, the
     solver's other defaults, 40 samples a period, 1 period skipped and 1 fitted (quick:
@@ -265,13 +252,15 @@ def inclined_wall_3d(quick: bool) -> dict:
     semi-infinite reservoir at each angle; reported beside it, the RMS against the exact
     pressure of this finite tank (:mod:`cosim.validations.tank_potential`) on both sides.
 
-    Measured trade (2026-11-25, AMD EPYC, 2 cores shared with 3-5 other jobs, so only CPU
-    seconds compare; ``python benchmarks/tanks_3d_trade.py inclined --dx DX --angle BETA``:
-    the full variant's settings at each dx, one thread; RMS of k_p up the inclined face on
-    the mid-plane against Chwang; "tank": against the exact pressure of this tank; left:
-    the vertical side against the tank's exact pressure; 2-D: the section
-    (``run_inclined(BETA, DX, dim=2, periods_skip=1, periods_fit=1, walls="adami")``)
-    against Chwang with the same settings):
+    At the full variant's dx = 0.05 m the stated 0.04 is met at every angle, and the slice's
+    RMS is within 0.005 of the 2-D section's (its walls hold the section's own points); the
+    steepest face (15 deg) errs most. The measured trade (``python benchmarks/tanks_3d_trade.py
+    inclined --dx DX --angle BETA``), the quick variant and the figures:
+    docs/validation/inclined-wall-3d_history.md.
+
+    Measured trade (``python benchmarks/tanks_3d_trade.py inclined --dx DX --angle BETA``, one
+    thread; RMS of k_p up the inclined face on the mid-plane against Chwang; "tank": against
+    this tank's exact pressure; left: the vertical side; 2-D: the section, same settings):
 
     ======  =====  =======  =========  =====  =======  ======  ======  ======  ======
     dx [m]  beta   periods  particles  steps  CPU [s]  Chwang  tank    left    2-D
@@ -286,27 +275,6 @@ def inclined_wall_3d(quick: bool) -> dict:
     0.05    30     1 + 1    16251      6080   246      0.025   0.026   0.031   0.023
     0.05    45     1 + 1    17322      6080   259      0.0078  0.0098  0.030   0.0044
     ======  =====  =======  =========  =====  =======  ======  ======  ======  ======
-
-    (Quick: 45 deg, dx = 0.1 m, c0 = 700 m/s, 1 + 1 periods; 5694 particles, 1520 steps:
-    0.020 against Chwang, the 2-D section with the same settings 0.007; the slice's face
-    profile within 0.018 of the section's row by row, its vertical side within 0.021; out
-    of phase 0.014.) The last three rows are the full variant: the stated 0.04 is met at
-    every angle (0.038 / 0.025 / 0.0078), and at dx = 0.075 m; at dx = 0.1 m the 15 deg
-    face misses it (0.050). The slice's RMS is within 0.005 of the 2-D section's at every
-    angle and dx of the table: its front and back walls hold the section's own points
-    (:func:`fluid.shapes.inclined_tank`), so every row of the slice sees the section's
-    balance. The errors are largest on the steepest face (15 deg), in 3-D as in 2-D, and
-    do not fall from dx = 0.075 to 0.05 m there: the face k_p scatters by up to 0.04 from
-    row to row and reads 0.03-0.07 below the tank's exact pressure at mid-depth (dx = 0.05
-    m), where the fluid's conforming layer along the face meets the lattice as close as
-    0.53 dx (0.56-0.73 dx at 30 deg, 0.91 dx at 45 deg), and the particles by the face move
-    at up to 0.09-0.12 m/s at 15 and 30 deg (0.06-0.09 m/s in 2-D; 0.06-0.07 m/s at 45
-    deg) against ~0.02 m/s for the impulsive flow. Out of phase below 0.03; the vertical
-    side within 0.061 of its exact pressure at every angle. The paper gives no numbers for
-    Fig. 12 (its SPH against Chwang), so no comparison with its own error is possible.
-    Figures: docs/validation/figures/tanks3d_inclined_dx{0.1,0.075,0.05}_inclined-face.png,
-    drawn from the table's runs by ``python benchmarks/tanks_3d_trade.py plot
-    docs/validation/figures RUN.json ...``.
     """
     if quick:
         settings = dict(periods_skip=1, periods_fit=1, c0=700.0, walls="adami")
@@ -338,13 +306,13 @@ def inclined_wall_3d(quick: bool) -> dict:
 
 # ------------------------------------------------------------------------------------ cylinder
 #: the stated target of the cylinder-tank row of docs/VALIDATION.md (issue 16's)
-CYLINDER_TARGET = ("wall pressure against Petrov–Moiseev (001 Eq. 20-21) around the circumference and with depth; "
+CYLINDER_TARGET = ("wall pressure against Petrov–Moiseev (Sunara et al. 2021, Eq. 20-21) around the circumference and with depth; "
                    "RMS < 0.127 kPa (the paper's own SPH error)")
 CYLINDER_DEPARTURE = {
     "criterion": "the wall's hydrodynamic pressure on the x-z plane against the exact incompressible series "
                  "(cylinder_series), RMS < 0.127 kPa; round the wall against the same series' cos(phi); "
                  "Petrov-Moiseev reported beside it",
-    "why": "Petrov-Moiseev (001 Eq. 20) is a Ritz approximation: on this tank at 0.5 g it lies 0.15 kPa RMS from "
+    "why": "Petrov-Moiseev (Sunara et al. 2021, Eq. 20) is a Ritz approximation: on this tank at 0.5 g it lies 0.15 kPa RMS from "
            "the exact series on the x-z plane (2.53 against 2.42 kPa at the bottom), more than the 0.127 kPa asked, "
            "so the exact solution itself would miss the stated target",
     "source": "this run"}
@@ -380,7 +348,7 @@ def cylinder_series(z, h: float, R: float, terms: int = 400) -> np.ndarray:
 
 
 def petrov_moiseev(z, h: float, R: float) -> np.ndarray:
-    """k(z) on the wall by Petrov and Moiseev's Ritz approximation, 001_14936b82710365b2.txt
+    """k(z) on the wall by Petrov and Moiseev's Ritz approximation, Sunara et al. 2021,
     Eq. 20: ``sqrt(3) (y/h - (y/h)^2 / 2) tanh(sqrt(3) R/h)`` with y = h - z the depth below
     the surface (Eq. 20 vanishes at y = 0 and is largest at y = h: y is the depth)."""
     y = (h - np.asarray(z, float)) / h
@@ -403,7 +371,7 @@ def cylinder_bottom_series(r, h: float, R: float, terms: int = 400) -> np.ndarra
 
 
 def petrov_moiseev_bottom(r, h: float, R: float) -> np.ndarray:
-    """k_b(r) on the bottom by Petrov and Moiseev, 001_14936b82710365b2.txt Eq. 21:
+    """k_b(r) on the bottom by Petrov and Moiseev, Sunara et al. 2021, Eq. 21:
     ``(sqrt(3)/2) sinh(sqrt(3) r/h) / cosh(sqrt(3) R/h)`` (at r = R, Eq. 20 at the bottom)."""
     return 0.5 * math.sqrt(3) * np.sinh(math.sqrt(3) * np.asarray(r, float) / h) / math.cosh(math.sqrt(3) * R / h)
 
@@ -411,7 +379,7 @@ def petrov_moiseev_bottom(r, h: float, R: float) -> np.ndarray:
 def run_cylinder(dx: float, c0: float = 1430.0, periods_skip: int = 2, periods_fit: int = 3,
                  samples_per_period: int = 40, a0: float = 0.5 * G, Tp: float = 0.02, diameter: float = 2.0,
                  depth: float = 0.6, height: float = 1.0, angles_deg=tuple(range(0, 181, 15)), **overrides) -> dict:
-    """001_14936b82710365b2.txt §3.3 (Fig. 14-17): the rigid cylinder ``diameter`` [m],
+    """Sunara et al. 2021, §3.3 (Fig. 14-17): the rigid cylinder ``diameter`` [m],
     ``height`` [m], water ``depth`` [m] (:func:`fluid.shapes.cylinder_tank`: rings of equal
     volume, wall shells) under the base acceleration ``a0 sin(2 pi t / Tp)`` along +x from
     rest, c0 [m/s] the paper's (its acoustic period 4 h / c0 = 1.7 ms is 1/12 of Tp: the
@@ -478,7 +446,7 @@ def cylinder_series_plot(profile: dict) -> dict:
     return {"wall pressure, x-z plane": {
                 "xlabel": "hydrodynamic pressure amplitude [kPa]", "ylabel": "height above the bottom [m]",
                 "curves": {"exact series": {"x": profile["p_exact_kpa"], "y": z},
-                           "Petrov-Moiseev (001 Eq. 20)": {"x": profile["p_petrov_moiseev_kpa"], "y": z, "style": "--"},
+                           "Petrov-Moiseev (Sunara et al. 2021, Eq. 20)": {"x": profile["p_petrov_moiseev_kpa"], "y": z, "style": "--"},
                            "SPH (ours)": {"x": profile["p_kpa"], "y": z, "style": "o-"}}},
             "wall pressure round the wall, lowest row": {
                 "xlabel": "angle from +x [deg]", "ylabel": "hydrodynamic pressure amplitude [kPa]",
@@ -488,13 +456,13 @@ def cylinder_series_plot(profile: dict) -> dict:
                 "xlabel": "x [m] (the shaking pushes the water at x = -R)",
                 "ylabel": "hydrodynamic pressure amplitude [kPa]",
                 "curves": {"exact series": {"x": profile["x_bottom_m"], "y": profile["p_bottom_exact_kpa"]},
-                           "Petrov-Moiseev (001 Eq. 21)": {"x": profile["x_bottom_m"],
+                           "Petrov-Moiseev (Sunara et al. 2021, Eq. 21)": {"x": profile["x_bottom_m"],
                                                           "y": profile["p_bottom_petrov_moiseev_kpa"], "style": "--"},
                            "SPH (ours)": {"x": profile["x_bottom_m"], "y": profile["p_bottom_kpa"], "style": "o-"}}}}
 
 
 @case("cylinder-tank", "3-D cylinder D = 2 m, 1.0 m high, water 0.6 m, base acceleration 0.5 g sin(2 pi t / 0.02 s) "
-      "(001 §3.3): the wall's hydrodynamic pressure on the x-z plane vs the exact series, RMS < 0.127 kPa; "
+      "(Sunara et al. 2021, §3.3): the wall's hydrodynamic pressure on the x-z plane vs the exact series, RMS < 0.127 kPa; "
       "Petrov-Moiseev (the stated reference) beside it", target=CYLINDER_TARGET,
       quick="dx = 0.1 m (6 rows over the depth), 1 + 2 periods: the x-z plane's RMS against the exact series "
             "below 0.35 kPa, the base pressure within 6 %, the out-of-phase part below 0.15 kPa (the row next to "
@@ -503,38 +471,14 @@ def cylinder_tank_case(quick: bool) -> dict:
     """See :func:`run_cylinder`. c0 = 1430 m/s, tank walls carrying the fluid's pressure
     (``walls="adami"``), the solver's other defaults (Wendland, h = sqrt(2) dx); 40
     samples a period. Reference: the exact series (:func:`cylinder_series`: 2.41 kPa at
-    the bottom); Petrov-Moiseev (001 Eq. 20, what the paper compares with) is a Ritz
+    the bottom); Petrov-Moiseev (Sunara et al. 2021, Eq. 20, what the paper compares with) is a Ritz
     approximation 0.15 kPa RMS from it on this tank (2.53 kPa at the bottom).
 
-    Measured (2026-11-25, AMD EPYC, 2 cores shared with other jobs: CPU seconds of one
-    thread, ``time.process_time``, from ``python benchmarks/tanks_3d_trade.py cylinder --dx
-    DX --skip S --fit F``; wall seconds of ``cosim validate cylinder-tank [--quick]`` on
-    the machine loaded by up to ten other jobs, so long, where measured):
-
-    ======  =====  =======  =========  =====  ==========  ==========  ==========  ======  =======  ========
-    dx [m]  rows   periods  particles  steps  x-z plane   vs Petrov-  round the   base    CPU [s]  wall [s]
-                                              RMS [kPa]   Moiseev     wall [kPa]  [kPa]
-    ======  =====  =======  =========  =====  ==========  ==========  ==========  ======  =======  ========
-    0.10    6      1 + 2    5674       3120   0.29        0.42        0.21        2.51    42       85
-    0.10    6      2 + 3    5674       5200   0.30        0.42        0.21        2.51    83
-    0.075   8      2 + 3    10507      6800   0.216       0.336       0.153       2.49    169
-    0.05    12     2 + 3    28176      10200  0.112       0.229       0.081       2.45    630      4727
-    ======  =====  =======  =========  =====  ==========  ==========  ==========  ======  =======  ========
-
-    (quick: 1 + 2 periods; full: 2 + 3. Exact base 2.41 / 2.42 kPa at the lowest row's
-    height.) The stated target (0.127 kPa) is met at dx = 0.05 m; the error falls by 1.4
-    and 1.9 with each step in dx (0.30 / 0.216 / 0.112 kPa), the CPU time rises as
-    dx^-2.9 (particles x steps). Round the wall the amplitude follows its own value at
-    phi = 0 times cos(phi) within 0.03 kPa at the lowest row at every dx; out of phase
-    below 0.11 kPa. The row next to the free surface carries most of the error (0.72
-    against 0.37 kPa at 0.05 m, 1.05 against 0.50 at 0.075 m, 1.29 against 0.63 at 0.1 m:
-    the SPH surface holds p_d away from zero over ~dx, as in westergaard); it halves with
-    dx. The stated target is against Petrov-Moiseev (001 Eq. 20-21): 0.42 / 0.336 / 0.229
-    kPa (not met at any dx; Eq. 20 itself lies 0.149 kPa from the exact series), so the
-    exact series is judged, a declared departure. The bottom along x (Eq. 21's place,
-    reported; 2026-11-26, ``cosim validate cylinder-tank``, 11.8 CPU-min at 0.05 m, loaded):
-    ours 0.024 / 0.012 kPa RMS from the exact series (:func:`cylinder_bottom_series`) at
-    dx = 0.1 / 0.05 m, 0.146 / 0.147 kPa from Eq. 21, which lies 0.140 kPa from the exact.
+    The stated target (0.127 kPa) is met at dx = 0.05 m against the exact series; against
+    Petrov-Moiseev (Sunara et al. 2021, Eq. 20-21), itself 0.149 kPa from the exact series, it is
+    not met at any dx, so the exact series is judged, a declared departure. The measured table
+    (``python benchmarks/tanks_3d_trade.py cylinder --dx DX``), the row next to the free surface
+    and the bottom along x: docs/validation/cylinder-tank_history.md.
     Figures: ``docs/validation/figures/cylinder-tank_dx0.05_*.png``.
     """
     dx, skip, fit = (0.1, 1, 2) if quick else (0.05, 2, 3)

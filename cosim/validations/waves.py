@@ -26,7 +26,7 @@ def moored_equilibrium(width, height, rho_b, spread, length, weight, depth, rho=
     [kg/m^3], 1 m thick) floating in water of ``depth`` [m] (floor z = 0) on two
     symmetric catenary lines from its lower corners to anchors on the floor
     ``spread`` [m] either side of its centre (``length`` [m], submerged ``weight``
-    [N/m]): buoyancy = weight + the lines' vertical pull (seed 004 Eq. 35-39),
+    [N/m]): buoyancy = weight + the lines' vertical pull (Barreiro et al. 2016, Eq. 35-39),
     at no offset and no tilt (symmetry)."""
     from moorings.catenary import solve
 
@@ -85,7 +85,7 @@ def moored_body_sph(quick: bool) -> dict:
     either side. Released 4 cm to +x at its free-floating draft, it oscillates in
     surge (period ~1.1 s, from the lines' stiffness) and heave (~0.4 s), damped
     by the waves it radiates. Reference: the equilibrium of buoyancy, weight and
-    the lines' vertical pull (:func:`moored_equilibrium`, catenary of seed 004
+    the lines' vertical pull (:func:`moored_equilibrium`, catenary of Barreiro et al. 2016,
     Eq. 35-39): 15 mm deeper than free floating. Measured: the mean centre over
     the last second (several heave periods, about one surge period) against it.
 
@@ -393,18 +393,15 @@ def _peaks(t, v, window):
       quick="a smoke run of the whole set-up at dx = 2 cm from 1 to 1.3 s (the packet reaches the box after 6 s): "
             "every value finite, the box within one spacing of its initial position, no particle lost")
 def floating_box_waves(quick: bool) -> dict:
-    """Set-up (seed 004 §4.1; Hadzic, Hennig, Peric & Xing-Kaeding 2005, Appl.
+    """Set-up (Barreiro et al. 2016, §4.1; Hadzic, Hennig, Peric & Xing-Kaeding 2005, Appl.
     Math. Modelling 29:1196-1210; the DualSPHysics case CaseFloatingWavesVal as in
     refdata SOURCE.txt): 2-D flume, still water 0.4 m, flap hinged at the bottom of
     x = 0 driven by the measured angle (the file's sign is away from the water:
     :func:`hadzic_flap`), 1:10 beach from x = 4 m; the box 0.10 x 0.05 m, 680
     kg/m^3, initially x = 2.06..2.16 m, z = 0.37..0.42 m (it starts 4 mm above its
     Archimedes draft of 34 mm), free (no lines). Record time is the experiment's:
-    the run starts at ``t0`` = 1 s with the flap upright (before, the flap moves
-    by less than 0.18 deg, a stroke under 1.3 mm at the still-water level; the
-    packet is a chirp from short waves, T ~ 0.5 s at 1-2 s with 0.3-0.6 deg, to long
-    ones, T ~ 1.5 s at 6-7 s, which catch up with them near the box: the flap
-    angle's zero crossings). Reference: the digitised heave
+    the run starts at ``t0`` = 1 s with the flap upright (before, it moves by less than
+    0.18 deg; the packet is a chirp that focuses near the box). Reference: the digitised heave
     (6.3-8.1 s), sway (6.3-8.1 s) and probes N1 (x = 1.16 m), N2 (2.66 m) of
     refdata; heave and sway are displacements from the position at rest (the
     SPH box's mean over the 0.5 s before the first measured sample, 6.3 s).
@@ -431,34 +428,9 @@ def floating_box_waves(quick: bool) -> dict:
     afloat at its initial position within dx, no particle lost): too short for
     the packet, which reaches the box after 6 s.
 
-    Measured at dx = 1 cm, the full variant (28 953 particles, 47 776 steps, 719 s of
-    one core; ``cosim validate floating-box-waves``): N1 crest 39.5 vs
-    37.9 mm, trough −30.6 vs −30.6 mm, correlation 0.96; N2 crest 44.2 vs 45.1 mm, trough
-    −29.4 vs −28.4 mm, correlation 0.96; heave crest 42.6 vs 38.4 mm (+10.9 %) at 7.31 vs
-    7.27 s, trough −35.4 vs −35.0 mm (−1.3 %) at 6.90 vs 6.95 s; sway 121 vs 116 mm
-    (+4.5 %), its maximum at 7.58 s, where the measured sway has a first maximum of
-    110 mm at 7.55 s, and not at the end of the record (8.14 s, the measured maximum;
-    SPH 105 mm there). Phase, the lag of best correlation of the whole history
-    (:func:`hadzic_compare`): heave +0.012 s (correlation 0.945), sway +0.002 s (0.990):
-    the case passes (790 s of one core beside another run). Not checked, and worth
-    saying: the sway's early minimum, -4.8 mm against -22.1 mm at 7.03 vs 7.06 s (17 mm,
-    12 % of the measured sway range). Roll (not compared): correlation −0.65 with the
-    refdata .txt roll, +0.65 with the .ods sign, extremes −20.9/+22.4 vs −19.4/+23.6 deg
-    with that sign.
-
-    At dx = 2 cm (8453 particles, 23 876 steps, 103 s; ``floating_box_waves_run(0.02,
-    1.0, 8.2, ...)`` then :func:`hadzic_compare`): N1 crest 38.5 vs 37.9 mm, correlation
-    0.96, trough −32.7 vs −30.6 mm; N2 crest 35.4 vs 45.1 mm (the focus of the packet,
-    steep and partly breaking: 22 % low), correlation 0.94; heave crest 33.7 vs 38.4 mm at
-    7.31 vs 7.27 s, trough −30.9 vs −35.0 mm at 6.90 vs 6.95 s; sway 98 mm at 7.63 s vs a
-    first measured maximum of 110 mm at 7.55 s, but where the measured box goes on
-    drifting to 116 mm at 8.14 s the SPH box backs off to 78 mm.
-
-    What limits it now: at dx = 2 cm the crest of the focused packet at N2 (H ~ 8 cm
-    over 0.4 m, steep, partly breaking) and the box (5 x 2.5 particles); at both, the
-    box's late sway drift (a mean, second-order force) and its early backward swing;
-    the box's draft error (dynamic boundaries); the digitisation of the
-    published curves.
+    At dx = 1 cm the full variant passes: heave and sway peaks within 11 % and 5 %, in phase
+    (best-correlation lags 0.012 and 0.002 s); at dx = 2 cm the focused packet's crest at N2 is
+    22 % low. The figures and what limits them: docs/validation/floating-box-waves_history.md.
     """
     dx = 0.02 if quick else 0.01
     t0, t_end = 1.0, (1.3 if quick else 8.2)

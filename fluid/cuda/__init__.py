@@ -17,7 +17,7 @@ their fade under the free surface (``diffusion_at_surface=False``), the renormal
 diffusion of Antuono et al. (``"antuono"``: its gradient loop first), plain dynamic
 boundaries (DBC) for walls and bodies, the tank walls of ``walls="adami"`` (with the
 prescribed walls' accelerations), XSPH, the symplectic and Verlet integrators, the
-time-step reductions of 001_14936b82710365b2.txt Eq. 14 with the diffusion limit, the
+time-step reductions of Sunara et al. 2021, Eq. 14 with the diffusion limit, the
 NaN guard (the CPU path's message), particles leaving the domain, the group loads on
 the device, boundary particles placed by id (bodies, prescribed motions), and the
 bodies' mDBC densities (fluid.boundary_correction, the hook cosim.sph_fluid sets; its
@@ -29,32 +29,17 @@ CPU's float32 pair terms), by :func:`check_config`; boundary-correction hooks ot
 the Adami walls and mDBC, at the first rate evaluation. A float32 variant of the GPU
 pair loop is not written: float64 is the GPU default and its reference, as on the CPU.
 
-Checked on numba's CUDA simulator against the CPU path (tests/test_fluid_cuda.py, 2-D and
-3-D cases of 156-274 particles that switch on every term above): the same particles in
-the same rows after every sort, and every field (accelerations, density rates,
-positions, velocities, densities, group and per-particle loads) within 2e-13 of its scale
-after the first pair loop, one step and ten steps (2026-11-25); a coupled scene with a
-floating box moves it as the CPU path does. A run is deterministic on the device (each
-particle's sums in a fixed order, the sort's order fixed) but for the group loads, which
-are summed with atomics. Every kernel compiles to PTX for sm_90 without a GPU
-(benchmarks/cuda_compile_check.py). No GPU has run it yet: no figure of its speed exists.
-
-Device memory per particle (:class:`fluid.cuda.state.DeviceState`): 3-D symplectic 226 B
-(Verlet 202 B, 2-D 178 / 162 B), +24 B with XSPH, +24 B with ``"antuono"``, +24 B with
-moving Adami walls, +24 B per body particle with mDBC; 8 B per cell of the grid.
-
-Costs that are not the kernels': each step brings three scalars back (the count of
-particles in the domain, the step's bounds, the NaN guard's row) and the group loads;
-whatever reads the host copy (probes, outputs, ``wall_pressure``, ``kinetic_energy``)
-brings the whole state back and sends it again before the next step; ``Fluid.settle``
-does so every step.
+Checked on numba's CUDA simulator against the CPU path, term for term (tests/test_fluid_cuda.py);
+every kernel compiles to PTX without a GPU (benchmarks/cuda_compile_check.py). What was
+checked and to what tolerance, device memory per particle and the costs outside the
+kernels: docs/fluid_cuda.md.
 """
 
 from __future__ import annotations
 
 import os
 
-from cosim.errors import InputError
+from errors import InputError
 
 _SIM_HINT = ("set NUMBA_ENABLE_CUDASIM=1 in the environment before starting Python to run the GPU path on numba's "
              "CUDA simulator (slow: tiny cases only), or use device='cpu'")

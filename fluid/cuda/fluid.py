@@ -23,7 +23,7 @@ import numba
 import numpy as np
 from numba import cuda
 
-from cosim.errors import InputError, InstabilityError
+from errors import InputError, InstabilityError
 from fluid.cuda.state import DeviceState
 from fluid import mls
 from fluid.integrator import step_limit

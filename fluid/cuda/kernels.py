@@ -10,8 +10,8 @@ order, so that the two paths agree to round-off in float64:
   (x, index before the sort) restores the CPU's (a stable counting sort keeps the index
   order, a stable insertion sort by x then sorts on x), so both paths hold the same
   particles in the same rows.
-* :func:`make_pair_loop` is ``fluid.equations._make_interact`` (004_1657bd4a51d29840.txt
-  Eq. 6-8, 001_14936b82710365b2.txt Eq. 6, the density diffusions and the laminar
+* :func:`make_pair_loop` is ``fluid.equations._make_interact`` (Barreiro et al. 2016,
+  Eq. 6-8, Sunara et al. 2021, Eq. 6, the density diffusions and the laminar
   viscosity and XSPH of fluid.equations' docstring). It walks the whole row of three
   cells where the CPU loop walks the row trimmed to 2h in x: what it adds lies beyond
   2h, where every term is exactly zero (the kernel factors are clamped), so the sums hold
@@ -94,7 +94,7 @@ def d_grad_shape(kernel, q):
 
 @cuda.jit(device=True)
 def d_tait(r, rho0, c0, gamma, B, e):
-    """fluid.equations._tait (004_1657bd4a51d29840.txt Eq. 8)."""
+    """fluid.equations._tait (Barreiro et al. 2016, Eq. 8)."""
     x = r / rho0
     if gamma == 7.0:
         x2 = x * x
@@ -385,7 +385,7 @@ def make_pair_loop(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
                         inv = d * rs
                         sd += mbF * vr
                         volb = mb / rhob if fb > 0.0 else 0.0
-                        if renorm:  # seed 000 Eq. 2: minus the mean renormalised gradient
+                        if renorm:  # Dinçer & Demir 2020, Eq. 2: minus the mean renormalised gradient
                             rhoH = -0.5 * ((gxa + G[0, b]) * rx + (gza + G[zc, b]) * rz)
                             if three:
                                 rhoH -= 0.5 * (gya + G[1, b]) * ry
@@ -460,7 +460,7 @@ _GRADIENT_LOOPS = {}
 
 def make_gradient_loop(kernel: int, three: bool):
     """``fluid.equations._make_gradient``: the renormalised density gradient ``G[:, a]``
-    [kg/m^4] (rows x, (y,) z) of every fluid particle (000_7d114ab96e048b26.txt Eq. 3-4;
+    [kg/m^4] (rows x, (y,) z) of every fluid particle (Dinçer & Demir 2020, Eq. 3-4;
     the hydrostatic gradient where the matrix is near singular; 0 on boundary particles),
     for the density diffusion of ``diffusion="antuono"``."""
     key = (kernel, three)
@@ -963,7 +963,7 @@ def d_det4(m00, m01, m02, m03, m10, m11, m12, m13, m20, m21, m22, m23, m30, m31,
 
 @cuda.jit
 def k_mls(P, rho, mass, kind, n, start, lo, inv_cell, nx, ny, nz, kernel, ad, h, min_det, out):
-    """``fluid.mls.mls_density`` (001_14936b82710365b2.txt Eq. 9-12): the MLS density of
+    """``fluid.mls.mls_density`` (Sunara et al. 2021, Eq. 9-12): the MLS density of
     every fluid particle into ``out`` (boundary particles: their own); whole rows of cells
     in the CPU's order."""
     three = P.shape[0] == 3

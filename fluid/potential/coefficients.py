@@ -47,7 +47,7 @@ from pathlib import Path
 
 import numpy as np
 
-from cosim.errors import InputError
+from errors import InputError
 from fluid.potential.hull import Hull
 
 log = logging.getLogger(__name__)

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from cosim.errors import InputError
+from errors import InputError
 
 #: the geom kinds this module meshes
 KINDS = ("box", "cylinder", "sphere")

@@ -44,7 +44,7 @@ from typing import Mapping, Sequence
 
 import numpy as np
 
-from cosim.errors import InputError
+from errors import InputError
 from fluid.potential.coefficients import Coefficients, compute, require_capytaine
 from fluid.potential.hull import KINDS, check_pierces, default_panel_size, displaced_volume, wetted_hull
 from fluid.potential.radiation import BAND, ImpulseResponse, SettingError, impulse_response

@@ -43,7 +43,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from cosim.errors import InputError
+from errors import InputError
 
 class SettingError(InputError):
     """A setting of the potential fluid that does not fit the hull or the waves; ``key``

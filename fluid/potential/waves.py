@@ -30,7 +30,7 @@ from typing import Sequence
 
 import numpy as np
 
-from cosim.errors import InputError
+from errors import InputError
 from fluid.wavemaker import wavenumber as _wavenumber
 
 

@@ -1,0 +1,153 @@
+"""The scene's near field (``domain.kind = "nearfield"``): the box chosen from the bodies and
+the sea (fluid.nearfield.choose_box, cosim.scene.nearfield), what it is refused for, and a
+short run that reports the choice."""
+
+import json
+import math
+
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+
+from cosim.scene import Scene
+from cosim.scene.fields import SceneError
+from cosim.scene.nearfield import box_for, heave_period, reach
+from fluid.nearfield import MIN_MARGIN_SUPPORTS, MIN_ZONE_SUPPORTS, choose_box
+from fluid.waves import RegularWave
+
+G = 9.81
+
+SCENE = """
+name = "nf"
+[world]
+dim = 2
+duration = 0.1
+sample_every = 0.05
+[fluid]
+model = "sph"
+dx = 0.02
+[domain]
+kind = "nearfield"
+depth = 0.3
+[waves]
+kind = "regular"
+height = 0.04
+period = 1.0
+depth = 0.3
+[[bodies]]
+shape = "box"
+name = "box"
+size = [0.2, 0.1]
+density = 500.0
+pos = [1.2]
+place = "floating"
+[probes]
+gauges = [1.0]
+motion = ["box"]
+"""
+
+
+def _scene(tmp_path, text=SCENE, *changes):
+    p = tmp_path / "nf.toml"
+    p.write_text(text)
+    s = Scene.from_toml(p)
+    return s.with_values(list(changes)) if changes else s
+
+
+def _wavelength(T, d):
+    w = 2 * math.pi / T
+    k = brentq(lambda k: G * k * math.tanh(k * d) - w * w, 1e-9, 1e4)
+    return 2 * math.pi / k
+
+
+def test_the_heave_period_of_a_floating_box():
+    """2 pi sqrt((m + A33) / (rho g Awp)), A33 = rho pi B^2 / 8 for a 2-D strip, (4/3) rho r^3
+    for a 3-D waterplane of equivalent radius r."""
+    from cosim.scene.spec import Box, Cylinder, Sphere
+
+    b = Box(name="b", size=(0.2, 0.1), density=500.0, pos=(1.0,), place="floating")
+    m, a33 = 500.0 * 0.02, 1000.0 * math.pi * 0.04 / 8
+    assert heave_period(b, 2, 1000.0, G) == pytest.approx(2 * math.pi * math.sqrt((m + a33) / (1000 * G * 0.2)))
+    c = Cylinder(name="c", radius=3.0, length=3.0, density=500.0, pos=(0.0, 0.0), place="floating")
+    m, a33 = 500.0 * math.pi * 9 * 3, 4 / 3 * 1000.0 * 27
+    assert heave_period(c, 3, 1000.0, G) == pytest.approx(2 * math.pi * math.sqrt((m + a33) /
+                                                                                  (1000 * G * math.pi * 9)))
+    ball = Sphere(name="s", radius=0.1, density=500.0, pos=(1.0, 0.0), place="floating")
+    assert heave_period(ball, 3, 1000.0, G) is None  # not estimated: the sea's period sets the zones
+
+
+def test_the_zone_is_half_the_wavelength_of_the_longest_natural_period_within_the_sea():
+    sea = RegularWave(0.04, 1.0, 0.3, level=0.3)
+    h = 0.04
+    c = choose_box(sea, h, ((1.1,), (1.3,)), reach=0.05, periods=(0.7, 1.6))  # 1.6 s is longer than the sea's
+    assert c.zone == pytest.approx(0.5 * _wavelength(0.7, 0.3), rel=1e-9)
+    margin = 0.05 + MIN_MARGIN_SUPPORTS * 2 * h
+    assert c.x == pytest.approx((1.1 - margin - c.zone, 1.3 + margin + c.zone))
+    assert c.height == pytest.approx(0.3 + 2 * 0.04 + 4 * h)
+    # no body period: the sea's; a tiny wave: the floor of kernel supports
+    assert choose_box(sea, h, ((0.0,), (0.0,))).zone == pytest.approx(0.5 * _wavelength(1.0, 0.3), rel=1e-9)
+    assert choose_box(sea, h, ((0.0,), (0.0,)), periods=(0.05,)).zone == pytest.approx(MIN_ZONE_SUPPORTS * 2 * h)
+    # given values are kept, and said so
+    g = choose_box(sea, h, ((0.0,), (0.0,)), zone=0.3, x=(-1.0, None), height=0.5)
+    assert (g.zone, g.x[0], g.height) == (0.3, -1.0, 0.5)
+    assert g.reasons["zone"] == g.reasons["x0"] == g.reasons["height"] == "given"
+    assert "natural period" in c.reasons["zone"] and "peak period" in choose_box(sea, h, ((0,), (0,))).reasons["zone"]
+    # 3-D: across y as along x, centred on y = 0
+    c3 = choose_box(sea, h, ((1.1, -0.2), (1.3, 0.3)), reach=0.05, periods=(0.7,), dim=3)
+    assert c3.y == pytest.approx((-(0.3 + margin + c3.zone), 0.3 + margin + c3.zone))
+
+
+def test_a_scene_gets_its_box_from_its_bodies_and_sea(tmp_path):
+    s = _scene(tmp_path)
+    c = box_for(s)
+    sea = RegularWave(0.04, 1.0, 0.3, level=0.3)
+    kd = sea.wavenumber * 0.3
+    assert reach(s) == pytest.approx(2 * 0.02 / math.tanh(kd))
+    tn = heave_period(s.bodies[0], 2, 1000.0, G)
+    assert c.zone == pytest.approx(0.5 * _wavelength(tn, 0.3), rel=1e-9)
+    assert 0.5 * (c.x[0] + c.x[1]) == pytest.approx(1.2)  # the body in the middle
+    # no body: the sea's wavelength sets the zones
+    bare = _scene(tmp_path, SCENE.split("[[bodies]]")[0] + "[probes]\ngauges = [0.0]\n")
+    assert box_for(bare).zone == pytest.approx(0.5 * sea.wavelength, rel=1e-9)
+
+
+@pytest.mark.parametrize("change, key", [
+    (("waves.direction=180",), "waves.direction"),
+    (("domain.width=1.0",), "domain.width"),
+    (("domain.x0=1.0",), "bodies[0].pos"),
+    (("domain.zone=0.5", "domain.x0=0.6", "domain.x1=1.8"), "bodies[0].pos"),
+    (("domain.height=0.2",), "domain.height"),
+    (("domain.x0=2.0", "domain.x1=1.0"), "domain.x1"),
+])
+def test_bad_near_fields_are_refused_naming_the_key(tmp_path, change, key):
+    with pytest.raises(SceneError) as e:
+        _scene(tmp_path, SCENE, *change)
+    assert e.value.path == key
+
+
+def test_a_near_field_needs_an_incident_sea(tmp_path):
+    with pytest.raises(SceneError) as e:
+        _scene(tmp_path, SCENE.replace('kind = "regular"', 'kind = "piston"').replace("depth = 0.3\n[[", "[["))
+    assert e.value.path.startswith("waves")
+
+
+def test_a_short_run_reports_the_box_and_moves_its_end_walls_with_the_sea(tmp_path):
+    s = _scene(tmp_path)
+    res = s.run(out=tmp_path / "out")
+    summary = json.loads((tmp_path / "out" / "summary.json").read_text())
+    nf = summary["near_field"]
+    c = box_for(s)
+    assert nf["x_m"] == pytest.approx(list(c.x)) and nf["zone_m"] == pytest.approx(c.zone)
+    assert set(nf["reasons"]) == {"zone", "x0", "x1", "height"}
+    assert summary["setup"]["name"] == "waves"
+    assert (tmp_path / "out" / "sea_components.csv").exists()
+    # the estimate counted the particles the box holds, within a few per cent
+    est = summary["estimate"]
+    assert est["particles"] == pytest.approx(summary["particles"], rel=0.05)
+    assert np.isfinite(res.series["box.heave"]).all()
+
+
+def test_a_near_field_scene_reads_back_from_its_toml(tmp_path):
+    s = _scene(tmp_path, SCENE, "domain.zone=0.35", "domain.rate=3.0")
+    again = Scene.from_dict(__import__("tomllib").loads(s.to_toml()))
+    assert again == s and again.domain.zone == 0.35 and again.domain.rate == 3.0
