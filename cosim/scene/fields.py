@@ -17,6 +17,7 @@ import math
 from typing import Any
 
 from cosim.errors import InputError
+from cosim.scene.registry import Registry
 
 
 class SceneError(InputError):
@@ -126,11 +127,11 @@ class Choice(Check):
 
     def __init__(self, doc, choices, optional=False):
         super().__init__(doc, "", optional)
-        self._choices = choices if hasattr(choices, "names") else tuple(choices)
+        self._choices = choices if isinstance(choices, Registry) else tuple(choices)
 
     @property
     def choices(self) -> tuple:
-        return tuple(self._choices.names()) if hasattr(self._choices, "names") else self._choices
+        return tuple(self._choices.names()) if isinstance(self._choices, Registry) else self._choices
 
     def expected(self) -> str:
         return f"one of {', '.join(repr(c) for c in self.choices)} ({self.doc})"
@@ -287,12 +288,12 @@ class Part(Check):
 
     def __init__(self, doc, classes, optional=False):
         super().__init__(doc, "", optional)
-        self._classes = (classes if hasattr(classes, "classes") else
+        self._classes = (classes if isinstance(classes, Registry) else
                          tuple(classes) if isinstance(classes, (tuple, list)) else (classes,))
 
     @property
     def classes(self) -> tuple:
-        return self._classes.classes() if hasattr(self._classes, "classes") else self._classes
+        return self._classes.classes() if isinstance(self._classes, Registry) else self._classes
 
     def expected(self) -> str:
         return f"{' or '.join(c.__name__ for c in self.classes)} ({self.doc})"
