@@ -128,9 +128,13 @@ class Coupler:
             raise ConfigurationError("moorings and a fluid attach to bodies: pass bodies= as well")
         if fluid is not None:
             check_participant(fluid, Fluid)
-        for a in self.moorings:
+        # the roles the moorings take (what they are does not change during a run; a
+        # protocol's isinstance costs ~13 us, so it is asked once)
+        self._says_dynamic = [isinstance(a.mooring, SaysDynamic) and a.mooring.dynamic for a in self.moorings]
+        self._breaking = [isinstance(a.mooring, Breaking) for a in self.moorings]
+        for a, dynamic in zip(self.moorings, self._says_dynamic):
             check_participant(a.mooring, Mooring)
-            if isinstance(a.mooring, SaysDynamic) and a.mooring.dynamic:
+            if dynamic:
                 check_participant(a.mooring, DynamicMooring)
             if len(a.sites) != a.mooring.n_lines:
                 raise ConfigurationError(
@@ -159,6 +163,9 @@ class Coupler:
                                      "over its last advance (exchanged_wrenches(), e.g. cosim.sph_fluid.SPHFluid)")
         self.scheme = scheme
         self._scheme = SCHEME_STEPS[scheme]  #: how this scheme takes the bodies' loads over a step
+        self._timed_loads = isinstance(fluid, TimedLoads)
+        config = fluid.config if isinstance(fluid, Configured) else None  # a weakly compressible fluid's
+        self._speed_of_sound = config.speed_of_sound if isinstance(config, SpeedOfSound) else None
         if light_body not in LIGHT_BODY:
             raise InputError(f"light_body={light_body!r} is not one of {', '.join(LIGHT_BODY)}")
         if light_body == "added-mass" and fluid is None:
@@ -453,16 +460,16 @@ class Coupler:
         tensions after the step, the tension of a line's length constraint included; a
         released line loses its constraint."""
         tt = None
-        for a in self.moorings:
-            if isinstance(a.mooring, Breaking):
+        for a, breaking in zip(self.moorings, self._breaking):
+            if breaking:
                 tt = self.tether_tensions() if tt is None else tt
                 a.mooring.check_breaks(self.t, [tt.get(f"{a.mooring.name}.{i}", 0.0) for i in range(a.mooring.n_lines)])
         if tt is not None:
             self._release_tethers()
 
     def _release_tethers(self) -> None:
-        for a in self.moorings:
-            for i in (a.mooring.released_lines() if isinstance(a.mooring, Breaking) else []):
+        for a, breaking in zip(self.moorings, self._breaking):
+            for i in (a.mooring.released_lines() if breaking else []):
                 if f"{a.mooring.name}.{i}" in self.bodies.tethers:
                     self.bodies.release_tether(f"{a.mooring.name}.{i}")
 
@@ -620,7 +627,7 @@ class Coupler:
         moorings that say they are ``dynamic`` (their force is an integral over the step)."""
         if self.lines != "subiterate":
             return []
-        return [j for j, a in enumerate(self.moorings) if isinstance(a.mooring, SaysDynamic) and a.mooring.dynamic]
+        return [j for j, dynamic in enumerate(self._says_dynamic) if dynamic]
 
     def _held_lines(self) -> list[int]:
         """The attachments whose force is taken at the step's start (and, with the
@@ -722,8 +729,7 @@ class Coupler:
         """Stop a run whose body accelerations oscillate with growing amplitude (the
         signature of unstable staggered coupling; for light bodies, added mass), or
         whose bodies outrun the fluid's speed of sound, before it overflows."""
-        config = self.fluid.config if isinstance(self.fluid, Configured) else None
-        c0 = config.speed_of_sound if isinstance(config, SpeedOfSound) else None
+        c0 = self._speed_of_sound
         if c0 is not None:
             speed = np.linalg.norm(kin.velocity, axis=1)
             k = int(np.argmax(speed))
@@ -871,7 +877,7 @@ class PredictorCorrectorScheme(ExplicitScheme):
         b.set_wrenches(start[0] + start[2] + F_dyn, start[1] + start[3] + T_dyn)
         b.advance(t, dt)
         kin1 = b.kinematics()
-        if isinstance(c.fluid, TimedLoads):  # loads that depend on time (waves): at the predicted time
+        if c._timed_loads:  # loads that depend on time (waves): at the predicted time
             c.fluid.set_time(t + dt)
         c._give_kinematics(kin1)
         end = c._loads(kin1)
