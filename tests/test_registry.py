@@ -99,25 +99,32 @@ def test_entry_points_register_them_for_a_toml_scene(monkeypatch, tmp_path):
         Scene.from_toml(path)
 
 
-def test_a_fluid_from_outside_loads_the_bodies(tmp_path):
+@pytest.fixture
+def drag():
+    FLUIDS.register("drag", Drag)
+    yield
+    FLUIDS.unregister("drag")
+
+
+def test_a_fluid_from_outside_loads_the_bodies(drag, tmp_path):
     """A box falling under gravity through a fluid that drags it with ``-c V``
     (tests/plugin_example.py): ``z - z0 = -v_t (t - tau (1 - exp(-t / tau)))``, ``v_t = g
     tau``, ``tau = m / c``."""
-    FLUIDS.register("drag", Drag)
-    try:
-        m, tau, g = 500.0 * 0.2 * 0.1, 0.2, 9.81
-        res = Scene.from_dict({"world": {"dim": 2, "duration": 0.6, "sample_every": 0.01},
-                               "fluid": {"model": "drag", "c": m / tau},
-                               "bodies": [{"shape": "box", "name": "box", "size": [0.2, 0.1], "pos": [1.0, 0.0],
-                                           "density": 500.0}]}).run(tmp_path / "run", progress=False)
-    finally:
-        FLUIDS.unregister("drag")
+    m, tau, g = 500.0 * 0.2 * 0.1, 0.2, 9.81
+    box = {"shape": "box", "name": "box", "size": [0.2, 0.1], "pos": [1.0, 0.0], "density": 500.0}
+    res = Scene.from_dict({"world": {"dim": 2, "duration": 0.6, "sample_every": 0.01},
+                           "fluid": {"model": "drag", "c": m / tau}, "bodies": [box]}).run(tmp_path / "run",
+                                                                                           progress=False)
     t = res.t
     exact = -g * tau * (t - tau * (1.0 - np.exp(-t / tau)))
     assert np.abs(res["box.heave"] - exact).max() < 1e-3 * abs(exact[-1])
     # the load over the last coupling step (one sample interval): the predictor-corrector's mean of its ends
-    drag = m * g * (1.0 - np.exp(-t[-2:] / tau))
-    assert res["box.fluid_Fz"][-1] == pytest.approx(drag.mean(), rel=1e-3)
+    force = m * g * (1.0 - np.exp(-t[-2:] / tau))
+    assert res["box.fluid_Fz"][-1] == pytest.approx(force.mean(), rel=1e-3)
+    # a fluid without a still-water level floats nothing
+    floating = {"fluid": {"model": "drag", "c": 1.0}, "bodies": [dict(box, pos=[1.0], place="floating")]}
+    with pytest.raises(SceneError, match="bodies\\[0\\].place: the 'drag' fluid states no still-water level"):
+        Scene.from_dict(floating)
 
 
 def test_a_plugin_is_checked_with_the_scene(by_hand):

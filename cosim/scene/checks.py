@@ -340,6 +340,11 @@ def _check_bodies(s, dim):
                                      f"its horizontal position only, {'(x,)' if dim == 2 else '(x, y)'}")
                 if isinstance(s.fluid, NoFluid):
                     raise SceneError(f"{key}.place", "a floating body needs a fluid to float on (fluid.model)")
+                from cosim.scene.build import water_level
+
+                if water_level(s) is None:  # a fluid model of another package that states no still water
+                    raise SceneError(f"{key}.place", f"the {s.fluid.model!r} fluid states no still-water level "
+                                     f"to float a body at; place it at a given pos")
             else:
                 _dim_vec(b.pos, dim, f"{key}.pos")
             try:
