@@ -43,7 +43,9 @@ from cosim.clock import TICKS_PER_SECOND, Clock, to_ticks
 from cosim.errors import ConfigurationError, ConvergenceError, InputError, InstabilityError, SolverError
 from cosim.ledger import Ledger
 from cosim.progress import Progress
-from cosim.protocol import Mooring, Participant, check_participant
+from cosim.protocol import (AddedMassLoads, Breaking, Configured, DrivenBodies, DrivenToStepEnd, DynamicMooring,
+                            ElasticStructures, ExchangedLoads, Fluid, Gravity, LimitReported, Mooring, Participant,
+                            SaysDynamic, SpeedOfSound, Tethered, TimedLoads, check_participant)
 from cosim.watch import InstabilityWatch
 
 
@@ -124,8 +126,16 @@ class Coupler:
                          for m in moorings]
         if (self.moorings or fluid is not None) and bodies is None:
             raise ConfigurationError("moorings and a fluid attach to bodies: pass bodies= as well")
-        for a in self.moorings:
+        if fluid is not None:
+            check_participant(fluid, Fluid)
+        # the roles the moorings take (what they are does not change during a run; a
+        # protocol's isinstance costs ~13 us, so it is asked once)
+        self._says_dynamic = [isinstance(a.mooring, SaysDynamic) and a.mooring.dynamic for a in self.moorings]
+        self._breaking = [isinstance(a.mooring, Breaking) for a in self.moorings]
+        for a, dynamic in zip(self.moorings, self._says_dynamic):
             check_participant(a.mooring, Mooring)
+            if dynamic:
+                check_participant(a.mooring, DynamicMooring)
             if len(a.sites) != a.mooring.n_lines:
                 raise ConfigurationError(
                     f"mooring '{a.mooring.name}' has {a.mooring.n_lines} lines but {len(a.sites)} fairlead sites "
@@ -147,11 +157,15 @@ class Coupler:
         if scheme not in SCHEMES:
             raise InputError(f"coupling scheme {scheme!r} is not one of {', '.join(SCHEMES)}")
         if scheme == "auto":
-            scheme = "fluid-first" if hasattr(fluid, "exchanged_wrenches") else "predictor-corrector"
-        if scheme == "fluid-first" and not hasattr(fluid, "exchanged_wrenches"):
+            scheme = "fluid-first" if isinstance(fluid, ExchangedLoads) else "predictor-corrector"
+        if scheme == "fluid-first" and not isinstance(fluid, ExchangedLoads):
             raise ConfigurationError("the fluid-first scheme needs a fluid that reports the loads it exchanged "
                                      "over its last advance (exchanged_wrenches(), e.g. cosim.sph_fluid.SPHFluid)")
         self.scheme = scheme
+        self._scheme = SCHEME_STEPS[scheme]  #: how this scheme takes the bodies' loads over a step
+        self._timed_loads = isinstance(fluid, TimedLoads)
+        config = fluid.config if isinstance(fluid, Configured) else None  # a weakly compressible fluid's
+        self._speed_of_sound = config.speed_of_sound if isinstance(config, SpeedOfSound) else None
         if light_body not in LIGHT_BODY:
             raise InputError(f"light_body={light_body!r} is not one of {', '.join(LIGHT_BODY)}")
         if light_body == "added-mass" and fluid is None:
@@ -196,7 +210,7 @@ class Coupler:
         if self.bodies is not None:
             self._attach_tethers()
             self.bodies.initialize(t0)
-            driven = getattr(self.bodies, "driven_dofs", set())
+            driven = self.bodies.driven_dofs if isinstance(self.bodies, DrivenBodies) else set()
             for k, s in enumerate(self.watch.dofs):  # a prescribed motion (a moving support) is not the coupling's
                 if s.stop > s.start and set(range(s.start, s.stop)) <= driven:
                     self.watch.dofs[k] = slice(0, 0)
@@ -213,7 +227,7 @@ class Coupler:
                 # an elastic structure's links vibrate by nature (an impact rings its high modes up for
                 # hundreds of steps, which the watch takes for unstable coupling): its own check
                 # watches it (bodies.elastic.ElasticBody.check, every placement)
-                for k in getattr(self.fluid, "elastic_rows", ()):
+                for k in (self.fluid.elastic_rows if isinstance(self.fluid, ElasticStructures) else ()):
                     self.watch.dofs[k] = slice(0, 0)
                 self.fluid.set_body_kinematics(kin)
                 self._choose_light_body_remedy()
@@ -222,9 +236,9 @@ class Coupler:
             if p is not self.bodies:
                 p.initialize(t0)
         for j in self._dynamic_lines():  # the motion they are given is where the bodies took the fairleads
-            drive = getattr(self.moorings[j].mooring, "drive_to_step_end", None)
-            if drive is not None:
-                drive()
+            m = self.moorings[j].mooring
+            if isinstance(m, DrivenToStepEnd):
+                m.drive_to_step_end()
         self._initialized = True
         self._check_fixed_step()
         self._check_line_step()
@@ -237,7 +251,7 @@ class Coupler:
         for p in self.participants:
             d = p.max_dt()
             if d < self.dt * (1.0 - 1e-9):
-                why = getattr(p, "dt_limit", None)
+                why = p.dt_limit if isinstance(p, LimitReported) else None
                 why = f" (limited by {why})" if isinstance(why, str) and why else ""
                 raise ConfigurationError(
                     f"coupling step dt = {self.dt:g} s is above the stable step of participant '{p.name}', "
@@ -268,7 +282,10 @@ class Coupler:
 
     def _check_gravity(self) -> None:
         """The fluid and the bodies must fall the same way: one gravity for every participant."""
-        g_f = getattr(getattr(self.fluid, "config", self.fluid), "g", None)
+        states = self.fluid.config if isinstance(self.fluid, Configured) else self.fluid
+        if not isinstance(states, Gravity):
+            return
+        g_f = states.g
         if g_f is None:
             return
         g_b = np.asarray(self.bodies.model.opt.gravity, float)
@@ -279,7 +296,7 @@ class Coupler:
                 f"for all; by hand: FluidConfig(g=...) and bodies.builders.scene(gravity=...))")
 
     def _choose_light_body_remedy(self) -> None:
-        carries = getattr(self.fluid, "loads_carry_added_mass", True)
+        carries = self.fluid.loads_carry_added_mass if isinstance(self.fluid, AddedMassLoads) else True
         rho = fluid_density(self.fluid, required=self.light_body in ("added-mass", "subiterate"))
         if rho is None:
             if self.light_body == "auto" and carries:
@@ -293,7 +310,7 @@ class Coupler:
         """Length constraints (MuJoCo tendons) for the mooring lines that ask for
         them (inextensible catenary lines), between each anchor and fairlead site."""
         for a in self.moorings:
-            wanted = getattr(a.mooring, "tethers", lambda: [])()
+            wanted = a.mooring.tethers() if isinstance(a.mooring, Tethered) else []
             if not wanted:
                 continue
             spec = []
@@ -443,17 +460,16 @@ class Coupler:
         tensions after the step, the tension of a line's length constraint included; a
         released line loses its constraint."""
         tt = None
-        for a in self.moorings:
-            check = getattr(a.mooring, "check_breaks", None)
-            if check is not None:
+        for a, breaking in zip(self.moorings, self._breaking):
+            if breaking:
                 tt = self.tether_tensions() if tt is None else tt
-                check(self.t, [tt.get(f"{a.mooring.name}.{i}", 0.0) for i in range(a.mooring.n_lines)])
+                a.mooring.check_breaks(self.t, [tt.get(f"{a.mooring.name}.{i}", 0.0) for i in range(a.mooring.n_lines)])
         if tt is not None:
             self._release_tethers()
 
     def _release_tethers(self) -> None:
-        for a in self.moorings:
-            for i in getattr(a.mooring, "released_lines", lambda: [])():
+        for a, breaking in zip(self.moorings, self._breaking):
+            for i in (a.mooring.released_lines() if breaking else []):
                 if f"{a.mooring.name}.{i}" in self.bodies.tethers:
                     self.bodies.release_tether(f"{a.mooring.name}.{i}")
 
@@ -569,6 +585,9 @@ class Coupler:
             self.moorings[j].mooring.load_state(st)
 
     def _exchange_and_advance(self, t: float, dt: float) -> None:
+        """Steps 2-5 of the module docstring: the loads as the scheme takes them
+        (:data:`SCHEME_STEPS`), the bodies advanced with them (with the dynamic lines, where
+        there are), the fluid and the held moorings given the new motion and advanced."""
         b = self.bodies
         kin0 = b.kinematics()
         qvel0 = b.dof_velocities()
@@ -576,31 +595,7 @@ class Coupler:
             F_am, T_am = self.added_mass.correction()  # m^ a_prev, before the step moves the bodies
             self.added_mass.step_started(dt)
         dynamic = self._dynamic_lines()
-        if self.scheme == "fluid-first":
-            moor = self._mooring_wrenches(kin0, only=self._held_lines())
-            if "subiterate" in self.remedies.values():
-                loads = self._subiterated_fluid_loads(t, dt, kin0, moor) + moor
-            else:
-                self.fluid.advance(t, dt)  # the fluid moves the bodies' particles with their current motion
-                loads = self._fluid_first_loads(dt, kin0.velocity) + moor
-        else:
-            loads = self._loads(kin0)
-        if self.scheme == "predictor-corrector":
-            # predict the bodies' motion with the start loads, take the loads there,
-            # go back and advance with the mean of both
-            saved = [(p, p.save_state()) for p in self._exchanging]
-            F_dyn, T_dyn = self._mooring_wrenches(kin0, only=dynamic)  # the dynamic lines' force at the start
-            b.set_wrenches(loads[0] + loads[2] + F_dyn, loads[1] + loads[3] + T_dyn)
-            b.advance(t, dt)
-            kin1 = b.kinematics()
-            if hasattr(self.fluid, "set_time"):  # loads that depend on time (waves): at the predicted time
-                self.fluid.set_time(t + dt)
-            self._give_kinematics(kin1)
-            end = self._loads(kin1)
-            for p, st in saved:
-                p.load_state(st)
-            self._give_kinematics(kin0)
-            loads = tuple(0.5 * (a + c) for a, c in zip(loads, end))
+        loads = self._scheme.loads(self, t, dt, kin0, dynamic)
         F_fluid, T_fluid, F_moor, T_moor = loads
         # the ledger books the fluid's own load: the armature and the added-mass term cancel in a steady state
         F_add, T_add = (F_fluid + F_am, T_fluid + T_am) if self.added_mass is not None else (F_fluid, T_fluid)
@@ -615,7 +610,7 @@ class Coupler:
         kin1 = b.kinematics()
         self._watch_bodies((b.dof_velocities() - qvel0) / dt, kin1)
         self._give_kinematics(kin1)
-        if self.fluid is not None and self.scheme != "fluid-first":
+        if self.fluid is not None and not self._scheme.advances_fluid:
             self.fluid.advance(t, dt)
         for j, a in enumerate(self.moorings):
             if j not in dynamic:  # those have advanced with the bodies
@@ -632,7 +627,7 @@ class Coupler:
         moorings that say they are ``dynamic`` (their force is an integral over the step)."""
         if self.lines != "subiterate":
             return []
-        return [j for j, a in enumerate(self.moorings) if getattr(a.mooring, "dynamic", False)]
+        return [j for j, dynamic in enumerate(self._says_dynamic) if dynamic]
 
     def _held_lines(self) -> list[int]:
         """The attachments whose force is taken at the step's start (and, with the
@@ -734,7 +729,7 @@ class Coupler:
         """Stop a run whose body accelerations oscillate with growing amplitude (the
         signature of unstable staggered coupling; for light bodies, added mass), or
         whose bodies outrun the fluid's speed of sound, before it overflows."""
-        c0 = getattr(getattr(self.fluid, "config", None), "speed_of_sound", None)
+        c0 = self._speed_of_sound
         if c0 is not None:
             speed = np.linalg.norm(kin.velocity, axis=1)
             k = int(np.argmax(speed))
@@ -853,3 +848,61 @@ class Coupler:
             kin = self.bodies.kinematics()
             if self.fluid is not None:
                 self.fluid.set_body_kinematics(kin)
+
+
+# ------------------------------------------------------------------------ the coupling schemes
+class ExplicitScheme:
+    """``scheme="explicit"``: the loads at the step's start, held over it (one evaluation)."""
+
+    #: the fluid advances while the loads are taken (else after the bodies, with their new motion)
+    advances_fluid = False
+
+    def loads(self, c: Coupler, t: float, dt: float, kin0, dynamic) -> tuple[np.ndarray, ...]:
+        """Fluid force and torque, held moorings' force and torque on each body for the step
+        from ``t`` [s] over ``dt`` [s], the bodies at ``kin0`` (``dynamic``: the attachments
+        of the dynamic lines, which advance with the bodies)."""
+        return c._loads(kin0)
+
+
+class PredictorCorrectorScheme(ExplicitScheme):
+    """``scheme="predictor-corrector"``: the bodies advance with the start loads (the
+    dynamic lines' force at the start added), the loads are taken at the predicted pose
+    and time, every exchanging participant is rolled back, and the mean of both is taken."""
+
+    def loads(self, c, t, dt, kin0, dynamic):
+        start = c._loads(kin0)
+        b = c.bodies
+        saved = [(p, p.save_state()) for p in c._exchanging]
+        F_dyn, T_dyn = c._mooring_wrenches(kin0, only=dynamic)  # the dynamic lines' force at the start
+        b.set_wrenches(start[0] + start[2] + F_dyn, start[1] + start[3] + T_dyn)
+        b.advance(t, dt)
+        kin1 = b.kinematics()
+        if c._timed_loads:  # loads that depend on time (waves): at the predicted time
+            c.fluid.set_time(t + dt)
+        c._give_kinematics(kin1)
+        end = c._loads(kin1)
+        for p, st in saved:
+            p.load_state(st)
+        c._give_kinematics(kin0)
+        return tuple(0.5 * (a + e) for a, e in zip(start, end))
+
+
+class FluidFirstScheme:
+    """``scheme="fluid-first"``: the fluid advances first with the bodies' current motion
+    (sub-iterated with the bodies for the ``"subiterate"`` light-body remedy), and the bodies
+    receive the impulse it exchanged; the held moorings' force at the step's start."""
+
+    advances_fluid = True
+
+    def loads(self, c, t, dt, kin0, dynamic):
+        moor = c._mooring_wrenches(kin0, only=c._held_lines())
+        if "subiterate" in c.remedies.values():
+            return c._subiterated_fluid_loads(t, dt, kin0, moor) + moor
+        c.fluid.advance(t, dt)  # the fluid moves the bodies' particles with their current motion
+        return c._fluid_first_loads(dt, kin0.velocity) + moor
+
+
+#: one strategy per coupling scheme (``Coupler(scheme=...)``)
+SCHEME_STEPS = {"explicit": ExplicitScheme(), "predictor-corrector": PredictorCorrectorScheme(),
+                "fluid-first": FluidFirstScheme()}
+

@@ -68,16 +68,17 @@ def limit(bodies, attachments, sites) -> LineStepLimit | None:
     records, ``sites`` their ``(site ids, body index)`` pairs."""
     import mujoco
 
+    from cosim.protocol import LineStiffness
+
     m, d = bodies.model, bodies.data
     nv = m.nv
     K, C = np.zeros((nv, nv)), np.zeros((nv, nv))
     parts = []  # (mooring name, line name, J^T k J, J^T c J)
     J = np.zeros((3, nv))
     for a, (ids, _) in zip(attachments, sites):
-        report = getattr(a.mooring, "fairlead_stiffness", None)
-        if report is None:
+        if not isinstance(a.mooring, LineStiffness):
             continue
-        s = report()
+        s = a.mooring.fairlead_stiffness()
         names = list(getattr(a.mooring, "line_names", None) or [ln.name for ln in a.mooring.lines])
         ax = [0, 2] if a.mooring.dim == 2 else [0, 1, 2]
         for i, sid in enumerate(ids):

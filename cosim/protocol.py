@@ -1,4 +1,7 @@
-"""The participant protocol: what the coupler asks of every solver.
+"""The participant protocol: what the coupler asks of every solver, and the roles it
+gives them: every participant (:class:`Participant`), the fluid (:class:`Fluid`), the
+moorings (:class:`Mooring`), and the optional hooks a participant may add, each a
+``typing.Protocol`` the coupler tests with ``isinstance``.
 
 The solvers (``fluid``, ``bodies``, ``moorings``) never import this module; they
 satisfy it structurally and :func:`check_participant` verifies it, naming what is
@@ -10,7 +13,7 @@ exact start time of each step, so no participant accumulates time on its own.
 
 from __future__ import annotations
 
-from typing import Any, Protocol, runtime_checkable
+from typing import Any, Protocol, Sequence, runtime_checkable
 
 import numpy as np
 
@@ -64,6 +67,163 @@ class Mooring(Participant, Protocol):
 
     def fairlead_forces(self) -> np.ndarray:
         """Force [N] each line exerts on its fairlead (on the body), ``(n_lines, dim)``."""
+
+
+@runtime_checkable
+class Fluid(Participant, Protocol):
+    """The coupler's fluid: a participant that loads the bodies (``Coupler(fluid=...)``).
+
+    It is given the bodies once (:meth:`attach_bodies`, the bodies participant, before the
+    run), their kinematics after every move (:meth:`set_body_kinematics`, a
+    :class:`bodies.sampling.BodyKinematics`), and reports the load it exerts on each body
+    for the kinematics last given (:meth:`body_wrenches`: force [N] and torque about the
+    centre of mass [N m], world frame, ``(n_bodies, 3)`` each; 2-D fluids per metre of
+    depth). It advances with the bodies' motion last given. The optional hooks below
+    (:class:`ExchangedLoads`, :class:`TimedLoads`, :class:`ElasticStructures`,
+    :class:`AddedMassLoads`, :class:`Configured`) add to this role.
+    """
+
+    def attach_bodies(self, bodies) -> None:
+        """Take the bodies' geometry (e.g. sample their boundary particles)."""
+
+    def set_body_kinematics(self, kinematics) -> None:
+        """The bodies' pose and velocity now, world frame."""
+
+    def body_wrenches(self) -> tuple[np.ndarray, np.ndarray]:
+        """Force [N] and torque [N m] on each body, ``(n_bodies, 3)`` each."""
+
+
+# ------------------------------------------------------------------------ optional hooks
+@runtime_checkable
+class ExchangedLoads(Protocol):
+    """A fluid that reports the load it exchanged with each body over its last advance
+    (its impulse over the step): the coupler's fluid-first scheme, the default with it."""
+
+    def exchanged_wrenches(self) -> tuple[np.ndarray, np.ndarray]:
+        """Force [N] and torque [N m] about each body's centre of mass at the step's start."""
+
+
+@runtime_checkable
+class TimedLoads(Protocol):
+    """A fluid whose loads depend on the time itself (an incident sea): the
+    predictor-corrector takes them at the predicted time."""
+
+    def set_time(self, t: float) -> None:
+        """The time [s] at which the next :meth:`Fluid.body_wrenches` is taken."""
+
+
+@runtime_checkable
+class ElasticStructures(Protocol):
+    """A fluid that carries elastic structures: the rows of the coupled bodies that are
+    their links, whose vibration the instability watch leaves to the structures' own check."""
+
+    elastic_rows: Sequence[int]
+
+
+@runtime_checkable
+class AddedMassLoads(Protocol):
+    """A fluid that says whether its loads carry added mass (default: they do): the
+    automatic light-body remedy applies only where they do."""
+
+    loads_carry_added_mass: bool
+
+
+@runtime_checkable
+class Gravity(Protocol):
+    """Whatever states the gravity [m/s^2] along -z it assumes: a fluid, or its ``config``."""
+
+    g: float
+
+
+@runtime_checkable
+class SpeedOfSound(Protocol):
+    """A weakly compressible fluid's settings: its speed of sound [m/s], which no body may
+    approach (the coupler stops a body faster than ``Coupler.MAX_MACH`` of it)."""
+
+    speed_of_sound: float
+
+
+@runtime_checkable
+class Configured(Protocol):
+    """A participant whose settings are one object, ``config`` (the SPH fluid's
+    ``fluid.solver.FluidConfig``: :class:`Gravity`, :class:`SpeedOfSound`)."""
+
+    config: Any
+
+
+@runtime_checkable
+class LimitReported(Protocol):
+    """A participant that says what limits its ``max_dt()`` now (``dt_limit``: text)."""
+
+    dt_limit: str
+
+
+@runtime_checkable
+class DrivenBodies(Protocol):
+    """Bodies some of whose degrees of freedom are driven (a moving support): not the
+    coupling's, so the instability watch leaves them out."""
+
+    driven_dofs: set
+
+
+@runtime_checkable
+class SaysDynamic(Protocol):
+    """A mooring that says whether it has state (``dynamic``); a dynamic one is a
+    :class:`DynamicMooring`."""
+
+    dynamic: bool
+
+
+@runtime_checkable
+class DynamicMooring(Mooring, Protocol):
+    """A mooring with state (:class:`Mooring`'s docstring): advanced with the bodies until
+    its mean fairlead force over a step is the one the bodies were given."""
+
+    dynamic: bool
+
+    def mean_fairlead_forces(self) -> np.ndarray:
+        """The mean force [N] on each fairlead over the last advance, ``(n_lines, dim)``."""
+
+
+@runtime_checkable
+class DrivenToStepEnd(Protocol):
+    """A dynamic mooring whose own convention drives the fairleads to where they are at the
+    step's start; called once before the run so that it takes them at the step's end."""
+
+    def drive_to_step_end(self) -> None:
+        """Take the fairlead motion as the bodies' at the end of each step."""
+
+
+@runtime_checkable
+class Tethered(Protocol):
+    """A mooring some of whose lines are length constraints on the bodies (taut
+    inextensible lines): the coupler adds them to the bodies as tendons."""
+
+    def tethers(self) -> list:
+        """``(line index, anchor [m], length [m])`` of each line held as a constraint."""
+
+    def set_tethered(self, tethered: bool = True) -> None:
+        """The bodies hold those lines now (their force is no longer the mooring's)."""
+
+
+@runtime_checkable
+class Breaking(Protocol):
+    """A mooring whose lines break (``moorings.breaking.BreakingMooring``)."""
+
+    def check_breaks(self, t: float, extra_tension=None) -> list:
+        """Look at the tensions after a step (``extra_tension``: each line's constraint's)."""
+
+    def released_lines(self) -> list[int]:
+        """The lines that no longer act."""
+
+
+@runtime_checkable
+class LineStiffness(Protocol):
+    """A mooring that says what its lines are to the bodies over a step: a spring and a
+    dashpot at each fairlead (:mod:`moorings.fairlead_stiffness`, :mod:`cosim.line_step`)."""
+
+    def fairlead_stiffness(self):
+        """``k`` [N/m] and ``c`` [N s/m], ``(n_lines, dim, dim)`` each."""
 
 
 def protocol_members(protocol: type) -> set[str]:

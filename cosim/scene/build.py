@@ -24,9 +24,9 @@ from pathlib import Path
 
 import numpy as np
 
-from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, Box, Cylinder, CylinderTank, Earthquake, ElasticPlate,
-                              Flap, Flume, GroundMotion, InclinedTank, IrregularWaves, NearField, Piston, PolygonTank, Potential,
-                              RegularWaves, Roll, Shake, Sphere, TableMotion, Tank)
+from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, CylinderTank, Earthquake, ElasticPlate, Flap, Flume,
+                              GroundMotion, InclinedTank, NearField, Piston, PolygonTank, Potential, Roll, Shake,
+                              TableMotion, Tank)
 
 PADDLE, WALLS = 1, 0  # the flume's paddle group and every tank's wall group
 
@@ -155,27 +155,41 @@ def far_field_wave(scene):
 
 
 def incident_sea(scene):
-    """The analytic fluid's incident sea (:mod:`fluid.waves`) for waves of kind "regular"
-    or "irregular": its still water at the scene's level, its ramp in seconds (the scene
-    gives periods: of the wave, or the peak period of a spectrum or of a record's largest
-    component), a spectrum's components enough for the run's duration, a record that must
-    last it."""
+    """The analytic fluid's incident sea: what the scene's waves (an incident sea,
+    :class:`cosim.scene.seas.IncidentSea`) make of it."""
+    return scene.waves.sea(scene)
+
+
+def _frame(scene) -> dict:
+    """An incident sea's still water: at the scene's level, its heading, the world's gravity."""
+    return dict(direction=scene.waves.direction, level=water_level(scene), g=scene.world.gravity)
+
+
+def regular_sea(scene):
+    """Waves of kind "regular" as :class:`fluid.waves.RegularWave`, its ramp in seconds
+    (the scene gives periods)."""
     from fluid import waves as fw
 
-    w, g, level = scene.waves, scene.world.gravity, water_level(scene)
-    frame = dict(direction=w.direction, level=level, g=g)
-    if isinstance(w, RegularWaves):
-        return fw.RegularWave(w.height, w.period, w.depth, theory=w.theory, phase=w.phase, ramp=w.ramp * w.period,
-                              **frame)
-    assert isinstance(w, IrregularWaves)
+    w = scene.waves
+    return fw.RegularWave(w.height, w.period, w.depth, theory=w.theory, phase=w.phase, ramp=w.ramp * w.period,
+                          **_frame(scene))
+
+
+def irregular_sea(scene):
+    """Waves of kind "irregular" (:mod:`fluid.waves`): a spectrum's components enough for
+    the run's duration, or a record that must last it; the ramp in seconds (the scene
+    gives peak periods: of the spectrum, or of the record's largest component)."""
+    from fluid import waves as fw
+
+    w = scene.waves
     if w.spectrum == "series":
         at = (0.0, 0.0) if w.at is None else tuple(w.at)
         sea = fw.RecordedSea.from_file(w.file, w.depth, w.column, at=at, min_period=w.min_period,
-                                       duration=scene.world.duration, **frame)
+                                       duration=scene.world.duration, **_frame(scene))
         return dataclasses.replace(sea, ramp=w.ramp * sea.peak_period)
     return fw.SpectralSea(w.hs, w.tp, w.depth, spectrum=w.spectrum, gamma=3.3 if w.gamma is None else w.gamma,
                           seed=w.seed, n_components=w.components, duration=scene.world.duration,
-                          ramp=w.ramp * w.tp, **frame)
+                          ramp=w.ramp * w.tp, **_frame(scene))
 
 
 def domain_points(scene, cfg, back: float = 0.0):
@@ -363,15 +377,7 @@ def _mjcf_bodies(scene, level, rho):
         else:
             pos = (b.pos[0], 0.0, b.pos[1]) if dim == 2 else tuple(b.pos)
         sites = {site_name(f"{b.name}.{k}"): ((p[0], 0.0, p[1]) if dim == 2 else p) for k, p in b.fairleads.items()}
-        common = dict(density=b.density, mass=b.mass, sites=sites)
-        if isinstance(b, Box):
-            parts.append(builders.box(b.name, b.size, pos, planar=dim == 2, euler=b.euler, **common))
-        elif isinstance(b, Cylinder):
-            parts.append(builders.cylinder(b.name, b.radius, b.length or 1.0, pos, planar=dim == 2, euler=b.euler,
-                                           **common))
-        else:
-            assert isinstance(b, Sphere)
-            parts.append(builders.sphere(b.name, b.radius, pos, **common))
+        parts.append(b.mjcf(pos, dim, sites))
     xml = builders.scene(*parts, gravity=scene.world.gravity, timestep=timestep)
     return xml, heights
 
@@ -483,37 +489,18 @@ def fairleads_at_start(scene) -> np.ndarray:
 
 
 def _mooring(scene, level, rho, workdir: Path):
-    """The mooring participant of the scene's lines and model, with the MuJoCo site of
-    each fairlead."""
-    m, g = scene.moorings, scene.world.gravity
+    """The mooring participant of the scene's lines and model
+    (:data:`cosim.scene.registry.MOORINGS`), with the MuJoCo site of each fairlead."""
+    from cosim.scene.registry import MOORINGS
+
+    m = scene.moorings
     lines = mooring_lines(scene)
-    sites = _fairlead_sites(scene)
-    surface = level if level is not None else math.inf
-    if m.model == "catenary":
-        from moorings import CatenaryMooring
-
-        mooring = CatenaryMooring(lines)
-    elif m.model == "sph-cable":
-        from moorings.sph_cable import SPHCableMooring
-
-        mooring = SPHCableMooring(lines, n_particles=m.segments, water_z=surface, gravity=g, rho_water=rho)
-    elif m.model == "moordyn":
-        from moorings.moordyn_mooring import MoorDynMooring
-
-        mooring = MoorDynMooring(lines, segments=m.segments, water_level=level if level is not None else 0.0,
-                                 rho=rho, g=g)
-    else:
-        from moorings.fmu_export import catenary_fmu_variable_map, export_catenary_fmu
-        from moorings.fmu_mooring import FMUMooring
-
-        workdir.mkdir(parents=True, exist_ok=True)
-        path = export_catenary_fmu(lines, workdir / "mooring.fmu")
-        mooring = FMUMooring(path, lines, catenary_fmu_variable_map(lines))
+    mooring = MOORINGS[m.model].from_scene(scene, lines, level=level, rho=rho, workdir=workdir)
     if any(ln.break_load is not None for ln in lines):
         from moorings.breaking import BreakingMooring
 
         mooring = BreakingMooring(mooring, release=m.release_broken)
-    return mooring, sites, [ln.name for ln in lines]
+    return mooring, _fairlead_sites(scene), [ln.name for ln in lines]
 
 
 def build(scene, workdir: Path) -> Built:
@@ -537,30 +524,8 @@ def build(scene, workdir: Path) -> Built:
     if scene.moorings is not None:
         out.mooring, sites, out.line_names = _mooring(scene, level, rho, Path(workdir))
         moorings = [(out.mooring, sites)]
-    if isinstance(scene.fluid, SPH):
-        _build_sph(scene, out)
-    elif isinstance(scene.fluid, Analytic):
-        from fluid.analytic import AnalyticFluid
-
-        f, w = scene.fluid, scene.waves
-        waves = None
-        if isinstance(w, LinearWaves):
-            from fluid.analytic import LinearWave
-
-            waves = LinearWave(w.height, w.period, w.depth, w.direction, w.ramp * w.period, scene.world.gravity)
-        elif isinstance(w, (RegularWaves, IrregularWaves)):
-            waves = incident_sea(scene)
-        elif isinstance(w, (Piston, Flap)):
-            out.wavemaker, waves = far_field_wave(scene)
-        out.fluid = AnalyticFluid(rho=f.rho, g=scene.world.gravity, free_surface_z=level,
-                                  linear_damping=f.linear_damping or None,
-                                  quadratic_damping=f.quadratic_damping or None, added_mass=f.added_mass or None,
-                                  waves=waves)
-    elif isinstance(scene.fluid, Potential):
-        out.fluid, out.wavemaker = _potential(scene, level)
-    scheme = scene.coupling.scheme
-    if scheme == "auto":
-        scheme = "fluid-first" if isinstance(scene.fluid, SPH) else "predictor-corrector"
+    scene.fluid.participant(scene, out)  # the fluid model's (cosim.scene.registry.FLUIDS)
+    scheme = scene.coupling.scheme  # "auto": the coupler's (fluid-first with a fluid that reports its exchange)
     if out.bodies is None:
         others = [out.fluid] if out.fluid is not None else []
         out.coupler = Coupler(others, dt=scene.coupling.dt)
@@ -573,7 +538,25 @@ def build(scene, workdir: Path) -> Built:
     return out
 
 
-def _potential(scene, level):
+def analytic_fluid(scene, out: Built) -> None:
+    """The analytic fluid (``fluid.analytic.AnalyticFluid``) of the scene: its incident sea,
+    or a flume's wavemaker's far-field wave."""
+    from fluid.analytic import AnalyticFluid
+
+    from cosim.scene.seas import IncidentSea
+
+    f, w = scene.fluid, scene.waves
+    waves = None
+    if isinstance(w, IncidentSea):
+        waves = w.sea(scene)
+    elif isinstance(w, (Piston, Flap)):
+        out.wavemaker, waves = far_field_wave(scene)
+    out.fluid = AnalyticFluid(rho=f.rho, g=scene.world.gravity, free_surface_z=out.level,
+                              linear_damping=f.linear_damping or None, quadratic_damping=f.quadratic_damping or None,
+                              added_mass=f.added_mass or None, waves=waves)
+
+
+def potential_fluid(scene, level):
     """The potential fluid (``fluid.potential.PotentialFluid``) of the scene and the flume's
     wavemaker, if any: its frequencies (``fluid.potential.participant.frequency_grid``; unset:
     per body, from its panel size), the scene's waves as one component (a flume's: its far-field
@@ -591,10 +574,10 @@ def _potential(scene, level):
     elif isinstance(w, (Piston, Flap)):
         wavemaker, lw = far_field_wave(scene)
         sea = Sea(regular(lw.H, lw.T, lw.direction), depth=depth, g=g, ramp=lw.ramp)
-    elif isinstance(w, (RegularWaves, IrregularWaves)):  # linear components of fluid.waves' sea
+    elif w is not None:  # an incident sea: the linear components of its fluid.waves sea
         from fluid.potential.waves import WaveComponent
 
-        inc = incident_sea(scene)
+        inc = w.sea(scene)
         c = inc.components
         phase = c.phase - c.k * inc.phase_reference
         sea = Sea([WaveComponent(float(o), float(a), float(p), inc.direction)
@@ -630,7 +613,9 @@ def _initialize(scene, coupler) -> None:
         raise
 
 
-def _build_sph(scene, out: Built) -> None:
+def sph_fluid(scene, out: Built) -> None:
+    """The SPH fluid (:mod:`fluid.solver`; with bodies, ``cosim.sph_fluid.SPHFluid``) in
+    the scene's domain, its set-up, the wavemaker's paddle and the tank's motion."""
     from cosim.scene.setup import choose
 
     out.setup = choose(scene)

@@ -21,9 +21,11 @@ import math
 
 from cosim.scene import plausible
 from cosim.scene.fields import SceneError, is_name
-from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, Box, CylinderTank, Cylinder, Earthquake, Flap, Flume,
-                              ArchRib, ElasticPlate, GroundMotion, InclinedTank, IrregularWaves, NoFluid, PaddleRecord,
-                              NearField, Piston, PolygonTank, Potential, RegularWaves, Roll, Sphere, TableMotion, Tank)
+from cosim.scene.seas import IncidentSea
+from cosim.scene.shapes import RigidBody
+from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, CylinderTank, Earthquake, Flap, Flume, ArchRib,
+                              ElasticPlate, GroundMotion, InclinedTank, IrregularWaves, NearField, NoFluid,
+                              PaddleRecord, Piston, PolygonTank, Potential, RegularWaves, Roll, TableMotion, Tank)
 
 #: the fluids whose free surface is a plane (with an incident sea on it), not particles
 _SURFACE = (Analytic, Potential)
@@ -240,7 +242,7 @@ def _check_sea(s, dim):
 
 
 def _check_excitations(s, dim):
-    if isinstance(s.waves, (LinearWaves, RegularWaves, IrregularWaves)):
+    if isinstance(s.waves, IncidentSea):
         _check_sea(s, dim)
     elif s.waves is not None:
         if isinstance(s.fluid, _SURFACE) and (isinstance(s.waves, PaddleRecord) or not isinstance(s.domain, Flume)):
@@ -338,19 +340,18 @@ def _check_bodies(s, dim):
                                      f"its horizontal position only, {'(x,)' if dim == 2 else '(x, y)'}")
                 if isinstance(s.fluid, NoFluid):
                     raise SceneError(f"{key}.place", "a floating body needs a fluid to float on (fluid.model)")
+                from cosim.scene.build import water_level
+
+                if water_level(s) is None:  # a fluid model of another package that states no still water
+                    raise SceneError(f"{key}.place", f"the {s.fluid.model!r} fluid states no still-water level "
+                                     f"to float a body at; place it at a given pos")
             else:
                 _dim_vec(b.pos, dim, f"{key}.pos")
-            if isinstance(b, Box):
-                _dim_vec(b.size, dim, f"{key}.size", "size")
-            if isinstance(b, Sphere) and dim != 3:
-                raise SceneError(f"{key}.shape", "a sphere is 3-D; in 2-D use a cylinder (a circle in x-z)")
-            if isinstance(b, Cylinder) and (b.length is None) == (dim == 3):
-                raise SceneError(f"{key}.length", "a 3-D cylinder needs its length [m]" if dim == 3 else
-                                 "a 2-D cylinder is a circle in the x-z plane, 1 m long; leave length out")
+            try:
+                b.fit(dim)
+            except SceneError as e:
+                raise e.under(key) from None
             if dim == 2 and b.euler is not None:
-                if isinstance(b, Cylinder):
-                    raise SceneError(f"{key}.euler", "a 2-D cylinder is a circle in the x-z plane: turned, it is the "
-                                     "same circle; leave euler out")
                 if b.euler[0] != 0 or b.euler[2] != 0:
                     raise SceneError(f"{key}.euler", f"{list(b.euler)}: a 2-D body turns in the x-z plane, about y "
                                      f"only (its 1 m depth stays along y); give [0, angle, 0]")
@@ -411,39 +412,11 @@ def _check_plate(s, dim, b, key) -> None:
                              f"floor at z = {floor:g} m; give base z = {floor:g}")
 
 
-def _extent(b, dim):
-    """Half extents [m] of a builder body along the world's (x, [y,] z): of its box
-    upright, of the box round it when turned (``euler``: exact along each axis, the
-    support function of the turned box, or of the turned cylinder, ``L/2 |a_k| + R
-    sqrt(1 - a_k^2)`` for its axis ``a``). A 2-D cylinder is a circle in x-z, turned or not."""
-    if isinstance(b, ElasticPlate):
-        return [0.5 * b.thickness] + ([0.5 * b.width] if dim == 3 else []) + [0.5 * b.length]
-    if isinstance(b, Sphere) or (isinstance(b, Cylinder) and dim == 2):
-        return [b.radius] * dim
-    if isinstance(b, Box):
-        half = [0.5 * x for x in b.size]
-    else:
-        half = [b.radius] * 2 + [0.5 * b.length]
-    if b.euler is None:
-        return half
-    r = _rotation(b.euler)
-    if isinstance(b, Box):
-        h3 = half if dim == 3 else [half[0], 0.5, half[1]]  # a 2-D body is 1 m thick along y
-        e = [sum(abs(r[k][j]) * h3[j] for j in range(3)) for k in range(3)]
-    else:
-        e = [half[2] * abs(r[k][2]) + half[0] * math.sqrt(max(0.0, 1.0 - r[k][2] ** 2)) for k in range(3)]
-    return e if dim == 3 else [e[0], e[2]]
-
-
 def _corners(b, dim):
-    """The corners [m] of a builder body's box (a cylinder's: of the box round it), turned
-    by its ``euler``, as world points (x, y, z); a 2-D body is 1 m thick along y."""
-    if isinstance(b, Box):
-        h3 = [0.5 * x for x in b.size] if dim == 3 else [0.5 * b.size[0], 0.5, 0.5 * b.size[1]]
-    elif isinstance(b, ElasticPlate):
-        h3 = [0.5 * b.thickness, 0.5 * (b.width or 1.0), 0.5 * b.length]
-    else:
-        h3 = [b.radius, b.radius, 0.5 * b.length if dim == 3 else b.radius]
+    """The corners [m] of a builder body's bounding box, turned by its ``euler``, as world
+    points (x, y, z); a 2-D body is 1 m thick along y."""
+    half = b.half_size(dim)
+    h3 = half if dim == 3 else [half[0], 0.5, half[1]]
     c = list(b.pos) if dim == 3 else [b.pos[0], 0.0, b.pos[-1]]
     r = _rotation(b.euler) if b.euler is not None else [[1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0]]
     out = []
@@ -506,7 +479,7 @@ def _check_inside_near_field(s, dim):
     for i, b in enumerate(s.bodies):
         if isinstance(b, MJCF):
             continue
-        half = _extent(b, dim)
+        half = b.extent(dim)
         centre = b.base if isinstance(b, ElasticPlate) else b.pos
         for k in range(dim - 1):
             a, z = centre[k] - half[k] - r, centre[k] + half[k] + r
@@ -524,7 +497,7 @@ def _check_inside(s, dim):
     for i, b in enumerate(s.bodies):
         if isinstance(b, MJCF):
             continue
-        half = _extent(b, dim)
+        half = b.extent(dim)
         n = dim - 1 if b.place == "floating" else dim
         for k in range(n):
             if b.pos[k] - half[k] < lo[k] or b.pos[k] + half[k] > hi[k]:
@@ -626,8 +599,7 @@ def _check_probes(s, dim, mj):
         if n != "all" and n not in names:
             raise SceneError(f"probes.motion[{i}]", f"no body named {n!r}; bodies: {sorted(names)} (or \"all\")")
     # the analytic and potential fluids' gauges read their incident sea (given, or a flume's wavemaker's far-field wave)
-    linear = isinstance(s.fluid, _SURFACE) and isinstance(s.waves, (LinearWaves, RegularWaves, IrregularWaves,
-                                                                      Piston, Flap))
+    linear = isinstance(s.fluid, _SURFACE) and isinstance(s.waves, (IncidentSea, Piston, Flap))
     fluid_probes = (p.gauges and not linear) or p.pressure or p.energy
     if fluid_probes and not isinstance(s.fluid, SPH):
         which = "gauges" if p.gauges and not linear else "pressure" if p.pressure else "energy"
@@ -1029,34 +1001,8 @@ def _check_mjcf_fairlead(mj, fairlead, key) -> None:
 
 
 # ------------------------------------------------------------------------ bodies' geometry
-def _solid(b, dim, floating: bool):
-    """A builder body at its pose: ("box", centre, half extents), ("ball", centre, radius)
-    or ("cyl", centre, radius, half length; axis along z) upright; turned (``euler``),
-    ("hull", its section's outline in x-z) in 2-D, ("obb", centre, rotation, half
-    extents) in 3-D (a cylinder's: the box round it). Floating: its footprint (the height
-    is not known before it is built)."""
-    half = _extent(b, dim)
-    c = list(b.pos)
-    if floating:
-        if isinstance(b, Box) or dim == 2:
-            return ("box", c, half[:dim - 1])
-        return ("ball", c, b.radius)
-    if isinstance(b, Sphere) or (isinstance(b, Cylinder) and dim == 2):
-        return ("ball", c, b.radius)
-    if b.euler is not None:
-        if dim == 2:
-            return ("hull", _hull([(q[0], q[2]) for q in _corners(b, dim)]))
-        h = [0.5 * x for x in b.size] if isinstance(b, Box) else [b.radius, b.radius, 0.5 * b.length]
-        return ("obb", c, _rotation(b.euler), h)
-    if isinstance(b, (Box, ElasticPlate)):
-        return ("box", c, half)
-    if isinstance(b, Cylinder) and dim == 3:
-        return ("cyl", c, b.radius, 0.5 * b.length)
-    return ("ball", c, b.radius)
-
-
 def _convex(a):
-    """A solid of :func:`_solid` as a hull (2-D) or an oriented box (3-D; an upright
+    """A solid (:meth:`cosim.scene.shapes.Shape.solid`) as a hull (2-D) or an oriented box (3-D; an upright
     cylinder: the box round it); a ball stays a ball."""
     if a[0] in ("ball", "hull", "obb"):
         return a
@@ -1115,7 +1061,7 @@ def _dist_box(p, c, h) -> float:
 
 
 def _overlap(a, b, tol) -> bool:
-    """Whether two solids (:func:`_solid`) overlap by more than ``tol`` [m]."""
+    """Whether two solids (:meth:`cosim.scene.shapes.Shape.solid`) overlap by more than ``tol`` [m]."""
     if "hull" in (a[0], b[0]) or "obb" in (a[0], b[0]):
         return _overlap_turned(a, b, tol)
     if a[0] > b[0]:
@@ -1139,7 +1085,7 @@ def _overlap(a, b, tol) -> bool:
 
 
 def _bounds(b, dim, floating) -> str:
-    half = _extent(b, dim)
+    half = b.extent(dim)
     n = dim - 1 if floating else dim
     return _span([b.pos[k] - half[k] for k in range(n)], [b.pos[k] + half[k] for k in range(n)], dim, n)
 
@@ -1153,7 +1099,7 @@ def _check_overlaps(s, dim) -> None:
         if isinstance(b, MJCF):
             continue
         floating = b.place == "floating"
-        me = _solid(b, dim, floating)
+        me = b.solid(dim, floating)
         for i, a, other, a_floating in solids:
             if a_floating != floating:
                 continue  # one floating, one given: the floating one's height is not known yet
@@ -1183,17 +1129,17 @@ def _check_walls(s, dim) -> None:
     for i, b in enumerate(s.bodies):
         if isinstance(b, MJCF):
             continue
-        half, floating = _extent(b, dim), b.place == "floating"
+        floating = b.place == "floating"
+        solid = b.solid(dim, floating)
         tol = 1e-9 * max(1.0, *(abs(x) for x in b.pos))
         fix = "move it (or make it smaller) so that it lies in the water"
-        round_ = isinstance(b, Sphere) or (isinstance(b, Cylinder) and dim == 2)
         if isinstance(d, CylinderTank):
             R, (x, y) = 0.5 * d.diameter, b.pos[:2]
-            if floating:
-                far = (max(math.hypot(x + sx * half[0], y + sy * half[1]) for sx in (-1, 1) for sy in (-1, 1))
-                       if isinstance(b, Box) else math.hypot(x, y) + b.radius)
-            elif isinstance(b, Sphere) or (isinstance(b, Cylinder) and b.euler is None):
-                far = math.hypot(x, y) + b.radius
+            if solid[0] == "box" and floating:  # its footprint
+                half = solid[2]
+                far = max(math.hypot(x + sx * half[0], y + sy * half[1]) for sx in (-1, 1) for sy in (-1, 1))
+            elif solid[0] in ("ball", "cyl"):
+                far = math.hypot(x, y) + solid[2]
             else:
                 far = max(math.hypot(q[0], q[1]) for q in _corners(b, dim))
             if far > R + tol:
@@ -1205,11 +1151,11 @@ def _check_walls(s, dim) -> None:
             continue  # its height is computed when it is built
         v = _outline(d)
         c = (b.pos[0], b.pos[-1])
-        if round_:
-            gap = -_sd_polygon(v, c)
-            if gap < b.radius - tol:
-                raise SceneError(f"bodies[{i}].pos", f"the body (radius {b.radius:g} m about {_pt(c)} m in x-z) "
-                                 f"reaches {b.radius - gap:.4g} m into the {wall}; {fix}")
+        if solid[0] == "ball":
+            gap, r = -_sd_polygon(v, c), solid[2]
+            if gap < r - tol:
+                raise SceneError(f"bodies[{i}].pos", f"the body (radius {r:g} m about {_pt(c)} m in x-z) "
+                                 f"reaches {r - gap:.4g} m into the {wall}; {fix}")
             continue
         hull = _hull([(q[0], q[2]) for q in _corners(b, dim)])  # the body seen along y: its section's outline
         depth, q = max((_sd_polygon(v, q), q) for q in hull)
@@ -1250,7 +1196,7 @@ def potential_depth(s) -> float:
         return s.fluid.depth
     if isinstance(s.domain, Flume):
         return s.domain.depth
-    if isinstance(s.waves, (LinearWaves, RegularWaves, IrregularWaves)):
+    if isinstance(s.waves, IncidentSea):
         return s.waves.depth
     return math.inf
 
@@ -1270,12 +1216,14 @@ def _check_potential(s, dim) -> None:
     if dim != 3:
         raise SceneError("world.dim", "linear potential flow about a body is 3-D; set world.dim = 3 (or use the "
                          "analytic fluid in 2-D)")
+    from fluid.potential.hull import KINDS
+
     for i, b in enumerate(s.bodies):
-        if not isinstance(b, (Box, Cylinder, Sphere)):
+        if not (isinstance(b, RigidBody) and b.geom in KINDS):
             raise SceneError(f"bodies[{i}].shape", f"the potential fluid meshes boxes, cylinders and spheres; a "
                              f"{b.shape!r} body needs the analytic or SPH fluid")
         if b.place == "given" and b.euler is None:
-            half = b.size[-1] / 2 if isinstance(b, Box) else b.radius if isinstance(b, Sphere) else b.length / 2
+            half = b.half_size(dim)[-1]
             lo, hi = b.pos[-1] - half, b.pos[-1] + half
             if lo >= f.level or hi <= f.level:
                 where = "dry, above" if lo >= f.level else "fully submerged, below"
@@ -1286,7 +1234,7 @@ def _check_potential(s, dim) -> None:
         if n not in body_names(s):
             raise SceneError(f"fluid.quadratic_drag.{n}", f"no body named {n!r}; bodies: {sorted(body_names(s))}")
     scene_depth = (s.domain.depth if isinstance(s.domain, Flume) else
-                   s.waves.depth if isinstance(s.waves, (LinearWaves, RegularWaves, IrregularWaves)) else None)
+                   s.waves.depth if isinstance(s.waves, IncidentSea) else None)
     if f.depth is not None and scene_depth is not None and not math.isclose(f.depth, scene_depth, rel_tol=1e-9):
         what = "flume's depth (domain.depth)" if isinstance(s.domain, Flume) else "waves' depth (waves.depth)"
         raise SceneError("fluid.depth", f"{f.depth:g} m differs from the {what}, {scene_depth:g} m: the coefficients "

@@ -18,10 +18,11 @@ on this code, ``benchmarks/cost_estimate.py``, ``docs/benchmarks/cost_estimate.m
   stable step from the highest modes of its chain of ``n`` links ``l = L / n`` long
   (bending ``2 sqrt(12 E I / (rho A l^2 (l^2 + t^2)))``, shear ``(2 / l) sqrt(kappa G /
   rho)``, RK4's ``2 sqrt 2 / omega``), ``C_MJ`` per link or body and step.
-- ``lines`` (SPH cable, MoorDyn): each node's internal step, the SPH cable's Courant step
-  ``cfl ds / c`` (``c = sqrt(EA / m)``), MoorDyn's
-  :func:`moorings.moordyn_mooring.internal_step_limits`, advanced ``LINE_ADVANCES`` times
-  per coupling step (the sub-iterated exchange), ``C_NODE`` per node and step.
+- ``lines`` (SPH cable, MoorDyn): each node's internal step (the model's
+  :meth:`~cosim.scene.mooring_models.MooringModel.internal_step`: the SPH cable's Courant
+  step ``cfl ds / c``, ``c = sqrt(EA / m)``, MoorDyn's
+  :func:`moorings.moordyn_mooring.internal_step_limits`), advanced ``LINE_ADVANCES`` times
+  per coupling step (the sub-iterated exchange), the model's ``node_cost`` per node and step.
 - ``coupling``: ``duration / dt_c`` steps, at least one per event; ``dt_c`` the smallest
   of ``coupling.dt``, the SPH step, the analytic fluid's (50 steps per heave period,
   ``m / B`` of its damping, 50 per wave period: ``fluid.analytic.AnalyticFluid.max_dt``) and
@@ -41,9 +42,11 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from cosim.scene.spec import (MJCF, SPH, Analytic, ArchRib, Box, Cylinder, CylinderTank, ElasticPlate, Flap, Flume,
-                              InclinedTank, IrregularWaves, LinearWaves, PaddleRecord, Piston, PolygonTank,
-                              NearField, RegularWaves, Sphere, Tank)
+from cosim.scene.registry import MOORINGS
+from cosim.scene.shapes import RigidBody
+from cosim.scene.spec import (MJCF, SPH, Analytic, ArchRib, CylinderTank, ElasticPlate, Flap, Flume, InclinedTank,
+                              IrregularWaves, LinearWaves, NearField, PaddleRecord, Piston, PolygonTank, RegularWaves,
+                              Tank)
 
 #: CPU [s] per particle and step of the SPH fluid at h = sqrt(2) dx, by dimension (one
 #: thread; measured)
@@ -66,8 +69,6 @@ C_STEP = 3e-4
 C_BODY_STEP = 1.6e-3
 #: CPU [s] per MuJoCo step and body (or plate link)
 C_MJ = 2e-6
-#: CPU [s] per dynamic line node and internal step, by model (measured)
-C_NODE = {"moordyn": 2.3e-7, "sph-cable": 3.3e-7}
 #: the lines' advances per coupling step with the sub-iterated exchange (cosim.line_step)
 LINE_ADVANCES = 2.0
 #: memory [bytes] per event of the run (its time and what is due), per probe sample and column
@@ -262,27 +263,8 @@ def sph_particles(scene) -> tuple[float, float, float]:
     for b in scene.bodies:
         if isinstance(b, MJCF):
             continue
-        area, surface = _body_section(b, dim)
-        bodies += min(area, surface * t) / dx ** dim
+        bodies += min(b.volume(dim), b.surface_area(dim) * t) / dx ** dim  # 2-D: area and perimeter
     return water, walls, bodies
-
-
-def _body_section(b, dim) -> tuple[float, float]:
-    """(volume, surface) [m^3, m^2] of a builder body (2-D: area and perimeter of its section)."""
-    if isinstance(b, ElasticPlate):
-        w = b.width if dim == 3 else 1.0
-        return ((b.length * b.thickness, 2 * (b.length + b.thickness)) if dim == 2 else
-                (b.length * b.thickness * w, 2 * (b.length * b.thickness + b.length * w + b.thickness * w)))
-    if isinstance(b, Box):
-        if dim == 2:
-            return b.size[0] * b.size[1], 2 * (b.size[0] + b.size[1])
-        x, y, z = b.size
-        return x * y * z, 2 * (x * y + y * z + x * z)
-    if isinstance(b, Sphere):
-        return 4 / 3 * math.pi * b.radius ** 3, 4 * math.pi * b.radius ** 2
-    if isinstance(b, Cylinder) and dim == 3:
-        return math.pi * b.radius ** 2 * b.length, 2 * math.pi * b.radius * (b.radius + b.length)
-    return math.pi * b.radius ** 2, 2 * math.pi * b.radius
 
 
 def sph_step(scene) -> tuple[float, str]:
@@ -324,56 +306,23 @@ def plate_step(b, dim) -> float:
 
 
 def _body_mass(b, dim, rho) -> float:
-    from cosim.scene.placement import volume_and_height
-
     if b.mass is not None:
         return b.mass
-    return b.density * volume_and_height(b, dim)[0]
+    return b.density * b.volume(dim)
 
 
 def line_steps(scene) -> list[tuple[int, float, float, float]]:
     """Each dynamic line's (index, nodes, internal step [s], simulated time [s] before the
     run: MoorDyn's initial-condition relaxation ``ic_time``)."""
     m = scene.moorings
-    if m is None or m.model not in ("sph-cable", "moordyn"):
+    if m is None:
         return []
     out = []
     for i, ln in enumerate(m.lines):
-        if m.model == "sph-cable":
-            import inspect
-
-            from moorings.sph_cable import SPHCable
-
-            cfl = inspect.signature(SPHCable).parameters["cfl"].default
-            dt, before = cfl * (ln.length / m.segments) / math.sqrt(ln.EA / ln.mass_per_length), 0.0  # Courant
-        else:
-            import inspect
-
-            from moorings.moordyn_mooring import RK2_SAFETY, MoorDynMooring, internal_step_limits
-
-            o = {k: p.default for k, p in inspect.signature(MoorDynMooring).parameters.items()}
-            rho = getattr(scene.fluid, "rho", getattr(scene.fluid, "rho0", o["rho"]))
-            lim = internal_step_limits(ln.length, m.segments, ln.EA, ln.mass_per_length, ln.diameter, rho=rho,
-                                       **{k: o[k] for k in ("damping_ratio", "cd_normal", "ca_normal", "cd_axial",
-                                                            "ca_axial", "seabed_stiffness", "seabed_damping",
-                                                            "drag_speed")})
-            dt, before = RK2_SAFETY * min(lim.values()), o["ic_time"]
-        out.append((i, m.segments + 1, dt, before))
+        step = MOORINGS[m.model].internal_step(scene, ln)
+        if step is not None:
+            out.append((i, m.segments + 1, *step))
     return out
-
-
-def _gyration2(b, dim) -> float:
-    """The smallest squared radius of gyration [m^2] of a builder body about an axis
-    through its centre (solid bodies of uniform density)."""
-    if isinstance(b, Box):
-        sz = list(b.size) if dim == 3 else [b.size[0], b.size[1]]
-        pairs = [(sz[i], sz[j]) for i in range(len(sz)) for j in range(i + 1, len(sz))]
-        return min(a * a + c * c for a, c in pairs) / 12.0
-    if isinstance(b, Sphere):
-        return 0.4 * b.radius ** 2
-    if isinstance(b, Cylinder) and dim == 3:
-        return min(0.5 * b.radius ** 2, (3 * b.radius ** 2 + b.length ** 2) / 12.0)
-    return 0.5 * b.radius ** 2
 
 
 def _fairlead_start(scene, b, offset):
@@ -447,18 +396,17 @@ def line_coupling_step(scene) -> tuple[float, str]:
     if m is None:
         return math.inf, ""
     dim = scene.world.dim
-    dynamic = m.model in ("sph-cable", "moordyn")
-    damping = 0.8 if m.model == "moordyn" else 15.0 / 32.0 if m.model == "sph-cable" else 0.0
+    dynamic, damping = MOORINGS[m.model].dynamic, MOORINGS[m.model].damping
     added = getattr(scene.fluid, "added_mass", {}) or {}
     best, key = math.inf, ""
     for b in scene.bodies:
-        if isinstance(b, (MJCF, ElasticPlate)):
+        if not isinstance(b, RigidBody):
             continue
         mine = [(i, ln) for i, ln in enumerate(m.lines) if ln.fairlead.split(".")[0] == b.name]
         if not mine:
             continue
         M = _body_mass(b, dim, 0.0) + min(added.get(b.name, [0.0] * 3)[: dim if dim == 3 else 2])
-        g2 = _gyration2(b, dim)
+        g2 = b.gyration2(dim)
         k_sum = c_sum = 0.0
         worst, i_worst = -1.0, mine[0][0]
         for i, ln in mine:
@@ -490,20 +438,18 @@ def analytic_step(scene) -> tuple[float, str]:
     f, dim = scene.fluid, scene.world.dim
     best, key = math.inf, ""
     for i, b in enumerate(scene.bodies):
-        if isinstance(b, (MJCF, ElasticPlate)):
+        if not isinstance(b, RigidBody):
             continue
-        from cosim.scene.plausible import bounding_radius
-
         M = _body_mass(b, dim, f.rho)  # MuJoCo's mass: the added mass is in the joints' armature
 
-        r = bounding_radius(b, dim) if dim == 3 else math.hypot(bounding_radius(b, dim), 0.5)
+        r = b.bounding_radius(dim) if dim == 3 else math.hypot(b.bounding_radius(dim), 0.5)
         k = f.rho * scene.world.gravity * math.pi * r * r
         if k > 0:
             dt = 0.02 * 2.0 * math.pi * math.sqrt(M / k)
             if dt < best:
                 best, key = dt, f"bodies[{i}]"
         row = f.linear_damping.get(b.name, [0.0] * 6)
-        for inertia, B in ((M, max(row[:3])), (M * _gyration2(b, dim), max(row[3:]))):  # translations, rotations
+        for inertia, B in ((M, max(row[:3])), (M * b.gyration2(dim), max(row[3:]))):  # translations, rotations
             if B > 0 and inertia / B < best:
                 best, key = inertia / B, f"fluid.linear_damping.{b.name}"
     w = scene.waves
@@ -601,7 +547,7 @@ def estimate(scene) -> Estimate:
                          for _, n, dt, before in lines)
         i, _, dt, _ = min(lines, key=lambda x: x[2])
         field = "moorings.segments" if scene.moorings.segments > 200 else f"moorings.lines[{i}].EA"
-        per_s = C_NODE[scene.moorings.model] * node_steps / T
+        per_s = MOORINGS[scene.moorings.model].node_cost * node_steps / T
         terms.append(Term("lines", _by(10 * per_s, CONFIRM_CPU_S, field if _over(T, dt) >= steps else c_field, T),
                           f"{sum(x[1] for x in lines)} nodes, internal steps of {dt:.3g} s ({scene.moorings.model})",
                           per_s * T, 0.0, per_s))
@@ -631,7 +577,6 @@ def _subiterated(scene) -> bool:
     """Whether the coupler will sub-iterate the SPH fluid for a light body (mass under
     AUTO_THRESHOLD of the fluid it displaces, ``light_body`` auto or subiterate)."""
     from cosim.added_mass import AUTO_THRESHOLD
-    from cosim.scene.placement import volume_and_height
 
     c = scene.coupling
     if c.light_body not in ("auto", "subiterate") or c.scheme not in ("auto", "fluid-first"):
@@ -639,8 +584,8 @@ def _subiterated(scene) -> bool:
     if c.light_body == "subiterate":
         return bool(scene.bodies)
     rho = scene.fluid.rho0
-    return any(_body_mass(b, scene.world.dim, rho) < AUTO_THRESHOLD * rho * volume_and_height(b, scene.world.dim)[0]
-               for b in scene.bodies if not isinstance(b, (MJCF, ElasticPlate)))
+    return any(_body_mass(b, scene.world.dim, rho) < AUTO_THRESHOLD * rho * b.volume(scene.world.dim)
+               for b in scene.bodies if isinstance(b, RigidBody))
 
 
 def _columns(scene) -> int:

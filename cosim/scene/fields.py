@@ -17,6 +17,7 @@ import math
 from typing import Any
 
 from cosim.errors import InputError
+from cosim.scene.registry import Registry
 
 
 class SceneError(InputError):
@@ -121,9 +122,16 @@ class Whole(Check):
 
 
 class Choice(Check):
+    """One of ``choices``: a sequence, or a registry (:mod:`cosim.scene.registry`) whose
+    names are read when a value is checked."""
+
     def __init__(self, doc, choices, optional=False):
         super().__init__(doc, "", optional)
-        self.choices = tuple(choices)
+        self._choices = choices if isinstance(choices, Registry) else tuple(choices)
+
+    @property
+    def choices(self) -> tuple:
+        return tuple(self._choices.names()) if isinstance(self._choices, Registry) else self._choices
 
     def expected(self) -> str:
         return f"one of {', '.join(repr(c) for c in self.choices)} ({self.doc})"
@@ -274,12 +282,18 @@ class Table(Check):
 
 class Part(Check):
     """A nested scene object: one class, or one of several told apart by the value of
-    their ``tag`` field (``kind``, ``model``, ``shape``)."""
+    their ``tag`` field (``kind``, ``model``, ``shape``), given as a sequence or as a
+    registry (:mod:`cosim.scene.registry`) whose classes are read when a value is checked."""
 
 
     def __init__(self, doc, classes, optional=False):
         super().__init__(doc, "", optional)
-        self.classes = tuple(classes) if isinstance(classes, (tuple, list)) else (classes,)
+        self._classes = (classes if isinstance(classes, Registry) else
+                         tuple(classes) if isinstance(classes, (tuple, list)) else (classes,))
+
+    @property
+    def classes(self) -> tuple:
+        return self._classes.classes() if isinstance(self._classes, Registry) else self._classes
 
     def expected(self) -> str:
         return f"{' or '.join(c.__name__ for c in self.classes)} ({self.doc})"

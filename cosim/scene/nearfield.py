@@ -45,7 +45,7 @@ def footprint(scene) -> tuple:
     n = dim - 1
     lo, hi = [math.inf] * n, [-math.inf] * n
     for b in scene.bodies:
-        half = _extent(b, dim)
+        half = b.extent(dim)
         centre = b.base if isinstance(b, ElasticPlate) else b.pos
         for k in range(n):
             lo[k], hi[k] = min(lo[k], centre[k] - half[k]), max(hi[k], centre[k] + half[k])

@@ -5,9 +5,10 @@ Balance (upright body, draft d below the still-water level ``level``)::
 
     rho g V_sub(d) = m g + sum_lines V_line(z_fairlead(d))
 
-with ``V_sub`` exact for the builder shapes (box: A d; 2-D cylinder, a circle of radius r:
-the segment r^2 acos((r - d)/r) - (r - d) sqrt(2 r d - d^2) per metre; 3-D cylinder, axis
-vertical: pi r^2 d; sphere: the cap pi d^2 (3 r - d) / 3) and ``V_line`` the vertical
+with ``V_sub`` the shape's :meth:`~cosim.scene.shapes.Shape.submerged_volume` (exact for
+the built-in shapes: box: A d; 2-D cylinder, a circle of radius r: the segment r^2
+acos((r - d)/r) - (r - d) sqrt(2 r d - d^2) per metre; 3-D cylinder, axis vertical: pi r^2
+d; sphere: the cap pi d^2 (3 r - d) / 3) and ``V_line`` the vertical
 force of each line on its fairlead from the quasi-static catenary
 (``moorings.catenary.solve``, Barreiro et al. 2016, Eq. 35-39, elastic when the line
 has EA) whatever the scene's mooring model: a static start, which a dynamic line
@@ -19,33 +20,16 @@ from __future__ import annotations
 import math
 
 from cosim.scene.fields import SceneError
-from cosim.scene.spec import Box, Cylinder
 
 
 def volume_and_height(body, dim: int) -> tuple[float, float]:
     """Volume [m^3] (2-D: per metre of depth) and height [m] of an upright builder body."""
-    if isinstance(body, Box):
-        v = math.prod(body.size)
-        return v, body.size[-1]
-    if isinstance(body, Cylinder):
-        if dim == 2:
-            return math.pi * body.radius**2, 2 * body.radius
-        return math.pi * body.radius**2 * body.length, body.length
-    return 4.0 / 3.0 * math.pi * body.radius**3, 2 * body.radius
+    return body.volume(dim), 2 * body.half_size(dim)[-1]
 
 
 def submerged_volume(body, dim: int, d: float) -> float:
     """Volume [m^3] below the water line at draft ``d`` [m] (clipped to the body)."""
-    _, height = volume_and_height(body, dim)
-    d = min(max(d, 0.0), height)
-    if isinstance(body, Box):
-        return math.prod(body.size[:-1]) * d
-    r = body.radius
-    if isinstance(body, Cylinder) and dim == 3:
-        return math.pi * r * r * d
-    if isinstance(body, Cylinder):
-        return r * r * math.acos((r - d) / r) - (r - d) * math.sqrt(max(2 * r * d - d * d, 0.0))
-    return math.pi * d * d * (3 * r - d) / 3.0
+    return body.submerged_volume(dim, d)
 
 
 def _line_pull(lines, fairleads_w) -> float:

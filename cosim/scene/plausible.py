@@ -25,8 +25,9 @@ import math
 from cosim.scene.fields import Gauges, Num, Part, Parts, SceneError, Table, Vec, Vecs, spec_fields
 from cosim.scene.limits import (DENSITY_WHY, FAIRLEAD_REACH, G0, MAX_BASE_ACCELERATION, MAX_DENSITY, MAX_LENGTH,
                                 MAX_LINE_STRAIN, MIN_DENSITY, MIN_LENGTH, PADDLE_SHARE)
-from cosim.scene.spec import (MJCF, Box, Cylinder, Earthquake, ElasticPlate, Flap, Flume, GroundMotion, NoFluid,
-                              PaddleRecord, Piston, Roll, Shake, Sphere, TableMotion)
+from cosim.scene.shapes import RigidBody
+from cosim.scene.spec import (MJCF, Earthquake, ElasticPlate, Flap, Flume, GroundMotion, NoFluid, PaddleRecord, Piston,
+                              Roll, Shake, TableMotion)
 
 
 def _g(x: float) -> str:
@@ -93,28 +94,23 @@ def check_fluid(s) -> None:
 
 # ------------------------------------------------------------------------ bodies
 def bounding_radius(b, dim: int) -> float:
-    """The radius [m] of the smallest sphere about a builder body's centre that holds it."""
-    if isinstance(b, Box):
-        return 0.5 * math.sqrt(sum(x * x for x in b.size))
-    if isinstance(b, Cylinder) and dim == 3:
-        return math.hypot(b.radius, 0.5 * b.length)
-    return b.radius
+    """The radius [m] of the smallest sphere about a builder body's centre that holds it
+    (:meth:`cosim.scene.shapes.Shape.bounding_radius`)."""
+    return b.bounding_radius(dim)
 
 
 def check_bodies(s, dim: int) -> None:
     """Gravity for floating bodies, the mean density of bodies given by mass, and each
     fairlead within reach of its body's hull."""
-    from cosim.scene.placement import volume_and_height
-
     for i, b in enumerate(s.bodies):
-        if isinstance(b, (MJCF, ElasticPlate)):
+        if not isinstance(b, RigidBody):
             continue
         if b.place == "floating" and s.world.gravity == 0 and not isinstance(s.fluid, NoFluid):
             raise SceneError("world.gravity", f"0 m/s^2: body {b.name!r} (bodies[{i}]) is placed floating, but "
                              f"without gravity there is no buoyancy (nor weight) to float it; give world.gravity "
                              f"> 0 (9.81 on Earth), or place it at a given pos")
         if b.mass is not None:
-            v = volume_and_height(b, dim)[0]
+            v = b.volume(dim)
             if b.mass / v < MIN_DENSITY:
                 raise SceneError(f"bodies[{i}].mass", f"{b.mass:g} kg in {v:.4g} m^3 is a mean density of "
                                  f"{b.mass / v:.4g} kg/m^3, below {MIN_DENSITY:g}, a tenth of air's: give a mass of "
@@ -124,7 +120,7 @@ def check_bodies(s, dim: int) -> None:
                 raise SceneError(f"bodies[{i}].mass", f"{b.mass:g} kg in {v:.4g} m^3{per} is a mean density of "
                                  f"{b.mass / v:.4g} kg/m^3, beyond {MAX_DENSITY:g}, {DENSITY_WHY}; give a mass "
                                  f"up to {MAX_DENSITY * v:.4g} kg, or a larger body")
-        reach = FAIRLEAD_REACH * bounding_radius(b, dim)
+        reach = FAIRLEAD_REACH * b.bounding_radius(dim)
         for name, p in b.fairleads.items():
             r = math.sqrt(sum(x * x for x in p))
             if r > reach:
@@ -246,8 +242,6 @@ def paddle_stroke(s) -> float:
 
 def _check_paddle(s, dim: int) -> None:
     """The paddle sweeps at most ``PADDLE_SHARE`` of the flume forward and strikes no body."""
-    from cosim.scene.checks import _extent
-
     d, w = s.domain, s.waves
     half = 0.5 * paddle_stroke(s)
     what = (f"waves of {w.height:g} m at {w.period:g} s in {d.depth:g} m of water need a paddle stroke of "
@@ -263,7 +257,7 @@ def _check_paddle(s, dim: int) -> None:
     for i, b in enumerate(s.bodies):
         if isinstance(b, MJCF):
             continue
-        near = b.pos[0] - _extent(b, dim)[0]
+        near = b.pos[0] - b.extent(dim)[0]
         if near < half:
             raise SceneError(f"bodies[{i}].{'base' if isinstance(b, ElasticPlate) else 'pos'}",
                              f"the body starts at x = {near:.4g} m, within the paddle's sweep ({what}: it reaches "
@@ -324,9 +318,8 @@ def _nearest_floating(s, dim, b, offset, anchor) -> float:
     """The shortest distance [m] from ``anchor`` to a floating body's fairlead at ``offset``
     over every draft (its centre between half its height below and above the level)."""
     from cosim.scene.build import water_level
-    from cosim.scene.placement import volume_and_height
 
-    height = volume_and_height(b, dim)[1]
+    height = 2 * b.half_size(dim)[-1]
     level = water_level(s)
     level = 0.0 if level is None else level
     lo, hi = level - 0.5 * height + offset[-1], level + 0.5 * height + offset[-1]

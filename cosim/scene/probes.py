@@ -101,26 +101,91 @@ def _in_tank_frame(points, move, t: float, dim: int) -> np.ndarray:
     return p
 
 
+class Probe:
+    """A kind of recorded quantity, registered in :data:`cosim.scene.registry.PROBES`
+    (entry-point group ``cosim.probes``): the names of its series, known from the scene
+    alone (:meth:`names`: ``cosim study`` checks its metrics with them), and the groups that
+    sample them in the built scene (:meth:`groups`), the same columns in the same order."""
+
+    def names(self, scene) -> list[str]:
+        """The series' names ``ENTITY.QUANTITY`` a run of ``scene`` records."""
+        raise NotImplementedError(f"{type(self).__name__}.names")
+
+    def groups(self, scene, built) -> list[Group]:
+        """The groups that sample them in ``built`` (:class:`cosim.scene.build.Built`)."""
+        raise NotImplementedError(f"{type(self).__name__}.groups")
+
+
 def groups(scene, built) -> list[Group]:
-    """The probe groups of a built scene."""
-    p, dim, out = scene.probes, scene.world.dim, []
-    b = built.bodies
-    if b is not None:
-        names = list(b.body_names)
-        plates = getattr(built, "plates", None) or {}  # elastic plates: their links are coupled bodies
-        links = {k: n for n, m in plates.items() for k in m.link_names}
-        rigid = [n for n in names if n not in links]
-        chosen = rigid + list(plates) if "all" in p.motion else [n for n in p.motion]
+    """The probe groups of a built scene, probe by probe in the registry's order."""
+    from cosim.scene.registry import PROBES
+
+    return [g for _, probe in PROBES.items() for g in probe.groups(scene, built)]
+
+
+def series_names(scene) -> list[str]:
+    """The names of the series a run of ``scene`` records, known from the scene alone
+    (before it is built: ``cosim study`` checks its ``--metric`` specs with them), in the
+    order of :func:`groups`. An MJCF file's coupled bodies are read from the file."""
+    from cosim.scene.registry import PROBES
+
+    return [n for _, probe in PROBES.items() for n in probe.names(scene)]
+
+
+def _axes(dim: int):
+    """(translations, rotations, axes, components) of a body's motion in a ``dim``-D scene."""
+    return ((["surge", "heave"], ["pitch"], [0, 2], "xz") if dim == 2 else
+            (["surge", "sway", "heave"], ["roll", "pitch", "yaw"], [0, 1, 2], "xyz"))
+
+
+def _body_names(built):
+    """(coupled body names, elastic plates by name, the rigid bodies' names) of a built scene."""
+    names = list(built.bodies.body_names)
+    plates = getattr(built, "plates", None) or {}  # elastic plates: their links are coupled bodies
+    links = {k for m in plates.values() for k in m.link_names}
+    return names, plates, [n for n in names if n not in links]
+
+
+def _scene_bodies(scene):
+    """(the rigid bodies' names, elastic plates by name) from the scene alone."""
+    from cosim.scene.checks import _check_mjcf
+    from cosim.scene.spec import MJCF, ElasticPlate
+
+    mjcf = [b for b in scene.bodies if isinstance(b, MJCF)]
+    plates = {b.name: b for b in scene.bodies if isinstance(b, ElasticPlate)}
+    rigid = (_check_mjcf(mjcf[0], "bodies[0]")["coupled"] if mjcf else
+             [b.name for b in scene.bodies if not isinstance(b, ElasticPlate)])
+    return rigid, plates
+
+
+class Motion(Probe):
+    """``motion``: each body's displacements and angles, each plate's corner, tip and clamp."""
+
+    def names(self, scene):
+        if not scene.bodies:
+            return []
+        lin, ang, _, comps = _axes(scene.world.dim)
+        rigid, plates = _scene_bodies(scene)
+        chosen = rigid + list(plates) if "all" in scene.probes.motion else list(scene.probes.motion)
+        out = [f"{n}.{q}" for n in chosen if n not in plates for q in lin + ang]
+        out += [f"{n}.{s}_{c}" for n in chosen if n in plates for s in ("corner", "tip") for c in comps]
+        if scene.base_motion is not None:
+            out += [f"{n}.clamp_{c}" for n in chosen if n in plates for c in comps]
+        return out
+
+    def groups(self, scene, built):
+        b, dim = built.bodies, scene.world.dim
+        if b is None:
+            return []
+        names, plates, rigid = _body_names(built)
+        chosen = rigid + list(plates) if "all" in scene.probes.motion else [n for n in scene.probes.motion]
         idx = [names.index(n) for n in chosen if n not in plates]
         sites = {n: [b.site(f"{n}_corner")[0], b.site(f"{n}_tip")[0]] for n in chosen if n in plates}
         move, clock = getattr(built, "base_motion", None), built.coupler
         site0 = {n: _in_tank_frame(b.site_positions(ids), move, clock.t, dim) for n, ids in sites.items()}
         clamps = {n: names.index(plates[n].link_names[0]) for n in sites} if move is not None else {}
         com0, origin0 = b.kinematics().com.copy(), b.kinematics().origin.copy()
-        lin = ["surge", "heave"] if dim == 2 else ["surge", "sway", "heave"]
-        ang = ["pitch"] if dim == 2 else ["roll", "pitch", "yaw"]
-        axes = [0, 2] if dim == 2 else [0, 1, 2]
-        comps = "xz" if dim == 2 else "xyz"
+        lin, ang, axes, comps = _axes(dim)
 
         def motion():
             k = b.kinematics()
@@ -133,41 +198,83 @@ def groups(scene, built) -> list[Group]:
                 row += [float(k.origin[j, a] - origin0[j, a]) for a in axes]
             return np.array(row)
 
-        if idx or sites:
-            cols = [f"{names[j]}.{q}" for j in idx for q in lin + ang]
-            cols += [f"{n}.{s}_{c}" for n in sites for s in ("corner", "tip") for c in comps]
-            cols += [f"{n}.clamp_{c}" for n in clamps for c in comps]
-            units = [u for _ in idx for u in ["m"] * len(lin) + ["deg"] * len(ang)] + ["m"] * (
-                (2 * len(sites) + len(clamps)) * len(comps))
-            out.append(Group("motion", cols, units, motion))
-        if p.loads:
-            led = built.coupler.ledger
-            rows = [[names.index(n)] for n in rigid] + [[names.index(k) for k in m.link_names]
-                                                        for m in plates.values()]
+        if not (idx or sites):
+            return []
+        cols = [f"{names[j]}.{q}" for j in idx for q in lin + ang]
+        cols += [f"{n}.{s}_{c}" for n in sites for s in ("corner", "tip") for c in comps]
+        cols += [f"{n}.clamp_{c}" for n in clamps for c in comps]
+        units = [u for _ in idx for u in ["m"] * len(lin) + ["deg"] * len(ang)] + ["m"] * (
+            (2 * len(sites) + len(clamps)) * len(comps))
+        return [Group("motion", cols, units, motion)]
 
-            def loads():
+
+class Loads(Probe):
+    """``loads``: the fluid's and the moorings' force on each body; each plate's node pressures."""
+
+    def names(self, scene):
+        if not (scene.bodies and scene.probes.loads):
+            return []
+        comps = _axes(scene.world.dim)[3]
+        rigid, plates = _scene_bodies(scene)
+        out = [f"{n}.{src}_F{c}" for n in rigid + list(plates) for src in ("fluid", "mooring") for c in comps]
+        return out + [f"{n}.p{k}" for n, b in plates.items() for k in range(b.elements + 1)]
+
+    def groups(self, scene, built):
+        b = built.bodies
+        if b is None or not scene.probes.loads:
+            return []
+        names, plates, rigid = _body_names(built)
+        axes, comps = _axes(scene.world.dim)[2:]
+        led = built.coupler.ledger
+        rows = [[names.index(n)] for n in rigid] + [[names.index(k) for k in m.link_names] for m in plates.values()]
+
+        def loads():
+            last = led.last()
+            if not last:  # before the first step: the loads the coupler would apply now
+                F, _, Fm, _ = built.coupler._loads(b.kinematics())
+                last = {"fluid_force": F, "mooring_force": Fm}
+            return np.concatenate([np.concatenate([last["fluid_force"][j][:, axes].sum(axis=0),
+                                                   last["mooring_force"][j][:, axes].sum(axis=0)])
+                                   for j in rows])
+
+        cols = [f"{n}.{src}_F{c}" for n in rigid + list(plates) for src in ("fluid", "mooring") for c in comps]
+        out = [Group("loads", cols, ["N"] * len(cols), loads)]
+        for n, m in plates.items():  # the net pressure on each node's share of the plate
+            ids = [names.index(k) for k in m.link_names]
+            area = np.diff(m.link_bounds, axis=1)[:, 0] * m.width
+
+            def node_pressure(ids=ids, area=area):
                 last = led.last()
-                if not last:  # before the first step: the loads the coupler would apply now
-                    F, _, Fm, _ = built.coupler._loads(b.kinematics())
-                    last = {"fluid_force": F, "mooring_force": Fm}
-                return np.concatenate([np.concatenate([last["fluid_force"][j][:, axes].sum(axis=0),
-                                                       last["mooring_force"][j][:, axes].sum(axis=0)])
-                                       for j in rows])
+                return np.asarray(last["fluid_force"])[ids, 0] / area if last else 0.0 * area
 
-            cols = [f"{n}.{src}_F{c}" for n in rigid + list(plates) for src in ("fluid", "mooring") for c in comps]
-            out.append(Group("loads", cols, ["N"] * len(cols), loads))
-            for n, m in plates.items():  # the net pressure on each node's share of the plate
-                ids = [names.index(k) for k in m.link_names]
-                area = np.diff(m.link_bounds, axis=1)[:, 0] * m.width
+            out.append(Group(f"{n}_pressure", [f"{n}.p{k}" for k in range(len(ids))], ["Pa"] * len(ids),
+                             node_pressure))
+        return out
 
-                def node_pressure(ids=ids, area=area):
-                    last = led.last()
-                    return np.asarray(last["fluid_force"])[ids, 0] / area if last else 0.0 * area
 
-                out.append(Group(f"{n}_pressure", [f"{n}.p{k}" for k in range(len(ids))], ["Pa"] * len(ids),
-                                 node_pressure))
-    m = built.mooring
-    if m is not None and p.tensions:
+class Tensions(Probe):
+    """``tensions``: each line's fairlead tension, anchor tension and tether load."""
+
+    def names(self, scene):
+        m = scene.moorings
+        if m is None or not scene.probes.tensions:
+            return []
+        from cosim.scene.registry import MOORINGS
+
+        model = MOORINGS[m.model]
+        labels = [ln.name or ln.fairlead for ln in m.lines]
+        breaking = any(ln.break_load is not None for ln in m.lines)
+        out = [f"{n}.tension" for n in labels]
+        if model.anchor_tensions or breaking:  # the models that report it (a breaking line's wrapper always does)
+            out += [f"{n}.anchor_tension" for n in labels]
+        if model.tethers and any(ln.EA is None for ln in m.lines):  # inextensible lines: tethers
+            out += [f"{n}.tether" for n in labels]
+        return out
+
+    def groups(self, scene, built):
+        m = built.mooring
+        if m is None or not scene.probes.tensions:
+            return []
         lines = built.line_names
         tethered = bool(built.coupler.tether_tensions())
         c = built.coupler
@@ -185,65 +292,132 @@ def groups(scene, built) -> list[Group]:
 
         cols = ([f"{n}.tension" for n in lines] + ([f"{n}.anchor_tension" for n in lines] if anchors else [])
                 + ([f"{n}.tether" for n in lines] if tethered else []))
-        out.append(Group("tensions", cols, ["N"] * len(cols), tensions))
-    if m is not None and p.tensions and getattr(m, "state_log", None) is not None:  # Barreiro et al. 2016, Fig. 5
-        out.append(Group("line_states", [f"{n}.state" for n in built.line_names], ["-"] * len(built.line_names),
-                         lambda: np.asarray(m.line_states(), float), categories=_state_names()))
-    sph = built.sph
-    move = built.base_motion  # a moving tank carries its gauges and wall patches along
+        return [Group("tensions", cols, ["N"] * len(cols), tensions)]
 
-    def in_tank(points):
-        """Points [m] fixed to the tank, where they are now (rigidly moved with it)."""
-        pts = np.asarray(points, float)
-        return pts if move is None else np.asarray(move(sph.t, pts)[0], float)
 
-    if sph is not None and p.gauges:
-        from fluid.probes import surface_elevation
+class LineStates(Probe):
+    """``line_states``: each line's state (Barreiro et al. 2016, Fig. 5)."""
 
-        g = np.array([x for x in p.gauges], float)
-        level = built.level
-        base = np.column_stack([g.reshape(len(g), -1), np.full(len(g), level)])  # the still surface under each gauge
+    def names(self, scene):
+        m = scene.moorings
+        if m is None or not scene.probes.tensions:
+            return []
+        from cosim.scene.registry import MOORINGS
 
-        def gauges():
-            w = in_tank(base)
-            return surface_elevation(sph, w[:, 0] if dim == 2 else w[:, :2]) - w[:, -1]
+        return [f"{ln.name or ln.fairlead}.state" for ln in m.lines] if MOORINGS[m.model].line_states else []
 
-        out.append(Group("gauges", [f"gauge{i + 1}.eta" for i in range(len(g))], ["m"] * len(g), gauges,
-                         labels=_gauge_labels(p.gauges, dim)))
-    sea = _surface_sea(built.fluid) if sph is None else None  # the analytic or potential fluid's incident sea
-    if sea is not None and p.gauges:
-        g = np.array([x for x in p.gauges], float).reshape(len(p.gauges), -1)
-        gx, gy = (g[:, 0], np.zeros(len(g))) if dim == 2 else (g[:, 0], g[:, 1])
+    def groups(self, scene, built):
+        m = built.mooring
+        if m is None or not scene.probes.tensions or getattr(m, "state_log", None) is None:
+            return []
+        return [Group("line_states", [f"{n}.state" for n in built.line_names], ["-"] * len(built.line_names),
+                      lambda: np.asarray(m.line_states(), float), categories=_state_names())]
+
+
+def _has_sea(scene) -> bool:
+    """Whether a fluid without particles has an incident sea (given, or a flume's wavemaker's)."""
+    from cosim.scene.seas import IncidentSea
+    from cosim.scene.spec import Analytic, Flap, Piston, Potential
+
+    return isinstance(scene.fluid, (Analytic, Potential)) and isinstance(scene.waves, (IncidentSea, Piston, Flap))
+
+
+class Gauges(Probe):
+    """``gauges``: the free surface's elevation at each gauge (the SPH fluid's, or the
+    incident sea's); ``sea``: with an incident sea and no gauge, its elevation at the origin."""
+
+    def names(self, scene):
+        from cosim.scene.spec import SPH
+
+        p, sea = scene.probes, _has_sea(scene)
+        if p.gauges and (isinstance(scene.fluid, SPH) or sea):
+            return [f"gauge{i + 1}.eta" for i in range(len(p.gauges))]
+        return ["sea.eta"] if sea else []
+
+    def groups(self, scene, built):
+        p, dim, sph = scene.probes, scene.world.dim, built.sph
+        if sph is not None and p.gauges:
+            from fluid.probes import surface_elevation
+
+            g = np.array([x for x in p.gauges], float)
+            level = built.level
+            base = np.column_stack([g.reshape(len(g), -1), np.full(len(g), level)])  # the still surface under each
+
+            def gauges():
+                w = _in_tank(built, base)
+                return surface_elevation(sph, w[:, 0] if dim == 2 else w[:, :2]) - w[:, -1]
+
+            return [Group("gauges", [f"gauge{i + 1}.eta" for i in range(len(g))], ["m"] * len(g), gauges,
+                          labels=_gauge_labels(p.gauges, dim))]
+        sea = _surface_sea(built.fluid) if sph is None else None  # the analytic or potential fluid's incident sea
+        if sea is None:
+            return []
         c = built.coupler
+        if p.gauges:
+            g = np.array([x for x in p.gauges], float).reshape(len(p.gauges), -1)
+            gx, gy = (g[:, 0], np.zeros(len(g))) if dim == 2 else (g[:, 0], g[:, 1])
 
-        def wave_gauges():
-            return sea.elevation(gx, gy, c.t)
+            def wave_gauges():
+                return sea.elevation(gx, gy, c.t)
 
-        out.append(Group("gauges", [f"gauge{i + 1}.eta" for i in range(len(g))], ["m"] * len(g), wave_gauges,
-                         labels=_gauge_labels(p.gauges, dim)))
-    elif sea is not None:  # no gauge: the incident sea at the origin
-        c = built.coupler
-        out.append(Group("sea", ["sea.eta"], ["m"], lambda: np.atleast_1d(sea.elevation(0.0, 0.0, c.t))))
-    if sph is not None and p.pressure:
+            return [Group("gauges", [f"gauge{i + 1}.eta" for i in range(len(g))], ["m"] * len(g), wave_gauges,
+                          labels=_gauge_labels(p.gauges, dim))]
+        return [Group("sea", ["sea.eta"], ["m"], lambda: np.atleast_1d(sea.elevation(0.0, 0.0, c.t)))]
+
+
+def _in_tank(built, points):
+    """Points [m] fixed to the tank, where they are now (rigidly moved with a moving tank)."""
+    pts, move = np.asarray(points, float), built.base_motion
+    return pts if move is None else np.asarray(move(built.sph.t, pts)[0], float)
+
+
+class Pressure(Probe):
+    """``pressure``: each wall patch's pressure (the SPH fluid)."""
+
+    def names(self, scene):
+        from cosim.scene.spec import SPH
+
+        return [f"{q.name}.p" for q in scene.probes.pressure] if isinstance(scene.fluid, SPH) else []
+
+    def groups(self, scene, built):
+        sph, patches = built.sph, scene.probes.pressure
+        if sph is None or not patches:
+            return []
         from fluid.probes import wall_patch_pressure
 
-        patches = p.pressure
         ends = [np.array([q.centre, np.add(q.centre, q.normal)], float) for q in patches]
 
         def pressure():
             row = []
             for q, e in zip(patches, ends):
-                c, tip = in_tank(e)
+                c, tip = _in_tank(built, e)
                 row.append(wall_patch_pressure(sph, c, tip - c, q.size))
             return np.array(row)
 
-        out.append(Group("pressure", [f"{q.name}.p" for q in patches], ["Pa"] * len(patches), pressure))
-    if sph is not None and p.energy:
+        return [Group("pressure", [f"{q.name}.p" for q in patches], ["Pa"] * len(patches), pressure)]
+
+
+class Energy(Probe):
+    """``energy``: the SPH fluid's kinetic and potential energy."""
+
+    def names(self, scene):
+        from cosim.scene.spec import SPH
+
+        return ["fluid.kinetic", "fluid.potential"] if isinstance(scene.fluid, SPH) and scene.probes.energy else []
+
+    def groups(self, scene, built):
+        sph = built.sph
+        if sph is None or not scene.probes.energy:
+            return []
         from fluid.probes import fluid_energies
 
-        out.append(Group("energy", ["fluid.kinetic", "fluid.potential"], ["J/m" if dim == 2 else "J"] * 2,
-                         lambda: np.array(fluid_energies(sph))))
-    return out
+        return [Group("energy", ["fluid.kinetic", "fluid.potential"], ["J/m" if scene.world.dim == 2 else "J"] * 2,
+                      lambda: np.array(fluid_energies(sph)))]
+
+
+#: the built-in probes, in the order of the outputs' series
+PROBES = {"motion": Motion(), "loads": Loads(), "tensions": Tensions(), "line_states": LineStates(),
+          "gauges": Gauges(), "pressure": Pressure(), "energy": Energy()}
 
 
 class _PotentialSea:
@@ -266,51 +440,3 @@ def _surface_sea(fluid):
     if sea is None or isinstance(sea, Sea):
         return sea
     return _PotentialSea(sea) if hasattr(sea, "elevation") else None
-
-
-def series_names(scene) -> list[str]:
-    """The names of the series a run of ``scene`` records, known from the scene alone
-    (before it is built: ``cosim study`` checks its ``--metric`` specs with them), in the
-    order of :func:`groups`. An MJCF file's coupled bodies are read from the file."""
-    from cosim.scene.checks import _check_mjcf
-    from cosim.scene.spec import MJCF, SPH, Analytic, ElasticPlate, Flap, IrregularWaves, LinearWaves, Piston, \
-        Potential, RegularWaves
-
-    p, dim, out = scene.probes, scene.world.dim, []
-    comps = "xz" if dim == 2 else "xyz"
-    lin = ["surge", "heave"] if dim == 2 else ["surge", "sway", "heave"]
-    ang = ["pitch"] if dim == 2 else ["roll", "pitch", "yaw"]
-    mjcf = [b for b in scene.bodies if isinstance(b, MJCF)]
-    plates = {b.name: b for b in scene.bodies if isinstance(b, ElasticPlate)}
-    rigid = (_check_mjcf(mjcf[0], "bodies[0]")["coupled"] if mjcf else
-             [b.name for b in scene.bodies if not isinstance(b, ElasticPlate)])
-    if scene.bodies:
-        chosen = rigid + list(plates) if "all" in p.motion else list(p.motion)
-        out += [f"{n}.{q}" for n in chosen if n not in plates for q in lin + ang]
-        out += [f"{n}.{s}_{c}" for n in chosen if n in plates for s in ("corner", "tip") for c in comps]
-        if scene.base_motion is not None:
-            out += [f"{n}.clamp_{c}" for n in chosen if n in plates for c in comps]
-        if p.loads:
-            out += [f"{n}.{src}_F{c}" for n in rigid + list(plates) for src in ("fluid", "mooring") for c in comps]
-            out += [f"{n}.p{k}" for n, b in plates.items() for k in range(b.elements + 1)]
-    m = scene.moorings
-    if m is not None and p.tensions:
-        labels = [ln.name or ln.fairlead for ln in m.lines]
-        breaking = any(ln.break_load is not None for ln in m.lines)
-        out += [f"{n}.tension" for n in labels]
-        if m.model != "fmu" or breaking:  # the models that report it (a breaking line's wrapper always does)
-            out += [f"{n}.anchor_tension" for n in labels]
-        if m.model == "catenary" and any(ln.EA is None for ln in m.lines):  # inextensible lines: tethers
-            out += [f"{n}.tether" for n in labels]
-        out += [f"{n}.state" for n in labels]
-    sph = isinstance(scene.fluid, SPH)
-    sea = (isinstance(scene.fluid, (Analytic, Potential))
-           and isinstance(scene.waves, (LinearWaves, RegularWaves, IrregularWaves, Piston, Flap)))
-    if p.gauges and (sph or sea):
-        out += [f"gauge{i + 1}.eta" for i in range(len(p.gauges))]
-    elif sea:
-        out.append("sea.eta")
-    if sph:
-        out += [f"{q.name}.p" for q in p.pressure]
-        out += ["fluid.kinetic", "fluid.potential"] if p.energy else []
-    return out

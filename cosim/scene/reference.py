@@ -9,14 +9,15 @@ import inspect
 
 from cosim.scene import spec
 from cosim.scene.fields import spec_fields
+from cosim.scene.registry import FLUIDS, SHAPES, WAVES
 
 SECTIONS = [
     ("The scene", [spec.Scene, spec.World, spec.Coupling]),
-    ("Fluids (`[fluid]`, told apart by `model`)", list(spec.FLUIDS)),
+    ("Fluids (`[fluid]`, told apart by `model`)", list(FLUIDS.classes())),
     ("Domains (`[domain]`, by `kind`)", list(spec.DOMAINS) + [spec.Block, spec.Beach]),
-    ("Waves (`[waves]`, by `kind`): wavemakers, the incident sea", list(spec.WAVES)),
+    ("Waves (`[waves]`, by `kind`): wavemakers, the incident sea", list(WAVES.classes())),
     ("Base motions (`[base_motion]`, by `kind`)", list(spec.BASE_MOTIONS) + [spec.Record]),
-    ("Bodies (`[[bodies]]`, by `shape`)", list(spec.BODIES)),
+    ("Bodies (`[[bodies]]`, by `shape`)", list(SHAPES.classes())),
     ("Moorings (`[moorings]`)", [spec.Moorings, spec.Line]),
     ("Probes (`[probes]`)", [spec.Probes, spec.Patch]),
 ]

@@ -37,10 +37,11 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from cosim.scene import limits as L
+from cosim.scene import seas, shapes
 from cosim.scene.fields import (SceneError, Spec, choice, flag, gauges, is_name, names, num, part, parts, required,
                                 table, text, vec, vecs, whole)
+from cosim.scene.registry import FLUIDS as FLUID_MODELS, MOORINGS, SHAPES, WAVES as WAVE_KINDS
 
-MOORING_MODELS = ("catenary", "sph-cable", "moordyn", "fmu")
 SETUPS = ("auto", "still", "waves", "sloshing", "impact", "defaults")
 
 
@@ -85,6 +86,9 @@ class NoFluid(Spec):
     TAG = ("model", "none")
     model: str = tag("none")
 
+    def participant(self, scene, built) -> None:
+        """No fluid participant."""
+
 
 @dataclass(frozen=True)
 class Analytic(Spec):
@@ -102,6 +106,12 @@ class Analytic(Spec):
     quadratic_damping: dict = table("per body: 6 quadratic damping coefficients [N s^2/m^2, N m s^2]", sizes=(6,))
     added_mass: dict = table("per body: one added mass per degree of freedom (2-D: x, z, rotation; 3-D: 3 "
                              "translations, 3 rotations) [kg, kg m^2]", sizes=(3, 6))
+
+    def participant(self, scene, built) -> None:
+        """The analytic fluid and the flume's wavemaker (:mod:`cosim.scene.build`)."""
+        from cosim.scene.build import analytic_fluid
+
+        analytic_fluid(scene, built)
 
 
 @dataclass(frozen=True)
@@ -129,6 +139,12 @@ class Potential(Spec):
     memory: float = num(None, "radiation memory (unset: where the impulse response has decayed)", "s", lo=0,
                         lo_open=True)
     quadratic_drag: dict = table("per body: 6 quadratic drag coefficients [N s^2/m^2, N m s^2]", sizes=(6,))
+
+    def participant(self, scene, built) -> None:
+        """The potential fluid and the flume's wavemaker (:mod:`cosim.scene.build`)."""
+        from cosim.scene.build import potential_fluid
+
+        built.fluid, built.wavemaker = potential_fluid(scene, built.level)
 
 
 @dataclass(frozen=True)
@@ -173,6 +189,13 @@ class SPH(Spec):
     def validate(self):
         if self.c0 is not None and self.u_max is not None:
             raise SceneError("c0", "give c0 or u_max, not both (c0 = c0_factor * u_max)")
+
+    def participant(self, scene, built) -> None:
+        """The SPH fluid in its domain, its set-up, wavemaker and walls' motion
+        (:mod:`cosim.scene.build`)."""
+        from cosim.scene.build import sph_fluid
+
+        sph_fluid(scene, built)
 
 
 FLUIDS = (NoFluid, Analytic, Potential, SPH)
@@ -480,7 +503,7 @@ class PaddleRecord(Spec):
 
 
 @dataclass(frozen=True)
-class LinearWaves(Spec):
+class LinearWaves(seas.IncidentSea):
     """Regular linear (Airy) waves acting on the bodies of the analytic fluid
     (``fluid.analytic.LinearWave``, the linear ``fluid.waves.RegularWave``: the same wave as
     kind = "regular"): height ``height`` [m], period ``period`` [s], in water
@@ -500,9 +523,16 @@ class LinearWaves(Spec):
     direction: float = num(0.0, "heading of propagation, from +x towards +y (2-D: 0 or 180)", "deg")
     ramp: float = num(2.0, "periods over which the waves fade in", lo=0)
 
+    def sea(self, scene):
+        """``fluid.analytic.LinearWave``."""
+        from fluid.analytic import LinearWave
+
+        return LinearWave(self.height, self.period, self.depth, self.direction, self.ramp * self.period,
+                          scene.world.gravity)
+
 
 @dataclass(frozen=True)
-class RegularWaves(Spec):
+class RegularWaves(seas.IncidentSea):
     """Regular waves acting on the bodies of the analytic fluid (``fluid.waves.RegularWave``):
     height ``height`` [m], period ``period`` [s], in water ``depth`` [m] deep under the still
     level, ``theory`` "linear" (Airy; the same wave as kind = "linear") or "stokes2" (Stokes
@@ -524,12 +554,18 @@ class RegularWaves(Spec):
     phase: float = num(0.0, "phase at x = y = 0 at t = 0 (0: a crest there, 90: an up-crossing)", "deg")
     ramp: float = num(2.0, "periods over which the waves fade in", lo=0)
 
+    def sea(self, scene):
+        """``fluid.waves.RegularWave`` (:func:`cosim.scene.build.regular_sea`)."""
+        from cosim.scene.build import regular_sea
+
+        return regular_sea(scene)
+
 
 SPECTRA = ("jonswap", "pierson-moskowitz", "series")
 
 
 @dataclass(frozen=True)
-class IrregularWaves(Spec):
+class IrregularWaves(seas.IncidentSea):
     """An irregular long-crested sea acting on the bodies of the analytic fluid, in water
     ``depth`` [m] deep under the still level, travelling along ``direction`` [deg]:
     ``spectrum`` "jonswap" or "pierson-moskowitz" (``fluid.waves.SpectralSea``: ``hs``
@@ -582,6 +618,12 @@ class IrregularWaves(Spec):
         for name in ("file", "at", "min_period"):
             if getattr(self, name) is not None:
                 raise SceneError(name, f"belongs to spectrum = \"series\"; leave it out with {self.spectrum!r}")
+
+    def sea(self, scene):
+        """``fluid.waves.SpectralSea`` or ``RecordedSea`` (:func:`cosim.scene.build.irregular_sea`)."""
+        from cosim.scene.build import irregular_sea
+
+        return irregular_sea(scene)
 
 
 WAVES = (Piston, Flap, PaddleRecord, LinearWaves, RegularWaves, IrregularWaves)
@@ -706,17 +748,7 @@ frame [m], referred to by lines as ``"BODY.NAME"``. Give ``density`` or ``mass``
 
 
 @dataclass(frozen=True)
-class _Body(Spec):
-    def validate(self):
-        if (self.density is None) == (self.mass is None):
-            raise SceneError("density", "give either density [kg/m^3] or mass [kg], one of the two")
-        if self.place == "floating" and self.euler is not None:
-            raise SceneError("euler", "a floating body is placed upright; give place = \"given\" with a full pos "
-                             "to turn it")
-
-
-@dataclass(frozen=True)
-class Box(_Body):
+class Box(shapes.BoxShape):
     __doc__ = "A box body of edge lengths ``size`` [m] ((x, z) in 2-D, (x, y, z) in 3-D). " + _BODY_COMMON
     TAG = ("shape", "box")
     shape: str = tag("box")
@@ -737,7 +769,7 @@ class Box(_Body):
 
 
 @dataclass(frozen=True)
-class Cylinder(_Body):
+class Cylinder(shapes.CylinderShape):
     __doc__ = ("A cylinder of ``radius`` [m]: in 2-D a circle in the x-z plane (1 m long), in "
                "3-D of ``length`` [m] with its axis along z. " + _BODY_COMMON)
     TAG = ("shape", "cylinder")
@@ -755,7 +787,7 @@ class Cylinder(_Body):
 
 
 @dataclass(frozen=True)
-class Sphere(_Body):
+class Sphere(shapes.SphereShape):
     __doc__ = "A sphere of ``radius`` [m] (3-D only). " + _BODY_COMMON
     TAG = ("shape", "sphere")
     shape: str = tag("sphere")
@@ -783,7 +815,7 @@ class MJCF(Spec):
     bodies: tuple = names("names of the coupled bodies (empty: every movable body)")
 
 @dataclass(frozen=True)
-class ElasticPlate(Spec):
+class ElasticPlate(shapes.PlateShape):
     """An elastic plate (a cantilever) clamped by its foot to the tank's floor at ``base``
     [m] (the centre of the foot: (x, z) in 2-D, (x, y, z) in 3-D) and rising ``length`` [m]
     along z, or (``direction = "down"``) clamped by its top at ``base`` and hanging
@@ -877,7 +909,7 @@ class Moorings(Spec):
     is watched: the time, line and tension at which its fairlead tension first passes it
     go into the log and ``summary.json`` (``line_breaks``)."""
 
-    model: str = choice("catenary", "the mooring model", MOORING_MODELS)
+    model: str = choice("catenary", "the mooring model", MOORINGS)
     lines: tuple = parts("the lines", Line)
     segments: int = whole(20, "segments per line of the dynamic models (SPH-cable particles, MoorDyn segments)",
                           lo=2)
@@ -887,12 +919,11 @@ class Moorings(Spec):
     def validate(self):
         if not self.lines:
             raise SceneError("lines", "give at least one line (or leave moorings out)")
-        if self.model in ("sph-cable", "moordyn"):
-            for i, ln in enumerate(self.lines):
-                for key in ("EA", "mass_per_length", "diameter"):
-                    if getattr(ln, key) is None:
-                        raise SceneError(f"lines[{i}].{key}", f"the {self.model!r} model needs it for every line; "
-                                         f"give it, or use model = \"catenary\"")
+        for i, ln in enumerate(self.lines):
+            for key in MOORINGS[self.model].line_fields:
+                if getattr(ln, key) is None:
+                    raise SceneError(f"lines[{i}].{key}", f"the {self.model!r} model needs it for every line; "
+                                     f"give it, or use model = \"catenary\"")
 
 
 # ------------------------------------------------------------------------ probes and coupling
@@ -953,12 +984,12 @@ class Scene(Spec):
     ``scene.to_toml()``, ``scene.run(out=...)``."""
 
     world: World = part(World(), "dimension, gravity, duration, output times", World)
-    fluid: Spec = part(NoFluid(), "none, analytic, potential or SPH", FLUIDS)
+    fluid: Spec = part(NoFluid(), "none, analytic, potential or SPH", FLUID_MODELS)
     domain: Spec = part(None, "the SPH fluid's container (the analytic fluid: a flume, for its depth and wavemaker)",
                         DOMAINS)
-    waves: Spec = part(None, "a flume's wavemaker, or regular or irregular waves on the analytic fluid", WAVES)
+    waves: Spec = part(None, "a flume's wavemaker, or regular or irregular waves on the analytic fluid", WAVE_KINDS)
     base_motion: Spec = part(None, "motion of the tank and of the elastic plates clamped to it", BASE_MOTIONS)
-    bodies: tuple = parts("the bodies", BODIES)
+    bodies: tuple = parts("the bodies", SHAPES)
     moorings: Moorings = part(None, "mooring lines and their model", Moorings)
     probes: Probes = part(Probes(), "what is recorded", Probes)
     coupling: Coupling = part(Coupling(), "coupling scheme and light-body remedy", Coupling)
@@ -1027,4 +1058,4 @@ __all__ = ["World", "NoFluid", "Analytic", "Potential", "SPH", "Block", "Tank", 
            "Earthquake", "Record", "GroundMotion", "Box", "Cylinder", "Sphere", "MJCF", "ElasticPlate", "Line",
            "Moorings", "Patch",
            "Probes", "Coupling",
-           "Scene", "SceneError", "MOORING_MODELS", "SETUPS"]
+           "Scene", "SceneError", "SETUPS"]

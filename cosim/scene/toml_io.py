@@ -254,8 +254,10 @@ def _drop_foreign(node: dict, key: str, value, where: str) -> None:
     import logging
 
     from cosim.scene import spec
+    from cosim.scene.registry import TAGGED
 
-    new = [c for c in vars(spec).values() if isinstance(c, type) and issubclass(c, Spec) and c.TAG == (key, value)]
+    known = {c for c in vars(spec).values() if isinstance(c, type) and issubclass(c, Spec)}
+    new = [c for c in known | {c for r in TAGGED for c in r.classes()} if c.TAG == (key, value)]
     if len(new) != 1:
         return  # not a tag, or an unknown kind: from_dict names it
     known = {name for name, _, _ in spec_fields(new[0])} | {key}

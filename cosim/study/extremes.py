@@ -31,7 +31,9 @@ from pathlib import Path
 import numpy as np
 
 from cosim.errors import CosimError
-from cosim.scene.spec import MJCF, SPH, Box, Cylinder, Sphere
+from cosim.scene.registry import MOORINGS
+from cosim.scene.shapes import RigidBody
+from cosim.scene.spec import MJCF, SPH
 from cosim.study import sweep
 
 UNSTABLE = ("InstabilityError", "ConvergenceError", "TautLineError")
@@ -59,7 +61,7 @@ def levers(scene) -> list[tuple[str, list[tuple[str, list[str]]]]]:
             out.append(("moorings.lines[*].EA", [(f"{k:g} x", [f"moorings.lines[{i}].EA={ln.EA * k!r}"
                                                                for i, ln in enumerate(m.lines)])
                                                  for k in (1e-3, 1e-1, 1.0, 10.0, 1e3)]))
-        if m.model in ("sph-cable", "moordyn"):
+        if MOORINGS[m.model].dynamic:
             out.append(("moorings.segments", [(str(n), [f"moorings.segments={n}"]) for n in (2, 5, 20, 80)]))
     if not isinstance(f, SPH) and scene.bodies:
         out.append(("coupling.dt", [(f"{v:g} s", [f"coupling.dt={v!r}"]) for v in (1e-3, 1e-2, 0.1, 0.5)]))
@@ -78,13 +80,9 @@ def _outcome(rec: dict) -> str:
     return "crash"
 
 
-def _height(body) -> float | None:
-    """A builder body's height [m] (None for others)."""
-    if isinstance(body, Box):
-        return float(body.size[-1])
-    if isinstance(body, (Cylinder, Sphere)):
-        return 2.0 * float(body.radius)
-    return None
+def _height(body, dim: int) -> float | None:
+    """A rigid builder body's upright height [m] (None for others)."""
+    return 2.0 * float(body.half_size(dim)[-1]) if isinstance(body, RigidBody) else None
 
 
 def _sank(scene, lever: str, folder) -> str | None:
@@ -93,7 +91,7 @@ def _sank(scene, lever: str, folder) -> str | None:
     if not lever.startswith("bodies[") or not lever.endswith("].density"):
         return None
     body = scene.bodies[int(lever[len("bodies["):-len("].density")])]
-    tall = _height(body)
+    tall = _height(body, scene.world.dim)
     heave = sweep.series(folder).get(f"{body.name}.heave")
     if tall is None or heave is None or len(heave[1]) < 2:
         return None
