@@ -8,7 +8,6 @@ import math
 
 import numpy as np
 
-from cosim.scene.checks import _extent
 from cosim.scene.spec import MJCF, Box, Cylinder, ElasticPlate
 
 
@@ -78,7 +77,7 @@ def box_for(scene):
         fp, size = ((0.0,) * (dim - 1), (0.0,) * (dim - 1)), 0.0
     else:
         fp = footprint(scene)
-        size = max((_extent(b, dim)[0] for b in scene.bodies), default=0.0)
+        size = max((b.extent(dim)[0] for b in scene.bodies), default=0.0)
     return choose_box(sea, h, fp, reach=reach(scene), periods=periods, size=size, dim=dim, zone=d.zone,
                       x=(d.x0, d.x1), width=d.width, height=d.height)
 
