@@ -70,13 +70,17 @@ def water_level(scene) -> float | None:
     return d.fill_level if isinstance(d, PolygonTank) else d.level
 
 
-def fluid_config(scene, setup):
+def fluid_config(scene, setup, numbers_only: bool = False):
+    """The SPH fluid's FluidConfig from the scene and its set-up; ``numbers_only``: its
+    settings on the CPU, for checks that need its numbers (h, c0) and not its device (a
+    GPU that this machine may not have)."""
     from fluid.solver import FluidConfig
 
+    cfg = {k: v for k, v in setup.config.items() if not (numbers_only and k == "device")}
     # the walls' loads only where a probe reads them (wall-pressure patches): a scene pays
     # for what it contains, and the fluid's motion and step are the same either way
     return FluidConfig(dim=scene.world.dim, dx=scene.fluid.dx, g=scene.world.gravity,
-                       wall_loads=bool(scene.probes.pressure), **setup.config)
+                       wall_loads=bool(scene.probes.pressure), **cfg)
 
 
 def _wavemaker(scene):

@@ -210,7 +210,7 @@ def sph_particles(scene) -> tuple[float, float, float]:
     from cosim.scene.setup import choose
 
     d, dim, dx = scene.domain, scene.world.dim, scene.fluid.dx
-    cfg = fluid_config(scene, choose(scene))
+    cfg = fluid_config(scene, choose(scene), numbers_only=True)
     layers = math.ceil(2.0 * cfg.h_coef - 1e-9)
     t = layers * dx
     if isinstance(d, NearField):
@@ -274,7 +274,7 @@ def sph_step(scene) -> tuple[float, str]:
     from cosim.scene.setup import choose
     from fluid.integrator import diffusion_coefficient, step_limit
 
-    c = fluid_config(scene, choose(scene))
+    c = fluid_config(scene, choose(scene), numbers_only=True)
     h, c0 = c.h, c.speed_of_sound
     a = c.g
     lim = step_limit(a * a, h / c0, c0, h, c.cfl, c.dt_max, c.nu, alpha_eff=c.alpha / (2.0 * (c.dim + 2)),
@@ -513,7 +513,7 @@ def estimate(scene) -> Estimate:
 
         water, walls, body = sph_particles(scene)
         n_fluid, n_all = water, water + walls + body
-        h_coef = fluid_config(scene, choose(scene)).h_coef
+        h_coef = fluid_config(scene, choose(scene), numbers_only=True).h_coef
         advances = SUBITER_ADVANCES if _subiterated(scene) else 1.0
         per_step = C_SPH[dim] * (h_coef / math.sqrt(2.0)) ** H_POWER[dim] * n_all
         per_s = _over(per_step * advances, dt_c)

@@ -69,7 +69,7 @@ def box_for(scene):
         raise SceneError("domain.x0", "the near field's extent is chosen from builder bodies only; with an MJCF model "
                          "give domain.x0, domain.x1" + (" and domain.width" if dim == 3 else ""))
     sea = incident_sea(scene)
-    h = fluid_config(scene, choose(scene)).h
+    h = fluid_config(scene, choose(scene), numbers_only=True).h
     rho, g = scene.fluid.rho0, scene.world.gravity
     rigid = [b for b in scene.bodies if not isinstance(b, (MJCF, ElasticPlate))]
     periods = [p for p in (heave_period(b, dim, rho, g) for b in rigid) if p is not None]

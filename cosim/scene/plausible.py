@@ -83,7 +83,7 @@ def check_fluid(s) -> None:
     from cosim.scene.setup import choose, u_max
 
     wave = u_max(s, "still")
-    c0 = fluid_config(s, choose(s)).speed_of_sound
+    c0 = fluid_config(s, choose(s), numbers_only=True).speed_of_sound
     if c0 < wave:
         key = next((f"fluid.{k}" for k in ("c0", "u_max") if getattr(s.fluid, k) is not None), "fluid.c0")
         raise SceneError(key, f"gives a speed of sound of {c0:.4g} m/s, below the water's long-wave speed sqrt(g h) "
