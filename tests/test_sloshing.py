@@ -78,6 +78,7 @@ def test_westergaard_quick():
     assert "carried to the wall face" in r["departure"]["criterion"]
 
 
+@pytest.mark.long
 def test_westergaard_3d_quick():
     """A 0.3 m slice of the 3-D tank (dx = 0.1 m, c0 = 700 m/s, 1 + 1 periods) against
     the exact series and against the 2-D section run with the same settings: the flow is
@@ -106,6 +107,7 @@ def test_running_mean_max():
     assert v == pytest.approx(500.0, rel=0.03) and 0.495 <= tc <= 0.516
 
 
+@pytest.mark.long
 def test_spheric10_quick():
     r = validation.run("sloshing-spheric10", quick=True)
     m = r["metrics"]
@@ -133,6 +135,7 @@ def test_sloshing_frequency_full():
     assert r["passed"] and r["metrics"]["f1_rel_err"] < 0.02
 
 
+@pytest.mark.long
 def test_sloshing_frequency_with_the_default_settings_is_9_percent_high():
     """The solver's defaults (h = sqrt(2) dx, dynamic walls) on the same quick tank: the
     first mode is 9.4 % above linear theory (the case's docstring: the contact-line spring
