@@ -40,7 +40,6 @@ settings.register_profile("explore", derandomize=False)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "repeatable"))
 
 
-
 def in_both_tiers(items) -> list[str]:
     """The tests marked both ``long`` and ``slow``. The two tiers must not meet: CI runs
     ``-m long`` (seconds to a minute a test), and a slow test (an hour-long full validation)

@@ -261,7 +261,6 @@ def _same_outputs(a: Path, b: Path):
         assert "snapshot_times" in seen and any(n.startswith("series/ledger") for n in seen)
 
 
-@pytest.mark.long
 def test_a_run_interrupted_between_checkpoints_resumes_bit_for_bit(tmp_path, monkeypatch):
     """The main example, interrupted mid-step far from any event with checkpoints written
     by wall time, resumes to the outputs of the run never interrupted (and never
