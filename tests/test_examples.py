@@ -1,7 +1,7 @@
 """Every example runs at its default settings (users copy them): each scene file through
 `cosim run`, each script as a script; a scene given as both a script and a TOML file is
-the same scene. The runs but the quickest (QUICK_EXAMPLE's, two_line_mooring.py's) are in
-the long tier."""
+the same scene. Every run but the two quickest (QUICK_EXAMPLE's scene, two_line_mooring.py)
+is in the long tier."""
 
 import json
 import os
