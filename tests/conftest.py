@@ -1,4 +1,5 @@
-"""Shared test markers, the property tests' profile, and the worker processes' threads."""
+"""Shared test markers and the check that the long and slow tiers do not meet, the property
+tests' profile, and the worker processes' threads."""
 
 import os
 
@@ -37,3 +38,19 @@ requires_cc = pytest.mark.skipif(not HAVE_CC, reason="no C compiler to build the
 settings.register_profile("repeatable", derandomize=True)
 settings.register_profile("explore", derandomize=False)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "repeatable"))
+
+
+def in_both_tiers(items) -> list[str]:
+    """The tests marked both ``long`` and ``slow``. The two tiers must not meet: CI runs
+    ``-m long`` (seconds to a minute a test), and a slow test (an hour-long full validation)
+    selected there would run past CI's time limit."""
+    return [item.nodeid for item in items if item.get_closest_marker("long") and item.get_closest_marker("slow")]
+
+
+#: what in_both_tiers found among every collected test, for tests/test_tiers.py
+BOTH_TIERS = pytest.StashKey[list]()
+
+
+@pytest.hookimpl(tryfirst=True)  # before `-m` deselects: every collected test is seen
+def pytest_collection_modifyitems(config, items):
+    config.stash[BOTH_TIERS] = in_both_tiers(items)

@@ -52,7 +52,7 @@ def fluid_momentum(fluid):
     return (m[:, None] * v).sum(axis=0), (m[:, None] * np.cross(x, v)).sum(axis=0)[1]
 
 
-@pytest.mark.parametrize("dim,steps", [(2, 300), (3, 60)])
+@pytest.mark.parametrize("dim,steps", [(2, 300), pytest.param(3, 60, marks=pytest.mark.long)])
 def test_momentum_lost_by_the_fluid_is_what_the_links_receive_to_round_off(dim, steps):
     """Fixed clamp: the fluid's change of linear and angular momentum is minus the impulse
     the coupler booked on the links (the welded foot link's share goes into the clamp),
@@ -98,6 +98,7 @@ def test_clamped_to_a_free_base_fluid_and_structure_keep_their_momentum():
     assert np.abs(Pf + Pb - Pf0 - Pb0).max() < 1e-8 * exchanged
 
 
+@pytest.mark.long
 def test_elastic_plate_validation_quick():
     """The dam break on Yang & Li 2020's plate at dx = 5 mm over 0.3 s (cosim.validations.elastic):
     the corner's peak within 15 % of Idelsohn's 48.3 mm, inside 0.20-0.28 s."""

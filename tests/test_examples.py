@@ -1,6 +1,7 @@
 """Every example runs at its default settings (users copy them): each scene file through
 `cosim run`, each script as a script; a scene given as both a script and a TOML file is
-the same scene."""
+the same scene. Every run but the two quickest (QUICK_EXAMPLE's scene, two_line_mooring.py)
+is in the long tier."""
 
 import json
 import os
@@ -15,6 +16,8 @@ from cosim.scene import Scene
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 SCENES = sorted(EXAMPLES.glob("*.toml"))
+#: the example whose run stays in the fast tier (seconds); the others run in the long one
+QUICK_EXAMPLE = "moored_box"
 
 
 def _run(args, cwd=None, timeout=1800):
@@ -25,7 +28,8 @@ def _run(args, cwd=None, timeout=1800):
                           env=env)
 
 
-@pytest.mark.parametrize("path", SCENES, ids=[p.stem for p in SCENES])
+@pytest.mark.parametrize("path", [p if p.stem == QUICK_EXAMPLE else pytest.param(p, marks=pytest.mark.long)
+                                  for p in SCENES], ids=[p.stem for p in SCENES])
 def test_scene_example_runs_at_default(path, tmp_path):
     out = _run(["-m", "cosim.cli", "run", path, "--out", tmp_path])
     assert out.returncode == 0, out.stderr[-3000:]
@@ -40,6 +44,11 @@ def test_scene_example_runs_at_default(path, tmp_path):
         for k in range(2):
             assert {0.0, 1.0} <= set(states[:, k]), k  # resting and partly lifted, each line
             assert tension[:, k].max() > 1.25 * tension[:, k].min(), k
+
+
+def test_the_quick_example_is_an_example():
+    """Else every example's run would be in the long tier, none in the fast one."""
+    assert QUICK_EXAMPLE in [p.stem for p in SCENES]
 
 
 def test_the_main_example_lines_are_just_lifted_at_rest():
@@ -70,6 +79,7 @@ def test_script_and_toml_are_one_scene(path):
         assert runpy.run_path(str(script), run_name="scene")["scene"] == Scene.from_toml(path)
 
 
+@pytest.mark.long
 def test_moored_box_compares_every_model(tmp_path):
     out = _run([EXAMPLES / "moored_box.py"], cwd=tmp_path)
     assert out.returncode == 0, out.stderr[-3000:]

@@ -109,6 +109,7 @@ def test_added_mass_of_a_square_double_body():
     assert added_mass_rectangle_2d(0.2, 0.1) == pytest.approx(0.5 * 1.51 * 1000 * math.pi * 0.01)
 
 
+@pytest.mark.long
 def test_floating_heave_period_quick():
     """Released half a draft above equilibrium at dx = 12.5 mm: natural period within
     10 % of the hydrostatic stiffness + DNV added mass period (measured +2.2 %)."""

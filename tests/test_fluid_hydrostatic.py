@@ -20,7 +20,7 @@ def test_registered():
     assert {"hydrostatic", "hydrostatic-3d"} <= set(cases())
 
 
-@pytest.mark.parametrize("name", ["hydrostatic", "hydrostatic-3d"])
+@pytest.mark.parametrize("name", ["hydrostatic", pytest.param("hydrostatic-3d", marks=pytest.mark.long)])
 def test_hydrostatic_quick(name):
     check(run(name, quick=True))
 

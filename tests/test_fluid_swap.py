@@ -101,6 +101,7 @@ def test_3d_flume_analytic_wave_is_long_crested(tmp_path):
     assert w.elevation(p, 5.0)[0] == pytest.approx(w.elevation(p, 5.0)[1])
 
 
+@pytest.mark.long
 def test_3d_flume_piston_makes_a_wave_at_the_paddle(tmp_path):
     """A coarse 3-D wave tank (dx = 4 cm, 4 particles across): the piston's water rises at
     the paddle as linear theory's first crest arrives (a machinery check, not accuracy)."""

@@ -5,6 +5,8 @@ Python of the pages moved out of it runs too. Each in a scratch folder: they wri
 import re
 import shlex
 import shutil
+import subprocess
+import sys
 import tomllib
 from pathlib import Path
 
@@ -66,7 +68,8 @@ def _absolute(args: list[str]) -> list[str]:
 
 
 def test_readme_commands_run_or_parse(tmp_path, monkeypatch, capsys):
-    """`pip install` names extras the project has; `python -m pytest` is what CI runs; `cosim
+    """`pip install` names extras the project has; the two `python -m pytest` commands are
+    what CI runs and select the tiers (test_readme_test_commands_select_their_tiers); `cosim
     run` parses and its scene loads with its --set values (a run costs 30 s); `cosim line`,
     `cosim export-fmu` and `cosim validate --list` run, writing what they say."""
     from cosim.cli import build_parser, main
@@ -83,7 +86,7 @@ def test_readme_commands_run_or_parse(tmp_path, monkeypatch, capsys):
             assert cmd[2] == "-e" and spec.split("[")[0] == "."
             assert all(e in extras for e in re.findall(r"\[(.*)\]", spec)[0].split(",")) if "[" in spec else True
         elif cmd[0] == "python":
-            assert cmd == ["python", "-m", "pytest"], cmd
+            assert cmd in TEST_COMMANDS, cmd
         elif cmd[:2] == ["cosim", "run"]:
             args = build_parser()[0].parse_args(_absolute(cmd[1:]))
             scene = load(args.scene)
@@ -102,6 +105,26 @@ def test_readme_commands_run_or_parse(tmp_path, monkeypatch, capsys):
                 assert "catenary-limits" in out
         seen.add(" ".join(cmd[:2]))
     assert {"cosim line", "cosim export-fmu", "cosim validate"} <= seen
+
+
+#: the README's test commands: the fast tier, then the long one
+TEST_COMMANDS = [["python", "-m", "pytest"], ["python", "-m", "pytest", "-m", "long"]]
+
+
+def test_readme_test_commands_select_their_tiers():
+    """Each test command of the README is one `.ci/run` runs, and, run (collecting only) on
+    the hydrostatic tests, selects its tier: the fast one the 2-D case, the long one the 3-D
+    case, neither the full validations (`-m long` replaces the addopts' `-m`)."""
+    assert [c for c in commands(README) if c[0] == "python"] == TEST_COMMANDS
+    ci = (ROOT / ".ci" / "run").read_text()
+    for cmd in TEST_COMMANDS:
+        assert re.search(rf"^(.* && )?{' '.join(cmd)}( \|\||$)", ci, flags=re.M), cmd
+    expected = [{"test_registered", "test_hydrostatic_quick[hydrostatic]"}, {"test_hydrostatic_quick[hydrostatic-3d]"}]
+    for cmd, tests in zip(TEST_COMMANDS, expected):
+        out = subprocess.run([sys.executable, *cmd[1:], "--collect-only", "-q", "tests/test_fluid_hydrostatic.py"],
+                             cwd=ROOT, capture_output=True, text=True, timeout=300)
+        assert out.returncode == 0, out.stdout[-2000:] + out.stderr[-2000:]
+        assert {ln.split("::")[1] for ln in out.stdout.splitlines() if "::" in ln} == tests, (cmd, out.stdout)
 
 
 def test_readme_is_short_and_starts_with_the_commands():

@@ -78,6 +78,7 @@ def test_westergaard_quick():
     assert "carried to the wall face" in r["departure"]["criterion"]
 
 
+@pytest.mark.long
 def test_westergaard_3d_quick():
     """A 0.3 m slice of the 3-D tank (dx = 0.1 m, c0 = 700 m/s, 1 + 1 periods) against
     the exact series and against the 2-D section run with the same settings: the flow is

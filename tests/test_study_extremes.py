@@ -4,6 +4,8 @@ ends as ok, refused (before any work, the field named), unstable (a clear stop) 
 
 import json
 
+import pytest
+
 from cosim.scene import SPH, Analytic, Box, Line, Moorings, Scene, Tank, World
 from cosim.study.extremes import _outcome, levers, run_extremes, summary
 
@@ -28,6 +30,7 @@ def test_outcomes():
     assert _outcome({"error": "ZeroDivisionError: ...", "returncode": 1}) == "crash"
 
 
+@pytest.mark.long
 def test_extremes_of_a_floating_box(tmp_path):
     scene = Scene(world=World(dim=2, duration=0.2, sample_every=0.05), fluid=Analytic(level=0.0),
                   bodies=[Box("b", size=(1.0, 1.0), density=500.0, pos=(0.0,), place="floating")])

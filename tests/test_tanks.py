@@ -95,6 +95,7 @@ def test_the_cylinders_bottom_pressure_and_petrov_moiseevs_eq_21():
     assert reservoir[0] == pytest.approx(0.742, abs=1e-3)  # Westergaard's k_p at the base
 
 
+@pytest.mark.long
 def test_cylinder_tank_quick():
     r = validation.run("cylinder-tank", quick=True)
     m = r["metrics"]
@@ -110,6 +111,7 @@ def test_cylinder_tank_quick():
     assert r["particles"] > 5000
 
 
+@pytest.mark.long
 def test_inclined_wall_3d_quick():
     """The 45 deg tank as a 3-D slice (3 rows, dx = 0.1 m, c0 = 700 m/s, 1 + 1 periods):
     k_p up the inclined face within the stated 0.04 of Chwang and within 0.04 of the 2-D

@@ -18,6 +18,7 @@ def test_moored_equilibrium_balances_the_forces():
     assert moored_equilibrium(0.2, 0.1, 500.0, 0.5, 0.52, 1e-6, 0.3) == pytest.approx(z_free, abs=1e-9)
 
 
+@pytest.mark.long
 def test_moored_body_sph_quick():
     r = run_case("moored-body-sph", quick=True)
     assert r["passed"], r["metrics"]

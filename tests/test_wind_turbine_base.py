@@ -128,6 +128,7 @@ def test_the_validation_runs_the_examples_scene():
     assert Scene.from_toml(SCENE) == Scene.from_toml(TOML)
 
 
+@pytest.mark.long
 def test_the_mooring_models_agree_on_the_base_quick():
     """Catenary and SPH cable on the same scene over 20 s: heave half ranges and mean
     tensions within 10 % of each other, every line partly lifted (the surge, which the
