@@ -24,7 +24,7 @@ from cosim.validations.waves import G
 #: the near-field case's water and waves: 0.3 m deep, regular T = 1.2 s (kd = 1.05), H = 6 cm
 #: (H/L = 0.033, a third of Miche's limit); the JONSWAP sea Hs = 4 cm, Tp = 1.2 s
 NF_DEPTH, NF_PERIOD, NF_HEIGHT, NF_HS = 0.3, 1.2, 0.06, 0.04
-#: H / dx (Hs / dx for the JONSWAP sea) of the quick run and of the full run's three spacings
+#: H / dx of the quick run and of the full run's three spacings (the JONSWAP sea at the same dx)
 NF_QUICK_H_OVER_DX, NF_H_OVER_DX = 3, (5, 10, 20)
 #: targets: height 5 %, phase 5 % of a period, mean-level drift 1 % of the depth, Hs and Tp 5 %,
 #: spectrum 10 % over 0.7-1.5 fp
@@ -144,19 +144,20 @@ def _sea(kind: str, duration: float):
 
 def nearfield_case(h_over_dx, periods: float, jonswap_periods: float, settle: float = 1.0) -> tuple[dict, dict]:
     """The case's runs at each ``H / dx``: linear and Stokes-2 regular waves ``periods``
-    periods, the JONSWAP sea ``jonswap_periods`` peak periods (at ``Hs / dx`` the same), in a
-    box 1.5 wavelengths long with zones 0.35 wavelengths wide (``fluid.solver.
+    periods, the JONSWAP sea ``jonswap_periods`` peak periods (at the same dx), in a
+    box 1.8 wavelengths long with zones half a wavelength wide, as
+    :func:`fluid.nearfield.choose_box` gives a sea without bodies (``fluid.solver.
     TRAVELLING_WAVES``); returns (metrics, series)."""
     from fluid.solver import TRAVELLING_WAVES
     from fluid.waves import RegularWave
 
     wl = RegularWave(NF_HEIGHT, NF_PERIOD, NF_DEPTH, level=NF_DEPTH, g=G).wavelength
-    length, zone = 1.5 * wl, 0.35 * wl
+    length, zone = 1.8 * wl, 0.5 * wl
     metrics, series = {}, {}
     for r in h_over_dx:
         for kind in ("linear", "stokes2", "jonswap"):
             n = jonswap_periods if kind == "jonswap" else periods
-            dx = (NF_HS if kind == "jonswap" else NF_HEIGHT) / r
+            dx = NF_HEIGHT / r
             run = run_box(_sea(kind, n * NF_PERIOD), dx, length, zone, n * NF_PERIOD, settle=settle,
                           **TRAVELLING_WAVES)
             key = f"{kind}_{r}"
@@ -200,12 +201,12 @@ def _tolerances(metrics: dict) -> dict:
 
 
 @case("nearfield-waves", "regular (linear, Stokes-2) waves and a JONSWAP sea (d = 0.3 m, T = Tp = 1.2 s, H = 6 cm, "
-      "Hs = 4 cm) through a 2-D SPH near-field box 1.5 wavelengths long with no body: end walls on the sea's orbits, "
-      "relaxation zones 0.35 wavelengths wide (fluid.nearfield)",
+      "Hs = 4 cm) through a 2-D SPH near-field box 1.8 wavelengths long with no body: end walls on the sea's orbits, "
+      "relaxation zones half a wavelength wide (fluid.nearfield)",
       target="elevation at 9 gauges across the box within 5 % of the sea's height and 5 % of a period in phase over "
              "20 periods; the mean level's drift below 1 % of the depth; for the JONSWAP sea Hs and Tp within 5 % "
              "and the spectrum within 10 % over 0.7-1.5 fp",
-      quick="H/dx = 3, 12 periods (JONSWAP 24 peak periods): the same tolerances")
+      quick="H/dx = 3, 10 periods (JONSWAP 20 peak periods): the same tolerances")
 def nearfield_waves(quick: bool) -> dict:
     """The near field's incident sea with nothing in it (:func:`run_box`): what the box does
     to the waves it is meant to carry. The spectrum is judged against the sea's own
@@ -213,7 +214,7 @@ def nearfield_waves(quick: bool) -> dict:
     segments), not against the target spectrum: a finite record of one realisation
     scatters about the target by ~1/sqrt(segments) per band, which is not the fluid's."""
     levels = (NF_QUICK_H_OVER_DX,) if quick else NF_H_OVER_DX
-    metrics, series = nearfield_case(levels, 12 if quick else 20, 24 if quick else 64)
+    metrics, series = nearfield_case(levels, 10 if quick else 20, 20 if quick else 64)
     finest = metrics[f"linear_{levels[-1]}"]
     return {"metrics": metrics, "tolerances": _tolerances(metrics), "series": series,
             "particles": finest["particles"], "steps": finest["steps"],
