@@ -102,7 +102,7 @@ def cmd_run(args, parser) -> int:
         return 0
     res = scene.run(out, resume=args.resume, resume_any_version=args.resume_any_version, overwrite=args.overwrite,
                     progress=False if args.quiet else None, yes=args.yes,
-                    ask=_ask if sys.stdin.isatty() and not args.yes else None, sets=later)
+                    ask=_ask if sys.stdin.isatty() and not args.yes else None)
     if not args.quiet:
         s = res.summary
         size = f"{s['particles']} particles ({s['fluid_particles']} fluid), " if "particles" in s else ""
@@ -192,10 +192,12 @@ def cmd_study(args, parser) -> int:
     from cosim.study.sweep import foreign
 
     scene = load(args.scene)
-    # a field of another kind than the scene's (fluid.dx on the analytic fluid) is set on the runs of that kind
-    later = [a for a in args.set if not args.extremes and foreign(scene, a) is not None]
-    here = [a for a in args.set if a not in later]
-    scene = scene.with_values(here) if here else scene
+    later = []  # a field of another kind than the scene's (fluid.dx on the analytic fluid): for the runs of that kind
+    for a in args.set:
+        if not args.extremes and foreign(scene, a) is not None:
+            later.append(a)
+        else:
+            scene = scene.with_values([a])
 
     def report(case, rec):
         state = "cached" if rec.get("cached") else (f"error: {rec['error']}" if rec.get("error") else "done")

@@ -234,3 +234,18 @@ def test_a_field_of_one_kind_is_set_on_the_runs_of_that_kind_alone(tmp_path):
     assert "--set fluid.dx=2.0 not applied (Potential has no such field)" in cs[1].notes
     assert "--set fluid.panel_size=0.75 not applied (SPH has no such field)" in cs[2].notes
     assert not any("duration" in n for c in cs for n in c.notes)
+
+
+def test_cli_sets_a_field_of_one_kind_on_the_runs_of_that_kind(tmp_path):
+    """``cosim study`` on an SPH scene turned analytic by --set, varying back to SPH: the SPH
+    run takes the --set spacing, the analytic one says it did not."""
+    scene = ROOT / "examples" / "moored_box_waves.toml"
+    out = subprocess.run([sys.executable, "-m", "cosim.cli", "study", str(scene), "--set", "fluid.model=analytic",
+                          "--set", "fluid.dx=0.05", "--set", "world.duration=0.2", "--set", "world.plot_at=[]",
+                          "--vary", "fluid.model=analytic,sph", "--metric", "box.heave:max", "--serial",
+                          "--out", str(tmp_path / "s")], capture_output=True, text=True, cwd=ROOT)
+    assert out.returncode == 0, out.stderr
+    rows = json.loads((tmp_path / "s" / "study.json").read_text())["rows"]
+    assert [r["error"] for r in rows] == [None, None] and rows[1]["particles"] > 0
+    assert rows[0]["notes"] == ["--set fluid.dx=0.05 not applied (Analytic has no such field)"]
+    assert "SPH" in (tmp_path / "s" / "study.md").read_text()

@@ -74,7 +74,7 @@ def foreign(scene, assignment: str, values: dict | None = None) -> str | None:
                   and c.TAG == (tag, values[f"{head}.{tag}"])]
         kind = chosen[0] if len(chosen) == 1 else kind
     name = re.split(r"[.\[]", rest, maxsplit=1)[0]
-    return None if name in {n for n, _, _ in spec_fields(kind)} else kind.__name__
+    return None if name == tag or name in {n for n, _, _ in spec_fields(kind)} else kind.__name__
 
 
 def cases(scene, vary: dict, out: Path, version: str, sets=()) -> list[Case]:
