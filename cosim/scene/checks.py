@@ -1216,8 +1216,8 @@ def _check_potential(s, dim) -> None:
         if not isinstance(b, (Box, Cylinder, Sphere)):
             raise SceneError(f"bodies[{i}].shape", f"the potential fluid meshes boxes, cylinders and spheres; a "
                              f"{b.shape!r} body needs the analytic or SPH fluid")
-        if b.place == "given" and b.euler is None:
-            half = b.size[-1] / 2 if isinstance(b, Box) else b.radius if isinstance(b, Sphere) else b.length / 2
+        if b.place == "given":  # its vertical half extent, turned by its euler where given
+            half = _extent(b, dim)[-1]
             lo, hi = b.pos[-1] - half, b.pos[-1] + half
             if lo >= f.level or hi <= f.level:
                 where = "dry, above" if lo >= f.level else "fully submerged, below"

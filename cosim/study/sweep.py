@@ -91,8 +91,12 @@ def cases(scene, vary: dict, out: Path, version: str, sets=()) -> list[Case]:
 
     later = [a for a in sets if foreign(scene, a) is not None]
     scene = with_values(scene, [a for a in sets if a not in later]) if len(later) < len(sets) else scene
-    out_cases, applied = [], set()
-    for i, values in enumerate(combinations(vary)):
+    combos = combinations(vary)
+    missing = [a for a in later if all(foreign(scene, a, values) is not None for values in combos)]
+    if missing:
+        with_values(scene, missing)  # no run's part has the field: the scene's own error names it
+    out_cases = []
+    for i, values in enumerate(combos):
         notes: list[str] = []
         try:
             own = [a for a in later if foreign(scene, a, values) is None]
@@ -102,11 +106,7 @@ def cases(scene, vary: dict, out: Path, version: str, sets=()) -> list[Case]:
             hint = (f" (a field of this kind alone: give it with --set {e.path}=VALUE, which the study applies to "
                     f"the runs whose {e.path.split('.')[0]} has it)") if e.problem.startswith("is required") else ""
             raise InputError(f"the run with {values}: {e}{hint}") from None
-        applied.update(own)
         out_cases.append(case(i, values, s, out, version, notes))
-    missing = [a for a in later if a not in applied]
-    if missing:
-        with_values(scene, missing)  # no run's part has the field: the scene's own error names it
     return out_cases
 
 
