@@ -147,7 +147,9 @@ def _study_parser(sub):
     p.add_argument("scene", help="a .toml scene file, or a .py script that defines `scene`")
     p.add_argument("--vary", action="append", default=[], metavar="KEY.PATH=V1,V2,...",
                    help="a field and its values, e.g. --vary fluid.dx=0.02,0.01 --vary moorings.model=catenary,moordyn")
-    p.add_argument("--set", action="append", default=[], metavar="KEY.PATH=VALUE", help="change a field for every run")
+    p.add_argument("--set", action="append", default=[], metavar="KEY.PATH=VALUE",
+                   help="change a field for every run (a field of one kind alone, e.g. fluid.dx with --vary "
+                        "fluid.model=analytic,sph: for the runs of that kind)")
     p.add_argument("--metric", action="append", default=[], metavar="SERIES:STAT",
                    help="a probe series and a statistic: peak, max, min, mean, last, amplitude, harmonic, period, arrival, rms "
                         "(e.g. box.heave:amplitude)")
@@ -187,10 +189,15 @@ def cmd_study(args, parser) -> int:
     from cosim.scene.load import load
     from cosim.scene.toml_io import parse_value
     from cosim.study import run_study
+    from cosim.study.sweep import foreign
 
     scene = load(args.scene)
-    if args.set:
-        scene = scene.with_values(args.set)
+    later = []  # a field of another kind than the scene's (fluid.dx on the analytic fluid): for the runs of that kind
+    for a in args.set:
+        if not args.extremes and foreign(scene, a) is not None:
+            later.append(a)
+        else:
+            scene = scene.with_values([a])
 
     def report(case, rec):
         state = "cached" if rec.get("cached") else (f"error: {rec['error']}" if rec.get("error") else "done")
@@ -226,7 +233,7 @@ def cmd_study(args, parser) -> int:
 
     res = run_study(scene, vary, args.metric, out, reference=args.reference, tol=tol, workers=args.workers,
                     threads=args.threads, scheduler=args.scheduler, serial=args.serial, report=report, yes=args.yes,
-                    ask=_ask if sys.stdin.isatty() and not args.yes else None)
+                    ask=_ask if sys.stdin.isatty() and not args.yes else None, sets=later)
     print((out / "study.md").read_text())
     print(f"{len(res.rows)} runs in {res.wall_s:.1f} s wall; wrote {out}/study.csv, study.md, study.json, pareto.png")
     return 0

@@ -75,3 +75,50 @@ def test_cylinder_rao_quick():
     r = validation.run("potential-cylinder-rao", quick=True)
     assert r["passed"], r["metrics"]
     assert math.isfinite(r["metrics"]["decay_period_s"])
+
+
+@pytest.mark.slow
+def test_irregular_quick():
+    r = validation.run("potential-irregular", quick=True)
+    assert r["passed"], r["metrics"]
+    assert r["metrics"]["heave_rao_range"][1] > 1.3  # the band reaches up towards the heave resonance
+
+
+def test_welch_spectrum_of_a_sine_holds_its_variance():
+    # a 0.2 Hz sine of amplitude 0.5 m: the spectrum integrates to its variance a^2 / 2
+    t = 0.1 * np.arange(36000)
+    omega, S = P.welch_spectrum(0.5 * np.cos(2 * math.pi * 0.2 * t + 0.3), 600.0)
+    assert np.trapezoid(S, omega) == pytest.approx(0.125, rel=1e-3)
+    assert omega[np.argmax(S)] == pytest.approx(2 * math.pi * 0.2, abs=1e-9)
+
+
+def test_band_errors_are_the_ratio_of_band_means():
+    omega = np.linspace(0.1, 3.0, 2000)
+    S = np.exp(-omega)
+    e = P.band_errors(omega, 1.1 * S, S, 0.1)
+    assert list(e) == [f"{a:.2f}-{a + 0.1:.2f}" for a in np.arange(0.7, 1.45, 0.1)]
+    assert np.allclose(list(e.values()), 0.1, rtol=1e-12)
+
+
+def test_gaussian_sigma_is_the_scatter_of_white_noise():
+    # band means of Welch estimates of Gaussian white noise scatter as gaussian_sigma says
+    rng = np.random.default_rng(1)
+    wp = 2 * math.pi / P.TP
+    out = []
+    for _ in range(300):
+        omega, S = P.welch_spectrum(rng.standard_normal(12000), 300.0)
+        m = (omega >= 0.7 * wp) & (omega < 0.9 * wp)
+        out.append(S[m].mean())
+    rel = np.std(out, ddof=1) / np.mean(out)
+    assert rel == pytest.approx(P.gaussian_sigma(1200.0, 300.0, 0.2), rel=0.1)
+
+
+def test_a_spectral_sea_reaches_the_potential_fluid_unchanged():
+    from fluid.potential.waves import from_incident
+
+    inc = P.jonswap_sea(3, 600.0)
+    sea = from_incident(inc)
+    assert len(sea.omega) == inc.n_components and sea.depth == P.DEPTH_SEA and sea.ramp == inc.ramp
+    for t in (5.0, 40.0, 333.3):
+        xy = np.array([[0.0, 0.0], [12.0, -4.0], [-30.0, 7.5]])
+        assert np.allclose(sea.elevation(xy, t), inc.elevation(xy[:, 0], xy[:, 1], t), atol=1e-12)

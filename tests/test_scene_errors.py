@@ -450,6 +450,18 @@ CASES = [
          "Scene.fluid.memory"),
     case("potential flow: drag for an unknown body", "potential", ("fluid.quadratic_drag.box", [1.0] * 6),
          "fluid.quadratic_drag.box", "no body named 'box'; bodies: ['buoy']", "Scene.fluid.quadratic_drag.box"),
+    case("potential flow: a turned body above the water", "potential",
+         (("bodies[0].place", "given"), ("bodies[0].pos", [0.0, 0.0, 3.5]), ("bodies[0].euler", [90.0, 0.0, 0.0])),
+         "bodies[0].pos", "body 'buoy' spans z = 0.5 .. 6.5 m: dry, above the still water at 0 m",
+         "Scene.bodies[0].pos"),
+    case("potential flow: a body it cannot mesh", "mjcf", ("fluid", {"model": "potential"}), "bodies[0].shape",
+         "the potential fluid meshes boxes, cylinders and spheres; a 'mjcf' body needs the analytic or SPH fluid",
+         "Scene.bodies[0].shape"),
+    case("potential flow: an irregular sea too steep", "potential", ("waves", dict(JONSWAP, hs=9.0)), "waves.hs",
+         "Hs/Lp = 0.1014 is beyond 0.1 (Lp the linear wavelength at the peak period): its largest waves would break",
+         "Scene.waves.hs"),
+    case("potential flow: a peak period of zero", "potential", ("waves", dict(JONSWAP, tp=0.0)), "waves.tp",
+         "0.0 [s] is out of range; give a number [s] > 0 (peak period Tp", "IrregularWaves.tp"),
     case("zero water depth of the waves", "analytic", ("waves", dict(LINEAR, depth=0.0)), "waves.depth",
          "0.0 [m] is out of range; give a number [m] > 0 (still-water depth over the seabed", "LinearWaves.depth"),
     case("waves' depth not the flume's", "flume", (("fluid", {"model": "analytic"}),
@@ -1147,6 +1159,12 @@ BUILD_CASES = [
     case("potential flow: a frequency range too short for the impulse response", "potential",
          (("fluid.omega_max", 1.1), ("fluid.frequencies", 24), ("waves.period", 20.0)), "fluid.omega_max",
          "the impulse response rebuilds the", None),
+    case("potential flow: frequencies too coarse for the impulse response to decay", "potential",
+         ("fluid.frequencies", 6), "fluid.frequencies", "of its peak over the last 10 % of the 6.283 s "
+         "that the frequency spacing resolves (π/Δω); give more frequencies", None),
+    case("potential flow: an irregular sea beyond the frequencies' trusted band", "potential", ("waves", JONSWAP),
+         "fluid.omega_max", "lies outside the coefficients' trusted band 0.15-1.5 rad/s (the lowest frequency to "
+         "0.5 x the highest)", None),
     case("a floating body that sinks", "flume", ("bodies[0].density", 1500.0), "bodies[0].place",
          "body 'box' (30 kg) sinks: fully submerged it displaces 20 kg of water", None),
     case("a coupling step above the analytic fluid's stable step", "analytic",
@@ -1310,6 +1328,18 @@ CLI_CASES = [
     study("a study with a negative tolerance", ["--tol=-5%"], "--tol -0.05: give a relative tolerance > 0"),
     study("a study whose reference file lacks a metric", ["--reference", "ref.json"], "--reference ref.json: no "
           "reference value for box.heave:max", files={"ref.json": '{"box.surge:min": -0.5}\n'}),
+    study("a study over the fluids that gives SPH no spacing", [], "the run with {'fluid.model': 'sph'}: fluid.dx: "
+          "is required: a number [m] > 0 (particle spacing) (a field of this kind alone: give it with --set "
+          "fluid.dx=VALUE", vary="fluid.model=analytic,sph"),
+    study("a study over the fluids of a 2-D scene", [], "the run with {'fluid.model': 'potential'}: world.dim: linear "
+          "potential flow about a body is 3-D", vary="fluid.model=analytic,potential"),
+    study("a study setting a field no varied fluid has", ["--set", "fluid.dxx=0.1"], "fluid.dxx: unknown key",
+          vary="fluid.model=analytic,sph"),
+    # a capytaine.py that fails to import, first on the path, stands in for a machine without the extra
+    cli("the potential fluid without its extra", ["scene.toml", "--out", "out"], "fluid.model: \"potential\" needs "
+        "Capytaine and h5netcdf (capytaine is not installed): pip install cosim-sph[potential]",
+        {"scene.toml": BASES["potential"],
+         "capytaine.py": "raise ImportError(\"No module named 'capytaine'\", name=\"capytaine\")\n"}),
     study("a study whose runs together pass a day of CPU", [], "the study's 2 runs would take about",
           vary="fluid.settle=1e7,2e7", metric="gauge1.eta:max", files=FLUME, scene="flume.toml"),
     # -- the cost estimated before any work (cosim.scene.cost): memory beyond the machine's, a day of CPU

@@ -187,6 +187,12 @@ def test_series_names_are_what_a_run_records(base, changes, tmp_path):
     ({"vary": {"coupling.dtt": [0.01]}}, "coupling.dtt: unknown key; did you mean 'dt'?"),
     ({"tol": -0.05}, "--tol -0.05: give a relative tolerance > 0"),
     ({"reference": "ref.json"}, "--reference ref.json: no reference value for box.heave:max"),
+    ({"vary": {"fluid.model": ["analytic", "sph"]}}, "the run with {'fluid.model': 'sph'}: fluid.dx: is required: a "
+                                                     "number [m] > 0 (particle spacing) (a field of this kind alone: "
+                                                     "give it with --set fluid.dx=VALUE"),
+    ({"vary": {"fluid.model": ["analytic", "potential"]}}, "the run with {'fluid.model': 'potential'}: world.dim: "
+                                                           "linear potential flow about a body is 3-D"),
+    ({"vary": {"coupling.dt": [0.01]}, "sets": ["fluid.dxx=0.1"]}, "fluid.dxx: unknown key"),
 ])
 def test_every_spec_is_checked_before_the_first_run(kwargs, says, tmp_path, monkeypatch):
     """A bad spec is refused before anything runs or is written: the study's folder is not made."""
@@ -197,3 +203,49 @@ def test_every_spec_is_checked_before_the_first_run(kwargs, says, tmp_path, monk
         run_study(Scene.from_toml(BOX), args.pop("vary"), args.pop("specs"), tmp_path / "study", serial=True, **args)
     assert says in str(e.value)
     assert not (tmp_path / "study").exists()
+
+
+# ------------------------------------------------------------------------ one study over the fluids
+TURBINE = ROOT / "examples" / "wind_turbine_base.toml"
+
+
+def test_a_fluid_swap_carries_density_and_drag_and_says_what_it_dropped():
+    from cosim.scene.toml_io import with_values
+
+    base = Scene.from_toml(TURBINE)
+    notes = []
+    pot = with_values(base, ["fluid.model=potential"], notes)
+    assert pot.fluid.rho == 1025.0 and pot.fluid.quadratic_drag == base.fluid.quadratic_damping
+    assert notes == ["fluid.model = 'potential': its quadratic_damping taken as quadratic_drag; dropped added_mass, "
+                     "linear_damping (not fields of Potential)"]
+    back = with_values(pot, ["fluid.model=analytic"])  # no added mass or linear damping to come back
+    assert back.fluid.quadratic_damping == base.fluid.quadratic_damping and not back.fluid.added_mass
+    sph = with_values(base, ["fluid.model=sph", "fluid.dx=2.0"])
+    assert sph.fluid.rho0 == 1025.0 and sph.fluid.dx == 2.0
+
+
+def test_a_field_of_one_kind_is_set_on_the_runs_of_that_kind_alone(tmp_path):
+    sets = ["fluid.dx=2.0", "fluid.panel_size=0.75", "world.duration=10.0"]
+    cs = sweep.cases(Scene.from_toml(TURBINE), {"fluid.model": ["analytic", "potential", "sph"]}, tmp_path, "v",
+                     sets)
+    ana, pot, sph = (c.scene for c in cs)
+    assert (type(ana.fluid).__name__, pot.fluid.panel_size, sph.fluid.dx) == ("Analytic", 0.75, 2.0)
+    assert ana.world.duration == pot.world.duration == sph.world.duration == 10.0
+    assert "--set fluid.dx=2.0 not applied (Potential has no such field)" in cs[1].notes
+    assert "--set fluid.panel_size=0.75 not applied (SPH has no such field)" in cs[2].notes
+    assert not any("duration" in n for c in cs for n in c.notes)
+
+
+def test_cli_sets_a_field_of_one_kind_on_the_runs_of_that_kind(tmp_path):
+    """``cosim study`` on an SPH scene turned analytic by --set, varying back to SPH: the SPH
+    run takes the --set spacing, the analytic one says it did not."""
+    scene = ROOT / "examples" / "moored_box_waves.toml"
+    out = subprocess.run([sys.executable, "-m", "cosim.cli", "study", str(scene), "--set", "fluid.model=analytic",
+                          "--set", "fluid.dx=0.05", "--set", "world.duration=0.2", "--set", "world.plot_at=[]",
+                          "--vary", "fluid.model=analytic,sph", "--metric", "box.heave:max", "--serial",
+                          "--out", str(tmp_path / "s")], capture_output=True, text=True, cwd=ROOT)
+    assert out.returncode == 0, out.stderr
+    rows = json.loads((tmp_path / "s" / "study.json").read_text())["rows"]
+    assert [r["error"] for r in rows] == [None, None] and rows[1]["particles"] > 0
+    assert rows[0]["notes"] == ["--set fluid.dx=0.05 not applied (Analytic has no such field)"]
+    assert "SPH" in (tmp_path / "s" / "study.md").read_text()

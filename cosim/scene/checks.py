@@ -1222,8 +1222,8 @@ def _check_potential(s, dim) -> None:
         if not (isinstance(b, RigidBody) and b.geom in KINDS):
             raise SceneError(f"bodies[{i}].shape", f"the potential fluid meshes boxes, cylinders and spheres; a "
                              f"{b.shape!r} body needs the analytic or SPH fluid")
-        if b.place == "given" and b.euler is None:
-            half = b.half_size(dim)[-1]
+        if b.place == "given":  # its vertical half extent, turned by its euler where given
+            half = b.extent(dim)[-1]
             lo, hi = b.pos[-1] - half, b.pos[-1] + half
             if lo >= f.level or hi <= f.level:
                 where = "dry, above" if lo >= f.level else "fully submerged, below"

@@ -214,9 +214,10 @@ def parse_value(text: str):
         return text
 
 
-def with_values(scene: Scene, assignments) -> Scene:
+def with_values(scene: Scene, assignments, notes: list | None = None) -> Scene:
     """``scene`` with ``KEY.PATH=VALUE`` assignments applied and the result checked again,
-    as TOML would be."""
+    as TOML would be; what a change of a part's kind dropped or carried over (see
+    :func:`_drop_foreign`) is appended to ``notes`` as sentences, where given."""
     data = to_dict(scene)
     for a in assignments:
         if "=" not in a:
@@ -237,7 +238,7 @@ def with_values(scene: Scene, assignments) -> Scene:
             if i == len(keys) - 1:
                 value = parse_value(text)
                 if isinstance(node, dict) and isinstance(k, str) and node.get(k, value) != value:
-                    _drop_foreign(node, k, value, where)
+                    _drop_foreign(node, k, value, where, notes)
                 node[k] = value
             elif isinstance(k, int):
                 node = node[k]
@@ -247,9 +248,20 @@ def with_values(scene: Scene, assignments) -> Scene:
     return from_dict(data)
 
 
-def _drop_foreign(node: dict, key: str, value, where: str) -> None:
+#: fields that keep their meaning under another name when a part's kind changes by ``--set``:
+#: per new kind's tag, {the old kind's name: the new kind's name}: the water's density
+#: [kg/m^3] (``rho``, the SPH fluid's reference density ``rho0``), and the analytic fluid's
+#: quadratic damping, the potential fluid's quadratic drag: the same Morison drag, 6
+#: coefficients per body [N s^2/m^2, N m s^2] on the velocity relative to the water.
+CARRIED = {("model", "potential"): {"quadratic_damping": "quadratic_drag", "rho0": "rho"},
+           ("model", "analytic"): {"quadratic_drag": "quadratic_damping", "rho0": "rho"},
+           ("model", "sph"): {"rho": "rho0"}}
+
+
+def _drop_foreign(node: dict, key: str, value, where: str, notes: list | None = None) -> None:
     """A part's kind changed by ``--set`` (``fluid.model=sph``): its fields that the new
-    kind does not have go (logged), so that one field swaps, e.g., the analytic fluid for
+    kind has under another name (:data:`CARRIED`) are renamed, those it does not have go
+    (logged, and said in ``notes``), so that one field swaps, e.g., the analytic fluid for
     the SPH fluid; the fields both kinds have stay."""
     import logging
 
@@ -261,12 +273,21 @@ def _drop_foreign(node: dict, key: str, value, where: str) -> None:
     if len(new) != 1:
         return  # not a tag, or an unknown kind: from_dict names it
     known = {name for name, _, _ in spec_fields(new[0])} | {key}
+    said = []
+    for old, name in CARRIED.get((key, value), {}).items():
+        if old in node and old not in known and name not in node:
+            node[name] = node.pop(old)
+            said.append(f"its {old} taken as {name}")
     gone = sorted(set(node) - known)
     for name in gone:
         del node[name]
     if gone:
-        logging.getLogger(__name__).info("%s = %r: dropped %s (not fields of a %s)", _key(where, key), value,
-                                         ", ".join(gone), new[0].__name__)
+        said.append(f"dropped {', '.join(gone)} (not fields of {new[0].__name__})")
+    if said:
+        text = f"{_key(where, key)} = {value!r}: {'; '.join(said)}"
+        logging.getLogger(__name__).info("%s", text)
+        if notes is not None:
+            notes.append(text)
 
 
 def _what(v) -> str:

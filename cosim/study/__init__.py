@@ -94,9 +94,12 @@ def _reference_file(path: Path, specs):
 
 def run_study(scene, vary: dict, specs: list[str], out, *, reference: str = "finest", tol: float | None = None,
               workers: int | None = None, threads: int = 1, scheduler: str | None = None, serial: bool = False,
-              report=None, yes: bool = False, ask=None) -> StudyResult:
+              report=None, yes: bool = False, ask=None, sets=()) -> StudyResult:
     """Run the study; see the module docstring. ``vary``: ``{key path: [values]}``;
-    ``specs``: ``["SERIES:STAT", ...]``; ``tol``: a relative error (0.05 for 5 %). Before
+    ``specs``: ``["SERIES:STAT", ...]``; ``tol``: a relative error (0.05 for 5 %);
+    ``sets``: ``KEY.PATH=VALUE`` for every run whose part has the field
+    (:func:`cosim.study.sweep.cases`: ``fluid.dx`` for the SPH runs of a study that varies
+    ``fluid.model``). Before
     the first run every run's cost is estimated (:mod:`cosim.scene.cost`): one beyond the
     machine's memory is refused, and runs whose CPU time passes a day together need ``yes``
     (or ``ask(question)`` to answer True)."""
@@ -122,7 +125,7 @@ def run_study(scene, vary: dict, specs: list[str], out, *, reference: str = "fin
                          "fluid.dx=... or coupling.dt=...)")
     out = Path(out)
     version = sweep.code_version()
-    cs = sweep.cases(scene, vary, out, version)  # every combination checked before any run
+    cs = sweep.cases(scene, vary, out, version, sets)  # every combination checked before any run
     _check_metrics(cs, specs, parsed)
     if reference not in ("finest", "richardson"):
         _check_reference_file(Path(reference), specs, parsed)
@@ -137,7 +140,7 @@ def run_study(scene, vary: dict, specs: list[str], out, *, reference: str = "fin
     for c, rec in zip(cs, records):
         row = {"case": c.key, "values": c.values, **{k: rec.get(k) for k in (
             "wall_s", "cpu_s", "wall_s_per_simulated_s", "max_rss_mb", "particles", "steps", "error", "cached")},
-               "used": {k: rec.get(k) for k in USED}}
+               "used": {k: rec.get(k) for k in USED}, "notes": list(c.notes)}
         row["series"] = sweep.series(c.folder) if not rec.get("error") else {}
         row["metrics"] = {}
         for s, (name, stat) in zip(specs, parsed):
@@ -350,6 +353,10 @@ def _write(res: StudyResult, specs, vary, tol):
           f"{res.reference.get('values', res.reference.get('file', ''))}. {res.recommendation['text']}.", "",
           "| " + " | ".join(head + ["Pareto"]) + " |", "|" + "---|" * (len(head) + 1)]
     md += ["| " + " | ".join(t + ["*" if r["case"] in front else ""]) + " |" for t, r in zip(table, rows)]
+    notes = [(r["values"], n) for r in rows for n in r.get("notes", ())]
+    if notes:
+        md += ["", "What each run's scene changed beyond the varied values:", ""]
+        md += [f"- {v}: {n}" for v, n in notes]
     if res.orders:
         md += ["", "Richardson extrapolation (observed order p):", ""]
         md += [f"- {k}: {v['extrapolated']:.10g}, p = {v['order']:.3g}" for k, v in res.orders.items()]

@@ -16,6 +16,7 @@ import hashlib
 import itertools
 import json
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -39,6 +40,7 @@ class Case:
     key: str
     folder: Path
     scene: object = None  #: the case's Scene (not sent to the workers: they get its TOML)
+    notes: tuple = ()  #: what changing a part's kind dropped or carried over; --set values not applied
 
 
 def combinations(vary: dict) -> list[dict]:
@@ -47,19 +49,65 @@ def combinations(vary: dict) -> list[dict]:
     return [dict(zip(keys, combo)) for combo in itertools.product(*(vary[k] for k in keys))]
 
 
-def case(index: int, values: dict, scene, out: Path, version: str) -> Case:
+def case(index: int, values: dict, scene, out: Path, version: str, notes=()) -> Case:
     """The case of ``scene`` (already changed by ``values``), keyed by its TOML and the code."""
     text = scene.to_toml()
     key = hashlib.sha256((text + version).encode()).hexdigest()[:16]
-    return Case(index, values, text, key, out / "runs" / key, scene)
+    return Case(index, values, text, key, out / "runs" / key, scene, tuple(notes))
 
 
-def cases(scene, vary: dict, out: Path, version: str) -> list[Case]:
-    """The study's cases; a value the scene refuses is refused here, before any run."""
-    from cosim.scene.toml_io import toml_value
+def foreign(scene, assignment: str, values: dict | None = None) -> str | None:
+    """The name of the kind of the part that ``assignment`` (``KEY.PATH=VALUE``) changes when
+    that kind has no such field (``fluid.dx`` on the analytic fluid: ``"Analytic"``), else
+    None (the field is the kind's, or the part has one kind only); the kind is the one
+    ``values`` (``{"fluid.model": "sph"}``) choose, else the scene's."""
+    from cosim.scene import spec
+    from cosim.scene.fields import Spec, spec_fields
 
-    return [case(i, values, scene.with_values([f"{k}={toml_value(v)}" for k, v in values.items()]), out, version)
-            for i, values in enumerate(combinations(vary))]
+    head, _, rest = assignment.split("=", 1)[0].strip().partition(".")
+    kind = type(getattr(scene, head, None))
+    if not rest or getattr(kind, "TAG", None) is None:
+        return None
+    tag = kind.TAG[0]
+    if values and f"{head}.{tag}" in values:
+        chosen = [c for c in vars(spec).values() if isinstance(c, type) and issubclass(c, Spec)
+                  and c.TAG == (tag, values[f"{head}.{tag}"])]
+        kind = chosen[0] if len(chosen) == 1 else kind
+    name = re.split(r"[.\[]", rest, maxsplit=1)[0]
+    return None if name == tag or name in {n for n, _, _ in spec_fields(kind)} else kind.__name__
+
+
+def cases(scene, vary: dict, out: Path, version: str, sets=()) -> list[Case]:
+    """The study's cases; a value the scene refuses is refused here, before any run.
+
+    ``sets``: ``KEY.PATH=VALUE`` for every run (``cosim study --set``). One that names a
+    field the scene's part lacks but a varied kind has (``fluid.dx`` with ``--vary
+    fluid.model=analytic,sph``) is applied, after the varied values, to the runs whose
+    part has it and no other (each run's notes say so); one that no run's part has is
+    refused, as are the runs of a kind that needs a field no one gave."""
+    from cosim.errors import InputError
+    from cosim.scene.fields import SceneError
+    from cosim.scene.toml_io import toml_value, with_values
+
+    later = [a for a in sets if foreign(scene, a) is not None]
+    scene = with_values(scene, [a for a in sets if a not in later]) if len(later) < len(sets) else scene
+    combos = combinations(vary)
+    missing = [a for a in later if all(foreign(scene, a, values) is not None for values in combos)]
+    if missing:
+        with_values(scene, missing)  # no run's part has the field: the scene's own error names it
+    out_cases = []
+    for i, values in enumerate(combos):
+        notes: list[str] = []
+        try:
+            own = [a for a in later if foreign(scene, a, values) is None]
+            s = with_values(scene, [f"{k}={toml_value(v)}" for k, v in values.items()] + own, notes)
+            notes += [f"--set {a} not applied ({foreign(s, a)} has no such field)" for a in later if a not in own]
+        except SceneError as e:
+            hint = (f" (a field of this kind alone: give it with --set {e.path}=VALUE, which the study applies to "
+                    f"the runs whose {e.path.split('.')[0]} has it)") if e.problem.startswith("is required") else ""
+            raise InputError(f"the run with {values}: {e}{hint}") from None
+        out_cases.append(case(i, values, s, out, version, notes))
+    return out_cases
 
 
 def check_workers(workers, threads) -> None:

@@ -9,7 +9,8 @@ wavenumber ``k`` from ``ω² = g k tanh(k d)``::
 
 faded in by ``r(t) = (1 − cos(π t / ramp)) / 2`` up to ``ramp`` [s]. A regular wave is one
 component (:func:`regular`); an irregular sea is many (:func:`from_spectrum`: amplitudes
-``a_i = sqrt(2 S(ω_i) Δω_i)`` from a one-sided spectrum, random phases; Tucker et al. 1984).
+``a_i = sqrt(2 S(ω_i) Δω_i)`` from a one-sided spectrum, random phases; Tucker et al. 1984;
+or :func:`from_incident`: the components of a :mod:`fluid.waves` sea).
 The interface is the list of components: any wave module that can list its components (a
 :class:`fluid.analytic.LinearWave`: :func:`from_linear_wave`) plugs in.
 
@@ -68,6 +69,21 @@ def regular(height: float, period: float, heading: float = 0.0, phase: float = 0
 def from_linear_wave(wave) -> list[WaveComponent]:
     """The component of a :class:`fluid.analytic.LinearWave` (its ``H``, ``T``, ``direction``)."""
     return regular(wave.H, wave.T, wave.direction)
+
+
+def from_incident(sea) -> "Sea":
+    """The :class:`Sea` of the linear components of a :mod:`fluid.waves` sea (a
+    ``RegularWave``'s first-order part, a ``SpectralSea``, a ``RecordedSea``): the same
+    frequencies, amplitudes and heading, phases moved to the origin (its components' phases
+    refer to ``phase_reference`` along the heading), its depth, gravity and fade-in, which
+    here acts everywhere at once (a ``source``'s travelling front is not kept); components of
+    zero amplitude are left out."""
+    c = sea.components
+    phase = c.phase - c.k * sea.phase_reference
+    keep = c.amplitude > 0
+    return Sea([WaveComponent(float(o), float(a), float(p), float(sea.direction))
+                for o, a, p in zip(c.omega[keep], c.amplitude[keep], phase[keep])],
+               depth=sea.depth, g=sea.g, ramp=sea.ramp)
 
 
 def from_spectrum(omega: Sequence[float], S: Sequence[float], heading: float = 0.0,
