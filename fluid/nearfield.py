@@ -213,8 +213,8 @@ def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(
     - Between the bodies and the zones: ``reach`` [m] (how far a body moves from its place:
       the sea's orbit amplitude, its drift) and ``MIN_MARGIN_SUPPORTS`` supports of still
       water, so that no body enters a zone.
-    - The walls rise above the seabed by the depth, twice the sea's highest crest (the sum
-      of its amplitudes) and two supports.
+    - The walls rise above the seabed by the depth, twice the sea's largest height (the sum
+      of its components' heights 2a) and two supports.
 
     ``zone``, ``x = (x0, x1)``, ``width`` and ``height`` given are kept (reason "given").
     3-D: the box is centred across y on the bodies."""
@@ -256,9 +256,9 @@ def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(
             reasons["width"] = "given"
         y = (centre - half, centre + half)
     if height is None:
-        crest = 2.0 * float(np.sum(sea.components.amplitude))
-        height = sea.depth + 2.0 * crest + 2.0 * 2.0 * h
-        reasons["height"] = f"the depth, twice the sea's highest crest ({crest:.4g} m) and two kernel supports"
+        largest = 2.0 * float(np.sum(sea.components.amplitude))
+        height = sea.depth + 2.0 * largest + 2.0 * 2.0 * h
+        reasons["height"] = f"the depth, twice the sea's largest height ({largest:.4g} m) and two kernel supports"
     else:
         reasons["height"] = "given"
     return BoxChoice((float(x0), float(x1)), y, float(zone), float(height), reasons)

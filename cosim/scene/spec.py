@@ -436,8 +436,8 @@ class NearField(Spec):
     kind: str = tag("nearfield")
     depth: float = required(num(None, "still-water depth over the seabed at z = 0", "m", lo=0, lo_open=True,
                                 optional=False))
-    height: float = num(None, "wall height above the seabed (unset: the depth, the sea's highest crest twice, and "
-                              "a margin)", "m", lo=0, lo_open=True)
+    height: float = num(None, "wall height above the seabed (unset: the depth, twice the sea's largest height, "
+                              "and a margin)", "m", lo=0, lo_open=True)
     x0: float = num(None, "near end of the water, the zone's wall side (unset: chosen)", "m")
     x1: float = num(None, "far end of the water (unset: chosen)", "m")
     width: float = num(None, "3-D: width across y between the side walls, centred on the bodies (unset: chosen)", "m",
