@@ -107,6 +107,30 @@ def test_excitation_of_one_component_and_its_checks():
         Excitation(Sea(regular(0.1, 2 * math.pi, heading=20.0)), omega, [0.0], X[:, :1], (0.0, 0.0))
 
 
+def test_excitation_of_many_components_is_their_sum():
+    """The force of a sea of several components, each with its own frequency, phase and
+    heading, is the sum of each one's Re(a e^{i(φ + k x_0 cos β + k y_0 sin β)} X e^{-iωt})."""
+    rng = np.random.default_rng(5)
+    omega = np.linspace(0.2, 2.0, 10)
+    X = rng.standard_normal((10, 2, 6)) + 1j * rng.standard_normal((10, 2, 6))
+    comps = [WaveComponent(w, a, p, h) for w, a, p, h in zip(rng.uniform(0.3, 1.9, 40), rng.uniform(0, 0.3, 40),
+                                                               rng.uniform(0, 6.3, 40), rng.choice([0.0, 90.0], 40))]
+    sea = Sea(comps, depth=12.0, g=9.81)
+    x0 = np.array([2.0, -1.0])
+    exc = Excitation(sea, omega, [0.0, 90.0], X, x0)
+    for t in (0.3, 17.0):
+        expect = np.zeros(6)
+        for c in comps:
+            j = 0 if c.heading == 0.0 else 1
+            Xc = np.array([np.interp(c.omega, omega, X[:, j, i].real) + 1j * np.interp(c.omega, omega, X[:, j, i].imag)
+                           for i in range(6)])
+            k = wavenumber(c.omega, 12.0, 9.81)
+            b = math.radians(c.heading)
+            ph = c.phase + k * (x0[0] * math.cos(b) + x0[1] * math.sin(b))
+            expect += (c.amplitude * np.exp(1j * ph) * Xc * np.exp(-1j * c.omega * t)).real
+        assert np.allclose(exc.force(t), expect, rtol=1e-12, atol=1e-12)
+
+
 def test_spectrum_components_carry_its_variance():
     w = np.linspace(0.2, 2.0, 200)
     S = np.exp(-((w - 0.8) ** 2) / 0.02)

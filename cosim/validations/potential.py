@@ -341,7 +341,13 @@ def potential_irregular(quick: bool) -> dict:
     spectrum scatters less, only through the window's leakage between neighbouring
     components: the case reports the standard error it measures from its seeds' scatter
     (``*_standard_error``). The heave against |RAO|² times the run's own elevation spectrum
-    (``transfer``) has no sea scatter: the time-domain model against the frequency domain."""
+    (``transfer``) has no sea scatter: the time-domain model against the frequency domain.
+
+    Measured, full: the elevation within 1.9 % in every band, the heave within 4.2 % (|RAO|
+    1.01-1.52 over the band), the transfer within 0.06 %; standard errors 0.9 % (elevation)
+    and 2.1 % (heave), where a Gaussian sea would give 2.3 % and 6.6 %; 471 100 coupling
+    steps. Quick: 2.3 %, 13 % (one seed, reported), 0.5 %. History:
+    ``docs/validation/potential-irregular_history.md``."""
     from fluid.potential.participant import frequency_grid
     from fluid.waves import jonswap
 

@@ -173,12 +173,16 @@ class Excitation:
         self.amplitude = np.array([_heading_interp(beta, Xw[c], sea.heading[c], name) for c in range(len(Xw))])
         phase = sea.k * (np.asarray(position_xy, float)[:2] @ sea._dir.T) + sea.phase
         self.amplitude = self.amplitude * (sea.amplitude * np.exp(1j * phase))[:, None]  # (n_c, 6)
+        # Re(A e^{-iωt}) = Re(A) cos ωt + Im(A) sin ωt: real products (a complex vector-matrix
+        # product took milliseconds for some hundred components, most of a step)
+        self._re = np.ascontiguousarray(self.amplitude.real.T)
+        self._im = np.ascontiguousarray(self.amplitude.imag.T)
         self.sea = sea
 
     def force(self, t: float) -> np.ndarray:
         """[F_x, F_y, F_z, M_x, M_y, M_z] [N, N m] about the centre of mass at time ``t`` [s]."""
-        e = np.exp(-1j * self.sea.omega * t)
-        return self.sea.fade(t) * np.real(e @ self.amplitude)
+        wt = self.sea.omega * t
+        return self.sea.fade(t) * (self._re @ np.cos(wt) + self._im @ np.sin(wt))
 
 
 def _heading_interp(beta: np.ndarray, Xb: np.ndarray, heading: float, name: str) -> np.ndarray:
