@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import logging
 
 import numpy as np
 
@@ -34,6 +35,7 @@ def main(argv=None) -> None:
     p.add_argument("--rate", type=float, default=2.0, help="relaxation rate at the walls [wave frequencies]")
     p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE", help="a FluidConfig setting")
     a = p.parse_args(argv)
+    logging.basicConfig(level=logging.INFO, format="%(message)s")  # the run's progress
     cfg = dict(TRAVELLING_WAVES)
     for kv in a.set:
         k, v = kv.split("=", 1)

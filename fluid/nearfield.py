@@ -43,6 +43,14 @@ def _xyz(points: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return points[:, 0], points[:, 1], points[:, 2]
 
 
+def excursion(sea) -> float:
+    """A bound [m] on how far the water at the surface (and an end wall on its orbit) moves
+    along the heading from its mean place: the sum of the sea's amplitudes over
+    ``tanh(k d)`` of its longest component (linear theory's horizontal semi-axis at z = 0)."""
+    kd = float(np.min(sea.components.k)) * sea.depth
+    return float(np.sum(sea.components.amplitude)) / math.tanh(kd)
+
+
 def following_wall(sea):
     """The motion ``motion(t, ref) -> (pos, vel)`` (``Fluid.prescribe_motion``) of a wall whose
     particles keep the linear orbits of the sea's water particles at their reference
@@ -139,9 +147,7 @@ def near_field_box(dx: float, x0: float, x1: float, sea, height: float, zone: fl
         raise InputError(f"near field: the walls' height {height} m must exceed the water depth {sea.depth} m")
     t = layers * dx
     if slack is None:
-        a = float(np.sum(sea.components.amplitude))
-        kd = float(np.min(sea.components.k)) * sea.depth
-        slack = a * math.cosh(kd) / math.sinh(kd) + dx
+        slack = excursion(sea) + dx
     slack = math.ceil(slack / dx) * dx
     span = (x0 - t - slack, x1 + t + slack)
     if y is None:

@@ -206,9 +206,6 @@ def domain_points(scene, cfg, back: float = 0.0):
     d, dx, dim = scene.domain, cfg.dx, cfg.dim
     layers = math.ceil(2.0 * cfg.h_coef - 1e-9)
     walls_kind = Kind.MOVING_WALL if scene.base_motion is not None else Kind.FIXED_WALL  # a shaken tank moves
-    if isinstance(d, NearField):
-        box = near_field(scene, cfg)
-        return box.fluid, box.walls
     if isinstance(d, Flume):
         from fluid.flume import flume
 
@@ -626,14 +623,15 @@ def sph_fluid(scene, out: Built) -> None:
     cfg = fluid_config(scene, out.setup)
     motions, back, zones = {}, 0.0, []
     if isinstance(scene.domain, NearField):
-        motions, zones = _near_field(scene, cfg, out)
-    elif scene.waves is not None:
-        out.wavemaker, paddle, stroke = _wavemaker(scene)
-        motions[PADDLE] = paddle
-        back = 0.5 * stroke + cfg.dx
-    if out.base_motion is not None:
-        motions[WALLS] = out.base_motion
-    pts, walls = domain_points(scene, cfg, back)
+        pts, walls, motions, zones = _near_field(scene, cfg, out)
+    else:
+        if scene.waves is not None:
+            out.wavemaker, paddle, stroke = _wavemaker(scene)
+            motions[PADDLE] = paddle
+            back = 0.5 * stroke + cfg.dx
+        if out.base_motion is not None:
+            motions[WALLS] = out.base_motion
+        pts, walls = domain_points(scene, cfg, back)
     if out.bodies is not None:
         from cosim.sph_fluid import SPHFluid
 
@@ -658,26 +656,18 @@ def sph_fluid(scene, out: Built) -> None:
     out.fluid = out.sph = fluid
 
 
-def near_field(scene, cfg):
-    """The scene's near-field box at ``cfg``'s spacing and wall layers
-    (:func:`fluid.nearfield.near_field_box`, extents from :func:`cosim.scene.nearfield.box_for`)."""
-    from cosim.scene.nearfield import box_for
-    from fluid.nearfield import near_field_box
-
-    c = box_for(scene)
-    return near_field_box(cfg.dx, c.x[0], c.x[1], incident_sea(scene), c.height, c.zone,
-                          layers=math.ceil(2.0 * cfg.h_coef - 1e-9), y=c.y, side_zone=None if c.y is None else c.zone)
-
-
 def _near_field(scene, cfg, out: Built):
-    """A near field's wall motions ``{group: motion}`` (its end walls on the sea's orbits)
-    and relaxation zones (:mod:`fluid.nearfield`); the box chosen is kept in
-    ``out.near_field``."""
+    """A near field's box, built once at ``cfg``'s spacing and wall layers
+    (:func:`fluid.nearfield.near_field_box`, extents from :func:`cosim.scene.nearfield.box_for`,
+    kept in ``out.near_field``, its sea in ``out.sea``): ``(fluid points, walls, wall motions
+    {group: motion}, relaxation zones)``, the end walls on the sea's orbits."""
     from cosim.scene.nearfield import box_for
-    from fluid.nearfield import FAR_END_GROUP, NEAR_END_GROUP, following_wall
+    from fluid.nearfield import FAR_END_GROUP, NEAR_END_GROUP, following_wall, near_field_box
 
     sea = out.sea = incident_sea(scene)
-    out.near_field = box_for(scene)
+    c = out.near_field = box_for(scene)
+    box = near_field_box(cfg.dx, c.x[0], c.x[1], sea, c.height, c.zone, layers=math.ceil(2.0 * cfg.h_coef - 1e-9),
+                         y=c.y, side_zone=None if c.y is None else c.zone)
     wall = following_wall(sea)
-    zones = near_field(scene, cfg).zones(sea, scene.domain.rate * 2.0 * math.pi / sea.peak_period)
-    return {NEAR_END_GROUP: wall, FAR_END_GROUP: wall}, zones
+    zones = box.zones(sea, scene.domain.rate * 2.0 * math.pi / sea.peak_period)
+    return box.fluid, box.walls, {NEAR_END_GROUP: wall, FAR_END_GROUP: wall}, zones

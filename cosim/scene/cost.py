@@ -217,11 +217,11 @@ def sph_particles(scene) -> tuple[float, float, float]:
         from cosim.scene.nearfield import box_for
 
         from cosim.scene.build import incident_sea
+        from fluid.nearfield import excursion
 
-        c, sea = box_for(scene), incident_sea(scene)
+        c = box_for(scene)
         length = c.x[1] - c.x[0]
-        kd = float(sea.components.k.min()) * sea.depth
-        slack = float(sea.components.amplitude.sum()) / math.tanh(kd) + 2 * dx  # under the end walls' excursion
+        slack = excursion(incident_sea(scene)) + 2 * dx  # the floor under the end walls' excursion
         span = length + 2 * t + 2 * slack
         if dim == 2:
             water = length * d.depth / dx ** 2

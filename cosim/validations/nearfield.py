@@ -12,6 +12,7 @@ the box's mean level over the run.
 
 from __future__ import annotations
 
+import logging
 import math
 import time
 
@@ -20,6 +21,8 @@ import numpy as np
 from cosim.validation import case
 from cosim.validations.wave_propagation import harmonics
 from cosim.validations.waves import G
+
+log = logging.getLogger(__name__)
 
 #: the near-field case's water and waves: 0.3 m deep, regular T = 1.2 s (kd = 1.05), H = 6 cm
 #: (H/L = 0.033, a third of Miche's limit); the JONSWAP sea Hs = 4 cm, Tp = 1.2 s
@@ -45,7 +48,7 @@ def run_box(sea, dx: float, length: float, zone: float, duration: float, *, widt
     from (relative to the sea's) [m], the lost fluid particles and the run's cost.
     ``config``: FluidConfig settings."""
     from fluid.geometry import assemble, set_hydrostatic
-    from fluid.nearfield import FAR_END_GROUP, NEAR_END_GROUP, following_wall, near_field_box
+    from fluid.nearfield import FAR_END_GROUP, NEAR_END_GROUP, excursion, following_wall, near_field_box
     from fluid.probes import surface_elevation
     from fluid.solver import Fluid, FluidConfig
 
@@ -63,8 +66,7 @@ def run_box(sea, dx: float, length: float, zone: float, duration: float, *, widt
     omega = 2.0 * math.pi / sea.peak_period
     fluid.zones.extend(box.zones(sea, rate_per_omega * omega, drift=drift))
     gx = np.linspace(zone, length - zone, gauges)
-    kd = float(sea.components.k.min()) * depth
-    reach = float(sea.components.amplitude.sum()) / math.tanh(kd) + dx  # clear of the end walls' excursion
+    reach = excursion(sea) + dx  # clear of the end walls' excursion
     gall = np.linspace(reach, length - reach, max(8, int(length / dx) // 2))
     xs = np.concatenate([gx, gall])
     points = xs if dim == 2 else np.column_stack([xs, np.full(xs.size, 0.5 * width)])
@@ -80,7 +82,7 @@ def run_box(sea, dx: float, length: float, zone: float, duration: float, *, widt
         fluid.advance(fluid.t, t - fluid.t)
         eta[i] = surface_elevation(fluid, points) - depth
         if progress and (i + 1) % (4 * samples_per_period) == 0:
-            print(f"  t = {t:6.2f} s, {fluid.counters.steps} steps", flush=True)
+            log.info("near field: t = %6.2f s, %d steps", t, fluid.counters.steps)
     cpu = time.process_time() - cpu0
     return {"gauges_m": gx, "t": ts, "eta": eta[:, :len(gx)],
             "sea_eta": sea.elevation(gx[None, :], 0.5 * (width or 0.0), ts[:, None]),
