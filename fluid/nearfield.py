@@ -31,6 +31,7 @@ from errors import InputError
 from fluid.geometry import block
 from fluid.particles import Kind
 from fluid.relaxation import Slab
+from fluid.sea_tables import PointOrbits, VelocityTable, tabulable
 from fluid.waves import wavenumbers
 
 FIXED_GROUP, NEAR_END_GROUP, FAR_END_GROUP = 0, 1, 2
@@ -51,18 +52,49 @@ def excursion(sea) -> float:
     return float(np.sum(sea.components.amplitude)) / math.tanh(kd)
 
 
-def following_wall(sea):
+class FollowingWall:
     """The motion ``motion(t, ref) -> (pos, vel)`` (``Fluid.prescribe_motion``) of a wall whose
     particles keep the linear orbits of the sea's water particles at their reference
-    positions ``ref`` (N, 2) (x, z) or (N, 3) [m]."""
+    positions ``ref`` (N, 2) (x, z) or (N, 3) [m], and its exact :meth:`acceleration`. A
+    many-component sea's orbits come from :class:`fluid.sea_tables.PointOrbits`, kept per
+    ``ref`` array (the fluid gives each wall its own, every time), with the last time's
+    motion (the fluid asks for the acceleration where it has just placed the wall)."""
 
-    def motion(t, ref):
+    def __init__(self, sea):
+        self.sea = sea
+        self._kept = {}  # id(ref) -> [ref, its orbits, (t, pos, vel, acc)]: ref is held, so its id stays its own
+
+    def _motion(self, t: float, ref) -> tuple:
         ref = np.asarray(ref, float)
-        disp, rate = sea.displacement(*_xyz(ref), t)
-        cols = [0, 2] if ref.shape[1] == 2 else [0, 1, 2]
-        return ref + disp[:, cols], rate[:, cols]
+        kept = self._kept.get(id(ref))
+        if kept is None or kept[0] is not ref:
+            kept = self._kept[id(ref)] = [ref, PointOrbits(self.sea, *_xyz(ref)) if tabulable(self.sea) else None,
+                                          None]
+        if kept[2] is None or kept[2][0] != t:
+            cols = [0, 2] if ref.shape[1] == 2 else [0, 1, 2]
+            if kept[1] is not None:
+                disp, rate, acc = kept[1].motion(t)
+                acc = acc[:, cols]
+            else:
+                disp, rate = self.sea.displacement(*_xyz(ref), t)
+                acc = None
+            kept[2] = (t, ref + disp[:, cols], rate[:, cols], acc)
+        return kept[2]
 
-    return motion
+    def __call__(self, t: float, ref):
+        _, pos, vel, _ = self._motion(t, ref)
+        return pos.copy(), vel.copy()
+
+    def acceleration(self, t: float, ref) -> np.ndarray | None:
+        """The wall particles' acceleration [m/s^2] at time ``t`` [s]: exact for a
+        many-component sea, None otherwise (the fluid then differentiates the velocity)."""
+        acc = self._motion(t, ref)[3]
+        return None if acc is None else acc.copy()
+
+
+def following_wall(sea) -> FollowingWall:
+    """The motion of a wall on the sea's orbits (:class:`FollowingWall`)."""
+    return FollowingWall(sea)
 
 
 def return_current(sea) -> np.ndarray:
@@ -76,15 +108,19 @@ def return_current(sea) -> np.ndarray:
     return -q / sea.depth * sea.heading
 
 
-def sea_velocity(sea, drift: bool = True):
+def sea_velocity(sea, drift: bool = True, reach: tuple | None = None):
     """The relaxation target ``target(pos, t) -> vel`` (``fluid.relaxation.Slab``): the sea's
     velocity at the particles, (N, 2) (x, z) or (N, 3); ``drift``: with the
-    :func:`return_current` (faded in with the sea)."""
+    :func:`return_current` (faded in with the sea). ``reach``: the range (lo, hi) [m] along
+    the heading that the particles asking can reach; a many-component sea is then read
+    from a :class:`fluid.sea_tables.VelocityTable` over it (within 1 % of its shortest
+    components' velocity) instead of summed at each particle."""
     back = return_current(sea) if drift else np.zeros(3)
+    velocity = VelocityTable(sea, *reach).velocity if reach is not None and tabulable(sea) else None
 
     def target(pos, t):
         x, y, z = _xyz(np.asarray(pos, float))
-        v = sea.velocity(x, y, z, t)
+        v = sea.velocity(x, y, z, t) if velocity is None else velocity(x, y, z, t)
         if drift:  # the mass transport grows as the square of the faded-in amplitude
             q = min(max(t / sea.ramp, 0.0), 1.0) if sea.ramp > 0 else 1.0
             v = v + (0.5 * (1.0 - math.cos(math.pi * q))) ** 2 * back
@@ -110,12 +146,20 @@ class NearFieldBox:
     y: tuple | None = None
     side_zone: float | None = None
 
+    def reach(self, sea) -> tuple[float, float]:
+        """The range [m] along the sea's heading that the box's water can reach: its corners'
+        positions, widened by the sea's :func:`excursion`."""
+        e = sea.heading
+        ys = (0.0, 0.0) if self.y is None else self.y
+        s = [x * e[0] + y * e[1] for x in (self.x0, self.x1) for y in ys]
+        return min(s) - excursion(sea), max(s) + excursion(sea)
+
     def zones(self, sea, rate: float, drift: bool = True) -> list:
         """The relaxation zones (weight 1 at the walls), relaxing at ``rate`` [1/s] there
         towards the sea's velocity (``drift``: and its return current,
         :func:`return_current`): one inside each end wall, 3-D one inside each side wall
         when the box has side zones."""
-        target = sea_velocity(sea, drift)
+        target = sea_velocity(sea, drift, self.reach(sea))
         out = [Slab(0, self.x0 + self.zone, self.x0, rate, target), Slab(0, self.x1 - self.zone, self.x1, rate, target)]
         if self.y is not None and self.side_zone is not None:
             (y0, y1), w = self.y, self.side_zone

@@ -663,7 +663,8 @@ class Fluid:
 
     def prescribed_acceleration(self, eps: float = 1e-6):
         """Acceleration [m/s^2] (N, dim) of every particle (current order) at the time the
-        prescribed groups were last placed: the central difference of each motion's velocity
+        prescribed groups were last placed: the motion's own ``motion.acceleration(t, ref)``
+        where it has one that gives an array, else the central difference of its velocity
         over ``+-eps`` [s] about it; zero for the other particles. None when no group has a
         prescribed motion."""
         if not self._motions or math.isnan(self._t_placed):
@@ -672,9 +673,13 @@ class Fluid:
         acc = np.zeros((ps.n, self.config.dim))
         for group, (motion, ids, ref) in self._motions.items():
             sel, keep = self._group_rows(group, ids)
-            v1 = np.asarray(motion(t + eps, ref)[1])[keep]
-            v0 = np.asarray(motion(t - eps, ref)[1])[keep]
-            acc[sel] = (v1 - v0) / (2.0 * eps)
+            own = getattr(motion, "acceleration", None)
+            a = None if own is None else own(t, ref)
+            if a is None:
+                v1 = np.asarray(motion(t + eps, ref)[1])
+                v0 = np.asarray(motion(t - eps, ref)[1])
+                a = (v1 - v0) / (2.0 * eps)
+            acc[sel] = np.asarray(a)[keep]
         return acc
 
     def set_particle_motion(self, ids, pos, vel) -> None:

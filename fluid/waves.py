@@ -255,20 +255,26 @@ class Sea:
         return disp, rate
 
     # -- the machinery ---------------------------------------------------------------------
-    def _fade(self, s, t):
-        """The fade-in r and its rate r' [1/s] at positions ``s`` along the heading."""
+    def _fade(self, s, t, second: bool = False):
+        """The fade-in r and its rate r' [1/s] at positions ``s`` along the heading (and
+        ``second``: r'' [1/s^2] too)."""
         if self.source is None:
             tau = t
             if self.ramp <= 0:
-                return np.ones_like(t), np.zeros_like(t)
+                one, zero = np.ones_like(t), np.zeros_like(t)
+                return (one, zero, zero) if second else (one, zero)
         else:
             tau = t - np.maximum(s - self.source, 0.0) / self._c_front
             if self.ramp <= 0:
-                return (tau >= 0).astype(float), np.zeros_like(tau)
+                zero = np.zeros_like(tau)
+                return ((tau >= 0).astype(float), zero, zero) if second else ((tau >= 0).astype(float), zero)
         q = np.clip(tau / self.ramp, 0.0, 1.0)
         inside = (q > 0) & (q < 1)
-        return 0.5 * (1.0 - np.cos(math.pi * q)), np.where(inside, 0.5 * math.pi / self.ramp * np.sin(math.pi * q),
-                                                           0.0)
+        r, dr = 0.5 * (1.0 - np.cos(math.pi * q)), np.where(inside, 0.5 * math.pi / self.ramp * np.sin(math.pi * q),
+                                                            0.0)
+        if not second:
+            return r, dr
+        return r, dr, np.where(inside, 0.5 * (math.pi / self.ramp) ** 2 * np.cos(math.pi * q), 0.0)
 
     def _evaluate(self, x, y, z, t, want) -> dict:
         """The quantities in ``want`` ("eta", "u" (uh, w), "a" (ah, aw), "p" (p/ρ)) in the
