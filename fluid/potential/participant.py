@@ -30,10 +30,13 @@ the rest as the load on the body:
   positive-definite ``M + A∞`` against its diagonal is a contraction (each 2 x 2 coupled pair
   has ``|A_ij| < sqrt(M_ii + A_ii)(M_jj + A_jj)``), so the lag is stable.
 
+- optional (``drift``) the slowly varying drift force in surge, sway and yaw: Newman's (1974)
+  approximation from the freely floating body's mean drift (Maruo 1960; :mod:`.drift`).
+
 Limits: linear potential flow (small motions, small waves); one geom per body (box, cylinder,
 sphere) with a free joint (3-D scenes); bodies do not interact hydrodynamically (each is
-solved alone); no second-order (drift) forces. The loads react to the body's acceleration
-only through the armature, so explicit coupling needs no light-body remedy.
+solved alone); of second order only the mean and slow drift. The loads react to the body's
+acceleration only through the armature, so explicit coupling needs no light-body remedy.
 """
 
 from __future__ import annotations
@@ -46,6 +49,7 @@ import numpy as np
 
 from errors import InputError
 from fluid.potential.coefficients import Coefficients, compute, require_capytaine
+from fluid.potential.drift import MeanDrift, SlowDrift, mean_drift
 from fluid.potential.hull import KINDS, check_pierces, default_panel_size, displaced_volume, wetted_hull
 from fluid.potential.radiation import BAND, ImpulseResponse, SettingError, impulse_response
 from fluid.potential.waves import Excitation, Sea
@@ -87,6 +91,15 @@ def default_omega(panel_size: float, g: float = 9.81, n: int = 40, depth: float 
     return frequency_grid(w_max, n, depth, g)
 
 
+def _mass_matrix(mass: float, inertia: np.ndarray) -> np.ndarray:
+    """The 6 x 6 rigid-body mass matrix about the centre of mass [kg, kg m^2] from the mass and
+    the inertia tensor there (world axes)."""
+    M = np.zeros((6, 6))
+    M[:3, :3] = mass * np.eye(3)
+    M[3:, 3:] = inertia
+    return M
+
+
 def _rotvec(R: np.ndarray) -> np.ndarray:
     """The rotation vector (axis times angle [rad]) of a rotation matrix."""
     from scipy.spatial.transform import Rotation
@@ -124,6 +137,9 @@ class PotentialFluid:
     coefficients:
         Precomputed coefficients per body name (their hulls must be the bodies' own): skips
         the BEM for those bodies.
+    drift:
+        Add the slowly varying drift force (module docstring; needs ``sea``, and Kochin
+        functions in given coefficients).
     """
 
     loads_carry_added_mass = False  #: A∞ goes into the bodies' inertia (module docstring)
@@ -133,7 +149,8 @@ class PotentialFluid:
                  headings: Sequence[float] | None = None, panel_size: float | Mapping[str, float] | None = None,
                  memory: float | None = None, sea: Sea | None = None,
                  quadratic_drag: Mapping[str, Sequence[float]] | None = None, cache=None,
-                 coefficients: Mapping[str, Coefficients] | None = None, name: str = "fluid"):
+                 coefficients: Mapping[str, Coefficients] | None = None, drift: bool = False,
+                 name: str = "fluid"):
         for label, v in (("rho", rho), ("g", g)):
             if not (math.isfinite(v) and v > 0):
                 raise InputError(f"potential fluid: {label} must be finite and > 0, got {v!r}")
@@ -146,6 +163,8 @@ class PotentialFluid:
         if sea is not None and (sea.depth != depth or sea.g != g):
             raise InputError(f"potential fluid: the sea's depth {sea.depth:g} m and gravity {sea.g:g} m/s^2 differ "
                              f"from the fluid's {depth:g} m and {g:g} m/s^2; give both the same")
+        if drift and sea is None:
+            raise InputError("potential fluid: drift = True needs waves (sea); without them there is no drift force")
         if memory is not None and not (math.isfinite(memory) and memory > 0):
             raise InputError(f"potential fluid: memory = {memory!r} s; give a time > 0 s (None: from the decay)")
         if not coefficients:
@@ -167,6 +186,8 @@ class PotentialFluid:
         self.dt_limit = "none"  #: the condition that set max_dt()
         self.coefficients: list[Coefficients] = []  #: per body, in the bodies' order
         self.impulse: list[ImpulseResponse] = []  #: per body
+        self.drift = bool(drift)
+        self.mean_drift: list[MeanDrift] = []  #: per body, with drift
 
     @property
     def waves(self) -> Sea | None:
@@ -211,7 +232,8 @@ class PotentialFluid:
         self._armature = np.zeros((n, 6))
         self._exc: list[Excitation | None] = []
         self._cob = np.zeros((n, 3))
-        self.coefficients, self.impulse = [], []
+        self._slow: list[SlowDrift] = []
+        self.coefficients, self.impulse, self.mean_drift = [], [], []
         for k, (name, shapes) in enumerate(zip(names, bodies.geoms())):
             solids = [s for s in shapes if s.kind in KINDS]
             if len(shapes) != 1 or not solids:
@@ -239,7 +261,8 @@ class PotentialFluid:
                                        f"finite-depth solver returns no value; start the frequencies there")
                 hull = wetted_hull(geom.kind, geom.size, rot, centre, ps, name=name)
                 c = compute(hull, float(kin.com[k, 2] - self.eta), omega=omega, headings=self.headings,
-                            depth=self.depth, rho=self.rho, g=self.g, cache=self.cache, name=name)
+                            depth=self.depth, rho=self.rho, g=self.g, cache=self.cache, name=name,
+                            kochin=self.drift)
             irf = impulse_response(c.omega, c.added_mass, c.damping, self.memory, name=name)
             log.info("potential fluid: body '%s': %d panels, %d frequencies to %.3g rad/s, memory %.3g s (decays "
                      "to %.2g %%), A(w) rebuilt within %.2g %%, B(w) %.2g %% below %.3g rad/s", name, c.panels,
@@ -266,6 +289,10 @@ class PotentialFluid:
             self._armature[k] = arm
             self._exc.append(None if self.sea is None else
                              Excitation(self.sea, c.omega, c.headings, c.excitation, kin.com[k, :2], name=name))
+            if self.drift:
+                md = mean_drift(c, _mass_matrix(self._mass[k], bodies.inertia_tensors()[k]), name=name)
+                self.mean_drift.append(md)
+                self._slow.append(SlowDrift(self.sea, md, kin.com[k, :2], name=name))
         self._inertia = np.array([bodies.dof_inertia(k) for k in range(n)])  # own, armature left out
         self._hist_t = np.zeros(0)
         self._hist_v = np.zeros((0, n, 6))
@@ -339,6 +366,8 @@ class PotentialFluid:
             F[k] -= (self.impulse[k].added_mass_inf - arm) @ acc[k]
             if self._exc[k] is not None:
                 F[k] += self._exc[k].force(self.t)
+            if self._slow:
+                F[k] += self._slow[k].force(self.t)
         F -= self.radiation_force()
         if self._drag.any():
             v = kin.velocity.copy()
