@@ -448,6 +448,8 @@ CASES = [
     case("potential flow: a memory beyond what the frequencies resolve", "potential", ("fluid.memory", 30.0),
          "fluid.memory", "30 s is longer than the 20.94 s that 20 frequencies up to 3 rad/s resolve",
          "Scene.fluid.memory"),
+    case("potential flow: drift without waves", "potential", (("fluid.drift", True), ("waves", OUT)), "fluid.drift",
+         "the drift force needs waves: give waves", "Scene.fluid.drift"),
     case("potential flow: drag for an unknown body", "potential", ("fluid.quadratic_drag.box", [1.0] * 6),
          "fluid.quadratic_drag.box", "no body named 'box'; bodies: ['buoy']", "Scene.fluid.quadratic_drag.box"),
     case("potential flow: a turned body above the water", "potential",
