@@ -34,8 +34,8 @@ the rest as the load on the body:
   approximation from the freely floating body's mean drift (Maruo 1960; :mod:`.drift`).
 
 Limits: linear potential flow (small motions, small waves); one geom per body (box, cylinder,
-sphere) with a free joint (3-D scenes); bodies do not interact hydrodynamically (each is
-solved alone); of second order only the mean and slow drift. The loads react to the body's
+sphere) with a free joint (3-D scenes); bodies interact hydrodynamically only with
+``interaction`` (:mod:`.group`), then without drift; of second order only the mean and slow drift. The loads react to the body's
 acceleration only through the armature, so explicit coupling needs no light-body remedy.
 """
 
