@@ -402,6 +402,12 @@ class MujocoBodies:
         """Principal moments of inertia of each coupled body [kg m^2], ``(n_bodies, 3)``."""
         return self.model.body_inertia[self.body_ids].copy()
 
+    def inertia_tensors(self) -> np.ndarray:
+        """Inertia tensor of each coupled body about its centre of mass, world axes [kg m^2],
+        ``(n_bodies, 3, 3)``, at the current pose."""
+        R = self.data.ximat[self.body_ids].reshape(-1, 3, 3)
+        return np.einsum("nij,nj,nkj->nik", R, self.inertias(), R)
+
     def gravity_forces(self) -> np.ndarray:
         """Weight of each coupled body [N], world frame, ``(n_bodies, 3)``."""
         return self.masses()[:, None] * self.model.opt.gravity[None, :]

@@ -586,7 +586,8 @@ def potential_fluid(scene, level):
     omega = None if f.omega_max is None else frequency_grid(f.omega_max, f.frequencies, depth, g)
     fluid = PotentialFluid(rho=f.rho, g=g, free_surface_z=level, depth=depth, omega=omega,
                            frequencies=f.frequencies, panel_size=f.panel_size, memory=f.memory, sea=sea,
-                           quadratic_drag=f.quadratic_drag or None)
+                           quadratic_drag=f.quadratic_drag or None, drift=f.drift,
+                           interaction=f.interaction)
     return fluid, wavemaker
 
 

@@ -1230,6 +1230,12 @@ def _check_potential(s, dim) -> None:
                 raise SceneError(f"bodies[{i}].pos", f"body '{b.name}' spans z = {lo:g} .. {hi:g} m: {where} the "
                                  f"still water at {f.level:g} m; linear potential flow takes bodies that pierce the "
                                  f"surface (place = \"floating\", or a pos whose body crosses fluid.level)")
+    if f.drift and s.waves is None:
+        raise SceneError("fluid.drift", "the drift force needs waves: give waves (linear, irregular, or a flume's "
+                         "wavemaker), or leave drift out")
+    if f.interaction and f.drift:
+        raise SceneError("fluid.interaction", "the bodies' group solve gives no drift force; set drift = false or "
+                         "interaction = false")
     for n in f.quadratic_drag:
         if n not in body_names(s):
             raise SceneError(f"fluid.quadratic_drag.{n}", f"no body named {n!r}; bodies: {sorted(body_names(s))}")

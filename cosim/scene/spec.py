@@ -139,6 +139,10 @@ class Potential(Spec):
     memory: float = num(None, "radiation memory (unset: where the impulse response has decayed)", "s", lo=0,
                         lo_open=True)
     quadratic_drag: dict = table("per body: 6 quadratic drag coefficients [N s^2/m^2, N m s^2]", sizes=(6,))
+    drift: bool = flag(False, "the slowly varying wave drift force in surge, sway and yaw: Newman's approximation "
+                       "from each freely floating body's mean drift in the far field (needs waves)")
+    interaction: bool = flag(False, "solve the bodies together: coupled radiation memory and added mass, each body's "
+                             "excitation in the others' presence (one body: as alone; not with drift)")
 
     def participant(self, scene, built) -> None:
         """The potential fluid and the flume's wavemaker (:mod:`cosim.scene.build`)."""

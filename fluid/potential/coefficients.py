@@ -17,7 +17,10 @@ the waves travel, from +x towards +y):
 - hydrostatics of the hull (displaced volume [m^3], centre of buoyancy [m], waterplane
   area [m^2]) and the buoyancy restoring matrix ``C`` about the centre of mass (Newman
   1977 §6.16 Eq. 6.186 with the rotation centre at the centre of mass: the weight, which
-  MuJoCo applies at the centre of mass, gives no moment there and is left out).
+  MuJoCo applies at the centre of mass, gives no moment there and is left out);
+- on request (``kochin=True``), the Kochin functions (far-field amplitudes) of the
+  diffraction and radiation problems on the angles :func:`kochin_angles`, from which
+  :mod:`fluid.potential.drift` takes the mean drift force (Capytaine's ``compute_kochin``).
 
 The irregular frequencies of the hull's interior (John 1950) are removed by a lid on the
 interior free surface (Capytaine's ``lid_mesh``, the extended boundary integral equation),
@@ -56,6 +59,8 @@ log = logging.getLogger(__name__)
 DOFS = ("Surge", "Sway", "Heave", "Roll", "Pitch", "Yaw")
 #: bump when what is stored changes meaning (old cache files are then not read)
 CACHE_FORMAT = 2
+#: Kochin angles per turn (:func:`kochin_angles`)
+KOCHIN_STEPS = 64
 ENV_CACHE = "COSIM_POTENTIAL_CACHE"
 EXTRA = "pip install cosim-sph[potential]"
 
@@ -106,13 +111,29 @@ class Coefficients:
     panels: int  #: hull panels
     key: str  #: the cache key
     meta: dict = field(default_factory=dict)  #: solve time [s], lid panels, from the cache or not
+    wavenumber: np.ndarray | None = None  #: k(ω) [rad/m], (n,)
+    theta: np.ndarray | None = None  #: Kochin angles [rad], (n_θ,); None: not computed
+    kochin_diffraction: np.ndarray | None = None  #: complex (n, n_headings, n_θ) per unit amplitude
+    kochin_radiation: np.ndarray | None = None  #: complex (n, 6, n_θ) per unit motion
 
 
-def _key(hull: Hull, lid, cog, rho, g, depth, omega, headings, version) -> str:
+def kochin_angles(headings) -> np.ndarray:
+    """Angles [rad] for the Kochin functions: steps of 2π / :data:`KOCHIN_STEPS` from 0 to 2π
+    (both on the grid, for Capytaine's integral over a turn) widened by two steps beyond the
+    headings [deg] on either side (Capytaine differentiates at the headings, inside the grid)."""
+    b = np.radians(np.asarray(headings, float))
+    step = 2.0 * math.pi / KOCHIN_STEPS
+    lo = math.floor(min(0.0, b.min()) / step + 1e-9) - 2
+    hi = math.ceil(max(2.0 * math.pi, b.max()) / step - 1e-9) + 2
+    return np.arange(lo, hi + 1) * step
+
+
+def _key(hull: Hull, lid, cog, rho, g, depth, omega, headings, version, theta=None) -> str:
     h = hashlib.sha256()
     h.update(f"cosim-potential-{CACHE_FORMAT}|capytaine-{version}|".encode())
+    extra = () if theta is None else (theta,)  # without: the keys of files written before Kochin functions
     for arr in (hull.vertices, hull.faces, lid[0], lid[1], cog, omega, headings,
-                np.array([rho, g, depth], float)):
+                np.array([rho, g, depth], float)) + extra:
         a = np.ascontiguousarray(np.round(np.asarray(arr, float), 12))
         h.update(str(a.shape).encode())
         h.update(a.tobytes())
@@ -138,11 +159,12 @@ def _lid(cpt, mesh, hull: Hull, omega_max: float, g: float, lid: bool | None):
 
 def compute(hull: Hull, centre_of_mass_z: float, *, omega, headings=(0.0,), depth: float = math.inf,
             rho: float = 1000.0, g: float = 9.81, cache: Path | str | None = None, name: str = "body",
-            lid: bool | None = None, use_cache: bool = True) -> Coefficients:
+            lid: bool | None = None, use_cache: bool = True, kochin: bool = False) -> Coefficients:
     """The coefficients of ``hull`` (rotation centre and centre of mass at (0, 0,
     ``centre_of_mass_z``) [m]) at ``omega`` [rad/s] and ``headings`` [deg], read from the
     cache in ``cache`` (default :func:`cache_dir`) or solved and written there; ``lid``: the
-    irregular-frequency lid always (True), never (False) or where estimated needed (None)."""
+    irregular-frequency lid always (True), never (False) or where estimated needed (None);
+    ``kochin``: with the Kochin functions (module docstring)."""
     cpt = require_capytaine()
     omega = np.asarray(omega, float)
     headings = np.asarray(headings, float).ravel()
@@ -160,7 +182,8 @@ def compute(hull: Hull, centre_of_mass_z: float, *, omega, headings=(0.0,), dept
     cog = np.array([0.0, 0.0, centre_of_mass_z])
     mesh = cpt.Mesh(vertices=hull.vertices, faces=hull.faces, name=name)
     lid_mesh, lid = _lid(cpt, mesh, hull, float(omega[-1]), g, lid)
-    key = _key(hull, lid, cog, rho, g, depth, omega, headings, cpt.__version__)
+    theta = kochin_angles(headings) if kochin else None
+    key = _key(hull, lid, cog, rho, g, depth, omega, headings, cpt.__version__, theta)
     folder = Path(cache) if cache is not None else cache_dir()
     path = folder / f"{name}-{key}.nc"
     if use_cache and path.is_file():
@@ -177,7 +200,8 @@ def compute(hull: Hull, centre_of_mass_z: float, *, omega, headings=(0.0,), dept
          "%.3g-%.3g rad/s and infinity, %d headings, depth %s; cached in %s", name, problems, hull.panels,
          len(lid[1]), len(omega), omega[0], omega[-1], len(headings), f"{depth:g} m", folder)
     common = {"radiating_dof": list(DOFS), "water_depth": [depth], "rho": [rho], "g": [g]}
-    waves = xr.Dataset(coords={"omega": omega, "wave_direction": np.radians(headings), **common})
+    far = {} if theta is None else {"theta": theta}
+    waves = xr.Dataset(coords={"omega": omega, "wave_direction": np.radians(headings), **common, **far})
     infinite = xr.Dataset(coords={"omega": [np.inf], **common})  # radiation only: no wave at ω = ∞
     solver = cpt.BEMSolver()
     t0 = time.perf_counter()
@@ -263,6 +287,13 @@ def _coefficients(ds, key: str, hull: Hull, from_cache: bool) -> Coefficients:
     C = np.asarray(ds["hydrostatic_stiffness"].sel(**order).values, float)
     cob = np.asarray(ds["centre_of_buoyancy"].values, float)
     cog = np.asarray(ds["center_of_mass"].values, float) if "center_of_mass" in ds.coords else np.zeros(3)
+    far = {}
+    if "kochin_diffraction" in ds:
+        far = dict(theta=np.asarray(ds["theta"].values, float),
+                   kochin_diffraction=np.asarray(ds["kochin_diffraction"].transpose("omega", "wave_direction",
+                                                                                   "theta").values),
+                   kochin_radiation=np.asarray(ds["kochin_radiation"].sel(radiating_dof=list(DOFS))
+                                               .transpose("omega", "radiating_dof", "theta").values))
     if not (np.isfinite(A).all() and np.isfinite(B).all() and np.isfinite(X).all()):
         raise InputError(f"potential flow: the BEM solve of body '{ds.attrs.get('body', '?')}' left non-finite "
                          f"coefficients (a degenerate mesh?); refine or coarsen panel_size")
@@ -272,4 +303,6 @@ def _coefficients(ds, key: str, hull: Hull, from_cache: bool) -> Coefficients:
                         waterplane_area=float(ds["waterplane_area"]), rho=float(ds["rho"]), g=float(ds["g"]),
                         depth=float(ds["water_depth"]), panels=hull.panels, key=key,
                         meta={"from_cache": from_cache, "solve_s": float(ds.attrs.get("cosim_solve_s", math.nan)),
-                              "lid_panels": int(ds.attrs.get("cosim_lid_panels", 0))})
+                              "lid_panels": int(ds.attrs.get("cosim_lid_panels", 0))},
+                        wavenumber=np.asarray(ds["wavenumber"].values, float).ravel() if "wavenumber" in ds else None,
+                        **far)

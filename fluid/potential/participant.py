@@ -30,10 +30,13 @@ the rest as the load on the body:
   positive-definite ``M + A∞`` against its diagonal is a contraction (each 2 x 2 coupled pair
   has ``|A_ij| < sqrt(M_ii + A_ii)(M_jj + A_jj)``), so the lag is stable.
 
+- optional (``drift``) the slowly varying drift force in surge, sway and yaw: Newman's (1974)
+  approximation from the freely floating body's mean drift (Maruo 1960; :mod:`.drift`).
+
 Limits: linear potential flow (small motions, small waves); one geom per body (box, cylinder,
-sphere) with a free joint (3-D scenes); bodies do not interact hydrodynamically (each is
-solved alone); no second-order (drift) forces. The loads react to the body's acceleration
-only through the armature, so explicit coupling needs no light-body remedy.
+sphere) with a free joint (3-D scenes); bodies interact hydrodynamically only with
+``interaction`` (:mod:`.group`), then without drift; of second order only the mean and slow drift. The loads react to the body's
+acceleration only through the armature, so explicit coupling needs no light-body remedy.
 """
 
 from __future__ import annotations
@@ -46,6 +49,8 @@ import numpy as np
 
 from errors import InputError
 from fluid.potential.coefficients import Coefficients, compute, require_capytaine
+from fluid.potential.drift import MeanDrift, SlowDrift, mean_drift
+from fluid.potential.group import compute_group
 from fluid.potential.hull import KINDS, check_pierces, default_panel_size, displaced_volume, wetted_hull
 from fluid.potential.radiation import BAND, ImpulseResponse, SettingError, impulse_response
 from fluid.potential.waves import Excitation, Sea
@@ -87,6 +92,15 @@ def default_omega(panel_size: float, g: float = 9.81, n: int = 40, depth: float 
     return frequency_grid(w_max, n, depth, g)
 
 
+def _mass_matrix(mass: float, inertia: np.ndarray) -> np.ndarray:
+    """The 6 x 6 rigid-body mass matrix about the centre of mass [kg, kg m^2] from the mass and
+    the inertia tensor there (world axes)."""
+    M = np.zeros((6, 6))
+    M[:3, :3] = mass * np.eye(3)
+    M[3:, 3:] = inertia
+    return M
+
+
 def _rotvec(R: np.ndarray) -> np.ndarray:
     """The rotation vector (axis times angle [rad]) of a rotation matrix."""
     from scipy.spatial.transform import Rotation
@@ -124,6 +138,12 @@ class PotentialFluid:
     coefficients:
         Precomputed coefficients per body name (their hulls must be the bodies' own): skips
         the BEM for those bodies.
+    drift:
+        Add the slowly varying drift force (module docstring; needs ``sea``, and Kochin
+        functions in given coefficients).
+    interaction:
+        Solve the bodies together (:mod:`.group`): coupled radiation memory and added mass,
+        each body's excitation in the others' presence (one body: the same as alone).
     """
 
     loads_carry_added_mass = False  #: A∞ goes into the bodies' inertia (module docstring)
@@ -133,7 +153,8 @@ class PotentialFluid:
                  headings: Sequence[float] | None = None, panel_size: float | Mapping[str, float] | None = None,
                  memory: float | None = None, sea: Sea | None = None,
                  quadratic_drag: Mapping[str, Sequence[float]] | None = None, cache=None,
-                 coefficients: Mapping[str, Coefficients] | None = None, name: str = "fluid"):
+                 coefficients: Mapping[str, Coefficients] | None = None, drift: bool = False,
+                 interaction: bool = False, name: str = "fluid"):
         for label, v in (("rho", rho), ("g", g)):
             if not (math.isfinite(v) and v > 0):
                 raise InputError(f"potential fluid: {label} must be finite and > 0, got {v!r}")
@@ -146,6 +167,11 @@ class PotentialFluid:
         if sea is not None and (sea.depth != depth or sea.g != g):
             raise InputError(f"potential fluid: the sea's depth {sea.depth:g} m and gravity {sea.g:g} m/s^2 differ "
                              f"from the fluid's {depth:g} m and {g:g} m/s^2; give both the same")
+        if drift and sea is None:
+            raise InputError("potential fluid: drift = True needs waves (sea); without them there is no drift force")
+        if interaction and (drift or coefficients):
+            raise InputError("potential fluid: interaction = True takes neither drift nor precomputed coefficients "
+                             "(the bodies' group solve has no Kochin functions; it makes every body's coefficients)")
         if memory is not None and not (math.isfinite(memory) and memory > 0):
             raise InputError(f"potential fluid: memory = {memory!r} s; give a time > 0 s (None: from the decay)")
         if not coefficients:
@@ -167,6 +193,10 @@ class PotentialFluid:
         self.dt_limit = "none"  #: the condition that set max_dt()
         self.coefficients: list[Coefficients] = []  #: per body, in the bodies' order
         self.impulse: list[ImpulseResponse] = []  #: per body
+        self.drift, self.interaction = bool(drift), bool(interaction)
+        self.group = None  #: the bodies' GroupCoefficients, with interaction
+        self.group_impulse: ImpulseResponse | None = None  #: their coupled impulse response
+        self.mean_drift: list[MeanDrift] = []  #: per body, with drift
 
     @property
     def waves(self) -> Sea | None:
@@ -211,35 +241,21 @@ class PotentialFluid:
         self._armature = np.zeros((n, 6))
         self._exc: list[Excitation | None] = []
         self._cob = np.zeros((n, 3))
-        self.coefficients, self.impulse = [], []
+        self._slow: list[SlowDrift] = []
+        self.coefficients, self.impulse, self.mean_drift = [], [], []
+        grouped = self._solve_together(names, bodies, kin) if self.interaction and n > 1 else {}
         for k, (name, shapes) in enumerate(zip(names, bodies.geoms())):
-            solids = [s for s in shapes if s.kind in KINDS]
-            if len(shapes) != 1 or not solids:
-                raise InputError(f"potential fluid: body '{name}' has {len(shapes)} geoms "
-                                 f"({', '.join(s.kind for s in shapes) or 'none'}); this model takes one box, "
-                                 f"cylinder or sphere per body")
-            dofs = bodies.dofs(k)
-            if dofs.stop - dofs.start != 6:
-                raise InputError(f"potential fluid: body '{name}' has {dofs.stop - dofs.start} degrees of freedom; "
-                                 f"linear potential flow is 3-D: give it a free joint (a 3-D scene)")
-            geom = solids[0]
+            geom, rot, centre = self._geom(k, name, shapes, kin, bodies)
             R = kin.rotation[k]
-            rot = R @ geom.rot
-            centre = kin.origin[k] + R @ geom.pos - np.array([kin.com[k, 0], kin.com[k, 1], self.eta])
-            check_pierces(name, geom.kind, geom.size, rot, float(centre[2]))
-            c = self._given.get(name)
+            c = grouped.get(name) or self._given.get(name)
             if c is None:
                 ps = self._panel_size(name, geom.kind, geom.size)
                 omega = self.omega if self.omega is not None else default_omega(ps, self.g, self.frequencies, self.depth)
-                self._check_sea(name, omega)  # before the solve
-                if omega[0] < lowest_omega(self.depth, self.g) * (1 - 1e-9):
-                    raise SettingError("frequencies", f"potential flow: body '{name}': the lowest frequency "
-                                       f"{omega[0]:.4g} rad/s is below {lowest_omega(self.depth, self.g):.4g} "
-                                       f"rad/s (k d = {KD_MIN:g} in {self.depth:g} m of water), where Capytaine's "
-                                       f"finite-depth solver returns no value; start the frequencies there")
+                self._check_omega(name, omega)
                 hull = wetted_hull(geom.kind, geom.size, rot, centre, ps, name=name)
                 c = compute(hull, float(kin.com[k, 2] - self.eta), omega=omega, headings=self.headings,
-                            depth=self.depth, rho=self.rho, g=self.g, cache=self.cache, name=name)
+                            depth=self.depth, rho=self.rho, g=self.g, cache=self.cache, name=name,
+                            kochin=self.drift)
             irf = impulse_response(c.omega, c.added_mass, c.damping, self.memory, name=name)
             log.info("potential fluid: body '%s': %d panels, %d frequencies to %.3g rad/s, memory %.3g s (decays "
                      "to %.2g %%), A(w) rebuilt within %.2g %%, B(w) %.2g %% below %.3g rad/s", name, c.panels,
@@ -259,16 +275,68 @@ class PotentialFluid:
                     raise InputError(f"potential fluid: quadratic drag of body '{name}' takes 6 finite values >= "
                                      f"0, got {d}")
                 self._drag[k] = d
-            A = irf.added_mass_inf
+            A = irf.added_mass_inf if self.group_impulse is None else \
+                self.group_impulse.added_mass_inf[6 * k:6 * k + 6, 6 * k:6 * k + 6]
             rr = R.T @ A[3:, 3:] @ R  # the rotational block in the body axes of the free joint
             arm = np.clip(np.concatenate([np.diag(A[:3, :3]), np.diag(rr)]), 0.0, None)
             bodies.add_armature(k, arm)
             self._armature[k] = arm
             self._exc.append(None if self.sea is None else
                              Excitation(self.sea, c.omega, c.headings, c.excitation, kin.com[k, :2], name=name))
+            if self.drift:
+                md = mean_drift(c, _mass_matrix(self._mass[k], bodies.inertia_tensors()[k]), name=name)
+                self.mean_drift.append(md)
+                self._slow.append(SlowDrift(self.sea, md, kin.com[k, :2], name=name))
         self._inertia = np.array([bodies.dof_inertia(k) for k in range(n)])  # own, armature left out
         self._hist_t = np.zeros(0)
         self._hist_v = np.zeros((0, n, 6))
+
+    def _check_omega(self, name: str, omega) -> None:
+        """The frequencies fit the sea and the depth (before any solve)."""
+        self._check_sea(name, omega)
+        if omega[0] < lowest_omega(self.depth, self.g) * (1 - 1e-9):
+            raise SettingError("frequencies", f"potential flow: body '{name}': the lowest frequency "
+                               f"{omega[0]:.4g} rad/s is below {lowest_omega(self.depth, self.g):.4g} "
+                               f"rad/s (k d = {KD_MIN:g} in {self.depth:g} m of water), where Capytaine's "
+                               f"finite-depth solver returns no value; start the frequencies there")
+
+    def _solve_together(self, names, bodies, kin) -> dict:
+        """Every body's coefficients from one group solve (:mod:`.group`) on the frequencies given
+        or those of the smallest default panel, and the coupled impulse response."""
+        hulls, sizes = [], []
+        for k, (name, shapes) in enumerate(zip(names, bodies.geoms())):
+            geom, rot, centre = self._geom(k, name, shapes, kin, bodies)
+            ps = self._panel_size(name, geom.kind, geom.size)
+            sizes.append(ps)
+            hulls.append(wetted_hull(geom.kind, geom.size, rot, centre, ps, name=name))
+        omega = self.omega if self.omega is not None else default_omega(min(sizes), self.g, self.frequencies,
+                                                                         self.depth)
+        self._check_omega(", ".join(names), omega)
+        self.group = compute_group(hulls, kin.com[:, :2], kin.com[:, 2] - self.eta, names=names, omega=omega,
+                                   headings=self.headings, depth=self.depth, rho=self.rho, g=self.g,
+                                   cache=self.cache)
+        g = self.group
+        self.group_impulse = impulse_response(g.omega, g.added_mass, g.damping, self.memory, name="+".join(names))
+        return dict(zip(names, g.bodies))
+
+    def _geom(self, k: int, name: str, shapes, kin, bodies):
+        """The body's one solid geom, its orientation and its centre relative to (centre of mass
+        x, y; still water), checked: one box, cylinder or sphere, a free joint, piercing the surface."""
+        solids = [s for s in shapes if s.kind in KINDS]
+        if len(shapes) != 1 or not solids:
+            raise InputError(f"potential fluid: body '{name}' has {len(shapes)} geoms "
+                             f"({', '.join(s.kind for s in shapes) or 'none'}); this model takes one box, "
+                             f"cylinder or sphere per body")
+        dofs = bodies.dofs(k)
+        if dofs.stop - dofs.start != 6:
+            raise InputError(f"potential fluid: body '{name}' has {dofs.stop - dofs.start} degrees of freedom; "
+                             f"linear potential flow is 3-D: give it a free joint (a 3-D scene)")
+        geom = solids[0]
+        R = kin.rotation[k]
+        rot = R @ geom.rot
+        centre = kin.origin[k] + R @ geom.pos - np.array([kin.com[k, 0], kin.com[k, 1], self.eta])
+        check_pierces(name, geom.kind, geom.size, rot, float(centre[2]))
+        return geom, rot, centre
 
     # -- coupling ----------------------------------------------------------------
     def set_body_kinematics(self, kin) -> None:
@@ -289,7 +357,8 @@ class PotentialFluid:
         keep = self._hist_t < self.t - 1e-12
         self._hist_t = np.append(self._hist_t[keep], self.t)
         self._hist_v = np.concatenate([self._hist_v[keep], self._velocities(self._kin)[None]])
-        horizon = max(irf.memory for irf in self.impulse) + 1.0
+        memories = [irf.memory for irf in self.impulse + [self.group_impulse] if irf is not None]
+        horizon = max(memories) + 1.0
         old = np.flatnonzero(self._hist_t < self.t - horizon)
         if old.size > 1:  # one sample before the window stays, so the window's start is covered
             self._hist_t, self._hist_v = self._hist_t[old[-1]:], self._hist_v[old[-1]:]
@@ -303,6 +372,16 @@ class PotentialFluid:
         if len(T) < 2:
             return out
         lag = self.t - T
+        if self.group_impulse is not None:  # the coupled memory: body i's load from every body's velocities
+            inside = lag <= self.group_impulse.memory
+            tau, v = lag[inside], V[inside].reshape(int(inside.sum()), -1)
+            if len(tau) < 2:
+                return out
+            w = np.zeros(len(tau))
+            d = -np.diff(tau)
+            w[:-1] += 0.5 * d
+            w[1:] += 0.5 * d
+            return np.einsum("n,nij,nj->i", w, self.group_impulse.at(tau), v).reshape(self.n_bodies, 6)
         for k, irf in enumerate(self.impulse):
             inside = lag <= irf.memory
             tau, v = lag[inside], V[inside, k]
@@ -336,9 +415,16 @@ class PotentialFluid:
             arm = np.zeros((6, 6))
             arm[:3, :3] = np.diag(self._armature[k, :3])
             arm[3:, 3:] = R @ np.diag(self._armature[k, 3:]) @ R.T
-            F[k] -= (self.impulse[k].added_mass_inf - arm) @ acc[k]
+            if self.group_impulse is None:
+                F[k] -= (self.impulse[k].added_mass_inf - arm) @ acc[k]
+            else:  # the coupled A∞ on every body's acceleration, less this body's armature
+                s = slice(6 * k, 6 * k + 6)
+                A = self.group_impulse.added_mass_inf[s]
+                F[k] -= A @ acc.ravel() - arm @ acc[k]
             if self._exc[k] is not None:
                 F[k] += self._exc[k].force(self.t)
+            if self._slow:
+                F[k] += self._slow[k].force(self.t)
         F -= self.radiation_force()
         if self._drag.any():
             v = kin.velocity.copy()

@@ -178,7 +178,7 @@ def impulse_response(omega, A, B, memory: float | None = None, *, name: str = "b
         if err.max() > tol:
             i = int(np.argmax(err))
             raise SettingError("omega_max", f"potential flow: body '{name}': the impulse response rebuilds the "
-                               f"{dofs[i]} {what} only within {err[i]:.1%} below {band * omega[-1]:.4g} rad/s "
+                               f"{dofs[i % 6]} {what} only within {err[i]:.1%} below {band * omega[-1]:.4g} rad/s "
                                f"(at most {tol:.0%}; Ogilvie 1964): the frequency range is too short for this "
                                f"hull (its damping is still {_tail(B)[i]:.0%} of its peak at omega_max = "
                                f"{omega[-1]:.4g} rad/s) or too coarse; raise omega_max (with a panel size that resolves it) or give more "
