@@ -55,10 +55,11 @@ def excursion(sea) -> float:
 class FollowingWall:
     """The motion ``motion(t, ref) -> (pos, vel)`` (``Fluid.prescribe_motion``) of a wall whose
     particles keep the linear orbits of the sea's water particles at their reference
-    positions ``ref`` (N, 2) (x, z) or (N, 3) [m], and its exact :meth:`acceleration`. A
-    many-component sea's orbits come from :class:`fluid.sea_tables.PointOrbits`, kept per
-    ``ref`` array (the fluid gives each wall its own, every time), with the last time's
-    motion (the fluid asks for the acceleration where it has just placed the wall)."""
+    positions ``ref`` (N, 2) (x, z) or (N, 3) [m], and its exact :meth:`acceleration`. The
+    orbits come from :class:`fluid.sea_tables.PointOrbits` (the sea's own sums, their
+    factors kept), one per ``ref`` array (the fluid gives each wall its own, every time),
+    with the last time's motion (the fluid asks for the acceleration where it has just
+    placed the wall)."""
 
     def __init__(self, sea):
         self.sea = sea
@@ -68,28 +69,20 @@ class FollowingWall:
         ref = np.asarray(ref, float)
         kept = self._kept.get(id(ref))
         if kept is None or kept[0] is not ref:
-            kept = self._kept[id(ref)] = [ref, PointOrbits(self.sea, *_xyz(ref)) if tabulable(self.sea) else None,
-                                          None]
+            kept = self._kept[id(ref)] = [ref, PointOrbits(self.sea, *_xyz(ref)), None]
         if kept[2] is None or kept[2][0] != t:
             cols = [0, 2] if ref.shape[1] == 2 else [0, 1, 2]
-            if kept[1] is not None:
-                disp, rate, acc = kept[1].motion(t)
-                acc = acc[:, cols]
-            else:
-                disp, rate = self.sea.displacement(*_xyz(ref), t)
-                acc = None
-            kept[2] = (t, ref + disp[:, cols], rate[:, cols], acc)
+            disp, rate, acc = kept[1].motion(t)
+            kept[2] = (t, ref + disp[:, cols], rate[:, cols], acc[:, cols])
         return kept[2]
 
     def __call__(self, t: float, ref):
         _, pos, vel, _ = self._motion(t, ref)
         return pos.copy(), vel.copy()
 
-    def acceleration(self, t: float, ref) -> np.ndarray | None:
-        """The wall particles' acceleration [m/s^2] at time ``t`` [s]: exact for a
-        many-component sea, None otherwise (the fluid then differentiates the velocity)."""
-        acc = self._motion(t, ref)[3]
-        return None if acc is None else acc.copy()
+    def acceleration(self, t: float, ref) -> np.ndarray:
+        """The wall particles' acceleration [m/s^2] at time ``t`` [s]."""
+        return self._motion(t, ref)[3].copy()
 
 
 def following_wall(sea) -> FollowingWall:

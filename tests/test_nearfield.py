@@ -96,3 +96,27 @@ def test_the_quick_near_field_case_carries_the_sea():
 
     r = validation.run("nearfield-waves", quick=True)
     assert r["passed"], r["outside_tolerance"]
+
+
+def test_the_first_harmonic_is_read_through_a_slow_drift():
+    """nearfield-floating-box reads a moored body's amplitude at the wave's frequency through
+    its slow surge drift (a trend) and a second harmonic: recovered to round-off."""
+    from cosim.validations.nearfield import first_harmonic
+
+    t = np.linspace(3.0, 5.0, 101)
+    w = 2 * math.pi
+    x = 0.01 - 0.02 * t + 0.0217 * np.cos(w * t - 0.4) + 0.003 * np.sin(2 * w * t)
+    assert first_harmonic(t, x, w) == pytest.approx(0.0217, rel=1e-10)
+
+
+@pytest.mark.slow
+def test_the_quick_floating_box_case_runs_and_judges_its_targets():
+    """cosim validate nearfield-floating-box --quick: the moored box in its flume and in the
+    near field (dx = 0.02 m, 5 s), amplitudes and cost judged (docs/validation/nearfield.md
+    has the figures)."""
+    from cosim import validation
+
+    r = validation.run("nearfield-floating-box", quick=True)
+    m = r["metrics"]
+    assert m["runs"]["near_field"]["particles"] < m["runs"]["flume"]["particles"]
+    assert m["heave_error"] < 0.10 and r["tolerances"]["heave_error"] == 0.05

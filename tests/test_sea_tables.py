@@ -70,8 +70,9 @@ def test_the_table_keeps_two_frames_and_clamps_beyond_its_range():
     np.testing.assert_allclose(far, edge, atol=1e-15)
 
 
-def test_the_near_field_walls_and_zones_use_the_tables():
-    sea = SpectralSea(0.04, 1.2, 0.3, level=0.3, ramp=2.4, seed=3, duration=30.0, g=9.81)
+@pytest.mark.parametrize("sea", [SpectralSea(0.04, 1.2, 0.3, level=0.3, ramp=2.4, seed=3, duration=30.0, g=9.81),
+                                 RegularWave(0.04, 1.2, 0.3, level=0.3, ramp=2.4, theory="stokes2")])
+def test_a_following_wall_has_the_orbits_and_their_exact_acceleration(sea):
     ref = np.column_stack([np.full(30, -0.02), np.linspace(0.01, 0.45, 30)])
     wall = following_wall(sea)
     for t in (1.3, 6.1):
@@ -82,7 +83,10 @@ def test_the_near_field_walls_and_zones_use_the_tables():
         eps = 1e-5
         fd = (wall(t + eps, ref)[1] - wall(t - eps, ref)[1]) / (2 * eps)
         np.testing.assert_allclose(wall.acceleration(t, ref), fd, atol=1e-6 * np.abs(fd).max())
-    assert following_wall(RegularWave(0.04, 1.2, 0.3)).acceleration(1.0, ref) is None  # differentiated by the fluid
+
+
+def test_the_near_field_zones_read_a_many_component_sea_from_a_table():
+    sea = SpectralSea(0.04, 1.2, 0.3, level=0.3, ramp=2.4, seed=3, duration=30.0, g=9.81)
     box = near_field_box(0.02, 0.0, 3.0, sea, 0.5, 0.8)
     lo, hi = box.reach(sea)
     assert lo < 0.0 and hi > 3.0

@@ -15,6 +15,7 @@ from __future__ import annotations
 import logging
 import math
 import time
+from pathlib import Path
 
 import numpy as np
 
@@ -221,3 +222,69 @@ def nearfield_waves(quick: bool) -> dict:
     return {"metrics": metrics, "tolerances": _tolerances(metrics), "series": series,
             "particles": finest["particles"], "steps": finest["steps"],
             "cpu_s": {k: v["cpu_s"] for k, v in metrics.items()}}
+
+
+#: the moored box's scene (the flume of examples/moored_box_waves.toml)
+FLOATING_SCENE = Path(__file__).with_name("scenes") / "nearfield-floating-box.toml"
+#: the same wave as the flume's piston makes, in the near field
+FLOATING_NEAR_FIELD = ("domain.kind=nearfield", "waves.kind=regular", "waves.depth=0.3")
+#: targets: heave and surge first-harmonic amplitudes within 5 % of the flume's; the near
+#: field at least 3 times cheaper (CPU)
+FLOATING_AMPLITUDE_TOL, FLOATING_CHEAPER = 0.05, 3.0
+
+
+def first_harmonic(ts: np.ndarray, x: np.ndarray, omega: float) -> float:
+    """The amplitude of ``x``'s harmonic of frequency ``omega`` [rad/s] at times ``ts`` [s],
+    by least squares with a constant, a linear trend (a moored body's slow drift) and the
+    second harmonic."""
+    basis = np.stack([np.ones_like(ts), ts - ts.mean(), np.cos(omega * ts), np.sin(omega * ts),
+                      np.cos(2 * omega * ts), np.sin(2 * omega * ts)], 1)
+    coef = np.linalg.lstsq(basis, x, rcond=None)[0]
+    return float(math.hypot(coef[2], coef[3]))
+
+
+def floating_figures(res, t0: float, period: float) -> dict:
+    """The box's surge, heave [m] and pitch [deg] first-harmonic amplitudes after ``t0`` [s],
+    the wave's first-harmonic height at the gauge upstream of it (x = 0.6 m), the run's
+    particles, steps and CPU seconds."""
+    late = res.t >= t0
+    ts, w = res.t[late], 2.0 * math.pi / period
+    out = {f"{q}_amp": first_harmonic(ts, res[f"box.{q}"][late], w) for q in ("surge", "heave", "pitch")}
+    gauge = next(k for k in res.names if k.endswith(".eta"))
+    out["upstream_H1_m"] = 2.0 * first_harmonic(ts, res[gauge][late], w)
+    s = res.summary
+    return out | {"particles": s.get("particles"), "steps": s["steps"], "cpu_s": s["cpu_s"]}
+
+
+@case("nearfield-floating-box", "the moored box in regular waves of examples/moored_box_waves (2-D, H = 4 cm, T = 1 s, "
+      "0.3 m deep, two catenary lines) in the SPH near field against its flume (piston, beach) at the same spacing",
+      target="heave and surge first-harmonic amplitudes within 5 % of the flume's; the near field at least 3 times "
+             "cheaper (CPU)",
+      quick="dx = 0.02 m, 5 s, amplitudes over 3-5 s: the same tolerances")
+def nearfield_floating_box(quick: bool) -> dict:
+    """The scene ``FLOATING_SCENE`` run twice: in its flume, and with the near field and the
+    regular wave of the piston's height (``FLOATING_NEAR_FIELD``; the box chosen by
+    ``fluid.nearfield.choose_box``). The flume's wave at the box is the piston's, a few per
+    cent off its nominal height (reported as the upstream gauge's); the near field's is
+    the nominal one. Full: dx = 0.01 m, 10 s, amplitudes over 5-10 s."""
+    import tempfile
+
+    from cosim.scene import Scene
+
+    dx, duration, t0 = (0.02, 5.0, 3.0) if quick else (0.01, 10.0, 5.0)
+    flume = Scene.from_toml(FLOATING_SCENE).with_values([f"fluid.dx={dx}", f"world.duration={duration}"])
+    near = flume.with_values(list(FLOATING_NEAR_FIELD))
+    period = flume.waves.period
+    with tempfile.TemporaryDirectory(prefix="nearfield_floating_") as tmp:
+        runs = {name: floating_figures(s.run(Path(tmp) / name, progress=False), t0, period)
+                for name, s in (("flume", flume), ("near_field", near))}
+    f, n = runs["flume"], runs["near_field"]
+    metrics = {"runs": runs, "window_s": [t0, duration],
+               "heave_error": abs(n["heave_amp"] / f["heave_amp"] - 1.0),
+               "surge_error": abs(n["surge_amp"] / f["surge_amp"] - 1.0),
+               "pitch_ratio": n["pitch_amp"] / f["pitch_amp"],
+               "cpu_fraction": n["cpu_s"] / f["cpu_s"], "particle_fraction": n["particles"] / f["particles"]}
+    return {"metrics": metrics,
+            "tolerances": {"heave_error": FLOATING_AMPLITUDE_TOL, "surge_error": FLOATING_AMPLITUDE_TOL,
+                           "cpu_fraction": 1.0 / FLOATING_CHEAPER},
+            "particles": n["particles"], "steps": n["steps"], "cpu_s": {k: v["cpu_s"] for k, v in runs.items()}}
