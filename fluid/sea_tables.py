@@ -5,7 +5,7 @@ A many-component sea (``fluid.waves.SpectralSea``: 200 components or more) evalu
 directly costs a cosine, a sine and two exponentials per particle and component: at every
 step for the particles of the relaxation zones (their target velocity) and several times
 a step for the end walls (their orbits and the finite difference of their velocity), which
-made the sea cost several times the SPH itself in a 2-D near field. Both separate:
+can cost several times the SPH itself in a 2-D near field. Both separate:
 
 - The phase ``θ = α − β``, ``α = k (s − s_ref)`` fixed in space and ``β = ω t − phase`` in
   time, so ``cos θ = cos α cos β + sin α sin β`` and ``sin θ = sin α cos β − cos α sin β``;
@@ -22,7 +22,8 @@ made the sea cost several times the SPH itself in a 2-D near field. Both separat
   ``(k Δ)² / 8`` and ``(ω Δt)² / 8`` of a component's velocity, is below 1.4 % for those
   components and below 0.03 % at a peak 2.5 times longer.
 
-Linear seas only: a sea with terms beyond linear superposition (Stokes-2) is evaluated
+The orbits are linear for every sea, as ``Sea.displacement``'s. The velocity table is for
+linear seas only: a sea with terms beyond linear superposition (Stokes-2) is evaluated
 directly (:func:`tabulable`); so is one of few components, where nothing is to be gained.
 The linear theory is Dean & Dalrymple (1991), §4 (as in ``fluid.waves``); the fade-in is
 the sea's own (``Sea._fade``).
