@@ -80,17 +80,56 @@ def test_world_gravity_reads_as_a_number_or_a_vector():
         World(dim=2, gravity=(1000.0, 0.0))
 
 
-def test_a_body_falls_along_g(tmp_path):
-    """No fluid: a free box under g = (3, -4) m/s^2 is at x0 + g t^2 / 2 after 0.5 s."""
+@pytest.mark.parametrize("g", [(3.0, -4.0), (3.0, 2.0, -4.0)])
+def test_a_body_falls_along_g(g, tmp_path):
+    """No fluid: a free box under g is at x0 + g t^2 / 2 after 0.5 s (2-D: g = (gx, gz))."""
     from cosim.scene.build import build
 
-    scene = Scene(world=World(dim=2, duration=0.5, gravity=(3.0, -4.0)),
-                  bodies=[Box("b", size=(0.1, 0.1), density=500.0, pos=(0.0, 1.0))])
+    dim = len(g)
+    scene = Scene(world=World(dim=dim, duration=0.5, gravity=g),
+                  bodies=[Box("b", size=(0.1,) * dim, density=500.0, pos=(0.0,) * (dim - 1) + (1.0,))])
     built = build(scene, tmp_path)
     built.coupler.run(0.5)
-    x = built.bodies.kinematics().com[0]
-    assert x[0] == pytest.approx(0.5 * 3.0 * 0.25, rel=1e-6)
-    assert x[2] == pytest.approx(1.0 - 0.5 * 4.0 * 0.25, rel=1e-6)
+    g3 = (g[0], 0.0, g[1]) if dim == 2 else g
+    np.testing.assert_allclose(built.bodies.kinematics().com[0], np.array([0.0, 0.0, 1.0]) + 0.125 * np.array(g3),
+                               rtol=0, atol=1e-9)
+
+
+def test_the_sph_fluid_takes_a_vector_of_its_dimension_on_the_cpu():
+    from cosim.errors import InputError
+    from fluid.solver import FluidConfig
+
+    c = FluidConfig(dim=3, dx=0.01, c0=10.0, g=[1, 2, -9])
+    assert c.g == (1.0, 2.0, -9.0) and c.g_down == 9.0 and c.g_magnitude == pytest.approx(math.sqrt(86.0))
+    assert FluidConfig(dim=2, dx=0.01, c0=10.0).gravity3.tolist() == [0.0, 0.0, -9.81]
+    with pytest.raises(InputError, match=r"give gravity as 2 finite components"):
+        FluidConfig(dim=2, dx=0.01, c0=10.0, g=(0.0, 0.0, -9.81))
+    with pytest.raises(InputError, match=r"device='cuda' takes gravity along -z only"):
+        FluidConfig(dim=2, dx=0.01, c0=10.0, g=(1.0, -9.81), device="cuda")
+
+
+def test_the_coupler_refuses_a_fluid_and_bodies_that_fall_different_ways():
+    """One gravity for every participant: an SPH fluid under (1, -9.81) and MuJoCo bodies
+    under 9.81 along -z are refused when coupled, each vector named."""
+    from bodies import builders
+    from bodies.mujoco_bodies import MujocoBodies
+    from cosim.coupler import Coupler
+    from cosim.errors import ConfigurationError
+    from cosim.sph_fluid import SPHFluid
+    from fluid.geometry import block
+    from fluid.solver import FluidConfig
+
+    cfg = FluidConfig(dim=2, dx=0.02, c0=20.0, g=(1.0, -9.81), domain_lo=(-1.0, -1.0), domain_hi=(2.0, 2.0))
+    fluid = SPHFluid(cfg, block(np.zeros(2), np.array([0.2, 0.1]), 0.02))
+    box = builders.box("b", (0.1, 0.1), (1.0, 0.0, 1.0), planar=True, density=500.0)
+    for g, ok in (((1.0, 0.0, -9.81), True), (9.81, False)):
+        coupler = Coupler(bodies=MujocoBodies(builders.scene(box, gravity=g)), fluid=fluid)
+        if ok:
+            coupler.initialize()
+            continue
+        with pytest.raises(ConfigurationError, match=r"fluid 'fluid' has gravity \[1\.0, -9\.81\] m/s\^2, bodies .* "
+                           r"\[0\.0, 0\.0, -9\.81\]"):
+            coupler.initialize()
 
 
 def test_an_sph_tank_under_a_tilted_gravity_gives_every_participant_the_vector(tmp_path, caplog):
