@@ -63,7 +63,7 @@ class World(Spec):
 
     dim: int = whole(2, "2: the x-z plane (bodies 1 m thick), 3: space", lo=2, hi=3)
     duration: float = num(1.0, "simulated time", "s", lo=0, lo_open=True)
-    gravity: float = num_or_vec(9.81, "acceleration of gravity, for every participant: a number acts along -z; a "
+    gravity: float | tuple = num_or_vec(9.81, "acceleration of gravity, for every participant: a number acts along -z; a "
                                 "vector (2-D: (gx, gz), 3-D: (gx, gy, gz)) in any direction", "m/s^2",
                                 hi=L.MAX_GRAVITY, why=L.GRAVITY_WHY)
     sample_every: float = num(0.01, "interval between probe samples", "s", lo=0, lo_open=True)
@@ -90,7 +90,6 @@ class World(Spec):
                 raise SceneError(f"plot_at[{i}]", f"{t} s lies before the run's start (0 s); give a time >= 0")
         if self.sample_every > self.duration:
             raise SceneError("sample_every", f"{self.sample_every} s is longer than the run ({self.duration} s)")
-
 
     @property
     def g_vector(self) -> tuple:
