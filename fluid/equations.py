@@ -12,8 +12,9 @@ zero. ``r_ab = r_a - r_b``, ``v_ab = v_a - v_b``, ``grad_a W_ab = F_ab r_ab``.
   without Eq. 3-4); ``"antuono"`` (Antuono et al. 2010; Dinçer & Demir 2020, Eq. 1-4: zero
   for any linear density field; a second pair loop); ``"fourtakas"`` (default; Fourtakas et
   al. 2019, DualSPHysics' DDT2, linearised with the local density and sound speed: zero for
-  the hydrostatic state, ``rho^H_ba`` along the gravity vector, any direction); ``"none"``. ``diffusion_at_surface=False`` fades it where the free
-  surface cuts the support (:data:`SURFACE_FADE`): for still water, not the default.
+  the hydrostatic state, ``rho^H_ba`` taken along the gravity vector, whatever its
+  direction); ``"none"``. ``diffusion_at_surface=False`` fades it where the free surface
+  cuts the support (:data:`SURFACE_FADE`): for still water, not the default.
 * Momentum, Barreiro et al. 2016, Eq. 6 (Sunara et al. 2021, Eq. 5):
   ``dv_a/dt = -sum_b m_b (P_a/rho_a^2 + P_b/rho_b^2 + Pi_ab) grad_a W_ab + g``.
 * Artificial viscosity, Sunara et al. 2021, Eq. 6 (Monaghan 1992): ``Pi_ab = -alpha cbar_ab
