@@ -89,7 +89,8 @@ def sphere(name: str, radius: float, pos: Vec, *, density: float | None = None, 
 
 def scene(*bodies: str, gravity: float = 9.81, timestep: float = 1e-3, integrator: str = "RK4",
           floor_z: float | None = None) -> str:
-    """An MJCF model with the given bodies. ``gravity`` [m/s^2] acts along −z;
+    """An MJCF model with the given bodies. ``gravity`` [m/s^2]: a number acts along −z,
+    a vector (gx, gy, gz) in any direction;
     ``timestep`` [s] is MuJoCo's largest step; ``floor_z`` [m] adds a fixed floor
     plane (contacts) at that height. ``integrator``: RK4 by default, because the
     coupler holds loads over a coupling step and RK4 integrates them without the
@@ -97,7 +98,11 @@ def scene(*bodies: str, gravity: float = 9.81, timestep: float = 1e-3, integrato
     (+4.5 % heave amplitude over 8 periods at 2 ms, measured); "implicitfast" suits
     stiff contacts and damping better."""
     _check_positive("scene", "timestep", [timestep])
+    g = tuple(float(x) for x in gravity) if hasattr(gravity, "__len__") else (0.0, 0.0, -float(gravity))
+    if len(g) != 3 or not all(math.isfinite(x) for x in g):
+        raise InputError(f"scene: gravity must be a number (along -z) or 3 finite components [m/s^2], got {gravity!r}")
+    g_text = " ".join(repr(x + 0.0) for x in g)
     floor = ("" if floor_z is None else
              f'<geom name="floor" type="plane" size="0 0 1" pos="0 0 {float(floor_z)!r}"/>')
-    return (f'<mujoco model="cosim"><option gravity="0 0 {-float(gravity)!r}" timestep="{float(timestep)!r}" '
+    return (f'<mujoco model="cosim"><option gravity="{g_text}" timestep="{float(timestep)!r}" '
             f'integrator="{integrator}"/><worldbody>{floor}{"".join(bodies)}</worldbody></mujoco>')

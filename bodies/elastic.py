@@ -3,16 +3,17 @@
 Physics. A straight cantilever of length ``L``, thickness ``h`` (bending direction, world
 x) and width ``W`` (world y; 1 m in 2-D scenes), clamped at its foot and rising along +z,
 or (``direction="down"``) clamped at its top and hanging (the rubber gate of Antoci et al.
-2007). It is a discrete Timoshenko beam: ``N`` elements of length ``l = L / N``, the
-compliance of each lumped at its midpoint into a hinge about y of stiffness ``k_b = E I /
-l`` and (``shear=True``) a slide along the link's x of stiffness ``k_s = kappa G A / l``
-(``I = W h^3 / 12``, ``A = W h``, ``G = E / (2 (1 + nu))``, ``kappa = 5/6``). The rigid
-links are boxes of the beam's section and density (mass and rotary inertia are the
-beam's); the first is welded to the parent (the clamp). Joints at element midpoints make
-the bending compliance the midpoint rule, second order: tip load ``delta = P L^3 / (3 E I)
-(1 - 1 / (4 N^2)) + P L / (kappa G A)``, uniform load ``q L^4 / (8 E I) (1 - 1 / (2 N^2))
-+ q L^2 / (2 kappa G A)``. Large rotations are MuJoCo's joints'; damping (optional) is
-stiffness-proportional, ``c = beta k``; ``shear=False`` is a Rayleigh beam.
+2007), or turned about y by ``angle`` (90 deg: horizontal). It is a discrete Timoshenko
+beam: ``N`` elements of length ``l = L / N``, the compliance of each lumped at its midpoint
+into a hinge about y of stiffness ``k_b = E I / l`` and (``shear=True``) a slide along the
+link's x of stiffness ``k_s = kappa G A / l`` (``I = W h^3 / 12``, ``A = W h``,
+``G = E / (2 (1 + nu))``, ``kappa = 5/6``). The rigid links are boxes of the beam's section
+and density (mass and rotary inertia are the beam's); the first is welded to the parent
+(the clamp). Joints at element midpoints make the bending compliance the midpoint rule,
+second order: tip load ``delta = P L^3 / (3 E I) (1 - 1 / (4 N^2)) + P L / (kappa G A)``,
+uniform load ``q L^4 / (8 E I) (1 - 1 / (2 N^2)) + q L^2 / (2 kappa G A)``. Large rotations
+are MuJoCo's joints'; damping (optional) is stiffness-proportional, ``c = beta k``;
+``shear=False`` is a Rayleigh beam.
 
 References, checked by ``tests/test_elastic_beam.py``: Euler-Bernoulli clamped-free
 frequencies (``beta_n L = 1.8751, 4.6941, 7.8548``); the Timoshenko clamped-free frequency
@@ -150,6 +151,16 @@ class BeamModel:
     direction: str = "up"
     #: the moving support the clamp is fixed to (None: welded to the world)
     support: Support | None = None
+    #: a standing chain turned about y by this angle [deg] from +z towards +x (90: lying
+    #: along +x, a horizontal cantilever; plate-frame x, the bending direction, is then
+    #: world -z); 0 when hanging
+    angle: float = 0.0
+
+    @property
+    def rotation(self) -> np.ndarray:
+        """The clamped link's frame in the world (3, 3): columns are the plate frame's x
+        (bending), y (width) and z (length, from the clamp) axes."""
+        return _frame(self.direction, self.angle)
 
     # -- derived ---------------------------------------------------------------
     @property
@@ -311,9 +322,8 @@ class BeamModel:
         below it (the welded one stays straight), the shape scaled so that the tip,
         ``sum_k l_k sin(theta_k)`` over the links' spans from joint to joint, is
         ``amplitude``; ``{joint name: angle}`` for :meth:`MujocoBodies.set_joints`. The shear
-        slides stay at zero. Only for a standing chain (``direction = "up"``)."""
-        if self.direction != "up":
-            raise InputError(f"elastic beam '{self.name}': an imperfection bends a standing chain; this one hangs")
+        slides stay at zero. The angles are the chain's own, whatever its :attr:`rotation`:
+        "+x" is the plate frame's."""
         bounds = self.link_bounds[1:]
         theta = np.asarray(slope(bounds.mean(axis=1)), float)
         span = np.diff(np.concatenate([bounds[:, 0], [self.length]]))  # from each hinge to the next, or the tip
@@ -360,7 +370,7 @@ class BeamModel:
 def elastic_beam(name: str, length: float, thickness: float, *, E: float, rho: float, width: float = 1.0,
                  nu: float = 0.0, kappa: float = 5.0 / 6.0, n_elements: int = 16, base=(0.0, 0.0, 0.0),
                  shear: bool = True, beta: float = 0.0, thin_wall: bool = False,
-                 direction: str = "up", support: Support | None = None) -> BeamModel:
+                 direction: str = "up", support: Support | None = None, angle: float = 0.0) -> BeamModel:
     """An elastic cantilever clamped at ``base`` [m] (the centre of its clamped end) and
     rising along +z (``direction="up"``, clamped at its foot) or hanging along -z
     (``direction="down"``, clamped at its top: the chain turned half a turn about x), as a
@@ -373,6 +383,8 @@ def elastic_beam(name: str, length: float, thickness: float, *, E: float, rho: f
     Timoshenko (True) or Rayleigh (False), ``thin_wall`` the two-sided boundary for a
     plate fewer than two particles thick (:attr:`BeamModel.thin_wall`), ``support`` the
     moving support the clamp is fixed to (:class:`Support`; None: welded to the world),
+    ``angle`` [deg] a standing chain turned about y from +z towards +x (90: a horizontal
+    cantilever along +x, bending in the x-z plane),
     ``beta`` stiffness-proportional damping [s]
     (joint damping ``beta k``; explicit under RK4, where it shrinks the stable step once
     ``beta omega_max`` nears 1, see :meth:`BeamModel.stable_dt`: prefer ``implicitfast``
@@ -404,6 +416,13 @@ def elastic_beam(name: str, length: float, thickness: float, *, E: float, rho: f
     if direction not in ("up", "down"):
         raise InputError(f"elastic beam '{name}': direction must be \"up\" (clamped at its foot, rising along +z) or "
                          f"\"down\" (clamped at its top, hanging along -z), got {direction!r}")
+    if not (isinstance(angle, (int, float)) and math.isfinite(angle) and -180.0 <= angle <= 180.0):
+        raise InputError(f"elastic beam '{name}': angle must be a number of degrees in [-180, 180] (the turn about y "
+                         f"from +z towards +x), got {angle!r}")
+    if direction == "down" and angle != 0:
+        raise InputError(f"elastic beam '{name}': a hanging chain (direction=\"down\") hangs along -z; give angle=0, "
+                         f"or a standing chain (direction=\"up\") turned by the angle")
+    angle = float(angle)
     base = tuple(float(c) for c in base)
     if len(base) != 3 or not all(math.isfinite(c) for c in base):
         raise InputError(f"elastic beam '{name}': base must be 3 finite coordinates (x, y, z) [m], got {base!r}")
@@ -418,8 +437,13 @@ def elastic_beam(name: str, length: float, thickness: float, *, E: float, rho: f
 
     if support is not None and not isinstance(support, Support):
         raise InputError(f"elastic beam '{name}': support must be a bodies.elastic.Support or None, got {support!r}")
-    turn = ' quat="0 1 0 0"' if direction == "down" else ""  # half a turn about x: z -> -z, y -> -y
-    carried = _support_joints(name, support, base, direction, rho * W * h * L, L)
+    if direction == "down":
+        turn = ' quat="0 1 0 0"'  # half a turn about x: z -> -z, y -> -y
+    elif angle != 0:  # about y: z -> (sin a, 0, cos a)
+        turn = f' quat="{_fmt([math.cos(math.radians(angle) / 2), 0.0, math.sin(math.radians(angle) / 2), 0.0])}"'
+    else:
+        turn = ""
+    carried = _support_joints(name, support, base, _frame(direction, angle), rho * W * h * L, L)
     parts = [f'<body name="{name}_link0" pos="{_fmt(base)}"{turn}>{carried}{geom(0, l / 2)}']
     for k in range(1, N + 1):
         seg = l / 2 if k == N else l
@@ -433,18 +457,27 @@ def elastic_beam(name: str, length: float, thickness: float, *, E: float, rho: f
                  f'<site name="{name}_corner" pos="{-h / 2!r} 0 {l / 2!r}" size="{h / 4!r}"/>')
     xml = "".join(parts) + "</body>" * (N + 1)
     return BeamModel(name, L, h, W, E, rho, float(nu), kappa, N, base, bool(shear), float(beta), xml,
-                     bool(thin_wall), direction, support)
+                     bool(thin_wall), direction, support, angle)
 
 
-def _support_joints(name: str, support: Support | None, base, direction: str, mass: float, length: float) -> str:
+def _frame(direction: str, angle: float) -> np.ndarray:
+    """The clamped link's rotation (link frame -> world): half a turn about x when hanging,
+    else ``angle`` [deg] about y."""
+    if direction == "down":
+        return np.diag([1.0, -1.0, -1.0])
+    a = math.radians(angle)
+    return np.array([[math.cos(a), 0.0, math.sin(a)], [0.0, 1.0, 0.0], [-math.sin(a), 0.0, math.cos(a)]])
+
+
+def _support_joints(name: str, support: Support | None, base, frame: np.ndarray, mass: float, length: float) -> str:
     """The joints of the clamped link on its moving support (none when welded), given in
-    the link's frame (turned half a turn about x when hanging), each with the armature of
+    the link's frame (``frame``: its rotation into the world), each with the armature of
     :class:`Support`: ``SUPPORT_ARMATURE`` times the chain's mass [kg] on a slide, times an
     upper bound of its moment of inertia about the axis, ``mass (d + L)^2`` [kg m^2] with
     ``d`` the clamp's distance from the axis' point, on the hinge."""
     if support is None:
         return ""
-    flip = np.diag([1.0, -1.0, -1.0]) if direction == "down" else np.eye(3)  # world -> link frame (its own inverse)
+    flip = frame.T  # world -> link frame
     if support.slides:
         return "".join(f'<joint name="{name}_support{k}" type="slide" axis="{_fmt(flip @ np.asarray(a))}" '
                        f'armature="{SUPPORT_ARMATURE * mass!r}"/>' for k, a in enumerate(support.slides))

@@ -289,9 +289,13 @@ class Coupler:
         if g_f is None:
             return
         g_b = np.asarray(self.bodies.model.opt.gravity, float)
-        if not np.allclose(g_b, (0.0, 0.0, -float(g_f)), rtol=1e-12, atol=1e-12):
+        if np.ndim(g_f) == 0:
+            g_w, said = (0.0, 0.0, -float(g_f)), f"g = {g_f!r} m/s^2 along -z"
+        else:  # a vector: (gx, gz) in the x-z plane or (gx, gy, gz)
+            g_w, said = ((g_f[0], 0.0, g_f[1]) if len(g_f) == 2 else tuple(g_f)), f"gravity {list(g_f)} m/s^2"
+        if not np.allclose(g_b, g_w, rtol=1e-12, atol=1e-12):
             raise ConfigurationError(
-                f"gravity differs between participants: fluid '{self.fluid.name}' has g = {g_f!r} m/s^2 along -z, "
+                f"gravity differs between participants: fluid '{self.fluid.name}' has {said}, "
                 f"bodies '{self.bodies.name}' {g_b.tolist()} m/s^2; give both the same (a scene sets one world.gravity "
                 f"for all; by hand: FluidConfig(g=...) and bodies.builders.scene(gravity=...))")
 

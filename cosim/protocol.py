@@ -130,9 +130,10 @@ class AddedMassLoads(Protocol):
 
 @runtime_checkable
 class Gravity(Protocol):
-    """Whatever states the gravity [m/s^2] along -z it assumes: a fluid, or its ``config``."""
+    """Whatever states the gravity [m/s^2] it assumes: a fluid, or its ``config``; ``g`` a
+    number along -z, or the vector ((gx, gz) in the x-z plane, or (gx, gy, gz))."""
 
-    g: float
+    g: float | tuple
 
 
 @runtime_checkable

@@ -200,7 +200,7 @@ class SPHFluid:
             self._elastic_groups.append(g_next + np.arange(len(rows)))
             g_next += len(rows)
         if self.z_surface is not None:
-            set_hydrostatic(ps, self.z_surface, c.rho0, c.speed_of_sound, c.gamma, c.g)
+            set_hydrostatic(ps, self.z_surface, c.rho0, c.speed_of_sound, c.gamma, c.g_down)
         self.fluid = Fluid(c, ps)
         for group, motion in self.motions.items():
             self.fluid.prescribe_motion(group, motion)

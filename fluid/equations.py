@@ -12,8 +12,9 @@ zero. ``r_ab = r_a - r_b``, ``v_ab = v_a - v_b``, ``grad_a W_ab = F_ab r_ab``.
   without Eq. 3-4); ``"antuono"`` (Antuono et al. 2010; Dinçer & Demir 2020, Eq. 1-4: zero
   for any linear density field; a second pair loop); ``"fourtakas"`` (default; Fourtakas et
   al. 2019, DualSPHysics' DDT2, linearised with the local density and sound speed: zero for
-  the hydrostatic state); ``"none"``. ``diffusion_at_surface=False`` fades it where the free
-  surface cuts the support (:data:`SURFACE_FADE`): for still water, not the default.
+  the hydrostatic state, ``rho^H_ba`` taken along the gravity vector, whatever its
+  direction); ``"none"``. ``diffusion_at_surface=False`` fades it where the free surface
+  cuts the support (:data:`SURFACE_FADE`): for still water, not the default.
 * Momentum, Barreiro et al. 2016, Eq. 6 (Sunara et al. 2021, Eq. 5):
   ``dv_a/dt = -sum_b m_b (P_a/rho_a^2 + P_b/rho_b^2 + Pi_ab) grad_a W_ab + g``.
 * Artificial viscosity, Sunara et al. 2021, Eq. 6 (Monaghan 1992): ``Pi_ab = -alpha cbar_ab
@@ -75,7 +76,7 @@ def params(h, ad, alpha, delta, diffusion, rho0, c0, g, nu=0.0, xsph=0.0, alpha_
     h [m] smoothing length, ad [1/m^dim] kernel normalisation, alpha [-] artificial
     viscosity, delta [-] density-diffusion coefficient, diffusion one of
     :data:`DIFFUSION`, rho0 [kg/m^3], c0 [m/s], g [m/s^2] gravity vector (dim,) (the
-    Fourtakas term takes its last component: gravity acts along -z, as in FluidConfig),
+    Fourtakas term's hydrostatic density difference is taken along it: ``g . r_ab``),
     nu [m^2/s] kinematic viscosity of the laminar term (0: off), xsph [-] the XSPH
     coefficient epsilon (0: off), alpha_wall [-] the factor on alpha between fluid and
     boundary particles (1: the same viscosity as between fluid particles),
@@ -260,14 +261,15 @@ def wall_sums(S, xa, ya, za, ux, uy, uz, rhoa, kernel, three, h, lo, cell, cx, c
 
 
 def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_visc: bool, renorm: bool,
-                   fade: bool, f32: bool = False):
+                   fade: bool, f32: bool = False, tilted: bool = False):
     """The pair loop of :func:`interact` compiled for one kernel, dimension, choice of
     optional terms and precision. These are constants of the closure, so the kernel's
     branch, the unused y component and the terms switched off fold away at compile time and
     the inner loop is straight-line code; numba caches each variant apart (the closure's
     values are part of its cache key). ``f32``: the pair terms in float32 (see
     :func:`interact`), read from the float32 table ``T`` of :func:`pack_f32`; otherwise ``T`` is
-    ``S`` and every operation is float64."""
+    ``S`` and every operation is float64. ``tilted``: gravity has a horizontal component, and
+    the Fourtakas hydrostatic density difference takes ``g . r_ab``, not ``g_z z_ab``."""
     F = np.float32 if f32 else np.float64
     zero, one = (np.float32(0.0), np.float32(1.0)) if f32 else (0.0, 1.0)  # constants of the closure
     pad = PAD_F32 if f32 else PAD
@@ -287,7 +289,10 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
         Fc = grad_scale(kernel, ad, h)  # F = Fc * grad_shape
         # Pi_ab = avh (c_a + c_b) min(v_ab.r_ab, 0) / ((r^2+eta^2)(rho_a+rho_b))
         avh = F(-prm[P_ALPHA] * h)
-        hgz = F(-0.5 * prm[P_HYDRO] * gz)  # rho^H_ba = hgz (kap_a + kap_b) z_ab (gravity along -z)
+        # rho^H_ba = -(kap_a + kap_b) (g . r_ab) / 2: hgz (kap_a + kap_b) z_ab for gravity along -z
+        hgx = F(-0.5 * prm[P_HYDRO] * gx)
+        hgy = F(-0.5 * prm[P_HYDRO] * gy)
+        hgz = F(-0.5 * prm[P_HYDRO] * gz)
         irho0 = F(1.0 / prm[P_RHO0])
         rho00 = F(2.0 * prm[P_RHO0])  # float32: T holds rho - rho0
         awall = F(prm[P_AWALL])
@@ -452,6 +457,8 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
                             rhoH = F(-0.5) * ((gxa + F(G[0, b])) * rx + (gza + F(G[2, b])) * rz)
                             if three:
                                 rhoH -= F(0.5) * (gya + F(G[1, b])) * ry
+                        elif tilted:
+                            rhoH = (hgx * rx + hgy * ry + hgz * rz) * (ka + T[KAP - o, b])
                         else:
                             rhoH = hgz * (ka + T[KAP - o, b]) * rz
                         qdd += T[VOL - o, b] * (rhob - rhoa - rhoH) * Fs * r2 * inv
@@ -717,7 +724,7 @@ def interact(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, out, acc, xs, G, 
     renorm = bool(prm[P_RENORM] > 0.0)
     f32 = bool(prm[P_F32] > 0.0)
     key = (int(kernel), bool(ny > 1), bool(prm[P_NU4] > 0.0), bool(prm[P_XSPH] > 0.0), bool(prm[P_AWALL] != 1.0),
-           renorm, bool(prm[P_FADE] > 0.0), f32)
+           renorm, bool(prm[P_FADE] > 0.0), f32, bool(prm[P_G] != 0.0 or (ny > 1 and prm[P_G + 1] != 0.0)))
     loop = _LOOPS.get(key)
     if loop is None:
         loop = _LOOPS[key] = _make_interact(*key)

@@ -397,7 +397,10 @@ def _energies(pos, vel, mass, kind, g, z_ref):
                 for k in range(pos.shape[1]):
                     v2 += vel[i, k] * vel[i, k]
                 ke += 0.5 * mass[i] * v2
-                pe += mass[i] * g * (pos[i, zc] - z_ref)
+                gr = -g[zc] * z_ref  # -g . (r - z_ref e_z): g (z - z_ref) for gravity along -z
+                for k in range(pos.shape[1]):
+                    gr += g[k] * pos[i, k]
+                pe -= mass[i] * gr
         ke_b[b] = ke
         pe_b[b] = pe
     ke = 0.0
@@ -410,10 +413,11 @@ def _energies(pos, vel, mass, kind, g, z_ref):
 
 def fluid_energies(fluid, z_ref: float = 0.0) -> tuple[float, float]:
     """(kinetic, potential) energy [J] of the fluid particles: ``sum m v^2 / 2`` and
-    ``sum m g (z - z_ref)`` with ``z_ref`` [m] the height of zero potential energy."""
+    ``-sum m g . (r - z_ref e_z)`` (``sum m g (z - z_ref)`` for gravity along -z) with
+    ``z_ref`` [m] the height of zero potential energy."""
     ps = fluid.ps
     with fluid._own_threads():  # the fluid's own choice: one thread for small sets
-        return _energies(ps.pos, ps.vel, ps.mass, ps.kind, float(fluid.config.g), float(z_ref))
+        return _energies(ps.pos, ps.vel, ps.mass, ps.kind, fluid.config.gravity, float(z_ref))
 
 
 class Energy:

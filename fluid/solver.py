@@ -130,8 +130,9 @@ class FluidConfig:
     #: surface (the surface row and the one below it), which keeps a 3-D tank of still
     #: water at rest but raises the pressure noise of violent flows (fluid.equations)
     diffusion_at_surface: bool = True
-    #: gravitational acceleration g [m/s^2], acting along -z
-    g: float = 9.81
+    #: gravitational acceleration [m/s^2]: a number g >= 0 acting along -z, or the vector
+    #: (dim components: (gx, gz) in 2-D, (gx, gy, gz) in 3-D) in any direction
+    g: float | tuple = 9.81
     #: CFL factor of the variable time step [-] (Sunara et al. 2021, Eq. 14)
     cfl: float = 0.2
     #: time integration: "symplectic" (predictor-corrector, 2 pair loops per step) or
@@ -220,8 +221,14 @@ class FluidConfig:
             raise _bad(f"delta={self.delta!r}", "use a density diffusion coefficient in [0, 1] (0.1 usual)")
         if not isinstance(self.diffusion_at_surface, bool):
             raise _bad(f"diffusion_at_surface={self.diffusion_at_surface!r}", "use True (default) or False")
-        if not num(self.g) or self.g < 0:
-            raise _bad(f"g={self.g!r} m/s^2", "give the magnitude of gravity (>= 0), it acts along -z")
+        if isinstance(self.g, (tuple, list, np.ndarray)):
+            if len(self.g) != self.dim or not all(num(x) for x in self.g):
+                raise _bad(f"g={self.g!r} m/s^2", f"give gravity as {self.dim} finite components (2-D: (gx, gz), "
+                           f"3-D: (gx, gy, gz)), or as a number >= 0 acting along -z")
+            object.__setattr__(self, "g", tuple(float(x) for x in self.g))
+        elif not num(self.g) or self.g < 0:
+            raise _bad(f"g={self.g!r} m/s^2", "give the magnitude of gravity (>= 0), it acts along -z; or the "
+                       "vector (gx, gz) / (gx, gy, gz)")
         if not num(self.cfl) or not 0 < self.cfl <= 0.4:
             raise _bad(f"cfl={self.cfl!r}", "the stable range of this scheme is 0 < cfl <= 0.4 (0.2 default)")
         if self.integrator not in ("symplectic", "verlet"):
@@ -240,6 +247,9 @@ class FluidConfig:
             raise _bad(f"precision={self.precision!r}", f"choose one of {eq.PRECISION} (float64: the reference)")
         if self.device not in ("cpu", "cuda"):
             raise _bad(f"device={self.device!r}", "choose 'cpu' (default) or 'cuda' (numba-cuda: pip install numba-cuda)")
+        if self.device == "cuda" and isinstance(self.g, tuple) and any(x != 0.0 for x in self.g[:-1]):
+            raise _bad(f"g={self.g!r} m/s^2", "device='cuda' takes gravity along -z only (its hydrostatic density "
+                       "diffusion reads g_z); run a tilted gravity on device='cpu'")
         if self.device == "cuda":  # numba.cuda is imported here only
             from fluid.cuda import check_config
             check_config(self)
@@ -265,10 +275,29 @@ class FluidConfig:
 
     @property
     def gravity(self) -> np.ndarray:
-        """Gravity vector [m/s^2] of length dim, along -z."""
+        """Gravity vector [m/s^2] of length dim (along -z where ``g`` is a number)."""
+        if isinstance(self.g, tuple):
+            return np.array(self.g)
         g = np.zeros(self.dim)
         g[-1] = -self.g
         return g
+
+    @property
+    def gravity3(self) -> np.ndarray:
+        """Gravity vector [m/s^2] as (x, y, z) (2-D: y = 0)."""
+        g = self.gravity
+        return np.array([g[0], 0.0, g[1]]) if self.dim == 2 else g
+
+    @property
+    def g_down(self) -> float:
+        """Gravity's component along -z [m/s^2]: what the hydrostatic rest state of a
+        horizontal free surface is set from (``fluid.geometry.set_hydrostatic``)."""
+        return float(-self.gravity[-1]) + 0.0
+
+    @property
+    def g_magnitude(self) -> float:
+        """Gravity's magnitude [m/s^2]."""
+        return float(np.linalg.norm(self.gravity))
 
 
 @dataclass

@@ -155,9 +155,7 @@ class AdamiWalls:
         self.kernel = kernel_id(c.kernel)
         self.ad = alpha_d(self.kernel, c.dim, c.h)
         self.B = tait_B(c.rho0, c.speed_of_sound, c.gamma)
-        g = np.zeros(3)
-        g[2] = -c.g
-        self.g = g
+        self.g = c.gravity3
         self._zero = np.zeros((0, c.dim))
         #: lowest wall pressure [Pa] (0: no tension, the clamp of the plain dynamic boundaries)
         self.p_floor = 0.0

@@ -103,13 +103,16 @@ def test_energies_do_not_depend_on_the_thread_count():
         got = []
         for k in sorted({1, numba.config.NUMBA_NUM_THREADS}):
             numba.set_num_threads(k)
-            got.append(_energies(pos, vel, mass, kind, G, 0.1))
+            got.append(_energies(pos, vel, mass, kind, np.array([0.0, 0.0, -G]), 0.1))
     finally:
         numba.set_num_threads(saved)
     assert all(g == got[0] for g in got)
     fl = kind == int(Kind.FLUID)
     np.testing.assert_allclose(got[0][0], 0.5 * (mass[fl] * (vel[fl] ** 2).sum(axis=1)).sum(), rtol=1e-12)
     np.testing.assert_allclose(got[0][1], (mass[fl] * G * (pos[fl, 2] - 0.1)).sum(), rtol=1e-12)
+    g = np.array([3.0, -1.0, -G])  # a tilted gravity: -m g . (r - z_ref e_z)
+    _, pe = _energies(pos, vel, mass, kind, g, 0.1)
+    np.testing.assert_allclose(pe, -(mass[fl] * ((pos[fl] - [0.0, 0.0, 0.1]) @ g)).sum(), rtol=1e-12)
 
 
 def test_group_load_carries_the_water_weight_and_moves_its_moment(tank2d):

@@ -23,7 +23,7 @@ from hypothesis import strategies as st
 
 from cosim.errors import InputError
 from cosim.scene import Scene
-from cosim.scene.fields import Gauges, Num, Part, Parts, Table, Vec, Vecs, Whole, spec_fields
+from cosim.scene.fields import Gauges, Num, NumOrVec, Part, Parts, Table, Vec, Vecs, Whole, spec_fields
 from cosim.scene.toml_io import from_dict, to_dict
 
 ANALYTIC = """
@@ -107,8 +107,10 @@ def numeric_paths(spec, prefix="") -> list[str]:
     for name, check, _ in spec_fields(type(spec)):
         key = f"{prefix}{name}"
         value = getattr(spec, name)
-        if isinstance(check, (Num, Whole)):
+        if isinstance(check, (Num, Whole)) or (isinstance(check, NumOrVec) and not isinstance(value, tuple)):
             out.append(key)
+        elif isinstance(check, NumOrVec):
+            out += [f"{key}[{i}]" for i in range(len(value))]
         elif isinstance(check, Vec):
             out += [f"{key}[{i}]" for i in range(len(value) if value is not None else check.sizes[0])]
         elif isinstance(check, (Vecs, Gauges)):

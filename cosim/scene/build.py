@@ -296,15 +296,19 @@ def self_weight(scene, b):
     ``rho_s g h W`` in air and ``(rho_s - rho_w) g h W`` below the still water around its
     foot: a submerged column buckles under its effective weight, the water's pressure on
     its bent faces bearing the rest (the effective tension of risers and columns in water,
-    Sparks 2007, Fundamentals of Marine Riser Mechanics). A hanging plate is in tension:
-    ``(P, inf, None)``."""
+    Sparks 2007, Fundamentals of Marine Riser Mechanics). ``g`` is gravity's component
+    along the plate towards its clamp, ``-g . e`` (``e`` the plate's :attr:`axis`): a plate
+    hanging, or turned so that gravity pulls it away from its clamp, is in tension (or,
+    across gravity, unloaded along its length) and cannot buckle: ``(P, inf, None)``, P
+    the pull [N] (2-D: per metre) at its clamp."""
     from bodies.elastic import self_weight_buckling
 
-    g, dim = scene.world.gravity, scene.world.dim
+    dim = scene.world.dim
+    g = -sum(a * c for a, c in zip(scene.world.g_vector, b.axis)) + 0.0
     area = b.thickness * (1.0 if dim == 2 else b.width)
     q_air = b.density * g * area
-    if b.direction == "down" or g <= 0:
-        return q_air * b.length, math.inf, None
+    if g <= 1e-12 * scene.world.g:  # across gravity to round-off (cos 90 deg is 6e-17): no compression
+        return -q_air * b.length + 0.0, math.inf, None
     loads, top = [], _water_top(scene, b)
     wet = 0.0 if top is None else min(max(top - b.base[-1], 0.0), b.length)
     if wet > 0:
@@ -334,8 +338,8 @@ def buckling_warning(scene, i: int) -> str | None:
             f"column clamped at its foot and free at its top buckles under {factor * P:.4g} N{per} (Greenhill 1881: "
             f"q L^3 / (E I) = {GREENHILL:.4g} for a uniform weight q per length). The "
             f"straight plate is unstable: it starts bent in its buckling mode, its tip {IMPERFECTION * b.length:.3g} m "
-            f"(L/{1 / IMPERFECTION:.0f}) along +x, so that it buckles as a real one would; a stiffer (E, thickness) "
-            f"or shorter plate stands")
+            f"(L/{1 / IMPERFECTION:.0f}) {'along +x' if b.angle == 0 else 'across it'}, so that it buckles as a real "
+            f"one would; a stiffer (E, thickness) or shorter plate stands")
 
 
 def plates(scene) -> dict:
@@ -350,7 +354,7 @@ def plates(scene) -> dict:
             out[b.name] = elastic_beam(b.name, b.length, b.thickness, E=b.E, rho=b.density,
                                        width=1.0 if dim == 2 else b.width, nu=b.nu, n_elements=b.elements,
                                        base=base, beta=b.damping, thin_wall=b.thin_wall, direction=b.direction,
-                                       support=support)
+                                       support=support, angle=b.angle)
     return out
 
 
@@ -379,7 +383,7 @@ def _mjcf_bodies(scene, level, rho):
             pos = (b.pos[0], 0.0, b.pos[1]) if dim == 2 else tuple(b.pos)
         sites = {site_name(f"{b.name}.{k}"): ((p[0], 0.0, p[1]) if dim == 2 else p) for k, p in b.fairleads.items()}
         parts.append(b.mjcf(pos, dim, sites))
-    xml = builders.scene(*parts, gravity=scene.world.gravity, timestep=timestep)
+    xml = builders.scene(*parts, gravity=scene.world.g_vector, timestep=timestep)
     return xml, heights
 
 
@@ -389,10 +393,10 @@ def _bodies(scene, level, rho, warnings=None):
     if any(isinstance(b, MJCF) for b in scene.bodies):
         m = scene.bodies[0]
         bodies = MujocoBodies(m.file, bodies=list(m.bodies) or None)
-        own, world = bodies.model.opt.gravity.tolist(), [0.0, 0.0, -scene.world.gravity]
+        own, world = bodies.model.opt.gravity.tolist(), list(scene.world.g_vector)
         if own != world and warnings is not None:  # one gravity for every participant: the world's
             warnings.append(f"bodies[0].file: the MJCF model's own gravity {own} m/s^2 is replaced by the world's, "
-                            f"{world} m/s^2 (world.gravity = {scene.world.gravity:g}): one gravity for every "
+                            f"{world} m/s^2 (world.gravity = {scene.world.gravity}): one gravity for every "
                             f"participant")
         bodies.set_gravity(world)
         return bodies, {}
@@ -421,6 +425,18 @@ def _start_plates(scene, out: Built) -> None:
         if factor < 1.0:
             out.bodies.set_joints(beam.imperfection(slope, IMPERFECTION * b.length))
             out.warnings.append(buckling_warning(scene, i))
+
+
+def _warn_tilted_water(scene, out: Built) -> None:
+    """Under a tilted gravity the SPH water starts as the domain lays it, level, with the
+    hydrostatic pressure of gravity's -z component; that is not at rest under the tilted
+    gravity (its surface would stand normal to g), so it flows: said, not hidden."""
+    w = scene.world
+    if w.tilted and isinstance(scene.fluid, SPH) and scene.domain is not None:
+        out.warnings.append(f"world.gravity: {list(w.gravity)} m/s^2 is tilted {w.tilt_deg:.3g} deg from -z; the "
+                            f"water starts level, with the hydrostatic pressure of gravity's -z component "
+                            f"({w.g_down:.4g} m/s^2), and is not at rest under the tilted gravity: it sloshes until "
+                            f"its surface stands normal to g")
 
 
 def _warn_mjcf_world(scene, out: Built) -> None:
@@ -519,6 +535,7 @@ def build(scene, workdir: Path) -> Built:
         out.plates = plates(scene)
         _start_plates(scene, out)
         _warn_mjcf_world(scene, out)
+    _warn_tilted_water(scene, out)
     for w in out.warnings:
         log.warning("%s", w)
     moorings = []
@@ -649,7 +666,7 @@ def sph_fluid(scene, out: Built) -> None:
     fl = ps.kind == Kind.FLUID
     top = np.full(ps.n, out.level)
     top[fl] = _surface_heights(scene, ps.pos[fl])
-    ps.rho[:] = hydrostatic_density(top - ps.pos[:, -1], cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g)
+    ps.rho[:] = hydrostatic_density(top - ps.pos[:, -1], cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g_down)
     fluid = Fluid(cfg, ps)
     for group, motion in motions.items():
         fluid.prescribe_motion(group, motion)

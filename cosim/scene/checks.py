@@ -67,6 +67,7 @@ def _span(lo, hi, dim, n=None) -> str:
 
 def check_scene(s) -> None:
     dim = s.world.dim
+    _check_tilted_gravity(s)
     plausible.check_scales(s)
     if not s.bodies and not isinstance(s.fluid, SPH):
         raise SceneError("bodies", "the scene has nothing that moves: give bodies, or the SPH fluid in a domain")
@@ -93,6 +94,33 @@ def check_scene(s) -> None:
     if s.coupling.light_body == "subiterate" and s.coupling.scheme not in ("auto", "fluid-first"):
         raise SceneError("coupling.light_body", "'subiterate' needs the fluid-first scheme; set coupling.scheme to "
                          "'auto' or 'fluid-first'")
+
+
+def _check_tilted_gravity(s) -> None:
+    """What takes gravity along -z only, refused under a tilted ``world.gravity`` (a vector
+    not along -z): the analytic and potential fluids' hydrostatics (a free surface level
+    at a height), waves (their dispersion, ``omega^2 = g k tanh(k h)``, and the near
+    field's sea), the floating placement (a waterline at a height), and every mooring
+    model (each line's weight along -z)."""
+    w = s.world
+    if not w.tilted:
+        return
+    said = f"gravity {list(w.gravity)} m/s^2, {w.tilt_deg:.3g} deg from -z"
+    fix = "give world.gravity as a number (along -z)"
+    if isinstance(s.fluid, (Analytic, Potential)):
+        raise SceneError("world.gravity", f"{said}: the {s.fluid.model} fluid's hydrostatics hold the free surface at "
+                         f"a height (gravity along -z); {fix}, or use fluid.model = \"sph\" or \"none\"")
+    if s.waves is not None or isinstance(s.domain, NearField):
+        raise SceneError("world.gravity", f"{said}: waves travel on a free surface under gravity along -z; {fix}, "
+                         f"or leave waves out")
+    for i, b in enumerate(s.bodies):
+        if getattr(b, "place", None) == "floating":
+            raise SceneError(f"bodies[{i}].place", f"\"floating\" finds a waterline at a height, under gravity along "
+                             f"-z, but the scene's is tilted ({said}); place body {b.name!r} at a given pos, or "
+                             f"{fix}")
+    if s.moorings is not None:
+        raise SceneError("moorings.model", f"{s.moorings.model!r}: the mooring models take each line's weight along "
+                         f"-z, but the scene's gravity is tilted ({said}); {fix}, or leave moorings out")
 
 
 def _check_fluid_and_domain(s, dim):
@@ -391,6 +419,10 @@ def _check_plate(s, dim, b, key) -> None:
                          "a 2-D plate is 1 m wide (the scene's depth); leave width out")
     if not isinstance(s.fluid, SPH):
         return
+    if b.angle != 0:
+        raise SceneError(f"{key}.angle", f"{b.angle:g} deg: the SPH fluid's boundary stands a plate on the tank's "
+                         f"floor (its clamped face open there); a turned plate is for fluid.model = \"none\"; "
+                         f"give angle = 0 with the SPH fluid")
     dx = s.fluid.dx
     across = max(1, round(b.thickness / dx))
     if across < 2 and not b.thin_wall:
@@ -772,7 +804,7 @@ def first_sloshing_period(s) -> float | None:
     of a 3-D tank; a polygon's or an inclined tank's width at the still level) or ``k =
     1.8412 / R`` in a cylinder (e.g. Ibrahim 2005, Liquid Sloshing Dynamics, §1.2-1.3);
     None without a domain."""
-    d, g = s.domain, s.world.gravity
+    d, g = s.domain, s.world.g  # a tilted gravity: its magnitude, an estimate
     if d is None or isinstance(d, Flume) or g <= 0:
         return None
     if isinstance(d, CylinderTank):

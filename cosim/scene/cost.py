@@ -276,7 +276,7 @@ def sph_step(scene) -> tuple[float, str]:
 
     c = fluid_config(scene, choose(scene), numbers_only=True)
     h, c0 = c.h, c.speed_of_sound
-    a = c.g
+    a = c.g_magnitude
     lim = step_limit(a * a, h / c0, c0, h, c.cfl, c.dt_max, c.nu, alpha_eff=c.alpha / (2.0 * (c.dim + 2)),
                      nu_delta=0.0 if c.diffusion == "none" else c.delta * h * c0,
                      c_diff=diffusion_coefficient(c.integrator, c.verlet_reset))
@@ -443,7 +443,7 @@ def analytic_step(scene) -> tuple[float, str]:
         M = _body_mass(b, dim, f.rho)  # MuJoCo's mass: the added mass is in the joints' armature
 
         r = b.bounding_radius(dim) if dim == 3 else math.hypot(b.bounding_radius(dim), 0.5)
-        k = f.rho * scene.world.gravity * math.pi * r * r
+        k = f.rho * scene.world.g * math.pi * r * r
         if k > 0:
             dt = 0.02 * 2.0 * math.pi * math.sqrt(M / k)
             if dt < best:

@@ -2,7 +2,7 @@
 one declaration, and the error that names the field and says what would be accepted.
 
 A scene class derives from :class:`Spec` and declares its fields with the helpers below
-(``num``, ``whole``, ``choice``, ``flag``, ``text``, ``vec``, ``vecs``, ``part``,
+(``num``, ``whole``, ``choice``, ``flag``, ``text``, ``vec``, ``num_or_vec``, ``vecs``, ``part``,
 ``parts``, ``table``). ``Spec.__post_init__`` normalises every value (ints to floats
 where a float is meant, lists to tuples) and raises :class:`SceneError` for a bad one,
 before any work is done. The TOML reader (:mod:`cosim.scene.toml_io`) uses the same
@@ -211,6 +211,35 @@ class Vec(Check):
         return tuple(float(x) for x in v)
 
 
+class NumOrVec(Check):
+    """A number (``num``'s range) or a vector of ``sizes`` finite numbers whose length is
+    at most ``hi``: a magnitude along a default direction, or the full vector (gravity:
+    9.81 along -z, or (gx, gz) / (gx, gy, gz))."""
+
+    def __init__(self, doc, unit="", sizes=(2, 3), hi=None, why=None, optional=False):
+        super().__init__(doc, unit, optional)
+        self.num = Num(doc, unit, lo=0, hi=hi, why=why)
+        self.vec = Vec(doc, unit, sizes)
+
+    def expected(self) -> str:
+        hi = f" up to {self.num.hi:g}" if self.num.hi is not None else ""
+        return (f"a number{self._unit()} from 0{hi}, or a vector of {' or '.join(map(str, self.vec.sizes))} "
+                f"numbers{self._unit()} no longer than that ({self.doc})")
+
+    def check(self, v, path):
+        if _is_num(v):
+            if _is_finite(v) and v < 0:
+                raise SceneError(path, f"{v!r}{self._unit()} is out of range; give {self.expected()}")
+            return self.num.check(v, path)
+        v = self.vec.check(v, path)
+        size = math.sqrt(sum(x * x for x in v))
+        if self.num.hi is not None and size > self.num.hi:
+            why = f", {self.num.why}" if self.num.why else ""
+            raise SceneError(path, f"{_show(v)} is {size:g}{self._unit()} long, beyond {self.num.hi:g}"
+                             f"{self._unit()}{why}; give {self.expected()}")
+        return v
+
+
 class Vecs(Check):
     """A list of vectors (or of numbers, ``sizes=(0,)``: one number each)."""
 
@@ -358,6 +387,10 @@ def text(default, doc, name=False):
 
 def vec(default, doc, unit="", sizes=(2, 3), nonzero=False):
     return _field(Vec(doc, unit, sizes, optional=default is None, nonzero=nonzero), default)
+
+
+def num_or_vec(default, doc, unit="", sizes=(2, 3), hi=None, why=None):
+    return _field(NumOrVec(doc, unit, sizes, hi, why, optional=default is None), default)
 
 
 def vecs(doc, unit="", sizes=(2, 3), min_len=0, default=()):

@@ -77,7 +77,7 @@ def check_fluid(s) -> None:
     (Monaghan 1994 asks c0 >= 10 times the flow's speed, ``fluid.c0_factor``)."""
     from cosim.scene.spec import SPH
 
-    if not isinstance(s.fluid, SPH) or s.domain is None or s.world.gravity <= 0:
+    if not isinstance(s.fluid, SPH) or s.domain is None or s.world.g <= 0:
         return
     from cosim.scene.build import fluid_config
     from cosim.scene.setup import choose, u_max
@@ -105,7 +105,7 @@ def check_bodies(s, dim: int) -> None:
     for i, b in enumerate(s.bodies):
         if not isinstance(b, RigidBody):
             continue
-        if b.place == "floating" and s.world.gravity == 0 and not isinstance(s.fluid, NoFluid):
+        if b.place == "floating" and s.world.g == 0 and not isinstance(s.fluid, NoFluid):
             raise SceneError("world.gravity", f"0 m/s^2: body {b.name!r} (bodies[{i}]) is placed floating, but "
                              f"without gravity there is no buoyancy (nor weight) to float it; give world.gravity "
                              f"> 0 (9.81 on Earth), or place it at a given pos")

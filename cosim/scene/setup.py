@@ -94,7 +94,7 @@ def _auto(scene) -> str:
 
 def u_max(scene, name: str) -> float:
     """The expected largest flow speed [m/s] of the scene (see the module docstring)."""
-    g, d = scene.world.gravity, scene.domain
+    g, d = scene.world.g, scene.domain
     if isinstance(d, Tank) and d.water:
         top = max(b.hi[-1] for b in d.water)
         return math.sqrt(2.0 * g * top) if name == "impact" else math.sqrt(g * top)

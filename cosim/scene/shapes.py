@@ -314,7 +314,7 @@ class SphereShape(RigidBody):
 
 class PlateShape(Shape):
     """An elastic plate's undeformed box: ``thickness`` along x, ``width`` along y (3-D;
-    2-D 1 m), ``length`` along z, never turned."""
+    2-D 1 m), ``length`` along z, before its ``euler`` (the plate's ``angle`` about y) turns it."""
 
     def half_size(self, dim):
         return [0.5 * self.thickness] + ([0.5 * self.width] if dim == 3 else []) + [0.5 * self.length]

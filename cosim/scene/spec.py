@@ -27,19 +27,21 @@ A scene is made of
 - :class:`Probes`: wave gauges, wall-pressure patches, body motion, tensions, loads, energy;
 - :class:`Coupling`: scheme and light-body remedy (``"auto"``: chosen to fit the fluid).
 
-Coordinates: 2-D scenes give points as (x, z), 3-D as (x, y, z) [m], z up, gravity -z.
+Coordinates: 2-D scenes give points as (x, z), 3-D as (x, y, z) [m], z up, gravity -z (or the
+vector ``world.gravity`` gives).
 """
 
 from __future__ import annotations
 
 import dataclasses
+import math
 from dataclasses import dataclass
 from pathlib import Path
 
 from cosim.scene import limits as L
 from cosim.scene import seas, shapes
 from cosim.scene.fields import (SceneError, Spec, choice, flag, gauges, is_name, names, num, part, parts, required,
-                                table, text, vec, vecs, whole)
+                                num_or_vec, table, text, vec, vecs, whole)
 from cosim.scene.registry import FLUIDS as FLUID_MODELS, MOORINGS, SHAPES, WAVES as WAVE_KINDS
 
 SETUPS = ("auto", "still", "waves", "sloshing", "impact", "defaults")
@@ -53,12 +55,17 @@ def tag(value: str):
 # ------------------------------------------------------------------------ world
 @dataclass(frozen=True)
 class World(Spec):
-    """What every participant shares, and when things are written."""
+    """What every participant shares, and when things are written. ``gravity`` is one value
+    for every participant: a number [m/s^2] along -z (kept as given), or a vector; a vector
+    along -z is kept as its length (a number), so ``gravity`` is a number wherever gravity
+    acts along -z and a vector only where it is tilted (:attr:`tilted`). :attr:`g`,
+    :attr:`g_vector` and :attr:`g_down` read it either way."""
 
     dim: int = whole(2, "2: the x-z plane (bodies 1 m thick), 3: space", lo=2, hi=3)
     duration: float = num(1.0, "simulated time", "s", lo=0, lo_open=True)
-    gravity: float = num(9.81, "acceleration of gravity along -z, for every participant", "m/s^2", lo=0,
-                         hi=L.MAX_GRAVITY, why=L.GRAVITY_WHY)
+    gravity: float | tuple = num_or_vec(9.81, "acceleration of gravity, for every participant: a number acts along -z; a "
+                                "vector (2-D: (gx, gz), 3-D: (gx, gy, gz)) in any direction", "m/s^2",
+                                hi=L.MAX_GRAVITY, why=L.GRAVITY_WHY)
     sample_every: float = num(0.01, "interval between probe samples", "s", lo=0, lo_open=True)
     snapshot_every: float = num(0.1, "interval between particle snapshots in run.h5; 0: none", "s", lo=0)
     checkpoint_every: float = num(0.0, "simulated time between checkpoints for --resume, landed on exactly; 0: by "
@@ -71,11 +78,46 @@ class World(Spec):
     plot_color: str = choice("velocity", "what colours the particle plots", ("velocity", "pressure"))
 
     def validate(self):
+        g = self.gravity
+        if isinstance(g, tuple):
+            if len(g) != self.dim:
+                raise SceneError("gravity", f"{list(g)} has {len(g)} components; a {self.dim}-D scene's gravity is "
+                                 f"{'(gx, gz)' if self.dim == 2 else '(gx, gy, gz)'} [m/s^2], or a number along -z")
+            if all(x == 0.0 for x in g[:-1]) and g[-1] <= 0.0:  # along -z: the number it has always been
+                object.__setattr__(self, "gravity", -g[-1] + 0.0)
         for i, t in enumerate(self.plot_at):
             if t < 0:
                 raise SceneError(f"plot_at[{i}]", f"{t} s lies before the run's start (0 s); give a time >= 0")
         if self.sample_every > self.duration:
             raise SceneError("sample_every", f"{self.sample_every} s is longer than the run ({self.duration} s)")
+
+    @property
+    def g_vector(self) -> tuple:
+        """Gravity [m/s^2] as (x, y, z) world components (2-D: y = 0)."""
+        g = self.gravity
+        if not isinstance(g, tuple):
+            return (0.0, 0.0, -g)
+        return (g[0], 0.0, g[1]) if len(g) == 2 else tuple(g)
+
+    @property
+    def g(self) -> float:
+        """Gravity's magnitude [m/s^2]."""
+        return math.sqrt(sum(x * x for x in self.g_vector))
+
+    @property
+    def g_down(self) -> float:
+        """Gravity's component along -z [m/s^2] (what presses water on the floor)."""
+        return -self.g_vector[2] + 0.0
+
+    @property
+    def tilted(self) -> bool:
+        """Whether gravity acts in another direction than -z."""
+        return isinstance(self.gravity, tuple)
+
+    @property
+    def tilt_deg(self) -> float:
+        """The angle [deg] between gravity and -z."""
+        return math.degrees(math.atan2(math.hypot(*self.g_vector[:2]), -self.g_vector[2])) if self.g > 0 else 0.0
 
 
 # ------------------------------------------------------------------------ fluids
@@ -841,7 +883,11 @@ class ElasticPlate(shapes.PlateShape):
     self-weight buckling load (Greenhill 1881: ``q L^3 / (E I) = 7.837`` for a uniform
     weight ``q`` per length) is warned of when the scene is built, with both loads, and
     starts bent in its buckling mode, its tip ``L / 1000`` along +x, so that it buckles
-    rather than stand perfectly still; a hanging plate is in tension and never buckles."""
+    rather than stand perfectly still; a hanging plate is in tension and never buckles.
+    ``angle`` turns a standing plate about y from +z towards +x (90: lying along +x from its
+    clamp, a horizontal cantilever bending under its own weight; without the SPH fluid,
+    whose boundary stands a plate on the floor); the buckling check then takes
+    gravity's component along the plate (``world.gravity`` may be a vector)."""
 
     TAG = ("shape", "elastic-plate")
     shape: str = tag("elastic-plate")
@@ -860,17 +906,37 @@ class ElasticPlate(shapes.PlateShape):
     thin_wall: bool = flag(False, "two columns of boundary particles for a plate under two spacings thick")
     direction: str = choice("up", "up: clamped by its foot, rising along z; down: clamped by its top, hanging along -z",
                             ("up", "down"))
+    angle: float = num(0.0, "a standing plate turned about y from +z towards +x (90: lying along +x, a horizontal "
+                       "cantilever; -90: along -x)", "deg", lo=-180.0, hi=180.0)
 
-    # what the checks of the other bodies read: a plate stands upright at a given pose
+    # what the checks of the other bodies read: a plate stands at a given pose
     place = "given"
-    euler = None
     fairleads: dict = dataclasses.field(default_factory=dict, init=False, repr=False, compare=False)
+
+    def validate(self):
+        if self.direction == "down" and self.angle != 0:
+            raise SceneError("angle", f"{self.angle:g} deg: a hanging plate (direction = \"down\") hangs along -z; "
+                             f"give angle = 0, or a standing plate (direction = \"up\") turned by the angle")
+
+    @property
+    def euler(self) -> tuple | None:
+        """The plate's turn [deg] as Euler angles (about y by ``angle``; None: upright)."""
+        return (0.0, self.angle, 0.0) if self.angle != 0 else None
+
+    @property
+    def axis(self) -> tuple:
+        """Unit vector (x, y, z) along the plate from its clamp to its free end."""
+        if self.direction == "down":
+            return (0.0, 0.0, -1.0)
+        a = math.radians(self.angle)
+        return (math.sin(a), 0.0, math.cos(a))
 
     @property
     def pos(self) -> tuple:
         """The plate's centre [m] (undeformed)."""
-        half = 0.5 * self.length if self.direction == "up" else -0.5 * self.length
-        return tuple(self.base[:-1]) + (self.base[-1] + half,)
+        e = self.axis
+        half = [0.5 * self.length * c for c in ((e[0], e[2]) if len(self.base) == 2 else e)]
+        return tuple(b + d for b, d in zip(self.base, half))
 
 
 BODIES = (Box, Cylinder, Sphere, MJCF, ElasticPlate)
