@@ -55,11 +55,11 @@ def excursion(sea) -> float:
 class FollowingWall:
     """The motion ``motion(t, ref) -> (pos, vel)`` (``Fluid.prescribe_motion``) of a wall whose
     particles keep the linear orbits of the sea's water particles at their reference
-    positions ``ref`` (N, 2) (x, z) or (N, 3) [m], and its exact :meth:`acceleration`. The
-    orbits come from :class:`fluid.sea_tables.PointOrbits` (the sea's own sums, their
-    factors kept), one per ``ref`` array (the fluid gives each wall its own, every time),
-    with the last time's motion (the fluid asks for the acceleration where it has just
-    placed the wall)."""
+    positions ``ref`` (N, 2) (x, z) or (N, 3) [m], and its exact :meth:`particle_acceleration`
+    (which ``Fluid.prescribed_acceleration`` takes). The orbits come from
+    :class:`fluid.sea_tables.PointOrbits` (the sea's own sums, their factors kept), one per
+    ``ref`` array (the fluid gives each wall its own, every time), with the last time's
+    motion (the fluid asks for the acceleration where it has just placed the wall)."""
 
     def __init__(self, sea):
         self.sea = sea
@@ -80,7 +80,7 @@ class FollowingWall:
         _, pos, vel, _ = self._motion(t, ref)
         return pos.copy(), vel.copy()
 
-    def acceleration(self, t: float, ref) -> np.ndarray:
+    def particle_acceleration(self, t: float, ref) -> np.ndarray:
         """The wall particles' acceleration [m/s^2] at time ``t`` [s]."""
         return self._motion(t, ref)[3].copy()
 

@@ -692,8 +692,8 @@ class Fluid:
 
     def prescribed_acceleration(self, eps: float = 1e-6):
         """Acceleration [m/s^2] (N, dim) of every particle (current order) at the time the
-        prescribed groups were last placed: the motion's own ``motion.acceleration(t, ref)``
-        where it has one that gives an array, else the central difference of its velocity
+        prescribed groups were last placed: the motion's own
+        ``motion.particle_acceleration(t, ref)`` where it has one that gives an array, else the central difference of its velocity
         over ``+-eps`` [s] about it; zero for the other particles. None when no group has a
         prescribed motion."""
         if not self._motions or math.isnan(self._t_placed):
@@ -702,7 +702,7 @@ class Fluid:
         acc = np.zeros((ps.n, self.config.dim))
         for group, (motion, ids, ref) in self._motions.items():
             sel, keep = self._group_rows(group, ids)
-            own = getattr(motion, "acceleration", None)
+            own = getattr(motion, "particle_acceleration", None)
             a = None if own is None else own(t, ref)
             if a is None:
                 v1 = np.asarray(motion(t + eps, ref)[1])

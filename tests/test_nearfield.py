@@ -121,3 +121,29 @@ def test_the_quick_floating_box_case_runs_and_judges_its_targets():
     m = r["metrics"]
     assert m["runs"]["near_field"]["particles"] < m["runs"]["flume"]["particles"]
     assert m["surge_error"] < r["tolerances"]["surge_error"] == 0.05
+
+
+def test_the_fluid_takes_the_following_walls_own_acceleration():
+    """Fluid.prescribed_acceleration uses a motion's particle_acceleration (the walls' exact
+    one here) where it has one: equal to the central difference of the walls' velocity."""
+    from fluid.geometry import assemble
+    from fluid.solver import Fluid, FluidConfig
+
+    dx = 0.05
+    box = near_field_box(dx, 0.0, 2.0, SEA, 0.45, 0.5, layers=2)
+    cfg = FluidConfig(dim=2, dx=dx, u_max=1.7)
+    f = Fluid(cfg, assemble(2, dx, cfg.rho0, box.fluid, box.walls).particles)
+    wall = following_wall(SEA)
+    for group in (NEAR_END_GROUP, FAR_END_GROUP):
+        f.prescribe_motion(group, wall)
+    f.initialize(3.1)
+    acc = f.prescribed_acceleration()
+    moving = np.isin(f.ps.group, [NEAR_END_GROUP, FAR_END_GROUP]) & (f.ps.kind == Kind.MOVING_WALL)
+    eps = 1e-6
+    for group in (NEAR_END_GROUP, FAR_END_GROUP):
+        _, ids, ref = f._motions[group]
+        rows = np.flatnonzero(f.ps.group == group)
+        rows = rows[np.argsort(f.ps.ids[rows])]
+        fd = (wall(3.1 + eps, ref)[1] - wall(3.1 - eps, ref)[1]) / (2 * eps)
+        np.testing.assert_allclose(acc[rows], fd, atol=1e-6 * np.abs(fd).max())
+    assert np.abs(acc[moving]).max() > 0.1 and (acc[~moving] == 0).all()

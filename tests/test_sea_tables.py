@@ -82,7 +82,7 @@ def test_a_following_wall_has_the_orbits_and_their_exact_acceleration(sea):
         np.testing.assert_allclose(vel, r[:, [0, 2]], atol=1e-13)
         eps = 1e-5
         fd = (wall(t + eps, ref)[1] - wall(t - eps, ref)[1]) / (2 * eps)
-        np.testing.assert_allclose(wall.acceleration(t, ref), fd, atol=1e-6 * np.abs(fd).max())
+        np.testing.assert_allclose(wall.particle_acceleration(t, ref), fd, atol=1e-6 * np.abs(fd).max())
 
 
 def test_the_near_field_zones_read_a_many_component_sea_from_a_table():
