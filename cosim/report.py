@@ -31,9 +31,8 @@ import shutil
 import sys
 from pathlib import Path
 
-#: docs/ of the source tree (the history files and VALIDATION.md); absent in an installed copy
-DOCS = Path(__file__).resolve().parent.parent / "docs"
-HISTORY_DIR = DOCS / "validation"
+from cosim.validations.folders import DOCS, HISTORY_DIR
+
 RECORDS = "records.jsonl"
 SERIES = "series"
 

@@ -7,7 +7,7 @@ import math
 import numpy as np
 
 from cosim import refdata
-from cosim.validation import case
+from cosim.validations.registry import case
 from fluid.geometry import set_hydrostatic, tank_with_water
 from fluid.motion import Signal, Translation
 from fluid.particles import Kind

@@ -8,7 +8,7 @@ import numpy as np
 
 from cosim import refdata
 from cosim.study.metrics import spectral_peak
-from cosim.validation import case
+from cosim.validations.registry import case
 from fluid.geometry import assemble, block, set_hydrostatic, tank_walls
 from fluid.motion import Harmonic, Rotation, Tabulated, Translation
 from fluid.particles import Kind

@@ -8,7 +8,7 @@ import math
 import numpy as np
 
 from cosim import refdata
-from cosim.validation import case
+from cosim.validations.registry import case
 from cosim.validations.sloshing import _harmonic_fit, face_pressure
 from cosim.validations.tank_potential import wall_profiles
 from fluid.geometry import assemble, set_hydrostatic
