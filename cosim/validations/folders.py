@@ -7,8 +7,8 @@ importing one another (imports run one way: CLI, then report, then the cases' da
 - ``SCENES``: the cases' scene files (``CASE.toml``) and references (``CASE.reference.json``),
   shipped beside this module;
 - ``DOCS``: ``docs/`` of the source tree (absent in an installed copy);
-- ``HISTORY_DIR``: ``docs/validation/``, each case's history (``CASE_history.md``) and the
-  tables the report shows on a case's page (``trade_tables.md``);
+- ``HISTORY_DIR``: ``docs/validation/``, each case's history (``CASE_history.md``) and its
+  measured trade (``CASE_trade.md``), which the report shows on the case's page;
 - ``TRADE_DIR``: ``docs/validation/trade/CASE/``, the committed ``cosim study`` of a case.
 """
 
