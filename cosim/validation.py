@@ -25,8 +25,10 @@ from __future__ import annotations
 
 import importlib
 import time
+from pathlib import Path
 
 from cosim.errors import InputError
+from cosim.validations.folders import SCENES
 from cosim.validations.judging import judge, lookup, measured, within  # noqa: F401 (this module's API)
 from cosim.validations.registry import _CASES, Case, case  # noqa: F401 (this module's API)
 
@@ -49,6 +51,13 @@ def cases() -> dict[str, Case]:
     for mod in CASE_MODULES:
         importlib.import_module(mod)
     return dict(sorted(_CASES.items()))
+
+
+def case_scenes() -> dict[str, Path | None]:
+    """Each case's scene file, ``cosim/validations/scenes/NAME.toml`` (None where the case has
+    none yet: it builds its set-up in code). A case that is a scene runs, and is re-measured,
+    by the same runner as a user's scene (``cosim run``, ``cosim study``)."""
+    return {name: (SCENES / f"{name}.toml" if (SCENES / f"{name}.toml").exists() else None) for name in cases()}
 
 
 def target_text(c: Case, quick: bool, departure: dict | None = None) -> str:
