@@ -18,7 +18,7 @@ ROOT = Path(__file__).resolve().parents[1]
 #: methods out of ``spec.py`` and ``build.py`` (the scene's public API, changed by others
 #: at the time of writing). The knot may shrink; it may not grow or take in a new module.
 SCENE_KNOT = {f"cosim.scene.{m}" for m in ("build", "checks", "cost", "nearfield", "plausible", "plots", "probes",
-                                          "runner", "setup", "shapes", "spec", "timing", "toml_io")}
+                                          "runner", "setup", "spec", "timing", "toml_io")}
 
 
 def _modules() -> dict[str, Path]:
