@@ -10,7 +10,7 @@ prints, and the curves of ``series`` saved beside them in ``DIR/series/``) it wr
   docstring), the target as stated and what the record was judged against, the measured
   values, pass or fail, the departure from the stated target if any, the plots of ours
   against the reference (``CASE_*.png``, from ``series``), its measured trade (the tables
-  of its docstring's "Measured trade" paragraph, and for the cases of
+  of ``docs/validation/CASE_trade.md``, and for the cases of
   :mod:`cosim.validations.trade` the table and Pareto plot of ``cosim study`` on the case's
   scene, from ``docs/validation/trade/CASE/``) and its history
   (``docs/validation/CASE_history.md``, copied to ``history/`` and included);
@@ -31,9 +31,8 @@ import shutil
 import sys
 from pathlib import Path
 
-#: docs/ of the source tree (the history files and VALIDATION.md); absent in an installed copy
-DOCS = Path(__file__).resolve().parent.parent / "docs"
-HISTORY_DIR = DOCS / "validation"
+from cosim.validations.folders import DOCS, HISTORY_DIR
+
 RECORDS = "records.jsonl"
 SERIES = "series"
 
@@ -248,20 +247,19 @@ def case_setup(fn) -> str:
     return "\n\n".join(out)
 
 
-def case_trade(fn) -> str | None:
-    """The measured trade of a case: its docstring's paragraph that begins "Measured
-    trade", with the tables and the parenthesised notes that follow it, as Markdown."""
-    paras = paragraphs(inspect.getdoc(fn) or "")
-    for i, p in enumerate(paras):
-        if p.startswith("Measured trade"):
-            out = [rst_to_md(p)]
-            for q in paras[i + 1:]:
-                if is_rst_table(q) or q.startswith("("):
-                    out.append(rst_to_md(q))
-                else:
-                    break
-            return "\n\n".join(out)
-    return None
+def trade_file(name: str) -> Path:
+    return HISTORY_DIR / f"{name}_trade.md"
+
+
+def case_trade(name: str) -> str | None:
+    """The measured trade of case ``name``: ``docs/validation/NAME_trade.md`` (tables of
+    error against cost, measured by hand or by a benchmark), without its title; None if the
+    case has none (or docs/ is not here)."""
+    path = trade_file(name)
+    if not path.exists():
+        return None
+    text = path.read_text(encoding="utf-8")
+    return re.sub(r"\A# [^\n]*\n+", "", text).strip() or None
 
 
 def history_file(name: str) -> Path:
@@ -400,7 +398,7 @@ def case_page(rec: dict, case, plots: list[tuple[str, str]], history: str | None
             out += [f"![{title}]({file})", ""]
     else:
         out += ["(no plot: the case returns no series, or they were not saved with these records)", ""]
-    trade = case_trade(case.fn) if case is not None else None
+    trade = case_trade(name)
     if trade:
         out += ["## Measured trade", "", trade, ""]
     study = study_section(name)

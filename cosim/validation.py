@@ -1,11 +1,12 @@
 """Registry of validation cases, run by ``cosim validate NAME``.
 
-A case is a function ``fn(quick: bool) -> dict`` registered with :func:`case`, with the
-target it is held to: ``target`` (the stated target, copied from the target column of
-its row of ``docs/VALIDATION.md``, or declared where it has no row) and ``quick_target``
-(what its coarse variant is judged against, declared). The function returns
-``metrics`` (measured errors and quantities) and ``tolerances`` (what ``passed`` is
-judged against, see :func:`judge`), and, where they apply, ``particles``, ``steps``,
+A case is a function ``fn(quick: bool) -> dict`` registered with :func:`case` (from
+:mod:`cosim.validations.registry`, which the case modules import), with the target it is
+held to: ``target`` (the stated target, copied from the target column of its row of
+``docs/VALIDATION.md``, or declared where it has no row) and ``quick_target`` (what its
+coarse variant is judged against, declared). The function returns ``metrics`` (measured
+errors and quantities) and ``tolerances`` (what ``passed`` is judged against, see
+:func:`~cosim.validations.judging.judge`), and, where they apply, ``particles``, ``steps``,
 ``stated_tolerances`` (the stated target's tolerances where the judged ones differ: a
 quick variant, a departed criterion), ``departure`` (``criterion`` and ``why``: the full
 variant is judged on a criterion that departs from the stated target), ``series`` (curves
@@ -16,18 +17,20 @@ variant and a full one, and adds ``name``, ``quick``, ``target`` (the text of wh
 judged), ``stated_target``, ``stated`` (the stated target with its measured values, where
 the judged tolerances differ from it) and ``wall_s``. ``quick=True`` is the coarse
 variant that CI runs. Cases live in the modules of :mod:`cosim.validations`, imported
-only when a case is listed or run, so ``import cosim`` stays light.
+only when a case is listed or run (by name, :data:`CASE_MODULES`), so ``import cosim``
+stays light; none of them imports this module.
 """
 
 from __future__ import annotations
 
 import importlib
-import math
 import time
-from dataclasses import dataclass
-from typing import Any, Callable
+from pathlib import Path
 
 from cosim.errors import InputError
+from cosim.validations.folders import SCENES
+from cosim.validations.judging import judge, lookup, measured, within  # noqa: F401 (this module's API)
+from cosim.validations.registry import _CASES, Case, case  # noqa: F401 (this module's API)
 
 #: modules that register cases; a new family adds its module here
 CASE_MODULES = ("cosim.validations.catenary", "cosim.validations.cable", "cosim.validations.fluid",
@@ -43,38 +46,6 @@ CASE_MODULES = ("cosim.validations.catenary", "cosim.validations.cable", "cosim.
 VALIDATION_DOC = "docs/VALIDATION.md"
 
 
-@dataclass(frozen=True)
-class Case:
-    name: str
-    description: str
-    fn: Callable[[bool], dict]
-    #: the stated target: the target column of ``row`` in docs/VALIDATION.md, or declared
-    target: str = ""
-    #: what the quick variant is judged against (declared)
-    quick_target: str = ""
-    #: the row of docs/VALIDATION.md the target comes from (None: declared, no row)
-    row: str | None = None
-
-
-_CASES: dict[str, Case] = {}
-
-
-def case(name: str, description: str, *, target: str, quick: str, row: str | None = ""):
-    """Decorator registering ``fn(quick) -> dict`` as validation case ``name``.
-
-    ``target``: the stated target (the target column of the ``row`` of docs/VALIDATION.md,
-    by default the row named ``name``; ``row=None``: no row, the target is declared here);
-    ``quick``: what the quick variant is judged against."""
-
-    def register(fn):
-        if name in _CASES and _CASES[name].fn is not fn:
-            raise ValueError(f"validation case {name!r} registered twice")
-        _CASES[name] = Case(name, description, fn, target, quick, name if row == "" else row)
-        return fn
-
-    return register
-
-
 def cases() -> dict[str, Case]:
     """All registered cases, by name."""
     for mod in CASE_MODULES:
@@ -82,78 +53,11 @@ def cases() -> dict[str, Case]:
     return dict(sorted(_CASES.items()))
 
 
-# ------------------------------------------------------------------------------- judging
-_MISSING = object()
-
-
-def lookup(metrics: dict, key: str) -> Any:
-    """The metric ``key`` of ``metrics``: a key of the dict, or a dotted path into nested
-    dicts (``"l90.odd_symmetry_rel_err"``; a key may itself hold dots, ``"0.1s"``: the
-    longest key that matches comes first). Raises KeyError if there is none."""
-    if key in metrics:
-        return metrics[key]
-    parts = key.split(".")
-    for i in range(len(parts) - 1, 0, -1):
-        head = ".".join(parts[:i])
-        if head in metrics and isinstance(metrics[head], dict):
-            try:
-                return lookup(metrics[head], ".".join(parts[i:]))
-            except KeyError:
-                pass
-    raise KeyError(key)
-
-
-def within(value: Any, bound: Any) -> bool:
-    """Whether a measured ``value`` is within ``bound``:
-
-    - a number b: ``|value| <= b`` (an error or a distance);
-    - ``[lo, hi]``: ``lo <= value <= hi``, None for an open end;
-    - True / False: the value is that boolean (a property: monotone, restoring ...);
-    - a string: the value equals it.
-
-    A list of values is within when each one is; a non-finite value never is."""
-    if isinstance(value, (list, tuple)):
-        return len(value) > 0 and all(within(v, bound) for v in value)
-    if isinstance(bound, bool):
-        return type(value).__name__ in ("bool", "bool_") and bool(value) is bound
-    if isinstance(bound, str):
-        return value == bound
-    if type(value).__name__ in ("bool", "bool_", "str") or value is None:
-        return False
-    value = float(value)
-    if not math.isfinite(value):
-        return False
-    if isinstance(bound, (list, tuple)):
-        lo, hi = bound
-        return (lo is None or value >= lo) and (hi is None or value <= hi)
-    return abs(value) <= bound
-
-
-def judge(metrics: dict, tolerances: dict) -> tuple[bool, list[str]]:
-    """(passed, the tolerance keys not met): every metric named in ``tolerances`` is
-    within its bound (:func:`within`); a metric that is missing is not. No tolerance at
-    all passes nothing."""
-    out = []
-    for key, bound in tolerances.items():
-        try:
-            v = lookup(metrics, key)
-        except KeyError:
-            out.append(key)
-            continue
-        if not within(v, bound):
-            out.append(key)
-    return (bool(tolerances) and not out), out
-
-
-def measured(metrics: dict, tolerances: dict) -> dict:
-    """The values of the metrics ``tolerances`` names (None where a metric is missing)."""
-    out = {}
-    for key in tolerances:
-        try:
-            out[key] = lookup(metrics, key)
-        except KeyError:
-            out[key] = None
-    return out
+def case_scenes() -> dict[str, Path | None]:
+    """Each case's scene file, ``cosim/validations/scenes/NAME.toml`` (None where the case has
+    none yet: it builds its set-up in code). A case that is a scene runs, and is re-measured,
+    by the same runner as a user's scene (``cosim run``, ``cosim study``)."""
+    return {name: (SCENES / f"{name}.toml" if (SCENES / f"{name}.toml").exists() else None) for name in cases()}
 
 
 def target_text(c: Case, quick: bool, departure: dict | None = None) -> str:

@@ -152,17 +152,22 @@ def test_a_departure_carries_the_stated_target_with_its_measured_value(monkeypat
     assert r["target"].startswith("full: the error after a fitted offset (departs from declared")
 
 
-def test_trade_tables_and_set_up_come_from_the_docstrings():
+def test_trade_tables_come_from_docs_and_the_set_up_from_the_docstring():
     known = validation.cases()
-    trade = report.case_trade(known["westergaard"].fn)
+    trade = report.case_trade("westergaard")
     assert trade.startswith("Measured trade") and "| dx [m] |" in trade and "| 0.025 |" in trade
-    assert "| 10 | 758 | 3915 |" in report.case_trade(known["dambreak-2d"].fn)
+    assert "| 10 | 758 | 3915 |" in report.case_trade("dambreak-2d")
     # "see :func:`run_spheric10`": its first paragraph is the set-up
     assert "SPHERIC benchmark 10" in report.case_setup(known["sloshing-spheric10"].fn)
-    # the current trade stays in the docstring, the history's tables move out
-    trade = report.case_trade(known["sloshing-spheric10"].fn)
+    # the current trade is the case's trade file, the history's tables stay in the history
+    trade = report.case_trade("sloshing-spheric10")
     assert "| 3.1, r2 | 320493 | 2042 |" in trade and "0.0186" not in trade
-    assert "| 0.025 | 1118 | 47539 | +0.0084 |" in report.case_trade(known["sloshing-frequency"].fn)
+    assert "| 0.025 | 1118 | 47539 | +0.0084 |" in report.case_trade("sloshing-frequency")
+    assert report.case_trade("catenary-limits") is None
+    # every trade file belongs to a case, and the cases no longer carry the tables themselves
+    files = sorted(report.HISTORY_DIR.glob("*_trade.md"))
+    assert len(files) >= 6 and {f.name[:-len("_trade.md")] for f in files} <= set(known)
+    assert not [n for n, c in known.items() if "=====" in (c.fn.__doc__ or "") and "Measured trade (" in c.fn.__doc__]
     # a line with an empty first cell, or with nothing but its first cell, continues the row above
     header, rows = report.rst_table("=====  ======\na      b\n       (b)\n=====  ======\n1      2\n       3\nx      y\n"
                                     "z\n=====  ======")

@@ -23,6 +23,9 @@ from cosim.scene import plausible
 from cosim.scene.fields import SceneError, is_name
 from cosim.scene.seas import IncidentSea
 from cosim.scene.shapes import RigidBody
+from cosim.scene.shapes import corners as _corners
+from cosim.scene.shapes import hull as _hull
+from cosim.scene.shapes import rotation as _rotation
 from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, CylinderTank, Earthquake, Flap, Flume, ArchRib,
                               ElasticPlate, GroundMotion, InclinedTank, IrregularWaves, NearField, NoFluid,
                               PaddleRecord, Piston, PolygonTank, Potential, RegularWaves, Roll, TableMotion, Tank)
@@ -444,22 +447,6 @@ def _check_plate(s, dim, b, key) -> None:
                              f"floor at z = {floor:g} m; give base z = {floor:g}")
 
 
-def _corners(b, dim):
-    """The corners [m] of a builder body's bounding box, turned by its ``euler``, as world
-    points (x, y, z); a 2-D body is 1 m thick along y."""
-    half = b.half_size(dim)
-    h3 = half if dim == 3 else [half[0], 0.5, half[1]]
-    c = list(b.pos) if dim == 3 else [b.pos[0], 0.0, b.pos[-1]]
-    r = _rotation(b.euler) if b.euler is not None else [[1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0]]
-    out = []
-    for sx in (-1, 1):
-        for sy in (-1, 1):
-            for sz in (-1, 1):
-                q = (sx * h3[0], sy * h3[1], sz * h3[2])
-                out.append([c[k] + sum(r[k][j] * q[j] for j in range(3)) for k in range(3)])
-    return out
-
-
 def _domain_box(d, dim, s=None):
     """Lower and upper corners [m] of the domain's inner box (the walls' faces); a near
     field's as chosen for the scene ``s`` (:func:`cosim.scene.nearfield.box_for`)."""
@@ -576,20 +563,6 @@ def _check_moorings(s, dim, mj):
         labels[label] = i
     for i, ln in enumerate(m.lines):
         _check_line_start(s, dim, ln, f"moorings.lines[{i}]", builders.get(ln.fairlead.split(".")[0]))
-
-
-def _rotation(euler):
-    """MuJoCo's rotation of the Euler angles [deg] (its default sequence, intrinsic x-y-z)."""
-    a, b, c = (math.radians(x) for x in euler)
-    ca, sa, cb, sb, cc, sc = math.cos(a), math.sin(a), math.cos(b), math.sin(b), math.cos(c), math.sin(c)
-    rx = [[1, 0, 0], [0, ca, -sa], [0, sa, ca]]
-    ry = [[cb, 0, sb], [0, 1, 0], [-sb, 0, cb]]
-    rz = [[cc, -sc, 0], [sc, cc, 0], [0, 0, 1]]
-
-    def mul(p, q):
-        return [[sum(p[i][k] * q[k][j] for k in range(3)) for j in range(3)] for i in range(3)]
-
-    return mul(mul(rx, ry), rz)
 
 
 def _check_line_start(s, dim, ln, key, body) -> None:
@@ -1199,27 +1172,6 @@ def _check_walls(s, dim) -> None:
             if _sd_polygon(hull, q) < -tol:
                 raise SceneError(f"bodies[{i}].{_pos_key(b)}", f"the {wall}'s corner {_pt(q)} m lies inside the body "
                                  f"({_bounds(b, dim, False)}){_turned(b)}; {fix}")
-
-
-def _hull(points) -> list[tuple[float, float]]:
-    """The convex hull of 2-D points, counter-clockwise (Andrew's monotone chain)."""
-    pts = sorted(set((float(x), float(z)) for x, z in points))
-    if len(pts) < 3:
-        return pts
-
-    def cross(o, a, b):
-        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
-
-    lower, upper = [], []
-    for p in pts:
-        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
-            lower.pop()
-        lower.append(p)
-    for p in reversed(pts):
-        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
-            upper.pop()
-        upper.append(p)
-    return lower[:-1] + upper[:-1]
 
 
 def potential_depth(s) -> float:

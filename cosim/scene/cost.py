@@ -329,7 +329,7 @@ def _fairlead_start(scene, b, offset):
     """Where a builder body's fairlead starts [m] (a floating body's at its computed height;
     a 2-D body's frame stays the world's); None where the body cannot float."""
     from cosim.scene.build import water_level
-    from cosim.scene.checks import _rotation
+    from cosim.scene.shapes import rotation as _rotation
     from cosim.scene.placement import floating_height
 
     from cosim.errors import InputError

@@ -267,7 +267,7 @@ def _check_paddle(s, dim: int) -> None:
 # ------------------------------------------------------------------------ lines
 def check_lines(s, dim: int, mj) -> None:
     """Each line's weight against its mass, and the strain an elastic line starts at."""
-    from cosim.scene.checks import _rotation
+    from cosim.scene.shapes import rotation as _rotation
 
     m = s.moorings
     if m is None:

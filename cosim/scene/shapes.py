@@ -32,10 +32,59 @@ import numpy as np
 from cosim.scene.fields import SceneError, Spec
 
 
-def _turn(euler):
-    from cosim.scene.checks import _rotation
+def rotation(euler):
+    """MuJoCo's rotation of the Euler angles [deg] (its default sequence, intrinsic x-y-z)."""
+    a, b, c = (math.radians(x) for x in euler)
+    ca, sa, cb, sb, cc, sc = math.cos(a), math.sin(a), math.cos(b), math.sin(b), math.cos(c), math.sin(c)
+    rx = [[1, 0, 0], [0, ca, -sa], [0, sa, ca]]
+    ry = [[cb, 0, sb], [0, 1, 0], [-sb, 0, cb]]
+    rz = [[cc, -sc, 0], [sc, cc, 0], [0, 0, 1]]
 
-    return _rotation(euler) if euler is not None else [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
+    def mul(p, q):
+        return [[sum(p[i][k] * q[k][j] for k in range(3)) for j in range(3)] for i in range(3)]
+
+    return mul(mul(rx, ry), rz)
+
+
+def corners(b, dim):
+    """The corners [m] of a builder body's bounding box, turned by its ``euler``, as world
+    points (x, y, z); a 2-D body is 1 m thick along y."""
+    half = b.half_size(dim)
+    h3 = half if dim == 3 else [half[0], 0.5, half[1]]
+    c = list(b.pos) if dim == 3 else [b.pos[0], 0.0, b.pos[-1]]
+    r = rotation(b.euler) if b.euler is not None else [[1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0]]
+    out = []
+    for sx in (-1, 1):
+        for sy in (-1, 1):
+            for sz in (-1, 1):
+                q = (sx * h3[0], sy * h3[1], sz * h3[2])
+                out.append([c[k] + sum(r[k][j] * q[j] for j in range(3)) for k in range(3)])
+    return out
+
+
+def hull(points) -> list[tuple[float, float]]:
+    """The convex hull of 2-D points, counter-clockwise (Andrew's monotone chain)."""
+    pts = sorted(set((float(x), float(z)) for x, z in points))
+    if len(pts) < 3:
+        return pts
+
+    def cross(o, a, b):
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+    lower, upper = [], []
+    for p in pts:
+        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
+            lower.pop()
+        lower.append(p)
+    for p in reversed(pts):
+        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
+            upper.pop()
+        upper.append(p)
+    return lower[:-1] + upper[:-1]
+
+
+def _turn(euler):
+    return rotation(euler) if euler is not None else [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
 
 
 class Shape(Spec):
@@ -121,10 +170,8 @@ class Shape(Spec):
         if floating:
             return ("box", c, self.extent(dim)[:dim - 1])
         if getattr(self, "euler", None) is not None:
-            from cosim.scene.checks import _corners, _hull
-
             if dim == 2:
-                return ("hull", _hull([(q[0], q[2]) for q in _corners(self, dim)]))
+                return ("hull", hull([(q[0], q[2]) for q in corners(self, dim)]))
             return ("obb", c, _turn(self.euler), self.half_size(3))
         return ("box", c, self.extent(dim))
 

@@ -48,7 +48,7 @@ import numpy as np
 
 from cosim import refdata
 from cosim.errors import InputError
-from cosim.validation import case
+from cosim.validations.registry import case
 
 SPAN, RISE, LEVEL = 140.0, 23.333, 15.56  # m, Wang et al. 2022, §4
 C0_PAPER = math.sqrt(7 * 2.8e6 / 1000.0)  # m/s: the paper's B = 2.8e6 Pa, gamma = 7, rho0 = 1000 kg/m^3

@@ -16,7 +16,7 @@ import math
 import numpy as np
 from scipy.optimize import fsolve
 
-from cosim.validation import case
+from cosim.validations.registry import case
 from moorings.sph_cable import G_STANDARD, SPHCable, catenary_points
 
 

@@ -9,7 +9,7 @@ import math
 
 import numpy as np
 
-from cosim.validation import case
+from cosim.validations.registry import case
 from moorings.catenary import (
     FULLY_LIFTED,
     PARTLY_LIFTED,

@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.optimize import brentq
 
-from cosim.validation import case
+from cosim.validations.registry import case
 
 RHO, G = 1000.0, 9.81
 # a 2-D box (1 m thick) held by two catenary lines from its lower corners

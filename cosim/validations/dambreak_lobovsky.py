@@ -11,7 +11,7 @@ import time
 
 import numpy as np
 
-from cosim.validation import case
+from cosim.validations.registry import case
 
 DATASET = "dambreak_lobovsky2014"
 

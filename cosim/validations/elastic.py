@@ -8,7 +8,7 @@ import time
 
 import numpy as np
 
-from cosim.validation import case
+from cosim.validations.registry import case
 
 DATASET = "dambreak_elastic_obstacle_walhorn_idelsohn"
 #: the four published curves of the plate's upper left corner (refdata SOURCE.txt), key -> label

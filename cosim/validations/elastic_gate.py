@@ -9,7 +9,7 @@ import time
 
 import numpy as np
 
-from cosim.validation import case
+from cosim.validations.registry import case
 
 DATASET = "elastic_gate_antoci2007"
 

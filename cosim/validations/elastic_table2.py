@@ -43,7 +43,7 @@ from pathlib import Path
 
 import numpy as np
 
-from cosim.validation import case
+from cosim.validations.registry import case
 
 SCENE = Path(__file__).with_name("scenes") / "elastic-table2.toml"  #: Test 1
 L_COL, B, H_S, RHO_S = 0.146, 0.012, 0.08, 2500.0  #: column width, structure thickness and height [m], density

@@ -20,7 +20,7 @@ import math
 
 import numpy as np
 
-from cosim.validation import case
+from cosim.validations.registry import case
 
 RHO, G = 1000.0, 9.81
 

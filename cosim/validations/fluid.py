@@ -7,7 +7,7 @@ import math
 import numpy as np
 
 from cosim import refdata
-from cosim.validation import case
+from cosim.validations.registry import case
 from fluid.geometry import set_hydrostatic, tank_with_water
 from fluid.motion import Signal, Translation
 from fluid.particles import Kind
@@ -427,18 +427,7 @@ def dambreak_2d(quick: bool) -> dict:
     about 0.3; the measured trade (``python benchmarks/dambreak_front.py --what resolution
     --fine``): docs/validation/dambreak-2d_history.md.
 
-    Measured trade (error and cost; T_end = 7, tank 12 a; wall time of one process;
-    ``python benchmarks/dambreak_front.py --what resolution --fine``):
-
-    ====  =========  =====  ======  ==============  ==============  =======  ======  =======
-    n_a   particles  steps  wall s  as measured,    as measured,    fitted   judged  H, 1st
-                                    Fig. 3 (T<=7)   Table 2         offset   RMS     half
-    ====  =========  =====  ======  ==============  ==============  =======  ======  =======
-    10    758        3915   3       7.8 %           5.8 %           0.100    5.2 %*  2.6 %
-    20    1898       7705   19      9.0 %           9.8 %           0.205    2.0 %   2.0 %
-    40    5378       15262  58      11.8 %          12.1 %          0.255    2.2 %   1.2 %
-    80    17138      30425  367     13.2 %          13.2 %          0.285    2.6 %   1.2 %
-    ====  =========  =====  ======  ==============  ==============  =======  ======  =======
+    Measured trade: ``docs/validation/dambreak-2d_trade.md`` (on the case's report page).
     """
     out = run_dambreak(20 if quick else 40)
     out["stated_tolerances"] = {"front_rms_rel_err_mm1952": 0.05, "front_rms_rel_err_mm1952_table2": 0.05}

@@ -29,7 +29,7 @@ import numpy as np
 from scipy import optimize, special
 
 from cosim.errors import InputError
-from cosim.validation import case
+from cosim.validations.registry import case
 from cosim.scene.setup import settings
 from cosim.validations import forced_sloshing as fs
 from cosim.validations.sloshing import _moving_tank, face_pressure

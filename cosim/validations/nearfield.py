@@ -19,7 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
-from cosim.validation import case
+from cosim.validations.registry import case
 from cosim.validations.wave_propagation import harmonics
 from cosim.validations.waves import G
 

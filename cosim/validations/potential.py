@@ -30,7 +30,7 @@ import math
 
 import numpy as np
 
-from cosim.validation import case
+from cosim.validations.registry import case
 
 RHO, G = 1000.0, 9.81
 #: panel size of the full hemisphere case, in radii (measured: 0.2 a, 3.7 % from Hulme; 0.1 a, 1.7 %)

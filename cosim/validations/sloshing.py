@@ -8,7 +8,7 @@ import numpy as np
 
 from cosim import refdata
 from cosim.study.metrics import spectral_peak
-from cosim.validation import case
+from cosim.validations.registry import case
 from fluid.geometry import assemble, block, set_hydrostatic, tank_walls
 from fluid.motion import Harmonic, Rotation, Tabulated, Translation
 from fluid.particles import Kind
@@ -317,23 +317,7 @@ def westergaard(quick: bool) -> dict:
     7/8 parabola 0.875); the compressible series with c0 = 1430 m/s differs from it by
     0.4 %.
 
-    Measured trade (``run_westergaard(dx, walls="adami")``, quick periods at 0.10 m; RMS
-    of k_p over the wall rows below the surface, vs exact; NUMBA_NUM_THREADS=1):
-
-    ======  ==========  =====  ==========  ==========  ==========  =========
-    dx [m]  particles   steps  raw         Eq. 15      Eq. 15 face base k_p
-    ======  ==========  =====  ==========  ==========  ==========  =========
-    0.10    498         4560   0.062       0.077       0.040       0.740
-    0.025   5538        30400  0.018       0.0165      0.009       0.737
-    ======  ==========  =====  ==========  ==========  ==========  =========
-
-    (and at dx = 0.05 m, benchmarks/sloshing_trade.py: raw 0.031, Eq. 15 0.038, face
-    0.017; c0 = 700 / 350 m/s there: raw 0.040 / 0.078, face 0.021 / 0.056: the SPH
-    follows the compressible solution of its own c0, so c0 may drop to ~700 m/s while
-    4H/c0 < Tp/5.) Both targets are met from dx = 0.05 m on, the second judged on Eq. 15
-    carried to the wall face (a declared departure, :data:`WESTERGAARD_DEPARTURE`; plain
-    Eq. 15, the stated target's, stays in the record: 0.0165 at 0.025 m, met; 0.038 at
-    0.05 m, not); the full run (0.025 m) takes 91 s.
+    Measured trade: ``docs/validation/westergaard_trade.md`` (on the case's report page).
 
     What limits the error: (1) plain Eq. 15 reports the pressure at the mean position of
     the fluid it averages, ~1.1 dx into the water, where the impulsive pressure is lower
@@ -405,18 +389,7 @@ def westergaard_3d(quick: bool) -> dict:
     walls differ from it by less than the resolution's own error (the quick slice, the notes:
     docs/validation/westergaard-3d_history.md).
 
-    Measured trade (``python benchmarks/tanks_3d_trade.py vertical --dx DX``; RMS of k_p
-    against the exact series of this tank; "mid" the mid-plane, "side" next to the side walls;
-    "diff" their largest row-by-row difference; base: face k_p at the deepest row, exact 0.727):
-
-    ======  =======  =========  =====  =======  =====  ======  =====  =====  =====  =====  =====
-    dx [m]  periods  particles  steps  CPU [s]  raw    Eq. 15  face   raw    face   diff   base
-                                                mid    mid     mid    side   side
-    ======  =======  =========  =====  =======  =====  ======  =====  =====  =====  =====  =====
-    0.10    1 + 2    8868       4560   95       0.062  0.072   0.041  0.063  0.045  0.010  0.739
-    0.075   1 + 1    16462      4080   136      0.027  0.067   0.017  0.028  0.019  0.009  0.730
-    0.05    1 + 1    44628      6080   566      0.031  0.035   0.018  0.031  0.020  0.008  0.738
-    ======  =======  =========  =====  =======  =====  ======  =====  =====  =====  =====  =====
+    Measured trade: ``docs/validation/westergaard-3d_trade.md`` (on the case's report page).
     """
     if not quick:
         out = run_westergaard(0.05, dim=3, width=1.0, periods_skip=1, periods_fit=1, walls="adami")
@@ -704,18 +677,7 @@ def sloshing_frequency(quick: bool) -> dict:
     stiffness; the two levers are needed together. The measured trade and the search:
     docs/validation/sloshing-frequency_history.md.
 
-    Measured trade (``run_sloshing_frequency(dx, ..., h_coef=2.0, walls="adami")``, one
-    thread; the last two rows: ``benchmarks/sloshing_trade.py --cases sloshing-frequency``):
-
-    ======  =========  ======  ===============  =============================
-    dx [m]  particles  steps   f1 / linear - 1  run
-    ======  =========  ======  ===============  =============================
-    0.05    368        8160    -0.0095          quick (c0_factor 10), 5 s
-    0.0333  690        12240   +0.0037          quick settings, 9 s
-    0.025   1118       47539   +0.0084          full (c0_factor 20), 45 s
-    0.05    368        29480   -0.0001          c0_factor 20, 8 free periods, 15 s
-    0.0125  3818       116160  +0.0103          c0_factor 20, 8 free periods, 276 s
-    ======  =========  ======  ===============  =============================
+    Measured trade: ``docs/validation/sloshing-frequency_trade.md`` (on the case's report page).
     """
     if quick:
         return run_sloshing_frequency(0.05, cycles_forced=2, cycles_free=4, c0_factor=10.0, **SLOSHING_2D)
@@ -750,18 +712,7 @@ def sloshing_spheric10(quick: bool) -> dict:
     (:func:`face_pressure` reads a film or splash as if it covered the wall). The measured table,
     the convergence trade and the history: docs/validation/sloshing-spheric10_history.md.
 
-    Measured trade (convergence, read with the face probe; ``run_spheric10(dx, **kw)``, 8 s,
-    one thread; ratios to the measured record per impact 1-4; dx in mm, h = sqrt(2) dx ("r2")
-    or 2 dx; "5 ms" the largest 5 ms mean):
-
-    =========  ======  ======  ===================  ===================  ===================  ===================
-    dx, h      steps   wall s  peak (one sample)    5 ms mean            20 ms mean           impulse
-    =========  ======  ======  ===================  ===================  ===================  ===================
-    6.2, r2    160277  372     1.00 3.00 7.15 3.78  .                    0.82 1.71 2.81 1.73  0.91 1.89 2.03 1.94
-    3.1, r2    320493  2042    3.61 5.76 6.57 1.28  2.32 2.13 2.48 1.09  1.05 1.02 2.44 1.43  0.93 1.46 1.54 1.54
-    3.1, 2 dx  241091  2119    2.84 2.09 2.21 3.07  2.40 1.41 1.88 2.20  1.05 1.03 1.70 1.82  0.92 1.53 1.63 1.93
-    2.0, r2    250105  3550    5.80 4.13            2.94 1.72            1.27 1.09            0.92 1.21
-    =========  ======  ======  ===================  ===================  ===================  ===================
+    Measured trade: ``docs/validation/sloshing-spheric10_trade.md`` (on the case's report page).
     """
     if quick:  # the first swing only (no impact): 5 particle rows over the depth
         out = run_spheric10(0.0186, t_end=1.3, sample_dt=0.005)

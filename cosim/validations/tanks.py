@@ -8,7 +8,7 @@ import math
 import numpy as np
 
 from cosim import refdata
-from cosim.validation import case
+from cosim.validations.registry import case
 from cosim.validations.sloshing import _harmonic_fit, face_pressure
 from cosim.validations.tank_potential import wall_profiles
 from fluid.geometry import assemble, set_hydrostatic
@@ -258,23 +258,7 @@ def inclined_wall_3d(quick: bool) -> dict:
     inclined --dx DX --angle BETA``), the quick variant and the figures:
     docs/validation/inclined-wall-3d_history.md.
 
-    Measured trade (``python benchmarks/tanks_3d_trade.py inclined --dx DX --angle BETA``, one
-    thread; RMS of k_p up the inclined face on the mid-plane against Chwang; "tank": against
-    this tank's exact pressure; left: the vertical side; 2-D: the section, same settings):
-
-    ======  =====  =======  =========  =====  =======  ======  ======  ======  ======
-    dx [m]  beta   periods  particles  steps  CPU [s]  Chwang  tank    left    2-D
-    ======  =====  =======  =========  =====  =======  ======  ======  ======  ======
-    0.10    15     1 + 1    5094       3040   56       0.050   0.053   0.060   0.045
-    0.10    30     1 + 1    5331       3040   43       0.022   0.021   0.060   0.022
-    0.10    45     1 + 1    5694       3040   46       0.010   0.010   0.061   0.0065
-    0.075   15     1 + 1    7821       4080   80       0.037   0.034   0.021   0.038
-    0.075   30     1 + 1    8184       4080   82       0.029   0.026   0.021   0.029
-    0.075   45     1 + 1    8727       4080   88       0.0053  0.0054  0.021   0.0084
-    0.05    15     1 + 1    15501      6080   246      0.038   0.034   0.031   0.036
-    0.05    30     1 + 1    16251      6080   246      0.025   0.026   0.031   0.023
-    0.05    45     1 + 1    17322      6080   259      0.0078  0.0098  0.030   0.0044
-    ======  =====  =======  =========  =====  =======  ======  ======  ======  ======
+    Measured trade: ``docs/validation/inclined-wall-3d_trade.md`` (on the case's report page).
     """
     if quick:
         settings = dict(periods_skip=1, periods_fit=1, c0=700.0, walls="adami")

@@ -18,15 +18,12 @@ says what is compared, so that its errors are read for what they are.
 from __future__ import annotations
 
 import shlex
+import subprocess
 import sys
 from dataclasses import dataclass
 from pathlib import Path
 
-from cosim.report import HISTORY_DIR
-
-SCENES = Path(__file__).with_name("scenes")
-#: where the committed studies live (the report reads them from here)
-TRADE_DIR = HISTORY_DIR / "trade"
+from cosim.validations.folders import SCENES, TRADE_DIR
 
 
 @dataclass(frozen=True)
@@ -90,8 +87,6 @@ def study_dir(case: str) -> Path:
 def main(argv=None) -> int:
     import argparse
 
-    from cosim.cli import main as cosim_main
-
     ap = argparse.ArgumentParser(prog="python -m cosim.validations.trade", description=__doc__.split("\n\n")[0])
     ap.add_argument("case", choices=sorted(STUDIES))
     ap.add_argument("--out", help="study folder (default out/trade_CASE)")
@@ -100,7 +95,8 @@ def main(argv=None) -> int:
     s = STUDIES[args.case]
     argv = s.argv(args.out or f"out/trade_{s.case}") + (["--serial"] if args.serial else [])
     print(s.command(args.out), flush=True)
-    return cosim_main(argv)
+    # the CLI in its own process: this data module sits below the CLI and never imports it
+    return subprocess.run([sys.executable, "-m", "cosim.cli", *argv]).returncode
 
 
 if __name__ == "__main__":

@@ -18,7 +18,7 @@ import time
 
 import numpy as np
 
-from cosim.validation import case
+from cosim.validations.registry import case
 from cosim.validations.waves import G
 
 

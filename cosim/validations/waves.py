@@ -10,7 +10,8 @@ import numpy as np
 from scipy.optimize import brentq
 
 from cosim import refdata
-from cosim.validation import case, judge
+from cosim.validations.judging import judge
+from cosim.validations.registry import case
 
 RHO, G = 1000.0, 9.81
 

@@ -35,7 +35,7 @@ from pathlib import Path
 
 import numpy as np
 
-from cosim.validation import case
+from cosim.validations.registry import case
 
 SCENE = Path(__file__).with_name("scenes") / "wind-turbine-base.toml"
 MODELS = ("catenary", "fmu", "moordyn", "sph-cable")
