@@ -2,12 +2,12 @@
 heights and phases across the box against the sea's, the mean level's drift, the cost.
 
     python benchmarks/nearfield_box.py --dx 0.03 --periods 20 --zone 0.5 --length 1.8
-    python benchmarks/nearfield_box.py --dx 0.03 --set mls_every=150
+    python benchmarks/nearfield_box.py --dx 0.03 --set mls_every=0
 
 The sea: d = 0.3 m, T = 1.2 s, H = 6 cm (the nearfield-waves case's), or a JONSWAP sea of
 Hs = 4 cm (``--sea jonswap``); zone and length in wavelengths; ``--set KEY=VALUE``:
-FluidConfig settings on top of the waves set-up. Prints one JSON object; the figures
-measured are in docs/validation/nearfield.md.
+FluidConfig settings on top of the near field's set-up (``fluid.solver.NEAR_FIELD``).
+Prints one JSON object; the figures measured are in docs/validation/nearfield.md.
 """
 
 from __future__ import annotations
@@ -22,7 +22,7 @@ from cosim.validations import nearfield as nf
 
 
 def main(argv=None) -> None:
-    from fluid.solver import TRAVELLING_WAVES
+    from fluid.solver import NEAR_FIELD
     from fluid.waves import RegularWave
 
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
@@ -36,7 +36,7 @@ def main(argv=None) -> None:
     p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE", help="a FluidConfig setting")
     a = p.parse_args(argv)
     logging.basicConfig(level=logging.INFO, format="%(message)s")  # the run's progress
-    cfg = dict(TRAVELLING_WAVES)
+    cfg = dict(NEAR_FIELD)
     for kv in a.set:
         k, v = kv.split("=", 1)
         cfg[k] = int(v) if v.lstrip("-").isdigit() else float(v)

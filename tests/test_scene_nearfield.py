@@ -210,3 +210,17 @@ motion = ["base"]
     assert summary["near_field"]["y_m"] == pytest.approx(list(c.y))
     assert summary["estimate"]["particles"] == pytest.approx(summary["particles"], rel=0.05)
     assert all(np.isfinite(v).all() for v in res.series.values())
+
+
+def test_a_near_field_re_initialises_its_density(tmp_path):
+    """The near field's set-up (fluid.solver.NEAR_FIELD): the waves set-up and the density
+    re-initialised every 150 steps, which holds the box's mean level; a scene's own
+    mls_every overrides it."""
+    from cosim.scene.setup import choose
+    from fluid.solver import NEAR_FIELD, TRAVELLING_WAVES
+
+    near = choose(_scene(tmp_path))
+    assert near.name == "waves" and near.config["mls_every"] == NEAR_FIELD["mls_every"] == 150
+    assert "near field" in near.reason
+    assert all(near.config[k] == v for k, v in TRAVELLING_WAVES.items())
+    assert choose(_scene(tmp_path, SCENE, "fluid.mls_every=0")).config["mls_every"] == 0

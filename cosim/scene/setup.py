@@ -10,7 +10,10 @@ set-up            picked when the scene has                 FluidConfig settings
 ================  ========================================  =========================================
 ``waves``         waves (a wavemaker, a near field's sea)   ``TRAVELLING_WAVES``: h = 2 dx, walls
                                                             "adami", diffusion faded under the
-                                                            surface, slip walls, alpha = 0.002
+                                                            surface, slip walls, alpha = 0.002;
+                                                            a near field: ``NEAR_FIELD`` (the
+                                                            same, the density re-initialised
+                                                            every 150 steps)
 ``sloshing``      a moving tank (``base_motion``)           2-D: ``SLOSHING_2D`` (h = 2 dx, walls
                                                             "adami"); 3-D: the same and the
                                                             diffusion faded under the surface
@@ -38,7 +41,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from cosim.scene.spec import PolygonTank, Tank
+from cosim.scene.spec import NearField, PolygonTank, Tank
 
 #: FluidConfig fields that the SPH scene class can set
 CONFIG_FIELDS = ("c0", "c0_factor", "u_max", "h_coef", "kernel", "walls", "alpha", "alpha_wall", "nu",
@@ -109,6 +112,11 @@ def choose(scene) -> Setup:
     name = _auto(scene) if sph.setup == "auto" else sph.setup
     reason = _REASONS[name] if sph.setup == "auto" else f"asked for (fluid.setup = {name!r})"
     cfg = settings(name, scene.world.dim)
+    if name == "waves" and isinstance(scene.domain, NearField):
+        from fluid.solver import NEAR_FIELD
+
+        cfg.update(NEAR_FIELD)
+        reason += "; a near field: the density re-initialised every 150 steps, which holds its mean level"
     cfg["rho0"] = sph.rho0
     overridden = []
     for key in CONFIG_FIELDS:

@@ -149,9 +149,9 @@ def nearfield_case(h_over_dx, periods: float, jonswap_periods: float, settle: fl
     """The case's runs at each ``H / dx``: linear and Stokes-2 regular waves ``periods``
     periods, the JONSWAP sea ``jonswap_periods`` peak periods (at the same dx), in a
     box 1.8 wavelengths long with zones half a wavelength wide, as
-    :func:`fluid.nearfield.choose_box` gives a sea without bodies (``fluid.solver.
-    TRAVELLING_WAVES``); returns (metrics, series)."""
-    from fluid.solver import TRAVELLING_WAVES
+    :func:`fluid.nearfield.choose_box` gives a sea without bodies, the near field's set-up
+    (``fluid.solver.NEAR_FIELD``); returns (metrics, series)."""
+    from fluid.solver import NEAR_FIELD
     from fluid.waves import RegularWave
 
     wl = RegularWave(NF_HEIGHT, NF_PERIOD, NF_DEPTH, level=NF_DEPTH, g=G).wavelength
@@ -161,8 +161,7 @@ def nearfield_case(h_over_dx, periods: float, jonswap_periods: float, settle: fl
         for kind in ("linear", "stokes2", "jonswap"):
             n = jonswap_periods if kind == "jonswap" else periods
             dx = NF_HEIGHT / r
-            run = run_box(_sea(kind, n * NF_PERIOD), dx, length, zone, n * NF_PERIOD, settle=settle,
-                          **TRAVELLING_WAVES)
+            run = run_box(_sea(kind, n * NF_PERIOD), dx, length, zone, n * NF_PERIOD, settle=settle, **NEAR_FIELD)
             key = f"{kind}_{r}"
             m = {"drift_over_depth": level_drift(run, NF_PERIOD, 2.0 * NF_PERIOD) / NF_DEPTH,
                  "settled_level_over_depth": run["settled_level_m"] / NF_DEPTH,
