@@ -83,6 +83,7 @@ def _close(d, key_a, key_b):
     return np.abs(a - b).max() <= RTOL * scale, f"{key_a}: {np.abs(a - b).max():.3g} against scale {scale:.3g}"
 
 
+@pytest.mark.long  # the simulator's module fixture: ~40 s of CPU
 @requires_numba_cuda
 @pytest.mark.parametrize("case", CASES)
 @pytest.mark.parametrize("stage", STAGES)
@@ -101,6 +102,7 @@ def test_gpu_matches_cpu_to_round_off(sim, case, stage):
     assert np.array_equal(sim[f"{p}.cpu.removed"], sim[f"{p}.gpu.removed"])
 
 
+@pytest.mark.long  # the simulator's module fixture: ~40 s of CPU
 @requires_numba_cuda
 @pytest.mark.parametrize("case", CASES)
 def test_loads_that_moved_the_fluid_match(sim, case):
@@ -114,6 +116,7 @@ def test_loads_that_moved_the_fluid_match(sim, case):
     assert np.abs(sim[f"{case}.step10.cpu_step_F"]).max() > 0.0
 
 
+@pytest.mark.long  # the simulator's module fixture: ~40 s of CPU
 @requires_numba_cuda
 def test_the_cases_exercise_what_they_claim(sim):
     """The simulator ran (the GPU with ``COSIM_CUDA_TESTS=gpu``); the fluid moved; the
@@ -126,6 +129,7 @@ def test_the_cases_exercise_what_they_claim(sim):
     assert np.abs(sim["body2d.step10.gpu.F"][1]).max() > 0.1  # [N] on the body (group 1)
 
 
+@pytest.mark.long  # the simulator's module fixture: ~40 s of CPU
 @requires_numba_cuda
 def test_nan_guard_stops_with_the_cpu_message(sim):
     msg = str(sim["nan.gpu"])
@@ -161,6 +165,7 @@ def _table(dim: int, saved: tuple, xsph: bool) -> int:
     return state + saved_b + scratch + rates + sort
 
 
+@pytest.mark.long  # the simulator's module fixture: ~40 s of CPU
 @requires_numba_cuda
 def test_device_memory_per_particle(sim):
     """Bytes per particle the device state allocated, against the table of its arrays: 2-D
@@ -174,6 +179,7 @@ def test_device_memory_per_particle(sim):
     assert sim["col3d.bytes_per_particle"] == _table(3, ("pos", "vel", "rho"), True) + 24 == 274
 
 
+@pytest.mark.long  # the simulator's module fixture: ~40 s of CPU
 @requires_numba_cuda
 def test_cpu_runs_and_cuda_is_refused_without_numba_cuda(sim):
     """In the worker, before numba.cuda could be imported: a CPU step ran, and

@@ -37,6 +37,7 @@ def piston_wave_heights(dx: float, gauges, t_end: float, length: float = 2.0, **
     return eta.max(axis=0) - eta.min(axis=0)
 
 
+@pytest.mark.long  # ~10 s of CPU
 def test_piston_waves_have_the_height_of_linear_theory_coarse():
     """dx = 2 cm (15 particles over the depth, H = 2 dx), a gauge 2 depths from the
     paddle (past its evanescent modes), over the period that ends at 2.5 s (the
