@@ -113,16 +113,18 @@ def test_the_first_harmonic_is_read_through_a_slow_drift():
 
 @pytest.mark.slow
 def test_the_quick_floating_box_case_runs_and_judges_its_targets():
-    """cosim validate nearfield-floating-box --quick: the moored box in its flume and in the
-    near field (dx = 0.02 m, 5 s). The surge agrees within the target (measured 0.4 %); the
-    heave and the cost miss theirs (docs/validation/nearfield.md: the flume's own wave is
-    5-11 % above the nominal one, and a 2-D flume this short leaves little to save)."""
+    """cosim validate nearfield-floating-box --quick: the moored box in its flume, in the near
+    field, and the flume without it (dx = 0.02 m, 5 s). What the case found holds: the
+    flume's wave at the body is above the nominal height (the piston and the beach), and
+    the near field holds fewer particles (docs/validation/nearfield.md has the figures; the
+    targets are not met)."""
     from cosim import validation
 
     r = validation.run("nearfield-floating-box", quick=True)
     m = r["metrics"]
-    assert m["runs"]["near_field"]["particles"] < m["runs"]["flume"]["particles"]
-    assert m["surge_error"] < r["tolerances"]["surge_error"] == 0.05
+    assert m["incident_H1_at_body_m"]["flume"] > 1.02 * m["incident_H1_at_body_m"]["near_field"]
+    assert m["particle_fraction"] < 0.8
+    assert r["stated"]["measured"]["heave_error"] == m["heave_error"]
 
 
 def test_the_fluid_takes_the_following_walls_own_acceleration():
