@@ -582,7 +582,7 @@ def potential_fluid(scene, level):
     from cosim.scene.checks import potential_depth
     from fluid.potential import PotentialFluid
     from fluid.potential.participant import frequency_grid
-    from fluid.potential.waves import Sea, regular
+    from fluid.potential.waves import Sea, from_incident, regular
 
     f, w, g = scene.fluid, scene.waves, scene.world.gravity
     depth = potential_depth(scene)
@@ -592,14 +592,8 @@ def potential_fluid(scene, level):
     elif isinstance(w, (Piston, Flap)):
         wavemaker, lw = far_field_wave(scene)
         sea = Sea(regular(lw.H, lw.T, lw.direction), depth=depth, g=g, ramp=lw.ramp)
-    elif w is not None:  # an incident sea: the linear components of its fluid.waves sea
-        from fluid.potential.waves import WaveComponent
-
-        inc = w.sea(scene)
-        c = inc.components
-        phase = c.phase - c.k * inc.phase_reference
-        sea = Sea([WaveComponent(float(o), float(a), float(p), inc.direction)
-                   for o, a, p in zip(c.omega, c.amplitude, phase) if a > 0], depth=depth, g=g, ramp=inc.ramp)
+    elif w is not None:  # an incident sea: the linear components of its fluid.waves sea (its depth the scene's)
+        sea = from_incident(w.sea(scene))
     omega = None if f.omega_max is None else frequency_grid(f.omega_max, f.frequencies, depth, g)
     fluid = PotentialFluid(rho=f.rho, g=g, free_surface_z=level, depth=depth, omega=omega,
                            frequencies=f.frequencies, panel_size=f.panel_size, memory=f.memory, sea=sea,
