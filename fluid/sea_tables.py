@@ -36,7 +36,7 @@ import math
 import numpy as np
 from numba import njit, prange
 
-from fluid.waves import Sea, wavenumbers
+from fluid.waves import Sea, depth_factors, wavenumbers
 
 #: table nodes per wavelength of the sea's shortest period (linear interpolation error
 #: (2π/24)²/8 = 0.9 % of those components' velocity)
@@ -51,17 +51,7 @@ def tabulable(sea) -> bool:
     """Whether ``sea`` is a linear superposition of at least :data:`MIN_COMPONENTS` waves
     (no higher-order terms), which the tables here evaluate."""
     linear = type(sea)._add_higher_order is Sea._add_higher_order
-    return linear and len(sea.components.omega) >= MIN_COMPONENTS
-
-
-def _depth_factors(sea, zeta: np.ndarray, k: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """``cosh k(ζ+d)/sinh kd`` and ``sinh k(ζ+d)/sinh kd``, (len(ζ), len(k)), without overflow
-    in deep water (as ``Sea._superpose``); ζ clipped to [−d, 0]."""
-    d = sea.depth
-    kz = np.multiply.outer(np.clip(zeta, -d, 0.0), k)
-    den = -np.expm1(-2.0 * k * d)
-    e1, e2 = np.exp(kz), np.exp(-kz - 2.0 * k * d)
-    return (e1 + e2) / den, (e1 - e2) / den
+    return linear and len(sea._comp.omega) >= MIN_COMPONENTS
 
 
 def _time_factors(sea, t: float) -> tuple[np.ndarray, np.ndarray]:
@@ -107,7 +97,7 @@ class PointOrbits:
         self.s = _along(sea, x, y)
         alpha = np.multiply.outer(self.s - sea._s_ref, k)
         ca, sa = np.cos(alpha), np.sin(alpha)
-        ch, sh = _depth_factors(sea, np.asarray(z, float) - sea.level, k)
+        ch, sh = depth_factors(np.asarray(z, float) - sea.level, k, sea.depth)
         self._f = tuple(np.ascontiguousarray(f) for f in (ch * ca, ch * sa, sh * ca, sh * sa))
         self._a, self._w = a, w
         self._sums = np.empty((len(self.s), 6))
@@ -193,7 +183,7 @@ class VelocityTable:
         w, a, _, k = sea._comp
         alpha = np.multiply.outer(self.s - sea._s_ref, k)
         self._ca, self._sa = np.cos(alpha), np.sin(alpha)
-        ch, sh = _depth_factors(sea, self.zeta, k)
+        ch, sh = depth_factors(self.zeta, k, sea.depth)
         self._ch, self._sh = np.ascontiguousarray(ch * (a * w)), np.ascontiguousarray(sh * (a * w))
         self._frames = {}
 

@@ -84,6 +84,17 @@ def wavenumbers(omega, depth: float, g: float = 9.81) -> np.ndarray:
     return k
 
 
+def depth_factors(zeta, k, depth: float) -> tuple[np.ndarray, np.ndarray]:
+    """``cosh k(ζ+d)/sinh kd`` and ``sinh k(ζ+d)/sinh kd`` (linear theory's orbit factors,
+    Dean & Dalrymple 1991, §4.8), (len(ζ), len(k)), at heights ``zeta`` [m] above the still
+    water clipped to [−d, 0], without overflow in deep water: with e1 = exp(kζ),
+    e2 = exp(−k(ζ + 2d)), both <= 1, they are (e1 ± e2) / (1 − exp(−2kd))."""
+    kz = np.multiply.outer(np.clip(zeta, -depth, 0.0), k)
+    den = -np.expm1(-2.0 * k * depth)
+    e1, e2 = np.exp(kz), np.exp(-kz - 2.0 * k * depth)
+    return (e1 + e2) / den, (e1 - e2) / den
+
+
 def group_velocity(k, depth: float, g: float = 9.81):
     """c_g = (ω/k) (1/2) (1 + 2kd / sinh 2kd) [m/s] (Dean & Dalrymple 1991, eq. 4.79)."""
     k = np.asarray(k, float)
@@ -240,12 +251,8 @@ class Sea:
         w, a, ph, k = self._comp
         e = self.heading
         s_pos = xs * e[0] + ys * e[1]
-        zeta = np.clip(zs - self.level, -self.depth, 0.0)
         th = np.multiply.outer(s_pos - self._s_ref, k) - w * t + ph
-        kz = np.multiply.outer(zeta, k)
-        den = -np.expm1(-2.0 * k * self.depth)
-        e1, e2 = np.exp(kz), np.exp(-kz - 2.0 * k * self.depth)
-        ch, sh = (e1 + e2) / den, (e1 - e2) / den
+        ch, sh = depth_factors(zs - self.level, k, self.depth)
         sn, c = np.sin(th), np.cos(th)
         xh, xz = -(ch * sn) @ a, (sh * c) @ a
         uh, uz = (ch * c) @ (a * w), (sh * sn) @ (a * w)
