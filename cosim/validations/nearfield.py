@@ -234,12 +234,14 @@ FLOATING_AMPLITUDE_TOL, FLOATING_CHEAPER = 0.05, 3.0
 
 def first_harmonic(ts: np.ndarray, x: np.ndarray, omega: float) -> float:
     """The amplitude of ``x``'s harmonic of frequency ``omega`` [rad/s] at times ``ts`` [s],
-    by least squares with a constant, a linear trend (a moored body's slow drift) and the
-    second harmonic."""
-    basis = np.stack([np.ones_like(ts), ts - ts.mean(), np.cos(omega * ts), np.sin(omega * ts),
-                      np.cos(2 * omega * ts), np.sin(2 * omega * ts)], 1)
-    coef = np.linalg.lstsq(basis, x, rcond=None)[0]
-    return float(math.hypot(coef[2], coef[3]))
+    fitted with a constant, a linear trend (a moored body's slow drift) and the second
+    harmonic (:func:`cosim.validations.wave_propagation.harmonics`)."""
+    return float(abs(harmonics(ts, x, omega, trend=True)))
+
+
+def _gauge(res) -> str:
+    """The name of the run's first gauge series."""
+    return next(k for k in res.names if k.endswith(".eta"))
 
 
 def floating_figures(res, t0: float, period: float) -> dict:
@@ -249,8 +251,7 @@ def floating_figures(res, t0: float, period: float) -> dict:
     late = res.t >= t0
     ts, w = res.t[late], 2.0 * math.pi / period
     out = {f"{q}_amp": first_harmonic(ts, res[f"box.{q}"][late], w) for q in ("surge", "heave", "pitch")}
-    gauge = next(k for k in res.names if k.endswith(".eta"))
-    out["upstream_H1_m"] = 2.0 * first_harmonic(ts, res[gauge][late], w)
+    out["upstream_H1_m"] = 2.0 * first_harmonic(ts, res[_gauge(res)][late], w)
     s = res.summary
     return out | {"particles": s.get("particles"), "steps": s["steps"], "cpu_s": s["cpu_s"]}
 
@@ -293,8 +294,8 @@ def nearfield_floating_box(quick: bool) -> dict:
                 for name, s in (("flume", flume), ("near_field", near))}
         empty = _without_bodies(flume, body_x).run(Path(tmp) / "flume_no_body", progress=False)
     late = empty.t >= t0
-    gauge = next(k for k in empty.names if k.endswith(".eta"))
-    incident = {"flume": 2.0 * first_harmonic(empty.t[late], empty[gauge][late], w), "near_field": near.waves.height}
+    incident = {"flume": 2.0 * first_harmonic(empty.t[late], empty[_gauge(empty)][late], w),
+                "near_field": near.waves.height}
     f, n = runs["flume"], runs["near_field"]
 
     def per_wave(q):

@@ -51,13 +51,15 @@ def separate(x: np.ndarray, a: np.ndarray, k: float) -> tuple[complex, complex]:
     return complex(sol[0]), complex(sol[1])
 
 
-def harmonics(ts: np.ndarray, eta: np.ndarray, omega: float) -> np.ndarray:
+def harmonics(ts: np.ndarray, eta: np.ndarray, omega: float, trend: bool = False) -> np.ndarray:
     """Complex first-harmonic amplitude ``a`` [m] of each column of ``eta`` (samples, gauges)
-    at times ``ts`` [s], ``eta ~ c + Re(a exp(i omega t)) + second harmonic``, by least squares."""
-    basis = np.stack([np.ones_like(ts), np.cos(omega * ts), np.sin(omega * ts), np.cos(2 * omega * ts),
-                      np.sin(2 * omega * ts)], 1)
+    at times ``ts`` [s], ``eta ~ c + Re(a exp(i omega t)) + second harmonic``, by least squares;
+    ``trend``: with a linear trend in the fit too (a moored body's slow drift)."""
+    slow = [np.ones_like(ts)] + ([ts - ts.mean()] if trend else [])
+    basis = np.stack(slow + [np.cos(omega * ts), np.sin(omega * ts), np.cos(2 * omega * ts),
+                             np.sin(2 * omega * ts)], 1)
     coef = np.linalg.lstsq(basis, eta, rcond=None)[0]
-    return coef[1] - 1j * coef[2]
+    return coef[len(slow)] - 1j * coef[len(slow) + 1]
 
 
 def linear_elevation(wm, x: np.ndarray, t: np.ndarray, dt: float = 0.005) -> np.ndarray:
