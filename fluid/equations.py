@@ -775,7 +775,7 @@ class Rates(NamedTuple):
 
 def evaluate(pos, vel, rho, mass, kind, start, grid, kernel: int, prm, rho0: float, c0: float,
              gamma: float, p, work: Workspace | None = None, xbins: np.ndarray | None = None,
-             near: np.ndarray | None = None, walls: int = WALLS_FULL) -> Rates:
+             near: np.ndarray | None = None, walls: int = WALLS_FULL, images=None) -> Rates:
     """EOS and all pair rates of particles sorted by cell on ``grid``. Writes the pressure
     into ``p`` [Pa]. With a ``work`` space the returned arrays are its own and are
     overwritten by the next call with it. ``xbins``: the sub-bin table that
@@ -784,7 +784,9 @@ def evaluate(pos, vel, rho, mass, kind, start, grid, kernel: int, prm, rho0: flo
     boundary particles of the other cells get zero rates without a pass over their
     neighbours (what the pass would give); None: every particle is passed over.
     ``walls``: what the tank-wall particles get (:data:`WALLS_FULL`, :data:`WALLS_CONTINUITY`,
-    :data:`WALLS_NONE`); their other rates are zero."""
+    :data:`WALLS_NONE`); their other rates are zero. ``images``: a symmetry plane's
+    :class:`fluid.mirror.Mirror`, which gives its images the first pass's density gradients
+    of their sources before the pair loop reads them as neighbours."""
     n, dim = pos.shape
     work = Workspace() if work is None else work
     S = work.get("S", (N_ROWS, n))
@@ -800,6 +802,8 @@ def evaluate(pos, vel, rho, mass, kind, start, grid, kernel: int, prm, rho0: flo
     if prm[P_RENORM] > 0.0:
         G = work.get("grad", (3, n))
         density_gradients(S, start, tab, lo, grid.cell, nx, ny, nz, kernel, prm, G)
+        if images is not None:
+            images.reflect_rows(G)
     else:
         G = work.get("grad0", (3, 0))
     T = None

@@ -23,6 +23,7 @@ from fluid import mls
 from fluid.integrator import (StepLimit, corrector, diffusion_coefficient, first_non_finite, predictor,
                               stable_dt, verlet)
 from fluid.kernels import alpha_d, kernel_id
+from fluid.mirror import Mirror
 from fluid.neighbours import Grid, fluid_near_cells, sort_by_cell, x_bin_array, x_bins
 from fluid.particles import Kind, ParticleSet
 
@@ -188,6 +189,10 @@ class FluidConfig:
     #: fluid.equations.interact); integration and state stay float64. CPU only. Momentum
     #: is then kept to ~5e-9, not to round-off (benchmarks/float32_validations.py)
     precision: str = "float64"
+    #: 3-D: a symmetry plane y = ``symmetry_y`` [m]. Only the particles on y >= it are
+    #: simulated; those within the kernel's support of it have mirror images that take part
+    #: in every sum (fluid.mirror). The scene must be symmetric about it. None: no plane
+    symmetry_y: float | None = None
     #: participant name
     name: str = "fluid"
 
@@ -261,6 +266,12 @@ class FluidConfig:
         if self.device == "cuda":  # numba.cuda is imported here only
             from fluid.cuda import check_config
             check_config(self)
+        if self.symmetry_y is not None:
+            if self.dim != 3 or not num(self.symmetry_y):
+                raise _bad(f"symmetry_y={self.symmetry_y!r} m (dim={self.dim})", "a symmetry plane y = const is a "
+                           "finite number in 3-D; leave it None in 2-D")
+            if self.device != "cpu":
+                raise _bad(f"symmetry_y with device={self.device!r}", "run a symmetry plane on device='cpu'")
         if self.threads is not None and (not isinstance(self.threads, int) or self.threads < 1):
             raise _bad(f"threads={self.threads!r}", "give a positive number of threads or None")
         if (self.domain_lo is None) != (self.domain_hi is None):
@@ -396,6 +407,15 @@ class Fluid:
         self._walls_rates = (eq.WALLS_FULL if c.wall_loads else
                              eq.WALLS_NONE if c.walls == "adami" else eq.WALLS_CONTINUITY)
         #: the groups made of wall particles: their loads are NaN when not computed
+        #: a symmetry plane's mirror images (fluid.mirror), None without one
+        self.mirror = None
+        if c.symmetry_y is not None:
+            below = particles.pos[:, 1] < c.symmetry_y
+            if below.any():
+                i = int(np.argmax(below))
+                raise InputError(f"particle {particles.ids[i]} at y = {particles.pos[i, 1]:.6g} m lies beyond the "
+                                 f"symmetry plane y = {c.symmetry_y:g} m: give only the half y >= it")
+            self.mirror = Mirror(c.symmetry_y, 2.0 * c.h, c.dx)
         self._wall_groups = np.zeros(self.n_groups, bool)
         if not c.wall_loads and self.n_groups:
             walls = (particles.kind == Kind.FIXED_WALL) | (particles.kind == Kind.MOVING_WALL)
@@ -431,6 +451,9 @@ class Fluid:
             lo, hi = lo - grow, hi + grow
         else:
             lo, hi = np.asarray(c.domain_lo, float), np.asarray(c.domain_hi, float)
+        if self.mirror is not None:  # room for the images
+            lo = lo.copy()
+            lo[1] = min(lo[1], c.symmetry_y - 2.0 * c.h - c.dx)
         # reach 1 (cells of the support 2h): fewer, longer contiguous rows vectorise
         # better; reach 2 visits 9 % fewer candidates in 3-D at the same speed
         # (docs/benchmarks/fluid_throughput_history.md)
@@ -523,7 +546,7 @@ class Fluid:
         t0, motions = self.t, self._motions
         v_before = self.max_speed()
         ps = self.ps
-        bnd = ps.kind != Kind.FLUID
+        bnd = (ps.kind != Kind.FLUID) & (ps.ids >= 0)
         order = np.argsort(ps.ids[bnd])
         bnd_ids, bnd_vel = ps.ids[bnd][order], ps.vel[bnd][order]  # restored afterwards
         frozen = {}
@@ -549,7 +572,7 @@ class Fluid:
             self._motions = motions
             self.t = t0
         ps = self.ps
-        bnd = ps.kind != Kind.FLUID
+        bnd = (ps.kind != Kind.FLUID) & (ps.ids >= 0)
         ps.vel[bnd] = bnd_vel[np.searchsorted(bnd_ids, ps.ids[bnd])]
         self._place_prescribed(t0)
         self._sort()
@@ -621,7 +644,7 @@ class Fluid:
         :meth:`group_forces_now` (pair antisymmetry)."""
         self.refresh_rates()
         ps = self.ps
-        fl = ps.kind == Kind.FLUID
+        fl = self._fluid_rows()
         return (ps.mass[fl, None] * (self._acc[fl] - self.config.gravity)).sum(axis=0)
 
     def set_group_velocity(self, group: int, velocity) -> None:
@@ -831,6 +854,9 @@ class Fluid:
         ps = self.ps
         if self._xbins is None:
             self._xbins = x_bin_array(self._grid)
+        if self.mirror is not None:
+            self._sort_mirrored()
+            return
         perm, start, outside, self._xbins = sort_by_cell(ps.pos, self._grid, self._xbins)
         n = ps.n - outside
         if outside:
@@ -847,17 +873,52 @@ class Fluid:
         self._aux = dict(zip(keys, ps.permute(perm, *(self._aux[k] for k in keys))))
         self._start = start
 
+    def _sort_mirrored(self):
+        """:meth:`_sort` with a symmetry plane: the simulated particles and new mirror images
+        of those near the plane sorted together in one gather (fluid.mirror)."""
+        ps, m = self.ps, self.mirror
+        m.reflect_crossing(ps, self._aux)
+        rows, pos, n_real = m.extend(ps)
+        perm, start, outside, self._xbins = sort_by_cell(pos, self._grid, self._xbins)
+        kept = len(rows) - outside
+        if outside:
+            gone = perm[kept:]
+            gone = rows[gone[gone < n_real]]  # images leave silently
+            if gone.size:
+                bad = ~(np.isfinite(ps.pos[gone]).all(axis=1) & np.isfinite(ps.vel[gone]).all(axis=1)
+                        & np.isfinite(ps.rho[gone]))
+                if bad.any():
+                    self._raise_non_finite(int(gone[np.argmax(bad)]))
+                self.counters.count_removed(ps.kind[gone], self.t)
+        keys = list(self._aux)
+        self._aux = dict(zip(keys, ps.permute(rows[perm[:kept]], *(self._aux[k] for k in keys))))
+        if not (ps.kind[ps.ids >= 0] == Kind.FLUID).any():
+            raise InstabilityError(f"fluid: every fluid particle has left the domain by t={self.t:.6g} s")
+        m.finish(ps, self._aux, perm, kept, n_real)
+        self._start = start
+
     def _rates(self):
         c = self.config
         ps = self.ps
+        m = self.mirror
+        if m is not None:
+            m.refresh(ps)
         self.near_fluid = fluid_near_cells(ps.kind, self._start, self._grid, self._work)
         if self.boundary_correction is not None:
             self.boundary_correction(ps, self._start, self._grid)
+            if m is not None:  # the images' own neighbourhoods are cut at the band's edge
+                m.refresh(ps, density_only=True)
         self._drho, self._acc, visc, self._cs, self._xsph = eq.evaluate(
             ps.pos, ps.vel, ps.rho, ps.mass, ps.kind, self._start, self._grid, self._kernel,
             self._prm, c.rho0, c.speed_of_sound, c.gamma, ps.p, self._work, self._xbins, self.near_fluid,
-            self._walls_rates)
-        self._limit = stable_dt(self._acc, visc, self._cs, ps.kind, c.h, c.cfl, c.dt_max, c.nu, **self._diffusivity)
+            self._walls_rates, m)
+        if m is None:
+            self._limit = stable_dt(self._acc, visc, self._cs, ps.kind, c.h, c.cfl, c.dt_max, c.nu,
+                                    **self._diffusivity)
+        else:  # the images' rates are not used
+            r = ps.ids >= 0
+            self._limit = stable_dt(self._acc[r], visc[r], self._cs[r], ps.kind[r], c.h, c.cfl, c.dt_max, c.nu,
+                                    **self._diffusivity)
         self._stale = False
 
     def _xs(self) -> np.ndarray:
@@ -892,10 +953,20 @@ class Fluid:
             "more artificial viscosity, or check the set-up for overlapping particles.")
 
     # ------------------------------------------------------------------ diagnostics
-    def kinetic_energy(self) -> float:
+    def simulated(self) -> ParticleSet:
+        """The particle set without a symmetry plane's mirror images (``self.ps`` itself
+        when there is no plane)."""
+        return self.ps if self.mirror is None else self.ps.select(self.ps.ids >= 0)
+
+    def _fluid_rows(self) -> np.ndarray:
+        """The simulated fluid particles (mask over the current order)."""
         fl = self.ps.kind == Kind.FLUID
+        return fl if self.mirror is None else fl & (self.ps.ids >= 0)
+
+    def kinetic_energy(self) -> float:
+        fl = self._fluid_rows()
         return 0.5 * float((self.ps.mass[fl] * (self.ps.vel[fl] ** 2).sum(axis=1)).sum())
 
     def max_speed(self) -> float:
-        fl = self.ps.kind == Kind.FLUID
+        fl = self._fluid_rows()
         return float(np.sqrt((self.ps.vel[fl] ** 2).sum(axis=1).max()))

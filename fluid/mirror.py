@@ -1,0 +1,108 @@
+"""A symmetry plane y = y0 in 3-D: the fluid simulates the particles on y >= y0 only, and
+the mirror image of each one within the kernel's support 2h of the plane (its y reflected,
+its velocity's y component reversed, its density, mass and kind kept) takes part in every
+particle sum as a neighbour: the ghost particles of a free-slip boundary (Libersky et al.
+1993, J. Comput. Phys. 109, 67-75; Colagrossi & Landrini 2003, J. Comput. Phys. 191,
+448-475, their mirrored fluid at a solid wall), here at a plane of symmetry, where they
+are exact: for a flow symmetric about the plane every particle's neighbours are then the
+same as in the whole domain, so the half domain gives the whole one's rates.
+
+Why not a wall at the plane: a wall of boundary particles loads a body that crosses the
+plane as fluid on one side only; the body's particles within 2h of it miss the fluid
+beyond. Measured on a held box (docs/validation/nearfield.md): a slip wall gave -12 % of
+the buoyancy, the mirror images the whole tank's.
+
+Mirror images are rows of the fluid's particle set with a negative id (``-1 - id`` of
+their source) and group -1: rebuilt from the sources at every sort (:meth:`Mirror.extend`,
+:meth:`Mirror.finish`), brought to their sources' state before every rate evaluation
+(:meth:`Mirror.refresh`); their own rates are not used (their neighbourhoods are cut at
+the band's edge) and nothing integrates them for more than one step. A source closer to
+the plane than 1e-9 dx is its own image and has none; a particle that crosses the plane
+is reflected back (specular: its place and its normal velocity), as the symmetric flow it
+stands for cannot cross it.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+Y = 1  #: the plane's normal axis (y)
+
+
+def is_image(ids: np.ndarray) -> np.ndarray:
+    """True for the rows of mirror images (negative ids)."""
+    return ids < 0
+
+
+class Mirror:
+    """The mirror images across ``y = y0`` [m] of the particles within ``band`` [m] (the
+    kernel's support 2h) of the plane; ``dx`` [m] sets the tolerance of "on the plane"."""
+
+    def __init__(self, y0: float, band: float, dx: float):
+        self.y0, self.band, self.tol = float(y0), float(band), 1e-9 * float(dx)
+        self.rows = np.zeros(0, np.int64)  #: rows of the images after the last sort
+        self.src = np.zeros(0, np.int64)  #: rows of their sources
+        self._source_ext = np.zeros(0, np.int64)
+
+    def reflect_crossing(self, ps, aux: dict) -> None:
+        """Reflect back the simulated particles that have crossed the plane (y < y0), and
+        their integrator's saved state with them."""
+        y = ps.pos[:, Y]
+        below = np.flatnonzero((y < self.y0) & (ps.ids >= 0))
+        if below.size:
+            ps.pos[below, Y] = 2.0 * self.y0 - ps.pos[below, Y]
+            ps.vel[below, Y] = -ps.vel[below, Y]
+            for k in ("pos", "vel"):
+                if k in aux:
+                    a = aux[k]
+                    a[below, Y] = (2.0 * self.y0 - a[below, Y]) if k == "pos" else -a[below, Y]
+
+    def extend(self, ps) -> tuple[np.ndarray, np.ndarray, int]:
+        """(rows, positions, n) of the set to sort: the ``n`` simulated particles' rows,
+        then their sources' rows again with the positions of their images."""
+        real = np.flatnonzero(ps.ids >= 0)
+        d = ps.pos[real, Y] - self.y0
+        near = np.flatnonzero((d > self.tol) & (d < self.band))
+        self._source_ext = near  # each image's source: its row among the simulated ones
+        rows = np.concatenate([real, real[near]])
+        pos = ps.pos[rows]
+        pos[real.size:, Y] = 2.0 * self.y0 - pos[real.size:, Y]
+        return rows, pos, real.size
+
+    def finish(self, ps, aux: dict, perm: np.ndarray, kept: int, n: int) -> None:
+        """Make the images of a set gathered by ``rows[perm[:kept]]`` (:meth:`extend`'s rows,
+        the sort's ``perm`` over them, ``kept`` rows inside the domain, ``n`` simulated):
+        reflect their places and velocities (and the saved state's), give them their ids
+        and no group, and note each image's source row (images whose source left the
+        domain keep the state they were given here)."""
+        order = perm[:kept]
+        rows = np.flatnonzero(order >= n)
+        at = np.empty(perm.size, np.int64)
+        at[perm] = np.arange(perm.size)
+        src = at[self._source_ext[order[rows] - n]]
+        ok = src < kept
+        for a, k in ((ps.pos, "pos"), (ps.vel, "vel")):
+            a[rows, Y] = (2.0 * self.y0 - a[rows, Y]) if k == "pos" else -a[rows, Y]
+            if k in aux:
+                b = aux[k]
+                b[rows, Y] = (2.0 * self.y0 - b[rows, Y]) if k == "pos" else -b[rows, Y]
+        ps.ids[rows] = -1 - ps.ids[rows]
+        ps.group[rows] = -1
+        self.rows, self.src = rows[ok], src[ok]
+
+    def refresh(self, ps, density_only: bool = False) -> None:
+        """Bring the images to their sources' state (density; and place and velocity)."""
+        r, s = self.rows, self.src
+        ps.rho[r] = ps.rho[s]
+        if not density_only:
+            ps.pos[r] = ps.pos[s]
+            ps.pos[r, Y] = 2.0 * self.y0 - ps.pos[s, Y]
+            ps.vel[r] = ps.vel[s]
+            ps.vel[r, Y] = -ps.vel[s, Y]
+
+    def reflect_rows(self, G: np.ndarray) -> None:
+        """A per-particle vector field ``G`` (3, N), as the pair loop's first pass writes it,
+        given to the images from their sources (its y row reversed)."""
+        if G.shape[1]:
+            G[:, self.rows] = G[:, self.src]
+            G[Y, self.rows] = -G[Y, self.src]
