@@ -91,6 +91,12 @@ class SPHFluid:
     zones:
         Relaxation zones (``fluid.relaxation.Slab``: a near field's, ``fluid.nearfield``),
         given to the fluid when it is built at attachment.
+
+    With a symmetry plane y = 0 (``config.symmetry_y``, :mod:`fluid.mirror`) each rigid
+    body, symmetric about it and centred on it, keeps the boundary particles of its half
+    y >= 0 (body frame); its load is its half's mirrored, ``F = (2 Fx, 0, 2 Fz)``,
+    ``T = (0, 2 Ty, 0)`` about its centre of mass on the plane, the particles on the plane
+    (their own groups, with no images) counted once. No elastic plates.
     """
 
     def __init__(self, config: FluidConfig, fluid_points, walls=(), *, z_surface: float | None = None,
@@ -112,6 +118,10 @@ class SPHFluid:
         self.elastic_beams = list(elastic)
         self.elastic = []  #: bodies.elastic.ElasticBody per beam, made at attachment
         self.zones = list(zones)  #: relaxation zones (fluid.relaxation), given to the fluid at attachment
+        self.symmetry = config.symmetry_y is not None
+        if self.symmetry and (config.symmetry_y != 0.0 or self.elastic_beams):
+            raise InputError(f"SPH fluid: a symmetry plane (symmetry_y = {config.symmetry_y}) is the plane y = 0 "
+                             "of rigid bodies centred on it (no elastic plates)")
 
     # -- coupling ----------------------------------------------------------------
     #: fewest boundary particles a body's geom may have across any of its axes [-]. With
@@ -167,13 +177,24 @@ class SPHFluid:
         self._attach_elastic(bodies)
         rigid = ~np.isin(owner, self._elastic_rows)  # the links' own geom samples give way to the plate's
         pb, owner = pb[rigid], owner[rigid]
+        # a symmetry plane: the half y >= 0 of each body (body frame), its particles on the
+        # plane their own groups (counted once when the half's load is doubled)
+        plane = np.zeros(len(pb), bool)
+        if self.symmetry:
+            tol = 1e-9 * c.dx
+            keep = pb[:, 1] >= -tol
+            pb, owner = pb[keep], owner[keep]
+            plane = np.abs(pb[:, 1]) <= tol
         x, _ = place(pb, owner, kin)
         self._g0 = 1 + max([int(g) for _, _, g in self._walls], default=-1)
         pts = self._to_dim(x)
-        body_sets = [(pts[owner == k], Kind.BODY, self._g0 + k) for k in range(bodies.n_bodies)]
+        body_sets = [(pts[(owner == k) & ~plane], Kind.BODY, self._g0 + k) for k in range(bodies.n_bodies)]
         g_e = self._g0 + bodies.n_bodies  # each beam one group here, one per particle after assembly
         for j, e in enumerate(self.elastic):
             body_sets.append((self._to_dim(e.place(kin)[0]), Kind.BODY, g_e + j))
+        self._plane0 = g_e if self.symmetry else None  # no beams then: the bodies' plane rows' groups
+        if self.symmetry:
+            body_sets += [(pts[(owner == k) & plane], Kind.BODY, g_e + k) for k in range(bodies.n_bodies)]
         # the bodies' boundary particles fill only a band inside their surface: fluid
         # inside a body is found from its geoms, not from the distance to particles
         inside = self._inside_bodies(bodies.geoms(), kin)
@@ -188,7 +209,9 @@ class SPHFluid:
         # ids are the assembly order: body k's particles in the order of pb[owner == k]
         self._ids = np.empty(len(pb), np.int64)
         for k in range(bodies.n_bodies):
-            self._ids[owner == k] = ps.ids[ps.group == self._g0 + k]
+            self._ids[(owner == k) & ~plane] = ps.ids[ps.group == self._g0 + k]
+            if self.symmetry:
+                self._ids[(owner == k) & plane] = ps.ids[ps.group == self._plane0 + k]
         self._pb, self._owner = pb, owner
         self._elastic_ids, self._elastic_groups = [], []
         g_next = g_e + len(self.elastic)
@@ -287,6 +310,8 @@ class SPHFluid:
         x, u = place(self._pb, self._owner, kin)
         self.fluid.set_particle_motion(self._ids, self._to_dim(x), self._to_dim(u))
         self.fluid.moment_points[self._g0:self._g0 + self.n_bodies] = self._to_dim(kin.com)
+        if self.symmetry:
+            self.fluid.moment_points[self._plane0:self._plane0 + self.n_bodies] = kin.com
         self._kin = kin
         for e, ids in zip(self.elastic, self._elastic_ids):  # moment points stay at the origin
             e.check(kin)  # a chain gone unstable stops the run here, naming its element
@@ -308,6 +333,14 @@ class SPHFluid:
 
     def _to_wrench3(self, F_all, M_all):
         F, M = F_all[self._g0:self._g0 + self.n_bodies], M_all[self._g0:self._g0 + self.n_bodies]
+        if self.symmetry:  # the half's load mirrored across y = 0, the plane's rows once
+            Fp, Mp = np.zeros_like(F), np.zeros_like(M)  # groups past the last one present hold nothing
+            on = F_all[self._plane0:self._plane0 + self.n_bodies]
+            Fp[:len(on)], Mp[:len(on)] = on, M_all[self._plane0:self._plane0 + len(on)]
+            F3, T3 = 2.0 * F + Fp, 2.0 * M + Mp
+            F3[:, 1] = 0.0
+            T3[:, [0, 2]] = 0.0
+            return F3, T3
         if self.config.dim == 3:
             F3, T3 = F.copy(), M.copy()
         else:

@@ -129,7 +129,7 @@ class NearFieldBox:
     2, to be moved by :func:`following_wall`), the x range ``x0 .. x1`` [m] of the water,
     3-D its y range ``y`` [m] (None in 2-D), the relaxation zones' width ``zone`` [m] inside
     each end wall and ``side_zone`` [m] inside each side wall (None: no side zones, a
-    channel)."""
+    channel); ``mirror``: y = y[0] is a symmetry plane, with no wall or zone."""
 
     fluid: np.ndarray
     walls: list
@@ -138,6 +138,7 @@ class NearFieldBox:
     zone: float
     y: tuple | None = None
     side_zone: float | None = None
+    mirror: bool = False
 
     def reach(self, sea) -> tuple[float, float]:
         """The range [m] along the sea's heading that the box's water can reach: its corners'
@@ -156,18 +157,21 @@ class NearFieldBox:
         out = [Slab(0, self.x0 + self.zone, self.x0, rate, target), Slab(0, self.x1 - self.zone, self.x1, rate, target)]
         if self.y is not None and self.side_zone is not None:
             (y0, y1), w = self.y, self.side_zone
-            out += [Slab(1, y1 - w, y1, rate, target), Slab(1, y0 + w, y0, rate, target)]
+            out.append(Slab(1, y1 - w, y1, rate, target))
+            if not self.mirror:
+                out.append(Slab(1, y0 + w, y0, rate, target))
         return out
 
 
 def near_field_box(dx: float, x0: float, x1: float, sea, height: float, zone: float, *, layers: int = 4,
                    y: tuple | None = None, side_zone: float | None = None,
-                   slack: float | None = None) -> NearFieldBox:
+                   slack: float | None = None, mirror: bool = False) -> NearFieldBox:
     """Water from ``x0`` to ``x1`` [m] over the sea's seabed (``sea.level - sea.depth``) up
     to its still level, spacing ``dx`` [m]; walls ``height`` [m] above the seabed and
     ``layers`` thick; relaxation zones ``zone`` [m] wide inside each end wall; 3-D across
     ``y = (y0, y1)`` [m] with fixed side walls beyond, zones ``side_zone`` [m] wide inside
-    them (None: none). The seabed runs on beyond each end wall by
+    them (None: none); ``mirror``: the plane y = y0 is a symmetry plane (:mod:`fluid.mirror`),
+    with no wall or zone at it. The seabed runs on beyond each end wall by
     ``slack`` [m] (default: the sea's largest horizontal excursion there and a layer), so
     that the moving walls always stand on it."""
     for name, v in (("dx", dx), ("height", height), ("zone", zone)):
@@ -176,7 +180,7 @@ def near_field_box(dx: float, x0: float, x1: float, sea, height: float, zone: fl
     if not x1 - x0 > 2.0 * zone:
         raise InputError(f"near field: the box {x0} .. {x1} m is not longer than its two zones of {zone} m; "
                          "lengthen it or narrow the zones")
-    if y is not None and side_zone is not None and not y[1] - y[0] > 2.0 * side_zone:
+    if y is not None and side_zone is not None and not y[1] - y[0] > (1.0 if mirror else 2.0) * side_zone:
         raise InputError(f"near field: the box's width {y[0]} .. {y[1]} m is not wider than its side zones of "
                          f"{side_zone} m; widen it or narrow the zones")
     bed = sea.level - sea.depth
@@ -195,16 +199,20 @@ def near_field_box(dx: float, x0: float, x1: float, sea, height: float, zone: fl
     else:
         def box(lo, hi, across=tuple(y)):
             return block((lo[0], across[0], lo[1]), (hi[0], across[1], hi[1]), dx)
-        sides = [box((span[0], bed), (span[1], bed + height), (y[0] - t, y[0])),
-                 box((span[0], bed), (span[1], bed + height), (y[1], y[1] + t))]
-        floor = box((span[0], bed - t), (span[1], bed), (y[0] - t, y[1] + t))
+        inner = y[0] if mirror else y[0] - t  # a symmetry plane's water is mirrored, not walled
+        sides = [box((span[0], bed), (span[1], bed + height), (y[1], y[1] + t))]
+        if not mirror:
+            sides.append(box((span[0], bed), (span[1], bed + height), (y[0] - t, y[0])))
+        floor = box((span[0], bed - t), (span[1], bed), (inner, y[1] + t))
     near = box((x0 - t, bed), (x0, bed + height))
     far = box((x1, bed), (x1 + t, bed + height))
     water = box((x0, bed), (x1, sea.level))
     walls = [(np.concatenate([floor] + sides), Kind.FIXED_WALL, FIXED_GROUP), (near, Kind.MOVING_WALL, NEAR_END_GROUP),
              (far, Kind.MOVING_WALL, FAR_END_GROUP)]
+    if mirror and y is None:
+        raise InputError("near field: a symmetry plane y = y0 is for a 3-D box; give y")
     return NearFieldBox(water, walls, float(x0), float(x1), float(zone), None if y is None else tuple(map(float, y)),
-                        None if y is None or side_zone is None else float(side_zone))
+                        None if y is None or side_zone is None else float(side_zone), bool(mirror))
 
 
 #: the fewest kernel supports (2 h) a relaxation zone spans, and the water kept between a
@@ -235,7 +243,7 @@ class BoxChoice:
 
 
 def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(), size: float = 0.0,
-               dim: int = 2, zone: float | None = None, x=(None, None),
+               symmetric: bool = False, dx: float | None = None, dim: int = 2, zone: float | None = None, x=(None, None),
                width: float | None = None, height: float | None = None) -> BoxChoice:
     """A near-field box for bodies whose horizontal extent is ``footprint = (lo, hi)``
     ((x,) or (x, y) corners [m]; no bodies: a point), in ``sea`` (heading +x), at smoothing
@@ -260,7 +268,9 @@ def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(
       of its components' heights 2a) and two supports.
 
     ``zone``, ``x = (x0, x1)``, ``width`` and ``height`` given are kept (reason "given").
-    3-D: the box is centred across y on the bodies."""
+    3-D: the box is centred across y on the bodies (``symmetric``: from y = 0, a symmetry
+    plane); a width it chooses is a whole number of spacings ``dx`` [m] when given, so
+    that the particles' lattice is symmetric about the centre as the scene may be."""
     lo, hi = (np.atleast_1d(np.asarray(v, float)) for v in footprint)
     reasons = {}
     peak = sea.peak_period
@@ -290,14 +300,16 @@ def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(
     reasons["x1"] = "given" if x[1] is not None else why
     y = None
     if dim == 3:
-        centre = 0.5 * float(lo[1] + hi[1])
+        centre = 0.0 if symmetric else 0.5 * float(lo[1] + hi[1])
         if width is None:
             half = max(hi[1] - centre, centre - lo[1]) + margin + zone
-            reasons["width"] = why + ", on both sides"
+            if dx is not None:
+                half = math.ceil(half / dx - 1e-9) * dx
+            reasons["width"] = why + (" (y >= 0: a symmetry plane at y = 0)" if symmetric else ", on both sides")
         else:
             half = 0.5 * float(width)
             reasons["width"] = "given"
-        y = (centre - half, centre + half)
+        y = (0.0 if symmetric else centre - half, centre + half)
     if height is None:
         largest = 2.0 * float(np.sum(sea.components.amplitude))
         height = sea.depth + 2.0 * largest + 2.0 * 2.0 * h

@@ -414,10 +414,13 @@ def _energies(pos, vel, mass, kind, g, z_ref):
 def fluid_energies(fluid, z_ref: float = 0.0) -> tuple[float, float]:
     """(kinetic, potential) energy [J] of the fluid particles: ``sum m v^2 / 2`` and
     ``-sum m g . (r - z_ref e_z)`` (``sum m g (z - z_ref)`` for gravity along -z) with
-    ``z_ref`` [m] the height of zero potential energy."""
-    ps = fluid.ps
+    ``z_ref`` [m] the height of zero potential energy. With a symmetry plane
+    (``fluid.mirror``): the whole domain's, twice the simulated half's (no fluid particle
+    lies on the plane)."""
+    ps = fluid.simulated()
     with fluid._own_threads():  # the fluid's own choice: one thread for small sets
-        return _energies(ps.pos, ps.vel, ps.mass, ps.kind, fluid.config.gravity, float(z_ref))
+        k, u = _energies(ps.pos, ps.vel, ps.mass, ps.kind, fluid.config.gravity, float(z_ref))
+    return (2.0 * k, 2.0 * u) if fluid.mirror is not None else (k, u)
 
 
 class Energy:

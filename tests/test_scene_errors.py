@@ -229,6 +229,45 @@ pos = [1.2]
 place = "floating"
 density = 500.0
 """,
+    "nearfield3d": """
+# 3-D: the base of Barreiro et al. 2016 on three lines in a near field, its half y >= 0 simulated
+[world]
+dim = 3
+duration = 1.0
+
+[fluid]
+model = "sph"
+dx = 1.5
+rho0 = 1025.0
+
+[domain]
+kind = "nearfield"
+depth = 20.0
+symmetry = true
+
+[waves]
+kind = "regular"
+height = 0.7
+period = 20.0
+depth = 20.0
+
+[[bodies]]
+shape = "cylinder"
+name = "base"
+radius = 3.0
+length = 3.0
+mass = 16000.0
+pos = [70.0, 0.0]
+place = "floating"
+fairleads = { back = [3.0, 0.0, -1.5], port = [-1.5, 2.5981, -1.5], starboard = [-1.5, -2.5981, -1.5] }
+
+[moorings]
+lines = [
+  { fairlead = "base.back", anchor = [107.0, 0.0, 0.0], length = 45.0, weight = 3769.85 },
+  { fairlead = "base.port", anchor = [51.5, 32.0429, 0.0], length = 45.0, weight = 3769.85 },
+  { fairlead = "base.starboard", anchor = [51.5, -32.0429, 0.0], length = 45.0, weight = 3769.85 },
+]
+""",
     "mjcf": """
 # 3-D: the analytic fluid, the body "float" of an MJCF file (float.xml) on one line
 [world]
@@ -640,6 +679,19 @@ CASES = [
     case("a near field shaken", "nearfield",
          ("base_motion", {"kind": "harmonic", "amplitude": 0.01, "period": 1.0}), "base_motion",
          "a near field follows its sea and does not move as a whole", "Scene.base_motion"),
+    case("a symmetry plane in 2-D", "nearfield", ("domain.symmetry", True), "domain.symmetry",
+         "a 2-D near field is the x-z plane; leave symmetry out", "Scene.domain.symmetry"),
+    case("a body off the symmetry plane", "nearfield3d", ("bodies[0].pos", [70.0, 4.0]), "bodies[0].pos",
+         "y = 4 m: with domain.symmetry each body is centred on the symmetry plane y = 0", "Scene.bodies[0].pos"),
+    case("a body turned out of its mirror image", "nearfield3d", (("bodies[0].place", "given"),
+                                                                  ("bodies[0].pos", [70.0, 0.0, 19.0]),
+                                                                  ("bodies[0].euler", [0.0, 0.0, 30.0])),
+         "bodies[0].euler", "with domain.symmetry a body turns about y only", "Scene.bodies[0].euler"),
+    case("a fairlead without its mirror image", "nearfield3d",
+         ("bodies[0].fairleads.starboard", [-1.5, -2.0, -1.5]), "bodies[0].fairleads.port",
+         "has no mirror image (-1.5, -2.598, -1.5) among the body's fairleads", "Scene.bodies[0].fairleads.port"),
+    case("a mooring line without its mirror image", "nearfield3d", ("moorings.lines[1].anchor", [51.5, 30.0, 0.0]),
+         "moorings.lines[1]", "has no mirror image about y = 0", "Scene.moorings.lines[1]"),
     # -- names and references
     case("a fairlead on an unknown body", "analytic", ("moorings.lines[0].fairlead", "boat.left"),
          "moorings.lines[0].fairlead", "no body named 'boat'; bodies: ['box', 'buoy']",

@@ -77,6 +77,8 @@ def fluid_config(scene, setup, numbers_only: bool = False):
     from fluid.solver import FluidConfig
 
     cfg = {k: v for k, v in setup.config.items() if not (numbers_only and k == "device")}
+    if isinstance(scene.domain, NearField) and scene.domain.symmetry:
+        cfg["symmetry_y"] = 0.0  # fluid.mirror
     # the walls' loads only where a probe reads them (wall-pressure patches): a scene pays
     # for what it contains, and the fluid's motion and step are the same either way
     return FluidConfig(dim=scene.world.dim, dx=scene.fluid.dx, g=scene.world.gravity,
@@ -679,7 +681,7 @@ def _near_field(scene, cfg, out: Built):
     sea = out.sea = incident_sea(scene)
     c = out.near_field = box_for(scene)
     box = near_field_box(cfg.dx, c.x[0], c.x[1], sea, c.height, c.zone, layers=math.ceil(2.0 * cfg.h_coef - 1e-9),
-                         y=c.y, side_zone=None if c.y is None else c.zone)
+                         y=c.y, side_zone=None if c.y is None else c.zone, mirror=scene.domain.symmetry)
     wall = following_wall(sea)
     zones = box.zones(sea, scene.domain.rate * 2.0 * math.pi / sea.peak_period)
     return box.fluid, box.walls, {NEAR_END_GROUP: wall, FAR_END_GROUP: wall}, zones

@@ -477,13 +477,66 @@ def _check_near_field(s, dim):
     if not isinstance(s.waves, (RegularWaves, IrregularWaves, LinearWaves)):
         raise SceneError("waves", "a near field sits in an incident sea: give waves of kind \"regular\" or "
                          "\"irregular\" (their depth the domain's)")
-    if dim == 2 and d.width is not None:
-        raise SceneError("domain.width", "a 2-D near field is the x-z plane; leave width out")
+    if dim == 2:
+        for key in ("width", "symmetry"):
+            if getattr(d, key) not in (None, False):
+                raise SceneError(f"domain.{key}", f"a 2-D near field is the x-z plane; leave {key} out")
+    if d.symmetry:
+        _check_symmetric(s)
     if s.base_motion is not None:
         raise SceneError("base_motion", "a near field follows its sea and does not move as a whole; use a tank")
     if s.probes.pressure:
         raise SceneError("probes.pressure", "a near field's walls are not a structure: its wall-pressure patches "
                          "would read its moving end walls; read the bodies' loads instead")
+
+
+def _check_symmetric(s):
+    """A scene run on half its domain (``domain.symmetry``) is symmetric about y = 0: each
+    body centred on the plane, upright or turned about y only, a builder body (an MJCF
+    model's symmetry is not checked, so it is refused); each line's mirror image (fairlead
+    and anchor at -y, the same line) in the scene, or the line in the plane. (The near
+    field's sea travels along +x: its own mirror image.)"""
+    def mirrored(p):
+        return (p[0], -p[1], p[2])
+
+    for i, b in enumerate(s.bodies):
+        if isinstance(b, ElasticPlate):
+            raise SceneError(f"bodies[{i}]", "an elastic plate is not mirrored across a symmetry plane: leave "
+                             "domain.symmetry out with elastic plates")
+        if isinstance(b, MJCF):
+            raise SceneError(f"bodies[{i}]", "an MJCF model's symmetry about y = 0 is not checked: with "
+                             "domain.symmetry give builder bodies, or leave symmetry out")
+        if b.pos[1] != 0.0:
+            raise SceneError(f"bodies[{i}].{_pos_key(b)}", f"y = {b.pos[1]:g} m: with domain.symmetry each body is "
+                             f"centred on the symmetry plane y = 0; give y = 0, or leave symmetry out")
+        if b.euler is not None and (b.euler[0] != 0.0 or b.euler[2] != 0.0):
+            raise SceneError(f"bodies[{i}].euler", f"{_pt(b.euler)} deg: with domain.symmetry a body turns about y "
+                             f"only (its mirror image is itself); give [0, angle, 0], or leave symmetry out")
+        for name, p in b.fairleads.items():
+            if p[1] != 0.0 and mirrored(p) not in b.fairleads.values():
+                raise SceneError(f"bodies[{i}].fairleads.{name}", f"{_pt(p)} m has no mirror image {_pt(mirrored(p))} "
+                                 f"among the body's fairleads: with domain.symmetry every fairlead off the plane "
+                                 f"y = 0 has one; add it, or leave symmetry out")
+    if s.moorings is None:
+        return
+    bodies = {b.name: b for b in s.bodies}
+    def point(fairlead):
+        body, name = fairlead.split(".")
+        return body, tuple(bodies[body].fairleads[name])
+
+    def key(ln, mirror):
+        body, p = point(ln.fairlead)
+        f = mirrored if mirror else (lambda q: tuple(q))
+        return (body, f(p), f(ln.anchor), ln.length, ln.weight, ln.EA, ln.mass_per_length, ln.diameter,
+                ln.break_load)
+
+    lines = [key(ln, False) for ln in s.moorings.lines]
+    for i, ln in enumerate(s.moorings.lines):
+        if key(ln, True) not in lines:
+            raise SceneError(f"moorings.lines[{i}]", f"the line from {ln.fairlead} to the anchor {_pt(ln.anchor)} m "
+                             f"has no mirror image about y = 0 (the same line from the mirrored fairlead to "
+                             f"{_pt(mirrored(ln.anchor))} m): with domain.symmetry the lines are symmetric; add it, "
+                             f"or leave symmetry out")
 
 
 def _check_inside_near_field(s, dim):
@@ -492,7 +545,7 @@ def _check_inside_near_field(s, dim):
     from cosim.scene.nearfield import box_for, reach
 
     c, r = box_for(s), reach(s)
-    lo = [c.x[0] + c.zone] + ([c.y[0] + c.zone] if dim == 3 else [])
+    lo = [c.x[0] + c.zone] + ([c.y[0] + (0.0 if s.domain.symmetry else c.zone)] if dim == 3 else [])
     hi = [c.x[1] - c.zone] + ([c.y[1] - c.zone] if dim == 3 else [])
     keys = ("domain.x0 and domain.x1", "domain.width")
     for i, b in enumerate(s.bodies):
@@ -502,6 +555,8 @@ def _check_inside_near_field(s, dim):
         centre = b.base if isinstance(b, ElasticPlate) else b.pos
         for k in range(dim - 1):
             a, z = centre[k] - half[k] - r, centre[k] + half[k] + r
+            if k == 1 and s.domain.symmetry:  # the half beyond the plane y = 0 is its mirror image
+                a = max(a, lo[k])
             if a < lo[k] - 1e-9 or z > hi[k] + 1e-9:
                 raise SceneError(f"bodies[{i}].{_pos_key(b)}", f"the body and its reach {r:.3g} m (the sea's orbit, "
                                  f"doubled) span {a:.4g} .. {z:.4g} m along {'xy'[k]}, beyond the near field's water "
@@ -619,8 +674,11 @@ def _check_probes(s, dim, mj):
                              f"{'x [m]' if dim == 2 else '(x, y) [m]'}")
         if s.domain is not None:
             lo, hi = _domain_box(s.domain, dim, s)
+            plane = isinstance(s.domain, NearField) and s.domain.symmetry  # y = 0 a symmetry plane, not a wall
             for k, x in enumerate((g,) if isinstance(g, float) else g):
                 where = "" if dim == 2 else f"{list(g)}: "
+                if plane and k == 1:  # a gauge at y < 0 reads its mirror image
+                    lo = (lo[0], -hi[1])
                 if not lo[k] <= x <= hi[k]:
                     raise SceneError(f"probes.gauges[{i}]", f"{where}{'xy'[k]} = {x:g} m lies outside the domain's "
                                      f"{lo[k]:g} .. {hi[k]:g} m; put the gauge over the water")

@@ -227,9 +227,9 @@ def sph_particles(scene) -> tuple[float, float, float]:
             water = length * d.depth / dx ** 2
             walls = (span * t + 2 * c.height * t) / dx ** 2
         else:
-            w = c.y[1] - c.y[0]
+            w, sides = c.y[1] - c.y[0], 1 if d.symmetry else 2  # a symmetry plane has no wall
             water = length * w * d.depth / dx ** 3
-            walls = (span * (w + 2 * t) * t + 2 * c.height * w * t + 2 * span * c.height * t) / dx ** 3
+            walls = (span * (w + sides * t) * t + 2 * c.height * w * t + sides * span * c.height * t) / dx ** 3
     elif isinstance(d, CylinderTank):
         r = 0.5 * d.diameter
         water = math.pi * r * r * d.depth / dx ** 3

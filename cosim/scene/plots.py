@@ -119,7 +119,7 @@ def plot_particles(path, scene, built, t: float) -> None:
     from cosim.scene.spec import Flume
     from fluid.particles import Kind
 
-    ps = built.sph.ps
+    ps = built.sph.simulated()
     fl = ps.kind == Kind.FLUID
     x, z = ps.pos[:, 0], ps.pos[:, -1]
     speed = scene.world.plot_color == "velocity"

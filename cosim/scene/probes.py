@@ -345,7 +345,10 @@ class Gauges(Probe):
 
             def gauges():
                 w = _in_tank(built, base)
-                return surface_elevation(sph, w[:, 0] if dim == 2 else w[:, :2]) - w[:, -1]
+                at = w[:, 0] if dim == 2 else w[:, :2].copy()
+                if sph.mirror is not None:  # a gauge beyond a symmetry plane reads its mirror image
+                    at[:, 1] = sph.mirror.y0 + np.abs(at[:, 1] - sph.mirror.y0)
+                return surface_elevation(sph, at) - w[:, -1]
 
             return [Group("gauges", [f"gauge{i + 1}.eta" for i in range(len(g))], ["m"] * len(g), gauges,
                           labels=_gauge_labels(p.gauges, dim))]

@@ -187,7 +187,7 @@ class _Recorder:
     def snapshot(self, t: float):
         sph = self.built.sph
         if sph is not None:
-            ps = sph.ps
+            ps = sph.simulated()  # a symmetry plane's mirror images are not written
             self.h5.snapshot(t, ps.pos, **{f: getattr(ps, f) for f in SNAPSHOT_FIELDS})
             self.n_snap += 1
         self.write_ledger()
@@ -556,7 +556,7 @@ def _summary(scene, built, series, units, steps, loop_s, build_s, cpu_s, wall_be
     if built.sph is not None:
         from fluid.particles import Kind
 
-        ps = built.sph.ps
+        ps = built.sph.simulated()
         s["particles"], s["fluid_particles"] = int(ps.n), int((ps.kind == Kind.FLUID).sum())
         s["speed_of_sound_m_s"] = built.sph.config.speed_of_sound
     if built.start_heights:
