@@ -73,9 +73,8 @@ class SPHFluid:
         How the bodies' boundary particles get their density: ``"mdbc"`` (default;
         modified dynamic boundaries, ``fluid.boundary_correction``: the fluid rests
         against the geometric surface, so a body displaces its own volume) or
-        ``"dbc"`` (plain dynamic boundaries, Barreiro et al. 2016, §2.6: the fluid stands off by
-        a gap of order h and a floating body rides high by a fraction of dx).
-        The tank walls follow ``config.walls`` (``fluid.solver.FluidConfig``).
+        ``"dbc"`` (plain dynamic boundaries, Barreiro et al. 2016, §2.6: the fluid stands off
+        by about h). The tank walls follow ``config.walls`` (``fluid.solver.FluidConfig``).
     motions:
         Prescribed motions of wall groups, ``{group: motion}`` (a wavemaker's paddle, a
         shaking tank; see ``fluid.solver.Fluid.prescribe_motion``), set when the fluid is
@@ -92,11 +91,8 @@ class SPHFluid:
         Relaxation zones (``fluid.relaxation.Slab``: a near field's, ``fluid.nearfield``),
         given to the fluid when it is built at attachment.
 
-    With a symmetry plane y = 0 (``config.symmetry_y``, :mod:`fluid.mirror`) each rigid
-    body, symmetric about it and centred on it, keeps the boundary particles of its half
-    y >= 0 (body frame); its load is its half's mirrored, ``F = (2 Fx, 0, 2 Fz)``,
-    ``T = (0, 2 Ty, 0)`` about its centre of mass on the plane, the particles on the plane
-    (their own groups, with no images) counted once. No elastic plates.
+    A symmetry plane y = 0 (``config.symmetry_y``, :mod:`fluid.mirror`): each rigid body
+    keeps its half y >= 0 and gets that half's load mirrored (:meth:`_to_wrench3`).
     """
 
     def __init__(self, config: FluidConfig, fluid_points, walls=(), *, z_surface: float | None = None,
@@ -332,6 +328,11 @@ class SPHFluid:
         return self._to_wrench3(*self.fluid.group_loads())
 
     def _to_wrench3(self, F_all, M_all):
+        """The bodies' forces and torques (3-D) from the groups' loads. With a symmetry plane
+        each body, symmetric about it and centred on it, has the boundary particles of its
+        half y >= 0 (body frame): its load is its half's mirrored, ``F = (2 Fx, 0, 2 Fz)``,
+        ``T = (0, 2 Ty, 0)`` about its centre of mass on the plane, its particles on the
+        plane (their own groups, with no images) counted once."""
         F, M = F_all[self._g0:self._g0 + self.n_bodies], M_all[self._g0:self._g0 + self.n_bodies]
         if self.symmetry:  # the half's load mirrored across y = 0, the plane's rows once
             Fp, Mp = np.zeros_like(F), np.zeros_like(M)  # groups past the last one present hold nothing
