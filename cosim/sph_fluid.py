@@ -64,8 +64,7 @@ class SPHFluid:
     walls:
         ``(points, kind, group)`` wall sets, as for ``fluid.geometry.assemble``.
     z_surface:
-        If given, the initial densities are hydrostatic below this free-surface
-        height [m].
+        If given, the initial densities are hydrostatic below this surface height [m].
     body_layers:
         Layers of boundary particles inside each body's surface; default: enough
         to fill the kernel support (ceil(2 h / dx)).
