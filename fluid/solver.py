@@ -591,7 +591,8 @@ class Fluid:
         return {"ps": self.ps.copy(), "t": self.t, "steps": self.counters.steps,
                 "removed": dict(self.counters.removed),
                 "aux": {k: v.copy() for k, v in self._aux.items()},  # Verlet's n-1 state
-                "rates": tuple(None if a is None else a.copy() for a in rates) + (self._limit, self._stale)}
+                "rates": tuple(None if a is None else a.copy() for a in rates) + (self._limit, self._stale),
+                "mirror": None if self.mirror is None else (self.mirror.rows.copy(), self.mirror.src.copy())}
 
     def load_state(self, state) -> None:
         self.ps = state["ps"].copy()
@@ -599,7 +600,9 @@ class Fluid:
         self.counters.steps = state["steps"]
         self.counters.removed = dict(state["removed"])
         self._aux = {k: v.copy() for k, v in state["aux"].items()}
-        if "rates" not in state:  # a state saved by an older version
+        if self.mirror is not None and state.get("mirror") is not None:  # the images' sources in this order
+            self.mirror.rows, self.mirror.src = (np.array(a, np.int64) for a in state["mirror"])
+        if "rates" not in state or (self.mirror is not None and state.get("mirror") is None):
             self._sort()
             self._rates()
             self._stale = False

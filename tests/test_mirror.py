@@ -113,3 +113,16 @@ def test_a_symmetry_plane_is_refused_where_it_cannot_hold():
     ps = _symmetric_tank()
     with pytest.raises(InputError, match="beyond the symmetry plane"):
         Fluid(FluidConfig(dim=3, dx=DX, c0=20.0, symmetry_y=0.0), ps)
+
+
+def test_a_saved_state_with_images_continues_bit_for_bit():
+    _, half = _pair(_symmetric_tank(2))
+    half.initialize(0.0)
+    half.advance(0.0, 0.005)
+    state = half.save_state()
+    half.advance(0.005, 0.005)
+    first = half.ps.pos.copy(), half.mirror.rows.copy()
+    half.load_state(state)
+    half.advance(0.005, 0.005)
+    np.testing.assert_array_equal(half.ps.pos, first[0])
+    np.testing.assert_array_equal(half.mirror.rows, first[1])
