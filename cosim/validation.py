@@ -15,7 +15,9 @@ leaves them out) and any further JSON-ready keys. It does not return ``passed``:
 :func:`run` judges it from the metrics and the tolerances, the same way for a quick
 variant and a full one, and adds ``name``, ``quick``, ``target`` (the text of what was
 judged), ``stated_target``, ``stated`` (the stated target with its measured values, where
-the judged tolerances differ from it) and ``wall_s``. ``quick=True`` is the coarse
+the judged tolerances differ from it), ``wall_s`` and ``process_cpu_s`` (the case's CPU
+seconds in this process, all its threads; a case that runs its work in other processes
+shows little). ``quick=True`` is the coarse
 variant that CI runs. Cases live in the modules of :mod:`cosim.validations`, imported
 only when a case is listed or run (by name, :data:`CASE_MODULES`), so ``import cosim``
 stays light; none of them imports this module.
@@ -79,9 +81,9 @@ def run(name: str, quick: bool = False) -> dict:
     if name not in known:
         raise InputError(f"no validation case {name!r}; known cases: {', '.join(known)}")
     c = known[name]
-    t0 = time.perf_counter()
+    t0, c0 = time.perf_counter(), time.process_time()
     out = c.fn(quick)
-    wall = time.perf_counter() - t0
+    wall, cpu = time.perf_counter() - t0, time.process_time() - c0
     if "passed" in out:
         raise TypeError(f"validation case {name!r} returned 'passed': it is judged from its tolerances by run()")
     metrics, tolerances = out.pop("metrics", {}), out.pop("tolerances", {})
@@ -110,6 +112,7 @@ def run(name: str, quick: bool = False) -> dict:
         record["departure"] = {"criterion": departure["criterion"], "why": departure["why"]}
     record.update(out)
     record["wall_s"] = round(wall, 4)
+    record["process_cpu_s"] = round(cpu, 4)
     if series:
         record["series"] = series
     return record

@@ -65,7 +65,7 @@ def test_validate_list_and_run(capsys, tmp_path):
     assert main(["validate", "catenary-limits", "--quick"]) == 0
     rec = json.loads(capsys.readouterr().out)
     assert rec["name"] == "catenary-limits" and rec["passed"] is True and rec["quick"] is True
-    for key in ("metrics", "tolerances", "particles", "steps", "wall_s"):
+    for key in ("metrics", "tolerances", "particles", "steps", "wall_s", "process_cpu_s"):
         assert key in rec
     with pytest.raises(SystemExit):
         main(["validate", "no-such-case"])
