@@ -26,7 +26,10 @@ stays light; none of them imports this module.
 from __future__ import annotations
 
 import importlib
+import math
+import os
 import time
+from collections.abc import Iterator
 from pathlib import Path
 
 from cosim.errors import InputError
@@ -118,10 +121,71 @@ def run(name: str, quick: bool = False) -> dict:
     return record
 
 
+def cores() -> int:
+    """The CPU cores this process may run on."""
+    return len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
+
+
+def _worker_threads(threads: int) -> None:
+    """A worker's numba threads, set before its first case imports numba."""
+    os.environ["NUMBA_NUM_THREADS"] = str(threads)
+
+
+def _stop(pool) -> None:
+    """Cancel what has not started and end the pool's own workers (the running cases)."""
+    pool.shutdown(wait=False, cancel_futures=True)
+    for proc in list((getattr(pool, "_processes", None) or {}).values()):
+        proc.terminate()
+
+
+def run_many(names: list[str], quick: bool = False, jobs: int = 1,
+             costs: dict[str, float] | None = None) -> Iterator[dict]:
+    """The records of :func:`run` for each case of ``names``, in that order. ``jobs`` > 1:
+    that many cases at once, each in a worker process of its own (spawned, so that no
+    numba threads are forked) with ``cores() // jobs`` numba threads (at least one). A
+    case's fluid runs on one thread below its parallel threshold (``FluidConfig.
+    parallel_min_particles``), which every quick variant is, so on N cores N cases run in
+    about the time of one. They start costliest first by ``costs`` (case: seconds, from
+    earlier records; a case without one counts as the costliest), the longest-processing-
+    time rule (Graham 1969): the last case to finish then starts early. A case that raises
+    stops the others and the error reaches the caller, as without workers. A script that
+    calls it with ``jobs`` > 1 does so under ``if __name__ == "__main__":`` (the workers
+    import the main module)."""
+    known = cases()
+    unknown = [n for n in names if n not in known]
+    if unknown:
+        raise InputError(f"no validation case {', '.join(map(repr, unknown))}; known cases: {', '.join(known)}")
+    if jobs < 1:
+        raise InputError(f"jobs={jobs!r}: give at least 1 (cases run at once)")
+    if jobs == 1 or len(names) < 2:
+        for name in names:
+            yield run(name, quick)
+        return
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    first = sorted(names, key=lambda n: -(costs or {}).get(n, math.inf))
+    pool = ProcessPoolExecutor(min(jobs, len(names)), mp_context=multiprocessing.get_context("spawn"),
+                               initializer=_worker_threads, initargs=(max(1, cores() // jobs),))
+    try:
+        futures = {name: pool.submit(run, name, quick) for name in first}
+        for name in names:
+            yield futures[name].result()
+    except BaseException:
+        _stop(pool)
+        raise
+    pool.shutdown()
+
+
 # ------------------------------------------------------------------------------- listing
 #: where a checkout keeps the records of the last validation runs (``cosim validate --report``'s
 #: records.jsonl), which ``cosim validate --list`` reads when it is there
 COMMITTED_RECORDS = "docs/validation/records.jsonl"
+
+
+def committed_records() -> Path:
+    """The checkout's :data:`COMMITTED_RECORDS` (it may not exist: an installed package)."""
+    return Path(__file__).resolve().parents[1] / COMMITTED_RECORDS
 
 
 def status(rec: dict) -> str:

@@ -83,6 +83,22 @@ def test_from_rebuilds_the_same_report(quick_report, tmp_path):
         main(["validate", "--from", str(saved)])
 
 
+def test_cases_run_at_once_give_the_records_of_one_after_the_other(capsys):
+    """--jobs 2 runs the cases in two worker processes: the same records (but their costs),
+    printed in the order named; --jobs 0 is refused."""
+    printed = {}
+    for jobs in ("1", "2"):
+        assert main(["validate", *CHEAP, "--quick", "--jobs", jobs]) == 0
+        printed[jobs] = [json.loads(s) for s in capsys.readouterr().out.splitlines()]
+    assert [r["name"] for r in printed["2"]] == CHEAP
+    cost = ("wall_s", "process_cpu_s")
+    for one, two in zip(printed["1"], printed["2"]):
+        assert {k: v for k, v in one.items() if k not in cost} == {k: v for k, v in two.items() if k not in cost}
+    with pytest.raises(SystemExit):
+        main(["validate", *CHEAP, "--quick", "--jobs", "0"])
+    assert "--jobs 0: give at least 1" in capsys.readouterr().err
+
+
 @pytest.mark.parametrize("name", CHEAP + ["catenary-johanning-2007", "catenary-johanning-2006", "cable-case1"])
 def test_a_quick_record_passes_when_every_metric_is_within_its_declared_tolerance(name):
     r = validation.run(name, quick=True)
