@@ -265,7 +265,7 @@ def _validate_parser(sub):
         help="run validation cases (one JSON object per case), optionally write a report",
         description="Run validation cases of docs/VALIDATION.md; each prints one JSON object "
         "with name, passed, target (what it was judged against), metrics, tolerances, particles, steps, "
-        "wall_s and process_cpu_s; passed means every metric named in tolerances is within it, for a quick "
+        "wall_s and case_cpu_s; passed means every metric named in tolerances is within it, for a quick "
         "variant (its own declared tolerances) as for a full one. Exit status 1 if any fails. --report DIR also writes a "
         "report (index.md, index.html, a page per case with its plots); --from FILE.jsonl builds the report "
         "from saved records (the JSON lines printed here) without running anything.",

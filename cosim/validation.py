@@ -15,10 +15,9 @@ leaves them out) and any further JSON-ready keys. It does not return ``passed``:
 :func:`run` judges it from the metrics and the tolerances, the same way for a quick
 variant and a full one, and adds ``name``, ``quick``, ``target`` (the text of what was
 judged), ``stated_target``, ``stated`` (the stated target with its measured values, where
-the judged tolerances differ from it), ``wall_s`` and ``process_cpu_s`` (the case's CPU
-seconds in this process, all its threads; a case that runs its work in other processes
-shows little). ``quick=True`` is the coarse
-variant that CI runs. Cases live in the modules of :mod:`cosim.validations`, imported
+the judged tolerances differ from it), ``wall_s`` and ``case_cpu_s`` (the case's CPU
+seconds: all its threads and the processes it ran and waited for). ``quick=True`` is the
+coarse variant that CI runs. Cases live in the modules of :mod:`cosim.validations`, imported
 only when a case is listed or run (by name, :data:`CASE_MODULES`), so ``import cosim``
 stays light; none of them imports this module.
 """
@@ -78,15 +77,21 @@ def target_text(c: Case, quick: bool, departure: dict | None = None) -> str:
     return f"full: {stated}"
 
 
+def _cpu_s() -> float:
+    """CPU seconds of this process and of the child processes it has waited for."""
+    t = os.times()
+    return t.user + t.system + t.children_user + t.children_system
+
+
 def run(name: str, quick: bool = False) -> dict:
     """Run one case and return its record: JSON-ready but for ``series`` (if any)."""
     known = cases()
     if name not in known:
         raise InputError(f"no validation case {name!r}; known cases: {', '.join(known)}")
     c = known[name]
-    t0, c0 = time.perf_counter(), time.process_time()
+    t0, c0 = time.perf_counter(), _cpu_s()
     out = c.fn(quick)
-    wall, cpu = time.perf_counter() - t0, time.process_time() - c0
+    wall, cpu = time.perf_counter() - t0, _cpu_s() - c0
     if "passed" in out:
         raise TypeError(f"validation case {name!r} returned 'passed': it is judged from its tolerances by run()")
     metrics, tolerances = out.pop("metrics", {}), out.pop("tolerances", {})
@@ -115,7 +120,7 @@ def run(name: str, quick: bool = False) -> dict:
         record["departure"] = {"criterion": departure["criterion"], "why": departure["why"]}
     record.update(out)
     record["wall_s"] = round(wall, 4)
-    record["process_cpu_s"] = round(cpu, 4)
+    record["case_cpu_s"] = round(cpu, 4)
     if series:
         record["series"] = series
     return record
@@ -189,23 +194,33 @@ def committed_records() -> Path:
 
 
 def status(rec: dict) -> str:
-    """What a record says of its case: ``target met`` (judged on the stated target, or on
-    the quick variant's declared one), ``departure met`` (judged on a criterion that departs
-    from the stated target, which is then ``stated target met`` / ``not met`` / unmeasured),
-    or ``not met``."""
+    """What a record says of its case: ``target met`` (judged on the stated target, or a
+    quick variant on its declared one), ``departure met`` (a full variant judged on a
+    criterion that departs from the stated target, which is then ``stated target met`` /
+    ``not met`` / unmeasured), or ``not met``."""
     if not rec.get("passed"):
         return "not met"
-    if not rec.get("departure"):
+    if rec.get("quick") or not rec.get("departure"):
         return "target met"
     met = (rec.get("stated") or {}).get("met")
     return "departure met (stated target " + {True: "met", False: "not met"}.get(met, "not measured") + ")"
 
 
+def _seconds(rec: dict | None) -> str:
+    """A record's wall time, short ("-" without one)."""
+    w = (rec or {}).get("wall_s")
+    if w is None:
+        return "-"
+    return f"{w:.0f}" if w >= 100 else f"{w:.1f}" if w >= 1 else f"{w:.2f}" if w >= 0.01 else "<0.01"
+
+
 def listing(records: list[dict] | None, source: str = "") -> list[str]:
     """``cosim validate --list``: each case with the cost (wall time) and status of its quick
     and full variant in ``records`` (records of :func:`run`, e.g. read from a report's
-    records.jsonl), or, without records, the cases and their targets with a line that says
-    that their costs and statuses are unknown and how to measure them."""
+    records.jsonl), a record judged against another target than the case's present one
+    marked as such, and the quick variants' total; or, without records, the cases and their
+    descriptions with a line that says that their costs and statuses are unknown and how to
+    measure them."""
     known = cases()
     lines = []
     if not records:
@@ -217,15 +232,29 @@ def listing(records: list[dict] | None, source: str = "") -> list[str]:
         return lines
     by = {(r["name"], bool(r.get("quick"))): r for r in records}
     lines += [f"from {source}" if source else "from the records given", ""]
-    head = f"{'case':28s} {'quick':>9s} {'full':>9s}  status"
+    head = f"{'case':28s} {'quick [s]':>9s} {'full [s]':>9s}  status"
     lines += [head, "-" * len(head)]
+    stale = False
     for c in known.values():
-        q, f = by.get((c.name, True)), by.get((c.name, False))
-        cost = [f"{r['wall_s']:7.3g} s" if r and r.get("wall_s") is not None else f"{'-':>9s}" for r in (q, f)]
-        said = [f"full: {status(f)}" if f else "full: no record", f"quick: {status(q)}" if q else "quick: no record"]
-        lines.append(f"{c.name:28s} {cost[0]} {cost[1]}  {'; '.join(said)}")
-    lines += ["", "wall time of the recorded run; target met: judged on the stated target of "
-              f"{VALIDATION_DOC} (a quick variant: its declared one); departure met: judged on the criterion the "
-              "record names instead"]
+        said = []
+        for variant, quick in (("quick", True), ("full", False)):
+            r = by.get((c.name, quick))
+            said.append(f"{variant}: {status(r)}" if r else f"{variant}: no record")
+            if r and r.get("target") != target_text(c, quick, r.get("departure")):
+                said[-1] += " (*)"
+                stale = True
+        cost = [_seconds(by.get((c.name, quick))) for quick in (True, False)]
+        lines.append(f"{c.name:28s} {cost[0]:>9s} {cost[1]:>9s}  {'; '.join(said)}")
+    quick = [r for (name, q), r in by.items() if q and name in known]
+    total = sum(r.get("wall_s") or 0.0 for r in quick), sum(r.get("case_cpu_s") or 0.0 for r in quick)
+    lines += [""]
+    if quick:
+        lines += [f"quick variants: {len(quick)} of {len(known)} cases recorded, {total[0]:.0f} s of wall time and "
+                  f"{total[1]:.0f} CPU s in all;",
+                  "  cosim validate all --quick runs as many at once as the machine has cores (--jobs)"]
+    if stale:
+        lines += ["(*) the record was judged against another target than the case's present one: run it again"]
+    lines += ["cost: the wall time of the recorded run",
+              f"target met: judged on the stated target of {VALIDATION_DOC} (a quick variant: on its declared one)",
+              "departure met: judged on a criterion that departs from the stated target, named in the record"]
     return lines
-
