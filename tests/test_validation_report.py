@@ -91,7 +91,7 @@ def test_cases_run_at_once_give_the_records_of_one_after_the_other(capsys):
         assert main(["validate", *CHEAP, "--quick", "--jobs", jobs]) == 0
         printed[jobs] = [json.loads(s) for s in capsys.readouterr().out.splitlines()]
     assert [r["name"] for r in printed["2"]] == CHEAP
-    cost = ("wall_s", "process_cpu_s")
+    cost = ("wall_s", "case_cpu_s")
     for one, two in zip(printed["1"], printed["2"]):
         assert {k: v for k, v in one.items() if k not in cost} == {k: v for k, v in two.items() if k not in cost}
     with pytest.raises(SystemExit):
@@ -221,3 +221,4 @@ def test_every_quick_record_is_judged_by_its_declared_tolerances():
         assert r["tolerances"] and r["target"].startswith("quick: ")
         failed = validation.judge(r["metrics"], r["tolerances"])[1]
         assert r["passed"] == (not failed) and r["outside_tolerance"] == failed, name
+
