@@ -266,9 +266,10 @@ def _validate_parser(sub):
         description="Run validation cases of docs/VALIDATION.md; each prints one JSON object "
         "with name, passed, target (what it was judged against), metrics, tolerances, particles, steps, "
         "wall_s and case_cpu_s; passed means every metric named in tolerances is within it, for a quick "
-        "variant (its own declared tolerances) as for a full one. Exit status 1 if any fails. --report DIR also writes a "
-        "report (index.md, index.html, a page per case with its plots); --from FILE.jsonl builds the report "
-        "from saved records (the JSON lines printed here) without running anything.",
+        "variant (its own declared tolerances) as for a full one. Exit status 1 if any fails. Several cases "
+        "run at once, one per core (--jobs). --report DIR also writes a report (index.md, index.html, a page "
+        "per case with its plots); --from FILE.jsonl builds the report from saved records (the JSON lines "
+        "printed here) without running anything.",
     )
     p.add_argument("names", nargs="*", help="case names, or 'all' (with --from: all the file holds)")
     p.add_argument("--list", action="store_true",
