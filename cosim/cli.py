@@ -273,7 +273,7 @@ def _validate_parser(sub):
     )
     p.add_argument("names", nargs="*", help="case names, or 'all' (with --from: all the file holds)")
     p.add_argument("--list", action="store_true",
-                   help="list the cases with the cost (wall time) and status (target met, departure met, not met) of "
+                   help="list the cases with the cost (CPU seconds) and status (target met, departure met, not met) of "
                         "their quick and full variants from the records of a report (--from FILE.jsonl, default "
                         "docs/validation/records.jsonl where a checkout has one), and exit")
     p.add_argument("--quick", action="store_true", help="coarse variant (what CI runs)")

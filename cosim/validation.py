@@ -206,21 +206,28 @@ def status(rec: dict) -> str:
     return "departure met (stated target " + {True: "met", False: "not met"}.get(met, "not measured") + ")"
 
 
-def _seconds(rec: dict | None) -> str:
-    """A record's wall time, short ("-" without one)."""
-    w = (rec or {}).get("wall_s")
-    if w is None:
+def cost(rec: dict | None) -> float | None:
+    """A record's cost [s]: its CPU seconds (``case_cpu_s``: on one core, what the machine's
+    load changes least), or its wall time where it has none."""
+    rec = rec or {}
+    return rec.get("case_cpu_s", rec.get("wall_s"))
+
+
+def _seconds(s: float | None) -> str:
+    """Seconds, short ("-" for none)."""
+    if s is None:
         return "-"
-    return f"{w:.0f}" if w >= 100 else f"{w:.1f}" if w >= 1 else f"{w:.2f}" if w >= 0.01 else "<0.01"
+    return f"{s:.0f}" if s >= 100 else f"{s:.1f}" if s >= 1 else f"{s:.2f}" if s >= 0.01 else "<0.01"
 
 
 def listing(records: list[dict] | None, source: str = "") -> list[str]:
-    """``cosim validate --list``: each case with the cost (wall time) and status of its quick
-    and full variant in ``records`` (records of :func:`run`, e.g. read from a report's
+    """``cosim validate --list``: each case with the cost (:func:`cost`) and status of its
+    quick and full variant in ``records`` (records of :func:`run`, e.g. read from a report's
     records.jsonl), a record judged against another target than the case's present one
-    marked as such, and the quick variants' total; or, without records, the cases and their
-    descriptions with a line that says that their costs and statuses are unknown and how to
-    measure them."""
+    marked as such, and the quick variants' total with the wall time it takes on this
+    machine's cores (the total over the cores, or the costliest case if that is longer);
+    or, without records, the cases and their descriptions with a line that says that their
+    costs and statuses are unknown and how to measure them."""
     known = cases()
     lines = []
     if not records:
@@ -243,18 +250,18 @@ def listing(records: list[dict] | None, source: str = "") -> list[str]:
             if r and r.get("target") != target_text(c, quick, r.get("departure")):
                 said[-1] += " (*)"
                 stale = True
-        cost = [_seconds(by.get((c.name, quick))) for quick in (True, False)]
-        lines.append(f"{c.name:28s} {cost[0]:>9s} {cost[1]:>9s}  {'; '.join(said)}")
-    quick = [r for (name, q), r in by.items() if q and name in known]
-    total = sum(r.get("wall_s") or 0.0 for r in quick), sum(r.get("case_cpu_s") or 0.0 for r in quick)
+        costs = [_seconds(cost(by.get((c.name, quick)))) for quick in (True, False)]
+        lines.append(f"{c.name:28s} {costs[0]:>9s} {costs[1]:>9s}  {'; '.join(said)}")
+    quick = [cost(r) or 0.0 for (name, q), r in by.items() if q and name in known]
     lines += [""]
     if quick:
-        lines += [f"quick variants: {len(quick)} of {len(known)} cases recorded, {total[0]:.0f} s of wall time and "
-                  f"{total[1]:.0f} CPU s in all;",
-                  "  cosim validate all --quick runs as many at once as the machine has cores (--jobs)"]
+        n = cores()
+        lines += [f"quick variants: {len(quick)} of {len(known)} cases recorded, {sum(quick):.0f} s in all;",
+                  f"  cosim validate all --quick runs {n} at once on this machine's {n} cores (--jobs): about "
+                  f"{max(sum(quick) / n, max(quick)):.0f} s of wall time"]
     if stale:
         lines += ["(*) the record was judged against another target than the case's present one: run it again"]
-    lines += ["cost: the wall time of the recorded run",
+    lines += ["cost: the CPU seconds of the recorded run, on one core (its wall time where it has none)",
               f"target met: judged on the stated target of {VALIDATION_DOC} (a quick variant: on its declared one)",
               "departure met: judged on a criterion that departs from the stated target, named in the record"]
     return lines
