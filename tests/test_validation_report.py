@@ -222,3 +222,25 @@ def test_every_quick_record_is_judged_by_its_declared_tolerances():
         failed = validation.judge(r["metrics"], r["tolerances"])[1]
         assert r["passed"] == (not failed) and r["outside_tolerance"] == failed, name
 
+
+def test_the_committed_records_give_every_case_its_quick_cost_and_status(capsys):
+    """docs/validation/records.jsonl, the records of ``cosim validate all --quick --report
+    DIR``: a quick record of every case, judged against the case's present quick target and
+    by its own tolerances (passed as judge() finds it), with its costs; ``cosim validate
+    --list`` on a bare checkout shows each case's cost and status from them."""
+    recs = report.read_records(validation.committed_records())
+    cases = validation.cases()
+    quick = {r["name"]: r for r in recs if r["quick"]}
+    assert set(quick) == set(cases), set(cases) ^ set(quick)
+    for name, r in quick.items():
+        assert r["target"] == validation.target_text(cases[name], True), f"{name}: run it again"
+        assert r["passed"] == validation.judge(r["metrics"], r["tolerances"])[0], name
+        assert r["wall_s"] > 0 and r["case_cpu_s"] >= 0, name
+    assert main(["validate", "--list"]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith(f"from {validation.committed_records()}") and "(*)" not in out
+    rows = {ln.split()[0]: ln for ln in out.splitlines() if ln.split() and ln.split()[0] in cases}
+    for name, r in quick.items():
+        cost, status = rows[name].split()[1], rows[name].split("  ")[-1]
+        assert float(cost.lstrip("<")) == pytest.approx(r["case_cpu_s"], rel=0.05, abs=0.01), name
+        assert status.startswith("quick: target met;" if r["passed"] else "quick: not met;"), name
