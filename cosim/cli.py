@@ -264,18 +264,23 @@ def _validate_parser(sub):
         "validate",
         help="run validation cases (one JSON object per case), optionally write a report",
         description="Run validation cases of docs/VALIDATION.md; each prints one JSON object "
-        "with name, passed, target (what it was judged against), metrics, tolerances, particles, steps and "
-        "wall_s; passed means every metric named in tolerances is within it, for a quick variant (its own "
-        "declared tolerances) as for a full one. Exit status 1 if any fails. --report DIR also writes a "
-        "report (index.md, index.html, a page per case with its plots); --from FILE.jsonl builds the report "
-        "from saved records (the JSON lines printed here) without running anything.",
+        "with name, passed, target (what it was judged against), metrics, tolerances, particles, steps, "
+        "wall_s and case_cpu_s; passed means every metric named in tolerances is within it, for a quick "
+        "variant (its own declared tolerances) as for a full one. Exit status 1 if any fails. Several cases "
+        "run at once, one per core (--jobs). --report DIR also writes a report (index.md, index.html, a page "
+        "per case with its plots); --from FILE.jsonl builds the report from saved records (the JSON lines "
+        "printed here) without running anything.",
     )
     p.add_argument("names", nargs="*", help="case names, or 'all' (with --from: all the file holds)")
     p.add_argument("--list", action="store_true",
-                   help="list the cases with the cost (wall time) and status (target met, departure met, not met) of "
+                   help="list the cases with the cost (CPU seconds) and status (target met, departure met, not met) of "
                         "their quick and full variants from the records of a report (--from FILE.jsonl, default "
                         "docs/validation/records.jsonl where a checkout has one), and exit")
     p.add_argument("--quick", action="store_true", help="coarse variant (what CI runs)")
+    p.add_argument("--jobs", type=int, metavar="N",
+                   help="cases run at once, each in a process of its own with cores/N numba threads, the costliest "
+                        "first by the committed records; default: as many as the machine has cores (1: one after "
+                        "the other in this process)")
     p.add_argument("--report", metavar="DIR", help="also write a report into DIR (records.jsonl, series/, "
                    "index.md, index.html, CASE.md, CASE.html, plots)")
     p.add_argument("--from", dest="from_file", metavar="FILE.jsonl",
@@ -563,8 +568,7 @@ def cmd_validate(args, parser) -> int:
     if args.list:
         from cosim import report
 
-        path = Path(args.from_file) if args.from_file else (Path(__file__).resolve().parents[1]
-                                                            / validation.COMMITTED_RECORDS)
+        path = Path(args.from_file) if args.from_file else validation.committed_records()
         records = report.read_records(path) if path.is_file() else None
         if args.from_file and records is None:
             parser.error(f"--from {args.from_file}: no such file")
@@ -590,14 +594,19 @@ def cmd_validate(args, parser) -> int:
     unknown = [n for n in names if n not in known]
     if unknown:
         parser.error(f"unknown case(s) {', '.join(unknown)}; known: {', '.join(known)}")
+    if args.jobs is not None and args.jobs < 1:
+        parser.error(f"--jobs {args.jobs}: give at least 1 (cases run at once)")
     ok = True
     records = []
-    if args.report:
-        from cosim import report
+    from cosim import report
 
+    if args.report:
         report.prepare(args.report)
-    for name in names:
-        rec = validation.run(name, quick=args.quick)
+    committed = validation.committed_records()
+    costs = {r["name"]: r["wall_s"] for r in (report.read_records(committed) if committed.is_file() else [])
+             if bool(r.get("quick")) == args.quick and r.get("wall_s") is not None}
+    jobs = args.jobs or validation.cores()
+    for rec in validation.run_many(names, quick=args.quick, jobs=jobs, costs=costs):
         ok &= rec["passed"]
         line = json.dumps({k: v for k, v in rec.items() if k != "series"}, default=_json_default)
         print(line, flush=True)

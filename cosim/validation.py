@@ -15,8 +15,9 @@ leaves them out) and any further JSON-ready keys. It does not return ``passed``:
 :func:`run` judges it from the metrics and the tolerances, the same way for a quick
 variant and a full one, and adds ``name``, ``quick``, ``target`` (the text of what was
 judged), ``stated_target``, ``stated`` (the stated target with its measured values, where
-the judged tolerances differ from it) and ``wall_s``. ``quick=True`` is the coarse
-variant that CI runs. Cases live in the modules of :mod:`cosim.validations`, imported
+the judged tolerances differ from it), ``wall_s`` and ``case_cpu_s`` (the case's CPU
+seconds: all its threads and the processes it ran and waited for). ``quick=True`` is the
+coarse variant that CI runs. Cases live in the modules of :mod:`cosim.validations`, imported
 only when a case is listed or run (by name, :data:`CASE_MODULES`), so ``import cosim``
 stays light; none of them imports this module.
 """
@@ -24,7 +25,10 @@ stays light; none of them imports this module.
 from __future__ import annotations
 
 import importlib
+import math
+import os
 import time
+from collections.abc import Iterator
 from pathlib import Path
 
 from cosim.errors import InputError
@@ -73,15 +77,21 @@ def target_text(c: Case, quick: bool, departure: dict | None = None) -> str:
     return f"full: {stated}"
 
 
+def _cpu_s() -> float:
+    """CPU seconds of this process and of the child processes it has waited for."""
+    t = os.times()
+    return t.user + t.system + t.children_user + t.children_system
+
+
 def run(name: str, quick: bool = False) -> dict:
     """Run one case and return its record: JSON-ready but for ``series`` (if any)."""
     known = cases()
     if name not in known:
         raise InputError(f"no validation case {name!r}; known cases: {', '.join(known)}")
     c = known[name]
-    t0 = time.perf_counter()
+    t0, c0 = time.perf_counter(), _cpu_s()
     out = c.fn(quick)
-    wall = time.perf_counter() - t0
+    wall, cpu = time.perf_counter() - t0, _cpu_s() - c0
     if "passed" in out:
         raise TypeError(f"validation case {name!r} returned 'passed': it is judged from its tolerances by run()")
     metrics, tolerances = out.pop("metrics", {}), out.pop("tolerances", {})
@@ -110,9 +120,66 @@ def run(name: str, quick: bool = False) -> dict:
         record["departure"] = {"criterion": departure["criterion"], "why": departure["why"]}
     record.update(out)
     record["wall_s"] = round(wall, 4)
+    record["case_cpu_s"] = round(cpu, 4)
     if series:
         record["series"] = series
     return record
+
+
+def cores() -> int:
+    """The CPU cores this process may run on."""
+    return len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
+
+
+def _worker_threads(threads: int) -> None:
+    """A worker's numba threads, set before its first case imports numba."""
+    os.environ["NUMBA_NUM_THREADS"] = str(threads)
+
+
+def _stop(pool) -> None:
+    """Cancel what has not started and end the pool's own workers (the running cases)."""
+    pool.shutdown(wait=False, cancel_futures=True)
+    for proc in list((getattr(pool, "_processes", None) or {}).values()):
+        proc.terminate()
+
+
+def run_many(names: list[str], quick: bool = False, jobs: int = 1,
+             costs: dict[str, float] | None = None) -> Iterator[dict]:
+    """The records of :func:`run` for each case of ``names``, in that order. ``jobs`` > 1:
+    that many cases at once, each in a worker process of its own (spawned, so that no
+    numba threads are forked) with ``cores() // jobs`` numba threads (at least one). A
+    case's fluid runs on one thread below its parallel threshold (``FluidConfig.
+    parallel_min_particles``), which every quick variant is, so on N cores N cases run in
+    about the time of one. They start costliest first by ``costs`` (case: seconds, from
+    earlier records; a case without one counts as the costliest), the longest-processing-
+    time rule (Graham 1969): the last case to finish then starts early. A case that raises
+    stops the others and the error reaches the caller, as without workers. A script that
+    calls it with ``jobs`` > 1 does so under ``if __name__ == "__main__":`` (the workers
+    import the main module)."""
+    known = cases()
+    unknown = [n for n in names if n not in known]
+    if unknown:
+        raise InputError(f"no validation case {', '.join(map(repr, unknown))}; known cases: {', '.join(known)}")
+    if jobs < 1:
+        raise InputError(f"jobs={jobs!r}: give at least 1 (cases run at once)")
+    if jobs == 1 or len(names) < 2:
+        for name in names:
+            yield run(name, quick)
+        return
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    first = sorted(names, key=lambda n: -(costs or {}).get(n, math.inf))
+    pool = ProcessPoolExecutor(min(jobs, len(names)), mp_context=multiprocessing.get_context("spawn"),
+                               initializer=_worker_threads, initargs=(max(1, cores() // jobs),))
+    try:
+        futures = {name: pool.submit(run, name, quick) for name in first}
+        for name in names:
+            yield futures[name].result()
+    except BaseException:
+        _stop(pool)
+        raise
+    pool.shutdown()
 
 
 # ------------------------------------------------------------------------------- listing
@@ -121,24 +188,46 @@ def run(name: str, quick: bool = False) -> dict:
 COMMITTED_RECORDS = "docs/validation/records.jsonl"
 
 
+def committed_records() -> Path:
+    """The checkout's :data:`COMMITTED_RECORDS` (it may not exist: an installed package)."""
+    return Path(__file__).resolve().parents[1] / COMMITTED_RECORDS
+
+
 def status(rec: dict) -> str:
-    """What a record says of its case: ``target met`` (judged on the stated target, or on
-    the quick variant's declared one), ``departure met`` (judged on a criterion that departs
-    from the stated target, which is then ``stated target met`` / ``not met`` / unmeasured),
-    or ``not met``."""
+    """What a record says of its case: ``target met`` (judged on the stated target, or a
+    quick variant on its declared one), ``departure met`` (a full variant judged on a
+    criterion that departs from the stated target, which is then ``stated target met`` /
+    ``not met`` / unmeasured), or ``not met``."""
     if not rec.get("passed"):
         return "not met"
-    if not rec.get("departure"):
+    if rec.get("quick") or not rec.get("departure"):
         return "target met"
     met = (rec.get("stated") or {}).get("met")
     return "departure met (stated target " + {True: "met", False: "not met"}.get(met, "not measured") + ")"
 
 
+def cost(rec: dict | None) -> float | None:
+    """A record's cost [s]: its CPU seconds (``case_cpu_s``: on one core, what the machine's
+    load changes least), or its wall time where it has none."""
+    rec = rec or {}
+    return rec.get("case_cpu_s", rec.get("wall_s"))
+
+
+def _seconds(s: float | None) -> str:
+    """Seconds, short ("-" for none)."""
+    if s is None:
+        return "-"
+    return f"{s:.0f}" if s >= 100 else f"{s:.1f}" if s >= 1 else f"{s:.2f}" if s >= 0.01 else "<0.01"
+
+
 def listing(records: list[dict] | None, source: str = "") -> list[str]:
-    """``cosim validate --list``: each case with the cost (wall time) and status of its quick
-    and full variant in ``records`` (records of :func:`run`, e.g. read from a report's
-    records.jsonl), or, without records, the cases and their targets with a line that says
-    that their costs and statuses are unknown and how to measure them."""
+    """``cosim validate --list``: each case with the cost (:func:`cost`) and status of its
+    quick and full variant in ``records`` (records of :func:`run`, e.g. read from a report's
+    records.jsonl), a record judged against another target than the case's present one
+    marked as such, and the quick variants' total with the wall time it takes on this
+    machine's cores (the total over the cores, or the costliest case if that is longer);
+    or, without records, the cases and their descriptions with a line that says that their
+    costs and statuses are unknown and how to measure them."""
     known = cases()
     lines = []
     if not records:
@@ -150,15 +239,29 @@ def listing(records: list[dict] | None, source: str = "") -> list[str]:
         return lines
     by = {(r["name"], bool(r.get("quick"))): r for r in records}
     lines += [f"from {source}" if source else "from the records given", ""]
-    head = f"{'case':28s} {'quick':>9s} {'full':>9s}  status"
+    head = f"{'case':28s} {'quick [s]':>9s} {'full [s]':>9s}  status"
     lines += [head, "-" * len(head)]
+    stale = False
     for c in known.values():
-        q, f = by.get((c.name, True)), by.get((c.name, False))
-        cost = [f"{r['wall_s']:7.3g} s" if r and r.get("wall_s") is not None else f"{'-':>9s}" for r in (q, f)]
-        said = [f"full: {status(f)}" if f else "full: no record", f"quick: {status(q)}" if q else "quick: no record"]
-        lines.append(f"{c.name:28s} {cost[0]} {cost[1]}  {'; '.join(said)}")
-    lines += ["", "wall time of the recorded run; target met: judged on the stated target of "
-              f"{VALIDATION_DOC} (a quick variant: its declared one); departure met: judged on the criterion the "
-              "record names instead"]
+        said = []
+        for variant, quick in (("quick", True), ("full", False)):
+            r = by.get((c.name, quick))
+            said.append(f"{variant}: {status(r)}" if r else f"{variant}: no record")
+            if r and r.get("target") != target_text(c, quick, r.get("departure")):
+                said[-1] += " (*)"
+                stale = True
+        costs = [_seconds(cost(by.get((c.name, quick)))) for quick in (True, False)]
+        lines.append(f"{c.name:28s} {costs[0]:>9s} {costs[1]:>9s}  {'; '.join(said)}")
+    quick = [cost(r) or 0.0 for (name, q), r in by.items() if q and name in known]
+    lines += [""]
+    if quick:
+        n = cores()
+        lines += [f"quick variants: {len(quick)} of {len(known)} cases recorded, {sum(quick):.0f} s in all;",
+                  f"  cosim validate all --quick runs {n} at once on this machine's {n} cores (--jobs): about "
+                  f"{max(sum(quick) / n, max(quick)):.0f} s of wall time"]
+    if stale:
+        lines += ["(*) the record was judged against another target than the case's present one: run it again"]
+    lines += ["cost: the CPU seconds of the recorded run, on one core (its wall time where it has none)",
+              f"target met: judged on the stated target of {VALIDATION_DOC} (a quick variant: on its declared one)",
+              "departure met: judged on a criterion that departs from the stated target, named in the record"]
     return lines
-

@@ -44,28 +44,48 @@ def test_line_bad_input_is_a_clear_error(capsys):
     assert "--length is required" in capsys.readouterr().err
 
 
-def test_validate_list_and_run(capsys, tmp_path):
+def test_validate_list_and_run(capsys, tmp_path, monkeypatch):
+    from cosim import validation
+
+    monkeypatch.setattr(validation, "committed_records", lambda: tmp_path / "none.jsonl")
     assert main(["validate", "--list"]) == 0
     listed = capsys.readouterr().out
     for name in ("catenary-limits", "catenary-johanning-2007", "catenary-johanning-2006", "catenary-two-lines"):
         assert name in listed
     assert listed.startswith("no validation records in ") and "cost and status unknown" in listed
-    # with records (a report's records.jsonl): each variant's cost and what it met
+    # with records (a report's records.jsonl): each variant's cost [s] and what it met; a record
+    # judged against another target than the case's present one is marked
+    cases = validation.cases()
     records = tmp_path / "records.jsonl"
     records.write_text("\n".join(json.dumps(r) for r in (
-        {"name": "catenary-limits", "quick": True, "passed": True, "wall_s": 0.31},
+        {"name": "catenary-limits", "quick": True, "passed": True, "wall_s": 0.31, "case_cpu_s": 0.3,
+         "target": validation.target_text(cases["catenary-limits"], True)},
         {"name": "westergaard", "quick": False, "passed": True, "wall_s": 812.0,
-         "departure": {"criterion": "RMS of k_p", "why": "..."}, "stated": {"met": False}},
-        {"name": "dambreak-2d", "quick": False, "passed": False, "wall_s": 95.0})) + "\n")
+         "departure": {"criterion": "RMS of k_p", "why": "..."}, "stated": {"met": False},
+         "target": validation.target_text(cases["westergaard"], False, {"criterion": "RMS of k_p"})},
+        {"name": "westergaard", "quick": True, "passed": True, "wall_s": 3.9, "case_cpu_s": 3.8,
+         "departure": {"criterion": "RMS of k_p", "why": "..."}, "stated": {"met": False},
+         "target": validation.target_text(cases["westergaard"], True)},
+        {"name": "dambreak-2d", "quick": False, "passed": False, "wall_s": 95.0, "target": "full: an older one"}))
+        + "\n")
     assert main(["validate", "--list", "--from", str(records)]) == 0
-    rows = {ln.split()[0]: ln for ln in capsys.readouterr().out.splitlines() if ln.strip()}
-    assert "0.31 s" in rows["catenary-limits"] and "quick: target met" in rows["catenary-limits"]
-    assert "812 s" in rows["westergaard"] and "full: departure met (stated target not met)" in rows["westergaard"]
-    assert "full: not met" in rows["dambreak-2d"] and "quick: no record" in rows["dambreak-2d"]
+    out = capsys.readouterr().out
+    rows = {ln.split()[0]: ln for ln in out.splitlines() if ln.strip()}
+    # the cost: CPU seconds, or the wall time of a record without them
+    assert rows["catenary-limits"].split()[1:3] == ["0.30", "-"] and "quick: target met;" in rows["catenary-limits"]
+    assert rows["westergaard"].split()[1:3] == ["3.8", "812"]
+    assert "quick: target met;" in rows["westergaard"]  # a quick variant is judged on its declared target
+    assert "full: departure met (stated target not met)" in rows["westergaard"]
+    assert "full: not met (*)" in rows["dambreak-2d"] and "quick: no record" in rows["dambreak-2d"]
+    assert "(*) the record was judged against another target" in out
+    n = validation.cores()
+    assert f"quick variants: 2 of {len(cases)} cases recorded, 4 s in all;" in out
+    assert (f"cosim validate all --quick runs {n} at once on this machine's {n} cores (--jobs): about "
+            f"{max(4.1 / n, 3.8):.0f} s of wall time") in out
     assert main(["validate", "catenary-limits", "--quick"]) == 0
     rec = json.loads(capsys.readouterr().out)
     assert rec["name"] == "catenary-limits" and rec["passed"] is True and rec["quick"] is True
-    for key in ("metrics", "tolerances", "particles", "steps", "wall_s"):
+    for key in ("metrics", "tolerances", "particles", "steps", "wall_s", "case_cpu_s"):
         assert key in rec
     with pytest.raises(SystemExit):
         main(["validate", "no-such-case"])

@@ -91,8 +91,8 @@ def test_regular_waves_cross_the_box_at_the_seas_height_and_phase():
 
 @pytest.mark.slow
 def test_the_quick_near_field_case_carries_the_sea():
-    """cosim validate nearfield-waves --quick: linear and Stokes-2 waves and a JONSWAP sea
-    through the box at dx = H/3, judged by the case's own tolerances (heights 5 %, phases
+    """cosim validate nearfield-waves --quick: Stokes-2 waves and a JONSWAP sea through the
+    box at dx = H/3, judged by the case's own tolerances (heights 5 %, phases
     5 % of a period, the level's drift 1 % of the depth, Hs, Tp 5 %, spectrum 10 %)."""
     from cosim import validation
 

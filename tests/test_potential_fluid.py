@@ -65,9 +65,18 @@ def test_bad_inputs_are_refused_before_any_solve(tmp_path):
         P.floating_cylinder(1.0, GRID, sea=Sea(regular(0.1, 2.5)))  # a 2.5 s wave: 2.5 rad/s
 
 
-def test_hemisphere_quick():
+def test_hemisphere_quick(tmp_path):
     r = validation.run("potential-hemisphere", quick=True)
     assert r["passed"], r["metrics"]
+    _plots_in_the_report(r, tmp_path, 2)
+
+
+def _plots_in_the_report(r, folder, n):
+    """The record's series are plots the report draws (cosim.report.plot_series): n PNGs."""
+    from cosim import report
+
+    plots = report.plot_series(r["series"], folder, r["name"])
+    assert len(plots) == n and all((folder / f).read_bytes()[:4] == b"\x89PNG" for _, f in plots)
 
 
 @pytest.mark.slow
@@ -78,9 +87,10 @@ def test_cylinder_rao_quick():
 
 
 @pytest.mark.slow
-def test_irregular_quick():
+def test_irregular_quick(tmp_path):
     r = validation.run("potential-irregular", quick=True)
     assert r["passed"], r["metrics"]
+    _plots_in_the_report(r, tmp_path, 2)
     assert r["metrics"]["heave_rao_range"][1] > 1.3  # the band reaches up towards the heave resonance
 
 

@@ -83,6 +83,22 @@ def test_from_rebuilds_the_same_report(quick_report, tmp_path):
         main(["validate", "--from", str(saved)])
 
 
+def test_cases_run_at_once_give_the_records_of_one_after_the_other(capsys):
+    """--jobs 2 runs the cases in two worker processes: the same records (but their costs),
+    printed in the order named; --jobs 0 is refused."""
+    printed = {}
+    for jobs in ("1", "2"):
+        assert main(["validate", *CHEAP, "--quick", "--jobs", jobs]) == 0
+        printed[jobs] = [json.loads(s) for s in capsys.readouterr().out.splitlines()]
+    assert [r["name"] for r in printed["2"]] == CHEAP
+    cost = ("wall_s", "case_cpu_s")
+    for one, two in zip(printed["1"], printed["2"]):
+        assert {k: v for k, v in one.items() if k not in cost} == {k: v for k, v in two.items() if k not in cost}
+    with pytest.raises(SystemExit):
+        main(["validate", *CHEAP, "--quick", "--jobs", "0"])
+    assert "--jobs 0: give at least 1" in capsys.readouterr().err
+
+
 @pytest.mark.parametrize("name", CHEAP + ["catenary-johanning-2007", "catenary-johanning-2006", "cable-case1"])
 def test_a_quick_record_passes_when_every_metric_is_within_its_declared_tolerance(name):
     r = validation.run(name, quick=True)
@@ -205,3 +221,26 @@ def test_every_quick_record_is_judged_by_its_declared_tolerances():
         assert r["tolerances"] and r["target"].startswith("quick: ")
         failed = validation.judge(r["metrics"], r["tolerances"])[1]
         assert r["passed"] == (not failed) and r["outside_tolerance"] == failed, name
+
+
+def test_the_committed_records_give_every_case_its_quick_cost_and_status(capsys):
+    """docs/validation/records.jsonl, the records of ``cosim validate all --quick --report
+    DIR``: a quick record of every case, judged against the case's present quick target and
+    by its own tolerances (passed as judge() finds it), with its costs; ``cosim validate
+    --list`` on a bare checkout shows each case's cost and status from them."""
+    recs = report.read_records(validation.committed_records())
+    cases = validation.cases()
+    quick = {r["name"]: r for r in recs if r["quick"]}
+    assert set(quick) == set(cases), set(cases) ^ set(quick)
+    for name, r in quick.items():
+        assert r["target"] == validation.target_text(cases[name], True), f"{name}: run it again"
+        assert r["passed"] == validation.judge(r["metrics"], r["tolerances"])[0], name
+        assert r["wall_s"] > 0 and r["case_cpu_s"] >= 0, name
+    assert main(["validate", "--list"]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith(f"from {validation.committed_records()}") and "(*)" not in out
+    rows = {ln.split()[0]: ln for ln in out.splitlines() if ln.split() and ln.split()[0] in cases}
+    for name, r in quick.items():
+        cost, status = rows[name].split()[1], rows[name].split("  ")[-1]
+        assert float(cost.lstrip("<")) == pytest.approx(r["case_cpu_s"], rel=0.05, abs=0.01), name
+        assert status.startswith("quick: target met;" if r["passed"] else "quick: not met;"), name

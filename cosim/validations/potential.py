@@ -80,8 +80,10 @@ def potential_hemisphere(quick: bool) -> dict:
                     "bem_seconds": round(c.meta["solve_s"], 2), "from_cache": c.meta["from_cache"]},
         "tolerances": {"max_rel_err_A33": tol, "max_rel_err_B33": tol},
         "stated_tolerances": {"max_rel_err_A33": 0.02, "max_rel_err_B33": 0.02} if quick else None,
-        "series": {"ka": rows[:, 0].tolist(), "A33": A.tolist(), "B33": B.tolist(),
-                   "A33_hulme": rows[:, 1].tolist(), "B33_hulme": rows[:, 2].tolist()},
+        "series": {f"heave {q}": {"xlabel": "K a", "ylabel": f"{q} / (rho 2/3 pi a^3{per})", "curves": {
+            "BEM (Capytaine)": {"x": rows[:, 0].tolist(), "y": ours.tolist(), "style": "o"},
+            "Hulme (1982)": {"x": rows[:, 0].tolist(), "y": rows[:, col].tolist(), "style": "--"}}}
+            for q, per, ours, col in (("A33", "", A, 1), ("B33", " omega", B, 2))},
     }
 
 # ------------------------------------------------------------------------------ the cylinder
@@ -396,7 +398,10 @@ def potential_irregular(quick: bool) -> dict:
         "tolerances": {"max_rel_err_elevation": 0.05, "max_rel_err_transfer": 0.05} if quick else full,
         "stated_tolerances": full if quick else None,
         "steps": steps,
-        "series": {"omega": omega[band].tolist(), "S_elevation": np.mean(S_eta, axis=0)[band].tolist(),
-                   "S_target": target[band].tolist(), "S_heave": np.mean(S_heave, axis=0)[band].tolist(),
-                   "S_heave_target": (rao2 * target)[band].tolist()},
+        "series": {f"{what} spectrum": {"xlabel": "omega [rad/s]", "ylabel": "S [m^2 s/rad]", "curves": {
+            "ours (Welch, mean over the seeds)": {"x": omega[band].tolist(), "y": ours.tolist()},
+            label: {"x": omega[band].tolist(), "y": ref.tolist(), "style": "--"}}}
+            for what, ours, label, ref in (
+                ("elevation", np.mean(S_eta, axis=0)[band], "JONSWAP target S", target[band]),
+                ("heave", np.mean(S_heave, axis=0)[band], "RAO^2 S", (rao2 * target)[band]))},
     }
