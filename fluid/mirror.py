@@ -29,11 +29,6 @@ import numpy as np
 Y = 1  #: the plane's normal axis (y)
 
 
-def is_image(ids: np.ndarray) -> np.ndarray:
-    """True for the rows of mirror images (negative ids)."""
-    return ids < 0
-
-
 class Mirror:
     """The mirror images across ``y = y0`` [m] of the particles within ``band`` [m] (the
     kernel's support 2h) of the plane; ``dx`` [m] sets the tolerance of "on the plane"."""
@@ -44,18 +39,18 @@ class Mirror:
         self.src = np.zeros(0, np.int64)  #: rows of their sources
         self._source_ext = np.zeros(0, np.int64)
 
+    def _reflect(self, ps, aux: dict, rows: np.ndarray) -> None:
+        """Reflect the places and velocities of ``rows`` across the plane, and those of the
+        integrator's saved state ``aux``."""
+        for k, a in (("pos", ps.pos), ("vel", ps.vel), *((k, aux[k]) for k in ("pos", "vel") if k in aux)):
+            a[rows, Y] = 2.0 * self.y0 - a[rows, Y] if k == "pos" else -a[rows, Y]
+
     def reflect_crossing(self, ps, aux: dict) -> None:
         """Reflect back the simulated particles that have crossed the plane (y < y0), and
         their integrator's saved state with them."""
-        y = ps.pos[:, Y]
-        below = np.flatnonzero((y < self.y0) & (ps.ids >= 0))
+        below = np.flatnonzero((ps.pos[:, Y] < self.y0) & (ps.ids >= 0))
         if below.size:
-            ps.pos[below, Y] = 2.0 * self.y0 - ps.pos[below, Y]
-            ps.vel[below, Y] = -ps.vel[below, Y]
-            for k in ("pos", "vel"):
-                if k in aux:
-                    a = aux[k]
-                    a[below, Y] = (2.0 * self.y0 - a[below, Y]) if k == "pos" else -a[below, Y]
+            self._reflect(ps, aux, below)
 
     def extend(self, ps) -> tuple[np.ndarray, np.ndarray, int]:
         """(rows, positions, n) of the set to sort: the ``n`` simulated particles' rows,
@@ -81,11 +76,7 @@ class Mirror:
         at[perm] = np.arange(perm.size)
         src = at[self._source_ext[order[rows] - n]]
         ok = src < kept
-        for a, k in ((ps.pos, "pos"), (ps.vel, "vel")):
-            a[rows, Y] = (2.0 * self.y0 - a[rows, Y]) if k == "pos" else -a[rows, Y]
-            if k in aux:
-                b = aux[k]
-                b[rows, Y] = (2.0 * self.y0 - b[rows, Y]) if k == "pos" else -b[rows, Y]
+        self._reflect(ps, aux, rows)
         ps.ids[rows] = -1 - ps.ids[rows]
         ps.group[rows] = -1
         self.rows, self.src = rows[ok], src[ok]

@@ -853,51 +853,36 @@ class Fluid:
         ps.rho[:] = new
 
     def _sort(self):
-        """Sort particles (and the saved n state) by cell; remove those outside the domain."""
-        ps = self.ps
+        """Sort particles (and the saved n state) by cell; remove those outside the domain.
+        With a symmetry plane the simulated particles and new mirror images of those near
+        it are sorted together, in the same one gather (fluid.mirror)."""
+        ps, m = self.ps, self.mirror
         if self._xbins is None:
             self._xbins = x_bin_array(self._grid)
-        if self.mirror is not None:
-            self._sort_mirrored()
-            return
-        perm, start, outside, self._xbins = sort_by_cell(ps.pos, self._grid, self._xbins)
-        n = ps.n - outside
-        if outside:
-            gone = perm[n:]
-            bad = ~(np.isfinite(ps.pos[gone]).all(axis=1) & np.isfinite(ps.vel[gone]).all(axis=1)
-                    & np.isfinite(ps.rho[gone]))
-            if bad.any():
-                self._raise_non_finite(int(gone[np.argmax(bad)]))
-            self.counters.count_removed(ps.kind[gone], self.t)
-            perm = perm[:n]
-            if not (ps.kind[perm] == Kind.FLUID).any():
-                raise InstabilityError(f"fluid: every fluid particle has left the domain by t={self.t:.6g} s")
-        keys = list(self._aux)
-        self._aux = dict(zip(keys, ps.permute(perm, *(self._aux[k] for k in keys))))
-        self._start = start
-
-    def _sort_mirrored(self):
-        """:meth:`_sort` with a symmetry plane: the simulated particles and new mirror images
-        of those near the plane sorted together in one gather (fluid.mirror)."""
-        ps, m = self.ps, self.mirror
-        m.reflect_crossing(ps, self._aux)
-        rows, pos, n_real = m.extend(ps)
+        if m is None:
+            rows, pos, n_real = None, ps.pos, ps.n
+        else:
+            m.reflect_crossing(ps, self._aux)
+            rows, pos, n_real = m.extend(ps)
         perm, start, outside, self._xbins = sort_by_cell(pos, self._grid, self._xbins)
-        kept = len(rows) - outside
+        kept = len(pos) - outside
+        order = perm[:kept] if rows is None else rows[perm[:kept]]
         if outside:
             gone = perm[kept:]
-            gone = rows[gone[gone < n_real]]  # images leave silently
+            if rows is not None:  # images leave silently
+                gone = rows[gone[gone < n_real]]
             if gone.size:
                 bad = ~(np.isfinite(ps.pos[gone]).all(axis=1) & np.isfinite(ps.vel[gone]).all(axis=1)
                         & np.isfinite(ps.rho[gone]))
                 if bad.any():
                     self._raise_non_finite(int(gone[np.argmax(bad)]))
                 self.counters.count_removed(ps.kind[gone], self.t)
+            if not (ps.kind[order] == Kind.FLUID).any():  # an image's source is kept with it
+                raise InstabilityError(f"fluid: every fluid particle has left the domain by t={self.t:.6g} s")
         keys = list(self._aux)
-        self._aux = dict(zip(keys, ps.permute(rows[perm[:kept]], *(self._aux[k] for k in keys))))
-        if not (ps.kind[ps.ids >= 0] == Kind.FLUID).any():
-            raise InstabilityError(f"fluid: every fluid particle has left the domain by t={self.t:.6g} s")
-        m.finish(ps, self._aux, perm, kept, n_real)
+        self._aux = dict(zip(keys, ps.permute(order, *(self._aux[k] for k in keys))))
+        if m is not None:
+            m.finish(ps, self._aux, perm, kept, n_real)
         self._start = start
 
     def _rates(self):

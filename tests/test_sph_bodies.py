@@ -28,22 +28,29 @@ def submerged_box(dx=0.01, L=0.4, H=0.3, D=0.25, box=(0.1, 0.05), centre=(0.2, 0
     return f, bodies
 
 
+def _held_wrenches(f, bodies, duration: float):
+    """Step the fluid ``f`` at its own step for ``duration`` [s] round bodies that stay where
+    they are; the first body's force and torque after each step, (steps, 3) each."""
+    t, F, T = 0.0, [], []
+    while t < duration:
+        dt = f.max_dt()
+        f.advance(t, dt)
+        t += dt
+        f.set_body_kinematics(bodies.kinematics())
+        a, b = f.body_wrenches()
+        F.append(a[0])
+        T.append(b[0])
+    return np.array(F), np.array(T)
+
+
 def test_a_held_submerged_body_feels_archimedes():
     """A box held still under water: vertical force rho g A (per metre), no side
     force, no torque, over 0.1 s of SPH (lattice-aligned box, dx = 1 cm)."""
     f, bodies = submerged_box()
     assert f.removed_overlap == 50  # the 10 x 5 cells of the box, no fluid left inside
     assert f.displaced_volume == pytest.approx(0.1 * 0.05)
-    t, Fz, Fx, Ty = 0.0, [], [], []
-    while t < 0.1:
-        dt = f.max_dt()
-        f.advance(t, dt)
-        t += dt
-        f.set_body_kinematics(bodies.kinematics())
-        F, T = f.body_wrenches()
-        Fz.append(F[0, 2])
-        Fx.append(F[0, 0])
-        Ty.append(T[0, 1])
+    F, T = _held_wrenches(f, bodies, 0.1)
+    Fz, Fx, Ty = F[:, 2], F[:, 0], T[:, 1]
     exact = 1000.0 * G * 0.1 * 0.05
     assert np.mean(Fz) == pytest.approx(exact, rel=0.01)
     assert abs(np.mean(Fx)) < 1e-9 * exact and abs(np.mean(Ty)) < 1e-9 * exact
@@ -145,17 +152,8 @@ def test_a_symmetry_plane_gives_the_whole_body_its_mirrored_half_load():
     runs = {}
     for half in (False, True):
         f, bodies = _held_box_3d(half)
-        t, F, T = 0.0, [], []
-        while t < 0.05:
-            dt = f.max_dt()
-            f.advance(t, dt)
-            t += dt
-            f.set_body_kinematics(bodies.kinematics())
-            a, b = f.body_wrenches()
-            F.append(a[0])
-            T.append(b[0])
-        fluid = (f.fluid.ps.kind == Kind.FLUID) & (f.fluid.ps.ids >= 0)
-        runs[half] = (np.array(F), np.array(T), int(fluid.sum()))
+        F, T = _held_wrenches(f, bodies, 0.05)
+        runs[half] = (F, T, int((f.fluid.simulated().kind == Kind.FLUID).sum()))
     exact = 1000.0 * G * 0.1 * 0.1 * 0.05
     (Ff, Tf, nf), (Fh, Th, nh) = runs[False], runs[True]
     assert Fh.shape == Ff.shape
