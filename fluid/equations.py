@@ -47,6 +47,7 @@ from numba import njit, prange, uint64
 
 from errors import InputError
 
+from fluid import settings
 from fluid.kernels import grad_scale, grad_shape, grad_shape_f32, w_value, w_value_f32
 from fluid.neighbours import XBINS, cell_coords, row_range, row_range_binned, x_bins
 from fluid.particles import Kind
@@ -58,10 +59,9 @@ P_H, P_AD, P_ALPHA, P_DDT, P_HYDRO, P_RHO0, P_C0, P_G, P_NU4, P_XSPH, P_AWALL, P
     0, 1, 2, 3, 4, 5, 6, 7, 10, 11, 12, 13, 14, 15
 N_PRM = 16
 
-#: arithmetic of the pair loop (:func:`interact`)
-PRECISION = ("float64", "float32")
-
-DIFFUSION = ("fourtakas", "antuono", "molteni", "none")
+#: arithmetic of the pair loop (:func:`interact`) and the density diffusion terms: the
+#: choices of FluidConfig's ``precision`` and ``diffusion`` (:mod:`fluid.settings`)
+PRECISION, DIFFUSION = settings.PRECISION, settings.DIFFUSION
 #: ``(s0, s1)``: the density diffusion fades from full at ``s_a = s0`` to none at ``s1``
 #: when ``diffusion_at_surface`` is False (module docstring): the free-surface row and the
 #: row below it lose it on the lattice (s = 0.62, 0.075-0.086 at h = sqrt(2) dx), the

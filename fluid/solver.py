@@ -1,10 +1,11 @@
 """The SPH fluid as a co-simulation participant (structurally a
 ``cosim.protocol.Participant``; this package never imports the coupler).
 
-One :class:`FluidConfig` holds every setting with its unit and default and is validated on
-construction. :class:`Fluid` owns a :class:`~fluid.particles.ParticleSet`, keeps it sorted
-by cell, steps it with the symplectic scheme of :mod:`fluid.integrator` and sub-cycles
-inside :meth:`Fluid.advance` to reach the coupler's time exactly.
+One :class:`FluidConfig` holds every setting (each declared once, with its unit, default and
+range, in :mod:`fluid.settings`) and is validated on construction. :class:`Fluid` owns a
+:class:`~fluid.particles.ParticleSet`, keeps it sorted by cell, steps it with the symplectic
+scheme of :mod:`fluid.integrator` and sub-cycles inside :meth:`Fluid.advance` to reach the
+coupler's time exactly.
 """
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ import numpy as np
 
 from errors import InputError, InstabilityError
 from fluid import equations as eq
-from fluid import mls
+from fluid import mls, settings
 from fluid.integrator import (StepLimit, corrector, diffusion_coefficient, first_non_finite, predictor,
                               stable_dt, verlet)
 from fluid.kernels import alpha_d, kernel_id
@@ -54,10 +55,6 @@ def _sum_groups(pos, mass, acc, group, centre, F, M):
             M[g, 0] += ry * fz - rz * fy
             M[g, 1] += rz * fx - rx * fz
             M[g, 2] += rx * fy - ry * fx
-
-
-#: tank-wall density treatments of FluidConfig.walls
-WALLS = ("dbc", "adami")
 
 
 #: the 2-D set-up for sloshing and wall pressures (standing waves in a tank):
@@ -97,143 +94,19 @@ def _bad(what: str, fix: str):
 
 
 @dataclass(frozen=True)
+@settings.declare
 class FluidConfig:
-    """Every setting of the SPH fluid, with its unit. Validated on construction."""
-
-    #: 2 (runs in the x-z plane) or 3
-    dim: int = 2
-    #: particle spacing dx [m]
-    dx: float = 0.01
-    #: reference density rho0 [kg/m^3]
-    rho0: float = 1000.0
-    #: smoothing length h = h_coef * dx [-] (sqrt(2): DualSPHysics' 2-D default, coefh = 1)
-    h_coef: float = math.sqrt(2.0)
-    #: "wendland" (C2) or "cubic"
-    kernel: str = "wendland"
-    #: speed of sound c0 [m/s]; if None it is c0_factor * u_max
-    c0: float | None = None
-    #: expected maximum flow speed [m/s], used when c0 is None
-    u_max: float | None = None
-    #: c0 / u_max [-], at least 10 (Barreiro et al. 2016, §2.5, Monaghan 1994)
-    c0_factor: float = 10.0
-    #: Tait polytropic exponent gamma [-] (Barreiro et al. 2016, Eq. 8)
-    gamma: float = 7.0
-    #: artificial viscosity alpha [-] (Sunara et al. 2021, Eq. 6; 0.01 as in Wang et al. 2022)
-    alpha: float = 0.01
-    #: factor on alpha between fluid and boundary particles [-] (DualSPHysics'
-    #: ViscoBoundFactor; see fluid.equations): 1 the same viscosity as in the fluid, 0 walls
-    #: that slip (waves over a bed lose no energy to the wall's artificial friction)
-    alpha_wall: float = 1.0
-    #: kinematic viscosity nu0 [m^2/s] of the laminar viscosity term (Lo & Shao 2002, see
-    #: fluid.equations; 1e-6 for water), added to the artificial one; 0: off
-    nu: float = 0.0
-    #: XSPH coefficient epsilon [-] in [0, 1] (Monaghan 1989; Wang et al. 2022 uses
-    #: 0.1): particles move with the velocity smoothed over their neighbours; 0: off
-    xsph_eps: float = 0.0
-    #: density diffusion: "fourtakas" (default), "antuono" (renormalised, exact for linear
-    #: fields; a second pair loop), "molteni" or "none": see fluid.equations
-    diffusion: str = "fourtakas"
-    #: density diffusion coefficient delta [-] (Dinçer & Demir 2020, Eq. 1 uses 0.1)
-    delta: float = 0.1
-    #: False: the density diffusion fades out where a particle's support is cut by the free
-    #: surface (the surface row and the one below it), which keeps a 3-D tank of still
-    #: water at rest but raises the pressure noise of violent flows (fluid.equations)
-    diffusion_at_surface: bool = True
-    #: gravitational acceleration [m/s^2]: a number g >= 0 acting along -z, or the vector
-    #: (dim components: (gx, gz) in 2-D, (gx, gy, gz) in 3-D) in any direction
-    g: float | tuple = 9.81
-    #: CFL factor of the variable time step [-] (Sunara et al. 2021, Eq. 14)
-    cfl: float = 0.2
-    #: time integration: "symplectic" (predictor-corrector, 2 pair loops per step) or
-    #: "verlet" (1 pair loop per step; see fluid.integrator)
-    integrator: str = "symplectic"
-    #: Verlet: steps between forward-Euler steps [-] (DualSPHysics uses 40)
-    verlet_reset: int = 40
-    #: upper bound of the fluid step [s]
-    dt_max: float = math.inf
-    #: domain box [m]; particles leaving it are removed and counted. None: the box of the
-    #: initial particles grown by max(10 % of its size, 4 h) on every side
-    domain_lo: tuple | None = None
-    domain_hi: tuple | None = None
-    #: numba threads for this fluid [-]; None: one thread below ``parallel_min_particles``
-    #: particles (where waking threads costs more than it gains, and much more on a busy
-    #: machine), all of numba's threads above
-    threads: int | None = None
-    #: particle count from which the default ``threads`` uses all threads [-]
-    parallel_min_particles: int = 20000
-    #: MLS density re-initialisation every ``mls_every`` steps [steps]; 0: never
-    #: (Sunara et al. 2021, Eq. 9-12 uses 30; see fluid.mls)
-    mls_every: int = 0
-    #: density of the tank walls (FIXED_WALL and MOVING_WALL particles): "dbc" (plain
-    #: dynamic boundaries, Barreiro et al. 2016, §2.6: the continuity equation) or
-    #: "adami" (the fluid's pressure carried to each wall particle, Adami, Hu & Adams 2012,
-    #: J. Comput. Phys. 231, Eq. 27; see fluid.wall_density). BODY particles are not affected
-    walls: str = "dbc"
-    #: the fluid's load on the tank walls (FIXED_WALL and MOVING_WALL particles) is computed
-    #: (group loads of the wall groups, wall-pressure patches). False: the pair loop gives
-    #: the wall particles their continuity rate ("dbc") and their viscous terms' bound on
-    #: the step only, not their accelerations: the fluid's rates and the step are those of
-    #: the full pass (to round-off), the walls' group loads read NaN and
-    #: boundary_forces_now refuses. The rates of the SPH wind-turbine scene
-    #: (examples/wind_turbine_base.py, "adami") take 0.75 / 0.83 of the time at dx = 2 / 1 m,
-    #: a 3-D dam break's ("dbc") 0.96 (docs/benchmarks/fluid_throughput_history.md). Scenes
-    #: set it from their probes (cosim.scene.build.fluid_config)
-    wall_loads: bool = True
-    #: where the fluid steps: "cpu" (numba on the host, the reference) or "cuda" (an NVIDIA
-    #: GPU through numba-cuda, or numba's CUDA simulator with NUMBA_ENABLE_CUDASIM=1;
-    #: fluid.cuda says what it covers)
-    device: str = "cpu"
-    #: arithmetic of the pair terms: "float64" (default, the reference) or "float32" (float32
-    #: terms summed into float64 per row of cells, separations from offsets in the cells;
-    #: rates within 5e-7 of float64's; a 3-D step 1.2 times faster, a 2-D one not:
-    #: fluid.equations.interact); integration and state stay float64. CPU only. Momentum
-    #: is then kept to ~5e-9, not to round-off (benchmarks/float32_validations.py)
-    precision: str = "float64"
-    #: 3-D: a symmetry plane y = ``symmetry_y`` [m]. Only the particles on y >= it are
-    #: simulated; those within the kernel's support of it have mirror images that take part
-    #: in every sum (fluid.mirror). The scene must be symmetric about it. None: no plane
-    symmetry_y: float | None = None
-    #: participant name
-    name: str = "fluid"
+    """Every setting of the SPH fluid: one field per entry of :data:`fluid.settings.SETTINGS`,
+    which gives its default, unit, range and meaning. Validated on construction: each field
+    against its entry's range (:func:`fluid.settings.check`), then the checks between fields
+    (c0 or u_max, gravity's components, the domain's corners, the symmetry plane)."""
 
     def __post_init__(self):
+        settings.check(self)
         num = lambda v: isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
-        if self.dim not in (2, 3):
-            raise _bad(f"dim={self.dim!r}", "use 2 (x-z plane) or 3")
-        if not num(self.dx) or self.dx <= 0:
-            raise _bad(f"dx={self.dx!r} m", "give the particle spacing as a positive number of metres")
-        if not num(self.rho0) or self.rho0 <= 0:
-            raise _bad(f"rho0={self.rho0!r} kg/m^3", "give a positive reference density (1000 for water)")
-        if not num(self.h_coef) or not 1.0 <= self.h_coef <= 3.0:
-            raise _bad(f"h_coef={self.h_coef!r}", "use 1.0 ... 3.0 (h = h_coef * dx; 1.2 ... 2 is usual)")
-        kernel_id(self.kernel)
         if (self.c0 is None) == (self.u_max is None):
             raise _bad("give exactly one of c0 [m/s] and u_max [m/s]",
                        "set c0, or set u_max (the expected maximum flow speed) and let c0 = c0_factor*u_max")
-        if self.c0 is not None and (not num(self.c0) or self.c0 <= 0):
-            raise _bad(f"c0={self.c0!r} m/s", "give a positive speed of sound")
-        if self.u_max is not None and (not num(self.u_max) or self.u_max <= 0):
-            raise _bad(f"u_max={self.u_max!r} m/s", "give a positive expected maximum speed, e.g. sqrt(2 g H)")
-        if not num(self.c0_factor) or self.c0_factor < 10:
-            raise _bad(f"c0_factor={self.c0_factor!r}",
-                       "use at least 10 so that density varies by less than 1 % (Barreiro et al. 2016, §2.5)")
-        if not num(self.gamma) or self.gamma < 1:
-            raise _bad(f"gamma={self.gamma!r}", "use a polytropic exponent >= 1 (7 for water)")
-        if not num(self.alpha) or not 0 <= self.alpha <= 1:
-            raise _bad(f"alpha={self.alpha!r}", "use an artificial viscosity in [0, 1] (0.01 ... 0.1 usual)")
-        if not num(self.alpha_wall) or not 0 <= self.alpha_wall <= 1:
-            raise _bad(f"alpha_wall={self.alpha_wall!r}", "give a factor in [0, 1] on alpha between fluid and walls "
-                       "(1: default, 0: slip walls)")
-        if not num(self.nu) or self.nu < 0:
-            raise _bad(f"nu={self.nu!r} m^2/s", "give a kinematic viscosity >= 0 (1e-6 for water; 0: off)")
-        if not num(self.xsph_eps) or not 0 <= self.xsph_eps <= 1:
-            raise _bad(f"xsph_eps={self.xsph_eps!r}", "use an XSPH coefficient in [0, 1] (0.1 usual; 0: off)")
-        if self.diffusion not in eq.DIFFUSION:
-            raise _bad(f"diffusion={self.diffusion!r}", f"choose one of {eq.DIFFUSION}")
-        if not num(self.delta) or not 0 <= self.delta <= 1:
-            raise _bad(f"delta={self.delta!r}", "use a density diffusion coefficient in [0, 1] (0.1 usual)")
-        if not isinstance(self.diffusion_at_surface, bool):
-            raise _bad(f"diffusion_at_surface={self.diffusion_at_surface!r}", "use True (default) or False")
         if isinstance(self.g, (tuple, list, np.ndarray)):
             if len(self.g) != self.dim or not all(num(x) for x in self.g):
                 raise _bad(f"g={self.g!r} m/s^2", f"give gravity as {self.dim} finite components (2-D: (gx, gz), "
@@ -242,24 +115,6 @@ class FluidConfig:
         elif not num(self.g) or self.g < 0:
             raise _bad(f"g={self.g!r} m/s^2", "give the magnitude of gravity (>= 0), it acts along -z; or the "
                        "vector (gx, gz) / (gx, gy, gz)")
-        if not num(self.cfl) or not 0 < self.cfl <= 0.4:
-            raise _bad(f"cfl={self.cfl!r}", "the stable range of this scheme is 0 < cfl <= 0.4 (0.2 default)")
-        if self.integrator not in ("symplectic", "verlet"):
-            raise _bad(f"integrator={self.integrator!r}", "choose 'symplectic' or 'verlet'")
-        if not isinstance(self.verlet_reset, int) or self.verlet_reset < 1:
-            raise _bad(f"verlet_reset={self.verlet_reset!r}", "give a positive number of steps (40 usual)")
-        if not (isinstance(self.dt_max, (int, float)) and self.dt_max > 0):
-            raise _bad(f"dt_max={self.dt_max!r} s", "give a positive upper bound or math.inf")
-        if not isinstance(self.mls_every, int) or isinstance(self.mls_every, bool) or self.mls_every < 0:
-            raise _bad(f"mls_every={self.mls_every!r}", "give a number of steps >= 0 (0: off; 30 in Sunara et al. 2021, §2)")
-        if self.walls not in WALLS:
-            raise _bad(f"walls={self.walls!r}", f"choose one of {WALLS}")
-        if not isinstance(self.wall_loads, bool):
-            raise _bad(f"wall_loads={self.wall_loads!r}", "use True (default: the walls' loads are computed) or False")
-        if self.precision not in eq.PRECISION:
-            raise _bad(f"precision={self.precision!r}", f"choose one of {eq.PRECISION} (float64: the reference)")
-        if self.device not in ("cpu", "cuda"):
-            raise _bad(f"device={self.device!r}", "choose 'cpu' (default) or 'cuda' (numba-cuda: pip install numba-cuda)")
         if self.device == "cuda" and isinstance(self.g, tuple) and any(x != 0.0 for x in self.g[:-1]):
             raise _bad(f"g={self.g!r} m/s^2", "device='cuda' takes gravity along -z only (its hydrostatic density "
                        "diffusion reads g_z); run a tilted gravity on device='cpu'")
@@ -267,13 +122,11 @@ class FluidConfig:
             from fluid.cuda import check_config
             check_config(self)
         if self.symmetry_y is not None:
-            if self.dim != 3 or not num(self.symmetry_y):
+            if self.dim != 3:
                 raise _bad(f"symmetry_y={self.symmetry_y!r} m (dim={self.dim})", "a symmetry plane y = const is a "
                            "finite number in 3-D; leave it None in 2-D")
             if self.device != "cpu":
                 raise _bad(f"symmetry_y with device={self.device!r}", "run a symmetry plane on device='cpu'")
-        if self.threads is not None and (not isinstance(self.threads, int) or self.threads < 1):
-            raise _bad(f"threads={self.threads!r}", "give a positive number of threads or None")
         if (self.domain_lo is None) != (self.domain_hi is None):
             raise _bad("only one domain corner given", "give both domain_lo and domain_hi, or neither")
         if self.domain_lo is not None:
