@@ -417,6 +417,50 @@ def parts(doc, classes):
     return _field(Parts(doc, classes), ())
 
 
+def setting_check(setting, optional: bool = True, hi=None, why=None) -> Check:
+    """The check of a scene field that mirrors one of the SPH fluid's settings
+    (``fluid.settings.Setting``): its kind, doc, unit, range or choices; ``hi`` / ``why``: a
+    physical limit of the scene's (:mod:`cosim.scene.limits`) below the setting's own."""
+    s = setting
+    if s.choices:
+        return Choice(s.doc, s.choices, optional=optional)
+    if s.kind is bool:
+        return Flag(s.doc, optional=optional)
+    if s.kind is int:
+        return Whole(s.doc, lo=s.lo, hi=s.hi, optional=optional)
+    if s.kind is float:
+        return Num(s.doc, s.unit, lo=s.lo, hi=s.hi if hi is None else hi, lo_open=s.lo_open,
+                   hi_open=s.hi_open and hi is None, optional=optional, why=why)
+    if s.kind is str:
+        return Text(s.doc, optional=optional)
+    raise TypeError(f"setting {s.name}: a scene field cannot mirror a setting of kind {s.kind.__name__}")
+
+
+def mirror_settings(settings, limits: dict | None = None):
+    """Class decorator, applied before ``@dataclass``: one checked field per setting of
+    ``settings`` (``fluid.settings.SETTINGS``) that has a ``scene`` role, in the table's
+    order and ahead of the class's own fields. "set-up": unset by default (None); "default":
+    the setting's default; "required": no default. ``limits``: {name: (hi, why)}, the
+    scene's physical limits on a setting."""
+    limits = limits or {}
+
+    def decorate(cls):
+        own = dict(cls.__dict__.get("__annotations__", {}))
+        mine = [s for s in settings if s.scene]
+        clash = sorted(own.keys() & {s.name for s in mine})
+        if clash:
+            raise TypeError(f"{cls.__name__} declares {clash}, which the fluid's settings declare")
+        for s in mine:
+            hi, why = limits.get(s.name, (None, None))
+            check = setting_check(s, optional=s.scene == "set-up", hi=hi, why=why)
+            f = _field(check, None if s.scene == "set-up" else s.default)
+            setattr(cls, s.name, required(f) if s.scene == "required" else f)
+        cls.__annotations__ = {s.name: s.annotation for s in mine} | own
+        return cls
+
+    return decorate
+
+
 def required(check_field):
     """A declaration without a default: the field must be given."""
     check_field.metadata["check"].optional = False

@@ -42,11 +42,12 @@ import math
 from dataclasses import dataclass, field
 
 from cosim.scene.spec import NearField, PolygonTank, Tank
+from fluid.settings import SETTINGS
 
-#: FluidConfig fields that the SPH scene class can set
-CONFIG_FIELDS = ("c0", "c0_factor", "u_max", "h_coef", "kernel", "walls", "alpha", "alpha_wall", "nu",
-                 "xsph_eps", "diffusion", "delta", "diffusion_at_surface", "cfl", "integrator", "mls_every",
-                 "threads", "device", "precision")
+#: FluidConfig settings that the SPH scene class can set over the set-up's (fluid.settings:
+#: scene role "set-up"); those with the role "default" (rho0) it always gives
+CONFIG_FIELDS = tuple(s.name for s in SETTINGS if s.scene == "set-up")
+_GIVEN = tuple(s.name for s in SETTINGS if s.scene == "default")
 
 _SLOSHING_3D = {"walls": "adami", "diffusion_at_surface": False, "h_coef": 2.0}
 _REASONS = {
@@ -117,7 +118,7 @@ def choose(scene) -> Setup:
 
         cfg.update(NEAR_FIELD)
         reason += "; a near field: the density re-initialised every 150 steps, which holds its mean level"
-    cfg["rho0"] = sph.rho0
+    cfg.update({key: getattr(sph, key) for key in _GIVEN})
     overridden = []
     for key in CONFIG_FIELDS:
         v = getattr(sph, key)

@@ -40,9 +40,10 @@ from pathlib import Path
 
 from cosim.scene import limits as L
 from cosim.scene import seas, shapes
-from cosim.scene.fields import (SceneError, Spec, choice, flag, gauges, is_name, names, num, part, parts, required,
-                                num_or_vec, table, text, vec, vecs, whole)
+from cosim.scene.fields import (SceneError, Spec, choice, flag, gauges, is_name, mirror_settings, names, num, part,
+                                parts, required, num_or_vec, table, text, vec, vecs, whole)
 from cosim.scene.registry import FLUIDS as FLUID_MODELS, MOORINGS, SHAPES, WAVES as WAVE_KINDS
+from fluid.settings import SETTINGS as FLUID_SETTINGS
 
 SETUPS = ("auto", "still", "waves", "sloshing", "impact", "defaults")
 
@@ -194,41 +195,18 @@ class Potential(Spec):
 
 
 @dataclass(frozen=True)
+@mirror_settings(FLUID_SETTINGS, {"rho0": (L.MAX_DENSITY, L.DENSITY_WHY)})
 class SPH(Spec):
     """The weakly compressible SPH fluid (``fluid.solver``). ``dx`` is the one setting
     every scene gives; the rest come from the set-up (``setup``, see
     :mod:`cosim.scene.setup`: ``"auto"`` picks it from what the scene contains) unless
-    set here. Unset (None) fields take the set-up's value, then ``FluidConfig``'s."""
+    set here. Unset (None) fields take the set-up's value, then ``FluidConfig``'s. The
+    fields before ``setup`` are the fluid's own settings, declared in ``fluid.settings``."""
 
     TAG = ("model", "sph")
     model: str = tag("sph")
-    dx: float = required(num(None, "particle spacing", "m", lo=0, lo_open=True, optional=False))
     setup: str = choice("auto", "fluid set-up: auto (from the scene), still, waves, sloshing, impact, defaults",
                         SETUPS)
-    rho0: float = num(1000.0, "reference density", "kg/m^3", lo=0, lo_open=True, hi=L.MAX_DENSITY,
-                      why=L.DENSITY_WHY)
-    c0: float = num(None, "speed of sound; unset: c0_factor * u_max", "m/s", lo=0, lo_open=True)
-    c0_factor: float = num(None, "c0 / u_max (>= 10)", lo=10)
-    u_max: float = num(None, "expected largest flow speed; unset: from the scene", "m/s", lo=0, lo_open=True)
-    h_coef: float = num(None, "smoothing length / dx", lo=1, hi=3)
-    kernel: str = choice(None, "SPH kernel", ("wendland", "cubic"))
-    walls: str = choice(None, "tank-wall densities", ("dbc", "adami"))
-    alpha: float = num(None, "artificial viscosity", lo=0, hi=1)
-    alpha_wall: float = num(None, "factor on alpha at walls (0: slip)", lo=0, hi=1)
-    nu: float = num(None, "kinematic (laminar) viscosity", "m^2/s", lo=0)
-    xsph_eps: float = num(None, "XSPH coefficient", lo=0, hi=1)
-    diffusion: str = choice(None, "density diffusion", ("fourtakas", "antuono", "molteni", "none"))
-    delta: float = num(None, "density diffusion coefficient", lo=0, hi=1)
-    diffusion_at_surface: bool = flag(None, "false: fade the density diffusion out under the free surface")
-    cfl: float = num(None, "CFL factor", lo=0, hi=0.4, lo_open=True)
-    integrator: str = choice(None, "time integration", ("symplectic", "verlet"))
-    mls_every: int = whole(None, "steps between MLS density re-initialisations (0: never)", lo=0)
-    threads: int = whole(None, "numba threads (unset: by particle count)", lo=1)
-    device: str = choice(None, "where the fluid steps: cpu, or cuda (an NVIDIA GPU with numba-cuda; see fluid.cuda)",
-                         ("cpu", "cuda"))
-    precision: str = choice(None, "arithmetic of the pair terms: float64 (the reference), or float32 summed in "
-                                  "float64 (a 3-D step ~1.2x faster; momentum kept to ~5e-9, not round-off; cpu only)",
-                            ("float64", "float32"))
     settle: float = num(0.0, "damped relaxation of the particles before the run (clock held at 0)", "s", lo=0)
     body_boundary: str = choice("mdbc", "density of the bodies' boundary particles", ("mdbc", "dbc"))
 
