@@ -36,6 +36,7 @@ from fluid.boundary_correction import MDBC
 from fluid.geometry import assemble, set_hydrostatic
 from fluid.particles import Kind
 from fluid.solver import Fluid, FluidConfig
+from fluid.standoff import fit_to_faces
 
 log = logging.getLogger(__name__)
 
@@ -193,12 +194,12 @@ class SPHFluid:
         # the bodies' boundary particles fill only a band inside their surface: fluid
         # inside a body is found from its geoms, not from the distance to particles
         inside = self._inside_bodies(bodies.geoms(), kin)
-        built = assemble(c.dim, c.dx, c.rho0, self._fluid_points[~inside], self._walls + body_sets)
+        fpts, volume = self._fit_to_faces(self._fluid_points[~inside], bodies, kin)
+        built = assemble(c.dim, c.dx, c.rho0, fpts, self._walls + body_sets, volume=volume)
         ps = built.particles
         self.removed_overlap = int(inside.sum()) + built.removed_overlap
-        #: fluid cells the bodies took at set-up [m^3, m^2 in 2-D]: a body at rest feels the
-        #: weight of these, so bodies whose faces lie between lattice rows float off by up
-        #: to a row; align them with the particle lattice or refine dx
+        #: fluid cells the bodies took at set-up [m^3, m^2 in 2-D], before the flat faces'
+        #: fit (fluid.standoff) gave the water in front of them back its volume
         self.displaced_volume = int(inside.sum()) * c.dx**c.dim
         log.info("SPH fluid: %d fluid particles removed where the bodies are", self.removed_overlap)
         # ids are the assembly order: body k's particles in the order of pb[owner == k]
@@ -288,6 +289,23 @@ class SPHFluid:
                     tol += 4 * float(np.finfo(np.float32).eps) * reach
                 inside |= signed_distance(g.kind, np.asarray(g.size, float), pg, g.mesh) < 0.5 * self.config.dx - tol
         return inside
+
+    def _fit_to_faces(self, fp, bodies, kin):
+        """The fluid points ``fp`` fitted to the rigid bodies' flat faces along the
+        lattice's axes, and each one's volume factor (:func:`fluid.standoff.fit_to_faces`:
+        a body at rest then carries its own volume's weight, not the cells missing
+        between a face and the lattice's next plane)."""
+        links = {n for beam in self.elastic_beams for n in beam.link_names}
+        names = getattr(bodies, "body_names", None)
+        geoms = []
+        for k, shapes in enumerate(bodies.geoms()):
+            if names is not None and names[k] in links:
+                continue
+            R = kin.rotation[k]
+            geoms += [(g.kind, np.asarray(g.size, float), kin.origin[k] + R @ g.pos, R @ g.rot) for g in shapes]
+        x3 = fp if self.config.dim == 3 else np.stack([fp[:, 0], np.zeros(len(fp)), fp[:, 1]], axis=1)
+        x3, volume = fit_to_faces(x3, geoms, self.config.dx)
+        return (x3 if self.config.dim == 3 else x3[:, [0, 2]]), volume
 
     def _to_dim(self, v3):
         return v3[:, [0, 2]] if self.config.dim == 2 else v3

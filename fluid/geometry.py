@@ -66,8 +66,10 @@ class Built:
     removed_overlap: int  # fluid particles removed because they overlapped a wall
 
 
-def assemble(dim: int, dx: float, rho0: float, fluid, walls=(), clearance: float = 0.9) -> Built:
-    """Join fluid points and walls into one :class:`ParticleSet` with ``m = rho0 dx^dim``.
+def assemble(dim: int, dx: float, rho0: float, fluid, walls=(), clearance: float = 0.9,
+             volume=None) -> Built:
+    """Join fluid points and walls into one :class:`ParticleSet` with ``m = rho0 dx^dim``
+    (times the fluid points' ``volume`` factors [-], one each, where given).
 
     fluid: (N, dim) points or a list of them; walls: list of ``(points, kind, group)``.
     Fluid particles closer than ``clearance * dx`` [-] to any wall particle overlap the wall:
@@ -79,6 +81,7 @@ def assemble(dim: int, dx: float, rho0: float, fluid, walls=(), clearance: float
     if fl.shape[1] != dim:
         raise InputError(f"fluid points have {fl.shape[1]} components, expected dim={dim}")
     m = rho0 * dx**dim
+    fm = np.full(len(fl), m) if volume is None else m * np.asarray(volume, np.float64)
     sets = []
     removed = 0
     if walls:
@@ -86,10 +89,10 @@ def assemble(dim: int, dx: float, rho0: float, fluid, walls=(), clearance: float
         d, _ = cKDTree(wp).query(fl, k=1, distance_upper_bound=clearance * dx)
         keep = ~np.isfinite(d) | (d >= clearance * dx)
         removed = int((~keep).sum())
-        fl = fl[keep]
+        fl, fm = fl[keep], fm[keep]
         if removed:
             log.info("removed %d fluid particles overlapping walls", removed)
-    sets.append(ParticleSet.create(fl, rho0, m))
+    sets.append(ParticleSet.create(fl, rho0, fm))
     for pts, kind, group in walls:
         if Kind(kind) == Kind.FLUID:
             raise InputError("a wall cannot be of kind FLUID")
