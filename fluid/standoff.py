@@ -21,8 +21,9 @@ its edges has water beside the body above it, which a fitted point would crowd) 
 exactly dx/2 off and rows ``k >= rows`` stay put; each moved particle's volume, and so
 its mass at the same density, grows by ``1 - e / (rows dx)`` (<= 1 + 1/rows), the
 stretch's Jacobian across the face. Then ``V_hole`` is the body's own volume there.
-Limits: flat faces along the lattice's axes only (box faces, cylinder caps, turned by
-multiples of 90 deg); the band must not reach another wall.
+Where the water in front of a face ends within ``rows`` rows (a free surface, a wall),
+the stretch ends at its last row, which stays put; under ``MIN_ROWS`` rows, no fit. Limits: flat faces along the
+lattice's axes only (box faces, cylinder caps, turned by multiples of 90 deg).
 """
 
 from __future__ import annotations
@@ -31,6 +32,9 @@ import numpy as np
 
 #: rows of fluid in front of a face over which its standoff is taken up [-]
 ROWS = 8
+#: fewest rows that may take it: a shorter band would be stretched by more than 1/4
+#: (a body within a few rows of the surface or the floor keeps its gap there)
+MIN_ROWS = 4
 
 
 def planar_faces(kind: str, size) -> list[tuple[int, float, float, object]]:
@@ -58,6 +62,19 @@ def planar_faces(kind: str, size) -> list[tuple[int, float, float, object]]:
     return []
 
 
+def _band(p: np.ndarray, k: np.ndarray, j: int, rows: int, dx: float) -> np.ndarray:
+    """Per point, the rows its line across the face stretches over: ``rows``, or fewer
+    where the water ends sooner (a free surface or a wall within the band: its last row
+    there stays put, so the level and the wall's gap are kept); none where fewer than
+    :data:`MIN_ROWS` would take the stretch."""
+    across = np.delete(p, j, axis=1)
+    _, line = np.unique(np.round(across / (1e-6 * dx)).astype(np.int64), axis=0, return_inverse=True)
+    last = np.full(line.max() + 1, -1.0)
+    np.maximum.at(last, line.ravel(), k)
+    n = np.minimum(rows, last[line.ravel()])
+    return np.where(n >= MIN_ROWS, n, 0.0)
+
+
 def fit_to_faces(points: np.ndarray, geoms, dx: float, *, rows: int = ROWS) -> tuple[np.ndarray, np.ndarray]:
     """Fitted copies of fluid lattice ``points`` (n, 3) [m] and each one's volume factor
     (n,) [-] (module docstring). ``geoms``: ``(kind, size, origin (3,), rotation (3, 3))``
@@ -74,14 +91,15 @@ def fit_to_faces(points: np.ndarray, geoms, dx: float, *, rows: int = ROWS) -> t
                 continue
             p = (pts - origin) @ rot  # geom frame
             s = sign * p[:, axis] - half
-            near = (s > 0.5 * dx - tol) & (s < (rows + 0.5) * dx) & (inside(p) >= -tol)
+            near = (s > 0.5 * dx - tol) & (s < (rows + 1.5) * dx) & (inside(p) >= -tol)
             if not near.any():
                 continue
             k = np.floor((s[near] - 0.5 * dx + tol) / dx)
             e = 0.5 * dx - (s[near] - k * dx)  # in (-dx, 0]
-            band = k < rows
-            move = np.where(band, e * (1.0 - k / rows), 0.0)
+            n = _band(pts[near], k, j, rows, dx)
+            band = k < n
+            move = np.where(band, e * (1.0 - k / np.maximum(n, 1)), 0.0)
             rows_idx = np.flatnonzero(near)
             pts[rows_idx] += move[:, None] * np.sign(normal[j]) * np.eye(3)[j]
-            factor[rows_idx] *= np.where(band, 1.0 - e / (rows * dx), 1.0)
+            factor[rows_idx] *= np.where(band, 1.0 - e / (np.maximum(n, 1) * dx), 1.0)
     return pts, factor

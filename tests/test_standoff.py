@@ -49,6 +49,28 @@ def test_a_box_between_lattice_planes_leaves_no_hole_beyond_itself(phase):
     assert np.allclose(v[1:ROWS], gaps[1:] / DX, atol=1e-12)
 
 
+def test_water_ending_within_the_band_keeps_its_last_row():
+    """A box with only five rows of water over its top face (a free surface there): the
+    first row is fitted, the surface row stays where it was (the level kept), and the
+    cells between still tile the column from the face to the surface row's cell; with
+    three rows (fewer than MIN_ROWS to take the stretch) nothing moves."""
+    half = np.array([0.6, 0.6, 0.47])
+    pts = _carved("box", half, np.zeros(3))
+    shallow = pts[pts[:, 2] < 0.8]  # rows at 0.55, 0.65, 0.75 over the top face at 0.47
+    over = shallow[:, 2] > half[2]
+    fit, vol = fit_to_faces(shallow, [("box", half, np.zeros(3), np.eye(3))], DX)
+    assert np.array_equal(fit[over], shallow[over]) and np.all(vol[over] == 1.0)
+    pts = pts[pts[:, 2] < 1.0]  # five rows: 0.55 ... 0.95
+    fit, vol = fit_to_faces(pts, [("box", half, np.zeros(3), np.eye(3))], DX)
+    column = (np.abs(pts[:, 0] - 0.05) < 1e-9) & (np.abs(pts[:, 1] - 0.05) < 1e-9) & (pts[:, 2] > half[2])
+    z0, z, v = (a[column] for a in (pts[:, 2], fit[:, 2], vol))
+    order = np.argsort(z0)
+    z0, z, v = z0[order], z[order], v[order]
+    assert len(z) == 5 and z[0] == pytest.approx(half[2] + 0.5 * DX, abs=1e-12)
+    assert z[-1] == z0[-1] and v[-1] == 1.0
+    assert v[:-1].sum() * DX == pytest.approx((z0[-1] - 0.5 * DX) - half[2], abs=1e-12)
+
+
 def test_a_cylinders_cap_is_fitted_and_its_curved_side_left_alone():
     """A vertical cylinder: the water under its bottom cap is fitted (first row dx/2
     off); beside its curved side (every phase of the lattice, no bias) nothing moves."""
