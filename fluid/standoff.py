@@ -15,15 +15,16 @@ its weight (0.5-1.3 of it, from the kernel's overlap across the gap). Measured i
 docs/validation/nearfield.md ("The static draft's offset").
 
 What: for each planar face whose outward normal lies along a lattice axis, the fluid
-points in front of it (within ``rows`` rows, and over the face itself: a point beyond
-its edges has water beside the body above it, which a fitted point would crowd) move along the normal by ``e (1 - k / rows)``, ``k`` the row
-(0 first) and ``e = dx/2 - s1`` (<= 0: towards the face), so the first row stands
-exactly dx/2 off and rows ``k >= rows`` stay put; each moved particle's volume, and so
-its mass at the same density, grows by ``1 - e / (rows dx)`` (<= 1 + 1/rows), the
-stretch's Jacobian across the face. Then ``V_hole`` is the body's own volume there.
-Where the water in front of a face ends within ``rows`` rows (a free surface, a wall),
-the stretch ends at its last row, which stays put; under ``MIN_ROWS`` rows, no fit. Limits: flat faces along the
-lattice's axes only (box faces, cylinder caps, turned by multiples of 90 deg).
+points in front of it (within ``rows`` rows, over the face itself: a point beyond its
+edges has water beside the body above it, which a fitted point would crowd) move along
+the normal by ``e (1 - k / n)``, ``k`` the row (0 first), ``e = dx/2 - s1`` (<= 0:
+towards the face) and ``n = rows``, so the first row stands exactly dx/2 off and rows
+``k >= n`` stay put; each moved particle's volume, and so its mass at the same density,
+grows by ``1 - e / (n dx)`` (<= 1 + 1/n), the stretch's Jacobian across the face. Then
+``V_hole`` is the body's own volume there. Where the water in front of a face ends
+within ``rows`` rows (a free surface, a wall), ``n`` is its last row, which stays put;
+under ``MIN_ROWS`` rows, no fit. Limits: flat faces along the lattice's axes only (box
+faces, cylinder caps, turned by multiples of 90 deg).
 """
 
 from __future__ import annotations

@@ -10,8 +10,8 @@ fluid places the body's particles from its pose (Eq. 13).
 Set-up rule shared by the box cases: the box's faces lie on faces of the fluid's
 particle lattice at the start (draft, water depth and box size are whole numbers of
 ``dx``), so that the fluid removed where the box is equals the box's submerged
-volume exactly; a face between lattice rows leaves a gap of up to half a spacing
-that the fluid must first close (measured: -7 % of the height at dx = 1 cm).
+volume exactly. (A face between lattice planes is now fitted at set-up,
+``fluid.standoff``; the cases keep their aligned set-up, their measured references.)
 """
 
 from __future__ import annotations
