@@ -271,19 +271,21 @@ class SPHFluid:
             T3 += Te
         return F3, T3
 
-    def _inside_bodies(self, geoms, kin) -> np.ndarray:
-        """Fluid points whose cell (half a spacing around them) reaches into a body. A
-        face on a lattice plane leaves the cells beside it alone: the test allows for
-        round-off, and for a mesh for MuJoCo's float32 vertices (and the geom position it
-        derives from them), 4 float32 epsilons of the mesh's reach from the body origin."""
-        fp = self._fluid_points
-        x3 = fp if self.config.dim == 3 else np.stack([fp[:, 0], np.zeros(len(fp)), fp[:, 1]], axis=1)
-        inside = np.zeros(len(fp), bool)
+    def _inside_bodies(self, geoms, kin, x3=None, slack: float = 0.5e-9) -> np.ndarray:
+        """Fluid points (the lattice's, or ``x3`` (n, 3)) whose cell (half a spacing
+        around them) reaches into a body. A face on a lattice plane leaves the cells
+        beside it alone: the test allows ``slack`` dx for round-off, and for a mesh for
+        MuJoCo's float32 vertices (and the geom position it derives from them), 4 float32
+        epsilons of the mesh's reach from the body origin."""
+        if x3 is None:
+            fp = self._fluid_points
+            x3 = fp if self.config.dim == 3 else np.stack([fp[:, 0], np.zeros(len(fp)), fp[:, 1]], axis=1)
+        inside = np.zeros(len(x3), bool)
         for k, shapes in enumerate(geoms):
             pb = (x3 - kin.origin[k]) @ kin.rotation[k]  # body frame: R^T (x - origin)
             for g in shapes:
                 pg = (pb - g.pos) @ g.rot  # geom frame
-                tol = 0.5e-9 * self.config.dx
+                tol = slack * self.config.dx
                 if g.kind == "mesh":
                     reach = float(np.linalg.norm(g.pos)) + float(np.abs(g.mesh[0]).max())
                     tol += 4 * float(np.finfo(np.float32).eps) * reach
@@ -304,7 +306,10 @@ class SPHFluid:
             R = kin.rotation[k]
             geoms += [(g.kind, np.asarray(g.size, float), kin.origin[k] + R @ g.pos, R @ g.rot) for g in shapes]
         x3 = fp if self.config.dim == 3 else np.stack([fp[:, 0], np.zeros(len(fp)), fp[:, 1]], axis=1)
-        x3, volume = fit_to_faces(x3, geoms, self.config.dx)
+        def clear(p):  # a row put back stands dx/2 off its face: round-off allowed
+            return ~self._inside_bodies(bodies.geoms(), kin, p, slack=1e-6)
+
+        x3, volume = fit_to_faces(x3, geoms, self.config.dx, clear=clear)
         return (x3 if self.config.dim == 3 else x3[:, [0, 2]]), volume
 
     def _to_dim(self, v3):

@@ -16,15 +16,16 @@ docs/validation/nearfield.md ("The static draft's offset").
 
 What: for each planar face whose outward normal lies along a lattice axis, the fluid
 points in front of it (within ``rows`` rows, over the face itself: a point beyond its
-edges has water beside the body above it, which a fitted point would crowd) move along
-the normal by ``e (1 - k / n)``, ``k`` the row (0 first), ``e = dx/2 - s1`` (<= 0:
-towards the face) and ``n = rows``, so the first row stands exactly dx/2 off and rows
-``k >= n`` stay put; each moved particle's volume, and so its mass at the same density,
-grows by ``1 - e / (n dx)`` (<= 1 + 1/n), the stretch's Jacobian across the face. Then
-``V_hole`` is the body's own volume there. Where the water in front of a face ends
-within ``rows`` rows (a free surface, a wall), ``n`` is its last row, which stays put;
-under ``MIN_ROWS`` rows, no fit. Limits: flat faces along the lattice's axes only (box
-faces, cylinder caps, turned by multiples of 90 deg).
+edges has water beside the body above it, which a fitted point would crowd) are fitted.
+The first row is the lattice row nearest dx/2 off the face (a removed row, up to dx/2
+off, is put back where it is nearer than the one left); it moves to dx/2 off, by ``e``
+in (-dx/2, dx/2], and the rows behind it by ``e (1 - k / n)``, ``k`` the row (0 first),
+``n = rows``, so rows ``k >= n`` stay put; each moved particle's volume, and so its mass
+at the same density, is scaled by ``1 - e / (n dx)`` (within 1 -+ 1/(2n)), the stretch's
+Jacobian across the face. Then ``V_hole`` is the body's own volume there. Where the
+water in front of a face ends within ``rows`` rows (a free surface, a wall), ``n`` is
+its last row, which stays put; under ``MIN_ROWS`` rows, no fit. Limits: flat faces
+along the lattice's axes only (box faces, cylinder caps, turned by multiples of 90 deg).
 """
 
 from __future__ import annotations
@@ -33,7 +34,7 @@ import numpy as np
 
 #: rows of fluid in front of a face over which its standoff is taken up [-]
 ROWS = 8
-#: fewest rows that may take it: a shorter band would be stretched by more than 1/4
+#: fewest rows that may take it: a shorter band would be stretched by more than 1/8
 #: (a body within a few rows of the surface or the floor keeps its gap there)
 MIN_ROWS = 4
 
@@ -63,24 +64,21 @@ def planar_faces(kind: str, size) -> list[tuple[int, float, float, object]]:
     return []
 
 
-def _band(p: np.ndarray, k: np.ndarray, j: int, rows: int, dx: float) -> np.ndarray:
-    """Per point, the rows its line across the face stretches over: ``rows``, or fewer
-    where the water ends sooner (a free surface or a wall within the band: its last row
-    there stays put, so the level and the wall's gap are kept); none where fewer than
-    :data:`MIN_ROWS` would take the stretch."""
+def _lines(p: np.ndarray, j: int, dx: float) -> np.ndarray:
+    """Each point's line across a face along lattice axis ``j``: an index shared by the
+    points with the same other two coordinates."""
     across = np.delete(p, j, axis=1)
-    _, line = np.unique(np.round(across / (1e-6 * dx)).astype(np.int64), axis=0, return_inverse=True)
-    last = np.full(line.max() + 1, -1.0)
-    np.maximum.at(last, line.ravel(), k)
-    n = np.minimum(rows, last[line.ravel()])
-    return np.where(n >= MIN_ROWS, n, 0.0)
+    return np.unique(np.round(across / (1e-6 * dx)).astype(np.int64), axis=0, return_inverse=True)[1].ravel()
 
 
-def fit_to_faces(points: np.ndarray, geoms, dx: float, *, rows: int = ROWS) -> tuple[np.ndarray, np.ndarray]:
-    """Fitted copies of fluid lattice ``points`` (n, 3) [m] and each one's volume factor
-    (n,) [-] (module docstring). ``geoms``: ``(kind, size, origin (3,), rotation (3, 3))``
-    per geom, rotation taking the geom's frame to the world's. Points already removed
-    where the geoms' cells reach in (standoff >= dx/2)."""
+def fit_to_faces(points: np.ndarray, geoms, dx: float, *, rows: int = ROWS,
+                 clear=None) -> tuple[np.ndarray, np.ndarray]:
+    """Fitted fluid lattice ``points`` (n, 3) [m] and each one's volume factor [-]
+    (module docstring); more points than given where a removed row is put back.
+    ``geoms``: ``(kind, size, origin (3,), rotation (3, 3))`` per geom, rotation taking the
+    geom's frame to the world's. The points given stand at least dx/2 off every geom (the
+    cells reaching in removed); ``clear(points) -> bool (n,)``: whether put-back points
+    stand clear of every body (default: all)."""
     pts = np.array(points, float)
     factor = np.ones(len(pts))
     tol = 1e-6 * dx
@@ -90,17 +88,41 @@ def fit_to_faces(points: np.ndarray, geoms, dx: float, *, rows: int = ROWS) -> t
             j = int(np.argmax(np.abs(normal)))
             if abs(normal[j]) < 1.0 - 1e-9:  # not along a lattice axis: its rows see every phase
                 continue
+            step = np.sign(normal[j]) * np.eye(3)[j]  # outward, along the lattice axis
             p = (pts - origin) @ rot  # geom frame
             s = sign * p[:, axis] - half
-            near = (s > 0.5 * dx - tol) & (s < (rows + 1.5) * dx) & (inside(p) >= -tol)
-            if not near.any():
+            near = np.flatnonzero((s > 0.5 * dx - tol) & (s < (rows + 1.5) * dx) & (inside(p) >= -tol))
+            if not len(near):
                 continue
             k = np.floor((s[near] - 0.5 * dx + tol) / dx)
-            e = 0.5 * dx - (s[near] - k * dx)  # in (-dx, 0]
-            n = _band(pts[near], k, j, rows, dx)
-            band = k < n
-            move = np.where(band, e * (1.0 - k / np.maximum(n, 1)), 0.0)
-            rows_idx = np.flatnonzero(near)
-            pts[rows_idx] += move[:, None] * np.sign(normal[j]) * np.eye(3)[j]
-            factor[rows_idx] *= np.where(band, 1.0 - e / (np.maximum(n, 1) * dx), 1.0)
+            s1 = s[near] - k * dx  # the first row's standoff, in [dx/2, 3dx/2)
+            # the removed row in front of a first row more than dx off stood nearer dx/2:
+            # put it back (then |e| <= dx/2, the stretch half as large)
+            cand = np.flatnonzero((k == 0) & (s1 > dx + tol))
+            if clear is not None and len(cand):  # where it would stand once fitted: dx/2 off
+                cand = cand[clear(pts[near[cand]] - (s1[cand] - 0.5 * dx)[:, None] * step)]
+            extra = pts[near[cand]] - dx * step  # its lattice point
+            pts = np.concatenate([pts, extra])
+            factor = np.concatenate([factor, np.ones(len(extra))])
+            idx = np.concatenate([near, len(pts) - len(extra) + np.arange(len(extra))])
+            line = _lines(pts[idx], j, dx)
+            shifted = np.zeros(line.max() + 1, bool)
+            shifted[line[len(near):]] = True
+            k = np.concatenate([k + shifted[line[: len(near)]], np.zeros(len(extra))])
+            s1 = np.concatenate([s1, s1[cand] - dx])
+            s1[: len(near)] -= dx * shifted[line[: len(near)]]
+            e = 0.5 * dx - s1  # in (-dx/2, dx/2]
+            last = np.full(line.max() + 1, -1.0)
+            np.maximum.at(last, line, k)
+            n = np.minimum(rows, last[line])  # the water may end sooner: its last row stays
+            n = np.where(n >= MIN_ROWS, n, np.inf)  # too few rows to take it: no fit
+            band = (k < n) & np.isfinite(n)
+            pts[idx] += (np.where(band, e * (1.0 - k / n), 0.0))[:, None] * step
+            factor[idx] *= np.where(band, 1.0 - e / (n * dx), 1.0)
+            # a line too short to take the fit gives back the row it was lent
+            drop = idx[(k == 0) & ~band & (np.arange(len(idx)) >= len(near))]
+            if len(drop):
+                keep = np.ones(len(pts), bool)
+                keep[drop] = False
+                pts, factor = pts[keep], factor[keep]
     return pts, factor

@@ -23,30 +23,39 @@ def _carved(kind, size, centre, rot=np.eye(3)):
     return pts[sd >= 0.5 * DX - 1e-12]
 
 
+def _column(pts, x, y, below=None, above=None):
+    m = (np.abs(pts[:, 0] - x) < 1e-9) & (np.abs(pts[:, 1] - y) < 1e-9)
+    if below is not None:
+        m &= pts[:, 2] < below
+    if above is not None:
+        m &= pts[:, 2] > above
+    return m
+
+
 @pytest.mark.parametrize("phase", [0.0, 0.3, 0.55, 0.9])
 def test_a_box_between_lattice_planes_leaves_no_hole_beyond_itself(phase):
     """Under the bottom face of a box whose faces lie ``phase`` dx off the lattice's
-    planes, the first row stands dx/2 off the face, the stretched rows are evenly spaced,
-    and their cells (volume factors) fill the column from the face down to the first
-    unmoved row's cell exactly: the fluid's hole is the box."""
+    planes: the first row stands dx/2 off the face (the lattice row nearest that, put
+    back where it had been removed), it moves by at most dx/2, the stretched rows are
+    evenly spaced, and their cells (volume factors) fill the column from the face down
+    to the first unmoved row's cell exactly: the fluid's hole is the box."""
     half = np.array([0.6, 0.6, 0.45]) + phase * DX
-    centre = np.zeros(3)
-    pts = _carved("box", half, centre)
-    fit, vol = fit_to_faces(pts, [("box", half, centre, np.eye(3))], DX)
-    column = (np.abs(pts[:, 0] - 0.05) < 1e-9) & (np.abs(pts[:, 1] - 0.05) < 1e-9) & (pts[:, 2] < -half[2])
-    z0, z, v = pts[column, 2], fit[column, 2], vol[column]
-    order = np.argsort(-z0)
-    z0, z, v = z0[order], z[order], v[order]
+    pts = _carved("box", half, np.zeros(3))
+    fit, vol = fit_to_faces(pts, [("box", half, np.zeros(3), np.eye(3))], DX)
     face = -half[2]
+    old = np.sort(pts[_column(pts, 0.05, 0.05, below=face), 2])[::-1]
+    col = _column(fit, 0.05, 0.05, below=face)
+    order = np.argsort(-fit[col, 2])
+    z, v = fit[col, 2][order], vol[col][order]
     assert z[0] == pytest.approx(face - 0.5 * DX, abs=1e-12)
+    lattice_first = old[0] + DX if old[0] + DX < face - 1e-12 else old[0]  # nearest dx/2, lattice
+    assert abs(z[0] - lattice_first) <= 0.5 * DX + 1e-12
     gaps = -np.diff(z[: ROWS + 1])
-    assert np.allclose(gaps[:-1], gaps[0], atol=1e-12) and gaps[0] >= DX - 1e-12
-    assert np.array_equal(z[ROWS:], z0[ROWS:])  # beyond the band nothing moves
+    assert np.allclose(gaps, gaps[0], atol=1e-12) and abs(gaps[0] - DX) <= DX / (2 * ROWS) + 1e-12
+    assert np.array_equal(np.sort(z[ROWS:]), np.sort(old[old < z[ROWS - 1] - 0.5 * DX]))  # beyond: unmoved
     assert np.all(v[ROWS:] == 1.0)
-    top_of_first_unmoved = z0[ROWS] + 0.5 * DX
-    assert v[:ROWS].sum() * DX == pytest.approx(face - top_of_first_unmoved, abs=1e-12)
-    # every cell's volume matches the spacing around it: the stretch's Jacobian
-    assert np.allclose(v[1:ROWS], gaps[1:] / DX, atol=1e-12)
+    assert v[:ROWS].sum() * DX == pytest.approx(face - (z[ROWS] + 0.5 * DX), abs=1e-12)
+    assert np.allclose(v[1:ROWS], gaps[1:] / DX, atol=1e-12)  # the stretch's Jacobian
 
 
 def test_water_ending_within_the_band_keeps_its_last_row():
@@ -57,18 +66,20 @@ def test_water_ending_within_the_band_keeps_its_last_row():
     half = np.array([0.6, 0.6, 0.47])
     pts = _carved("box", half, np.zeros(3))
     shallow = pts[pts[:, 2] < 0.8]  # rows at 0.55, 0.65, 0.75 over the top face at 0.47
-    over = shallow[:, 2] > half[2]
     fit, vol = fit_to_faces(shallow, [("box", half, np.zeros(3), np.eye(3))], DX)
-    assert np.array_equal(fit[over], shallow[over]) and np.all(vol[over] == 1.0)
+
+    def over(p):
+        return (p[:, 2] > half[2]) & (np.abs(p[:, 0]) < half[0]) & (np.abs(p[:, 1]) < half[1])
+
+    assert np.array_equal(fit[over(fit)], shallow[over(shallow)]) and np.all(vol[over(fit)] == 1.0)
     pts = pts[pts[:, 2] < 1.0]  # five rows: 0.55 ... 0.95
     fit, vol = fit_to_faces(pts, [("box", half, np.zeros(3), np.eye(3))], DX)
-    column = (np.abs(pts[:, 0] - 0.05) < 1e-9) & (np.abs(pts[:, 1] - 0.05) < 1e-9) & (pts[:, 2] > half[2])
-    z0, z, v = (a[column] for a in (pts[:, 2], fit[:, 2], vol))
-    order = np.argsort(z0)
-    z0, z, v = z0[order], z[order], v[order]
+    col = _column(fit, 0.05, 0.05, above=half[2])
+    order = np.argsort(fit[col, 2])
+    z, v = fit[col, 2][order], vol[col][order]
     assert len(z) == 5 and z[0] == pytest.approx(half[2] + 0.5 * DX, abs=1e-12)
-    assert z[-1] == z0[-1] and v[-1] == 1.0
-    assert v[:-1].sum() * DX == pytest.approx((z0[-1] - 0.5 * DX) - half[2], abs=1e-12)
+    assert z[-1] == pytest.approx(0.95, abs=1e-12) and v[-1] == 1.0
+    assert v[:-1].sum() * DX == pytest.approx((z[-1] - 0.5 * DX) - half[2], abs=1e-12)
 
 
 def test_a_cylinders_cap_is_fitted_and_its_curved_side_left_alone():
