@@ -253,38 +253,37 @@ def floating_heave_period(quick: bool) -> dict:
             "particles": int(fluid.fluid.ps.n), "steps": int(coupler.steps)}
 
 
-def sinking_cylinder(dx: float, t_end: float, *, radius: float = 1.0, rho_c: float = 1200.0,
-                     tank: float = 6.0, depth: float = 4.0, boundary: str = "mdbc"):
-    """Barreiro et al. 2016, §4.1 (after Fekken 2004): a 2-D cylinder of ``radius`` [m] and
-    density ``rho_c`` [kg/m^3], centre on the still-water surface (half submerged),
-    released at rest in the middle of a ``tank`` [m] long tank of ``depth`` [m]
-    water; ``dx`` [m] spacing, run for ``t_end`` [s]. Returns the time [s], the
-    centre's depth below its start [m] and its downward velocity [m/s] at every
-    coupling step, and the coupler."""
-    from bodies import builders
-    from bodies.mujoco_bodies import MujocoBodies
-    from cosim.coupler import Coupler
-    from cosim.sph_fluid import SPHFluid
-    from fluid.geometry import block, tank_walls
-    from fluid.particles import Kind
-    from fluid.solver import FluidConfig
+def sinking_scene(dx: float, t_end: float, *, radius: float = 1.0, rho_c: float = 1200.0,
+                  tank: float = 6.0, depth: float = 4.0, boundary: str = "mdbc"):
+    """Barreiro et al. 2016, §4.1 (after Fekken 2004), the scene ``scenes/sinking-cylinder.toml``:
+    a 2-D cylinder of ``radius`` [m] and density ``rho_c`` [kg/m^3], centre on the
+    still-water surface (half submerged), released at rest in the middle of a ``tank``
+    [m] long tank of ``depth`` [m] water (walls ``depth + 1.5 radius`` high); ``dx`` [m]
+    spacing, ``t_end`` [s] long; ``boundary``: "mdbc" or "dbc" for the body."""
+    return case_scene.load("sinking-cylinder", [
+        f"fluid.dx={number(dx)}", f"fluid.body_boundary={boundary}", f"domain.length={number(tank)}",
+        f"domain.depth={number(depth)}", f"domain.height={number(depth + 1.5 * radius)}",
+        f"bodies[0].radius={number(radius)}", f"bodies[0].density={number(rho_c)}",
+        f"bodies[0].pos=[{number(0.5 * tank)}, {number(depth)}]", f"world.duration={number(t_end)}"])
 
-    cfg = FluidConfig(dim=2, dx=dx, u_max=math.sqrt(G * depth), c0_factor=20.0)
-    walls = [(tank_walls(np.zeros(2), np.array([tank, depth + 1.5 * radius]), dx, 3), Kind.FIXED_WALL, 0)]
-    cyl = builders.cylinder("cyl", radius, 1.0, (0.5 * tank, 0.0, depth), density=rho_c, planar=True)
-    bodies = MujocoBodies(builders.scene(cyl, gravity=G, timestep=1e-3))
-    fluid = SPHFluid(cfg, block(np.zeros(2), np.array([tank, depth]), dx), walls, z_surface=depth,
-                     boundary=boundary)
-    coupler = Coupler(bodies=bodies, fluid=fluid, scheme="fluid-first")
+
+def sinking_cylinder(dx: float, t_end: float, **kw):
+    """Run :func:`sinking_scene` (``kw`` its keywords) for ``t_end`` [s]. Returns the time
+    [s], the centre's depth below its start [m] and its downward velocity [m/s] at every
+    coupling step, the coupler and the fluid."""
+    scene = sinking_scene(dx, t_end, **kw)
+    z0 = scene.bodies[0].pos[1]  # the centre's start height
     t, s, v = [0.0], [0.0], [0.0]
+    with case_scene.built(scene) as built:
+        coupler, bodies, fluid = built.coupler, built.bodies, built.fluid
 
-    def record(info):
-        k = bodies.kinematics()
-        t.append(info.t)
-        s.append(depth - k.com[0, 2])
-        v.append(-k.velocity[0, 2])
+        def record(info):
+            k = bodies.kinematics()
+            t.append(info.t)
+            s.append(z0 - k.com[0, 2])
+            v.append(-k.velocity[0, 2])
 
-    coupler.run(t_end, callback=record)
+        coupler.run(t_end, callback=record)
     return np.array(t), np.array(s), np.array(v), coupler, fluid
 
 
@@ -313,11 +312,16 @@ def sinking_cylinder_reference(t, radius: float = 1.0, rho_c: float = 1200.0):
     return sol.y[1]
 
 
+#: the sinking cylinder's spacing [m] and duration [s], by variant (quick: True)
+SINKING_RUN = {True: (0.1, 0.25), False: (0.05, 1.0)}
+
+
 @case("sinking-cylinder", "2-D cylinder r = 1 m, 1200 kg/m^3, half submerged, released: velocity over the first "
       "0.25 s vs added-mass + buoyancy model; trajectory over 1 s recorded",
       target="find the data; match within 10 % over the first second",
       quick="dx = 0.1 m (20 particles across), 0.25 s: the velocity over the first 0.25 s within 20 % of the "
-            "added-mass + buoyancy model (least-squares ratio), what 20 particles across meet")
+            "added-mass + buoyancy model (least-squares ratio), what 20 particles across meet",
+      scene=lambda quick: sinking_scene(*SINKING_RUN[quick]))
 def sinking_cylinder_case(quick: bool) -> dict:
     """Barreiro et al. 2016, §4.1 (Fig. 8) compares DualSPHysics with
     Fekken's (2004, PhD thesis, Groningen) VOF displacement and velocity of this
@@ -329,7 +333,7 @@ def sinking_cylinder_case(quick: bool) -> dict:
     (a0 = 700/1700 g = 4.04 m/s^2) and carrying the exact buoyancy after it, by the
     least-squares ratio ``sum v v_ref / sum v_ref^2``. Target 10 % (full, dx = 0.05 m,
     40 particles across, 1 s, 6 m tank of 4 m water); quick: dx = 0.1 m, 0.25 s,
-    20 % (what 20 particles across meet).
+    20 % (what 20 particles across meet). The set-up: :func:`sinking_scene`.
 
     What limits the error: the model omits the growth of the added mass with
     submergence and the radiated waves (both slow the cylinder, ~5 % by 0.25 s);
@@ -345,7 +349,7 @@ def sinking_cylinder_case(quick: bool) -> dict:
     0.39 m and 1.31 m/s at 0.5 s, 0.74 m and 1.44 m/s at 0.75 s, 1.09 m and 1.36 m/s
     at 1 s.
     """
-    dx, t_end = (0.1, 0.25) if quick else (0.05, 1.0)
+    dx, t_end = SINKING_RUN[quick]
     t, s, v, coupler, fluid = sinking_cylinder(dx, t_end)
     early = (t > 0) & (t <= 0.25)
     v_ref = sinking_cylinder_reference(t[early])
