@@ -62,4 +62,4 @@ def test_a_case_that_runs_its_scene_runs_the_file_as_written():
         variants = (c.scene(True), c.scene(False))
         assert all(isinstance(s, Scene) for s in variants), name
         assert file in map(_resolved, variants), f"{name}: neither variant runs {name}.toml as written"
-    assert len(runs) >= 3, sorted(runs)
+    assert len(runs) >= 9, sorted(runs)
