@@ -5,8 +5,8 @@ A case is a scene plus a reference and a metric (docs/DESIGN.md, "Scenes"). Wher
 metric needs more than the scene's probes record (every particle's pressure, a body's state
 at every coupling step), the case builds the scene here and steps its coupler itself: the
 set-up is the scene's, field for field, so that the case and a user's ``cosim run
-cosim/validations/scenes/CASE.toml`` run the same water, walls, bodies and lines; only what
-is read differs.
+cosim/validations/scenes/CASE.toml`` run the same water, walls, bodies and lines; what is
+read differs, and where the steps fall (the runner lands a step on each sample time).
 """
 
 from __future__ import annotations
