@@ -1,6 +1,9 @@
 """Validation cases as scenes: a case's scene file (cosim/validations/scenes/CASE.toml) loads as
-a Scene; every scene file there belongs to a case; the studied cases are scenes.
-``python benchmarks/validation_scenes.py`` prints which cases are scenes and which are not."""
+a Scene; every scene file there belongs to a case; the studied cases are scenes; a case that
+runs its scene runs the file as written. ``python benchmarks/validation_scenes.py`` prints
+which cases are scenes and which are not."""
+
+from pathlib import Path
 
 import pytest
 
@@ -32,3 +35,31 @@ def test_case_scenes_names_each_case_by_its_file():
     assert {n for n, p in scenes.items() if p is not None} == {p.stem for p in FILES} & set(scenes)
     assert all(p is None or p == SCENES / f"{n}.toml" for n, p in scenes.items())
     assert set(trade.STUDIES) <= {n for n, p in scenes.items() if p is not None}  # a study runs the case's scene
+
+
+def _resolved(scene) -> dict:
+    """The scene's fields, each file named by its absolute path (a file names a record
+    relative to itself, a case by its place in the package)."""
+    def walk(v, key=None):
+        if isinstance(v, dict):
+            return {k: walk(x, k) for k, x in v.items()}
+        if isinstance(v, list):
+            return [walk(x) for x in v]
+        return str(Path(v).resolve()) if key == "file" else v
+
+    return walk(scene.to_dict())
+
+
+def test_a_case_that_runs_its_scene_runs_the_file_as_written():
+    """A case that builds its run from its scene (``Case.scene``) runs the file unchanged in
+    one variant (the quick one's, or the full one's where the file is an example's): a
+    user's ``cosim run`` of the file is that variant's set-up, field for field. The other
+    variant's scene is checked on construction, as ``cosim run --set`` would be."""
+    known = validation.cases()
+    runs = {n: c for n, c in known.items() if c.scene is not None}
+    for name, c in runs.items():
+        file = _resolved(Scene.from_toml(SCENES / f"{name}.toml"))
+        variants = (c.scene(True), c.scene(False))
+        assert all(isinstance(s, Scene) for s in variants), name
+        assert file in map(_resolved, variants), f"{name}: neither variant runs {name}.toml as written"
+    assert len(runs) >= 9, sorted(runs)

@@ -469,6 +469,8 @@ def _metrics(h: dict, v: dict | None) -> dict:
 #: the paper's own overtones lie 9-10 % below 3, 5, 7 times its first spike (Table 3: 2.73, 4.51, 6.27)
 RATIO_TOL = 0.15
 QUICK_STOP, QUICK_DURATION = 4.0, 7.0  # s: the quick variant's record stops, its run ends
+#: each variant's El Centro EW run (quick: True): spacing [m], duration [s], the record's stop [s]
+EW_RUNS = {True: (0.3, QUICK_DURATION, QUICK_STOP), False: (0.1, 25.0, 20.0)}
 
 
 @case("arch-rib", "Water inside the hollow catenary arch rib of Wang et al. 2022, §4 under El Centro 1940 (EW, vertical): "
@@ -477,7 +479,8 @@ QUICK_STOP, QUICK_DURATION = 4.0, 7.0  # s: the quick variant's record stops, it
       quick=f"dx = 0.3 m (5 particles across the cavity), c0 = 140 m/s, settled 1.5 s, El Centro EW stopped at "
             f"{QUICK_STOP:g} s (faded out over the last {FADE:g} s), the rib at rest to {QUICK_DURATION:g} s: the "
             "water's ringing after the record within 15 % of 1.125 Hz, its next spike within 15 % of 3 times it; "
-            "every pair Bk/B(k+9) correlated below -0.5 (opposite phase) under the record")
+            "every pair Bk/B(k+9) correlated below -0.5 (opposite phase) under the record",
+      scene=lambda quick: rib_scene(EW_RUNS[quick][0], EW_RUNS[quick][1], ("ew",), stop=EW_RUNS[quick][2]))
 def arch_rib(quick: bool) -> dict:
     """See the module docstring. Full: dx = 0.1 m (14.6 particles across), settled 1.5 s,
     El Centro EW for 20 s (faded out over 19.5-20 s), the rib at rest to 25 s, and 10 s of
@@ -524,14 +527,16 @@ def arch_rib(quick: bool) -> dict:
                "puts it near 11.7 Hz, far from the bridge's 0.94 and 1.66 Hz modes (Table 2)",
         "source": "this run"}
     if quick:
-        h = run_rib(0.3, QUICK_DURATION, ("ew",), skip=1.0, settle=1.5, stop=QUICK_STOP)
+        dx, duration, stop = EW_RUNS[True]
+        h = run_rib(dx, duration, ("ew",), skip=1.0, settle=1.5, stop=stop)
         out = {"metrics": _metrics(h, None), "particles": h["particles"], "steps": h["steps"],
                "series": _series({"EW": h}), "departure": departure, "stated_tolerances": stated,
                "tolerances": {"ringing_rel_err": 0.15, "ringing_ratio3_err": RATIO_TOL,
                               "horizontal_pair_correlation_max": [None, -0.5]}}
         out["metrics"]["ringing_ratio3_err"] = out["metrics"]["ringing_ratio_errors"][0]
         return out
-    h = run_rib(0.1, 25.0, ("ew",), skip=2.0, settle=1.5, stop=20.0)
+    dx, duration, stop = EW_RUNS[False]
+    h = run_rib(dx, duration, ("ew",), skip=2.0, settle=1.5, stop=stop)
     v = run_rib(0.1, 10.0, ("up",), skip=2.0, settle=1.5)
     stated["vertical_pair_correlation_min"] = [0.5, None]
     return {"metrics": _metrics(h, v), "particles": h["particles"], "steps": h["steps"] + v["steps"],

@@ -1,11 +1,13 @@
 """Floating-body cases with the SPH fluid (VALIDATION.md, "Bodies and coupling"):
 floating-box-draft, floating-heave-period, sinking-cylinder.
 
-Every case couples the SPH fluid (``cosim.sph_fluid.SPHFluid``, bodies as boundary
+Every case is a scene (``scenes/CASE.toml``, :mod:`cosim.validations.case_scene`) built as
+``cosim run`` builds it: the SPH fluid (``cosim.sph_fluid.SPHFluid``, bodies as boundary
 particles with modified dynamic boundary conditions, ``fluid.boundary_correction``)
-to MuJoCo bodies through the fluid-first scheme of ``cosim.coupler.Coupler``: the
+coupled to MuJoCo bodies through the fluid-first scheme of ``cosim.coupler.Coupler``: the
 body receives exactly the impulse the fluid exchanged (Barreiro et al. 2016, Eq. 9-12), and the
-fluid places the body's particles from its pose (Eq. 13).
+fluid places the body's particles from its pose (Eq. 13). The case steps the coupler itself
+and reads the body at every coupling step.
 
 Set-up rule shared by the box cases: the box's faces lie on faces of the fluid's
 particle lattice at the start (draft, water depth and box size are whole numbers of
@@ -20,48 +22,38 @@ import math
 
 import numpy as np
 
+from cosim.validations import case_scene
+from cosim.validations.case_scene import number
 from cosim.validations.registry import case
 
 RHO, G = 1000.0, 9.81
 
 
-def box_in_tank(dim: int, dx: float, rho_b: float, *, width: float = 0.1, height: float = 0.05,
-                tank: float = 0.3, depth: float = 0.1, lift: float = 0.0, boundary: str = "mdbc",
-                c0_factor: float = 20.0):
-    """A box floating in a tank of still water, centred, at its Archimedes draft
-    (``rho_b / RHO * height``) raised by ``lift`` [m].
+def box_scene(case: str, dim: int, dx: float, rho_b: float, *, width: float = 0.1, height: float = 0.05,
+              tank: float = 0.3, depth: float = 0.1, lift: float = 0.0, boundary: str = "mdbc",
+              c0_factor: float = 20.0):
+    """The scene ``scenes/CASE.toml`` (a box floating in a tank of still water) with a box
+    centred in the tank at its Archimedes draft (``rho_b / RHO * height``) raised by
+    ``lift`` [m], the tank's walls 3 spacings above the top of the box at its draft.
 
     ``dim`` 2 (x-z, 1 m thick box) or 3 (square ``width`` x ``width`` box in a square
     tank); ``dx`` [m] particle spacing; ``rho_b`` [kg/m^3] box density; ``width``,
     ``height`` [m] box size; ``tank`` [m] inner tank length (and width in 3-D);
-    ``depth`` [m] still-water depth; ``boundary``: "mdbc" or "dbc" for the body.
-    Returns ``(coupler, bodies, fluid, z_eq)`` with ``z_eq`` [m] the centre height at
-    the Archimedes draft in water of depth ``depth``."""
-    from bodies import builders
-    from bodies.mujoco_bodies import MujocoBodies
-    from cosim.coupler import Coupler
-    from cosim.sph_fluid import SPHFluid
-    from fluid.geometry import block, tank_walls
-    from fluid.particles import Kind
-    from fluid.solver import FluidConfig
-
+    ``depth`` [m] still-water depth; ``boundary``: "mdbc" or "dbc" for the body;
+    ``c0_factor``: c0 / sqrt(g depth). Returns ``(scene, z_eq)`` with ``z_eq`` [m] the
+    centre height at the Archimedes draft in water of depth ``depth``."""
     draft = rho_b / RHO * height
     z_eq = depth - draft + 0.5 * height
-    wall_h = depth + height + 3 * dx
-    if dim == 2:
-        lo, hi = np.zeros(2), np.array([tank, wall_h])
-        water = np.array([tank, depth])
-        size, pos = (width, height), (0.5 * tank, 0.0, z_eq + lift)
-    else:
-        lo, hi = np.zeros(3), np.array([tank, tank, wall_h])
-        water = np.array([tank, tank, depth])
-        size, pos = (width, width, height), (0.5 * tank, 0.5 * tank, z_eq + lift)
-    cfg = FluidConfig(dim=dim, dx=dx, u_max=math.sqrt(G * depth), c0_factor=c0_factor)
-    walls = [(tank_walls(lo, hi, dx, 3), Kind.FIXED_WALL, 0)]
-    box = builders.box("box", size, pos, density=rho_b, planar=dim == 2)
-    bodies = MujocoBodies(builders.scene(box, gravity=G, timestep=1e-3))
-    fluid = SPHFluid(cfg, block(lo, water, dx), walls, z_surface=depth, boundary=boundary)
-    return Coupler(bodies=bodies, fluid=fluid, scheme="fluid-first"), bodies, fluid, z_eq
+    across = [0.5 * tank] * (dim - 1)
+    size = [width] * (dim - 1) + [height]
+    values = [f"world.dim={dim}", f"fluid.dx={number(dx)}", f"fluid.c0_factor={number(c0_factor)}",
+              f"fluid.body_boundary={boundary}", f"domain.length={number(tank)}", f"domain.depth={number(depth)}",
+              f"domain.height={number(depth + height + 3 * dx)}", f"bodies[0].density={number(rho_b)}",
+              f"bodies[0].size=[{', '.join(map(number, size))}]",
+              f"bodies[0].pos=[{', '.join(map(number, across + [z_eq + lift]))}]"]
+    if dim == 3:
+        values.append(f"domain.width={number(tank)}")
+    return case_scene.load(case, values), z_eq
 
 
 def water_level(pos, kind, dx: float, keep_out: float, centre) -> float:
@@ -86,23 +78,26 @@ def water_level(pos, kind, dx: float, keep_out: float, centre) -> float:
 
 
 def settle_draft(dim: int, dx: float, rho_b: float, t_end: float, window: float, **kw) -> dict:
-    """Run :func:`box_in_tank` for ``t_end`` [s] and average, over the last ``window``
+    """Run the scene of :func:`box_scene` (``scenes/floating-box-draft.toml``; ``kw`` its
+    keywords) for ``t_end`` [s] and average, over the last ``window``
     [s], the box's draft below the far-field water level. Returns the draft, the
     Archimedes draft and the error as a fraction of the box height."""
     height = kw.get("height", 0.05)
     width = kw.get("width", 0.1)
     tank = kw.get("tank", 0.3)
-    coupler, bodies, fluid, z_eq = box_in_tank(dim, dx, rho_b, **kw)
+    scene, _ = box_scene("floating-box-draft", dim, dx, rho_b, **kw)
     centre = [0.5 * tank] * (dim - 1)
     drafts = []
+    with case_scene.built(scene) as b:
+        coupler, bodies, fluid = b.coupler, b.bodies, b.fluid
 
-    def sample(info):
-        if info.t > t_end - window:
-            ps = fluid.fluid.ps
-            level = water_level(ps.pos, ps.kind, dx, 0.5 * width + 0.05, centre)
-            drafts.append(level - (bodies.kinematics().com[0, 2] - 0.5 * height))
+        def sample(info):
+            if info.t > t_end - window:
+                ps = fluid.fluid.ps
+                level = water_level(ps.pos, ps.kind, dx, 0.5 * width + 0.05, centre)
+                drafts.append(level - (bodies.kinematics().com[0, 2] - 0.5 * height))
 
-    coupler.run(t_end, callback=sample)
+        coupler.run(t_end, callback=sample)
     exact = rho_b / RHO * height
     d = float(np.mean(drafts))
     return {"dx_m": dx, "rho_b": rho_b, "draft_m": d, "archimedes_m": exact,
@@ -110,20 +105,26 @@ def settle_draft(dim: int, dx: float, rho_b: float, t_end: float, window: float,
             "particles": int(fluid.fluid.ps.n), "steps": int(coupler.steps)}
 
 
-#: resolutions [m] of the draft case: each divides the box, the draft and the depth
-_DRAFT_RUNS_FULL = ((2, 0.005, 500.0), (2, 0.005, 800.0), (3, 0.0125, 500.0), (3, 0.01, 800.0))
-_DRAFT_RUNS_QUICK = ((2, 0.0125, 500.0),)
+#: the draft case's runs (dim, dx [m], box density [kg/m^3]): each dx divides the box, the draft and the depth
+DRAFT_RUNS_FULL = ((2, 0.005, 500.0), (2, 0.005, 800.0), (3, 0.0125, 500.0), (3, 0.01, 800.0))
+DRAFT_RUNS_QUICK = ((2, 0.0125, 500.0),)
+
+
+def draft_scene(quick: bool):
+    """The scene of floating-box-draft's first run (the quick variant's only one: the file's)."""
+    return box_scene("floating-box-draft", *(DRAFT_RUNS_QUICK if quick else DRAFT_RUNS_FULL)[0])[0]
 
 
 @case("floating-box-draft", "2-D and 3-D boxes (500, 800 kg/m^3) float at the Archimedes draft within 2 % of the height",
       target="within 2 % of the height after settling",
       quick="the stated target (draft within 2 % of the height) for the 2-D box of 500 kg/m^3 at dx = 12.5 mm "
-            "only, instead of 2-D and 3-D boxes of 500 and 800 kg/m^3 at 5-12.5 mm")
+            "only, instead of 2-D and 3-D boxes of 500 and 800 kg/m^3 at 5-12.5 mm", scene=draft_scene)
 def floating_box_draft(quick: bool) -> dict:
     """A 0.10 x 0.05 m box (2-D, 1 m thick; 3-D: 0.10 x 0.10 x 0.05 m) of density 500
     or 800 kg/m^3 in a 0.3 m tank (square in 3-D) of 0.1 m still water, released at
     rest at its Archimedes draft ``rho_b / rho_w x height`` with faces on the fluid's
-    lattice (module docstring), mDBC body boundaries, fluid-first coupling. Over 1 s
+    lattice (module docstring), mDBC body boundaries, fluid-first coupling: the scene
+    ``scenes/floating-box-draft.toml`` (:func:`box_scene` sets each run's). Over 1 s
     (about 2.5 heave periods: a body with wrong loads leaves that position within the
     first) the draft below the far-field water level (:func:`water_level`) is averaged
     over the last 0.5 s. Reference: Archimedes. Target: within 2 % of the height.
@@ -145,7 +146,7 @@ def floating_box_draft(quick: bool) -> dict:
     -1.6 % and -2.2 % at 6.25 mm: plain DBC keeps the density the fluid gave its
     boundary particles when the body moved into it, so a moving body rides high.
     """
-    runs = _DRAFT_RUNS_QUICK if quick else _DRAFT_RUNS_FULL
+    runs = DRAFT_RUNS_QUICK if quick else DRAFT_RUNS_FULL
     tol = 0.02
     res = [settle_draft(dim, dx, rho_b, 1.0, 0.5) | {"dim": dim} for dim, dx, rho_b in runs]
     worst = max(abs(r["error_of_height"]) for r in res)
@@ -187,14 +188,27 @@ def fit_decay(t, z):
     return (*(float(v) for v in p[:4]), float(np.std(z - f(t, *p))))
 
 
+#: the heave-period case's box (width, height [m], density [kg/m^3]), its lift [m] and tank
+#: (length, depth [m]); its spacings [m], quick and full
+HEAVE_BOX, HEAVE_LIFT, HEAVE_TANK, HEAVE_DX = (0.1, 0.05, 500.0), 0.0125, (0.6, 0.2), (0.0125, 0.00625)
+
+
+def heave_scene(quick: bool):
+    """The scene of floating-heave-period (``scenes/floating-heave-period.toml``, the quick
+    variant's) at the variant's spacing, and the Archimedes centre height [m]."""
+    (width, height, rho_b), (tank, depth) = HEAVE_BOX, HEAVE_TANK
+    return box_scene("floating-heave-period", 2, HEAVE_DX[0 if quick else 1], rho_b, width=width, height=height,
+                     tank=tank, depth=depth, lift=HEAVE_LIFT)
+
+
 @case("floating-heave-period", "2-D box released from a heave offset: natural period within 10 % of "
       "2 pi sqrt((m + a33) / (rho g A_w))", target="within 10 %",
       quick="the stated target (period within 10 %, the damped-oscillation fit within 10 % of its amplitude) "
-            "at dx = 12.5 mm instead of 6.25 mm")
+            "at dx = 12.5 mm instead of 6.25 mm", scene=lambda quick: heave_scene(quick)[0])
 def floating_heave_period(quick: bool) -> dict:
     """The 0.10 x 0.05 m box of 500 kg/m^3 (2-D, 1 m thick) in a 0.6 m tank of 0.2 m
     water, released at rest 12.5 mm above its Archimedes position (half its draft;
-    its faces on the lattice). A damped oscillation is fitted to the heave over the
+    its faces on the lattice): the scene :func:`heave_scene`. A damped oscillation is fitted to the heave over the
     first second, before the waves it radiates come back from the walls
     (group speed g / 2 omega ~ 0.45 m/s over 2 x 0.25 m); its undamped natural period
     ``2 pi / omega`` is compared with ``T = 2 pi sqrt((m + a33) / (rho g B))``,
@@ -212,12 +226,13 @@ def floating_heave_period(quick: bool) -> dict:
     T_n = 0.574 s (+2.2 %); dx = 6.25 mm, T_n = 0.577 s (+2.7 %); damping ratio 0.18
     at both.
     """
-    dx = 0.0125 if quick else 0.00625
-    width, height, rho_b, lift = 0.1, 0.05, 500.0, 0.0125
-    coupler, bodies, fluid, z_eq = box_in_tank(2, dx, rho_b, width=width, height=height, tank=0.6,
-                                              depth=0.2, lift=lift)
-    t, z = [0.0], [bodies.kinematics().com[0, 2]]
-    coupler.run(1.0, callback=lambda i: (t.append(i.t), z.append(bodies.kinematics().com[0, 2])))
+    dx = HEAVE_DX[0 if quick else 1]
+    width, height, rho_b = HEAVE_BOX
+    scene, z_eq = heave_scene(quick)
+    with case_scene.built(scene) as b:
+        coupler, bodies, fluid = b.coupler, b.bodies, b.fluid
+        t, z = [0.0], [bodies.kinematics().com[0, 2]]
+        coupler.run(1.0, callback=lambda i: (t.append(i.t), z.append(bodies.kinematics().com[0, 2])))
     zm, amp, zeta, w, rms = fit_decay(np.array(t), np.array(z))
     m = rho_b * width * height
     a33 = added_mass_rectangle_2d(width, rho_b / RHO * height)
@@ -238,38 +253,37 @@ def floating_heave_period(quick: bool) -> dict:
             "particles": int(fluid.fluid.ps.n), "steps": int(coupler.steps)}
 
 
-def sinking_cylinder(dx: float, t_end: float, *, radius: float = 1.0, rho_c: float = 1200.0,
-                     tank: float = 6.0, depth: float = 4.0, boundary: str = "mdbc"):
-    """Barreiro et al. 2016, §4.1 (after Fekken 2004): a 2-D cylinder of ``radius`` [m] and
-    density ``rho_c`` [kg/m^3], centre on the still-water surface (half submerged),
-    released at rest in the middle of a ``tank`` [m] long tank of ``depth`` [m]
-    water; ``dx`` [m] spacing, run for ``t_end`` [s]. Returns the time [s], the
-    centre's depth below its start [m] and its downward velocity [m/s] at every
-    coupling step, and the coupler."""
-    from bodies import builders
-    from bodies.mujoco_bodies import MujocoBodies
-    from cosim.coupler import Coupler
-    from cosim.sph_fluid import SPHFluid
-    from fluid.geometry import block, tank_walls
-    from fluid.particles import Kind
-    from fluid.solver import FluidConfig
+def sinking_scene(dx: float, t_end: float, *, radius: float = 1.0, rho_c: float = 1200.0,
+                  tank: float = 6.0, depth: float = 4.0, boundary: str = "mdbc"):
+    """Barreiro et al. 2016, §4.1 (after Fekken 2004), the scene ``scenes/sinking-cylinder.toml``:
+    a 2-D cylinder of ``radius`` [m] and density ``rho_c`` [kg/m^3], centre on the
+    still-water surface (half submerged), released at rest in the middle of a ``tank``
+    [m] long tank of ``depth`` [m] water (walls ``depth + 1.5 radius`` high); ``dx`` [m]
+    spacing, ``t_end`` [s] long; ``boundary``: "mdbc" or "dbc" for the body."""
+    return case_scene.load("sinking-cylinder", [
+        f"fluid.dx={number(dx)}", f"fluid.body_boundary={boundary}", f"domain.length={number(tank)}",
+        f"domain.depth={number(depth)}", f"domain.height={number(depth + 1.5 * radius)}",
+        f"bodies[0].radius={number(radius)}", f"bodies[0].density={number(rho_c)}",
+        f"bodies[0].pos=[{number(0.5 * tank)}, {number(depth)}]", f"world.duration={number(t_end)}"])
 
-    cfg = FluidConfig(dim=2, dx=dx, u_max=math.sqrt(G * depth), c0_factor=20.0)
-    walls = [(tank_walls(np.zeros(2), np.array([tank, depth + 1.5 * radius]), dx, 3), Kind.FIXED_WALL, 0)]
-    cyl = builders.cylinder("cyl", radius, 1.0, (0.5 * tank, 0.0, depth), density=rho_c, planar=True)
-    bodies = MujocoBodies(builders.scene(cyl, gravity=G, timestep=1e-3))
-    fluid = SPHFluid(cfg, block(np.zeros(2), np.array([tank, depth]), dx), walls, z_surface=depth,
-                     boundary=boundary)
-    coupler = Coupler(bodies=bodies, fluid=fluid, scheme="fluid-first")
+
+def sinking_cylinder(dx: float, t_end: float, **kw):
+    """Run :func:`sinking_scene` (``kw`` its keywords) for ``t_end`` [s]. Returns the time
+    [s], the centre's depth below its start [m] and its downward velocity [m/s] at every
+    coupling step, the coupler and the fluid."""
+    scene = sinking_scene(dx, t_end, **kw)
+    z0 = scene.bodies[0].pos[1]  # the centre's start height
     t, s, v = [0.0], [0.0], [0.0]
+    with case_scene.built(scene) as built:
+        coupler, bodies, fluid = built.coupler, built.bodies, built.fluid
 
-    def record(info):
-        k = bodies.kinematics()
-        t.append(info.t)
-        s.append(depth - k.com[0, 2])
-        v.append(-k.velocity[0, 2])
+        def record(info):
+            k = bodies.kinematics()
+            t.append(info.t)
+            s.append(z0 - k.com[0, 2])
+            v.append(-k.velocity[0, 2])
 
-    coupler.run(t_end, callback=record)
+        coupler.run(t_end, callback=record)
     return np.array(t), np.array(s), np.array(v), coupler, fluid
 
 
@@ -298,11 +312,16 @@ def sinking_cylinder_reference(t, radius: float = 1.0, rho_c: float = 1200.0):
     return sol.y[1]
 
 
+#: the sinking cylinder's spacing [m] and duration [s], by variant (quick: True)
+SINKING_RUN = {True: (0.1, 0.25), False: (0.05, 1.0)}
+
+
 @case("sinking-cylinder", "2-D cylinder r = 1 m, 1200 kg/m^3, half submerged, released: velocity over the first "
       "0.25 s vs added-mass + buoyancy model; trajectory over 1 s recorded",
       target="find the data; match within 10 % over the first second",
       quick="dx = 0.1 m (20 particles across), 0.25 s: the velocity over the first 0.25 s within 20 % of the "
-            "added-mass + buoyancy model (least-squares ratio), what 20 particles across meet")
+            "added-mass + buoyancy model (least-squares ratio), what 20 particles across meet",
+      scene=lambda quick: sinking_scene(*SINKING_RUN[quick]))
 def sinking_cylinder_case(quick: bool) -> dict:
     """Barreiro et al. 2016, §4.1 (Fig. 8) compares DualSPHysics with
     Fekken's (2004, PhD thesis, Groningen) VOF displacement and velocity of this
@@ -314,7 +333,7 @@ def sinking_cylinder_case(quick: bool) -> dict:
     (a0 = 700/1700 g = 4.04 m/s^2) and carrying the exact buoyancy after it, by the
     least-squares ratio ``sum v v_ref / sum v_ref^2``. Target 10 % (full, dx = 0.05 m,
     40 particles across, 1 s, 6 m tank of 4 m water); quick: dx = 0.1 m, 0.25 s,
-    20 % (what 20 particles across meet).
+    20 % (what 20 particles across meet). The set-up: :func:`sinking_scene`.
 
     What limits the error: the model omits the growth of the added mass with
     submergence and the radiated waves (both slow the cylinder, ~5 % by 0.25 s);
@@ -330,7 +349,7 @@ def sinking_cylinder_case(quick: bool) -> dict:
     0.39 m and 1.31 m/s at 0.5 s, 0.74 m and 1.44 m/s at 0.75 s, 1.09 m and 1.36 m/s
     at 1 s.
     """
-    dx, t_end = (0.1, 0.25) if quick else (0.05, 1.0)
+    dx, t_end = SINKING_RUN[quick]
     t, s, v, coupler, fluid = sinking_cylinder(dx, t_end)
     early = (t > 0) & (t <= 0.25)
     v_ref = sinking_cylinder_reference(t[early])

@@ -274,11 +274,23 @@ def _without_bodies(scene, gauge_x: float):
     return from_dict(d)
 
 
+#: the floating box's spacing [m], duration [s] and the start of the compared window [s] (quick: True)
+FLOATING_RUNS = {True: (0.02, 5.0, 3.0), False: (0.01, 10.0, 5.0)}
+
+
+def floating_flume(quick: bool):
+    """The moored box in its flume, ``FLOATING_SCENE`` at the variant's spacing and duration."""
+    from cosim.scene import Scene
+
+    dx, duration, _ = FLOATING_RUNS[quick]
+    return Scene.from_toml(FLOATING_SCENE).with_values([f"fluid.dx={dx}", f"world.duration={duration}"])
+
+
 @case("nearfield-floating-box", "the moored box in regular waves of examples/moored_box_waves (2-D, H = 4 cm, T = 1 s, "
       "0.3 m deep, two catenary lines) in the SPH near field against its flume (piston, beach) at the same spacing",
       target="heave and surge first-harmonic amplitudes within 5 % of the flume's; the near field at least 3 times "
              "cheaper (CPU)",
-      quick="dx = 0.02 m, 5 s, amplitudes over 3-5 s: the same tolerances")
+      quick="dx = 0.02 m, 5 s, amplitudes over 3-5 s: the same tolerances", scene=floating_flume)
 def nearfield_floating_box(quick: bool) -> dict:
     """The scene ``FLOATING_SCENE`` run in its flume, and with the near field and the regular
     wave of the piston's nominal height (``FLOATING_NEAR_FIELD``; the box chosen by
@@ -289,10 +301,8 @@ def nearfield_floating_box(quick: bool) -> dict:
     amplitudes themselves, is measured beside it). Full: dx = 0.01 m, 10 s, window 5-10 s."""
     import tempfile
 
-    from cosim.scene import Scene
-
-    dx, duration, t0 = (0.02, 5.0, 3.0) if quick else (0.01, 10.0, 5.0)
-    flume = Scene.from_toml(FLOATING_SCENE).with_values([f"fluid.dx={dx}", f"world.duration={duration}"])
+    _, duration, t0 = FLOATING_RUNS[quick]
+    flume = floating_flume(quick)
     near = flume.with_values(list(FLOATING_NEAR_FIELD))
     period, w = flume.waves.period, 2.0 * math.pi / flume.waves.period
     body_x = flume.bodies[0].pos[0]

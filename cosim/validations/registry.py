@@ -23,22 +23,27 @@ class Case:
     quick_target: str = ""
     #: the row of docs/VALIDATION.md the target comes from (None: declared, no row)
     row: str | None = None
+    #: ``scene(quick)``: the :class:`cosim.scene.Scene` a variant runs (its first, where it runs
+    #: several), built from the case's file ``scenes/NAME.toml``; the quick variant's is the
+    #: file's (tests/test_validation_scenes.py). None: the case builds its set-up in code
+    scene: Callable[[bool], object] | None = None
 
 
 _CASES: dict[str, Case] = {}
 
 
-def case(name: str, description: str, *, target: str, quick: str, row: str | None = ""):
+def case(name: str, description: str, *, target: str, quick: str, row: str | None = "", scene=None):
     """Decorator registering ``fn(quick) -> dict`` as validation case ``name``.
 
     ``target``: the stated target (the target column of the ``row`` of docs/VALIDATION.md,
     by default the row named ``name``; ``row=None``: no row, the target is declared here);
-    ``quick``: what the quick variant is judged against."""
+    ``quick``: what the quick variant is judged against; ``scene``: ``scene(quick)``, the
+    scene the variant runs (:attr:`Case.scene`), for a case that runs its scene file."""
 
     def register(fn):
         if name in _CASES and _CASES[name].fn is not fn:
             raise ValueError(f"validation case {name!r} registered twice")
-        _CASES[name] = Case(name, description, fn, target, quick, name if row == "" else row)
+        _CASES[name] = Case(name, description, fn, target, quick, name if row == "" else row, scene)
         return fn
 
     return register

@@ -10,16 +10,15 @@ import numpy as np
 from scipy.optimize import brentq
 
 from cosim import refdata
+from cosim.validations import case_scene
 from cosim.validations.judging import judge
 from cosim.validations.registry import case
 
 RHO, G = 1000.0, 9.81
 
-# moored-body-sph: a 2-D box (1 m thick) on two catenary lines in a tank of SPH water
-MB_TANK, MB_DEPTH, MB_WALL = 1.4, 0.3, 0.45  # tank length, water depth, wall height [m]
-MB_BOX = (0.2, 0.1, 500.0)  # width, height [m], density [kg/m^3]
-MB_XC, MB_SPREAD = 0.7, 0.5  # box centre x at rest, anchor distance from it [m]
-MB_LINE = (0.52, 40.0)  # length [m], submerged weight [N/m] (inextensible)
+#: moored-body-sph's spacing [m], speed of sound [m/s] (None: the scene's, 10 sqrt(g depth)) and
+#: duration [s], by variant (quick: True); the rest is the file's (scenes/moored-body-sph.toml)
+MB_RUNS = {True: (0.02, 10.0, 3.0), False: (0.01, None, 6.0)}
 
 
 def moored_equilibrium(width, height, rho_b, spread, length, weight, depth, rho=RHO, g=G):
@@ -41,36 +40,25 @@ def moored_equilibrium(width, height, rho_b, spread, length, weight, depth, rho=
     return brentq(residual, depth - 0.5 * height + 1e-9, depth + 0.5 * height - 1e-9, xtol=1e-14)
 
 
-def moored_box_sph(dx: float, offset: float, t_end: float, c0: float | None = None):
-    """Run the moored-body-sph scene: the box released ``offset`` [m] to +x at its
-    free-floating draft; returns time, centre x, z and roll histories, the
-    coupler and the fluid."""
-    from bodies import builders
-    from bodies.mujoco_bodies import MujocoBodies
-    from cosim.coupler import Coupler
-    from cosim.sph_fluid import SPHFluid
-    from fluid.geometry import block, tank_walls
-    from fluid.particles import Kind
-    from fluid.solver import FluidConfig
-    from moorings import CatenaryMooring, MooringLine
+def moored_scene(quick: bool):
+    """The scene of moored-body-sph (``scenes/moored-body-sph.toml``, the full variant's) with
+    the variant's spacing, speed of sound and duration (:data:`MB_RUNS`)."""
+    dx, c0, t_end = MB_RUNS[quick]
+    values = [f"fluid.dx={dx}", f"world.duration={t_end}"] + ([f"fluid.c0={c0}"] if c0 else [])
+    return case_scene.load("moored-body-sph", values)
 
-    bw, bh, rb = MB_BOX
-    cfg = FluidConfig(dim=2, dx=dx, g=G, **({"c0": c0} if c0 else {"u_max": math.sqrt(G * MB_DEPTH)}))
-    walls = [(tank_walls((0.0, 0.0), (MB_TANK, MB_WALL), dx, 3), Kind.FIXED_WALL, 0)]
-    fluid = SPHFluid(cfg, block((0.0, 0.0), (MB_TANK, MB_DEPTH), dx), walls, z_surface=MB_DEPTH)
-    z0 = MB_DEPTH + 0.5 * bh - rb / RHO * bh
-    sites = {"fl_left": (-0.5 * bw, 0.0, -0.5 * bh), "fl_right": (0.5 * bw, 0.0, -0.5 * bh)}
-    box = builders.box("box", (bw, bh), (MB_XC + offset, 0.0, z0), density=rb, planar=True, sites=sites)
-    bodies = MujocoBodies(builders.scene(box, gravity=G, timestep=1e-3))
-    length, weight = MB_LINE
-    mooring = CatenaryMooring([MooringLine((MB_XC - MB_SPREAD, 0.0), length, weight, name="left"),
-                               MooringLine((MB_XC + MB_SPREAD, 0.0), length, weight, name="right")])
-    coupler = Coupler(bodies=bodies, fluid=fluid, moorings=[(mooring, list(sites))], scheme="fluid-first")
+
+def moored_box_sph(scene):
+    """Run ``scene`` (:func:`moored_scene`): the box released to +x of its rest position at
+    its free-floating draft; returns time, centre x, z and roll histories at every coupling
+    step, the coupler, the fluid and the mooring."""
     rec = []
-    coupler.run(t_end, callback=lambda i: rec.append(
-        (i.t, *bodies.kinematics().com[0, [0, 2]], float(bodies.data.qpos[2]))))
+    with case_scene.built(scene) as b:
+        bodies = b.bodies
+        b.coupler.run(scene.world.duration, callback=lambda i: rec.append(
+            (i.t, *bodies.kinematics().com[0, [0, 2]], float(bodies.data.qpos[2]))))
     t, x, z, th = np.array(rec).T
-    return t, x, z, th, coupler, fluid, mooring
+    return t, x, z, th, b.coupler, b.fluid, b.mooring
 
 
 @case("moored-body-sph", "2-D box on two catenary lines in SPH water, offset and released: settles where "
@@ -78,14 +66,15 @@ def moored_box_sph(dx: float, offset: float, t_end: float, c0: float | None = No
       target="decay to the equilibrium predicted by lines + hydrostatics",
       quick="the full variant's criterion (the mean centre over the last second within half a spacing of the "
             "equilibrium in x and z) at dx = 2 cm, c0 = 10 m/s, 3 s instead of dx = 1 cm, 6 s: within 10 mm "
-            "instead of 5 mm")
+            "instead of 5 mm", scene=moored_scene)
 def moored_body_sph(quick: bool) -> dict:
     """The box of the analytic ``moored-body`` case scaled to a tank: 0.2 x 0.1 m,
     500 kg/m^3, in 0.3 m of SPH water (tank 1.4 m), on two inextensible catenary
     lines (0.52 m, 40 N/m) from its lower corners to anchors on the floor 0.5 m
     either side. Released 4 cm to +x at its free-floating draft, it oscillates in
     surge (period ~1.1 s, from the lines' stiffness) and heave (~0.4 s), damped
-    by the waves it radiates. Reference: the equilibrium of buoyancy, weight and
+    by the waves it radiates (the scene :func:`moored_scene`; the reference is computed
+    from its fields). Reference: the equilibrium of buoyancy, weight and
     the lines' vertical pull (:func:`moored_equilibrium`, catenary of Barreiro et al. 2016,
     Eq. 35-39): 15 mm deeper than free floating. Measured: the mean centre over
     the last second (several heave periods, about one surge period) against it.
@@ -103,17 +92,19 @@ def moored_body_sph(quick: bool) -> dict:
     with dx (2.6 → 2.2 mm): the remaining 15 % of the pull-down is not (only) the
     boundary gap.
     """
-    dx = 0.02 if quick else 0.01
-    t_end = 3.0 if quick else 6.0
-    bw, bh, rb = MB_BOX
-    t, x, z, th, c, fluid, mooring = moored_box_sph(dx, 0.04, t_end, c0=10.0 if quick else None)
-    z_eq = moored_equilibrium(bw, bh, rb, MB_SPREAD, *MB_LINE, MB_DEPTH)
-    z_free = MB_DEPTH + 0.5 * bh - rb / RHO * bh
+    scene = moored_scene(quick)
+    dx, t_end, depth = scene.fluid.dx, scene.world.duration, scene.domain.depth
+    (bw, bh), rb = scene.bodies[0].size, scene.bodies[0].density
+    left, right = scene.moorings.lines
+    x_rest = 0.5 * (left.anchor[0] + right.anchor[0])  # the box at rest lies midway between the anchors
+    t, x, z, th, c, fluid, mooring = moored_box_sph(scene)
+    z_eq = moored_equilibrium(bw, bh, rb, x_rest - left.anchor[0], left.length, left.weight, depth)
+    z_free = depth + 0.5 * bh - rb / RHO * bh
     late = t >= t_end - 1.0
-    err_x, err_z = float(x[late].mean() - MB_XC), float(z[late].mean() - z_eq)
+    err_x, err_z = float(x[late].mean() - x_rest), float(z[late].mean() - z_eq)
     tol_x, tol_z = (0.5 * dx, 0.5 * dx)
     series = {"box centre": {"xlabel": "t [s]", "ylabel": "offset from the equilibrium [mm]", "curves": {
-        "x - x_eq (ours)": {"x": t, "y": (x - MB_XC) * 1e3},
+        "x - x_eq (ours)": {"x": t, "y": (x - x_rest) * 1e3},
         "z - z_eq (ours)": {"x": t, "y": (z - z_eq) * 1e3},
         "equilibrium (lines + hydrostatics)": {"x": [t[0], t[-1]], "y": [0.0, 0.0], "style": "--"}}}}
     return {

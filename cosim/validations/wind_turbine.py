@@ -3,7 +3,7 @@ its three lines in regular waves (H = 0.7 m, T = 20 s), with each mooring model 
 the one field ``moorings.model``: the models against each other (issue 18's model
 agreement).
 
-Set-up: ``scenes/wind-turbine-base.toml``, the scene of ``examples/wind_turbine_base.toml``
+Set-up: ``scenes/wind-turbine-moorings.toml``, the scene of ``examples/wind_turbine_base.toml``
 (its header says what is the paper's and what is chosen): the 16 t cylinder drawing 1.51 m,
 three 45 m chains of 442 kg/m (EA 1.9e9 N) at 120 deg, partly lifted at rest; the analytic
 fluid (hydrostatics, added mass, Morison drag, the piston's far-field linear wave). Each
@@ -37,7 +37,7 @@ import numpy as np
 
 from cosim.validations.registry import case
 
-SCENE = Path(__file__).with_name("scenes") / "wind-turbine-base.toml"
+SCENE = Path(__file__).with_name("scenes") / "wind-turbine-moorings.toml"
 MODELS = ("catenary", "fmu", "moordyn", "sph-cable")
 QUICK_MODELS = ("catenary", "sph-cable")
 LINES = ("back", "front_port", "front_starboard")
@@ -69,13 +69,20 @@ def spread(per_model: dict) -> dict:
             for k in keys}
 
 
-def run_models(models, duration: float, t0: float, out: Path) -> dict:
-    """Run the scene with each model for ``duration`` [s]; each model's figures after ``t0``."""
+def model_scene(model: str, duration: float):
+    """The scene :data:`SCENE` with the mooring model ``model`` for ``duration`` [s]."""
     from cosim.scene import Scene
 
-    base = Scene.from_toml(SCENE)
-    return {m: model_figures(base.with_values([f"moorings.model={m}", f"world.duration={duration}"])
-                             .run(out / m, progress=False), t0) for m in models}
+    return Scene.from_toml(SCENE).with_values([f"moorings.model={model}", f"world.duration={duration}"])
+
+
+#: each variant's models, duration [s] and the start of the compared window [s] (quick: True)
+RUNS = {True: (QUICK_MODELS, 20.0, 10.0), False: (MODELS, 90.0, 30.0)}
+
+
+def run_models(models, duration: float, t0: float, out: Path) -> dict:
+    """Run the scene with each model for ``duration`` [s]; each model's figures after ``t0``."""
+    return {m: model_figures(model_scene(m, duration).run(out / m, progress=False), t0) for m in models}
 
 
 @case("wind-turbine-moorings", "Barreiro et al. 2016's wind-turbine base in waves (analytic fluid): every mooring model against "
@@ -85,7 +92,7 @@ def run_models(models, duration: float, t0: float, out: Path) -> dict:
       quick="catenary and SPH cable over 20 s (window 10-20 s, the wave's first half period at the base): heave half "
             "ranges and mean tensions within 10 % of each other, every line partly lifted; the surge is reported, not "
             "judged (the chain's inertia and drag slow its build-up: the dynamic lines reach the catenary's surge "
-            "after ~30 s)")
+            "after ~30 s)", scene=lambda quick: model_scene(RUNS[quick][0][0], RUNS[quick][1]))
 def wind_turbine_moorings(quick: bool) -> dict:
     """Every model on the same scene (module docstring); the spread of each quantity.
 
@@ -93,7 +100,7 @@ def wind_turbine_moorings(quick: bool) -> dict:
     cable, the surge not judged: it builds up more slowly on the dynamic lines (half range
     over 20-40 s: catenary 1.585 m, SPH cable 1.157, MoorDyn 1.246; over 30-90 s 1.585,
     1.620, 1.667), so only the full window compares it."""
-    models, duration, t0 = (QUICK_MODELS, 20.0, 10.0) if quick else (MODELS, 90.0, 30.0)
+    models, duration, t0 = RUNS[quick]
     with tempfile.TemporaryDirectory(prefix="wind_turbine_") as tmp:
         per_model = run_models(models, duration, t0, Path(tmp))
     sp = spread(per_model)

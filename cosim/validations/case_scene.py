@@ -1,0 +1,59 @@
+"""A validation case's scene: its file ``scenes/CASE.toml`` (:data:`~cosim.validations.folders.SCENES`)
+loaded with a variant's values set, and built into its participants as ``cosim run`` builds them.
+
+A case is a scene plus a reference and a metric (docs/DESIGN.md, "Scenes"). Where the case's
+metric needs more than the scene's probes record (every particle's pressure, a body's state
+at every coupling step), the case builds the scene here and steps its coupler itself: the
+set-up is the scene's, field for field, so that the case and a user's ``cosim run
+cosim/validations/scenes/CASE.toml`` run the same water, walls, bodies and lines; what is
+read differs, and where the steps fall (the runner lands a step on each sample time).
+"""
+
+from __future__ import annotations
+
+import tempfile
+from collections.abc import Iterator, Sequence
+from contextlib import contextmanager
+from pathlib import Path
+
+from cosim.validations.folders import SCENES
+
+
+def path(case: str) -> Path:
+    """The scene file of ``case``: ``scenes/CASE.toml``."""
+    return SCENES / f"{case}.toml"
+
+
+def number(x: float) -> str:
+    """A value for :func:`load`'s ``values``, to 12 decimals: the number a scene file writes
+    (a wall ``0.1 + 0.05 + 3 * 0.0125`` m high is 0.1875, not its binary neighbour
+    0.18750000000000003), so that a variant whose values the file holds is the file's scene,
+    equal field for field."""
+    return repr(round(float(x), 12))
+
+
+def load(case: str, values: Sequence[str] = ()):
+    """The scene of ``case`` with ``values`` set (``KEY=VALUE`` as ``cosim run --set`` takes
+    them, e.g. ``"fluid.dx=0.01"``): a :class:`cosim.scene.Scene`, validated."""
+    from cosim.scene import Scene
+
+    scene = Scene.from_toml(path(case))
+    return scene.with_values(list(values)) if values else scene
+
+
+@contextmanager
+def built(scene) -> Iterator:
+    """The participants and coupler of ``scene`` (:class:`cosim.scene.build.Built`),
+    initialised at t = 0 as :meth:`Scene.run` builds them; files a participant makes go
+    into a temporary folder, removed on leaving, and a mooring holding a library (an FMU,
+    MoorDyn) is closed."""
+    from cosim.scene.build import build
+
+    with tempfile.TemporaryDirectory(prefix="cosim-case-") as work:
+        b = build(scene, Path(work))
+        try:
+            yield b
+        finally:
+            close = getattr(b.mooring, "close", None)
+            if callable(close):
+                close()
