@@ -71,6 +71,42 @@ def _lines(p: np.ndarray, j: int, dx: float) -> np.ndarray:
     return np.unique(np.round(across / (1e-6 * dx)).astype(np.int64), axis=0, return_inverse=True)[1].ravel()
 
 
+def _face_plan(pts, origin, rot, axis, sign, half, inside, dx, rows, clear):
+    """The fit in front of one face: ``(idx, extra, k, e, n, step)`` (the points' rows,
+    the rows put back, row numbers, moves, band lengths (inf: too short), the outward
+    lattice step), or None where the face is not along a lattice axis or has no water."""
+    normal = sign * rot[:, axis]
+    j = int(np.argmax(np.abs(normal)))
+    if abs(normal[j]) < 1.0 - 1e-9:  # not along a lattice axis: its rows see every phase
+        return None
+    tol = 1e-6 * dx
+    step = np.sign(normal[j]) * np.eye(3)[j]  # outward, along the lattice axis
+    p = (pts - origin) @ rot  # geom frame
+    s = sign * p[:, axis] - half
+    near = np.flatnonzero((s > 0.5 * dx - tol) & (s < (rows + 1.5) * dx) & (inside(p) >= -tol))
+    if not len(near):
+        return None
+    k = np.floor((s[near] - 0.5 * dx + tol) / dx)
+    s1 = s[near] - k * dx  # the first row's standoff, in [dx/2, 3dx/2)
+    # the removed row in front of a first row more than dx off stood nearer dx/2: put it
+    # back (then |e| <= dx/2, the stretch half as large)
+    cand = np.flatnonzero((k == 0) & (s1 > dx + tol))
+    if clear is not None and len(cand):  # where it would stand once fitted: dx/2 off
+        cand = cand[clear(pts[near[cand]] - (s1[cand] - 0.5 * dx)[:, None] * step)]
+    extra = pts[near[cand]] - dx * step  # its lattice point
+    line = _lines(np.concatenate([pts[near], extra]), j, dx)
+    shifted = np.zeros(line.max() + 1, bool)
+    shifted[line[len(near):]] = True
+    moved = shifted[line[: len(near)]]
+    k = np.concatenate([k + moved, np.zeros(len(extra))])
+    s1 = np.concatenate([s1 - dx * moved, s1[cand] - dx])
+    last = np.full(line.max() + 1, -1.0)
+    np.maximum.at(last, line, k)
+    n = np.minimum(rows, last[line])  # the water may end sooner: its last row stays
+    n = np.where(n >= MIN_ROWS, n, np.inf)  # too few rows to take the stretch
+    return near, extra, k, 0.5 * dx - s1, n, step
+
+
 def fit_to_faces(points: np.ndarray, geoms, dx: float, *, rows: int = ROWS,
                  clear=None) -> tuple[np.ndarray, np.ndarray]:
     """Fitted fluid lattice ``points`` (n, 3) [m] and each one's volume factor [-]
@@ -78,51 +114,25 @@ def fit_to_faces(points: np.ndarray, geoms, dx: float, *, rows: int = ROWS,
     ``geoms``: ``(kind, size, origin (3,), rotation (3, 3))`` per geom, rotation taking the
     geom's frame to the world's. The points given stand at least dx/2 off every geom (the
     cells reaching in removed); ``clear(points) -> bool (n,)``: whether put-back points
-    stand clear of every body (default: all)."""
+    stand clear of every body (default: all). A geom with water too shallow in front of
+    any of its faces to take the fit is left as it is, all faces: a body fitted on some
+    faces only would start with its gaps closing on the others alone."""
     pts = np.array(points, float)
     factor = np.ones(len(pts))
-    tol = 1e-6 * dx
     for kind, size, origin, rot in geoms:
-        for axis, sign, half, inside in planar_faces(kind, size):
-            normal = sign * rot[:, axis]
-            j = int(np.argmax(np.abs(normal)))
-            if abs(normal[j]) < 1.0 - 1e-9:  # not along a lattice axis: its rows see every phase
+        faces = planar_faces(kind, size)
+        plans = [_face_plan(pts, origin, rot, *f, dx, rows, clear) for f in faces]
+        if any(pl is not None and np.isinf(pl[4]).any() for pl in plans):
+            continue
+        for face, pl in zip(faces, plans):
+            pl = _face_plan(pts, origin, rot, *face, dx, rows, clear)  # after the faces before it
+            if pl is None:
                 continue
-            step = np.sign(normal[j]) * np.eye(3)[j]  # outward, along the lattice axis
-            p = (pts - origin) @ rot  # geom frame
-            s = sign * p[:, axis] - half
-            near = np.flatnonzero((s > 0.5 * dx - tol) & (s < (rows + 1.5) * dx) & (inside(p) >= -tol))
-            if not len(near):
-                continue
-            k = np.floor((s[near] - 0.5 * dx + tol) / dx)
-            s1 = s[near] - k * dx  # the first row's standoff, in [dx/2, 3dx/2)
-            # the removed row in front of a first row more than dx off stood nearer dx/2:
-            # put it back (then |e| <= dx/2, the stretch half as large)
-            cand = np.flatnonzero((k == 0) & (s1 > dx + tol))
-            if clear is not None and len(cand):  # where it would stand once fitted: dx/2 off
-                cand = cand[clear(pts[near[cand]] - (s1[cand] - 0.5 * dx)[:, None] * step)]
-            extra = pts[near[cand]] - dx * step  # its lattice point
+            near, extra, k, e, n, step = pl
+            idx = np.concatenate([near, len(pts) + np.arange(len(extra))])
             pts = np.concatenate([pts, extra])
             factor = np.concatenate([factor, np.ones(len(extra))])
-            idx = np.concatenate([near, len(pts) - len(extra) + np.arange(len(extra))])
-            line = _lines(pts[idx], j, dx)
-            shifted = np.zeros(line.max() + 1, bool)
-            shifted[line[len(near):]] = True
-            k = np.concatenate([k + shifted[line[: len(near)]], np.zeros(len(extra))])
-            s1 = np.concatenate([s1, s1[cand] - dx])
-            s1[: len(near)] -= dx * shifted[line[: len(near)]]
-            e = 0.5 * dx - s1  # in (-dx/2, dx/2]
-            last = np.full(line.max() + 1, -1.0)
-            np.maximum.at(last, line, k)
-            n = np.minimum(rows, last[line])  # the water may end sooner: its last row stays
-            n = np.where(n >= MIN_ROWS, n, np.inf)  # too few rows to take it: no fit
-            band = (k < n) & np.isfinite(n)
-            pts[idx] += (np.where(band, e * (1.0 - k / n), 0.0))[:, None] * step
+            band = k < n
+            pts[idx] += np.where(band, e * (1.0 - k / n), 0.0)[:, None] * step
             factor[idx] *= np.where(band, 1.0 - e / (n * dx), 1.0)
-            # a line too short to take the fit gives back the row it was lent
-            drop = idx[(k == 0) & ~band & (np.arange(len(idx)) >= len(near))]
-            if len(drop):
-                keep = np.ones(len(pts), bool)
-                keep[drop] = False
-                pts, factor = pts[keep], factor[keep]
     return pts, factor

@@ -242,11 +242,14 @@ def bodies(draw, dim, names, box, can_float):
         n = dim - 1 if floating else dim
         shaped = {"box": Box, "cylinder": Cylinder, "sphere": Sphere}[shape](name=name, pos=[0.0] * dim, mass=1.0,
                                                                               **geo)
+        # the checks hold a turned body by its bounding box's corners (cosim.scene.shapes.corners),
+        # which reach beyond a cylinder's smallest sphere: place it by the box's half diagonal
         radius = bounding_radius(shaped, dim)
+        corner = math.sqrt(sum(h * h for h in shaped.half_size(dim)))
         turned = not floating and not (dim == 2 and shape == "cylinder") and draw(st.integers(0, 3)) == 0
-        if turned and box is not None:  # a turned body fits its slot by its bounding sphere
-            turned = all(2 * radius < 0.99 * e for e in ext)
-            half = [radius] * dim if turned else half
+        if turned and box is not None:  # a turned body fits its slot by its bounding box's corners
+            turned = all(2 * corner < 0.99 * e for e in ext)
+            half = [corner] * dim if turned else half
         if box is not None:
             margin = [1e-6 * e for e in ext]
             pos = [draw(between(slot[0][k] + half[k] + margin[k], slot[1][k] - half[k] - margin[k]))
@@ -258,8 +261,8 @@ def bodies(draw, dim, names, box, can_float):
         if draw(st.booleans()):
             kw["density"] = draw(num(MIN_DENSITY, MAX_DENSITY))
         else:  # no denser than osmium on average, nor lighter than a tenth of air
-            kw["mass"] = draw(between(2 * MIN_DENSITY / MAX_DENSITY, 1.0)) * MAX_DENSITY * volume_and_height(shaped,
-                                                                                                          dim)[0]
+            f = draw(between(2 * MIN_DENSITY / MAX_DENSITY, 1.0 - 1e-9))  # off the limit by more than round-off
+            kw["mass"] = f * MAX_DENSITY * volume_and_height(shaped, dim)[0]
         if floating:
             kw["place"] = "floating"
         elif draw(st.booleans()) or turned:
