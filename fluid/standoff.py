@@ -24,7 +24,9 @@ in (-dx/2, dx/2], and the rows behind it by ``e (1 - k / n)``, ``k`` the row (0 
 at the same density, is scaled by ``1 - e / (n dx)`` (within 1 -+ 1/(2n)), the stretch's
 Jacobian across the face. Then ``V_hole`` is the body's own volume there. Where the
 water in front of a face ends within ``rows`` rows (a free surface, a wall), ``n`` is
-its last row, which stays put; under ``MIN_ROWS`` rows, no fit. Limits: flat faces
+its last row, which stays put; a geom with water under ``MIN_ROWS`` rows deep in front
+of any face is not fitted at all (fitted on some faces only, it would start with its
+gaps closing on the others alone). Limits: flat faces
 along the lattice's axes only (box faces, cylinder caps, turned by multiples of 90 deg).
 """
 
