@@ -26,8 +26,8 @@ Jacobian across the face. Then ``V_hole`` is the body's own volume there. Where 
 water in front of a face ends within ``rows`` rows (a free surface, a wall), ``n`` is
 its last row, which stays put; a geom with water under ``MIN_ROWS`` rows deep in front
 of any face is not fitted at all (fitted on some faces only, it would start with its
-gaps closing on the others alone). Limits: flat faces
-along the lattice's axes only (box faces, cylinder caps, turned by multiples of 90 deg).
+gaps closing on the others alone). Limits: flat faces along the lattice's axes only
+(box faces, cylinder caps, turned by multiples of 90 deg).
 """
 
 from __future__ import annotations
@@ -37,7 +37,7 @@ import numpy as np
 #: rows of fluid in front of a face over which its standoff is taken up [-]
 ROWS = 8
 #: fewest rows that may take it: a shorter band would be stretched by more than 1/8
-#: (a body within a few rows of the surface or the floor keeps its gap there)
+#: (a body within a few rows of the surface or the floor is left unfitted)
 MIN_ROWS = 4
 
 
