@@ -148,7 +148,7 @@ class SPHFluid:
                     f"{beam.thickness / self.MIN_PARTICLES_ACROSS:.3g} m or less, or give the plate the thin-wall "
                     f"treatment (thin_wall=True: two columns at +-dx/2, the fluid standing off by "
                     f"{max(dx - beam.thickness / 2, 0.0):.3g} m on each side)")
-        links = {n for beam in self.elastic_beams for n in beam.link_names}
+        links = self._link_names()
         for k, shapes in enumerate(bodies.geoms()):
             body = names[k] if names is not None else str(k)
             if body in links:  # an elastic beam's particles are laid over the whole plate
@@ -193,8 +193,9 @@ class SPHFluid:
             body_sets += [(pts[(owner == k) & plane], Kind.BODY, g_e + k) for k in range(bodies.n_bodies)]
         # the bodies' boundary particles fill only a band inside their surface: fluid
         # inside a body is found from its geoms, not from the distance to particles
-        inside = self._inside_bodies(bodies.geoms(), kin)
-        fpts, volume = self._fit_to_faces(self._fluid_points[~inside], bodies, kin)
+        geoms = bodies.geoms()
+        inside = self._inside_bodies(geoms, kin, self._to_3d(self._fluid_points))
+        fpts, volume = self._fit_to_faces(self._fluid_points[~inside], geoms, getattr(bodies, "body_names", None), kin)
         built = assemble(c.dim, c.dx, c.rho0, fpts, self._walls + body_sets, volume=volume)
         ps = built.particles
         self.removed_overlap = int(inside.sum()) + built.removed_overlap
@@ -271,15 +272,12 @@ class SPHFluid:
             T3 += Te
         return F3, T3
 
-    def _inside_bodies(self, geoms, kin, x3=None, slack: float = 0.5e-9) -> np.ndarray:
-        """Fluid points (the lattice's, or ``x3`` (n, 3)) whose cell (half a spacing
-        around them) reaches into a body. A face on a lattice plane leaves the cells
-        beside it alone: the test allows ``slack`` dx for round-off, and for a mesh for
-        MuJoCo's float32 vertices (and the geom position it derives from them), 4 float32
-        epsilons of the mesh's reach from the body origin."""
-        if x3 is None:
-            fp = self._fluid_points
-            x3 = fp if self.config.dim == 3 else np.stack([fp[:, 0], np.zeros(len(fp)), fp[:, 1]], axis=1)
+    def _inside_bodies(self, geoms, kin, x3, slack: float = 0.5e-9) -> np.ndarray:
+        """Fluid points ``x3`` (n, 3) whose cell (half a spacing around them) reaches into
+        a body. A face on a lattice plane leaves the cells beside it alone: the test allows
+        ``slack`` dx for round-off, and for a mesh for MuJoCo's float32 vertices (and the
+        geom position it derives from them), 4 float32 epsilons of the mesh's reach from
+        the body origin."""
         inside = np.zeros(len(x3), bool)
         for k, shapes in enumerate(geoms):
             pb = (x3 - kin.origin[k]) @ kin.rotation[k]  # body frame: R^T (x - origin)
@@ -292,25 +290,31 @@ class SPHFluid:
                 inside |= signed_distance(g.kind, np.asarray(g.size, float), pg, g.mesh) < 0.5 * self.config.dx - tol
         return inside
 
-    def _fit_to_faces(self, fp, bodies, kin):
+    def _fit_to_faces(self, fp, geoms, names, kin):
         """The fluid points ``fp`` fitted to the rigid bodies' flat faces along the
         lattice's axes, and each one's volume factor (:func:`fluid.standoff.fit_to_faces`:
         a body at rest then carries its own volume's weight, not the cells missing
-        between a face and the lattice's next plane)."""
-        links = {n for beam in self.elastic_beams for n in beam.link_names}
-        names = getattr(bodies, "body_names", None)
-        geoms = []
-        for k, shapes in enumerate(bodies.geoms()):
+        between a face and the lattice's next plane). ``geoms``, ``names``: every body's."""
+        links = self._link_names()
+        world = []
+        for k, shapes in enumerate(geoms):
             if names is not None and names[k] in links:
                 continue
             R = kin.rotation[k]
-            geoms += [(g.kind, np.asarray(g.size, float), kin.origin[k] + R @ g.pos, R @ g.rot) for g in shapes]
-        x3 = fp if self.config.dim == 3 else np.stack([fp[:, 0], np.zeros(len(fp)), fp[:, 1]], axis=1)
-        def clear(p):  # a row put back stands dx/2 off its face: round-off allowed
-            return ~self._inside_bodies(bodies.geoms(), kin, p, slack=1e-6)
+            world += [(g.kind, np.asarray(g.size, float), kin.origin[k] + R @ g.pos, R @ g.rot) for g in shapes]
 
-        x3, volume = fit_to_faces(x3, geoms, self.config.dx, clear=clear)
-        return (x3 if self.config.dim == 3 else x3[:, [0, 2]]), volume
+        def clear(p):  # a row put back stands dx/2 off its face: round-off allowed
+            return ~self._inside_bodies(geoms, kin, p, slack=1e-6)
+
+        x3, volume = fit_to_faces(self._to_3d(fp), world, self.config.dx, clear=clear)
+        return self._to_dim(x3), volume
+
+    def _link_names(self) -> set:
+        """The MuJoCo bodies that are links of an elastic plate (their particles are the plate's)."""
+        return {n for beam in self.elastic_beams for n in beam.link_names}
+
+    def _to_3d(self, v):
+        return v if self.config.dim == 3 else np.stack([v[:, 0], np.zeros(len(v)), v[:, 1]], axis=1)
 
     def _to_dim(self, v3):
         return v3[:, [0, 2]] if self.config.dim == 2 else v3

@@ -118,19 +118,15 @@ def fit_to_faces(points: np.ndarray, geoms, dx: float, *, rows: int = ROWS,
     cells reaching in removed); ``clear(points) -> bool (n,)``: whether put-back points
     stand clear of every body (default: all). A geom with water too shallow in front of
     any of its faces to take the fit is left as it is, all faces: a body fitted on some
-    faces only would start with its gaps closing on the others alone."""
+    faces only would start with its gaps closing on the others alone. A geom's faces are
+    planned together: the water each one fits (in front of it, over it) is no other's."""
     pts = np.array(points, float)
     factor = np.ones(len(pts))
     for kind, size, origin, rot in geoms:
-        faces = planar_faces(kind, size)
-        plans = [_face_plan(pts, origin, rot, *f, dx, rows, clear) for f in faces]
-        if any(pl is not None and np.isinf(pl[4]).any() for pl in plans):
+        plans = [pl for f in planar_faces(kind, size) if (pl := _face_plan(pts, origin, rot, *f, dx, rows, clear))]
+        if any(np.isinf(pl[4]).any() for pl in plans):
             continue
-        for face, pl in zip(faces, plans):
-            pl = _face_plan(pts, origin, rot, *face, dx, rows, clear)  # after the faces before it
-            if pl is None:
-                continue
-            near, extra, k, e, n, step = pl
+        for near, extra, k, e, n, step in plans:
             idx = np.concatenate([near, len(pts) + np.arange(len(extra))])
             pts = np.concatenate([pts, extra])
             factor = np.concatenate([factor, np.ones(len(extra))])
