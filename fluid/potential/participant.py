@@ -16,8 +16,8 @@ the rest as the load on the body:
   horizontally, since ``C`` has no horizontal terms);
 - radiation memory ``−∫ K(τ) ẋ(t − τ) dτ`` over the memory ``T`` (:mod:`.radiation`),
   trapezoid rule over the velocities of the accepted coupling steps (rest before the start);
-- excitation by the waves of a :class:`~fluid.potential.waves.Sea` (:mod:`.waves`), at the
-  body's rest position;
+- excitation by the waves of a :class:`~fluid.potential.waves.Sea` (:mod:`.waves`) at the rest
+  position, of its components inside the band the coefficients trust (:meth:`_check_sea`);
 - optional quadratic (Morison) drag per body, 6 coefficients [N s²/m², N m s²], on the
   velocity relative to the undisturbed wave's at the centre of buoyancy (translations) and on
   the angular velocity (Morison et al. 1950; the drag that potential flow lacks);
@@ -29,13 +29,12 @@ the rest as the load on the body:
   unstable once ``A > M`` (a light body; :mod:`cosim.added_mass`), while the rest of a
   positive-definite ``M + A∞`` against its diagonal is a contraction (each 2 x 2 coupled pair
   has ``|A_ij| < sqrt(M_ii + A_ii)(M_jj + A_jj)``), so the lag is stable.
-
 - optional (``drift``) the slowly varying drift force in surge, sway and yaw: Newman's (1974)
   approximation from the freely floating body's mean drift (Maruo 1960; :mod:`.drift`).
 
 Limits: linear potential flow (small motions, small waves); one geom per body (box, cylinder,
-sphere) with a free joint (3-D scenes); bodies interact hydrodynamically only with
-``interaction`` (:mod:`.group`), then without drift; of second order only the mean and slow drift. The loads react to the body's
+sphere) with a free joint (3-D scenes); bodies interact only with ``interaction`` (:mod:`.group`),
+then without drift; of second order only the mean and slow drift. The loads react to the body's
 acceleration only through the armature, so explicit coupling needs no light-body remedy.
 """
 
@@ -53,7 +52,7 @@ from fluid.potential.drift import MeanDrift, SlowDrift, mean_drift
 from fluid.potential.group import compute_group
 from fluid.potential.hull import KINDS, check_pierces, default_panel_size, displaced_volume, wetted_hull
 from fluid.potential.radiation import BAND, ImpulseResponse, SettingError, impulse_response
-from fluid.potential.waves import Excitation, Sea
+from fluid.potential.waves import Excitation, Sea, band_share, cut_for_share
 
 log = logging.getLogger(__name__)
 
@@ -61,6 +60,10 @@ log = logging.getLogger(__name__)
 PANELS_PER_WAVELENGTH = 6
 #: coupling steps per shortest natural period, wave period and impulse-response period
 STEPS_PER_PERIOD = 50
+#: the largest share of the sea's variance m0 whose components the fluid may leave out for lying
+#: outside the band its coefficients trust: a JONSWAP sea (gamma 3.3) holds 4.9 % of its m0 above
+#: 2 fp, 1.0 % above 3 fp, 0.3 % above 4 fp (Pierson-Moskowitz 7.5, 1.5, 0.5 %)
+DROP_MAX = 0.01
 
 
 #: the smallest k d at which Capytaine 3.0's finite-depth Green function returns values (it
@@ -197,6 +200,7 @@ class PotentialFluid:
         self.group = None  #: the bodies' GroupCoefficients, with interaction
         self.group_impulse: ImpulseResponse | None = None  #: their coupled impulse response
         self.mean_drift: list[MeanDrift] = []  #: per body, with drift
+        self.sea_left_out: dict = {}  #: per body name, the share of the sea's variance left out (:meth:`_check_sea`)
 
     @property
     def waves(self) -> Sea | None:
@@ -210,18 +214,34 @@ class PotentialFluid:
             ps = ps.get(body)
         return default_panel_size(kind, size) if ps is None else float(ps)
 
-    def _check_sea(self, name: str, omega) -> None:
-        """The waves lie inside the band the impulse response is trusted in (:mod:`.radiation`)."""
+    def _check_sea(self, name: str, omega) -> tuple[Sea | None, float]:
+        """The sea's components inside the band the impulse response is trusted in
+        (:mod:`.radiation`: the lowest frequency to ``BAND`` x the highest), which the excitation
+        and drift take; those outside may carry at most :data:`DROP_MAX` of the sea's variance
+        (an irregular sea's tail above 2-3 peak frequencies), else refused naming the setting
+        to change (``omega_max`` with the value that would keep all but that share); the kept
+        sea and the share left out."""
         if self.sea is None:
-            return
-        hi = BAND * omega[-1]
-        out = (self.sea.omega < omega[0] * (1 - 1e-9)) | (self.sea.omega > hi * (1 + 1e-9))
-        if out.any():
-            w = float(self.sea.omega[out][0])
-            raise SettingError("omega_max", f"potential flow: body '{name}': a wave of {w:.4g} rad/s (period "
-                               f"{2 * math.pi / w:.4g} s) lies outside the coefficients' trusted band "
-                               f"{omega[0]:.4g}-{hi:.4g} rad/s (the lowest frequency to {BAND:g} x the highest); "
-                               f"set the frequencies so that it lies inside")
+            return None, 0.0
+        lo, hi = float(omega[0]), BAND * float(omega[-1])
+        keep, share = band_share(self.sea, lo, hi)
+        if share > DROP_MAX:
+            out = self.sea.omega[~keep]
+            w = float(out[np.argmax(self.sea.amplitude[~keep])])
+            head = (f"potential flow: body '{name}': the sea's components outside the coefficients' trusted band "
+                    f"{lo:.4g}-{hi:.4g} rad/s (the lowest frequency to {BAND:g} x the highest) carry {share:.1%} of "
+                    f"its variance (the largest a wave of {w:.4g} rad/s, period {2 * math.pi / w:.4g} s); at most "
+                    f"{DROP_MAX:.0%} may be left out")
+            cut = cut_for_share(self.sea, lo, DROP_MAX)
+            if not math.isfinite(cut):
+                raise SettingError("frequencies", f"{head}; the lowest frequency {lo:.4g} rad/s is too high: give more "
+                                   f"frequencies (they start at omega_max / frequencies)")
+            need = cut / BAND
+            raise SettingError("omega_max", f"{head}; set omega_max >= {need:.4g} rad/s (it keeps all but "
+                               f"{DROP_MAX:.0%}), with panels of at most "
+                               f"{2 * math.pi * self.g / (PANELS_PER_WAVELENGTH * need**2):.3g} m "
+                               f"({PANELS_PER_WAVELENGTH} per wavelength there)")
+        return (self.sea if keep.all() else self.sea.subset(keep)), share
 
     def attach_bodies(self, bodies) -> None:
         """Compute (or read) each body's coefficients at its pose now, its floating pose;
@@ -240,6 +260,8 @@ class PotentialFluid:
         self._drag = np.zeros((n, 6))
         self._armature = np.zeros((n, 6))
         self._exc: list[Excitation | None] = []
+        self._kept: list[Sea | None] = []  #: per body, the sea's components its excitation takes
+        self.sea_left_out = {}
         self._cob = np.zeros((n, 3))
         self._slow: list[SlowDrift] = []
         self.coefficients, self.impulse, self.mean_drift = [], [], []
@@ -281,12 +303,19 @@ class PotentialFluid:
             arm = np.clip(np.concatenate([np.diag(A[:3, :3]), np.diag(rr)]), 0.0, None)
             bodies.add_armature(k, arm)
             self._armature[k] = arm
-            self._exc.append(None if self.sea is None else
-                             Excitation(self.sea, c.omega, c.headings, c.excitation, kin.com[k, :2], name=name))
+            sea, share = self._check_sea(name, c.omega)
+            if share > 0:
+                self.sea_left_out[name] = share
+                log.info("potential fluid: body '%s': %d of the sea's %d components lie outside the trusted band "
+                         "%.3g-%.3g rad/s, left out of its excitation: %.2g %% of the sea's variance", name,
+                         len(self.sea.omega) - len(sea.omega), len(self.sea.omega), c.omega[0], irf.band, 100 * share)
+            self._kept.append(sea)
+            self._exc.append(None if sea is None else
+                             Excitation(sea, c.omega, c.headings, c.excitation, kin.com[k, :2], name=name))
             if self.drift:
                 md = mean_drift(c, _mass_matrix(self._mass[k], bodies.inertia_tensors()[k]), name=name)
                 self.mean_drift.append(md)
-                self._slow.append(SlowDrift(self.sea, md, kin.com[k, :2], name=name))
+                self._slow.append(SlowDrift(sea, md, kin.com[k, :2], name=name))
         self._inertia = np.array([bodies.dof_inertia(k) for k in range(n)])  # own, armature left out
         self._hist_t = np.zeros(0)
         self._hist_v = np.zeros((0, n, 6))
@@ -467,8 +496,8 @@ class PotentialFluid:
                 if c.stiffness[i, i] > 0:
                     nat = min(nat, 2 * math.pi * math.sqrt(m[i] / c.stiffness[i, i]))
         limits["natural period"] = nat
-        if self.sea is not None:
-            limits["wave period"] = float(2 * math.pi / self.sea.omega.max())
+        if self.sea is not None:  # the components the loads carry
+            limits["wave period"] = float(2 * math.pi / max(s.omega.max() for s in self._kept))
         self.dt_limit = min(limits, key=limits.get)
         return float(limits[self.dt_limit]) / STEPS_PER_PERIOD
 
