@@ -52,7 +52,8 @@ from fluid.potential.drift import MeanDrift, SlowDrift, mean_drift
 from fluid.potential.group import compute_group
 from fluid.potential.hull import KINDS, check_pierces, default_panel_size, displaced_volume, wetted_hull
 from fluid.potential.radiation import BAND, ImpulseResponse, SettingError, impulse_response
-from fluid.potential.waves import Excitation, Sea, band_share, cut_for_share
+from fluid.potential.waves import Excitation, Sea, band_share, cut_for_share, wavenumber
+from fluid.waves import group_velocity
 
 log = logging.getLogger(__name__)
 
@@ -60,6 +61,12 @@ log = logging.getLogger(__name__)
 PANELS_PER_WAVELENGTH = 6
 #: coupling steps per shortest natural period, wave period and impulse-response period
 STEPS_PER_PERIOD = 50
+#: BEM frequencies when unset (bodies solved together: as many as their distance needs, :meth:`_group_frequencies`)
+FREQUENCIES = 40
+#: the most frequencies the distance rule may choose (a group solve costs one BEM problem set per frequency)
+MAX_FREQUENCIES = 400
+#: the share of the window π/Δω the needed memory may fill (the decay check looks at its last 10 %)
+WINDOW_FILL = 0.8
 #: the largest share of the sea's variance m0 whose components the fluid may leave out for lying
 #: outside the band its coefficients trust: a JONSWAP sea (gamma 3.3) holds 4.9 % of its m0 above
 #: 2 fp, 1.0 % above 3 fp, 0.3 % above 4 fp (Pierson-Moskowitz 7.5, 1.5, 0.5 %)
@@ -124,7 +131,11 @@ class PotentialFluid:
         Water depth [m] under the still surface (inf: deep water).
     omega:
         BEM frequencies [rad/s], increasing, evenly spaced (:func:`frequency_grid`; None:
-        :func:`default_omega`, ``frequencies`` of them, per body, from its panel size).
+        ``frequencies`` of them to ``omega_max``).
+    omega_max, frequencies:
+        The grid when ``omega`` is None: :func:`frequency_grid` to ``omega_max`` [rad/s] (None:
+        per body from its panel size, :func:`default_omega`), ``frequencies`` of them (None:
+        :data:`FREQUENCIES`, or with ``interaction`` as many as the bodies' distance needs).
     headings:
         Wave headings [deg] the excitation is computed for (None: those of ``sea``, or 0).
     panel_size:
@@ -152,7 +163,8 @@ class PotentialFluid:
     loads_carry_added_mass = False  #: A∞ goes into the bodies' inertia (module docstring)
 
     def __init__(self, *, rho: float = 1000.0, g: float = 9.81, free_surface_z: float = 0.0,
-                 depth: float = math.inf, omega: Sequence[float] | None = None, frequencies: int = 40,
+                 depth: float = math.inf, omega: Sequence[float] | None = None, omega_max: float | None = None,
+                 frequencies: int | None = None,
                  headings: Sequence[float] | None = None, panel_size: float | Mapping[str, float] | None = None,
                  memory: float | None = None, sea: Sea | None = None,
                  quadratic_drag: Mapping[str, Sequence[float]] | None = None, cache=None,
@@ -181,9 +193,12 @@ class PotentialFluid:
             require_capytaine()
         self.rho, self.g, self.eta, self.depth = float(rho), float(g), float(free_surface_z), float(depth)
         self.omega = None if omega is None else np.asarray(omega, float)
-        if int(frequencies) < 4:
+        if frequencies is not None and int(frequencies) < 4:
             raise InputError(f"potential fluid: frequencies = {frequencies!r}; give at least 4")
-        self.frequencies = int(frequencies)
+        if omega_max is not None and not (math.isfinite(omega_max) and omega_max > 0):
+            raise InputError(f"potential fluid: omega_max = {omega_max!r} rad/s; give a frequency > 0")
+        self.frequencies = None if frequencies is None else int(frequencies)
+        self.omega_max = omega_max
         self.headings = (np.asarray(headings, float) if headings is not None else
                          np.unique(sea.heading) if sea is not None else np.array([0.0]))
         self.panel_size, self.memory, self.sea = panel_size, memory, sea
@@ -272,7 +287,7 @@ class PotentialFluid:
             c = grouped.get(name) or self._given.get(name)
             if c is None:
                 ps = self._panel_size(name, geom.kind, geom.size)
-                omega = self.omega if self.omega is not None else default_omega(ps, self.g, self.frequencies, self.depth)
+                omega = self._grid(ps)
                 self._check_omega(name, omega)
                 hull = wetted_hull(geom.kind, geom.size, rot, centre, ps, name=name)
                 c = compute(hull, float(kin.com[k, 2] - self.eta), omega=omega, headings=self.headings,
@@ -338,15 +353,62 @@ class PotentialFluid:
             ps = self._panel_size(name, geom.kind, geom.size)
             sizes.append(ps)
             hulls.append(wetted_hull(geom.kind, geom.size, rot, centre, ps, name=name))
-        omega = self.omega if self.omega is not None else default_omega(min(sizes), self.g, self.frequencies,
-                                                                         self.depth)
+        omega = self._grid(min(sizes))
         self._check_omega(", ".join(names), omega)
+        if self.memory is None and self.omega is None:
+            omega = self._group_frequencies(names, hulls, kin, omega, min(sizes))
         self.group = compute_group(hulls, kin.com[:, :2], kin.com[:, 2] - self.eta, names=names, omega=omega,
                                    headings=self.headings, depth=self.depth, rho=self.rho, g=self.g,
                                    cache=self.cache)
         g = self.group
         self.group_impulse = impulse_response(g.omega, g.added_mass, g.damping, self.memory, name="+".join(names))
         return dict(zip(names, g.bodies))
+
+    def _grid(self, panel_size: float, n: int | None = None) -> np.ndarray:
+        """The BEM frequencies: those given, else ``n`` (or :attr:`frequencies`, or
+        :data:`FREQUENCIES`) to ``omega_max`` or the panel's :func:`default_omega`."""
+        if self.omega is not None:
+            return self.omega
+        n = n or self.frequencies or FREQUENCIES
+        if self.omega_max is None:
+            return default_omega(panel_size, self.g, n, self.depth)
+        return frequency_grid(self.omega_max, n, self.depth, self.g)
+
+    def _group_frequencies(self, names, hulls, kin, omega, panel: float) -> np.ndarray:
+        """The grid (on ``panel`` [m]) for bodies solved together, its spacing fine enough for the cross memory:
+        the window π/Δω must hold, within :data:`WINDOW_FILL`, the longest lone body's memory
+        (its impulse response's decay, from its own coefficients at ``omega``) plus the
+        longest round trip between two bodies (a body's wave scattered back by another: the
+        diagonal blocks carry it) at the slowest group velocity the kernel keeps, that at
+        ω_max (Dean & Dalrymple 1991, Eq. 4.79). ``frequencies`` unset: as many as that
+        needs (at least :data:`FREQUENCIES`, at most :data:`MAX_FREQUENCIES`); given and too
+        few: refused with the count needed."""
+        xy = kin.com[:, :2]
+        r = float(np.max(np.linalg.norm(xy[:, None] - xy[None], axis=-1)))
+        w = float(omega[-1])
+        k = wavenumber(w, self.depth, self.g)
+        cg = float(group_velocity(k, self.depth, self.g)) if math.isfinite(self.depth) else self.g / (2.0 * w)
+        own = 0.0
+        for k_, (name, hull) in enumerate(zip(names, hulls)):
+            c = compute(hull, float(kin.com[k_, 2] - self.eta), omega=omega, headings=self.headings, depth=self.depth,
+                        rho=self.rho, g=self.g, cache=self.cache, name=name)
+            own = max(own, impulse_response(c.omega, c.added_mass, c.damping, None, name=name).memory)
+        need = own + 2.0 * r / cg
+        span = float(np.diff(omega).max()) * len(omega)  # Δω n: ω_max (from ω_max / n), a little more in shallow water
+        n = max(FREQUENCIES, math.ceil(need / WINDOW_FILL * span / math.pi))
+        what = (f"bodies {', '.join(names)}: the cross memory needs {need:.4g} s (the lone bodies' {own:.3g} s plus "
+                f"twice {r:.4g} m at the group velocity {cg:.3g} m/s of omega_max = {w:.4g} rad/s), so pi / spacing >= "
+                f"{need / WINDOW_FILL:.4g} s: {n} frequencies to {w:.4g} rad/s")
+        if self.frequencies is not None:
+            if self.frequencies < n:
+                raise SettingError("frequencies", f"potential flow: {what}; frequencies = {self.frequencies} is too "
+                                   f"few: give at least {n} (or leave it unset)")
+            return omega
+        if n > MAX_FREQUENCIES:
+            raise SettingError("frequencies", f"potential flow: {what}, more than {MAX_FREQUENCIES}: bring the bodies "
+                               f"closer, lower omega_max (with coarser panels) or set interaction = false")
+        log.info("potential fluid: %s (%d BEM problems)", what, n * (6 * len(names) + len(self.headings)))
+        return self._grid(panel, n)
 
     def _geom(self, k: int, name: str, shapes, kin, bodies):
         """The body's one solid geom, its orientation and its centre relative to (centre of mass
