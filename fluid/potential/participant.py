@@ -245,7 +245,7 @@ class PotentialFluid:
             w = float(out[np.argmax(self.sea.amplitude[~keep])])
             head = (f"potential flow: body '{name}': the sea's components outside the coefficients' trusted band "
                     f"{lo:.4g}-{hi:.4g} rad/s (the lowest frequency to {BAND:g} x the highest) carry {share:.1%} of "
-                    f"its variance (the largest a wave of {w:.4g} rad/s, period {2 * math.pi / w:.4g} s); at most "
+                    f"its variance (the largest of them {w:.4g} rad/s, period {2 * math.pi / w:.4g} s); at most "
                     f"{DROP_MAX:.0%} may be left out")
             cut = cut_for_share(self.sea, lo, DROP_MAX)
             if not math.isfinite(cut):
@@ -375,8 +375,8 @@ class PotentialFluid:
         return frequency_grid(self.omega_max, n, self.depth, self.g)
 
     def _group_frequencies(self, names, hulls, kin, omega, panel: float) -> np.ndarray:
-        """The grid (on ``panel`` [m]) for bodies solved together, its spacing fine enough for the cross memory:
-        the window π/Δω must hold, within :data:`WINDOW_FILL`, the longest lone body's memory
+        """The grid (on ``panel`` [m]) for bodies solved together, spaced finely enough for the
+        coupled memory: the window π/Δω must hold, within :data:`WINDOW_FILL`, the longest lone body's memory
         (its impulse response's decay, from its own coefficients at ``omega``) plus the
         longest round trip between two bodies (a body's wave scattered back by another: the
         diagonal blocks carry it) at the slowest group velocity the kernel keeps, that at
