@@ -1238,8 +1238,8 @@ BUILD_CASES = [
          ("fluid.frequencies", 6), "fluid.frequencies", "of its peak over the last 10 % of the 6.283 s "
          "that the frequency spacing resolves (π/Δω); give more frequencies", None),
     case("potential flow: an irregular sea beyond the frequencies' trusted band", "potential", ("waves", JONSWAP),
-         "fluid.omega_max", "lies outside the coefficients' trusted band 0.15-1.5 rad/s (the lowest frequency to "
-         "0.5 x the highest)", None),
+         "fluid.omega_max", "the sea's components outside the coefficients' trusted band 0.15-1.5 rad/s (the lowest "
+         "frequency to 0.5 x the highest) carry 5.5% of its variance", None),
     case("a floating body that sinks", "flume", ("bodies[0].density", 1500.0), "bodies[0].place",
          "body 'box' (30 kg) sinks: fully submerged it displaces 20 kg of water", None),
     case("a coupling step above the analytic fluid's stable step", "analytic",

@@ -578,12 +578,11 @@ def analytic_fluid(scene, out: Built) -> None:
 
 def potential_fluid(scene, level):
     """The potential fluid (``fluid.potential.PotentialFluid``) of the scene and the flume's
-    wavemaker, if any: its frequencies (``fluid.potential.participant.frequency_grid``; unset:
-    per body, from its panel size), the scene's waves as one component (a flume's: its far-field
-    wave, faded in everywhere at once rather than travelling from the paddle)."""
+    wavemaker, if any: its frequencies (``fluid.potential.participant.frequency_grid`` to
+    ``omega_max``; unset: per body, from its panel size), the scene's waves as one component (a
+    flume's: its far-field wave, faded in everywhere at once rather than travelling from the paddle)."""
     from cosim.scene.checks import potential_depth
     from fluid.potential import PotentialFluid
-    from fluid.potential.participant import frequency_grid
     from fluid.potential.waves import Sea, from_incident, regular
 
     f, w, g = scene.fluid, scene.waves, scene.world.gravity
@@ -596,8 +595,7 @@ def potential_fluid(scene, level):
         sea = Sea(regular(lw.H, lw.T, lw.direction), depth=depth, g=g, ramp=lw.ramp)
     elif w is not None:  # an incident sea: the linear components of its fluid.waves sea (its depth the scene's)
         sea = from_incident(w.sea(scene))
-    omega = None if f.omega_max is None else frequency_grid(f.omega_max, f.frequencies, depth, g)
-    fluid = PotentialFluid(rho=f.rho, g=g, free_surface_z=level, depth=depth, omega=omega,
+    fluid = PotentialFluid(rho=f.rho, g=g, free_surface_z=level, depth=depth, omega_max=f.omega_max,
                            frequencies=f.frequencies, panel_size=f.panel_size, memory=f.memory, sea=sea,
                            quadratic_drag=f.quadratic_drag or None, drift=f.drift,
                            interaction=f.interaction)

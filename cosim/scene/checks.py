@@ -1289,11 +1289,11 @@ def _check_potential(s, dim) -> None:
                          f"would be for another sea; leave fluid.depth out (it takes {scene_depth:g} m)")
     if f.omega_max is None:
         return
-    from fluid.potential.participant import frequency_grid
+    from fluid.potential.participant import FREQUENCIES, frequency_grid
     from fluid.potential.radiation import BAND, SettingError
 
     try:
-        grid = frequency_grid(f.omega_max, f.frequencies, potential_depth(s), s.world.gravity)
+        grid = frequency_grid(f.omega_max, f.frequencies or FREQUENCIES, potential_depth(s), s.world.gravity)
     except SettingError as e:
         raise SceneError("fluid.omega_max", str(e).removeprefix("potential flow: omega_max = ")) from None
     period = (s.waves.period if isinstance(s.waves, (LinearWaves, RegularWaves, Piston, Flap)) else
@@ -1305,9 +1305,9 @@ def _check_potential(s, dim) -> None:
                              f"{period:g} s) lies outside the band the impulse response is trusted in, "
                              f"{grid[0]:.4g} .. {BAND * f.omega_max:.4g} rad/s (the lowest frequency .. omega_max "
                              f"/ 2); give more frequencies or an omega_max from {w / BAND:.4g} rad/s up")
-    if f.memory is not None:
+    if f.memory is not None and (f.frequencies is not None or not f.interaction):  # else: chosen for the bodies
         window = math.pi / (grid[1] - grid[0])
         if f.memory > window:
-            raise SceneError("fluid.memory", f"{f.memory:g} s is longer than the {window:.4g} s that {f.frequencies} "
+            raise SceneError("fluid.memory", f"{f.memory:g} s is longer than the {window:.4g} s that {len(grid)} "
                              f"frequencies up to {f.omega_max:g} rad/s resolve (pi / spacing); give more "
                              f"frequencies or a shorter memory (unset: where the impulse response has decayed)")

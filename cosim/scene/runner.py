@@ -19,8 +19,8 @@ samples (``world.sample_every``), particle snapshots (``snapshot_every``), check
   (the target S(ω), or a record's periodogram a² / 2Δω), plotted in ``sea_spectrum.png``;
 - ``summary.json``: set-up, scheme, sizes, steps (``coupling``: by what set them), wall and
   CPU time, the cost estimate (``estimate``, :mod:`cosim.scene.cost`), each series' range,
-  ``warnings``, ``line_breaks``, the catenary lines' ``line_events``
-  (:mod:`moorings.line_events`), a near field's box and why (``near_field``);
+  ``warnings``, ``line_breaks``, the catenary lines' ``line_events`` (:mod:`moorings.line_events`),
+  ``near_field`` (its box, why), ``sea_variance_left_out`` (the potential fluid's, per body);
 - ``checkpoint.h5``: the latest checkpoint, data only (:mod:`cosim.checkpoint`,
   ``docs/checkpoints.md``), replaced atomically: every ``world.checkpoint_wall`` of wall
   time (stretched so that writing takes at most :data:`CHECKPOINT_SHARE` of the run), at
@@ -577,6 +577,9 @@ def _summary(scene, built, series, units, steps, loop_s, build_s, cpu_s, wall_be
                          "repeat_period_s": sea.repeat_period}
         else:
             s["sea"]["height_m"] = sea.height
+    left_out = getattr(built.fluid, "sea_left_out", None)
+    if left_out:  # the potential fluid's: per body, the share of the sea's m0 outside its coefficients' trusted band
+        s["sea_variance_left_out"] = dict(left_out)
     if built.mooring is not None:
         s["mooring"] = {"model": scene.moorings.model, "lines": built.line_names}
         if hasattr(built.mooring, "events"):  # lines with a break load (moorings.breaking)

@@ -177,8 +177,10 @@ class Potential(Spec):
                             "dimension)", "m", lo=0, lo_open=True)
     omega_max: float = num(None, "highest BEM frequency (unset: 6 panels per deep-water wavelength)", "rad/s", lo=0,
                            lo_open=True)
-    frequencies: int = whole(40, "BEM frequencies, evenly spaced to omega_max from omega_max / frequencies (in "
-                             "shallow water from where Capytaine solves, k d = 0.15)", lo=4)
+    frequencies: int = whole(None, "BEM frequencies, evenly spaced to omega_max from omega_max / frequencies (in "
+                             "shallow water from where Capytaine solves, k d = 0.15); unset: 40, or with interaction "
+                             "as many as the cross memory needs (the lone bodies' memory plus the travel between the "
+                             "bodies at omega_max's group velocity)", lo=4)
     memory: float = num(None, "radiation memory (unset: where the impulse response has decayed)", "s", lo=0,
                         lo_open=True)
     quadratic_drag: dict = table("per body: 6 quadratic drag coefficients [N s^2/m^2, N m s^2]", sizes=(6,))

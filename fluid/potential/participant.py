@@ -16,8 +16,8 @@ the rest as the load on the body:
   horizontally, since ``C`` has no horizontal terms);
 - radiation memory ``−∫ K(τ) ẋ(t − τ) dτ`` over the memory ``T`` (:mod:`.radiation`),
   trapezoid rule over the velocities of the accepted coupling steps (rest before the start);
-- excitation by the waves of a :class:`~fluid.potential.waves.Sea` (:mod:`.waves`), at the
-  body's rest position;
+- excitation by the waves of a :class:`~fluid.potential.waves.Sea` (:mod:`.waves`) at the rest
+  position, of its components inside the band the coefficients trust (:meth:`_check_sea`);
 - optional quadratic (Morison) drag per body, 6 coefficients [N s²/m², N m s²], on the
   velocity relative to the undisturbed wave's at the centre of buoyancy (translations) and on
   the angular velocity (Morison et al. 1950; the drag that potential flow lacks);
@@ -29,13 +29,12 @@ the rest as the load on the body:
   unstable once ``A > M`` (a light body; :mod:`cosim.added_mass`), while the rest of a
   positive-definite ``M + A∞`` against its diagonal is a contraction (each 2 x 2 coupled pair
   has ``|A_ij| < sqrt(M_ii + A_ii)(M_jj + A_jj)``), so the lag is stable.
-
 - optional (``drift``) the slowly varying drift force in surge, sway and yaw: Newman's (1974)
   approximation from the freely floating body's mean drift (Maruo 1960; :mod:`.drift`).
 
 Limits: linear potential flow (small motions, small waves); one geom per body (box, cylinder,
-sphere) with a free joint (3-D scenes); bodies interact hydrodynamically only with
-``interaction`` (:mod:`.group`), then without drift; of second order only the mean and slow drift. The loads react to the body's
+sphere) with a free joint (3-D scenes); bodies interact only with ``interaction`` (:mod:`.group`),
+then without drift; of second order only the mean and slow drift. The loads react to the body's
 acceleration only through the armature, so explicit coupling needs no light-body remedy.
 """
 
@@ -53,7 +52,8 @@ from fluid.potential.drift import MeanDrift, SlowDrift, mean_drift
 from fluid.potential.group import compute_group
 from fluid.potential.hull import KINDS, check_pierces, default_panel_size, displaced_volume, wetted_hull
 from fluid.potential.radiation import BAND, ImpulseResponse, SettingError, impulse_response
-from fluid.potential.waves import Excitation, Sea
+from fluid.potential.waves import Excitation, Sea, band_share, cut_for_share, wavenumber
+from fluid.waves import group_velocity
 
 log = logging.getLogger(__name__)
 
@@ -61,6 +61,16 @@ log = logging.getLogger(__name__)
 PANELS_PER_WAVELENGTH = 6
 #: coupling steps per shortest natural period, wave period and impulse-response period
 STEPS_PER_PERIOD = 50
+#: BEM frequencies when unset (bodies solved together: as many as their distance needs, :meth:`_group_frequencies`)
+FREQUENCIES = 40
+#: the most frequencies the distance rule may choose (a group solve costs one BEM problem set per frequency)
+MAX_FREQUENCIES = 400
+#: the share of the window π/Δω the needed memory may fill (the decay check looks at its last 10 %)
+WINDOW_FILL = 0.8
+#: the largest share of the sea's variance m0 whose components the fluid may leave out for lying
+#: outside the band its coefficients trust: a JONSWAP sea (gamma 3.3) holds 4.9 % of its m0 above
+#: 2 fp, 1.0 % above 3 fp, 0.3 % above 4 fp (Pierson-Moskowitz 7.5, 1.5, 0.5 %)
+DROP_MAX = 0.01
 
 
 #: the smallest k d at which Capytaine 3.0's finite-depth Green function returns values (it
@@ -121,7 +131,11 @@ class PotentialFluid:
         Water depth [m] under the still surface (inf: deep water).
     omega:
         BEM frequencies [rad/s], increasing, evenly spaced (:func:`frequency_grid`; None:
-        :func:`default_omega`, ``frequencies`` of them, per body, from its panel size).
+        ``frequencies`` of them to ``omega_max``).
+    omega_max, frequencies:
+        The grid when ``omega`` is None: :func:`frequency_grid` to ``omega_max`` [rad/s] (None:
+        per body from its panel size, :func:`default_omega`), ``frequencies`` of them (None:
+        :data:`FREQUENCIES`, or with ``interaction`` as many as the bodies' distance needs).
     headings:
         Wave headings [deg] the excitation is computed for (None: those of ``sea``, or 0).
     panel_size:
@@ -149,7 +163,8 @@ class PotentialFluid:
     loads_carry_added_mass = False  #: A∞ goes into the bodies' inertia (module docstring)
 
     def __init__(self, *, rho: float = 1000.0, g: float = 9.81, free_surface_z: float = 0.0,
-                 depth: float = math.inf, omega: Sequence[float] | None = None, frequencies: int = 40,
+                 depth: float = math.inf, omega: Sequence[float] | None = None, omega_max: float | None = None,
+                 frequencies: int | None = None,
                  headings: Sequence[float] | None = None, panel_size: float | Mapping[str, float] | None = None,
                  memory: float | None = None, sea: Sea | None = None,
                  quadratic_drag: Mapping[str, Sequence[float]] | None = None, cache=None,
@@ -178,9 +193,12 @@ class PotentialFluid:
             require_capytaine()
         self.rho, self.g, self.eta, self.depth = float(rho), float(g), float(free_surface_z), float(depth)
         self.omega = None if omega is None else np.asarray(omega, float)
-        if int(frequencies) < 4:
+        if frequencies is not None and int(frequencies) < 4:
             raise InputError(f"potential fluid: frequencies = {frequencies!r}; give at least 4")
-        self.frequencies = int(frequencies)
+        if omega_max is not None and not (math.isfinite(omega_max) and omega_max > 0):
+            raise InputError(f"potential fluid: omega_max = {omega_max!r} rad/s; give a frequency > 0")
+        self.frequencies = None if frequencies is None else int(frequencies)
+        self.omega_max = omega_max
         self.headings = (np.asarray(headings, float) if headings is not None else
                          np.unique(sea.heading) if sea is not None else np.array([0.0]))
         self.panel_size, self.memory, self.sea = panel_size, memory, sea
@@ -197,6 +215,7 @@ class PotentialFluid:
         self.group = None  #: the bodies' GroupCoefficients, with interaction
         self.group_impulse: ImpulseResponse | None = None  #: their coupled impulse response
         self.mean_drift: list[MeanDrift] = []  #: per body, with drift
+        self.sea_left_out: dict = {}  #: per body name, the share of the sea's variance left out (:meth:`_check_sea`)
 
     @property
     def waves(self) -> Sea | None:
@@ -210,18 +229,34 @@ class PotentialFluid:
             ps = ps.get(body)
         return default_panel_size(kind, size) if ps is None else float(ps)
 
-    def _check_sea(self, name: str, omega) -> None:
-        """The waves lie inside the band the impulse response is trusted in (:mod:`.radiation`)."""
+    def _check_sea(self, name: str, omega) -> tuple[Sea | None, float]:
+        """The sea's components inside the band the impulse response is trusted in
+        (:mod:`.radiation`: the lowest frequency to ``BAND`` x the highest), which the excitation
+        and drift take; those outside may carry at most :data:`DROP_MAX` of the sea's variance
+        (an irregular sea's tail above 2-3 peak frequencies), else refused naming the setting
+        to change (``omega_max`` with the value that would keep all but that share); the kept
+        sea and the share left out."""
         if self.sea is None:
-            return
-        hi = BAND * omega[-1]
-        out = (self.sea.omega < omega[0] * (1 - 1e-9)) | (self.sea.omega > hi * (1 + 1e-9))
-        if out.any():
-            w = float(self.sea.omega[out][0])
-            raise SettingError("omega_max", f"potential flow: body '{name}': a wave of {w:.4g} rad/s (period "
-                               f"{2 * math.pi / w:.4g} s) lies outside the coefficients' trusted band "
-                               f"{omega[0]:.4g}-{hi:.4g} rad/s (the lowest frequency to {BAND:g} x the highest); "
-                               f"set the frequencies so that it lies inside")
+            return None, 0.0
+        lo, hi = float(omega[0]), BAND * float(omega[-1])
+        keep, share = band_share(self.sea, lo, hi)
+        if share > DROP_MAX:
+            out = self.sea.omega[~keep]
+            w = float(out[np.argmax(self.sea.amplitude[~keep])])
+            head = (f"potential flow: body '{name}': the sea's components outside the coefficients' trusted band "
+                    f"{lo:.4g}-{hi:.4g} rad/s (the lowest frequency to {BAND:g} x the highest) carry {share:.1%} of "
+                    f"its variance (the largest of them {w:.4g} rad/s, period {2 * math.pi / w:.4g} s); at most "
+                    f"{DROP_MAX:.0%} may be left out")
+            cut = cut_for_share(self.sea, lo, DROP_MAX)
+            if not math.isfinite(cut):
+                raise SettingError("frequencies", f"{head}; the lowest frequency {lo:.4g} rad/s is too high: give more "
+                                   f"frequencies (they start at omega_max / frequencies)")
+            need = cut / BAND
+            raise SettingError("omega_max", f"{head}; set omega_max >= {need:.4g} rad/s (it keeps all but "
+                               f"{DROP_MAX:.0%}), with panels of at most "
+                               f"{2 * math.pi * self.g / (PANELS_PER_WAVELENGTH * need**2):.3g} m "
+                               f"({PANELS_PER_WAVELENGTH} per wavelength there)")
+        return (self.sea if keep.all() else self.sea.subset(keep)), share
 
     def attach_bodies(self, bodies) -> None:
         """Compute (or read) each body's coefficients at its pose now, its floating pose;
@@ -240,6 +275,8 @@ class PotentialFluid:
         self._drag = np.zeros((n, 6))
         self._armature = np.zeros((n, 6))
         self._exc: list[Excitation | None] = []
+        self._kept: list[Sea | None] = []  #: per body, the sea's components its excitation takes
+        self.sea_left_out = {}
         self._cob = np.zeros((n, 3))
         self._slow: list[SlowDrift] = []
         self.coefficients, self.impulse, self.mean_drift = [], [], []
@@ -250,7 +287,7 @@ class PotentialFluid:
             c = grouped.get(name) or self._given.get(name)
             if c is None:
                 ps = self._panel_size(name, geom.kind, geom.size)
-                omega = self.omega if self.omega is not None else default_omega(ps, self.g, self.frequencies, self.depth)
+                omega = self._grid(ps)
                 self._check_omega(name, omega)
                 hull = wetted_hull(geom.kind, geom.size, rot, centre, ps, name=name)
                 c = compute(hull, float(kin.com[k, 2] - self.eta), omega=omega, headings=self.headings,
@@ -281,12 +318,19 @@ class PotentialFluid:
             arm = np.clip(np.concatenate([np.diag(A[:3, :3]), np.diag(rr)]), 0.0, None)
             bodies.add_armature(k, arm)
             self._armature[k] = arm
-            self._exc.append(None if self.sea is None else
-                             Excitation(self.sea, c.omega, c.headings, c.excitation, kin.com[k, :2], name=name))
+            sea, share = self._check_sea(name, c.omega)
+            if share > 0:
+                self.sea_left_out[name] = share
+                log.info("potential fluid: body '%s': %d of the sea's %d components lie outside the trusted band "
+                         "%.3g-%.3g rad/s, left out of its excitation: %.2g %% of the sea's variance", name,
+                         len(self.sea.omega) - len(sea.omega), len(self.sea.omega), c.omega[0], irf.band, 100 * share)
+            self._kept.append(sea)
+            self._exc.append(None if sea is None else
+                             Excitation(sea, c.omega, c.headings, c.excitation, kin.com[k, :2], name=name))
             if self.drift:
                 md = mean_drift(c, _mass_matrix(self._mass[k], bodies.inertia_tensors()[k]), name=name)
                 self.mean_drift.append(md)
-                self._slow.append(SlowDrift(self.sea, md, kin.com[k, :2], name=name))
+                self._slow.append(SlowDrift(sea, md, kin.com[k, :2], name=name))
         self._inertia = np.array([bodies.dof_inertia(k) for k in range(n)])  # own, armature left out
         self._hist_t = np.zeros(0)
         self._hist_v = np.zeros((0, n, 6))
@@ -309,15 +353,62 @@ class PotentialFluid:
             ps = self._panel_size(name, geom.kind, geom.size)
             sizes.append(ps)
             hulls.append(wetted_hull(geom.kind, geom.size, rot, centre, ps, name=name))
-        omega = self.omega if self.omega is not None else default_omega(min(sizes), self.g, self.frequencies,
-                                                                         self.depth)
+        omega = self._grid(min(sizes))
         self._check_omega(", ".join(names), omega)
+        if self.memory is None and self.omega is None:
+            omega = self._group_frequencies(names, hulls, kin, omega, min(sizes))
         self.group = compute_group(hulls, kin.com[:, :2], kin.com[:, 2] - self.eta, names=names, omega=omega,
                                    headings=self.headings, depth=self.depth, rho=self.rho, g=self.g,
                                    cache=self.cache)
         g = self.group
         self.group_impulse = impulse_response(g.omega, g.added_mass, g.damping, self.memory, name="+".join(names))
         return dict(zip(names, g.bodies))
+
+    def _grid(self, panel_size: float, n: int | None = None) -> np.ndarray:
+        """The BEM frequencies: those given, else ``n`` (or :attr:`frequencies`, or
+        :data:`FREQUENCIES`) to ``omega_max`` or the panel's :func:`default_omega`."""
+        if self.omega is not None:
+            return self.omega
+        n = n or self.frequencies or FREQUENCIES
+        if self.omega_max is None:
+            return default_omega(panel_size, self.g, n, self.depth)
+        return frequency_grid(self.omega_max, n, self.depth, self.g)
+
+    def _group_frequencies(self, names, hulls, kin, omega, panel: float) -> np.ndarray:
+        """The grid (on ``panel`` [m]) for bodies solved together, spaced finely enough for the
+        coupled memory: the window π/Δω must hold, within :data:`WINDOW_FILL`, the longest lone body's memory
+        (its impulse response's decay, from its own coefficients at ``omega``) plus the
+        longest round trip between two bodies (a body's wave scattered back by another: the
+        diagonal blocks carry it) at the slowest group velocity the kernel keeps, that at
+        ω_max (Dean & Dalrymple 1991, Eq. 4.79). ``frequencies`` unset: as many as that
+        needs (at least :data:`FREQUENCIES`, at most :data:`MAX_FREQUENCIES`); given and too
+        few: refused with the count needed."""
+        xy = kin.com[:, :2]
+        r = float(np.max(np.linalg.norm(xy[:, None] - xy[None], axis=-1)))
+        w = float(omega[-1])
+        k = wavenumber(w, self.depth, self.g)
+        cg = float(group_velocity(k, self.depth, self.g)) if math.isfinite(self.depth) else self.g / (2.0 * w)
+        own = 0.0
+        for k_, (name, hull) in enumerate(zip(names, hulls)):
+            c = compute(hull, float(kin.com[k_, 2] - self.eta), omega=omega, headings=self.headings, depth=self.depth,
+                        rho=self.rho, g=self.g, cache=self.cache, name=name)
+            own = max(own, impulse_response(c.omega, c.added_mass, c.damping, None, name=name).memory)
+        need = own + 2.0 * r / cg
+        span = float(np.diff(omega).max()) * len(omega)  # Δω n: ω_max (from ω_max / n), a little more in shallow water
+        n = max(FREQUENCIES, math.ceil(need / WINDOW_FILL * span / math.pi))
+        what = (f"bodies {', '.join(names)}: the cross memory needs {need:.4g} s (the lone bodies' {own:.3g} s plus "
+                f"twice {r:.4g} m at the group velocity {cg:.3g} m/s of omega_max = {w:.4g} rad/s), so pi / spacing >= "
+                f"{need / WINDOW_FILL:.4g} s: {n} frequencies to {w:.4g} rad/s")
+        if self.frequencies is not None:
+            if self.frequencies < n:
+                raise SettingError("frequencies", f"potential flow: {what}; frequencies = {self.frequencies} is too "
+                                   f"few: give at least {n} (or leave it unset)")
+            return omega
+        if n > MAX_FREQUENCIES:
+            raise SettingError("frequencies", f"potential flow: {what}, more than {MAX_FREQUENCIES}: bring the bodies "
+                               f"closer, lower omega_max (with coarser panels) or set interaction = false")
+        log.info("potential fluid: %s (%d BEM problems)", what, n * (6 * len(names) + len(self.headings)))
+        return self._grid(panel, n)
 
     def _geom(self, k: int, name: str, shapes, kin, bodies):
         """The body's one solid geom, its orientation and its centre relative to (centre of mass
@@ -467,8 +558,8 @@ class PotentialFluid:
                 if c.stiffness[i, i] > 0:
                     nat = min(nat, 2 * math.pi * math.sqrt(m[i] / c.stiffness[i, i]))
         limits["natural period"] = nat
-        if self.sea is not None:
-            limits["wave period"] = float(2 * math.pi / self.sea.omega.max())
+        if self.sea is not None:  # the components the loads carry
+            limits["wave period"] = float(2 * math.pi / max(s.omega.max() for s in self._kept))
         self.dt_limit = min(limits, key=limits.get)
         return float(limits[self.dt_limit]) / STEPS_PER_PERIOD
 

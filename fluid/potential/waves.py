@@ -21,6 +21,8 @@ The linear excitation force on a body whose centre of mass rests at horizontal p
 
 with ``X(ω, β)`` per unit amplitude interpolated linearly (real and imaginary parts) in ω and
 in β (periodic) from the BEM's table: a component outside the table's frequencies is refused.
+:func:`band_share` and :func:`cut_for_share` measure what a band leaves out of a sea: the
+share of its variance ``m0 = Σ a²/2`` (each component's ``a²/2``) outside the band.
 """
 
 from __future__ import annotations
@@ -117,6 +119,10 @@ class Sea:
         b = np.radians(self.heading)
         self._dir = np.stack([np.cos(b), np.sin(b)], axis=1)
 
+    def subset(self, keep) -> "Sea":
+        """The sea of the components where ``keep`` (a boolean mask) is true, same depth, g, fade-in."""
+        return Sea([c for c, k in zip(self.components, keep) if k], self.depth, self.g, self.ramp)
+
     def fade(self, t: float) -> float:
         if self.ramp <= 0 or t >= self.ramp:
             return 1.0
@@ -151,6 +157,32 @@ class Sea:
         u[:, 1] = uh @ self._dir[:, 1]
         u[:, 2] = (aw * sh * np.sin(th)).sum(axis=1)
         return self.fade(t) * u
+
+
+def band_share(sea: Sea, lo: float, hi: float) -> tuple[np.ndarray, float]:
+    """Which components lie in [``lo``, ``hi``] [rad/s] (a boolean mask, with a relative
+    margin of 1e-9), and the share of the sea's variance m0 = Σ a²/2 outside, [0, 1]."""
+    keep = (sea.omega >= lo * (1 - 1e-9)) & (sea.omega <= hi * (1 + 1e-9))
+    a2 = sea.amplitude**2
+    total = float(a2.sum())
+    return keep, (float(a2[~keep].sum()) / total if total > 0 else 0.0)
+
+
+def cut_for_share(sea: Sea, lo: float, share: float) -> float:
+    """The lowest frequency ``hi`` [rad/s] (one of the components') for which the components
+    outside [``lo``, ``hi``] carry at most ``share`` of the sea's variance; inf when those
+    below ``lo`` alone carry more."""
+    a2 = sea.amplitude**2
+    total = float(a2.sum())
+    if total <= 0:
+        return lo
+    below = float(a2[sea.omega < lo * (1 - 1e-9)].sum()) / total
+    order = np.argsort(sea.omega)[::-1]  # from the highest down: the share above each component
+    above = np.concatenate([[0.0], np.cumsum(a2[order])[:-1]]) / total
+    fits = np.flatnonzero(below + above <= share)
+    if below > share or not fits.size:
+        return math.inf
+    return float(max(sea.omega[order][fits[-1]], lo))
 
 
 class Excitation:
