@@ -1276,8 +1276,10 @@ def _check_potential(s, dim) -> None:
         raise SceneError("fluid.drift", "the drift force needs waves: give waves (linear, irregular, or a flume's "
                          "wavemaker), or leave drift out")
     if f.interaction and f.drift:
-        raise SceneError("fluid.interaction", "the bodies' group solve gives no drift force; set drift = false or "
-                         "interaction = false")
+        raise SceneError("fluid.interaction", "the drift force is a far-field momentum balance (Maruo 1960), "
+                         "which gives the group's total, not each body's (that needs near-field pressure "
+                         "integration, not implemented); set drift = false, or interaction = false for each body's own "
+                         "drift without the others")
     for n in f.quadratic_drag:
         if n not in body_names(s):
             raise SceneError(f"fluid.quadratic_drag.{n}", f"no body named {n!r}; bodies: {sorted(body_names(s))}")
