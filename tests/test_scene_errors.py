@@ -490,7 +490,7 @@ CASES = [
     case("potential flow: drift without waves", "potential", (("fluid.drift", True), ("waves", OUT)), "fluid.drift",
          "the drift force needs waves: give waves", "Scene.fluid.drift"),
     case("potential flow: interaction with drift", "potential", (("fluid.drift", True), ("fluid.interaction", True)),
-         "fluid.interaction", "the bodies' group solve gives no drift force", "Scene.fluid.interaction"),
+         "fluid.interaction", "which gives the group's total, not each body's", "Scene.fluid.interaction"),
     case("potential flow: drag for an unknown body", "potential", ("fluid.quadratic_drag.box", [1.0] * 6),
          "fluid.quadratic_drag.box", "no body named 'box'; bodies: ['buoy']", "Scene.fluid.quadratic_drag.box"),
     case("potential flow: a turned body above the water", "potential",
