@@ -8,6 +8,7 @@ import numpy as np
 
 from cosim import refdata
 from cosim.study.metrics import spectral_peak
+from cosim.validations.case_scene import fluid_setup
 from cosim.validations.registry import case
 from fluid.geometry import assemble, block, set_hydrostatic, tank_walls
 from fluid.motion import Harmonic, Rotation, Tabulated, Translation
@@ -330,8 +331,8 @@ def westergaard(quick: bool) -> dict:
     it there. What was tried before (the default walls, whose raw pressure misses the
     target at every dx; the wave set-up): docs/validation/westergaard_history.md.
     """
-    out = (run_westergaard(0.1, periods_skip=1, periods_fit=2, walls="adami") if quick
-           else run_westergaard(0.025, walls="adami"))
+    own = fluid_setup("westergaard", {"walls": "adami"})
+    out = run_westergaard(0.1, periods_skip=1, periods_fit=2, **own) if quick else run_westergaard(0.025, **own)
     out["series"] = westergaard_series_plot(out.pop("profile"))
     out["stated_tolerances"], out["departure"] = dict(WESTERGAARD_STATED), dict(WESTERGAARD_DEPARTURE)
     if quick:
@@ -392,12 +393,13 @@ def westergaard_3d(quick: bool) -> dict:
     Measured trade: ``docs/validation/westergaard-3d_trade.md`` (on the case's report page).
     """
     if not quick:
-        out = run_westergaard(0.05, dim=3, width=1.0, periods_skip=1, periods_fit=1, walls="adami")
+        out = run_westergaard(0.05, dim=3, width=1.0, periods_skip=1, periods_fit=1,
+                              **fluid_setup("westergaard-3d", {"walls": "adami"}))
         out["metrics"]["width_m"] = 1.0
         out["series"] = westergaard_3d_series_plot(out.pop("profile"))
         out["stated_tolerances"], out["departure"] = dict(WESTERGAARD_STATED), dict(WESTERGAARD_DEPARTURE)
         return out
-    settings = dict(c0=700.0, periods_skip=1, periods_fit=1)
+    settings = dict(c0=700.0, periods_skip=1, periods_fit=1, **fluid_setup("westergaard-3d", {}))
     out = run_westergaard(0.1, dim=3, width=0.3, **settings)
     section = run_westergaard(0.1, dim=2, **settings)
     for q in ("raw", "avg", "face"):
@@ -679,9 +681,10 @@ def sloshing_frequency(quick: bool) -> dict:
 
     Measured trade: ``docs/validation/sloshing-frequency_trade.md`` (on the case's report page).
     """
+    own = fluid_setup("sloshing-frequency", SLOSHING_2D)
     if quick:
-        return run_sloshing_frequency(0.05, cycles_forced=2, cycles_free=4, c0_factor=10.0, **SLOSHING_2D)
-    return run_sloshing_frequency(0.025, cycles_free=6, **SLOSHING_2D)
+        return run_sloshing_frequency(0.05, cycles_forced=2, cycles_free=4, c0_factor=10.0, **own)
+    return run_sloshing_frequency(0.025, cycles_free=6, **own)
 
 
 @case("sloshing-spheric10", "SPHERIC Test 10 (rolling tank 900 x 508 mm, water 93 mm, measured roll): "

@@ -8,6 +8,7 @@ import math
 import numpy as np
 
 from cosim import refdata
+from cosim.validations.case_scene import fluid_setup
 from cosim.validations.registry import case
 from cosim.validations.sloshing import _harmonic_fit, face_pressure
 from cosim.validations.tank_potential import wall_profiles
@@ -200,8 +201,9 @@ def inclined_wall(quick: bool) -> dict:
     """
     dx, skip, fit = (0.1, 1, 2) if quick else (0.05, 2, 3)
     metrics, profiles, particles, steps = {}, {}, 0, 0
+    own = fluid_setup("inclined-wall", {"walls": "adami"})
     for beta in ANGLES:
-        r = run_inclined(beta, dx, periods_skip=skip, periods_fit=fit, walls="adami")
+        r = run_inclined(beta, dx, periods_skip=skip, periods_fit=fit, **own)
         for k, v in r["metrics"].items():
             if k not in ("dx_m", "c0_m_s", "beta_deg"):
                 metrics[f"{k}_{beta:g}"] = v
@@ -466,7 +468,7 @@ def cylinder_tank_case(quick: bool) -> dict:
     Figures: ``docs/validation/figures/cylinder-tank_dx0.05_*.png``.
     """
     dx, skip, fit = (0.1, 1, 2) if quick else (0.05, 2, 3)
-    r = run_cylinder(dx, periods_skip=skip, periods_fit=fit, walls="adami")
+    r = run_cylinder(dx, periods_skip=skip, periods_fit=fit, **fluid_setup("cylinder-tank", {"walls": "adami"}))
     m = r["metrics"]
     m["p_base_rel_err"] = m["p_base_kpa"] / m["p_base_exact_kpa"] - 1
     out = {"metrics": m, "tolerances": {"rms_kpa_plane_vs_exact": 0.127}, "particles": r["particles"],
