@@ -41,7 +41,7 @@ def auto_setup() -> Iterator[None]:
         _auto.pop()
 
 
-def _chosen(scene):
+def chosen(scene):
     """``scene`` with ``fluid.setup = "auto"`` and the :data:`LEVERS` cleared (an SPH fluid)."""
     fluid = dataclasses.replace(scene.fluid, setup="auto", **{k: None for k in LEVERS})
     return dataclasses.replace(scene, fluid=fluid)
@@ -80,7 +80,7 @@ def load(case: str, values: Sequence[str] = ()):
 
     scene = Scene.from_toml(path(case))
     scene = scene.with_values(list(values)) if values else scene
-    return _chosen(scene) if _auto[-1] else scene
+    return chosen(scene) if _auto[-1] else scene
 
 
 @contextmanager
