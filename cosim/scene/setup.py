@@ -55,10 +55,10 @@ _SLOSHING_3D = {"walls": "adami", "diffusion_at_surface": False, "h_coef": 2.0}
 _REASONS = {
     "waves": "the scene has waves (a wavemaker, or an incident sea through a near field): waves keep linear theory's "
              "speed and height",
-    "impulsive": "the tank is shaken at a period under a third of its first sloshing period: impulsive "
+    "impulsive": "the tank is shaken at a period at most a third of its first sloshing period: impulsive "
                  "(Westergaard) wall pressures, the solver's defaults with walls carrying the pressure",
-    "sloshing": "the tank moves near or beyond its first sloshing period: sloshing frequencies and wall pressures "
-                "need the wave set-up",
+    "sloshing": "the tank moves, at a period over a third of its first sloshing period or by a record or table: "
+                "sloshing frequencies and wall pressures need the wave set-up",
     "impact": "water blocks in a tank (a dam break): the solver's defaults, which keep violent flow's pressure "
               "noise low",
     "still": "still water",
@@ -97,13 +97,18 @@ def settings(name: str, dim: int) -> dict:
 IMPULSIVE_PERIODS = 1.0 / 3.0
 
 
-def _impulsive(scene) -> bool:
-    """Whether the tank's base motion is periodic (``period``) and at most
-    :data:`IMPULSIVE_PERIODS` of the water's first sloshing period (a record or a table: no
-    single period, never)."""
+def _periods(scene) -> tuple:
+    """(the base motion's period, the water's first sloshing period) [s]; None for one
+    not known (a record or a table has no single period)."""
     from cosim.scene.checks import first_sloshing_period
 
-    period, t1 = getattr(scene.base_motion, "period", None), first_sloshing_period(scene)
+    return getattr(scene.base_motion, "period", None), first_sloshing_period(scene)
+
+
+def _impulsive(scene) -> bool:
+    """Whether the tank's base motion is periodic and its period at most
+    :data:`IMPULSIVE_PERIODS` of the water's first sloshing period."""
+    period, t1 = _periods(scene)
     return period is not None and t1 is not None and period <= IMPULSIVE_PERIODS * t1
 
 
@@ -133,6 +138,8 @@ def choose(scene) -> Setup:
     sph = scene.fluid
     name = _auto(scene) if sph.setup == "auto" else sph.setup
     reason = _REASONS[name] if sph.setup == "auto" else f"asked for (fluid.setup = {name!r})"
+    if sph.setup == "auto" and name in ("impulsive", "sloshing") and None not in _periods(scene):
+        reason += " (period {:.4g} s, first sloshing period {:.4g} s)".format(*_periods(scene))
     cfg = settings(name, scene.world.dim)
     if name == "waves" and isinstance(scene.domain, NearField):
         from fluid.solver import NEAR_FIELD
