@@ -10,8 +10,8 @@ set-up            picked when the scene has                 FluidConfig settings
 ``waves``         waves (a wavemaker, a near field's sea)   ``TRAVELLING_WAVES`` (h = 2 dx, walls
                                                             "adami", ...); a near field:
                                                             ``NEAR_FIELD`` (+ MLS every 150 steps)
-``impulsive``     a tank shaken at a period under a third   the solver's defaults, walls "adami"
-                  of its first sloshing period
+``impulsive``     a tank shaken at a period <= T1 / 3 (T1:   the solver's defaults, walls "adami"
+                  its first sloshing period)
 ``sloshing``      any other moving tank (``base_motion``)   2-D: ``SLOSHING_2D`` (h = 2 dx, walls
                                                             "adami"); 3-D: the same and the
                                                             diffusion faded under the surface

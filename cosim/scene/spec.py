@@ -205,8 +205,8 @@ class SPH(Spec):
 
     TAG = ("model", "sph")
     model: str = tag("sph")
-    setup: str = choice("auto", "fluid set-up: auto (from the scene), still, waves, sloshing, impulsive, impact, defaults",
-                        SETUPS)
+    setup: str = choice("auto", "fluid set-up: auto (from the scene), still, waves, sloshing, impulsive, impact, "
+                        "defaults", SETUPS)
     settle: float = num(0.0, "damped relaxation of the particles before the run (clock held at 0)", "s", lo=0)
     body_boundary: str = choice("mdbc", "density of the bodies' boundary particles", ("mdbc", "dbc"))
 

@@ -42,20 +42,23 @@ def auto_setup() -> Iterator[None]:
 
 
 def chosen(scene):
-    """``scene`` with ``fluid.setup = "auto"`` and the :data:`LEVERS` cleared (an SPH fluid)."""
+    """``scene`` with ``fluid.setup = "auto"`` and the :data:`LEVERS` cleared (a fluid without
+    a set-up, the analytic one, as it is)."""
+    if not hasattr(scene.fluid, "setup"):
+        return scene
     fluid = dataclasses.replace(scene.fluid, setup="auto", **{k: None for k in LEVERS})
     return dataclasses.replace(scene, fluid=fluid)
 
 
-def fluid_setup(case: str, own: dict, values: Sequence[str] = ()) -> dict:
+def fluid_setup(case: str, own: dict) -> dict:
     """The FluidConfig set-up of a case that builds its fluid in code: ``own``, the
     settings it sets by hand; under :func:`auto_setup`, the :data:`LEVERS` that
-    ``cosim.scene.setup.choose`` gives the case's scene (with ``values`` set)."""
+    ``cosim.scene.setup.choose`` gives the case's scene file."""
     if not _auto[-1]:
         return dict(own)
     from cosim.scene.setup import choose
 
-    cfg = choose(load(case, values)).config
+    cfg = choose(load(case)).config
     return {k: cfg[k] for k in LEVERS if k in cfg}
 
 

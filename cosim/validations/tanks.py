@@ -191,8 +191,8 @@ def inclined_wall(quick: bool) -> dict:
     the extraction. c0 = 1430 m/s (the paper's), tank walls carrying the fluid's pressure
     (``walls="adami"``, as the westergaard case), the solver's other defaults (h = sqrt(2) dx:
     45 deg at dx = 0.1 m, 0.0055 RMS against 0.0113 at h = 2 dx; docs/setup_chooser.md; the
-    chooser's "impulsive"); 40 samples a period. Judged: the RMS of k_p up the inclined face against Chwang's semi-infinite
-    reservoir at each angle; reported beside it, the RMS against the exact pressure of
+    chooser's "impulsive"); 40 samples a period. Judged: the RMS of k_p up the inclined face
+    against Chwang's semi-infinite reservoir at each angle; reported beside it, the RMS against the exact pressure of
     this finite tank on both sides (the 3 m tank's inclined face carries 1-3 % less
     than Chwang's reservoir at the base).
 
@@ -458,8 +458,8 @@ def cylinder_tank_case(quick: bool) -> dict:
     """See :func:`run_cylinder`. c0 = 1430 m/s, tank walls carrying the fluid's pressure
     (``walls="adami"``), the solver's other defaults (Wendland, h = sqrt(2) dx: at dx = 0.1 m
     0.29 kPa RMS against 0.51 at h = 2 dx, for 3/4 of its CPU; docs/setup_chooser.md; the
-    chooser's "impulsive"); 40 samples a period. Reference: the exact series (:func:`cylinder_series`: 2.41 kPa at
-    the bottom); Petrov-Moiseev (Sunara et al. 2021, Eq. 20, what the paper compares with) is a Ritz
+    chooser's "impulsive"); 40 samples a period. Reference: the exact series
+    (:func:`cylinder_series`: 2.41 kPa at the bottom); Petrov-Moiseev (Sunara et al. 2021, Eq. 20, what the paper compares with) is a Ritz
     approximation 0.15 kPa RMS from it on this tank (2.53 kPa at the bottom).
 
     The stated target (0.127 kPa) is met at dx = 0.05 m against the exact series; against
