@@ -35,11 +35,13 @@ def test_the_first_sloshing_period_decides_impulsive_or_sloshing():
 
 def test_the_long_period_tanks_slosh():
     """long-period's excitations (Sunara et al. 2021: T = 1.0 s in the 3 m tanks, 0.7 s in the
-    cylinder; T / T1 = 0.45, 0.36, 0.42) get "sloshing", the set-up that case runs; the same
-    tanks shaken at the paper's short periods, "impulsive"."""
-    for case, period in (("westergaard", 1.0), ("inclined-wall", 1.0), ("cylinder-tank", 0.7)):
+    cylinder; T / T1 = 0.45, 0.36, 0.42) get "sloshing", the set-up that case runs; the
+    vertical-walled tanks shaken at the paper's short periods "impulsive", the inclined one
+    "sloshing" still (its slope's pressure grows noisy at h = sqrt(2) dx)."""
+    for case, period, fast in (("westergaard", 1.0, "impulsive"), ("inclined-wall", 1.0, "sloshing"),
+                               ("cylinder-tank", 0.7, "impulsive")):
         scene = case_scene.chosen(case_scene.load(case))
-        assert choose(scene).name == "impulsive", case
+        assert choose(scene).name == fast, case
         assert choose(scene.with_values([f"base_motion.period={period}"])).name == "sloshing", case
 
 

@@ -10,8 +10,8 @@ set-up            picked when the scene has                 FluidConfig settings
 ``waves``         waves (a wavemaker, a near field's sea)   ``TRAVELLING_WAVES`` (h = 2 dx, walls
                                                             "adami", ...); a near field:
                                                             ``NEAR_FIELD`` (+ MLS every 150 steps)
-``impulsive``     a tank shaken at a period <= T1 / 3 (T1:   the solver's defaults, walls "adami"
-                  its first sloshing period)
+``impulsive``     a vertical-walled tank shaken at a        the solver's defaults, walls "adami"
+                  period <= T1 / 3 (T1: first sloshing)
 ``sloshing``      any other moving tank (``base_motion``)   2-D: ``SLOSHING_2D`` (h = 2 dx, walls
                                                             "adami"); 3-D: the same and the
                                                             diffusion faded under the surface
@@ -28,7 +28,8 @@ everywhere sets a tank at rest circulating. Shaken fast, the wall pressure is im
 (Housner 1963, Bull. Seismol. Soc. Am. 53): at steady state mode n's convective part is
 ``w_n^2 / (w^2 - w_n^2)`` of its impulsive part (the modal equation of
 ``cosim.validations.forced_sloshing``), at most 1/8 for the first mode at T <= T1 / 3, and
-the wall-pressure cases meet their targets with less error at the solver's h. An impact keeps
+the wall-pressure cases meet their targets with less error at the solver's h (an inclined
+wall's pressure at it grows noisy at fine dx: inclined tanks keep "sloshing"). An impact keeps
 the defaults (the faded diffusion quadruples a dam break's pressure noise). The measured
 figures: docs/fluid.md ("Why each set-up").
 
@@ -43,7 +44,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from cosim.scene.spec import NearField, PolygonTank, Tank
+from cosim.scene.spec import CylinderTank, NearField, PolygonTank, Tank
 from fluid.settings import SETTINGS
 
 #: FluidConfig settings that the SPH scene class can set over the set-up's (fluid.settings:
@@ -55,10 +56,10 @@ _SLOSHING_3D = {"walls": "adami", "diffusion_at_surface": False, "h_coef": 2.0}
 _REASONS = {
     "waves": "the scene has waves (a wavemaker, or an incident sea through a near field): waves keep linear theory's "
              "speed and height",
-    "impulsive": "the tank is shaken at a period at most a third of its first sloshing period: impulsive "
-                 "(Westergaard) wall pressures, the solver's defaults with walls carrying the pressure",
-    "sloshing": "the tank moves, at a period over a third of its first sloshing period or by a record or table: "
-                "sloshing frequencies and wall pressures need the wave set-up",
+    "impulsive": "the vertical-walled tank is shaken at a period at most a third of its first sloshing period: "
+                 "impulsive (Westergaard) wall pressures, the solver's defaults with walls carrying the pressure",
+    "sloshing": "the tank moves (at a period over a third of its first sloshing period, by a record or table, "
+                "or with inclined walls): sloshing frequencies and wall pressures need the wave set-up",
     "impact": "water blocks in a tank (a dam break): the solver's defaults, which keep violent flow's pressure "
               "noise low",
     "still": "still water",
@@ -106,10 +107,12 @@ def _periods(scene) -> tuple:
 
 
 def _impulsive(scene) -> bool:
-    """Whether the tank's base motion is periodic and its period at most
-    :data:`IMPULSIVE_PERIODS` of the water's first sloshing period."""
+    """Whether the tank has vertical walls (a box or a cylinder), its base motion is
+    periodic and its period at most :data:`IMPULSIVE_PERIODS` of the water's first sloshing
+    period."""
     period, t1 = _periods(scene)
-    return period is not None and t1 is not None and period <= IMPULSIVE_PERIODS * t1
+    vertical = isinstance(scene.domain, (Tank, CylinderTank))
+    return vertical and period is not None and t1 is not None and period <= IMPULSIVE_PERIODS * t1
 
 
 def _auto(scene) -> str:
