@@ -114,7 +114,7 @@ def sph_fluids(draw, dx_max):
     """SPH with dx <= dx_max and a random choice of its optional overrides."""
     kw = {"dx": draw(num(min(1e-4, dx_max / 2), dx_max, open_lo=True))}
     options = {
-        "setup": st.sampled_from(["auto", "still", "waves", "sloshing", "impact", "defaults"]),
+        "setup": st.sampled_from(["auto", "still", "waves", "sloshing", "impulsive", "impact", "defaults"]),
         "rho0": num(MIN_DENSITY, MAX_DENSITY),
         "c0_factor": num(10.0, 1e3),
         "h_coef": num(1.0, 3.0),

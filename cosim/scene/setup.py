@@ -1,20 +1,18 @@
 """The SPH fluid's set-up, chosen from what a scene contains.
 
 The solver's defaults (Wendland, h = sqrt(2) dx, plain dynamic walls, density diffusion
-everywhere) are the fast ones; some flows need another set-up, measured in the
-validation cases (README, "Waves and sloshing: the fluid's set-up"). ``SPH(setup="auto")``
-picks, from the scene:
+everywhere) are the fast ones; some flows need another set-up, measured in the validation
+cases (docs/fluid.md, docs/setup_chooser.md). ``SPH(setup="auto")`` picks, from the scene:
 
 ================  ========================================  =========================================
 set-up            picked when the scene has                 FluidConfig settings (2-D / 3-D)
 ================  ========================================  =========================================
-``waves``         waves (a wavemaker, a near field's sea)   ``TRAVELLING_WAVES``: h = 2 dx, walls
-                                                            "adami", diffusion faded under the
-                                                            surface, slip walls, alpha = 0.002;
-                                                            a near field: ``NEAR_FIELD`` (the
-                                                            same, the density re-initialised
-                                                            every 150 steps)
-``sloshing``      a moving tank (``base_motion``)           2-D: ``SLOSHING_2D`` (h = 2 dx, walls
+``waves``         waves (a wavemaker, a near field's sea)   ``TRAVELLING_WAVES`` (h = 2 dx, walls
+                                                            "adami", ...); a near field:
+                                                            ``NEAR_FIELD`` (+ MLS every 150 steps)
+``impulsive``     a vertical-walled tank shaken at a        the solver's defaults, walls "adami"
+                  period <= T1 / 3 (T1: first sloshing)
+``sloshing``      any other moving tank (``base_motion``)   2-D: ``SLOSHING_2D`` (h = 2 dx, walls
                                                             "adami"); 3-D: the same and the
                                                             diffusion faded under the surface
 ``impact``        water blocks in a tank (a dam break)      the solver's defaults
@@ -23,10 +21,15 @@ set-up            picked when the scene has                 FluidConfig settings
 ``defaults``      (only when asked for)                     the solver's defaults
 ================  ========================================  =========================================
 
-Why: travelling waves lose height to the diffusion at the surface and the viscosity's
-friction on the floor; at h = sqrt(2) dx the square lattice under pressure makes waves and
-sloshing 5-8 % fast, h = 2 dx is stable, and plain dynamic walls stiffen the contact line;
-in 3-D, diffusion everywhere sets a tank at rest circulating by its edges; an impact keeps
+Why: travelling waves lose height to the diffusion at the surface and the floor's friction;
+at h = sqrt(2) dx the square lattice under pressure makes waves and sloshing 5-8 % fast
+(h = 2 dx is stable) and plain dynamic walls stiffen the contact line; in 3-D, diffusion
+everywhere sets a tank at rest circulating. Shaken fast, the wall pressure is impulsive
+(Housner 1963, Bull. Seismol. Soc. Am. 53): at steady state mode n's convective part is
+``w_n^2 / (w^2 - w_n^2)`` of its impulsive part (the modal equation of
+``cosim.validations.forced_sloshing``), at most 1/8 for the first mode at T <= T1 / 3, and
+the wall-pressure cases meet their targets with less error at the solver's h (an inclined
+wall's pressure at it grows noisy at fine dx: inclined tanks keep "sloshing"). An impact keeps
 the defaults (the faded diffusion quadruples a dam break's pressure noise). The measured
 figures: docs/fluid.md ("Why each set-up").
 
@@ -41,7 +44,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from cosim.scene.spec import NearField, PolygonTank, Tank
+from cosim.scene.spec import CylinderTank, NearField, PolygonTank, Tank
 from fluid.settings import SETTINGS
 
 #: FluidConfig settings that the SPH scene class can set over the set-up's (fluid.settings:
@@ -53,7 +56,10 @@ _SLOSHING_3D = {"walls": "adami", "diffusion_at_surface": False, "h_coef": 2.0}
 _REASONS = {
     "waves": "the scene has waves (a wavemaker, or an incident sea through a near field): waves keep linear theory's "
              "speed and height",
-    "sloshing": "the tank moves: sloshing frequencies and wall pressures need the wave set-up",
+    "impulsive": "the vertical-walled tank is shaken at a period at most a third of its first sloshing period: "
+                 "impulsive (Westergaard) wall pressures, the solver's defaults with walls carrying the pressure",
+    "sloshing": "the tank moves (at a period over a third of its first sloshing period, by a record or table, "
+                "or with inclined walls): sloshing frequencies and wall pressures need the wave set-up",
     "impact": "water blocks in a tank (a dam break): the solver's defaults, which keep violent flow's pressure "
               "noise low",
     "still": "still water",
@@ -81,16 +87,39 @@ def settings(name: str, dim: int) -> dict:
         return dict(TRAVELLING_WAVES)
     if name == "sloshing":
         return dict(SLOSHING_2D) if dim == 2 else dict(_SLOSHING_3D)
+    if name == "impulsive":
+        return {"walls": "adami"}
     if name == "still" and dim == 3:
         return {"diffusion_at_surface": False}
     return {}
+
+
+#: the largest excitation period, as a fraction of the first sloshing period, that is "impulsive"
+IMPULSIVE_PERIODS = 1.0 / 3.0
+
+
+def _periods(scene) -> tuple:
+    """(the base motion's period, the water's first sloshing period) [s]; None for one
+    not known (a record or a table has no single period)."""
+    from cosim.scene.checks import first_sloshing_period
+
+    return getattr(scene.base_motion, "period", None), first_sloshing_period(scene)
+
+
+def _impulsive(scene) -> bool:
+    """Whether the tank has vertical walls (a box or a cylinder), its base motion is
+    periodic and its period at most :data:`IMPULSIVE_PERIODS` of the water's first sloshing
+    period."""
+    period, t1 = _periods(scene)
+    vertical = isinstance(scene.domain, (Tank, CylinderTank))
+    return vertical and period is not None and t1 is not None and period <= IMPULSIVE_PERIODS * t1
 
 
 def _auto(scene) -> str:
     if scene.waves is not None:
         return "waves"
     if scene.base_motion is not None:
-        return "sloshing"
+        return "impulsive" if _impulsive(scene) else "sloshing"
     if isinstance(scene.domain, Tank) and scene.domain.water:
         return "impact"
     return "still"
@@ -112,6 +141,8 @@ def choose(scene) -> Setup:
     sph = scene.fluid
     name = _auto(scene) if sph.setup == "auto" else sph.setup
     reason = _REASONS[name] if sph.setup == "auto" else f"asked for (fluid.setup = {name!r})"
+    if sph.setup == "auto" and name in ("impulsive", "sloshing") and None not in _periods(scene):
+        reason += " (period {:.4g} s, first sloshing period {:.4g} s)".format(*_periods(scene))
     cfg = settings(name, scene.world.dim)
     if name == "waves" and isinstance(scene.domain, NearField):
         from fluid.solver import NEAR_FIELD

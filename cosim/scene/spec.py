@@ -45,7 +45,7 @@ from cosim.scene.fields import (SceneError, Spec, choice, flag, gauges, is_name,
 from cosim.scene.registry import FLUIDS as FLUID_MODELS, MOORINGS, SHAPES, WAVES as WAVE_KINDS
 from fluid.settings import SETTINGS as FLUID_SETTINGS
 
-SETUPS = ("auto", "still", "waves", "sloshing", "impact", "defaults")
+SETUPS = ("auto", "still", "waves", "sloshing", "impulsive", "impact", "defaults")
 
 
 def tag(value: str):
@@ -207,8 +207,8 @@ class SPH(Spec):
 
     TAG = ("model", "sph")
     model: str = tag("sph")
-    setup: str = choice("auto", "fluid set-up: auto (from the scene), still, waves, sloshing, impact, defaults",
-                        SETUPS)
+    setup: str = choice("auto", "fluid set-up: auto (from the scene), still, waves, sloshing, impulsive, impact, "
+                        "defaults", SETUPS)
     settle: float = num(0.0, "damped relaxation of the particles before the run (clock held at 0)", "s", lo=0)
     body_boundary: str = choice("mdbc", "density of the bodies' boundary particles", ("mdbc", "dbc"))
 

@@ -7,16 +7,59 @@ at every coupling step), the case builds the scene here and steps its coupler it
 set-up is the scene's, field for field, so that the case and a user's ``cosim run
 cosim/validations/scenes/CASE.toml`` run the same water, walls, bodies and lines; what is
 read differs, and where the steps fall (the runner lands a step on each sample time).
+
+Under :func:`auto_setup` a case runs the fluid set-up that ``cosim.scene.setup`` chooses for
+its scene (``fluid.setup = "auto"``, the set-up's own fields cleared) instead of the one set
+by hand: a scene-built case through :func:`load`, a code-built one through :func:`fluid_setup`
+(tests/test_setup_chooser.py: each case so meets its quick tolerance).
 """
 
 from __future__ import annotations
 
+import dataclasses
 import tempfile
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from pathlib import Path
 
 from cosim.validations.folders import SCENES
+
+#: the fluid settings a set-up of ``cosim.scene.setup`` chooses (cleared under :func:`auto_setup`);
+#: the others a scene sets (dx, c0 or c0_factor, settle) are the scene's own
+LEVERS = ("h_coef", "walls", "diffusion_at_surface", "alpha", "alpha_wall", "mls_every")
+_auto = [False]
+
+
+@contextmanager
+def auto_setup() -> Iterator[None]:
+    """Within it, the cases run the set-up the chooser picks for their scenes (module
+    docstring)."""
+    _auto.append(True)
+    try:
+        yield
+    finally:
+        _auto.pop()
+
+
+def chosen(scene):
+    """``scene`` with ``fluid.setup = "auto"`` and the :data:`LEVERS` cleared (a fluid without
+    a set-up, the analytic one, as it is)."""
+    if not hasattr(scene.fluid, "setup"):
+        return scene
+    fluid = dataclasses.replace(scene.fluid, setup="auto", **{k: None for k in LEVERS})
+    return dataclasses.replace(scene, fluid=fluid)
+
+
+def fluid_setup(case: str, own: dict) -> dict:
+    """The FluidConfig set-up of a case that builds its fluid in code: ``own``, the
+    settings it sets by hand; under :func:`auto_setup`, the :data:`LEVERS` that
+    ``cosim.scene.setup.choose`` gives the case's scene file."""
+    if not _auto[-1]:
+        return dict(own)
+    from cosim.scene.setup import choose
+
+    cfg = choose(load(case)).config
+    return {k: cfg[k] for k in LEVERS if k in cfg}
 
 
 def path(case: str) -> Path:
@@ -34,11 +77,13 @@ def number(x: float) -> str:
 
 def load(case: str, values: Sequence[str] = ()):
     """The scene of ``case`` with ``values`` set (``KEY=VALUE`` as ``cosim run --set`` takes
-    them, e.g. ``"fluid.dx=0.01"``): a :class:`cosim.scene.Scene`, validated."""
+    them, e.g. ``"fluid.dx=0.01"``): a :class:`cosim.scene.Scene`, validated (under
+    :func:`auto_setup`: with the chooser's set-up)."""
     from cosim.scene import Scene
 
     scene = Scene.from_toml(path(case))
-    return scene.with_values(list(values)) if values else scene
+    scene = scene.with_values(list(values)) if values else scene
+    return chosen(scene) if _auto[-1] else scene
 
 
 @contextmanager

@@ -145,8 +145,8 @@ def hydrostatic(quick: bool) -> dict:
     full: 20 particle layers over the depth (dx = 0.01 m), 3 s; quick: 10 layers, 2 s. See
     :func:`run_hydrostatic` for the set-up and what limits the error."""
     if quick:  # 10 particle layers over the depth
-        return run_hydrostatic(2, dx=0.02, t_end=2.0)
-    return run_hydrostatic(2, dx=0.01, t_end=3.0)
+        return run_hydrostatic(2, dx=0.02, t_end=2.0, **case_scene.fluid_setup("hydrostatic", {}))
+    return run_hydrostatic(2, dx=0.01, t_end=3.0, **case_scene.fluid_setup("hydrostatic", {}))
 
 
 def hydrostatic_3d_scene(quick: bool):

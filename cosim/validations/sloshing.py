@@ -8,6 +8,7 @@ import numpy as np
 
 from cosim import refdata
 from cosim.study.metrics import spectral_peak
+from cosim.validations.case_scene import fluid_setup
 from cosim.validations.registry import case
 from fluid.geometry import assemble, block, set_hydrostatic, tank_walls
 from fluid.motion import Harmonic, Rotation, Tabulated, Translation
@@ -310,7 +311,11 @@ def westergaard(quick: bool) -> dict:
     extraction. c0 = 1430 m/s (the paper's c_p); tank walls carrying the fluid's pressure
     (``walls="adami"``: fluid.wall_density, with the wall acceleration of Adami et al.
     2012 Eq. 27); Wendland, h = sqrt(2) dx, alpha = 0.01, Fourtakas delta = 0.1, CFL 0.2
-    (the defaults); 2 periods skipped, 3 fitted (quick: 1 and 2), 40 samples a period.
+    (the defaults); 2 periods skipped, 3 fitted (quick: 1 and 2), 40 samples a period. Why
+    h = sqrt(2) dx and not the sloshing set-up's 2 dx: shaken far above its first sloshing
+    frequency the water's pressure is impulsive and the waves' speed hardly enters; at dx =
+    0.1 m h = 2 dx reads 0.073 face RMS against 0.040 (docs/setup_chooser.md). A scene of
+    this kind gets this set-up from the chooser ("impulsive", :mod:`cosim.scene.setup`).
 
     Reference: the exact incompressible wall pressure of this 3 m tank
     (:func:`westergaard_series`; base k_p = 0.728, Westergaard's semi-infinite 0.742, the
@@ -330,8 +335,8 @@ def westergaard(quick: bool) -> dict:
     it there. What was tried before (the default walls, whose raw pressure misses the
     target at every dx; the wave set-up): docs/validation/westergaard_history.md.
     """
-    out = (run_westergaard(0.1, periods_skip=1, periods_fit=2, walls="adami") if quick
-           else run_westergaard(0.025, walls="adami"))
+    own = fluid_setup("westergaard", {"walls": "adami"})
+    out = run_westergaard(0.1, periods_skip=1, periods_fit=2, **own) if quick else run_westergaard(0.025, **own)
     out["series"] = westergaard_series_plot(out.pop("profile"))
     out["stated_tolerances"], out["departure"] = dict(WESTERGAARD_STATED), dict(WESTERGAARD_DEPARTURE)
     if quick:
@@ -392,12 +397,13 @@ def westergaard_3d(quick: bool) -> dict:
     Measured trade: ``docs/validation/westergaard-3d_trade.md`` (on the case's report page).
     """
     if not quick:
-        out = run_westergaard(0.05, dim=3, width=1.0, periods_skip=1, periods_fit=1, walls="adami")
+        out = run_westergaard(0.05, dim=3, width=1.0, periods_skip=1, periods_fit=1,
+                              **fluid_setup("westergaard-3d", {"walls": "adami"}))
         out["metrics"]["width_m"] = 1.0
         out["series"] = westergaard_3d_series_plot(out.pop("profile"))
         out["stated_tolerances"], out["departure"] = dict(WESTERGAARD_STATED), dict(WESTERGAARD_DEPARTURE)
         return out
-    settings = dict(c0=700.0, periods_skip=1, periods_fit=1)
+    settings = dict(c0=700.0, periods_skip=1, periods_fit=1, **fluid_setup("westergaard-3d", {}))
     out = run_westergaard(0.1, dim=3, width=0.3, **settings)
     section = run_westergaard(0.1, dim=2, **settings)
     for q in ("raw", "avg", "face"):
@@ -679,9 +685,10 @@ def sloshing_frequency(quick: bool) -> dict:
 
     Measured trade: ``docs/validation/sloshing-frequency_trade.md`` (on the case's report page).
     """
+    own = fluid_setup("sloshing-frequency", SLOSHING_2D)
     if quick:
-        return run_sloshing_frequency(0.05, cycles_forced=2, cycles_free=4, c0_factor=10.0, **SLOSHING_2D)
-    return run_sloshing_frequency(0.025, cycles_free=6, **SLOSHING_2D)
+        return run_sloshing_frequency(0.05, cycles_forced=2, cycles_free=4, c0_factor=10.0, **own)
+    return run_sloshing_frequency(0.025, cycles_free=6, **own)
 
 
 @case("sloshing-spheric10", "SPHERIC Test 10 (rolling tank 900 x 508 mm, water 93 mm, measured roll): "
@@ -696,7 +703,9 @@ def sloshing_spheric10(quick: bool) -> dict:
 
     Set-up: ``walls="adami"`` (the walls carry the fluid's pressure), c0 = 28 m/s
     (DualSPHysics' own set-up of the case: 30 sqrt(g h)), the default alpha = 0.01,
-    delta = 0.1; the sensor is the wall's normal force over a 10 mm patch about z = 93 mm
+    delta = 0.1, h = sqrt(2) dx (the chooser's "sloshing" h = 2 dx on the first swing: peak
+    error 0.076 against 0.069, lag 0.038 against 0.043 s, neither better on both:
+    docs/setup_chooser.md); the sensor is the wall's normal force over a 10 mm patch about z = 93 mm
     (:func:`spheric10_sensor`), sampled at 10 kHz (the record: 20 kHz). The roll axis is
     the centre of the tank bottom (SOURCE.txt, DualSPHysics' CaseSloshingHR_Def.xml), which
     the record fits better than the axis 184 mm above the bottom of VALIDATION.md's row and

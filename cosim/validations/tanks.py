@@ -8,6 +8,7 @@ import math
 import numpy as np
 
 from cosim import refdata
+from cosim.validations.case_scene import fluid_setup
 from cosim.validations.registry import case
 from cosim.validations.sloshing import _harmonic_fit, face_pressure
 from cosim.validations.tank_potential import wall_profiles
@@ -188,9 +189,11 @@ def inclined_series_plot(profiles: dict) -> dict:
 def inclined_wall(quick: bool) -> dict:
     """Sunara et al. 2021, §3.2 (Fig. 12): see :func:`run_inclined` for the set-up and
     the extraction. c0 = 1430 m/s (the paper's), tank walls carrying the fluid's pressure
-    (``walls="adami"``, as the westergaard case), the solver's other defaults; 40 samples
-    a period. Judged: the RMS of k_p up the inclined face against Chwang's semi-infinite
-    reservoir at each angle; reported beside it, the RMS against the exact pressure of
+    (``walls="adami"``, as the westergaard case), the solver's other defaults (h = sqrt(2) dx:
+    45 deg at dx = 0.1 m, 0.0055 RMS against 0.0113 at h = 2 dx; at dx = 0.025 m the slope's
+    pressure grows noisy, so the chooser gives a scene of this kind h = 2 dx, "sloshing":
+    docs/setup_chooser.md); 40 samples a period. Judged: the RMS of k_p up the inclined face
+    against Chwang's semi-infinite reservoir at each angle; reported beside it, the RMS against the exact pressure of
     this finite tank on both sides (the 3 m tank's inclined face carries 1-3 % less
     than Chwang's reservoir at the base).
 
@@ -200,8 +203,9 @@ def inclined_wall(quick: bool) -> dict:
     """
     dx, skip, fit = (0.1, 1, 2) if quick else (0.05, 2, 3)
     metrics, profiles, particles, steps = {}, {}, 0, 0
+    own = fluid_setup("inclined-wall", {"walls": "adami"})
     for beta in ANGLES:
-        r = run_inclined(beta, dx, periods_skip=skip, periods_fit=fit, walls="adami")
+        r = run_inclined(beta, dx, periods_skip=skip, periods_fit=fit, **own)
         for k, v in r["metrics"].items():
             if k not in ("dx_m", "c0_m_s", "beta_deg"):
                 metrics[f"{k}_{beta:g}"] = v
@@ -453,9 +457,10 @@ def cylinder_series_plot(profile: dict) -> dict:
             "the free surface reads high by ~dx/h: the stated 0.127 kPa needs the full variant's dx = 0.05 m)")
 def cylinder_tank_case(quick: bool) -> dict:
     """See :func:`run_cylinder`. c0 = 1430 m/s, tank walls carrying the fluid's pressure
-    (``walls="adami"``), the solver's other defaults (Wendland, h = sqrt(2) dx); 40
-    samples a period. Reference: the exact series (:func:`cylinder_series`: 2.41 kPa at
-    the bottom); Petrov-Moiseev (Sunara et al. 2021, Eq. 20, what the paper compares with) is a Ritz
+    (``walls="adami"``), the solver's other defaults (Wendland, h = sqrt(2) dx: at dx = 0.1 m
+    0.29 kPa RMS against 0.51 at h = 2 dx, for 3/4 of its CPU; docs/setup_chooser.md; the
+    chooser's "impulsive"); 40 samples a period. Reference: the exact series
+    (:func:`cylinder_series`: 2.41 kPa at the bottom); Petrov-Moiseev (Sunara et al. 2021, Eq. 20, what the paper compares with) is a Ritz
     approximation 0.15 kPa RMS from it on this tank (2.53 kPa at the bottom).
 
     The stated target (0.127 kPa) is met at dx = 0.05 m against the exact series; against
@@ -466,7 +471,7 @@ def cylinder_tank_case(quick: bool) -> dict:
     Figures: ``docs/validation/figures/cylinder-tank_dx0.05_*.png``.
     """
     dx, skip, fit = (0.1, 1, 2) if quick else (0.05, 2, 3)
-    r = run_cylinder(dx, periods_skip=skip, periods_fit=fit, walls="adami")
+    r = run_cylinder(dx, periods_skip=skip, periods_fit=fit, **fluid_setup("cylinder-tank", {"walls": "adami"}))
     m = r["metrics"]
     m["p_base_rel_err"] = m["p_base_kpa"] / m["p_base_exact_kpa"] - 1
     out = {"metrics": m, "tolerances": {"rms_kpa_plane_vs_exact": 0.127}, "particles": r["particles"],
