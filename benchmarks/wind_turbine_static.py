@@ -22,6 +22,7 @@ sets its box, and how this was judged before the fit).
 
     python benchmarks/wind_turbine_static.py --dx 0.5,0.375 --duration 12  # the pool 4 m deep
     python benchmarks/wind_turbine_static.py --rows 3,4 --duration 12      # aligned
+    python benchmarks/wind_turbine_static.py --dx 0.5 --setup waves --h-coef 1.4142  # another set-up
 
 Prints one line per spacing: particles, CPU seconds, the predicted draft, the SPH draft
 below the water level the gauges read away from the base (``draft_sph_m``, judged) and
@@ -47,8 +48,9 @@ ANCHOR_R = 37.0  # m from the base's axis (examples/wind_turbine_base.py)
 GAUGES = ((2.0, 2.0), (14.0, 2.0), (2.0, 14.0), (14.0, 14.0), (8.0, 2.0), (2.0, 8.0), (14.0, 8.0), (8.0, 14.0))
 
 
-def static_scene(dx: float, duration: float, depth: float = DEPTH):
-    """The base in the pool (module docstring), ``depth`` [m] of water, at spacing ``dx`` [m]."""
+def static_scene(dx: float, duration: float, depth: float = DEPTH, setup: str = "still", h_coef: float | None = None):
+    """The base in the pool (module docstring), ``depth`` [m] of water, at spacing ``dx`` [m],
+    the fluid's ``setup`` (cosim.scene.setup) and its ``h_coef`` where given."""
     from cosim.scene import SPH, Cylinder, Line, Moorings, Probes, Scene, Tank, World
 
     chain = dict(length=45.0, weight=3769.85, EA=1.9e9, mass_per_length=442.0, diameter=0.268, break_load=1.4e6)
@@ -60,7 +62,7 @@ def static_scene(dx: float, duration: float, depth: float = DEPTH):
     return Scene(
         name="wind_turbine_static",
         world=World(dim=3, duration=duration, sample_every=0.05, snapshot_every=1.0),
-        fluid=SPH(dx=dx, rho0=1025.0, setup="still"),
+        fluid=SPH(dx=dx, rho0=1025.0, setup=setup, h_coef=h_coef),
         domain=Tank(length=POOL, width=POOL, height=depth + 2.5, depth=depth),
         bodies=[Cylinder("base", radius=3.0, length=3.0, mass=16000.0, pos=(c, c), place="floating",
                          fairleads=fairleads)],
@@ -92,8 +94,9 @@ def aligned(rows: int) -> tuple[float, float]:
     return dx, round(DEPTH / dx) * dx
 
 
-def measure(dx: float, duration: float, out: str, depth: float = DEPTH) -> dict:
-    scene = static_scene(dx, duration, depth)
+def measure(dx: float, duration: float, out: str, depth: float = DEPTH, setup: str = "still",
+            h_coef: float | None = None) -> dict:
+    scene = static_scene(dx, duration, depth, setup, h_coef)
     d0 = predicted_draft(scene)
     level0 = scene.domain.depth
     c0 = time.process_time()
@@ -123,11 +126,13 @@ def main(argv=None) -> None:
     ap.add_argument("--rows", default="", help="rows of particles in the draft, comma-separated: the spacing and "
                     "depth that align the base's bottom with the lattice (aligned)")
     ap.add_argument("--duration", type=float, default=12.0, help="simulated seconds")
+    ap.add_argument("--setup", default="still", help="the fluid's set-up (cosim.scene.setup), e.g. still, waves")
+    ap.add_argument("--h-coef", type=float, default=None, help="h / dx over the set-up's")
     ap.add_argument("--out", default="out/wind_turbine_static")
     a = ap.parse_args(argv)
     runs = [(float(v), DEPTH) for v in a.dx.split(",") if v] + [aligned(int(k)) for k in a.rows.split(",") if k]
     for dx, depth in runs:
-        m = measure(dx, a.duration, a.out, depth)
+        m = measure(dx, a.duration, a.out, depth, a.setup, a.h_coef)
         print(" ".join(f"{k}={v:.4g}" if isinstance(v, float) else f"{k}={v}" for k, v in m.items()), flush=True)
 
 
