@@ -163,12 +163,23 @@ class NearFieldBox:
         return out
 
 
+def whole_spacings(x0: float, x1: float, dx: float) -> float:
+    """``x1`` [m] moved out to the nearest whole number of spacings ``dx`` from ``x0``: the
+    water's lattice fills ``x0 .. x1`` from ``x0`` in whole rows, so a remainder would leave
+    the water its last row up to 1.5 dx off the far end wall instead of dx / 2, a gap that
+    water at rest keeps as a step in pressure and falls into (the level drops at that end:
+    docs/validation/nearfield.md, "The near field at h = sqrt(2) dx")."""
+    n = math.ceil((x1 - x0) / dx - 1e-9)
+    return x0 + n * dx
+
+
 def near_field_box(dx: float, x0: float, x1: float, sea, height: float, zone: float, *, layers: int = 4,
                    y: tuple | None = None, side_zone: float | None = None,
                    slack: float | None = None, mirror: bool = False) -> NearFieldBox:
     """Water from ``x0`` to ``x1`` [m] over the sea's seabed (``sea.level - sea.depth``) up
     to its still level, spacing ``dx`` [m]; walls ``height`` [m] above the seabed and
-    ``layers`` thick; relaxation zones ``zone`` [m] wide inside each end wall; 3-D across
+    ``layers`` thick (``x1`` moved out to a whole number of spacings, :func:`whole_spacings`);
+    relaxation zones ``zone`` [m] wide inside each end wall; 3-D across
     ``y = (y0, y1)`` [m] with fixed side walls beyond, zones ``side_zone`` [m] wide inside
     them (None: none); ``mirror``: the plane y = y0 is a symmetry plane (:mod:`fluid.mirror`),
     with no wall or zone at it. The seabed runs on beyond each end wall by
@@ -183,6 +194,7 @@ def near_field_box(dx: float, x0: float, x1: float, sea, height: float, zone: fl
     if y is not None and side_zone is not None and not y[1] - y[0] > (1.0 if mirror else 2.0) * side_zone:
         raise InputError(f"near field: the box's width {y[0]} .. {y[1]} m is not wider than its side zones of "
                          f"{side_zone} m; widen it or narrow the zones")
+    x1 = whole_spacings(x0, x1, dx)
     bed = sea.level - sea.depth
     if not height > sea.depth:
         raise InputError(f"near field: the walls' height {height} m must exceed the water depth {sea.depth} m")
@@ -269,8 +281,9 @@ def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(
 
     ``zone``, ``x = (x0, x1)``, ``width`` and ``height`` given are kept (reason "given").
     3-D: the box is centred across y on the bodies (``symmetric``: from y = 0, a symmetry
-    plane); a width it chooses is a whole number of spacings ``dx`` [m] when given, so
-    that the particles' lattice is symmetric about the centre as the scene may be."""
+    plane); a length and a width it chooses are whole numbers of spacings ``dx`` [m] when
+    given (the length widened on both chosen ends alike), so that the particles' lattice
+    meets the walls at dx / 2 and is symmetric about the centre as the scene may be."""
     lo, hi = (np.atleast_1d(np.asarray(v, float)) for v in footprint)
     reasons = {}
     peak = sea.peak_period
@@ -298,6 +311,11 @@ def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(
     x1 = hi[0] + margin + zone if x[1] is None else float(x[1])
     reasons["x0"] = "given" if x[0] is not None else why
     reasons["x1"] = "given" if x[1] is not None else why
+    free = (x[0] is None) + (x[1] is None)
+    if dx is not None and free:  # a whole number of spacings (whole_spacings), widened where chosen
+        pad = math.ceil((x1 - x0) / dx - 1e-9) * dx - (x1 - x0)
+        x0 -= pad / free if x[0] is None else 0.0
+        x1 += pad / free if x[1] is None else 0.0
     y = None
     if dim == 3:
         centre = 0.0 if symmetric else 0.5 * float(lo[1] + hi[1])

@@ -151,3 +151,18 @@ def test_the_fluid_takes_the_following_walls_own_acceleration():
         fd = (wall(3.1 + eps, ref)[1] - wall(3.1 - eps, ref)[1]) / (2 * eps)
         np.testing.assert_allclose(acc[rows], fd, atol=1e-6 * np.abs(fd).max())
     assert np.abs(acc[moving]).max() > 0.1 and (acc[~moving] == 0).all()
+
+
+@pytest.mark.parametrize("length", [1.0, 0.9951, 1.0149])
+def test_the_water_meets_both_end_walls_at_half_a_spacing(length):
+    """A length that is not a whole number of spacings is widened to one, so that the last
+    row of water lies dx / 2 inside the far wall as the first lies inside the near one (a
+    remainder would leave a gap of up to 1.5 dx there, which water at rest keeps)."""
+    dx = 0.02
+    box = near_field_box(dx, 0.0, length, SEA, 0.45, 0.3)
+    assert box.x1 == pytest.approx(math.ceil(length / dx - 1e-9) * dx, abs=1e-12)
+    far = next(p for p, _, g in box.walls if g == FAR_END_GROUP)
+    gap_near = box.fluid[:, 0].min() - (box.x0 - 0.5 * dx)
+    gap_far = far[:, 0].min() - box.fluid[:, 0].max()
+    assert gap_near == pytest.approx(dx, abs=1e-9) and gap_far == pytest.approx(dx, abs=1e-9)
+    assert [z.outer for z in box.zones(SEA, 10.0)] == [0.0, pytest.approx(box.x1)]

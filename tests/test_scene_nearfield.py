@@ -102,6 +102,12 @@ def test_the_zone_is_half_the_wavelength_of_the_longest_natural_period_within_th
     half = 0.5 * (c4.y[1] - c4.y[0])
     assert half / dx == pytest.approx(round(half / dx), abs=1e-9) and 0 <= half - (c3.y[1] - 0.05) < dx
     assert 0.5 * (c4.y[0] + c4.y[1]) == pytest.approx(0.05)
+    # and a whole number along x, widened on both ends alike (on the chosen end where one is given)
+    length = c4.x[1] - c4.x[0]
+    assert length / dx == pytest.approx(round(length / dx), abs=1e-9) and 0 <= length - (c3.x[1] - c3.x[0]) < dx
+    assert 0.5 * (c4.x[0] + c4.x[1]) == pytest.approx(0.5 * (c3.x[0] + c3.x[1]))
+    one = choose_box(sea, h, ((1.1,), (1.3,)), reach=0.05, periods=(0.7,), dx=dx, x=(-0.01, None))
+    assert one.x[0] == -0.01 and (one.x[1] + 0.01) / dx == pytest.approx(round((one.x[1] + 0.01) / dx), abs=1e-9)
     # a symmetry plane: from y = 0, as wide as the whole box's half
     c5 = choose_box(sea, h, ((1.1, -0.3), (1.3, 0.3)), reach=0.05, periods=(0.7,), dim=3, dx=dx, symmetric=True)
     whole = choose_box(sea, h, ((1.1, -0.3), (1.3, 0.3)), reach=0.05, periods=(0.7,), dim=3, dx=dx)
