@@ -165,3 +165,23 @@ def test_analytic_added_mass_slows_the_heave(tmp_path):
         return value("period", r.t, r["b.heave"])
 
     assert period({"b": [0.0, 500.0, 0.0]}) / period({}) == pytest.approx(math.sqrt(2.0), rel=0.03)
+
+
+@pytest.mark.parametrize("depth, short", [(0.11, 0.01), (0.1, 0.0), (0.118, 0.018)])
+def test_a_depth_that_is_not_whole_rows_is_warned_of_with_the_level_the_water_gets(tmp_path, depth, short):
+    """The water is laid in whole rows of dx from the floor: its top row's upper face (the
+    still level it holds) lies ``short`` below a depth that is not a whole number of
+    spacings, and the build says so, naming the level's shortfall and the depths that fit."""
+    from fluid.particles import Kind
+
+    dx = 0.02
+    scene = Scene(world=World(dim=2, duration=0.01), fluid=SPH(dx=dx), domain=Tank(length=0.3, height=0.2, depth=depth))
+    built = build(scene, tmp_path)
+    ps = built.fluid.ps
+    top = ps.pos[ps.kind == Kind.FLUID, 1].max() + 0.5 * dx
+    assert top == pytest.approx(depth - short, abs=1e-9)
+    said = [w for w in built.warnings if w.startswith("domain.depth")]
+    if short:
+        assert len(said) == 1 and f"lies {short:.4g} m below" in said[0] and f"{depth - short:.6g} or" in said[0]
+    else:
+        assert not said

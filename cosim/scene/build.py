@@ -441,6 +441,25 @@ def _warn_tilted_water(scene, out: Built) -> None:
                             f"its surface stands normal to g")
 
 
+def _warn_partial_row(scene, out: Built) -> None:
+    """The SPH water is built in whole rows of ``dx`` from the floor, so a depth that is
+    not a whole number of spacings leaves the still level up to a spacing below the scene's
+    (bodies are placed for the scene's level and float high by as much): said, with a
+    depth that fits. (A tank filled by water blocks lays its blocks as given.)"""
+    d = scene.domain
+    depth = getattr(d, "depth", None)
+    if not isinstance(scene.fluid, SPH) or depth is None or getattr(d, "water", None):
+        return
+    dx = scene.fluid.dx
+    rows = math.floor(depth / dx + 1e-9)
+    short = depth - rows * dx
+    if short > 1e-6 * dx:
+        out.warnings.append(f"domain.depth: {depth:g} m is {depth / dx:.4g} spacings of fluid.dx = {dx:g} m; the "
+                            f"water is laid in whole rows, so its still level lies {short:.4g} m below the "
+                            f"{depth:g} m the scene states (a floating body placed for it sits that much high); give "
+                            f"a depth of {rows * dx:.6g} or {(rows + 1) * dx:.6g} m, or a dx that divides {depth:g} m")
+
+
 def _warn_mjcf_world(scene, out: Built) -> None:
     """Under base motion, what an MJCF model fixes to its world stays where it is while the
     tank moves (the model's world is the inertial frame): bodies welded to it, joints that
@@ -538,6 +557,7 @@ def build(scene, workdir: Path) -> Built:
         _start_plates(scene, out)
         _warn_mjcf_world(scene, out)
     _warn_tilted_water(scene, out)
+    _warn_partial_row(scene, out)
     for w in out.warnings:
         log.warning("%s", w)
     moorings = []
