@@ -168,7 +168,7 @@ def whole_spacings(x0: float, x1: float, dx: float) -> float:
     water's lattice fills ``x0 .. x1`` from ``x0`` in whole rows, so a remainder would leave
     the water its last row up to 1.5 dx off the far end wall instead of dx / 2, a gap that
     water at rest keeps as a step in pressure and falls into (the level drops at that end:
-    docs/validation/nearfield.md, "The near field at h = sqrt(2) dx")."""
+    docs/validation/nearfield.md, "The near field at h = sqrt(2) dx lost its level")."""
     n = math.ceil((x1 - x0) / dx - 1e-9)
     return x0 + n * dx
 
