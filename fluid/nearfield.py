@@ -313,7 +313,7 @@ def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(
     reasons["x1"] = "given" if x[1] is not None else why
     free = (x[0] is None) + (x[1] is None)
     if dx is not None and free:  # a whole number of spacings (whole_spacings), widened where chosen
-        pad = math.ceil((x1 - x0) / dx - 1e-9) * dx - (x1 - x0)
+        pad = whole_spacings(x0, x1, dx) - x1
         x0 -= pad / free if x[0] is None else 0.0
         x1 += pad / free if x[1] is None else 0.0
     y = None

@@ -44,7 +44,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from cosim.scene.spec import CylinderTank, NearField, PolygonTank, Tank
+from cosim.scene.spec import SETUPS, CylinderTank, NearField, PolygonTank, Tank
 from fluid.settings import SETTINGS
 
 #: FluidConfig settings that the SPH scene class can set over the set-up's (fluid.settings:
@@ -94,6 +94,14 @@ def settings(name: str, dim: int) -> dict:
     return {}
 
 
+def chosen_settings() -> tuple:
+    """The FluidConfig settings that some set-up chooses (any of :func:`settings`' in 2-D or
+    3-D, and the near field's), sorted."""
+    from fluid.solver import NEAR_FIELD
+
+    return tuple(sorted({k for name in SETUPS for dim in (2, 3) for k in settings(name, dim)} | set(NEAR_FIELD)))
+
+
 #: the largest excitation period, as a fraction of the first sloshing period, that is "impulsive"
 IMPULSIVE_PERIODS = 1.0 / 3.0
 
@@ -141,8 +149,9 @@ def choose(scene) -> Setup:
     sph = scene.fluid
     name = _auto(scene) if sph.setup == "auto" else sph.setup
     reason = _REASONS[name] if sph.setup == "auto" else f"asked for (fluid.setup = {name!r})"
-    if sph.setup == "auto" and name in ("impulsive", "sloshing") and None not in _periods(scene):
-        reason += " (period {:.4g} s, first sloshing period {:.4g} s)".format(*_periods(scene))
+    periods = _periods(scene) if sph.setup == "auto" and name in ("impulsive", "sloshing") else (None,)
+    if None not in periods:
+        reason += " (period {:.4g} s, first sloshing period {:.4g} s)".format(*periods)
     cfg = settings(name, scene.world.dim)
     if name == "waves" and isinstance(scene.domain, NearField):
         from fluid.solver import NEAR_FIELD

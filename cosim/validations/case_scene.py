@@ -24,9 +24,6 @@ from pathlib import Path
 
 from cosim.validations.folders import SCENES
 
-#: the fluid settings a set-up of ``cosim.scene.setup`` chooses (cleared under :func:`auto_setup`);
-#: the others a scene sets (dx, c0 or c0_factor, settle) are the scene's own
-LEVERS = ("h_coef", "walls", "diffusion_at_surface", "alpha", "alpha_wall", "mls_every")
 _auto = [False]
 
 
@@ -42,24 +39,28 @@ def auto_setup() -> Iterator[None]:
 
 
 def chosen(scene):
-    """``scene`` with ``fluid.setup = "auto"`` and the :data:`LEVERS` cleared (a fluid without
-    a set-up, the analytic one, as it is)."""
+    """``scene`` with ``fluid.setup = "auto"`` and the settings a set-up chooses cleared
+    (``cosim.scene.setup.chosen_settings``; the others a scene sets, dx, c0 or c0_factor,
+    settle, are its own; a fluid without a set-up, the analytic one, as it is)."""
+    from cosim.scene.setup import chosen_settings
+
     if not hasattr(scene.fluid, "setup"):
         return scene
-    fluid = dataclasses.replace(scene.fluid, setup="auto", **{k: None for k in LEVERS})
+    fluid = dataclasses.replace(scene.fluid, setup="auto", **{k: None for k in chosen_settings()})
     return dataclasses.replace(scene, fluid=fluid)
 
 
 def fluid_setup(case: str, own: dict) -> dict:
     """The FluidConfig set-up of a case that builds its fluid in code: ``own``, the
-    settings it sets by hand; under :func:`auto_setup`, the :data:`LEVERS` that
-    ``cosim.scene.setup.choose`` gives the case's scene file."""
+    settings it sets by hand; under :func:`auto_setup`, the settings a set-up chooses
+    (``cosim.scene.setup.chosen_settings``) as ``cosim.scene.setup.choose`` gives them to
+    the case's scene file."""
     if not _auto[-1]:
         return dict(own)
-    from cosim.scene.setup import choose
+    from cosim.scene.setup import choose, chosen_settings
 
     cfg = choose(load(case)).config
-    return {k: cfg[k] for k in LEVERS if k in cfg}
+    return {k: cfg[k] for k in chosen_settings() if k in cfg}
 
 
 def path(case: str) -> Path:
