@@ -13,6 +13,8 @@ the phases the wavenumber the waves travel with, and ``|A_r| / |A_i|`` the refle
 
 from __future__ import annotations
 
+import logging
+
 import math
 import time
 
@@ -20,6 +22,8 @@ import numpy as np
 
 from cosim.validations.registry import case
 from cosim.validations.waves import G
+
+log = logging.getLogger(__name__)
 
 
 def viscous_decay_per_wavelength(nu: float, T: float, depth: float, floor: bool) -> float:
@@ -151,7 +155,7 @@ def propagate(dx: float, depth: float, H: float, T: float, wavelengths: int = 8,
             ts.append(t)
             eta.append(surface_elevation(fluid, at) - depth)
         elif progress:
-            print(f"  t = {t:6.2f} / {t_end:.2f} s, {fluid.counters.steps} steps", flush=True)
+            log.info("wave propagation: t = %6.2f / %.2f s, %d steps", t, t_end, fluid.counters.steps)
     cpu = time.process_time() - cpu0
     a = harmonics(np.array(ts), np.array(eta), omega).reshape(wavelengths, 5)
     xs = gx.reshape(wavelengths, 5)
