@@ -108,6 +108,11 @@ def test_the_zone_is_half_the_wavelength_of_the_longest_natural_period_within_th
     assert 0.5 * (c4.x[0] + c4.x[1]) == pytest.approx(0.5 * (c3.x[0] + c3.x[1]))
     one = choose_box(sea, h, ((1.1,), (1.3,)), reach=0.05, periods=(0.7,), dx=dx, x=(-0.01, None))
     assert one.x[0] == -0.01 and (one.x[1] + 0.01) / dx == pytest.approx(round((one.x[1] + 0.01) / dx), abs=1e-9)
+    # both ends given: the far one moves out to whole rows, as the box lays the water, and says so
+    both = choose_box(sea, h, ((1.1,), (1.3,)), dx=dx, x=(0.0, 2.005))
+    assert both.x == pytest.approx((0.0, 2.01)) and both.reasons["x0"] == "given"
+    assert "moved out 0.005 m" in both.reasons["x1"] and both.reasons["x1"].startswith("given (2.005 m)")
+    assert choose_box(sea, h, ((1.1,), (1.3,)), dx=dx, x=(0.0, 2.01)).reasons["x1"] == "given"
     # a symmetry plane: from y = 0, as wide as the whole box's half
     c5 = choose_box(sea, h, ((1.1, -0.3), (1.3, 0.3)), reach=0.05, periods=(0.7,), dim=3, dx=dx, symmetric=True)
     whole = choose_box(sea, h, ((1.1, -0.3), (1.3, 0.3)), reach=0.05, periods=(0.7,), dim=3, dx=dx)
