@@ -42,7 +42,7 @@ CASE_MODULES = ("cosim.validations.catenary", "cosim.validations.cable", "cosim.
                 "cosim.validations.waves", "cosim.validations.tanks", "cosim.validations.elastic",
                 "cosim.validations.arch_rib", "cosim.validations.elastic_gate",
                 "cosim.validations.dambreak_lobovsky", "cosim.validations.long_period",
-                "cosim.validations.elastic_table2", "cosim.validations.wind_turbine",
+                "cosim.validations.elastic_table2", "cosim.validations.wind_turbine", "cosim.validations.wind_turbine_sph",
                 "cosim.validations.wave_propagation", "cosim.validations.potential",
                 "cosim.validations.nearfield")
 

@@ -95,6 +95,32 @@ class Results:
         return f"Results({len(self.t)} samples of {len(self.series)} series in {self.out})"
 
 
+def read(out) -> Results:
+    """The :class:`Results` of a run that another process wrote into the folder ``out``
+    (its ``run.h5`` and ``summary.json``), as ``Scene.run`` returned them: for judging a
+    long run after it ended, or one resumed over several sessions. A series' unit is its
+    ``units`` attribute ("1": a pure number); the series in the run's order."""
+    import h5py
+
+    out = Path(out)
+    for f in ("run.h5", "summary.json"):
+        if not (out / f).is_file():
+            raise InputError(f"{out}: no {f}; the folder holds no finished run (cosim run writes both)")
+    series, units, t = {}, {}, None
+    with h5py.File(out / "run.h5", "r") as h5:
+        for g in h5["series/probes"].values():
+            tg = g["t"][:]
+            if t is None or len(tg) > len(t):
+                t = tg
+            for name, d in g.items():
+                if name != "t":
+                    series[name], units[name] = d[:], str(d.attrs.get("units", ""))
+    summary = json.loads((out / "summary.json").read_text())
+    order = [k for k in summary.get("series", {}) if k in series]  # the run's order of its series
+    series = {k: series[k] for k in order + sorted(set(series) - set(order))}
+    return Results(t if t is not None else np.zeros(0), series, units, summary, out)
+
+
 def _event_times(w, particles: bool = True) -> list[tuple[float, set]]:
     """(time, what is due) for every event of the run, in order: particle snapshots only
     where there are particles (``particles``), plots only within the run."""
