@@ -123,3 +123,19 @@ def test_quick_case_meets_its_own_tolerances():
     m, tol = out["metrics"], out["tolerances"]
     for key, limit in tol.items():
         assert m[key] <= limit, (key, m[key], limit)
+
+
+def test_still_water_has_no_motion_and_the_radiated_wavelength():
+    """fluid.waves.StillWater: zero elevation, velocity and orbits; its wavenumber satisfies
+    the dispersion relation w^2 = g k tanh(k d) at the period given."""
+    from fluid.waves import SeaError, StillWater
+
+    s = StillWater(3.54, 6.0, level=6.0)
+    w, k = 2.0 * math.pi / 3.54, 2.0 * math.pi / s.wavelength
+    assert w * w == pytest.approx(9.81 * k * math.tanh(6.0 * k), rel=1e-10)
+    x = np.array([0.0, 3.0, 9.0])
+    assert not np.any(s.elevation(x, 0.0, 2.0))
+    assert not np.any(s.velocity(x, 0.0, np.full(3, 4.0), 2.0))
+    assert not np.any(s.displacement(x, np.zeros(3), np.full(3, 4.0), 2.0)[0])
+    with pytest.raises(SeaError, match="period"):
+        StillWater(0.0, 6.0)
