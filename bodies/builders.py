@@ -3,7 +3,9 @@
 Each builder returns one ``<body>`` element as a string; :func:`scene` wraps
 bodies into a model. 3-D bodies get a free joint. 2-D bodies (``planar=True``)
 live in the x-z plane: slide in x, slide in z, hinge about y, and are 1 m thick
-(y extent), so that per-metre loads from a 2-D fluid act on a 1 m slice.
+(y extent), so that per-metre loads from a 2-D fluid act on a 1 m slice. A body given
+``slide`` (an axis "x", "y" or "z") has one slide joint along it instead, named
+``NAME_slide``, to be driven (``MujocoBodies.drive``: a prescribed motion).
 Mass and inertia come from MuJoCo's own geometry (``density`` [kg/m^3]) unless a
 ``mass`` [kg] is given.
 """
@@ -28,14 +30,27 @@ def _check_positive(name: str, what: str, values) -> None:
             raise InputError(f"body '{name}': {what} must be finite and > 0, got {list(values)}")
 
 
-def _body(name, geom, pos, density, mass, planar, sites, euler) -> str:
+#: the world axis of each slide a prescribed body may have
+SLIDES = {"x": "1 0 0", "y": "0 1 0", "z": "0 0 1"}
+
+
+def slide_joint(name: str) -> str:
+    """The name of the slide joint of a body built with ``slide``."""
+    return f"{name}_slide"
+
+
+def _body(name, geom, pos, density, mass, planar, sites, euler, slide=None) -> str:
     if len(pos) != 3:
         raise InputError(f"body '{name}': pos must have 3 coordinates (x, y, z) [m], got {list(pos)}")
     if (density is None) == (mass is None):
         raise InputError(f"body '{name}': give exactly one of density [kg/m^3] or mass [kg]")
     _check_positive(name, "density" if mass is None else "mass", [density if mass is None else mass])
     inertial = f'density="{float(density)!r}"' if mass is None else f'mass="{float(mass)!r}"'
-    if planar:
+    if slide is not None:
+        if slide not in SLIDES or (planar and slide == "y"):
+            raise InputError(f"body '{name}': slide {slide!r}; give one of {sorted(SLIDES)} (a planar body: x or z)")
+        joints = f'<joint name="{slide_joint(name)}" type="slide" axis="{SLIDES[slide]}"/>'
+    elif planar:
         joints = (f'<joint name="{name}_x" type="slide" axis="1 0 0"/>'
                   f'<joint name="{name}_z" type="slide" axis="0 0 1"/>'
                   f'<joint name="{name}_ry" type="hinge" axis="0 1 0"/>')
@@ -51,7 +66,8 @@ def _body(name, geom, pos, density, mass, planar, sites, euler) -> str:
 
 
 def box(name: str, size: Vec, pos: Vec, *, density: float | None = None, mass: float | None = None,
-        planar: bool = False, sites: Mapping[str, Vec] | None = None, euler: Vec | None = None) -> str:
+        planar: bool = False, sites: Mapping[str, Vec] | None = None, euler: Vec | None = None,
+        slide: str | None = None) -> str:
     """A box body. ``size``: full edge lengths [m], (x, y, z) in 3-D or (x, z) for a
     planar body (1 m thick in y). ``sites``: named points in the body frame [m]
     (fairleads). ``euler``: initial orientation [deg] (planar bodies: turns the geom
@@ -65,26 +81,26 @@ def box(name: str, size: Vec, pos: Vec, *, density: float | None = None, mass: f
         raise InputError(f"body '{name}': a box takes size (x, y, z) [m], got {size}")
     _check_positive(name, "size", size)
     half = [0.5 * s for s in size]
-    return _body(name, f'type="box" size="{_fmt(half)}"', pos, density, mass, planar, sites, euler)
+    return _body(name, f'type="box" size="{_fmt(half)}"', pos, density, mass, planar, sites, euler, slide)
 
 
 def cylinder(name: str, radius: float, length: float, pos: Vec, *, density: float | None = None,
              mass: float | None = None, planar: bool = False, sites: Mapping[str, Vec] | None = None,
-             euler: Vec | None = None) -> str:
+             euler: Vec | None = None, slide: str | None = None) -> str:
     """A cylinder body of ``radius`` and ``length`` [m]. 3-D: axis along z (turn it
     with ``euler``). Planar: axis along y, i.e. a circle in the x-z plane, length 1 m."""
     if planar:
         length, euler = 1.0, (90.0, 0.0, 0.0) if euler is None else euler
     _check_positive(name, "radius and length", [radius, length])
     return _body(name, f'type="cylinder" size="{float(radius)!r} {0.5 * float(length)!r}"', pos, density, mass,
-                 planar, sites, euler)
+                 planar, sites, euler, slide)
 
 
 def sphere(name: str, radius: float, pos: Vec, *, density: float | None = None, mass: float | None = None,
-           sites: Mapping[str, Vec] | None = None) -> str:
+           sites: Mapping[str, Vec] | None = None, slide: str | None = None) -> str:
     """A sphere body of ``radius`` [m] (3-D only)."""
     _check_positive(name, "radius", [radius])
-    return _body(name, f'type="sphere" size="{float(radius)!r}"', pos, density, mass, False, sites, None)
+    return _body(name, f'type="sphere" size="{float(radius)!r}"', pos, density, mass, False, sites, None, slide)
 
 
 def scene(*bodies: str, gravity: float = 9.81, timestep: float = 1e-3, integrator: str = "RK4",

@@ -512,6 +512,51 @@ class RegularWave(Sea):
             out["p"] += r2 * a * a * w * w * ((0.75 * C2 - 0.25 * inv_sh2) * c2 - 0.5 * sh * sh)
 
 
+@dataclass(frozen=True)
+class StillWater(Sea):
+    """Still water ``depth`` [m] deep: no incident wave, one component of zero amplitude at
+    ``period`` [s], so that its kinematics are zero everywhere. The period is that of the
+    waves the bodies in it radiate (a forced-oscillation test): a near field sizes its
+    relaxation zones by it and relaxes at a rate in its frequency
+    (:func:`fluid.nearfield.choose_box`), as it does by a sea's peak period."""
+
+    period: float
+    depth: float
+    direction: float = 0.0
+    ramp: float = 0.0
+    source: float | None = None
+    level: float = 0.0
+    g: float = 9.81
+    k: float = field(default=math.nan, init=False, compare=False)  #: wavenumber at the period [rad/m]
+
+    owner = "still water"
+    height = 0.0
+
+    def __post_init__(self):
+        T = _number(self.owner, "period", self.period, "s", "the period of the waves the bodies radiate")
+        object.__setattr__(self, "period", T)
+        self._check_frame()
+        k = float(wavenumbers(2.0 * math.pi / T, self.depth, self.g))
+        object.__setattr__(self, "k", k)
+        object.__setattr__(self, "_comp", Components(np.array([2.0 * math.pi / T]), np.array([0.0]),
+                                                     np.array([0.0]), np.array([k])))
+
+    @property
+    def peak_period(self) -> float:
+        """The period [s] given."""
+        return self.period
+
+    @property
+    def shortest_period(self) -> float:
+        """The period [s] given (there is no variance to weigh)."""
+        return self.period
+
+    @property
+    def wavelength(self) -> float:
+        """The wavelength [m] at the period (linear dispersion)."""
+        return 2.0 * math.pi / self.k
+
+
 # ------------------------------------------------------------------------ irregular seas
 def _check_duration(owner, name, repeat: float, duration, how: str) -> None:
     if duration is not None and repeat < duration:

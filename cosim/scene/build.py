@@ -429,6 +429,28 @@ def _start_plates(scene, out: Built) -> None:
             out.warnings.append(buckling_warning(scene, i))
 
 
+def forced_drive(motion):
+    """A body's prescribed motion (:class:`cosim.scene.spec.ForcedMotion`) as the callable of
+    time that :meth:`bodies.mujoco_bodies.MujocoBodies.drive` takes: its slide's position
+    [m], velocity and acceleration, each ``(1,)``."""
+    signal = motion.signal()
+
+    def drive(t):
+        return tuple(np.array([x]) for x in signal.state(t))
+
+    return drive
+
+
+def _drive_forced(scene, out: Built) -> None:
+    """The bodies given a ``motion``: their one slide (:func:`bodies.builders.slide_joint`)
+    driven by it."""
+    from bodies.builders import slide_joint
+
+    for b in scene.bodies:
+        if getattr(b, "motion", None) is not None:
+            out.bodies.drive([slide_joint(b.name)], forced_drive(b.motion))
+
+
 def _warn_tilted_water(scene, out: Built) -> None:
     """Under a tilted gravity the SPH water starts as the domain lays it, level, with the
     hydrostatic pressure of gravity's -z component; that is not at rest under the tilted
@@ -555,6 +577,7 @@ def build(scene, workdir: Path) -> Built:
         out.bodies, out.start_heights = _bodies(scene, level, rho, out.warnings)
         out.plates = plates(scene)
         _start_plates(scene, out)
+        _drive_forced(scene, out)
         _warn_mjcf_world(scene, out)
     _warn_tilted_water(scene, out)
     _warn_partial_row(scene, out)

@@ -27,7 +27,7 @@ from cosim.scene.shapes import corners as _corners
 from cosim.scene.shapes import hull as _hull
 from cosim.scene.shapes import rotation as _rotation
 from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, CylinderTank, Earthquake, Flap, Flume, ArchRib,
-                              ElasticPlate, GroundMotion, InclinedTank, IrregularWaves, NearField, NoFluid,
+                              ElasticPlate, GroundMotion, InclinedTank, IrregularWaves, NearField, NoFluid, StillWaves,
                               PaddleRecord, Piston, PolygonTank, Potential, RegularWaves, Roll, TableMotion, Tank)
 
 #: the fluids whose free surface is a plane (with an incident sea on it), not particles
@@ -85,6 +85,7 @@ def check_scene(s) -> None:
     plausible.check_bodies(s, dim)
     plausible.check_excitations(s, dim)
     _check_moorings(s, dim, mj)
+    _check_forced(s, dim)
     plausible.check_lines(s, dim, mj)
     _check_probes(s, dim, mj)
     if isinstance(s.fluid, Potential):
@@ -413,6 +414,47 @@ def _check_bodies(s, dim):
     return mj
 
 
+def _check_forced(s, dim) -> None:
+    """A body with a prescribed ``motion`` stands at a given pos, on no mooring line (it is
+    held by its motion: a line would pull on nothing), in a fluid with particles or the
+    analytic one (the potential fluid's bodies are free in six degrees of freedom), along
+    an axis of the scene (no sway in 2-D, nor across a symmetry plane); heaving through the
+    surface, its amplitude is below its draft (its keel stays in the water: a linear
+    forced-oscillation test)."""
+    from cosim.scene.build import water_level
+
+    lines = s.moorings.lines if s.moorings is not None else ()
+    for i, b in enumerate(s.bodies):
+        m = getattr(b, "motion", None)
+        if m is None:
+            continue
+        key = f"bodies[{i}]"
+        if b.place == "floating":
+            raise SceneError(f"{key}.place", f"\"floating\": body {b.name!r} has a prescribed motion about the "
+                             f"pos it is given; give place = \"given\" with a full pos")
+        if isinstance(s.fluid, Potential):
+            raise SceneError(f"{key}.motion", "the potential fluid's bodies are free (the Cummins equation in six "
+                             "degrees of freedom); force a body in the SPH or analytic fluid, or leave motion out")
+        if m.dof == "sway" and (dim == 2 or (isinstance(s.domain, NearField) and s.domain.symmetry)):
+            raise SceneError(f"{key}.motion.dof", "\"sway\" moves the body along y: " +
+                             ("a 2-D scene is the x-z plane; give surge or heave" if dim == 2 else
+                              "the scene would not stay symmetric about y = 0; give surge or heave, or leave "
+                              "domain.symmetry out"))
+        for k, ln in enumerate(lines):
+            if ln.fairlead.split(".")[0] == b.name:
+                raise SceneError(f"{key}.motion", f"body {b.name!r} is held on its prescribed motion, but "
+                                 f"moorings.lines[{k}] ends on it ({ln.fairlead}) and would pull on nothing; "
+                                 f"leave the line out, or the motion to let the body float on its lines")
+        level = water_level(s)
+        if m.dof == "heave" and level is not None:
+            bottom = b.pos[-1] - b.extent(dim)[-1]
+            draft = level - bottom
+            if 0.0 < draft < 2.0 * b.extent(dim)[-1] and m.amplitude >= draft:
+                raise SceneError(f"{key}.motion.amplitude", f"{m.amplitude:g} m is not below the body's draft "
+                                 f"{draft:.4g} m: its keel would leave the water at the top of each stroke; give "
+                                 f"an amplitude below {draft:.4g} m (a fraction of it for a linear test)")
+
+
 def _check_plate(s, dim, b, key) -> None:
     """An elastic plate: its base in the scene's dimension, a width in 3-D only, its foot on
     the tank's floor, at least two boundary particles across it (or the thin-wall columns)."""
@@ -474,9 +516,10 @@ def _check_near_field(s, dim):
     """A near field sits in an incident sea, a width only in 3-D, nothing moving it as a
     whole, no wall-pressure patches on its moving walls."""
     d = s.domain
-    if not isinstance(s.waves, (RegularWaves, IrregularWaves, LinearWaves)):
+    if not isinstance(s.waves, (RegularWaves, IrregularWaves, LinearWaves, StillWaves)):
         raise SceneError("waves", "a near field sits in an incident sea: give waves of kind \"regular\" or "
-                         "\"irregular\" (their depth the domain's)")
+                         "\"irregular\" (their depth the domain's), or \"still\" (still water, for bodies forced "
+                         "to move in it)")
     if dim == 2:
         for key in ("width", "symmetry"):
             if getattr(d, key) not in (None, False):

@@ -85,11 +85,14 @@ def box_for(scene):
 def reach(scene) -> float:
     """How far [m] the near field allows its bodies to move from their places: the sea's
     orbit amplitude at the surface (the sum of its components' ``a / tanh(k d)``, linear
-    theory's horizontal semi-axis at z = 0), doubled for the slow drift; 0 without bodies."""
+    theory's horizontal semi-axis at z = 0), doubled for the slow drift, or a forced body's
+    horizontal amplitude (``motion``, surge or sway) if larger; 0 without bodies."""
     from cosim.scene.build import incident_sea
 
     if not scene.bodies:
         return 0.0
     sea = incident_sea(scene)
     c = sea.components
-    return 2.0 * float((c.amplitude / np.tanh(c.k * sea.depth)).sum())
+    forced = [b.motion.amplitude for b in scene.bodies
+              if getattr(b, "motion", None) is not None and b.motion.dof != "heave"]
+    return max([2.0 * float((c.amplitude / np.tanh(c.k * sea.depth)).sum())] + forced)

@@ -202,7 +202,8 @@ class RigidBody(Shape):
         raise NotImplementedError(f"{type(self).__name__}.mjcf")
 
     def _common(self, sites) -> dict:
-        return dict(density=self.density, mass=self.mass, sites=sites)
+        motion = getattr(self, "motion", None)  # a forced body: one slide joint, driven (cosim.scene.build)
+        return dict(density=self.density, mass=self.mass, sites=sites, slide=None if motion is None else motion.axis)
 
 
 class BoxShape(RigidBody):

@@ -658,7 +658,29 @@ class IrregularWaves(seas.IncidentSea):
         return irregular_sea(scene)
 
 
-WAVES = (Piston, Flap, PaddleRecord, LinearWaves, RegularWaves, IrregularWaves)
+@dataclass(frozen=True)
+class StillWaves(seas.IncidentSea):
+    """Still water ``depth`` [m] deep, no incident wave (``fluid.waves.StillWater``): for
+    bodies forced to move in it (``bodies[].motion``), whose radiated waves have the
+    ``period`` [s] given; an SPH near field (``domain.kind = "nearfield"``) sizes its
+    relaxation zones and their rate by it, as by a sea's peak period."""
+
+    TAG = ("kind", "still")
+    kind: str = tag("still")
+    period: float = required(num(None, "period of the waves the bodies radiate (a forced body's motion period)",
+                                 "s", lo=0, lo_open=True, optional=False))
+    depth: float = required(num(None, "still-water depth over the seabed", "m", lo=0, lo_open=True, optional=False))
+    direction: float = num(0.0, "heading (a near field's: 0, its end walls across x)", "deg")
+
+    def sea(self, scene):
+        """``fluid.waves.StillWater``."""
+        from cosim.scene.build import _frame
+        from fluid import waves as fw
+
+        return fw.StillWater(self.period, self.depth, **_frame(scene))
+
+
+WAVES = (Piston, Flap, PaddleRecord, LinearWaves, RegularWaves, IrregularWaves, StillWaves)
 
 
 @dataclass(frozen=True)
@@ -773,10 +795,42 @@ BASE_MOTIONS = (Shake, Roll, TableMotion, Earthquake, GroundMotion)
 
 
 # ------------------------------------------------------------------------ bodies
+@dataclass(frozen=True)
+class ForcedMotion(Spec):
+    """A rigid body's prescribed harmonic motion along one axis, a forced-oscillation test
+    (radiation: the fluid's load gives added mass and damping): its centre at ``pos`` plus
+    ``amplitude w(t) sin(2 pi t / period)`` along x (``dof = "surge"``), y (``"sway"``, 3-D)
+    or z (``"heave"``), ``w`` a half-cosine window rising over ``ramp`` periods from rest
+    (:class:`fluid.motion.Ramped`). The body has that one slide and no other freedom, driven
+    (:meth:`bodies.mujoco_bodies.MujocoBodies.drive`): what the fluid does to it moves
+    nothing and is recorded (``probes.loads``)."""
+
+    TAG = ("kind", "harmonic")
+    kind: str = tag("harmonic")
+    amplitude: float = required(num(None, "displacement amplitude", "m", lo=0, lo_open=True, optional=False))
+    period: float = required(num(None, "period", "s", lo=0, lo_open=True, optional=False))
+    dof: str = choice("heave", "the axis of the motion: surge (x), sway (y, 3-D) or heave (z)",
+                      ("surge", "sway", "heave"))
+    ramp: float = num(2.0, "periods over which the amplitude fades in (0: none)", lo=0)
+
+    @property
+    def axis(self) -> str:
+        """The world axis of the motion, "x", "y" or "z"."""
+        return {"surge": "x", "sway": "y", "heave": "z"}[self.dof]
+
+    def signal(self):
+        """The displacement [m] as a :class:`fluid.motion.Signal` (value, rate, acceleration)."""
+        from fluid.motion import Harmonic, Ramped
+
+        sig = Harmonic(self.amplitude, self.period)
+        return Ramped(sig, self.ramp * self.period) if self.ramp > 0 else sig
+
+
 _BODY_COMMON = """``pos`` is the centre [m] ((x, z) in 2-D, (x, y, z) in 3-D); with ``place =
 "floating"`` give the horizontal position only ((x,) or (x, y)): the height is the
 hydrostatic equilibrium with the moorings' pull. ``fairleads``: named points in the body
-frame [m], referred to by lines as ``"BODY.NAME"``. Give ``density`` or ``mass``."""
+frame [m], referred to by lines as ``"BODY.NAME"``. Give ``density`` or ``mass``. ``motion``:
+a prescribed harmonic motion instead of a free body (:class:`ForcedMotion`)."""
 
 
 @dataclass(frozen=True)
@@ -793,6 +847,7 @@ class Box(shapes.BoxShape):
     place: str = choice("given", "given: at pos; floating: at its hydrostatic equilibrium", ("given", "floating"))
     euler: tuple = vec(None, "initial orientation (Euler angles)", "deg", sizes=(3,))
     fairleads: dict = table("named points in the body frame", "m")
+    motion: ForcedMotion = part(None, "a prescribed harmonic motion (unset: a free body)", ForcedMotion)
 
     def validate(self):
         super().validate()
@@ -816,6 +871,7 @@ class Cylinder(shapes.CylinderShape):
     place: str = choice("given", "given: at pos; floating: at its hydrostatic equilibrium", ("given", "floating"))
     euler: tuple = vec(None, "initial orientation (Euler angles)", "deg", sizes=(3,))
     fairleads: dict = table("named points in the body frame", "m")
+    motion: ForcedMotion = part(None, "a prescribed harmonic motion (unset: a free body)", ForcedMotion)
 
 
 @dataclass(frozen=True)
@@ -832,6 +888,7 @@ class Sphere(shapes.SphereShape):
     place: str = choice("given", "given: at pos; floating: at its hydrostatic equilibrium", ("given", "floating"))
     euler: tuple = vec(None, "initial orientation (Euler angles)", "deg", sizes=(3,))
     fairleads: dict = table("named points in the body frame", "m")
+    motion: ForcedMotion = part(None, "a prescribed harmonic motion (unset: a free body)", ForcedMotion)
 
 
 @dataclass(frozen=True)
@@ -1109,9 +1166,9 @@ class Scene(Spec):
 
 __all__ = ["World", "NoFluid", "Analytic", "Potential", "SPH", "Block", "Tank", "Beach", "Flume", "InclinedTank",
            "CylinderTank", "PolygonTank", "ArchRib", "NearField", "arch_rib_monitors", "Piston", "Flap", "PaddleRecord",
-           "LinearWaves", "RegularWaves", "IrregularWaves",
+           "LinearWaves", "RegularWaves", "IrregularWaves", "StillWaves",
            "Shake", "Roll", "TableMotion",
            "Earthquake", "Record", "GroundMotion", "Box", "Cylinder", "Sphere", "MJCF", "ElasticPlate", "Line",
-           "Moorings", "Patch",
+           "Moorings", "Patch", "ForcedMotion",
            "Probes", "Coupling",
            "Scene", "SceneError", "SETUPS"]

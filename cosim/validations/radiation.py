@@ -1,0 +1,180 @@
+"""A body forced in heave in still water inside the SPH near field (:mod:`fluid.nearfield`):
+what it radiates must leave the box, and the fluid's force on it must carry the added mass
+and radiation damping of linear potential flow.
+
+- The force: the prescribed heave ``z = a sin(w t)`` (after its ramp) and the fluid's
+  vertical force ``F(t)`` on the body; linear theory gives ``F = F0 - C z - A33 z'' -
+  B33 z'`` (Newman 1977, Marine Hydrodynamics §6.16-6.17, Eq. 6.169 with the body's
+  motion prescribed), ``C = rho g Awp`` the hydrostatic restoring. With ``F``'s first
+  harmonic ``F1 = Fs sin(w t) + Fc cos(w t)`` (least squares over whole periods,
+  :func:`cosim.validations.wave_propagation.harmonics`): the part in phase with the
+  displacement ``Fs = -(C - A33 w^2) a`` and that in phase with the velocity
+  ``Fc = -B33 w a`` (:func:`added_mass_damping`). ``C`` is the linear hydrostatics' of
+  the hull (Capytaine's), so whatever SPH makes of the restoring force shows in ``A33``.
+- The reflection: the first-harmonic elevation at gauges on a line out from the body is
+  split by least squares into an outgoing and an incoming wave, the method of Goda &
+  Suzuki (1976, Proc. 15th ICCE, two gauges, exactly determined) and Mansard & Funke
+  (1980, Proc. 17th ICCE, three or more, least squares), with the waves of a plane
+  problem ``exp(-+ i k x)`` or, round a body in the open, the cylindrical ones
+  ``H0^(2)(k r)`` (outgoing) and ``H0^(1)(k r)`` (incoming) of the axisymmetric problem
+  (Newman 1977 §6.18; time factor ``exp(i w t)``): the reflection coefficient is the ratio
+  of their amplitudes (:func:`separate`).
+- The reference: Capytaine's A33(w), B33(w) of the same truncated cylinder at the same
+  depth (``fluid.potential.compute``, cached), and the outgoing wave that B33 implies by
+  the energy flux, ``|A_out| = a w sqrt(B33 k / (4 rho g c_g))`` (the far field
+  ``A_out H0^(2)(k r)`` carries ``2 rho g |A_out|^2 c_g / k`` [W], which the body's
+  ``B33 w^2 a^2 / 2`` feeds: Newman 1977 §6.18), reported beside the gauges' amplitude.
+"""
+
+from __future__ import annotations
+
+import math
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+from cosim.validations.registry import case
+from cosim.validations.wave_propagation import harmonics
+
+#: the case's scene (quick variant: its file's spacing)
+SCENE = Path(__file__).with_name("scenes") / "nearfield-radiation.toml"
+#: each variant's spacing [m] (quick: True; R/dx = 4 and 6) and the periods run after the ramp
+RUNS = {True: 0.75, False: 0.5}
+PERIODS_AFTER_RAMP, FIT_PERIODS = 3, 2
+#: targets: reflection below 10 %, A33 and B33 within 10 % of the boundary-element reference
+REFLECTION_TOL, COEFFICIENT_TOL = 0.10, 0.10
+#: the quick variant's own (R/dx = 4, two particles across the draft)
+QUICK_REFLECTION_TOL, QUICK_COEFFICIENT_TOL = 0.20, 0.25
+#: panel size of the reference, in radii
+PANEL = 0.1
+
+
+def separate(x, z, k: float, geometry: str = "plane") -> tuple[complex, complex]:
+    """The outgoing and incoming complex amplitudes ``(A, B)`` [m] of a wave of wavenumber
+    ``k`` [rad/m] from its first-harmonic complex elevations ``z`` [m] (``eta =
+    Re(z exp(i w t))``) at positions ``x`` [m] along its line of travel (at least two, not
+    half a wavelength apart): ``z = A f(k x) + B g(k x)`` by least squares (Goda & Suzuki
+    1976 with two, Mansard & Funke 1980 with more), ``f, g = exp(-i k x), exp(i k x)``
+    (``geometry = "plane"``, the outgoing wave travelling towards +x) or ``H0^(2)(k r),
+    H0^(1)(k r)`` (``"cylindrical"``: ``x`` the distances r > 0 from the axis). The
+    reflection coefficient is ``|B| / |A|``."""
+    from scipy.special import hankel1, hankel2
+
+    from errors import InputError
+
+    x = np.asarray(x, float)
+    z = np.asarray(z, complex)
+    if x.ndim != 1 or x.shape != z.shape or len(x) < 2:
+        raise InputError(f"wave separation: give at least two positions and as many elevations, got {x.shape} and "
+                         f"{z.shape}")
+    if geometry == "plane":
+        basis = np.stack([np.exp(-1j * k * x), np.exp(1j * k * x)], axis=1)
+    elif geometry == "cylindrical":
+        if np.any(x <= 0):
+            raise InputError(f"wave separation: cylindrical waves need distances r > 0 from the axis, got {x}")
+        basis = np.stack([hankel2(0, k * x), hankel1(0, k * x)], axis=1)
+    else:
+        raise InputError(f"wave separation: geometry {geometry!r}; give 'plane' or 'cylindrical'")
+    if np.linalg.cond(basis) > 1e6:
+        raise InputError(f"wave separation: the gauges at {x} m do not tell the two waves apart (spaced by a whole "
+                         f"number of half wavelengths {math.pi / k:.4g} m); space them otherwise")
+    a, b = np.linalg.lstsq(basis, z, rcond=None)[0]
+    return complex(a), complex(b)
+
+
+def added_mass_damping(ts, force, amplitude: float, omega: float, stiffness: float) -> tuple[float, float]:
+    """``(A33, B33)`` [kg, kg/s] from the vertical fluid force ``force`` [N] at times ``ts``
+    [s] on a body heaving as ``amplitude sin(omega t)`` [m], its restoring ``stiffness``
+    [N/m] (module docstring: ``Fs = -(C - A w^2) a``, ``Fc = -B w a``)."""
+    f1 = harmonics(np.asarray(ts, float), np.asarray(force, float)[:, None], omega)[0]
+    fc, fs = f1.real, -f1.imag  # Re(f1 exp(i w t)) = fc cos + fs sin
+    return float((fs / amplitude + stiffness) / omega**2), float(-fc / (amplitude * omega))
+
+
+def reference(radius: float, draft: float, depth: float, omega: float, rho: float, g: float, cache=None):
+    """Capytaine's ``(A33, B33, C33)`` of an upright cylinder of ``radius`` [m] drawing
+    ``draft`` [m] in water ``depth`` [m] deep at ``omega`` [rad/s] (panels ``PANEL``
+    radii across; solved at 0.9, 1 and 1.1 omega, cached)."""
+    from fluid.potential import compute, wetted_hull
+
+    hull = wetted_hull("cylinder", [radius, draft], np.eye(3), [0.0, 0.0, 0.0], PANEL * radius, name="cylinder")
+    c = compute(hull, 0.0, omega=omega * np.array([0.9, 1.0, 1.1]), depth=depth, rho=rho, g=g, cache=cache,
+                name="radiation-cylinder")
+    return float(c.added_mass[1, 2, 2]), float(c.damping[1, 2, 2]), float(c.stiffness[2, 2])
+
+
+def radiation_scene(quick: bool):
+    """The case's scene at the variant's spacing, run for the ramp and
+    :data:`PERIODS_AFTER_RAMP` periods."""
+    from cosim.scene import Scene
+
+    s = Scene.from_toml(SCENE)
+    m = s.bodies[0].motion
+    duration = (m.ramp + PERIODS_AFTER_RAMP) * m.period
+    return s.with_values([f"fluid.dx={RUNS[quick]}", f"world.duration={duration:.6g}"])
+
+
+def _lines(scene) -> dict:
+    """The gauges' indices on each line out from the body (along x, along y) and their
+    distances r [m] from its axis."""
+    c = scene.bodies[0].pos
+    pts = np.asarray(scene.probes.gauges, float)
+    r = np.hypot(pts[:, 0] - c[0], pts[:, 1] - c[1])
+    along_x = np.abs(pts[:, 0] - c[0]) > np.abs(pts[:, 1] - c[1])
+    return {"x": (np.flatnonzero(along_x), r[along_x]), "y": (np.flatnonzero(~along_x), r[~along_x])}
+
+
+def radiation_metrics(res, scene) -> dict:
+    """The case's measured figures from a run's records ``res`` of ``scene``."""
+    from fluid.waves import group_velocity, wavenumbers
+
+    b, d = scene.bodies[0], scene.domain
+    m, g, rho = b.motion, scene.world.gravity, scene.fluid.rho0
+    w = 2.0 * math.pi / m.period
+    k = float(wavenumbers(w, d.depth, g))
+    draft = d.depth - (b.pos[-1] - 0.5 * b.length)
+    a_ref, b_ref, c33 = reference(b.radius, draft, d.depth, w, rho, g)
+    t_end = float(res.t[-1])
+    fit = res.t > t_end - FIT_PERIODS * m.period - 1e-9
+    ts = res.t[fit]
+    z1 = harmonics(ts, res[f"{b.name}.heave"][fit][:, None], w)[0]
+    a33, b33 = added_mass_damping(ts, res[f"{b.name}.fluid_Fz"][fit], m.amplitude, w, c33)
+    eta = np.column_stack([res[f"gauge{i + 1}.eta"][fit] for i in range(len(scene.probes.gauges))])
+    z = harmonics(ts, eta, w)
+    theory = m.amplitude * w * math.sqrt(b_ref * k / (4.0 * rho * g * float(group_velocity(k, d.depth, g))))
+    lines = {}
+    for name, (idx, r) in _lines(scene).items():
+        out, back = separate(r, z[idx], k, "cylindrical")
+        lines[name] = {"r_m": np.round(r, 4).tolist(), "reflection": abs(back) / abs(out),
+                       "outgoing_over_theory": abs(out) / theory, "H1_m": np.round(2.0 * np.abs(z[idx]), 5).tolist()}
+    s = res.summary
+    return {"A33_kg": a33, "B33_kg_s": b33, "A33_ref_kg": a_ref, "B33_ref_kg_s": b_ref, "C33_N_m": c33,
+            "A33_error": abs(a33 / a_ref - 1.0), "B33_error": abs(b33 / b_ref - 1.0),
+            "reflection": max(v["reflection"] for v in lines.values()), "lines": lines,
+            "heave_amplitude_m": abs(z1), "kR": k * b.radius, "R_over_dx": b.radius / scene.fluid.dx,
+            "draft_over_dx": draft / scene.fluid.dx, "fit_s": [float(ts[0]), t_end],
+            "particles": s.get("particles"), "steps": s["steps"], "cpu_s": s["cpu_s"]}
+
+
+@case("nearfield-radiation", "a vertical truncated cylinder (R = 3 m, draft 1.5 m, 6 m of water) forced in heave "
+      "(0.3 m, T = 3.54 s, k R = 1) in still water in a 3-D SPH near field (half box, symmetry plane y = 0): the "
+      "radiated wave's reflection from the zones and the added mass and damping against Capytaine",
+      target="the radiated wave leaves the box with a reflection below 10 %; added mass and damping from the force's "
+             "first harmonic within 10 % of the boundary-element reference",
+      quick=f"R/dx = 4 (two particles across the draft), the ramp and {PERIODS_AFTER_RAMP} periods: reflection below "
+            f"{QUICK_REFLECTION_TOL:.0%}, A33 and B33 within {QUICK_COEFFICIENT_TOL:.0%} of Capytaine's",
+      scene=radiation_scene)
+def nearfield_radiation(quick: bool) -> dict:
+    """The scene ``SCENE`` at the variant's spacing (quick R/dx = 4, full R/dx = 6), judged
+    over its last :data:`FIT_PERIODS` periods (module docstring)."""
+    scene = radiation_scene(quick)
+    with tempfile.TemporaryDirectory(prefix="nearfield_radiation_") as tmp:
+        res = scene.run(Path(tmp) / "run", progress=False)
+        m = radiation_metrics(res, scene)
+    tol = ((QUICK_REFLECTION_TOL, QUICK_COEFFICIENT_TOL) if quick else (REFLECTION_TOL, COEFFICIENT_TOL))
+    return {"metrics": m,
+            "tolerances": {"reflection": tol[0], "A33_error": tol[1], "B33_error": tol[1]},
+            "stated_tolerances": ({"reflection": REFLECTION_TOL, "A33_error": COEFFICIENT_TOL,
+                                   "B33_error": COEFFICIENT_TOL} if quick else None),
+            "particles": m["particles"], "steps": m["steps"], "cpu_s": m["cpu_s"]}

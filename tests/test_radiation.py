@@ -1,0 +1,141 @@
+"""The radiation case's pieces (cosim.validations.radiation) and a body's prescribed motion
+(``bodies[].motion``): the wave separation against synthetic incident and reflected waves
+of known amplitudes, the added mass and damping against a synthetic force of known
+coefficients, a forced body following its motion exactly, and the quick case against its
+own tolerances."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy.special import j0, y0
+
+from cosim.errors import InputError
+from cosim.validations.radiation import added_mass_damping, separate
+
+K = 2.0 * math.pi / 7.3  # a wave 7.3 m long
+A_OUT, B_IN = 0.021 * np.exp(0.4j), 0.0042 * np.exp(-1.9j)  # reflection 0.2
+
+
+def plane(x):
+    """Incident A exp(i(w t - k x)) and reflected B exp(i(w t + k x)), as complex elevations."""
+    return A_OUT * np.exp(-1j * K * x) + B_IN * np.exp(1j * K * x)
+
+
+def test_two_gauges_recover_a_plane_incident_and_reflected_wave_exactly():
+    """Goda & Suzuki 1976: two gauges determine both waves exactly."""
+    x = np.array([2.0, 3.1])
+    a, b = separate(x, plane(x), K)
+    assert abs(a - A_OUT) < 1e-12 and abs(b - B_IN) < 1e-12
+    assert abs(b) / abs(a) == pytest.approx(0.2, rel=1e-10)
+
+
+def test_three_noisy_gauges_recover_the_reflection_by_least_squares():
+    """Mansard & Funke 1980: with noise of 1 % of the incident amplitude at each gauge the
+    reflection coefficient comes out within 0.02 of 0.2."""
+    x = np.array([2.0, 3.1, 4.5])
+    noise = 0.01 * abs(A_OUT) * np.exp(1j * np.array([0.3, 2.9, 4.4]))
+    a, b = separate(x, plane(x) + noise, K)
+    assert abs(abs(b) / abs(a) - 0.2) < 0.02
+
+
+def test_cylindrical_waves_separate_with_hankel_functions():
+    """Outgoing A H0^(2)(k r) and incoming B H0^(1)(k r) (built here from J0 and Y0) come
+    apart exactly; a plane-wave separation of the same gauges would misread the 1/sqrt(r)
+    decay as reflection."""
+    r = np.array([4.5, 6.0, 7.5, 9.0])
+    z = A_OUT * (j0(K * r) - 1j * y0(K * r)) + B_IN * (j0(K * r) + 1j * y0(K * r))
+    a, b = separate(r, z, K, "cylindrical")
+    assert abs(a - A_OUT) < 1e-12 and abs(b - B_IN) < 1e-12
+    outgoing = A_OUT * (j0(K * r) - 1j * y0(K * r))
+    a, b = separate(r, outgoing, K, "plane")
+    assert abs(b) / abs(a) > 0.02
+
+
+def test_gauges_half_a_wavelength_apart_are_refused():
+    x = np.array([1.0, 1.0 + math.pi / K])
+    with pytest.raises(InputError, match="do not tell the two waves apart"):
+        separate(x, plane(x), K)
+    with pytest.raises(InputError, match="at least two"):
+        separate([1.0], [0.01], K)
+    with pytest.raises(InputError, match="r > 0"):
+        separate([0.0, 1.0], [0.01, 0.01], K, "cylindrical")
+
+
+def test_added_mass_and_damping_from_a_synthetic_force():
+    """F = F0 - C z - A z'' - B z' (+ a second harmonic) for z = a sin(w t) over whole
+    periods gives A and B back to round-off."""
+    a, w, C, A, B = 0.3, 1.7755, 2.77e5, 4.16e4, 2.39e4
+    t = np.linspace(0.0, 2.0 * 2.0 * math.pi / w, 400, endpoint=False)
+    z, v, acc = a * np.sin(w * t), a * w * np.cos(w * t), -a * w * w * np.sin(w * t)
+    f = 4.5e5 - C * z - A * acc - B * v + 3e3 * np.cos(2 * w * t + 0.7)
+    got_a, got_b = added_mass_damping(t, f, a, w, C)
+    assert got_a == pytest.approx(A, rel=1e-9) and got_b == pytest.approx(B, rel=1e-9)
+
+
+FORCED = """
+name = "forced"
+[world]
+dim = 2
+duration = 2.0
+sample_every = 0.05
+[fluid]
+model = "analytic"
+[[bodies]]
+shape = "box"
+name = "box"
+size = [2.0, 1.0]
+pos = [0.0, 0.0]
+density = 500.0
+motion = { kind = "harmonic", amplitude = 0.2, period = 1.0, ramp = 1.0 }
+[probes]
+tensions = false
+"""
+
+
+def test_a_forced_body_follows_its_motion_whatever_the_fluid_does(tmp_path):
+    """A box forced in heave by 0.2 m at 1 s, faded in over one period, in the analytic
+    fluid whose buoyancy changes by rho g B z (19.6 kN per metre of heave): its heave is
+    0.2 w(t) sin(2 pi t) at every sample (w the half-cosine window), its surge and pitch
+    stay 0, and the fluid's force is recorded."""
+    from cosim.scene import Scene
+
+    path = tmp_path / "forced.toml"
+    path.write_text(FORCED)
+    res = Scene.from_toml(path).run(tmp_path / "out", progress=False)
+    t = res.t
+    window = np.where(t < 1.0, 0.5 * (1.0 - np.cos(math.pi * t)), 1.0)
+    assert np.abs(res["box.heave"] - 0.2 * window * np.sin(2.0 * math.pi * t)).max() < 1e-9
+    assert np.abs(res["box.surge"]).max() == 0.0 and np.abs(res["box.pitch"]).max() == 0.0
+    f = res["box.fluid_Fz"]
+    assert f[0] == pytest.approx(1000.0 * 9.81 * 1.0, rel=1e-9)  # half the 2 x 1 m box under the level
+    assert f.max() - f.min() > 0.5 * 1000.0 * 9.81 * 2.0 * 0.4  # the buoyancy swings with the heave
+
+
+@pytest.mark.slow
+def test_quick_case_meets_its_own_tolerances():
+    """cosim validate nearfield-radiation --quick (R/dx = 4; several CPU-minutes)."""
+    from cosim.validations.radiation import nearfield_radiation
+
+    out = nearfield_radiation(True)
+    m, tol = out["metrics"], out["tolerances"]
+    for key, limit in tol.items():
+        assert m[key] <= limit, (key, m[key], limit)
+
+
+def test_still_water_has_no_motion_and_the_radiated_wavelength():
+    """fluid.waves.StillWater: zero elevation, velocity and orbits; its wavenumber satisfies
+    the dispersion relation w^2 = g k tanh(k d) at the period given."""
+    from fluid.waves import SeaError, StillWater
+
+    s = StillWater(3.54, 6.0, level=6.0)
+    w, k = 2.0 * math.pi / 3.54, 2.0 * math.pi / s.wavelength
+    assert w * w == pytest.approx(9.81 * k * math.tanh(6.0 * k), rel=1e-10)
+    x = np.array([0.0, 3.0, 9.0])
+    assert not np.any(s.elevation(x, 0.0, 2.0))
+    assert not np.any(s.velocity(x, 0.0, np.full(3, 4.0), 2.0))
+    assert not np.any(s.displacement(x, np.zeros(3), np.full(3, 4.0), 2.0)[0])
+    with pytest.raises(SeaError, match="period"):
+        StillWater(0.0, 6.0)
