@@ -43,6 +43,7 @@ import numpy as np
 from numba import njit, prange
 
 from errors import InputError
+from fluid import terms
 from fluid.kernels import alpha_d, grad_factor, kernel_id, w_value
 from fluid.neighbours import cell_coords, row_range
 
@@ -53,35 +54,8 @@ _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 DET_MIN = 1e-3
 
 
-@njit(**_OPTS)
-def _solve(A, b, n):
-    """Solve the n x n system ``A x = b`` in place (Gaussian elimination, partial
-    pivoting); returns the determinant (0 if singular; ``b`` then holds garbage)."""
-    det = 1.0
-    for k in range(n):
-        p = k
-        for r in range(k + 1, n):
-            if abs(A[r, k]) > abs(A[p, k]):
-                p = r
-        if A[p, k] == 0.0:
-            return 0.0
-        if p != k:
-            det = -det
-            for c in range(n):
-                A[k, c], A[p, c] = A[p, c], A[k, c]
-            b[k], b[p] = b[p], b[k]
-        det *= A[k, k]
-        for r in range(k + 1, n):
-            f = A[r, k] / A[k, k]
-            for c in range(k, n):
-                A[r, c] -= f * A[k, c]
-            b[r] -= f * b[k]
-    for k in range(n - 1, -1, -1):
-        s = b[k]
-        for c in range(k + 1, n):
-            s -= A[k, c] * b[c]
-        b[k] = s / A[k, k]
-    return det
+#: ``A x = b`` in place, returning det A (:func:`fluid.terms.solve_in_place`)
+_solve = terms.cpu.solve_in_place
 
 
 @njit(parallel=True, **_OPTS)

@@ -42,6 +42,7 @@ import math
 import numpy as np
 from numba import njit, prange
 
+from fluid import terms
 from fluid.kernels import w_value
 from fluid.neighbours import cell_coords, row_range
 
@@ -51,22 +52,8 @@ _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 MIN_SCALED_DET = 0.01
 
 
-@njit(**_OPTS)
-def _det4(m00, m01, m02, m03, m10, m11, m12, m13, m20, m21, m22, m23, m30, m31, m32, m33):
-    """Determinant of a 4 x 4 matrix by 2 x 2 minors (Laplace expansion on two rows)."""
-    s0 = m00 * m11 - m10 * m01
-    s1 = m00 * m12 - m10 * m02
-    s2 = m00 * m13 - m10 * m03
-    s3 = m01 * m12 - m11 * m02
-    s4 = m01 * m13 - m11 * m03
-    s5 = m02 * m13 - m12 * m03
-    c5 = m22 * m33 - m32 * m23
-    c4 = m21 * m33 - m31 * m23
-    c3 = m21 * m32 - m31 * m22
-    c2 = m20 * m33 - m30 * m23
-    c1 = m20 * m32 - m30 * m22
-    c0 = m20 * m31 - m30 * m21
-    return s0 * c5 - s1 * c4 + s2 * c3 + s3 * c2 - s4 * c1 + s5 * c0
+#: a 4 x 4 determinant (:func:`fluid.terms.det4`)
+_det4 = terms.cpu.det4
 
 
 @njit(parallel=True, **_OPTS)
