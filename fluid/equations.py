@@ -31,6 +31,9 @@ zero. ``r_ab = r_a - r_b``, ``v_ab = v_a - v_b``, ``grad_a W_ab = F_ab r_ab``.
   equation of state, prescribed motion; their "acceleration" is the fluid's force per unit
   mass on them, exactly minus what they exert on the fluid (every pair term is antisymmetric).
 
+Each formula is a function of :mod:`fluid.terms`, written once and compiled both for these
+loops (``terms.cpu``; ``tp`` in the pair loop) and for the GPU kernels; a new term is one
+function there, called from both (docs/fluid_equations.md, "The terms, written once").
 Why each choice (the diffusion variants, the surface fade, the wall viscosity, the XSPH
 sign), in full and with its measured effect: docs/fluid_equations.md.
 """

@@ -8,7 +8,9 @@ the two paths evaluate the same expressions; :func:`float32_variant` gives the C
 float32 pair loop the same code with float32 literals. A term takes what the loops share
 between terms (the kernel factor ``F_ab``, one division ``d = 1 / ((r^2 + eta^2)(rho_a +
 rho_b))``) as arguments, so that a pair costs what it did when the terms were written out
-in the loops; the pair loops and their notation: :mod:`fluid.equations`.
+in the loops; the pair loops and their notation: :mod:`fluid.equations`. Adding a term:
+docs/fluid_equations.md, "The terms, written once". After editing a term, delete the numba
+caches (``fluid/**/*.nbi``): a loop's cache is keyed on its own file, not on the terms it inlines.
 
 * Kernels: Wendland C2 (Wendland 1995) and the cubic spline (Monaghan & Lattanzio 1985),
   ``W = alpha_d w(q)``, ``grad_a W_ab = F r_ab``: :mod:`fluid.kernels`.

@@ -5,7 +5,8 @@ The formulas of the SPH terms (kernel, equation of state, the pair and particle 
 of the rates, the linear solves) are those of :mod:`fluid.terms`, compiled here as device
 functions (``tm``) from the same code the CPU loops compile; each kernel walks its
 neighbours and sums the terms in the CPU function's order, so that the two paths agree
-to round-off in float64:
+to round-off in float64. A new term is written there once and called here as
+``tm.term(...)`` (docs/fluid_equations.md, "The terms, written once"):
 
 * :func:`k_bin` is ``fluid.neighbours.bin_particles``; :func:`k_fill` and
   :func:`k_order` together are ``counting_sort`` followed by ``order_cells_by_x``:
