@@ -43,7 +43,7 @@ import numpy as np
 from numba import cuda
 
 from fluid import equations as eq
-from fluid import terms
+from fluid import neighbours, terms
 from fluid.wall_density import SW_MIN
 
 #: threads per block of every kernel
@@ -77,6 +77,10 @@ def launch(n: int) -> tuple:
 # ------------------------------------------------------------------ the terms of fluid.terms
 #: every term of :mod:`fluid.terms` as a device function: the kernels call ``tm.term(...)``
 tm = terms.compiled(cuda.jit(device=True), name="cuda")
+#: the cell walk of :mod:`fluid.neighbours` as device functions, from the CPU's code: a
+#: point's cell (clamped at the box) and the index range of a row of three cells
+cell_coords = cuda.jit(device=True)(neighbours.cell_coords.py_func)
+row_range = cuda.jit(device=True)(neighbours.row_range.py_func)
 
 
 @cuda.jit(device=True)
@@ -90,11 +94,6 @@ def d_first_at_or_above(P, j0, j1, x):
         else:
             j1 = m
     return j0
-
-
-@cuda.jit(device=True)
-def d_clamp_cell(v, lo, inv_cell, nmax):
-    return min(max(int((v - lo) * inv_cell), 0), nmax - 1)
 
 
 # ------------------------------------------------------------------ cell list
@@ -289,9 +288,7 @@ def make_pair_loop(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
                 gxa = G[0, a]
                 gya = G[1, a] if three else 0.0
                 gza = G[zc, a]
-            cx = d_clamp_cell(xa, lo[0], inv_cell, nx)
-            cz = d_clamp_cell(za, lo[2], inv_cell, nz)
-            cy = d_clamp_cell(ya, lo[1], inv_cell, ny) if three else 0
+            cx, cy, cz = cell_coords(xa, ya, za, lo, inv_cell, True, nx, ny, nz)
             sd = 0.0
             sdd = 0.0
             sx = 0.0
@@ -322,13 +319,7 @@ def make_pair_loop(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
                         ez2 = ez_lo if dz < 0 else ez_hi
                         if ey2 + ez2 >= R2:
                             continue
-                    yy = cy + dy
-                    zz = cz + dz
-                    if yy < 0 or yy >= ny or zz < 0 or zz >= nz:
-                        continue
-                    base = nx * (yy + ny * zz)
-                    j0 = start[base + max(cx - 1, 0)]
-                    j1 = start[base + min(cx + 1, nx - 1) + 1]
+                    j0, j1 = row_range(cx, cy, cz, dy, dz, nx, ny, nz, start, 1)
                     j0 = d_first_at_or_above(P, j0, j1, xa - 2.0 * h)
                     j1 = d_first_at_or_above(P, j0, j1, xa + 2.0 * h)
                     for b in range(j0, j1):
@@ -448,9 +439,7 @@ def make_gradient_loop(kernel: int, three: bool):
             ya = P[1, a] if three else 0.0
             za = P[zc, a]
             rhoa = rho[a]
-            cx = d_clamp_cell(xa, lo[0], inv_cell, nx)
-            cz = d_clamp_cell(za, lo[2], inv_cell, nz)
-            cy = d_clamp_cell(ya, lo[1], inv_cell, ny) if three else 0
+            cx, cy, cz = cell_coords(xa, ya, za, lo, inv_cell, True, nx, ny, nz)
             mxx = 0.0
             mxy = 0.0
             mxz = 0.0
@@ -464,13 +453,7 @@ def make_gradient_loop(kernel: int, three: bool):
             for dz in range(-1, 2):
                 for k in range(dys):
                     dy = k - 1 if three else 0
-                    yy = cy + dy
-                    zz = cz + dz
-                    if yy < 0 or yy >= ny or zz < 0 or zz >= nz:
-                        continue
-                    base = nx * (yy + ny * zz)
-                    j0 = start[base + max(cx - 1, 0)]
-                    j1 = start[base + min(cx + 1, nx - 1) + 1]
+                    j0, j1 = row_range(cx, cy, cz, dy, dz, nx, ny, nz, start, 1)
                     j0 = d_first_at_or_above(P, j0, j1, xa - 2.0 * h)
                     j1 = d_first_at_or_above(P, j0, j1, xa + 2.0 * h)
                     for b in range(j0, j1):
@@ -709,20 +692,12 @@ def k_adami(P, rho, kind, accw, has_acc, n, start, lo, inv_cell, nx, ny, nz, ker
             bz -= accw[zc, i]
         sw = 0.0
         sp = 0.0
-        cx = d_clamp_cell(xw, lo[0], inv_cell, nx)
-        cz = d_clamp_cell(zw, lo[2], inv_cell, nz)
-        cy = d_clamp_cell(yw, lo[1], inv_cell, ny) if three else 0
+        cx, cy, cz = cell_coords(xw, yw, zw, lo, inv_cell, True, nx, ny, nz)
         dys = 3 if three else 1
         for dz in range(-1, 2):
             for kk in range(dys):
                 dy = kk - 1 if three else 0
-                yy = cy + dy
-                zz = cz + dz
-                if yy < 0 or yy >= ny or zz < 0 or zz >= nz:
-                    continue
-                base = nx * (yy + ny * zz)
-                j0 = start[base + max(cx - 1, 0)]
-                j1 = start[base + min(cx + 1, nx - 1) + 1]
+                j0, j1 = row_range(cx, cy, cz, dy, dz, nx, ny, nz, start, 1)
                 for j in range(j0, j1):
                     if kind[j] != 0:
                         continue
@@ -788,20 +763,12 @@ def k_mdbc(P, rho, mass, kind, ids, goff, id_lo, n, start, lo, inv_cell, nx, ny,
             for k in range(4):
                 A[a, k] = 0.0
         col[0] = 1.0
-        cx = d_clamp_cell(gx, lo[0], inv_cell, nx)
-        cz = d_clamp_cell(gz, lo[2], inv_cell, nz)
-        cy = d_clamp_cell(gy, lo[1], inv_cell, ny) if three else 0
+        cx, cy, cz = cell_coords(gx, gy, gz, lo, inv_cell, True, nx, ny, nz)
         dys = 3 if three else 1
         for dz in range(-1, 2):
             for kk in range(dys):
                 dy = kk - 1 if three else 0
-                yy = cy + dy
-                zz = cz + dz
-                if yy < 0 or yy >= ny or zz < 0 or zz >= nz:
-                    continue
-                base = nx * (yy + ny * zz)
-                j0 = start[base + max(cx - 1, 0)]
-                j1 = start[base + min(cx + 1, nx - 1) + 1]
+                j0, j1 = row_range(cx, cy, cz, dy, dz, nx, ny, nz, start, 1)
                 for j in range(j0, j1):
                     if kind[j] != 0:
                         continue
@@ -856,9 +823,7 @@ def k_mls(P, rho, mass, kind, n, start, lo, inv_cell, nx, ny, nz, kernel, ad, h,
         xa = P[0, a]
         za = P[zc, a]
         ya = P[1, a] if three else 0.0
-        cx = d_clamp_cell(xa, lo[0], inv_cell, nx)
-        cz = d_clamp_cell(za, lo[2], inv_cell, nz)
-        cy = d_clamp_cell(ya, lo[1], inv_cell, ny) if three else 0
+        cx, cy, cz = cell_coords(xa, ya, za, lo, inv_cell, True, nx, ny, nz)
         a00 = 0.0
         a01 = 0.0
         a02 = 0.0
@@ -877,13 +842,7 @@ def k_mls(P, rho, mass, kind, n, start, lo, inv_cell, nx, ny, nz, kernel, ad, h,
         for dz in range(-1, 2):
             for k in range(dys):
                 dy = k - 1 if three else 0
-                yy = cy + dy
-                zz = cz + dz
-                if yy < 0 or yy >= ny or zz < 0 or zz >= nz:
-                    continue
-                base = nx * (yy + ny * zz)
-                j0 = start[base + max(cx - 1, 0)]
-                j1 = start[base + min(cx + 1, nx - 1) + 1]
+                j0, j1 = row_range(cx, cy, cz, dy, dz, nx, ny, nz, start, 1)
                 for b in range(j0, j1):
                     rx = (xa - P[0, b]) * ih
                     rz = (za - P[zc, b]) * ih
