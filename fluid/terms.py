@@ -20,6 +20,7 @@ caches (``fluid/**/*.nbi``): a loop's cache is keyed on its own file, not on the
 * Momentum, Barreiro et al. 2016, Eq. 6; artificial viscosity, Monaghan 1992 (Sunara
   et al. 2021, Eq. 6); laminar viscosity, Lo & Shao 2002; XSPH, Monaghan 1989.
 * The viscous term of the time step, Sunara et al. 2021, Eq. 14.
+* The wall pressure extrapolated from the fluid, Adami, Hu & Adams 2012, Eq. 27.
 * Linear solves: the renormalised density gradient (Dinçer & Demir 2020, Eq. 3-4), the
   MLS density (Sunara et al. 2021, Eq. 9-12), the mDBC ghost-node system (English et
   al. 2022, Eq. 12-13).
@@ -230,6 +231,14 @@ def xsph_weight(mbm, d, e2, w):
     return mbm * (d * e2) * w
 
 
+def adami_pressure(pf, bx, by, bz, rx, ry, rz):
+    """The pressure [Pa] fluid particle f carries to wall particle w in the wall-pressure
+    extrapolation of Adami, Hu & Adams 2012, Eq. 27: ``p_f + rho0 (g - a_w) . r_wf``
+    (``b = rho0 (g - a_w)`` [Pa/m], ``r_wf = r_w - r_f`` [m]; rho_f taken as rho0:
+    :mod:`fluid.wall_density`), to be weighted by ``W_wf``."""
+    return pf + bx * rx + by * ry + bz * rz
+
+
 # ------------------------------------------------------------------ particle terms
 def surface_fade(h, Fc, gsx, gsy, gsz, s0, s1):
     """The diffusion's factor under the free surface [-]: 1 where ``s_a = h |sum_b V_b
@@ -253,6 +262,13 @@ def acceleration(Fc, s, nu4, lam, laminar, fa, g):
     if laminar:
         s += nu4 * lam
     return Fc * s + fa * g
+
+
+def adami_wall_pressure(sp, sw, sw_min, p_floor):
+    """The wall particle's pressure [Pa] of Adami et al. 2012, Eq. 27: ``sum_f W_wf
+    adami_pressure / sum_f W_wf`` (``sp``, ``sw``), at least ``p_floor``; 0 where the kernel
+    sum ``sw`` is not above ``sw_min`` (no fluid within 2h)."""
+    return max(sp / sw, p_floor) if sw > sw_min else 0.0
 
 
 def viscous_speed(scale, v8):
@@ -348,7 +364,7 @@ def solve_in_place(A, b, n):
 TERMS = ("kernel_w", "kernel_grad_shape", "kernel_grad_scale", "tait", "tait_pressure", "tait_density",
          "pair_division", "continuity", "fourtakas_hydrostatic", "renormalised_hydrostatic", "density_diffusion",
          "support_volume", "artificial_viscosity", "wall_viscosity", "momentum", "laminar_viscosity", "viscous_bound",
-         "xsph_weight", "surface_fade", "continuity_rate", "acceleration", "viscous_speed", "renormalised_gradient",
+         "xsph_weight", "adami_pressure", "surface_fade", "adami_wall_pressure", "continuity_rate", "acceleration", "viscous_speed", "renormalised_gradient",
          "det4", "solve_in_place")
 _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 #: the terms compiled for the CPU loops (numba.njit; LLVM inlines them), and for the

@@ -135,9 +135,8 @@ def adami_wall_density(R, rho, kind, acc_w, has_acc, start, tab, near, lo, cell,
                     r2 = rx * rx + ry * ry + rz * rz
                     w = w_value(kernel, math.sqrt(r2) * ih, 1.0) * (R[4, j] if r2 < R2 else 0.0)
                     sw += w
-                    sp += w * (R[3, j] + bx * rx + by * ry + bz * rz)
-        p = max(sp / sw, p_floor) if sw > SW_MIN else 0.0
-        rho[i] = _tait_density(p, rho0, B, inv_gamma)
+                    sp += w * terms.cpu.adami_pressure(R[3, j], bx, by, bz, rx, ry, rz)
+        rho[i] = _tait_density(terms.cpu.adami_wall_pressure(sp, sw, SW_MIN, p_floor), rho0, B, inv_gamma)
 
 
 class AdamiWalls:

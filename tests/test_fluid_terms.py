@@ -98,6 +98,28 @@ def test_surface_fade_and_continuity_rate():
     assert terms.cpu.continuity_rate(2.0, 3.0, 5.0, 1.0, 0.5, 7.0) == 2.0 * (3.0 - 17.5)
 
 
+def test_adami_wall_pressure_is_exact_for_a_hydrostatic_field():
+    """Adami et al. 2012, Eq. 27: in the pressure field p = rho0 (g - a_w) . (r - r_s) of a
+    fluid of density rho0 accelerated by g - a_w, every fluid particle carries the wall's own
+    pressure to it, so any weights give it; floored at p_floor; 0 with no fluid weight."""
+    rho0 = 1000.0
+    b = rho0 * (np.array([0.4, -0.2, -9.81]) - np.array([1.5, 0.0, 0.3]))  # rho0 (g - a_w)
+    rng = np.random.default_rng(2)
+    rs = np.array([0.0, 0.0, 0.5])
+    rw = np.array([0.1, 0.05, 0.02])
+    sp = sw = 0.0
+    for _ in range(12):
+        rf = rw + rng.normal(0, 0.01, 3)
+        carried = terms.cpu.adami_pressure(b @ (rf - rs), *b, *(rw - rf))
+        assert carried == pytest.approx(b @ (rw - rs), rel=1e-12)
+        w = float(rng.uniform(0.1, 1.0))
+        sw += w
+        sp += w * carried
+    assert terms.cpu.adami_wall_pressure(sp, sw, 1e-24, 0.0) == pytest.approx(b @ (rw - rs), rel=1e-12)
+    assert terms.cpu.adami_wall_pressure(-sp, sw, 1e-24, 0.0) == 0.0
+    assert terms.cpu.adami_wall_pressure(sp, 1e-30, 1e-24, 0.0) == 0.0
+
+
 def _args(term, rng):
     """Arguments for a term: kernel ids and flags where the name says so, floats else."""
     names = terms.__dict__[term].__code__.co_varnames[:terms.__dict__[term].__code__.co_argcount]

@@ -690,6 +690,9 @@ def k_adami(P, rho, kind, accw, has_acc, n, start, lo, inv_cell, nx, ny, nz, ker
             if three:
                 by -= accw[1, i]
             bz -= accw[zc, i]
+        bx *= rho0
+        by *= rho0
+        bz *= rho0
         sw = 0.0
         sp = 0.0
         cx, cy, cz = cell_coords(xw, yw, zw, lo, inv_cell, True, nx, ny, nz)
@@ -710,8 +713,8 @@ def k_adami(P, rho, kind, accw, has_acc, n, start, lo, inv_cell, nx, ny, nz, ker
                     w = tm.kernel_w(kernel, math.sqrt(r2) * ih, ad)
                     pj = tm.tait_pressure(rho[j], rho0, B, gamma)
                     sw += w
-                    sp += w * (pj + rho0 * (bx * rx + by * ry + bz * rz))
-        p = max(sp / sw, p_floor) if sw > SW_MIN * ad else 0.0  # w carries ad here
+                    sp += w * tm.adami_pressure(pj, bx, by, bz, rx, ry, rz)
+        p = tm.adami_wall_pressure(sp, sw, SW_MIN * ad, p_floor)  # w carries ad here
         rho[i] = tm.tait_density(p, rho0, B, inv_gamma)
 
 
