@@ -54,10 +54,6 @@ _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 DET_MIN = 1e-3
 
 
-#: ``A x = b`` in place, returning det A (:func:`fluid.terms.solve_in_place`)
-_solve = terms.cpu.solve_in_place
-
-
 @njit(parallel=True, **_OPTS)
 def mdbc_density(pos, rho, mass, kind, ids, offset, start, lo, inv_cell, nx, ny, nz, reach, kernel,
                  ad, h, rho0, det_min, n_low):
@@ -107,32 +103,9 @@ def mdbc_density(pos, rho, mass, kind, ids, offset, start, lo, inv_cell, nx, ny,
                     q = math.sqrt(r2) / h
                     V = mass[j] / rho[j]
                     VF = -V * grad_factor(kernel, q, ad, h)  # grad_g W(r_g - r_j) = F (r_g - r_j) = -F r_jg
-                    row[0] = V * w_value(kernel, q, ad)
-                    col[1] = rx
-                    row[1] = VF * rx
-                    col[dim] = rz
-                    row[dim] = VF * rz
-                    if three:
-                        col[2] = ry
-                        row[2] = VF * ry
-                    for a in range(m):
-                        for k in range(m):
-                            A[a, k] += row[a] * col[k]
-                        bv[a] += row[a] * rho[j]
-        s0 = A[0, 0]
-        sb = bv[0]
-        det = _solve(A, bv, m)
-        if abs(det) >= det_min:
-            val = bv[0]
-            for k in range(dim):
-                val -= o[k] * bv[k + 1]  # r_b - r_g = -offset
-        elif s0 > 0.0:
-            val = sb / s0
-            n_low[i] = 1
-        else:
-            val = rho0
-            n_low[i] = 1
-        rho[i] = max(val, rho0)
+                    terms.cpu.mdbc_add_neighbour(A, bv, row, col, m, V, w_value(kernel, q, ad), VF, rx, ry, rz,
+                                                 rho[j], three)
+        rho[i], n_low[i] = terms.cpu.mdbc_extrapolate(A, bv, m, o, dim, det_min, rho0)
 
 
 class MDBC:

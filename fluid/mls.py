@@ -52,10 +52,6 @@ _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 MIN_SCALED_DET = 0.01
 
 
-#: a 4 x 4 determinant (:func:`fluid.terms.det4`)
-_det4 = terms.cpu.det4
-
-
 @njit(parallel=True, **_OPTS)
 def mls_density(pos, rho, mass, kind, start, lo, inv_cell, nx, ny, nz, reach, kernel, ad, h,
                 min_det, out, used_mls):
@@ -110,18 +106,8 @@ def mls_density(pos, rho, mass, kind, start, lo, inv_cell, nx, ny, nz, reach, ke
                     s1 += mw * rx
                     s2 += mw * ry
                     s3 += mw * rz
-        if not three:  # y decouples: identity row and column
-            a22 = 1.0
-        shepard = s0 / a00
-        scale = a00 * a11 * a22 * a33
-        det = _det4(a00, a01, a02, a03, a01, a11, a12, a13, a02, a12, a22, a23, a03, a13, a23, a33)
-        if scale > 0.0 and det / scale > min_det:
-            num = _det4(s0, a01, a02, a03, s1, a11, a12, a13, s2, a12, a22, a23, s3, a13, a23, a33)
-            out[a] = num / det
-            used_mls[a] = 1
-        else:
-            out[a] = shepard
-            used_mls[a] = 0
+        out[a], used_mls[a] = terms.cpu.mls_solve(a00, a01, a02, a03, a11, a12, a13, a22, a23, a33, s0, s1, s2, s3,
+                                                  three, min_det)
 
 
 def reinitialise(pos, rho, mass, kind, start, grid, kernel: int, ad: float, h: float,

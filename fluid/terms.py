@@ -64,11 +64,13 @@ def rebind(f, **names):
 def compiled(jit, float32: bool = False, name: str = "cpu") -> types.ModuleType:
     """A module holding every term of :data:`TERMS` compiled by ``jit`` (``njit(...)``,
     ``cuda.jit(device=True)``), as :func:`float32_variant` if ``float32``: a loop calls
-    ``module.term(...)`` and is built for a target or precision by the module it names."""
+    ``module.term(...)`` and is built for a target or precision by the module it names; a
+    term calling another calls the other's compiled form."""
     mod = types.ModuleType(f"{__name__}.{name}")
-    for term in TERMS:
+    for term in TERMS:  # a term may call those listed before it: bound to their compiled forms
         f = globals()[term]
-        setattr(mod, term, jit(float32_variant(f) if float32 else f))
+        f = float32_variant(f) if float32 else f
+        setattr(mod, term, jit(rebind(f, **{t: getattr(mod, t) for t in TERMS if hasattr(mod, t)})))
     return mod
 
 
@@ -360,12 +362,65 @@ def solve_in_place(A, b, n):
     return det
 
 
+def mls_solve(a00, a01, a02, a03, a11, a12, a13, a22, a23, a33, s0, s1, s2, s3, three, min_det):
+    """``(rho_a, 1)``: the MLS density [kg/m^3] (Sunara et al. 2021, Eq. 9-12), ``e_1 . A^-1
+    s`` by Cramer's rule, from the moments of a particle's neighbours (coordinates ``x =
+    r_ab / h``): ``A = sum_b V_b W_ab (1, x) (x) (1, x)`` (symmetric 4 x 4: ``a00 ... a33``)
+    and ``s = sum_b m_b W_ab (1, x)``; in 2-D (``three`` False) the y row and column are the
+    identity. ``(s0 / a00, 0)``, the Shepard filter, where ``det A`` is not above ``min_det``
+    times the product of its diagonal (too few or one-sided neighbours)."""
+    if not three:
+        a22 = 1.0
+    scale = a00 * a11 * a22 * a33
+    det = det4(a00, a01, a02, a03, a01, a11, a12, a13, a02, a12, a22, a23, a03, a13, a23, a33)
+    if scale > 0.0 and det / scale > min_det:
+        return det4(s0, a01, a02, a03, s1, a11, a12, a13, s2, a12, a22, a23, s3, a13, a23, a33) / det, 1
+    return s0 / a00, 0
+
+
+def mdbc_add_neighbour(A, bv, row, col, m, V, w, VF, rx, ry, rz, rhoj, three):
+    """Add fluid particle j to the ghost node's first-order system (English et al. 2022,
+    Eq. 12-13): ``A += row (x) col``, ``b += row rho_j`` with ``row = V_j (W, grad W)`` and
+    ``col = (1, r_jg)`` in the solver's order (x, z or x, y, z; ``m`` = dim + 1); ``V`` =
+    m_j / rho_j [m^3], ``w`` = W [1/m^dim], ``VF = -V F`` (``grad_g W = -F r_jg``), ``r_jg``
+    [m]; ``col[0]`` holds 1."""
+    d = 3 if three else 2
+    row[0] = V * w
+    col[1] = rx
+    row[1] = VF * rx
+    col[d] = rz
+    row[d] = VF * rz
+    if three:
+        col[2] = ry
+        row[2] = VF * ry
+    for a in range(m):
+        for k in range(m):
+            A[a, k] += row[a] * col[k]
+        bv[a] += row[a] * rhoj
+
+
+def mdbc_extrapolate(A, bv, m, o, dim, det_min, rho0):
+    """``(rho_b, low)``: the boundary particle's density [kg/m^3] from its ghost node's system
+    (English et al. 2022, Eq. 12-13, :func:`mdbc_add_neighbour`), ``rho_g + (r_b - r_g) .
+    grad rho_g`` (``o = r_g - r_b`` [m]); where ``|det A|`` is below ``det_min`` the Shepard
+    value, rho0 with no fluid near (``low`` 1); at least rho0. Overwrites ``A``, ``bv``."""
+    s0 = A[0, 0]
+    sb = bv[0]
+    if abs(solve_in_place(A, bv, m)) >= det_min:
+        val = bv[0]
+        for k in range(dim):
+            val -= o[k] * bv[k + 1]
+        return max(val, rho0), 0
+    return (max(sb / s0, rho0) if s0 > 0.0 else rho0), 1
+
+
 #: the terms :func:`compiled` compiles
 TERMS = ("kernel_w", "kernel_grad_shape", "kernel_grad_scale", "tait", "tait_pressure", "tait_density",
          "pair_division", "continuity", "fourtakas_hydrostatic", "renormalised_hydrostatic", "density_diffusion",
-         "support_volume", "artificial_viscosity", "wall_viscosity", "momentum", "laminar_viscosity", "viscous_bound",
-         "xsph_weight", "adami_pressure", "surface_fade", "adami_wall_pressure", "continuity_rate", "acceleration", "viscous_speed", "renormalised_gradient",
-         "det4", "solve_in_place")
+         "support_volume", "artificial_viscosity", "wall_viscosity", "momentum", "laminar_viscosity",
+         "viscous_bound", "xsph_weight", "adami_pressure", "surface_fade", "adami_wall_pressure", "continuity_rate",
+         "acceleration", "viscous_speed", "renormalised_gradient", "det4", "solve_in_place", "mls_solve",
+         "mdbc_add_neighbour", "mdbc_extrapolate")
 _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 #: the terms compiled for the CPU loops (numba.njit; LLVM inlines them), and for the
 #: float32 pair loop (float32 literals; not cached: the same code as ``cpu``'s, typed apart)

@@ -784,30 +784,9 @@ def k_mdbc(P, rho, mass, kind, ids, goff, id_lo, n, start, lo, inv_cell, nx, ny,
                     q = math.sqrt(r2) / h
                     V = mass[j] / rho[j]
                     VF = -V * (Fs * tm.kernel_grad_shape(kernel, q))
-                    row[0] = V * tm.kernel_w(kernel, q, ad)
-                    col[1] = rx
-                    row[1] = VF * rx
-                    col[dim] = rz
-                    row[dim] = VF * rz
-                    if three:
-                        col[2] = ry
-                        row[2] = VF * ry
-                    for a in range(m):
-                        for k in range(m):
-                            A[a, k] += row[a] * col[k]
-                        bv[a] += row[a] * rho[j]
-        s0 = A[0, 0]
-        sb = bv[0]
-        det = tm.solve_in_place(A, bv, m)
-        if abs(det) >= det_min:
-            val = bv[0]
-            for k in range(dim):
-                val -= o[k] * bv[k + 1]
-        elif s0 > 0.0:
-            val = sb / s0
-        else:
-            val = rho0
-        rho[i] = max(val, rho0)
+                    tm.mdbc_add_neighbour(A, bv, row, col, m, V, tm.kernel_w(kernel, q, ad), VF, rx, ry, rz, rho[j],
+                                          three)
+        rho[i] = tm.mdbc_extrapolate(A, bv, m, o, dim, det_min, rho0)[0]
 
 
 # ------------------------------------------------------------------ MLS density re-initialisation (fluid.mls)
@@ -867,16 +846,7 @@ def k_mls(P, rho, mass, kind, n, start, lo, inv_cell, nx, ny, nz, kernel, ad, h,
                     s1 += mw * rx
                     s2 += mw * ry
                     s3 += mw * rz
-        if not three:
-            a22 = 1.0
-        shepard = s0 / a00
-        scale = a00 * a11 * a22 * a33
-        det = tm.det4(a00, a01, a02, a03, a01, a11, a12, a13, a02, a12, a22, a23, a03, a13, a23, a33)
-        if scale > 0.0 and det / scale > min_det:
-            num = tm.det4(s0, a01, a02, a03, s1, a11, a12, a13, s2, a12, a22, a23, s3, a13, a23, a33)
-            out[a] = num / det
-        else:
-            out[a] = shepard
+        out[a] = tm.mls_solve(a00, a01, a02, a03, a11, a12, a13, a22, a23, a33, s0, s1, s2, s3, three, min_det)[0]
 
 
 @cuda.jit
