@@ -288,7 +288,7 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
         hgy = F(-0.5 * prm[P_HYDRO] * gy)
         hgz = F(-0.5 * prm[P_HYDRO] * gz)
         irho0 = F(1.0 / prm[P_RHO0])
-        rho00 = F(2.0 * prm[P_RHO0]) if f32 else 0.0  # float32: T holds rho - rho0
+        rho00 = F(2.0 * prm[P_RHO0])  # float32: T holds rho - rho0
         awall = F(prm[P_AWALL])
         hf = F(h)
         s0, s1 = SURFACE_FADE
@@ -437,7 +437,9 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
                         mbm = T[MASS - o, b] * mask
                         mbF = mbm * Fs
                         rhob = T[RHO - o, b]
-                        e2, d, inv = tp.pair_division(r2, eta2, rhoa + rhob + rho00)
+                        # float64 without rho00: a value of the parallel loop's closure, not a constant,
+                        # it would hold a register in the inner loop (a spill per pass in 3-D)
+                        e2, d, inv = tp.pair_division(r2, eta2, rhoa + rhob + rho00 if f32 else rhoa + rhob)
                         qd += tp.continuity(mbF, vr)
                         # density diffusion between fluid particles (VOL is zero for
                         # boundary particles, fa applied after the loop)
