@@ -67,7 +67,7 @@ def compiled(jit, float32: bool = False, name: str = "cpu") -> types.ModuleType:
     ``module.term(...)`` and is built for a target or precision by the module it names; a
     term calling another calls the other's compiled form."""
     mod = types.ModuleType(f"{__name__}.{name}")
-    for term in TERMS:  # a term may call those listed before it: bound to their compiled forms
+    for term in TERMS:
         f = globals()[term]
         f = float32_variant(f) if float32 else f
         setattr(mod, term, jit(rebind(f, **{t: getattr(mod, t) for t in TERMS if hasattr(mod, t)})))
