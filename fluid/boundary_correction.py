@@ -43,6 +43,7 @@ import numpy as np
 from numba import njit, prange
 
 from errors import InputError
+from fluid import terms
 from fluid.kernels import alpha_d, grad_factor, kernel_id, w_value
 from fluid.neighbours import cell_coords, row_range
 
@@ -51,37 +52,6 @@ _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 #: |det| of the correction matrix below which the Shepard (zero-order) value is used
 #: [-] (the matrix is dimensionless; 1e-3 is DualSPHysics' default determinant limit)
 DET_MIN = 1e-3
-
-
-@njit(**_OPTS)
-def _solve(A, b, n):
-    """Solve the n x n system ``A x = b`` in place (Gaussian elimination, partial
-    pivoting); returns the determinant (0 if singular; ``b`` then holds garbage)."""
-    det = 1.0
-    for k in range(n):
-        p = k
-        for r in range(k + 1, n):
-            if abs(A[r, k]) > abs(A[p, k]):
-                p = r
-        if A[p, k] == 0.0:
-            return 0.0
-        if p != k:
-            det = -det
-            for c in range(n):
-                A[k, c], A[p, c] = A[p, c], A[k, c]
-            b[k], b[p] = b[p], b[k]
-        det *= A[k, k]
-        for r in range(k + 1, n):
-            f = A[r, k] / A[k, k]
-            for c in range(k, n):
-                A[r, c] -= f * A[k, c]
-            b[r] -= f * b[k]
-    for k in range(n - 1, -1, -1):
-        s = b[k]
-        for c in range(k + 1, n):
-            s -= A[k, c] * b[c]
-        b[k] = s / A[k, k]
-    return det
 
 
 @njit(parallel=True, **_OPTS)
@@ -133,32 +103,9 @@ def mdbc_density(pos, rho, mass, kind, ids, offset, start, lo, inv_cell, nx, ny,
                     q = math.sqrt(r2) / h
                     V = mass[j] / rho[j]
                     VF = -V * grad_factor(kernel, q, ad, h)  # grad_g W(r_g - r_j) = F (r_g - r_j) = -F r_jg
-                    row[0] = V * w_value(kernel, q, ad)
-                    col[1] = rx
-                    row[1] = VF * rx
-                    col[dim] = rz
-                    row[dim] = VF * rz
-                    if three:
-                        col[2] = ry
-                        row[2] = VF * ry
-                    for a in range(m):
-                        for k in range(m):
-                            A[a, k] += row[a] * col[k]
-                        bv[a] += row[a] * rho[j]
-        s0 = A[0, 0]
-        sb = bv[0]
-        det = _solve(A, bv, m)
-        if abs(det) >= det_min:
-            val = bv[0]
-            for k in range(dim):
-                val -= o[k] * bv[k + 1]  # r_b - r_g = -offset
-        elif s0 > 0.0:
-            val = sb / s0
-            n_low[i] = 1
-        else:
-            val = rho0
-            n_low[i] = 1
-        rho[i] = max(val, rho0)
+                    terms.cpu.mdbc_add_neighbour(A, bv, row, col, m, V, w_value(kernel, q, ad), VF, rx, ry, rz,
+                                                 rho[j], three)
+        rho[i], n_low[i] = terms.cpu.mdbc_extrapolate(A, bv, m, o, dim, det_min, rho0)
 
 
 class MDBC:

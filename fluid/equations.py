@@ -31,6 +31,9 @@ zero. ``r_ab = r_a - r_b``, ``v_ab = v_a - v_b``, ``grad_a W_ab = F_ab r_ab``.
   equation of state, prescribed motion; their "acceleration" is the fluid's force per unit
   mass on them, exactly minus what they exert on the fluid (every pair term is antisymmetric).
 
+Each formula is a function of :mod:`fluid.terms`, written once and compiled both for these
+loops (``terms.cpu``; ``tp`` in the pair loop) and for the GPU kernels; a new term is one
+function there, called from both (docs/fluid_equations.md, "The terms, written once").
 Why each choice (the diffusion variants, the surface fade, the wall viscosity, the XSPH
 sign), in full and with its measured effect: docs/fluid_equations.md.
 """
@@ -47,8 +50,8 @@ from numba import njit, prange, uint64
 
 from errors import InputError
 
-from fluid import settings
-from fluid.kernels import grad_scale, grad_shape, grad_shape_f32, w_value, w_value_f32
+from fluid import settings, terms
+from fluid.kernels import grad_scale, grad_shape
 from fluid.neighbours import XBINS, cell_coords, row_range, row_range_binned, x_bins
 from fluid.particles import Kind
 
@@ -107,17 +110,12 @@ def tait_B(rho0: float, c0: float, gamma: float) -> float:
     return c0 * c0 * rho0 / gamma
 
 
-@njit(**_OPTS)
-def _tait(r, rho0, c0, gamma, B, e):
-    """Pressure [Pa] and sound speed [m/s] at density ``r`` (Barreiro et al. 2016,
-    Eq. 8); for water (gamma = 7) the powers by multiplication: pow costs more than all
-    the rest of :func:`pack`."""
-    x = r / rho0
-    if gamma == 7.0:
-        x2 = x * x
-        x3 = x2 * x
-        return B * (x3 * x3 * x - 1.0), c0 * x3
-    return B * (x ** gamma - 1.0), c0 * x ** e
+#: the Tait equation of state of :mod:`fluid.terms` (Barreiro et al. 2016, Eq. 8):
+#: ``_tait(rho, rho0, c0, gamma, B, e)`` -> (pressure [Pa], sound speed [m/s])
+_tait = terms.cpu.tait
+#: the pair terms the pair loops call, in their precision: float64 here, rebound to
+#: ``terms.cpu_f32`` for the float32 loop (:func:`_make_interact`)
+tp = terms.cpu
 
 
 @njit(parallel=True, **_OPTS)
@@ -251,12 +249,9 @@ def wall_sums(S, xa, ya, za, ux, uy, uz, rhoa, kernel, three, h, lo, cell, cx, c
                 r2 = rx * rx + ry * ry + rz * rz
                 fb = S[ISF, b]
                 if continuity:  # loop-invariant: the compiler keeps two loops
-                    sd += S[MASS, b] * fb * grad_shape(kernel, math.sqrt(r2) * ih) * vr
-                rs = rhoa + S[RHO, b]
-                m2 = (fb if r2 < R2 else 0.0) * vr * ((1.0 / ((r2 + eta2) * rs)) * rs)
-                m2 = m2 * m2
-                m4 = m2 * m2
-                sv += m4 * m4
+                    sd += tp.continuity(S[MASS, b] * fb * tp.kernel_grad_shape(kernel, math.sqrt(r2) * ih), vr)
+                inv = tp.pair_division(r2, eta2, rhoa + S[RHO, b])[2]
+                sv += tp.viscous_bound(fb, r2, R2, vr, inv, 1.0)
     return sd, sv
 
 
@@ -275,7 +270,6 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
     pad = PAD_F32 if f32 else PAD
     o = -1 if f32 else 0  # float32: T's rows are S's shifted by one (the cell's x index first)
 
-    @njit(parallel=True, **_OPTS)
     def pair_loop(S, T, n, start, tab, lo, cell, nx, ny, nz, prm, out, acc, xs, G, near, kind, walls):
         h = prm[P_H]
         ad = prm[P_AD]
@@ -437,60 +431,45 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
                             r2 = rx * rx + rz * rz
                             vr = vx * rx + vz * rz
                         q = math.sqrt(r2) * ih
-                        Fs = grad_shape_f32(kernel, q) if f32 else grad_shape(kernel, q)
+                        Fs = tp.kernel_grad_shape(kernel, q)
                         fb = T[ISF - o, b]
                         mask = max(fa, fb)  # boundary-boundary pairs do not interact
                         mbm = T[MASS - o, b] * mask
                         mbF = mbm * Fs
                         rhob = T[RHO - o, b]
-                        # one division for 1/(r^2+eta^2) and 1/(rho_a+rho_b)
-                        e2 = r2 + eta2
-                        rs = rhoa + rhob + rho00 if f32 else rhoa + rhob
-                        d = one / (e2 * rs)
-                        inv = d * rs
-                        # continuity (Eq. 7)
-                        qd += mbF * vr
-                        # density diffusion, fluid-fluid pairs (VOL is zero for boundary
-                        # particles, fa applied after the loop):
-                        # psi_ab . grad W = -2 (rho_b - rho_a - rho^H_ba) F r^2/(r^2+eta^2)
-                        if renorm:  # Dinçer & Demir 2020, Eq. 2: minus the mean renormalised gradient
-                            rhoH = F(-0.5) * ((gxa + F(G[0, b])) * rx + (gza + F(G[2, b])) * rz)
-                            if three:
-                                rhoH -= F(0.5) * (gya + F(G[1, b])) * ry
-                        elif tilted:
-                            rhoH = (hgx * rx + hgy * ry + hgz * rz) * (ka + T[KAP - o, b])
+                        # float64 without rho00: a value of the parallel loop's closure, not a constant,
+                        # it would hold a register in the inner loop (a spill per pass in 3-D)
+                        e2, d, inv = tp.pair_division(r2, eta2, rhoa + rhob + rho00 if f32 else rhoa + rhob)
+                        qd += tp.continuity(mbF, vr)
+                        # density diffusion between fluid particles (VOL is zero for
+                        # boundary particles, fa applied after the loop)
+                        if renorm:
+                            rhoH = tp.renormalised_hydrostatic(gxa, gya, gza, F(G[0, b]), F(G[1, b]), F(G[2, b]),
+                                                               rx, ry, rz, three)
                         else:
-                            rhoH = hgz * (ka + T[KAP - o, b]) * rz
-                        qdd += T[VOL - o, b] * (rhob - rhoa - rhoH) * Fs * r2 * inv
+                            rhoH = tp.fourtakas_hydrostatic(hgx, hgy, hgz, rx, ry, rz, ka, T[KAP - o, b], tilted)
+                        qdd += tp.density_diffusion(T[VOL - o, b], rhoa, rhob, rhoH, Fs, r2, inv)
                         if fade:  # sum_b V_b grad_a W_ab, walls at their volume m_b / rho0
-                            vf = (T[VOL - o, b] + (one - fb) * T[MASS - o, b] * irho0) * Fs
+                            vf = tp.support_volume(T[VOL - o, b], fb, T[MASS - o, b], irho0) * Fs
                             qgx += vf * rx
                             qgy += vf * ry
                             qgz += vf * rz
-                        # momentum (Eq. 6) with artificial viscosity (Sunara et al. 2021, Eq. 6)
-                        Pi = avh * (ca + T[CS - o, b]) * min(vr, zero) * d
-                        if wall_visc:  # alpha_wall alpha between fluid and boundary particles
-                            Pi *= awall + (one - awall) * fa * fb
-                        coef = mbF * (pa + T[PR2 - o, b] + Pi)
+                        Pi = tp.artificial_viscosity(avh, ca, T[CS - o, b], vr, d)
+                        if wall_visc:
+                            Pi *= tp.wall_viscosity(awall, fa, fb)
+                        coef = tp.momentum(mbF, pa, T[PR2 - o, b], Pi)
                         qx -= coef * rx
                         qy -= coef * ry
                         qz -= coef * rz
-                        if laminar:  # Lo & Shao (2002), see module docstring
-                            lam = mbF * r2 * d
+                        if laminar:
+                            lam = tp.laminar_viscosity(mbF, r2, d)
                             qlx += lam * vx
                             qly += lam * vy
                             qlz += lam * vz
-                        # the largest |mu_ab| of Eq. 14 over the support, through its
-                        # 8-norm (see :func:`interact`; h applied after the loop in float64)
-                        m2 = (mask if r2 < R2f else zero) * vr * inv
-                        if f32:  # h inside the 8-norm's terms keeps mu^8 in float32's range
-                            m2 *= hf
-                        m2 = m2 * m2
-                        m4 = m2 * m2
-                        qv += m4 * m4
+                        # h inside the 8-norm's terms in float32 keeps mu^8 in its range
+                        qv += tp.viscous_bound(mask, r2, R2f, vr, inv, hf if f32 else 1.0)
                         if xsph:
-                            wq = w_value_f32(kernel, q) if f32 else w_value(kernel, q, 1.0)
-                            wgt = mbm * (d * e2) * wq  # alpha_d after the loop
+                            wgt = tp.xsph_weight(mbm, d, e2, tp.kernel_w(kernel, q, one))  # alpha_d after the loop
                             qwx -= wgt * vx
                             qwy -= wgt * vy
                             qwz -= wgt * vz
@@ -529,23 +508,16 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
                 gsx = qgx
                 gsy = qgy
                 gsz = qgz
-            if fade:  # the support's cut by the free surface, s_a (module docstring)
-                sa = h * abs(Fc) * math.sqrt(gsx * gsx + gsy * gsy + gsz * gsz)
-                out[DRHO, a] = Fc * (sd - ddt * fa * min(max((s1 - sa) / (s1 - s0), 0.0), 1.0) * sdd)
-            else:
-                out[DRHO, a] = Fc * (sd - ddt * fa * sdd)
-            # not ** 0.125: see interact
-            out[VISC, a] = (1.0 if f32 else h) * math.sqrt(math.sqrt(math.sqrt(vmax)))
-            if laminar:
-                sx += nu4 * lx
-                sy += nu4 * ly
-                sz += nu4 * lz
-            acc[a, 0] = Fc * sx + fa * gx
+            # the support's cut by the free surface (module docstring)
+            fd = terms.cpu.surface_fade(h, Fc, gsx, gsy, gsz, s0, s1) if fade else 1.0
+            out[DRHO, a] = terms.cpu.continuity_rate(Fc, sd, ddt, fa, fd, sdd)
+            out[VISC, a] = terms.cpu.viscous_speed(1.0 if f32 else h, vmax)  # not ** 0.125: see interact
+            acc[a, 0] = terms.cpu.acceleration(Fc, sx, nu4, lx, laminar, fa, gx)
             if three:
-                acc[a, 1] = Fc * sy + fa * gy
-                acc[a, 2] = Fc * sz + fa * gz
+                acc[a, 1] = terms.cpu.acceleration(Fc, sy, nu4, ly, laminar, fa, gy)
+                acc[a, 2] = terms.cpu.acceleration(Fc, sz, nu4, lz, laminar, fa, gz)
             else:
-                acc[a, 1] = Fc * sz + fa * gz
+                acc[a, 1] = terms.cpu.acceleration(Fc, sz, nu4, lz, laminar, fa, gz)
             if xsph:
                 xs[a, 0] = eps2 * fa * wx
                 if three:
@@ -554,13 +526,12 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
                 else:
                     xs[a, 1] = eps2 * fa * wz
 
-    return pair_loop
+    return njit(parallel=True, **_OPTS)(terms.rebind(pair_loop, tp=terms.cpu_f32) if f32 else pair_loop)
 
 
-#: |det| of the renormalisation matrix of :func:`density_gradients`, relative to the
-#: cube (square in 2-D) of its mean diagonal, below which the hydrostatic gradient is
-#: used instead (a particle at the free surface or with few fluid neighbours)
-DET_MIN = 1e-3
+#: |det| of the renormalisation matrix below which the hydrostatic gradient is used
+#: (:func:`fluid.terms.renormalised_gradient`)
+DET_MIN = terms.DET_MIN
 
 
 def _make_gradient(kernel: int, three: bool):
@@ -619,34 +590,8 @@ def _make_gradient(kernel: int, three: bool):
                             myz += w * ry * rz
                             by += d * ry
             # G = -M^-1 b (the kernel's constant factor cancels); exact for linear fields
-            if three:
-                c00 = myy * mzz - myz * myz
-                c01 = mxz * myz - mxy * mzz
-                c02 = mxy * myz - mxz * myy
-                det = mxx * c00 + mxy * c01 + mxz * c02
-                scale = (mxx + myy + mzz) / 3.0
-                ok = abs(det) > DET_MIN * abs(scale) ** 3
-            else:
-                det = mxx * mzz - mxz * mxz
-                scale = 0.5 * (mxx + mzz)
-                ok = abs(det) > DET_MIN * scale * scale
-            if ok:
-                if three:
-                    c11 = mxx * mzz - mxz * mxz
-                    c12 = mxy * mxz - mxx * myz
-                    c22 = mxx * myy - mxy * mxy
-                    G[0, a] = -(c00 * bx + c01 * by + c02 * bz) / det
-                    G[1, a] = -(c01 * bx + c11 * by + c12 * bz) / det
-                    G[2, a] = -(c02 * bx + c12 * by + c22 * bz) / det
-                else:
-                    G[0, a] = -(mzz * bx - mxz * bz) / det
-                    G[1, a] = 0.0
-                    G[2, a] = -(mxx * bz - mxz * bx) / det
-            else:  # the hydrostatic gradient rho g / c^2
-                ka = S[KAP, a]
-                G[0, a] = ka * gx
-                G[1, a] = ka * gy
-                G[2, a] = ka * gz
+            G[0, a], G[1, a], G[2, a] = tp.renormalised_gradient(mxx, mxy, mxz, myy, myz, mzz, bx, by, bz, S[KAP, a],
+                                                                 gx, gy, gz, three)
 
     return gradient_loop
 

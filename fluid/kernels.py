@@ -24,10 +24,11 @@ import numpy as np
 from numba import njit
 
 from errors import InputError
+from fluid import terms
 
 #: kernel ids used inside the numba loops
-WENDLAND = 0
-CUBIC = 1
+WENDLAND = terms.WENDLAND
+CUBIC = terms.CUBIC
 KERNELS = {"wendland": WENDLAND, "cubic": CUBIC}
 
 _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
@@ -52,67 +53,12 @@ def alpha_d(kernel: int, dim: int, h: float) -> float:
     return 1.0 / (math.pi * h * h * h)
 
 
-@njit(**_OPTS)
-def w_value(kernel: int, q: float, ad: float) -> float:
-    """Kernel value W [1/m^dim] at ``q = r/h`` with normalisation ``ad = alpha_d``."""
-    if kernel == WENDLAND:
-        t = max(1.0 - 0.5 * q, 0.0)
-        return ad * t * t * t * t * (2.0 * q + 1.0)
-    t2 = max(2.0 - q, 0.0)
-    t1 = max(1.0 - q, 0.0)
-    return ad * 0.25 * (t2 * t2 * t2 - 4.0 * t1 * t1 * t1)
-
-
-@njit(**_OPTS)
-def grad_shape(kernel: int, q: float) -> float:
-    """``F / grad_scale`` [-] at ``q = r/h``: the part of :func:`grad_factor` that varies
-    from pair to pair (the pair loops sum it and apply the constant once)."""
-    if kernel == WENDLAND:
-        t = max(1.0 - 0.5 * q, 0.0)
-        return t * t * t
-    # cubic spline: dW/dq = ad * (-3/4 (2-q)^2 + 3 (1-q)^2) ; F = dW/dq / (q h^2)
-    t2 = max(2.0 - q, 0.0)
-    t1 = max(1.0 - q, 0.0)
-    qs = max(q, 1e-12)
-    return (-0.75 * t2 * t2 + 3.0 * t1 * t1) / qs
-
-
-#: the constants of :func:`grad_shape_f32` and :func:`w_value_f32` as float32 (a float64
-#: literal would promote the whole expression to float64)
-_F0, _F1, _F2, _FH, _F3Q, _F34, _F3, _F4, _FQMIN = (np.float32(v) for v in (0.0, 1.0, 2.0, 0.5, 0.75, 0.25, 3.0,
-                                                                               4.0, 1e-12))
-
-
-@njit(**_OPTS)
-def grad_shape_f32(kernel: int, q):
-    """:func:`grad_shape` in float32 arithmetic (``q`` a float32) for the float32 pair loop."""
-    if kernel == WENDLAND:
-        t = max(_F1 - _FH * q, _F0)
-        return t * t * t
-    t2 = max(_F2 - q, _F0)
-    t1 = max(_F1 - q, _F0)
-    qs = max(q, _FQMIN)
-    return (-_F3Q * t2 * t2 + _F3 * t1 * t1) / qs
-
-
-@njit(**_OPTS)
-def w_value_f32(kernel: int, q):
-    """:func:`w_value` with ``ad = 1`` in float32 arithmetic (``q`` a float32)."""
-    if kernel == WENDLAND:
-        t = max(_F1 - _FH * q, _F0)
-        return t * t * t * t * (_F2 * q + _F1)
-    t2 = max(_F2 - q, _F0)
-    t1 = max(_F1 - q, _F0)
-    return _F34 * (t2 * t2 * t2 - _F4 * t1 * t1 * t1)
-
-
-@njit(**_OPTS)
-def grad_scale(kernel: int, ad: float, h: float) -> float:
-    """``F / grad_shape`` [1/m^(dim+2)]: ``-5 alpha_d / h^2`` (Wendland), ``alpha_d / h^2``
-    (cubic spline)."""
-    if kernel == WENDLAND:
-        return -5.0 * ad / (h * h)
-    return ad / (h * h)
+#: the kernel of :mod:`fluid.terms` as the CPU loops call it: ``w_value(kernel, q, ad)``
+#: [1/m^dim], ``grad_shape(kernel, q)`` [-] (the part of ``F`` that varies from pair to
+#: pair) and ``grad_scale(kernel, ad, h)`` [1/m^(dim+2)], ``F = grad_scale * grad_shape``
+w_value = terms.cpu.kernel_w
+grad_shape = terms.cpu.kernel_grad_shape
+grad_scale = terms.cpu.kernel_grad_scale
 
 
 @njit(**_OPTS)

@@ -42,6 +42,7 @@ import math
 import numpy as np
 from numba import njit, prange
 
+from fluid import terms
 from fluid.kernels import w_value
 from fluid.neighbours import cell_coords, row_range
 
@@ -49,24 +50,6 @@ _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 
 #: below this determinant of the unit-diagonal moment matrix the Shepard filter is used [-]
 MIN_SCALED_DET = 0.01
-
-
-@njit(**_OPTS)
-def _det4(m00, m01, m02, m03, m10, m11, m12, m13, m20, m21, m22, m23, m30, m31, m32, m33):
-    """Determinant of a 4 x 4 matrix by 2 x 2 minors (Laplace expansion on two rows)."""
-    s0 = m00 * m11 - m10 * m01
-    s1 = m00 * m12 - m10 * m02
-    s2 = m00 * m13 - m10 * m03
-    s3 = m01 * m12 - m11 * m02
-    s4 = m01 * m13 - m11 * m03
-    s5 = m02 * m13 - m12 * m03
-    c5 = m22 * m33 - m32 * m23
-    c4 = m21 * m33 - m31 * m23
-    c3 = m21 * m32 - m31 * m22
-    c2 = m20 * m33 - m30 * m23
-    c1 = m20 * m32 - m30 * m22
-    c0 = m20 * m31 - m30 * m21
-    return s0 * c5 - s1 * c4 + s2 * c3 + s3 * c2 - s4 * c1 + s5 * c0
 
 
 @njit(parallel=True, **_OPTS)
@@ -123,18 +106,8 @@ def mls_density(pos, rho, mass, kind, start, lo, inv_cell, nx, ny, nz, reach, ke
                     s1 += mw * rx
                     s2 += mw * ry
                     s3 += mw * rz
-        if not three:  # y decouples: identity row and column
-            a22 = 1.0
-        shepard = s0 / a00
-        scale = a00 * a11 * a22 * a33
-        det = _det4(a00, a01, a02, a03, a01, a11, a12, a13, a02, a12, a22, a23, a03, a13, a23, a33)
-        if scale > 0.0 and det / scale > min_det:
-            num = _det4(s0, a01, a02, a03, s1, a11, a12, a13, s2, a12, a22, a23, s3, a13, a23, a33)
-            out[a] = num / det
-            used_mls[a] = 1
-        else:
-            out[a] = shepard
-            used_mls[a] = 0
+        out[a], used_mls[a] = terms.cpu.mls_solve(a00, a01, a02, a03, a11, a12, a13, a22, a23, a33, s0, s1, s2, s3,
+                                                  three, min_det)
 
 
 def reinitialise(pos, rho, mass, kind, start, grid, kernel: int, ad: float, h: float,

@@ -43,7 +43,8 @@ import math
 import numpy as np
 from numba import njit, prange, uint64
 
-from fluid.equations import PAD, _tait, require_pair_grid, tait_B
+from fluid import terms
+from fluid.equations import PAD, require_pair_grid, tait_B
 from fluid.kernels import alpha_d, kernel_id, w_value
 from fluid.neighbours import XBINS, cell_coords, row_range_binned
 from fluid.particles import Kind
@@ -54,6 +55,9 @@ _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 #: less, and which side of 2h it falls on is the rounding's choice (the loop's fused
 #: multiply-adds), not the geometry's
 SW_MIN = 1e-24
+#: the Tait pressure and its inverse of :mod:`fluid.terms` (Barreiro et al. 2016, Eq. 8)
+_tait_pressure = terms.cpu.tait_pressure
+_tait_density = terms.cpu.tait_density
 
 
 @njit(parallel=True, **_OPTS)
@@ -63,14 +67,12 @@ def _fluid_rows(pos, rho, kind, rho0, B, gamma, R):
     0 for boundary particles."""
     three = pos.shape[1] == 3
     zc = pos.shape[1] - 1
-    c0 = math.sqrt(gamma * B / rho0)
-    e = 0.5 * (gamma - 1.0)
     for j in prange(rho.shape[0]):
         R[0, j] = pos[j, 0]
         R[1, j] = pos[j, 1] if three else 0.0
         R[2, j] = pos[j, zc]
         f = 1.0 if kind[j] == 0 else 0.0
-        R[3, j] = f * _tait(rho[j], rho0, c0, gamma, B, e)[0]
+        R[3, j] = f * _tait_pressure(rho[j], rho0, B, gamma)
         R[4, j] = f
 
 
@@ -133,9 +135,8 @@ def adami_wall_density(R, rho, kind, acc_w, has_acc, start, tab, near, lo, cell,
                     r2 = rx * rx + ry * ry + rz * rz
                     w = w_value(kernel, math.sqrt(r2) * ih, 1.0) * (R[4, j] if r2 < R2 else 0.0)
                     sw += w
-                    sp += w * (R[3, j] + bx * rx + by * ry + bz * rz)
-        p = max(sp / sw, p_floor) if sw > SW_MIN else 0.0
-        rho[i] = rho0 * (1.0 + p / B) ** inv_gamma
+                    sp += w * terms.cpu.adami_pressure(R[3, j], bx, by, bz, rx, ry, rz)
+        rho[i] = _tait_density(terms.cpu.adami_wall_pressure(sp, sw, SW_MIN, p_floor), rho0, B, inv_gamma)
 
 
 class AdamiWalls:

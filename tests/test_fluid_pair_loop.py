@@ -117,7 +117,7 @@ def scene(dim, seed, jitter=0.15, mass_spread=0.1):
     (2, "wendland", 0.0, 0.0, 1.0), (3, "wendland", 0.0, 0.0, 1.0), (2, "cubic", 0.0, 0.0, 1.0),
     (3, "cubic", 0.0, 0.0, 1.0), (2, "wendland", 1e-3, 0.3, 1.0), (3, "wendland", 1e-3, 0.3, 1.0),
     (2, "wendland", 0.0, 0.0, 0.25), (2, "wendland", 0.0, 0.0, "antuono"), (3, "cubic", 0.0, 0.0, "antuono"),
-    (2, "wendland", 0.0, 0.0, "fade"), (3, "wendland", 0.0, 0.0, "fade")])
+    (2, "wendland", 0.0, 0.0, "fade"), (3, "wendland", 0.0, 0.0, "fade"), (3, "wendland", 0.0, 0.0, "tilted")])
 def test_pair_loop_equals_brute_force(dim, kernel, nu, xsph, alpha_wall):
     check_pair_loop(dim, kernel, nu, xsph, alpha_wall, "float64")
 
@@ -143,6 +143,8 @@ def check_pair_loop(dim, kernel, nu, xsph, alpha_wall, precision):
     h = math.sqrt(2) * dx if dim == 2 else 1.3 * dx
     g = np.zeros(dim)
     g[-1] = -9.81
+    if alpha_wall == "tilted":  # the Fourtakas rho^H along g . r_ab, not g_z z_ab (the loop's "tilted" variant)
+        alpha_wall, g[:-1] = 1.0, (2.0, -1.0)[:dim - 1]
     alpha, delta, diffusion = 0.1, 0.1, "fourtakas"
     if alpha_wall == "antuono":  # the renormalised diffusion (its own gradient loop)
         alpha_wall, diffusion = 1.0, "antuono"

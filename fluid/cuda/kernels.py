@@ -1,8 +1,12 @@
 """CUDA kernels of the GPU path (numba-cuda): cell build and sort, the pair loop, the
 integrators, the time-step reductions, the NaN guard and the group loads.
 
-Each kernel mirrors a CPU function line for line, with the same formulas in the same
-order, so that the two paths agree to round-off in float64:
+The formulas of the SPH terms (kernel, equation of state, the pair and particle terms
+of the rates, the linear solves) are those of :mod:`fluid.terms`, compiled here as device
+functions (``tm``) from the same code the CPU loops compile; each kernel walks its
+neighbours and sums the terms in the CPU function's order, so that the two paths agree
+to round-off in float64. A new term is written there once and called here as
+``tm.term(...)`` (docs/fluid_equations.md, "The terms, written once"):
 
 * :func:`k_bin` is ``fluid.neighbours.bin_particles``; :func:`k_fill` and
   :func:`k_order` together are ``counting_sort`` followed by ``order_cells_by_x``:
@@ -39,7 +43,7 @@ import numpy as np
 from numba import cuda
 
 from fluid import equations as eq
-from fluid.kernels import WENDLAND
+from fluid import neighbours, terms
 from fluid.wall_density import SW_MIN
 
 #: threads per block of every kernel
@@ -70,37 +74,13 @@ def launch(n: int) -> tuple:
     return min(MAX_BLOCKS, max(1, (n + TPB - 1) // TPB)), TPB
 
 
-# ------------------------------------------------------------------ SPH kernel (fluid.kernels)
-@cuda.jit(device=True)
-def d_w_value(kernel, q, ad):
-    if kernel == WENDLAND:
-        t = max(1.0 - 0.5 * q, 0.0)
-        return ad * t * t * t * t * (2.0 * q + 1.0)
-    t2 = max(2.0 - q, 0.0)
-    t1 = max(1.0 - q, 0.0)
-    return ad * 0.25 * (t2 * t2 * t2 - 4.0 * t1 * t1 * t1)
-
-
-@cuda.jit(device=True)
-def d_grad_shape(kernel, q):
-    if kernel == WENDLAND:
-        t = max(1.0 - 0.5 * q, 0.0)
-        return t * t * t
-    t2 = max(2.0 - q, 0.0)
-    t1 = max(1.0 - q, 0.0)
-    qs = max(q, 1e-12)
-    return (-0.75 * t2 * t2 + 3.0 * t1 * t1) / qs
-
-
-@cuda.jit(device=True)
-def d_tait(r, rho0, c0, gamma, B, e):
-    """fluid.equations._tait (Barreiro et al. 2016, Eq. 8)."""
-    x = r / rho0
-    if gamma == 7.0:
-        x2 = x * x
-        x3 = x2 * x
-        return B * (x3 * x3 * x - 1.0), c0 * x3
-    return B * (x ** gamma - 1.0), c0 * x ** e
+# ------------------------------------------------------------------ the terms of fluid.terms
+#: every term of :mod:`fluid.terms` as a device function: the kernels call ``tm.term(...)``
+tm = terms.compiled(cuda.jit(device=True), name="cuda")
+#: the cell walk of :mod:`fluid.neighbours` as device functions, from the CPU's code: a
+#: point's cell (clamped at the box) and the index range of a row of three cells
+cell_coords = cuda.jit(device=True)(neighbours.cell_coords.py_func)
+row_range = cuda.jit(device=True)(neighbours.row_range.py_func)
 
 
 @cuda.jit(device=True)
@@ -114,11 +94,6 @@ def d_first_at_or_above(P, j0, j1, x):
         else:
             j1 = m
     return j0
-
-
-@cuda.jit(device=True)
-def d_clamp_cell(v, lo, inv_cell, nmax):
-    return min(max(int((v - lo) * inv_cell), 0), nmax - 1)
 
 
 # ------------------------------------------------------------------ cell list
@@ -246,7 +221,7 @@ def k_pack(rho, n, rho0, c0, gamma, cs, pr2):
         B = c0 * c0 * rho0 / gamma
         e = 0.5 * (gamma - 1.0)
         r = rho[i]
-        pi, c = d_tait(r, rho0, c0, gamma, B, e)
+        pi, c = tm.tait(r, rho0, c0, gamma, B, e)
         cs[i] = c
         pr2[i] = pi / (r * r)
 
@@ -290,7 +265,7 @@ def make_pair_loop(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
             gx = prm[P_G]
             gy = prm[P_G + 1] if three else 0.0
             gz = prm[P_G + 2] if three else prm[P_G + 1]
-            Fc = (-5.0 * ad / (h * h)) if kernel == WENDLAND else (ad / (h * h))  # fluid.kernels.grad_scale
+            Fc = tm.kernel_grad_scale(kernel, ad, h)
             avh = -prm[P_ALPHA] * h
             hgz = -0.5 * prm[P_HYDRO] * gz
             irho0 = 1.0 / prm[P_RHO0]
@@ -313,9 +288,7 @@ def make_pair_loop(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
                 gxa = G[0, a]
                 gya = G[1, a] if three else 0.0
                 gza = G[zc, a]
-            cx = d_clamp_cell(xa, lo[0], inv_cell, nx)
-            cz = d_clamp_cell(za, lo[2], inv_cell, nz)
-            cy = d_clamp_cell(ya, lo[1], inv_cell, ny) if three else 0
+            cx, cy, cz = cell_coords(xa, ya, za, lo, inv_cell, True, nx, ny, nz)
             sd = 0.0
             sdd = 0.0
             sx = 0.0
@@ -346,13 +319,7 @@ def make_pair_loop(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
                         ez2 = ez_lo if dz < 0 else ez_hi
                         if ey2 + ez2 >= R2:
                             continue
-                    yy = cy + dy
-                    zz = cz + dz
-                    if yy < 0 or yy >= ny or zz < 0 or zz >= nz:
-                        continue
-                    base = nx * (yy + ny * zz)
-                    j0 = start[base + max(cx - 1, 0)]
-                    j1 = start[base + min(cx + 1, nx - 1) + 1]
+                    j0, j1 = row_range(cx, cy, cz, dy, dz, nx, ny, nz, start, 1)
                     j0 = d_first_at_or_above(P, j0, j1, xa - 2.0 * h)
                     j1 = d_first_at_or_above(P, j0, j1, xa + 2.0 * h)
                     for b in range(j0, j1):
@@ -371,7 +338,7 @@ def make_pair_loop(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
                             r2 = rx * rx + rz * rz
                             vr = vx * rx + vz * rz
                         q = math.sqrt(r2) * ih
-                        Fs = d_grad_shape(kernel, q)
+                        Fs = tm.kernel_grad_shape(kernel, q)
                         fb = 1.0 if kind[b] == 0 else 0.0
                         mask = max(fa, fb)
                         mb = mass[b]
@@ -379,61 +346,47 @@ def make_pair_loop(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
                         mbF = mbm * Fs
                         rhob = rho[b]
                         cb = cs[b]
-                        e2 = r2 + eta2
-                        rs = rhoa + rhob
-                        d = 1.0 / (e2 * rs)
-                        inv = d * rs
-                        sd += mbF * vr
+                        e2, d, inv = tm.pair_division(r2, eta2, rhoa + rhob)
+                        sd += tm.continuity(mbF, vr)
                         volb = mb / rhob if fb > 0.0 else 0.0
-                        if renorm:  # Dinçer & Demir 2020, Eq. 2: minus the mean renormalised gradient
-                            rhoH = -0.5 * ((gxa + G[0, b]) * rx + (gza + G[zc, b]) * rz)
-                            if three:
-                                rhoH -= 0.5 * (gya + G[1, b]) * ry
+                        if renorm:
+                            rhoH = tm.renormalised_hydrostatic(gxa, gya, gza, G[0, b], G[1, b] if three else 0.0,
+                                                               G[zc, b], rx, ry, rz, three)
                         else:
-                            rhoH = hgz * (ka + rhob / (cb * cb)) * rz
-                        sdd += volb * (rhob - rhoa - rhoH) * Fs * r2 * inv
+                            rhoH = tm.fourtakas_hydrostatic(0.0, 0.0, hgz, rx, ry, rz, ka, rhob / (cb * cb), False)
+                        sdd += tm.density_diffusion(volb, rhoa, rhob, rhoH, Fs, r2, inv)
                         if fade:
-                            vf = (volb + (1.0 - fb) * mb * irho0) * Fs
+                            vf = tm.support_volume(volb, fb, mb, irho0) * Fs
                             gsx += vf * rx
                             gsy += vf * ry
                             gsz += vf * rz
-                        Pi = avh * (ca + cb) * min(vr, 0.0) * d
+                        Pi = tm.artificial_viscosity(avh, ca, cb, vr, d)
                         if wall_visc:
-                            Pi *= awall + (1.0 - awall) * fa * fb
-                        coef = mbF * (pa + pr2[b] + Pi)
+                            Pi *= tm.wall_viscosity(awall, fa, fb)
+                        coef = tm.momentum(mbF, pa, pr2[b], Pi)
                         sx -= coef * rx
                         sy -= coef * ry
                         sz -= coef * rz
                         if laminar:
-                            lam = mbF * r2 * d
+                            lam = tm.laminar_viscosity(mbF, r2, d)
                             lx += lam * vx
                             ly += lam * vy
                             lz += lam * vz
-                        m2 = (mask if r2 < R2 else 0.0) * vr * inv
-                        m2 = m2 * m2
-                        m4 = m2 * m2
-                        vmax += m4 * m4
+                        vmax += tm.viscous_bound(mask, r2, R2, vr, inv, 1.0)
                         if xsph:
-                            wgt = mbm * (d * e2) * d_w_value(kernel, q, 1.0)
+                            wgt = tm.xsph_weight(mbm, d, e2, tm.kernel_w(kernel, q, 1.0))
                             wx -= wgt * vx
                             wy -= wgt * vy
                             wz -= wgt * vz
-            if fade:
-                sa = h * abs(Fc) * math.sqrt(gsx * gsx + gsy * gsy + gsz * gsz)
-                drho[a] = Fc * (sd - ddt * fa * min(max((s1 - sa) / (s1 - s0), 0.0), 1.0) * sdd)
-            else:
-                drho[a] = Fc * (sd - ddt * fa * sdd)
-            visc = h * math.sqrt(math.sqrt(math.sqrt(vmax)))
-            if laminar:
-                sx += nu4 * lx
-                sy += nu4 * ly
-                sz += nu4 * lz
-            acc[0, a] = Fc * sx + fa * gx
+            fd = tm.surface_fade(h, Fc, gsx, gsy, gsz, s0, s1) if fade else 1.0
+            drho[a] = tm.continuity_rate(Fc, sd, ddt, fa, fd, sdd)
+            visc = tm.viscous_speed(h, vmax)
+            acc[0, a] = tm.acceleration(Fc, sx, nu4, lx, laminar, fa, gx)
             if three:
-                acc[1, a] = Fc * sy + fa * gy
-                acc[2, a] = Fc * sz + fa * gz
+                acc[1, a] = tm.acceleration(Fc, sy, nu4, ly, laminar, fa, gy)
+                acc[2, a] = tm.acceleration(Fc, sz, nu4, lz, laminar, fa, gz)
             else:
-                acc[1, a] = Fc * sz + fa * gz
+                acc[1, a] = tm.acceleration(Fc, sz, nu4, lz, laminar, fa, gz)
             if xsph:
                 xs[0, a] = eps2 * fa * wx
                 if three:
@@ -467,7 +420,6 @@ def make_gradient_loop(kernel: int, three: bool):
     if key in _GRADIENT_LOOPS:
         return _GRADIENT_LOOPS[key]
     P_H, P_G = eq.P_H, eq.P_G
-    DET_MIN = eq.DET_MIN
     zc = 2 if three else 1
 
     @cuda.jit
@@ -487,9 +439,7 @@ def make_gradient_loop(kernel: int, three: bool):
             ya = P[1, a] if three else 0.0
             za = P[zc, a]
             rhoa = rho[a]
-            cx = d_clamp_cell(xa, lo[0], inv_cell, nx)
-            cz = d_clamp_cell(za, lo[2], inv_cell, nz)
-            cy = d_clamp_cell(ya, lo[1], inv_cell, ny) if three else 0
+            cx, cy, cz = cell_coords(xa, ya, za, lo, inv_cell, True, nx, ny, nz)
             mxx = 0.0
             mxy = 0.0
             mxz = 0.0
@@ -503,13 +453,7 @@ def make_gradient_loop(kernel: int, three: bool):
             for dz in range(-1, 2):
                 for k in range(dys):
                     dy = k - 1 if three else 0
-                    yy = cy + dy
-                    zz = cz + dz
-                    if yy < 0 or yy >= ny or zz < 0 or zz >= nz:
-                        continue
-                    base = nx * (yy + ny * zz)
-                    j0 = start[base + max(cx - 1, 0)]
-                    j1 = start[base + min(cx + 1, nx - 1) + 1]
+                    j0, j1 = row_range(cx, cy, cz, dy, dz, nx, ny, nz, start, 1)
                     j0 = d_first_at_or_above(P, j0, j1, xa - 2.0 * h)
                     j1 = d_first_at_or_above(P, j0, j1, xa + 2.0 * h)
                     for b in range(j0, j1):
@@ -518,7 +462,7 @@ def make_gradient_loop(kernel: int, three: bool):
                         ry = ya - P[1, b] if three else 0.0
                         q = math.sqrt(rx * rx + ry * ry + rz * rz) * ih
                         volb = mass[b] / rho[b] if kind[b] == 0 else 0.0
-                        w = volb * d_grad_shape(kernel, q)
+                        w = volb * tm.kernel_grad_shape(kernel, q)
                         d = (rho[b] - rhoa) * w
                         mxx += w * rx * rx
                         mxz += w * rx * rz
@@ -530,37 +474,15 @@ def make_gradient_loop(kernel: int, three: bool):
                             myy += w * ry * ry
                             myz += w * ry * rz
                             by += d * ry
+            ca = cs[a]
+            rx_, ry_, rz_ = tm.renormalised_gradient(mxx, mxy, mxz, myy, myz, mzz, bx, by, bz, rhoa / (ca * ca), gx,
+                                                     gy, gz, three)
+            G[0, a] = rx_
             if three:
-                c00 = myy * mzz - myz * myz
-                c01 = mxz * myz - mxy * mzz
-                c02 = mxy * myz - mxz * myy
-                det = mxx * c00 + mxy * c01 + mxz * c02
-                scale = (mxx + myy + mzz) / 3.0
-                ok = abs(det) > DET_MIN * abs(scale) ** 3
+                G[1, a] = ry_
+                G[2, a] = rz_
             else:
-                det = mxx * mzz - mxz * mxz
-                scale = 0.5 * (mxx + mzz)
-                ok = abs(det) > DET_MIN * scale * scale
-            if ok:
-                if three:
-                    c11 = mxx * mzz - mxz * mxz
-                    c12 = mxy * mxz - mxx * myz
-                    c22 = mxx * myy - mxy * mxy
-                    G[0, a] = -(c00 * bx + c01 * by + c02 * bz) / det
-                    G[1, a] = -(c01 * bx + c11 * by + c12 * bz) / det
-                    G[2, a] = -(c02 * bx + c12 * by + c22 * bz) / det
-                else:
-                    G[0, a] = -(mzz * bx - mxz * bz) / det
-                    G[1, a] = -(mxx * bz - mxz * bx) / det
-            else:  # the hydrostatic gradient rho g / c^2
-                ca = cs[a]
-                ka = rhoa / (ca * ca)
-                G[0, a] = ka * gx
-                if three:
-                    G[1, a] = ka * gy
-                    G[2, a] = ka * gz
-                else:
-                    G[1, a] = ka * gz
+                G[1, a] = rz_
 
     _GRADIENT_LOOPS[key] = gradient_loop
     return gradient_loop
@@ -753,7 +675,6 @@ def k_adami(P, rho, kind, accw, has_acc, n, start, lo, inv_cell, nx, ny, nz, ker
     R2 = 4.0 * h * h
     ih = 1.0 / h
     inv_gamma = 1.0 / gamma
-    seven = gamma == 7.0
     for i in range(cuda.grid(1), n, cuda.gridsize(1)):
         k = kind[i]
         if k < kmin or k > kmax:
@@ -769,22 +690,17 @@ def k_adami(P, rho, kind, accw, has_acc, n, start, lo, inv_cell, nx, ny, nz, ker
             if three:
                 by -= accw[1, i]
             bz -= accw[zc, i]
+        bx *= rho0
+        by *= rho0
+        bz *= rho0
         sw = 0.0
         sp = 0.0
-        cx = d_clamp_cell(xw, lo[0], inv_cell, nx)
-        cz = d_clamp_cell(zw, lo[2], inv_cell, nz)
-        cy = d_clamp_cell(yw, lo[1], inv_cell, ny) if three else 0
+        cx, cy, cz = cell_coords(xw, yw, zw, lo, inv_cell, True, nx, ny, nz)
         dys = 3 if three else 1
         for dz in range(-1, 2):
             for kk in range(dys):
                 dy = kk - 1 if three else 0
-                yy = cy + dy
-                zz = cz + dz
-                if yy < 0 or yy >= ny or zz < 0 or zz >= nz:
-                    continue
-                base = nx * (yy + ny * zz)
-                j0 = start[base + max(cx - 1, 0)]
-                j1 = start[base + min(cx + 1, nx - 1) + 1]
+                j0, j1 = row_range(cx, cy, cz, dy, dz, nx, ny, nz, start, 1)
                 for j in range(j0, j1):
                     if kind[j] != 0:
                         continue
@@ -794,17 +710,12 @@ def k_adami(P, rho, kind, accw, has_acc, n, start, lo, inv_cell, nx, ny, nz, ker
                     r2 = rx * rx + ry * ry + rz * rz
                     if r2 >= R2:
                         continue
-                    w = d_w_value(kernel, math.sqrt(r2) * ih, ad)
-                    x = rho[j] / rho0
-                    if seven:
-                        x3 = x * x * x
-                        pj = B * (x3 * x3 * x - 1.0)
-                    else:
-                        pj = B * (x ** gamma - 1.0)
+                    w = tm.kernel_w(kernel, math.sqrt(r2) * ih, ad)
+                    pj = tm.tait_pressure(rho[j], rho0, B, gamma)
                     sw += w
-                    sp += w * (pj + rho0 * (bx * rx + by * ry + bz * rz))
-        p = max(sp / sw, p_floor) if sw > SW_MIN * ad else 0.0  # w carries ad here
-        rho[i] = rho0 * (1.0 + p / B) ** inv_gamma
+                    sp += w * tm.adami_pressure(pj, bx, by, bz, rx, ry, rz)
+        p = tm.adami_wall_pressure(sp, sw, SW_MIN * ad, p_floor)  # w carries ad here
+        rho[i] = tm.tait_density(p, rho0, B, inv_gamma)
 
 
 @cuda.jit
@@ -817,41 +728,6 @@ def k_place_one(slot, ids, vec, A):
 
 
 # ------------------------------------------------------------------ bodies' mDBC (fluid.boundary_correction)
-@cuda.jit(device=True)
-def d_solve(A, b, n):
-    """``fluid.boundary_correction._solve``: ``A x = b`` in place by Gaussian elimination
-    with partial pivoting; returns the determinant (0 if singular)."""
-    det = 1.0
-    for k in range(n):
-        p = k
-        for r in range(k + 1, n):
-            if abs(A[r, k]) > abs(A[p, k]):
-                p = r
-        if A[p, k] == 0.0:
-            return 0.0
-        if p != k:
-            det = -det
-            for c in range(n):
-                t = A[k, c]
-                A[k, c] = A[p, c]
-                A[p, c] = t
-            t = b[k]
-            b[k] = b[p]
-            b[p] = t
-        det *= A[k, k]
-        for r in range(k + 1, n):
-            f = A[r, k] / A[k, k]
-            for c in range(k, n):
-                A[r, c] -= f * A[k, c]
-            b[r] -= f * b[k]
-    for k in range(n - 1, -1, -1):
-        s = b[k]
-        for c in range(k + 1, n):
-            s -= A[k, c] * b[c]
-        b[k] = s / A[k, k]
-    return det
-
-
 @cuda.jit
 def k_mdbc(P, rho, mass, kind, ids, goff, id_lo, n, start, lo, inv_cell, nx, ny, nz, kernel, ad, h, rho0, det_min):
     """``fluid.boundary_correction.mdbc_density`` (English et al. 2022, mDBC): the density
@@ -864,7 +740,7 @@ def k_mdbc(P, rho, mass, kind, ids, goff, id_lo, n, start, lo, inv_cell, nx, ny,
     zc = dim - 1
     m = dim + 1
     R2 = 4.0 * h * h
-    Fs = (-5.0 * ad / (h * h)) if kernel == WENDLAND else (ad / (h * h))  # fluid.kernels.grad_scale
+    Fs = tm.kernel_grad_scale(kernel, ad, h)
     A = cuda.local.array((4, 4), np.float64)
     bv = cuda.local.array(4, np.float64)
     row = cuda.local.array(4, np.float64)
@@ -890,20 +766,12 @@ def k_mdbc(P, rho, mass, kind, ids, goff, id_lo, n, start, lo, inv_cell, nx, ny,
             for k in range(4):
                 A[a, k] = 0.0
         col[0] = 1.0
-        cx = d_clamp_cell(gx, lo[0], inv_cell, nx)
-        cz = d_clamp_cell(gz, lo[2], inv_cell, nz)
-        cy = d_clamp_cell(gy, lo[1], inv_cell, ny) if three else 0
+        cx, cy, cz = cell_coords(gx, gy, gz, lo, inv_cell, True, nx, ny, nz)
         dys = 3 if three else 1
         for dz in range(-1, 2):
             for kk in range(dys):
                 dy = kk - 1 if three else 0
-                yy = cy + dy
-                zz = cz + dz
-                if yy < 0 or yy >= ny or zz < 0 or zz >= nz:
-                    continue
-                base = nx * (yy + ny * zz)
-                j0 = start[base + max(cx - 1, 0)]
-                j1 = start[base + min(cx + 1, nx - 1) + 1]
+                j0, j1 = row_range(cx, cy, cz, dy, dz, nx, ny, nz, start, 1)
                 for j in range(j0, j1):
                     if kind[j] != 0:
                         continue
@@ -915,52 +783,13 @@ def k_mdbc(P, rho, mass, kind, ids, goff, id_lo, n, start, lo, inv_cell, nx, ny,
                         continue
                     q = math.sqrt(r2) / h
                     V = mass[j] / rho[j]
-                    VF = -V * (Fs * d_grad_shape(kernel, q))
-                    row[0] = V * d_w_value(kernel, q, ad)
-                    col[1] = rx
-                    row[1] = VF * rx
-                    col[dim] = rz
-                    row[dim] = VF * rz
-                    if three:
-                        col[2] = ry
-                        row[2] = VF * ry
-                    for a in range(m):
-                        for k in range(m):
-                            A[a, k] += row[a] * col[k]
-                        bv[a] += row[a] * rho[j]
-        s0 = A[0, 0]
-        sb = bv[0]
-        det = d_solve(A, bv, m)
-        if abs(det) >= det_min:
-            val = bv[0]
-            for k in range(dim):
-                val -= o[k] * bv[k + 1]
-        elif s0 > 0.0:
-            val = sb / s0
-        else:
-            val = rho0
-        rho[i] = max(val, rho0)
+                    VF = -V * (Fs * tm.kernel_grad_shape(kernel, q))
+                    tm.mdbc_add_neighbour(A, bv, row, col, m, V, tm.kernel_w(kernel, q, ad), VF, rx, ry, rz, rho[j],
+                                          three)
+        rho[i] = tm.mdbc_extrapolate(A, bv, m, o, dim, det_min, rho0)[0]
 
 
 # ------------------------------------------------------------------ MLS density re-initialisation (fluid.mls)
-@cuda.jit(device=True)
-def d_det4(m00, m01, m02, m03, m10, m11, m12, m13, m20, m21, m22, m23, m30, m31, m32, m33):
-    """``fluid.mls._det4``: a 4 x 4 determinant by 2 x 2 minors."""
-    s0 = m00 * m11 - m10 * m01
-    s1 = m00 * m12 - m10 * m02
-    s2 = m00 * m13 - m10 * m03
-    s3 = m01 * m12 - m11 * m02
-    s4 = m01 * m13 - m11 * m03
-    s5 = m02 * m13 - m12 * m03
-    c5 = m22 * m33 - m32 * m23
-    c4 = m21 * m33 - m31 * m23
-    c3 = m21 * m32 - m31 * m22
-    c2 = m20 * m33 - m30 * m23
-    c1 = m20 * m32 - m30 * m22
-    c0 = m20 * m31 - m30 * m21
-    return s0 * c5 - s1 * c4 + s2 * c3 + s3 * c2 - s4 * c1 + s5 * c0
-
-
 @cuda.jit
 def k_mls(P, rho, mass, kind, n, start, lo, inv_cell, nx, ny, nz, kernel, ad, h, min_det, out):
     """``fluid.mls.mls_density`` (Sunara et al. 2021, Eq. 9-12): the MLS density of
@@ -976,9 +805,7 @@ def k_mls(P, rho, mass, kind, n, start, lo, inv_cell, nx, ny, nz, kernel, ad, h,
         xa = P[0, a]
         za = P[zc, a]
         ya = P[1, a] if three else 0.0
-        cx = d_clamp_cell(xa, lo[0], inv_cell, nx)
-        cz = d_clamp_cell(za, lo[2], inv_cell, nz)
-        cy = d_clamp_cell(ya, lo[1], inv_cell, ny) if three else 0
+        cx, cy, cz = cell_coords(xa, ya, za, lo, inv_cell, True, nx, ny, nz)
         a00 = 0.0
         a01 = 0.0
         a02 = 0.0
@@ -997,19 +824,13 @@ def k_mls(P, rho, mass, kind, n, start, lo, inv_cell, nx, ny, nz, kernel, ad, h,
         for dz in range(-1, 2):
             for k in range(dys):
                 dy = k - 1 if three else 0
-                yy = cy + dy
-                zz = cz + dz
-                if yy < 0 or yy >= ny or zz < 0 or zz >= nz:
-                    continue
-                base = nx * (yy + ny * zz)
-                j0 = start[base + max(cx - 1, 0)]
-                j1 = start[base + min(cx + 1, nx - 1) + 1]
+                j0, j1 = row_range(cx, cy, cz, dy, dz, nx, ny, nz, start, 1)
                 for b in range(j0, j1):
                     rx = (xa - P[0, b]) * ih
                     rz = (za - P[zc, b]) * ih
                     ry = (ya - P[1, b]) * ih if three else 0.0
                     q = math.sqrt(rx * rx + ry * ry + rz * rz)
-                    mw = mass[b] * d_w_value(kernel, q, ad)
+                    mw = mass[b] * tm.kernel_w(kernel, q, ad)
                     vw = mw / rho[b]
                     a00 += vw
                     a01 += vw * rx
@@ -1025,16 +846,7 @@ def k_mls(P, rho, mass, kind, n, start, lo, inv_cell, nx, ny, nz, kernel, ad, h,
                     s1 += mw * rx
                     s2 += mw * ry
                     s3 += mw * rz
-        if not three:
-            a22 = 1.0
-        shepard = s0 / a00
-        scale = a00 * a11 * a22 * a33
-        det = d_det4(a00, a01, a02, a03, a01, a11, a12, a13, a02, a12, a22, a23, a03, a13, a23, a33)
-        if scale > 0.0 and det / scale > min_det:
-            num = d_det4(s0, a01, a02, a03, s1, a11, a12, a13, s2, a12, a22, a23, s3, a13, a23, a33)
-            out[a] = num / det
-        else:
-            out[a] = shepard
+        out[a] = tm.mls_solve(a00, a01, a02, a03, a11, a12, a13, a22, a23, a33, s0, s1, s2, s3, three, min_det)[0]
 
 
 @cuda.jit
