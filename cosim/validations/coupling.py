@@ -9,7 +9,6 @@ from scipy.optimize import brentq
 
 from cosim.validations.registry import case
 
-RHO, G = 1000.0, 9.81
 #: the moored box's duration [s] by variant (quick: True); the rest is the file's (scenes/moored-body.toml)
 MOORED_DURATION = {True: 40.0, False: 120.0}
 
@@ -62,7 +61,7 @@ def moored_body(quick: bool) -> dict:
     with case_scene.built(scene) as b:
         c, bodies, fluid, mooring = b.coupler, b.bodies, b.fluid, b.mooring
         c.run(t_end)
-    (left, right) = scene.moorings.lines
+    left, right = scene.moorings.lines
     x_rest = 0.5 * (left.anchor[0] + right.anchor[0])
     k = bodies.kinematics()
     z_eq = moored_box_equilibrium(scene)
