@@ -190,18 +190,18 @@ def test_initialize_twice_adds_nothing_twice():
 
 
 def test_checkpoint_restart_reproduces_the_run():
-    def make():
-        from cosim.validations.coupling import moored_box_scene
-        bodies, fluid, mooring, sites = moored_box_scene(cells=8)
-        return Coupler(bodies=bodies, fluid=fluid, moorings=[(mooring, sites)]), bodies
-    c, b = make()
-    c.run(1.0)
-    cp = c.save_state()
-    c.run(2.0)
-    ref = b.kinematics()
-    c.load_state(cp)
-    assert c.t == 1.0 and len(c.ledger) == cp["ledger"]
-    c.run(2.0)
+    from cosim.validations import case_scene
+    from cosim.validations.coupling import moored_box_scene
+
+    with case_scene.built(moored_box_scene(True)) as built:
+        c, b = built.coupler, built.bodies
+        c.run(1.0)
+        cp = c.save_state()
+        c.run(2.0)
+        ref = b.kinematics()
+        c.load_state(cp)
+        assert c.t == 1.0 and len(c.ledger) == cp["ledger"]
+        c.run(2.0)
     for a, d in zip(b.kinematics(), ref):
         np.testing.assert_array_equal(a, d)
 

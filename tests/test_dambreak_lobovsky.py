@@ -72,6 +72,19 @@ def test_the_measured_pressures_are_the_ones_source_txt_describes():
     assert m["peak_rel_err"]["P1"] == pytest.approx(0.1 / 3.0441, rel=1e-9)
 
 
+def test_the_scene_holds_the_sensors_the_case_reads():
+    """The case reads its pressures where refdata SOURCE.txt puts the sensors (SENSORS); the
+    scene file (what ``cosim run`` of it records) holds the same far-wall patches, the column
+    H high, the tank TANK_L long, and each variant's patches are 2 h long (h = sqrt(2) dx,
+    the dam break's set-up)."""
+    for quick in (True, False):
+        s = lob.lobovsky_scene(*lob.RUNS[quick])
+        assert s.domain.water[0].hi[1] == lob.H and s.domain.length == lob.TANK_L
+        assert [p.name for p in s.probes.pressure] == list(lob.SENSORS)
+        assert [p.centre for p in s.probes.pressure] == [(lob.TANK_L, z) for z in lob.SENSORS.values()]
+        assert all(p.size == pytest.approx(2 * math.sqrt(2) * s.fluid.dx, rel=1e-9) for p in s.probes.pressure)
+
+
 def test_dambreak_lobovsky_validation_quick():
     """dx = H/20, t* <= 5 (cosim validate dambreak-lobovsky --quick): the surge at the four
     gauges against both measured runs within the quick variant's 0.06 RMS, its arrival at

@@ -17,6 +17,7 @@ by hand: a scene-built case through :func:`load`, a code-built one through :func
 from __future__ import annotations
 
 import dataclasses
+import json
 import tempfile
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
@@ -74,6 +75,23 @@ def number(x: float) -> str:
     0.18750000000000003), so that a variant whose values the file holds is the file's scene,
     equal field for field."""
     return repr(round(float(x), 12))
+
+
+def settings(part: str, values: dict) -> list[str]:
+    """``values`` ({field: value}) as :func:`load`'s assignments to the fields of ``part``
+    (e.g. ``"fluid"``): numbers as :func:`number` writes them, booleans and strings as TOML
+    writes them (``{"alpha": 0.05, "diffusion": "none"}`` -> ``["fluid.alpha=0.05",
+    'fluid.diffusion="none"']``)."""
+    def toml(v) -> str:
+        if isinstance(v, bool):
+            return "true" if v else "false"
+        if isinstance(v, int):
+            return str(v)
+        if isinstance(v, float):
+            return number(v)
+        return json.dumps(str(v))
+
+    return [f"{part}.{k}={toml(v)}" for k, v in values.items()]
 
 
 def load(case: str, values: Sequence[str] = ()):

@@ -9,68 +9,64 @@ from scipy.optimize import brentq
 
 from cosim.validations.registry import case
 
-RHO, G = 1000.0, 9.81
-# a 2-D box (1 m thick) held by two catenary lines from its lower corners
-BOX_W, BOX_H, BOX_RHO = 2.0, 1.0, 500.0
-ANCHOR_X, ANCHOR_Z = 20.0, -10.0
-LINE_L, LINE_W = 25.0, 50.0
+#: the moored box's duration [s] by variant (quick: True); the rest is the file's (scenes/moored-body.toml)
+MOORED_DURATION = {True: 40.0, False: 120.0}
 
 
-def moored_box_scene(offset=(3.0, 0.1), cells=24, damping=(1500.0, 1500.0, 1500.0)):
-    """Bodies, fluid and moorings of the moored-box case (imports MuJoCo)."""
-    from bodies import builders
-    from bodies.mujoco_bodies import MujocoBodies
-    from fluid.analytic import AnalyticFluid
-    from moorings import CatenaryMooring, MooringLine
+def moored_box_scene(quick: bool):
+    """The scene ``scenes/moored-body.toml`` (the full variant's) run for the variant's
+    duration (:data:`MOORED_DURATION`): a 2-D box held by two catenary lines from its lower
+    corners, in the analytic fluid, released offset from its rest position."""
+    from cosim.validations import case_scene
 
-    z0 = 0.5 * BOX_H - BOX_RHO / RHO * BOX_H  # free-floating equilibrium, centre height
-    sites = {"fl_left": (-0.5 * BOX_W, 0.0, -0.5 * BOX_H), "fl_right": (0.5 * BOX_W, 0.0, -0.5 * BOX_H)}
-    xml = builders.scene(builders.box("box", (BOX_W, BOX_H), (offset[0], 0.0, z0 + offset[1]), density=BOX_RHO,
-                                      planar=True, sites=sites), gravity=G, timestep=2e-3)
-    bodies = MujocoBodies(xml)
-    bx, bz, br = damping
-    fluid = AnalyticFluid(rho=RHO, g=G, cells=cells, linear_damping={"box": [bx, 0.0, bz, 0.0, br, 0.0]})
-    lines = [MooringLine((-ANCHOR_X, ANCHOR_Z), LINE_L, LINE_W, name="left"),
-             MooringLine((ANCHOR_X, ANCHOR_Z), LINE_L, LINE_W, name="right")]
-    return bodies, fluid, CatenaryMooring(lines), ("fl_left", "fl_right")
+    return case_scene.load("moored-body", [f"world.duration={case_scene.number(MOORED_DURATION[quick])}"])
 
 
-def moored_box_equilibrium():
-    """Centre height [m] where buoyancy balances weight plus the lines' vertical
-    pull, at x = 0 and no tilt (symmetry); solved with the catenary law alone."""
+def moored_box_equilibrium(scene) -> float:
+    """Centre height [m] where buoyancy balances weight plus the lines' vertical pull,
+    at x midway between the anchors and no tilt (symmetry), of the box of ``scene``
+    (:func:`moored_box_scene`: a box of width ``W``, height ``B`` and density ``rho_b`` on two
+    lines from its lower corners to anchors at the same depth either side, still water at
+    ``fluid.level``); solved with the catenary law alone (Barreiro et al. 2016, Eq. 35-39)."""
     from moorings.catenary import solve
 
-    m = BOX_RHO * BOX_W * BOX_H
+    box, (left, right), rho, g = scene.bodies[0], scene.moorings.lines, scene.fluid.rho, scene.world.g
+    (W, B), level = box.size, scene.fluid.level
+    spread = 0.5 * (right.anchor[0] - left.anchor[0])
+    m = box.density * W * B
 
     def residual(z):
-        h = (z - 0.5 * BOX_H) - ANCHOR_Z  # fairlead height above the seabed
-        V = solve(ANCHOR_X - 0.5 * BOX_W, h, LINE_L, LINE_W).V
-        draft = min(max(0.5 * BOX_H - z, 0.0), BOX_H)
-        return RHO * G * BOX_W * draft - m * G - 2.0 * V
+        h = (z - 0.5 * B) - left.anchor[1]  # fairlead height above the seabed
+        V = solve(spread - 0.5 * W, h, left.length, left.weight).V
+        draft = min(max(level + 0.5 * B - z, 0.0), B)
+        return rho * g * W * draft - m * g - 2.0 * V
 
-    return brentq(residual, -0.5 * BOX_H + 1e-9, 0.5 * BOX_H - 1e-9, xtol=1e-14)
+    return brentq(residual, level - 0.5 * B + 1e-9, level + 0.5 * B - 1e-9, xtol=1e-14)
 
 
 @case("moored-body", "2-D box on two catenary lines, analytic fluid: settles where lines + hydrostatics balance",
       target="decay to the equilibrium predicted by lines + hydrostatics",
       quick="at rest at the equilibrium of lines + hydrostatics within 0.1 mm, 0.1 mrad and 0.1 mm/s after 40 s "
-            "(12 cells per side of the analytic fluid) instead of 120 s (24 cells)")
+            "instead of 120 s", scene=moored_box_scene)
 def moored_body(quick: bool) -> dict:
-    """The box is offset 3 m sideways and 0.1 m up and released; damped (heave
-    damping ratio ~0.17), it must come to rest at the equilibrium of buoyancy,
-    weight and the lines' pull (solved independently by
-    :func:`moored_box_equilibrium`), within 0.1 mm and 0.1 mrad. Uses the analytic fluid (seconds); the SPH variant comes with the
-    SPH-body coupling."""
-    from cosim.coupler import Coupler
+    """The box of ``scenes/moored-body.toml`` (:func:`moored_box_scene`) is offset 3 m
+    sideways and 0.1 m up and released; damped (heave damping ratio ~0.17), it must come to
+    rest at the equilibrium of buoyancy, weight and the lines' pull (solved independently
+    from the scene's fields by :func:`moored_box_equilibrium`), within 0.1 mm and 0.1 mrad.
+    Uses the analytic fluid (seconds); the SPH variant is ``moored-body-sph``."""
+    from cosim.validations import case_scene
 
-    bodies, fluid, mooring, sites = moored_box_scene(cells=12 if quick else 24)
-    c = Coupler(bodies=bodies, fluid=fluid, moorings=[(mooring, sites)])
-    t_end = 40.0 if quick else 120.0
-    c.run(t_end)
+    scene = moored_box_scene(quick)
+    t_end = scene.world.duration
+    with case_scene.built(scene) as b:
+        c, bodies, fluid, mooring = b.coupler, b.bodies, b.fluid, b.mooring
+        c.run(t_end)
+    left, right = scene.moorings.lines
+    x_rest = 0.5 * (left.anchor[0] + right.anchor[0])
     k = bodies.kinematics()
-    z_eq = moored_box_equilibrium()
+    z_eq = moored_box_equilibrium(scene)
     q = bodies.data.qpos
-    err = {"x_m": abs(k.com[0, 0]), "z_m": abs(k.com[0, 2] - z_eq), "roll_rad": abs(q[2])}
+    err = {"x_m": abs(k.com[0, 0] - x_rest), "z_m": abs(k.com[0, 2] - z_eq), "roll_rad": abs(q[2])}
     speed = float(np.abs(k.velocity).max())
     led = c.ledger.arrays()
     F_last = led["fluid_force"][-1, 0] + led["mooring_force"][-1, 0] + led["gravity"][-1, 0]

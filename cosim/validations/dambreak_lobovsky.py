@@ -15,8 +15,9 @@ from cosim.validations.registry import case
 
 DATASET = "dambreak_lobovsky2014"
 
-H, L_COL, TANK_L = 0.3, 0.6, 1.61  #: column height and length, tank length [m] (refdata SOURCE.txt)
-TANK_H = 1.0  #: side-wall height [m]: the run-up at the far wall stays below it
+#: column height and tank length [m] (refdata SOURCE.txt), as the scene file gives them (with the
+#: column's length, 0.6 m, and the side walls' height, 1.0 m: the run-up at the far wall stays below it)
+H, TANK_L = 0.3, 1.61
 #: level gauges [m] from the left wall (refdata SOURCE.txt: TNL-SPH's set-up of the case)
 GAUGES = {"H1": 0.300, "H2": 0.865, "H3": 1.114, "H4": 1.3625}
 
@@ -162,13 +163,30 @@ def layer_level(pos, kind, gauges, dx: float) -> np.ndarray:
     return out
 
 
+def lobovsky_scene(dx: float, t_star_end: float = 11.0, **settings):
+    """The scene ``scenes/dambreak-lobovsky.toml`` at spacing ``dx`` [m], run to ``t_star_end``
+    (t* = t sqrt(g / H)), its pressure patches 2 h long; ``settings``: the SPH fluid's
+    fields set on it (``fluid.KEY``)."""
+    from cosim.scene.build import fluid_config
+    from cosim.scene.setup import choose
+    from cosim.validations import case_scene
+    from cosim.validations.case_scene import number
+
+    values = [f"fluid.dx={number(dx)}", f"world.duration={number(t_star_end / math.sqrt(9.81 / H))}"]
+    values += case_scene.settings("fluid", settings)
+    scene = case_scene.load("dambreak-lobovsky", values)
+    h = fluid_config(scene, choose(scene), numbers_only=True).h
+    return scene.with_values([f"probes.pressure[{i}].size={number(2 * h)}" for i in range(len(scene.probes.pressure))])
+
+
 def run_lobovsky(dx: float, t_star_end: float = 11.0, sample_star: float = 0.05, p_star: float = 0.005,
-                 **overrides) -> dict:
-    """The dam break (2-D, x-z): a column ``L_COL`` x ``H`` at rest against the left wall
+                 **settings) -> dict:
+    """The dam break (2-D, x-z): a column 0.6 m x ``H`` at rest against the left wall
     of a tank ``TANK_L`` long, released at once at t = 0 (the gate's removal is not
-    modelled). Fluid: the solver's defaults (Wendland, h = sqrt(2) dx, alpha = 0.01,
-    Fourtakas delta = 0.1, CFL 0.2, dynamic boundaries), c0 = 10 sqrt(2 g H) (Yang & Li 2020, Eq.
-    6's rule); the column starts hydrostatic. The level at each gauge (``h``) is the top of
+    modelled): the scene :func:`lobovsky_scene` (``settings``: its SPH fluid's fields).
+    Fluid: the scene's set-up for a dam break ("impact": Wendland, h = sqrt(2) dx, alpha =
+    0.01, Fourtakas delta = 0.1, CFL 0.2, dynamic boundaries), c0 = 10 sqrt(2 g H) (Yang & Li
+    2020, Eq. 6's rule); the column starts hydrostatic. The level at each gauge (``h``) is the top of
     the water standing on the floor there (:func:`layer_level`); ``h_top`` is the highest
     free surface on the gauge's line (:func:`fluid.probes.surface_elevation`: the highest z
     where the kernel-interpolated fluid fraction crosses 0.5), which also reads a jet or
@@ -177,20 +195,19 @@ def run_lobovsky(dx: float, t_star_end: float = 11.0, sample_star: float = 0.05,
     2h long) is sampled every ``p_star`` in t* (``p`` over rho g H, and ``p_point``, Eq. 15
     at the face point). Returns t* and h/H per gauge, the pressures, and the CPU seconds of
     the run."""
-    from fluid.geometry import assemble, block, set_hydrostatic, tank_walls
-    from fluid.particles import Kind
-    from fluid.probes import surface_elevation
-    from fluid.solver import Fluid, FluidConfig
+    from cosim.validations import case_scene
 
-    g = 9.81
-    walls = [(tank_walls([0.0, 0.0], [TANK_L, TANK_H], dx, 3), Kind.FIXED_WALL, 0)]
-    b = assemble(2, dx, 1000.0, block([0.0, 0.0], [L_COL, H], dx), walls)
-    cfg = FluidConfig(dim=2, dx=dx, u_max=math.sqrt(2 * g * H), domain_lo=(-0.1, -0.1),
-                      domain_hi=(TANK_L + 0.1, TANK_H + 0.5), **overrides)
-    set_hydrostatic(b.particles, H, 1000.0, cfg.speed_of_sound, cfg.gamma, g)
-    f = Fluid(cfg, b.particles)
+    with case_scene.built(lobovsky_scene(dx, t_star_end, **settings)) as b:
+        return _levels_and_pressures(b.sph, t_star_end, sample_star, p_star)
+
+
+def _levels_and_pressures(f, t_star_end: float, sample_star: float, p_star: float) -> dict:
+    """Advance the dam break ``f`` (initialised at t = 0) to ``t_star_end``, reading the
+    levels every ``sample_star`` and the pressures every ``p_star`` (:func:`run_lobovsky`)."""
+    from fluid.probes import surface_elevation
+
+    g, cfg, dx = f.config.g_down, f.config, f.config.dx
     c0, w0 = time.process_time(), time.perf_counter()
-    f.initialize(0.0)
     scale = math.sqrt(g / H)  # t* = t sqrt(g / H)
     gauges = np.array(list(GAUGES.values()))
     def levels():
@@ -308,14 +325,19 @@ LOBOVSKY_TARGET = (f"water level h/H at the gauges H1-H4 against Lobovsky et al.
                    f"reflected bore (t* > {T_JUDGED:g}) reported with the runs' own spread")
 
 
+#: each variant's spacing [m] and end t* (quick: True; the quick one is the scene file's)
+RUNS = {True: (0.015, T_JUDGED), False: (0.005, 11.0)}
+
+
 @case("dambreak-lobovsky", "2-D dam break of Lobovsky et al. 2014, H = 0.3 m (Yang & Li 2020, Appendix A, Figure A2): "
       "water levels at the gauges H1-H4 against the measured runs", target=LOBOVSKY_TARGET,
       quick=f"dx = H/20 = 15 mm, t* <= {T_JUDGED:g}: the surge's arrival at H2-H4 within {TOL_ARRIVAL:g} in t*, "
             f"and the RMS difference within {TOL_RMS_QUICK:g} (the full variant's {TOL_RMS:g} at H/60: at H/20 the "
-            f"surge is 5-7 particles thick)")
+            f"surge is 5-7 particles thick)", scene=lambda quick: lobovsky_scene(*RUNS[quick]))
 def dambreak_lobovsky(quick: bool) -> dict:
-    """See :func:`run_lobovsky` and :func:`compare`. Full: dx = H/60 = 5 mm, t* <= 11
-    (1.92 s); quick: dx = H/20 = 15 mm, t* <= 5 (0.87 s).
+    """See :func:`run_lobovsky` and :func:`compare`; the scene ``scenes/dambreak-lobovsky.toml``
+    (:func:`lobovsky_scene`). Full: dx = H/60 = 5 mm, t* <= 11 (1.92 s); quick: dx = H/20 =
+    15 mm, t* <= 5 (0.87 s).
 
     Result: the full variant meets the declared target. Over the surge (t* <= 5) the largest
     RMS difference of h/H is 0.033 (H2 against run ETSIN 01; 0.011-0.026 elsewhere); the
@@ -341,7 +363,7 @@ def dambreak_lobovsky(quick: bool) -> dict:
     not judged, not met: single-sample impact spikes 1.2-4 times the measured peaks, the mean
     levels close): docs/validation/dambreak-lobovsky_history.md.
     """
-    dx, t_end = (0.015, T_JUDGED) if quick else (0.005, 11.0)
+    dx, t_end = RUNS[quick]
     r = run_lobovsky(dx, t_end)
     m = compare(r["t_star"], r["h"], t_end)
     top = compare(r["t_star"], r["h_top"], t_end)

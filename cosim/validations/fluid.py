@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -282,19 +283,50 @@ class _GateLift(Signal):
 T_RELEASE = 0.84
 
 
-def run_dambreak(n_a: int, T_end: float = 7.0, a: float = 0.05715, tank: float = 12.0,
-                 gate_T_open: float = 0.0, **overrides) -> dict:
-    """Collapse of a water column ``a`` wide and ``2a`` high [m] (n^2 = 2) on a dry bed, the
-    gate removed instantly at t = 0, in a tank ``tank * a`` long [-] and 3a high, ``n_a``
-    particles across the column; ``T_end`` [-] in units of T below; ``gate_T_open`` [-]
+def dambreak_scene(n_a: int, T_end: float = 7.0, **settings):
+    """The scene ``scenes/dambreak-2d.toml`` with ``n_a`` particles across the column, run to
+    ``T_end`` [-] (T = t sqrt(2 g / a)); ``settings``: the SPH fluid's fields set on it
+    (``fluid.KEY``, e.g. ``alpha=0.05``)."""
+    scene = case_scene.load("dambreak-2d")
+    a = scene.domain.water[0].hi[0]
+    return case_scene.load("dambreak-2d", [f"fluid.dx={case_scene.number(a / n_a)}",
+                                           f"world.duration={case_scene.number(T_end / math.sqrt(2 * 9.81 / a))}"]
+                           + case_scene.settings("fluid", settings))
+
+
+def _gated(scene, t_open: float) -> Fluid:
+    """The fluid of ``scene`` (:func:`dambreak_scene`) with a gate 3 spacings thick standing
+    against the column, lifted at constant speed by 2.2 a over ``t_open`` [s]
+    (:class:`_GateLift`): a diagnostic, not a scene's; initialised at t = 0."""
+    from cosim.scene.build import domain_points, fluid_config
+    from cosim.scene.setup import choose
+    from fluid.geometry import assemble, block
+
+    cfg = fluid_config(scene, choose(scene))
+    a, top, dx = scene.domain.water[0].hi[0], scene.domain.water[0].hi[1], cfg.dx
+    # room above the tank for the lifted gate (the domain the particles start in is too low)
+    cfg = dataclasses.replace(cfg, domain_lo=(-0.5 * a, -0.5 * a), domain_hi=(scene.domain.length + 0.5 * a, 6 * a))
+    pts, walls = domain_points(scene, cfg)
+    walls.append((block([a, 0.0], [a + 3 * dx, 2.2 * a], dx), Kind.MOVING_WALL, 1))
+    b = assemble(2, dx, cfg.rho0, pts, walls)
+    set_hydrostatic(b.particles, top, cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g_down)
+    f = Fluid(cfg, b.particles)
+    f.prescribe_motion(1, Translation((0.0, 1.0), _GateLift(2.2 * a, t_open)))
+    f.initialize(0.0)
+    return f
+
+
+def run_dambreak(n_a: int, T_end: float = 7.0, gate_T_open: float = 0.0, **settings) -> dict:
+    """The scene :func:`dambreak_scene` (``n_a`` particles across the column, ``settings``
+    its SPH fluid's fields) to ``T_end`` [-] in units of T below; ``gate_T_open`` [-]
     (diagnostic, 0 = the idealised instantaneous release) instead lifts a gate 3 spacings
-    thick, standing against the column, at constant speed by 2.2 a over that T.
+    thick, standing against the column, at constant speed by 2.2 a over that T (:func:`_gated`).
 
     Set-up: Martin & Moyce (1952, Phil. Trans. R. Soc. A 244, 312), n^2 = 2, a = 2.25 in =
-    0.05715 m, a channel long enough for their front to reach Z = 14 (their Fig. 3). The
-    model has no physical scale (c0 = 10 sqrt(2 g 2a); h, dt scale with a). Defaults otherwise:
-    Wendland h = sqrt(2) dx, alpha = 0.01, Fourtakas delta = 0.1, CFL 0.2, dynamic
-    boundaries; the column starts at rest with the hydrostatic Tait density.
+    0.05715 m, the column released at once on a dry bed in a tank 12 a long, 3 a high. The
+    model has no physical scale (c0 = 10 sqrt(2 g 2a); h, dt scale with a). The scene's
+    set-up for a dam break ("impact"): Wendland h = sqrt(2) dx, alpha = 0.01, Fourtakas
+    delta = 0.1, CFL 0.2, dynamic boundaries; the column starts hydrostatic.
 
     Scalings (refdata SOURCE.txt; every series is for n^2 = 2, height 2a): T = n t sqrt(g/a)
     = t sqrt(2 g / a), Z = x_front / a from the back wall; residual height at the back wall
@@ -324,22 +356,22 @@ def run_dambreak(n_a: int, T_end: float = 7.0, a: float = 0.05715, tank: float =
     ``p_noise_rms``: the particle-scale pressure noise (:func:`_pressure_noise`) averaged over
     T = 1, 2, 3, in units of rho0 g 2a (what MLS re-initialisation, ``mls_every``, is for).
     """
-    from fluid.geometry import assemble, block, tank_walls
-
-    g = 9.81
-    dx = a / n_a
-    walls = [(tank_walls([0.0, 0.0], [tank * a, 3 * a], dx, 3), Kind.FIXED_WALL, 0)]
-    if gate_T_open > 0:  # diagnostic: a gate 3 spacings thick holding the column, lifted
-        walls.append((block([a, 0.0], [a + 3 * dx, 2.2 * a], dx), Kind.MOVING_WALL, 1))
-    b = assemble(2, dx, 1000.0, block([0.0, 0.0], [a, 2 * a], dx), walls)
-    cfg = FluidConfig(dim=2, dx=dx, u_max=math.sqrt(2 * g * 2 * a),
-                      domain_lo=(-0.5 * a, -0.5 * a), domain_hi=((tank + 0.5) * a, 6 * a), **overrides)
-    set_hydrostatic(b.particles, 2 * a, 1000.0, cfg.speed_of_sound, cfg.gamma, g)
-    f = Fluid(cfg, b.particles)
-    tscale = math.sqrt(2 * g / a)  # T = t sqrt(2 g / a)
+    scene = dambreak_scene(n_a, T_end, **settings)
+    a = scene.domain.water[0].hi[0]
+    tank = round(scene.domain.length / a, 9)
     if gate_T_open > 0:
-        f.prescribe_motion(1, Translation((0.0, 1.0), _GateLift(2.2 * a, gate_T_open / tscale)))
-    f.initialize(0.0)
+        return _dambreak_front(_gated(scene, gate_T_open / math.sqrt(2 * scene.world.g / a)), a, tank, T_end)
+    with case_scene.built(scene) as b:
+        return _dambreak_front(b.sph, a, tank, T_end)
+
+
+def _dambreak_front(f: Fluid, a: float, tank: float, T_end: float) -> dict:
+    """Advance the dam break ``f`` (initialised at t = 0; column ``a`` [m] wide, tank ``tank``
+    a long) to ``T_end`` [-], reading the front and the back wall's height every 0.05 in T;
+    the metrics of :func:`run_dambreak`."""
+    g, cfg, dx = f.config.g_down, f.config, f.config.dx
+    n_a = round(a / dx)
+    tscale = math.sqrt(2 * g / a)  # T = t sqrt(2 g / a)
     dT = 0.05
     Ts, Zs, Hs = [0.0], [1.0], [1.0]
     detached = 0
@@ -431,11 +463,12 @@ def run_dambreak(n_a: int, T_end: float = 7.0, a: float = 0.05715, tank: float =
       target="front position within 5 % over the published range; converges with dx",
       quick="the full variant's criterion at 20 particles across the column instead of 40: the front within 5 % "
             "RMS of Martin & Moyce after the experiment's release phase, with one time-origin offset of the "
-            "experiment fitted within 0 ... 0.84 in T")
+            "experiment fitted within 0 ... 0.84 in T", scene=lambda quick: dambreak_scene(20 if quick else 40))
 def dambreak_2d(quick: bool) -> dict:
     """Collapse of a water column ``a`` wide and ``2a`` high (Martin & Moyce 1952, n^2 = 2,
     a = 2.25 in) on a dry bed, the gate removed at once, in a tank 12 a long, to T = t
-    sqrt(2 g / a) = 7; 40 particles across the column (quick: 20). The surge front and the
+    sqrt(2 g / a) = 7; 40 particles across the column (quick: 20): the scene
+    ``scenes/dambreak-2d.toml`` (:func:`dambreak_scene`). The surge front and the
     residual height at the back wall against Martin & Moyce's tables and Fig. 3 (see
     :func:`run_dambreak`).
 
