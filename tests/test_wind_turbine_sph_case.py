@@ -48,6 +48,11 @@ def test_a_kept_run_is_read_back_and_a_stopped_one_resumes(tmp_path):
     again = wt.run_or_resume(_short("analytic", 6.0), tmp_path / "kept")  # finished: read, not run
     assert (tmp_path / "kept" / "run.h5").stat().st_mtime_ns == mtime
     assert np.array_equal(again["base.heave"], whole["base.heave"])
+    # a run of another scene kept there is refused, naming the field
+    from cosim.errors import InputError
+
+    with pytest.raises(InputError, match="fluid.rho differs"):
+        wt.run_or_resume(_short("analytic", 6.0).with_values(["fluid.rho=1000.0"]), tmp_path / "kept")
 
 
 def test_the_surface_scenes_keep_the_base_lines_and_sea():

@@ -312,6 +312,17 @@ def _read_resume(scene, out: Path, any_version: bool) -> dict:
     return ck
 
 
+def kept_scene_difference(scene, out) -> str | None:
+    """The first field (its key path) in which the run kept in the folder ``out`` (its
+    ``scene.toml``) differs from ``scene``, the fields a resumed run may change
+    (:data:`RESUMABLE`) not counted; None where they are one scene."""
+    from cosim.scene import Scene
+
+    kept = _scene_identity(Scene.from_toml(Path(out) / "scene.toml"))[0]
+    mine = _scene_identity(scene)[0]
+    return None if kept == mine else _first_difference(kept, mine)
+
+
 def _first_difference(a, b, prefix=""):
     if isinstance(a, dict) and isinstance(b, dict):
         for k in list(a) + [k for k in b if k not in a]:

@@ -94,16 +94,21 @@ def runs_folder(quick: bool) -> Path:
 
 
 def run_or_resume(scene, out: Path):
-    """The results of ``scene`` in the folder ``out``: read back if a run there has
-    finished, resumed from its checkpoint if one stopped (written by any version of the
+    """The results of ``scene`` in the folder ``out``: read back if a run of it there has
+    finished (a run of another scene there is refused), resumed from its checkpoint if one stopped (written by any version of the
     code: it may then not continue bit for bit, which its summary's ``resumed`` says),
     else run from the start."""
     import json
 
-    from cosim.scene.runner import CHECKPOINT, read
+    from cosim.errors import InputError
+    from cosim.scene.runner import CHECKPOINT, kept_scene_difference, read
 
     done = out / "summary.json"
     if done.is_file():
+        other = kept_scene_difference(scene, out)
+        if other is not None:
+            raise InputError(f"{out} holds a run of another scene ({other} differs); move it away, or point "
+                             f"COSIM_CASE_RUNS elsewhere")
         s = json.loads(done.read_text())
         if s.get("t_reached_s", 0.0) >= scene.world.duration - 1e-9 and not s.get("error"):
             return read(out)
