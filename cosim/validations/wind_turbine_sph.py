@@ -95,9 +95,9 @@ def runs_folder(quick: bool) -> Path:
 
 def run_or_resume(scene, out: Path):
     """The results of ``scene`` in the folder ``out``: read back if a run of it there has
-    finished (a run of another scene there is refused), resumed from its checkpoint if one stopped (written by any version of the
-    code: it may then not continue bit for bit, which its summary's ``resumed`` says),
-    else run from the start."""
+    finished (a run of another scene there is refused), resumed from its checkpoint if one
+    stopped (written by any version of the code: it may then not continue bit for bit,
+    which its summary's ``resumed`` says), else run from the start."""
     import json
 
     from cosim.errors import InputError
