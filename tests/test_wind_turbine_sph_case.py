@@ -139,9 +139,9 @@ def test_the_judging_against_the_stated_tolerances():
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason="the still-water draft -16 % at dx = 1.25 m (1.2 spacings in the draft) against the "
-                   "quick variant's 10 %; surge, heave, tensions and gauges met (docs/validation/"
-                   "wind-turbine-sph_history.md)")
+@pytest.mark.xfail(strict=True, reason="the still-water draft -16 % at dx = 1.25 m (1.2 spacings in the draft) "
+                   "against the quick variant's 10 %; surge, heave, tensions and gauges met "
+                   "(docs/validation/wind-turbine-sph_history.md)")
 def test_the_quick_case_meets_its_own_tolerances(tmp_path, monkeypatch):
     """cosim validate wind-turbine-sph --quick (about 20 CPU-minutes)."""
     from cosim import validation
