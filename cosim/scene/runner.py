@@ -316,9 +316,11 @@ def kept_scene_difference(scene, out) -> str | None:
     """The first field (its key path) in which the run kept in the folder ``out`` (its
     ``scene.toml``) differs from ``scene``, the fields a resumed run may change
     (:data:`RESUMABLE`) not counted; None where they are one scene."""
-    from cosim.scene import Scene
+    import tomllib
 
-    kept = _scene_identity(Scene.from_toml(Path(out) / "scene.toml"))[0]
+    kept = tomllib.loads((Path(out) / "scene.toml").read_text(encoding="utf-8"))  # as the run wrote it: every field
+    kept["world"] = {k: v for k, v in kept.get("world", {}).items() if k not in RESUMABLE}
+    kept = json.loads(json.dumps(kept, default=_json))
     mine = _scene_identity(scene)[0]
     return None if kept == mine else _first_difference(kept, mine)
 
