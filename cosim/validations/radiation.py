@@ -18,7 +18,7 @@ and radiation damping of linear potential flow.
   problem ``exp(-+ i k x)`` or, round a body in the open, the cylindrical ones
   ``H0^(2)(k r)`` (outgoing) and ``H0^(1)(k r)`` (incoming) of the axisymmetric problem
   (Newman 1977 §6.18; time factor ``exp(i w t)``): the reflection coefficient is the ratio
-  of their amplitudes (:func:`separate`).
+  of their amplitudes (:func:`cosim.validations.wave_propagation.separate`).
 - The reference: Capytaine's A33(w), B33(w) of the same truncated cylinder at the same
   depth (``fluid.potential.compute``, cached), and the outgoing wave that B33 implies by
   the energy flux, ``|A_out| = a w sqrt(B33 k / (4 rho g c_g))`` (the far field
@@ -35,7 +35,7 @@ from pathlib import Path
 import numpy as np
 
 from cosim.validations.registry import case
-from cosim.validations.wave_propagation import harmonics
+from cosim.validations.wave_propagation import harmonics, separate
 
 #: the case's scene (quick variant: its file's spacing)
 SCENE = Path(__file__).with_name("scenes") / "nearfield-radiation.toml"
@@ -48,39 +48,6 @@ REFLECTION_TOL, COEFFICIENT_TOL = 0.10, 0.10
 QUICK_REFLECTION_TOL, QUICK_COEFFICIENT_TOL = 0.20, 0.25
 #: panel size of the reference, in radii
 PANEL = 0.1
-
-
-def separate(x, z, k: float, geometry: str = "plane") -> tuple[complex, complex]:
-    """The outgoing and incoming complex amplitudes ``(A, B)`` [m] of a wave of wavenumber
-    ``k`` [rad/m] from its first-harmonic complex elevations ``z`` [m] (``eta =
-    Re(z exp(i w t))``) at positions ``x`` [m] along its line of travel (at least two, not
-    half a wavelength apart): ``z = A f(k x) + B g(k x)`` by least squares (Goda & Suzuki
-    1976 with two, Mansard & Funke 1980 with more), ``f, g = exp(-i k x), exp(i k x)``
-    (``geometry = "plane"``, the outgoing wave travelling towards +x) or ``H0^(2)(k r),
-    H0^(1)(k r)`` (``"cylindrical"``: ``x`` the distances r > 0 from the axis). The
-    reflection coefficient is ``|B| / |A|``."""
-    from scipy.special import hankel1, hankel2
-
-    from errors import InputError
-
-    x = np.asarray(x, float)
-    z = np.asarray(z, complex)
-    if x.ndim != 1 or x.shape != z.shape or len(x) < 2:
-        raise InputError(f"wave separation: give at least two positions and as many elevations, got {x.shape} and "
-                         f"{z.shape}")
-    if geometry == "plane":
-        basis = np.stack([np.exp(-1j * k * x), np.exp(1j * k * x)], axis=1)
-    elif geometry == "cylindrical":
-        if np.any(x <= 0):
-            raise InputError(f"wave separation: cylindrical waves need distances r > 0 from the axis, got {x}")
-        basis = np.stack([hankel2(0, k * x), hankel1(0, k * x)], axis=1)
-    else:
-        raise InputError(f"wave separation: geometry {geometry!r}; give 'plane' or 'cylindrical'")
-    if np.linalg.cond(basis) > 1e6:
-        raise InputError(f"wave separation: the gauges at {x} m do not tell the two waves apart (spaced by a whole "
-                         f"number of half wavelengths {math.pi / k:.4g} m); space them otherwise")
-    a, b = np.linalg.lstsq(basis, z, rcond=None)[0]
-    return complex(a), complex(b)
 
 
 def added_mass_damping(ts, force, amplitude: float, omega: float, stiffness: float) -> tuple[float, float]:

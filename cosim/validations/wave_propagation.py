@@ -45,14 +45,38 @@ def viscous_decay_per_wavelength(nu: float, T: float, depth: float, floor: bool)
     return -math.expm1(-rate * 2.0 * math.pi / k)
 
 
-def separate(x: np.ndarray, a: np.ndarray, k: float) -> tuple[complex, complex]:
-    """Complex amplitudes ``(A_i, A_r)`` [m] of the incident and reflected waves from the
-    complex first-harmonic amplitudes ``a`` [m] of ``eta = Re(a exp(i w t))`` at gauges
-    ``x`` [m] (at least two, not half a wavelength apart), ``a(x) = A_i exp(-ikx) + A_r exp(ikx)``
-    (Mansard & Funke 1980, least squares)."""
-    M = np.stack([np.exp(-1j * k * x), np.exp(1j * k * x)], axis=1)
-    sol = np.linalg.lstsq(M, a, rcond=None)[0]
-    return complex(sol[0]), complex(sol[1])
+def separate(x, z, k: float, geometry: str = "plane") -> tuple[complex, complex]:
+    """The outgoing and incoming complex amplitudes ``(A, B)`` [m] of a wave of wavenumber
+    ``k`` [rad/m] from its first-harmonic complex elevations ``z`` [m] (``eta =
+    Re(z exp(i w t))``) at positions ``x`` [m] along its line of travel (at least two, not
+    half a wavelength apart): ``z = A f(k x) + B g(k x)`` by least squares (Goda & Suzuki
+    1976 with two, Mansard & Funke 1980 with more), ``f, g = exp(-i k x), exp(i k x)``
+    (``geometry = "plane"``, the outgoing wave travelling towards +x: in a flume the
+    incident wave, the other the reflected one) or ``H0^(2)(k r),
+    H0^(1)(k r)`` (``"cylindrical"``: ``x`` the distances r > 0 from the axis). The
+    reflection coefficient is ``|B| / |A|``."""
+    from scipy.special import hankel1, hankel2
+
+    from cosim.errors import InputError
+
+    x = np.asarray(x, float)
+    z = np.asarray(z, complex)
+    if x.ndim != 1 or x.shape != z.shape or len(x) < 2:
+        raise InputError(f"wave separation: give at least two positions and as many elevations, got {x.shape} and "
+                         f"{z.shape}")
+    if geometry == "plane":
+        basis = np.stack([np.exp(-1j * k * x), np.exp(1j * k * x)], axis=1)
+    elif geometry == "cylindrical":
+        if np.any(x <= 0):
+            raise InputError(f"wave separation: cylindrical waves need distances r > 0 from the axis, got {x}")
+        basis = np.stack([hankel2(0, k * x), hankel1(0, k * x)], axis=1)
+    else:
+        raise InputError(f"wave separation: geometry {geometry!r}; give 'plane' or 'cylindrical'")
+    if np.linalg.cond(basis) > 1e6:
+        raise InputError(f"wave separation: the gauges at {x} m do not tell the two waves apart (spaced by a whole "
+                         f"number of half wavelengths {math.pi / k:.4g} m); space them otherwise")
+    a, b = np.linalg.lstsq(basis, z, rcond=None)[0]
+    return complex(a), complex(b)
 
 
 def harmonics(ts: np.ndarray, eta: np.ndarray, omega: float, trend: bool = False) -> np.ndarray:
