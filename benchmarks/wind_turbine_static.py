@@ -41,6 +41,8 @@ import time
 
 import numpy as np
 
+from cosim.validations.wind_turbine_sph import equilibrium_draft, static_draft
+
 POOL, DEPTH, SEABED = 16.0, 4.0, 20.0  # m: the pool's side and depth; the lines' water depth
 ANCHOR_R = 37.0  # m from the base's axis (examples/wind_turbine_base.py)
 #: (x, y) [m] of the gauges that read the water level away from the base: by the corners
@@ -75,21 +77,12 @@ def static_scene(dx: float, duration: float, depth: float = DEPTH, setup: str = 
     )
 
 
-def predicted_draft(scene) -> float:
-    """The draft [m] hydrostatics and the catenaries give (cosim.scene.placement)."""
-    from cosim.scene.placement import floating_height
-
-    b, level = scene.bodies[0], scene.domain.depth
-    z = floating_height(b, 3, level, scene.fluid.rho0, scene.world.gravity, scene.moorings.lines)
-    return level - (z - 0.5 * b.length)
-
-
 def aligned(rows: int) -> tuple[float, float]:
     """The spacing [m] that puts ``rows`` rows of particles in the draft and the pool's
     depth [m] (the nearest whole number of rows to 4 m) that put the base's bottom face on
     a face of the fluid's lattice, as the floating-box-draft case sets its box (the fluid
     removed where the base is then equals its submerged volume)."""
-    d0 = predicted_draft(static_scene(1.0, 1.0))
+    d0 = equilibrium_draft(static_scene(1.0, 1.0))
     dx = d0 / rows
     return dx, round(DEPTH / dx) * dx
 
@@ -97,25 +90,19 @@ def aligned(rows: int) -> tuple[float, float]:
 def measure(dx: float, duration: float, out: str, depth: float = DEPTH, setup: str = "still",
             h_coef: float | None = None) -> dict:
     scene = static_scene(dx, duration, depth, setup, h_coef)
-    d0 = predicted_draft(scene)
-    level0 = scene.domain.depth
     c0 = time.process_time()
     r = scene.run(f"{out}/dx{dx:.4g}", overwrite=True, progress=False)
     cpu = time.process_time() - c0
+    d = static_draft(r, scene)  # the draft below the gauges' level and the nominal one, over the second half
+    d0 = d["draft_predicted_m"]
     heave, surge, sway = (np.asarray(r[f"base.{k}"], float) for k in ("heave", "surge", "sway"))
     late = r.t >= 0.5 * duration
-    mean_heave = float(heave[late].mean())
     sm = r.summary
-    # the draft below the water level the gauges read away from the base (the kernel's
-    # fluid fraction crossing 1/2: fluid.probes.surface_elevation)
-    level = level0 + np.mean([np.asarray(r[f"gauge{k + 1}.eta"], float) for k in range(len(GAUGES))], axis=0)
-    bottom = sm["floating_start_z_m"]["base"] + heave - 0.5 * scene.bodies[0].length
-    drafts = (level - bottom)[late]
-    return {"dx_m": dx, "depth_m": level0, "rows_over_draft": d0 / dx, "particles": sm["particles"], "steps": sm["steps"],
-            "c0_m_s": sm["speed_of_sound_m_s"], "cpu_s": cpu, "cpu_s_per_simulated_s": cpu / duration, "draft_predicted_m": d0,
-            "draft_nominal_level_m": d0 - mean_heave, "error_nominal_level": -mean_heave / d0,
-            "level_shift_m": float(level[late].mean()) - level0, "draft_sph_m": float(np.mean(drafts)),
-            "error_of_draft": float(np.mean(drafts)) / d0 - 1.0,
+    return {"dx_m": dx, "depth_m": scene.domain.depth, "rows_over_draft": d0 / dx, "particles": sm["particles"],
+            "steps": sm["steps"], "c0_m_s": sm["speed_of_sound_m_s"], "cpu_s": cpu,
+            "cpu_s_per_simulated_s": cpu / duration, "draft_predicted_m": d0,
+            "draft_nominal_level_m": d0 - float(heave[late].mean()), "error_nominal_level": d["draft_nominal_level_error"],
+            "level_shift_m": d["level_shift_m"], "draft_sph_m": d["draft_sph_m"], "error_of_draft": d["draft_signed_error"],
             "offset_m": float(math.hypot(surge[late].mean(), sway[late].mean())),
             "heave_swing_m": float(heave[late].max() - heave[late].min())}
 

@@ -117,18 +117,18 @@ def run_or_resume(scene, out: Path):
     return scene.run(out, overwrite=True, progress=False, yes=True)
 
 
-def first_harmonic(res, name: str, window, omega: float) -> complex:
-    """The complex first harmonic of series ``name`` at ``omega`` [rad/s] over ``window`` [s]
-    (fitted with a constant, a linear trend and the second harmonic)."""
-    late = (res.t >= window[0] - 1e-9) & (res.t <= window[1] + 1e-9)
-    return complex(harmonics(res.t[late], res[name][late], omega, trend=True))
+def _window(res, window) -> np.ndarray:
+    """The samples of ``res`` within ``window`` = (t0, t1) [s], both ends included."""
+    return (res.t >= window[0] - 1e-9) & (res.t <= window[1] + 1e-9)
 
 
 def motion_figures(res, window, omega: float) -> dict:
     """Surge, heave [m] and pitch [deg] first-harmonic amplitudes and the mean fairlead
     tensions [N] (back; the front pair) over ``window``, the lines' events, the cost."""
-    late = (res.t >= window[0] - 1e-9) & (res.t <= window[1] + 1e-9)
-    out = {f"{q}_amp": abs(first_harmonic(res, f"base.{q}", window, omega)) for q in ("surge", "heave", "pitch")}
+    from cosim.validations.nearfield import first_harmonic
+
+    late = _window(res, window)
+    out = {f"{q}_amp": first_harmonic(res.t[late], res[f"base.{q}"][late], omega) for q in ("surge", "heave", "pitch")}
     out["tension_back_N"] = float(res["back.tension"][late].mean())
     out["tension_front_N"] = float(0.5 * (res["front_port.tension"] + res["front_starboard.tension"])[late].mean())
     events = res.summary.get("line_events") or {}
@@ -143,7 +143,7 @@ def gauge_figures(res, scene, window) -> dict:
     it, over ``window``."""
     sea = scene.waves.sea(scene)
     omega = 2.0 * math.pi / scene.waves.period
-    late = (res.t >= window[0] - 1e-9) & (res.t <= window[1] + 1e-9)
+    late = _window(res, window)
     ts = res.t[late]
     pts = np.asarray(scene.probes.gauges, float)
     eta = np.column_stack([res[f"gauge{k + 1}.eta"][late] for k in range(len(pts))])
@@ -153,14 +153,22 @@ def gauge_figures(res, scene, window) -> dict:
             "lag_periods": (-np.angle(ratio) / (2.0 * math.pi)).tolist()}
 
 
-def static_draft(res, scene) -> dict:
-    """The base's draft [m] below the water's own mean level at the gauges, over the run's
-    second half, against hydrostatics and the catenaries; and below the nominal level."""
+def equilibrium_draft(scene) -> float:
+    """The draft [m] of the scene's one body (an upright cylinder) that hydrostatics and the
+    catenaries give (:func:`cosim.scene.placement.floating_height`), below ``domain.depth``."""
     from cosim.scene.placement import floating_height
 
+    b, level = scene.bodies[0], scene.domain.depth
+    z = floating_height(b, 3, level, scene.fluid.rho0, scene.world.gravity, scene.moorings.lines)
+    return level - (z - 0.5 * b.length)
+
+
+def static_draft(res, scene) -> dict:
+    """The base's draft [m] below the water's own mean level at the gauges (the kernel's
+    fluid fraction crossing 1/2: :func:`fluid.probes.surface_elevation`), over the run's
+    second half, against hydrostatics and the catenaries; and below the nominal level."""
     b, level0 = scene.bodies[0], scene.domain.depth
-    z_eq = floating_height(b, 3, level0, scene.fluid.rho0, scene.world.gravity, scene.moorings.lines)
-    predicted = level0 - (z_eq - 0.5 * b.length)
+    predicted = equilibrium_draft(scene)
     late = res.t >= 0.5 * scene.world.duration
     heave = res["base.heave"][late]
     level = level0 + np.mean([res[k][late] for k in res.names if k.endswith(".eta")], axis=0)
