@@ -17,7 +17,6 @@ by hand: a scene-built case through :func:`load`, a code-built one through :func
 from __future__ import annotations
 
 import dataclasses
-import json
 import tempfile
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
@@ -79,19 +78,12 @@ def number(x: float) -> str:
 
 def settings(part: str, values: dict) -> list[str]:
     """``values`` ({field: value}) as :func:`load`'s assignments to the fields of ``part``
-    (e.g. ``"fluid"``): numbers as :func:`number` writes them, booleans and strings as TOML
-    writes them (``{"alpha": 0.05, "diffusion": "none"}`` -> ``["fluid.alpha=0.05",
-    'fluid.diffusion="none"']``)."""
-    def toml(v) -> str:
-        if isinstance(v, bool):
-            return "true" if v else "false"
-        if isinstance(v, int):
-            return str(v)
-        if isinstance(v, float):
-            return number(v)
-        return json.dumps(str(v))
+    (e.g. ``"fluid"``): numbers as :func:`number` writes them, the rest as TOML writes them
+    (:func:`cosim.scene.toml_io.toml_value`; ``{"alpha": 0.05, "diffusion": "none"}`` ->
+    ``["fluid.alpha=0.05", 'fluid.diffusion="none"']``)."""
+    from cosim.scene.toml_io import toml_value
 
-    return [f"{part}.{k}={toml(v)}" for k, v in values.items()]
+    return [f"{part}.{k}={number(v) if isinstance(v, float) else toml_value(v)}" for k, v in values.items()]
 
 
 def load(case: str, values: Sequence[str] = ()):
