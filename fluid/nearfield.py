@@ -316,9 +316,10 @@ def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(
         pad = whole_spacings(x0, x1, dx) - x1
         x0 -= pad / free if x[0] is None else 0.0
         x1 += pad / free if x[1] is None else 0.0
-    elif dx is not None and whole_spacings(x0, x1, dx) != x1:  # both given: the far end moves, as the box lays it
-        x1, given = whole_spacings(x0, x1, dx), x1
-        reasons["x1"] = f"given ({given:.6g} m), moved out {x1 - given:.3g} m to a whole number of spacings"
+    elif dx is not None:  # both given: the far end moves out to whole rows, as the box lays the water
+        given, x1 = x1, whole_spacings(x0, x1, dx)
+        if x1 != given:
+            reasons["x1"] = f"given ({given:.6g} m), moved out {x1 - given:.3g} m to a whole number of spacings"
     y = None
     if dim == 3:
         centre = 0.0 if symmetric else 0.5 * float(lo[1] + hi[1])
