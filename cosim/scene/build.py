@@ -687,6 +687,7 @@ def sph_fluid(scene, out: Built) -> None:
         if out.base_motion is not None:
             motions[WALLS] = out.base_motion
         pts, walls = domain_points(scene, cfg, back)
+        zones = _absorber(scene)
     if out.bodies is not None:
         from cosim.sph_fluid import SPHFluid
 
@@ -709,6 +710,18 @@ def sph_fluid(scene, out: Built) -> None:
         fluid.prescribe_motion(group, motion)
     fluid.zones.extend(zones)
     out.fluid = out.sph = fluid
+
+
+def _absorber(scene) -> list:
+    """A flume's absorbing zone (:class:`~cosim.scene.spec.Absorber`) as a relaxation zone
+    towards rest, its rate by default twice the wavemaker's angular frequency."""
+    d = scene.domain
+    if not isinstance(d, Flume) or d.absorber is None:
+        return []
+    from fluid.relaxation import Slab
+
+    rate = d.absorber.rate if d.absorber.rate is not None else 2.0 * 2.0 * math.pi / scene.waves.period
+    return [Slab(0, d.length - d.absorber.length, d.length, rate)]
 
 
 def _near_field(scene, cfg, out: Built):

@@ -82,6 +82,8 @@ def check_scene(s) -> None:
     plausible.check_fluid(s)
     _check_excitations(s, dim)
     mj = _check_bodies(s, dim)
+    if isinstance(s.domain, Flume) and s.domain.absorber is not None:
+        _check_absorber(s, dim)
     plausible.check_bodies(s, dim)
     plausible.check_excitations(s, dim)
     _check_moorings(s, dim, mj)
@@ -203,6 +205,27 @@ _SEA_KEYS = {"height": "waves.height", "period": "waves.period", "depth": "waves
              "tp": "waves.tp", "gamma": "waves.gamma", "seed": "waves.seed", "n_components": "waves.components",
              "elevation": "waves.file", "times": "waves.file", "file": "waves.file", "duration": "waves.file",
              "min_period": "waves.min_period", "at": "waves.at", "g": "world.gravity"}
+
+
+def _check_absorber(s, dim):
+    """A flume's absorbing zone: SPH only, its rate known, no body in it."""
+    d = s.domain
+    if not isinstance(s.fluid, SPH):
+        raise SceneError("domain.absorber", f"the absorbing zone relaxes the SPH fluid's particles; the "
+                         f"{s.fluid.model} fluid takes the flume's end as absorbing already: leave absorber out")
+    if d.absorber.rate is None and not isinstance(s.waves, (Piston, Flap)):
+        raise SceneError("domain.absorber.rate", "give the zone's relaxation rate [1/s] (about twice the waves' "
+                         "angular frequency): it defaults to that of a piston or flap wavemaker, and this flume has "
+                         "none")
+    x_in = d.length - d.absorber.length
+    for i, b in enumerate(s.bodies):
+        if isinstance(b, MJCF):
+            continue
+        x = (b.base if isinstance(b, ElasticPlate) else b.pos)[0]
+        if x + b.extent(dim)[0] > x_in:
+            raise SceneError(f"bodies[{i}].{_pos_key(b)}", f"the body reaches x = {x + b.extent(dim)[0]:.4g} m, into "
+                             f"the flume's absorbing zone ({x_in:.4g} .. {d.length:.4g} m), whose water is pulled to "
+                             f"rest; move it towards the paddle or shorten domain.absorber.length")
 
 
 def _check_sea(s, dim):

@@ -14,7 +14,7 @@ from cosim.scene.registry import FLUIDS, SHAPES, WAVES
 SECTIONS = [
     ("The scene", [spec.Scene, spec.World, spec.Coupling]),
     ("Fluids (`[fluid]`, told apart by `model`)", list(FLUIDS.classes())),
-    ("Domains (`[domain]`, by `kind`)", list(spec.DOMAINS) + [spec.Block, spec.Beach]),
+    ("Domains (`[domain]`, by `kind`)", list(spec.DOMAINS) + [spec.Block, spec.Beach, spec.Absorber]),
     ("Waves (`[waves]`, by `kind`): wavemakers, the incident sea", list(WAVES.classes())),
     ("Base motions (`[base_motion]`, by `kind`)", list(spec.BASE_MOTIONS) + [spec.Record]),
     ("Bodies (`[[bodies]]`, by `shape`)", list(SHAPES.classes()) + [spec.ForcedMotion]),

@@ -274,9 +274,26 @@ class Beach(Spec):
 
 
 @dataclass(frozen=True)
+class Absorber(Spec):
+    """An absorbing relaxation zone at a flume's far end: the last ``length`` [m] of water
+    before the far wall, whose velocity relaxes towards rest at a rate that grows from 0 at
+    its inner edge to ``rate`` [1/s] at the wall (:mod:`fluid.relaxation`: the weight of
+    Jacobsen, Fuhrman & Fredsøe 2012, Eq. 5). One to two wavelengths at about two wave
+    frequencies reflect a few per cent of the height (``cosim validate wave-propagation``);
+    unlike a beach it adds no wall particles and keeps the flume's depth to its end. The
+    SPH fluid only: the analytic and potential fluids take the flume's end as perfectly
+    absorbing already."""
+
+    length: float = required(num(None, "length of the zone before the far wall (one to two wavelengths)", "m", lo=0,
+                                 lo_open=True, optional=False))
+    rate: float = num(None, "relaxation rate at the far wall (unset: twice the wavemaker's angular frequency)",
+                      "1/s", lo=0, lo_open=True)
+
+
+@dataclass(frozen=True)
 class Flume(Spec):
     """A wave flume: the paddle at x = 0, the far wall at ``length``, water ``depth``
-    deep, walls ``height`` high, an optional :class:`Beach`; 3-D: a wave tank ``width``
+    deep, walls ``height`` high, an optional :class:`Beach` or :class:`Absorber` (SPH); 3-D: a wave tank ``width``
     wide along y (side walls at y = 0 and ``width``), the paddle across the whole width.
     With ``fluid.model = "analytic"`` the flume gives the still level (its depth, the
     seabed at z = 0) and its wavemaker's far-field wave (``cosim.scene.build``)."""
@@ -287,6 +304,7 @@ class Flume(Spec):
     depth: float = required(num(None, "still-water depth", "m", lo=0, lo_open=True, optional=False))
     height: float = required(num(None, "wall height", "m", lo=0, lo_open=True, optional=False))
     beach: Beach = part(None, "a sloping beach that absorbs the waves", Beach)
+    absorber: Absorber = part(None, "an absorbing relaxation zone before the far wall (SPH)", Absorber)
     width: float = num(None, "width along y between the side walls (3-D only)", "m", lo=0, lo_open=True)
 
     def validate(self):
@@ -294,6 +312,9 @@ class Flume(Spec):
             raise SceneError("depth", f"{self.depth} m must be below the wall height {self.height} m")
         if self.beach is not None and not self.beach.toe < self.length:
             raise SceneError("beach.toe", f"{self.beach.toe} m must lie inside the flume (< length {self.length} m)")
+        if self.absorber is not None and not self.absorber.length < self.length:
+            raise SceneError("absorber.length", f"{self.absorber.length} m must be shorter than the flume "
+                             f"(length {self.length} m): the waves need water to travel in before it")
 
     @property
     def level(self):
@@ -1164,7 +1185,7 @@ class Scene(Spec):
                    resume_any_version=resume_any_version, overwrite=overwrite, progress=progress, yes=yes, ask=ask)
 
 
-__all__ = ["World", "NoFluid", "Analytic", "Potential", "SPH", "Block", "Tank", "Beach", "Flume", "InclinedTank",
+__all__ = ["World", "NoFluid", "Analytic", "Potential", "SPH", "Block", "Tank", "Beach", "Absorber", "Flume", "InclinedTank",
            "CylinderTank", "PolygonTank", "ArchRib", "NearField", "arch_rib_monitors", "Piston", "Flap", "PaddleRecord",
            "LinearWaves", "RegularWaves", "IrregularWaves", "StillWaves",
            "Shake", "Roll", "TableMotion",
