@@ -1,6 +1,8 @@
 """A one-line progress bar for long runs: simulated time, steps per second, wall-clock ETA.
 
-It writes to a terminal only (stderr by default), so logs and CI stay clean. It lives in
+On a terminal (stderr by default) the line is redrawn in place; elsewhere (a run under
+``nohup``, a batch scheduler's log) the same line is written whole, once a minute by
+default, so that an hours-long run says where it is without filling its log. It lives in
 ``fluid`` (plain Python, no numba) because the solver packages may not import the coupler:
 :mod:`cosim.progress` re-exports it for the coupler and the scene runner.
 """
@@ -25,16 +27,21 @@ class Progress:
     """Call :meth:`update` after each step, :meth:`close` at the end.
 
     ``t0``, ``t_end`` [s] the simulated span; ``stream`` where to write (stderr);
-    ``enabled=None`` shows the line only when ``stream`` is a terminal; ``every_s`` [s] the
-    least wall time between two redraws; ``width`` [characters] of the bar.
+    ``enabled``: True draws the line in place, False writes nothing, None draws it on a
+    terminal and elsewhere writes it whole every ``log_every_s`` [s] of wall time;
+    ``every_s`` [s] the least wall time between two redraws; ``width`` [characters] of the
+    bar.
     """
 
     def __init__(self, t0: float, t_end: float, *, stream=None, enabled: bool | None = None,
-                 every_s: float = 0.2, width: int = 20):
+                 every_s: float = 0.2, width: int = 20, log_every_s: float = 60.0):
         self.stream = stream if stream is not None else sys.stderr
+        self.logging = False  # whole lines (not a terminal) instead of a redrawn one
         if enabled is None:
             isatty = getattr(self.stream, "isatty", None)
-            enabled = bool(isatty()) if callable(isatty) else False
+            enabled = True
+            if not (callable(isatty) and isatty()):
+                self.logging, every_s = True, log_every_s
         self.enabled = enabled
         self.t0, self.t_end, self.every_s, self.width = t0, t_end, every_s, width
         self.wall0 = self._last = time.perf_counter()
@@ -60,12 +67,12 @@ class Progress:
         now = time.perf_counter()
         if now - self._last >= self.every_s:
             self._last = now
-            self.stream.write("\r" + self.line(t))
+            self.stream.write(self.line(t) + "\n" if self.logging else "\r" + self.line(t))
             self.stream.flush()
             self.shown += 1
 
     def close(self, t: float) -> None:
         """Draw the final line and end it (only if a line was shown)."""
         if self.enabled and self.shown:
-            self.stream.write("\r" + self.line(t) + "\n")
+            self.stream.write(("" if self.logging else "\r") + self.line(t) + "\n")
             self.stream.flush()

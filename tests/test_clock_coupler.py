@@ -123,7 +123,7 @@ def test_invalid_stable_step_stops_with_the_participant_named():
         c.run(1.0)
 
 
-def test_progress_line_is_shown_on_request_and_silent_otherwise():
+def test_progress_line_redrawn_on_a_terminal_written_whole_elsewhere_silent_on_request():
     import io
 
     from cosim.progress import Progress
@@ -137,5 +137,21 @@ def test_progress_line_is_shown_on_request_and_silent_otherwise():
     bar.close(2.0)
     text = buf.getvalue()
     assert "t = 2 / 2 s (100.0 %)  4 steps" in text and text.endswith("\n")
+    # a StringIO is no terminal: whole lines, none before log_every_s of wall time has passed
+    log = io.StringIO()
+    bar = Progress(0.0, 1.0, stream=log, log_every_s=3600.0)
+    bar.update(0.5)
+    bar.close(1.0)
+    assert bar.logging and log.getvalue() == ""
+    bar = Progress(0.0, 1.0, stream=log, log_every_s=0.0)
+    bar.update(0.5)
+    bar.update(1.0)
+    bar.close(1.0)
+    lines = log.getvalue().split("\n")
+    assert "\r" not in log.getvalue() and len(lines) == 4 and lines[-1] == ""
+    assert "t = 0.5 / 1 s ( 50.0 %)  1 steps" in lines[0] and "(100.0 %)  2 steps" in lines[2]
     quiet = io.StringIO()
-    assert not Progress(0.0, 1.0, stream=quiet).enabled  # a StringIO is no terminal
+    bar = Progress(0.0, 1.0, stream=quiet, enabled=False, every_s=0.0)
+    bar.update(1.0)
+    bar.close(1.0)
+    assert quiet.getvalue() == ""
