@@ -6,6 +6,7 @@
 ``cosim validate``  run validation cases, one JSON object per case
 ``cosim export-fmu`` write a scene's mooring lines (catenary) as an FMI 2.0 co-simulation FMU
 ``cosim inspect``   what an output file (HDF5) holds, as JSON; its series as CSV tables
+``cosim plot``      the particles of a run's latest checkpoint (a running, stopped or finished run)
 """
 
 from __future__ import annotations
@@ -354,6 +355,26 @@ def cmd_inspect(args, parser) -> int:
     return 0
 
 
+def _plot_parser(sub):
+    p = sub.add_parser(
+        "plot",
+        help="draw the particles of a run's latest checkpoint (a running, stopped or finished SPH run)",
+        description="Draw the particles, bodies, lines and gauges of the run in FOLDER as its checkpoint holds them "
+        "(a run writes one every world.checkpoint_wall s of wall time and at its end), as world.plot_at's plots "
+        "do: a look at a long run without particle snapshots, or while it goes on.",
+    )
+    p.add_argument("folder", help="the run's output folder (cosim run --out)")
+    p.add_argument("--png", help="the figure's file (default FOLDER/particles_checkpoint_tT.png)")
+    return p
+
+
+def cmd_plot(args, parser) -> int:
+    from cosim.scene.runner import plot_checkpoint
+
+    print(f"wrote {plot_checkpoint(args.folder, args.png)}", file=sys.stderr)
+    return 0
+
+
 def _read_lines_file(path):
     """MooringLine records and fairlead start values from a TOML or JSON file."""
     from pathlib import Path
@@ -647,7 +668,8 @@ def build_parser() -> tuple[argparse.ArgumentParser, dict]:
     parser = argparse.ArgumentParser(prog="cosim", description=__doc__.strip().splitlines()[0])
     sub = parser.add_subparsers(dest="command", required=True)
     parsers = {"run": _run_parser(sub), "study": _study_parser(sub), "line": _line_parser(sub),
-               "validate": _validate_parser(sub), "export-fmu": _export_fmu_parser(sub), "inspect": _inspect_parser(sub)}
+               "validate": _validate_parser(sub), "export-fmu": _export_fmu_parser(sub), "inspect": _inspect_parser(sub),
+               "plot": _plot_parser(sub)}
     return parser, parsers
 
 
@@ -655,7 +677,7 @@ def main(argv=None) -> int:
     parser, parsers = build_parser()
     args = parser.parse_args(argv)
     handler = {"run": cmd_run, "study": cmd_study, "line": cmd_line, "validate": cmd_validate,
-               "export-fmu": cmd_export_fmu, "inspect": cmd_inspect}[args.command]
+               "export-fmu": cmd_export_fmu, "inspect": cmd_inspect, "plot": cmd_plot}[args.command]
     main_thread = threading.current_thread() is threading.main_thread()
     before = signal.signal(signal.SIGTERM, _terminate) if main_thread else None
     try:

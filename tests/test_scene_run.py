@@ -164,6 +164,32 @@ def test_resume_refuses_a_changed_scene(tmp_path):
         moored_box().run(tmp_path / "empty", resume=True, progress=False)
 
 
+def test_the_checkpoint_drawn_afterwards_is_the_plot_drawn_during_the_run(tmp_path):
+    """``cosim plot FOLDER`` rebuilds the scene and restores its checkpoint: at the run's end
+    it draws, pixel for pixel, the particle plot the run drew then; a folder without a run,
+    or a run without particles, is refused naming why."""
+    from matplotlib.image import imread
+
+    from cosim.cli import main
+    from cosim.errors import InputError
+    from cosim.scene.runner import plot_checkpoint
+
+    moored_box(duration=0.1, plot_at=[0.1]).run(tmp_path / "run", progress=False)
+    assert main(["plot", str(tmp_path / "run"), "--png", str(tmp_path / "ck.png")]) == 0
+    np.testing.assert_array_equal(imread(tmp_path / "ck.png"), imread(tmp_path / "run" / "particles_t000.100.png"))
+    assert plot_checkpoint(tmp_path / "run").name == "particles_checkpoint_t000.100.png"
+    with pytest.raises(InputError, match="no scene.toml; give the folder of a run"):
+        plot_checkpoint(tmp_path / "nothing")
+    analytic = moored_box(duration=0.02).to_dict()
+    analytic["fluid"] = {"model": "analytic", "level": 0.3}
+    analytic.pop("domain")
+    analytic.pop("waves")
+    analytic["probes"] = {"motion": ["box"]}
+    Scene.from_dict(analytic).run(tmp_path / "analytic", progress=False)
+    with pytest.raises(InputError, match="only an SPH run has particles to draw"):
+        plot_checkpoint(tmp_path / "analytic")
+
+
 def test_failed_run_leaves_readable_outputs(tmp_path, monkeypatch):
     import cosim.scene.plots as plots
 

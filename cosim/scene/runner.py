@@ -312,6 +312,38 @@ def _read_resume(scene, out: Path, any_version: bool) -> dict:
     return ck
 
 
+def plot_checkpoint(out, png=None) -> Path:
+    """Draw the particles of the run kept in the folder ``out`` as its checkpoint holds them
+    (the latest state of a running, stopped or finished run: a run writes one every
+    ``world.checkpoint_wall`` s of wall time and at its end), with the bodies, lines and
+    gauges as the ``plot_at`` plots draw them, into ``png`` (default
+    ``out/particles_checkpoint_tT.png``); returns the file. Reads the folder only: a run
+    going on there is not disturbed (a checkpoint is replaced whole)."""
+    from cosim.scene.spec import Scene
+    from cosim.scene.build import build
+    from cosim.scene.plots import plot_particles
+
+    out = Path(out)
+    for name in ("scene.toml", CHECKPOINT):
+        if not (out / name).is_file():
+            raise InputError(f"{out}: no {name}; give the folder of a run (cosim run --out) that has written its first "
+                             f"checkpoint (every world.checkpoint_wall s of wall time, and at its end)")
+    scene = Scene.from_toml(out / "scene.toml")
+    if scene.fluid.model != "sph":
+        raise InputError(f"{out}: the run's fluid is {scene.fluid.model!r}; only an SPH run has particles to draw")
+    ck = _read_resume(scene, out, True)
+    with tempfile.TemporaryDirectory(prefix="cosim-plot-") as work:
+        built = build(scene, Path(work))
+        try:
+            _restore(ck, built, _Recorder(scene, built, out))
+            t = float(ck["meta"]["t"])
+            path = Path(png) if png is not None else out / f"particles_checkpoint_t{t:07.3f}.png"
+            plot_particles(path, scene, built, t)
+        finally:
+            _close_participants(built)
+    return path
+
+
 def kept_scene_difference(scene, out) -> str | None:
     """The first field (its key path) in which the run kept in the folder ``out`` (its
     ``scene.toml``) differs from ``scene``, the fields a resumed run may change
