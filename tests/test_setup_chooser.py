@@ -66,7 +66,7 @@ def test_auto_setup_clears_the_hand_set_levers():
 
 #: the cases with a scene file whose quick variant runs the SPH fluid, run under auto_setup, by cost
 QUICK = ["westergaard", "sinking-cylinder", "floating-box-draft", "sloshing-frequency", "hydrostatic"]
-LONG = ["inclined-wall", "floating-heave-period", "moored-body-sph", "cylinder-tank"]
+LONG = ["inclined-wall", "floating-heave-period", "moored-body-sph", "cylinder-tank", "inclined-wall-3d"]
 MISSED = {"westergaard-3d": "the impulsive set-up (walls 'adami') on the quick 0.3 m slice at dx = 0.1 m: the base "
                             "k_p reads 6.8 % high (kp_base_face_rel_err 0.0685 > 0.06) and the face correction "
                             "no better than Eq. 15; the case's quick variant keeps plain dynamic walls"}
