@@ -89,6 +89,30 @@ def test_regular_waves_cross_the_box_at_the_seas_height_and_phase():
     assert r["removed"] == 0
 
 
+def test_the_near_field_cases_scene_is_its_box_and_seas():
+    """nearfield-waves' scene: the box 1.8 wavelengths long (its far end out to whole rows)
+    with zones half a wavelength wide (L from linear dispersion, w^2 = g k tanh(k d): 1.7704 m
+    at T = 1.2 s, d = 0.3 m), the regular waves H = 6 cm by either theory, and the JONSWAP
+    sea in their place, Hs = 4 cm, Tp = 1.2 s, seed 1; dx = H / (H/dx)."""
+    from scipy.optimize import brentq
+
+    from cosim.scene.nearfield import box_for
+    from cosim.validations import nearfield as nf
+
+    k = brentq(lambda k: 9.81 * k * math.tanh(0.3 * k) - (2 * math.pi / 1.2) ** 2, 0.1, 100.0)
+    wl = 2 * math.pi / k
+    assert wl == pytest.approx(1.7704, abs=1e-4)
+    for kind, r in (("stokes2", 3), ("linear", 5)):
+        scene = nf.waves_scene(kind, r, 20)
+        box = box_for(scene)
+        assert box.zone == pytest.approx(0.5 * wl, rel=1e-9) and scene.domain.x1 == pytest.approx(1.8 * wl, rel=1e-9)
+        assert box.x[0] == 0.0 and box.x[1] == pytest.approx(math.ceil(1.8 * wl / scene.fluid.dx) * scene.fluid.dx)
+        assert scene.waves.theory == kind and scene.fluid.dx == pytest.approx(0.06 / r)
+        assert scene.world.duration == pytest.approx(20 * 1.2)
+    sea = nf.waves_scene("jonswap", 3, 24).waves
+    assert (sea.kind, sea.spectrum, sea.hs, sea.tp, sea.seed) == ("irregular", "jonswap", 0.04, 1.2, 1)
+
+
 @pytest.mark.slow
 def test_the_quick_near_field_case_carries_the_sea():
     """cosim validate nearfield-waves --quick: Stokes-2 waves and a JONSWAP sea through the

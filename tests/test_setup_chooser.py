@@ -66,14 +66,14 @@ def test_auto_setup_clears_the_hand_set_levers():
 
 #: the cases with a scene file whose quick variant runs the SPH fluid, run under auto_setup, by cost
 QUICK = ["westergaard", "sinking-cylinder", "floating-box-draft", "sloshing-frequency", "hydrostatic"]
-LONG = ["inclined-wall", "floating-heave-period", "moored-body-sph", "cylinder-tank"]
+LONG = ["inclined-wall", "floating-heave-period", "moored-body-sph", "cylinder-tank", "inclined-wall-3d"]
 MISSED = {"westergaard-3d": "the impulsive set-up (walls 'adami') on the quick 0.3 m slice at dx = 0.1 m: the base "
                             "k_p reads 6.8 % high (kp_base_face_rel_err 0.0685 > 0.06) and the face correction "
                             "no better than Eq. 15; the case's quick variant keeps plain dynamic walls"}
 #: cases whose quick scene gets the same FluidConfig from "auto" as its own: their quick
 #: validation run (``cosim validate NAME --quick``) is the chooser's, so not run again here
 SAME = ["arch-rib", "elastic-table2", "hydrostatic-3d", "nearfield-floating-box", "nearfield-radiation", "dambreak-2d",
-        "dambreak-lobovsky"]
+        "dambreak-lobovsky", "elastic-plate", "nearfield-waves"]
 #: SPH cases whose scene sets a lever the chooser does not, and why; not run here
 OWN = {"wind-turbine-sph": "h = sqrt(2) dx, the kernel width that holds the base's static draft within 2 % at dx = "
                            "0.5 m, where the chooser's near field takes 2 dx for waves that cross a box several "

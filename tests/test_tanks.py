@@ -133,6 +133,33 @@ def test_the_3d_slice_refuses_an_even_row_count():
         run_inclined(45.0, 0.1, dim=3, rows=2)
 
 
+@pytest.mark.parametrize("beta", ANGLES)
+def test_the_3d_slices_patch_lies_on_the_slope_and_its_section_is_the_same_tank(beta):
+    """inclined-wall-3d's scene at each angle: the slope patch centred on the inclined face
+    (x = L + z tan(beta)) with its normal into the water, perpendicular to the face; its
+    2-D section the same tank, shaking and fluid in the x-z plane, the patch taken to it."""
+    import math
+
+    from cosim.validations.tanks import inclined_3d_scene, section
+
+    for quick in (True, False):
+        scene = inclined_3d_scene(quick, beta)
+        d, (p,) = scene.domain, scene.probes.pressure
+        b = math.radians(beta)
+        assert d.angle == beta and d.width == pytest.approx(3 * scene.fluid.dx)
+        x, y, z = p.centre
+        assert x == pytest.approx(d.length + z * math.tan(b), abs=1e-11) and y == pytest.approx(0.5 * d.width)
+        n = np.array(p.normal)
+        assert np.linalg.norm(n) == pytest.approx(1.0, abs=1e-11) and n[0] < 0 < n[2]
+        assert n @ [math.sin(b), 0.0, math.cos(b)] == pytest.approx(0.0, abs=1e-11)  # along the face: none
+        sec = section(scene)
+        assert sec.world.dim == 2 and sec.domain.width is None
+        assert (sec.domain.angle, sec.domain.length, sec.domain.depth, sec.domain.height) == \
+            (d.angle, d.length, d.depth, d.height)
+        assert sec.base_motion.direction == (1.0, 0.0) and sec.fluid == scene.fluid
+        assert sec.probes.pressure[0].centre == (x, z) and sec.probes.pressure[0].normal == (n[0], n[2])
+
+
 @pytest.mark.slow
 def test_inclined_wall_3d_full():
     """dx = 0.05 m, a 0.15 m slice, c0 = 1430 m/s, 1 + 1 periods, at 15, 30, 45 deg: the

@@ -19,6 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
+from cosim.validations import case_scene
 from cosim.validations.registry import case
 from cosim.validations.wave_propagation import harmonics
 from cosim.validations.waves import G
@@ -45,15 +46,10 @@ def run_box(sea, dx: float, length: float, zone: float, duration: float, *, widt
     seabed at z = 0) through a near-field box ``length`` [m] long at spacing ``dx`` [m] (2-D;
     3-D a channel ``width`` [m] wide, no side zones, gauges on its centre line) with relaxation zones ``zone`` [m]
     wide relaxing at ``rate_per_omega`` times the sea's (peak) frequency at the walls, for
-    ``duration`` [s] after ``settle`` [s] of damped relaxation at rest (``Fluid.settle``).
-    Returns the gauges' x [m], the times [s], the elevations there [m] (rows: times), the
-    sea's elevations at the same points and times, the mean level over the box (clear of
-    the end walls' excursion) [m] at each time, the still level the settled water started
-    from (relative to the sea's) [m], the lost fluid particles and the run's cost.
-    ``config``: FluidConfig settings."""
+    ``duration`` [s] after ``settle`` [s] of damped relaxation at rest (``Fluid.settle``),
+    read by :func:`read_box`. ``config``: FluidConfig settings."""
     from fluid.geometry import assemble, set_hydrostatic
-    from fluid.nearfield import FAR_END_GROUP, NEAR_END_GROUP, excursion, following_wall, near_field_box
-    from fluid.probes import surface_elevation
+    from fluid.nearfield import FAR_END_GROUP, NEAR_END_GROUP, following_wall, near_field_box
     from fluid.solver import Fluid, FluidConfig
 
     dim = 2 if width is None else 3
@@ -69,13 +65,37 @@ def run_box(sea, dx: float, length: float, zone: float, duration: float, *, widt
         fluid.prescribe_motion(group, following_wall(sea))
     omega = 2.0 * math.pi / sea.peak_period
     fluid.zones.extend(box.zones(sea, rate_per_omega * omega, drift=drift))
-    gx = np.linspace(zone, length - zone, gauges)
-    reach = excursion(sea) + dx  # clear of the end walls' excursion
-    gall = np.linspace(reach, length - reach, max(8, int(length / dx) // 2))
-    xs = np.concatenate([gx, gall])
-    points = xs if dim == 2 else np.column_stack([xs, np.full(xs.size, 0.5 * width)])
     cpu0 = time.process_time()
     fluid.initialize(0.0)
+    return read_box(fluid, sea, length, zone, duration, cpu0, width=width, settle=settle, gauges=gauges,
+                    samples_per_period=samples_per_period, progress=progress)
+
+
+def read_box(fluid, sea, length: float, zone: float, duration: float, cpu0: float, *, x0: float = 0.0,
+             width: float | None = None, settle: float = 0.0, gauges: int = 9, samples_per_period: int = 32,
+             progress: bool = False) -> dict:
+    """Run the near field ``fluid`` (initialised at t = 0; its box ``length`` [m] long from
+    ``x0`` [m] in ``sea``, zones ``zone`` [m] wide; 3-D ``width`` [m] wide) for ``duration`` [s]
+    after ``settle`` [s] of damped relaxation at rest (``Fluid.settle``), reading the
+    surface at ``gauges`` points from one zone's inner edge to the other's (3-D on the
+    centre line) and across the box ``samples_per_period`` times a (peak) period. Returns
+    the gauges' x [m], the times [s], the elevations there [m] (rows: times), the
+    sea's elevations at the same points and times, the mean level over the box (clear of
+    the end walls' excursion) [m] at each time, the still level the settled water started
+    from (relative to the sea's) [m], the lost fluid particles and the run's cost (CPU
+    seconds since ``cpu0``, a ``time.process_time()``)."""
+    from fluid.nearfield import excursion
+    from fluid.particles import Kind
+    from fluid.probes import surface_elevation
+
+    depth, dx, dim = sea.depth, fluid.config.dx, fluid.config.dim
+    ps = fluid.ps
+    particles, fluid_particles = int(ps.n), int((ps.kind == Kind.FLUID).sum())
+    gx = x0 + np.linspace(zone, length - zone, gauges)
+    reach = excursion(sea) + dx  # clear of the end walls' excursion
+    gall = x0 + np.linspace(reach, length - reach, max(8, int(length / dx) // 2))
+    xs = np.concatenate([gx, gall])
+    points = xs if dim == 2 else np.column_stack([xs, np.full(xs.size, 0.5 * width)])
     if settle > 0:
         fluid.settle(settle)
     start = surface_elevation(fluid, points)[len(gx):].mean() - depth
@@ -91,7 +111,7 @@ def run_box(sea, dx: float, length: float, zone: float, duration: float, *, widt
     return {"gauges_m": gx, "t": ts, "eta": eta[:, :len(gx)],
             "sea_eta": sea.elevation(gx[None, :], 0.5 * (width or 0.0), ts[:, None]),
             "box_level_m": eta[:, len(gx):].mean(axis=1), "settled_level_m": float(start),
-            "particles": int(ps.n), "fluid_particles": int(len(box.fluid)), "steps": int(fluid.counters.steps),
+            "particles": particles, "fluid_particles": fluid_particles, "steps": int(fluid.counters.steps),
             "cpu_s": cpu, "removed": int(sum(fluid.counters.removed.values()))}
 
 
@@ -148,47 +168,75 @@ def _sea(kind: str, duration: float):
     return RegularWave(NF_HEIGHT, NF_PERIOD, NF_DEPTH, theory=kind, level=NF_DEPTH, ramp=ramp, g=G)
 
 
-def nearfield_case(h_over_dx, periods: float, jonswap_periods: float, settle: float = 1.0,
-                   seas=NF_SEAS) -> tuple[dict, dict]:
+def waves_scene(kind: str, h_over_dx: float, periods: float):
+    """The scene ``scenes/nearfield-waves.toml`` (the quick variant's Stokes-2 run) with the
+    sea ``kind``: "linear" or "stokes2", its regular waves by that theory; "jonswap", the
+    JONSWAP sea of Hs = :data:`NF_HS` and Tp the waves' period (seed 1) in their place; dx =
+    H / ``h_over_dx`` (H the regular waves' height), ``periods`` (peak) periods long."""
+    n = case_scene.number
+    w = case_scene.load("nearfield-waves").waves
+    values = [f"fluid.dx={n(w.height / h_over_dx)}", f"world.duration={n(periods * w.period)}"]
+    if kind == "jonswap":
+        values += ["waves.kind=irregular", f"waves.hs={n(NF_HS)}", f"waves.tp={n(w.period)}", "waves.seed=1"]
+    else:
+        values.append(f"waves.theory={kind}")
+    return case_scene.load("nearfield-waves", values)
+
+
+def run_scene(scene) -> dict:
+    """The near field of ``scene`` (:func:`waves_scene`) built as ``cosim run`` builds it and
+    read by :func:`read_box` over its box and zones, after its ``fluid.settle``, every
+    ``world.sample_every``; with ``sea``, its incident sea."""
+    d = scene.domain
+    cpu0 = time.process_time()
+    with case_scene.built(scene) as b:
+        r = read_box(b.sph, b.sea, d.x1 - d.x0, d.zone, scene.world.duration, cpu0, x0=d.x0,
+                     settle=scene.fluid.settle, samples_per_period=round(b.sea.peak_period / scene.world.sample_every))
+        return r | {"sea": b.sea}
+
+
+#: the first run of each variant (quick: True): the sea, H / dx and periods of :func:`waves_scene`
+FIRST_RUN = {True: (NF_QUICK_SEAS[0], NF_QUICK_H_OVER_DX, 20), False: (NF_SEAS[0], NF_H_OVER_DX[0], 20)}
+
+
+def nearfield_case(h_over_dx, periods: float, jonswap_periods: float, seas=NF_SEAS) -> tuple[dict, dict]:
     """The case's runs at each ``H / dx`` of the ``seas`` ("linear", "stokes2": regular
     waves ``periods`` periods; "jonswap": the JONSWAP sea ``jonswap_periods`` peak periods,
-    at the same dx), in a box 1.8 wavelengths long with zones half a wavelength wide, as
-    :func:`fluid.nearfield.choose_box` gives a sea without bodies, the near field's set-up
-    (``fluid.solver.NEAR_FIELD``); returns (metrics, series)."""
-    from fluid.solver import NEAR_FIELD
-    from fluid.waves import RegularWave
-
-    wl = RegularWave(NF_HEIGHT, NF_PERIOD, NF_DEPTH, level=NF_DEPTH, g=G).wavelength
-    length, zone = 1.8 * wl, 0.5 * wl
+    at the same dx), each the scene :func:`waves_scene` (a box 1.8 wavelengths long with
+    zones half a wavelength wide, as :func:`fluid.nearfield.choose_box` gives a sea without
+    bodies, the near field's set-up ``fluid.solver.NEAR_FIELD``) run by :func:`run_scene`;
+    returns (metrics, series)."""
     metrics, series = {}, {}
     for r in h_over_dx:
         for kind in seas:
-            n = jonswap_periods if kind == "jonswap" else periods
-            dx = NF_HEIGHT / r
-            run = run_box(_sea(kind, n * NF_PERIOD), dx, length, zone, n * NF_PERIOD, settle=settle, **NEAR_FIELD)
+            scene = waves_scene(kind, r, jonswap_periods if kind == "jonswap" else periods)
+            run = run_scene(scene)
+            sea, depth = run["sea"], scene.domain.depth
+            period, ramp = sea.peak_period, scene.waves.ramp * sea.peak_period
             key = f"{kind}_{r}"
-            m = {"drift_over_depth": level_drift(run, NF_PERIOD, 2.0 * NF_PERIOD) / NF_DEPTH,
-                 "settled_level_over_depth": run["settled_level_m"] / NF_DEPTH,
+            m = {"drift_over_depth": level_drift(run, period, ramp) / depth,
+                 "settled_level_over_depth": run["settled_level_m"] / depth,
                  "particles": run["particles"], "steps": run["steps"], "cpu_s": round(run["cpu_s"], 1),
                  "lost": run["removed"]}
             if kind == "jonswap":
-                q = irregular_metrics(run, NF_PERIOD, 2.0 * NF_PERIOD)
+                q = irregular_metrics(run, period, ramp)
                 m |= {"Hs_error": float(np.abs(q["Hs_over_sea"] - 1.0).max()),
                       "Tp_error": float(np.abs(q["Tp_over_sea"] - 1.0).max()),
                       "spectrum_error": float(q["spectrum_worst"].max())}
                 series[f"JONSWAP spectrum, Hs/dx = {r}"] = {
                     "xlabel": "f / fp", "ylabel": "S [m^2/Hz]", "curves": {
-                        "SPH (mean over the gauges)": {"x": (q["f_Hz"] * NF_PERIOD).tolist(), "y": q["S_sph"].tolist()},
-                        "the sea at the gauges": {"x": (q["f_Hz"] * NF_PERIOD).tolist(), "y": q["S_sea"].tolist(),
+                        "SPH (mean over the gauges)": {"x": (q["f_Hz"] * period).tolist(), "y": q["S_sph"].tolist()},
+                        "the sea at the gauges": {"x": (q["f_Hz"] * period).tolist(), "y": q["S_sea"].tolist(),
                                                   "style": "--"}}}
             else:
-                q = regular_metrics(run, NF_PERIOD)
+                q = regular_metrics(run, period)
                 m |= {"height_error": float(np.abs(q["H1_over_H"] - 1.0).max()),
                       "worst_lag_periods": float(np.abs(q["lag_periods"]).max()),
                       "H1_over_H": np.round(q["H1_over_H"], 4).tolist()}
                 series.setdefault("first-harmonic height across the box", {
                     "xlabel": "x / wavelength", "ylabel": "H1 / H of the sea", "curves": {}})["curves"][
-                    f"{kind}, H/dx = {r}"] = {"x": (run["gauges_m"] / wl).tolist(), "y": q["H1_over_H"].tolist()}
+                    f"{kind}, H/dx = {r}"] = {"x": (run["gauges_m"] / sea.wavelength).tolist(),
+                                              "y": q["H1_over_H"].tolist()}
             metrics[key] = m
     return metrics, series
 
@@ -213,15 +261,18 @@ def _tolerances(metrics: dict) -> dict:
              "20 periods; the mean level's drift below 1 % of the depth; for the JONSWAP sea Hs and Tp within 5 % "
              "and the spectrum within 10 % over 0.7-1.5 fp",
       quick="H/dx = 3, Stokes-2 waves 20 periods (the linear ones are the full variant's) and the JONSWAP sea 24 "
-            "peak periods: the same tolerances")
+            "peak periods: the same tolerances", scene=lambda quick: waves_scene(*FIRST_RUN[quick]))
 def nearfield_waves(quick: bool) -> dict:
-    """The near field's incident sea with nothing in it (:func:`run_box`): what the box does
-    to the waves it is meant to carry. The spectrum is judged against the sea's own
+    """The near field's incident sea with nothing in it: the scene ``scenes/nearfield-waves.toml``
+    with each variant's seas and spacings (:func:`nearfield_case`), what the box does to the
+    waves it is meant to carry. The spectrum is judged against the sea's own
     realisation at the gauges (the same components, Welch's method with the same
     segments), not against the target spectrum: a finite record of one realisation
     scatters about the target by ~1/sqrt(segments) per band, which is not the fluid's.
     Quick: the regular wave is Stokes-2 alone (:data:`NF_QUICK_SEAS`), its first harmonic
-    the linear wave's, judged the same; the linear wave runs in the full variant."""
+    the linear wave's, judged the same; the linear wave runs in the full variant. The scene
+    computes no walls' loads (no pressure patch), which the MLS re-initialisation feels:
+    docs/validation/nearfield.md, "As a scene"."""
     levels, seas = ((NF_QUICK_H_OVER_DX,), NF_QUICK_SEAS) if quick else (NF_H_OVER_DX, NF_SEAS)
     metrics, series = nearfield_case(levels, 20, 24 if quick else 64, seas=seas)
     finest = metrics[f"{seas[0]}_{levels[-1]}"]
