@@ -20,7 +20,8 @@ samples (``world.sample_every``), particle snapshots (``snapshot_every``), check
 - ``summary.json``: set-up, scheme, sizes, steps (``coupling``: by what set them), wall and
   CPU time, the cost estimate (``estimate``, :mod:`cosim.scene.cost`), each series' range,
   ``warnings``, ``line_breaks``, the catenary lines' ``line_events`` (:mod:`moorings.line_events`),
-  ``near_field`` (its box, why), ``sea_variance_left_out`` (the potential fluid's, per body);
+  ``near_field`` (its box, why), ``sph_domain`` (a moving tank's SPH domain, why:
+  :mod:`cosim.scene.sph_domain`), ``sea_variance_left_out`` (the potential fluid's, per body);
 - ``checkpoint.h5``: the latest checkpoint, data only (:mod:`cosim.checkpoint`,
   ``docs/checkpoints.md``), replaced atomically: every ``world.checkpoint_wall`` of wall
   time (stretched so that writing takes at most :data:`CHECKPOINT_SHARE` of the run), at
@@ -636,6 +637,8 @@ def _summary(scene, built, series, units, steps, loop_s, build_s, cpu_s, wall_be
         s["warnings"] = list(built.warnings)
     if built.near_field is not None:  # the near field's box, as chosen, and why
         s["near_field"] = built.near_field.as_dict()
+    if built.sph_domain is not None:  # a moving tank's SPH domain, and why
+        s["sph_domain"] = built.sph_domain.as_dict()
     if built.wavemaker is not None:
         s["wavemaker"] = {"stroke_m": built.wavemaker.stroke, "wavelength_m": built.wavemaker.wavelength}
     sea = _incident_sea(built)
