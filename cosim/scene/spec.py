@@ -751,7 +751,8 @@ class Shake(Spec):
                                      "give a later stop or a shorter ramp")
         w = 2 * math.pi / T
         if self.acceleration is not None:   # from rest: v = (a0 / w)(1 - cos w t), at rest at t = k T
-            v, peak, first, step = self.acceleration / w * (1 - math.cos(w * self.stop)), 2 * self.acceleration / w, T, T
+            a0 = self.acceleration
+            v, peak, first, step = a0 / w * (1 - math.cos(w * self.stop)), 2 * a0 / w, T, T
         else:                               # v = A w cos w t, at rest at t = T/4 + k T/2
             v, peak, first, step = self.amplitude * w * math.cos(w * self.stop), self.amplitude * w, T / 4, T / 2
         if abs(v) > self.HOLD_REST * abs(peak):

@@ -77,8 +77,9 @@ def moving_tank_domain(points: np.ndarray, motion, times: np.ndarray, h: float) 
     lo, hi = lo1 - pad, hi1 + pad
     hi[-1] += splash
     span = f"{times[0]:g}-{times[-1]:g} s"
+    travel = f"{np.round(lo1 - lo0, 4).tolist()} .. {np.round(hi1 - hi0, 4).tolist()} m"
     reasons = {"travel": f"the tank's extent at the start moved by its motion over {span} ({len(times)} samples), "
-                         f"the union: it travels {np.round(lo1 - lo0, 4).tolist()} .. {np.round(hi1 - hi0, 4).tolist()} m",
+                         f"the union: it travels {travel}",
                "pad": f"the solver's margin on every side, the larger of 10 % of the extent and 4 h = {4 * h:g} m",
                "splash": f"{splash:g} m above, the tank's own height: water leaving the box would rise that far "
                          "above the wall tops"}
