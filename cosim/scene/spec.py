@@ -750,11 +750,12 @@ class Shake(Spec):
             raise SceneError("stop", f"= {self.stop:g} s comes before the fade-in over ramp = {self.ramp:g} s ends; "
                                      "give a later stop or a shorter ramp")
         w = 2 * math.pi / T
+        phase = 2 * math.pi * math.remainder(self.stop, T) / T  # w stop, exact to whole periods
         if self.acceleration is not None:   # from rest: v = (a0 / w)(1 - cos w t), at rest at t = k T
             a0 = self.acceleration
-            v, peak, first, step = a0 / w * (1 - math.cos(w * self.stop)), 2 * a0 / w, T, T
+            v, peak, first, step = a0 / w * (1 - math.cos(phase)), 2 * a0 / w, T, T
         else:                               # v = A w cos w t, at rest at t = T/4 + k T/2
-            v, peak, first, step = self.amplitude * w * math.cos(w * self.stop), self.amplitude * w, T / 4, T / 2
+            v, peak, first, step = self.amplitude * w * math.cos(phase), self.amplitude * w, T / 4, T / 2
         if abs(v) > self.HOLD_REST * abs(peak):
             k = max(0, math.floor((self.stop - first) / step))
             near = [first + j * step for j in (k, k + 1) if first + j * step >= self.ramp]
