@@ -275,7 +275,12 @@ class Stopped(Signal):
     the signal's (a record's free response after an earthquake that ends at ``stop``;
     cutting the accelerogram and correcting its baseline anew would change the whole
     shaking). The integral is a cubic spline's antiderivative through ``w v`` sampled
-    every fade / 4000."""
+    every fade / 4000.
+
+    ``fade = 0``: the signal cut at ``stop`` and held there, ``s(t) = s(stop)`` after it.
+    The velocity then jumps from ``v(stop)`` to zero, so give a ``stop`` where the signal
+    is at rest (a0 sin(w t) from rest after whole periods, where its acceleration is zero
+    too: Sunara et al. 2021, §3.1's excitation stopped without an impulse)."""
 
     signal: Signal
     stop: float
@@ -285,7 +290,12 @@ class Stopped(Signal):
     def __post_init__(self):
         if not isinstance(self.signal, Signal):
             raise InputError(f"Stopped: signal must be a Signal (Harmonic, Tabulated, ...), got {self.signal!r}")
-        stop, fade = _finite("stop [s]", self.stop), _finite("fade [s]", self.fade, positive=True)
+        stop, fade = _finite("stop [s]", self.stop), _finite("fade [s]", self.fade)
+        if fade < 0:
+            raise InputError(f"Stopped: fade={self.fade!r} s; give 0 (cut and hold at stop) or a positive fade time")
+        if fade == 0:
+            object.__setattr__(self, "_pp", (float(self.signal.state(stop)[0]), None))
+            return
         t1 = stop - fade
         t = np.linspace(t1, stop, 4001)
         st = np.array([self.signal.state(float(x)) for x in t])
@@ -297,6 +307,8 @@ class Stopped(Signal):
         if t <= t1:
             return self.signal.state(t)
         s1, integral = self._pp
+        if integral is None:  # cut and held
+            return s1, 0.0, 0.0
         if t >= self.stop:
             return s1 + float(integral(self.stop)), 0.0, 0.0
         k = math.pi / self.fade

@@ -149,7 +149,26 @@ def test_a_stopped_record_is_the_record_then_comes_to_rest(stop):
         assert sig.state(x) == (d_stop, 0.0, 0.0)
     assert abs(rec.state(t1)[1]) > 0.01  # the record does move there: the fade has work to do
     with pytest.raises(InputError, match="fade"):
-        Stopped(rec, stop, fade=0.0)
+        Stopped(rec, stop, fade=-0.1)
+
+
+def test_a_harmonic_stopped_without_a_fade_is_held_where_it_got_to():
+    """``Stopped(fade=0)``: a0 sin(w t) from rest exactly until ``stop``, then held at rest
+    at its value there. After N whole periods from rest the tank has travelled
+    a0 T^2 N / (2 pi) (its mean velocity a0 / w, Sunara et al. 2021, §3.1's excitation) and
+    is at rest with zero acceleration, so the cut is continuous in all three."""
+    from fluid.motion import Stopped
+
+    a0, T, N = 4.905, 1.0, 3
+    h = Harmonic.from_peak_acceleration(a0, T, from_rest=True)
+    sig = Stopped(h, N * T, fade=0.0)
+    for x in np.linspace(0.0, N * T, 31):
+        assert sig.state(x) == h.state(x)
+    held = sig.state(N * T + 1e-9)
+    assert held == (h.state(N * T)[0], 0.0, 0.0)
+    assert held[0] == pytest.approx(a0 * T**2 * N / (2 * math.pi), rel=1e-12)
+    assert sig.state(N * T - 1e-9) == pytest.approx(held, abs=1e-7)
+    assert sig.state(50.0) == held
 
 
 def test_read_at2_refuses_bad_files(tmp_path):

@@ -559,6 +559,17 @@ CASES = [
          "give either amplitude [m] or acceleration [m/s^2], one of the two", "Shake.amplitude"),
     case("neither amplitude nor acceleration", "tank3d", ("base_motion.amplitude", OUT), "base_motion.amplitude",
          "give either amplitude [m] or acceleration [m/s^2]", "Shake.amplitude"),
+    case("a shake's stop without a ramp to fade it out", "tank3d", ("base_motion.stop", 2.0), "base_motion.ramp",
+         "is 0 s, but stop = 2 s fades the shaking out over ramp; give ramp > 0 (e.g. one period), or hold = true",
+         "Shake.ramp"),
+    case("a held shake without a stop", "tank3d", ("base_motion.hold", True), "base_motion.hold",
+         "= true needs stop, the time [s] at which the tank stops and is held", "Shake.hold"),
+    case("a held stop where the tank moves", "tank3d", (("base_motion.hold", True), ("base_motion.stop", 2.0)),
+         "base_motion.stop", "= 2 s: the tank moves at 0.0628 m/s there (its peak 0.0628 m/s), and hold cuts the "
+         "motion at stop, a jump to rest; give a stop where it is at rest, e.g. 1.75 s or 2.25 s", "Shake.stop"),
+    case("a held stop before the fade-in ends", "tank3d",
+         (("base_motion.hold", True), ("base_motion.ramp", 2.0), ("base_motion.stop", 1.75)), "base_motion.stop",
+         "= 1.75 s comes before the fade-in over ramp = 2 s ends", "Shake.stop"),
     case("c0 and u_max", "flume", (("fluid.c0", 20.0), ("fluid.u_max", 2.0)), "fluid.c0",
          "give c0 or u_max, not both", "SPH.c0"),
     # -- dimensions

@@ -400,13 +400,16 @@ def base_motions(draw, dim, box):
     top = 0.99 * MAX_BASE_ACCELERATION
     if kind == "shake":
         period = draw(pos_num(100.0))
-        kw = dict(period=period, direction=draw(nonzero_vec(dim)), ramp=draw(num(0.0, 10.0)),
-                  stop=draw(maybe(pos_num(100.0))))
+        kw = dict(period=period, direction=draw(nonzero_vec(dim)), ramp=draw(num(0.0, 10.0)))
+        if kw["ramp"] > 0:  # a stop fades the shaking out over the ramp
+            kw["stop"] = draw(maybe(pos_num(100.0)))
         if draw(st.booleans()):
             w = 2 * math.pi / period
             kw["amplitude"] = draw(num(-10.0, 10.0)) * min(1.0, top / 10.0 / (w * w))
         else:
             kw["acceleration"] = draw(num(-top, top))
+            if kw["ramp"] < 1e6 * period and draw(st.booleans()):  # or is cut after whole periods, at rest, and held
+                kw.update(hold=True, stop=period * (math.ceil(kw["ramp"] / period) + draw(st.integers(1, 50))))
         return Shake(**kw)
     if kind == "roll":
         amplitude, point = draw(num(-45.0, 45.0)), draw(vec(dim))

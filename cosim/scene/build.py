@@ -51,6 +51,7 @@ class Built:
     plates: dict = field(default_factory=dict)  #: elastic plates: name -> bodies.elastic.BeamModel
     warnings: list = field(default_factory=list)  #: what the user is warned of (logged, and in summary.json)
     near_field: object = None  #: a near field's box (fluid.nearfield.BoxChoice), as chosen
+    sph_domain: object = None  #: a moving tank's SPH domain (cosim.scene.sph_domain.MovingDomain), as chosen
     sea: object = None  #: a near field's incident sea (fluid.waves)
 
 
@@ -111,6 +112,9 @@ def _base_motion(scene):
         sig = (Harmonic(b.amplitude, b.period) if b.amplitude is not None
                else Harmonic.from_peak_acceleration(b.acceleration, b.period, from_rest=True))
         m = Translation(b.direction, sig)
+        if b.hold:  # faded in, then cut at stop and held where it got to
+            m = m.ramped(b.ramp) if b.ramp > 0 else m
+            return Translation(b.direction, Stopped(m.signal, b.stop, fade=0.0))
         return m.ramped(b.ramp, 0.0, b.stop) if (b.ramp > 0 or b.stop is not None) else m
     if isinstance(b, Roll):
         sig = Harmonic(math.radians(b.amplitude), b.period)
@@ -688,6 +692,8 @@ def sph_fluid(scene, out: Built) -> None:
             motions[WALLS] = out.base_motion
         pts, walls = domain_points(scene, cfg, back)
         zones = _absorber(scene)
+        if out.base_motion is not None:  # the box covers the tank's travel and its splashes
+            cfg = _moving_domain(scene, cfg, pts, walls, out)
     if out.bodies is not None:
         from cosim.sph_fluid import SPHFluid
 
@@ -710,6 +716,17 @@ def sph_fluid(scene, out: Built) -> None:
         fluid.prescribe_motion(group, motion)
     fluid.zones.extend(zones)
     out.fluid = out.sph = fluid
+
+
+def _moving_domain(scene, cfg, pts, walls, out: Built):
+    """``cfg`` with the SPH domain of the moving tank (:mod:`cosim.scene.sph_domain`), kept
+    in ``out.sph_domain``."""
+    from cosim.scene.sph_domain import moving_tank_domain, sample_times
+
+    every = np.concatenate([pts] + [w[0] for w in walls])
+    times = sample_times(scene.world.duration, getattr(scene.base_motion, "period", None))
+    d = out.sph_domain = moving_tank_domain(every, out.base_motion, times, cfg.h)
+    return dataclasses.replace(cfg, domain_lo=d.lo, domain_hi=d.hi)
 
 
 def _absorber(scene) -> list:

@@ -33,7 +33,9 @@ NOTES = {
         "cheap way to a base-excited structure. What does not: free bodies, which the water carries; mooring lines "
         "(refused: the mooring models hold their anchors fixed in space while the tank's floor would move); what "
         "an MJCF model fixes to its world (bodies welded or jointed to it, equality constraints to it, its colliding "
-        "geoms), which stands still (warned of when the scene is built)."),
+        "geoms), which stands still (warned of when the scene is built). The SPH domain, outside which particles "
+        "are removed, covers the tank's travel over the whole run and, above the walls, the tank's own height again "
+        "(`cosim.scene.sph_domain`; reported in summary.json's `sph_domain`)."),
 }
 
 

@@ -17,10 +17,10 @@ samples (``world.sample_every``), particle snapshots (``snapshot_every``), check
 - ``sea_components.csv`` (the analytic fluid's incident sea, :mod:`fluid.waves`): its linear
   components (ω, amplitude, phase, k) and, for an irregular sea, the spectrum they stand for
   (the target S(ω), or a record's periodogram a² / 2Δω), plotted in ``sea_spectrum.png``;
-- ``summary.json``: set-up, scheme, sizes, steps (``coupling``: by what set them), wall and
-  CPU time, the cost estimate (``estimate``, :mod:`cosim.scene.cost`), each series' range,
-  ``warnings``, ``line_breaks``, the catenary lines' ``line_events`` (:mod:`moorings.line_events`),
-  ``near_field`` (its box, why), ``sea_variance_left_out`` (the potential fluid's, per body);
+- ``summary.json``: set-up, scheme, sizes, steps (``coupling``: by what set them), wall and CPU
+  time, the cost estimate (``estimate``, :mod:`cosim.scene.cost`), each series' range, ``warnings``,
+  ``line_breaks``, the catenary lines' ``line_events`` (:mod:`moorings.line_events`), ``near_field``
+  (its box, why), ``sph_domain`` (a moving tank's, why), ``sea_variance_left_out`` (per body);
 - ``checkpoint.h5``: the latest checkpoint, data only (:mod:`cosim.checkpoint`,
   ``docs/checkpoints.md``), replaced atomically: every ``world.checkpoint_wall`` of wall
   time (stretched so that writing takes at most :data:`CHECKPOINT_SHARE` of the run), at
@@ -636,6 +636,8 @@ def _summary(scene, built, series, units, steps, loop_s, build_s, cpu_s, wall_be
         s["warnings"] = list(built.warnings)
     if built.near_field is not None:  # the near field's box, as chosen, and why
         s["near_field"] = built.near_field.as_dict()
+    if built.sph_domain is not None:  # a moving tank's SPH domain, and why
+        s["sph_domain"] = built.sph_domain.as_dict()
     if built.wavemaker is not None:
         s["wavemaker"] = {"stroke_m": built.wavemaker.stroke, "wavelength_m": built.wavemaker.wavelength}
     sea = _incident_sea(built)

@@ -708,7 +708,12 @@ WAVES = (Piston, Flap, PaddleRecord, LinearWaves, RegularWaves, IrregularWaves, 
 class Shake(Spec):
     """Harmonic base motion of the tank along ``direction``: give ``amplitude`` [m] or the
     peak ``acceleration`` [m/s^2] (the ground acceleration a0 sin(2 pi t / T) of Sunara et al. 2021,
-    §3.1, started from rest), ramped in over ``ramp`` [s], stopped smoothly at ``stop``."""
+    §3.1, started from rest), ramped in over ``ramp`` [s]. ``stop``: the motion faded out
+    over ``ramp`` before it, back to the start; with ``hold``, cut at ``stop`` and the tank
+    held at rest where it got to (``fluid.motion.Stopped`` without a fade), which needs the
+    tank at rest there: a shake from rest (``acceleration``) at whole periods, where its
+    velocity (a0 / w)(1 - cos w t) and its acceleration vanish, having travelled
+    a0 T^2 / (2 pi) a period; one of ``amplitude`` at a turning point, T/4 + k T/2."""
 
     TAG = ("kind", "harmonic")
     kind: str = tag("harmonic")
@@ -717,11 +722,46 @@ class Shake(Spec):
     amplitude: float = num(None, "displacement amplitude (or give acceleration)", "m")
     acceleration: float = num(None, "peak acceleration (or give amplitude)", "m/s^2")
     ramp: float = num(0.0, "fade-in time", "s", lo=0)
-    stop: float = num(None, "time at which the motion has faded out", "s", lo=0, lo_open=True)
+    stop: float = num(None, "time at which the motion has faded out (with hold: is cut)", "s", lo=0, lo_open=True)
+    hold: bool = flag(False, "true: the motion is cut at `stop` and the tank held at rest where it got to (it must "
+                             "be at rest there: whole periods of a shake from rest); false: it fades out over `ramp` "
+                             "before `stop`, back to its start")
+
+    #: a held stop's largest velocity at ``stop``, as a fraction of the peak velocity
+    HOLD_REST = 1e-3
 
     def validate(self):
         if (self.amplitude is None) == (self.acceleration is None):
             raise SceneError("amplitude", "give either amplitude [m] or acceleration [m/s^2], one of the two")
+        if self.hold:
+            self._check_hold()
+        elif self.stop is not None and not self.ramp > 0:
+            raise SceneError("ramp", f"is 0 s, but stop = {self.stop:g} s fades the shaking out over ramp; give ramp "
+                                     "> 0 (e.g. one period), or hold = true to cut the shaking at stop and hold the "
+                                     "tank where it got to")
+
+    def _check_hold(self):
+        """A held stop: given, after the fade-in, where the tank is at rest (class docstring)."""
+        T = self.period
+        if self.stop is None:
+            raise SceneError("hold", f"= true needs stop, the time [s] at which the tank stops and is held; give "
+                                     f"stop, e.g. a whole number of periods ({3 * T:g} s)")
+        if self.stop < self.ramp:
+            raise SceneError("stop", f"= {self.stop:g} s comes before the fade-in over ramp = {self.ramp:g} s ends; "
+                                     "give a later stop or a shorter ramp")
+        w = 2 * math.pi / T
+        phase = 2 * math.pi * math.remainder(self.stop, T) / T  # w stop, exact to whole periods
+        if self.acceleration is not None:   # from rest: v = (a0 / w)(1 - cos w t), at rest at t = k T
+            a0 = self.acceleration
+            v, peak, first, step = a0 / w * (1 - math.cos(phase)), 2 * a0 / w, T, T
+        else:                               # v = A w cos w t, at rest at t = T/4 + k T/2
+            v, peak, first, step = self.amplitude * w * math.cos(phase), self.amplitude * w, T / 4, T / 2
+        if abs(v) > self.HOLD_REST * abs(peak):
+            k = max(0, math.floor((self.stop - first) / step))
+            near = [first + j * step for j in (k, k + 1) if first + j * step >= self.ramp]
+            raise SceneError("stop", f"= {self.stop:g} s: the tank moves at {abs(v):.3g} m/s there (its peak "
+                                     f"{abs(peak):.3g} m/s), and hold cuts the motion at stop, a jump to rest; give a "
+                                     f"stop where it is at rest, e.g. {' or '.join(f'{x:g} s' for x in near)}")
 
 
 @dataclass(frozen=True)

@@ -23,7 +23,6 @@ acceleration continuous), then ``free_periods`` first-mode periods of free slosh
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 from scipy import optimize, special
@@ -35,7 +34,7 @@ from cosim.validations import forced_sloshing as fs
 from cosim.validations.sloshing import _moving_tank, face_pressure
 from cosim.validations.tanks import moving_walls
 from fluid.geometry import set_hydrostatic
-from fluid.motion import Harmonic, Signal, Translation
+from fluid.motion import Harmonic, Stopped, Translation
 from fluid.particles import Kind
 from fluid.probes import surface_elevation
 from fluid.shapes import cylinder_tank, inclined_tank
@@ -49,21 +48,6 @@ RHO0 = 1000.0
 TANKS = {"rectangular": dict(size=3.0, depth=1.0, height=1.5, width=1.0, period=1.0),
          "inclined": dict(size=3.0, depth=1.0, height=1.5, width=1.0, period=1.0, beta=45.0),
          "cylinder": dict(size=2.0, depth=0.6, height=1.0, width=2.0, period=0.7)}
-
-
-@dataclass(frozen=True)
-class Stopped(Signal):
-    """``signal`` up to ``t_stop`` [s], then held at rest where it got to (velocity and
-    acceleration zero). Continuous when the signal's velocity and acceleration vanish at
-    ``t_stop``, as for a0 sin(w t) from rest after whole periods."""
-
-    signal: Signal
-    t_stop: float
-
-    def state(self, t):
-        if t <= self.t_stop:
-            return self.signal.state(t)
-        return self.signal.state(self.t_stop)[0], 0.0, 0.0
 
 
 def _check_lattice(shape: str, dx: float, tank: dict) -> None:
@@ -215,7 +199,7 @@ def run_long_period(shape: str = "rectangular", dx: float = 0.05, dim: int = 2, 
                       **{**settings("sloshing", dim), **overrides})
     set_hydrostatic(ps, h, RHO0, cfg.speed_of_sound, cfg.gamma, cfg.g)
     f = Fluid(cfg, ps)
-    shake = Translation(tuple(np.eye(dim)[0]), Stopped(harmonic, t_stop))
+    shake = Translation(tuple(np.eye(dim)[0]), Stopped(harmonic, t_stop, fade=0.0))
     f.prescribe_motion(0, shake)
     f.initialize(0.0)
     settle = (1.0 if shape == "inclined" else 0.0) if settle is None else settle
