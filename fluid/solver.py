@@ -688,7 +688,7 @@ class Fluid:
         if c.shifting == "none":
             return
         ps = self.ps
-        ps.pos += shifting.fickian_shift(ps.pos, ps.vel, ps.rho, ps.mass, ps.kind, self._start, self._xbins,
+        ps.pos += shifting.fickian_shift(ps.pos, ps.vel, ps.mass, ps.kind, self._start, self._xbins,
                                          self._grid, self._kernel, c.h, c.dx, c.rho0, c.shifting_coef, dt,
                                          work=self._work)
 

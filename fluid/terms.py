@@ -248,7 +248,7 @@ def fickian_weight(volb, w, iw_dx):
     ``grad C_a = sum_b V_b (1 + R (W_ab / W(dx))^n) grad_a W_ab`` (Lind et al. 2012, with
     the tensile term of Monaghan 2000, R = 0.2, n = 4): ``V_b (1 + R (w_ab iw_dx)^4)``,
     ``w_ab`` the kernel's shape at the pair, ``iw_dx`` the inverse of its value at the
-    spacing dx; ``V_b`` as :func:`support_volume` (walls count as filled support)."""
+    spacing dx, ``V_b`` [m^3] the neighbour's volume (:mod:`fluid.shifting`: ``m_b / rho0``)."""
     x = w * iw_dx
     x2 = x * x
     return volb * (1.0 + 0.2 * x2 * x2)
