@@ -612,7 +612,7 @@ def density_gradients(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, G) -> No
     loop = _GRADIENTS.get(key)
     if loop is None:
         loop = _GRADIENTS[key] = _make_gradient(*key)
-    with _dynamic_chunks():
+    with dynamic_chunks():
         loop(S, G.shape[1], start, tab, lo, cell, nx, ny, nz, prm, G)
 
 
@@ -624,7 +624,8 @@ PAIR_CHUNK = 256
 
 
 @contextmanager
-def _dynamic_chunks():
+def dynamic_chunks():
+    """Run the enclosed parallel loops with chunks of :data:`PAIR_CHUNK` particles."""
     old = numba.set_parallel_chunksize(PAIR_CHUNK)
     try:
         yield
@@ -681,7 +682,7 @@ def interact(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, out, acc, xs, G, 
         pack_f32(S, prm[P_RHO0], lo, cell, nx, ny, nz, T)
     if walls != WALLS_FULL and (kind is None or kind.shape[0] != acc.shape[0]):
         raise InputError(f"interact: walls={walls} picks the wall particles by kind; give kind ({acc.shape[0]},)")
-    with _dynamic_chunks():
+    with dynamic_chunks():
         loop(S, S if T is None or not f32 else T, acc.shape[0], start, tab, lo, cell, nx, ny, nz, prm, out, acc, xs, G,
              _NOWHERE if near is None else near, _NO_KINDS if kind is None else kind, walls)
 

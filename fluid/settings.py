@@ -29,6 +29,8 @@ DIFFUSION = ("fourtakas", "antuono", "molteni", "none")
 PRECISION = ("float64", "float32")
 #: tank-wall density treatments (``fluid.wall_density``)
 WALLS = ("dbc", "adami")
+#: particle shifting (``fluid.shifting``)
+SHIFTING = ("none", "fickian")
 
 #: what a scene does with a setting (:attr:`Setting.scene`): "": not a field of the scene's
 #: (the scene sets it from elsewhere, or never); "set-up": the scene's field is
@@ -152,6 +154,14 @@ SETTINGS: tuple[Setting, ...] = (
     Setting("xsph_eps", 0.0, "XSPH coefficient; 0: off", lo=0, hi=1, hint="0.1 is usual",
             note="Monaghan 1989; Wang et al. 2022 uses 0.1: particles move with the velocity smoothed over their "
             "neighbours", scene="set-up"),
+    Setting("shifting", "none", "particle shifting: none, or fickian (fluid particles moved down their "
+            "concentration gradient each step; along the free surface only near it, not within 2h of a wall)",
+            kind=str, choices=SHIFTING, note="Lind et al. 2012 with Skillen et al. 2013's coefficient; the free "
+            "surface found from the renormalisation matrix (fluid.shifting); cpu only. Measured in the wave flume, it "
+            "adds to a wave's decay (docs/validation/wave-propagation_history.md)", scene="set-up"),
+    Setting("shifting_coef", 2.0, "Fickian shifting's A in D = A h |v| dt", lo=0, hi=6, lo_open=True,
+            hint="1 ... 6 (Skillen et al. 2013); 2 as DualSPHysics", note="Skillen et al. 2013, Eq. 13",
+            scene="set-up"),
     Setting("diffusion", "fourtakas", "density diffusion term", kind=str, choices=DIFFUSION,
             note="antuono: renormalised, exact for linear fields, a second pair loop (fluid.equations)",
             scene="set-up"),

@@ -20,7 +20,7 @@ import numpy as np
 
 from errors import InputError, InstabilityError
 from fluid import equations as eq
-from fluid import mls, settings
+from fluid import mls, settings, shifting
 from fluid.integrator import (StepLimit, corrector, diffusion_coefficient, first_non_finite, predictor,
                               stable_dt, verlet)
 from fluid.kernels import alpha_d, kernel_id
@@ -664,6 +664,7 @@ class Fluid:
             euler = self.counters.steps % c.verlet_reset == 0
             verlet(ps.pos, ps.vel, ps.rho, self._drho, self._acc, ps.kind, c.rho0, dt,
                    aux["vel"], aux["rho"], euler, self._xs())
+            self._shift(dt)
             self._end_step(dt)
             return loads
         predictor(ps.pos, ps.vel, ps.rho, self._drho, self._acc, ps.kind, c.rho0, dt,
@@ -675,8 +676,21 @@ class Fluid:
         ps, aux = self.ps, self._aux
         corrector(ps.pos, ps.vel, ps.rho, self._drho, self._acc, ps.kind, c.rho0, dt,
                   aux["pos"], aux["vel"], aux["rho"], self._xs())
+        self._shift(dt)
         self._end_step(dt)
         return loads
+
+    def _shift(self, dt: float) -> None:
+        """Particle shifting (``FluidConfig.shifting``; fluid.shifting): the fluid particles
+        moved down their concentration gradient, after the step's position update and before
+        the next sort, with the cell list of the step's last sort."""
+        c = self.config
+        if c.shifting == "none":
+            return
+        ps = self.ps
+        ps.pos += shifting.fickian_shift(ps.pos, ps.vel, ps.mass, ps.kind, self._start, self._xbins,
+                                         self._grid, self._kernel, c.h, c.dx, c.rho0, c.shifting_coef, dt,
+                                         work=self._work)
 
     def _end_step(self, dt: float) -> None:
         """Count the step, check for non-finite values, re-sort, re-initialise the density

@@ -21,6 +21,8 @@ caches (``fluid/**/*.nbi``): a loop's cache is keyed on its own file, not on the
   et al. 2021, Eq. 6); laminar viscosity, Lo & Shao 2002; XSPH, Monaghan 1989.
 * The viscous term of the time step, Sunara et al. 2021, Eq. 14.
 * The wall pressure extrapolated from the fluid, Adami, Hu & Adams 2012, Eq. 27.
+* Fickian particle shifting, Lind et al. 2012 (Skillen et al. 2013's coefficient), its
+  free-surface region and normal from the renormalisation matrix (Marrone et al. 2010).
 * Linear solves: the renormalised density gradient (Dinçer & Demir 2020, Eq. 3-4), the
   MLS density (Sunara et al. 2021, Eq. 9-12), the mDBC ghost-node system (English et
   al. 2022, Eq. 12-13).
@@ -241,7 +243,76 @@ def adami_pressure(pf, bx, by, bz, rx, ry, rz):
     return pf + bx * rx + by * ry + bz * rz
 
 
+def fickian_weight(volb, w, iw_dx):
+    """The volume [m^3] particle b adds to the concentration gradient of Fickian shifting,
+    ``grad C_a = sum_b V_b (1 + R (W_ab / W(dx))^n) grad_a W_ab`` (Lind et al. 2012, with
+    the tensile term of Monaghan 2000, R = 0.2, n = 4): ``V_b (1 + R (w_ab iw_dx)^4)``,
+    ``w_ab`` the kernel's shape at the pair, ``iw_dx`` the inverse of its value at the
+    spacing dx, ``V_b`` [m^3] the neighbour's volume (:mod:`fluid.shifting`: ``m_b / rho0``)."""
+    x = w * iw_dx
+    x2 = x * x
+    return volb * (1.0 + 0.2 * x2 * x2)
+
+
 # ------------------------------------------------------------------ particle terms
+def symmetric_min_eigenvalue(bxx, bxy, bxz, byy, byz, bzz, three):
+    """The smallest eigenvalue of the symmetric matrix ``B`` (``bxx ... bzz``; ``three``
+    False: the x-z block only), in closed form: 2 x 2, ``(bxx + bzz)/2 - sqrt(((bxx -
+    bzz)/2)^2 + bxz^2)``; 3 x 3, the trigonometric solution of its characteristic cubic
+    (Smith 1961, Commun. ACM 4: 168)."""
+    if not three:
+        return 0.5 * (bxx + bzz) - math.sqrt(0.25 * (bxx - bzz) * (bxx - bzz) + bxz * bxz)
+    q = (bxx + byy + bzz) / 3.0
+    p1 = bxy * bxy + bxz * bxz + byz * byz
+    p2 = (bxx - q) * (bxx - q) + (byy - q) * (byy - q) + (bzz - q) * (bzz - q) + 2.0 * p1
+    p = math.sqrt(p2 / 6.0)
+    if not p > 0.0:
+        return q
+    ip = 1.0 / p
+    axx, ayy, azz = (bxx - q) * ip, (byy - q) * ip, (bzz - q) * ip
+    axy, axz, ayz = bxy * ip, bxz * ip, byz * ip
+    r = 0.5 * (axx * (ayy * azz - ayz * ayz) - axy * (axy * azz - ayz * axz) + axz * (axy * ayz - ayy * axz))
+    phi = math.acos(min(max(r, -1.0), 1.0)) / 3.0
+    return q + 2.0 * p * math.cos(phi + 2.0943951023931957)  # + 2 pi / 3
+
+
+def fickian_shift(gx, gy, gz, bxx, bxy, bxz, byy, byz, bzz, D, lam_full, three):
+    """Particle a's shift [m] of Fickian shifting, ``delta r_a = -D grad C_a`` (Lind et al.
+    2012, Eq. 21-24; ``D = A h |v_a| dt`` [m^2], Skillen et al. 2013, Eq. 13), with the
+    free-surface treatment of Lind et al. 2012 (no shift along the surface's normal near
+    it: ``delta r_a = -D (I - n n) grad C_a``), the region and its normal found from the
+    renormalisation matrix ``B_a = sum_b V_b r_ba (x) grad_a W_ab`` (the identity where the
+    support is full; Marrone et al. 2010, as Sun et al. 2017 use it): a support cut by the
+    free surface where ``B_a``'s smallest eigenvalue is below ``lam_full``, the normal along
+    ``B_a^-1 grad C_a``. ``g`` = grad C_a [1/m], ``b`` = B_a (symmetric, [-]); no shift
+    where ``B_a`` is singular (a particle with too few neighbours to say where the surface
+    lies). Returns (x, y, z); y = 0 in 2-D (``three`` False)."""
+    sx = -D * gx
+    sy = -D * gy if three else 0.0
+    sz = -D * gz
+    if symmetric_min_eigenvalue(bxx, bxy, bxz, byy, byz, bzz, three) >= lam_full:
+        return sx, sy, sz
+    # the normal's direction: adj(B) grad C (its sign and length do not matter)
+    if three:
+        c00 = byy * bzz - byz * byz
+        c01 = bxz * byz - bxy * bzz
+        c02 = bxy * byz - bxz * byy
+        det = bxx * c00 + bxy * c01 + bxz * c02
+        nx = c00 * gx + c01 * gy + c02 * gz
+        ny = c01 * gx + (bxx * bzz - bxz * bxz) * gy + (bxy * bxz - bxx * byz) * gz
+        nz = c02 * gx + (bxy * bxz - bxx * byz) * gy + (bxx * byy - bxy * bxy) * gz
+    else:
+        det = bxx * bzz - bxz * bxz
+        nx = bzz * gx - bxz * gz
+        ny = 0.0
+        nz = bxx * gz - bxz * gx
+    nn = nx * nx + ny * ny + nz * nz
+    if not (det > 0.0 and nn > 0.0):
+        return 0.0, 0.0, 0.0
+    p = (sx * nx + sy * ny + sz * nz) / nn
+    return sx - p * nx, sy - p * ny, sz - p * nz
+
+
 def surface_fade(h, Fc, gsx, gsy, gsz, s0, s1):
     """The diffusion's factor under the free surface [-]: 1 where ``s_a = h |sum_b V_b
     grad_a W_ab| <= s0``, 0 where ``s_a >= s1``, linear between (``gs`` the sum of
@@ -419,7 +490,8 @@ TERMS = ("kernel_w", "kernel_grad_shape", "kernel_grad_scale", "tait", "tait_pre
          "pair_division", "continuity", "fourtakas_hydrostatic", "renormalised_hydrostatic", "density_diffusion",
          "support_volume", "artificial_viscosity", "wall_viscosity", "momentum", "laminar_viscosity",
          "viscous_bound", "xsph_weight", "adami_pressure", "surface_fade", "adami_wall_pressure", "continuity_rate",
-         "acceleration", "viscous_speed", "renormalised_gradient", "det4", "solve_in_place", "mls_solve",
+         "acceleration", "viscous_speed", "fickian_weight", "symmetric_min_eigenvalue", "fickian_shift",
+         "renormalised_gradient", "det4", "solve_in_place", "mls_solve",
          "mdbc_add_neighbour", "mdbc_extrapolate")
 _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 #: the terms compiled for the CPU loops (numba.njit; LLVM inlines them), and for the

@@ -198,3 +198,29 @@ def test_solve_and_det4_against_numpy():
     A = rng.normal(size=(4, 4))
     assert terms.cpu.det4(*A.ravel()) == pytest.approx(np.linalg.det(A), rel=1e-12)
     assert terms.cpu.solve_in_place(np.zeros((2, 2)), np.ones(2), 2) == 0.0
+
+
+@pytest.mark.parametrize("three", [False, True])
+def test_fickian_shift_and_its_free_surface_projection(three):
+    """Lind et al. 2012's shift -D grad C where B (the renormalisation matrix) is near the
+    identity; below lam_full its component along n = B^-1 grad C removed (and B's smallest
+    eigenvalue is numpy's); nothing for a singular B."""
+    rng = np.random.default_rng(11)
+    d = 3 if three else 2
+    for _ in range(5):
+        A = rng.normal(size=(d, d))
+        B = A @ A.T + 0.1 * np.eye(d)
+        g = rng.normal(size=d)
+        b = (B[0, 0], B[0, 1], B[0, 2], B[1, 1], B[1, 2], B[2, 2]) if three else (B[0, 0], 0.0, B[0, 1], 0.0, 0.0,
+                                                                                  B[1, 1])
+        g3 = (g[0], g[1], g[2]) if three else (g[0], 0.0, g[1])
+        lam = np.linalg.eigvalsh(B)[0]
+        assert terms.cpu.symmetric_min_eigenvalue(*b, three) == pytest.approx(lam, rel=1e-10, abs=1e-12)
+        full = np.array(terms.cpu.fickian_shift(*g3, *b, 0.5, lam - 1e-6, three))
+        np.testing.assert_allclose(full[[0, 1, 2] if three else [0, 2]], -0.5 * g, rtol=1e-12)
+        cut = np.array(terms.cpu.fickian_shift(*g3, *b, 0.5, lam + 1e-6, three))[[0, 1, 2] if three else [0, 2]]
+        n = np.linalg.solve(B, g)
+        assert abs(cut @ n) < 1e-12 * np.linalg.norm(g) * np.linalg.norm(n)
+        np.testing.assert_allclose(cut, -0.5 * (g - (g @ n) / (n @ n) * n), rtol=1e-10, atol=1e-14)
+    singular = (1.0, 0.0, 0.0, 0.0, 0.0, 0.0)  # one neighbour: B of rank 1
+    assert terms.cpu.fickian_shift(1.0, 0.0, 0.5, *singular, 0.5, 0.97, three) == (0.0, 0.0, 0.0)

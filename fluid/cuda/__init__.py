@@ -25,7 +25,8 @@ diagnostic ``MDBC.low_order`` is not filled on the GPU), the MLS density
 re-initialisation (``mls_every``, fluid.mls).
 
 Not on the GPU yet, refused with the setting to change: ``precision="float32"`` (the
-CPU's float32 pair terms), by :func:`check_config`; boundary-correction hooks other than
+CPU's float32 pair terms) and particle shifting (``shifting``, :mod:`fluid.shifting`), by
+:func:`check_config`; boundary-correction hooks other than
 the Adami walls and mDBC, at the first rate evaluation. A float32 variant of the GPU
 pair loop is not written: float64 is the GPU default and its reference, as on the CPU.
 
@@ -79,6 +80,9 @@ def check_config(config) -> None:
     bad = []
     if getattr(config, "precision", "float64") != "float64":
         bad.append((f"precision={config.precision!r}", "use precision='float64' (the GPU path's pair loop is float64)"))
+    if getattr(config, "shifting", "none") != "none":
+        bad.append((f"shifting={config.shifting!r}", "use shifting='none' (particle shifting, fluid.shifting, runs on "
+                    "the CPU only)"))
     if bad:
         what, fix = bad[0]
         raise InputError(f"FluidConfig: {what} is not available with device='cuda'; {fix}, or device='cpu'")
