@@ -41,15 +41,7 @@ from fluid.probes import surface_elevation
 from fluid.relaxation import Slab
 from fluid.solver import Fluid, FluidConfig
 from fluid.wavemaker import RegularWavemaker
-
-
-def _value(text: str):
-    if text in ("true", "false"):
-        return text == "true"
-    try:
-        return float(text)
-    except ValueError:
-        return text
+from wave_propagation import setting_value  # benchmarks/wave_propagation.py, beside this script
 
 
 def readings(f: Fluid, L: float) -> dict:
@@ -99,7 +91,7 @@ def main(argv=None) -> None:
     x_abs = 3.5 * L
     length = x_abs + 1.5 * L
     cfg = FluidConfig(dim=2, dx=dx, g=G, u_max=math.sqrt(G * depth),
-                      **{**settings("waves", 2), **{k: _value(v) for k, v in (s.split("=", 1) for s in args.set)}})
+                      **{**settings("waves", 2), **{k: setting_value(v) for k, v in (s.split("=", 1) for s in args.set)}})
     fl = flume(dx, length, depth, 1.5 * depth, layers=math.ceil(2.0 * cfg.h_coef - 1e-9), back=0.5 * wm.stroke + dx)
     ps = assemble(2, dx, cfg.rho0, fl.fluid, fl.walls).particles
     set_hydrostatic(ps, depth, cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g)

@@ -23,7 +23,8 @@ from cosim.scene.setup import settings
 from cosim.validations.wave_propagation import WP_DEPTH, WP_HEIGHT, WP_PERIOD, propagate
 
 
-def _value(text: str):
+def setting_value(text: str):
+    """A ``--set KEY=VALUE`` value: true/false, a number (a float), or the text."""
     if text in ("true", "false"):
         return text == "true"
     try:
@@ -39,7 +40,7 @@ def main(argv=None) -> None:
     ap.add_argument("--wavelengths", type=int, default=8)
     ap.add_argument("--set", nargs="*", default=[], metavar="KEY=VALUE", help="FluidConfig settings on top")
     args = ap.parse_args(argv)
-    extra = {k: _value(v) for k, v in (s.split("=", 1) for s in args.set)}
+    extra = {k: setting_value(v) for k, v in (s.split("=", 1) for s in args.set)}
     print(f"# CPU: {cpu_name()}")
     table = []
     for setup in args.setup:
