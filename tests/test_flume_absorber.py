@@ -13,6 +13,9 @@ from cosim.validations.wave_propagation import harmonics, separate
 from fluid.wavemaker import RegularWavemaker
 
 DEPTH, PERIOD, HEIGHT = 0.3, 1.0, 0.03
+#: the piston wave's wavenumber [rad/m] (linear dispersion) and wavelength [m]
+K = RegularWavemaker("piston", HEIGHT, PERIOD, DEPTH, 1.0, 9.81).k
+L = 2.0 * math.pi / K
 
 
 def flume_scene(absorber, dx=0.03, duration=0.1, gauges=(0.6,)):
@@ -34,20 +37,17 @@ def test_the_absorber_is_a_zone_at_the_far_end_relaxing_at_twice_the_wave_freque
 def _reflection(absorber, tmp_path):
     """The reflected over the incident first harmonic at five gauges a quarter wavelength
     apart around x = 1.2 m, over 11-14 s (the front back from the far wall by then)."""
-    k = RegularWavemaker("piston", HEIGHT, PERIOD, DEPTH, 1.0, 9.81).k
-    L = 2.0 * math.pi / k
     xs = 1.2 + np.linspace(-0.25, 0.25, 5) * L
     res = flume_scene(absorber, duration=14.0, gauges=xs).run(tmp_path, progress=False, yes=True)
     late = res.t >= 11.0 - 1e-9
     eta = np.column_stack([res[f"gauge{j + 1}.eta"][late] for j in range(len(xs))])
-    inc, refl = separate(xs, harmonics(res.t[late], eta, 2.0 * math.pi / PERIOD), k)
+    inc, refl = separate(xs, harmonics(res.t[late], eta, 2.0 * math.pi / PERIOD), K)
     return abs(refl) / abs(inc)
 
 
 @pytest.mark.slow
 def test_the_absorber_takes_the_wave_the_bare_wall_sends_back(tmp_path):
     # 1.5 wavelengths at twice the wave frequency: the wave-propagation case's zone
-    L = 2.0 * math.pi / RegularWavemaker("piston", HEIGHT, PERIOD, DEPTH, 1.0, 9.81).k
     absorbed = _reflection(Absorber(length=1.5 * L), tmp_path / "absorber")
     bare = _reflection(None, tmp_path / "bare")
     assert absorbed < 0.05
