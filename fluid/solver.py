@@ -259,7 +259,9 @@ class Fluid:
         #: what the pair loop computes for the wall particles (fluid.equations.WALLS_*)
         self._walls_rates = (eq.WALLS_FULL if c.wall_loads else
                              eq.WALLS_NONE if c.walls == "adami" else eq.WALLS_CONTINUITY)
-        #: the groups made of wall particles: their loads are NaN when not computed
+        #: Adami walls whose loads are computed: the pair loop's continuity rate of their
+        #: particles is dropped, their density being Adami's Eq. 27 alone (as without loads)
+        self._drop_wall_continuity = c.walls == "adami" and c.wall_loads
         #: a symmetry plane's mirror images (fluid.mirror), None without one
         self.mirror = None
         if c.symmetry_y is not None:
@@ -269,6 +271,7 @@ class Fluid:
                 raise InputError(f"particle {particles.ids[i]} at y = {particles.pos[i, 1]:.6g} m lies beyond the "
                                  f"symmetry plane y = {c.symmetry_y:g} m: give only the half y >= it")
             self.mirror = Mirror(c.symmetry_y, 2.0 * c.h, c.dx)
+        #: the groups made of wall particles: their loads are NaN when not computed
         self._wall_groups = np.zeros(self.n_groups, bool)
         if not c.wall_loads and self.n_groups:
             walls = (particles.kind == Kind.FIXED_WALL) | (particles.kind == Kind.MOVING_WALL)
@@ -767,6 +770,8 @@ class Fluid:
             ps.pos, ps.vel, ps.rho, ps.mass, ps.kind, self._start, self._grid, self._kernel,
             self._prm, c.rho0, c.speed_of_sound, c.gamma, ps.p, self._work, self._xbins, self.near_fluid,
             self._walls_rates, m)
+        if self._drop_wall_continuity:
+            self._drho[(ps.kind == Kind.FIXED_WALL) | (ps.kind == Kind.MOVING_WALL)] = 0.0
         if m is None:
             self._limit = stable_dt(self._acc, visc, self._cs, ps.kind, c.h, c.cfl, c.dt_max, c.nu,
                                     **self._diffusivity)
