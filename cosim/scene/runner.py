@@ -340,7 +340,7 @@ def plot_checkpoint(out, png=None) -> Path:
             path = Path(png) if png is not None else out / f"particles_checkpoint_t{t:07.3f}.png"
             plot_particles(path, scene, built, t)
         finally:
-            _close_participants(built)
+            close_participants(built)
     return path
 
 
@@ -509,7 +509,7 @@ def run(scene, out, *, resume: bool = False, resume_any_version: bool = False, o
                 shutil.copy2(f, out / f.name)
             return _run_built(scene, built, rec, out, ck, progress, wall0, cpu0, est)
         finally:
-            _close_participants(built)
+            close_participants(built)
 
 
 def _run_built(scene, built, rec, out: Path, ck, progress, wall0: float, cpu0: float, est=None) -> Results:
@@ -590,7 +590,7 @@ def _run_built(scene, built, rec, out: Path, ck, progress, wall0: float, cpu0: f
     return Results(rec.times, series, units, summary, out)
 
 
-def _close_participants(built) -> None:
+def close_participants(built) -> None:
     """Release what the participants hold outside Python (an FMU's or MoorDyn's library)."""
     close = getattr(built.mooring, "close", None)
     if callable(close):

@@ -104,12 +104,11 @@ def built(scene) -> Iterator:
     into a temporary folder, removed on leaving, and a mooring holding a library (an FMU,
     MoorDyn) is closed."""
     from cosim.scene.build import build
+    from cosim.scene.runner import close_participants
 
     with tempfile.TemporaryDirectory(prefix="cosim-case-") as work:
         b = build(scene, Path(work))
         try:
             yield b
         finally:
-            close = getattr(b.mooring, "close", None)
-            if callable(close):
-                close()
+            close_participants(b)
