@@ -16,6 +16,7 @@ by hand: a scene-built case through :func:`load`, a code-built one through :func
 
 from __future__ import annotations
 
+import contextvars
 import dataclasses
 import tempfile
 from collections.abc import Iterator, Sequence
@@ -24,18 +25,20 @@ from pathlib import Path
 
 from cosim.validations.folders import SCENES
 
-_auto = [False]
+#: whether the cases run the chooser's set-up (set by :func:`auto_setup`; a context variable, so
+#: that a thread or task that did not enter it is not affected)
+_auto = contextvars.ContextVar("auto_setup", default=False)
 
 
 @contextmanager
 def auto_setup() -> Iterator[None]:
     """Within it, the cases run the set-up the chooser picks for their scenes (module
     docstring)."""
-    _auto.append(True)
+    token = _auto.set(True)
     try:
         yield
     finally:
-        _auto.pop()
+        _auto.reset(token)
 
 
 def chosen(scene):
@@ -55,7 +58,7 @@ def fluid_setup(case: str, own: dict) -> dict:
     settings it sets by hand; under :func:`auto_setup`, the settings a set-up chooses
     (``cosim.scene.setup.chosen_settings``) as ``cosim.scene.setup.choose`` gives them to
     the case's scene file."""
-    if not _auto[-1]:
+    if not _auto.get():
         return dict(own)
     from cosim.scene.setup import choose, chosen_settings
 
@@ -94,7 +97,7 @@ def load(case: str, values: Sequence[str] = ()):
 
     scene = Scene.from_toml(path(case))
     scene = scene.with_values(list(values)) if values else scene
-    return chosen(scene) if _auto[-1] else scene
+    return chosen(scene) if _auto.get() else scene
 
 
 @contextmanager
