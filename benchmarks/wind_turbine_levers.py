@@ -1,0 +1,90 @@
+"""Cost levers on the flagship scene: the `wind-turbine-sph` case's wave run (Barreiro et
+al. 2016, §5: the base on its three lines in a 3-D SPH near field) with set-up values
+changed (the speed of sound, the integrator, the pair loop's precision), each judged the way
+the case judges it: surge and heave first harmonics against the potential-flow fluid's on the
+same base, lines and sea, the mean fairlead tensions, and the gauges' height and phase
+against the sea's; with the particles, steps and CPU seconds of each run. Prints one JSON
+line per variant, then a markdown table.
+
+A variant is ``LABEL:KEY=VALUE[,KEY=VALUE...]`` (scene keys, as ``--set`` takes them); the
+case's scene as written is always run as ``base``. Runs are kept in ``OUT/LABEL`` and read
+back or resumed when the script runs again (the case's ``run_or_resume``).
+
+    python benchmarks/wind_turbine_levers.py --out OUT [--dx 1.25] [--duration 40]
+        [--window 20 40] [--variant c70:fluid.c0=70] [--variant verlet:fluid.c0=70,fluid.integrator=verlet]
+
+The defaults are the case's quick variant (dx = 1.25 m, 40 s, window 20-40 s). CPU seconds
+are this machine's, under whatever else runs on it: compare variants run side by side.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+
+from cosim.validations import wind_turbine_sph as case
+
+
+def parse_variant(text: str) -> tuple[str, list[str]]:
+    """``LABEL:KEY=VALUE,...`` -> (label, ["KEY=VALUE", ...])."""
+    label, sep, sets = text.partition(":")
+    if not sep or not label or not sets:
+        raise SystemExit(f"--variant {text!r}: give LABEL:KEY=VALUE[,KEY=VALUE...], e.g. c70:fluid.c0=70")
+    return label, [s for s in sets.split(",") if s]
+
+
+def figures(res, scene, window, pot) -> dict:
+    """The case's judged figures of one wave run against the potential fluid's ``pot``."""
+    omega = 2.0 * math.pi / scene.waves.period
+    m = case.motion_figures(res, window, omega)
+    g = case.gauge_figures(res, scene, window)
+    return m | {"surge_error": m["surge_amp"] / pot["surge_amp"] - 1.0,
+                "heave_error": m["heave_amp"] / pot["heave_amp"] - 1.0,
+                "tension_back_error": m["tension_back_N"] / pot["tension_back_N"] - 1.0,
+                "tension_front_error": m["tension_front_N"] / pot["tension_front_N"] - 1.0,
+                "gauge_height_error": float(np.max(np.abs(np.asarray(g["H1_over_H"]) - 1.0))),
+                "gauge_lag_periods": float(np.max(np.abs(g["lag_periods"])))}
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--out", type=Path, required=True, help="folder of the runs (kept, resumed, read back)")
+    ap.add_argument("--dx", type=float, default=case.RUNS[True][0])
+    ap.add_argument("--duration", type=float, default=case.RUNS[True][1])
+    ap.add_argument("--window", type=float, nargs=2, default=case.RUNS[True][3])
+    ap.add_argument("--variant", action="append", default=[], type=parse_variant,
+                    help="LABEL:KEY=VALUE[,KEY=VALUE...] (repeatable)")
+    ap.add_argument("--no-base", action="store_true", help="leave out the scene as written")
+    a = ap.parse_args(argv)
+    window = tuple(a.window)
+    scene0 = case.sph_scene(False).with_values([f"fluid.dx={a.dx}", f"world.duration={a.duration}"])
+    pot_scene = case.surface_scene(scene0, "potential")
+    pot = case.motion_figures(case.run_or_resume(pot_scene, a.out / "potential"), window,
+                              2.0 * math.pi / scene0.waves.period)
+    variants = ([] if a.no_base else [("base", [])]) + a.variant
+    rows = []
+    for label, sets in variants:
+        scene = scene0.with_values(sets) if sets else scene0
+        res = case.run_or_resume(scene, a.out / label)
+        row = {"variant": label, "sets": sets} | figures(res, scene, window, pot)
+        print(json.dumps(row), flush=True)
+        rows.append(row)
+    print(f"potential fluid: surge {pot['surge_amp']:.3f} m, heave {pot['heave_amp']:.3f} m, pitch "
+          f"{pot['pitch_amp']:.3f} deg")
+    print("| variant | surge [m] (vs potential) | heave [m] (vs potential) | pitch [deg] | tensions back / front "
+          "vs potential | gauges' height / lag [periods] | particles | steps | CPU [s] |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    for r in rows:
+        print(f"| {r['variant']} | {r['surge_amp']:.3f} ({r['surge_error']:+.1%}) | {r['heave_amp']:.3f} "
+              f"({r['heave_error']:+.1%}) | {r['pitch_amp']:.3f} | {r['tension_back_error']:+.1%} / "
+              f"{r['tension_front_error']:+.1%} | {r['gauge_height_error']:.1%} / {r['gauge_lag_periods']:.3f} | "
+              f"{r['particles']} | {r['steps']} | {r['cpu_s']:.0f} |")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
