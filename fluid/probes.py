@@ -215,17 +215,22 @@ def _fraction(z, dh2, zb, vb, kernel, h, ad):
 def _surface(gauges, pos, kind, mass, rho, start, lo, inv_cell, nx, ny, nz, reach, kernel, h, ad,
              step, out):
     """Highest z where the fluid fraction crosses 0.5 going down each gauge's vertical
-    line; NaN where it never does (a dry gauge)."""
+    line; where it never does (a dry gauge), the bed's surface: half a spacing (2 ``step``)
+    above the highest boundary particle within 3 ``step`` of the line; NaN where there is
+    neither."""
     three = pos.shape[1] == 3
     zc = pos.shape[1] - 1
     dys = 2 * reach + 1 if three else 1
     R2 = 4.0 * h * h
+    B2 = 9.0 * step * step  # a lattice's nearest boundary column lies within dx / sqrt(2)
     for a in range(gauges.shape[0]):
         gx = gauges[a, 0]
         gy = gauges[a, 1] if three else 0.0
         cx, cy, cz0 = cell_coords(gx, gy, lo[zc], lo, inv_cell, three, nx, ny, nz)
-        # the fluid particles within 2h of the line: two passes, count then fill
+        # the fluid particles within 2h of the line (two passes, count then fill), and the
+        # top of the bed under it
         n = 0
+        bed = -np.inf
         for cz in range(nz):
             for k in range(dys):
                 dy = k - reach if three else 0
@@ -233,10 +238,15 @@ def _surface(gauges, pos, kind, mass, rho, start, lo, inv_cell, nx, ny, nz, reac
                 for b in range(j0, j1):
                     rx = gx - pos[b, 0]
                     ry = gy - pos[b, 1] if three else 0.0
-                    if kind[b] == _FLUID and rx * rx + ry * ry < R2:
-                        n += 1
+                    r2 = rx * rx + ry * ry
+                    if kind[b] == _FLUID:
+                        if r2 < R2:
+                            n += 1
+                    elif r2 <= B2 and pos[b, zc] > bed:
+                        bed = pos[b, zc]
+        dry = bed + 2.0 * step if bed > -np.inf else np.nan
         if n == 0:
-            out[a] = np.nan
+            out[a] = dry
             continue
         dh2 = np.empty(n)
         zb = np.empty(n)
@@ -258,7 +268,7 @@ def _surface(gauges, pos, kind, mass, rho, start, lo, inv_cell, nx, ny, nz, reac
         # ``step`` until the fraction reaches 0.5, then bisect the last step
         z_hi = zb.max() + 2.0 * h
         z_end = zb.min() - 2.0 * h
-        out[a] = np.nan
+        out[a] = dry
         while z_hi > z_end:
             z_lo = z_hi - step
             if _fraction(z_lo, dh2, zb, vb, kernel, h, ad) >= 0.5:
@@ -294,7 +304,10 @@ def surface_elevation(fluid, gauges) -> np.ndarray:
     line where the kernel-interpolated fluid fraction ``sum_b (m_b/rho_b) W(r_b)`` crosses
     0.5 (a flat surface lies dx/2 above its top particle layer, where a half-space of fluid
     fills half the kernel). Isolated drops do not count (one particle fills at most ~0.3 of
-    the kernel). NaN where no fluid lies within 2h of the line. Located to dx/4, then bisected."""
+    the kernel). A dry gauge (a film too thin for the fraction to reach 0.5, or no fluid
+    within 2h of the line) reads the bed's surface, half a spacing above the highest wall or
+    body particle within 0.75 dx of the line (a water depth of zero); NaN where there is
+    neither water nor bed under it. Located to dx/4, then bisected."""
     c = fluid.config
     g = _gauges(gauges, c.dim, "surface_elevation")
     grid, start = _cells(fluid)

@@ -52,7 +52,29 @@ def test_pressure_at_a_boundary_particle_is_what_the_fluid_reports_there(tank2d)
 def test_gauges_find_the_water_depth(tank2d):
     eta = WaveGauge([0.02, 0.15, 0.28]).sample(tank2d)["eta"]
     assert np.abs(eta - 0.2).max() < 0.005  # dx / 2
-    assert np.isnan(surface_elevation(tank2d, [-0.02])[0])  # inside the wall: no fluid near
+    # a gauge through the wall reads its top: a dry gauge reads the solid under it
+    top = tank2d.ps.pos[tank2d.ps.kind == Kind.FIXED_WALL, 1].max()
+    assert surface_elevation(tank2d, [-0.02])[0] == pytest.approx(top + 0.005, abs=1e-12)
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_a_gauge_over_the_dry_floor_reads_the_floor(dim):
+    """Water held in the left third of a tank (a dam break at t = 0): a gauge over the dry
+    floor reads the floor's face (z = 0, a water depth of zero), one in the water its
+    surface."""
+    dx, length, width = 0.01, 0.3, 0.06
+    lo = np.zeros(dim)
+    hi = np.array([length, 0.25] if dim == 2 else [length, width, 0.25])
+    top = hi.copy()
+    top[0], top[-1] = 0.1, 0.2
+    water = block(lo, top, dx)
+    b = assemble(dim, dx, RHO0, water, [(tank_walls(lo, hi, dx), Kind.FIXED_WALL, 0)])
+    f = Fluid(FluidConfig(dim=dim, dx=dx, c0=20.0, threads=1), b.particles)
+    f.initialize(0.0)
+    x = np.array([0.05, 0.15, 0.25])
+    eta = surface_elevation(f, x if dim == 2 else np.stack([x, np.full(3, 0.5 * width)], 1))
+    assert abs(eta[0] - 0.2) < dx / 2
+    np.testing.assert_allclose(eta[1:], 0.0, atol=1e-12)
 
 
 def test_tilted_surface_gives_the_slope_between_gauges():
