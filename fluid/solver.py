@@ -115,9 +115,6 @@ class FluidConfig:
         elif not num(self.g) or self.g < 0:
             raise _bad(f"g={self.g!r} m/s^2", "give the magnitude of gravity (>= 0), it acts along -z; or the "
                        "vector (gx, gz) / (gx, gy, gz)")
-        if self.device == "cuda" and isinstance(self.g, tuple) and any(x != 0.0 for x in self.g[:-1]):
-            raise _bad(f"g={self.g!r} m/s^2", "device='cuda' takes gravity along -z only (its hydrostatic density "
-                       "diffusion reads g_z); run a tilted gravity on device='cpu'")
         if self.device == "cuda":  # numba.cuda is imported here only
             from fluid.cuda import check_config
             check_config(self)

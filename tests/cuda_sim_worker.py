@@ -249,6 +249,11 @@ def main(out: str) -> None:
     run_case("body2d", body, cfg, body=(1, (0.1, -0.05)), motion=(0, sway),
              hook=lambda: box_mdbc(body, 1, (0.075, 0.04), (0.125, 0.08), cfg))
     run_case("col3d", disturbed(column_3d(), 0.02, 3), dict(dim=3, dx=0.02, c0=20.0, xsph_eps=0.1, diffusion="antuono"))
+    # gravity tilted off -z: the Fourtakas diffusion's hydrostatic part along g, Adami walls
+    run_case("tilt2d", disturbed(dam_2d(), 0.01, 4),
+             dict(dim=2, dx=0.01, c0=20.0, g=(2.5, -9.5), walls="adami", domain_lo=(-0.05, -0.05),
+                  domain_hi=(0.25, 0.2)))
+    run_case("tilt3d", disturbed(column_3d(), 0.02, 5), dict(dim=3, dx=0.02, c0=20.0, g=(1.5, -1.0, -9.6)))
     nan_guard()
     np.savez(out, **OUT)
 

@@ -17,6 +17,9 @@ numba-cuda is not installed. Each starts from a disturbed state (positions moved
   steps (Verlet's n-1 density shifted with it), Verlet with an Euler step every 4.
 * ``col3d``: a 3-D column (156 particles, 24 fluid) on a floor beside a wall, Wendland,
   the renormalised (Antuono) diffusion, XSPH, symplectic.
+* ``tilt2d``, ``tilt3d``: the dam break with Adami walls and the column, under gravity
+  tilted off -z (g = (2.5, -9.5) and (1.5, -1.0, -9.6) m/s^2): the Fourtakas diffusion's
+  hydrostatic part taken along g.
 
 Tolerance: every compared field (accelerations, density rates, displacements, velocities,
 densities, group forces and moments, per-particle boundary forces) agrees within
@@ -50,7 +53,7 @@ requires_numba_cuda = pytest.mark.skipif(not HAVE_NUMBA_CUDA,
 
 WORKER = Path(__file__).with_name("cuda_sim_worker.py")
 RTOL = 1e-10
-CASES = ("dam2d", "body2d", "col3d")
+CASES = ("dam2d", "body2d", "col3d", "tilt2d", "tilt3d")
 STAGES = ("loop", "step1", "step10")
 FIELDS = ("acc", "drho", "disp", "vel", "rho", "F", "M", "bforce")
 

@@ -184,6 +184,8 @@ class CudaFluid(Fluid):
                 raise InputError(f"fluid: device='cuda' runs the Adami walls and the bodies' mDBC as boundary "
                                  f"corrections, not {type(hook).__name__}; use device='cpu' for it")
         dev.rates(self._key, self._prm_dev, c.rho0, c.speed_of_sound, c.gamma)
+        if self._drop_wall_continuity:
+            dev.drop_rates_of_kinds(int(Kind.FIXED_WALL), int(Kind.MOVING_WALL))
         amax2, cvmax, cmax = dev.max_bounds()
         self._limit = step_limit(amax2, c.h / cvmax if cvmax > 0.0 else math.inf, cmax, c.h, c.cfl, c.dt_max, c.nu,
                                  **self._diffusivity)

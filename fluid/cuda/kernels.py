@@ -267,7 +267,10 @@ def make_pair_loop(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
             gz = prm[P_G + 2] if three else prm[P_G + 1]
             Fc = tm.kernel_grad_scale(kernel, ad, h)
             avh = -prm[P_ALPHA] * h
+            hgx = -0.5 * prm[P_HYDRO] * gx
+            hgy = -0.5 * prm[P_HYDRO] * gy
             hgz = -0.5 * prm[P_HYDRO] * gz
+            tilted = gx != 0.0 or gy != 0.0
             irho0 = 1.0 / prm[P_RHO0]
             eta2 = 0.01 * h * h
             R2 = 4.0 * h * h
@@ -353,7 +356,7 @@ def make_pair_loop(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
                             rhoH = tm.renormalised_hydrostatic(gxa, gya, gza, G[0, b], G[1, b] if three else 0.0,
                                                                G[zc, b], rx, ry, rz, three)
                         else:
-                            rhoH = tm.fourtakas_hydrostatic(0.0, 0.0, hgz, rx, ry, rz, ka, rhob / (cb * cb), False)
+                            rhoH = tm.fourtakas_hydrostatic(hgx, hgy, hgz, rx, ry, rz, ka, rhob / (cb * cb), tilted)
                         sdd += tm.density_diffusion(volb, rhoa, rhob, rhoH, Fs, r2, inv)
                         if fade:
                             vf = tm.support_volume(volb, fb, mb, irho0) * Fs
@@ -629,6 +632,14 @@ def k_zero_i4(a, m):
 def k_zero_f8(a, m):
     for j in range(cuda.grid(1), m, cuda.gridsize(1)):
         a[j] = 0.0
+
+
+@cuda.jit
+def k_zero_of_kinds(a, kind, m, k1, k2):
+    """``a[j] = 0`` where ``kind[j]`` is ``k1`` or ``k2`` (the Adami walls' continuity rates)."""
+    for j in range(cuda.grid(1), m, cuda.gridsize(1)):
+        if kind[j] == k1 or kind[j] == k2:
+            a[j] = 0.0
 
 
 @cuda.jit

@@ -289,6 +289,11 @@ class DeviceState:
                           self.pr2, n, self.start, self.lo3, g.cell, nx, ny, nz, prm_dev, self.drho, self.acc,
                           self.xs, self.bounds, self.G)
 
+    def drop_rates_of_kinds(self, k1: int, k2: int) -> None:
+        """Zero the density rates of the particles of kind ``k1`` or ``k2`` (Adami walls:
+        fluid.solver.Fluid._rates)."""
+        K.k_zero_of_kinds[K.launch(self.n)](self.drho, self.a["kind"], self.n, k1, k2)
+
     def max_bounds(self):
         """(max |a|^2 over fluid, max (c + visc), max c) of the last :meth:`rates`:
         fluid.integrator._bounds."""
