@@ -3,7 +3,8 @@ al. 2016, §5: the base on its three lines in a 3-D SPH near field) with set-up 
 changed (the speed of sound, the integrator, the pair loop's precision), each judged the way
 the case judges it: surge and heave first harmonics against the potential-flow fluid's on the
 same base, lines and sea, the mean fairlead tensions, and the gauges' height and phase
-against the sea's; with the particles, steps and CPU seconds of each run. Prints one JSON
+against the sea's; the phases of surge, pitch and the horizontal fluid force against the
+heave (not judged by the case); with the particles, steps and CPU seconds of each run. Prints one JSON
 line per variant, then a markdown table.
 
 A variant is ``LABEL:KEY=VALUE[,KEY=VALUE...]`` (scene keys, as ``--set`` takes them); the
@@ -27,6 +28,7 @@ from pathlib import Path
 import numpy as np
 
 from cosim.validations import wind_turbine_sph as case
+from cosim.validations.wave_propagation import harmonics
 
 
 def parse_variant(text: str) -> tuple[str, list[str]]:
@@ -37,10 +39,26 @@ def parse_variant(text: str) -> tuple[str, list[str]]:
     return label, [s for s in sets.split(",") if s]
 
 
+def phases(res, window, omega: float) -> dict:
+    """The phases [deg] of the surge, the pitch and the horizontal fluid force against the
+    heave (respectively the vertical fluid force) at the wave's frequency over ``window``:
+    the heave is in phase with the wave on every fluid, so these compare fluids without a
+    reference elevation."""
+    late = (res.t >= window[0] - 1e-9) & (res.t <= window[1] + 1e-9)
+    ts = res.t[late]
+
+    def h(name):
+        return harmonics(ts, res[f"base.{name}"][late][:, None], omega)[0]
+
+    deg = lambda z: float(np.degrees(np.angle(z)))
+    return {"surge_minus_heave_deg": deg(h("surge") / h("heave")), "pitch_minus_heave_deg": deg(h("pitch") / h("heave")),
+            "fluid_Fx_minus_Fz_deg": deg(h("fluid_Fx") / h("fluid_Fz"))}
+
+
 def figures(res, scene, window, pot) -> dict:
     """The case's judged figures of one wave run against the potential fluid's ``pot``."""
     omega = 2.0 * math.pi / scene.waves.period
-    m = case.motion_figures(res, window, omega)
+    m = case.motion_figures(res, window, omega) | phases(res, window, omega)
     g = case.gauge_figures(res, scene, window)
     return m | {"surge_error": m["surge_amp"] / pot["surge_amp"] - 1.0,
                 "heave_error": m["heave_amp"] / pot["heave_amp"] - 1.0,
@@ -63,8 +81,9 @@ def main(argv=None) -> int:
     window = tuple(a.window)
     scene0 = case.sph_scene(False).with_values([f"fluid.dx={a.dx}", f"world.duration={a.duration}"])
     pot_scene = case.surface_scene(scene0, "potential")
-    pot = case.motion_figures(case.run_or_resume(pot_scene, a.out / "potential"), window,
-                              2.0 * math.pi / scene0.waves.period)
+    omega = 2.0 * math.pi / scene0.waves.period
+    pot_res = case.run_or_resume(pot_scene, a.out / "potential")
+    pot = case.motion_figures(pot_res, window, omega) | phases(pot_res, window, omega)
     variants = ([] if a.no_base else [("base", [])]) + a.variant
     rows = []
     for label, sets in variants:
@@ -74,13 +93,15 @@ def main(argv=None) -> int:
         print(json.dumps(row), flush=True)
         rows.append(row)
     print(f"potential fluid: surge {pot['surge_amp']:.3f} m, heave {pot['heave_amp']:.3f} m, pitch "
-          f"{pot['pitch_amp']:.3f} deg")
-    print("| variant | surge [m] (vs potential) | heave [m] (vs potential) | pitch [deg] | tensions back / front "
-          "vs potential | gauges' height / lag [periods] | particles | steps | CPU [s] |")
-    print("|---|---|---|---|---|---|---|---|---|")
+          f"{pot['pitch_amp']:.3f} deg; surge - heave {pot['surge_minus_heave_deg']:+.0f} deg, pitch - heave "
+          f"{pot['pitch_minus_heave_deg']:+.0f} deg, Fx - Fz {pot['fluid_Fx_minus_Fz_deg']:+.0f} deg")
+    print("| variant | surge [m] (vs potential) | heave [m] (vs potential) | pitch [deg] | surge / pitch / Fx phase "
+          "[deg] | tensions back / front vs potential | gauges' height / lag [periods] | particles | steps | CPU [s] |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
     for r in rows:
         print(f"| {r['variant']} | {r['surge_amp']:.3f} ({r['surge_error']:+.1%}) | {r['heave_amp']:.3f} "
-              f"({r['heave_error']:+.1%}) | {r['pitch_amp']:.3f} | {r['tension_back_error']:+.1%} / "
+              f"({r['heave_error']:+.1%}) | {r['pitch_amp']:.3f} | {r['surge_minus_heave_deg']:+.0f} / "
+              f"{r['pitch_minus_heave_deg']:+.0f} / {r['fluid_Fx_minus_Fz_deg']:+.0f} | {r['tension_back_error']:+.1%} / "
               f"{r['tension_front_error']:+.1%} | {r['gauge_height_error']:.1%} / {r['gauge_lag_periods']:.3f} | "
               f"{r['particles']} | {r['steps']} | {r['cpu_s']:.0f} |")
     return 0
