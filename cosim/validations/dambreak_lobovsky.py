@@ -191,9 +191,9 @@ def run_lobovsky(dx: float, t_star_end: float = 11.0, sample_star: float = 0.05,
     free surface on the gauge's line (:func:`fluid.probes.surface_elevation`: the highest z
     where the kernel-interpolated fluid fraction crosses 0.5), which also reads a jet or
     spray passing over the gauge. Both sampled every ``sample_star`` in t*; a dry gauge
-    reads 0 (surface_elevation: the floor's face). The wall pressure at the sensors P1-P4 (:func:`sensor_pressures`, a patch
-    2h long) is sampled every ``p_star`` in t* (``p`` over rho g H, and ``p_point``, Eq. 15
-    at the face point). Returns t* and h/H per gauge, the pressures, and the CPU seconds of
+    reads 0 (``h_top``: the floor's face). The wall pressure at the sensors P1-P4
+    (:func:`sensor_pressures`, a patch 2h long) is sampled every ``p_star`` in t* (``p``
+    over rho g H, and ``p_point``, Eq. 15 at the face point). Returns t* and h/H per gauge, the pressures, and the CPU seconds of
     the run."""
     from cosim.validations import case_scene
 
