@@ -23,12 +23,12 @@ from __future__ import annotations
 import argparse
 import json
 import math
-from pathlib import Path
 
 import numpy as np
 
 from cosim.validations import wind_turbine_sph as case
 from cosim.validations.wave_propagation import harmonics
+from wind_turbine_mooring_swap import run_arguments  # benchmarks/, beside this script
 
 
 def parse_variant(text: str) -> tuple[str, list[str]]:
@@ -70,10 +70,7 @@ def figures(res, scene, window, pot) -> dict:
 
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--out", type=Path, required=True, help="folder of the runs (kept, resumed, read back)")
-    ap.add_argument("--dx", type=float, default=case.RUNS[True][0])
-    ap.add_argument("--duration", type=float, default=case.RUNS[True][1])
-    ap.add_argument("--window", type=float, nargs=2, default=case.RUNS[True][3])
+    run_arguments(ap)
     ap.add_argument("--variant", action="append", default=[], type=parse_variant,
                     help="LABEL:KEY=VALUE[,KEY=VALUE...] (repeatable)")
     ap.add_argument("--no-base", action="store_true", help="leave out the scene as written")

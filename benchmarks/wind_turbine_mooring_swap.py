@@ -31,12 +31,19 @@ def scene_for(model: str, fluid: str, dx: float, duration: float):
     return scene if fluid == "sph" else case.surface_scene(scene, fluid)
 
 
-def main(argv=None) -> int:
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+def run_arguments(ap: argparse.ArgumentParser) -> None:
+    """The options of a wave run kept under ``--out`` at ``--dx`` for ``--duration``, its
+    first harmonics read over ``--window``: the case's quick variant by default (also
+    benchmarks/wind_turbine_levers.py's)."""
     ap.add_argument("--out", type=Path, required=True, help="folder of the runs (kept, resumed, read back)")
     ap.add_argument("--dx", type=float, default=case.RUNS[True][0])
     ap.add_argument("--duration", type=float, default=case.RUNS[True][1])
     ap.add_argument("--window", type=float, nargs=2, default=case.RUNS[True][3])
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    run_arguments(ap)
     ap.add_argument("--models", nargs="+", default=["catenary", "sph-cable", "moordyn", "fmu"])
     ap.add_argument("--fluids", nargs="+", default=["sph", "potential", "analytic"])
     a = ap.parse_args(argv)
