@@ -162,6 +162,7 @@ class Coupler:
             raise ConfigurationError("the fluid-first scheme needs a fluid that reports the loads it exchanged "
                                      "over its last advance (exchanged_wrenches(), e.g. cosim.sph_fluid.SPHFluid)")
         self.scheme = scheme
+        self._warned_held = False  #: the explicit scheme's held loads warned of (once)
         self._scheme = SCHEME_STEPS[scheme]  #: how this scheme takes the bodies' loads over a step
         self._timed_loads = isinstance(fluid, TimedLoads)
         config = fluid.config if isinstance(fluid, Configured) else None  # a weakly compressible fluid's
@@ -424,6 +425,8 @@ class Coupler:
             raise InputError(f"t_end = {t_end!r} s is not after the current time {self.t!r} s")
         n, limiter = self._step_size(ticks_left)
         t, dt = self.clock.t, n / TICKS_PER_SECOND
+        if self.scheme == "explicit" and not self._warned_held:
+            self._warn_held_loads(dt)
         try:
             if self.bodies is not None:
                 self._exchange_and_advance(t, dt)
@@ -438,6 +441,20 @@ class Coupler:
         if self.bodies is not None:
             self._check_line_breaks()
         return StepInfo(self.steps, self.clock.t, dt, limiter)
+
+    def _warn_held_loads(self, dt: float) -> None:
+        """Warn once when the explicit scheme holds its loads over several MuJoCo sub-steps:
+        a restoring load taken at the step's start lags the motion by about ``dt / 2``, a
+        negative damping of ``omega dt / 4`` of critical on each mode of angular frequency
+        ``omega``, which can outgrow a lightly damped mode's own damping (a moored floating
+        body's pitch on the potential-flow fluid: docs/validation/nearfield.md)."""
+        sub = dt / getattr(self.bodies, "dt_mujoco", math.inf)
+        if sub > 1.0 + 1e-9:
+            self._warned_held = True
+            log.warning("coupler: the explicit scheme holds the loads over %d MuJoCo sub-steps (coupling step %.3g s): "
+                        "held restoring loads add energy to the bodies' lightly damped modes; scheme = \"auto\" "
+                        "(here predictor-corrector) or a coupling dt at most the body timestep avoid it",
+                        math.ceil(sub - 1e-9), dt)
 
     def _count_step(self, dt: float, limiter: str) -> None:
         st = self._step_stats.setdefault(limiter, [0, math.inf, 0.0, 0.0])  # steps, min, max, sum [s]

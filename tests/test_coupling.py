@@ -222,6 +222,24 @@ def test_participants_share_one_gravity():
         c.initialize()
 
 
+def test_explicit_loads_held_over_sub_steps_are_warned_of(caplog):
+    """The explicit scheme over a step of several MuJoCo sub-steps says so once, with the
+    schemes that avoid it; the predictor-corrector, and the explicit scheme at a coupling
+    step no longer than MuJoCo's, say nothing."""
+    def run_with(scheme, dt=None):
+        b = MujocoBodies(builders.scene(builders.box("p", (2.0, 1.0), (0, 0, 0.05), density=500.0, planar=True)))
+        c = Coupler(bodies=b, fluid=AnalyticFluid(), scheme=scheme, dt=dt)
+        caplog.clear()
+        with caplog.at_level("WARNING", logger="cosim.coupler"):
+            c.run(0.5)
+        return b, [r.getMessage() for r in caplog.records if "holds the loads" in r.getMessage()]
+
+    b, said = run_with("explicit")
+    assert len(said) == 1 and "sub-steps" in said[0] and "predictor-corrector" in said[0]
+    assert not run_with("predictor-corrector")[1]
+    assert not run_with("explicit", dt=b.dt_mujoco)[1]
+
+
 def test_auto_scheme_fits_the_fluid():
     """scheme="auto" (the default): fluid-first with a fluid that reports the loads it
     exchanged (the SPH fluid), predictor-corrector with the analytic fluid."""
