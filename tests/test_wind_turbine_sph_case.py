@@ -73,24 +73,26 @@ def _pitched(scheme):
     d = to_dict(wt.surface_scene(wt.sph_scene(False), "potential"))
     d["waves"]["height"] = wt.STILL_HEIGHT
     d["bodies"][0] |= {"place": "given", "pos": [70.0, 0.0, 19.9892], "euler": [0.0, 2.0, 0.0]}
-    d["world"] |= {"duration": 30.0, "sample_every": 0.05}
+    d["world"] |= {"duration": 15.0, "sample_every": 0.05}
     d["coupling"]["scheme"] = scheme
     return from_dict(d)
 
 
+@pytest.mark.long
 def test_the_reference_scheme_keeps_the_moored_pitch_from_growing(tmp_path):
     """The moored base's pitch (about 2 s, lightly damped) on the potential-flow fluid: the
     SPH run's explicit scheme, held over this fluid's longer step, pumps it up (e-fold in
     about 15 s); the reference scenes' own scheme (predictor-corrector) keeps it within a
-    few per cent over 30 s (15 periods)."""
+    few per cent over 15 s (7 periods). Long: the pitched hull's coefficients are solved
+    (Capytaine, about 15 s)."""
     assert wt.surface_scene(wt.sph_scene(False), "potential").coupling.scheme == "auto"
     grown = {}
     for scheme in ("auto", "explicit"):
         res = _pitched(scheme).run(tmp_path / scheme, progress=False)
-        late = res.t >= 25.0
+        late = res.t >= 10.0
         grown[scheme] = np.abs(res["base.pitch"][late]).max() / 2.0
     assert grown["auto"] < 1.05
-    assert grown["explicit"] > 3.0
+    assert grown["explicit"] > 2.0
 
 
 def test_the_variants_and_the_still_run():
