@@ -24,9 +24,14 @@ from cosim.validations.wave_propagation import WP_DEPTH, WP_HEIGHT, WP_PERIOD, p
 
 
 def setting_value(text: str):
-    """A ``--set KEY=VALUE`` value: true/false, a number (a float), or the text."""
+    """A ``--set KEY=VALUE`` value: true/false, a whole number (an int: counts such as
+    ``mls_every``), another number (a float), or the text."""
     if text in ("true", "false"):
         return text == "true"
+    try:
+        return int(text)
+    except ValueError:
+        pass
     try:
         return float(text)
     except ValueError:
