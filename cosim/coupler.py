@@ -453,7 +453,7 @@ class Coupler:
             self._warned_held = True
             log.warning("coupler: the explicit scheme holds the loads over %d MuJoCo sub-steps (coupling step %.3g s): "
                         "held restoring loads add energy to the bodies' lightly damped modes; scheme = \"auto\" "
-                        "(here predictor-corrector) or a coupling dt at most the body timestep avoid it",
+                        "(predictor-corrector or fluid-first) or a coupling dt at most the body timestep avoid it",
                         math.ceil(sub - 1e-9), dt)
 
     def _count_step(self, dt: float, limiter: str) -> None:
