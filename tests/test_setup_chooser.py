@@ -77,7 +77,8 @@ SAME = ["arch-rib", "elastic-table2", "hydrostatic-3d", "nearfield-floating-box"
 #: SPH cases whose scene sets a lever the chooser does not, and why; not run here
 OWN = {"wind-turbine-sph": "h = sqrt(2) dx, the kernel width that holds the base's static draft within 2 % at dx = "
                            "0.5 m, where the chooser's near field takes 2 dx for waves that cross a box several "
-                           "wavelengths long; its quick variant costs about 20 CPU-minutes"}
+                           "wavelengths long; c0 = 5 sqrt(g d), half the steps, measured to hold surge, heave and "
+                           "tensions at dx = 1.0 m; its quick variant costs about 20 CPU-minutes"}
 #: the cases with a scene file whose quick variant runs another fluid
 OTHER_FLUID = {"wind-turbine-moorings", "potential-hemisphere", "moored-body"}
 

@@ -100,6 +100,8 @@ def test_the_variants_and_the_still_run():
     assert full.fluid.dx == 0.5 and full.world.duration == 90.0 and full.domain.symmetry
     assert full.fluid.h_coef == pytest.approx(math.sqrt(2.0))
     assert quick.fluid.dx == wt.RUNS[True][0] and quick.world.duration == wt.RUNS[True][1]
+    # c0 = 5 sqrt(g d) in the full variant, the chooser's 10 sqrt(g d) in the quick one
+    assert full.fluid.c0 == pytest.approx(5 * math.sqrt(9.81 * 20.0), rel=0.01) and quick.fluid.c0 == wt.QUICK_C0
     still = wt.still_scene(False)
     assert still.waves.height == wt.STILL_HEIGHT and still.world.duration == wt.RUNS[False][2]
 
