@@ -65,7 +65,8 @@ class SPHFluid:
     walls:
         ``(points, kind, group)`` wall sets, as for ``fluid.geometry.assemble``.
     z_surface:
-        If given, the initial densities are hydrostatic below this surface height [m].
+        If given, the initial densities are hydrostatic below this surface height [m] (under
+        a tilted gravity: the height along -g of a surface normal to it).
     body_layers:
         Layers of boundary particles inside each body's surface; default: enough
         to fill the kernel support (ceil(2 h / dx)).
@@ -220,7 +221,8 @@ class SPHFluid:
             self._elastic_groups.append(g_next + np.arange(len(rows)))
             g_next += len(rows)
         if self.z_surface is not None:
-            set_hydrostatic(ps, self.z_surface, c.rho0, c.speed_of_sound, c.gamma, c.g_down)
+            tilted = bool(np.any(c.gravity[:-1] != 0.0))  # the surface a plane normal to gravity
+            set_hydrostatic(ps, self.z_surface, c.rho0, c.speed_of_sound, c.gamma, c.gravity if tilted else c.g_down)
         self.fluid = Fluid(c, ps)
         for group, motion in self.motions.items():
             self.fluid.prescribe_motion(group, motion)

@@ -101,10 +101,40 @@ def assemble(dim: int, dx: float, rho0: float, fluid, walls=(), clearance: float
 
 
 def set_hydrostatic(ps: ParticleSet, z_surface: float, rho0: float, c0: float, gamma: float,
-                    g: float) -> None:
-    """Give every particle the Tait density of the hydrostatic pressure ``rho0 g (z_s - z)``
-    (``z_surface`` [m], ``c0`` [m/s], ``g`` [m/s^2]); above the surface rho0."""
-    ps.rho[:] = hydrostatic_density(z_surface - ps.pos[:, -1], rho0, c0, gamma, g)
+                    g) -> None:
+    """Give every particle the Tait density of the hydrostatic pressure ``rho0 |g| (z_s -
+    z)`` (``z_surface`` [m], ``c0`` [m/s]); above the surface rho0. ``g`` [m/s^2]: a number
+    (along -z; ``z`` the height), or gravity's vector (``dim``,), ``z`` then the height along
+    -g and ``z_surface`` the free surface's (a plane normal to gravity)."""
+    g = np.asarray(g, float)
+    if g.ndim == 0:
+        ps.rho[:] = hydrostatic_density(z_surface - ps.pos[:, -1], rho0, c0, gamma, float(g))
+        return
+    size = float(np.linalg.norm(g))
+    ps.rho[:] = hydrostatic_density(z_surface - height_along(ps.pos, g), rho0, c0, gamma, size)
+
+
+def height_along(points: np.ndarray, gravity) -> np.ndarray:
+    """The height [m] of each point (N, dim) against ``gravity`` (dim,) [m/s^2]: its
+    coordinate along -g / |g| (the z coordinate where gravity acts along -z)."""
+    g = np.asarray(gravity, float)
+    return -(np.asarray(points, float) @ g) / float(np.linalg.norm(g))
+
+
+def water_under_gravity(candidates: np.ndarray, count: int, gravity) -> tuple[np.ndarray, float]:
+    """The water of a tank at rest under a tilted ``gravity`` (dim,) [m/s^2]: the ``count``
+    points of ``candidates`` (N, dim; a lattice filling the tank) lowest against gravity
+    (:func:`height_along`), i.e. the same amount of water as a level fill of ``count``
+    particles with its free surface turned normal to gravity; and that surface's height
+    along -g [m]: midway between the highest point kept and the lowest left out (the level
+    between the top row and the one above it, for gravity along -z)."""
+    if not 0 < count < len(candidates):
+        raise InputError(f"water under gravity: {count} particles from {len(candidates)} lattice points; the "
+                         "tank must hold more points than the water")
+    up = height_along(candidates, gravity)
+    order = np.argsort(up, kind="stable")
+    keep = np.sort(order[:count])
+    return candidates[keep], 0.5 * float(up[order[count - 1]] + up[order[count]])
 
 
 def tank_with_water(dim: int, dx: float, length: float, depth: float, height: float,

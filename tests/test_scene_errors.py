@@ -983,6 +983,9 @@ CASES = [
     case("mooring lines under a tilted gravity", "analytic",
          (("fluid", {"model": "none"}), ("world.gravity", [1.0, -9.81])), "moorings.model",
          "'catenary': the mooring models take each line's weight along -z", "Scene.moorings.model"),
+    case("a tank too low for its water under a tilted gravity", "tank2d", ("world.gravity", [6.0, -9.81]),
+         "world.gravity", "the water at rest under it, its surface normal to gravity, stands 0.6058 m high at the "
+         "tank's wall, over its height (0.6 m)", "Scene.world.gravity"),
     case("a body denser than osmium", "analytic", ("bodies[0].density", 1e308), "bodies[0].density",
          "1e+308 [kg/m^3] is beyond 22590 [kg/m^3], osmium's, the densest element", "Box.density"),
     case("a body's mass denser than osmium", "analytic", ("bodies[1].mass", 1e7), "bodies[1].mass",

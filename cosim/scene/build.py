@@ -205,6 +205,34 @@ def irregular_sea(scene):
 def domain_points(scene, cfg, back: float = 0.0):
     """(fluid points, walls) of the scene's domain: walls as ``(points, kind, group)``,
     ``layers`` = ceil(2 h / dx) wall layers (the kernel's support)."""
+    return domain_water(scene, cfg, back)[:2]
+
+
+def domain_water(scene, cfg, back: float = 0.0):
+    """:func:`domain_points` and the free surface's height [m] the water starts under: the
+    level, or, in a tank under a tilted gravity, the water of the level fill turned to lie
+    at rest under it (``fluid.geometry.water_under_gravity``: its surface normal to gravity,
+    the height along -g). Explicit water blocks (``domain.water``) stay as given."""
+    from cosim.errors import InputError
+    from fluid.geometry import water_under_gravity
+
+    pts, walls = _domain_points(scene, cfg, back)
+    d = scene.domain
+    if not scene.world.tilted or isinstance(d, Flume) or (isinstance(d, Tank) and d.water):
+        return pts, walls, water_level(scene)
+    brim, _ = _domain_points(scene, cfg, back, brim=True)
+    pts, surface = water_under_gravity(brim, len(pts), cfg.gravity)
+    top = float(brim[:, -1].max())
+    if pts[:, -1].max() >= top - 1e-9:
+        raise InputError(f"world.gravity: {list(scene.world.gravity)} m/s^2, {scene.world.tilt_deg:.3g} deg from -z: "
+                         f"the water at rest under it, its surface normal to gravity, reaches the top of the tank's "
+                         f"walls; give the tank more height (domain.height) or less water (domain.depth), or a "
+                         f"gravity nearer -z")
+    return pts, walls, surface
+
+
+def _domain_points(scene, cfg, back: float = 0.0, brim: bool = False):
+    """:func:`domain_points`; ``brim``: a tank's lattice filled to the top of its walls."""
     from fluid.geometry import block, tank_walls, tank_with_water
     from fluid.particles import Kind
     from fluid.shapes import cylinder_tank, inclined_tank, polygon_tank
@@ -224,13 +252,15 @@ def domain_points(scene, cfg, back: float = 0.0):
         pts = np.concatenate([block(b.lo, b.hi, dx) for b in d.water])
         return pts, [(walls, walls_kind, WALLS)]
     if isinstance(d, Tank):
-        built = tank_with_water(dim, dx, d.length, d.depth, d.height, d.width or 0.0, layers, cfg.rho0)
+        built = tank_with_water(dim, dx, d.length, d.height if brim else d.depth, d.height, d.width or 0.0, layers,
+                                cfg.rho0)
     elif isinstance(d, InclinedTank):
-        built = inclined_tank(dim, dx, d.angle, d.length, d.depth, d.height, d.width or 1.0, layers, cfg.rho0)
+        built = inclined_tank(dim, dx, d.angle, d.length, d.height if brim else d.depth, d.height, d.width or 1.0,
+                              layers, cfg.rho0)
     elif isinstance(d, CylinderTank):
-        built = cylinder_tank(dx, d.diameter, d.depth, d.height, layers, cfg.rho0)
+        built = cylinder_tank(dx, d.diameter, d.height if brim else d.depth, d.height, layers, cfg.rho0)
     else:
-        built = polygon_tank(d.vertices, dx, d.fill_level, layers, cfg.rho0)
+        built = polygon_tank(d.vertices, dx, None if brim else d.fill_level, layers, cfg.rho0)
     ps = built.particles
     fluid = ps.kind == Kind.FLUID
     return ps.pos[fluid].copy(), [(ps.pos[~fluid].copy(), walls_kind, WALLS)]
@@ -456,15 +486,16 @@ def _drive_forced(scene, out: Built) -> None:
 
 
 def _warn_tilted_water(scene, out: Built) -> None:
-    """Under a tilted gravity the SPH water starts as the domain lays it, level, with the
-    hydrostatic pressure of gravity's -z component; that is not at rest under the tilted
-    gravity (its surface would stand normal to g), so it flows: said, not hidden."""
-    w = scene.world
-    if w.tilted and isinstance(scene.fluid, SPH) and scene.domain is not None:
+    """Under a tilted gravity a tank's water starts at rest (its surface normal to g,
+    :func:`domain_water`), but explicit water blocks (``domain.water``) start as given, level,
+    with the hydrostatic pressure of gravity's -z component: not at rest, so they flow; said,
+    not hidden."""
+    w, d = scene.world, scene.domain
+    if w.tilted and isinstance(scene.fluid, SPH) and isinstance(d, Tank) and d.water:
         out.warnings.append(f"world.gravity: {list(w.gravity)} m/s^2 is tilted {w.tilt_deg:.3g} deg from -z; the "
-                            f"water starts level, with the hydrostatic pressure of gravity's -z component "
-                            f"({w.g_down:.4g} m/s^2), and is not at rest under the tilted gravity: it sloshes until "
-                            f"its surface stands normal to g")
+                            f"water blocks start as given, level, with the hydrostatic pressure of gravity's -z "
+                            f"component ({w.g_down:.4g} m/s^2), and are not at rest under the tilted gravity: they "
+                            f"flow until their surface stands normal to g")
 
 
 def _warn_partial_row(scene, out: Built) -> None:
@@ -680,7 +711,7 @@ def sph_fluid(scene, out: Built) -> None:
 
     out.setup = choose(scene)
     cfg = fluid_config(scene, out.setup)
-    motions, back, zones = {}, 0.0, []
+    motions, back, zones, surface = {}, 0.0, [], out.level
     if isinstance(scene.domain, NearField):
         pts, walls, motions, zones = _near_field(scene, cfg, out)
     else:
@@ -690,27 +721,30 @@ def sph_fluid(scene, out: Built) -> None:
             back = 0.5 * stroke + cfg.dx
         if out.base_motion is not None:
             motions[WALLS] = out.base_motion
-        pts, walls = domain_points(scene, cfg, back)
+        pts, walls, surface = domain_water(scene, cfg, back)
         zones = _absorber(scene)
         if out.base_motion is not None:  # the box covers the tank's travel and its splashes
             cfg = _moving_domain(scene, cfg, pts, walls, out)
     if out.bodies is not None:
         from cosim.sph_fluid import SPHFluid
 
-        out.fluid = SPHFluid(cfg, pts, walls, z_surface=out.level, boundary=scene.fluid.body_boundary,
+        out.fluid = SPHFluid(cfg, pts, walls, z_surface=surface, boundary=scene.fluid.body_boundary,
                              motions=motions, elastic=list(out.plates.values()), zones=zones)
         return
     from fluid.equations import hydrostatic_density
-    from fluid.geometry import assemble
+    from fluid.geometry import assemble, set_hydrostatic
     from fluid.particles import Kind
     from fluid.solver import Fluid
 
     built = assemble(cfg.dim, cfg.dx, cfg.rho0, pts, walls)
     ps = built.particles
-    fl = ps.kind == Kind.FLUID
-    top = np.full(ps.n, out.level)
-    top[fl] = _surface_heights(scene, ps.pos[fl])
-    ps.rho[:] = hydrostatic_density(top - ps.pos[:, -1], cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g_down)
+    if scene.world.tilted and surface is not None:  # a plane normal to gravity, or the level
+        set_hydrostatic(ps, surface, cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.gravity)
+    else:
+        fl = ps.kind == Kind.FLUID
+        top = np.full(ps.n, out.level)
+        top[fl] = _surface_heights(scene, ps.pos[fl])
+        ps.rho[:] = hydrostatic_density(top - ps.pos[:, -1], cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g_down)
     fluid = Fluid(cfg, ps)
     for group, motion in motions.items():
         fluid.prescribe_motion(group, motion)

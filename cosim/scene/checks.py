@@ -127,6 +127,17 @@ def _check_tilted_gravity(s) -> None:
     if s.moorings is not None:
         raise SceneError("moorings.model", f"{s.moorings.model!r}: the mooring models take each line's weight along "
                          f"-z, but the scene's gravity is tilted ({said}); {fix}, or leave moorings out")
+    d = s.domain
+    if isinstance(s.fluid, SPH) and isinstance(d, Tank) and not d.water and w.g_down > 0:
+        # the water at rest under the tilt: its surface normal to g, through the same volume,
+        # rises from the tank's centre by half the length (and width) times g's slope
+        gx, gy, _ = w.g_vector
+        rise = 0.5 * (d.length * abs(gx) + (d.width or 0.0) * abs(gy)) / w.g_down
+        if d.depth + rise > d.height:
+            raise SceneError("world.gravity", f"{said}: the water at rest under it, its surface normal to gravity, "
+                             f"stands {d.depth + rise:.4g} m high at the tank's wall, over its height "
+                             f"({d.height:g} m); give the tank more height (domain.height) or less water "
+                             f"(domain.depth), or a gravity nearer -z")
 
 
 def _check_fluid_and_domain(s, dim):
