@@ -68,8 +68,7 @@ class SPHFluid:
         If given, the initial densities are hydrostatic below this surface height [m] (under
         a tilted gravity: the height along -g of a surface normal to it).
     body_layers:
-        Layers of boundary particles inside each body's surface; default: enough
-        to fill the kernel support (ceil(2 h / dx)).
+        Layers of boundary particles inside each body's surface; default: ceil(2 h / dx).
     boundary:
         How the bodies' boundary particles get their density: ``"mdbc"`` (default;
         modified dynamic boundaries, ``fluid.boundary_correction``: the fluid rests
