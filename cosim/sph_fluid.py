@@ -65,8 +65,8 @@ class SPHFluid:
     walls:
         ``(points, kind, group)`` wall sets, as for ``fluid.geometry.assemble``.
     z_surface:
-        If given, the initial densities are hydrostatic below this surface height [m] (under
-        a tilted gravity: the height along -g of a surface normal to it).
+        If given, the initial densities are hydrostatic below this surface height [m]
+        (``surface_normal_to_gravity``: the height along -g of a plane normal to gravity).
     body_layers:
         Layers of boundary particles inside each body's surface; default: ceil(2 h / dx).
     boundary:
@@ -96,6 +96,7 @@ class SPHFluid:
     """
 
     def __init__(self, config: FluidConfig, fluid_points, walls=(), *, z_surface: float | None = None,
+                 surface_normal_to_gravity: bool = False,
                  body_layers: int | None = None, boundary: str = "mdbc", motions: dict | None = None,
                  elastic=(), zones=()):
         if boundary not in ("mdbc", "dbc"):
@@ -106,6 +107,7 @@ class SPHFluid:
         self._fluid_points = np.asarray(fluid_points, float)
         self._walls = list(walls)
         self.z_surface = z_surface
+        self.surface_normal_to_gravity = surface_normal_to_gravity
         self.body_layers = body_layers or math.ceil(2.0 * config.h_coef)
         self.fluid: Fluid | None = None
         self.removed_overlap = 0
@@ -220,8 +222,8 @@ class SPHFluid:
             self._elastic_groups.append(g_next + np.arange(len(rows)))
             g_next += len(rows)
         if self.z_surface is not None:
-            tilted = bool(np.any(c.gravity[:-1] != 0.0))  # the surface a plane normal to gravity
-            set_hydrostatic(ps, self.z_surface, c.rho0, c.speed_of_sound, c.gamma, c.gravity if tilted else c.g_down)
+            set_hydrostatic(ps, self.z_surface, c.rho0, c.speed_of_sound, c.gamma,
+                            c.gravity if self.surface_normal_to_gravity else c.g_down)
         self.fluid = Fluid(c, ps)
         for group, motion in self.motions.items():
             self.fluid.prescribe_motion(group, motion)

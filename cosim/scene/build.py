@@ -209,17 +209,17 @@ def domain_points(scene, cfg, back: float = 0.0):
 
 
 def domain_water(scene, cfg, back: float = 0.0):
-    """:func:`domain_points` and the free surface's height [m] the water starts under: the
-    level, or, in a tank under a tilted gravity, the water of the level fill turned to lie
-    at rest under it (``fluid.geometry.water_under_gravity``: its surface normal to gravity,
-    the height along -g). Explicit water blocks (``domain.water``) stay as given."""
+    """:func:`domain_points`, and in a tank under a tilted gravity its water turned to lie
+    at rest under it (the level fill's particles, ``fluid.geometry.water_under_gravity``)
+    with its surface's height along -g [m] (a plane normal to gravity); that height is None
+    where the water lies as the domain lays it (level, or explicit water blocks)."""
     from cosim.errors import InputError
     from fluid.geometry import water_under_gravity
 
     pts, walls = _domain_points(scene, cfg, back)
     d = scene.domain
     if not scene.world.tilted or isinstance(d, Flume) or (isinstance(d, Tank) and d.water):
-        return pts, walls, water_level(scene)
+        return pts, walls, None
     brim, _ = _domain_points(scene, cfg, back, brim=True)
     pts, surface = water_under_gravity(brim, len(pts), cfg.gravity)
     top = float(brim[:, -1].max())
@@ -711,7 +711,7 @@ def sph_fluid(scene, out: Built) -> None:
 
     out.setup = choose(scene)
     cfg = fluid_config(scene, out.setup)
-    motions, back, zones, surface = {}, 0.0, [], out.level
+    motions, back, zones, turned = {}, 0.0, [], None
     if isinstance(scene.domain, NearField):
         pts, walls, motions, zones = _near_field(scene, cfg, out)
     else:
@@ -721,14 +721,15 @@ def sph_fluid(scene, out: Built) -> None:
             back = 0.5 * stroke + cfg.dx
         if out.base_motion is not None:
             motions[WALLS] = out.base_motion
-        pts, walls, surface = domain_water(scene, cfg, back)
+        pts, walls, turned = domain_water(scene, cfg, back)
         zones = _absorber(scene)
         if out.base_motion is not None:  # the box covers the tank's travel and its splashes
             cfg = _moving_domain(scene, cfg, pts, walls, out)
     if out.bodies is not None:
         from cosim.sph_fluid import SPHFluid
 
-        out.fluid = SPHFluid(cfg, pts, walls, z_surface=surface, boundary=scene.fluid.body_boundary,
+        out.fluid = SPHFluid(cfg, pts, walls, z_surface=out.level if turned is None else turned,
+                             surface_normal_to_gravity=turned is not None, boundary=scene.fluid.body_boundary,
                              motions=motions, elastic=list(out.plates.values()), zones=zones)
         return
     from fluid.equations import hydrostatic_density
@@ -738,8 +739,8 @@ def sph_fluid(scene, out: Built) -> None:
 
     built = assemble(cfg.dim, cfg.dx, cfg.rho0, pts, walls)
     ps = built.particles
-    if scene.world.tilted and surface is not None:  # a plane normal to gravity, or the level
-        set_hydrostatic(ps, surface, cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.gravity)
+    if turned is not None:  # the surface a plane normal to gravity
+        set_hydrostatic(ps, turned, cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.gravity)
     else:
         fl = ps.kind == Kind.FLUID
         top = np.full(ps.n, out.level)
