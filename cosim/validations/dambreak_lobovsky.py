@@ -186,15 +186,15 @@ def run_lobovsky(dx: float, t_star_end: float = 11.0, sample_star: float = 0.05,
     modelled): the scene :func:`lobovsky_scene` (``settings``: its SPH fluid's fields).
     Fluid: the scene's set-up for a dam break ("impact": Wendland, h = sqrt(2) dx, alpha =
     0.01, Fourtakas delta = 0.1, CFL 0.2, dynamic boundaries), c0 = 10 sqrt(2 g H) (Yang & Li
-    2020, Eq. 6's rule); the column starts hydrostatic. The level at each gauge (``h``) is the top of
-    the water standing on the floor there (:func:`layer_level`); ``h_top`` is the highest
-    free surface on the gauge's line (:func:`fluid.probes.surface_elevation`: the highest z
-    where the kernel-interpolated fluid fraction crosses 0.5), which also reads a jet or
-    spray passing over the gauge. Both sampled every ``sample_star`` in t*; a dry gauge
-    reads 0 (``h_top``: the floor's face). The wall pressure at the sensors P1-P4
-    (:func:`sensor_pressures`, a patch 2h long) is sampled every ``p_star`` in t* (``p``
-    over rho g H, and ``p_point``, Eq. 15 at the face point). Returns t* and h/H per gauge, the pressures, and the CPU seconds of
-    the run."""
+    2020, Eq. 6's rule); the column starts hydrostatic. The level at each gauge (``h``) is
+    the top of the water standing on the floor there (:func:`layer_level`); ``h_top`` is
+    the highest free surface on the gauge's line (:func:`fluid.probes.surface_elevation`:
+    the highest z where the kernel-interpolated fluid fraction crosses 0.5), which also
+    reads a jet or spray passing over the gauge. Both sampled every ``sample_star`` in t*;
+    a dry gauge reads 0 (``h_top``: the floor's face). The wall pressure at the sensors
+    P1-P4 (:func:`sensor_pressures`, a patch 2h long) is sampled every ``p_star`` in t*
+    (``p`` over rho g H, and ``p_point``, Eq. 15 at the face point). Returns t* and h/H per
+    gauge, the pressures, and the CPU seconds of the run."""
     from cosim.validations import case_scene
 
     with case_scene.built(lobovsky_scene(dx, t_star_end, **settings)) as b:
