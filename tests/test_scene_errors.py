@@ -1402,8 +1402,8 @@ CLI_CASES = [
         "--resume: out/checkpoint.h5 was written by other code (cosim 0.1.0, sources 0123456789abcdef; this is "
         "cosim 0.1.0 with other sources), which may not continue the run bit for bit", SCENE, prepare=[FIRST, ("python", "edit_checkpoint.py", "code_version=0123456789abcdef")]),
     cli("--resume from a checkpoint of another scene", RESUME,
-        "world.gravity: differs from the run being resumed; a resumed run may change world.duration and "
-        "world.checkpoint_wall only", SCENE, prepare=[FIRST + ("--set", "world.gravity=9.8")]),
+        "world.gravity: differs from the run being resumed; a resumed run may change world.duration, "
+        "world.checkpoint_wall and world.plot_at only", SCENE, prepare=[FIRST + ("--set", "world.gravity=9.8")]),
     cli("--resume to a duration before the checkpoint", ["scene.toml", "--out", "out", "--resume", "--set",
                                                          "world.duration=0.05"],
         "world.duration: 0.05 s is before the checkpoint at 0.1 s", SCENE, prepare=[FIRST]),

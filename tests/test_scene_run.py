@@ -153,6 +153,20 @@ def test_resume_is_bit_for_bit(tmp_path):
         np.testing.assert_array_equal(f["series/ledger/box/fluid_force"][:], g["series/ledger/box/fluid_force"][:])
 
 
+def test_a_resumed_run_may_add_plot_times(tmp_path):
+    """Plot times on the sampling grid added when resuming are drawn, and the run stays the
+    one made in one go (they change no step)."""
+    whole = moored_box(duration=0.2, checkpoint_every=0.1).run(tmp_path / "whole", progress=False)
+    moored_box(duration=0.1, checkpoint_every=0.1).run(tmp_path / "split", progress=False)
+    resumed = moored_box(duration=0.2, checkpoint_every=0.1, plot_at=(0.14,)).run(tmp_path / "split", resume=True,
+                                                                                   progress=False)
+    assert (tmp_path / "split" / "particles_t000.140.png").is_file()
+    assert not (tmp_path / "whole" / "particles_t000.140.png").exists()
+    assert resumed.summary["steps"] == whole.summary["steps"]
+    for name in whole.names:
+        np.testing.assert_array_equal(resumed[name], whole[name], err_msg=name)
+
+
 def test_resume_refuses_a_changed_scene(tmp_path):
     from cosim.errors import InputError
 

@@ -65,8 +65,9 @@ CHECKPOINT = "checkpoint.h5"
 LEGACY_CHECKPOINT = "checkpoint.pkl"
 #: the largest share of a run's wall time that writing checkpoints may take [-]
 CHECKPOINT_SHARE = 0.02
-#: the world's fields a resumed run may change (nothing it computes depends on them)
-RESUMABLE = ("duration", "checkpoint_wall")
+#: the world's fields a resumed run may change (nothing it computes depends on them; a
+#: plot time off the sampling grid cuts one step to land on, as the end does)
+RESUMABLE = ("duration", "checkpoint_wall", "plot_at")
 _TICK = 1e-12  # the coupler's clock resolution [s]
 #: per-particle arrays of each snapshot (attributes of the fluid's particle set) and their units
 SNAPSHOT_FIELDS = {"vel": "m/s", "rho": "kg/m^3", "p": "Pa", "kind": "1", "ids": "1"}
@@ -291,13 +292,17 @@ def _read_resume(scene, out: Path, any_version: bool) -> dict:
                               f"which may not continue the run bit for bit; run the scene again without --resume, or "
                               f"continue anyway with --resume-any-version")
     mine, sha = _scene_identity(scene)
+    theirs = mine
     if meta.get("scene_sha256") != sha:
         try:
             theirs = json.loads(ck["scene"])
-        except (TypeError, ValueError):
+            # a checkpoint written before a field became resumable records it
+            theirs["world"] = {k: v for k, v in theirs["world"].items() if k not in RESUMABLE}
+        except (TypeError, ValueError, KeyError, AttributeError):
             theirs = None
+    if meta.get("scene_sha256") != sha and theirs != mine:
         raise SceneError(_first_difference(theirs, mine), "differs from the run being resumed; a resumed run may "
-                         "change world.duration and world.checkpoint_wall only")
+                         "change world.duration, world.checkpoint_wall and world.plot_at only")
     t, ticks = meta.get("t"), ck["state"].get("ticks") if isinstance(ck["state"], dict) else None
     where = checkpoint.first_not_finite({"t": t, "state": ck["state"], "ledger": ck["ledger"],
                                           "probes": ck["probes"]})
