@@ -41,6 +41,8 @@ CASES = [
     ("wind turbine 3-D SPH, 1 thread", EX / "wind_turbine_base.toml", ["fluid.model=sph", "fluid.dx=2.0",
                                                                        "world.duration=0.3", "world.sample_every=0.05",
                                                                        "fluid.threads=1"]),
+    ("wind turbine near field 3-D, 1 thread", ROOT / "cosim/validations/scenes/wind-turbine-sph.toml",
+     ["fluid.dx=1.25", "world.duration=0.5", "fluid.threads=1"]),
     ("moored box (analytic)", EX / "moored_box.toml", []),
     ("wind turbine (analytic)", EX / "wind_turbine_base.toml", ["world.duration=20.0"]),
     ("moored box, MoorDyn", EX / "moored_box.toml", ["world.duration=5.0", "moorings.model=moordyn"]),

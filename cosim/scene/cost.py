@@ -49,11 +49,12 @@ from cosim.scene.spec import (MJCF, SPH, Analytic, ArchRib, CylinderTank, Elasti
                               Tank)
 
 #: CPU [s] per particle and step of the SPH fluid at h = sqrt(2) dx, by dimension (one
-#: thread; measured)
-C_SPH = {2: 2.8e-7, 3: 6.9e-7}
+#: thread, the symplectic scheme's two pair loops, Adami's walls; measured on scenes of
+#: 20 000-80 000 particles, where a step no longer fits the cache: smaller ones cost less)
+C_SPH = {2: 7.6e-7, 3: 3.2e-6}
 #: the growth of that cost with the smoothing length, ``(h_coef / sqrt 2)^H_POWER``
-#: (the pairs grow as ``h^dim``; the set-ups with h = 2 dx also take Adami's walls)
-H_POWER = {2: 2.25, 3: 4.4}
+#: (the pairs grow as ``h^dim``, the rest of a step does not)
+H_POWER = {2: 1.5, 3: 1.6}
 #: memory [bytes] per SPH particle, by dimension (measured: the peak resident size)
 B_SPH = {2: 500.0, 3: 600.0}
 #: CPU [s] of the SPH fluid's start (the compiled kernels loaded, the set-up built)
