@@ -13,6 +13,7 @@ import h5py
 import numpy as np
 import pytest
 
+from cosim import checkpoint
 from cosim.scene import SPH, Analytic, Beach, Box, Flume, Line, Moorings, Piston, Probes, Scene, Shake, Tank, World
 from cosim.scene.placement import floating_height
 
@@ -165,6 +166,18 @@ def test_a_resumed_run_may_add_plot_times(tmp_path):
     assert resumed.summary["steps"] == whole.summary["steps"]
     for name in whole.names:
         np.testing.assert_array_equal(resumed[name], whole[name], err_msg=name)
+
+
+def test_a_resumed_runs_time_counts_every_segment(tmp_path):
+    """``summary.json``'s ``cpu_s`` and ``wall_s`` are the whole run's: the first segment's
+    (kept in the checkpoint) plus the resumed one's, ``cpu_s_this_run`` the latter's."""
+    first = moored_box(duration=0.1, checkpoint_every=0.1).run(tmp_path, progress=False).summary
+    ck = checkpoint.read(tmp_path / "checkpoint.h5")["meta"]
+    assert 0 < ck["cpu_s"] <= first["cpu_s"] + 1e-6 and ck["wall_s"] <= first["wall_s"] + 1e-6
+    second = moored_box(duration=0.2, checkpoint_every=0.1).run(tmp_path, resume=True, progress=False).summary
+    assert second["cpu_s_this_run"] > 0
+    assert second["cpu_s"] == pytest.approx(ck["cpu_s"] + second["cpu_s_this_run"], abs=2e-3)
+    assert second["wall_s"] > ck["wall_s"] and first["cpu_s_this_run"] == first["cpu_s"]
 
 
 def test_resume_refuses_a_changed_scene(tmp_path):

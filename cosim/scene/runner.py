@@ -397,12 +397,13 @@ class _Checkpoints:
     events ask for one, and every ``world.checkpoint_wall`` s of wall time, that interval
     stretched to ``cost / CHECKPOINT_SHARE`` when a write takes longer."""
 
-    def __init__(self, path: Path, scene, built, rec, wall_before: float):
+    def __init__(self, path: Path, scene, built, rec, wall_before: float, cpu_before: float, cpu0: float):
         from cosim.version import __version__, code_version
 
         self.path, self.built, self.rec = path, built, rec
         self.every = scene.world.checkpoint_wall
         self.wall_before, self.loop0, self.next = wall_before, time.perf_counter(), math.inf
+        self.cpu_before, self.cpu0 = cpu_before, cpu0
         self.written, self.cost = 0, 0.0
         mine, sha = _scene_identity(scene)
         self.fixed = {"of": "scene run", "cosim_version": __version__, "code_version": code_version(),
@@ -424,7 +425,8 @@ class _Checkpoints:
         t0 = time.perf_counter()
         rows = {g.name: rec.table(g) for g in rec.groups}
         checkpoint.write(self.path, {
-            "meta": self.fixed | {"t": c.t, "steps": c.steps, "wall_s": self.wall_before + t0 - self.loop0},
+            "meta": self.fixed | {"t": c.t, "steps": c.steps, "wall_s": self.wall_before + t0 - self.loop0,
+                                  "cpu_s": self.cpu_before + time.process_time() - self.cpu0},
             "scene": self.scene_json, "state": c.save_state(), "ledger": c.ledger.arrays(),
             "probes": {"t": np.array(rec.times, float), "rows": rows}})
         done = time.perf_counter()
@@ -531,8 +533,12 @@ def _run_built(scene, built, rec, out: Path, ck, progress, wall0: float, cpu0: f
                        f"({scene.world.duration:g} s); not drawn")
     for n in notices:
         log.warning("%s", n)
-    t_start, wall_before = (ck["meta"]["t"], float(ck["meta"].get("wall_s", 0.0))) if ck is not None else (0.0, 0.0)
-    saver = _Checkpoints(out / CHECKPOINT, scene, built, rec, wall_before)
+    # the wall and CPU time of the segments before this one (a checkpoint of an older
+    # version has no CPU time: 0)
+    meta = ck["meta"] if ck is not None else {}
+    t_start, wall_before, cpu_before = (meta.get("t", 0.0), float(meta.get("wall_s", 0.0)),
+                                        float(meta.get("cpu_s", 0.0)))
+    saver = _Checkpoints(out / CHECKPOINT, scene, built, rec, wall_before, cpu_before, cpu0)
     steps0, error, bar, loop0 = c.steps, None, None, None
     try:  # from the first file written on: whatever happens, the outputs so far are left whole
         if ck is not None:
@@ -580,7 +586,7 @@ def _run_built(scene, built, rec, out: Path, ck, progress, wall0: float, cpu0: f
         loop_s = 0.0 if loop0 is None else time.perf_counter() - loop0
         series, units = rec.series()
         summary = _summary(scene, built, series, units, c.steps - steps0, loop_s, build_s,
-                           time.process_time() - cpu0, wall_before, ck is not None, error)
+                           time.process_time() - cpu0, wall_before, cpu_before, ck is not None, error)
         summary["checkpoints"] = {"written": saver.written, "write_s": round(saver.cost, 3)}
         if est is not None:
             summary["estimate"] = est.as_dict()
@@ -613,12 +619,12 @@ def _json(o):
     return str(o)
 
 
-def _summary(scene, built, series, units, steps, loop_s, build_s, cpu_s, wall_before, resumed, error):
+def _summary(scene, built, series, units, steps, loop_s, build_s, cpu_s, wall_before, cpu_before, resumed, error):
     c = built.coupler
     s = {"scene": scene.name, "dim": scene.world.dim, "fluid": scene.fluid.model,
          "duration_s": scene.world.duration, "t_reached_s": c.t, "steps": c.steps, "steps_this_run": steps,
-         "wall_s": round(loop_s + wall_before, 3), "build_s": round(build_s, 3), "cpu_s": round(cpu_s, 3),
-         "resumed": resumed}
+         "wall_s": round(loop_s + wall_before, 3), "build_s": round(build_s, 3),
+         "cpu_s": round(cpu_s + cpu_before, 3), "cpu_s_this_run": round(cpu_s, 3), "resumed": resumed}
     if c.t > 0:
         s["wall_s_per_simulated_s"] = round((loop_s + wall_before) / c.t, 3)
     if hasattr(c, "scheme") and built.bodies is not None:
