@@ -3,7 +3,8 @@ flag must be set before numba.cuda is first imported, and must not reach the oth
 steps small cases on the CPU path and on the GPU path (numba's CUDA simulator, or the GPU
 without the flag) side by side and saves what the tests compare into an .npz file.
 
-``python tests/cuda_sim_worker.py OUT.npz``. First, with numba.cuda made unimportable, it
+``python tests/cuda_sim_worker.py OUT.npz [PART ...]`` (default: every part of
+:data:`PARTS`). First, with numba.cuda made unimportable, it
 runs the CPU path and records the error ``FluidConfig(device="cuda")`` gives (the project
 without numba-cuda). ``python tests/cuda_sim_worker.py OUT.npz --scene``: a coupled scene
 on both paths (:func:`scene_run`).
@@ -231,30 +232,49 @@ def scene_run(out: str) -> None:
     np.savez(out, **OUT)
 
 
-def main(out: str) -> None:
+def _dam2d():
+    dam = disturbed(dam_2d(), 0.01, 1)
+    dam.vel[dam.ids == FLYER] = (0.0, 3.0)
+    run_case("dam2d", dam,
+             dict(dim=2, dx=0.01, c0=20.0, nu=1e-3, xsph_eps=0.1, mls_every=4, domain_lo=(-0.05, -0.05),
+                  domain_hi=(0.25, 0.146)))
+
+
+def _body2d():
+    body = disturbed(body_2d(), 0.01, 2)
+    cfg = dict(dim=2, dx=0.01, c0=20.0, kernel="cubic", diffusion="molteni", alpha=0.05, alpha_wall=0.3,
+               diffusion_at_surface=False, integrator="verlet", verlet_reset=4, walls="adami", mls_every=3)
+    run_case("body2d", body, cfg, body=(1, (0.1, -0.05)), motion=(0, sway),
+             hook=lambda: box_mdbc(body, 1, (0.075, 0.04), (0.125, 0.08), cfg))
+
+
+#: what the worker runs, by name: the cases, and the NaN guard. Gravity tilted off -z (tilt*):
+#: the Fourtakas diffusion's hydrostatic part along g, Adami walls in 2-D
+PARTS = {
+    "dam2d": _dam2d,
+    "body2d": _body2d,
+    "col3d": lambda: run_case("col3d", disturbed(column_3d(), 0.02, 3),
+                              dict(dim=3, dx=0.02, c0=20.0, xsph_eps=0.1, diffusion="antuono")),
+    "tilt2d": lambda: run_case("tilt2d", disturbed(dam_2d(), 0.01, 4),
+                               dict(dim=2, dx=0.01, c0=20.0, g=(2.5, -9.5), walls="adami", domain_lo=(-0.05, -0.05),
+                                    domain_hi=(0.25, 0.2))),
+    "tilt3d": lambda: run_case("tilt3d", disturbed(column_3d(), 0.02, 5),
+                               dict(dim=3, dx=0.02, c0=20.0, g=(1.5, -1.0, -9.6))),
+    "nan": lambda: nan_guard(),
+}
+
+
+def main(out: str, parts) -> None:
+    """The check without numba.cuda, which simulator ran, then each of ``parts`` (names of
+    :data:`PARTS`), into ``out``."""
     absent_check()
     del sys.modules["numba.cuda"]
     from numba import cuda  # noqa: F401  (the simulator where NUMBA_ENABLE_CUDASIM=1, else the GPU)
 
     from fluid.cuda import simulator
     OUT["simulator"] = np.array(simulator())
-    dam = disturbed(dam_2d(), 0.01, 1)
-    dam.vel[dam.ids == FLYER] = (0.0, 3.0)
-    run_case("dam2d", dam,
-             dict(dim=2, dx=0.01, c0=20.0, nu=1e-3, xsph_eps=0.1, mls_every=4, domain_lo=(-0.05, -0.05),
-                  domain_hi=(0.25, 0.146)))
-    body = disturbed(body_2d(), 0.01, 2)
-    cfg = dict(dim=2, dx=0.01, c0=20.0, kernel="cubic", diffusion="molteni", alpha=0.05, alpha_wall=0.3,
-               diffusion_at_surface=False, integrator="verlet", verlet_reset=4, walls="adami", mls_every=3)
-    run_case("body2d", body, cfg, body=(1, (0.1, -0.05)), motion=(0, sway),
-             hook=lambda: box_mdbc(body, 1, (0.075, 0.04), (0.125, 0.08), cfg))
-    run_case("col3d", disturbed(column_3d(), 0.02, 3), dict(dim=3, dx=0.02, c0=20.0, xsph_eps=0.1, diffusion="antuono"))
-    # gravity tilted off -z: the Fourtakas diffusion's hydrostatic part along g, Adami walls
-    run_case("tilt2d", disturbed(dam_2d(), 0.01, 4),
-             dict(dim=2, dx=0.01, c0=20.0, g=(2.5, -9.5), walls="adami", domain_lo=(-0.05, -0.05),
-                  domain_hi=(0.25, 0.2)))
-    run_case("tilt3d", disturbed(column_3d(), 0.02, 5), dict(dim=3, dx=0.02, c0=20.0, g=(1.5, -1.0, -9.6)))
-    nan_guard()
+    for part in parts:
+        PARTS[part]()
     np.savez(out, **OUT)
 
 
@@ -263,4 +283,4 @@ if __name__ == "__main__":
         del sys.modules["numba.cuda"]
         scene_run(sys.argv[1])
     else:
-        main(sys.argv[1])
+        main(sys.argv[1], sys.argv[2:] or list(PARTS))

@@ -3,7 +3,8 @@
 The cases run in a process of their own (tests/cuda_sim_worker.py) with
 NUMBA_ENABLE_CUDASIM=1, which must be set before numba.cuda is first imported and must not
 reach the other tests; the simulator runs each kernel in Python, so the cases are tiny
-(156-274 particles; 20-25 s of CPU for all of them). Skipped, with the reason, where
+(156-274 particles), and still take 45-150 s of CPU each (measured: the 3-D ones the
+longest); each runs once per test session, in whichever pytest worker first asks for it. Skipped, with the reason, where
 numba-cuda is not installed. Each starts from a disturbed state (positions moved by up to
 0.05 dx, velocities of 0.1 m/s, densities within 0.5 %), so that every term acts:
 
@@ -39,6 +40,7 @@ import importlib.util
 import os
 import subprocess
 import sys
+from contextlib import contextmanager
 from pathlib import Path
 
 import numpy as np
@@ -74,9 +76,47 @@ def _worker(out: Path, *args) -> dict:
     return dict(np.load(out))
 
 
+def _shared_dir(tmp_path_factory) -> Path:
+    """The test session's folder that pytest-xdist's workers share (a lone process's own)."""
+    base = tmp_path_factory.getbasetemp()
+    return base.parent if os.environ.get("PYTEST_XDIST_WORKER") else base
+
+
+@contextmanager
+def _locked(path: Path):
+    """Hold an exclusive lock on ``path`` (none where ``fcntl`` is missing: each worker
+    then runs what it needs itself)."""
+    try:
+        import fcntl
+    except ImportError:
+        yield
+        return
+    with open(path, "w") as fh:
+        fcntl.flock(fh, fcntl.LOCK_EX)
+        try:
+            yield
+        finally:
+            fcntl.flock(fh, fcntl.LOCK_UN)
+
+
 @pytest.fixture(scope="module")
 def sim(tmp_path_factory):
-    return _worker(tmp_path_factory.mktemp("cuda") / "sim.npz")
+    """``sim(part)``: the worker's results of one part (a case of :data:`CASES`, or "nan"),
+    run once per test session: the first pytest worker that asks runs it, another waits
+    for its file. The simulator takes minutes a case, so the workers share the cases
+    between them instead of each running them all."""
+    root, got = _shared_dir(tmp_path_factory), {}
+
+    def get(part: str) -> dict:
+        if part not in got:
+            out = root / f"cuda_sim_{part}.npz"
+            with _locked(root / f"cuda_sim_{part}.lock"):
+                if not out.exists():
+                    _worker(out, part)
+            got[part] = dict(np.load(out))
+        return got[part]
+
+    return get
 
 
 def _close(d, key_a, key_b):
@@ -86,7 +126,7 @@ def _close(d, key_a, key_b):
     return np.abs(a - b).max() <= RTOL * scale, f"{key_a}: {np.abs(a - b).max():.3g} against scale {scale:.3g}"
 
 
-@pytest.mark.long  # the simulator's module fixture: ~40 s of CPU
+@pytest.mark.long  # the simulator: 1-2.5 min of CPU a case
 @requires_numba_cuda
 @pytest.mark.parametrize("case", CASES)
 @pytest.mark.parametrize("stage", STAGES)
@@ -94,49 +134,53 @@ def test_gpu_matches_cpu_to_round_off(sim, case, stage):
     """The first pair loop (rates of the disturbed initial state), one step and ten steps:
     the same particles in the same rows (the sort mirrors the CPU's), every field within
     RTOL of its scale, the same stable step (1e-12) and limiter, the same removals."""
-    assert str(sim[f"{case}.gpu_class"]) == "CudaFluid"
+    d = sim(case)
+    assert str(d[f"{case}.gpu_class"]) == "CudaFluid"
     p = f"{case}.{stage}"
-    assert np.array_equal(sim[f"{p}.cpu.rows"], sim[f"{p}.gpu.rows"]), "the sort's order differs"
+    assert np.array_equal(d[f"{p}.cpu.rows"], d[f"{p}.gpu.rows"]), "the sort's order differs"
     for field in FIELDS:
-        ok, msg = _close(sim, f"{p}.cpu.{field}", f"{p}.gpu.{field}")
+        ok, msg = _close(d, f"{p}.cpu.{field}", f"{p}.gpu.{field}")
         assert ok, msg
-    assert abs(sim[f"{p}.cpu.dt"] - sim[f"{p}.gpu.dt"]) <= 1e-12 * sim[f"{p}.cpu.dt"]
-    assert str(sim[f"{p}.cpu.limiter"]) == str(sim[f"{p}.gpu.limiter"])
-    assert np.array_equal(sim[f"{p}.cpu.removed"], sim[f"{p}.gpu.removed"])
+    assert abs(d[f"{p}.cpu.dt"] - d[f"{p}.gpu.dt"]) <= 1e-12 * d[f"{p}.cpu.dt"]
+    assert str(d[f"{p}.cpu.limiter"]) == str(d[f"{p}.gpu.limiter"])
+    assert np.array_equal(d[f"{p}.cpu.removed"], d[f"{p}.gpu.removed"])
 
 
-@pytest.mark.long  # the simulator's module fixture: ~40 s of CPU
+@pytest.mark.long  # the simulator: 1-2.5 min of CPU a case
 @requires_numba_cuda
 @pytest.mark.parametrize("case", CASES)
 def test_loads_that_moved_the_fluid_match(sim, case):
     """What ``step`` returns (the group loads at the half step, or at the start with
     Verlet) after the first and the tenth step; the body case moves its body by
     set_particle_motion before every step."""
+    d = sim(case)
     for stage in ("step1", "step10"):
         for q in ("F", "M"):
-            ok, msg = _close(sim, f"{case}.{stage}.cpu_step_{q}", f"{case}.{stage}.gpu_step_{q}")
+            ok, msg = _close(d, f"{case}.{stage}.cpu_step_{q}", f"{case}.{stage}.gpu_step_{q}")
             assert ok, msg
-    assert np.abs(sim[f"{case}.step10.cpu_step_F"]).max() > 0.0
+    assert np.abs(d[f"{case}.step10.cpu_step_F"]).max() > 0.0
 
 
-@pytest.mark.long  # the simulator's module fixture: ~40 s of CPU
+@pytest.mark.long  # the simulator: 1-2.5 min of CPU a case
 @requires_numba_cuda
 def test_the_cases_exercise_what_they_claim(sim):
     """The simulator ran (the GPU with ``COSIM_CUDA_TESTS=gpu``); the fluid moved; the
     flying particle left the domain on both paths (removal); the body case's body carries
     a load."""
-    assert bool(sim["simulator"]) != ON_GPU
-    assert sim["dam2d.step10.gpu.removed"][0] == 1 and sim["dam2d.step10.gpu.removed"].sum() == 1
+    dam = sim("dam2d")
+    assert bool(dam["simulator"]) != ON_GPU
+    assert dam["dam2d.step10.gpu.removed"][0] == 1 and dam["dam2d.step10.gpu.removed"].sum() == 1
     for case in CASES:
-        assert np.abs(sim[f"{case}.step10.gpu.disp"]).max() > 1e-5  # [m]
-    assert np.abs(sim["body2d.step10.gpu.F"][1]).max() > 0.1  # [N] on the body (group 1)
+        assert np.abs(sim(case)[f"{case}.step10.gpu.disp"]).max() > 1e-5  # [m]
+    assert np.abs(sim("body2d")["body2d.step10.gpu.F"][1]).max() > 0.1  # [N] on the body (group 1)
 
 
-@pytest.mark.long  # the simulator's module fixture: ~40 s of CPU
+@pytest.mark.long  # the simulator: 1-2.5 min of CPU a case
 @requires_numba_cuda
 def test_nan_guard_stops_with_the_cpu_message(sim):
-    msg = str(sim["nan.gpu"])
-    assert msg and msg == str(sim["nan.cpu"])
+    nan = sim("nan")
+    msg = str(nan["nan.gpu"])
+    assert msg and msg == str(nan["nan.cpu"])
     assert "non-finite state" in msg and "particle id 40" in msg
 
 
@@ -168,27 +212,28 @@ def _table(dim: int, saved: tuple, xsph: bool) -> int:
     return state + saved_b + scratch + rates + sort
 
 
-@pytest.mark.long  # the simulator's module fixture: ~40 s of CPU
+@pytest.mark.long  # the simulator: 1-2.5 min of CPU a case
 @requires_numba_cuda
 def test_device_memory_per_particle(sim):
     """Bytes per particle the device state allocated, against the table of its arrays: 2-D
     symplectic with XSPH 194 B, 2-D Verlet 162 B (and the moving Adami walls'
     accelerations, 16 B, and the body's mDBC ghost vectors, 16 B per body particle), 3-D symplectic with XSPH 250 B (the aim: at most 250 B) and
     the renormalised diffusion's gradients (24 B)."""
-    assert sim["dam2d.bytes_per_particle"] == _table(2, ("pos", "vel", "rho"), True) == 194
+    assert sim("dam2d")["dam2d.bytes_per_particle"] == _table(2, ("pos", "vel", "rho"), True) == 194
     # the body's 12 particles' mDBC ghost vectors (by id) among the case's 274
-    assert sim["body2d.bytes_per_particle"] == pytest.approx(_table(2, ("vel", "rho"), False) + 16 + 16 * 12 / 274,
+    assert sim("body2d")["body2d.bytes_per_particle"] == pytest.approx(_table(2, ("vel", "rho"), False) + 16 + 16 * 12 / 274,
                                                              rel=1e-12)
-    assert sim["col3d.bytes_per_particle"] == _table(3, ("pos", "vel", "rho"), True) + 24 == 274
+    assert sim("col3d")["col3d.bytes_per_particle"] == _table(3, ("pos", "vel", "rho"), True) + 24 == 274
 
 
-@pytest.mark.long  # the simulator's module fixture: ~40 s of CPU
+@pytest.mark.long  # the simulator: 1-2.5 min of CPU a case
 @requires_numba_cuda
 def test_cpu_runs_and_cuda_is_refused_without_numba_cuda(sim):
     """In the worker, before numba.cuda could be imported: a CPU step ran, and
     device='cuda' was refused saying what to install and how to use the simulator."""
-    assert int(sim["absent_cpu_steps"]) == 1
-    msg = str(sim["absent_error"])
+    nan = sim("nan")  # every part's run checks it first
+    assert int(nan["absent_cpu_steps"]) == 1
+    msg = str(nan["absent_error"])
     assert "numba-cuda is not installed" in msg and "pip install numba-cuda" in msg
     assert "NUMBA_ENABLE_CUDASIM=1" in msg and "device='cpu'" in msg
 
