@@ -4,8 +4,8 @@ The cases run in a process of their own (tests/cuda_sim_worker.py) with
 NUMBA_ENABLE_CUDASIM=1, which must be set before numba.cuda is first imported and must not
 reach the other tests; the simulator runs each kernel in Python, so the cases are tiny
 (156-274 particles), and still take 45-150 s of CPU each (measured: the 3-D ones the
-longest); each runs once per test session, in whichever pytest worker first asks for it. Skipped, with the reason, where
-numba-cuda is not installed. Each starts from a disturbed state (positions moved by up to
+longest); each runs once per test session, in whichever pytest worker first asks for it.
+Skipped, with the reason, where numba-cuda is not installed. Each starts from a disturbed state (positions moved by up to
 0.05 dx, velocities of 0.1 m/s, densities within 0.5 %), so that every term acts:
 
 * ``dam2d``: a 2-D dam break, 219 particles (51 fluid), Wendland, Fourtakas diffusion,
@@ -111,9 +111,7 @@ def sim(tmp_path_factory):
         if part not in got:
             out = root / f"cuda_sim_{part}.npz"
             with _locked(root / f"cuda_sim_{part}.lock"):
-                if not out.exists():
-                    _worker(out, part)
-            got[part] = dict(np.load(out))
+                got[part] = dict(np.load(out)) if out.exists() else _worker(out, part)
         return got[part]
 
     return get

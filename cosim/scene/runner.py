@@ -255,12 +255,15 @@ def _check_writable(out: Path) -> None:
         raise InputError(f"output folder {str(out)!r}: {str(probe)!r} {what}; give another --out")
 
 
+def _without_resumable(d: dict) -> dict:
+    """The scene's fields ``d`` without those a resumed run may change (:data:`RESUMABLE`)."""
+    return d | {"world": {k: v for k, v in d.get("world", {}).items() if k not in RESUMABLE}}
+
+
 def _scene_identity(scene) -> tuple[dict, str]:
     """The scene as a checkpoint records it (without the fields a resumed run may change,
     :data:`RESUMABLE`) and the SHA-256 of its canonical JSON."""
-    d = scene.to_dict()
-    d["world"] = {k: v for k, v in d["world"].items() if k not in RESUMABLE}
-    d = json.loads(json.dumps(d, default=_json))
+    d = json.loads(json.dumps(_without_resumable(scene.to_dict()), default=_json))
     return d, hashlib.sha256(json.dumps(d, sort_keys=True, separators=(",", ":")).encode()).hexdigest()
 
 
@@ -292,17 +295,14 @@ def _read_resume(scene, out: Path, any_version: bool) -> dict:
                               f"which may not continue the run bit for bit; run the scene again without --resume, or "
                               f"continue anyway with --resume-any-version")
     mine, sha = _scene_identity(scene)
-    theirs = mine
     if meta.get("scene_sha256") != sha:
-        try:
-            theirs = json.loads(ck["scene"])
-            # a checkpoint written before a field became resumable records it
-            theirs["world"] = {k: v for k, v in theirs["world"].items() if k not in RESUMABLE}
-        except (TypeError, ValueError, KeyError, AttributeError):
+        try:  # a checkpoint written before a field became resumable records it: compare without
+            theirs = _without_resumable(json.loads(ck["scene"]))
+        except (TypeError, ValueError, AttributeError):
             theirs = None
-    if meta.get("scene_sha256") != sha and theirs != mine:
-        raise SceneError(_first_difference(theirs, mine), "differs from the run being resumed; a resumed run may "
-                         "change world.duration, world.checkpoint_wall and world.plot_at only")
+        if theirs != mine:
+            raise SceneError(_first_difference(theirs, mine), "differs from the run being resumed; a resumed run "
+                             "may change world.duration, world.checkpoint_wall and world.plot_at only")
     t, ticks = meta.get("t"), ck["state"].get("ticks") if isinstance(ck["state"], dict) else None
     where = checkpoint.first_not_finite({"t": t, "state": ck["state"], "ledger": ck["ledger"],
                                           "probes": ck["probes"]})
@@ -356,8 +356,7 @@ def kept_scene_difference(scene, out) -> str | None:
     import tomllib
 
     kept = tomllib.loads((Path(out) / "scene.toml").read_text(encoding="utf-8"))  # as the run wrote it: every field
-    kept["world"] = {k: v for k, v in kept.get("world", {}).items() if k not in RESUMABLE}
-    kept = json.loads(json.dumps(kept, default=_json))
+    kept = json.loads(json.dumps(_without_resumable(kept), default=_json))
     mine = _scene_identity(scene)[0]
     return None if kept == mine else _first_difference(kept, mine)
 
