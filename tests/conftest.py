@@ -1,5 +1,5 @@
 """Shared test markers and the check that the long and slow tiers do not meet, the property
-tests' profile, and the worker processes' threads."""
+tests' profile, the worker processes' threads, and the time limit of a fast or long test."""
 
 import os
 
@@ -20,6 +20,8 @@ if "COSIM_POTENTIAL_CACHE" not in os.environ:
 
 import pytest
 from hypothesis import settings
+
+pytest_plugins = ["pytester"]  # tests/test_tiers.py runs a pytest of its own
 
 from moorings.fmu_export import find_compiler
 
@@ -51,6 +53,17 @@ def in_both_tiers(items) -> list[str]:
 BOTH_TIERS = pytest.StashKey[list]()
 
 
+#: wall seconds a test of the fast or long tier may take (pytest-timeout) before it fails
+#: with its stack: a test that hangs then fails by name instead of holding its pytest
+#: worker, and with it the whole run (the workers share the queue), until CI's limit. The
+#: longest long test takes about 300 s on 2 loaded cores; slow tests have no limit.
+TIER_TIMEOUT_S = 1500
+
+
 @pytest.hookimpl(tryfirst=True)  # before `-m` deselects: every collected test is seen
 def pytest_collection_modifyitems(config, items):
     config.stash[BOTH_TIERS] = in_both_tiers(items)
+    if config.pluginmanager.hasplugin("timeout"):
+        for item in items:
+            if not item.get_closest_marker("slow") and not item.get_closest_marker("timeout"):
+                item.add_marker(pytest.mark.timeout(TIER_TIMEOUT_S))

@@ -4,7 +4,7 @@ The cases run in a process of their own (tests/cuda_sim_worker.py) with
 NUMBA_ENABLE_CUDASIM=1, which must be set before numba.cuda is first imported and must not
 reach the other tests; the simulator runs each kernel in Python, so the cases are tiny
 (156-274 particles), and still take 45-150 s of CPU each (measured: the 3-D ones the
-longest); each runs once per test session, in whichever pytest worker first asks for it.
+longest); each runs once, in the one test that checks it (no test waits on another's).
 Skipped, with the reason, where numba-cuda is not installed. Each starts from a disturbed state (positions moved by up to
 0.05 dx, velocities of 0.1 m/s, densities within 0.5 %), so that every term acts:
 
@@ -40,7 +40,6 @@ import importlib.util
 import os
 import subprocess
 import sys
-from contextlib import contextmanager
 from pathlib import Path
 
 import numpy as np
@@ -71,50 +70,9 @@ def _worker(out: Path, *args) -> dict:
     if not ON_GPU:
         env["NUMBA_ENABLE_CUDASIM"] = "1"
     r = subprocess.run([sys.executable, str(WORKER), str(out), *args], env=env, capture_output=True, text=True,
-                       timeout=1800)
+                       timeout=900)
     assert r.returncode == 0, r.stderr[-4000:]
     return dict(np.load(out))
-
-
-def _shared_dir(tmp_path_factory) -> Path:
-    """The test session's folder that pytest-xdist's workers share (a lone process's own)."""
-    base = tmp_path_factory.getbasetemp()
-    return base.parent if os.environ.get("PYTEST_XDIST_WORKER") else base
-
-
-@contextmanager
-def _locked(path: Path):
-    """Hold an exclusive lock on ``path`` (none where ``fcntl`` is missing: each worker
-    then runs what it needs itself)."""
-    try:
-        import fcntl
-    except ImportError:
-        yield
-        return
-    with open(path, "w") as fh:
-        fcntl.flock(fh, fcntl.LOCK_EX)
-        try:
-            yield
-        finally:
-            fcntl.flock(fh, fcntl.LOCK_UN)
-
-
-@pytest.fixture(scope="module")
-def sim(tmp_path_factory):
-    """``sim(part)``: the worker's results of one part (a case of :data:`CASES`, or "nan"),
-    run once per test session: the first pytest worker that asks runs it, another waits
-    for its file. The simulator takes minutes a case, so the workers share the cases
-    between them instead of each running them all."""
-    root, got = _shared_dir(tmp_path_factory), {}
-
-    def get(part: str) -> dict:
-        if part not in got:
-            out = root / f"cuda_sim_{part}.npz"
-            with _locked(root / f"cuda_sim_{part}.lock"):
-                got[part] = dict(np.load(out)) if out.exists() else _worker(out, part)
-        return got[part]
-
-    return get
 
 
 def _close(d, key_a, key_b):
@@ -124,62 +82,97 @@ def _close(d, key_a, key_b):
     return np.abs(a - b).max() <= RTOL * scale, f"{key_a}: {np.abs(a - b).max():.3g} against scale {scale:.3g}"
 
 
-@pytest.mark.long  # the simulator: 1-2.5 min of CPU a case
-@requires_numba_cuda
-@pytest.mark.parametrize("case", CASES)
-@pytest.mark.parametrize("stage", STAGES)
-def test_gpu_matches_cpu_to_round_off(sim, case, stage):
-    """The first pair loop (rates of the disturbed initial state), one step and ten steps:
-    the same particles in the same rows (the sort mirrors the CPU's), every field within
-    RTOL of its scale, the same stable step (1e-12) and limiter, the same removals."""
-    d = sim(case)
-    assert str(d[f"{case}.gpu_class"]) == "CudaFluid"
-    p = f"{case}.{stage}"
-    assert np.array_equal(d[f"{p}.cpu.rows"], d[f"{p}.gpu.rows"]), "the sort's order differs"
-    for field in FIELDS:
-        ok, msg = _close(d, f"{p}.cpu.{field}", f"{p}.gpu.{field}")
-        assert ok, msg
-    assert abs(d[f"{p}.cpu.dt"] - d[f"{p}.gpu.dt"]) <= 1e-12 * d[f"{p}.cpu.dt"]
-    assert str(d[f"{p}.cpu.limiter"]) == str(d[f"{p}.gpu.limiter"])
-    assert np.array_equal(d[f"{p}.cpu.removed"], d[f"{p}.gpu.removed"])
-
-
-@pytest.mark.long  # the simulator: 1-2.5 min of CPU a case
-@requires_numba_cuda
-@pytest.mark.parametrize("case", CASES)
-def test_loads_that_moved_the_fluid_match(sim, case):
-    """What ``step`` returns (the group loads at the half step, or at the start with
-    Verlet) after the first and the tenth step; the body case moves its body by
-    set_particle_motion before every step."""
-    d = sim(case)
+def _case_mismatches(d: dict, case: str) -> list[str]:
+    """What differs between the CPU and GPU paths in one case's results: at each stage
+    (the first pair loop, one step, ten steps) the particles' rows (the sort mirrors the
+    CPU's), every field within RTOL of its scale, the stable step (1e-12), the limiter and
+    the removals; after the first and tenth steps the group loads ``step`` returned (at
+    the half step, or at the start with Verlet)."""
+    bad = []
+    for stage in STAGES:
+        p = f"{case}.{stage}"
+        if not np.array_equal(d[f"{p}.cpu.rows"], d[f"{p}.gpu.rows"]):
+            bad.append(f"{p}: the sort's order differs")
+        for field in FIELDS:
+            ok, msg = _close(d, f"{p}.cpu.{field}", f"{p}.gpu.{field}")
+            bad += [] if ok else [msg]
+        if abs(d[f"{p}.cpu.dt"] - d[f"{p}.gpu.dt"]) > 1e-12 * d[f"{p}.cpu.dt"]:
+            bad.append(f"{p}: stable step {d[f'{p}.cpu.dt']} (CPU) against {d[f'{p}.gpu.dt']} (GPU)")
+        if str(d[f"{p}.cpu.limiter"]) != str(d[f"{p}.gpu.limiter"]):
+            bad.append(f"{p}: limiter {d[f'{p}.cpu.limiter']} (CPU) against {d[f'{p}.gpu.limiter']} (GPU)")
+        if not np.array_equal(d[f"{p}.cpu.removed"], d[f"{p}.gpu.removed"]):
+            bad.append(f"{p}: the removals differ")
     for stage in ("step1", "step10"):
         for q in ("F", "M"):
             ok, msg = _close(d, f"{case}.{stage}.cpu_step_{q}", f"{case}.{stage}.gpu_step_{q}")
-            assert ok, msg
+            bad += [] if ok else [msg]
+    return bad
+
+
+def _table(dim: int, saved: tuple, xsph: bool) -> int:
+    """Bytes per particle of the device state's arrays, as fluid.cuda.state allocates them
+    (and fluid.cuda's docstring lists them)."""
+    vec, f8 = 8 * dim, 8
+    state = 2 * vec + 2 * f8 + 1 + 4 + 4  # positions, velocities, density, mass, kind, group, id
+    saved_b = sum(vec if k in ("pos", "vel") else f8 for k in saved)
+    scratch = vec + f8 + 4 + 1  # the sort's gather buffers
+    rates = 3 * f8 + vec + (vec if xsph else 0)  # drho, sound speed, p/rho^2, acceleration, XSPH
+    sort = 4 + 4 + 4  # cell, permutation, the id map (ids run 0..N-1 in these cases)
+    return state + saved_b + scratch + rates + sort
+
+
+def _bytes_per_particle(case: str) -> float | None:
+    """Bytes per particle of a case's device state by :func:`_table`: 2-D symplectic with
+    XSPH 194 B; 2-D Verlet 162 B with the moving Adami walls' accelerations (16 B) and the
+    body's mDBC ghost vectors (16 B for each of its 12 of 274 particles); 3-D symplectic
+    with XSPH 250 B (the aim: at most 250 B) and the renormalised diffusion's gradients
+    (24 B)."""
+    return {"dam2d": _table(2, ("pos", "vel", "rho"), True),
+            "body2d": _table(2, ("vel", "rho"), False) + 16 + 16 * 12 / 274,
+            "col3d": _table(3, ("pos", "vel", "rho"), True) + 24}.get(case)
+
+
+@pytest.mark.long  # the simulator: 1-2.5 min of CPU a case
+@requires_numba_cuda
+@pytest.mark.parametrize("case", CASES)
+def test_gpu_matches_cpu_to_round_off(case, tmp_path):
+    """One case on both paths (its own process: each case runs once, in the test that
+    checks it): every stage and load agrees (:func:`_case_mismatches`); the simulator ran
+    (the GPU with ``COSIM_CUDA_TESTS=gpu``); the fluid moved; the dam break's flying
+    particle left the domain on both paths; the body case's body carries a load; the
+    device state takes the bytes per particle its table says."""
+    d = _worker(tmp_path / f"{case}.npz", case)
+    assert str(d[f"{case}.gpu_class"]) == "CudaFluid"
+    assert bool(d["simulator"]) != ON_GPU
+    bad = _case_mismatches(d, case)
+    assert not bad, f"{case}: " + "; ".join(bad)
     assert np.abs(d[f"{case}.step10.cpu_step_F"]).max() > 0.0
+    assert np.abs(d[f"{case}.step10.gpu.disp"]).max() > 1e-5  # [m]
+    if case == "dam2d":
+        assert d["dam2d.step10.gpu.removed"][0] == 1 and d["dam2d.step10.gpu.removed"].sum() == 1
+        assert _bytes_per_particle(case) == 194
+    if case == "body2d":
+        assert np.abs(d["body2d.step10.gpu.F"][1]).max() > 0.1  # [N] on the body (group 1)
+    if case == "col3d":
+        assert _bytes_per_particle(case) == 274
+    if _bytes_per_particle(case) is not None:
+        assert d[f"{case}.bytes_per_particle"] == pytest.approx(_bytes_per_particle(case), rel=1e-12)
 
 
-@pytest.mark.long  # the simulator: 1-2.5 min of CPU a case
+@pytest.mark.long  # the simulator: about 10 s of CPU
 @requires_numba_cuda
-def test_the_cases_exercise_what_they_claim(sim):
-    """The simulator ran (the GPU with ``COSIM_CUDA_TESTS=gpu``); the fluid moved; the
-    flying particle left the domain on both paths (removal); the body case's body carries
-    a load."""
-    dam = sim("dam2d")
-    assert bool(dam["simulator"]) != ON_GPU
-    assert dam["dam2d.step10.gpu.removed"][0] == 1 and dam["dam2d.step10.gpu.removed"].sum() == 1
-    for case in CASES:
-        assert np.abs(sim(case)[f"{case}.step10.gpu.disp"]).max() > 1e-5  # [m]
-    assert np.abs(sim("body2d")["body2d.step10.gpu.F"][1]).max() > 0.1  # [N] on the body (group 1)
-
-
-@pytest.mark.long  # the simulator: 1-2.5 min of CPU a case
-@requires_numba_cuda
-def test_nan_guard_stops_with_the_cpu_message(sim):
-    nan = sim("nan")
+def test_nan_guard_and_the_project_without_numba_cuda(tmp_path):
+    """The GPU path's NaN guard stops with the CPU's message. And in the worker, before
+    numba.cuda could be imported: a CPU step ran, and device='cuda' was refused saying
+    what to install and how to use the simulator."""
+    nan = _worker(tmp_path / "nan.npz", "nan")
     msg = str(nan["nan.gpu"])
     assert msg and msg == str(nan["nan.cpu"])
     assert "non-finite state" in msg and "particle id 40" in msg
+    assert int(nan["absent_cpu_steps"]) == 1
+    msg = str(nan["absent_error"])
+    assert "numba-cuda is not installed" in msg and "pip install numba-cuda" in msg
+    assert "NUMBA_ENABLE_CUDASIM=1" in msg and "device='cpu'" in msg
 
 
 @pytest.mark.slow
@@ -196,44 +189,6 @@ def test_a_coupled_scene_moves_its_body_as_on_the_cpu(tmp_path):
     assert np.abs(cpu - gpu).max() <= RTOL * np.abs(cpu).max()
     assert np.abs(d["scene.cpu.box.surge"] - d["scene.cuda.box.surge"]).max() <= 1e-9
     assert np.abs(d["scene.cpu.box.pitch"] - d["scene.cuda.box.pitch"]).max() <= 1e-9
-
-
-def _table(dim: int, saved: tuple, xsph: bool) -> int:
-    """Bytes per particle of the device state's arrays, as fluid.cuda.state allocates them
-    (and fluid.cuda's docstring lists them)."""
-    vec, f8 = 8 * dim, 8
-    state = 2 * vec + 2 * f8 + 1 + 4 + 4  # positions, velocities, density, mass, kind, group, id
-    saved_b = sum(vec if k in ("pos", "vel") else f8 for k in saved)
-    scratch = vec + f8 + 4 + 1  # the sort's gather buffers
-    rates = 3 * f8 + vec + (vec if xsph else 0)  # drho, sound speed, p/rho^2, acceleration, XSPH
-    sort = 4 + 4 + 4  # cell, permutation, the id map (ids run 0..N-1 in these cases)
-    return state + saved_b + scratch + rates + sort
-
-
-@pytest.mark.long  # the simulator: 1-2.5 min of CPU a case
-@requires_numba_cuda
-def test_device_memory_per_particle(sim):
-    """Bytes per particle the device state allocated, against the table of its arrays: 2-D
-    symplectic with XSPH 194 B, 2-D Verlet 162 B (and the moving Adami walls'
-    accelerations, 16 B, and the body's mDBC ghost vectors, 16 B per body particle), 3-D symplectic with XSPH 250 B (the aim: at most 250 B) and
-    the renormalised diffusion's gradients (24 B)."""
-    assert sim("dam2d")["dam2d.bytes_per_particle"] == _table(2, ("pos", "vel", "rho"), True) == 194
-    # the body's 12 particles' mDBC ghost vectors (by id) among the case's 274
-    assert sim("body2d")["body2d.bytes_per_particle"] == pytest.approx(_table(2, ("vel", "rho"), False) + 16 + 16 * 12 / 274,
-                                                             rel=1e-12)
-    assert sim("col3d")["col3d.bytes_per_particle"] == _table(3, ("pos", "vel", "rho"), True) + 24 == 274
-
-
-@pytest.mark.long  # the simulator: 1-2.5 min of CPU a case
-@requires_numba_cuda
-def test_cpu_runs_and_cuda_is_refused_without_numba_cuda(sim):
-    """In the worker, before numba.cuda could be imported: a CPU step ran, and
-    device='cuda' was refused saying what to install and how to use the simulator."""
-    nan = sim("nan")  # every part's run checks it first
-    assert int(nan["absent_cpu_steps"]) == 1
-    msg = str(nan["absent_error"])
-    assert "numba-cuda is not installed" in msg and "pip install numba-cuda" in msg
-    assert "NUMBA_ENABLE_CUDASIM=1" in msg and "device='cpu'" in msg
 
 
 def test_device_is_validated_with_a_clear_error():
