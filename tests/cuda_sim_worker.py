@@ -264,12 +264,36 @@ PARTS = {
 }
 
 
+def yielding_simulator() -> None:
+    """Make numba's CUDA simulator give up the GIL each time it polls a block's threads.
+
+    The simulator runs a block's threads as Python threads while its main thread polls
+    them in a loop that never releases the GIL, so a thread woken from ``syncthreads``
+    waits for the interpreter's forced switch (5 ms) each time. How long a case takes then
+    depends on the machine's load: col3d took 55 s of CPU alone and 620 s in a pytest
+    worker beside other jobs. A ``time.sleep(0)`` in the poll (the simulator's
+    ``BlockThread.is_alive``) hands the GIL over at once: 52 s, whatever the load. No
+    result changes (the threads still run one at a time under the GIL)."""
+    import threading
+    import time
+
+    from numba.cuda.simulator import kernel  # importable on a GPU too, and unused there
+
+    def is_alive(thread) -> bool:
+        time.sleep(0)
+        return threading.Thread.is_alive(thread)
+
+    kernel.BlockThread.is_alive = is_alive
+
+
 def main(out: str, parts) -> None:
     """The check without numba.cuda, which simulator ran, then each of ``parts`` (names of
     :data:`PARTS`), into ``out``."""
     absent_check()
     del sys.modules["numba.cuda"]
     from numba import cuda  # noqa: F401  (the simulator where NUMBA_ENABLE_CUDASIM=1, else the GPU)
+
+    yielding_simulator()
 
     from fluid.cuda import simulator
     OUT["simulator"] = np.array(simulator())
@@ -281,6 +305,7 @@ def main(out: str, parts) -> None:
 if __name__ == "__main__":
     if sys.argv[2:] == ["--scene"]:
         del sys.modules["numba.cuda"]
+        yielding_simulator()
         scene_run(sys.argv[1])
     else:
         main(sys.argv[1], sys.argv[2:] or list(PARTS))

@@ -3,8 +3,9 @@
 The cases run in a process of their own (tests/cuda_sim_worker.py) with
 NUMBA_ENABLE_CUDASIM=1, which must be set before numba.cuda is first imported and must not
 reach the other tests; the simulator runs each kernel in Python, so the cases are tiny
-(156-274 particles), and still take 45-150 s of CPU each (measured: the 3-D ones the
-longest); each runs once, in the one test that checks it (no test waits on another's).
+(156-274 particles), and take 5-60 s each (the 3-D ones the longest; the worker makes
+the simulator yield the GIL as it polls its threads, without which a case took up to ten
+times longer on a loaded machine); each runs once, in the one test that checks it.
 Skipped, with the reason, where numba-cuda is not installed. Each starts from a disturbed state (positions moved by up to
 0.05 dx, velocities of 0.1 m/s, densities within 0.5 %), so that every term acts:
 
@@ -132,7 +133,7 @@ def _bytes_per_particle(case: str) -> float | None:
             "col3d": _table(3, ("pos", "vel", "rho"), True) + 24}.get(case)
 
 
-@pytest.mark.long  # the simulator: 1-2.5 min of CPU a case
+@pytest.mark.long  # the simulator: up to a minute a case
 @requires_numba_cuda
 @pytest.mark.parametrize("case", CASES)
 def test_gpu_matches_cpu_to_round_off(case, tmp_path):
