@@ -269,15 +269,18 @@ def yielding_simulator() -> None:
 
     The simulator runs a block's threads as Python threads while its main thread polls
     them in a loop that never releases the GIL, so a thread woken from ``syncthreads``
-    waits for the interpreter's forced switch (5 ms) each time. How long a case takes then
-    depends on the machine's load: col3d took 55 s of CPU alone and 620 s in a pytest
-    worker beside other jobs. A ``time.sleep(0)`` in the poll (the simulator's
-    ``BlockThread.is_alive``) hands the GIL over at once: 52 s, whatever the load. No
+    waits for the interpreter's forced switch (5 ms) each time, and a case's time grows
+    with the machine's load, by up to ten times (docs/development.md). A ``time.sleep(0)``
+    in the poll (the simulator's ``BlockThread.is_alive``) hands the GIL over at once. No
     result changes (the threads still run one at a time under the GIL)."""
     import threading
     import time
 
-    from numba.cuda.simulator import kernel  # importable on a GPU too, and unused there
+    from fluid.cuda import simulator
+
+    if not simulator():  # a GPU
+        return
+    from numba.cuda.simulator import kernel
 
     def is_alive(thread) -> bool:
         time.sleep(0)
