@@ -79,13 +79,13 @@ def main(argv=None) -> int:
     scene0 = case.sph_scene(False).with_values([f"fluid.dx={a.dx}", f"world.duration={a.duration}"])
     pot_scene = case.surface_scene(scene0, "potential")
     omega = 2.0 * math.pi / scene0.waves.period
-    pot_res = case.run_or_resume(pot_scene, a.out / "potential")
+    pot_res, _ = case.run_or_resume(pot_scene, a.out / "potential")
     pot = case.motion_figures(pot_res, window, omega) | phases(pot_res, window, omega)
     variants = ([] if a.no_base else [("base", [])]) + a.variant
     rows = []
     for label, sets in variants:
         scene = scene0.with_values(sets) if sets else scene0
-        res = case.run_or_resume(scene, a.out / label)
+        res, _ = case.run_or_resume(scene, a.out / label)
         row = {"variant": label, "sets": sets} | figures(res, scene, window, pot)
         print(json.dumps(row), flush=True)
         rows.append(row)

@@ -51,7 +51,7 @@ def main(argv=None) -> int:
     for model in a.models:
         for fluid in a.fluids:
             scene = scene_for(model, fluid, a.dx, a.duration)
-            res = case.run_or_resume(scene, a.out / model / fluid)
+            res, _ = case.run_or_resume(scene, a.out / model / fluid)
             f = case.motion_figures(res, tuple(a.window), 2.0 * math.pi / scene.waves.period)
             row = {"model": model, "fluid": fluid} | f
             print(json.dumps(row), flush=True)

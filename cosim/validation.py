@@ -16,7 +16,9 @@ leaves them out) and any further JSON-ready keys. It does not return ``passed``:
 variant and a full one, and adds ``name``, ``quick``, ``target`` (the text of what was
 judged), ``stated_target``, ``stated`` (the stated target with its measured values, where
 the judged tolerances differ from it), ``wall_s`` and ``case_cpu_s`` (the case's CPU
-seconds: all its threads and the processes it ran and waited for). ``quick=True`` is the
+seconds: all its threads and the processes it ran and waited for; a case that reads back
+runs made by earlier processes returns their recorded CPU as ``read_back_cpu_s``, which
+:func:`cost` adds). ``quick=True`` is the
 coarse variant that CI runs. Cases live in the modules of :mod:`cosim.validations`, imported
 only when a case is listed or run (by name, :data:`CASE_MODULES`), so ``import cosim``
 stays light; none of them imports this module.
@@ -208,9 +210,11 @@ def status(rec: dict) -> str:
 
 def cost(rec: dict | None) -> float | None:
     """A record's cost [s]: its CPU seconds (``case_cpu_s``: on one core, what the machine's
-    load changes least), or its wall time where it has none."""
+    load changes least; with ``read_back_cpu_s``, those its runs read back from earlier
+    processes recorded), or its wall time where it has none."""
     rec = rec or {}
-    return rec.get("case_cpu_s", rec.get("wall_s"))
+    own = rec.get("case_cpu_s", rec.get("wall_s"))
+    return own if own is None else own + rec.get("read_back_cpu_s", 0.0)
 
 
 def _seconds(s: float | None) -> str:

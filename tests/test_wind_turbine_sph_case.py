@@ -41,18 +41,29 @@ def test_a_kept_run_is_read_back_and_a_stopped_one_resumes(tmp_path):
     whole = _short("analytic", 6.0).run(tmp_path / "whole", progress=False)
     first = _short("analytic", 3.0).run(tmp_path / "kept", progress=False)
     assert first.t[-1] == pytest.approx(3.0)
-    # the same folder asked for 6 s: resumed from its end-of-run checkpoint to the whole run
-    resumed = wt.run_or_resume(_short("analytic", 6.0), tmp_path / "kept")
+    # the same folder asked for 6 s: resumed from its end-of-run checkpoint to the whole run;
+    # the earlier segment's CPU is the first run's up to its checkpoint
+    resumed, earlier = wt.run_or_resume(_short("analytic", 6.0), tmp_path / "kept")
     assert resumed.summary["resumed"] and np.array_equal(resumed["base.heave"], whole["base.heave"])
+    assert 0.0 < earlier <= first.summary["cpu_s"]
+    assert resumed.summary["cpu_s"] == pytest.approx(earlier + resumed.summary["cpu_s_this_run"])
     mtime = (tmp_path / "kept" / "run.h5").stat().st_mtime_ns
-    again = wt.run_or_resume(_short("analytic", 6.0), tmp_path / "kept")  # finished: read, not run
+    again, earlier = wt.run_or_resume(_short("analytic", 6.0), tmp_path / "kept")  # finished: read, not run
     assert (tmp_path / "kept" / "run.h5").stat().st_mtime_ns == mtime
-    assert np.array_equal(again["base.heave"], whole["base.heave"])
+    assert np.array_equal(again["base.heave"], whole["base.heave"]) and earlier == resumed.summary["cpu_s"]
     # a run of another scene kept there is refused, naming the field
     from cosim.errors import InputError
 
     with pytest.raises(InputError, match="fluid.rho differs"):
         wt.run_or_resume(_short("analytic", 6.0).with_values(["fluid.rho=1000.0"]), tmp_path / "kept")
+
+
+def test_a_record_costs_its_own_cpu_and_that_of_the_runs_it_read_back():
+    from cosim import validation
+
+    assert validation.cost({"case_cpu_s": 40.0, "read_back_cpu_s": 11000.0}) == 11040.0
+    assert validation.cost({"case_cpu_s": 40.0}) == 40.0 and validation.cost({"wall_s": 3.0}) == 3.0
+    assert validation.cost(None) is None
 
 
 def test_the_surface_scenes_keep_the_base_lines_and_sea():
@@ -154,6 +165,19 @@ def test_motion_figures_are_first_harmonics_at_the_waves_period():
     assert f["tension_back_N"] == 9.0e4 and f["tension_front_N"] == pytest.approx(9.0e4)
 
 
+def test_the_reports_plots_carry_every_fluids_curves(tmp_path):
+    from cosim.report import plot_series
+
+    t = np.arange(0.0, 4.0, 0.5)
+    names = {name for _, name, _ in wt.PLOTS}
+    runs = {"SPH": _results(t, {n: np.sin(t) for n in names}), "potential fluid": _results(t, {n: np.cos(t) for n in names})}
+    series = wt.motion_series(runs)
+    assert [p["ylabel"] for p in series.values()] == [y for _, _, y in wt.PLOTS]
+    surge = series["surge"]["curves"]
+    assert list(surge) == ["SPH", "potential fluid"] and surge["potential fluid"]["y"] == np.cos(t).tolist()
+    assert len(plot_series(series, tmp_path, "wind-turbine-sph")) == len(wt.PLOTS)
+
+
 def test_the_judging_against_the_stated_tolerances():
     pot = {"surge_amp": 0.85, "heave_amp": 0.32, "pitch_amp": 0.34, "tension_back_N": 9.4e4,
            "tension_front_N": 9.4e4, "particles": None, "steps": 1}
@@ -180,3 +204,19 @@ def test_the_quick_case_meets_its_own_tolerances(tmp_path, monkeypatch):
     monkeypatch.setenv("COSIM_CASE_RUNS", str(tmp_path))
     r = validation.run("wind-turbine-sph", quick=True)
     assert r["passed"], (r["outside_tolerance"], {k: r["metrics"][k] for k in r["tolerances"]})
+
+
+def test_the_surge_reading_tells_the_free_mode_from_the_waves_harmonic():
+    """benchmarks/wind_turbine_surge.py: a 0.6 m surge at the wave's 20 s with a 0.3 m free
+    mode at 10.5 s over a 60 s window: the wave's harmonic alone leaks the free mode, fitted
+    beside it both come back with the free mode's period."""
+    from benchmarks.wind_turbine_surge import fit, with_free_mode
+
+    t = np.arange(30.0, 90.0, 0.1)
+    w, wf = 2 * math.pi / 20.0, 2 * math.pi / 10.5
+    y = 0.6 * np.cos(w * t + 1.0) + 0.3 * np.cos(wf * t + 0.4) + 0.01
+    (alone,), rms = fit(t, y, [w])
+    assert abs(abs(alone) - 0.6) > 0.005 and rms > 0.1
+    zw, zf, period = with_free_mode(t, y, w)
+    assert abs(zw) == pytest.approx(0.6, rel=1e-4) and np.angle(zw) == pytest.approx(1.0, abs=1e-4)
+    assert abs(zf) == pytest.approx(0.3, rel=1e-3) and period == pytest.approx(10.5, rel=1e-4)

@@ -102,10 +102,12 @@ def runs_folder(quick: bool) -> Path:
 
 
 def run_or_resume(scene, out: Path):
-    """The results of ``scene`` in the folder ``out``: read back if a run of it there has
-    finished (a run of another scene there is refused), resumed from its checkpoint if one
-    stopped (written by any version of the code: it may then not continue bit for bit,
-    which its summary's ``resumed`` says), else run from the start."""
+    """``(results, earlier_cpu_s)`` of ``scene`` in the folder ``out``: read back if a run of
+    it there has finished (a run of another scene there is refused), resumed from its
+    checkpoint if one stopped (written by any version of the code: it may then not continue
+    bit for bit, which its summary's ``resumed`` says), else run from the start.
+    ``earlier_cpu_s`` [s]: the CPU the run recorded in earlier processes (all of it when read
+    back, the earlier segments' when resumed), which the case's own CPU does not count."""
     import json
 
     from cosim.errors import InputError
@@ -119,10 +121,14 @@ def run_or_resume(scene, out: Path):
                              f"COSIM_CASE_RUNS elsewhere")
         s = json.loads(done.read_text())
         if s.get("t_reached_s", 0.0) >= scene.world.duration - 1e-9 and not s.get("error"):
-            return read(out)
+            res = read(out)
+            return res, float(res.summary.get("cpu_s") or 0.0)
     if (out / CHECKPOINT).is_file():
-        return scene.run(out, resume=True, resume_any_version=True, progress=False, yes=True)
-    return scene.run(out, overwrite=True, progress=False, yes=True)
+        res = scene.run(out, resume=True, resume_any_version=True, progress=False, yes=True)
+    else:
+        res = scene.run(out, overwrite=True, progress=False, yes=True)
+    s = res.summary
+    return res, float(s.get("cpu_s") or 0.0) - float(s.get("cpu_s_this_run") or 0.0)
 
 
 def _window(res, window) -> np.ndarray:
@@ -144,6 +150,22 @@ def motion_figures(res, window, omega: float) -> dict:
                           for n in LINES}
     s = res.summary
     return out | {"particles": s.get("particles"), "steps": s.get("steps"), "cpu_s": s.get("cpu_s")}
+
+
+#: the report's plots: (title, the series of each run, its y label)
+PLOTS = (("surge", "base.surge", "surge [m]"), ("heave", "base.heave", "heave [m]"),
+         ("pitch", "base.pitch", "pitch [deg]"), ("front-port line's fairlead tension", "front_port.tension",
+                                                  "tension [N]"))
+
+
+def motion_series(runs: dict) -> dict:
+    """The report's plots (:func:`cosim.report.plot_series`): surge, heave, pitch and the
+    front-port tension against time, one curve per fluid; ``runs`` maps a label to a run."""
+    styles = ("-", "--", ":")
+    return {title: {"xlabel": "t [s]", "ylabel": ylabel,
+                    "curves": {label: {"x": res.t.tolist(), "y": res[name].tolist(), "style": styles[i % 3]}
+                               for i, (label, res) in enumerate(runs.items())}}
+            for title, name, ylabel in PLOTS}
 
 
 def gauge_figures(res, scene, window) -> dict:
@@ -223,11 +245,16 @@ def wind_turbine_sph(quick: bool) -> dict:
     waves = sph_scene(quick)
     omega = 2.0 * math.pi / waves.waves.period
     folder = runs_folder(quick)
-    res = run_or_resume(waves, folder / "waves")
+    res, earlier = run_or_resume(waves, folder / "waves")
     still = still_scene(quick)
+    still_res, cpu = run_or_resume(still, folder / "still")
     figures = {"waves": motion_figures(res, window, omega), "gauges": gauge_figures(res, waves, window),
-               "still": static_draft(run_or_resume(still, folder / "still"), still),
-               "window_s": list(window)}
+               "still": static_draft(still_res, still), "window_s": list(window)}
+    earlier += cpu
+    runs = {f"SPH, dx = {waves.fluid.dx:g} m": res}
     for model in ("potential", "analytic"):
-        figures[model] = motion_figures(run_or_resume(surface_scene(waves, model), folder / model), window, omega)
-    return judge(figures, quick)
+        ref, cpu = run_or_resume(surface_scene(waves, model), folder / model)
+        figures[model] = motion_figures(ref, window, omega)
+        earlier += cpu
+        runs[f"{model} fluid"] = ref
+    return judge(figures, quick) | {"read_back_cpu_s": round(earlier, 1), "series": motion_series(runs)}
