@@ -271,6 +271,7 @@ def test_a_run_interrupted_between_checkpoints_resumes_bit_for_bit(tmp_path, mon
     assert whole.summary["checkpoints"]["written"] == 0 and not (tmp_path / "whole" / "checkpoint.h5").exists()
     from cosim.scene import runner
 
+    share = runner.CHECKPOINT_SHARE
     monkeypatch.setattr(runner, "CHECKPOINT_SHARE", 1.0)  # writing may take all the time: one every other step
     scene = _short(0.1, "world.checkpoint_wall=1e-6")
     step, n = Coupler.step, {"steps": 0}
@@ -287,6 +288,7 @@ def test_a_run_interrupted_between_checkpoints_resumes_bit_for_bit(tmp_path, mon
     monkeypatch.setattr(Coupler, "step", step)
     t = checkpoint.read(tmp_path / "split" / "checkpoint.h5")["meta"]["t"]
     assert 0 < t < 0.1 and round(t / 0.01) * 0.01 != pytest.approx(t, abs=1e-9)  # between two samples
+    monkeypatch.setattr(runner, "CHECKPOINT_SHARE", share)  # the resumed part need not write every other step
     resumed = scene.run(tmp_path / "split", resume=True, progress=False)
     assert resumed.summary["resumed"] and resumed.summary["steps"] == whole.summary["steps"]
     _same_outputs(tmp_path / "whole", tmp_path / "split")

@@ -85,6 +85,7 @@ def test_the_scene_holds_the_sensors_the_case_reads():
         assert all(p.size == pytest.approx(2 * math.sqrt(2) * s.fluid.dx, rel=1e-9) for p in s.probes.pressure)
 
 
+@pytest.mark.long
 def test_dambreak_lobovsky_validation_quick():
     """dx = H/20, t* <= 5 (cosim validate dambreak-lobovsky --quick): the surge at the four
     gauges against both measured runs within the quick variant's 0.06 RMS, its arrival at

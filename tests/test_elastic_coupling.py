@@ -130,7 +130,7 @@ def _side_of_plate(fluid, bodies, top_band):
     return dict(zip(ps.ids[fl], right)), dict(zip(ps.ids[fl], free))
 
 
-@pytest.mark.parametrize("thickness", [0.01, 0.005])
+@pytest.mark.parametrize("thickness", [0.01, pytest.param(0.005, marks=pytest.mark.long)])
 def test_no_fluid_particle_crosses_a_plate_under_two_spacings_thick(thickness):
     """A dam-break column (0.15 x 0.3 m, dx = 10 mm) strikes a plate one spacing (and half a
     spacing) thick with the thin-wall treatment (two columns of particles, each taking its

@@ -53,6 +53,7 @@ def test_the_published_numerical_solutions_lie_as_far_from_the_experiment():
         assert m["rms_rel_vs_numerical"][f"{name}.x"] < 0.01  # itself
 
 
+@pytest.mark.long
 def test_elastic_gate_validation_quick():
     """dx = 5 mm (thin wall), N = 8, 0.3 s (cosim validate elastic-gate --quick). Judged
     against the stated criterion the case does not pass (its docstring: neither do the

@@ -90,6 +90,7 @@ def test_mdbc_rejects_bad_input():
         m.set_offsets([1, 2], np.zeros((2, 3)))
 
 
+@pytest.mark.long
 def test_floating_box_draft_quick():
     """2-D box of 500 kg/m^3 at dx = 12.5 mm floats at the Archimedes draft within
     2 % of its height (measured -1.3 %)."""

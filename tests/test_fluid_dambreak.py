@@ -43,6 +43,7 @@ def test_reference_series_share_one_scaling():
     assert np.abs(dual[:, 1] / table[:, 1] - 1).max() < 0.021
 
 
+@pytest.mark.long
 def test_dambreak_quick_front_and_collapse():
     rec = run("dambreak-2d", quick=True)
     m = rec["metrics"]

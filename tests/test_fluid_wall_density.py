@@ -161,6 +161,7 @@ def test_sloshing_wall_pressure_follows_linear_theory():
     np.testing.assert_allclose(slope, theory, atol=0.05)
 
 
+@pytest.mark.long
 def test_hydrostatic_quick_with_adami_walls_after_settling():
     """Started from the lattice, the free-surface corners ring (largest speed 4.2e-3
     sqrt(g H) at dx = 0.02 m and 1.3e-3 at 0.01 m against 1e-3; fluid.wall_density, 'Why

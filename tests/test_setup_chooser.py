@@ -89,6 +89,7 @@ def _run_auto(name: str):
     assert rec["passed"], (name, rec["outside_tolerance"], {k: rec["metrics"].get(k) for k in rec["tolerances"]})
 
 
+@pytest.mark.long
 @pytest.mark.parametrize("name", QUICK)
 def test_auto_setup_meets_the_quick_tolerance(name):
     _run_auto(name)

@@ -107,6 +107,7 @@ def test_running_mean_max():
     assert v == pytest.approx(500.0, rel=0.03) and 0.495 <= tc <= 0.516
 
 
+@pytest.mark.long
 def test_spheric10_quick():
     r = validation.run("sloshing-spheric10", quick=True)
     m = r["metrics"]
@@ -121,6 +122,7 @@ def test_spheric10_refuses_an_unknown_sensor():
         run_spheric10(0.0186, t_end=0.01, sensor="wall")
 
 
+@pytest.mark.long
 def test_sloshing_frequency_quick():
     """h = 2 dx with walls="adami" (the case's set-up): measured -0.95 % at dx = h/10."""
     r = validation.run("sloshing-frequency", quick=True)
@@ -134,6 +136,7 @@ def test_sloshing_frequency_full():
     assert r["passed"] and r["metrics"]["f1_rel_err"] < 0.02
 
 
+@pytest.mark.long
 def test_sloshing_frequency_with_the_default_settings_is_9_percent_high():
     """The solver's defaults (h = sqrt(2) dx, dynamic walls) on the same quick tank: the
     first mode is 9.4 % above linear theory (the case's docstring: the contact-line spring

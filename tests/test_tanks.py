@@ -50,6 +50,7 @@ def test_the_pressure_is_harmonic_and_vanishes_at_the_surface():
         impulsive_pressure(3.0, 1.0, 90.0)
 
 
+@pytest.mark.long
 def test_inclined_wall_quick():
     r = validation.run("inclined-wall", quick=True)
     m = r["metrics"]

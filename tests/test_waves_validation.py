@@ -49,6 +49,7 @@ def test_best_lag_finds_the_shift_of_a_history():
         assert lag == pytest.approx(delay, abs=0.002) and r > 0.999
 
 
+@pytest.mark.long
 def test_floating_box_waves_quick():
     r = run_case("floating-box-waves", quick=True)
     assert r["passed"], r["metrics"]
