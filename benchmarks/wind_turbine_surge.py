@@ -8,8 +8,11 @@ motion (the excitation plus the added mass times the surge's acceleration, from 
 boundary-element coefficients at the wave's period, given as options). Prints a markdown
 table and the force's split.
 
-    python benchmarks/wind_turbine_surge.py --runs DIR [--window 30 90] [--period 20]
-        [--x-surge 4970 --x-phase 90 --a11 19500]
+    python benchmarks/wind_turbine_surge.py --runs DIR [--sph waves] [--window 30 90]
+        [--period 20] [--x-surge 4970 --x-phase 90 --a11 19500]
+
+``--sph``: the SPH run's folder under DIR (``waves`` in the case's; a variant's label in
+benchmarks/wind_turbine_levers.py's ``--out``).
 
 The defaults of ``--x-surge``, ``--x-phase`` and ``--a11`` are Capytaine's for the base at
 the paper's wave (docs/validation/nearfield.md, "The SPH base's surge phase"): the surge
@@ -26,7 +29,6 @@ from pathlib import Path
 import numpy as np
 from scipy.optimize import minimize_scalar
 
-FLUIDS = {"waves": "SPH", "potential": "potential", "analytic": "analytic"}
 
 
 def fit(t: np.ndarray, y: np.ndarray, omegas) -> tuple[list[complex], float]:
@@ -54,6 +56,7 @@ def read(folder: Path, name: str) -> dict:
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--runs", type=Path, required=True, help="the case's runs (waves/, potential/, analytic/)")
+    ap.add_argument("--sph", default="waves", help="the SPH run's folder under --runs")
     ap.add_argument("--window", type=float, nargs=2, default=(30.0, 90.0))
     ap.add_argument("--period", type=float, default=20.0)
     ap.add_argument("--x-surge", type=float, default=4970.0, help="surge excitation [N] for the wave's amplitude")
@@ -67,10 +70,13 @@ def main(argv=None) -> int:
           "| surge - heave [deg] | heave [m] | fluid Fx [kN] at [deg] |")
     print("|---|---|---|---|---|---|---|")
     found = {}
-    for sub, label in FLUIDS.items():
+    for sub, label in ((a.sph, "SPH"), ("potential", "potential"), ("analytic", "analytic")):
         if not (a.runs / sub / "motion.csv").is_file():
             continue
         m, f = read(a.runs / sub, "motion.csv"), read(a.runs / sub, "loads.csv")
+        if m["t_s"][-1] < a.window[1] - 1e-6:
+            print(f"| {label} | its run ends at {m['t_s'][-1]:g} s, before the window: left out | | | | | |")
+            continue
         im = (m["t_s"] >= a.window[0] - 1e-9) & (m["t_s"] <= a.window[1] + 1e-9)
         il = (f["t_s"] >= a.window[0] - 1e-9) & (f["t_s"] <= a.window[1] + 1e-9)
         (zh,), _ = fit(m["t_s"][im], m["baseheave_m"][im], [w])
@@ -78,11 +84,11 @@ def main(argv=None) -> int:
         (zs,), _ = fit(m["t_s"][im], m["basesurge_m"][im], [w])
         zw, zf, tf = with_free_mode(m["t_s"][im], m["basesurge_m"][im], w)
         (fx,), _ = fit(f["t_s"][il], f["basefluid_Fx_N"][il], [w])
-        found[sub] = (zs / ref, zw / ref, fx / ref)
+        found[label] = (zs / ref, zw / ref, fx / ref)
         print(f"| {label} | {abs(zs):.3f} | {abs(zw):.3f} | {abs(zf):.3f} at {tf:.1f} | {deg(zs / ref):+.0f} "
               f"| {abs(zh):.3f} | {abs(fx) / 1e3:.2f} at {deg(fx / ref):+.0f} |")
-    if "waves" in found and "potential" in found:
-        zs, zw, fx = found["waves"]
+    if "SPH" in found and "potential" in found:
+        zs, zw, fx = found["SPH"]
         ps, pw, _ = found["potential"]
         print(f"\nSPH surge against the potential fluid's: {abs(zs) / abs(ps) - 1:+.1%} (the wave's harmonic), "
               f"{abs(zw) / abs(pw) - 1:+.1%} (the free mode fitted beside it)")
