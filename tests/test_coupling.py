@@ -206,6 +206,7 @@ def test_checkpoint_restart_reproduces_the_run():
         np.testing.assert_array_equal(a, d)
 
 
+@pytest.mark.long
 def test_moored_body_validation_quick():
     rec = run("moored-body", quick=True)
     assert rec["passed"], rec["metrics"]

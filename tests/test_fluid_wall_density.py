@@ -121,6 +121,7 @@ def test_accelerated_tank_wall_pressure_is_exact():
     assert np.abs(f2.ps.p[left] - np.maximum(field(f2.ps.pos), 0)[left]).max() > 0.1 * RHO0 * abs(a[0]) * dx
 
 
+@pytest.mark.long
 def test_sloshing_wall_pressure_follows_linear_theory():
     """Tank 1 m x 0.75 m, water 0.5 m, dx = 5 cm, shaken at the first mode for 2 periods
     then free: over the next 3 periods the pressure of the first wall column rises with

@@ -124,6 +124,7 @@ def test_the_wind_turbine_base_takes_the_lines_step_and_goes_unstable_at_twice_i
         pass
 
 
+@pytest.mark.long
 @pytest.mark.parametrize("model", ["sph-cable", "moordyn"])
 def test_the_base_on_dynamic_lines_settles_at_the_derived_step(model, tmp_path):
     """Barreiro et al. 2016's base on three dynamic lines (20 nodes / segments), waves 0.01 m, the lines

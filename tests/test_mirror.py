@@ -68,7 +68,8 @@ def test_the_half_with_its_images_has_the_whole_tanks_rates(diffusion):
     assert half.max_dt() == pytest.approx(whole.max_dt(), rel=1e-9)
 
 
-@pytest.mark.parametrize("integrator", ["symplectic", pytest.param("verlet", marks=pytest.mark.long)])
+@pytest.mark.long
+@pytest.mark.parametrize("integrator", ["symplectic", "verlet"])
 def test_the_half_follows_the_whole_tank(integrator):
     """0.1 s of sloshing under a tilted gravity, the density re-initialised every 20 steps:
     the half's particles stay where the whole tank's go (to 1e-9 m; rounding alone parts

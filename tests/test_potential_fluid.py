@@ -44,6 +44,7 @@ def test_heave_decay_period_is_the_natural_period():
     assert 0.03 < d["damping_ratio"] < 0.1  # a squat cylinder radiates: the decay is visible
 
 
+@pytest.mark.long
 def test_regular_wave_response_is_the_frequency_domain_rao():
     r = P.time_domain_rao(1.0, GRID, 0.8, periods=16, fit=6)
     for dof in ("surge", "heave"):

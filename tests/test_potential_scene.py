@@ -23,6 +23,7 @@ SCENE = {
 }
 
 
+@pytest.mark.long
 @pytest.mark.skipif(not all(m in sys.modules or __import__("importlib").util.find_spec(m) for m in
                             ("capytaine", "h5netcdf")), reason="needs the potential extra")
 def test_scene_runs_and_heaves_as_the_frequency_domain_predicts(tmp_path):

@@ -144,6 +144,7 @@ def _held_box_3d(half: bool, dx=0.025, L=0.3, W=0.3, D=0.2, box=(0.1, 0.1, 0.05)
     return f, bodies
 
 
+@pytest.mark.long
 def test_a_symmetry_plane_gives_the_whole_body_its_mirrored_half_load():
     """Held under water in 3-D for 0.05 s: the load on the half body (y >= 0, its mirror
     images across y = 0) mirrored across the plane is the whole tank's at every step (the

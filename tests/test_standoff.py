@@ -112,6 +112,7 @@ def test_faces_off_the_lattice_axes_are_left_alone(kind, size, rot):
     assert np.array_equal(fit, pts) and np.all(vol == 1.0)
 
 
+@pytest.mark.long
 def test_a_held_box_carries_archimedes_whatever_its_faces_phase():
     """2-D SPH: a box held with its bottom face a quarter spacing below a lattice plane,
     the water settled (1 s, velocities damped) around it. Without the fit the water keeps

@@ -86,6 +86,7 @@ def study(tmp_path_factory):
     return scene, out, res
 
 
+@pytest.mark.long
 def test_coupling_step_converges_at_second_order(study):
     """The predictor-corrector coupling (the analytic fluid's default scheme) is second
     order in the coupling step: the study's Richardson extrapolation observes p ~ 2."""
@@ -100,6 +101,7 @@ def test_coupling_step_converges_at_second_order(study):
     assert js["recommendation"]["tol"] == 1e-5 and len(js["rows"]) == 3
 
 
+@pytest.mark.long
 def test_repeated_study_costs_nothing(study):
     scene, out, first = study
     again = run_study(scene, {"coupling.dt": [0.01, 0.005, 0.0025]}, ["box.surge:min"], out,
@@ -127,12 +129,14 @@ def test_a_run_that_writes_more_than_a_pipe_holds_is_not_stalled(tmp_path):
     assert (tmp_path / "stderr.log").read_text() == text
 
 
+@pytest.mark.long
 def test_unknown_metric_series_is_named(study):
     scene, out, _ = study
     with pytest.raises(InputError, match="no series 'box.roll'"):
         run_study(scene, {"coupling.dt": [0.01]}, ["box.roll:max"], out, serial=True)
 
 
+@pytest.mark.long
 def test_cli_study_on_dask(tmp_path):
     """The command line, on a local Dask cluster of two workers; it leaves nothing in the
     temporary folder (Dask's scratch space, the runs' build folders and unpacked FMUs)."""
@@ -236,6 +240,7 @@ def test_a_field_of_one_kind_is_set_on_the_runs_of_that_kind_alone(tmp_path):
     assert not any("duration" in n for c in cs for n in c.notes)
 
 
+@pytest.mark.long
 def test_cli_sets_a_field_of_one_kind_on_the_runs_of_that_kind(tmp_path):
     """``cosim study`` on an SPH scene turned analytic by --set, varying back to SPH: the SPH
     run takes the --set spacing, the analytic one says it did not."""
