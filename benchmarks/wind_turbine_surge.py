@@ -1,8 +1,9 @@
 """The flagship's surge, read apart: the `wind-turbine-sph` case's kept runs (its wave run in
 SPH and the potential-flow and analytic references, ``COSIM_CASE_RUNS/wind-turbine-sph/full``)
 fitted over a window with the wave's first harmonic alone (the case's fit: with a constant,
-a linear trend and the second harmonic) and with the moored base's free surge mode beside it (its period fitted too), so that the free mode's
-leak into the wave's harmonic is told from a steady excess; the phases against the heave;
+a linear trend and the second harmonic) and with the moored base's free surge mode beside
+it (its period fitted too), so that the free mode's leak into the wave's harmonic is told
+from a steady excess; the phases against the heave;
 and the SPH fluid's horizontal force against what linear potential flow puts on the same
 motion (the excitation plus the added mass times the surge's acceleration, from the hull's
 boundary-element coefficients at the wave's period, given as options). Prints a markdown
@@ -29,8 +30,8 @@ from pathlib import Path
 import numpy as np
 from scipy.optimize import minimize_scalar
 
+from cosim.scene.runner import read
 from cosim.validations.wave_propagation import harmonics
-
 
 
 def fit(t: np.ndarray, y: np.ndarray, omegas) -> tuple[list[complex], float]:
@@ -48,11 +49,6 @@ def with_free_mode(t, y, omega, periods=(6.0, 16.0)) -> tuple[complex, complex, 
     best = minimize_scalar(lambda T: fit(t, y, [omega, 2 * math.pi / T])[1], bounds=periods, method="bounded")
     (zw, zf), _ = fit(t, y, [omega, 2 * math.pi / best.x])
     return zw, zf, float(best.x)
-
-
-def read(folder: Path, name: str) -> dict:
-    a = np.genfromtxt(folder / name, delimiter=",", names=True)
-    return {k: a[k] for k in a.dtype.names}
 
 
 def main(argv=None) -> int:
@@ -73,19 +69,22 @@ def main(argv=None) -> int:
     print("|---|---|---|---|---|---|---|")
     found = {}
     for sub, label in ((a.sph, "SPH"), ("potential", "potential"), ("analytic", "analytic")):
-        if not (a.runs / sub / "motion.csv").is_file():
+        if not (a.runs / sub / "summary.json").is_file():
             continue
-        m, f = read(a.runs / sub, "motion.csv"), read(a.runs / sub, "loads.csv")
-        if m["t_s"][-1] < a.window[1] - 1e-6:
-            print(f"| {label} | its run ends at {m['t_s'][-1]:g} s, before the window: left out | | | | | |")
+        res = read(a.runs / sub)
+        if res.t[-1] < a.window[1] - 1e-6:
+            print(f"| {label} | its run ends at {res.t[-1]:g} s, before the window: left out | | | | | |")
             continue
-        im = (m["t_s"] >= a.window[0] - 1e-9) & (m["t_s"] <= a.window[1] + 1e-9)
-        il = (f["t_s"] >= a.window[0] - 1e-9) & (f["t_s"] <= a.window[1] + 1e-9)
-        (zh,), _ = fit(m["t_s"][im], m["baseheave_m"][im], [w])
+        late = (res.t >= a.window[0] - 1e-9) & (res.t <= a.window[1] + 1e-9)
+        ts = res.t[late]
+
+        def h(name):  # the case's first harmonic (a constant, a trend, the second harmonic)
+            return complex(harmonics(ts, res[name][late], w, trend=True))
+
+        zh = h("base.heave")
         ref = zh / abs(zh)
-        zs = complex(harmonics(m["t_s"][im], m["basesurge_m"][im], w, trend=True))  # the case's figure
-        zw, zf, tf = with_free_mode(m["t_s"][im], m["basesurge_m"][im], w)
-        (fx,), _ = fit(f["t_s"][il], f["basefluid_Fx_N"][il], [w])
+        zs, fx = h("base.surge"), h("base.fluid_Fx")
+        zw, zf, tf = with_free_mode(ts, res["base.surge"][late], w)
         found[label] = (zs / ref, zw / ref, fx / ref)
         print(f"| {label} | {abs(zs):.3f} | {abs(zw):.3f} | {abs(zf):.3f} at {tf:.1f} | {deg(zs / ref):+.0f} "
               f"| {abs(zh):.3f} | {abs(fx) / 1e3:.2f} at {deg(fx / ref):+.0f} |")
