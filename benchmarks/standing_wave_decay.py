@@ -1,0 +1,123 @@
+"""How fast a standing wave loses its energy in a closed 2-D tank: a quick probe of the
+numerical damping that makes travelling waves lose height (docs/validation/
+wave-propagation_history.md), at a few seconds a run where the flume takes minutes.
+
+The tank is one wavelength long, L = 1.373 m, water d = 0.3 m (the wave-propagation case's
+wave: kd = 1.37, T = 1 s); its second sloshing mode has the wavenumber k = 2 pi / L. The water
+is settled at rest first (``Fluid.settle``, 2 s), then given linear theory's velocity of that
+mode at the instant its surface is flat (Dean & Dalrymple 1991, §4.3: standing waves,
+``u = -A cosh kz sin kx``, ``w = A sinh kz cos kx``, ``A = a g k / (omega cosh kd)``, z from
+the bed, amplitude ``a`` = 2 cm). Read every T/32: the fluid's kinetic energy, averaged over
+each period (half the wave's energy, whatever the phase of the modes), and the elevation at
+the middle. The decay of the amplitude per period is ``1 - exp(s / 2)``, ``s`` the slope of a
+straight line through log(mean kinetic energy) over the periods after the first.
+
+Why the kinetic energy, not the total: the water keeps sinking by a fraction of a millimetre a
+period while it moves (the particles pack closer than their density says; docs/validation/
+nearfield.md), and the potential energy that releases is several times the wave's.
+
+A travelling wave that loses a fraction ``e`` of its height per period in time loses ``e /
+n`` per wavelength in space (energy travels at the group velocity ``n c``; n = 0.678 here).
+The tank's walls add the friction of the standing wave's vertical flow along them, so the
+figure is a probe to compare set-ups with, not the flume's decay.
+
+    python benchmarks/standing_wave_decay.py --rows 10 --periods 10 --set alpha=0 --set alpha=0 delta=0.2
+
+Each ``--set`` is one run (FluidConfig settings on top of the wave set-up,
+``cosim.scene.setup.settings("waves", 2)``); with none, the set-up alone.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import time
+
+import numpy as np
+
+from machine import cpu_name  # benchmarks/machine.py, beside this script
+from wave_propagation import setting_value  # benchmarks/, beside this script
+from cosim.scene.setup import settings
+
+G = 9.81
+DEPTH = 0.3
+#: the tank's length [m]: the wave-propagation case's wavelength (d = 0.3 m, T = 1 s)
+LENGTH = 1.3729489294697979
+AMPLITUDE = 0.02
+
+
+def run(rows: int, periods: int, extra: dict) -> dict:
+    """One run at ``rows`` particle rows over the depth for ``periods`` periods."""
+    from fluid.geometry import set_hydrostatic, tank_with_water
+    from fluid.probes import surface_elevation
+    from fluid.solver import Fluid, FluidConfig
+
+    k = 2.0 * math.pi / LENGTH
+    omega = math.sqrt(G * k * math.tanh(k * DEPTH))
+    T = 2.0 * math.pi / omega
+    dx = DEPTH / rows
+    cfg = FluidConfig(dim=2, dx=dx, g=G, **{"u_max": math.sqrt(G * DEPTH), **settings("waves", 2), **extra})
+    ps = tank_with_water(2, dx, LENGTH, DEPTH, 1.6 * DEPTH, layers=math.ceil(2.0 * cfg.h_coef - 1e-9)).particles
+    set_hydrostatic(ps, DEPTH, cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g)
+    fluid = Fluid(cfg, ps)
+    fluid.initialize(0.0)
+    fluid.settle(2.0)
+    water = fluid.ps.kind == 0
+    x, z = fluid.ps.pos[water, 0], fluid.ps.pos[water, 1]
+    A = AMPLITUDE * G * k / (omega * math.cosh(k * DEPTH))
+    fluid.ps.vel[water, 0] = -A * np.cosh(k * z) * np.sin(k * x)
+    fluid.ps.vel[water, 1] = A * np.sinh(k * z) * np.cos(k * x)
+    ke0 = fluid.kinetic_energy()
+    every = T / 32.0
+    ts, ke, eta = [0.0], [ke0], [surface_elevation(fluid, [0.5 * LENGTH])[0] - DEPTH]
+    cpu0, t = time.process_time(), 0.0
+    for _ in range(32 * periods):
+        fluid.advance(t, every)
+        t += every
+        ts.append(t)
+        ke.append(fluid.kinetic_energy())
+        eta.append(surface_elevation(fluid, [0.5 * LENGTH])[0] - DEPTH)
+    ts, ke, eta = np.array(ts), np.array(ke), np.array(eta)
+    period_of = np.minimum((ts / T + 1e-9).astype(int), periods - 1)
+    mean_ke = np.array([ke[period_of == p].mean() for p in range(periods)])
+    amp = []
+    for p in range(periods):  # the middle's elevation: a sin(omega t) (flat at t = 0)
+        m = period_of == p
+        M = np.stack([np.cos(omega * ts[m]), np.sin(omega * ts[m]), np.ones(m.sum())], 1)
+        c = np.linalg.lstsq(M, eta[m], rcond=None)[0]
+        amp.append(math.hypot(c[0], c[1]) / AMPLITUDE)
+    slope = np.polyfit(np.arange(1, periods), np.log(mean_ke[1:]), 1)[0]
+    decay = float(-math.expm1(0.5 * slope))
+    return {"rows": rows, "set": extra, "decay_per_period": decay, "per_wavelength_if_travelling": decay / 0.678,
+            "mean_ke_over_start": np.round(mean_ke / ke0, 4).tolist(), "middle_amplitude_over_a": np.round(amp, 3).tolist(),
+            "period_s": T, "particles": int(ps.n), "steps": int(fluid.counters.steps),
+            "cpu_s": round(time.process_time() - cpu0, 1)}
+
+
+def main(argv=None) -> None:
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--rows", nargs="+", type=int, default=[10], help="particle rows over the depth")
+    ap.add_argument("--periods", type=int, default=10)
+    ap.add_argument("--set", nargs="*", action="append", metavar="KEY=VALUE",
+                    help="one run's FluidConfig settings on top of the wave set-up (repeat for more runs)")
+    args = ap.parse_args(argv)
+    variants = [{k: setting_value(v) for k, v in (s.split("=", 1) for s in group)} for group in (args.set or [[]])]
+    print(f"# CPU: {cpu_name()}")
+    rows_out = []
+    for rows in args.rows:
+        for extra in variants:
+            r = run(rows, args.periods, extra)
+            print(json.dumps(r), flush=True)
+            rows_out.append(r)
+    print("\n| rows | settings on the wave set-up | decay per period | mean kinetic energy / start, last 3 periods "
+          "| particles | steps | CPU s |\n|---|---|---|---|---|---|---|")
+    for r in rows_out:
+        s = " ".join(f"{k}={v}" for k, v in r["set"].items()) or "(none)"
+        print(f"| {r['rows']} | {s} | {100 * r['decay_per_period']:.2f} % | "
+              f"{' '.join(f'{v:.3f}' for v in r['mean_ke_over_start'][-3:])} | {r['particles']} | {r['steps']} "
+              f"| {r['cpu_s']:.0f} |")
+
+
+if __name__ == "__main__":
+    main()
