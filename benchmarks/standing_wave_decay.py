@@ -106,7 +106,8 @@ def run(rows: int, periods: int, extra: dict) -> dict:
         return float(-math.expm1(np.polyfit(np.arange(1, periods), np.log(x[1:]), 1)[0]))
 
     decay = per_period(np.array(mode))
-    return {"rows": rows, "set": extra, "decay_per_period": decay, "per_wavelength_if_travelling": decay / 0.678,
+    n = 0.5 * (1.0 + 2.0 * k * DEPTH / math.sinh(2.0 * k * DEPTH))  # group over phase velocity
+    return {"rows": rows, "set": extra, "decay_per_period": decay, "per_wavelength_if_travelling": decay / n,
             "decay_of_the_middle_elevation": per_period(np.array(amp)),
             "decay_of_the_kinetic_energy_amplitude": per_period(np.sqrt(mean_ke)),
             "mode_amplitude_over_start": np.round(mode, 4).tolist(),
