@@ -20,7 +20,7 @@ particles pack closer than their density says; docs/validation/nearfield.md): th
 energy that releases is several times the wave's, so no energy balance is read.
 
 A travelling wave that loses a fraction ``e`` of its height per period in time loses ``e /
-n`` per wavelength in space (energy travels at the group velocity ``n c``; n = 0.678 here).
+n`` per wavelength in space (energy travels at the group velocity ``n c``; n = 0.677 here).
 The tank's walls add the friction of the standing wave's vertical flow along them, so the
 figure is a probe to compare set-ups with, not the flume's decay.
 
