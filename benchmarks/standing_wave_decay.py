@@ -42,11 +42,11 @@ import numpy as np
 from machine import cpu_name  # benchmarks/machine.py, beside this script
 from wave_propagation import setting_value  # benchmarks/, beside this script
 from cosim.scene.setup import settings
+from cosim.validations.wave_propagation import G, WP_DEPTH as DEPTH, WP_PERIOD, harmonics
+from fluid.wavemaker import wavenumber
 
-G = 9.81
-DEPTH = 0.3
-#: the tank's length [m]: the wave-propagation case's wavelength (d = 0.3 m, T = 1 s)
-LENGTH = 1.3729489294697979
+#: the tank's length [m]: the wave-propagation case's wavelength
+LENGTH = 2.0 * math.pi / wavenumber(WP_PERIOD, DEPTH, G)
 AMPLITUDE = 0.02
 
 
@@ -56,9 +56,8 @@ def run(rows: int, periods: int, extra: dict) -> dict:
     from fluid.probes import surface_elevation
     from fluid.solver import Fluid, FluidConfig
 
-    k = 2.0 * math.pi / LENGTH
-    omega = math.sqrt(G * k * math.tanh(k * DEPTH))
-    T = 2.0 * math.pi / omega
+    k, T = 2.0 * math.pi / LENGTH, WP_PERIOD
+    omega = 2.0 * math.pi / T
     dx = DEPTH / rows
     cfg = FluidConfig(dim=2, dx=dx, g=G, **{"u_max": math.sqrt(G * DEPTH), **settings("waves", 2), **extra})
     ps = tank_with_water(2, dx, LENGTH, DEPTH, 1.6 * DEPTH, layers=math.ceil(2.0 * cfg.h_coef - 1e-9)).particles
@@ -96,11 +95,8 @@ def run(rows: int, periods: int, extra: dict) -> dict:
     amp, mode = [], []
     for p in range(periods):  # first harmonics over each period: the middle's elevation, the mode's velocity
         m = period_of == p
-        M = np.stack([np.cos(omega * ts[m]), np.sin(omega * ts[m]), np.ones(m.sum())], 1)
-        c = np.linalg.lstsq(M, eta[m], rcond=None)[0]
-        amp.append(math.hypot(c[0], c[1]) / AMPLITUDE)
-        c = np.linalg.lstsq(M, q[m], rcond=None)[0]
-        mode.append(math.hypot(c[0], c[1]) / A)
+        amp.append(abs(harmonics(ts[m], eta[m], omega)) / AMPLITUDE)
+        mode.append(abs(harmonics(ts[m], q[m], omega)) / A)
 
     def per_period(x):  # 1 - exp(slope of log x over the periods after the first)
         return float(-math.expm1(np.polyfit(np.arange(1, periods), np.log(x[1:]), 1)[0]))
