@@ -87,9 +87,9 @@ class SPHFluid:
         its own boundary group, so that the impulse the fluid exchanged with it over an
         advance, and its moment about the origin, are known and split between its two
         links with the blending weights (momentum exchanged exactly, as for rigid bodies).
-    zones:
-        Relaxation zones (``fluid.relaxation.Slab``: a near field's, ``fluid.nearfield``),
-        given to the fluid when it is built at attachment.
+    zones, controllers:
+        A near field's relaxation zones (``fluid.relaxation.Slab``) and absorbing end walls
+        (``Fluid.controllers``, ``fluid.wall_absorption``), given to the fluid at attachment.
 
     A symmetry plane y = 0 (``config.symmetry_y``, :mod:`fluid.mirror`): each rigid body
     keeps its half y >= 0 and gets that half's load mirrored (:meth:`_to_wrench3`).
@@ -98,7 +98,7 @@ class SPHFluid:
     def __init__(self, config: FluidConfig, fluid_points, walls=(), *, z_surface: float | None = None,
                  surface_normal_to_gravity: bool = False,
                  body_layers: int | None = None, boundary: str = "mdbc", motions: dict | None = None,
-                 elastic=(), zones=()):
+                 elastic=(), zones=(), controllers=()):
         if boundary not in ("mdbc", "dbc"):
             raise InputError(f"SPH fluid: boundary={boundary!r}; choose 'mdbc' or 'dbc'")
         self.boundary = boundary
@@ -116,6 +116,7 @@ class SPHFluid:
         self.elastic_beams = list(elastic)
         self.elastic = []  #: bodies.elastic.ElasticBody per beam, made at attachment
         self.zones = list(zones)  #: relaxation zones (fluid.relaxation), given to the fluid at attachment
+        self.controllers = list(controllers)  #: the fluid's controllers (Fluid.controllers), given alike
         self.symmetry = config.symmetry_y is not None
         if self.symmetry and (config.symmetry_y != 0.0 or self.elastic_beams):
             raise InputError(f"SPH fluid: a symmetry plane (symmetry_y = {config.symmetry_y}) is the plane y = 0 "
@@ -228,6 +229,7 @@ class SPHFluid:
         for group, motion in self.motions.items():
             self.fluid.prescribe_motion(group, motion)
         self.fluid.zones.extend(self.zones)
+        self.fluid.controllers.extend(self.controllers)
         self.n_bodies = bodies.n_bodies
         self._mdbc = None
         if self.boundary == "mdbc":

@@ -148,19 +148,45 @@ class NearFieldBox:
         s = [x * e[0] + y * e[1] for x in (self.x0, self.x1) for y in ys]
         return min(s) - excursion(sea), max(s) + excursion(sea)
 
-    def zones(self, sea, rate: float, drift: bool = True) -> list:
+    def zones(self, sea, rate: float, drift: bool = True, ends: tuple | None = None) -> list:
         """The relaxation zones (weight 1 at the walls), relaxing at ``rate`` [1/s] there
         towards the sea's velocity (``drift``: and its return current,
         :func:`return_current`): one inside each end wall, 3-D one inside each side wall
-        when the box has side zones."""
+        when the box has side zones. ``ends``: the near and far end walls' absorbing
+        motions (:meth:`absorbing_ends`), whose correction's velocity each end zone adds to
+        its target, so that the zone lets pass what the wall absorbs."""
         target = sea_velocity(sea, drift, self.reach(sea))
-        out = [Slab(0, self.x0 + self.zone, self.x0, rate, target), Slab(0, self.x1 - self.zone, self.x1, rate, target)]
+        near, far = (target, target) if ends is None else (_with_wall(target, e) for e in ends)
+        out = [Slab(0, self.x0 + self.zone, self.x0, rate, near), Slab(0, self.x1 - self.zone, self.x1, rate, far)]
         if self.y is not None and self.side_zone is not None:
             (y0, y1), w = self.y, self.side_zone
             out.append(Slab(1, y1 - w, y1, rate, target))
             if not self.mirror:
                 out.append(Slab(1, y0 + w, y0, rate, target))
         return out
+
+    def absorbing_ends(self, sea, dx: float, h: float) -> tuple:
+        """The near and far end walls' motions on the sea's orbits with active absorption
+        (:class:`fluid.wall_absorption.AbsorbingEnd`), each reading the elevation over a
+        strip two kernel supports (4 ``h``) wide in front of it, beyond the sea's
+        :func:`excursion` and a spacing ``dx`` [m] from its mean place; add both to the
+        fluid's ``controllers`` and pass them to :meth:`zones`."""
+        from fluid.wall_absorption import AbsorbingEnd
+
+        gap, strip = excursion(sea) + dx, 4.0 * h
+        width = 1.0 if self.y is None else self.y[1] - self.y[0]
+        bed, orbits = sea.level - sea.depth, FollowingWall(sea)
+        return (AbsorbingEnd(sea, orbits, -1, (self.x0 + gap, self.x0 + gap + strip), width, bed),
+                AbsorbingEnd(sea, orbits, 1, (self.x1 - gap - strip, self.x1 - gap), width, bed))
+
+
+def _with_wall(target, end):
+    """``target`` plus the absorbing wall ``end``'s correction velocity along x."""
+    def with_wall(pos, t):
+        v = target(pos, t)
+        v[:, 0] += end.rate
+        return v
+    return with_wall
 
 
 def whole_spacings(x0: float, x1: float, dx: float) -> float:

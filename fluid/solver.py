@@ -250,6 +250,10 @@ class Fluid:
         #: relaxation zones (fluid.relaxation: absorbing layers, imposed waves), applied to
         #: the fluid's velocities at the end of every step
         self.zones: list = []
+        #: controllers of prescribed motions that read the fluid (``update(ps, t, dt)`` at the
+        #: end of every step, before the zones; ``save_state``/``load_state``: the near
+        #: field's absorbing end walls, fluid.wall_absorption)
+        self.controllers: list = []
         if c.walls == "adami":
             from fluid.wall_density import AdamiWalls
             self.boundary_correction = AdamiWalls(self)
@@ -407,6 +411,7 @@ class Fluid:
             pos, _ = motion(t0, ref)
             frozen[group] = (lambda t, r, p=np.asarray(pos, float): (p, np.zeros_like(p)), ids, ref)
         self._motions = frozen
+        controls = [c.save_state() for c in self.controllers]  # they read waves, not the settling
         steps0 = self.counters.steps
         try:
             ps.vel[bnd] = 0.0
@@ -424,6 +429,8 @@ class Fluid:
         finally:
             self._motions = motions
             self.t = t0
+            for control, saved in zip(self.controllers, controls):
+                control.load_state(saved)
         ps = self.ps
         bnd = (ps.kind != Kind.FLUID) & (ps.ids >= 0)
         ps.vel[bnd] = bnd_vel[np.searchsorted(bnd_ids, ps.ids[bnd])]
@@ -445,7 +452,8 @@ class Fluid:
                 "removed": dict(self.counters.removed),
                 "aux": {k: v.copy() for k, v in self._aux.items()},  # Verlet's n-1 state
                 "rates": tuple(None if a is None else a.copy() for a in rates) + (self._limit, self._stale),
-                "mirror": None if self.mirror is None else (self.mirror.rows.copy(), self.mirror.src.copy())}
+                "mirror": None if self.mirror is None else (self.mirror.rows.copy(), self.mirror.src.copy()),
+                "controllers": [c.save_state() for c in self.controllers]}
 
     def load_state(self, state) -> None:
         self.ps = state["ps"].copy()
@@ -453,6 +461,8 @@ class Fluid:
         self.counters.steps = state["steps"]
         self.counters.removed = dict(state["removed"])
         self._aux = {k: v.copy() for k, v in state["aux"].items()}
+        for control, saved in zip(self.controllers, state.get("controllers", ())):
+            control.load_state(saved)
         if self.mirror is not None and state.get("mirror") is not None:  # the images' sources in this order
             self.mirror.rows, self.mirror.src = (np.array(a, np.int64) for a in state["mirror"])
         if "rates" not in state or (self.mirror is not None and state.get("mirror") is None):
@@ -700,6 +710,8 @@ class Fluid:
         self.t += dt
         self._place_prescribed(self.t)
         ps = self.ps
+        for control in self.controllers:
+            control.update(ps, self.t, dt)
         for zone in self.zones:
             zone.apply(ps.pos, ps.vel, ps.kind, self.t, dt, self._aux["vel"] if self.config.integrator == "verlet"
                        else None)

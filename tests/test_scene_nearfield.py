@@ -279,3 +279,37 @@ def test_a_near_field_re_initialises_its_density(tmp_path):
     assert "near field" in near.reason
     assert all(near.config[k] == v for k, v in TRAVELLING_WAVES.items())
     assert choose(_scene(tmp_path, SCENE, "fluid.mls_every=0")).config["mls_every"] == 0
+
+
+def test_absorbing_end_walls_record_their_correction_and_resume_bit_for_bit(tmp_path):
+    """``domain.absorbing_walls``: the end walls' correction and the elevation they read
+    are recorded (``end_walls``: near_wall.xi, ...); a run stopped at a checkpoint and
+    resumed equals the run made in one go (the walls' state travels with the fluid's);
+    without the field there is no such series."""
+    s = _scene(tmp_path, SCENE, "domain.absorbing_walls=true", "world.duration=0.1", "world.sample_every=0.025",
+               "world.checkpoint_every=0.05")
+    whole = s.run(out=tmp_path / "whole", progress=False)
+    s.with_values(["world.duration=0.05"]).run(out=tmp_path / "split", progress=False)
+    resumed = s.run(out=tmp_path / "split", resume=True, progress=False)
+    assert resumed.summary["resumed"]
+    for name in whole.names:
+        np.testing.assert_array_equal(resumed[name], whole[name], err_msg=name)
+    # the walls' reading starts at the fluid's own offset, which the filter takes off:
+    # within a tenth of a second the correction stays far below a spacing
+    xi = np.abs(np.concatenate([whole["near_wall.xi"], whole["far_wall.xi"]]))
+    assert np.isfinite(xi).all() and xi.max() < 0.05 * 0.02 and np.isfinite(whole["far_wall.eta"]).all()
+    assert (tmp_path / "whole" / "end_walls.csv").exists()
+    assert "near_wall.xi" not in _scene(tmp_path).run(out=tmp_path / "plain", progress=False).names
+
+
+def test_a_kept_run_from_before_a_new_field_is_the_same_scene(tmp_path):
+    """A run kept before a field was added to the scenes (its scene.toml lacks it) is the
+    same scene as one that has the field at its default, and another where it differs."""
+    from cosim.scene.runner import kept_scene_difference
+
+    s = _scene(tmp_path)
+    text = s.to_toml()
+    assert "\nabsorbing_walls = false\n" in text
+    (tmp_path / "scene.toml").write_text(text.replace("\nabsorbing_walls = false\n", "\n"))
+    assert kept_scene_difference(s, tmp_path) is None
+    assert kept_scene_difference(s.with_values(["domain.absorbing_walls=true"]), tmp_path) == "domain.absorbing_walls"

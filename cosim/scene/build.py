@@ -53,6 +53,7 @@ class Built:
     near_field: object = None  #: a near field's box (fluid.nearfield.BoxChoice), as chosen
     sph_domain: object = None  #: a moving tank's SPH domain (cosim.scene.sph_domain.MovingDomain), as chosen
     sea: object = None  #: a near field's incident sea (fluid.waves)
+    controllers: list = field(default_factory=list)  #: the fluid's controllers (fluid.solver.Fluid.controllers)
 
 
 def site_name(fairlead: str) -> str:
@@ -730,7 +731,8 @@ def sph_fluid(scene, out: Built) -> None:
 
         out.fluid = SPHFluid(cfg, pts, walls, z_surface=out.level if turned is None else turned,
                              surface_normal_to_gravity=turned is not None, boundary=scene.fluid.body_boundary,
-                             motions=motions, elastic=list(out.plates.values()), zones=zones)
+                             motions=motions, elastic=list(out.plates.values()), zones=zones,
+                             controllers=out.controllers)
         return
     from fluid.equations import hydrostatic_density
     from fluid.geometry import assemble, set_hydrostatic
@@ -750,6 +752,7 @@ def sph_fluid(scene, out: Built) -> None:
     for group, motion in motions.items():
         fluid.prescribe_motion(group, motion)
     fluid.zones.extend(zones)
+    fluid.controllers.extend(out.controllers)
     out.fluid = out.sph = fluid
 
 
@@ -788,6 +791,10 @@ def _near_field(scene, cfg, out: Built):
     c = out.near_field = box_for(scene)
     box = near_field_box(cfg.dx, c.x[0], c.x[1], sea, c.height, c.zone, layers=math.ceil(2.0 * cfg.h_coef - 1e-9),
                          y=c.y, side_zone=None if c.y is None else c.zone, mirror=scene.domain.symmetry)
+    rate = scene.domain.rate * 2.0 * math.pi / sea.peak_period
+    if scene.domain.absorbing_walls:
+        ends = box.absorbing_ends(sea, cfg.dx, cfg.h)
+        out.controllers.extend(ends)
+        return box.fluid, box.walls, {NEAR_END_GROUP: ends[0], FAR_END_GROUP: ends[1]}, box.zones(sea, rate, ends=ends)
     wall = following_wall(sea)
-    zones = box.zones(sea, scene.domain.rate * 2.0 * math.pi / sea.peak_period)
-    return box.fluid, box.walls, {NEAR_END_GROUP: wall, FAR_END_GROUP: wall}, zones
+    return box.fluid, box.walls, {NEAR_END_GROUP: wall, FAR_END_GROUP: wall}, box.zones(sea, rate)

@@ -418,9 +418,36 @@ class Energy(Probe):
                       lambda: np.array(fluid_energies(sph)))]
 
 
+class EndWalls(Probe):
+    """``end_walls``: a near field's absorbing end walls (``domain.absorbing_walls``,
+    :mod:`fluid.wall_absorption`): each wall's correction ``xi`` to the sea's orbits and
+    the elevation ``eta`` beyond the sea's that it reads in front of it (what comes back)."""
+
+    NAMES = ("near_wall.xi", "far_wall.xi", "near_wall.eta", "far_wall.eta")
+
+    def names(self, scene):
+        from cosim.scene.spec import NearField
+
+        return list(self.NAMES) if isinstance(scene.domain, NearField) and scene.domain.absorbing_walls else []
+
+    def groups(self, scene, built):
+        if not self.names(scene):
+            return []
+        near, far = built.controllers[:2]
+
+        def walls():
+            ps, t = built.sph.ps, built.sph.t
+            return np.array([near.xi(t), far.xi(t), near.beyond_sea(ps, t), far.beyond_sea(ps, t)])
+
+        return [Group("end_walls", list(self.NAMES), ["m"] * 4, walls,
+                      labels=["near end wall's correction", "far end wall's correction",
+                              "elevation beyond the sea's before the near end wall",
+                              "elevation beyond the sea's before the far end wall"])]
+
+
 #: the built-in probes, in the order of the outputs' series
 PROBES = {"motion": Motion(), "loads": Loads(), "tensions": Tensions(), "line_states": LineStates(),
-          "gauges": Gauges(), "pressure": Pressure(), "energy": Energy()}
+          "gauges": Gauges(), "pressure": Pressure(), "energy": Energy(), "end_walls": EndWalls()}
 
 
 class _PotentialSea:

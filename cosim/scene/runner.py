@@ -352,10 +352,17 @@ def plot_checkpoint(out, png=None) -> Path:
 def kept_scene_difference(scene, out) -> str | None:
     """The first field (its key path) in which the run kept in the folder ``out`` (its
     ``scene.toml``) differs from ``scene``, the fields a resumed run may change
-    (:data:`RESUMABLE`) not counted; None where they are one scene."""
+    (:data:`RESUMABLE`) not counted; None where they are one scene. A field added to the
+    scenes since the run was kept counts at its default (the run had it so)."""
     import tomllib
 
+    from cosim.scene.toml_io import from_dict, to_dict
+
     kept = tomllib.loads((Path(out) / "scene.toml").read_text(encoding="utf-8"))  # as the run wrote it: every field
+    try:
+        kept = to_dict(from_dict(kept))
+    except Exception:  # a field since removed or renamed: compared as written
+        pass
     kept = json.loads(json.dumps(_without_resumable(kept), default=_json))
     mine = _scene_identity(scene)[0]
     return None if kept == mine else _first_difference(kept, mine)

@@ -496,6 +496,9 @@ class NearField(Spec):
                       "m", lo=0, lo_open=True)
     rate: float = num(2.0, "relaxation rate at the walls, in the sea's (peak) angular frequencies", lo=0,
                       lo_open=True, hi=50)
+    absorbing_walls: bool = flag(False, "the end walls also move with the waves that come back to them (active "
+                                        "absorption, fluid.wall_absorption): waves much longer than the box, which "
+                                        "its zones reflect, leave through them")
     symmetry: bool = flag(False, "3-D: the plane y = 0 is a symmetry plane of the scene: only y >= 0 is simulated "
                                  "(half the particles), the water near the plane mirrored across it; the waves, "
                                  "bodies, lines and probes must be symmetric about it")

@@ -134,8 +134,9 @@ class CudaFluid(Fluid):
     # ------------------------------------------------------------------ the step
     def step(self, dt: float):
         c = self.config
-        if self.zones:
-            raise InputError("fluid: relaxation zones (Fluid.zones) run on the CPU only; use device='cpu'")
+        if self.zones or self.controllers:
+            raise InputError("fluid: relaxation zones and absorbing walls (Fluid.zones, Fluid.controllers) run on the "
+                             "CPU only; use device='cpu'")
         dev = self._to_device()
         if c.integrator == "verlet":
             loads = self._group_sums()
