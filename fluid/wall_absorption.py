@@ -11,9 +11,10 @@ builds up (measured: the base's surge grows with the box). A piston that absorbs
 wave moves with the wave's depth-averaged velocity, ``U = (omega / k) eta / d`` for a
 progressive wave of elevation ``eta`` (its volume flux ``c eta``): the wall is given that
 velocity for the elevation ``eta_s = eta - eta_I`` it finds in front of it beyond the
-incident sea's (the active absorption of Schäffer & Klopman 2000, J. Waterway Port Coastal
-Ocean Eng. 126(2), Eq. 8 in its shallow-water form, which DualSPHysics' AWAS applies to its
-piston: Altomare et al. 2017, Coastal Eng. 127, Eq. 20).
+incident sea's: the shallow-water active absorption reviewed by Schäffer & Klopman 2000
+(J. Waterway Port Coastal Ocean Eng. 126(2), 88-97), which DualSPHysics' AWAS applies to
+its piston (Altomare et al. 2017, Coastal Eng. 127, 37-54), with the phase speed of the
+sea's peak frequency in place of ``sqrt(g d)``.
 
 The elevation in front of the wall is the water's volume over a strip of the seabed next
 to it, ``sum_i (m_i / rho_i) phi(x_i) / (int phi dx * width)``, ``phi`` a sine-squared
