@@ -36,22 +36,26 @@ from errors import InputError
 from fluid.motion import Rotation, Signal, Tabulated, Translation
 
 
-def wavenumber(T: float, depth: float, g: float = 9.81) -> float:
-    """k [rad/m] of linear waves of period T [s] in depth [m]: ω² = g k tanh(k d),
-    by Newton from the Eckart (1952) estimate (a handful of iterations to 1e-15)."""
-    if not (T > 0 and depth > 0 and g > 0) or not all(map(math.isfinite, (T, depth, g))):
-        raise InputError(f"wavenumber: T, depth and g must be finite and > 0, got {T!r}, {depth!r}, {g!r}")
-    w2 = (2.0 * math.pi / T) ** 2
-    k = w2 / g / math.sqrt(math.tanh(w2 * depth / g))  # Eckart
+def wavenumbers(omega, depth: float, g: float = 9.81) -> np.ndarray:
+    """k [rad/m] of linear waves of angular frequencies ``omega`` [rad/s] (> 0) in water
+    ``depth`` [m] deep: the dispersion relation ω² = g k tanh(k d) (Dean & Dalrymple 1991,
+    Table 4.1), by Newton's method from Eckart's (1952) estimate, to round-off."""
+    w2 = np.asarray(omega, float) ** 2
+    k = w2 / g / np.sqrt(np.tanh(w2 * depth / g))
     for _ in range(50):
-        th = math.tanh(k * depth)
-        f = g * k * th - w2
-        df = g * th + g * k * depth * (1.0 - th * th)
-        step = f / df
-        k -= step
-        if abs(step) <= 1e-15 * k:
+        th = np.tanh(k * depth)
+        step = (g * k * th - w2) / (g * th + g * k * depth * (1.0 - th * th))
+        k = k - step
+        if np.all(np.abs(step) <= 1e-15 * k):
             break
     return k
+
+
+def wavenumber(T: float, depth: float, g: float = 9.81) -> float:
+    """k [rad/m] of linear waves of period T [s] in depth [m] (:func:`wavenumbers`)."""
+    if not (T > 0 and depth > 0 and g > 0) or not all(map(math.isfinite, (T, depth, g))):
+        raise InputError(f"wavenumber: T, depth and g must be finite and > 0, got {T!r}, {depth!r}, {g!r}")
+    return float(wavenumbers(2.0 * math.pi / T, depth, g))
 
 
 def height_to_stroke(kind: str, kd: float) -> float:

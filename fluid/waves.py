@@ -43,7 +43,7 @@ from typing import NamedTuple
 import numpy as np
 
 from errors import InputError
-from fluid.wavemaker import wavenumber
+from fluid.wavemaker import wavenumber, wavenumbers  # noqa: F401 (wavenumbers: read from here too)
 
 #: elements of one (points × components) block: bounds the memory of a many-component sea
 _BLOCK = 1 << 19
@@ -67,21 +67,6 @@ class Components(NamedTuple):
     amplitude: np.ndarray
     phase: np.ndarray
     k: np.ndarray
-
-
-def wavenumbers(omega, depth: float, g: float = 9.81) -> np.ndarray:
-    """k [rad/m] of linear waves of angular frequencies ``omega`` [rad/s] (> 0) in water
-    ``depth`` [m] deep: the dispersion relation ω² = g k tanh(k d) (Dean & Dalrymple 1991,
-    Table 4.1), by Newton's method from Eckart's (1952) estimate, to round-off."""
-    w2 = np.asarray(omega, float) ** 2
-    k = w2 / g / np.sqrt(np.tanh(w2 * depth / g))
-    for _ in range(50):
-        th = np.tanh(k * depth)
-        step = (g * k * th - w2) / (g * th + g * k * depth * (1.0 - th * th))
-        k = k - step
-        if np.all(np.abs(step) <= 1e-15 * k):
-            break
-    return k
 
 
 def depth_factors(zeta, k, depth: float) -> tuple[np.ndarray, np.ndarray]:
