@@ -89,7 +89,8 @@ class AbsorbingEnd:
         self.tau = 2.0 * sea.peak_period if tau is None else float(tau)
         # the sea's elevation over the strip, averaged with the strip's weight
         xs = a + (b - a) * (np.arange(16) + 0.5) / 16
-        self._xs, self._ws = xs, np.sin(math.pi * (xs - a) / (b - a)) ** 2 / np.sum(np.sin(math.pi * (xs - a) / (b - a)) ** 2)
+        w = np.sin(math.pi * (xs - a) / (b - a)) ** 2
+        self._xs, self._ws = xs, w / w.sum()
         self.reset()
 
     def reset(self) -> None:
