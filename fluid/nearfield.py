@@ -167,17 +167,32 @@ class NearFieldBox:
 
     def absorbing_ends(self, sea, dx: float, h: float) -> tuple:
         """The near and far end walls' motions on the sea's orbits with active absorption
-        (:class:`fluid.wall_absorption.AbsorbingEnd`), each reading the elevation over a
+        (:class:`fluid.wall_absorption.AbsorbingEnd`), each reading the free surface over a
         strip two kernel supports (4 ``h``) wide in front of it, beyond the sea's
-        :func:`excursion` and a spacing ``dx`` [m] from its mean place; add both to the
-        fluid's ``controllers`` and pass them to :meth:`zones`."""
+        :func:`excursion` and a spacing ``dx`` [m] from its mean place: four gauges across
+        the strip (sine-squared weights), in 3-D on lines a kernel support (2 ``h``) apart
+        across the box's width, a support from its side walls (a symmetry plane's side: from
+        the plane). Add both to the fluid's ``controllers`` and pass them to :meth:`zones`."""
         from fluid.wall_absorption import AbsorbingEnd
 
         gap, strip = excursion(sea) + dx, 4.0 * h
-        width = 1.0 if self.y is None else self.y[1] - self.y[0]
-        bed, orbits = sea.level - sea.depth, FollowingWall(sea)
-        return (AbsorbingEnd(sea, orbits, -1, (self.x0 + gap, self.x0 + gap + strip), width, bed),
-                AbsorbingEnd(sea, orbits, 1, (self.x1 - gap - strip, self.x1 - gap), width, bed))
+        u = (np.arange(4) + 0.5) / 4
+        w = np.sin(math.pi * u) ** 2
+        w /= w.sum()
+        orbits = FollowingWall(sea)
+        ends = []
+        for side, a in ((-1, self.x0 + gap), (1, self.x1 - gap - strip)):
+            xs = a + strip * u
+            if self.y is None:
+                ends.append(AbsorbingEnd(sea, orbits, side, xs, w))
+                continue
+            lo = self.y[0] + (0.0 if self.mirror else 2.0 * h)
+            hi = self.y[1] - 2.0 * h
+            n = max(1, int(round((hi - lo) / (2.0 * h))) + 1)
+            ys = np.linspace(lo, hi, n) if hi > lo else np.array([0.5 * (self.y[0] + self.y[1])])
+            g = np.array([(x, y) for x in xs for y in ys])
+            ends.append(AbsorbingEnd(sea, orbits, side, g, np.repeat(w, ys.size) / ys.size))
+        return tuple(ends)
 
 
 def _with_wall(target, end):

@@ -250,9 +250,9 @@ class Fluid:
         #: relaxation zones (fluid.relaxation: absorbing layers, imposed waves), applied to
         #: the fluid's velocities at the end of every step
         self.zones: list = []
-        #: controllers of prescribed motions that read the fluid (``update(ps, t, dt)`` at the
-        #: end of every step, before the zones; ``save_state``/``load_state``: the near
-        #: field's absorbing end walls, fluid.wall_absorption)
+        #: controllers of prescribed motions that read the fluid (``update(fluid, t, dt)`` at
+        #: the end of every step, once it is sorted and its rates taken; ``save_state`` /
+        #: ``load_state``: the near field's absorbing end walls, fluid.wall_absorption)
         self.controllers: list = []
         if c.walls == "adami":
             from fluid.wall_density import AdamiWalls
@@ -710,8 +710,6 @@ class Fluid:
         self.t += dt
         self._place_prescribed(self.t)
         ps = self.ps
-        for control in self.controllers:
-            control.update(ps, self.t, dt)
         for zone in self.zones:
             zone.apply(ps.pos, ps.vel, ps.kind, self.t, dt, self._aux["vel"] if self.config.integrator == "verlet"
                        else None)
@@ -720,6 +718,8 @@ class Fluid:
         if self.config.mls_every and self.counters.steps % self.config.mls_every == 0:
             self._reinitialise_density()
         self._rates()
+        for control in self.controllers:  # on the sorted particles and their rates: the next step's motion
+            control.update(self, self.t, dt)
 
     def _reinitialise_density(self) -> None:
         """Fluid densities from the MLS interpolation (fluid.mls). Verlet's n-1 density is

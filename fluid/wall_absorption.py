@@ -16,10 +16,11 @@ incident sea's: the shallow-water active absorption reviewed by Schäffer & Klop
 its piston (Altomare et al. 2017, Coastal Eng. 127, 37-54), with the phase speed of the
 sea's peak frequency in place of ``sqrt(g d)``.
 
-The elevation in front of the wall is the water's volume over a strip of the seabed next
-to it, ``sum_i (m_i / rho_i) phi(x_i) / (int phi dx * width)``, ``phi`` a sine-squared
-bump over the strip (smooth, so that a particle crossing its edge does not jump the
-reading), above the bed; the incident sea's elevation is averaged over the strip alike.
+The elevation in front of the wall is the free surface's (:func:`fluid.probes.surface_elevation`,
+where the water's pressure is nil, so that the fluid's compression and its acoustic noise
+do not enter) at gauges over a strip of the seabed next to it, averaged with a
+sine-squared weight across the strip (and evenly across the box's width in 3-D); the
+incident sea's elevation is averaged at the same gauges alike.
 Slow changes are not the waves' (the fluid's settling, its level's drift): the reading's
 mean is followed with a time constant ``tau`` and taken off, and the correction ``xi``
 leaks back to zero at the same rate, so that
@@ -41,26 +42,10 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
 from errors import InputError
+from fluid.probes import surface_elevation
 from fluid.waves import wavenumbers
-
-
-@njit(cache=True)
-def _strip_volume(pos, mass, rho, kind, ids, a, b):
-    """``sum_i (m_i / rho_i) sin^2(pi (x_i - a) / (b - a))`` over fluid particles (kind 0;
-    not mirror images, whose ids are negative: ``fluid.mirror``) with ``a < x_i < b``
-    [m^dim]."""
-    s = 0.0
-    inv = math.pi / (b - a)
-    for i in range(pos.shape[0]):
-        x = pos[i, 0]
-        if kind[i] != 0 or ids[i] < 0 or x <= a or x >= b:
-            continue
-        w = math.sin((x - a) * inv)
-        s += mass[i] / rho[i] * w * w
-    return s
 
 
 class AbsorbingEnd:
@@ -70,27 +55,27 @@ class AbsorbingEnd:
     that absorbs what comes back (module docstring), and the per-step update of ``xi`` from
     the fluid (:meth:`update`, a ``Fluid.controllers`` member).
 
-    ``side``: +1 for the far end (water at x below it), -1 for the near end; ``strip``:
-    ``(a, b)`` [m], the x range next to the wall where the elevation is read; ``width``
-    [m]: the water's extent across y (3-D; 1 in 2-D); ``bed`` [m]: the seabed's z;
-    ``tau`` [s]: the filters' time constant (default 2 peak periods)."""
+    ``side``: +1 for the far end (water at x below it), -1 for the near end; ``gauges``:
+    where the elevation is read, 2-D x positions (M,) [m], 3-D (x, y) positions (M, 2) [m],
+    and ``weights`` (M,) their shares of the reading (summing to 1); ``tau`` [s]: the
+    filters' time constant (default 2 peak periods)."""
 
-    def __init__(self, sea, orbits, side: int, strip: tuple, width: float, bed: float, tau: float | None = None):
+    def __init__(self, sea, orbits, side: int, gauges, weights, tau: float | None = None):
         if side not in (-1, 1):
             raise InputError(f"absorbing end wall: side = {side!r}; give +1 (far end) or -1 (near end)")
-        a, b = (float(v) for v in strip)
-        if not b > a:
-            raise InputError(f"absorbing end wall: the strip {a} .. {b} m is empty; give a < b")
+        g = np.asarray(gauges, float)
+        w = np.asarray(weights, float)
+        if g.shape[0] == 0 or w.shape != (g.shape[0],) or not abs(w.sum() - 1.0) < 1e-9:
+            raise InputError(f"absorbing end wall: {g.shape[0]} gauges with weights of shape {w.shape} summing to "
+                             f"{w.sum():.6g}; give one weight per gauge, summing to 1")
         self.sea, self.orbits, self.side = sea, orbits, side
-        self.strip, self.width, self.bed = (a, b), float(width), float(bed)
+        self.gauges, self.weights = g, w
+        gx, gy = (g, np.zeros(g.shape[0])) if g.ndim == 1 else (g[:, 0], g[:, 1])
+        self._gx, self._gy = np.ascontiguousarray(gx), np.ascontiguousarray(gy)
         omega = 2.0 * math.pi / sea.peak_period
         k = float(wavenumbers(omega, sea.depth, sea.g))
         self.gain = omega / (k * sea.depth)
         self.tau = 2.0 * sea.peak_period if tau is None else float(tau)
-        # the sea's elevation over the strip, averaged with the strip's weight
-        xs = a + (b - a) * (np.arange(16) + 0.5) / 16
-        w = np.sin(math.pi * (xs - a) / (b - a)) ** 2
-        self._xs, self._ws = xs, w / w.sum()
         self.reset()
 
     def reset(self) -> None:
@@ -120,23 +105,21 @@ class AbsorbingEnd:
         step, by what the waves that come back change it)."""
         return self.orbits.particle_acceleration(t, ref)
 
-    def elevation(self, ps) -> float:
-        """The water's elevation [m] over the strip above the sea's still level, from the
-        fluid particles' volumes (module docstring)."""
-        a, b = self.strip
-        v = _strip_volume(ps.pos, ps.mass, ps.rho, ps.kind, ps.ids, a, b)
-        return v / (0.5 * (b - a) * self.width) - (self.sea.level - self.bed)
+    def elevation(self, fluid) -> float:
+        """The free surface's elevation [m] over the strip above the sea's still level
+        (module docstring); ``fluid``: the ``fluid.solver.Fluid``."""
+        return float(self.weights @ surface_elevation(fluid, self.gauges)) - self.sea.level
 
-    def beyond_sea(self, ps, t: float) -> float:
+    def beyond_sea(self, fluid, t: float) -> float:
         """The elevation [m] over the strip beyond the incident sea's at time ``t`` [s]:
         what comes back to the wall (and the fluid's own offset)."""
-        n = self._xs.size
-        return self.elevation(ps) - float(self._ws @ self.sea.elevation(self._xs, np.zeros(n), np.full(n, float(t))))
+        n = self._gx.size
+        return self.elevation(fluid) - float(self.weights @ self.sea.elevation(self._gx, self._gy, np.full(n, float(t))))
 
-    def update(self, ps, t: float, dt: float) -> None:
+    def update(self, fluid, t: float, dt: float) -> None:
         """Read the elevation in front of the wall at the end of a step (time ``t`` [s], the
         step ``dt`` [s]) and set the correction's rate for the next one."""
-        self.eta_s = self.beyond_sea(ps, t)
+        self.eta_s = self.beyond_sea(fluid, t)
         xi = self.xi(t)
         if math.isnan(self.mean):  # the first reading: the fluid's own offset, not a wave
             self.mean = self.eta_s

@@ -1,9 +1,8 @@
 """Active absorption at the near field's end walls (fluid.wall_absorption): the elevation read
-from the water's volume, the control law against its closed form, and the zones that let
-the walls' correction pass."""
+from the free surface, the control law against its closed form, and the zones that let the
+walls' correction pass."""
 
 import math
-from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -16,40 +15,32 @@ from fluid.waves import RegularWave, wavenumbers
 SEA = RegularWave(0.006, 4.0, 0.3, level=0.3, ramp=4.0)
 
 
-def water(dx, x0, x1, top, dim=2, y=(0.0, 0.1), rho=1000.0):
-    """Fluid particles on a lattice filling x0..x1 (3-D: across y) from the bed z = 0 to
-    ``top``, each of mass rho dx^dim (a ``ps``-like namespace)."""
-    xs = np.arange(x0 + 0.5 * dx, x1, dx)
-    zs = np.arange(0.5 * dx, top, dx)
-    if dim == 2:
-        pos = np.array([(x, z) for x in xs for z in zs])
-    else:
-        ys = np.arange(y[0] + 0.5 * dx, y[1], dx)
-        pos = np.array([(x, yy, z) for x in xs for yy in ys for z in zs])
-    n = len(pos)
-    return SimpleNamespace(pos=pos, mass=np.full(n, rho * dx ** dim), rho=np.full(n, rho), kind=np.zeros(n, np.int8),
-                           ids=np.arange(n))
-
-
 @pytest.mark.parametrize("dim", [2, 3])
-def test_the_elevation_is_the_waters_volume_over_the_strip(dim):
-    """A column of water 0.32 m deep over the bed (level 0.3 m): 2 cm above the still level,
-    read over a strip whose ends lie on the lattice's cell faces (the sine-squared weight's
-    discrete sum is then exactly its integral); 3-D over the box's width; compressed water
-    (a density 1 % above the particles' nominal one) stands lower by its volume; a mirror
-    image (negative id) or a wall particle inside the strip is not counted."""
+def test_the_elevation_is_the_free_surfaces_over_the_strip(dim):
+    """Water at rest 2 cm above the sea's still level (0.3 m) in a tank: the wall's gauges
+    (fluid.probes.surface_elevation, the flat surface dx / 2 above the top row, to a
+    hundredth of dx) read 2 cm beyond the still level, whatever their weights; beyond the sea, that less the sea's
+    elevation averaged at the gauges with the same weights."""
+    from fluid.geometry import assemble, block, tank_walls
+    from fluid.particles import Kind
+    from fluid.solver import Fluid, FluidConfig
+
     dx = 0.01
-    ps = water(dx, 0.0, 0.4, 0.32, dim)
-    end = AbsorbingEnd(SEA, FollowingWall(SEA), 1, (0.1, 0.2), 0.1 if dim == 3 else 1.0, 0.0)
-    assert end.elevation(ps) == pytest.approx(0.02, abs=1e-12)
-    squeezed = SimpleNamespace(**{**vars(ps), "rho": ps.rho * 1.01})
-    assert end.elevation(squeezed) == pytest.approx(0.32 / 1.01 - 0.3, abs=1e-12)
-    extra = SimpleNamespace(**{k: np.concatenate([v, v[:1]]) for k, v in vars(ps).items()})
-    extra.pos[-1] = ps.pos[0] + np.r_[0.15, np.zeros(dim - 1)]
-    extra.ids[-1] = -1
-    assert end.elevation(extra) == pytest.approx(0.02, abs=1e-12)
-    extra.ids[-1], extra.kind[-1] = 5, 1
-    assert end.elevation(extra) == pytest.approx(0.02, abs=1e-12)
+    lo = np.zeros(dim)
+    hi = np.array([0.4, 0.45] if dim == 2 else [0.4, 0.1, 0.45])
+    top = hi.copy()
+    top[-1] = 0.32
+    b = assemble(dim, dx, 1000.0, block(lo, top, dx), [(tank_walls(lo, hi, dx), Kind.FIXED_WALL, 0)])
+    f = Fluid(FluidConfig(dim=dim, dx=dx, c0=20.0, threads=1), b.particles)
+    f.initialize(0.0)
+    xs = np.array([0.12, 0.15, 0.18])
+    g = xs if dim == 2 else np.column_stack([xs, np.full(3, 0.05)])
+    for w in ([1 / 3] * 3, [0.2, 0.5, 0.3]):
+        end = AbsorbingEnd(SEA, FollowingWall(SEA), 1, g, w)
+        assert end.elevation(f) == pytest.approx(0.02, abs=dx / 100)
+        t = 9.3
+        sea = np.dot(w, SEA.elevation(xs, np.zeros(3), np.full(3, t)))
+        assert abs(sea) > 1e-4 and end.beyond_sea(f, t) - end.elevation(f) == pytest.approx(-sea, abs=1e-15)
 
 
 def test_the_wall_moves_with_the_depth_averaged_velocity_of_a_wave_leaving_the_box():
@@ -63,12 +54,12 @@ def test_the_wall_moves_with_the_depth_averaged_velocity_of_a_wave_leaving_the_b
     g_expected = w / (float(wavenumbers(w, 0.3)) * 0.3)
     amp, offset, dt = 1e-3, -2e-3, 1e-3
     for side in (1, -1):
-        end = AbsorbingEnd(SEA, FollowingWall(SEA), side, (0.1, 0.2), 1.0, 0.0)
+        end = AbsorbingEnd(SEA, FollowingWall(SEA), side, [0.15], [1.0])
         assert end.gain == pytest.approx(g_expected, rel=1e-12)
         ts = np.arange(dt, 20 * end.tau, dt)
         rates = np.empty(ts.size)
         for i, t in enumerate(ts):
-            end.beyond_sea = lambda ps, t: offset + amp * math.cos(w * t)
+            end.beyond_sea = lambda fluid, t: offset + amp * math.cos(w * t)
             end.update(None, t, dt)
             rates[i] = end.rate
         late = ts > 10 * end.tau
@@ -83,7 +74,7 @@ def test_the_wall_moves_with_the_depth_averaged_velocity_of_a_wave_leaving_the_b
 def test_the_wall_keeps_the_orbits_and_adds_its_correction():
     ref = np.array([[0.0, 0.29], [0.0, 0.1]])
     orbits = FollowingWall(SEA)
-    end = AbsorbingEnd(SEA, orbits, -1, (0.1, 0.2), 1.0, 0.0)
+    end = AbsorbingEnd(SEA, orbits, -1, [0.15], [1.0])
     end.load_state({"t_n": 5.0, "xi_n": 0.003, "rate": -0.01, "mean": 0.0, "eta_s": 0.0})
     pos, vel = end(5.5, ref)
     p0, v0 = orbits(5.5, ref)
@@ -91,19 +82,24 @@ def test_the_wall_keeps_the_orbits_and_adds_its_correction():
     np.testing.assert_allclose(vel - v0, [[-0.01, 0.0]] * 2, atol=1e-15)
     assert end.save_state()["xi_n"] == 0.003
     with pytest.raises(InputError, match="side"):
-        AbsorbingEnd(SEA, orbits, 0, (0.1, 0.2), 1.0, 0.0)
-    with pytest.raises(InputError, match="strip"):
-        AbsorbingEnd(SEA, orbits, 1, (0.2, 0.1), 1.0, 0.0)
+        AbsorbingEnd(SEA, orbits, 0, [0.15], [1.0])
+    with pytest.raises(InputError, match="weights"):
+        AbsorbingEnd(SEA, orbits, 1, [0.15, 0.16], [0.5, 0.6])
 
 
 def test_the_end_zones_let_the_walls_correction_pass():
     """The zone inside each absorbing end wall relaxes towards the sea's velocity plus that
-    wall's correction velocity; the strips lie in front of the walls, beyond the sea's
-    excursion."""
+    wall's correction velocity; the gauges lie in front of the walls, beyond the sea's
+    excursion, inside the zones (3-D: across the width, a support from the side walls, from
+    a symmetry plane itself)."""
     box = near_field_box(0.02, 0.0, 2.0, SEA, 0.45, 0.4, layers=4)
     near, far = box.absorbing_ends(SEA, 0.02, 0.028)
     assert near.side == -1 and far.side == 1
-    assert 0.0 < near.strip[0] < near.strip[1] < 0.4 and 1.6 < far.strip[0] < far.strip[1] < 2.0
+    assert 0.02 < near.gauges.min() < near.gauges.max() < 0.4 and 1.6 < far.gauges.min() < far.gauges.max() < 1.98
+    for y, mirror, first in (((0.0, 0.3), False, 0.056), ((0.0, 0.3), True, 0.0)):
+        box3 = near_field_box(0.02, 0.0, 2.0, SEA, 0.45, 0.4, layers=4, y=y, side_zone=0.1, mirror=mirror)
+        g = box3.absorbing_ends(SEA, 0.02, 0.028)[1].gauges
+        assert g[:, 1].min() == pytest.approx(first) and g[:, 1].max() == pytest.approx(0.3 - 0.056)
     near.rate, far.rate = 0.01, -0.02
     plain = box.zones(SEA, 5.0, drift=False)
     zones = box.zones(SEA, 5.0, drift=False, ends=(near, far))

@@ -436,8 +436,8 @@ class EndWalls(Probe):
         near, far = built.controllers[:2]
 
         def walls():
-            ps, t = built.sph.ps, built.sph.t
-            return np.array([near.xi(t), far.xi(t), near.beyond_sea(ps, t), far.beyond_sea(ps, t)])
+            f, t = built.sph, built.sph.t
+            return np.array([near.xi(t), far.xi(t), near.beyond_sea(f, t), far.beyond_sea(f, t)])
 
         return [Group("end_walls", list(self.NAMES), ["m"] * 4, walls,
                       labels=["near end wall's correction", "far end wall's correction",
