@@ -6,8 +6,8 @@ spacings. Prints one JSON line per run and a table of the decay per wavelength.
     python benchmarks/wave_propagation.py --set alpha=0 --rows 10
     python benchmarks/wave_propagation.py --rows 10 --set shifting=fickian shifting_coef=2
 
-``--setup``: the scenes' set-ups (cosim.scene.setup.settings: "waves" is
-fluid.solver.TRAVELLING_WAVES, "sloshing" the sloshing one); ``--set KEY=VALUE`` adds
+``--setup``: the scenes' set-ups (cosim.scene.setup.settings: "waves" is a flume's,
+fluid.solver.travelling_waves at the rows, "sloshing" the sloshing one); ``--set KEY=VALUE`` adds
 FluidConfig settings on top (numbers, true/false or text). The wave: d = 0.3 m, T = 1 s,
 H = 4 cm (kd = 1.37), as the wave-propagation case.
 """
@@ -20,6 +20,7 @@ import numpy as np
 
 from machine import cpu_name  # benchmarks/machine.py, beside this script
 from cosim.scene.setup import settings
+from fluid.solver import travelling_waves
 from cosim.validations.wave_propagation import WP_DEPTH, WP_HEIGHT, WP_PERIOD, propagate
 
 
@@ -50,7 +51,7 @@ def main(argv=None) -> None:
     table = []
     for setup in args.setup:
         for rows in args.rows:
-            cfg = {**settings(setup, 2), **extra}
+            cfg = {**(travelling_waves(rows) if setup == "waves" else settings(setup, 2)), **extra}
             r = propagate(WP_DEPTH / rows, WP_DEPTH, WP_HEIGHT, WP_PERIOD, wavelengths=args.wavelengths, **cfg)
             line = {k: (np.round(v, 4).tolist() if isinstance(v, np.ndarray) else v) for k, v in r.items()}
             print(json.dumps({"setup": setup, "rows": rows, "config": cfg, **line}), flush=True)

@@ -80,6 +80,23 @@ SLOSHING_2D = {"h_coef": 2.0, "walls": "adami"}
 TRAVELLING_WAVES = {"h_coef": 2.0, "walls": "adami", "diffusion_at_surface": False, "alpha_wall": 0.0,
                     "alpha": 0.002}
 
+#: particle rows over the depth from which travelling waves take :data:`FINE_WAVES`
+FINE_WAVE_ROWS = 20
+#: the wave set-up at :data:`FINE_WAVE_ROWS` rows over the depth and finer: h = 2.5 dx,
+#: with which a piston wave's decay per wavelength halves from 10 to 20 rows (1.95 to 0.91 %
+#: over 8 wavelengths) where h = 2 dx keeps 2.1 % at both; coarser, the wider kernel spans
+#: too much of the depth (at 10 rows the wave 3 % high and 0.16 periods late at 8 wavelengths)
+#: (docs/validation/wave-propagation_history.md)
+FINE_WAVES = TRAVELLING_WAVES | {"h_coef": 2.5}
+
+
+def travelling_waves(rows: float) -> dict:
+    """The set-up of waves that travel many wavelengths at ``rows`` particle rows over the
+    water's depth: :data:`FINE_WAVES` from :data:`FINE_WAVE_ROWS`, else
+    :data:`TRAVELLING_WAVES`."""
+    return dict(FINE_WAVES if rows >= FINE_WAVE_ROWS - 1e-9 else TRAVELLING_WAVES)
+
+
 #: the set-up of a near field (fluid.nearfield: waves through a closed box for tens of
 #: periods): that of :data:`TRAVELLING_WAVES`, and the density re-initialised from the
 #: particles' positions every 150 steps (first-order MLS, Colagrossi & Landrini 2003), which

@@ -124,3 +124,20 @@ def test_every_sph_case_with_a_scene_file_is_checked():
     for name in OWN:
         scene = validation.cases()[name].scene(True)
         assert choose(case_scene.chosen(scene)).config != choose(scene).config, name
+
+
+def test_a_flume_at_twenty_rows_or_more_takes_the_wider_kernel():
+    """Waves in a flume (the nearfield-floating-box case's, 0.3 m deep) take h = 2.5 dx from
+    20 particle rows over the depth (fluid.solver.travelling_waves: the decay per wavelength
+    halves from 10 to 20 rows), h = 2 dx below; a near field keeps h = 2 dx at any spacing
+    (a wave crosses its box in a wavelength or two); a scene's own h_coef overrides both."""
+    from fluid.solver import FINE_WAVES, TRAVELLING_WAVES
+
+    flume = case_scene.load("nearfield-floating-box")
+    for dx, want in ((0.02, TRAVELLING_WAVES), (0.015, FINE_WAVES), (0.01, FINE_WAVES)):
+        s = choose(flume.with_values([f"fluid.dx={dx}"]))
+        assert s.name == "waves" and all(s.config[k] == v for k, v in want.items()), dx
+        assert ("h = 2.5 dx" in s.reason) == (want is FINE_WAVES)
+    near = flume.with_values(["fluid.dx=0.01", "domain.kind=nearfield", "waves.kind=regular", "waves.depth=0.3"])
+    assert choose(near).config["h_coef"] == 2.0
+    assert choose(flume.with_values(["fluid.dx=0.01", "fluid.h_coef=1.8"])).config["h_coef"] == 1.8

@@ -7,9 +7,9 @@ cases (docs/fluid.md, docs/setup_chooser.md). ``SPH(setup="auto")`` picks, from 
 ================  ========================================  =========================================
 set-up            picked when the scene has                 FluidConfig settings (2-D / 3-D)
 ================  ========================================  =========================================
-``waves``         waves (a wavemaker, a near field's sea)   ``TRAVELLING_WAVES`` (h = 2 dx, walls
-                                                            "adami", ...); a near field:
-                                                            ``NEAR_FIELD`` (+ MLS every 150 steps)
+``waves``         waves (a wavemaker, a near field's sea)   ``travelling_waves`` (h = 2 dx, 2.5 dx
+                                                            from 20 rows; walls "adami", ...); a
+                                                            near field: ``NEAR_FIELD`` (+ MLS)
 ``impulsive``     a vertical-walled tank shaken at a        the solver's defaults, walls "adami"
                   period <= T1 / 3 (T1: first sloshing)
 ``sloshing``      any other moving tank (``base_motion``)   2-D: ``SLOSHING_2D`` (h = 2 dx, walls
@@ -44,7 +44,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from cosim.scene.spec import SETUPS, CylinderTank, NearField, PolygonTank, Tank
+from cosim.scene.spec import SETUPS, CylinderTank, Flume, NearField, PolygonTank, Tank
 from fluid.settings import SETTINGS
 
 #: FluidConfig settings that the SPH scene class can set over the set-up's (fluid.settings:
@@ -158,6 +158,14 @@ def choose(scene) -> Setup:
 
         cfg.update(NEAR_FIELD)
         reason += "; a near field: the density re-initialised every 150 steps, which holds its mean level"
+    elif name == "waves" and isinstance(scene.domain, Flume):
+        from fluid.solver import FINE_WAVE_ROWS, travelling_waves
+
+        rows = scene.domain.level / scene.fluid.dx
+        cfg.update(travelling_waves(rows))
+        if rows >= FINE_WAVE_ROWS - 1e-9:
+            reason += (f"; {rows:.3g} particle rows over the depth (>= {FINE_WAVE_ROWS}): h = 2.5 dx, with which a "
+                       "wave's decay per wavelength halves")
     cfg.update({key: getattr(sph, key) for key in _GIVEN})
     overridden = []
     for key in CONFIG_FIELDS:

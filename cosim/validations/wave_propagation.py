@@ -222,7 +222,7 @@ def _metrics(r: dict, rows: int) -> dict:
 
 
 @case("wave-propagation", "regular piston waves (d = 0.3 m, T = 1 s, H = 4 cm, kd = 1.37) read at every wavelength of "
-      "a 2-D flume with an absorbing zone, with the scenes' wave set-up (fluid.solver.TRAVELLING_WAVES)",
+      "a 2-D flume with an absorbing zone, with the scenes' wave set-up (fluid.solver.travelling_waves)",
       target="the first-harmonic height falls by at most 1 % per wavelength over 8 wavelengths at 20 particle rows "
              "over the depth and finer, decreasing with dx (10, 20, 40 rows); phase within 5 % of a period of linear "
              "theory's at every wavelength; reflection from the absorbing zone below 5 %",
@@ -241,11 +241,11 @@ def wave_propagation(quick: bool) -> dict:
     10-20 rows with the sloshing set-up; :func:`viscous_decay_per_wavelength` predicts the
     last two. Second harmonics are not judged: a linear paddle also sheds free second
     harmonics (Madsen 1971), which beat along the flume."""
-    from fluid.solver import TRAVELLING_WAVES
+    from fluid.solver import travelling_waves
 
     rows_list = (WP_QUICK_ROWS,) if quick else WP_ROWS
     n = 3 if quick else 8
-    runs = {rows: propagate(WP_DEPTH / rows, WP_DEPTH, WP_HEIGHT, WP_PERIOD, wavelengths=n, **TRAVELLING_WAVES)
+    runs = {rows: propagate(WP_DEPTH / rows, WP_DEPTH, WP_HEIGHT, WP_PERIOD, wavelengths=n, **travelling_waves(rows))
             for rows in rows_list}
     metrics, tol = {}, {}
     for rows, r in runs.items():
