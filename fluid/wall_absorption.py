@@ -23,14 +23,19 @@ sine-squared weight across the strip (and evenly across the box's width in 3-D);
 incident sea's elevation is averaged at the same gauges alike.
 Slow changes are not the waves' (the fluid's settling, its level's drift): the reading's
 mean is followed with a time constant ``tau`` and taken off, and the correction ``xi``
-leaks back to zero at the same rate, so that
+leaks back to zero at the same rate. Fast ones are not the sea's either: the box's
+acoustic modes (period ``2 L / c0``, about a sixteenth of the flagship's wave period) move
+the surface the wall reads, and a wall that answered them would pump them (measured: the
+flagship at dx = 1.0 m rang at 1.2 s and went unstable within 19 s); the reading passes two
+first-order low-passes of time constant ``tau_fast`` first. So, with ``L`` those two,
 
-    d(xi)/dt = s G (eta_s - <eta_s>) - xi / tau,     G = omega_p / (k_p d),
+    d(xi)/dt = s G (L[eta_s] - <L[eta_s]>) - xi / tau,     G = omega_p / (k_p d),
 
 ``s`` +1 at the far end, -1 at the near one (the outward normal along the heading), at
-the sea's peak frequency; at ``tau = 2`` peak periods a wave at the peak passes both
-filters with 0.6 % less amplitude and 9 degrees of lead. The correction is uniform over
-the wall (a plane wave along the heading: the box's width is far below the wavelength).
+the sea's peak frequency; at ``tau = 2`` and ``tau_fast = 1/40`` peak periods a wave at the
+peak passes the filters with 3 % less amplitude and 9 degrees of lag, one at the box's
+acoustic period (a sixteenth) with a seventh of it. The correction is uniform over the
+wall (a plane wave along the heading: the box's width is far below the wavelength).
 
 Limits: linear, long-wave (the gain of one frequency, the depth-averaged velocity); what a
 body sends out obliquely reaches the end wall as the channel's plane mode only where the
@@ -57,10 +62,11 @@ class AbsorbingEnd:
 
     ``side``: +1 for the far end (water at x below it), -1 for the near end; ``gauges``:
     where the elevation is read, 2-D x positions (M,) [m], 3-D (x, y) positions (M, 2) [m],
-    and ``weights`` (M,) their shares of the reading (summing to 1); ``tau`` [s]: the
-    filters' time constant (default 2 peak periods)."""
+    and ``weights`` (M,) their shares of the reading (summing to 1); ``tau``, ``tau_fast``
+    [s]: the filters' time constants (default 2 and 1/40 peak periods)."""
 
-    def __init__(self, sea, orbits, side: int, gauges, weights, tau: float | None = None):
+    def __init__(self, sea, orbits, side: int, gauges, weights, tau: float | None = None,
+                 tau_fast: float | None = None):
         if side not in (-1, 1):
             raise InputError(f"absorbing end wall: side = {side!r}; give +1 (far end) or -1 (near end)")
         g = np.asarray(gauges, float)
@@ -76,19 +82,25 @@ class AbsorbingEnd:
         k = float(wavenumbers(omega, sea.depth, sea.g))
         self.gain = omega / (k * sea.depth)
         self.tau = 2.0 * sea.peak_period if tau is None else float(tau)
+        self.tau_fast = sea.peak_period / 40.0 if tau_fast is None else float(tau_fast)
         self.reset()
 
     def reset(self) -> None:
         """Back to the incident sea's orbits alone (no correction, no reading yet)."""
-        self.t_n, self.xi_n, self.rate, self.mean = 0.0, 0.0, 0.0, math.nan
+        self.t_n, self.xi_n, self.rate = 0.0, 0.0, 0.0
         self.eta_s = math.nan  #: the last reading [m] (beyond_sea)
+        self.fast = [math.nan, math.nan]  #: the reading through the first and both low-passes [m]
+        self.mean = math.nan  #: the low-passed reading's slow mean [m]
+
+    _STATE = ("t_n", "xi_n", "rate", "eta_s", "mean")
 
     def save_state(self) -> dict:
-        return {"t_n": self.t_n, "xi_n": self.xi_n, "rate": self.rate, "mean": self.mean, "eta_s": self.eta_s}
+        return {k: getattr(self, k) for k in self._STATE} | {"fast": list(self.fast)}
 
     def load_state(self, state: dict) -> None:
-        self.t_n, self.xi_n, self.rate = float(state["t_n"]), float(state["xi_n"]), float(state["rate"])
-        self.mean, self.eta_s = float(state["mean"]), float(state["eta_s"])
+        for k in self._STATE:
+            setattr(self, k, float(state[k]))
+        self.fast = [float(v) for v in state["fast"]]
 
     def xi(self, t: float) -> float:
         """The correction [m] at time ``t`` [s] (carried on at its last rate)."""
@@ -119,11 +131,13 @@ class AbsorbingEnd:
     def update(self, fluid, t: float, dt: float) -> None:
         """Read the elevation in front of the wall at the end of a step (time ``t`` [s], the
         step ``dt`` [s]) and set the correction's rate for the next one."""
-        self.eta_s = self.beyond_sea(fluid, t)
+        self.eta_s = x = self.beyond_sea(fluid, t)
         xi = self.xi(t)
         if math.isnan(self.mean):  # the first reading: the fluid's own offset, not a wave
-            self.mean = self.eta_s
-        f = dt / self.tau
-        self.mean += (self.eta_s - self.mean) * min(f, 1.0)
+            self.fast, self.mean = [x, x], x
+        a = -math.expm1(-dt / self.tau_fast)
+        self.fast[0] += (x - self.fast[0]) * a
+        self.fast[1] += (self.fast[0] - self.fast[1]) * a
+        self.mean += (self.fast[1] - self.mean) * -math.expm1(-dt / self.tau)
         self.t_n, self.xi_n = float(t), xi
-        self.rate = self.side * self.gain * (self.eta_s - self.mean) - xi / self.tau
+        self.rate = self.side * self.gain * (self.fast[1] - self.mean) - xi / self.tau

@@ -45,8 +45,9 @@ def test_the_elevation_is_the_free_surfaces_over_the_strip(dim):
 
 def test_the_wall_moves_with_the_depth_averaged_velocity_of_a_wave_leaving_the_box():
     """Fed an elevation ``eta_s = A cos(omega t)`` beyond the sea's, the wall's correction
-    velocity settles to ``s G`` times it through the two first-order filters of time
-    constant ``tau`` (the mean taken off, the leak of xi): ``s G (i w tau / (1 + i w tau))^2``,
+    velocity settles to ``s G`` times it through the two low-passes of time constant
+    ``tau_fast`` and the two first-order filters of ``tau`` (the mean taken off, the leak of
+    xi): ``s G (i w tau / (1 + i w tau))^2 / (1 + i w tau_fast)^2``,
     ``G = omega / (k d)`` the depth-averaged velocity of a progressive wave per unit
     elevation (its volume flux c eta over the depth); the far end (s = +1) moves with a
     wave leaving along +x, the near end against it. A constant offset does not move it."""
@@ -66,8 +67,8 @@ def test_the_wall_moves_with_the_depth_averaged_velocity_of_a_wave_leaving_the_b
         a = np.column_stack([np.cos(w * ts[late]), np.sin(w * ts[late])])
         c, *_ = np.linalg.lstsq(a, rates[late], rcond=None)
         got = complex(c[0], -c[1])
-        wt = 1j * w * end.tau
-        np.testing.assert_allclose(got, side * g_expected * amp * (wt / (1 + wt)) ** 2, rtol=5e-3)
+        wt, wf = 1j * w * end.tau, 1j * w * end.tau_fast
+        np.testing.assert_allclose(got, side * g_expected * amp * (wt / (1 + wt)) ** 2 / (1 + wf) ** 2, rtol=5e-3)
         assert abs(end.xi(ts[-1])) < 2 * amp * g_expected / w  # bounded: the offset does not accumulate
 
 
@@ -75,7 +76,7 @@ def test_the_wall_keeps_the_orbits_and_adds_its_correction():
     ref = np.array([[0.0, 0.29], [0.0, 0.1]])
     orbits = FollowingWall(SEA)
     end = AbsorbingEnd(SEA, orbits, -1, [0.15], [1.0])
-    end.load_state({"t_n": 5.0, "xi_n": 0.003, "rate": -0.01, "mean": 0.0, "eta_s": 0.0})
+    end.load_state({"t_n": 5.0, "xi_n": 0.003, "rate": -0.01, "mean": 0.0, "eta_s": 0.0, "fast": [0.0, 0.0]})
     pos, vel = end(5.5, ref)
     p0, v0 = orbits(5.5, ref)
     np.testing.assert_allclose(pos - p0, [[0.003 - 0.005, 0.0]] * 2, atol=1e-15)
