@@ -3,11 +3,10 @@ orbits and also moves with what comes back to it, so that a wave much longer tha
 box, which no relaxation zone of the box's size can absorb, leaves through the wall
 instead of standing in the box.
 
-A near field shorter than the wavelength (the wind-turbine base's box is a sixth of its
-sea's 280 m wave) is, for the waves its bodies scatter and radiate at the sea's period, a
-closed tank: its relaxation zones, a few kernel supports wide, hold the water at the
-incident velocity and reflect such a wave as a wall would, and the box's own sloshing
-builds up (measured: the base's surge grows with the box). A piston that absorbs a long
+A near field shorter than the wavelength is, for the waves its bodies scatter and radiate
+at the sea's period, a closed tank: its relaxation zones, a few kernel supports wide, hold
+the water at the incident velocity and reflect such a wave as a wall would, and the box's
+own sloshing builds up (docs/validation/nearfield.md). A piston that absorbs a long
 wave moves with the wave's depth-averaged velocity, ``U = (omega / k) eta / d`` for a
 progressive wave of elevation ``eta`` (its volume flux ``c eta``): the wall is given that
 velocity for the elevation ``eta_s = eta - eta_I`` it finds in front of it beyond the
@@ -23,19 +22,17 @@ sine-squared weight across the strip (and evenly across the box's width in 3-D);
 incident sea's elevation is averaged at the same gauges alike.
 Slow changes are not the waves' (the fluid's settling, its level's drift): the reading's
 mean is followed with a time constant ``tau`` and taken off, and the correction ``xi``
-leaks back to zero at the same rate. Fast ones are not the sea's either: the box's
-acoustic modes (period ``2 L / c0``, about a sixteenth of the flagship's wave period) move
-the surface the wall reads, and a wall that answered them would pump them (measured: the
-flagship at dx = 1.0 m rang at 1.2 s and went unstable within 19 s); the reading passes two
-first-order low-passes of time constant ``tau_fast`` first. So, with ``L`` those two,
+leaks back to zero at the same rate. Nor are fast ones: the box's acoustic modes (period
+``2 L / c0``) move the surface the wall reads, and a wall that answered them would pump
+them, so the reading passes two first-order low-passes of time constant ``tau_fast``
+first (docs/validation/nearfield.md). So, with ``L`` those two,
 
     d(xi)/dt = s G (L[eta_s] - <L[eta_s]>) - xi / tau,     G = omega_p / (k_p d),
 
 ``s`` +1 at the far end, -1 at the near one (the outward normal along the heading), at
 the sea's peak frequency; at ``tau = 2`` and ``tau_fast = 1/40`` peak periods a wave at the
-peak passes the filters with 3 % less amplitude and 9 degrees of lag, one at the box's
-acoustic period (a sixteenth) with a seventh of it. The correction is uniform over the
-wall (a plane wave along the heading: the box's width is far below the wavelength).
+peak passes with 3 % less amplitude and 9 degrees of lag, one at a sixteenth of it with a
+seventh. The correction is uniform over the wall (a plane wave along the heading).
 
 Limits: linear, long-wave (the gain of one frequency, the depth-averaged velocity); what a
 body sends out obliquely reaches the end wall as the channel's plane mode only where the
