@@ -25,6 +25,7 @@ import numpy as np
 
 from cosim.scene import Scene
 from cosim.validations.nearfield import FLOATING_SCENE
+from cosim.validations.wave_propagation import harmonics
 from cosim.validations.wind_turbine_sph import run_or_resume
 
 #: the chosen box's ends for this sea and body [m] (summary.json's near_field)
@@ -39,14 +40,10 @@ def scene(pad: float, absorbing: bool, duration: float):
 
 
 def first_harmonic(t, y, omega: float, window) -> complex:
-    """The first harmonic at ``omega`` over ``window`` (a constant, a trend and the second
-    harmonic fitted beside it)."""
+    """The first harmonic at ``omega`` over ``window`` (the near-field cases' fit: a constant,
+    a trend and the second harmonic beside it)."""
     m = (t >= window[0]) & (t <= window[1])
-    tt = t[m]
-    a = np.column_stack([np.ones_like(tt), tt, np.cos(omega * tt), np.sin(omega * tt), np.cos(2 * omega * tt),
-                         np.sin(2 * omega * tt)])
-    c, *_ = np.linalg.lstsq(a, y[m], rcond=None)
-    return complex(c[2], -c[3])
+    return complex(harmonics(t[m], y[m], omega, trend=True))
 
 
 def main(argv=None) -> int:
