@@ -159,11 +159,12 @@ def choose(scene) -> Setup:
         cfg.update(NEAR_FIELD)
         reason += "; a near field: the density re-initialised every 150 steps, which holds its mean level"
     elif name == "waves" and isinstance(scene.domain, Flume):
-        from fluid.solver import FINE_WAVE_ROWS, travelling_waves
+        from fluid.solver import FINE_WAVE_ROWS, FINE_WAVES, travelling_waves
 
         rows = scene.domain.level / scene.fluid.dx
-        cfg.update(travelling_waves(rows))
-        if rows >= FINE_WAVE_ROWS - 1e-9:
+        waves = travelling_waves(rows)
+        cfg.update(waves)
+        if waves == FINE_WAVES:
             reason += (f"; {rows:.3g} particle rows over the depth (>= {FINE_WAVE_ROWS}): h = 2.5 dx, with which a "
                        "wave's decay per wavelength halves")
     cfg.update({key: getattr(sph, key) for key in _GIVEN})
