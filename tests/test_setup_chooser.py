@@ -65,11 +65,8 @@ def test_auto_setup_clears_the_hand_set_levers():
 
 
 #: the cases with a scene file whose quick variant runs the SPH fluid, run under auto_setup, by cost
-QUICK = ["westergaard", "sinking-cylinder", "floating-box-draft", "sloshing-frequency", "hydrostatic"]
+QUICK = ["westergaard", "sinking-cylinder", "floating-box-draft", "sloshing-frequency", "hydrostatic", "westergaard-3d"]
 LONG = ["inclined-wall", "floating-heave-period", "moored-body-sph", "cylinder-tank", "inclined-wall-3d"]
-MISSED = {"westergaard-3d": "the impulsive set-up (walls 'adami') on the quick 0.3 m slice at dx = 0.1 m: the base "
-                            "k_p reads 6.8 % high (kp_base_face_rel_err 0.0685 > 0.06) and the face correction "
-                            "no better than Eq. 15; the case's quick variant keeps plain dynamic walls"}
 #: cases whose quick scene gets the same FluidConfig from "auto" as its own: their quick
 #: validation run (``cosim validate NAME --quick``) is the chooser's, so not run again here
 SAME = ["arch-rib", "elastic-table2", "hydrostatic-3d", "nearfield-floating-box", "nearfield-radiation", "dambreak-2d",
@@ -101,14 +98,6 @@ def test_auto_setup_meets_the_quick_tolerance_long(name):
     _run_auto(name)
 
 
-@pytest.mark.long
-@pytest.mark.parametrize("name", [pytest.param(n, marks=pytest.mark.xfail(reason=why, strict=True))
-                                  for n, why in sorted(MISSED.items())])
-def test_auto_setup_misses_the_quick_tolerance(name):
-    """Known misses, kept failing until the chooser or the case changes (strict)."""
-    _run_auto(name)
-
-
 @pytest.mark.parametrize("name", SAME)
 def test_the_quick_scene_already_runs_the_choosers_set_up(name):
     """The chooser gives the quick scene, asked for "auto" with its levers cleared, the
@@ -119,7 +108,7 @@ def test_the_quick_scene_already_runs_the_choosers_set_up(name):
 
 def test_every_sph_case_with_a_scene_file_is_checked():
     files = {n for n, p in validation.case_scenes().items() if p is not None}
-    assert files == set(QUICK) | set(LONG) | set(MISSED) | set(SAME) | set(OWN) | OTHER_FLUID
+    assert files == set(QUICK) | set(LONG) | set(SAME) | set(OWN) | OTHER_FLUID
     assert all(validation.cases()[n].scene(True).fluid.model != "sph" for n in OTHER_FLUID)
     for name in OWN:
         scene = validation.cases()[name].scene(True)
