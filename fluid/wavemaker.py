@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 from pathlib import Path
 
 import numpy as np
@@ -104,8 +105,10 @@ class RegularWavemaker:
             raise InputError(f"wavemaker: H/λ = {self.H / self.wavelength:.3f} is beyond the breaking limit 1/7; "
                              f"lower H or lengthen T")
 
-    @property
+    @cached_property
     def k(self) -> float:
+        """Wavenumber [rad/m] of the period in the depth (solved once: the paddle's motion
+        reads it every step)."""
         return wavenumber(self.T, self.depth, self.g)
 
     @property
