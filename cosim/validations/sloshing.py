@@ -138,6 +138,8 @@ WESTERGAARD_TARGET = ("RMS of k_p against the exact solution < 0.04 raw, < 0.02 
 WESTERGAARD_STATED = {"rms_raw_vs_exact": 0.04, "rms_avg_vs_exact": 0.02}
 #: the quick 3-D slice's spacing [m]: 13 rows over the 1.0 m of water
 QUICK_3D_DX = 0.075
+#: the 3-D tank's fluid set-up (full and quick): walls carrying the fluid's pressure
+WESTERGAARD_3D_SETUP = {"walls": "adami"}
 #: what is judged: the second tolerance on Eq. 15's average carried to the wall face
 WESTERGAARD_TOLERANCES = {"rms_raw_vs_exact": 0.04, "rms_face_vs_exact": 0.02}
 WESTERGAARD_DEPARTURE = {
@@ -401,12 +403,12 @@ def westergaard_3d(quick: bool) -> dict:
     """
     if not quick:
         out = run_westergaard(0.05, dim=3, width=1.0, periods_skip=1, periods_fit=1,
-                              **fluid_setup("westergaard-3d", {"walls": "adami"}))
+                              **fluid_setup("westergaard-3d", WESTERGAARD_3D_SETUP))
         out["metrics"]["width_m"] = 1.0
         out["series"] = westergaard_3d_series_plot(out.pop("profile"))
         out["stated_tolerances"], out["departure"] = dict(WESTERGAARD_STATED), dict(WESTERGAARD_DEPARTURE)
         return out
-    settings = dict(c0=700.0, periods_skip=1, periods_fit=1, **fluid_setup("westergaard-3d", {"walls": "adami"}))
+    settings = dict(c0=700.0, periods_skip=1, periods_fit=1, **fluid_setup("westergaard-3d", WESTERGAARD_3D_SETUP))
     out = run_westergaard(QUICK_3D_DX, dim=3, width=0.3, **settings)
     section = run_westergaard(QUICK_3D_DX, dim=2, **settings)
     for q in ("raw", "avg", "face"):
