@@ -61,10 +61,11 @@ def mls_density(pos, rho, mass, kind, start, lo, inv_cell, nx, ny, nz, reach, ke
     ``used_mls[a]`` is 1 where the linear correction was applied, 0 where the Shepard filter
     was (ill-conditioned moment matrix) or for boundary particles.
 
-    The moment matrix is accumulated in scalars (coordinates in units of h) as a 4 x 4
-    system in 2-D and 3-D alike (in 2-D the y row and column are the identity and
-    decouple), and ``e_1 . A^-1 s`` is taken by Cramer's rule: no allocation per particle,
-    and the neighbour loop has no branch (the kernel is zero beyond 2h)."""
+    The moment matrix is accumulated in a tuple of scalars (:func:`fluid.terms.mls_moments`,
+    coordinates in units of h) as a 4 x 4 system in 2-D and 3-D alike (in 2-D the y row and
+    column are the identity and decouple), and ``e_1 . A^-1 s`` is taken by Cramer's rule:
+    no allocation per particle, and the neighbour loop has no branch (the kernel is zero
+    beyond 2h)."""
     n, dim = pos.shape
     three = dim == 3
     zc = dim - 1
@@ -79,8 +80,7 @@ def mls_density(pos, rho, mass, kind, start, lo, inv_cell, nx, ny, nz, reach, ke
         za = pos[a, zc]
         ya = pos[a, 1] if three else 0.0
         cx, cy, cz = cell_coords(xa, ya, za, lo, inv_cell, three, nx, ny, nz)
-        a00 = a01 = a02 = a03 = a11 = a12 = a13 = a22 = a23 = a33 = 0.0
-        s0 = s1 = s2 = s3 = 0.0
+        m = terms.MLS_ZERO
         for dz in range(-reach, reach + 1):
             for k in range(dys):
                 dy = k - reach if three else 0
@@ -91,23 +91,8 @@ def mls_density(pos, rho, mass, kind, start, lo, inv_cell, nx, ny, nz, reach, ke
                     ry = (ya - pos[b, 1]) * ih if three else 0.0
                     q = math.sqrt(rx * rx + ry * ry + rz * rz)
                     mw = mass[b] * w_value(kernel, q, ad)
-                    vw = mw / rho[b]
-                    a00 += vw
-                    a01 += vw * rx
-                    a02 += vw * ry
-                    a03 += vw * rz
-                    a11 += vw * rx * rx
-                    a12 += vw * rx * ry
-                    a13 += vw * rx * rz
-                    a22 += vw * ry * ry
-                    a23 += vw * ry * rz
-                    a33 += vw * rz * rz
-                    s0 += mw
-                    s1 += mw * rx
-                    s2 += mw * ry
-                    s3 += mw * rz
-        out[a], used_mls[a] = terms.cpu.mls_solve(a00, a01, a02, a03, a11, a12, a13, a22, a23, a33, s0, s1, s2, s3,
-                                                  three, min_det)
+                    m = terms.cpu.mls_moments(m, mw / rho[b], mw, rx, ry, rz)
+        out[a], used_mls[a] = terms.cpu.mls_solve(m, three, min_det)
 
 
 def reinitialise(pos, rho, mass, kind, start, grid, kernel: int, ad: float, h: float,

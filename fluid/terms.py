@@ -433,13 +433,31 @@ def solve_in_place(A, b, n):
     return det
 
 
-def mls_solve(a00, a01, a02, a03, a11, a12, a13, a22, a23, a33, s0, s1, s2, s3, three, min_det):
+#: the MLS moments of no neighbour (:func:`mls_moments`)
+MLS_ZERO = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+
+
+def mls_moments(m, vw, mw, rx, ry, rz):
+    """The MLS moments ``m`` (Sunara et al. 2021, Eq. 10-11) with one neighbour b added:
+    ``A += V_b W_ab (1, x) (x) (1, x)`` (its upper triangle ``a00, a01, a02, a03, a11,
+    a12, a13, a22, a23, a33``) and ``s += m_b W_ab (1, x)`` (``s0 ... s3``), ``vw = V_b
+    W_ab``, ``mw = m_b W_ab``, ``x = (rx, ry, rz) = r_ab / h``; a tuple in, a tuple out (no
+    allocation: the loops keep it in registers). Start from :data:`MLS_ZERO`."""
+    a00, a01, a02, a03, a11, a12, a13, a22, a23, a33, s0, s1, s2, s3 = m
+    return (a00 + vw, a01 + vw * rx, a02 + vw * ry, a03 + vw * rz, a11 + vw * rx * rx, a12 + vw * rx * ry,
+            a13 + vw * rx * rz, a22 + vw * ry * ry, a23 + vw * ry * rz, a33 + vw * rz * rz,
+            s0 + mw, s1 + mw * rx, s2 + mw * ry, s3 + mw * rz)
+
+
+def mls_solve(m, three, min_det):
     """``(rho_a, 1)``: the MLS density [kg/m^3] (Sunara et al. 2021, Eq. 9-12), ``e_1 . A^-1
-    s`` by Cramer's rule, from the moments of a particle's neighbours (coordinates ``x =
-    r_ab / h``): ``A = sum_b V_b W_ab (1, x) (x) (1, x)`` (symmetric 4 x 4: ``a00 ... a33``)
-    and ``s = sum_b m_b W_ab (1, x)``; in 2-D (``three`` False) the y row and column are the
-    identity. ``(s0 / a00, 0)``, the Shepard filter, where ``det A`` is not above ``min_det``
-    times the product of its diagonal (too few or one-sided neighbours)."""
+    s`` by Cramer's rule, from the moments ``m`` of a particle's neighbours
+    (:func:`mls_moments`, coordinates ``x = r_ab / h``): ``A = sum_b V_b W_ab (1, x) (x)
+    (1, x)`` (symmetric 4 x 4: ``a00 ... a33``) and ``s = sum_b m_b W_ab (1, x)``; in 2-D
+    (``three`` False) the y row and column are the identity. ``(s0 / a00, 0)``, the Shepard
+    filter, where ``det A`` is not above ``min_det`` times the product of its diagonal (too
+    few or one-sided neighbours)."""
+    a00, a01, a02, a03, a11, a12, a13, a22, a23, a33, s0, s1, s2, s3 = m
     if not three:
         a22 = 1.0
     scale = a00 * a11 * a22 * a33
@@ -491,7 +509,7 @@ TERMS = ("kernel_w", "kernel_grad_shape", "kernel_grad_scale", "tait", "tait_pre
          "support_volume", "artificial_viscosity", "wall_viscosity", "momentum", "laminar_viscosity",
          "viscous_bound", "xsph_weight", "adami_pressure", "surface_fade", "adami_wall_pressure", "continuity_rate",
          "acceleration", "viscous_speed", "fickian_weight", "symmetric_min_eigenvalue", "fickian_shift",
-         "renormalised_gradient", "det4", "solve_in_place", "mls_solve",
+         "renormalised_gradient", "det4", "solve_in_place", "mls_moments", "mls_solve",
          "mdbc_add_neighbour", "mdbc_extrapolate")
 _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 #: the terms compiled for the CPU loops (numba.njit; LLVM inlines them), and for the

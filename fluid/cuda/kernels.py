@@ -817,20 +817,7 @@ def k_mls(P, rho, mass, kind, n, start, lo, inv_cell, nx, ny, nz, kernel, ad, h,
         za = P[zc, a]
         ya = P[1, a] if three else 0.0
         cx, cy, cz = cell_coords(xa, ya, za, lo, inv_cell, True, nx, ny, nz)
-        a00 = 0.0
-        a01 = 0.0
-        a02 = 0.0
-        a03 = 0.0
-        a11 = 0.0
-        a12 = 0.0
-        a13 = 0.0
-        a22 = 0.0
-        a23 = 0.0
-        a33 = 0.0
-        s0 = 0.0
-        s1 = 0.0
-        s2 = 0.0
-        s3 = 0.0
+        m = terms.MLS_ZERO
         dys = 3 if three else 1
         for dz in range(-1, 2):
             for k in range(dys):
@@ -842,22 +829,8 @@ def k_mls(P, rho, mass, kind, n, start, lo, inv_cell, nx, ny, nz, kernel, ad, h,
                     ry = (ya - P[1, b]) * ih if three else 0.0
                     q = math.sqrt(rx * rx + ry * ry + rz * rz)
                     mw = mass[b] * tm.kernel_w(kernel, q, ad)
-                    vw = mw / rho[b]
-                    a00 += vw
-                    a01 += vw * rx
-                    a02 += vw * ry
-                    a03 += vw * rz
-                    a11 += vw * rx * rx
-                    a12 += vw * rx * ry
-                    a13 += vw * rx * rz
-                    a22 += vw * ry * ry
-                    a23 += vw * ry * rz
-                    a33 += vw * rz * rz
-                    s0 += mw
-                    s1 += mw * rx
-                    s2 += mw * ry
-                    s3 += mw * rz
-        out[a] = tm.mls_solve(a00, a01, a02, a03, a11, a12, a13, a22, a23, a33, s0, s1, s2, s3, three, min_det)[0]
+                    m = tm.mls_moments(m, mw / rho[b], mw, rx, ry, rz)
+        out[a] = tm.mls_solve(m, three, min_det)[0]
 
 
 @cuda.jit
