@@ -133,6 +133,8 @@ def _args(term, rng):
             out.append(7.0)
         elif n in ("q",):
             out.append(float(rng.uniform(0, 2.2)))
+        elif n == "m":  # the MLS moments, a tuple (terms.MLS_ZERO)
+            out.append(tuple(float(v) for v in rng.uniform(0.1, 2.0, len(terms.MLS_ZERO))))
         else:
             out.append(float(rng.uniform(0.1, 2.0)))
     return out
@@ -150,7 +152,8 @@ def test_compiled_terms_are_the_plain_functions(term):
         args = _args(term, rng)
         want = np.atleast_1d(py(*args))
         np.testing.assert_allclose(np.atleast_1d(getattr(terms.cpu, term)(*args)), want, rtol=1e-13)
-        a32 = [np.float32(a) if isinstance(a, float) else a for a in args]
+        a32 = [np.float32(a) if isinstance(a, float) else tuple(map(np.float32, a)) if isinstance(a, tuple) else a
+               for a in args]
         got = getattr(terms.cpu_f32, term)(*a32)
         np.testing.assert_allclose(np.atleast_1d(got), want, rtol=3e-6, atol=1e-5)
 
