@@ -438,7 +438,7 @@ MLS_ZERO = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
 
 
 def mls_moments(m, vw, mw, rx, ry, rz):
-    """The MLS moments ``m`` (Sunara et al. 2021, Eq. 10-11) with one neighbour b added:
+    """The MLS moments ``m`` (Sunara et al. 2021, Eq. 9-12) with one neighbour b added:
     ``A += V_b W_ab (1, x) (x) (1, x)`` (its upper triangle ``a00, a01, a02, a03, a11,
     a12, a13, a22, a23, a33``) and ``s += m_b W_ab (1, x)`` (``s0 ... s3``), ``vw = V_b
     W_ab``, ``mw = m_b W_ab``, ``x = (rx, ry, rz) = r_ab / h``; a tuple in, a tuple out (no
