@@ -15,14 +15,12 @@ and a markdown table.
 from __future__ import annotations
 
 import argparse
-import math
 from pathlib import Path
 
 import numpy as np
 
 from cosim.scene.toml_io import from_dict, to_dict
 from cosim.validations import wind_turbine_sph as case
-from cosim.validations.wave_propagation import harmonics
 
 #: the box the scene chooses for the base at dx = 1.0 m (x, full width with the mirror, zone) [m]
 BOX = {"x0": 48.0, "x1": 92.0, "width": 44.0, "zone": 11.313708498984761}
@@ -52,20 +50,15 @@ def main(argv=None) -> int:
     for walls in a.walls:
         scene = empty_scene(a.dx, a.duration, walls == "absorbing")
         res = scene.run(a.out / walls, overwrite=True, progress=False, yes=True)
-        omega = 2.0 * math.pi / scene.waves.period
-        late = res.t >= a.duration - 40.0
-        ts, pts = res.t[late], np.asarray(GAUGES)
-        eta = np.column_stack([res[f"gauge{k + 1}.eta"][late] for k in range(len(pts))])
-        sea = scene.waves.sea(scene).elevation(pts[None, :, 0], pts[None, :, 1], ts[:, None])
-        r = harmonics(ts, eta, omega) / harmonics(ts, sea, omega)
-        rows[walls] = r
+        g = case.gauge_figures(res, scene, (a.duration - 40.0, a.duration))
+        rows[walls] = g
         print(f"{walls}: {res.summary.get('particles')} particles, {res.summary.get('cpu_s'):.0f} CPU-s; H1/H "
-              f"{np.round(np.abs(r), 3).tolist()}", flush=True)
+              f"{np.round(g['H1_over_H'], 3).tolist()}", flush=True)
     print("\n| gauge (x, y) [m] | " + " | ".join(f"walls {w}: height / sea, lag [periods]" for w in rows) + " |")
     print("|---" * (1 + len(rows)) + "|")
     for i, p in enumerate(GAUGES):
-        print(f"| ({p[0]:g}, {p[1]:g}) | " + " | ".join(f"{abs(r[i]):.3f}, {-np.angle(r[i]) / (2 * math.pi):+.3f}"
-                                                      for r in rows.values()) + " |")
+        print(f"| ({p[0]:g}, {p[1]:g}) | " + " | ".join(f"{g['H1_over_H'][i]:.3f}, {g['lag_periods'][i]:+.3f}"
+                                                      for g in rows.values()) + " |")
     return 0
 
 
