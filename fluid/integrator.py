@@ -47,6 +47,8 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit, prange
 
+from fluid.terms import cpu as tm
+
 _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 
 #: names of the conditions that can limit a step
@@ -154,42 +156,35 @@ def step_limit(amax2: float, cvmin: float, cmax: float, h: float, cfl: float, dt
 
 @njit(parallel=True, **_OPTS)
 def predictor(pos, vel, rho, drho, acc, kind, rho0, dt, pos_n, vel_n, rho_n, xs):
-    """Save the n state into ``*_n`` and advance ``pos, vel, rho`` to n+1/2 in place.
+    """Save the n state into ``*_n`` and advance ``pos, vel, rho`` to n+1/2 in place
+    (:func:`fluid.terms.predictor_density`, :func:`~fluid.terms.predictor_component`).
     ``xs``: the XSPH correction [m/s] (N, dim), or an empty array when off."""
-    half = 0.5 * dt
     dim = pos.shape[1]
     use_xs = xs.shape[0] > 0
     for i in prange(pos.shape[0]):
         f = kind[i] == 0
-        r = rho[i]
-        rho_n[i] = r
-        rn = r + half * drho[i]
-        rho[i] = rn if f else max(rn, rho0)
+        rho_n[i] = rho[i]
+        rho[i] = tm.predictor_density(rho[i], drho[i], dt, f, rho0)
         for k in range(dim):
-            v = vel[i, k]
-            vel_n[i, k] = v
+            vel_n[i, k] = vel[i, k]
             pos_n[i, k] = pos[i, k]
-            pos[i, k] += half * (v + xs[i, k]) if use_xs else half * v
-            if f:
-                vel[i, k] = v + half * acc[i, k]
+            pos[i, k], vel[i, k] = tm.predictor_component(pos[i, k], vel[i, k], acc[i, k],
+                                                          xs[i, k] if use_xs else 0.0, dt, f)
 
 
 @njit(parallel=True, **_OPTS)
 def corrector(pos, vel, rho, drho, acc, kind, rho0, dt, pos_n, vel_n, rho_n, xs):
-    """Advance from the saved n state to n+1 with the rates at n+1/2 (in place); ``xs`` as
-    in :func:`predictor`, at n+1/2."""
+    """Advance from the saved n state to n+1 with the rates at n+1/2 (in place;
+    :func:`fluid.terms.corrector_density`, :func:`~fluid.terms.corrector_component`); ``xs``
+    as in :func:`predictor`, at n+1/2."""
     dim = pos.shape[1]
     use_xs = xs.shape[0] > 0
     for i in prange(pos.shape[0]):
         f = kind[i] == 0
-        eps = -drho[i] / rho[i] * dt
-        rn = rho_n[i] * (2.0 - eps) / (2.0 + eps)
-        rho[i] = rn if f else max(rn, rho0)
+        rho[i] = tm.corrector_density(rho_n[i], drho[i], rho[i], dt, f, rho0)
         for k in range(dim):
-            v0 = vel_n[i, k]
-            v1 = v0 + dt * acc[i, k] if f else v0
-            vel[i, k] = v1
-            pos[i, k] = pos_n[i, k] + 0.5 * dt * (v0 + v1) + (dt * xs[i, k] if use_xs else 0.0)
+            pos[i, k], vel[i, k] = tm.corrector_component(pos_n[i, k], vel_n[i, k], acc[i, k],
+                                                          xs[i, k] if use_xs else 0.0, dt, f)
 
 
 @njit(cache=True)  # no fastmath here: it would let LLVM assume there are no NaNs
@@ -208,25 +203,19 @@ def first_non_finite(pos, vel, rho):
 
 @njit(parallel=True, **_OPTS)
 def verlet(pos, vel, rho, drho, acc, kind, rho0, dt, vel_m1, rho_m1, euler, xs):
-    """One Verlet step in place with the rates at n; ``vel_m1, rho_m1`` hold the n-1 state
-    on entry and the n state on exit. ``euler``: take the forward-Euler form. ``xs`` as in
+    """One Verlet step in place with the rates at n (:func:`fluid.terms.verlet_density`,
+    :func:`~fluid.terms.verlet_component`); ``vel_m1, rho_m1`` hold the n-1 state on entry
+    and the n state on exit. ``euler``: take the forward-Euler form. ``xs`` as in
     :func:`predictor`."""
     dim = pos.shape[1]
     use_xs = xs.shape[0] > 0
-    w = dt if euler else 2.0 * dt
     for i in prange(pos.shape[0]):
         f = kind[i] == 0
         r = rho[i]
-        base = r if euler else rho_m1[i]
-        rn = base + w * drho[i]
+        rho[i] = tm.verlet_density(r, rho_m1[i], drho[i], dt, euler, f, rho0)
         rho_m1[i] = r
-        rho[i] = rn if f else max(rn, rho0)
         for k in range(dim):
             v = vel[i, k]
-            if f:
-                vb = v if euler else vel_m1[i, k]
-                pos[i, k] += dt * (v + xs[i, k] if use_xs else v) + 0.5 * dt * dt * acc[i, k]
-                vel[i, k] = vb + w * acc[i, k]
-            else:
-                pos[i, k] += dt * v
+            pos[i, k], vel[i, k] = tm.verlet_component(pos[i, k], v, vel_m1[i, k], acc[i, k],
+                                                       xs[i, k] if use_xs else 0.0, dt, euler, f)
             vel_m1[i, k] = v

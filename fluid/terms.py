@@ -20,6 +20,8 @@ caches (``fluid/**/*.nbi``): a loop's cache is keyed on its own file, not on the
 * Momentum, Barreiro et al. 2016, Eq. 6; artificial viscosity, Monaghan 1992 (Sunara
   et al. 2021, Eq. 6); laminar viscosity, Lo & Shao 2002; XSPH, Monaghan 1989.
 * The viscous term of the time step, Sunara et al. 2021, Eq. 14.
+* The integrator's update of one particle: the symplectic predictor-corrector (Monaghan
+  2005) and Verlet (Monaghan 1989), :mod:`fluid.integrator`.
 * The wall pressure extrapolated from the fluid, Adami, Hu & Adams 2012, Eq. 27.
 * Fickian particle shifting, Lind et al. 2012 (Skillen et al. 2013's coefficient), its
   free-surface region and normal from the renormalisation matrix (Marrone et al. 2010).
@@ -503,6 +505,63 @@ def mdbc_extrapolate(A, bv, m, o, dim, det_min, rho0):
     return (max(sb / s0, rho0) if s0 > 0.0 else rho0), 1
 
 
+# ------------------------------------------------------------------ integration, one particle
+# The integrator's updates (fluid.integrator: the symplectic predictor-corrector, Monaghan
+# 2005, and Verlet, Monaghan 1989; as DualSPHysics integrates) of one particle: its density
+# and one component of its position and velocity. ``fluid`` is True for a fluid particle; a
+# boundary particle's density is clamped below at ``rho0`` (a wall never pulls fluid in, as
+# DualSPHysics does) and it moves with its prescribed velocity. ``xs`` [m/s]: the XSPH
+# correction of that component (0.0 when XSPH is off).
+def wall_clamped(rn, fluid, rho0):
+    """The new density [kg/m^3] ``rn`` of a fluid particle; of a boundary one, at least ``rho0``."""
+    return rn if fluid else max(rn, rho0)
+
+
+def predictor_density(r, drho, dt, fluid, rho0):
+    """``rho^{n+1/2} = rho^n + dt/2 drho^n`` [kg/m^3] (Monaghan 2005)."""
+    return wall_clamped(r + 0.5 * dt * drho, fluid, rho0)
+
+
+def predictor_component(p, v, a, xs, dt, fluid):
+    """``(r^{n+1/2}, v^{n+1/2})``: ``r^n + dt/2 (v^n + xs)``, ``v^n + dt/2 a^n`` (a boundary
+    particle keeps its velocity)."""
+    half = 0.5 * dt
+    return p + half * (v + xs), (v + half * a if fluid else v)
+
+
+def corrector_density(r_n, drho, r, dt, fluid, rho0):
+    """``rho^{n+1} = rho^n (2 - eps) / (2 + eps)``, ``eps = -(drho^{n+1/2} / rho^{n+1/2}) dt``
+    [kg/m^3] (Monaghan 2005; the symplectic update that keeps the density positive)."""
+    eps = -drho / r * dt
+    return wall_clamped(r_n * (2.0 - eps) / (2.0 + eps), fluid, rho0)
+
+
+def corrector_component(p_n, v_n, a, xs, dt, fluid):
+    """``(r^{n+1}, v^{n+1})``: ``v^n + dt a^{n+1/2}``, ``r^n + dt ((v^n + v^{n+1}) / 2 + xs)``."""
+    v1 = v_n + dt * a if fluid else v_n
+    return p_n + 0.5 * dt * (v_n + v1) + dt * xs, v1
+
+
+def verlet_density(r, r_m1, drho, dt, euler, fluid, rho0):
+    """``rho^{n+1} = rho^{n-1} + 2 dt drho^n`` [kg/m^3] (Monaghan 1989); ``euler``: the
+    forward-Euler ``rho^n + dt drho^n`` that decouples odd and even steps."""
+    if euler:
+        return wall_clamped(r + dt * drho, fluid, rho0)
+    return wall_clamped(r_m1 + 2.0 * dt * drho, fluid, rho0)
+
+
+def verlet_component(p, v, v_m1, a, xs, dt, euler, fluid):
+    """``(r^{n+1}, v^{n+1})``: ``r^n + dt (v^n + xs) + dt^2/2 a^n``, ``v^{n-1} + 2 dt a^n``
+    (``euler``: ``v^n + dt a^n``) for a fluid particle; a boundary one ``r^n + dt v^n`` and its
+    velocity kept (Monaghan 1989)."""
+    if not fluid:
+        return p + dt * v, v
+    p1 = p + (dt * (v + xs) + 0.5 * dt * dt * a)
+    if euler:
+        return p1, v + dt * a
+    return p1, v_m1 + 2.0 * dt * a
+
+
 #: the terms :func:`compiled` compiles
 TERMS = ("kernel_w", "kernel_grad_shape", "kernel_grad_scale", "tait", "tait_pressure", "tait_density",
          "pair_division", "continuity", "fourtakas_hydrostatic", "renormalised_hydrostatic", "density_diffusion",
@@ -510,7 +569,8 @@ TERMS = ("kernel_w", "kernel_grad_shape", "kernel_grad_scale", "tait", "tait_pre
          "viscous_bound", "xsph_weight", "adami_pressure", "surface_fade", "adami_wall_pressure", "continuity_rate",
          "acceleration", "viscous_speed", "fickian_weight", "symmetric_min_eigenvalue", "fickian_shift",
          "renormalised_gradient", "det4", "solve_in_place", "mls_moments", "mls_solve",
-         "mdbc_add_neighbour", "mdbc_extrapolate")
+         "mdbc_add_neighbour", "mdbc_extrapolate", "wall_clamped", "predictor_density", "predictor_component",
+         "corrector_density", "corrector_component", "verlet_density", "verlet_component")
 _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 #: the terms compiled for the CPU loops (numba.njit; LLVM inlines them), and for the
 #: float32 pair loop (float32 literals; not cached: the same code as ``cpu``'s, typed apart)

@@ -27,7 +27,7 @@ to round-off in float64. A new term is written there once and called here as
   ``fluid.boundary_correction.mdbc_density``; :func:`k_mls` is ``fluid.mls.mls_density``
   (these three walk whole rows of cells, as their CPU functions do).
 * :func:`k_predictor`, :func:`k_corrector`, :func:`k_verlet` are those of
-  ``fluid.integrator``; :func:`d_block_max3` (in the pair loop) its ``_bounds``; :func:`k_first_non_finite`
+  ``fluid.integrator``, from the same terms (``fluid.terms.predictor_density`` ...); :func:`d_block_max3` (in the pair loop) its ``_bounds``; :func:`k_first_non_finite`
   its ``first_non_finite`` (the lowest row, as the CPU's serial scan finds).
 
 Particle arrays are structures of arrays: positions, velocities (and accelerations) as
@@ -495,53 +495,36 @@ def make_gradient_loop(kernel: int, three: bool):
 @cuda.jit
 def k_predictor(P, V, rho, drho, acc, kind, n, rho0, dt, Pn, Vn, rhon, xs, use_xs):
     for i in range(cuda.grid(1), n, cuda.gridsize(1)):
-        half = 0.5 * dt
         f = kind[i] == 0
-        r = rho[i]
-        rhon[i] = r
-        rn = r + half * drho[i]
-        rho[i] = rn if f else max(rn, rho0)
+        rhon[i] = rho[i]
+        rho[i] = tm.predictor_density(rho[i], drho[i], dt, f, rho0)
         for k in range(P.shape[0]):
-            v = V[k, i]
-            Vn[k, i] = v
+            Vn[k, i] = V[k, i]
             Pn[k, i] = P[k, i]
-            P[k, i] += half * (v + xs[k, i]) if use_xs else half * v
-            if f:
-                V[k, i] = v + half * acc[k, i]
+            P[k, i], V[k, i] = tm.predictor_component(P[k, i], V[k, i], acc[k, i], xs[k, i] if use_xs else 0.0, dt, f)
 
 
 @cuda.jit
 def k_corrector(P, V, rho, drho, acc, kind, n, rho0, dt, Pn, Vn, rhon, xs, use_xs):
     for i in range(cuda.grid(1), n, cuda.gridsize(1)):
         f = kind[i] == 0
-        eps = -drho[i] / rho[i] * dt
-        rn = rhon[i] * (2.0 - eps) / (2.0 + eps)
-        rho[i] = rn if f else max(rn, rho0)
+        rho[i] = tm.corrector_density(rhon[i], drho[i], rho[i], dt, f, rho0)
         for k in range(P.shape[0]):
-            v0 = Vn[k, i]
-            v1 = v0 + dt * acc[k, i] if f else v0
-            V[k, i] = v1
-            P[k, i] = Pn[k, i] + 0.5 * dt * (v0 + v1) + (dt * xs[k, i] if use_xs else 0.0)
+            P[k, i], V[k, i] = tm.corrector_component(Pn[k, i], Vn[k, i], acc[k, i], xs[k, i] if use_xs else 0.0,
+                                                      dt, f)
 
 
 @cuda.jit
 def k_verlet(P, V, rho, drho, acc, kind, n, rho0, dt, Vm1, rhom1, euler, xs, use_xs):
     for i in range(cuda.grid(1), n, cuda.gridsize(1)):
-        w = dt if euler else 2.0 * dt
         f = kind[i] == 0
         r = rho[i]
-        base = r if euler else rhom1[i]
-        rn = base + w * drho[i]
+        rho[i] = tm.verlet_density(r, rhom1[i], drho[i], dt, euler, f, rho0)
         rhom1[i] = r
-        rho[i] = rn if f else max(rn, rho0)
         for k in range(P.shape[0]):
             v = V[k, i]
-            if f:
-                vb = v if euler else Vm1[k, i]
-                P[k, i] += dt * (v + xs[k, i] if use_xs else v) + 0.5 * dt * dt * acc[k, i]
-                V[k, i] = vb + w * acc[k, i]
-            else:
-                P[k, i] += dt * v
+            P[k, i], V[k, i] = tm.verlet_component(P[k, i], v, Vm1[k, i], acc[k, i], xs[k, i] if use_xs else 0.0,
+                                                   dt, euler, f)
             Vm1[k, i] = v
 
 
