@@ -67,10 +67,13 @@ def _along(sea, x, y) -> np.ndarray:
 
 
 @njit(cache=True, fastmath=True)
-def _orbit_sums(chc, chs, shc, shs, a, w, cb, sb, out):
+def _orbit_motion(chc, chs, shc, shs, a, w, cb, sb, r, dr, ddr, ex, ey, out):
     """Per point p, with ``θ = α − β``, ``chc = ch cos α``, ``chs = ch sin α`` (``sh``
-    alike), ``cb = cos β``, ``sb = sin β``: out[p] = Σ_j a_j (ch sin θ, sh cos θ),
-    Σ_j a_j ω_j (ch cos θ, sh sin θ) and Σ_j a_j ω_j² (ch sin θ, sh cos θ)."""
+    alike), ``cb = cos β``, ``sb = sin β``: the sums ξ_h = −Σ_j a_j ch sin θ, ξ_z = Σ_j a_j
+    sh cos θ, u = ∂ξ/∂t (Σ a_j ω_j (ch cos θ, sh sin θ)) and ∂u/∂t (Σ a_j ω_j² (ch sin θ,
+    −sh cos θ)), faded with the point's ``r``, ``r'``, ``r''`` (``r ξ``, ``r u + r' ξ``, ``r
+    ∂u/∂t + 2 r' u + r'' ξ``) into ``out`` (3, N, 3): displacement, rate, second rate, the
+    horizontal part along the heading (``ex``, ``ey``)."""
     for p in range(chc.shape[0]):
         o0 = o1 = o2 = o3 = o4 = o5 = 0.0
         for j in range(chc.shape[1]):
@@ -83,7 +86,14 @@ def _orbit_sums(chc, chs, shc, shs, a, w, cb, sb, out):
             o3 += a1 * (shs[p, j] * cb[j] - shc[p, j] * sb[j])
             o4 += a1 * w[j] * chsin
             o5 += a1 * w[j] * shcos
-        out[p, 0], out[p, 1], out[p, 2], out[p, 3], out[p, 4], out[p, 5] = o0, o1, o2, o3, o4, o5
+        xh, xz, uh, uz, ah, az = -o0, o1, o2, o3, o4, -o5
+        parts = ((r[p] * xh, r[p] * xz), (r[p] * uh + dr[p] * xh, r[p] * uz + dr[p] * xz),
+                 (r[p] * ah + 2.0 * dr[p] * uh + ddr[p] * xh, r[p] * az + 2.0 * dr[p] * uz + ddr[p] * xz))
+        for q in range(3):
+            h, v = parts[q]
+            out[q, p, 0] = h * ex
+            out[q, p, 1] = h * ey
+            out[q, p, 2] = v
 
 
 class PointOrbits:
@@ -100,7 +110,6 @@ class PointOrbits:
         ch, sh = depth_factors(np.asarray(z, float) - sea.level, k, sea.depth)
         self._f = tuple(np.ascontiguousarray(f) for f in (ch * ca, ch * sa, sh * ca, sh * sa))
         self._a, self._w = a, w
-        self._sums = np.empty((len(self.s), 6))
 
     def motion(self, t: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(displacement [m], its rate [m/s], its second rate [m/s^2]), each (N, 3), at time
@@ -109,14 +118,11 @@ class PointOrbits:
         its velocity (θ = α − ω t + phase)."""
         sea = self.sea
         cb, sb = _time_factors(sea, t)
-        _orbit_sums(*self._f, self._a, self._w, cb, sb, self._sums)
-        o = self._sums
-        xh, xz, uh, uz, ah, az = -o[:, 0], o[:, 1], o[:, 2], o[:, 3], o[:, 4], -o[:, 5]
         r, dr, ddr = sea._fade(self.s, np.full_like(self.s, float(t)), second=True)
         e = sea.heading
-        parts = ((r * xh, r * xz), (r * uh + dr * xh, r * uz + dr * xz),
-                 (r * ah + 2.0 * dr * uh + ddr * xh, r * az + 2.0 * dr * uz + ddr * xz))
-        return tuple(np.stack([h * e[0], h * e[1], v], axis=-1) for h, v in parts)
+        out = np.empty((3, len(self.s), 3))
+        _orbit_motion(*self._f, self._a, self._w, cb, sb, r, dr, ddr, float(e[0]), float(e[1]), out)
+        return out[0], out[1], out[2]
 
     def displacement(self, t: float) -> tuple[np.ndarray, np.ndarray]:
         """(displacement [m], its rate [m/s]), each (N, 3), at time ``t`` [s]: as

@@ -231,6 +231,8 @@ class Fluid:
         self.config = config
         self.name = config.name
         self.ps = particles.copy()
+        self._id_rows = None  # Fluid._rows_of's table, made after each sort
+        self._id_count = int(self.ps.ids.max()) + 1
         self.t = math.nan
         self.counters = _Counters()
         self.n_groups = int(particles.group.max()) + 1 if particles.group.max() >= 0 else 0
@@ -474,6 +476,7 @@ class Fluid:
 
     def load_state(self, state) -> None:
         self.ps = state["ps"].copy()
+        self._id_rows = None
         self.t = state["t"]
         self.counters.steps = state["steps"]
         self.counters.removed = dict(state["removed"])
@@ -575,14 +578,29 @@ class Fluid:
             self._sort()
             self._rates()
 
+    def _rows_of(self, ids: np.ndarray) -> np.ndarray:
+        """The rows (current order) of the particles ``ids`` (int64 array of ids the fluid
+        was built with), -1 for those that left the domain: the inverse of ``ps.ids`` over
+        the simulated particles (a symmetry plane's images carry negative ids), made once
+        after each sort."""
+        inv = self._id_rows
+        if inv is None:
+            ps = self.ps
+            inv = np.full(self._id_count, -1, np.int64)
+            if self.mirror is None:
+                inv[ps.ids] = np.arange(ps.n)
+            else:
+                real = np.flatnonzero(ps.ids >= 0)
+                inv[ps.ids[real]] = real
+            self._id_rows = inv
+        return inv[ids]
+
     def _group_rows(self, group: int, ids: np.ndarray):
-        """(rows of the prescribed ``group``'s particles in id order, the selection of its
-        reference rows ``ids`` still present: particles may have left the domain)."""
-        ps = self.ps
-        sel = np.flatnonzero(ps.group == group)
-        sel = sel[np.argsort(ps.ids[sel])]
-        keep = np.isin(ids, ps.ids[sel], assume_unique=True) if sel.size != ids.size else slice(None)
-        return sel, keep
+        """(rows of the prescribed ``group``'s particles ``ids`` (in id order) still present,
+        the selection of those among ``ids``: particles may have left the domain)."""
+        rows = self._rows_of(ids)
+        keep = rows >= 0
+        return (rows, slice(None)) if keep.all() else (rows[keep], keep)
 
     def _place_prescribed(self, t: float) -> None:
         """Place every prescribed group at time ``t`` [s]."""
@@ -640,11 +658,9 @@ class Fluid:
         new placement first (:meth:`refresh_rates`)."""
         ps = self.ps
         ids = np.asarray(ids, np.int64)
-        order = np.argsort(ps.ids)
-        at = np.searchsorted(ps.ids, ids, sorter=order)
-        at = np.minimum(at, ps.n - 1)
-        idx = order[at]
-        if not (ps.ids[idx] == ids).all():
+        inside = (ids >= 0) & (ids < self._id_count)
+        idx = self._rows_of(np.where(inside, ids, 0))
+        if not inside.all() or (idx < 0).any():
             raise InputError("fluid: set_particle_motion got ids of particles that do not exist (removed?)")
         if (ps.kind[idx] == Kind.FLUID).any() or (ps.kind[idx] == Kind.FIXED_WALL).any():
             raise InputError("fluid: set_particle_motion moves MOVING_WALL or BODY particles only")
@@ -777,6 +793,7 @@ class Fluid:
                 raise InstabilityError(f"fluid: every fluid particle has left the domain by t={self.t:.6g} s")
         keys = list(self._aux)
         self._aux = dict(zip(keys, ps.permute(order, *(self._aux[k] for k in keys))))
+        self._id_rows = None
         if m is not None:
             m.finish(ps, self._aux, perm, kept, n_real)
         self._start = start

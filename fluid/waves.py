@@ -41,12 +41,128 @@ from pathlib import Path
 from typing import NamedTuple
 
 import numpy as np
+from numba import njit, prange
 
 from errors import InputError
 from fluid.wavemaker import wavenumber, wavenumbers  # noqa: F401 (wavenumbers: read from here too)
 
-#: elements of one (points × components) block: bounds the memory of a many-component sea
-_BLOCK = 1 << 19
+#: rows of the kinematics :func:`_linear_sums` returns: η, u_h, w, ∂u_h/∂t, ∂w/∂t, p/ρ
+ETA, UH, W, AH, AW, P = range(6)
+
+
+@njit(cache=True)
+def _fade_at(s, t, has_source, source, c_front, ramp):
+    """The fade-in ``(r, r', r'')`` at position ``s`` [m] along the heading and time ``t``
+    [s] (module docstring): ``r = (1 − cos(π q)) / 2``, ``q = τ / ramp`` clipped to [0, 1],
+    ``τ = t`` or, from a ``source``, ``t − max(s − source, 0) / c_front``; a step at τ = 0
+    where ``ramp`` is 0."""
+    tau = t - max(s - source, 0.0) / c_front if has_source else t
+    if ramp <= 0.0:
+        return (1.0 if tau >= 0.0 or not has_source else 0.0), 0.0, 0.0
+    q = min(max(tau / ramp, 0.0), 1.0)
+    r = 0.5 * (1.0 - math.cos(math.pi * q))
+    if 0.0 < q < 1.0:
+        f = math.pi / ramp
+        return r, 0.5 * f * math.sin(math.pi * q), 0.5 * f * f * math.cos(math.pi * q)
+    return r, 0.0, 0.0
+
+
+@njit(parallel=True, cache=True)
+def _fade_all(s, t, has_source, source, c_front, ramp, out):
+    """:func:`_fade_at` at each of the points ``s``, ``t`` (1-D) into ``out`` (3, n)."""
+    for i in prange(s.shape[0]):
+        out[0, i], out[1, i], out[2, i] = _fade_at(s[i], t[i], has_source, source, c_front, ramp)
+
+
+def _linear_sums(s, zeta, t, w, a, ph, k, den, ap, depth, s_ref, fade, want, out):
+    """The linear superposition of the components (``w``, ``a``, ``ph``, ``k``) at points
+    ``s`` [m] along the heading, ``zeta`` [m] below the still water (empty: the elevation
+    alone) and times ``t`` [s], faded in: rows :data:`ETA` ... :data:`P` of ``out`` (6, n)
+    where ``want`` (6 booleans) asks for them, and ``r``, ``r'`` in ``out[6:8]``; ``fade``
+    = (has_source, source, c_front, ramp). Per component, θ = k (s − s_ref) − ω t + phase
+    (Dean & Dalrymple 1991, Table 4.1)::
+
+        η = a cos θ,  u_h = a ω ch cos θ,  w = a ω sh sin θ,
+        ∂u_h/∂t = a ω² ch sin θ,  ∂w/∂t = −a ω² sh cos θ,  p/ρ = g a cosh k(ζ+d)/cosh kd cos θ
+
+    with ``ch, sh = cosh, sinh k(ζ+d) / sinh kd`` as ``(e1 ± e2) / den``, ``den = 1 −
+    e^-2kd``, ``e1 = exp(kζ)``, ``e2 = exp(−k(ζ + 2d))`` (both ≤ 1: no overflow in deep
+    water), and ``ap = g a / (1 + e^-2kd)`` (so that ``p/ρ = ap (e1 + e2) cos θ``); each
+    times r, and the accelerations plus r' times the velocity (∂/∂t of the faded field)."""
+    n, m = s.shape[0], w.shape[0]
+    have_z = zeta.shape[0] > 0
+    has_source, source, c_front, ramp = fade
+    for i in prange(n):
+        r, dr, _ = _fade_at(s[i], t[i], has_source, source, c_front, ramp)
+        eta = uh = wz = ah = aw = p = 0.0
+        for j in range(m):
+            th = k[j] * (s[i] - s_ref) - w[j] * t[i] + ph[j]
+            c = math.cos(th)
+            eta += a[j] * c
+            if not have_z:
+                continue
+            kj = k[j]
+            e1 = math.exp(kj * zeta[i])
+            e2 = math.exp(-kj * zeta[i] - 2.0 * kj * depth)
+            if want[P]:
+                p += ap[j] * (e1 + e2) * c
+            if want[UH] or want[AH]:
+                sn = math.sin(th)
+                ch, sh = (e1 + e2) / den[j], (e1 - e2) / den[j]
+                awj = a[j] * w[j]
+                uh += awj * ch * c
+                wz += awj * sh * sn
+                ah += awj * w[j] * ch * sn
+                aw -= awj * w[j] * sh * c
+        out[ETA, i], out[UH, i], out[W, i], out[P, i] = r * eta, r * uh, r * wz, r * p
+        out[AH, i], out[AW, i] = r * ah + dr * uh, r * aw + dr * wz
+        out[6, i], out[7, i] = r, dr
+
+
+#: :func:`_linear_sums` on one thread, and over the threads for many points × components
+#: (a parallel loop's start costs more than a few thousand of its terms)
+_linear_sums_serial = njit(cache=True)(_linear_sums)
+_linear_sums_parallel = njit(parallel=True, cache=True)(_linear_sums)
+#: points × components above which the parallel form is taken
+_PARALLEL_TERMS = 20000
+
+
+@njit(cache=True)
+def _stokes2_terms(s, zeta, t, k, w, a, depth, phase, a2, want, sums):
+    """Add Stokes second order's terms (:class:`RegularWave`'s docstring: Sorensen 2006,
+    Eqs. 3.7-3.10, and the pressure derived there) to the rows of ``sums``
+    (:func:`_linear_sums`'s, its fade-in ``r``, ``r'`` in rows 6-7) that ``want`` asks for,
+    faded with ``r²``: wavenumber ``k`` [rad/m], ``w`` [rad/s], amplitude ``a`` [m],
+    ``phase`` [rad], ``a2`` the second harmonic's amplitude [m]; ``zeta`` empty: η alone.
+    ``cosh 2k(ζ+d) / sinh⁴ kd`` and ``sinh 2k(ζ+d) / sinh⁴ kd`` as ``8 (e1 ± e2) / (1 −
+    e^-2kd)⁴`` with ``e1 = exp(2kζ − 2kd)``, ``e2 = exp(−2kζ − 6kd)``, both ≤ 1."""
+    have_z = zeta.shape[0] > 0
+    q = math.exp(-2.0 * k * depth)
+    q4 = 8.0 / (1.0 - q) ** 4
+    A = 0.75 * a * a * w * k
+    inv_sh2 = 4.0 * q / (1.0 - q) ** 2
+    den = -math.expm1(-2.0 * k * depth)
+    for i in range(s.shape[0]):
+        r, dr = sums[6, i], sums[7, i]
+        r2, dr2 = r * r, 2.0 * r * dr
+        th2 = 2.0 * (k * s[i] - w * t[i] + phase)
+        c2, s2 = math.cos(th2), math.sin(th2)
+        if want[ETA]:
+            sums[ETA, i] += r2 * a2 * c2
+        if not have_z:
+            continue
+        z = zeta[i]
+        e1, e2 = math.exp(2.0 * k * z - 2.0 * k * depth), math.exp(-2.0 * k * z - 6.0 * k * depth)
+        C2, S2 = q4 * (e1 + e2), q4 * (e1 - e2)
+        if want[UH]:
+            sums[UH, i] += r2 * A * C2 * c2
+            sums[W, i] += r2 * A * S2 * s2
+        if want[AH]:
+            sums[AH, i] += r2 * A * C2 * 2.0 * w * s2 + dr2 * A * C2 * c2
+            sums[AW, i] += -r2 * A * S2 * 2.0 * w * c2 + dr2 * A * S2 * s2
+        if want[P]:
+            sh = (math.exp(k * z) - math.exp(-k * (z + 2.0 * depth))) / den  # sinh k(ζ+d)/sinh kd
+            sums[P, i] += r2 * a * a * w * w * ((0.75 * C2 - 0.25 * inv_sh2) * c2 - 0.5 * sh * sh)
 
 
 class SeaError(InputError):
@@ -248,81 +364,59 @@ class Sea:
 
     # -- the machinery ---------------------------------------------------------------------
     def _fade(self, s, t, second: bool = False):
-        """The fade-in r and its rate r' [1/s] at positions ``s`` along the heading (and
-        ``second``: r'' [1/s^2] too)."""
-        if self.source is None:
-            tau = t
-            if self.ramp <= 0:
-                one, zero = np.ones_like(t), np.zeros_like(t)
-                return (one, zero, zero) if second else (one, zero)
-        else:
-            tau = t - np.maximum(s - self.source, 0.0) / self._c_front
-            if self.ramp <= 0:
-                zero = np.zeros_like(tau)
-                return ((tau >= 0).astype(float), zero, zero) if second else ((tau >= 0).astype(float), zero)
-        q = np.clip(tau / self.ramp, 0.0, 1.0)
-        inside = (q > 0) & (q < 1)
-        r, dr = 0.5 * (1.0 - np.cos(math.pi * q)), np.where(inside, 0.5 * math.pi / self.ramp * np.sin(math.pi * q),
-                                                            0.0)
-        if not second:
-            return r, dr
-        return r, dr, np.where(inside, 0.5 * (math.pi / self.ramp) ** 2 * np.cos(math.pi * q), 0.0)
+        """The fade-in r and its rate r' [1/s] at positions ``s`` along the heading and times
+        ``t`` (1-D, of one length; and ``second``: r'' [1/s^2] too): :func:`_fade_at`."""
+        s, t = (np.ascontiguousarray(v, dtype=float) for v in (s, t))
+        out = np.empty((3, s.shape[0]))
+        _fade_all(s, t, *self._fade_args(), out)
+        return (out[0], out[1], out[2]) if second else (out[0], out[1])
+
+    @property
+    def _depth_constants(self) -> tuple[np.ndarray, np.ndarray]:
+        """Per component, ``1 − e^-2kd`` and ``g a / (1 + e^-2kd)`` (:func:`_linear_sums`)."""
+        kept = self.__dict__.get("_depth_kept")
+        if kept is None:
+            w, a, ph, k = self._comp
+            q = np.exp(-2.0 * k * self.depth)
+            kept = (-np.expm1(-2.0 * k * self.depth), self.g * a / (1.0 + q))
+            object.__setattr__(self, "_depth_kept", kept)
+        return kept
+
+    def _fade_args(self) -> tuple:
+        """(has_source, source, c_front, ramp) of :func:`_fade_at`."""
+        has = self.source is not None
+        return has, float(self.source) if has else 0.0, float(self._c_front), float(self.ramp)
 
     def _evaluate(self, x, y, z, t, want) -> dict:
         """The quantities in ``want`` ("eta", "u" (uh, w), "a" (ah, aw), "p" (p/ρ)) in the
-        broadcast shape of the inputs."""
+        broadcast shape of the inputs (:func:`_linear_sums`, then the kind's higher-order
+        terms)."""
         args = [x, y, t] if z is None else [x, y, z, t]
         arrays = np.broadcast_arrays(*(np.asarray(v, float) for v in args))
         shape = arrays[0].shape
-        flat = [a.ravel() for a in arrays]
+        flat = [np.ascontiguousarray(a.ravel()) for a in arrays]
         xs, ys, ts = flat[0], flat[1], flat[-1]
         e = self.heading
         s = xs * e[0] + ys * e[1]
-        zeta = None if z is None else np.clip(flat[2] - self.level, -self.depth, 0.0)
-        r, dr = self._fade(s, ts)
-        out = self._superpose(s, zeta, ts, r, dr, want)
-        self._add_higher_order(out, s, zeta, ts, r, dr, want)
-        return {name: v.reshape(shape) for name, v in out.items()}
-
-    def _superpose(self, s, zeta, t, r, dr, want) -> dict:
+        zeta = np.empty(0) if z is None else np.clip(flat[2] - self.level, -self.depth, 0.0)
+        flags = np.zeros(6, np.bool_)
+        for key, rows in (("eta", (ETA,)), ("u", (UH, W)), ("a", (AH, AW)), ("p", (P,))):
+            if key in want:
+                flags[list(rows)] = True
+        sums = np.empty((8, s.shape[0]))
         w, a, ph, k = self._comp
-        d, n = self.depth, len(s)
-        names = {"eta": ["eta"], "u": ["uh", "w"], "a": ["ah", "aw"], "p": ["p"]}
-        out = {name: np.empty(n) for key in want for name in names[key]}
-        # cosh k(ζ+d)/sinh kd and sinh k(ζ+d)/sinh kd without overflow in deep water: with
-        # e1 = exp(kζ), e2 = exp(−k(ζ + 2d)) (both <= 1), they are (e1 ± e2) / (1 − exp(−2kd))
-        den = -np.expm1(-2.0 * k * d)
-        aw, aw2 = a * w, a * w * w
-        ap = self.g * a / (1.0 + np.exp(-2.0 * k * d))  # g a cosh k(ζ+d)/cosh kd = g a (e1 + e2)/(1 + e^-2kd)
-        rows = max(1, _BLOCK // len(w))
-        for lo in range(0, n, rows):
-            sl = slice(lo, lo + rows)
-            th = np.multiply.outer(s[sl] - self._s_ref, k) - np.multiply.outer(t[sl], w) + ph
-            c = np.cos(th)
-            if "eta" in out:
-                out["eta"][sl] = c @ a
-            if zeta is None:
-                continue
-            kz = np.multiply.outer(zeta[sl], k)
-            e1, e2 = np.exp(kz), np.exp(-kz - 2.0 * k * d)
-            if "p" in out:
-                out["p"][sl] = ((e1 + e2) * c) @ ap
-            if "uh" in out or "ah" in out:
-                sn = np.sin(th)
-                ch, sh = (e1 + e2) / den, (e1 - e2) / den
-                uh, wz = (ch * c) @ aw, (sh * sn) @ aw
-                if "uh" in out:
-                    out["uh"][sl], out["w"][sl] = uh, wz
-                if "ah" in out:
-                    out["ah"][sl] = r[sl] * ((ch * sn) @ aw2) + dr[sl] * uh
-                    out["aw"][sl] = -r[sl] * ((sh * c) @ aw2) + dr[sl] * wz
-        for name in ("eta", "uh", "w", "p"):
-            if name in out:
-                out[name] *= r
-        return out
+        den, ap = self._depth_constants
+        kernel = _linear_sums_parallel if s.shape[0] * w.shape[0] > _PARALLEL_TERMS else _linear_sums_serial
+        kernel(s, zeta, ts, w, a, ph, k, den, ap, float(self.depth), float(self._s_ref), self._fade_args(), flags,
+               sums)
+        self._add_higher_order(sums, s, zeta, ts, flags)
+        names = {"eta": ETA, "uh": UH, "w": W, "ah": AH, "aw": AW, "p": P}
+        return {name: sums[row].reshape(shape) for name, row in names.items() if flags[row]}
 
-    def _add_higher_order(self, out, s, zeta, t, r, dr, want) -> None:
-        """Terms beyond linear superposition (none for a linear sea)."""
+    def _add_higher_order(self, sums, s, zeta, t, want) -> None:
+        """Add the terms beyond linear superposition to the rows of ``sums`` (those of
+        :func:`_linear_sums`, the fade-in in rows 6-7) that ``want`` asks for; ``zeta``
+        empty for the elevation alone. None for a linear sea."""
 
 
 # ------------------------------------------------------------------------ regular waves
@@ -467,34 +561,11 @@ class RegularWave(Sea):
     def shortest_period(self) -> float:
         return self.period / (2.0 if self.theory == "stokes2" else 1.0)
 
-    def _add_higher_order(self, out, s, zeta, t, r, dr, want) -> None:
+    def _add_higher_order(self, sums, s, zeta, t, want) -> None:
         if self.theory != "stokes2":
             return
-        k, w, a, d = self.k, self.omega, self.amplitude, self.depth
-        th2 = 2.0 * (k * s - w * t + math.radians(self.phase))
-        c2, s2 = np.cos(th2), np.sin(th2)
-        r2, dr2 = r * r, 2.0 * r * dr
-        if "eta" in out:
-            out["eta"] += r2 * self.second_harmonic * c2
-        if zeta is None:
-            return
-        q = math.exp(-2.0 * k * d)
-        # cosh 2k(ζ+d)/sinh⁴ kd and sinh 2k(ζ+d)/sinh⁴ kd as 8 (e1 ± e2)/(1 − e^-2kd)⁴ with
-        # e1 = exp(2kζ − 2kd), e2 = exp(−2kζ − 6kd), both <= 1 for −d <= ζ <= 0
-        e1, e2 = np.exp(2.0 * k * zeta - 2.0 * k * d), np.exp(-2.0 * k * zeta - 6.0 * k * d)
-        C2, S2 = 8.0 * (e1 + e2) / (1.0 - q) ** 4, 8.0 * (e1 - e2) / (1.0 - q) ** 4
-        A = 0.75 * a * a * w * k
-        if "uh" in out:
-            out["uh"] += r2 * A * C2 * c2
-            out["w"] += r2 * A * S2 * s2
-        if "ah" in out:
-            out["ah"] += r2 * A * C2 * 2.0 * w * s2 + dr2 * A * C2 * c2
-            out["aw"] += -r2 * A * S2 * 2.0 * w * c2 + dr2 * A * S2 * s2
-        if "p" in out:
-            inv_sh2 = 4.0 * q / (1.0 - q) ** 2
-            # sinh k(ζ+d)/sinh kd, as in the linear terms
-            sh = (np.exp(k * zeta) - np.exp(-k * (zeta + 2.0 * d))) / (-math.expm1(-2.0 * k * d))
-            out["p"] += r2 * a * a * w * w * ((0.75 * C2 - 0.25 * inv_sh2) * c2 - 0.5 * sh * sh)
+        _stokes2_terms(s, zeta, t, self.k, self.omega, self.amplitude, self.depth, math.radians(self.phase),
+                       self.second_harmonic, want, sums)
 
 
 @dataclass(frozen=True)
