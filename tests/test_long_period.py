@@ -6,7 +6,8 @@ import pytest
 
 from cosim import validation
 from cosim.errors import InputError
-from cosim.validations.long_period import (LINEAR_TOLERANCES, TANKS, _tank, free_decay, free_frequency,
+from cosim.validations import case_scene
+from cosim.validations.long_period import (LINEAR_TOLERANCES, free_decay, free_frequency, long_period_scene,
                                           run_long_period)
 
 
@@ -20,6 +21,24 @@ def test_free_frequency_of_a_damped_wave_with_a_harmonic():
     # and its decay rate, found from a grid of rates (a wave damped 20 times faster)
     y = 0.06 * np.exp(-1.0 * t) * np.cos(w * t + 0.3) + 0.0005 * rng.standard_normal(t.size)
     assert free_decay(t, y, 2.83, rates=np.linspace(0.0, 2.0, 11)) == pytest.approx((w, 1.0), rel=1e-2)
+
+
+def test_the_quick_variants_scene_is_the_file_and_each_tank_its_own():
+    """The quick variant runs the case's scene file as written; the other tanks and regimes
+    change its domain, dimension, spacing and shaking, held at rest after whole periods
+    (the inclined tank settled 1 s first: its lattice water is not at rest on the slope)."""
+    from cosim.scene.toml_io import to_dict
+
+    assert to_dict(validation.cases()["long-period"].scene(True)) == to_dict(case_scene.load("long-period"))
+    inclined = long_period_scene("inclined", 0.05, 2, a0=4.905)
+    assert inclined.domain.kind == "inclined-tank" and inclined.domain.angle == 45.0
+    assert inclined.fluid.settle == 1.0 and inclined.base_motion.acceleration == 4.905
+    cyl = long_period_scene("cylinder", 0.06, 3)
+    assert cyl.domain.kind == "cylinder-tank" and cyl.world.dim == 3 and cyl.base_motion.direction == (1.0, 0.0, 0.0)
+    # 3 periods of 0.7 s, then 3 of the cylinder's first mode, to whole samples of 0.02 s
+    assert cyl.base_motion.stop == pytest.approx(2.1) and cyl.base_motion.hold
+    assert cyl.world.duration / 0.02 == pytest.approx(round(cyl.world.duration / 0.02), abs=1e-9)
+    assert cyl.world.duration > 2.1 and cyl.fluid.settle == 0.0
 
 
 def test_bad_input_is_refused_before_any_work():
@@ -51,6 +70,7 @@ def test_long_period_quick():
     assert small["departure_time_s"] is None or small["departure_time_s"] > paper["departure_time_s"]
     assert paper["gauge_rms_rel_forced"] > 1.5 * small["gauge_rms_rel_forced"]
     assert small["particles_lost"] == 0
-    # the set-up's count (particles that leave the domain are counted back in)
-    assert paper["particles"] == small["particles"] == _tank("rectangular", 2, small["dx_m"], TANKS["rectangular"])[0].n
+    # the scene's count (particles that leave the domain are counted back in)
+    with case_scene.built(long_period_scene("rectangular", small["dx_m"], 2)) as b:
+        assert paper["particles"] == small["particles"] == b.sph.ps.n
     assert "rectangular 2-D, 0.5 g: total pressure on the left wall (Sunara et al. 2021, Fig. 7/13/18)" in r["series"]

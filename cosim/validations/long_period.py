@@ -28,17 +28,13 @@ import numpy as np
 from scipy import optimize, special
 
 from cosim.errors import InputError
-from cosim.validations.registry import case
-from cosim.scene.setup import settings
+from cosim.validations import case_scene
 from cosim.validations import forced_sloshing as fs
-from cosim.validations.sloshing import _moving_tank, face_pressure
-from cosim.validations.tanks import moving_walls
-from fluid.geometry import set_hydrostatic
-from fluid.motion import Harmonic, Stopped, Translation
+from cosim.validations.registry import case
+from cosim.validations.sloshing import face_pressure
 from fluid.particles import Kind
 from fluid.probes import surface_elevation
-from fluid.shapes import cylinder_tank, inclined_tank
-from fluid.solver import Fluid, FluidConfig
+from fluid.solver import Fluid
 
 G = 9.81
 RHO0 = 1000.0
@@ -69,19 +65,64 @@ def _check_lattice(shape: str, dx: float, tank: dict) -> None:
                              f"{s:g}/{k} = {s / k:.4g} m or {s:g}/{k + 1} = {s / (k + 1):.4g} m")
 
 
-def _tank(shape: str, dim: int, dx: float, tank: dict):
-    """Particles of the tank (walls one MOVING group 0, water at rest) and its centre (x,
-    y) [m] (the middle of the still surface): the rectangle's and the inclined tank's inner
-    bottom-left corner at the origin, the cylinder's axis on z."""
-    L, h, H, W = tank["size"], tank["depth"], tank["height"], tank["width"]
-    if shape == "inclined":
-        return moving_walls(inclined_tank(dim, dx, tank["beta"], L, h, H, width=W), dim, dx), \
-            np.array([_centre_x(tank), 0.5 * W])
+def _domain(shape: str, tank: dict, dim: int) -> dict:
+    """The scene's ``[domain]`` of the tank ``shape`` of :data:`TANKS`: the rectangle's and the
+    inclined tank's inner bottom-left corner at the origin, the cylinder's axis on z."""
+    L, h, H = tank["size"], tank["depth"], tank["height"]
+    width = {"width": tank["width"]} if dim == 3 else {}
     if shape == "rectangular":
-        return _moving_tank(dim, dx, L, h, H, W), np.array([0.5 * L, 0.5 * W])
-    if dim != 3:
+        return {"kind": "tank", "length": L, "height": H, "depth": h, **width}
+    if shape == "inclined":
+        return {"kind": "inclined-tank", "angle": tank["beta"], "length": L, "depth": h, "height": H, **width}
+    return {"kind": "cylinder-tank", "diameter": L, "depth": h, "height": H}
+
+
+def _centre(shape: str, tank: dict) -> np.ndarray:
+    """(x, y) [m] of the middle of the still surface in the tank's frame (:func:`_domain`)."""
+    return np.zeros(2) if shape == "cylinder" else np.array([_centre_x(tank), 0.5 * tank["width"]])
+
+
+def long_period_scene(shape: str = "rectangular", dx: float = 0.1, dim: int = 2, a0: float = 0.05 * G,
+                      period: float | None = None, periods: int = 3, free_periods: float = 3.0, c0: float = 40.0,
+                      sample_dt: float = 0.02, settle: float | None = None):
+    """The scene of one run of :func:`run_long_period` (its arguments): the case's scene file
+    ``scenes/long-period.toml`` with the tank ``shape`` (:func:`_domain`), ``dim``, ``dx``,
+    ``c0``, ``a0`` [m/s^2] sin(2 pi t / ``period``) from rest for ``periods`` periods, then the
+    tank held where it got to (``base_motion.hold``) for ``free_periods`` periods of linear
+    theory's first mode, sampled every ``sample_dt`` [s]; ``settle`` [s] of damped rest first
+    (default 1 s for the inclined tank, whose lattice water is not at rest against the slope,
+    none for the others). Refused, before any work: an unknown shape, a 2-D cylinder, a
+    ``dx`` that does not divide the water depth (or the rectangle's length)."""
+    from cosim.scene.toml_io import from_dict, to_dict
+
+    if shape not in TANKS:
+        raise InputError(f"long-period: shape={shape!r}; give one of {sorted(TANKS)}")
+    if shape == "cylinder" and dim != 3:
         raise InputError("long-period: the cylinder is 3-D; give dim=3")
-    return moving_walls(cylinder_tank(dx, L, h, H), 3, dx), np.zeros(2)
+    tank = TANKS[shape]
+    _check_lattice(shape, dx, tank)
+    period = tank["period"] if period is None else period
+    t_end = periods * period + free_periods * 2 * math.pi / _modes(shape, tank).omega[0]
+    settle = (1.0 if shape == "inclined" else 0.0) if settle is None else settle
+    d = to_dict(case_scene.load("long-period"))
+    d["world"] |= {"dim": dim, "duration": round(round(t_end / sample_dt) * sample_dt, 12), "sample_every": sample_dt}
+    d["fluid"] |= {"dx": dx, "c0": c0, "settle": settle}
+    d["domain"] = _domain(shape, tank, dim)
+    d["base_motion"] |= {"direction": [1.0] + [0.0] * (dim - 1), "acceleration": round(float(a0), 12),
+                         "period": float(period), "stop": round(periods * period, 12)}
+    if (shape, dim) != ("rectangular", 2):
+        d.pop("probes", None)  # the file's gauges are the 2-D rectangle's; the case reads its own
+    return from_dict(d)
+
+
+def _modes(shape: str, tank: dict):
+    """Linear theory's sloshing modes of the tank (:mod:`cosim.validations.forced_sloshing`)."""
+    L, h = tank["size"], tank["depth"]
+    if shape == "rectangular":
+        return fs.rectangular_modes(L, h)
+    if shape == "cylinder":
+        return fs.cylinder_modes(0.5 * L, h)
+    return fs.trapezoid_modes(L, h, tank["beta"])
 
 
 def gauge_mode_basis(shape: str, size: float, xc: np.ndarray, modes) -> np.ndarray:
@@ -149,21 +190,20 @@ def _walls(shape: str, tank: dict, zf: np.ndarray, dim: int):
 
 def run_long_period(shape: str = "rectangular", dx: float = 0.05, dim: int = 2, a0: float = 0.5 * G,
                     period: float | None = None, periods: int = 3, free_periods: float = 3.0,
-                    c0: float = 40.0, sample_dt: float = 0.02, gauges: int = 25, settle: float | None = None, profile_times=None, **overrides) -> dict:
+                    c0: float = 40.0, sample_dt: float = 0.02, gauges: int = 25, settle: float | None = None,
+                    profile_times=None) -> dict:
     """The tank ``shape`` of :data:`TANKS` ("rectangular" and "inclined": the 2-D section
     or the whole 3-D tank; "cylinder": 3-D) under a0 [m/s^2] sin(2 pi t / period) along x
     from rest for ``periods`` periods, then ``free_periods`` linear first-mode periods at
-    rest; sampled every ``sample_dt`` [s]. ``settle`` [s] of damped rest first
-    (:meth:`fluid.solver.Fluid.settle`; default 1 s for the inclined tank, whose lattice
-    water is not at rest against the slope, none for the others).
+    rest; sampled every ``sample_dt`` [s]: the scene :func:`long_period_scene`, built as
+    ``cosim run`` builds it (its fluid set-up the chooser's, "sloshing": h = 2 dx and walls
+    carrying the fluid's pressure; in 3-D also the density diffusion faded under the
+    surface), stepped here from sample to sample.
 
     c0 [m/s]: 40 m/s puts the acoustic period 4 h / c0 (0.1 s at h = 1 m) at a tenth of
     T_p, as the paper's c_p does for its short periods (Sunara et al. 2021, Eq. 17; the compressible excess
     of the impulsive pressure is then 1 / sqrt(1 - (4 h / (c0 T_p))^2) - 1 = 0.5 %), and is
-    ~30 times the largest sloshing speed. The rest of the fluid's set-up is the scenes'
-    "sloshing" one (:func:`cosim.scene.setup.settings`: h = 2 dx and walls carrying the
-    fluid's pressure; in 3-D also the density diffusion faded under the surface);
-    ``overrides`` on top.
+    ~30 times the largest sloshing speed.
 
     Recorded: the free surface (:func:`fluid.probes.surface_elevation`) at ``gauges``
     points on the tank's centre line along x, 2 h from the walls; the run-up at each wall
@@ -176,63 +216,46 @@ def run_long_period(shape: str = "rectangular", dx: float = 0.05, dim: int = 2, 
     and the record of the series (the gauges and all the fitted modal amplitudes
     included), each beside linear theory's.
     """
-    if shape not in TANKS:
-        raise InputError(f"long-period: shape={shape!r}; give one of {sorted(TANKS)}")
-    tank = dict(TANKS[shape])
-    period = tank["period"] if period is None else period
-    L, h, H = tank["size"], tank["depth"], tank["height"]
-    _check_lattice(shape, dx, tank)
-    modes = {"rectangular": lambda: fs.rectangular_modes(L, h), "cylinder": lambda: fs.cylinder_modes(0.5 * L, h),
-             "inclined": lambda: fs.trapezoid_modes(L, h, tank["beta"])}[shape]()
-    w1 = float(modes.omega[0])
-    t_stop = periods * period
-    t_end = t_stop + free_periods * 2 * math.pi / w1
-    harmonic = Harmonic.from_peak_acceleration(a0, period, from_rest=True)
-    drift = abs(harmonic.state(t_stop)[0])                      # the tank's travel [m]
-    ps, centre = _tank(shape, dim, dx, tank)
-    pad = 4 * dx
-    lo = ps.pos.min(0) - pad
-    hi = ps.pos.max(0) + pad
-    hi[0] += drift
-    hi[-1] += H                                                  # splashes over the walls stay in the domain
-    cfg = FluidConfig(dim=dim, dx=dx, c0=c0, domain_lo=tuple(lo), domain_hi=tuple(hi),
-                      **{**settings("sloshing", dim), **overrides})
-    set_hydrostatic(ps, h, RHO0, cfg.speed_of_sound, cfg.gamma, cfg.g)
-    f = Fluid(cfg, ps)
-    shake = Translation(tuple(np.eye(dim)[0]), Stopped(harmonic, t_stop, fade=0.0))
-    f.prescribe_motion(0, shake)
-    f.initialize(0.0)
-    settle = (1.0 if shape == "inclined" else 0.0) if settle is None else settle
-    if settle > 0:
-        f.settle(settle)
-
-    zf = dx * (0.5 + np.arange(int(math.floor(h / dx + 1e-9))))
-    faces, half = _walls(shape, tank, zf, dim)
-    margin = 2 * cfg.h
-    xg = np.linspace(-half + margin, half - margin, gauges)    # from the centre
-    rec = {"t": [], "gauges": [], "runup_left": [], "runup_right": [], "p_left": [], "p_right": []}
-    n_samples = int(round(t_end / sample_dt))
-    t = 0.0
-    for i in range(n_samples):
-        f.advance(t, sample_dt)
-        t = (i + 1) * sample_dt
-        origin = np.zeros(dim)
-        origin[0] = centre[0] + shake.signal.state(t)[0]
-        if dim == 3:
-            origin[1] = centre[1]
-        gpts = xg[:, None] + origin[0] if dim == 2 else np.column_stack([xg + origin[0], np.full(gauges, origin[1])])
-        rec["gauges"].append(surface_elevation(f, gpts) - h)
-        up = _runup(f, shape, tank, origin, dx)
-        rec["runup_left"].append(up[0] - h)
-        rec["runup_right"].append(up[1] - h)
-        acc = shake.acceleration(t)
-        for side, (pts, n) in faces.items():
-            here = pts + origin
-            rec[f"p_{side}"].append(face_pressure(f, here, here, n, acc, cfg.gravity))
-        rec["t"].append(t)
-    rec = {k: np.asarray(v) for k, v in rec.items()}
-    rec["gauges"] = np.nan_to_num(rec["gauges"], nan=-h)  # a gauge the water left: the bottom
-    return _compare(rec, modes, shape, tank, a0, period, t_stop, xg, faces, half, f, cfg, profile_times)
+    scene = long_period_scene(shape, dx, dim, a0, period, periods, free_periods, c0, sample_dt, settle)
+    tank = TANKS[shape]
+    period = scene.base_motion.period
+    h = tank["depth"]
+    modes = _modes(shape, tank)
+    t_stop = scene.base_motion.stop
+    n_samples = int(round(scene.world.duration / sample_dt))
+    centre = _centre(shape, tank)
+    with case_scene.built(scene) as b:
+        f, shake = b.sph, b.base_motion
+        if scene.fluid.settle > 0:
+            f.settle(scene.fluid.settle)
+        cfg = f.config
+        zf = dx * (0.5 + np.arange(int(math.floor(h / dx + 1e-9))))
+        faces, half = _walls(shape, tank, zf, dim)
+        margin = 2 * cfg.h
+        xg = np.linspace(-half + margin, half - margin, gauges)    # from the centre
+        rec = {"t": [], "gauges": [], "runup_left": [], "runup_right": [], "p_left": [], "p_right": []}
+        t = 0.0
+        for i in range(n_samples):
+            f.advance(t, sample_dt)
+            t = (i + 1) * sample_dt
+            origin = np.zeros(dim)
+            origin[0] = centre[0] + shake.signal.state(t)[0]
+            if dim == 3:
+                origin[1] = centre[1]
+            gpts = (xg[:, None] + origin[0] if dim == 2 else
+                    np.column_stack([xg + origin[0], np.full(gauges, origin[1])]))
+            rec["gauges"].append(surface_elevation(f, gpts) - h)
+            up = _runup(f, shape, tank, origin, dx)
+            rec["runup_left"].append(up[0] - h)
+            rec["runup_right"].append(up[1] - h)
+            acc = shake.acceleration(t)
+            for side, (pts, n) in faces.items():
+                here = pts + origin
+                rec[f"p_{side}"].append(face_pressure(f, here, here, n, acc, cfg.gravity))
+            rec["t"].append(t)
+        rec = {k: np.asarray(v) for k, v in rec.items()}
+        rec["gauges"] = np.nan_to_num(rec["gauges"], nan=-h)  # a gauge the water left: the bottom
+        return _compare(rec, modes, shape, tank, a0, period, t_stop, xg, faces, half, f, cfg, profile_times)
 
 
 def _runup(f: Fluid, shape: str, tank: dict, origin: np.ndarray, dx: float) -> tuple[float, float]:
@@ -384,7 +407,8 @@ def long_period_plots(runs: dict) -> dict:
       "where it holds and at the paper's 0.5 g where it does not",
       target=LONG_PERIOD_TARGET,
       quick="the 2-D section of the rectangular tank at dx = 0.1 m (10 rows): 15 %, 3 %, 4 % (first-order errors "
-            "of ~dx/h); 0.5 g reported")
+            "of ~dx/h); 0.5 g reported",
+      scene=lambda quick: long_period_scene("rectangular", 0.1 if quick else 0.05, 2, LINEAR_A0))
 def long_period(quick: bool) -> dict:
     """Sunara et al. 2021, §3.1 (Fig. 7-8), §3.2 (Fig. 13), §3.3 (Fig. 18): see :func:`run_long_period`.
     Three periods of forcing, three first-mode periods free. Full: the 2-D sections of the
