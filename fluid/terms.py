@@ -20,6 +20,7 @@ caches (``fluid/**/*.nbi``): a loop's cache is keyed on its own file, not on the
 * Momentum, Barreiro et al. 2016, Eq. 6; artificial viscosity, Monaghan 1992 (Sunara
   et al. 2021, Eq. 6); laminar viscosity, Lo & Shao 2002; XSPH, Monaghan 1989.
 * The viscous term of the time step, Sunara et al. 2021, Eq. 14.
+* A boundary particle's force and moment on its body.
 * The integrator's update of one particle: the symplectic predictor-corrector (Monaghan
   2005) and Verlet (Monaghan 1989), :mod:`fluid.integrator`.
 * The wall pressure extrapolated from the fluid, Adami, Hu & Adams 2012, Eq. 27.
@@ -505,6 +506,16 @@ def mdbc_extrapolate(A, bv, m, o, dim, det_min, rho0):
     return (max(sb / s0, rho0) if s0 > 0.0 else rho0), 1
 
 
+# ------------------------------------------------------------------ loads on the bodies
+def particle_load(mass, ax, ay, az, rx, ry, rz):
+    """``(F, M)`` of one boundary particle, six scalars: the force ``mass a`` [N] it takes
+    from the fluid (``a`` [m/s^2] its rate of momentum exchange per unit mass) and its moment
+    ``r x mass a`` [N m] about its group's point (``r`` [m] from it); in 2-D (``ay = ry = 0``)
+    the moment about +y, ``rz fx - rx fz``, is the fifth."""
+    fx, fy, fz = mass * ax, mass * ay, mass * az
+    return fx, fy, fz, ry * fz - rz * fy, rz * fx - rx * fz, rx * fy - ry * fx
+
+
 # ------------------------------------------------------------------ integration, one particle
 # The integrator's updates (fluid.integrator: the symplectic predictor-corrector, Monaghan
 # 2005, and Verlet, Monaghan 1989; as DualSPHysics integrates) of one particle: its density
@@ -570,7 +581,7 @@ TERMS = ("kernel_w", "kernel_grad_shape", "kernel_grad_scale", "tait", "tait_pre
          "acceleration", "viscous_speed", "fickian_weight", "symmetric_min_eigenvalue", "fickian_shift",
          "renormalised_gradient", "det4", "solve_in_place", "mls_moments", "mls_solve",
          "mdbc_add_neighbour", "mdbc_extrapolate", "wall_clamped", "predictor_density", "predictor_component",
-         "corrector_density", "corrector_component", "verlet_density", "verlet_component")
+         "corrector_density", "corrector_component", "verlet_density", "verlet_component", "particle_load")
 _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 #: the terms compiled for the CPU loops (numba.njit; LLVM inlines them), and for the
 #: float32 pair loop (float32 literals; not cached: the same code as ``cpu``'s, typed apart)

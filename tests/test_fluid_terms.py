@@ -294,3 +294,15 @@ def test_symplectic_density_update_is_the_pade_step_and_walls_stay_above_rho0():
     rm1 = rho.copy()
     verlet(pos, vel, rho, np.array([-1e3, -1e3]), acc, kind, 1000.0, dt, vn, rm1, True, none)
     assert rho[0] == pytest.approx(1000.5 - 2.0) and rho[1] == 1000.0
+
+
+def test_particle_load_is_the_force_and_its_moment():
+    """A boundary particle's load (fluid.terms.particle_load): ``m a`` and ``r x m a``; in
+    2-D (no y parts) the moment about +y alone, positive for a force along +x above the point."""
+    rng = np.random.default_rng(5)
+    for _ in range(5):
+        m, a, r = rng.uniform(0.1, 2.0), rng.normal(size=3), rng.normal(size=3)
+        got = terms.cpu.particle_load(m, *a, *r)
+        np.testing.assert_allclose(got[:3], m * a, rtol=1e-14)
+        np.testing.assert_allclose(got[3:], np.cross(r, m * a), rtol=1e-13, atol=1e-15)
+    assert terms.cpu.particle_load(2.0, 3.0, 0.0, 0.0, 0.0, 0.0, 0.5) == (6.0, 0.0, 0.0, 0.0, 3.0, 0.0)

@@ -581,28 +581,26 @@ def k_first_non_finite(P, V, rho, n, out):
 
 @cuda.jit
 def k_group_sums(P, mass, acc, group, n, centre, F, M):
-    """``fluid.solver._sum_groups``: force m a and moment (r - c) x m a per boundary group,
-    summed with atomics (their order varies: round-off)."""
+    """``fluid.solver._sum_groups``: force m a and moment (r - c) x m a per boundary group
+    (``fluid.terms.particle_load``), summed with atomics (their order varies: round-off)."""
     for i in range(cuda.grid(1), n, cuda.gridsize(1)):
         g = group[i]
         if g < 0:
             continue
         dim = P.shape[0]
-        fx = mass[i] * acc[0, i]
-        fz = mass[i] * acc[dim - 1, i]
-        rx = P[0, i] - centre[g, 0]
-        rz = P[dim - 1, i] - centre[g, dim - 1]
+        three = dim == 3
+        fx, fy, fz, mx, my, mz = tm.particle_load(
+            mass[i], acc[0, i], acc[1, i] if three else 0.0, acc[dim - 1, i], P[0, i] - centre[g, 0],
+            P[1, i] - centre[g, 1] if three else 0.0, P[dim - 1, i] - centre[g, dim - 1])
         cuda.atomic.add(F, (g, 0), fx)
         cuda.atomic.add(F, (g, dim - 1), fz)
-        if dim == 2:
-            cuda.atomic.add(M, (g, 0), rz * fx - rx * fz)
-        else:
-            fy = mass[i] * acc[1, i]
-            ry = P[1, i] - centre[g, 1]
+        if three:
             cuda.atomic.add(F, (g, 1), fy)
-            cuda.atomic.add(M, (g, 0), ry * fz - rz * fy)
-            cuda.atomic.add(M, (g, 1), rz * fx - rx * fz)
-            cuda.atomic.add(M, (g, 2), rx * fy - ry * fx)
+            cuda.atomic.add(M, (g, 0), mx)
+            cuda.atomic.add(M, (g, 1), my)
+            cuda.atomic.add(M, (g, 2), mz)
+        else:
+            cuda.atomic.add(M, (g, 0), my)
 
 
 @cuda.jit
