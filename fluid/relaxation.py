@@ -64,6 +64,36 @@ def _damp_to_rest(pos, vel, kind, axis, x_in, x_out, rate, dt, extra):
                 extra[i, k] *= f
 
 
+@njit(cache=True)
+def _zone_rows(pos, kind, axis, x_in, x_out, rate, dt):
+    """The rows of the fluid particles inside the slab (``chi > 0``) and each one's factor
+    ``exp(-sigma(chi) dt)`` (chi clipped at 1)."""
+    inv = 1.0 / (x_out - x_in)
+    n = 0
+    for i in range(pos.shape[0]):
+        if kind[i] == 0 and (pos[i, axis] - x_in) * inv > 0.0:
+            n += 1
+    rows = np.empty(n, np.int64)
+    f = np.empty(n)
+    n = 0
+    for i in range(pos.shape[0]):
+        chi = (pos[i, axis] - x_in) * inv
+        if kind[i] == 0 and chi > 0.0:
+            rows[n] = i
+            f[n] = math.exp(-rate * _weight(min(chi, 1.0)) * dt)
+            n += 1
+    return rows, f
+
+
+@njit(cache=True)
+def _relax_rows(vel, rows, f, vt):
+    """``vel[rows] <- vt + (vel[rows] - vt) f`` (the exact relaxation over the step)."""
+    for m in range(rows.shape[0]):
+        i = rows[m]
+        for k in range(vel.shape[1]):
+            vel[i, k] = vt[m, k] + (vel[i, k] - vt[m, k]) * f[m]
+
+
 @dataclass(frozen=True)
 class Slab:
     """A relaxation zone between the planes ``coordinate[axis] = inner`` (weight 0) and
@@ -112,15 +142,12 @@ class Slab:
             _damp_to_rest(pos, vel, kind, self.axis, float(self.inner), float(self.outer), float(self.rate),
                           float(dt), e)
             return
-        chi = (pos[:, self.axis] - self.inner) / (self.outer - self.inner)
-        inside = np.flatnonzero((chi > 0.0) & (kind == 0))
-        if inside.size == 0:
+        rows, f = _zone_rows(pos, kind, self.axis, float(self.inner), float(self.outer), float(self.rate), float(dt))
+        if rows.size == 0:
             return
-        c = np.minimum(chi[inside], 1.0)
-        f = np.exp(-self.rate * (np.exp(c ** 3.5) - 1.0) / _E1 * dt)[:, None]
-        vt = np.asarray(self.target(pos[inside], t), dtype=np.float64)
-        if vt.shape != (inside.size, vel.shape[1]):
-            raise InputError(f"relaxation zone: target gave shape {vt.shape}, expected {(inside.size, vel.shape[1])}")
-        vel[inside] = vt + (vel[inside] - vt) * f
+        vt = np.asarray(self.target(pos[rows], t), dtype=np.float64)
+        if vt.shape != (rows.size, vel.shape[1]):
+            raise InputError(f"relaxation zone: target gave shape {vt.shape}, expected {(rows.size, vel.shape[1])}")
+        _relax_rows(vel, rows, f, vt)
         if extra is not None:
-            extra[inside] = vt + (extra[inside] - vt) * f
+            _relax_rows(extra, rows, f, vt)

@@ -67,10 +67,10 @@ def _fade_at(s, t, has_source, source, c_front, ramp):
     return r, 0.0, 0.0
 
 
-@njit(parallel=True, cache=True)
+@njit(cache=True)
 def _fade_all(s, t, has_source, source, c_front, ramp, out):
     """:func:`_fade_at` at each of the points ``s``, ``t`` (1-D) into ``out`` (3, n)."""
-    for i in prange(s.shape[0]):
+    for i in range(s.shape[0]):
         out[0, i], out[1, i], out[2, i] = _fade_at(s[i], t[i], has_source, source, c_front, ramp)
 
 
@@ -391,10 +391,12 @@ class Sea:
         """The quantities in ``want`` ("eta", "u" (uh, w), "a" (ah, aw), "p" (p/ρ)) in the
         broadcast shape of the inputs (:func:`_linear_sums`, then the kind's higher-order
         terms)."""
-        args = [x, y, t] if z is None else [x, y, z, t]
-        arrays = np.broadcast_arrays(*(np.asarray(v, float) for v in args))
-        shape = arrays[0].shape
-        flat = [np.ascontiguousarray(a.ravel()) for a in arrays]
+        args = [np.asarray(v, float) for v in ([x, y, t] if z is None else [x, y, z, t])]
+        if args[-1].ndim == 0 and all(a.ndim == 1 and a.shape == args[0].shape for a in args[:-1]):
+            shape, flat = args[0].shape, args[:-1] + [np.full(args[0].shape, float(args[-1]))]  # points, one time
+        else:
+            arrays = np.broadcast_arrays(*args)
+            shape, flat = arrays[0].shape, [np.ascontiguousarray(a.ravel()) for a in arrays]
         xs, ys, ts = flat[0], flat[1], flat[-1]
         e = self.heading
         s = xs * e[0] + ys * e[1]
