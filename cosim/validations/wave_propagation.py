@@ -123,32 +123,32 @@ def linear_elevation(wm, x: np.ndarray, t: np.ndarray, dt: float = 0.005) -> np.
     return np.stack([np.fft.irfft(1j * S * tf * np.exp(-1j * k * xi), n)[idx] for xi in np.asarray(x)], axis=1)
 
 
+def _wave(H: float, T: float, depth: float):
+    """The piston's wavemaker (ramped in over 1 s), its wavelength [m] and group velocity [m/s]."""
+    from fluid.wavemaker import RegularWavemaker
+
+    wm = RegularWavemaker("piston", H=H, T=T, depth=depth, ramp=1.0, g=G)
+    k, omega = wm.k, 2.0 * math.pi / T
+    kd = k * depth
+    return wm, 2.0 * math.pi / k, 0.5 * (1.0 + 2.0 * kd / math.sinh(2.0 * kd)) * omega / k
+
+
 def propagate(dx: float, depth: float, H: float, T: float, wavelengths: int = 8, absorber: float = 1.5,
               rate_per_omega: float = 2.0, settle_periods: float = 4.0, fit_periods: float = 3.0,
               width: float | None = None, progress: bool = False, **config) -> dict:
     """Run the flume: piston waves of height ``H`` [m], period ``T`` [s] in ``depth`` [m] of
     water at spacing ``dx`` [m], read at ``wavelengths`` whole wavelengths out; an absorbing
     zone ``absorber`` wavelengths long at the far end, relaxing at ``rate_per_omega`` wave
-    frequencies at its end; the fit over the last ``fit_periods`` periods, ``settle_periods``
-    after the ramp's front (at the group velocity) has passed the last station. 2-D, or 3-D
-    across ``width`` [m] (gauges on the mid-line). ``config``: FluidConfig settings (default
-    ``u_max = sqrt(g depth)``). Returns, at each station, the incident first harmonic's
-    height over linear theory's at the same times (``H1_over_H``, :func:`linear_elevation`:
-    the ramp's front included) and its lag behind it [periods]; the decay per wavelength
-    (a fit of ``log H1`` over the stations), the wavenumber over theory's, the reflection
-    and the run's cost."""
+    frequencies at its end; 2-D, or 3-D across ``width`` [m] (gauges on the mid-line).
+    ``config``: FluidConfig settings (default ``u_max = sqrt(g depth)``): the flume built
+    here as a scene builds it, with any setting (the case runs its scene,
+    :func:`wave_scene`). Returns :func:`read_flume`'s."""
     from fluid.flume import PADDLE_GROUP, flume
     from fluid.geometry import assemble, set_hydrostatic
-    from fluid.probes import surface_elevation
     from fluid.relaxation import Slab
     from fluid.solver import Fluid, FluidConfig
-    from fluid.wavemaker import RegularWavemaker
 
-    wm = RegularWavemaker("piston", H=H, T=T, depth=depth, ramp=1.0, g=G)
-    k, omega = wm.k, 2.0 * math.pi / T
-    L = 2.0 * math.pi / k
-    kd = k * depth
-    cg = 0.5 * (1.0 + 2.0 * kd / math.sinh(2.0 * kd)) * omega / k
+    wm, L, _ = _wave(H, T, depth)
     x_abs = (wavelengths + 0.5) * L
     length = x_abs + absorber * L
     config.setdefault("u_max", math.sqrt(G * depth))
@@ -161,13 +161,30 @@ def propagate(dx: float, depth: float, H: float, T: float, wavelengths: int = 8,
     set_hydrostatic(ps, depth, cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g)
     fluid = Fluid(cfg, ps)
     fluid.prescribe_motion(PADDLE_GROUP, wm.paddle())
-    fluid.zones.append(Slab(0, x_abs, length, rate_per_omega * omega))
+    fluid.zones.append(Slab(0, x_abs, length, rate_per_omega * 2.0 * math.pi / T))
+    fluid.initialize(0.0)
+    return read_flume(fluid, depth, H, T, wavelengths, width=width, progress=progress)
+
+
+def read_flume(fluid, depth: float, H: float, T: float, wavelengths: int, settle_periods: float = 4.0,
+               fit_periods: float = 3.0, width: float | None = None, progress: bool = False) -> dict:
+    """Run the piston flume ``fluid`` (initialised at t = 0; waves of height ``H`` [m], period
+    ``T`` [s] in ``depth`` [m] of water) until ``settle_periods`` after the ramp's front (at
+    the group velocity) has passed the last of ``wavelengths`` whole wavelengths out, then
+    ``fit_periods`` more, sampling five gauges across each station every T/32 over those.
+    Returns, at each station, the incident first harmonic's height over linear theory's at
+    the same times (``H1_over_H``, :func:`linear_elevation`: the ramp's front included) and
+    its lag behind it [periods]; the decay per wavelength (a fit of ``log H1`` over the
+    stations), the wavenumber over theory's, the reflection and the run's cost."""
+    from fluid.probes import surface_elevation
+
+    wm, L, cg = _wave(H, T, depth)
+    k, omega = wm.k, 2.0 * math.pi / T
     stations = np.arange(1, wavelengths + 1) * L
     gx = (stations[:, None] + np.linspace(-0.25, 0.25, 5)[None, :] * L).ravel()
     at = gx if width is None else np.stack([gx, np.full_like(gx, 0.5 * width)], 1)
     t_end = T * (1.0 + settle_periods + fit_periods) + stations[-1] / cg
     every = T / 32.0
-    fluid.initialize(0.0)
     t, ts, eta, cpu0 = 0.0, [], [], time.process_time()
     t_fit = t_end - fit_periods * T
     # advance in chunks of a period until the fit starts, then sample every T/32
@@ -181,6 +198,7 @@ def propagate(dx: float, depth: float, H: float, T: float, wavelengths: int = 8,
         elif progress:
             log.info("wave propagation: t = %6.2f / %.2f s, %d steps", t, t_end, fluid.counters.steps)
     cpu = time.process_time() - cpu0
+    removed = int(sum(fluid.counters.removed.values()))
     a = harmonics(np.array(ts), np.array(eta), omega).reshape(wavelengths, 5)
     xs = gx.reshape(wavelengths, 5)
     inc, refl = zip(*(separate(xs[j], a[j], k) for j in range(wavelengths)))
@@ -198,9 +216,8 @@ def propagate(dx: float, depth: float, H: float, T: float, wavelengths: int = 8,
     return {
         "stations_m": stations, "wavelength_m": L, "H1_over_H": H1, "decay_per_wavelength": float(-math.expm1(slope)),
         "k_over_linear": float(k_sph / k), "phase_lag_periods": lag,
-        "reflection": float(np.median(np.abs(refl) / np.abs(inc))), "particles": int(ps.n),
-        "steps": int(fluid.counters.steps), "cpu_s": cpu, "t_end_s": t_end, "kd": kd,
-        "removed": int(sum(fluid.counters.removed.values())),
+        "reflection": float(np.median(np.abs(refl) / np.abs(inc))), "particles": int(fluid.ps.n + removed),
+        "steps": int(fluid.counters.steps), "cpu_s": cpu, "t_end_s": t_end, "kd": k * depth, "removed": removed,
     }
 
 
@@ -208,10 +225,42 @@ def propagate(dx: float, depth: float, H: float, T: float, wavelengths: int = 8,
 WP_DEPTH, WP_PERIOD, WP_HEIGHT = 0.3, 1.0, 0.04
 #: particle rows over the depth of the full case's three spacings, and the quick one's
 WP_ROWS, WP_QUICK_ROWS = (10, 20, 40), 10
+#: the stations, whole wavelengths out (full, quick)
+WP_WAVELENGTHS, WP_QUICK_WAVELENGTHS = 8, 3
+#: the absorbing zone's length [wavelengths]
+WP_ABSORBER = 1.5
 #: the decay per wavelength allowed at 20 rows and finer (the stated target), and at the quick 10 rows
 WP_DECAY, WP_QUICK_DECAY = 0.01, 0.025
 #: the phase lag behind linear theory allowed at any station [periods], and the reflection [-]
 WP_LAG, WP_REFLECTION = 0.05, 0.05
+
+
+def wave_scene(rows: int, wavelengths: int):
+    """The case's flume as a scene: ``scenes/wave-propagation.toml`` (the quick variant as
+    written) at ``rows`` particle rows over the depth, ``wavelengths`` stations whole
+    wavelengths out (gauges there) and the absorbing zone :data:`WP_ABSORBER` wavelengths
+    long after half a wavelength more; long enough for :func:`read_flume`'s fit, to whole
+    samples of T/32. Its set-up the chooser's ("waves": ``fluid.solver.travelling_waves``)."""
+    from cosim.validations import case_scene
+
+    n = case_scene.number
+    _, L, cg = _wave(WP_HEIGHT, WP_PERIOD, WP_DEPTH)
+    every = WP_PERIOD / 32.0
+    t_end = WP_PERIOD * 8.0 + wavelengths * L / cg  # read_flume's: the ramp, 4 periods settling, 3 fitted
+    return case_scene.load("wave-propagation", [
+        f"fluid.dx={n(WP_DEPTH / rows)}", f"domain.length={n((wavelengths + 0.5 + WP_ABSORBER) * L)}",
+        f"domain.absorber.length={n(WP_ABSORBER * L)}", f"world.duration={n(math.ceil(t_end / every) * every)}",
+        "probes.gauges=[" + ", ".join(n(j * L) for j in range(1, wavelengths + 1)) + "]"])
+
+
+def run_scene(scene, wavelengths: int) -> dict:
+    """:func:`wave_scene`'s flume built as ``cosim run`` builds it, run and read by
+    :func:`read_flume` at its ``wavelengths`` stations."""
+    from cosim.validations import case_scene
+
+    w = scene.waves
+    with case_scene.built(scene) as b:
+        return read_flume(b.sph, scene.domain.depth, w.height, w.period, wavelengths)
 
 
 def _metrics(r: dict, rows: int) -> dict:
@@ -227,7 +276,9 @@ def _metrics(r: dict, rows: int) -> dict:
              "over the depth and finer, decreasing with dx (10, 20, 40 rows); phase within 5 % of a period of linear "
              "theory's at every wavelength; reflection from the absorbing zone below 5 %",
       quick="10 rows, 3 wavelengths: at most 2.5 % per wavelength (declared: the decay halves with dx), phase within "
-            "5 % of a period, reflection below 5 %")
+            "5 % of a period, reflection below 5 %",
+      scene=lambda quick: wave_scene(WP_QUICK_ROWS if quick else WP_ROWS[-1],
+                                     WP_QUICK_WAVELENGTHS if quick else WP_WAVELENGTHS))
 def wave_propagation(quick: bool) -> dict:
     """Regular waves made by a piston (linear wavemaker theory) run over 8 wavelengths
     (:func:`propagate`) with the scenes' wave set-up; the first-harmonic heights, phases and
@@ -241,12 +292,9 @@ def wave_propagation(quick: bool) -> dict:
     10-20 rows with the sloshing set-up; :func:`viscous_decay_per_wavelength` predicts the
     last two. Second harmonics are not judged: a linear paddle also sheds free second
     harmonics (Madsen 1971), which beat along the flume."""
-    from fluid.solver import travelling_waves
-
     rows_list = (WP_QUICK_ROWS,) if quick else WP_ROWS
-    n = 3 if quick else 8
-    runs = {rows: propagate(WP_DEPTH / rows, WP_DEPTH, WP_HEIGHT, WP_PERIOD, wavelengths=n, **travelling_waves(rows))
-            for rows in rows_list}
+    n = WP_QUICK_WAVELENGTHS if quick else WP_WAVELENGTHS
+    runs = {rows: run_scene(wave_scene(rows, n), n) for rows in rows_list}
     metrics, tol = {}, {}
     for rows, r in runs.items():
         metrics.update(_metrics(r, rows))
