@@ -71,16 +71,20 @@ def test_a_box_shorter_than_its_zones_is_refused():
 @pytest.mark.long
 def test_regular_waves_cross_the_box_at_the_seas_height_and_phase():
     """Linear waves (H = 6 cm, T = 1.2 s, d = 0.3 m) through the box the chooser gives a sea
-    without bodies (zones half a wavelength, 1.8 wavelengths long) at dx = 3 cm, 20 periods:
-    the first harmonic at every gauge within 5 % of the sea's height and 5 % of a period of
-    its phase over the last three, the box's mean level within 1 % of the depth of where it
-    was after the fade-in (the nearfield-waves targets), no particle lost. (After 8 periods
-    the box still rings from the start: 1.02-1.11 of the sea's height.)"""
+    without bodies (zones half a wavelength, 1.8 wavelengths long) at dx = 2 cm (H/dx = 3,
+    the case's quick spacing), 20 periods: the first harmonic at every gauge within 5 % of
+    the sea's height and 5 % of a period of its phase over the last three, the box's mean
+    level within 1 % of the depth of where it was after the fade-in (the nearfield-waves
+    targets), no particle lost. (After 8 periods the box still rings from the start:
+    1.02-1.11 of the sea's height.) Not at dx = 3 cm: there the worst gauge stands at the
+    tolerance, and round-off moves it across (4.4 % and 5.0 % from two codes whose particles
+    agree to 1e-14 m after 2 400 steps; the 37 000 steps of the run grow that to 1.5 % of a
+    gauge's height); at 2 cm the same two give 4.1 % and 3.7 %."""
     from cosim.validations import nearfield as nf
     from fluid.solver import NEAR_FIELD
 
     wl = RegularWave(nf.NF_HEIGHT, nf.NF_PERIOD, nf.NF_DEPTH, level=nf.NF_DEPTH).wavelength
-    r = nf.run_box(nf._sea("linear", 20 * nf.NF_PERIOD), 0.03, 1.8 * wl, 0.5 * wl, 20 * nf.NF_PERIOD, settle=1.0,
+    r = nf.run_box(nf._sea("linear", 20 * nf.NF_PERIOD), 0.02, 1.8 * wl, 0.5 * wl, 20 * nf.NF_PERIOD, settle=1.0,
                    **NEAR_FIELD)
     m = nf.regular_metrics(r, nf.NF_PERIOD)
     assert np.abs(m["H1_over_H"] - 1.0).max() < nf.NF_HEIGHT_TOL, m["H1_over_H"]
