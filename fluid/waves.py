@@ -74,7 +74,7 @@ def _fade_all(s, t, has_source, source, c_front, ramp, out):
         out[0, i], out[1, i], out[2, i] = _fade_at(s[i], t[i], has_source, source, c_front, ramp)
 
 
-def _linear_sums(s, zeta, t, w, a, ph, k, den, ap, depth, s_ref, fade, want, out):
+def _linear_sums(s, zeta, t, w, a, ph, k, depth, g, s_ref, fade, want, out):
     """The linear superposition of the components (``w``, ``a``, ``ph``, ``k``) at points
     ``s`` [m] along the heading, ``zeta`` [m] below the still water (empty: the elevation
     alone) and times ``t`` [s], faded in: rows :data:`ETA` ... :data:`P` of ``out`` (6, n)
@@ -87,11 +87,16 @@ def _linear_sums(s, zeta, t, w, a, ph, k, den, ap, depth, s_ref, fade, want, out
 
     with ``ch, sh = cosh, sinh k(ζ+d) / sinh kd`` as ``(e1 ± e2) / den``, ``den = 1 −
     e^-2kd``, ``e1 = exp(kζ)``, ``e2 = exp(−k(ζ + 2d))`` (both ≤ 1: no overflow in deep
-    water), and ``ap = g a / (1 + e^-2kd)`` (so that ``p/ρ = ap (e1 + e2) cos θ``); each
-    times r, and the accelerations plus r' times the velocity (∂/∂t of the faded field)."""
+    water), and ``ap = g a / (1 + e^-2kd)`` (so that ``p/ρ = ap (e1 + e2) cos θ``), ``g``
+    [m/s^2]; each times r, and the accelerations plus r' times the velocity (∂/∂t of the
+    faded field)."""
     n, m = s.shape[0], w.shape[0]
     have_z = zeta.shape[0] > 0
     has_source, source, c_front, ramp = fade
+    den, ap = np.empty(m), np.empty(m)
+    for j in range(m):
+        den[j] = -math.expm1(-2.0 * k[j] * depth)
+        ap[j] = g * a[j] / (1.0 + math.exp(-2.0 * k[j] * depth))
     for i in prange(n):
         r, dr, _ = _fade_at(s[i], t[i], has_source, source, c_front, ramp)
         eta = uh = wz = ah = aw = p = 0.0
@@ -371,17 +376,6 @@ class Sea:
         _fade_all(s, t, *self._fade_args(), out)
         return (out[0], out[1], out[2]) if second else (out[0], out[1])
 
-    @property
-    def _depth_constants(self) -> tuple[np.ndarray, np.ndarray]:
-        """Per component, ``1 − e^-2kd`` and ``g a / (1 + e^-2kd)`` (:func:`_linear_sums`)."""
-        kept = self.__dict__.get("_depth_kept")
-        if kept is None:
-            w, a, ph, k = self._comp
-            q = np.exp(-2.0 * k * self.depth)
-            kept = (-np.expm1(-2.0 * k * self.depth), self.g * a / (1.0 + q))
-            object.__setattr__(self, "_depth_kept", kept)
-        return kept
-
     def _fade_args(self) -> tuple:
         """(has_source, source, c_front, ramp) of :func:`_fade_at`."""
         has = self.source is not None
@@ -407,9 +401,8 @@ class Sea:
                 flags[list(rows)] = True
         sums = np.empty((8, s.shape[0]))
         w, a, ph, k = self._comp
-        den, ap = self._depth_constants
         kernel = _linear_sums_parallel if s.shape[0] * w.shape[0] > _PARALLEL_TERMS else _linear_sums_serial
-        kernel(s, zeta, ts, w, a, ph, k, den, ap, float(self.depth), float(self._s_ref), self._fade_args(), flags,
+        kernel(s, zeta, ts, w, a, ph, k, float(self.depth), float(self.g), float(self._s_ref), self._fade_args(), flags,
                sums)
         self._add_higher_order(sums, s, zeta, ts, flags)
         names = {"eta": ETA, "uh": UH, "w": W, "ah": AH, "aw": AW, "p": P}

@@ -22,6 +22,7 @@ acceleration continuous), then ``free_periods`` first-mode periods of free slosh
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -102,7 +103,7 @@ def long_period_scene(shape: str = "rectangular", dx: float = 0.1, dim: int = 2,
     tank = TANKS[shape]
     _check_lattice(shape, dx, tank)
     period = tank["period"] if period is None else period
-    t_end = periods * period + free_periods * 2 * math.pi / _modes(shape, tank).omega[0]
+    t_end = periods * period + free_periods * 2 * math.pi / _modes(shape).omega[0]
     settle = (1.0 if shape == "inclined" else 0.0) if settle is None else settle
     d = to_dict(case_scene.load("long-period"))
     d["world"] |= {"dim": dim, "duration": round(round(t_end / sample_dt) * sample_dt, 12), "sample_every": sample_dt}
@@ -115,8 +116,12 @@ def long_period_scene(shape: str = "rectangular", dx: float = 0.1, dim: int = 2,
     return from_dict(d)
 
 
-def _modes(shape: str, tank: dict):
-    """Linear theory's sloshing modes of the tank (:mod:`cosim.validations.forced_sloshing`)."""
+@functools.lru_cache(maxsize=None)
+def _modes(shape: str):
+    """Linear theory's sloshing modes of the tank ``shape`` of :data:`TANKS`
+    (:mod:`cosim.validations.forced_sloshing`; the inclined tank's by finite elements, so
+    computed once)."""
+    tank = TANKS[shape]
     L, h = tank["size"], tank["depth"]
     if shape == "rectangular":
         return fs.rectangular_modes(L, h)
@@ -220,7 +225,7 @@ def run_long_period(shape: str = "rectangular", dx: float = 0.05, dim: int = 2, 
     tank = TANKS[shape]
     period = scene.base_motion.period
     h = tank["depth"]
-    modes = _modes(shape, tank)
+    modes = _modes(shape)
     t_stop = scene.base_motion.stop
     n_samples = int(round(scene.world.duration / sample_dt))
     centre = _centre(shape, tank)

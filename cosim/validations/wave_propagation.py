@@ -133,6 +133,15 @@ def _wave(H: float, T: float, depth: float):
     return wm, 2.0 * math.pi / k, 0.5 * (1.0 + 2.0 * kd / math.sinh(2.0 * kd)) * omega / k
 
 
+def _duration(H: float, T: float, depth: float, wavelengths: int, settle_periods: float = 4.0,
+              fit_periods: float = 3.0) -> float:
+    """How long [s] :func:`read_flume` runs: the 1 s ramp's period, ``settle_periods`` after
+    the ramp's front (at the group velocity) has passed the last station, ``wavelengths``
+    whole wavelengths out, then ``fit_periods``."""
+    _, L, cg = _wave(H, T, depth)
+    return T * (1.0 + settle_periods + fit_periods) + wavelengths * L / cg
+
+
 def propagate(dx: float, depth: float, H: float, T: float, wavelengths: int = 8, absorber: float = 1.5,
               rate_per_omega: float = 2.0, settle_periods: float = 4.0, fit_periods: float = 3.0,
               width: float | None = None, progress: bool = False, **config) -> dict:
@@ -178,12 +187,12 @@ def read_flume(fluid, depth: float, H: float, T: float, wavelengths: int, settle
     stations), the wavenumber over theory's, the reflection and the run's cost."""
     from fluid.probes import surface_elevation
 
-    wm, L, cg = _wave(H, T, depth)
+    wm, L, _ = _wave(H, T, depth)
     k, omega = wm.k, 2.0 * math.pi / T
     stations = np.arange(1, wavelengths + 1) * L
     gx = (stations[:, None] + np.linspace(-0.25, 0.25, 5)[None, :] * L).ravel()
     at = gx if width is None else np.stack([gx, np.full_like(gx, 0.5 * width)], 1)
-    t_end = T * (1.0 + settle_periods + fit_periods) + stations[-1] / cg
+    t_end = _duration(H, T, depth, wavelengths, settle_periods, fit_periods)
     every = T / 32.0
     t, ts, eta, cpu0 = 0.0, [], [], time.process_time()
     t_fit = t_end - fit_periods * T
@@ -244,23 +253,23 @@ def wave_scene(rows: int, wavelengths: int):
     from cosim.validations import case_scene
 
     n = case_scene.number
-    _, L, cg = _wave(WP_HEIGHT, WP_PERIOD, WP_DEPTH)
+    _, L, _ = _wave(WP_HEIGHT, WP_PERIOD, WP_DEPTH)
     every = WP_PERIOD / 32.0
-    t_end = WP_PERIOD * 8.0 + wavelengths * L / cg  # read_flume's: the ramp, 4 periods settling, 3 fitted
+    t_end = _duration(WP_HEIGHT, WP_PERIOD, WP_DEPTH, wavelengths)
     return case_scene.load("wave-propagation", [
         f"fluid.dx={n(WP_DEPTH / rows)}", f"domain.length={n((wavelengths + 0.5 + WP_ABSORBER) * L)}",
         f"domain.absorber.length={n(WP_ABSORBER * L)}", f"world.duration={n(math.ceil(t_end / every) * every)}",
         "probes.gauges=[" + ", ".join(n(j * L) for j in range(1, wavelengths + 1)) + "]"])
 
 
-def run_scene(scene, wavelengths: int) -> dict:
+def run_scene(scene) -> dict:
     """:func:`wave_scene`'s flume built as ``cosim run`` builds it, run and read by
-    :func:`read_flume` at its ``wavelengths`` stations."""
+    :func:`read_flume` at its stations (its gauges, one a wavelength)."""
     from cosim.validations import case_scene
 
     w = scene.waves
     with case_scene.built(scene) as b:
-        return read_flume(b.sph, scene.domain.depth, w.height, w.period, wavelengths)
+        return read_flume(b.sph, scene.domain.depth, w.height, w.period, len(scene.probes.gauges))
 
 
 def _metrics(r: dict, rows: int) -> dict:
@@ -294,7 +303,7 @@ def wave_propagation(quick: bool) -> dict:
     harmonics (Madsen 1971), which beat along the flume."""
     rows_list = (WP_QUICK_ROWS,) if quick else WP_ROWS
     n = WP_QUICK_WAVELENGTHS if quick else WP_WAVELENGTHS
-    runs = {rows: run_scene(wave_scene(rows, n), n) for rows in rows_list}
+    runs = {rows: run_scene(wave_scene(rows, n)) for rows in rows_list}
     metrics, tol = {}, {}
     for rows, r in runs.items():
         metrics.update(_metrics(r, rows))

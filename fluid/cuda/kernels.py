@@ -27,8 +27,9 @@ to round-off in float64. A new term is written there once and called here as
   ``fluid.boundary_correction.mdbc_density``; :func:`k_mls` is ``fluid.mls.mls_density``
   (these three walk whole rows of cells, as their CPU functions do).
 * :func:`k_predictor`, :func:`k_corrector`, :func:`k_verlet` are those of
-  ``fluid.integrator``, from the same terms (``fluid.terms.predictor_density`` ...); :func:`d_block_max3` (in the pair loop) its ``_bounds``; :func:`k_first_non_finite`
-  its ``first_non_finite`` (the lowest row, as the CPU's serial scan finds).
+  ``fluid.integrator``, from the same terms (``fluid.terms.predictor_density`` ...);
+  :func:`d_block_max3` (in the pair loop) its ``_bounds``; :func:`k_first_non_finite` its
+  ``first_non_finite`` (the lowest row, as the CPU's serial scan finds).
 
 Particle arrays are structures of arrays: positions, velocities (and accelerations) as
 ``(dim, capacity)`` rows (x, z in 2-D; x, y, z in 3-D), scalars as ``(capacity,)``; only
