@@ -34,11 +34,10 @@ import pickle
 import time
 
 import numpy as np
-from cosim.validations.sloshing import (SPHERIC10_TANK, face_pressure, running_mean_max, spheric10_fluid,
-                                        spheric10_pressure, spheric10_sensor)
+from cosim.validations.sloshing import (face_pressure, running_mean_max, spheric10_built, spheric10_pressure,
+                                        spheric10_sensor)
 from fluid.particles import Kind
 
-L_SPH10 = SPHERIC10_TANK[0]
 T1, P1 = 2.375, 3683.0  # the first measured impact: time [s], peak [Pa]
 
 
@@ -46,7 +45,7 @@ def spheric10_wall_ids(f, z, half):
     """ids of the innermost left-wall particles within ``half`` [m] of height z (t = 0)."""
     ps = f.ps
     w = np.flatnonzero(ps.kind != Kind.FLUID)
-    xin = -L_SPH10 / 2 - 0.5 * f.config.dx
+    xin = -0.5 * f.config.dx  # the left wall's face at x = 0 (the scene's tank frame)
     sel = w[(np.abs(ps.pos[w, 0] - xin) < 0.25 * f.config.dx) & (np.abs(ps.pos[w, 1] - z) <= half + 1e-9)]
     return ps.ids[sel]
 
@@ -95,51 +94,51 @@ def main(argv=None):
     over = {k: v for k, v in dict(alpha=a.alpha, alpha_wall=a.alpha_wall, delta=a.delta,
                                          mls_every=a.mls_every).items() if v is not None}
     t0 = time.perf_counter()
-    f, roll = spheric10_fluid(a.dx, c0=a.c0, walls=a.walls, **over)
-    cfg = f.config
-    h_s = 0.093
-    zs = np.linspace(-a.sensor_d / 2, a.sensor_d / 2, 5) if a.sensor_d > 0 else np.zeros(1)
-    wall_ids = spheric10_wall_ids(f, h_s, max(a.sensor_d / 2, 0.0) + 0.5 * a.dx)
-    rec = {k: [] for k in ("t", "patch", "face2h", "face1h", "face_sensor", "wall")}
-    t = 0.0
-    snaps = {}
-    if a.load:
-        with open(a.load, "rb") as fh:
-            state, c0_old = pickle.load(fh)
-        f.load_state(state)
-        t = f.t
-        if c0_old != a.c0:  # keep p: rho = rho0 (p / B + 1)^(1/gamma), B = rho0 c0^2 / gamma
-            g, r0 = cfg.gamma, cfg.rho0
-            for arr in (f.ps.rho, f._aux["rho"]):
-                p = r0 * c0_old ** 2 / g * ((arr / r0) ** g - 1)
-                arr[:] = r0 * (p / (r0 * a.c0 ** 2 / g) + 1) ** (1 / g)
-        f._stale = True
-        f.refresh_rates()
-    while t < a.t_end - 1e-12:
-        dt = a.fine_dt if a.fine_from - 1e-12 <= t < a.fine_to - 1e-12 else 1e-3
-        f.advance(t, dt)
-        t = round(t + dt, 10)
-        for ts in a.snap:
-            if abs(t - ts) < 1e-9:
-                fl = f.ps.kind == Kind.FLUID
-                snaps[f"snap_{ts:.3f}"] = np.concatenate([f.ps.pos[fl], f.ps.vel[fl], f.ps.p[fl, None]], axis=1)
-        if a.save and abs(t - a.save_at) < 1e-9:
-            with open(a.save, "wb") as fh:
-                pickle.dump((f.save_state(), a.c0), fh)
-        pts = np.array([[-L_SPH10 / 2, h_s + z] for z in zs])
-        at, _ = roll(t, pts)
-        normal = roll(t, pts[:1] + [1.0, 0.0])[0][0] - at[0]
-        th, dth, ddth = roll.signal.state(t)
-        r = at - np.asarray(roll.point)
-        acc = np.stack([ddth * r[:, 1], -ddth * r[:, 0]], axis=1) - dth ** 2 * r
-        fp = face_pressure(f, at, at, normal, acc, cfg.gravity)
-        rec["t"].append(t)
-        rec["patch"].append(spheric10_sensor(f, roll, t))
-        rec["face2h"].append(fp[len(zs) // 2])
-        rec["face_sensor"].append(fp.mean())
-        rec["face1h"].append(face_pressure_r(f, at[len(zs) // 2], normal, acc[len(zs) // 2], cfg.gravity, cfg.h))
-        sel = np.isin(f.ps.ids, wall_ids)
-        rec["wall"].append(float(f.ps.p[sel].mean()))
+    with spheric10_built(a.dx, c0=a.c0, t_end=a.t_end, walls=a.walls, **over) as (f, roll):
+        cfg = f.config
+        h_s = 0.093
+        zs = np.linspace(-a.sensor_d / 2, a.sensor_d / 2, 5) if a.sensor_d > 0 else np.zeros(1)
+        wall_ids = spheric10_wall_ids(f, h_s, max(a.sensor_d / 2, 0.0) + 0.5 * a.dx)
+        rec = {k: [] for k in ("t", "patch", "face2h", "face1h", "face_sensor", "wall")}
+        t = 0.0
+        snaps = {}
+        if a.load:
+            with open(a.load, "rb") as fh:
+                state, c0_old = pickle.load(fh)
+            f.load_state(state)
+            t = f.t
+            if c0_old != a.c0:  # keep p: rho = rho0 (p / B + 1)^(1/gamma), B = rho0 c0^2 / gamma
+                g, r0 = cfg.gamma, cfg.rho0
+                for arr in (f.ps.rho, f._aux["rho"]):
+                    p = r0 * c0_old ** 2 / g * ((arr / r0) ** g - 1)
+                    arr[:] = r0 * (p / (r0 * a.c0 ** 2 / g) + 1) ** (1 / g)
+            f._stale = True
+            f.refresh_rates()
+        while t < a.t_end - 1e-12:
+            dt = a.fine_dt if a.fine_from - 1e-12 <= t < a.fine_to - 1e-12 else 1e-3
+            f.advance(t, dt)
+            t = round(t + dt, 10)
+            for ts in a.snap:
+                if abs(t - ts) < 1e-9:
+                    fl = f.ps.kind == Kind.FLUID
+                    snaps[f"snap_{ts:.3f}"] = np.concatenate([f.ps.pos[fl], f.ps.vel[fl], f.ps.p[fl, None]], axis=1)
+            if a.save and abs(t - a.save_at) < 1e-9:
+                with open(a.save, "wb") as fh:
+                    pickle.dump((f.save_state(), a.c0), fh)
+            pts = np.array([[0.0, h_s + z] for z in zs])
+            at, _ = roll(t, pts)
+            normal = roll(t, pts[:1] + [1.0, 0.0])[0][0] - at[0]
+            th, dth, ddth = roll.signal.state(t)
+            r = at - np.asarray(roll.point)
+            acc = np.stack([ddth * r[:, 1], -ddth * r[:, 0]], axis=1) - dth ** 2 * r
+            fp = face_pressure(f, at, at, normal, acc, cfg.gravity)
+            rec["t"].append(t)
+            rec["patch"].append(spheric10_sensor(f, roll, t))
+            rec["face2h"].append(fp[len(zs) // 2])
+            rec["face_sensor"].append(fp.mean())
+            rec["face1h"].append(face_pressure_r(f, at[len(zs) // 2], normal, acc[len(zs) // 2], cfg.gravity, cfg.h))
+            sel = np.isin(f.ps.ids, wall_ids)
+            rec["wall"].append(float(f.ps.p[sel].mean()))
     wall_s = time.perf_counter() - t0
     rec = {k: np.asarray(v) for k, v in rec.items()}
     tt = rec["t"]

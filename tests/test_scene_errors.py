@@ -322,6 +322,8 @@ BASE_FILES = {
     "quake.AT2": ("PEER RECORD\nSYNTHETIC, 2024, STATION, 000\nACCELERATION TIME SERIES IN UNITS OF G\n"
                   "NPTS=   10, DT=   .0100 SEC\n0.0 0.01 0.02 0.01 0.0\n-0.01 -0.02 -0.01 0.0 0.0\n"),
     "paddle.txt": "t [s], x [m]\n0.0, 0.0\n0.5, 0.01\n1.0, 0.0\n1.5, -0.01\n2.0, 0.0\n",
+    "roll.txt": ("# t [s]  angle [deg]  angle + 3 [deg]\n0.0  0.0  3.0\n0.5  2.0  5.0\n1.0  0.0  3.0\n"
+                 "1.5  -2.0  1.0\n2.0  0.0  3.0\n"),
     "float.xml": """<mujoco>
   <worldbody>
     <body name="float"><freejoint/><geom type="box" size="0.5 0.5 0.25" density="500"/>
@@ -1112,6 +1114,17 @@ CASES = [
     case("a missing file", "tank3d",
          ("base_motion", {"kind": "table", "file": "nowhere.csv", "direction": [1.0, 0.0, 0.0]}), "base_motion.file",
          "no file 'nowhere.csv' (a relative path is read from the scene file's folder)", "Scene.base_motion.file"),
+    case("a recorded roll that does not start level", "tank2d",
+         ("base_motion", {"kind": "roll_table", "file": "roll.txt", "point": [0.5, 0.0], "column": 2}),
+         "base_motion.file", "the record's first angle (3 deg at t = 0 s) turns the tank's farthest corner 0.04089 m "
+         "from where the walls are built at t = 0", "Scene.base_motion.file"),
+    case("a recorded roll scaled past any tank's acceleration", "tank2d",
+         ("base_motion", {"kind": "roll_table", "file": "roll.txt", "point": [0.5, 0.0], "scale": 1e4}),
+         "base_motion.scale", "the recorded roll (times scale = 10000, at the tank's corner 0.781 m from the axis)",
+         "Scene.base_motion.scale"),
+    case("a 2-D recorded roll given an axis", "tank2d",
+         ("base_motion", {"kind": "roll_table", "file": "roll.txt", "point": [0.5, 0.0], "axis": [0.0, 1.0, 0.0]}),
+         "base_motion.axis", "a 2-D roll is about +y; leave axis out", "Scene.base_motion.axis"),
     case("a missing MJCF file", "analytic", (("bodies", [{"shape": "mjcf", "file": "boat.xml"}]),
                                              ("fluid.linear_damping", {})),
          "bodies[0].file", "no file 'boat.xml'", "Scene.bodies[0].file"),

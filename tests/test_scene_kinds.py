@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 from cosim.scene import (MJCF, SPH, Analytic, Block, Box, Cylinder, CylinderTank, Earthquake, Flap, Flume,
-                         InclinedTank, PaddleRecord, Piston, PolygonTank, Probes, Roll, Scene, Shake, Sphere,
-                         TableMotion, Tank, World)
+                         InclinedTank, PaddleRecord, Piston, PolygonTank, Probes, Roll, RollTable, Scene, Shake,
+                         Sphere, TableMotion, Tank, World)
 from cosim.scene.build import build
 
 W2 = World(dim=2, duration=0.01, sample_every=0.005, snapshot_every=0)
@@ -60,12 +60,13 @@ def _motions(tmp_path):
         "shake-amplitude": Shake(period=0.5, amplitude=0.01),
         "shake-acceleration": Shake(period=0.5, acceleration=2.0, ramp=0.1, stop=0.9),
         "roll": Roll(amplitude=2.0, period=1.0, point=(0.3, 0.0)),
+        "roll-table": RollTable(file=_table(tmp_path / "r.txt", t, 2.0 * np.sin(2 * np.pi * t)), point=(0.3, 0.0)),
         "table": TableMotion(file=_table(tmp_path / "d.txt", t, 0.01 * np.sin(2 * np.pi * t))),
         "earthquake": Earthquake(file=_at2(tmp_path / "q.AT2"), scale=0.5),
     }
 
 
-@pytest.mark.parametrize("kind", ["shake-amplitude", "shake-acceleration", "roll", "table", "earthquake"])
+@pytest.mark.parametrize("kind", ["shake-amplitude", "shake-acceleration", "roll", "roll-table", "table", "earthquake"])
 def test_base_motions_move_the_walls(kind, tmp_path):
     """The tank's walls follow the prescribed motion (their velocity at the end is the
     motion's), the water is dragged along."""
@@ -81,6 +82,28 @@ def test_base_motions_move_the_walls(kind, tmp_path):
     walls = ps.kind == Kind.MOVING_WALL
     assert walls.any() and np.isfinite(ps.vel).all()
     assert np.abs(ps.vel[walls]).max() > 1e-4  # the walls move
+
+
+@pytest.mark.parametrize("scale", [1.0, -1.0])
+def test_a_recorded_roll_turns_the_tank_as_the_harmonic_roll_it_samples(scale, tmp_path):
+    """A roll table sampling the harmonic roll 2 deg sin(2 pi t / 1 s) every 5 ms moves
+    the tank's walls where the harmonic roll moves them, to the spline's error (the
+    angle's fourth derivative times h^4 / 384: 2e-9 rad here); ``scale = -1`` turns the
+    other way, about the same axis point."""
+    t = np.arange(0.0, 1.0 + 1e-9, 0.005)
+    table = RollTable(file=_table(tmp_path / "r.txt", t, 2.0 * np.sin(2 * np.pi * t)), point=(0.3, 0.0),
+                      scale=scale)
+    tank = Tank(length=0.6, height=0.4, depth=0.2)
+    moved = {}
+    for name, motion in (("table", table), ("harmonic", Roll(amplitude=2.0 * scale, period=1.0, point=(0.3, 0.0)))):
+        b = build(Scene(world=W2, fluid=SPH(dx=0.05), domain=tank, base_motion=motion), tmp_path / name)
+        corners = np.array([[0.0, 0.0], [0.6, 0.4], [0.3, 0.0]])
+        moved[name] = [np.asarray(b.base_motion(s, corners)[0]) for s in (0.13, 0.41, 0.77)]
+    for a, h in zip(moved["table"], moved["harmonic"]):
+        assert np.abs(a - h).max() < 1e-8
+        assert np.array_equal(a[2], [0.3, 0.0])  # the axis point stays
+    # at t = 0.13 s the angle (1.46 deg) lifts the left corner for scale 1 (about +y: the right one down)
+    assert np.sign(moved["table"][0][0][1]) == scale
 
 
 @pytest.mark.parametrize("kind", ["piston", "flap", "record"])

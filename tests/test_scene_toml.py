@@ -29,7 +29,8 @@ from hypothesis import strategies as st
 from cosim.errors import InputError
 from cosim.scene import (MJCF, SPH, Analytic, Beach, Block, Box, Coupling, Cylinder, CylinderTank, Earthquake, Flap,
                          Flume, InclinedTank, Line, Moorings, NoFluid, PaddleRecord, Patch, Piston, PolygonTank,
-                         Probes, Roll, Scene, SceneError, Shake, Sphere, TableMotion, Tank, World)
+                         Probes, Roll, RollTable, Scene, SceneError, Shake, Sphere, TableMotion, Tank,
+                         World)
 from cosim.scene.limits import (FAIRLEAD_REACH, MAX_BASE_ACCELERATION, MAX_DENSITY, MAX_LINE_EA, MAX_LINE_WEIGHT,
                                 MIN_DENSITY, PADDLE_SHARE)
 from cosim.scene.plausible import bounding_radius
@@ -396,7 +397,7 @@ def waves_for(draw, flume, gravity, kind):
 @st.composite
 def base_motions(draw, dim, box):
     """A tank's base motion, peaking within 5 g (``box``: the tank's inner box, for a roll's arm)."""
-    kind = draw(st.sampled_from(["shake", "roll", "table", "earthquake"]))
+    kind = draw(st.sampled_from(["shake", "roll", "roll_table", "table", "earthquake"]))
     top = 0.99 * MAX_BASE_ACCELERATION
     if kind == "shake":
         period = draw(pos_num(100.0))
@@ -417,6 +418,9 @@ def base_motions(draw, dim, box):
         fastest = 2 * math.pi * math.sqrt(math.radians(abs(amplitude)) * arm / top)
         return Roll(amplitude=amplitude, period=max(draw(pos_num(100.0)), fastest), point=point,
                     axis=draw(nonzero_vec(3)) if dim == 3 else None, ramp=draw(num(0.0, 10.0)))
+    if kind == "roll_table":
+        return RollTable(file=str(TABLE), point=draw(vec(dim)), axis=draw(nonzero_vec(3)) if dim == 3 else None,
+                         column=draw(st.integers(1, 5)), scale=draw(num(-5.0, 5.0)))
     if kind == "table":
         return TableMotion(file=str(TABLE),
                            quantity=draw(st.sampled_from(["displacement", "velocity", "acceleration"])),

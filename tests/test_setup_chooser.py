@@ -66,7 +66,8 @@ def test_auto_setup_clears_the_hand_set_levers():
 
 
 #: the cases with a scene file whose quick variant runs the SPH fluid, run under auto_setup, by cost
-QUICK = ["westergaard", "sinking-cylinder", "floating-box-draft", "sloshing-frequency", "hydrostatic"]
+QUICK = ["westergaard", "sinking-cylinder", "floating-box-draft", "sloshing-frequency", "hydrostatic",
+         "sloshing-spheric10"]
 LONG = ["inclined-wall", "floating-heave-period", "moored-body-sph", "cylinder-tank", "inclined-wall-3d"]
 #: cases whose quick scene gets the same FluidConfig from "auto" as its own: their quick
 #: validation run (``cosim validate NAME --quick``) is the chooser's, so not run again here

@@ -57,7 +57,7 @@ def test_spheric10_roll_record():
     th = np.array([roll.signal.state(t)[0] for t in np.linspace(0, 8, 801)])
     assert np.degrees(np.abs(th).max()) == pytest.approx(4.0, abs=0.1)
     # the record's positive angle lowers the left wall (impacts on the left follow it)
-    pos, _ = roll(0.6, np.array([[-0.45, 0.093], [0.45, 0.093]]))
+    pos, _ = roll(0.6, np.array([[0.0, 0.093], [0.9, 0.093]]))  # the tank's frame: inner corner at the origin
     assert pos[0, 1] < 0.093 - 0.02 and pos[1, 1] > 0.093 + 0.02
     p = spheric10_pressure()
     assert (np.diff(p[:, 0]) >= 0).all() and p[:, 1].max() == pytest.approx(7147.5, abs=1.0)

@@ -80,7 +80,8 @@ def _refdata_reads():
     """(files, problems): the (dataset, name) pairs that the source's calls of
     refdata.path name, with literal strings, module-level string constants, or through
     a one-line wrapper ``def f(name): ... refdata.path("dataset", name)`` called with a
-    literal; problems lists the calls that cannot be checked that way."""
+    literal, and that the scene files name by a path into cosim/refdata; problems lists the
+    calls that cannot be checked that way."""
     files, problems, wrappers, trees = set(), [], {}, []
     for path in _files(".py"):
         tree = ast.parse(path.read_text())
@@ -134,6 +135,12 @@ def _refdata_reads():
                     problems.append(f"{path.relative_to(ROOT)}:{call.lineno}: {fname}(...) without a literal name")
         if not used:
             problems.append(f"{where}: wrapper {fname} is never called with a literal")
+    for path in _files(".toml"):  # a scene file names a record by its path relative to itself
+        for m in re.finditer(r'"([^"]*)"', path.read_text()):
+            target = (path.parent / m.group(1)).resolve()
+            if target.is_relative_to(refdata.ROOT.resolve()) and len(target.relative_to(refdata.ROOT.resolve()).parts) > 1:
+                parts = target.relative_to(refdata.ROOT.resolve()).parts
+                files.add((parts[0], "/".join(parts[1:])))
     return files, problems
 
 

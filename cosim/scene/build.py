@@ -25,8 +25,8 @@ from pathlib import Path
 import numpy as np
 
 from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, CylinderTank, Earthquake, ElasticPlate, Flap, Flume,
-                              GroundMotion, InclinedTank, NearField, Piston, PolygonTank, Potential, Roll, Shake,
-                              TableMotion, Tank)
+                              GroundMotion, InclinedTank, NearField, Piston, PolygonTank, Potential, Roll, RollTable, Shake,
+                              ROLLS, TableMotion, Tank)
 
 PADDLE, WALLS = 1, 0  # the flume's paddle group and every tank's wall group
 
@@ -122,6 +122,8 @@ def _base_motion(scene):
         if b.ramp > 0:
             sig = Ramped(sig, b.ramp)
         return Rotation(b.point, sig, b.axis)
+    if isinstance(b, RollTable):
+        return Rotation(b.point, roll_record(b), b.axis)
     if isinstance(b, TableMotion):
         rows = np.loadtxt(b.file, comments="#", delimiter=None, ndmin=2)
         sig = Tabulated(tuple(rows[:, 0]), tuple(rows[:, b.column] * b.scale), b.quantity)
@@ -133,6 +135,15 @@ def _base_motion(scene):
         return Combined(tuple(Translation(c.direction, x) for c, x in zip(b.components, sigs)))
     assert isinstance(b, Earthquake)
     return Translation(b.direction, _scaled(read_at2(b.file, b.baseline_degree), b.scale))
+
+
+def roll_record(b):
+    """A :class:`RollTable`'s angle [rad] as ``fluid.motion.Tabulated`` (the table's degrees
+    times its scale)."""
+    from fluid.motion import Tabulated
+
+    rows = np.loadtxt(b.file, comments="#", delimiter=None, ndmin=2)
+    return Tabulated(tuple(rows[:, 0]), tuple(np.radians(rows[:, b.column] * b.scale)), "displacement")
 
 
 def far_field_wave(scene):
@@ -289,7 +300,7 @@ def _support(scene):
     b, dim = scene.base_motion, scene.world.dim
     if b is None:
         return None
-    if isinstance(b, Roll):
+    if isinstance(b, ROLLS):
         point = (b.point[0], 0.0, b.point[1]) if dim == 2 else tuple(b.point)
         axis = (0.0, 1.0, 0.0) if dim == 2 else tuple(np.asarray(b.axis) / np.linalg.norm(b.axis))
         return Support(hinge=(point, axis))

@@ -17,6 +17,7 @@ motion (base motion, paddle record) as a table of numbers whose times increase a
 
 from __future__ import annotations
 
+import gzip
 import math
 
 from cosim.scene import plausible
@@ -28,7 +29,8 @@ from cosim.scene.shapes import hull as _hull
 from cosim.scene.shapes import rotation as _rotation
 from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, CylinderTank, Earthquake, Flap, Flume, ArchRib,
                               ElasticPlate, GroundMotion, InclinedTank, IrregularWaves, NearField, NoFluid, StillWaves,
-                              PaddleRecord, Piston, PolygonTank, Potential, RegularWaves, Roll, TableMotion, Tank)
+                              PaddleRecord, Piston, PolygonTank, Potential, RegularWaves, ROLLS, RollTable, TableMotion,
+                              Tank)
 
 #: the fluids whose free surface is a plane (with an incident sea on it), not particles
 _SURFACE = (Analytic, Potential)
@@ -354,7 +356,7 @@ def _check_excitations(s, dim):
                              "plate to shake")
         if isinstance(s.domain, Flume):
             raise SceneError("base_motion", "a flume does not move as a whole; use a tank")
-        if isinstance(b, Roll):
+        if isinstance(b, ROLLS):
             _dim_vec(b.point, dim, "base_motion.point")
             if dim == 3 and b.axis is None:
                 raise SceneError("base_motion.axis", "a 3-D roll needs its axis (3 components)")
@@ -374,6 +376,8 @@ def _check_excitations(s, dim):
             _check_record_sampling(rec.times[1] - rec.times[0], first_sloshing_period(s), "base_motion.file")
         if isinstance(b, TableMotion):
             _check_table_motion(s)
+        if isinstance(b, RollTable):
+            _check_roll_table(s, dim)
         if s.moorings is not None:
             raise SceneError("moorings", "mooring lines in a moving tank: their anchors are fixed in space and would "
                              "not move with the tank's floor (the mooring models take fixed anchors); leave out "
@@ -521,6 +525,16 @@ def _check_plate(s, dim, b, key) -> None:
         if abs(b.base[-1] - floor) > 1e-9 * max(1.0, abs(floor)):
             raise SceneError(f"{key}.base", f"z = {b.base[-1]:g} m: the plate is clamped by its foot to the tank's "
                              f"floor at z = {floor:g} m; give base z = {floor:g}")
+
+
+def roll_arm(s, dim) -> float:
+    """The largest distance [m] from a roll's axis point (``s.base_motion.point``) to a
+    corner of the domain's inner box (0 without a domain): the lever of the tank's roll."""
+    if s.domain is None:
+        return 0.0
+    lo, hi = _domain_box(s.domain, dim, s)
+    corners = [[lo[k] if (m >> k) & 1 == 0 else hi[k] for k in range(dim)] for m in range(2 ** dim)]
+    return max(math.dist(c, s.base_motion.point) for c in corners)
 
 
 def _domain_box(d, dim, s=None):
@@ -973,10 +987,10 @@ def _rows_of_numbers(path, key, strict: bool) -> list[list[float]]:
     (``#``) must be whitespace-separated numbers, as ``numpy.loadtxt`` reads them (base
     motion); otherwise (a paddle record, ``MotionRecord.from_file``) commas also separate
     and text lines before the first row of numbers are a header."""
-    from pathlib import Path
-
-    try:
-        text = Path(path).read_text(encoding="utf-8")
+    try:  # a .gz file gunzipped, as numpy.loadtxt reads it
+        opened = gzip.open(path, "rt", encoding="utf-8") if str(path).endswith(".gz") else open(path, encoding="utf-8")
+        with opened as fh:
+            text = fh.read()
     except (OSError, ValueError) as e:
         raise SceneError(key, f"{path!r} cannot be read as text ({e}); give a table of numbers") from None
     rows = []
@@ -1054,6 +1068,18 @@ def _check_table_motion(s) -> None:
                          f"values") from None
     if isinstance(s.fluid, SPH):  # without a fluid the clamps it carries start where it puts them
         _at_rest(float(sig.state(0.0)[0]), s.fluid.dx, "base_motion.file", "the table moves the tank")
+
+
+def _check_roll_table(s, dim) -> None:
+    """A recorded roll: a strict table, its angle at t = 0 moving no wall point by more
+    than a tenth of a spacing (:func:`_at_rest`)."""
+    b = s.base_motion
+    rows = _rows_of_numbers(b.file, "base_motion.file", strict=True)
+    t, v = _samples(rows, b.file, b.column, "base_motion.file", "base_motion.column", strict=True)
+    if isinstance(s.fluid, SPH):
+        _at_rest(roll_arm(s, dim) * math.radians(v[0] * b.scale), s.fluid.dx, "base_motion.file",
+                 f"the record's first angle ({v[0] * b.scale:.4g} deg at t = {t[0]:g} s) turns the tank's farthest "
+                 f"corner")
 
 
 def _check_paddle_record(s) -> None:

@@ -27,7 +27,7 @@ from cosim.scene.limits import (DENSITY_WHY, FAIRLEAD_REACH, G0, MAX_BASE_ACCELE
                                 MAX_LINE_STRAIN, MIN_DENSITY, MIN_LENGTH, PADDLE_SHARE)
 from cosim.scene.shapes import RigidBody
 from cosim.scene.spec import (MJCF, Earthquake, ElasticPlate, Flap, Flume, GroundMotion, NoFluid, PaddleRecord, Piston,
-                              Roll, Shake, TableMotion)
+                              Roll, RollTable, Shake, TableMotion)
 
 
 def _g(x: float) -> str:
@@ -170,15 +170,27 @@ def _check_base_motion(s, dim: int) -> None:
                          f"{b.period:g} s: amplitude (2 pi / period)^2)", lambda: f"give an amplitude up to "
                          f"{MAX_BASE_ACCELERATION / w2:.4g} m, or a longer period")
     elif isinstance(b, Roll):
-        from cosim.scene.checks import _domain_box
+        from cosim.scene.checks import roll_arm
 
-        lo, hi = _domain_box(s.domain, dim) if s.domain is not None else ([0.0] * dim, [0.0] * dim)
-        corners = [[lo[k] if (m >> k) & 1 == 0 else hi[k] for k in range(dim)] for m in range(2 ** dim)]
-        arm = max((math.dist(c, b.point) for c in corners), default=0.0)
+        arm = roll_arm(s, dim)
         w = 2 * math.pi / b.period
         peak = math.radians(abs(b.amplitude)) * w * w * arm
         _refuse_peak("base_motion.amplitude", peak, f"the roll ({abs(b.amplitude):g} deg at {b.period:g} s, at the "
                      f"tank's corner {arm:.4g} m from the axis)", lambda: "give a smaller amplitude or a longer period")
+    elif isinstance(b, RollTable):
+        import numpy as np
+
+        from cosim.scene.build import roll_record
+        from cosim.scene.checks import roll_arm
+
+        arm, sig = roll_arm(s, dim), roll_record(b)
+        t = np.asarray(sig.times)
+        inner = np.clip(t, t[0] + 1e-9 * (t[-1] - t[0]), t[-1] - 1e-9 * (t[-1] - t[0]))  # the spline's knots
+        _, rate, acc = sig.sample(inner)
+        peak = float(np.hypot(acc, rate ** 2).max()) * arm  # tangential and centripetal at the farthest corner
+        _refuse_peak("base_motion.scale", peak, f"the recorded roll (times scale = {b.scale:g}, at the tank's "
+                     f"corner {arm:.4g} m from the axis)", lambda: f"check that the table's angles are in degrees, and give a scale up to "
+                             f"{abs(b.scale) * MAX_BASE_ACCELERATION / peak:.4g}")
     elif isinstance(b, TableMotion):
         import numpy as np
 

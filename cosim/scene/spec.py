@@ -18,7 +18,7 @@ A scene is made of
 - excitations: ``waves`` (:class:`Piston`, :class:`Flap`, :class:`PaddleRecord`: a flume's
   wavemaker; :class:`LinearWaves`, :class:`RegularWaves`, :class:`IrregularWaves`: the
   incident sea on the analytic fluid's bodies, :mod:`fluid.waves`) or
-  ``base_motion`` of a tank (:class:`Shake`, :class:`Roll`,
+  ``base_motion`` of a tank (:class:`Shake`, :class:`Roll`, :class:`RollTable`,
   :class:`TableMotion`, :class:`Earthquake`, :class:`GroundMotion`);
 - ``bodies`` (:class:`Box`, :class:`Cylinder`, :class:`Sphere`, :class:`MJCF`), placed at a
   given pose or ``place="floating"`` (at the hydrostatic equilibrium, computed);
@@ -782,6 +782,29 @@ class Roll(Spec):
 
 
 @dataclass(frozen=True)
+class RollTable(Spec):
+    """The tank rolled by a recorded angle about an axis through ``point`` [m] (2-D: about
+    +y; 3-D: along ``axis``): time [s] in the first column of ``file``, the angle [deg] in
+    ``column``, times ``scale`` (``-1`` turns a record whose positive angle is the other
+    way). The angle between samples is a C2 cubic spline through them, its rate and
+    acceleration the spline's derivatives (``fluid.motion.Tabulated``); the record starts
+    at 0 (the tank is built level) and after its end the tank holds its last angle, at rest.
+    E.g. the measured roll of SPHERIC benchmark 10 (Souto-Iglesias, Botia-Vera et al., CEHINAV-UPM)."""
+
+    TAG = ("kind", "roll_table")
+    kind: str = tag("roll_table")
+    file: str = required(text(None, "the table: time [s], then the roll angle [deg]"))
+    point: tuple = required(vec(None, "a point of the roll axis", "m"))
+    axis: tuple = vec(None, "the roll axis (3-D only)", sizes=(3,), nonzero=True)
+    column: int = whole(1, "the column of the angle (0 is time)", lo=1)
+    scale: float = num(1.0, "factor on the angles (-1: the record's sign turned)")
+
+
+#: the base motions that turn the tank about an axis (the others translate it)
+ROLLS = (Roll, RollTable)
+
+
+@dataclass(frozen=True)
 class TableMotion(Spec):
     """Base motion from a table: time [s] in the first column, the ``quantity`` along
     ``direction`` in ``column`` (times ``scale``)."""
@@ -855,7 +878,7 @@ class GroundMotion(Spec):
                              "direction = [1.0, 0.0] }]")
 
 
-BASE_MOTIONS = (Shake, Roll, TableMotion, Earthquake, GroundMotion)
+BASE_MOTIONS = (Shake, Roll, RollTable, TableMotion, Earthquake, GroundMotion)
 
 
 # ------------------------------------------------------------------------ bodies
@@ -1231,7 +1254,7 @@ class Scene(Spec):
 __all__ = ["World", "NoFluid", "Analytic", "Potential", "SPH", "Block", "Tank", "Beach", "Absorber", "Flume", "InclinedTank",
            "CylinderTank", "PolygonTank", "ArchRib", "NearField", "arch_rib_monitors", "Piston", "Flap", "PaddleRecord",
            "LinearWaves", "RegularWaves", "IrregularWaves", "StillWaves",
-           "Shake", "Roll", "TableMotion",
+           "Shake", "Roll", "RollTable", "TableMotion",
            "Earthquake", "Record", "GroundMotion", "Box", "Cylinder", "Sphere", "MJCF", "ElasticPlate", "Line",
            "Moorings", "Patch", "ForcedMotion",
            "Probes", "Coupling",

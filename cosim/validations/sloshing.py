@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
+from contextlib import contextmanager
 
 import numpy as np
 
@@ -11,7 +13,7 @@ from cosim.study.metrics import spectral_peak
 from cosim.validations.case_scene import fluid_setup
 from cosim.validations.registry import case
 from fluid.geometry import assemble, block, set_hydrostatic, tank_walls
-from fluid.motion import Harmonic, Rotation, Tabulated, Translation
+from fluid.motion import Harmonic, Rotation, Translation
 from fluid.particles import Kind
 from fluid.probes import wall_patch_pressure
 from fluid.solver import SLOSHING_2D, Fluid, FluidConfig
@@ -497,15 +499,38 @@ SPHERIC10_PEAKS = ((2.375, 3683.0), (4.067, 3890.0), (5.672, 2663.0), (7.303, 71
 SPHERIC10_TANK = (0.9, 0.508, 0.093)
 
 
+def spheric10_scene(dx: float = 0.0031, c0: float = 28.0, t_end: float = 8.0, sample_dt: float = 1e-4,
+                    **overrides):
+    """The case's scene file ``scenes/sloshing-spheric10.toml`` (the tank, its water, the
+    measured roll about the centre of its bottom, the sensor's patch) at spacing ``dx``
+    [m], ``c0`` [m/s], ``t_end`` [s] long, sampled every ``sample_dt`` [s]; ``overrides``
+    set the fluid's fields (e.g. ``walls="dbc"``, ``alpha=0.02``). The patch is
+    ``max(SPHERIC10_SENSOR, 2 dx)`` long: at least two particle columns, so that a coarse
+    lattice does not put its centre between two."""
+    from cosim.validations import case_scene
+
+    n = case_scene.number
+    size = max(SPHERIC10_SENSOR, 2 * dx)
+    (x, z) = SPHERIC10_SENSOR_AT
+    return case_scene.load("sloshing-spheric10", [
+        f"fluid.dx={n(dx)}", f"fluid.c0={n(c0)}", f"world.duration={n(t_end)}", f"world.sample_every={n(sample_dt)}",
+        f'probes.pressure=[{{name = "sensor", centre = [{n(x)}, {n(z)}], normal = [1.0, 0.0], size = {n(size)}}}]',
+        *case_scene.settings("fluid", overrides)])
+
+
 def spheric10_motion() -> Rotation:
-    """The measured roll of SPHERIC Test 10 (refdata SloshingMotionData.dat.gz: t [s], angle
-    [deg], 5e-5 s apart) about the centre of the tank bottom (0, 0), as a :class:`Rotation`.
-    Sign: the record's positive angle lowers the left wall (x = -0.45 m): the measured
+    """The measured roll of SPHERIC Test 10 as the case's scene gives it: the record's
+    angle (refdata SloshingMotionData.dat.gz: t [s], angle [deg], 5e-5 s apart) about the
+    centre of the tank bottom, (0.45, 0) m in the tank's frame (its inner corner at the
+    origin). Sign: the record's positive angle lowers the left wall (x = 0): the measured
     impacts on the left-wall sensor come 0.15 s after each positive extreme of the angle;
-    our positive angle about +y lowers the right wall, so the record is negated."""
-    m = np.loadtxt(refdata.path("sloshing_spheric_test10", "SloshingMotionData.dat.gz"), comments="#")
-    theta = -np.radians(m[:, 1])
-    return Rotation((0.0, 0.0), Tabulated(tuple(m[:, 0]), tuple(theta), "displacement"))
+    our positive angle about +y lowers the right wall, so the scene negates the record
+    (``scale = -1``)."""
+    from cosim.scene.build import roll_record
+    from cosim.validations import case_scene
+
+    b = case_scene.load("sloshing-spheric10").base_motion
+    return Rotation(b.point, roll_record(b))
 
 
 def spheric10_pressure() -> np.ndarray:
@@ -515,25 +540,26 @@ def spheric10_pressure() -> np.ndarray:
     return p[np.argsort(p[:, 0], kind="stable")]
 
 
-def spheric10_fluid(dx: float, c0: float = 28.0, **overrides):
-    """The SPHERIC Test 10 tank (:func:`run_spheric10`) at rest, its walls rolled by the
-    measured angle: (Fluid, Rotation), initialised at t = 0. ``overrides`` go to
-    :class:`FluidConfig` (default ``walls="adami"``)."""
-    L, H, h = SPHERIC10_TANK
-    ps = _moving_tank(2, dx, L, h, H)
-    ps.pos[:, 0] -= L / 2
-    overrides.setdefault("walls", "adami")
-    cfg = FluidConfig(dim=2, dx=dx, c0=c0, **overrides)
-    set_hydrostatic(ps, h, RHO0, cfg.speed_of_sound, cfg.gamma, cfg.g)
-    f = Fluid(cfg, ps)
-    roll = spheric10_motion()
-    f.prescribe_motion(0, roll)
-    f.initialize(0.0)
-    return f, roll
+@contextmanager
+def spheric10_built(dx: float, c0: float = 28.0, t_end: float = 8.0, sample_dt: float = 1e-4,
+                    **overrides) -> Iterator[tuple[Fluid, Rotation]]:
+    """The SPHERIC Test 10 tank of :func:`spheric10_scene` built as ``cosim run`` builds it,
+    at rest, its walls rolled by the measured angle: (Fluid, Rotation), initialised at
+    t = 0, for the ``with`` block."""
+    from cosim.validations import case_scene
+
+    with case_scene.built(spheric10_scene(dx, c0, t_end, sample_dt, **overrides)) as b:
+        yield b.sph, b.base_motion
 
 
+#: (dx [m], c0 [m/s], t_end [s], sample_dt [s]) of the case's full (False) and quick (True)
+#: variants: the quick one the first swing only (no impact), 5 particle rows over the depth
+SPHERIC10_RUNS = {False: (0.0031, 28.0, 8.0, 1e-4), True: (0.0186, 28.0, 1.3, 0.005)}
 #: length [m] along the wall of the SPHERIC 10 sensor's patch (:func:`spheric10_sensor`)
 SPHERIC10_SENSOR = 0.010
+#: the sensor's centre [m] on the left wall's face at the still-water level, in the tank's
+#: frame (inner corner at the origin)
+SPHERIC10_SENSOR_AT = (0.0, 0.093)
 #: the sensor readings :func:`run_spheric10` offers
 SPHERIC10_SENSORS = ("patch", "face")
 
@@ -550,9 +576,9 @@ def spheric10_sensor(f: Fluid, roll: Rotation, t: float, kind: str = "patch") ->
     support (and extrapolates wildly where only two or three particles are near)."""
     if kind not in SPHERIC10_SENSORS:
         raise ValueError(f"sensor kind {kind!r}: choose one of {SPHERIC10_SENSORS}")
-    L, _, h = SPHERIC10_TANK
-    at, _ = roll(t, np.array([[-L / 2, h]]))
-    normal = roll(t, np.array([[-L / 2 + 1.0, h]]))[0][0] - at[0]
+    centre = np.array([SPHERIC10_SENSOR_AT])
+    at, _ = roll(t, centre)
+    normal = roll(t, centre + [1.0, 0.0])[0][0] - at[0]
     if kind == "patch":
         # at least two particle columns: a coarse lattice may put the centre between two
         return wall_patch_pressure(f, at[0], normal, max(SPHERIC10_SENSOR, 2 * f.config.dx), group=0)
@@ -578,7 +604,9 @@ def run_spheric10(dx: float, t_end: float = 8.0, c0: float = 28.0, sample_dt: fl
     CEHINAV-UPM; refdata/sloshing_spheric_test10/SOURCE.txt): 2-D section of the tank
     0.900 x 0.508 m, water 0.093 m, rolled by the measured angle about the centre of the
     tank bottom; pressure on the left wall at the still-water level (z = 0.093 m in the
-    tank frame).
+    tank frame). The set-up is the case's scene (:func:`spheric10_scene`), built as
+    ``cosim run`` builds it; the case steps the fluid and reads the sensor itself, so that
+    it may read the "face" sensor too.
 
     Wang et al. 2022 (§3) validate their SPH on the same kind of test
     (Brizzolara et al. 2011: a 900 x 508 mm tank rolled +-4 deg about an axis 184 mm above
@@ -588,8 +616,8 @@ def run_spheric10(dx: float, t_end: float = 8.0, c0: float = 28.0, sample_dt: fl
 
     dx [m]; c0 [m/s] (28: 10 times a 2.8 m/s impact speed, as ~29 sqrt(g h), and as
     DualSPHysics' own set-up of this case, coefsound 30 x sqrt(g h) = 28.7 m/s,
-    examples/mdbc/03_Sloshing/CaseSloshingHR_Def.xml); ``overrides`` go to
-    :class:`FluidConfig`, by default ``walls="adami"`` (the tank walls carry the fluid's
+    examples/mdbc/03_Sloshing/CaseSloshingHR_Def.xml); ``overrides`` set the scene's fluid
+    fields; the scene's ``walls="adami"`` (the tank walls carry the fluid's
     pressure, Adami et al. 2012: the wall pressure of a plain dynamic boundary is not a
     pressure the wall feels, and it halves the first impact, see the case's docstring).
     The sensor (:func:`spheric10_sensor`, ``sensor``) is by default the normal force the
@@ -609,15 +637,15 @@ def run_spheric10(dx: float, t_end: float = 8.0, c0: float = 28.0, sample_dt: fl
     """
     if sensor not in SPHERIC10_SENSORS:
         raise ValueError(f"sensor={sensor!r}: choose one of {SPHERIC10_SENSORS}")
-    f, roll = spheric10_fluid(dx, c0, **overrides)
-    cfg = f.config
     n = int(round(t_end / sample_dt))
     times, p = np.empty(n), np.empty(n)
-    t = 0.0
-    for i in range(n):
-        f.advance(t, sample_dt)
-        t = (i + 1) * sample_dt
-        times[i], p[i] = t, spheric10_sensor(f, roll, t, sensor)
+    with spheric10_built(dx, c0, t_end=t_end, sample_dt=sample_dt, **overrides) as (f, roll):
+        cfg = f.config
+        t = 0.0
+        for i in range(n):
+            f.advance(t, sample_dt)
+            t = (i + 1) * sample_dt
+            times[i], p[i] = t, spheric10_sensor(f, roll, t, sensor)
     exp = spheric10_pressure()
     metrics = {"dx_m": dx, "c0_m_s": c0, "h_over_dx": cfg.h_coef, "walls": cfg.walls, "t_end_s": t_end,
                "sensor": sensor}
@@ -700,7 +728,8 @@ def sloshing_frequency(quick: bool) -> dict:
       "left-wall pressure impact peaks within 20 % and within 0.05 s of the measured ones (dx 3.1 mm, "
       "~35 min; quick: the first swing at 18.6 mm)", target="pressure peaks within 20 %, in phase",
       quick="the first swing only (0.5-1.2 s, before the first impact) at dx = 18.6 mm (5 rows over the depth): "
-            "its pressure peak within 20 % and 0.1 s of the measured one")
+            "its pressure peak within 20 % and 0.1 s of the measured one",
+      scene=lambda quick: spheric10_scene(*SPHERIC10_RUNS[quick]))
 def sloshing_spheric10(quick: bool) -> dict:
     """See :func:`run_spheric10`. Reference: the measured pressure of SPHERIC Test 10
     (refdata/sloshing_spheric_test10; impact peaks 3.68, 3.89, 2.66, 7.15 kPa at 2.375,
@@ -728,11 +757,10 @@ def sloshing_spheric10(quick: bool) -> dict:
 
     Measured trade: ``docs/validation/sloshing-spheric10_trade.md`` (on the case's report page).
     """
+    dx, c0, t_end, sample_dt = SPHERIC10_RUNS[quick]
+    out = run_spheric10(dx, t_end, c0, sample_dt)
     if quick:  # the first swing only (no impact): 5 particle rows over the depth
-        out = run_spheric10(0.0186, t_end=1.3, sample_dt=0.005)
         out["stated_tolerances"] = {"peak_ratio_worst": 0.2, "lag_worst_s": 0.05}
-    else:
-        out = run_spheric10(0.0031, t_end=8.0)
     ours = out.pop("series")
     exp = spheric10_pressure()
     seen = exp[:, 0] <= ours["t"][-1]
