@@ -1114,6 +1114,17 @@ CASES = [
     case("a missing file", "tank3d",
          ("base_motion", {"kind": "table", "file": "nowhere.csv", "direction": [1.0, 0.0, 0.0]}), "base_motion.file",
          "no file 'nowhere.csv' (a relative path is read from the scene file's folder)", "Scene.base_motion.file"),
+    case("a tank's inner wall outside the tank", "tank2d", ("domain.walls", [{"lo": [0.5, 0.0], "hi": [1.2, 0.3]}]),
+         "domain.walls[0]", "the block [0.5, 0.0] .. [1.2, 0.3] m reaches outside the tank 0 .. [1.0, 0.6] m",
+         "Scene.domain.walls[0]"),
+    case("two inner walls overlapping", "tank2d",
+         ("domain.walls", [{"lo": [0.2, 0.0], "hi": [0.3, 0.4]}, {"lo": [0.25, 0.0], "hi": [0.35, 0.4]}]),
+         "domain.walls[1]", "overlaps domain.walls[0] ([0.2, 0.0] .. [0.3, 0.4] m)", "Scene.domain.walls[1]"),
+    case("a water block overlapping an inner wall", "tank2d",
+         (("domain.depth", OUT), ("domain.water", [{"lo": [0.0, 0.0], "hi": [0.3, 0.3]}]),
+          ("domain.walls", [{"lo": [0.25, 0.0], "hi": [0.35, 0.4]}])),
+         "domain.water[0]", "overlaps the solid domain.walls[0] ([0.25, 0.0] .. [0.35, 0.4] m); let the water end "
+         "where the wall begins", "Scene.domain.water[0]"),
     case("a recorded roll that does not start level", "tank2d",
          ("base_motion", {"kind": "roll_table", "file": "roll.txt", "point": [0.5, 0.0], "column": 2}),
          "base_motion.file", "the record's first angle (3 deg at t = 0 s) turns the tank's farthest corner 0.04089 m "
@@ -1293,6 +1304,9 @@ BUILD_CASES = [
     case("potential flow: an irregular sea beyond the frequencies' trusted band", "potential", ("waves", JONSWAP),
          "fluid.omega_max", "the sea's components outside the coefficients' trusted band 0.15-1.5 rad/s (the lowest "
          "frequency to 0.5 x the highest) carry 5.5% of its variance", None),
+    case("a tank's inner wall thinner than its walls", "tank2d", ("domain.walls", [{"lo": [0.5, 0.0], "hi": [0.54, 0.6]}]),
+         "domain.walls[0]", "is 0.04 m thick, fewer than the walls' 4 layers of fluid.dx = 0.02 m (the kernel's "
+         "support 2h behind a wetted face)", None),
     case("a floating body that sinks", "flume", ("bodies[0].density", 1500.0), "bodies[0].place",
          "body 'box' (30 kg) sinks: fully submerged it displaces 20 kg of water", None),
     case("a coupling step above the analytic fluid's stable step", "analytic",

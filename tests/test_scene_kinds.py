@@ -42,6 +42,32 @@ def test_domains_hold_their_water_and_run(domain, dim, volume, rel, tmp_path):
     assert r.summary["t_reached_s"] == scene.world.duration
 
 
+def test_a_tanks_inner_walls_are_wall_particles_and_keep_the_water_out(tmp_path):
+    """A baffle (``domain.walls``) in a tank filled to a depth: its lattice is wall
+    particles of the tank's group, the water laid to the depth leaves its volume out (and
+    stays a lattice spacing from its first particles), and the water beside it stays out
+    through a short run; a water block beside a wall keeps its own volume."""
+    from fluid.particles import Kind
+
+    baffle = Block((0.25, 0.0), (0.4, 0.3))  # 0.15 m = 3 layers of 0.05 m
+    scene = Scene(world=W2.replace(duration=0.2), fluid=SPH(dx=0.05),
+                  domain=Tank(length=0.6, height=0.4, depth=0.2, walls=[baffle]))
+    b = build(scene, tmp_path)
+    ps = b.sph.ps
+    fluid, walls = ps.pos[ps.kind == Kind.FLUID], ps.pos[ps.kind != Kind.FLUID]
+    assert _water_volume(b, 2) == pytest.approx((0.6 - 0.15) * 0.2, rel=1e-9)
+    inner = walls[(walls[:, 0] > 0.25) & (walls[:, 0] < 0.4) & (walls[:, 1] > 0.0)]
+    assert len(inner) == 3 * 6 and np.unique(ps.group[ps.kind != Kind.FLUID]).tolist() == [0]
+    gap = np.min(np.linalg.norm(fluid[:, None, :] - inner[None, :, :], axis=2))
+    assert gap == pytest.approx(0.05, rel=1e-9)
+    b.coupler.run(0.2)
+    x = b.sph.ps.pos[b.sph.ps.kind == Kind.FLUID][:, 0]
+    assert not ((x > 0.25) & (x < 0.4)).any()
+    column = Tank(length=0.6, height=0.4, water=[Block((0.0, 0.0), (0.25, 0.3))], walls=[baffle])
+    b = build(Scene(world=W2, fluid=SPH(dx=0.05), domain=column), tmp_path / "column")
+    assert _water_volume(b, 2) == pytest.approx(0.25 * 0.3, rel=1e-9)
+
+
 def _table(path, t, v):
     np.savetxt(path, np.column_stack([t, v]))
     return str(path)

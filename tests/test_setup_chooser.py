@@ -72,7 +72,7 @@ LONG = ["inclined-wall", "floating-heave-period", "moored-body-sph", "cylinder-t
 #: cases whose quick scene gets the same FluidConfig from "auto" as its own: their quick
 #: validation run (``cosim validate NAME --quick``) is the chooser's, so not run again here
 SAME = ["arch-rib", "elastic-table2", "hydrostatic-3d", "nearfield-floating-box", "nearfield-radiation", "dambreak-2d",
-        "dambreak-lobovsky", "elastic-plate", "nearfield-waves", "long-period", "wave-propagation"]
+        "dambreak-lobovsky", "elastic-plate", "nearfield-waves", "long-period", "wave-propagation", "elastic-gate"]
 #: cases whose quick variant is built in code with the settings the chooser gives their scene
 #: file ({case: the settings it passes to case_scene.fluid_setup}): their quick validation run
 #: (tests/test_sloshing.py) is the chooser's, so not run again here

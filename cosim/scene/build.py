@@ -260,9 +260,16 @@ def _domain_points(scene, cfg, back: float = 0.0, brim: bool = False):
         return fl.fluid, fl.walls
     if isinstance(d, Tank) and d.water:
         inner = [d.length] + ([d.width] if dim == 3 else []) + [d.height]
-        walls = tank_walls(np.zeros(dim), np.array(inner), dx, layers)
+        walls = np.concatenate([tank_walls(np.zeros(dim), np.array(inner), dx, layers), *_inner_walls(d, dx, layers)])
         pts = np.concatenate([block(b.lo, b.hi, dx) for b in d.water])
         return pts, [(walls, walls_kind, WALLS)]
+    if isinstance(d, Tank) and d.walls:
+        built = tank_with_water(dim, dx, d.length, d.height if brim else d.depth, d.height, d.width or 0.0, layers,
+                                cfg.rho0)
+        ps = built.particles
+        fluid = (ps.kind == Kind.FLUID) & ~_in_blocks(ps.pos, d.walls, 0.5 * dx)
+        walls = np.concatenate([ps.pos[ps.kind != Kind.FLUID], *_inner_walls(d, dx, layers)])
+        return ps.pos[fluid].copy(), [(walls, walls_kind, WALLS)]
     if isinstance(d, Tank):
         built = tank_with_water(dim, dx, d.length, d.height if brim else d.depth, d.height, d.width or 0.0, layers,
                                 cfg.rho0)
@@ -276,6 +283,34 @@ def _domain_points(scene, cfg, back: float = 0.0, brim: bool = False):
     ps = built.particles
     fluid = ps.kind == Kind.FLUID
     return ps.pos[fluid].copy(), [(ps.pos[~fluid].copy(), walls_kind, WALLS)]
+
+
+def _inner_walls(d, dx: float, layers: int) -> list:
+    """The wall particles of a tank's solid blocks (``domain.walls``), each checked to be at
+    least ``layers`` spacings thick (the kernel's support behind a wetted face)."""
+    from cosim.scene.fields import SceneError
+    from fluid.geometry import block
+
+    out = []
+    for i, w in enumerate(d.walls):
+        thin = min(h - lo for lo, h in zip(w.lo, w.hi))
+        if math.floor(thin / dx + 1e-9) < layers:
+            raise SceneError(f"domain.walls[{i}]", f"the block {list(w.lo)} .. {list(w.hi)} m is {thin:.4g} m thick, "
+                             f"fewer than the walls' {layers} layers of fluid.dx = {dx:g} m (the kernel's support "
+                             f"2h behind a wetted face): the water beside it would not be held, and would feel the "
+                             f"other side through it; make it at least {layers * dx:.4g} m thick, or refine dx")
+        out.append(block(w.lo, w.hi, dx))
+    return out
+
+
+def _in_blocks(points, blocks, margin: float) -> np.ndarray:
+    """Which ``points`` lie within ``margin`` [m] of the inside of any of ``blocks`` (a
+    point that far outside a face, as a lattice neighbour is, is kept)."""
+    inside = np.zeros(len(points), bool)
+    for b in blocks:
+        lo, hi = np.asarray(b.lo) - margin + 1e-9, np.asarray(b.hi) + margin - 1e-9
+        inside |= np.all((points > lo) & (points < hi), axis=1)
+    return inside
 
 
 def _surface_heights(scene, points):

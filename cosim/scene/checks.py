@@ -176,6 +176,7 @@ def _check_fluid_and_domain(s, dim):
         if dim == 2 and d.width is not None:
             raise SceneError("domain.width", "a 2-D scene is the x-z plane; leave width out")
     if isinstance(d, Tank):
+        _check_tank_walls(s, d, dim)
         for i, b in enumerate(d.water):
             _dim_vec(b.lo, dim, f"domain.water[{i}].lo")
             _dim_vec(b.hi, dim, f"domain.water[{i}].hi")
@@ -183,6 +184,11 @@ def _check_fluid_and_domain(s, dim):
             if any(lo < 0 for lo in b.lo) or any(h > e for h, e in zip(b.hi, inner)):
                 raise SceneError(f"domain.water[{i}]", f"the block {list(b.lo)} .. {list(b.hi)} m reaches outside "
                                  f"the tank 0 .. {list(inner)} m")
+            for k, w in enumerate(d.walls):
+                if _blocks_overlap(b, w):
+                    raise SceneError(f"domain.water[{i}]", f"the block {list(b.lo)} .. {list(b.hi)} m overlaps the "
+                                     f"solid domain.walls[{k}] ({list(w.lo)} .. {list(w.hi)} m); let the water end "
+                                     f"where the wall begins")
             dx = s.fluid.dx
             for k, (lo, hi) in enumerate(zip(b.lo, b.hi)):
                 if math.floor((hi - lo) / dx + 1e-9) < 1:  # as fluid.geometry.block counts its rows
@@ -191,8 +197,7 @@ def _check_fluid_and_domain(s, dim):
                                      f"would hold no particle; make it at least {dx:g} m thick, or refine dx")
         for j, b in enumerate(d.water):
             for i, a in enumerate(d.water[:j]):
-                tol = 1e-9 * max(max(abs(x) for x in a.hi + b.hi), 1.0)
-                if all(min(ah, bh) - max(al, bl) > tol for al, ah, bl, bh in zip(a.lo, a.hi, b.lo, b.hi)):
+                if _blocks_overlap(a, b):
                     raise SceneError(f"domain.water[{j}]", f"the block {list(b.lo)} .. {list(b.hi)} m overlaps "
                                      f"domain.water[{i}] ({list(a.lo)} .. {list(a.hi)} m): the water there would be "
                                      f"laid twice, its particles on top of each other; let the blocks meet (one's "
@@ -1068,6 +1073,30 @@ def _check_table_motion(s) -> None:
                          f"values") from None
     if isinstance(s.fluid, SPH):  # without a fluid the clamps it carries start where it puts them
         _at_rest(float(sig.state(0.0)[0]), s.fluid.dx, "base_motion.file", "the table moves the tank")
+
+
+def _blocks_overlap(a, b) -> bool:
+    """Whether two blocks share a volume (meeting faces do not count)."""
+    tol = 1e-9 * max(max(abs(x) for x in a.hi + b.hi), 1.0)
+    return all(min(ah, bh) - max(al, bl) > tol for al, ah, bl, bh in zip(a.lo, a.hi, b.lo, b.hi))
+
+
+def _check_tank_walls(s, d, dim) -> None:
+    """A tank's inner walls (``domain.walls``): blocks of the scene's dimension inside the
+    tank, apart from each other (their thickness against the kernel is the build's check,
+    which knows the set-up's h)."""
+    inner = (d.length,) + ((d.width,) if dim == 3 else ()) + (d.height,)
+    for i, w in enumerate(d.walls):
+        _dim_vec(w.lo, dim, f"domain.walls[{i}].lo")
+        _dim_vec(w.hi, dim, f"domain.walls[{i}].hi")
+        if any(lo < 0 for lo in w.lo) or any(h > e for h, e in zip(w.hi, inner)):
+            raise SceneError(f"domain.walls[{i}]", f"the block {list(w.lo)} .. {list(w.hi)} m reaches outside the "
+                             f"tank 0 .. {list(inner)} m (the tank's own walls are built around that box)")
+        for k, v in enumerate(d.walls[:i]):
+            if _blocks_overlap(v, w):
+                raise SceneError(f"domain.walls[{i}]", f"the block {list(w.lo)} .. {list(w.hi)} m overlaps "
+                                 f"domain.walls[{k}] ({list(v.lo)} .. {list(v.hi)} m): its particles would be laid "
+                                 f"twice; let the blocks meet without overlapping")
 
 
 def _check_roll_table(s, dim) -> None:

@@ -244,7 +244,12 @@ class Block(Spec):
 class Tank(Spec):
     """A rectangular open tank, inner corner at the origin: ``length`` along x, ``width``
     along y (3-D only), walls ``height`` high; water to ``depth`` or in ``water`` blocks
-    (one or the other)."""
+    (one or the other). ``walls``: solid blocks inside the tank, part of its walls (filled
+    with wall particles on the lattice, moving with the tank): the rigid wall an elastic
+    gate hangs from (Antoci et al. 2007), a baffle. Water laid to ``depth`` leaves them
+    out; water blocks may not overlap them. Each is at least as thick as the tank's walls
+    (their layers, the kernel's support 2h, times dx), so that the water beside it is held
+    and does not feel the other side."""
 
     TAG = ("kind", "tank")
     kind: str = tag("tank")
@@ -253,6 +258,7 @@ class Tank(Spec):
     width: float = num(None, "inner width along y (3-D only)", "m", lo=0, lo_open=True)
     depth: float = num(None, "still-water depth (or give water blocks)", "m", lo=0, lo_open=True)
     water: tuple = parts("boxes of water, e.g. a dam-break column (or give depth)", Block)
+    walls: tuple = parts("solid blocks inside the tank, part of its walls: the wall a gate hangs from, a baffle", Block)
 
     def validate(self):
         if (self.depth is None) == (not self.water):

@@ -4,7 +4,6 @@ displacements (refdata ``elastic_gate_antoci2007``, SOURCE.txt)."""
 
 from __future__ import annotations
 
-import math
 import time
 
 import numpy as np
@@ -59,66 +58,71 @@ def numerical() -> dict[str, dict[str, np.ndarray]]:
                         "y": _gate_curve("ng_2020_elastic_dam_break_y_displacement_ng_2020_sph_vcpm_alpha_1.csv")}}
 
 
+#: (dx [m], t_end [s], elements) of the full (False) and quick (True) variants: the quick one
+#: the scene file's (one particle across the gate: the thin-wall treatment)
+GATE_RUNS = {True: (0.005, 0.3, 8), False: (0.00125, 0.4, 16)}
+
+
+def gate_scene(dx: float, t_end: float = 0.4, n_elements: int = 16, sample: float = 2e-3, E: float = E_S,
+               thin_wall: bool | None = None, light_body: str = "auto", beta: float = 0.0, **overrides):
+    """The scene ``scenes/elastic-gate.toml`` (the quick variant's) at spacing ``dx`` [m],
+    ``t_end`` [s] long, sampled every ``sample`` [s], the gate of ``n_elements`` elements,
+    Young's modulus ``E`` [Pa] and stiffness-proportional damping ``beta`` [s]; the rigid
+    wall above the gate 3 dx thick (the walls' layers at h = sqrt(2) dx). Fewer than two
+    particles across the gate (dx > 2.5 mm) get the thin-wall treatment (``thin_wall=None``:
+    by dx). ``light_body`` is the coupler's remedy; ``overrides`` set the fluid's fields."""
+    from cosim.validations import case_scene
+
+    n = case_scene.number
+    if thin_wall is None:
+        thin_wall = round(GATE_B / dx) < 2
+    wall = f"{{lo = [{n(COL_L)}, {n(GATE_L)}], hi = [{n(COL_L + 3 * dx)}, {n(WALL_TOP)}]}}"
+    return case_scene.load("elastic-gate", [
+        f"fluid.dx={n(dx)}", f"world.duration={n(t_end)}", f"world.sample_every={n(sample)}", f"domain.walls=[{wall}]",
+        f"bodies[0].elements={int(n_elements)}", f"bodies[0].E={n(E)}", f"bodies[0].damping={n(beta)}",
+        f"bodies[0].thin_wall={'true' if thin_wall else 'false'}", f'coupling.light_body="{light_body}"',
+        *case_scene.settings("fluid", overrides)])
+
+
 def run_elastic_gate(dx: float, t_end: float = 0.4, n_elements: int = 16, sample: float = 2e-3,
                      E: float = E_S, thin_wall: bool | None = None, light_body: str = "auto",
                      beta: float = 0.0, **overrides) -> dict:
-    """The elastic gate (2-D, x-z; Antoci et al. 2007 as refdata SOURCE.txt gives it): a
-    water column ``COL_L`` x ``COL_H`` at rest against the left wall; at x = ``COL_L`` a
-    rubber gate ``GATE_B`` thick and ``GATE_L`` long hangs from a rigid wall (from z =
-    ``GATE_L`` up, 3 layers thick), clamped at its top, its free end at the floor (no
-    support: it only touches). At t = 0 the hydrostatic column pushes the gate open and
-    flows out under it onto a floor ``TANK_L`` long.
+    """The elastic gate (2-D, x-z; Antoci et al. 2007 as refdata SOURCE.txt gives it) of
+    :func:`gate_scene` (its arguments), built as ``cosim run`` builds it: a water column
+    ``COL_L`` x ``COL_H`` at rest against the left wall; at x = ``COL_L`` a rubber gate
+    ``GATE_B`` thick and ``GATE_L`` long hangs from a rigid wall (from z = ``GATE_L`` up,
+    3 dx thick), clamped at its top, its free end at the floor (no support: it only
+    touches). At t = 0 the hydrostatic column pushes the gate open and flows out under it
+    onto a floor ``TANK_L`` long.
 
-    Fluid: the solver's defaults (Wendland, h = sqrt(2) dx, alpha = 0.01, Fourtakas delta =
-    0.1, CFL 0.2), c0 = 10 sqrt(2 g COL_H) (Yang & Li 2020, Eq. 6's rule), tank and upper wall
-    plain dynamic boundaries, the gate's particles mDBC; the column starts hydrostatic.
-    Gate: the MuJoCo chain of :mod:`bodies.elastic` hanging from its clamp
-    (``direction="down"``), ``n_elements`` Timoshenko elements, RK4, no damping (``beta``
-    [s]: stiffness-proportional damping, for the sensitivity study), E = 12 MPa
-    (Antoci's; ``E`` to change it), nu = 0.4 (only in the shear term), the narrow-beam E
-    (not the plane-strain E / (1 - nu^2) = 14.3 MPa). Fewer than two particles across the
-    gate (dx > 2.5 mm) get the thin-wall treatment (``thin_wall=None``: by dx).
+    Fluid: a dam break's set-up (the solver's defaults: Wendland, h = sqrt(2) dx, alpha =
+    0.01, Fourtakas delta = 0.1, CFL 0.2; c0 = 10 sqrt(2 g COL_H), Yang & Li 2020, Eq. 6's
+    rule), tank and upper wall plain dynamic boundaries, the gate's particles mDBC; the
+    column starts hydrostatic. Gate: the MuJoCo chain of :mod:`bodies.elastic` hanging
+    from its clamp, Timoshenko elements, RK4, no damping unless ``beta``, E = 12 MPa
+    (Antoci's), nu = 0.4 (only in the shear term), the narrow-beam E (not the plane-strain
+    E / (1 - nu^2) = 14.3 MPa), MuJoCo steps of at most 0.1 ms.
     Returns the free end's x and y displacement every ``sample`` [s] up to ``t_end`` [s],
     and the CPU seconds the run took (``cpu_s``, :func:`time.process_time`, all threads)."""
-    from bodies import builders
-    from bodies.elastic import elastic_beam
-    from bodies.mujoco_bodies import MujocoBodies
-    from cosim.coupler import Coupler
-    from cosim.sph_fluid import SPHFluid
-    from fluid.geometry import block, tank_walls
-    from fluid.particles import Kind
-    from fluid.solver import FluidConfig
+    from cosim.validations import case_scene
 
-    g = 9.81
-    if thin_wall is None:
-        thin_wall = round(GATE_B / dx) < 2
-    beam = elastic_beam("gate", GATE_L, GATE_B, E=E, rho=RHO_S, nu=NU_S, n_elements=n_elements,
-                        base=(COL_L + GATE_B / 2, 0.0, GATE_L), direction="down", thin_wall=thin_wall, beta=beta)
-    bodies = MujocoBodies(builders.scene(beam.xml, gravity=g, timestep=min(1e-4, 0.5 * beam.stable_dt())),
-                          bodies=beam.link_names)
-    upper = block(np.array([COL_L, GATE_L]), np.array([COL_L + 3 * dx, WALL_TOP]), dx)
-    walls = [(np.concatenate([tank_walls([0.0, 0.0], [TANK_L, WALL_TOP], dx, 3), upper]), Kind.FIXED_WALL, 0)]
-    cfg = FluidConfig(dim=2, dx=dx, u_max=math.sqrt(2 * g * COL_H), domain_lo=(-0.05, -0.05),
-                      domain_hi=(TANK_L + 0.05, 2 * WALL_TOP), **overrides)
-    fluid = SPHFluid(cfg, block(np.array([0.0, 0.0]), np.array([COL_L, COL_H]), dx), walls, z_surface=COL_H,
-                     elastic=[beam])
-    coupler = Coupler(bodies=bodies, fluid=fluid, light_body=light_body)
-    c0, w0 = time.process_time(), time.perf_counter()
-    coupler.initialize()
-    gate = fluid.elastic[0]
-    ts, xs, ys = [0.0], [0.0], [0.0]
-    n = int(round(t_end / sample))
-    for k in range(1, n + 1):
-        coupler.run(k * sample)
-        gate.check()
-        d = gate.displacement("tip")
-        ts.append(coupler.t)
-        xs.append(float(d[0]))
-        ys.append(float(d[2]))
-    return {"t": np.array(ts), "x": np.array(xs), "y": np.array(ys), "particles": int(fluid.fluid.ps.n),
-            "steps": coupler.steps, "cpu_s": time.process_time() - c0, "wall_s": time.perf_counter() - w0,
-            "c0": cfg.speed_of_sound, "dx": dx, "n_elements": n_elements, "thin_wall": bool(thin_wall), "E": E,
-            "beta": beta}
+    scene = gate_scene(dx, t_end, n_elements, sample, E, thin_wall, light_body, beta, **overrides)
+    with case_scene.built(scene) as b:
+        coupler, gate = b.coupler, b.fluid.elastic[0]
+        c0, w0 = time.process_time(), time.perf_counter()
+        ts, xs, ys = [0.0], [0.0], [0.0]
+        for k in range(1, int(round(t_end / sample)) + 1):
+            coupler.run(k * sample)
+            gate.check()
+            d = gate.displacement("tip")
+            ts.append(coupler.t)
+            xs.append(float(d[0]))
+            ys.append(float(d[2]))
+        body = scene.bodies[0]
+        return {"t": np.array(ts), "x": np.array(xs), "y": np.array(ys), "particles": int(b.sph.ps.n),
+                "steps": coupler.steps, "cpu_s": time.process_time() - c0, "wall_s": time.perf_counter() - w0,
+                "c0": b.sph.config.speed_of_sound, "dx": dx, "n_elements": body.elements,
+                "thin_wall": bool(body.thin_wall), "E": body.E, "beta": body.damping}
 
 
 def compare(t, x, y, t_max: float) -> dict:
@@ -186,7 +190,7 @@ GATE_TARGET = ("the gate's free-end x and y displacement against Antoci et al. 2
 @case("elastic-gate", "2-D water column released through an elastic rubber gate (Antoci et al. 2007): the gate's "
       "free end against the measured x and y displacements", target=GATE_TARGET,
       quick="dx = 5 mm (one particle across the gate: the thin-wall treatment), 0.3 s, N = 8: the same criteria "
-            "over the frames up to 0.3 s")
+            "over the frames up to 0.3 s", scene=lambda quick: gate_scene(*GATE_RUNS[quick]))
 def elastic_gate(quick: bool) -> dict:
     """See :func:`run_elastic_gate` and :func:`compare`. Full: dx = 1.25 mm (4 particles
     across the gate), N = 16, 0.4 s; quick: dx = 5 mm (thin wall), N = 8, 0.3 s.
@@ -219,7 +223,7 @@ def elastic_gate(quick: bool) -> dict:
     The measured table (``python benchmarks/elastic_gate.py --dx 0.0025,0.00125``; the full
     variant is the 1.25 mm row): docs/validation/elastic-gate_history.md.
     """
-    dx, t_end, n_el = (0.005, 0.3, 8) if quick else (0.00125, 0.4, 16)
+    dx, t_end, n_el = GATE_RUNS[quick]
     r = run_elastic_gate(dx, t_end, n_elements=n_el)
     m = compare(r["t"], r["x"], r["y"], t_end)
     m.update({"dx_m": dx, "n_elements": n_el, "thin_wall": r["thin_wall"], "E_Pa": r["E"], "c0_m_s": r["c0"],
