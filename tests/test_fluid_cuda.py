@@ -30,7 +30,7 @@ the CPU pair loop sums a particle's neighbour terms in vector lanes (fastmath le
 reassociate), the GPU's in sequence, and the group loads are summed with atomics in any
 order. Why 1e-10: a pair sum holds up to ~100 terms, each up to ~100 times the result where
 pressure terms cancel (hydrostatic columns), so reordering moves it by ~100 x 100 x 1.1e-16
-~ 1e-12 of its scale per evaluation, and ten steps accumulate ten of those; a wrong or
+~ 1e-12 of its scale per evaluation, and the worker's five steps accumulate five of those; a wrong or
 missing term (viscosity, XSPH, diffusion, the fade) moves a field by 1e-6 of its scale or
 more. Measured (2026-11-25): at most 2.0e-13 over all fields and steps (body2d after one step).
 """
@@ -56,7 +56,7 @@ requires_numba_cuda = pytest.mark.skipif(not HAVE_NUMBA_CUDA,
 WORKER = Path(__file__).with_name("cuda_sim_worker.py")
 RTOL = 1e-10
 CASES = ("dam2d", "body2d", "col3d", "tilt2d", "tilt3d")
-STAGES = ("loop", "step1", "step10")
+STAGES = ("loop", "step1", "last")
 FIELDS = ("acc", "drho", "disp", "vel", "rho", "F", "M", "bforce")
 
 
@@ -85,9 +85,9 @@ def _close(d, key_a, key_b):
 
 def _case_mismatches(d: dict, case: str) -> list[str]:
     """What differs between the CPU and GPU paths in one case's results: at each stage
-    (the first pair loop, one step, ten steps) the particles' rows (the sort mirrors the
+    (the first pair loop, one step, the last of the worker's steps) the particles' rows (the sort mirrors the
     CPU's), every field within RTOL of its scale, the stable step (1e-12), the limiter and
-    the removals; after the first and tenth steps the group loads ``step`` returned (at
+    the removals; after the first and the last steps the group loads ``step`` returned (at
     the half step, or at the start with Verlet)."""
     bad = []
     for stage in STAGES:
@@ -104,7 +104,7 @@ def _case_mismatches(d: dict, case: str) -> list[str]:
             bad.append(f"{p}: limiter {d[f'{p}.cpu.limiter']} (CPU) against {d[f'{p}.gpu.limiter']} (GPU)")
         if not np.array_equal(d[f"{p}.cpu.removed"], d[f"{p}.gpu.removed"]):
             bad.append(f"{p}: the removals differ")
-    for stage in ("step1", "step10"):
+    for stage in ("step1", "last"):
         for q in ("F", "M"):
             ok, msg = _close(d, f"{case}.{stage}.cpu_step_{q}", f"{case}.{stage}.gpu_step_{q}")
             if not ok:
@@ -149,12 +149,12 @@ def test_gpu_matches_cpu_to_round_off(case, tmp_path):
     assert bool(d["simulator"]) != ON_GPU
     bad = _case_mismatches(d, case)
     assert not bad, f"{case}: " + "; ".join(bad)
-    assert np.abs(d[f"{case}.step10.cpu_step_F"]).max() > 0.0
-    assert np.abs(d[f"{case}.step10.gpu.disp"]).max() > 1e-5  # [m]
+    assert np.abs(d[f"{case}.last.cpu_step_F"]).max() > 0.0
+    assert np.abs(d[f"{case}.last.gpu.disp"]).max() > 1e-5  # [m]
     if case == "dam2d":
-        assert d["dam2d.step10.gpu.removed"][0] == 1 and d["dam2d.step10.gpu.removed"].sum() == 1
+        assert d["dam2d.last.gpu.removed"][0] == 1 and d["dam2d.last.gpu.removed"].sum() == 1
     if case == "body2d":
-        assert np.abs(d["body2d.step10.gpu.F"][1]).max() > 0.1  # [N] on the body (group 1)
+        assert np.abs(d["body2d.last.gpu.F"][1]).max() > 0.1  # [N] on the body (group 1)
     table = _bytes_per_particle(case)
     if case in ("dam2d", "col3d"):  # the table's own figures
         assert table == {"dam2d": 194, "col3d": 274}[case]
