@@ -133,3 +133,16 @@ def test_a_spectral_sea_reaches_the_potential_fluid_unchanged():
     for t in (5.0, 40.0, 333.3):
         xy = np.array([[0.0, 0.0], [12.0, -4.0], [-30.0, 7.5]])
         assert np.allclose(sea.elevation(xy, t), inc.elevation(xy[:, 0], xy[:, 1], t), atol=1e-12)
+
+
+def test_the_irregular_cases_scene_is_its_sea_and_cylinder():
+    """potential-irregular's scene file holds the case's sea (the constants its target and
+    jonswap_sea use: the same components) and the cylinder of floating_cylinder (half
+    submerged, its centre on the still water)."""
+    scene = P.irregular_scene(True, 3, 600.0)
+    w, body = scene.waves, scene.bodies[0]
+    assert (w.hs, w.tp, w.gamma, w.depth, w.seed, tuple(w.band)) == (P.HS, P.TP, P.GAMMA, P.DEPTH_SEA, 3, P.SEA_BAND)
+    assert w.sea(scene) == P.jonswap_sea(3, P.T_START + 600.0)
+    assert (body.radius, body.length, tuple(body.pos)) == (P.R_CYL, P.L_CYL, (0.0, 0.0, 0.0))
+    assert body.density * P.L_CYL == pytest.approx(P.RHO * P.DRAFT, rel=1e-12)
+    assert (scene.fluid.panel_size, scene.fluid.omega_max, scene.fluid.frequencies) == P.IRREGULAR_GRID[True]

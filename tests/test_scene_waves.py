@@ -153,6 +153,10 @@ def test_the_scene_gives_the_analytic_fluid_its_sea(tmp_path):
     assert isinstance(sea, fw.SpectralSea) and (sea.hs, sea.tp, sea.gamma, sea.seed, sea.ramp) == (1.5, 8.0, 3.3, 4,
                                                                                                     12.0)
     assert sea.repeat_period >= 3600.0
+    wp = 2 * np.pi / 8.0
+    banded = build(sea_scene(IrregularWaves(depth=30.0, hs=1.5, tp=8.0, band=(0.5, 1.65))), tmp_path / "band").fluid.sea
+    omega = banded.components.omega
+    assert banded.band == (0.5 * wp, 1.65 * wp) and omega.min() >= 0.5 * wp and omega.max() <= 1.65 * wp
 
 
 def test_gauges_read_the_irregular_sea(tmp_path):

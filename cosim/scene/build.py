@@ -209,8 +209,10 @@ def irregular_sea(scene):
         sea = fw.RecordedSea.from_file(w.file, w.depth, w.column, at=at, min_period=w.min_period,
                                        duration=scene.world.duration, **_frame(scene))
         return dataclasses.replace(sea, ramp=w.ramp * sea.peak_period)
+    wp = 2 * math.pi / w.tp
     return fw.SpectralSea(w.hs, w.tp, w.depth, spectrum=w.spectrum, gamma=3.3 if w.gamma is None else w.gamma,
                           seed=w.seed, n_components=w.components, duration=scene.world.duration,
+                          band=None if w.band is None else (w.band[0] * wp, w.band[1] * wp),
                           ramp=w.ramp * w.tp, **_frame(scene))
 
 

@@ -632,7 +632,8 @@ class IrregularWaves(seas.IncidentSea):
     ``depth`` [m] deep under the still level, travelling along ``direction`` [deg]:
     ``spectrum`` "jonswap" or "pierson-moskowitz" (``fluid.waves.SpectralSea``: ``hs``
     [m], ``tp`` [s], JONSWAP's ``gamma``; ``components`` waves of random phases from
-    ``seed``, enough that the sea does not repeat itself within the run), or "series"
+    ``seed``, enough that the sea does not repeat itself within the run, their
+    frequencies spread over ``band`` peak frequencies), or "series"
     (``fluid.waves.RecordedSea``: the elevation [m] measured at ``at`` in column ``column``
     of ``file``, time [s] first, evenly sampled, made into linear waves by FFT; the record
     must last the run). Faded in over ``ramp`` peak periods. Refused: Hs/Lp > 0.1 (Lp the
@@ -651,6 +652,8 @@ class IrregularWaves(seas.IncidentSea):
     seed: int = whole(0, "seed of the random phases (jonswap, pierson-moskowitz)", lo=0)
     components: int = whole(None, "number of wave components (unset: 200, or as many as the run's duration needs)",
                             lo=2)
+    band: tuple = vec(None, "the components' frequencies from band[0] to band[1] times the peak frequency (unset: "
+                      "0.5 to 4)", sizes=(2,))
     file: str = text(None, "series: the record, a table of time [s] and elevation [m]")
     column: int = whole(1, "series: the column of the elevation (0 is the time)", lo=1)
     at: tuple = vec(None, "series: where the record was measured, x (2-D) or (x, y) (3-D); unset: the origin", "m",
@@ -665,7 +668,7 @@ class IrregularWaves(seas.IncidentSea):
             if self.file is None:
                 raise SceneError("file", "is required with spectrum = \"series\": give the record's file (time [s], "
                                  "elevation [m])")
-            for name in ("hs", "tp", "gamma", "components"):
+            for name in ("hs", "tp", "gamma", "components", "band"):
                 if getattr(self, name) is not None:
                     raise SceneError(name, f"a series' sea is its record; leave {name} out (or give spectrum = "
                                      f"\"jonswap\")")
@@ -674,6 +677,9 @@ class IrregularWaves(seas.IncidentSea):
             if getattr(self, name) is None:
                 raise SceneError(name, f"is required with spectrum = {self.spectrum!r}: give "
                                  f"{'the significant wave height [m]' if name == 'hs' else 'the peak period [s]'}")
+        if self.band is not None and not 0 < self.band[0] < self.band[1]:
+            raise SceneError("band", f"{list(self.band)}: give the lowest and highest component frequency in peak "
+                             f"frequencies, 0 < lo < hi (e.g. [0.5, 4.0])")
         if self.spectrum == "pierson-moskowitz" and self.gamma is not None:
             raise SceneError("gamma", "the Pierson-Moskowitz spectrum has no peak enhancement; leave gamma out (or "
                              "give spectrum = \"jonswap\")")

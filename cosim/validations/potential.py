@@ -304,28 +304,45 @@ def gaussian_sigma(record: float, segment: float, width: float) -> float:
     return math.sqrt(2.0 / (nu * M / (1.0 + 2.0 * 4.0 / 9.0 + 2.0 / 36.0)))
 
 
-def irregular_heave(panel: float, grid, seed: int, record: float, cache=None) -> dict:
-    """The free-floating cylinder in the JONSWAP sea of ``seed`` (``fluid.potential`` through
-    the coupler): its heave [m] and the elevation [m] at its rest position, sampled every
-    :data:`DT_RECORD` over ``record`` [s] from :data:`T_START`, and the fluid."""
-    from fluid.potential.waves import from_incident
+#: (panel size [m], omega_max [rad/s], frequencies) of potential-irregular's quick (True) and
+#: full (False) variants; the quick one the scene file's
+IRREGULAR_GRID = {True: (0.8, 3.6, 24), False: (0.6, 4.0, 40)}
 
-    incident = jonswap_sea(seed, T_START + record)
-    coupler, bodies, fluid = floating_cylinder(panel, grid, sea=from_incident(incident), cache=cache,
-                                               depth=DEPTH_SEA)
-    z0 = float(bodies.kinematics().com[0, 2])
-    ts, zs = [], []
 
-    def sample(info):
-        if info.t >= T_START - 1.0:
-            ts.append(info.t)
-            zs.append(bodies.kinematics().com[0, 2] - z0)
+def irregular_scene(quick: bool, seed: int = 0, record: float = 1200.0):
+    """The scene ``scenes/potential-irregular.toml`` (the cylinder in the JONSWAP sea of
+    :func:`jonswap_sea`) with the variant's panels and frequencies (:data:`IRREGULAR_GRID`),
+    the sea's ``seed``, run :data:`T_START` + ``record`` [s]."""
+    from cosim.validations import case_scene
 
-    coupler.run(T_START + record, callback=sample)
-    t = T_START + DT_RECORD * np.arange(int(round(record / DT_RECORD)))
-    eta = incident.elevation(np.zeros_like(t), np.zeros_like(t), t)
-    return {"t": t, "heave": np.interp(t, ts, zs), "eta": eta, "steps": coupler.steps, "fluid": fluid,
-            "bodies": bodies}
+    n = case_scene.number
+    panel, omega_max, frequencies = IRREGULAR_GRID[quick]
+    return case_scene.load("potential-irregular", [
+        f"fluid.panel_size={n(panel)}", f"fluid.omega_max={n(omega_max)}", f"fluid.frequencies={frequencies}",
+        f"waves.seed={seed}", f"world.duration={n(T_START + record)}"])
+
+
+def irregular_heave(scene) -> dict:
+    """The free-floating cylinder of ``scene`` (:func:`irregular_scene`), built as ``cosim
+    run`` builds it: its heave [m] and the elevation [m] at its rest position, sampled every
+    :data:`DT_RECORD` from :data:`T_START` to the scene's end, and the fluid and bodies."""
+    from cosim.validations import case_scene
+
+    with case_scene.built(scene) as b:
+        coupler, bodies = b.coupler, b.bodies
+        z0 = float(bodies.kinematics().com[0, 2])
+        ts, zs = [], []
+
+        def sample(info):
+            if info.t >= T_START - 1.0:
+                ts.append(info.t)
+                zs.append(bodies.kinematics().com[0, 2] - z0)
+
+        coupler.run(scene.world.duration, callback=sample)
+        t = T_START + DT_RECORD * np.arange(int(round((scene.world.duration - T_START) / DT_RECORD)))
+        eta = scene.waves.sea(scene).elevation(np.zeros_like(t), np.zeros_like(t), t)
+        return {"t": t, "heave": np.interp(t, ts, zs), "eta": eta, "steps": coupler.steps, "fluid": b.fluid,
+                "bodies": bodies}
 
 
 def _spectra(omega, target, rao2, S_eta, S_heave, S_eta_run, width):
@@ -353,7 +370,7 @@ def _spectra(omega, target, rao2, S_eta, S_heave, S_eta_run, width):
             "own elevation spectrum (one seed, 1200 s; its heave against RAO^2 S reported), in bands 0.2 fp wide, "
             "Welch segments of 300 s, panels 0.8 m across and 24 frequencies to 3.6 rad/s; instead of 32 seeds x "
             "3600 s (elevation) and 4 (heave), bands 0.1 fp, segments of 600 s, 0.6 m panels and 40 frequencies to "
-            "4 rad/s")
+            "4 rad/s", scene=lambda quick: irregular_scene(quick, 0, 1200.0 if quick else 3600.0))
 def potential_irregular(quick: bool) -> dict:
     """Spectra by Welch's method, averaged over seeds; each band's mean against the target's
     mean over the same frequencies (:func:`band_errors`). The elevation (the sea alone, no
@@ -370,11 +387,8 @@ def potential_irregular(quick: bool) -> dict:
     and 2.1 % (heave), where a Gaussian sea would give 2.3 % and 6.6 %; 471 100 coupling
     steps. Quick: 2.3 %, 13 % (one seed, reported), 0.5 %. History:
     ``docs/validation/potential-irregular_history.md``."""
-    from fluid.potential.participant import frequency_grid
     from fluid.waves import jonswap
 
-    panel, grid = ((0.8, frequency_grid(3.6, 24, DEPTH_SEA, G)) if quick else
-                   (0.6, frequency_grid(4.0, 40, DEPTH_SEA, G)))
     record, segment, width = (1200.0, 300.0, 0.2) if quick else (3600.0, 600.0, 0.1)
     n_eta, n_heave = (16, 1) if quick else (32, 4)
     t = T_START + DT_RECORD * np.arange(int(round(record / DT_RECORD)))
@@ -384,7 +398,7 @@ def potential_irregular(quick: bool) -> dict:
         S_eta.append(S)
     S_heave, S_eta_run, steps = [], [], 0
     for seed in range(n_heave):
-        r = irregular_heave(panel, grid, seed, record)
+        r = irregular_heave(irregular_scene(quick, seed, record))
         steps += r["steps"]
         S_heave.append(welch_spectrum(r["heave"], segment)[1])
         S_eta_run.append(welch_spectrum(r["eta"], segment)[1])
