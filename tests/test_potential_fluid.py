@@ -39,14 +39,17 @@ def test_a_body_at_its_floating_pose_stays_at_rest():
 
 
 def test_heave_decay_period_is_the_natural_period():
-    d = P.heave_decay(1.0, GRID, duration=12.0)
+    d = P.heave_decay(P.rao_scene(True))
     assert np.mean(d["periods"][:2]) == pytest.approx(d["natural_period"], rel=0.015)
     assert 0.03 < d["damping_ratio"] < 0.1  # a squat cylinder radiates: the decay is visible
 
 
 @pytest.mark.long
 def test_regular_wave_response_is_the_frequency_domain_rao():
-    r = P.time_domain_rao(1.0, GRID, 0.8, periods=16, fit=6)
+    scene = P.rao_scene(True, 0.8, periods=16)
+    assert scene.waves.depth == math.inf and scene.world.duration == pytest.approx(16 * 2 * math.pi / 0.8)
+    r = P.time_domain_rao(scene, fit=6)
+    np.testing.assert_allclose(r["fluid"].coefficients[0].omega, GRID, rtol=1e-14)  # the case's grid before
     for dof in ("surge", "heave"):
         assert abs(r["td"][dof] - r["fd"][dof]) < 0.02 * abs(r["fd"][dof]), dof
     assert abs(r["fd"]["heave"]) == pytest.approx(1.0, abs=0.05)  # a long wave: the body rides it

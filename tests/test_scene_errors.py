@@ -654,6 +654,10 @@ CASES = [
     case("a gamma for Pierson-Moskowitz", "analytic",
          ("waves", dict(JONSWAP, spectrum="pierson-moskowitz", gamma=2.0)), "waves.gamma",
          "the Pierson-Moskowitz spectrum has no peak enhancement; leave gamma out", "IrregularWaves.gamma"),
+    case("deep-water waves on the analytic fluid", "analytic",
+         ("waves", {"kind": "linear", "height": 0.1, "period": 5.0, "depth": math.inf}), "waves.depth",
+         "inf (deep water) is the potential fluid's; the 'analytic' fluid's wave kinematics decay to a seabed: give "
+         "the depth [m]", "Scene.waves.depth"),
     case("a spectrum's band upside down", "analytic", ("waves", dict(JONSWAP, band=[1.5, 0.7])), "waves.band",
          "[1.5, 0.7]: give the lowest and highest component frequency in peak frequencies, 0 < lo < hi",
          "IrregularWaves.band"),

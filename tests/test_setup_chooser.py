@@ -86,7 +86,8 @@ OWN = {"wind-turbine-sph": "h = sqrt(2) dx, the kernel width that holds the base
                            "wavelengths long; c0 = 5 sqrt(g d), half the steps, measured to hold surge, heave and "
                            "tensions at dx = 1.0 m; its quick variant costs about 20 CPU-minutes"}
 #: the cases with a scene file whose quick variant runs another fluid
-OTHER_FLUID = {"wind-turbine-moorings", "potential-hemisphere", "moored-body", "potential-irregular"}
+OTHER_FLUID = {"wind-turbine-moorings", "potential-hemisphere", "moored-body", "potential-irregular",
+               "potential-cylinder-rao"}
 
 
 def _run_auto(name: str):

@@ -300,8 +300,15 @@ def _check_sea(s, dim):
     if isinstance(w, LinearWaves):
         from fluid.analytic import LinearWave
 
+        depth = w.depth
+        if math.isinf(depth):
+            if not isinstance(s.fluid, Potential):
+                raise SceneError("waves.depth", f"inf (deep water) is the potential fluid's; the {s.fluid.model!r} "
+                                 f"fluid's wave kinematics decay to a seabed: give the depth [m]")
+            # the wave's limits in deep water: at ten deep-water wavelengths tanh(k d) is 1 to round-off
+            depth = 10.0 * s.world.gravity * w.period ** 2 / (2 * math.pi)
         try:
-            LinearWave(w.height, w.period, w.depth, w.direction, w.ramp * w.period, s.world.gravity)
+            LinearWave(w.height, w.period, depth, w.direction, w.ramp * w.period, s.world.gravity)
         except Exception as e:  # the wave's own limits (breaking)
             raise SceneError("waves.height", str(e).removeprefix("linear wave: ")) from None
         return

@@ -73,11 +73,14 @@ class Check:
 
 class Num(Check):
     """A finite number in ``lo`` .. ``hi``; ``why``: the reason for ``hi`` when it is a
-    physical limit (:mod:`cosim.scene.limits`), said when a value passes it."""
+    physical limit (:mod:`cosim.scene.limits`), said when a value passes it; ``infinite``:
+    +inf is taken too (a depth's deep water)."""
 
-    def __init__(self, doc, unit="", lo=None, hi=None, lo_open=False, hi_open=False, optional=False, why=None):
+    def __init__(self, doc, unit="", lo=None, hi=None, lo_open=False, hi_open=False, optional=False, why=None,
+                 infinite=False):
         super().__init__(doc, unit, optional)
         self.lo, self.hi, self.lo_open, self.hi_open, self.why = lo, hi, lo_open, hi_open, why
+        self.infinite = infinite
 
     def expected(self) -> str:
         rng = []
@@ -88,6 +91,8 @@ class Num(Check):
         return f"a number{self._unit()}{' ' + ' and '.join(rng) if rng else ''} ({self.doc})"
 
     def check(self, v, path):
+        if self.infinite and _is_num(v) and v == math.inf:
+            return math.inf
         if not _is_finite(v):
             raise SceneError(path, f"{_show(v)} is not a finite number; give {self.expected()}")
         v = float(v)

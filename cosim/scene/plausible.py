@@ -58,7 +58,7 @@ def check_scales(spec, prefix: str = "") -> None:
         values = (list(v.values()) if isinstance(check, Table) else [v] if isinstance(check, Num) else list(v))
         flat = [x for item in values for x in (item if isinstance(item, tuple) else (item,))]
         for x in flat:
-            if abs(x) > MAX_LENGTH:
+            if abs(x) > MAX_LENGTH and not (isinstance(check, Num) and check.infinite and x == math.inf):
                 raise SceneError(key, f"{x:g} m is beyond {MAX_LENGTH:g} m, the Earth's radius: a scene lies on the "
                                  f"Earth; check the units (m)")
         sizes = (flat if isinstance(check, Vec) and name == "size" else

@@ -581,7 +581,8 @@ class LinearWaves(seas.IncidentSea):
     height: float = required(num(None, "wave height H, crest to trough", "m", lo=0, lo_open=True, optional=False))
     period: float = required(num(None, "wave period T", "s", lo=0, lo_open=True, optional=False))
     depth: float = required(num(None, "still-water depth over the seabed (for the dispersion relation and the decay "
-                                "of the kinematics)", "m", lo=0, lo_open=True, optional=False))
+                                "of the kinematics); inf: deep water (the potential fluid)", "m", lo=0, lo_open=True,
+                                optional=False, infinite=True))
     direction: float = num(0.0, "heading of propagation, from +x towards +y (2-D: 0 or 180)", "deg")
     ramp: float = num(2.0, "periods over which the waves fade in", lo=0)
 

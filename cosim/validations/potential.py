@@ -129,18 +129,23 @@ def floating_cylinder(panel: float, omega, sea=None, cache=None, depth: float = 
     return coupler, bodies, fluid
 
 
-def heave_decay(panel: float, omega, duration: float = 12.0, z0: float = 0.1, cache=None) -> dict:
-    """Release the cylinder from ``z0`` [m] above its equilibrium: the heave periods between
-    upward zero crossings [s] and the natural period ``2π sqrt((m + A33(ω_n)) / C33)``."""
+def heave_decay(scene, z0: float = 0.1) -> dict:
+    """The cylinder of ``scene`` (:func:`rao_scene` without waves) built as ``cosim run``
+    builds it, at its equilibrium, then released from ``z0`` [m] above it: the heave periods
+    between upward zero crossings [s] over the scene's duration and the natural period
+    ``2π sqrt((m + A33(ω_n)) / C33)``."""
     import mujoco
 
-    coupler, bodies, fluid = floating_cylinder(panel, omega, cache=cache)
-    z_eq = float(bodies.data.qpos[2])
-    bodies.data.qpos[2] += z0
-    mujoco.mj_forward(bodies.model, bodies.data)
-    fluid.set_body_kinematics(bodies.kinematics())
-    ts, zs = [0.0], [z0]
-    coupler.run(duration, callback=lambda info: (ts.append(info.t), zs.append(bodies.data.qpos[2] - z_eq)))
+    from cosim.validations import case_scene
+
+    with case_scene.built(scene) as b:
+        coupler, bodies, fluid = b.coupler, b.bodies, b.fluid
+        z_eq = float(bodies.data.qpos[2])
+        bodies.data.qpos[2] += z0
+        mujoco.mj_forward(bodies.model, bodies.data)
+        fluid.set_body_kinematics(bodies.kinematics())
+        ts, zs = [0.0], [z0]
+        coupler.run(scene.world.duration, callback=lambda info: (ts.append(info.t), zs.append(bodies.data.qpos[2] - z_eq)))
     t, z = np.array(ts), np.array(zs)
     up = np.flatnonzero((z[:-1] < 0) & (z[1:] >= 0))
     crossings = t[up] - z[up] * (t[up + 1] - t[up]) / (z[up + 1] - z[up])
@@ -170,25 +175,27 @@ def frequency_domain_rao(c, mass: float, inertia, omega: float, heading: float =
     return np.linalg.solve(Z, X)
 
 
-def time_domain_rao(panel: float, omega_grid, omega: float, amplitude: float = 0.05, periods: int = 30,
-                    fit: int = 10, cache=None) -> dict:
-    """The cylinder in a regular wave at ``omega`` [rad/s], faded in over 3 periods, run for
-    ``periods``; surge and heave per unit amplitude (complex, e^{−iωt}) fitted over the last
-    ``fit`` periods, beside the frequency-domain RAO of the same coefficients."""
-    from fluid.potential.waves import Sea, WaveComponent
+def time_domain_rao(scene, fit: int = 10) -> dict:
+    """The cylinder of ``scene`` (:func:`rao_scene`) in its regular wave, built as ``cosim
+    run`` builds it; surge and heave per unit amplitude (complex, e^{−iωt}) fitted over the
+    last ``fit`` periods of the run, beside the frequency-domain RAO of the same
+    coefficients."""
+    from cosim.validations import case_scene
 
-    T = 2 * math.pi / omega
-    sea = Sea([WaveComponent(omega, amplitude)], g=G, ramp=3 * T)
-    coupler, bodies, fluid = floating_cylinder(panel, omega_grid, sea=sea, cache=cache)
-    x0 = bodies.kinematics().com[0].copy()
-    ts, xs = [], []
+    w = scene.waves
+    T, amplitude = w.period, 0.5 * w.height
+    omega = 2 * math.pi / T
+    with case_scene.built(scene) as b:
+        coupler, bodies, fluid = b.coupler, b.bodies, b.fluid
+        x0 = bodies.kinematics().com[0].copy()
+        ts, xs = [], []
 
-    def record(info):
-        if info.t >= (periods - fit) * T:
-            ts.append(info.t)
-            xs.append(bodies.kinematics().com[0] - x0)
+        def record(info):
+            if info.t >= scene.world.duration - fit * T:
+                ts.append(info.t)
+                xs.append(bodies.kinematics().com[0] - x0)
 
-    coupler.run(periods * T, callback=record)
+        coupler.run(scene.world.duration, callback=record)
     t, x = np.array(ts), np.array(xs)
     basis = np.column_stack([np.cos(omega * t), np.sin(omega * t), np.ones_like(t), t - t.mean()])
     td = {}
@@ -201,6 +208,34 @@ def time_domain_rao(panel: float, omega_grid, omega: float, amplitude: float = 0
     return {"td": td, "fd": {"surge": fd[0], "heave": fd[1]}, "steps": coupler.steps, "fluid": fluid}
 
 
+#: potential-cylinder-rao's variants (quick: True): panel size [m], omega_max [rad/s] and
+#: frequencies of the BEM grid, the wave frequencies [rad/s] (inside the trusted band,
+#: omega_max / 2), periods run and fitted; the scene file is the quick variant's first wave
+RAO_RUNS = {True: (1.0, 3.0, 20, (0.8, 1.4), 20, 8), False: (0.6, 4.0, 40, (0.6, 1.0, 1.4, 1.8), 30, 10)}
+#: the heave decay's run [s]
+DECAY_S = 12.0
+
+
+def rao_scene(quick: bool, omega: float | None = None, periods: int | None = None):
+    """The scene ``scenes/potential-cylinder-rao.toml`` (the cylinder in a regular wave in
+    deep water, amplitude 0.05 m, faded in over 3 periods) with the variant's panels and
+    frequencies (:data:`RAO_RUNS`), the wave at ``omega`` [rad/s] run ``periods`` periods
+    (default: the variant's); ``omega=None``: still water, :data:`DECAY_S` long (the decay)."""
+    import dataclasses
+
+    from cosim.validations import case_scene
+
+    n = case_scene.number
+    panel, omega_max, frequencies, _, runs, _ = RAO_RUNS[quick]
+    values = [f"fluid.panel_size={n(panel)}", f"fluid.omega_max={n(omega_max)}", f"fluid.frequencies={frequencies}"]
+    if omega is None:
+        scene = case_scene.load("potential-cylinder-rao", values + [f"world.duration={n(DECAY_S)}"])
+        return dataclasses.replace(scene, waves=None)
+    T = 2 * math.pi / omega
+    return case_scene.load("potential-cylinder-rao", values + [
+        f"waves.period={n(T)}", f"world.duration={n((periods or runs) * T)}"])
+
+
 @case("potential-cylinder-rao", "truncated vertical cylinder (R 3 m, draft 1.5 m) run in time by the Cummins "
       "equation: heave and surge RAO against the frequency-domain RAO of the same coefficients; free heave "
       "decay period against 2 pi sqrt((m + A33) / C33)",
@@ -208,15 +243,13 @@ def time_domain_rao(panel: float, omega_grid, omega: float, amplitude: float = 0
              "decay period within 1 % of 2 pi sqrt((m + A33(w_n)) / C33)",
       quick="RAO within 2 % at 2 wave frequencies (0.8 and 1.4 rad/s) and the decay period within 1.5 %, with panels "
             "1 m across, 20 frequencies to 3 rad/s, 20 periods per run (fit over the last 8) instead of 4 wave "
-            "frequencies with 0.6 m panels, 40 frequencies to 4 rad/s")
+            "frequencies with 0.6 m panels, 40 frequencies to 4 rad/s",
+      scene=lambda quick: rao_scene(quick, RAO_RUNS[quick][3][0]))
 def potential_cylinder_rao(quick: bool) -> dict:
-    panel = 1.0 if quick else 0.6
-    grid = np.linspace(0.15, 3.0, 20) if quick else np.linspace(0.1, 4.0, 40)
-    waves = [0.8, 1.4] if quick else [0.6, 1.0, 1.4, 1.8]  # inside the trusted band, omega_max / 2
-    periods, fit = (20, 8) if quick else (30, 10)
+    waves, fit = RAO_RUNS[quick][3], RAO_RUNS[quick][5]
     errs, rows, steps = {}, {}, 0
     for w in waves:
-        r = time_domain_rao(panel, grid, w, periods=periods, fit=fit)
+        r = time_domain_rao(rao_scene(quick, w), fit=fit)
         steps += r["steps"]
         for dof in ("surge", "heave"):
             e = abs(r["td"][dof] - r["fd"][dof]) / abs(r["fd"][dof])
@@ -224,7 +257,7 @@ def potential_cylinder_rao(quick: bool) -> dict:
             rows[f"{dof}_{w:g}"] = {"td_abs": round(abs(r["td"][dof]), 5), "fd_abs": round(abs(r["fd"][dof]), 5),
                                     "td_phase_deg": round(math.degrees(np.angle(r["td"][dof])), 2),
                                     "fd_phase_deg": round(math.degrees(np.angle(r["fd"][dof])), 2)}
-    d = heave_decay(panel, grid, duration=12.0)
+    d = heave_decay(rao_scene(quick))
     steps += d["steps"]
     T_meas = float(np.mean(d["periods"][:2]))
     fl = d["fluid"]
