@@ -155,9 +155,9 @@ def box_mdbc(ps, group: int, lo, hi, config: dict):
 
 def run_case(tag: str, ps, config: dict, steps: int = 5, body=None, motion=None, hook=None):
     """Initialise the case on both paths (the first pair loop), step once, then to
-    ``steps`` (recorded as the stage "last"; 5 covers a density re-initialisation every 3
-    or 4 steps and a Verlet reset every 4, the simulator's cost halved from 10); with ``body = (group, velocity)`` the body's particles are placed before
-    every step (positions at the step's time, as the coupler places them); ``motion =
+    ``steps`` (recorded as the stage "last"; 5 pass a density re-initialisation every 3 or
+    4 steps and a Verlet reset every 4); with ``body = (group, velocity)`` the body's
+    particles are placed before every step (positions at the step's time, as the coupler places them); ``motion =
     (group, motion)`` a prescribed wall motion; ``hook()`` a boundary correction made for
     each path, run after the fluid's own."""
     cpu = Fluid(FluidConfig(**config), ps)

@@ -1313,7 +1313,8 @@ BUILD_CASES = [
     case("potential flow: an irregular sea beyond the frequencies' trusted band", "potential", ("waves", JONSWAP),
          "fluid.omega_max", "the sea's components outside the coefficients' trusted band 0.15-1.5 rad/s (the lowest "
          "frequency to 0.5 x the highest) carry 5.5% of its variance", None),
-    case("a tank's inner wall thinner than its walls", "tank2d", ("domain.walls", [{"lo": [0.5, 0.0], "hi": [0.54, 0.6]}]),
+    case("a tank's inner wall thinner than its walls", "tank2d",
+         ("domain.walls", [{"lo": [0.5, 0.0], "hi": [0.54, 0.6]}]),
          "domain.walls[0]", "is 0.04 m thick, fewer than the walls' 4 layers of fluid.dx = 0.02 m (the kernel's "
          "support 2h behind a wetted face)", None),
     case("a floating body that sinks", "flume", ("bodies[0].density", 1500.0), "bodies[0].place",

@@ -137,9 +137,9 @@ def _refdata_reads():
             problems.append(f"{where}: wrapper {fname} is never called with a literal")
     for path in _files(".toml"):  # a scene file names a record by its path relative to itself
         for m in re.finditer(r'"([^"]*)"', path.read_text()):
-            target = (path.parent / m.group(1)).resolve()
-            if target.is_relative_to(refdata.ROOT.resolve()) and len(target.relative_to(refdata.ROOT.resolve()).parts) > 1:
-                parts = target.relative_to(refdata.ROOT.resolve()).parts
+            target, root = (path.parent / m.group(1)).resolve(), refdata.ROOT.resolve()
+            if target.is_relative_to(root) and len(target.relative_to(root).parts) > 1:
+                parts = target.relative_to(root).parts
                 files.add((parts[0], "/".join(parts[1:])))
     return files, problems
 

@@ -189,7 +189,8 @@ def _check_base_motion(s, dim: int) -> None:
         _, rate, acc = sig.sample(inner)
         peak = float(np.hypot(acc, rate ** 2).max()) * arm  # tangential and centripetal at the farthest corner
         _refuse_peak("base_motion.scale", peak, f"the recorded roll (times scale = {b.scale:g}, at the tank's "
-                     f"corner {arm:.4g} m from the axis)", lambda: f"check that the table's angles are in degrees, and give a scale up to "
+                     f"corner {arm:.4g} m from the axis)",
+                     lambda: f"check that the table's angles are in degrees, and give a scale up to "
                              f"{abs(b.scale) * MAX_BASE_ACCELERATION / peak:.4g}")
     elif isinstance(b, TableMotion):
         import numpy as np

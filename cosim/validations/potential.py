@@ -145,7 +145,8 @@ def heave_decay(scene, z0: float = 0.1) -> dict:
         mujoco.mj_forward(bodies.model, bodies.data)
         fluid.set_body_kinematics(bodies.kinematics())
         ts, zs = [0.0], [z0]
-        coupler.run(scene.world.duration, callback=lambda info: (ts.append(info.t), zs.append(bodies.data.qpos[2] - z_eq)))
+        coupler.run(scene.world.duration,
+                    callback=lambda info: (ts.append(info.t), zs.append(bodies.data.qpos[2] - z_eq)))
     t, z = np.array(ts), np.array(zs)
     up = np.flatnonzero((z[:-1] < 0) & (z[1:] >= 0))
     crossings = t[up] - z[up] * (t[up + 1] - t[up]) / (z[up + 1] - z[up])
