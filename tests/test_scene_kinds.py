@@ -3,6 +3,7 @@ a coarse spacing, and what it builds is what it says: the water volume of each d
 the motion of a shaken tank's walls, a floating body's draft."""
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -130,6 +131,21 @@ def test_a_recorded_roll_turns_the_tank_as_the_harmonic_roll_it_samples(scale, t
         assert np.array_equal(a[2], [0.3, 0.0])  # the axis point stays
     # at t = 0.13 s the angle (1.46 deg) lifts the left corner for scale 1 (about +y: the right one down)
     assert np.sign(moved["table"][0][0][1]) == scale
+
+
+def test_a_gzipped_table_is_the_table(tmp_path):
+    """A table file ending in .gz is read gunzipped, by the checks and the build alike."""
+    import gzip
+
+    t = np.arange(0.0, 1.0 + 1e-9, 0.005)
+    plain = _table(tmp_path / "r.txt", t, 2.0 * np.sin(2 * np.pi * t))
+    with open(plain, "rb") as src, gzip.open(tmp_path / "r.txt.gz", "wb") as dst:
+        dst.write(src.read())
+    tank, pts = Tank(length=0.6, height=0.4, depth=0.2), np.array([[0.0, 0.4]])
+    moved = [np.asarray(build(Scene(world=W2, fluid=SPH(dx=0.05), domain=tank,
+                                    base_motion=RollTable(file=f, point=(0.3, 0.0))), tmp_path / Path(f).name)
+                        .base_motion(0.3, pts)[0]) for f in (plain, str(tmp_path / "r.txt.gz"))]
+    assert np.array_equal(moved[0], moved[1]) and moved[0][0, 1] != 0.4
 
 
 @pytest.mark.parametrize("kind", ["piston", "flap", "record"])

@@ -998,7 +998,22 @@ def _rows_of_numbers(path, key, strict: bool) -> list[list[float]]:
     """The numeric rows of a table file. ``strict``: every line that is not a comment
     (``#``) must be whitespace-separated numbers, as ``numpy.loadtxt`` reads them (base
     motion); otherwise (a paddle record, ``MotionRecord.from_file``) commas also separate
-    and text lines before the first row of numbers are a header."""
+    and text lines before the first row of numbers are a header. A strict table that numpy
+    reads whole comes back as its (rows, columns) array (a long record in a fraction of a
+    second); one it refuses is parsed line by line, to name the line."""
+    if strict:
+        import warnings
+
+        import numpy as np
+
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")  # an empty table: its own message below
+                table = np.loadtxt(path, comments="#", ndmin=2)
+            if table.size:
+                return table
+        except (OSError, ValueError):
+            pass
     try:  # a .gz file gunzipped, as numpy.loadtxt reads it
         opened = gzip.open(path, "rt", encoding="utf-8") if str(path).endswith(".gz") else open(path, encoding="utf-8")
         with opened as fh:
@@ -1024,31 +1039,39 @@ def _rows_of_numbers(path, key, strict: bool) -> list[list[float]]:
 
 
 def _samples(rows, path, column, file_key, column_key, strict: bool):
-    """(times, values) of ``column`` of a table's rows, checked: enough columns and rows
-    (``strict``: every row as wide as the first), finite, times increasing."""
-    if not rows:
+    """(times, values) of ``column`` of a table's rows (lists, or the array of a strict
+    table), checked: enough columns and rows (``strict``: every row as wide as the first),
+    finite, times increasing."""
+    import numpy as np
+
+    if len(rows) == 0:
         raise SceneError(file_key, f"{path!r} holds no row of numbers; give rows of time [s] and values")
-    width = min(len(r) for r in rows)
-    if width != max(len(r) for r in rows) and (strict or width <= column):
-        short = next(k for k, r in enumerate(rows) if len(r) != len(rows[0]))
-        raise SceneError(file_key, f"row {short + 1} of {path!r} has {len(rows[short])} value(s), row 1 has "
-                         f"{len(rows[0])}; give every row the same columns")
+    widths = (np.full(len(rows), rows.shape[1]) if isinstance(rows, np.ndarray) else np.array([len(r) for r in rows]))
+    width = int(widths.min())
+    if width != widths.max() and (strict or width <= column):
+        short = int(np.flatnonzero(widths != widths[0])[0])
+        raise SceneError(file_key, f"row {short + 1} of {path!r} has {widths[short]} value(s), row 1 has "
+                         f"{widths[0]}; give every row the same columns")
     if width <= column:
         last = (f"its value columns are 1 .. {width - 1}; give one of them" if width > 1
                 else "it has the time column only; add a column of values")
         raise SceneError(column_key, f"{column} is beyond the last column of {path!r} ({width} column(s), 0 is the "
                          f"time): {last}")
-    t = [r[0] for r in rows]
-    v = [r[column] for r in rows]
+    if isinstance(rows, np.ndarray):
+        t, v = rows[:, 0], rows[:, column]
+    else:
+        t, v = np.array([r[0] for r in rows], float), np.array([r[column] for r in rows], float)
     if len(rows) < 4:
         raise SceneError(file_key, f"{path!r} has {len(rows)} row(s); a record needs at least 4 samples (a cubic "
                          f"spline runs through them): give more rows")
-    bad = next((k for k in range(len(t)) if not (math.isfinite(t[k]) and math.isfinite(v[k]))), None)
-    if bad is not None:
-        raise SceneError(file_key, f"row {bad + 1} of {path!r} holds a value that is not finite ({t[bad]!r}, "
-                         f"{v[bad]!r}); give finite numbers")
-    k = next((k for k in range(1, len(t)) if not t[k] > t[k - 1]), None)
-    if k is not None:
+    bad = np.flatnonzero(~(np.isfinite(t) & np.isfinite(v)))
+    if bad.size:
+        k = int(bad[0])
+        raise SceneError(file_key, f"row {k + 1} of {path!r} holds a value that is not finite ({float(t[k])!r}, "
+                         f"{float(v[k])!r}); give finite numbers")
+    back = np.flatnonzero(~(np.diff(t) > 0))
+    if back.size:
+        k = int(back[0]) + 1
         raise SceneError(file_key, f"the times of {path!r} must increase: row {k + 1} (t = {t[k]:g} s) follows "
                          f"t = {t[k - 1]:g} s; sort the rows by time and drop repeated times")
     return t, v
