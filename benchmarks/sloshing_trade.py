@@ -36,7 +36,7 @@ RUNS = {
     "westergaard": [dict(dx=0.1, **_ADAMI), dict(dx=0.05, **_ADAMI), dict(dx=0.05, c0=700.0, **_ADAMI),
                     dict(dx=0.05, c0=350.0, **_ADAMI), dict(dx=0.025, **_ADAMI), dict(dx=0.05)],
     "sloshing-frequency": [dict(dx=0.05, **SLOSHING_2D), dict(dx=0.025, **SLOSHING_2D), dict(dx=0.0125, **SLOSHING_2D),
-                           dict(dx=0.025)],
+                           dict(dx=0.025, setup="defaults")],
     "sloshing-spheric10": [dict(dx=0.0186, t_end=2.7), dict(dx=0.0093, t_end=2.7), dict(dx=0.0062, t_end=2.7),
                            dict(dx=0.00465, t_end=2.7), dict(dx=0.0062, t_end=2.7, sensor="face")],
 }

@@ -437,6 +437,30 @@ def sloshing_omega(L: float, h: float, mode: int = 1, g: float = G) -> float:
     return math.sqrt(g * k * math.tanh(k * h))
 
 
+#: (dx [m], forced periods, free periods, c0_factor) of the full (False) and quick (True)
+#: variants; the full one the scene file's
+FREQUENCY_RUNS = {False: (0.025, 3, 8, 20.0), True: (0.05, 2, 4, 10.0)}
+
+
+def frequency_scene(dx: float, L: float = 1.0, h: float = 0.5, amplitude: float = 0.002, cycles_forced: int = 3,
+                    cycles_free: int = 8, samples_per_period: int = 40, c0_factor: float = 20.0, **overrides):
+    """The scene ``scenes/sloshing-frequency.toml`` at spacing ``dx`` [m]: the tank ``L`` x
+    1.5 h [m] with water ``h`` [m] shaken by ``amplitude`` [m] at linear theory's first
+    period T1 for ``cycles_forced`` periods (faded in and out over one), then free for
+    ``cycles_free``, sampled ``samples_per_period`` times a period; c0 = ``c0_factor``
+    sqrt(g h); ``overrides`` set the fluid's fields (e.g. ``setup="defaults"``)."""
+    from cosim.validations import case_scene
+
+    n = case_scene.number
+    T1 = 2 * math.pi / sloshing_omega(L, h)
+    return case_scene.load("sloshing-frequency", [
+        f"fluid.dx={n(dx)}", f"fluid.c0_factor={n(c0_factor)}", f"domain.length={n(L)}", f"domain.depth={n(h)}",
+        f"domain.height={n(1.5 * h)}", f"base_motion.amplitude={n(amplitude)}", f"base_motion.period={n(T1)}",
+        f"base_motion.ramp={n(T1)}", f"base_motion.stop={n(cycles_forced * T1)}",
+        f"world.duration={n((cycles_forced + cycles_free) * T1)}", f"world.sample_every={n(T1 / samples_per_period)}",
+        *case_scene.settings("fluid", overrides)])
+
+
 def run_sloshing_frequency(dx: float, L: float = 1.0, h: float = 0.5, amplitude: float = 0.002,
                            cycles_forced: int = 3, cycles_free: int = 8, sensor_depth: float = 0.1,
                            samples_per_period: int = 40, c0_factor: float = 20.0, **overrides) -> dict:
@@ -444,38 +468,39 @@ def run_sloshing_frequency(dx: float, L: float = 1.0, h: float = 0.5, amplitude:
     ``amplitude`` [m] sin(w1 t) at the linear first-mode frequency w1 for
     ``cycles_forced`` periods (half-cosine ramps of one period in and out, so the tank
     stops at rest with no jump in velocity), then left still for ``cycles_free`` periods
-    (free decay). The first natural frequency is the peak of the FFT (:func:`spectral_peak`)
+    (free decay): the scene :func:`frequency_scene` built as ``cosim run`` builds it. The
+    first natural frequency is the peak of the FFT (:func:`spectral_peak`)
     of the wall pressure (Sunara et al. 2021, Eq. 15, :meth:`Fluid.wall_pressure`) on the left wall at
     ``sensor_depth`` [m] below the surface, over the free decay only, searched between
     0.5 and 1.5 w1 (the next mode a horizontal motion excites is at 2.3 w1 for h/L = 0.5);
     compared with linear theory ``w1^2 = g (pi/L) tanh(pi h/L)`` (:func:`sloshing_omega`).
-    c0 = ``c0_factor`` sqrt(g h) [-] (the other settings are the defaults).
+    c0 = ``c0_factor`` sqrt(g h) [-]; the set-up the scene's (``overrides`` set its fields).
     """
-    ps = _moving_tank(2, dx, L, h, 1.5 * h)
-    cfg = FluidConfig(dim=2, dx=dx, u_max=math.sqrt(G * h), c0_factor=c0_factor, **overrides)
-    set_hydrostatic(ps, h, RHO0, cfg.speed_of_sound, cfg.gamma, cfg.g)
-    f = Fluid(cfg, ps)
-    w1 = sloshing_omega(L, h, g=cfg.g)
+    from cosim.validations import case_scene
+
+    scene = frequency_scene(dx, L, h, amplitude, cycles_forced, cycles_free, samples_per_period, c0_factor,
+                            **overrides)
+    w1 = sloshing_omega(L, h)
     T1 = 2 * math.pi / w1
-    t_stop = cycles_forced * T1
-    f.prescribe_motion(0, Translation((1.0, 0.0), Harmonic(amplitude, T1)).ramped(T1, 0.0, t_stop))
-    f.initialize(0.0)
-    x, z = ps.pos[:, 0], ps.pos[:, 1]
-    wall = (ps.kind == Kind.MOVING_WALL) & np.isclose(x, -0.5 * dx) & (z > 0) & (z < h)
-    cand = np.flatnonzero(wall)
-    sensor_id = ps.ids[cand[np.argmin(np.abs(z[cand] - (h - sensor_depth)))]]
-    sensor_z = float(z[ps.ids == sensor_id][0])
-    dt_s = T1 / samples_per_period
-    n_forced = cycles_forced * samples_per_period
-    n_total = n_forced + cycles_free * samples_per_period
-    times, p = [], []
-    t = 0.0
-    for i in range(n_total):
-        f.advance(t, dt_s)
-        t = (i + 1) * dt_s
-        if i + 1 > n_forced:
-            times.append(t)
-            p.append(f.wall_pressure()[np.flatnonzero(f.ps.ids == sensor_id)[0]])
+    with case_scene.built(scene) as b:
+        f = b.sph
+        cfg, ps = f.config, f.ps
+        x, z = ps.pos[:, 0], ps.pos[:, 1]
+        wall = (ps.kind == Kind.MOVING_WALL) & np.isclose(x, -0.5 * dx) & (z > 0) & (z < h)
+        cand = np.flatnonzero(wall)
+        sensor_id = ps.ids[cand[np.argmin(np.abs(z[cand] - (h - sensor_depth)))]]
+        sensor_z = float(z[ps.ids == sensor_id][0])
+        dt_s = T1 / samples_per_period
+        n_forced = cycles_forced * samples_per_period
+        n_total = n_forced + cycles_free * samples_per_period
+        times, p = [], []
+        t = 0.0
+        for i in range(n_total):
+            f.advance(t, dt_s)
+            t = (i + 1) * dt_s
+            if i + 1 > n_forced:
+                times.append(t)
+                p.append(f.wall_pressure()[np.flatnonzero(f.ps.ids == sensor_id)[0]])
     times, p = np.asarray(times), np.asarray(p)
     f1_ref = w1 / (2 * math.pi)
     f1, _, _ = spectral_peak(times, p, 0.5 * f1_ref, 1.5 * f1_ref)
@@ -694,7 +719,9 @@ def run_spheric10(dx: float, t_end: float = 8.0, c0: float = 28.0, sample_dt: fl
       "natural frequency from the FFT of the wall pressure within 2 % of linear theory (fluid set-up "
       "SLOSHING_2D: h = 2 dx, walls='adami')", target="first peak of the wall-pressure FFT within 2 %",
       quick="the stated target (within 2 % of linear theory) at dx = 0.05 m (10 rows), c0 = 10 sqrt(g h), 2 "
-            "forced and 4 free periods, instead of dx = 0.025 m, 20 sqrt(g h), 3 and 6")
+            "forced and 4 free periods, instead of dx = 0.025 m, 20 sqrt(g h), 3 and 8",
+      scene=lambda quick: frequency_scene(FREQUENCY_RUNS[quick][0], cycles_forced=FREQUENCY_RUNS[quick][1],
+                                          cycles_free=FREQUENCY_RUNS[quick][2], c0_factor=FREQUENCY_RUNS[quick][3]))
 def sloshing_frequency(quick: bool) -> dict:
     """See :func:`run_sloshing_frequency`. Reference: linear potential theory
     ``w1^2 = g (pi/L) tanh(pi h/L)``: f1 = 0.8462 Hz for L = 1 m, h = 0.5 m (refdata
@@ -718,10 +745,9 @@ def sloshing_frequency(quick: bool) -> dict:
 
     Measured trade: ``docs/validation/sloshing-frequency_trade.md`` (on the case's report page).
     """
-    own = fluid_setup("sloshing-frequency", SLOSHING_2D)
-    if quick:
-        return run_sloshing_frequency(0.05, cycles_forced=2, cycles_free=4, c0_factor=10.0, **own)
-    return run_sloshing_frequency(0.025, cycles_free=6, **own)
+    dx, forced, free, c0_factor = FREQUENCY_RUNS[quick]
+    return run_sloshing_frequency(dx, cycles_forced=forced, cycles_free=free, c0_factor=c0_factor,
+                                  **fluid_setup("sloshing-frequency", SLOSHING_2D))
 
 
 @case("sloshing-spheric10", "SPHERIC Test 10 (rolling tank 900 x 508 mm, water 93 mm, measured roll): "
