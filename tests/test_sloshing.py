@@ -131,7 +131,8 @@ def test_sloshing_frequency_quick():
 
 @pytest.mark.slow
 def test_sloshing_frequency_full():
-    """dx = 0.025 m (20 rows), 6 free periods, the case's SLOSHING_2D set-up: measured +0.84 %."""
+    """dx = 0.025 m (20 rows), 8 free periods, the scene's set-up ("sloshing", fluid.solver.SLOSHING_2D):
+    measured +0.84 %."""
     r = validation.run("sloshing-frequency", quick=False)
     assert r["passed"] and r["metrics"]["f1_rel_err"] < 0.02
 

@@ -35,6 +35,15 @@ def _g(x: float) -> str:
     return f"{x:.4g} m/s^2 ({x / G0:.3g} g)"
 
 
+def _at_knots(sig):
+    """A tabulated signal's (value, rate, acceleration) at its samples (the spline's knots,
+    the ends moved just inside the record, where the spline's derivatives are its own)."""
+    import numpy as np
+
+    t = np.asarray(sig.times)
+    return sig.sample(np.clip(t, t[0] + 1e-9 * (t[-1] - t[0]), t[-1] - 1e-9 * (t[-1] - t[0])))
+
+
 # ------------------------------------------------------------------------ scales
 def check_scales(spec, prefix: str = "") -> None:
     """Every length and coordinate [m] the scene declares within :data:`MAX_LENGTH` (the
@@ -184,9 +193,7 @@ def _check_base_motion(s, dim: int) -> None:
         from cosim.scene.checks import roll_arm
 
         arm, sig = roll_arm(s, dim), roll_record(b)
-        t = np.asarray(sig.times)
-        inner = np.clip(t, t[0] + 1e-9 * (t[-1] - t[0]), t[-1] - 1e-9 * (t[-1] - t[0]))  # the spline's knots
-        _, rate, acc = sig.sample(inner)
+        _, rate, acc = _at_knots(sig)
         peak = float(np.hypot(acc, rate ** 2).max()) * arm  # tangential and centripetal at the farthest corner
         _refuse_peak("base_motion.scale", peak, f"the recorded roll (times scale = {b.scale:g}, at the tank's "
                      f"corner {arm:.4g} m from the axis)",
@@ -199,10 +206,8 @@ def _check_base_motion(s, dim: int) -> None:
         from fluid.motion import Tabulated
 
         rows = np.array(_rows_of_numbers(b.file, "base_motion.file", strict=True), float)
-        t = rows[:, 0]
-        sig = Tabulated(tuple(t), tuple(rows[:, b.column] * b.scale), b.quantity)
-        inner = np.clip(t, t[0] + 1e-9 * (t[-1] - t[0]), t[-1] - 1e-9 * (t[-1] - t[0]))  # the spline's knots
-        peak = float(np.abs(sig.sample(inner)[2]).max())
+        sig = Tabulated(tuple(rows[:, 0]), tuple(rows[:, b.column] * b.scale), b.quantity)
+        peak = float(np.abs(_at_knots(sig)[2]).max())
         _refuse_peak("base_motion.scale", peak, f"the table's motion (times scale = {b.scale:g})",
                      lambda: f"check the table's units and give a scale up to "
                              f"{abs(b.scale) * MAX_BASE_ACCELERATION / peak:.4g}")

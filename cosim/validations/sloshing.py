@@ -16,7 +16,7 @@ from fluid.geometry import assemble, block, set_hydrostatic, tank_walls
 from fluid.motion import Harmonic, Rotation, Translation
 from fluid.particles import Kind
 from fluid.probes import wall_patch_pressure
-from fluid.solver import SLOSHING_2D, Fluid, FluidConfig
+from fluid.solver import Fluid, FluidConfig
 
 G = 9.81
 RHO0 = 1000.0
@@ -437,9 +437,10 @@ def sloshing_omega(L: float, h: float, mode: int = 1, g: float = G) -> float:
     return math.sqrt(g * k * math.tanh(k * h))
 
 
-#: (dx [m], forced periods, free periods, c0_factor) of the full (False) and quick (True)
-#: variants; the full one the scene file's
-FREQUENCY_RUNS = {False: (0.025, 3, 8, 20.0), True: (0.05, 2, 4, 10.0)}
+#: the spacing [m], forced and free periods and c0_factor of the full (False) and quick
+#: (True) variants (:func:`frequency_scene`'s arguments); the full one the scene file's
+FREQUENCY_RUNS = {False: dict(dx=0.025, cycles_forced=3, cycles_free=8, c0_factor=20.0),
+                  True: dict(dx=0.05, cycles_forced=2, cycles_free=4, c0_factor=10.0)}
 
 
 def frequency_scene(dx: float, L: float = 1.0, h: float = 0.5, amplitude: float = 0.002, cycles_forced: int = 3,
@@ -520,8 +521,6 @@ def run_sloshing_frequency(dx: float, L: float = 1.0, h: float = 0.5, amplitude:
 # ------------------------------------------------------------------------------------ SPHERIC 10
 #: impact peaks of the measured record (SOURCE.txt): time [s], pressure [Pa]
 SPHERIC10_PEAKS = ((2.375, 3683.0), (4.067, 3890.0), (5.672, 2663.0), (7.303, 7148.0))
-#: inner length, height and water depth [m] (SOURCE.txt)
-SPHERIC10_TANK = (0.9, 0.508, 0.093)
 
 
 def spheric10_scene(dx: float = 0.0031, c0: float = 28.0, t_end: float = 8.0, sample_dt: float = 1e-4,
@@ -720,16 +719,15 @@ def run_spheric10(dx: float, t_end: float = 8.0, c0: float = 28.0, sample_dt: fl
       "SLOSHING_2D: h = 2 dx, walls='adami')", target="first peak of the wall-pressure FFT within 2 %",
       quick="the stated target (within 2 % of linear theory) at dx = 0.05 m (10 rows), c0 = 10 sqrt(g h), 2 "
             "forced and 4 free periods, instead of dx = 0.025 m, 20 sqrt(g h), 3 and 8",
-      scene=lambda quick: frequency_scene(FREQUENCY_RUNS[quick][0], cycles_forced=FREQUENCY_RUNS[quick][1],
-                                          cycles_free=FREQUENCY_RUNS[quick][2], c0_factor=FREQUENCY_RUNS[quick][3]))
+      scene=lambda quick: frequency_scene(**FREQUENCY_RUNS[quick]))
 def sloshing_frequency(quick: bool) -> dict:
     """See :func:`run_sloshing_frequency`. Reference: linear potential theory
     ``w1^2 = g (pi/L) tanh(pi h/L)``: f1 = 0.8462 Hz for L = 1 m, h = 0.5 m (refdata
     sloshing_frequencies_housner.csv: T1 = 1.18182 s).
 
-    Set-up: :data:`fluid.solver.SLOSHING_2D`, Wendland with h = 2 dx and the
-    tank walls carrying the fluid's pressure (``walls="adami"``), the other settings the
-    solver's defaults. Why these two:
+    Set-up: :data:`fluid.solver.SLOSHING_2D`, the one the chooser gives the scene's shaken
+    tank ("sloshing"): Wendland with h = 2 dx and the tank walls carrying the fluid's
+    pressure (``walls="adami"``), the other settings the solver's defaults. Why these two:
     the plain dynamic walls make a stiff spring at the contact line (first part below),
     and at the default h = sqrt(2) dx the particle lattice under pressure has a spurious
     shear stiffness (second part). h = 2 dx is the one support between 1.2 and 2.4 dx at
@@ -745,9 +743,7 @@ def sloshing_frequency(quick: bool) -> dict:
 
     Measured trade: ``docs/validation/sloshing-frequency_trade.md`` (on the case's report page).
     """
-    dx, forced, free, c0_factor = FREQUENCY_RUNS[quick]
-    return run_sloshing_frequency(dx, cycles_forced=forced, cycles_free=free, c0_factor=c0_factor,
-                                  **fluid_setup("sloshing-frequency", SLOSHING_2D))
+    return run_sloshing_frequency(**FREQUENCY_RUNS[quick])
 
 
 @case("sloshing-spheric10", "SPHERIC Test 10 (rolling tank 900 x 508 mm, water 93 mm, measured roll): "
