@@ -220,6 +220,17 @@ def run_westergaard(dx: float, c0: float = 1430.0, dim: int = 2, periods_skip: i
                         Harmonic.from_peak_acceleration(a0, Tp, from_rest=True))
     f.prescribe_motion(0, shake)
     f.initialize(0.0)
+    return westergaard_profile(f, shake, a0, Tp, length, H, width, periods_skip, periods_fit, samples_per_period)
+
+
+def westergaard_profile(f: Fluid, shake, a0: float, Tp: float, length: float, H: float, width: float,
+                        periods_skip: int, periods_fit: int, samples_per_period: int) -> dict:
+    """Run the shaken tank ``f`` (initialised at t = 0, its walls one moving group following
+    ``shake``, the base acceleration ``a0 sin(2 pi t / Tp)``; ``length`` x ``width`` (3-D) [m],
+    water ``H`` [m], inner corner at the origin) and fit k_p on both end walls as
+    :func:`run_westergaard` describes: the case's metrics, tolerances, counts and profile."""
+    cfg, ps = f.config, f.ps
+    dim, dx, c0 = cfg.dim, cfg.dx, cfg.speed_of_sound
     # wall particles of the first layer of both end walls, below the surface (ids), per
     # plane across the width: "" the mid-plane, "_side0/1" the rows next to the side walls
     x, z = ps.pos[:, 0], ps.pos[:, -1]
@@ -305,16 +316,25 @@ def run_westergaard(dx: float, c0: float = 1430.0, dim: int = 2, periods_skip: i
                         **{f"kp_{k}": v.tolist() for k, v in refs.items()}}}
 
 
+def westergaard_scene(quick: bool):
+    """The scene of westergaard (``scenes/westergaard.toml``, the quick variant's: dx = 0.1 m,
+    3 periods); the full variant's spacing is 0.025 m, its run 5 periods."""
+    from cosim.validations import case_scene
+
+    return case_scene.load("westergaard", [] if quick else ["fluid.dx=0.025", "world.duration=0.15"])
+
+
 @case("westergaard", "2-D tank 3.0 m long, water 1.0 m, base acceleration 0.5 g sin(2 pi t / 0.03 s): "
       "wall k_p = p_d/(rho a0 H) vs the exact incompressible series, RMS < 0.04 (raw boundary "
       "pressure) and < 0.02 (Eq. 15 averaging carried to the wall face); walls='adami'",
       target=WESTERGAARD_TARGET,
       quick="dx = 0.1 m (10 rows), 1 + 2 periods: the face k_p within 0.06 RMS of the exact series and its base "
             "value within 6 %, the out-of-phase part below 0.05, the face correction better than plain Eq. 15 "
-            "(first-order errors of ~dx/H: the stated 0.04 / 0.02 need dx <= 0.05 m)")
+            "(first-order errors of ~dx/H: the stated 0.04 / 0.02 need dx <= 0.05 m)", scene=westergaard_scene)
 def westergaard(quick: bool) -> dict:
-    """Sunara et al. 2021, §3.1 (Fig. 5): see :func:`run_westergaard` for set-up and
-    extraction. c0 = 1430 m/s (the paper's c_p); tank walls carrying the fluid's pressure
+    """Sunara et al. 2021, §3.1 (Fig. 5): the scene :func:`westergaard_scene` (the tank,
+    walls and shaking of :func:`run_westergaard`), read by :func:`westergaard_profile`; see
+    :func:`run_westergaard` for set-up and extraction. c0 = 1430 m/s (the paper's c_p); tank walls carrying the fluid's pressure
     (``walls="adami"``: fluid.wall_density, with the wall acceleration of Adami et al.
     2012 Eq. 27); Wendland, h = sqrt(2) dx, alpha = 0.01, Fourtakas delta = 0.1, CFL 0.2
     (the defaults); 2 periods skipped, 3 fitted (quick: 1 and 2), 40 samples a period. Why
@@ -341,8 +361,15 @@ def westergaard(quick: bool) -> dict:
     it there. What was tried before (the default walls, whose raw pressure misses the
     target at every dx; the wave set-up): docs/validation/westergaard_history.md.
     """
-    own = fluid_setup("westergaard", {"walls": "adami"})
-    out = run_westergaard(0.1, periods_skip=1, periods_fit=2, **own) if quick else run_westergaard(0.025, **own)
+    from cosim.validations import case_scene
+
+    scene = westergaard_scene(quick)
+    d, shake = scene.domain, scene.base_motion
+    samples = round(shake.period / scene.world.sample_every)
+    skip = 1 if quick else 2
+    with case_scene.built(scene) as b:
+        out = westergaard_profile(b.sph, b.base_motion, shake.acceleration, shake.period, d.length, d.depth,
+                                  d.width or 0.0, skip, round(scene.world.duration / shake.period) - skip, samples)
     out["series"] = westergaard_series_plot(out.pop("profile"))
     out["stated_tolerances"], out["departure"] = dict(WESTERGAARD_STATED), dict(WESTERGAARD_DEPARTURE)
     if quick:
