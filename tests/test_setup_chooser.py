@@ -66,15 +66,15 @@ def test_auto_setup_clears_the_hand_set_levers():
 
 
 #: the cases with a scene file whose quick variant runs the SPH fluid, run under auto_setup, by cost
-QUICK = ["westergaard", "sinking-cylinder", "floating-box-draft", "sloshing-frequency", "hydrostatic",
-         "sloshing-spheric10"]
+QUICK = ["sinking-cylinder", "floating-box-draft", "sloshing-frequency", "sloshing-spheric10"]
 LONG = ["inclined-wall", "floating-heave-period", "moored-body-sph"]
 #: the 3-D ones, 2-5 CPU-minutes each under the chooser's set-up (h = 2 dx): out of CI's time
 #: (their quick variants with their own set-up run in the long tier, tests/test_tanks.py)
 SLOW = ["cylinder-tank", "inclined-wall-3d"]
 #: cases whose quick scene gets the same FluidConfig from "auto" as its own: their quick
 #: validation run (``cosim validate NAME --quick``) is the chooser's, so not run again here
-SAME = ["arch-rib", "elastic-table2", "hydrostatic-3d", "nearfield-floating-box", "nearfield-radiation", "dambreak-2d",
+SAME = ["westergaard", "hydrostatic", "arch-rib", "elastic-table2", "hydrostatic-3d", "nearfield-floating-box",
+        "nearfield-radiation", "dambreak-2d",
         "dambreak-lobovsky", "elastic-plate", "nearfield-waves", "long-period", "wave-propagation", "elastic-gate"]
 #: cases whose quick variant is built in code with the settings the chooser gives their scene
 #: file ({case: the settings it passes to case_scene.fluid_setup}): their quick validation run

@@ -193,15 +193,31 @@ def inclined_series_plot(profiles: dict) -> dict:
                               "curves": curves}}
 
 
+def inclined_scene(quick: bool, beta_deg: float = 45.0):
+    """The scene ``scenes/inclined-wall.toml`` (the quick variant's 45 deg tank: dx = 0.1 m,
+    3 periods; the full variant's: dx = 0.05 m, 5 periods) with its right side ``beta_deg``
+    [deg] from the vertical and its pressure patch moved with the slope (0.25 m above the
+    bottom)."""
+    n = case_scene.number
+    b = math.radians(beta_deg)
+    dx, periods = (0.1, 3) if quick else (0.05, 5)
+    scene = case_scene.load("inclined-wall")
+    patch = (f'probes.pressure=[{{name = "slope", centre = [{n(scene.domain.length + 0.25 * math.tan(b))}, 0.25], '
+             f'normal = [{n(-math.cos(b))}, {n(math.sin(b))}], size = 0.3}}]')
+    return case_scene.load("inclined-wall", [f"fluid.dx={n(dx)}", f"domain.angle={n(beta_deg)}", patch,
+                                             f"world.duration={n(periods * scene.base_motion.period)}"])
+
+
 @case("inclined-wall", "2-D section of Sunara et al. 2021, §3.2's tank (bottom 3.0 m, right side 15/30/45 deg from the vertical, "
       "water 1.0 m), base acceleration 0.5 g sin(2 pi t / 0.03 s): k_p up the inclined face vs Chwang's exact "
       "theory, RMS < 0.04", target=INCLINED_TARGET,
       quick="dx = 0.1 m (10 rows), 1 + 2 periods: k_p up the inclined face within 0.06 RMS of Chwang's theory at "
             "each angle (first-order errors of ~dx/H, as westergaard's quick variant: the stated 0.04 is met at the "
-            "paper's dx = 0.05 m, the full variant)")
+            "paper's dx = 0.05 m, the full variant)", scene=inclined_scene)
 def inclined_wall(quick: bool) -> dict:
-    """Sunara et al. 2021, §3.2 (Fig. 12): see :func:`run_inclined` for the set-up and
-    the extraction. c0 = 1430 m/s (the paper's), tank walls carrying the fluid's pressure
+    """Sunara et al. 2021, §3.2 (Fig. 12): the scene :func:`inclined_scene` at each angle (the
+    tank of :func:`run_inclined`), read by :func:`run_inclined_scene`; see :func:`run_inclined`
+    for the set-up and the extraction. c0 = 1430 m/s (the paper's), tank walls carrying the fluid's pressure
     (``walls="adami"``, as the westergaard case), the solver's other defaults (h = sqrt(2) dx:
     45 deg at dx = 0.1 m, 0.0055 RMS against 0.0113 at h = 2 dx; at dx = 0.025 m the slope's
     pressure grows noisy, so the chooser gives a scene of this kind h = 2 dx, "sloshing":
@@ -214,11 +230,10 @@ def inclined_wall(quick: bool) -> dict:
     row to row); the measured table (``cosim validate inclined-wall [--quick]``):
     docs/validation/inclined-wall_history.md.
     """
-    dx, skip, fit = (0.1, 1, 2) if quick else (0.05, 2, 3)
+    dx = 0.1 if quick else 0.05
     metrics, profiles, particles, steps = {}, {}, 0, 0
-    own = fluid_setup("inclined-wall", {"walls": "adami"})
     for beta in ANGLES:
-        r = run_inclined(beta, dx, periods_skip=skip, periods_fit=fit, **own)
+        r = run_inclined_scene(inclined_scene(quick, beta), periods_skip=1 if quick else 2)
         for k, v in r["metrics"].items():
             if k not in ("dx_m", "c0_m_s", "beta_deg"):
                 metrics[f"{k}_{beta:g}"] = v
