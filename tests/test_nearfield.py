@@ -69,6 +69,26 @@ def test_a_box_shorter_than_its_zones_is_refused():
 
 
 @pytest.mark.long
+def test_regular_waves_cross_the_box_in_phase_while_it_still_rings():
+    """The box of the test below at dx = 3 cm over 8 periods (about 50 CPU-s instead of 6
+    CPU-minutes: CI's time): the first harmonic at every gauge in phase with the sea within
+    the case's 5 % of a period, the mean level within its 1 % of the depth, no particle lost;
+    the heights within 15 % of the sea's only, as the box still rings from the start
+    (measured 1.007-1.115 of it; 5 % takes 20 periods, below)."""
+    from cosim.validations import nearfield as nf
+    from fluid.solver import NEAR_FIELD
+
+    wl = RegularWave(nf.NF_HEIGHT, nf.NF_PERIOD, nf.NF_DEPTH, level=nf.NF_DEPTH).wavelength
+    r = nf.run_box(nf._sea("linear", 8 * nf.NF_PERIOD), 0.03, 1.8 * wl, 0.5 * wl, 8 * nf.NF_PERIOD, settle=1.0,
+                   **NEAR_FIELD)
+    m = nf.regular_metrics(r, nf.NF_PERIOD)
+    assert np.abs(m["H1_over_H"] - 1.0).max() < 0.15, m["H1_over_H"]
+    assert np.abs(m["lag_periods"]).max() < nf.NF_LAG_TOL
+    assert abs(nf.level_drift(r, nf.NF_PERIOD, 2 * nf.NF_PERIOD)) < nf.NF_DRIFT_TOL * nf.NF_DEPTH
+    assert r["removed"] == 0
+
+
+@pytest.mark.slow  # 6 CPU-minutes: out of CI's time (docs/development.md); the 8-period run above stays
 def test_regular_waves_cross_the_box_at_the_seas_height_and_phase():
     """Linear waves (H = 6 cm, T = 1.2 s, d = 0.3 m) through the box the chooser gives a sea
     without bodies (zones half a wavelength, 1.8 wavelengths long) at dx = 2 cm (H/dx = 3,

@@ -78,7 +78,7 @@ def test_westergaard_quick():
     assert "carried to the wall face" in r["departure"]["criterion"]
 
 
-@pytest.mark.long
+@pytest.mark.slow  # 3-D, 1-2 CPU-minutes: out of CI's time (docs/development.md); the 2-D case stays
 def test_westergaard_3d_quick():
     """A 0.3 m slice of the 3-D tank (dx = 0.075 m, c0 = 700 m/s, 1 + 1 periods, walls
     "adami") against the exact series and against the 2-D section run with the same
