@@ -113,15 +113,18 @@ TEST_COMMANDS = [["python", "-m", "pytest"], ["python", "-m", "pytest", "-m", "l
 
 def test_readme_test_commands_select_their_tiers():
     """Each test command of the README is one `.ci/run` runs, and, run (collecting only) on
-    the hydrostatic tests, selects its tier: the fast one the 2-D case, the long one the 3-D
-    case, neither the full validations (`-m long` replaces the addopts' `-m`)."""
+    the hydrostatic validations and the links' momentum test, selects its tier: the fast one
+    the 2-D hydrostatic case and the 2-D links, the long one the 3-D links, neither the slow
+    hydrostatic ones (3-D, full; `-m long` replaces the addopts' `-m`)."""
     assert [c for c in commands(README) if c[0] == "python"] == TEST_COMMANDS
     ci = (ROOT / ".ci" / "run").read_text()
     for cmd in TEST_COMMANDS:
         assert re.search(rf"^(.* && )?{' '.join(cmd)}( \|\||$)", ci, flags=re.M), cmd
-    expected = [{"test_registered", "test_hydrostatic_quick[hydrostatic]"}, {"test_hydrostatic_quick[hydrostatic-3d]"}]
+    links = "test_momentum_lost_by_the_fluid_is_what_the_links_receive_to_round_off"
+    expected = [{"test_hydrostatic_quick[hydrostatic]", f"{links}[2-300]"}, {f"{links}[3-20]"}]
     for cmd, tests in zip(TEST_COMMANDS, expected):
-        out = subprocess.run([sys.executable, *cmd[1:], "--collect-only", "-q", "tests/test_fluid_hydrostatic.py"],
+        out = subprocess.run([sys.executable, *cmd[1:], "--collect-only", "-q", "tests/test_fluid_hydrostatic.py",
+                              "tests/test_elastic_coupling.py", "-k", "hydrostatic_quick or momentum_lost"],
                              cwd=ROOT, capture_output=True, text=True, timeout=300)
         assert out.returncode == 0, out.stdout[-2000:] + out.stderr[-2000:]
         assert {ln.split("::")[1] for ln in out.stdout.splitlines() if "::" in ln} == tests, (cmd, out.stdout)
