@@ -300,7 +300,7 @@ def test_the_packaged_scene_is_the_full_variants_el_centro_ew_run():
     assert resolved(read_toml(path)) == resolved(rib_scene(0.1, 25.0, ("ew",), stop=20.0))
 
 
-@pytest.mark.long
+@pytest.mark.slow  # 1-2 CPU-minutes: out of CI's time (docs/development.md); the rib's scene and ground motion stay
 def test_arch_rib_quick_validation():
     """``cosim validate arch-rib --quick``: dx = 0.3 m, El Centro EW for 4 s at c0 = 140 m/s,
     then the water ringing free to 7 s."""

@@ -278,7 +278,7 @@ def test_a_run_interrupted_between_checkpoints_resumes_bit_for_bit(tmp_path, mon
 
     def interrupted(self, *a, **k):
         n["steps"] += 1
-        if n["steps"] == 181:
+        if n["steps"] == 61:
             raise KeyboardInterrupt
         return step(self, *a, **k)
 

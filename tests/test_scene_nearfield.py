@@ -236,7 +236,7 @@ def test_a_3d_near_field_is_centred_on_its_bodies(tmp_path):
     assert "natural period" in c.reasons["zone"]
 
 
-@pytest.mark.long
+@pytest.mark.slow  # a minute of CPU: out of CI's time (docs/development.md); the mirror's own tests stay
 def test_a_symmetry_plane_runs_half_the_particles_and_the_whole_boxs_motion(tmp_path):
     """The base on its three lines (one in the plane y = 0, two mirrored) in a 3-D near field
     at a coarse spacing, the whole box and its half y >= 0 with a symmetry plane
