@@ -54,7 +54,7 @@ def test_cable_vs_catenary_quick():
     assert r["metrics"]["max_abs_err_tension"] < 0.02
 
 
-@pytest.mark.long
+@pytest.mark.slow  # out of CI's time (docs/development.md)
 def test_cable_exp2_shake_quick():
     """Dinçer & Demir 2020, Experiment 2 shaken: the free period within 7 % of the measured
     0.42 s on the length implied by the measured static shape (Table 5); at the

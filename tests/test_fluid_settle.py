@@ -74,7 +74,7 @@ def test_settle_refuses_bad_input():
         f.settle(0.1, tau=-1.0)
 
 
-@pytest.mark.long
+@pytest.mark.slow  # out of CI's time (docs/development.md)
 def test_wave_setup_at_rest_after_settling():
     """h = 2 dx with the "adami" walls (the sloshing-frequency set-up): the square lattice
     is stable at this h/dx (benchmarks/lattice_stiffness.py --stability) and, once settled,

@@ -53,7 +53,7 @@ def test_bad_input_is_refused_before_any_work():
         run_long_period("cylinder", dx=0.07, dim=3)
 
 
-@pytest.mark.long
+@pytest.mark.slow  # out of CI's time (docs/development.md); the scene and its tanks stay
 def test_long_period_quick():
     """The rectangular tank's 2-D section at dx = 0.1 m: linear theory holds at 0.05 g
     (judged against the declared quick tolerances); at the paper's 0.5 g it does not."""

@@ -145,7 +145,7 @@ def _far_pair_scene(gap: float, frequencies=None):
                             "bodies": [dict(body, name="a", pos=[0.0, 0.0]), dict(body, name="b", pos=[gap, 0.0])]})
 
 
-@pytest.mark.long
+@pytest.mark.slow  # out of CI's time (docs/development.md)
 def test_bodies_far_apart_get_the_frequencies_their_cross_memory_needs(tmp_path, monkeypatch):
     """20 m apart, frequencies unset: the fluid picks a spacing whose window holds the waves'
     round trip (81 frequencies instead of 40, which the impulse-response check refused); the

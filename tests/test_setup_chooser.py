@@ -67,9 +67,10 @@ def test_auto_setup_clears_the_hand_set_levers():
 
 #: the cases with a scene file whose quick variant runs the SPH fluid, run under auto_setup, by cost
 QUICK = ["sinking-cylinder", "floating-box-draft", "sloshing-frequency", "sloshing-spheric10"]
+#: the costlier ones, 20-35 CPU-s each: out of CI's time (docs/development.md)
 LONG = ["inclined-wall", "floating-heave-period", "moored-body-sph"]
 #: the 3-D ones, 2-5 CPU-minutes each under the chooser's set-up (h = 2 dx): out of CI's time
-#: (their quick variants with their own set-up run in the long tier, tests/test_tanks.py)
+#: (as their quick variants with their own set-up, tests/test_tanks.py)
 SLOW = ["cylinder-tank", "inclined-wall-3d"]
 #: cases whose quick scene gets the same FluidConfig from "auto" as its own: their quick
 #: validation run (``cosim validate NAME --quick``) is the chooser's, so not run again here
@@ -102,7 +103,7 @@ def test_auto_setup_meets_the_quick_tolerance(name):
     _run_auto(name)
 
 
-@pytest.mark.long
+@pytest.mark.slow  # out of CI's time (docs/development.md)
 @pytest.mark.parametrize("name", LONG)
 def test_auto_setup_meets_the_quick_tolerance_long(name):
     _run_auto(name)

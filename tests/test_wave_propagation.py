@@ -40,7 +40,8 @@ def test_the_interior_decay_is_lambs_and_the_floor_adds_its_boundary_layer():
     assert floor[0] / floor[1] == pytest.approx(2.0, rel=1e-12)
 
 
-@pytest.mark.long
+@pytest.mark.slow  # out of CI's time (docs/development.md); the piston and flap waves and the
+# near field's box stay in the long tier
 def test_quick_waves_keep_their_height_over_three_wavelengths():
     """cosim validate wave-propagation --quick: 10 rows over the depth, the scenes' wave
     set-up; judged on its declared tolerances (2.5 % per wavelength, 5 % of a period,

@@ -78,7 +78,7 @@ periods before 4.8 s (the ramp's end has passed the last gauge, the far wall's r
 has not come back)."""
 
 
-@pytest.mark.long
+@pytest.mark.slow  # out of CI's time (docs/development.md); the coarse piston stays
 def test_flap_waves_with_the_reference_smoothing_length_follow_linear_theory():
     """With the smoothing length of the DualSPHysics floating-box set-up (h = 1.2 sqrt(2)
     dx = 1.70 dx) and its kinematic artificial viscosity (cosim.validations.waves.

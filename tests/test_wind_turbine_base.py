@@ -128,7 +128,7 @@ def test_the_validation_runs_the_examples_scene():
     assert Scene.from_toml(SCENE) == Scene.from_toml(TOML)
 
 
-@pytest.mark.long
+@pytest.mark.slow  # out of CI's time (docs/development.md); the example on the same base stays
 def test_the_mooring_models_agree_on_the_base_quick():
     """Catenary and SPH cable on the same scene over 20 s: heave half ranges and mean
     tensions within 10 % of each other, every line partly lifted (the surge, which the

@@ -89,7 +89,7 @@ def _pitched(scheme):
     return from_dict(d)
 
 
-@pytest.mark.long
+@pytest.mark.slow  # out of CI's time (docs/development.md)
 def test_the_reference_scheme_keeps_the_moored_pitch_from_growing(tmp_path):
     """The moored base's pitch (about 2 s, lightly damped) on the potential-flow fluid: the
     SPH run's explicit scheme, held over this fluid's longer step, pumps it up (e-fold in
