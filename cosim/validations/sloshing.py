@@ -334,9 +334,9 @@ def westergaard_scene(quick: bool):
 def westergaard(quick: bool) -> dict:
     """Sunara et al. 2021, §3.1 (Fig. 5): the scene :func:`westergaard_scene` (the tank,
     walls and shaking of :func:`run_westergaard`), read by :func:`westergaard_profile`; see
-    :func:`run_westergaard` for set-up and extraction. c0 = 1430 m/s (the paper's c_p); tank walls carrying the fluid's pressure
-    (``walls="adami"``: fluid.wall_density, with the wall acceleration of Adami et al.
-    2012 Eq. 27); Wendland, h = sqrt(2) dx, alpha = 0.01, Fourtakas delta = 0.1, CFL 0.2
+    :func:`run_westergaard` for set-up and extraction. c0 = 1430 m/s (the paper's c_p);
+    tank walls carrying the fluid's pressure (``walls="adami"``: fluid.wall_density, with
+    the wall acceleration of Adami et al. 2012 Eq. 27); Wendland, h = sqrt(2) dx, alpha = 0.01, Fourtakas delta = 0.1, CFL 0.2
     (the defaults); 2 periods skipped, 3 fitted (quick: 1 and 2), 40 samples a period. Why
     h = sqrt(2) dx and not the sloshing set-up's 2 dx: shaken far above its first sloshing
     frequency the water's pressure is impulsive and the waves' speed hardly enters; at dx =

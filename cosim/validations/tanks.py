@@ -217,14 +217,14 @@ def inclined_scene(quick: bool, beta_deg: float = 45.0):
 def inclined_wall(quick: bool) -> dict:
     """Sunara et al. 2021, §3.2 (Fig. 12): the scene :func:`inclined_scene` at each angle (the
     tank of :func:`run_inclined`), read by :func:`run_inclined_scene`; see :func:`run_inclined`
-    for the set-up and the extraction. c0 = 1430 m/s (the paper's), tank walls carrying the fluid's pressure
-    (``walls="adami"``, as the westergaard case), the solver's other defaults (h = sqrt(2) dx:
-    45 deg at dx = 0.1 m, 0.0055 RMS against 0.0113 at h = 2 dx; at dx = 0.025 m the slope's
-    pressure grows noisy, so the chooser gives a scene of this kind h = 2 dx, "sloshing":
-    docs/setup_chooser.md); 40 samples a period. Judged: the RMS of k_p up the inclined face
-    against Chwang's semi-infinite reservoir at each angle; reported beside it, the RMS against the exact pressure of
-    this finite tank on both sides (the 3 m tank's inclined face carries 1-3 % less
-    than Chwang's reservoir at the base).
+    for the set-up and the extraction. c0 = 1430 m/s (the paper's), tank walls carrying the
+    fluid's pressure (``walls="adami"``, as the westergaard case), the solver's other
+    defaults (h = sqrt(2) dx: 45 deg at dx = 0.1 m, 0.0055 RMS against 0.0113 at h = 2 dx; at
+    dx = 0.025 m the slope's pressure grows noisy, so the chooser gives a scene of this kind
+    h = 2 dx, "sloshing": docs/setup_chooser.md); 40 samples a period. Judged: the RMS of k_p
+    up the inclined face against Chwang's semi-infinite reservoir at each angle; reported
+    beside it, the RMS against the exact pressure of this finite tank on both sides (the 3 m
+    tank's inclined face carries 1-3 % less than Chwang's reservoir at the base).
 
     The errors are largest on the steepest face (15 deg: the face k_p scatters by +-0.03 from
     row to row); the measured table (``cosim validate inclined-wall [--quick]``):
