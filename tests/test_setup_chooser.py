@@ -10,7 +10,6 @@ import pytest
 from cosim import validation
 from cosim.scene.setup import IMPULSIVE_PERIODS, choose
 from cosim.validations import case_scene
-from cosim.validations.sloshing import WESTERGAARD_3D_SETUP
 
 
 def _first_period(length: float, depth: float, g: float = 9.81) -> float:
@@ -57,7 +56,7 @@ def test_auto_setup_clears_the_hand_set_levers():
     code-built case gets the chooser's levers (cylinder-tank: walls "adami", the solver's
     h), outside it its own."""
     assert case_scene.load("cylinder-tank").fluid.walls == "adami"
-    assert case_scene.fluid_setup("westergaard-3d", {}) == {}
+    assert case_scene.fluid_setup("cylinder-tank", {}) == {}
     with case_scene.auto_setup():
         scene = case_scene.load("cylinder-tank")
         assert scene.fluid.setup == "auto" and scene.fluid.walls is None
@@ -74,13 +73,8 @@ LONG = ["inclined-wall", "floating-heave-period", "moored-body-sph"]
 SLOW = ["cylinder-tank", "inclined-wall-3d"]
 #: cases whose quick scene gets the same FluidConfig from "auto" as its own: their quick
 #: validation run (``cosim validate NAME --quick``) is the chooser's, so not run again here
-SAME = ["westergaard", "hydrostatic", "arch-rib", "elastic-table2", "hydrostatic-3d", "nearfield-floating-box",
-        "nearfield-radiation", "dambreak-2d",
-        "dambreak-lobovsky", "elastic-plate", "nearfield-waves", "long-period", "wave-propagation", "elastic-gate"]
-#: cases whose quick variant is built in code with the settings the chooser gives their scene
-#: file ({case: the settings it passes to case_scene.fluid_setup}): their quick validation run
-#: (tests/test_sloshing.py) is the chooser's, so not run again here
-SAME_IN_CODE = {"westergaard-3d": WESTERGAARD_3D_SETUP}
+SAME = ["westergaard", "westergaard-3d", "hydrostatic", "arch-rib", "elastic-table2", "hydrostatic-3d",
+        "nearfield-floating-box", "nearfield-radiation", "dambreak-2d", "dambreak-lobovsky", "elastic-plate", "nearfield-waves", "long-period", "wave-propagation", "elastic-gate"]
 #: SPH cases whose scene sets a lever the chooser does not, and why; not run here
 OWN = {"wind-turbine-sph": "h = sqrt(2) dx, the kernel width that holds the base's static draft within 2 % at dx = "
                            "0.5 m, where the chooser's near field takes 2 dx for waves that cross a box several "
@@ -123,16 +117,9 @@ def test_the_quick_scene_already_runs_the_choosers_set_up(name):
     assert choose(case_scene.chosen(scene)).config == choose(scene).config
 
 
-@pytest.mark.parametrize("name", sorted(SAME_IN_CODE))
-def test_the_quick_variant_built_in_code_already_runs_the_choosers_set_up(name):
-    own = SAME_IN_CODE[name]
-    with case_scene.auto_setup():
-        assert case_scene.fluid_setup(name, own) == own
-
-
 def test_every_sph_case_with_a_scene_file_is_checked():
     files = {n for n, p in validation.case_scenes().items() if p is not None}
-    assert files == set(QUICK) | set(LONG) | set(SLOW) | set(SAME) | set(SAME_IN_CODE) | set(OWN) | OTHER_FLUID
+    assert files == set(QUICK) | set(LONG) | set(SLOW) | set(SAME) | set(OWN) | OTHER_FLUID
     assert all(validation.cases()[n].scene(True).fluid.model != "sph" for n in OTHER_FLUID)
     for name in OWN:
         scene = validation.cases()[name].scene(True)

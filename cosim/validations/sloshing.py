@@ -10,7 +10,6 @@ import numpy as np
 
 from cosim import refdata
 from cosim.study.metrics import spectral_peak
-from cosim.validations.case_scene import fluid_setup
 from cosim.validations.registry import case
 from fluid.geometry import assemble, block, set_hydrostatic, tank_walls
 from fluid.motion import Harmonic, Rotation, Translation
@@ -140,8 +139,6 @@ WESTERGAARD_TARGET = ("RMS of k_p against the exact solution < 0.04 raw, < 0.02 
 WESTERGAARD_STATED = {"rms_raw_vs_exact": 0.04, "rms_avg_vs_exact": 0.02}
 #: the quick 3-D slice's spacing [m]: 13 rows over the 1.0 m of water
 QUICK_3D_DX = 0.075
-#: the 3-D tank's fluid set-up (full and quick): walls carrying the fluid's pressure
-WESTERGAARD_3D_SETUP = {"walls": "adami"}
 #: what is judged: the second tolerance on Eq. 15's average carried to the wall face
 WESTERGAARD_TOLERANCES = {"rms_raw_vs_exact": 0.04, "rms_face_vs_exact": 0.02}
 WESTERGAARD_DEPARTURE = {
@@ -378,6 +375,46 @@ def westergaard(quick: bool) -> dict:
     return out
 
 
+def westergaard_3d_scene(quick: bool):
+    """The scene of westergaard-3d (``scenes/westergaard-3d.toml``, the full variant's: the
+    whole tank at dx = 0.05 m, c0 = 1430 m/s, 2 periods); the quick variant's is a slice
+    0.3 m wide at dx = :data:`QUICK_3D_DX` with c0 = 700 m/s, its pressure patch on the
+    slice's mid-plane."""
+    from cosim.validations import case_scene
+
+    if not quick:
+        return case_scene.load("westergaard-3d")
+    n = case_scene.number
+    return case_scene.load("westergaard-3d", [
+        f"fluid.dx={n(QUICK_3D_DX)}", "fluid.c0=700.0", "domain.width=0.3",
+        'probes.pressure=[{name = "mid_plane", centre = [0.0, 0.15, 0.25], normal = [1.0, 0.0, 0.0], size = 0.2}]'])
+
+
+def westergaard_section(scene):
+    """The 2-D section of the shaken 3-D tank ``scene``: the same tank, shaking, fluid and
+    run in the x-z plane, without pressure patches."""
+    from cosim.scene.toml_io import from_dict, to_dict
+
+    d = to_dict(scene)
+    d["world"]["dim"] = 2
+    del d["domain"]["width"]
+    d["base_motion"]["direction"] = d["base_motion"]["direction"][::2]
+    d.pop("probes", None)
+    return from_dict(d)
+
+
+def _scene_profile(scene) -> dict:
+    """:func:`westergaard_profile` of the shaken tank ``scene`` built as ``cosim run`` builds
+    it: k_p fitted over its periods after the first, sampled at its ``world.sample_every``."""
+    from cosim.validations import case_scene
+
+    d, shake = scene.domain, scene.base_motion
+    samples = round(shake.period / scene.world.sample_every)
+    with case_scene.built(scene) as b:
+        return westergaard_profile(b.sph, b.base_motion, shake.acceleration, shake.period, d.length, d.depth,
+                                   d.width or 0.0, 1, round(scene.world.duration / shake.period) - 1, samples)
+
+
 def westergaard_3d_series_plot(profile: dict) -> dict:
     """The report's plot of a 3-D :func:`run_westergaard` profile: that of
     :func:`westergaard_series_plot` on the mid-plane, and the rows next to the side walls."""
@@ -398,12 +435,13 @@ def westergaard_3d_series_plot(profile: dict) -> dict:
       quick="a 0.3 m slice at dx = 0.075 m, c0 = 700 m/s, 1 + 1 periods, walls 'adami': the face k_p within 0.07 "
             "RMS of the exact series and its base value within 6 %, the out-of-phase part below 0.08, the face "
             "correction better than plain Eq. 15, and the 2-D section's profile (same settings) within 0.03 "
-            "(Eq. 15) and 0.05 (face) row by row")
+            "(Eq. 15) and 0.05 (face) row by row", scene=westergaard_3d_scene)
 def westergaard_3d(quick: bool) -> dict:
     """The 3-D tank of Sunara et al. 2021, §3.1 (3.0 m long x 1.0 m wide x 1.5 m high,
     water 1.0 m, a0 = 0.5 g, Tp = 0.03 s; the paper's 38 170 particles at dx = 0.05 m fix
-    the 1.0 m as the width: 60 x 20 x 20 fluid particles): :func:`run_westergaard` with
-    ``dim=3``. k_p is read on the end walls' rows on the mid-plane (y = 0.5 m) and next to
+    the 1.0 m as the width: 60 x 20 x 20 fluid particles): the scene
+    :func:`westergaard_3d_scene` (the tank of :func:`run_westergaard` with ``dim=3``), read
+    by :func:`westergaard_profile`. k_p is read on the end walls' rows on the mid-plane (y = 0.5 m) and next to
     the side walls (averaged); references and targets as :func:`westergaard`'s. In theory the
     flow is uniform across the tank (the side walls are parallel to the shaking and carry
     no pressure gradient), so the 3-D profile is the 2-D one everywhere across; what the
@@ -430,21 +468,19 @@ def westergaard_3d(quick: bool) -> dict:
 
     Measured trade: ``docs/validation/westergaard-3d_trade.md`` (on the case's report page).
     """
+    scene = westergaard_3d_scene(quick)
+    out = _scene_profile(scene)
     if not quick:
-        out = run_westergaard(0.05, dim=3, width=1.0, periods_skip=1, periods_fit=1,
-                              **fluid_setup("westergaard-3d", WESTERGAARD_3D_SETUP))
-        out["metrics"]["width_m"] = 1.0
+        out["metrics"]["width_m"] = scene.domain.width
         out["series"] = westergaard_3d_series_plot(out.pop("profile"))
         out["stated_tolerances"], out["departure"] = dict(WESTERGAARD_STATED), dict(WESTERGAARD_DEPARTURE)
         return out
-    settings = dict(c0=700.0, periods_skip=1, periods_fit=1, **fluid_setup("westergaard-3d", WESTERGAARD_3D_SETUP))
-    out = run_westergaard(QUICK_3D_DX, dim=3, width=0.3, **settings)
-    section = run_westergaard(QUICK_3D_DX, dim=2, **settings)
+    section = _scene_profile(westergaard_section(scene))
     for q in ("raw", "avg", "face"):
         d = np.abs(np.asarray(out["profile"][f"kp_{q}"]) - np.asarray(section["profile"][f"kp_{q}"]))
         out["metrics"][f"kp_{q}_vs_2d_max"] = float(d.max())
         out["metrics"][f"rms_{q}_vs_exact_2d"] = section["metrics"][f"rms_{q}_vs_exact"]
-    out["metrics"]["width_m"] = 0.3
+    out["metrics"]["width_m"] = scene.domain.width
     plot = westergaard_3d_series_plot(out.pop("profile"))
     plot["wall pressure"]["curves"]["2-D section (same settings), Eq. 15 at the face"] = {
         "x": section["profile"]["kp_face"], "y": section["profile"]["depth_m"], "style": "x--"}
