@@ -141,7 +141,8 @@ def test_the_3d_slices_patch_lies_on_the_slope_and_its_section_is_the_same_tank(
     2-D section the same tank, shaking and fluid in the x-z plane, the patch taken to it."""
     import math
 
-    from cosim.validations.tanks import inclined_3d_scene, section
+    from cosim.validations.case_scene import section
+    from cosim.validations.tanks import inclined_3d_scene
 
     for quick in (True, False):
         scene = inclined_3d_scene(quick, beta)

@@ -115,3 +115,18 @@ def built(scene) -> Iterator:
             yield b
         finally:
             close_participants(b)
+
+
+def section(scene):
+    """The 2-D section of a shaken 3-D tank ``scene`` (its domain's ``width`` along y): the
+    same tank, shaking, fluid and run in the x-z plane, its pressure patches taken from
+    their plane y = const to the section."""
+    from cosim.scene.toml_io import from_dict, to_dict
+
+    d = to_dict(scene)
+    d["world"]["dim"] = 2
+    del d["domain"]["width"]
+    d["base_motion"]["direction"] = d["base_motion"]["direction"][::2]
+    for p in d.get("probes", {}).get("pressure", []):
+        p["centre"], p["normal"] = p["centre"][::2], p["normal"][::2]
+    return from_dict(d)

@@ -390,19 +390,6 @@ def westergaard_3d_scene(quick: bool):
         'probes.pressure=[{name = "mid_plane", centre = [0.0, 0.15, 0.25], normal = [1.0, 0.0, 0.0], size = 0.2}]'])
 
 
-def westergaard_section(scene):
-    """The 2-D section of the shaken 3-D tank ``scene``: the same tank, shaking, fluid and
-    run in the x-z plane, without pressure patches."""
-    from cosim.scene.toml_io import from_dict, to_dict
-
-    d = to_dict(scene)
-    d["world"]["dim"] = 2
-    del d["domain"]["width"]
-    d["base_motion"]["direction"] = d["base_motion"]["direction"][::2]
-    d.pop("probes", None)
-    return from_dict(d)
-
-
 def _scene_profile(scene) -> dict:
     """:func:`westergaard_profile` of the shaken tank ``scene`` built as ``cosim run`` builds
     it: k_p fitted over its periods after the first, sampled at its ``world.sample_every``."""
@@ -468,6 +455,8 @@ def westergaard_3d(quick: bool) -> dict:
 
     Measured trade: ``docs/validation/westergaard-3d_trade.md`` (on the case's report page).
     """
+    from cosim.validations import case_scene
+
     scene = westergaard_3d_scene(quick)
     out = _scene_profile(scene)
     if not quick:
@@ -475,7 +464,7 @@ def westergaard_3d(quick: bool) -> dict:
         out["series"] = westergaard_3d_series_plot(out.pop("profile"))
         out["stated_tolerances"], out["departure"] = dict(WESTERGAARD_STATED), dict(WESTERGAARD_DEPARTURE)
         return out
-    section = _scene_profile(westergaard_section(scene))
+    section = _scene_profile(case_scene.section(scene))
     for q in ("raw", "avg", "face"):
         d = np.abs(np.asarray(out["profile"][f"kp_{q}"]) - np.asarray(section["profile"][f"kp_{q}"]))
         out["metrics"][f"kp_{q}_vs_2d_max"] = float(d.max())

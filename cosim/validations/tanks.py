@@ -283,22 +283,8 @@ def inclined_3d_scene(quick: bool, beta_deg: float = 45.0):
                                                 f"domain.angle={n(beta_deg)}", patch])
 
 
-def section(scene):
-    """The 2-D section of the 3-D inclined slice ``scene``: the same tank, shaking, fluid and
-    run in the x-z plane, its pressure patches taken from the mid-plane to the plane."""
-    from cosim.scene.toml_io import from_dict, to_dict
-
-    d = to_dict(scene)
-    d["world"]["dim"] = 2
-    del d["domain"]["width"]
-    d["base_motion"]["direction"] = d["base_motion"]["direction"][::2]
-    for p in d["probes"]["pressure"]:
-        p["centre"], p["normal"] = p["centre"][::2], p["normal"][::2]
-    return from_dict(d)
-
-
 def run_inclined_scene(scene, periods_skip: int = 1) -> dict:
-    """The inclined tank of ``scene`` (:func:`inclined_3d_scene`, or its :func:`section`),
+    """The inclined tank of ``scene`` (:func:`inclined_3d_scene`, or its :func:`~cosim.validations.case_scene.section`),
     built as ``cosim run`` builds it and read as :func:`run_inclined` reads its tank: k_p
     fitted over the scene's periods after ``periods_skip`` of them, sampled at its
     ``world.sample_every``, on the slice's mid-plane in 3-D."""
@@ -326,7 +312,8 @@ def inclined_wall_3d(quick: bool) -> dict:
     0.05 m) between front and back walls of 3 layers, read by :func:`run_inclined_scene`:
     k_p on the mid-plane; c0 = 1430 m/s, ``walls="adami"``, the solver's other defaults, 40
     samples a period, 1 period skipped and 1 fitted (quick: 45 deg only, dx = 0.1 m, c0 =
-    700 m/s, 1 + 1, and the 2-D section with the same settings beside it, :func:`section`).
+    700 m/s, 1 + 1, and the 2-D section with the same settings beside it,
+    :func:`~cosim.validations.case_scene.section`).
     Why a slice and not the whole 1.0 m width: the front and back walls are parallel to the
     shaking, so in theory the flow is uniform across and any width is the same problem; the
     whole vertical tank (``westergaard-3d``) measures what the side walls do to k_p in this
@@ -358,7 +345,7 @@ def inclined_wall_3d(quick: bool) -> dict:
         particles, steps = max(particles, r["particles"]), steps + r["steps"]
     sections = None
     if quick:  # the 2-D section with the same settings beside the slice
-        sections = {45.0: run_inclined_scene(section(runs[45.0]))}
+        sections = {45.0: run_inclined_scene(case_scene.section(runs[45.0]))}
         for side in ("left", "right"):
             d = np.abs(np.asarray(profiles[45.0][f"kp_{side}"]) - np.asarray(sections[45.0]["profile"][f"kp_{side}"]))
             metrics[f"kp_{side}_vs_2d_max_45"] = float(d.max())
