@@ -96,7 +96,7 @@ def test_the_cylinders_bottom_pressure_and_petrov_moiseevs_eq_21():
     assert reservoir[0] == pytest.approx(0.742, abs=1e-3)  # Westergaard's k_p at the base
 
 
-@pytest.mark.slow  # 3-D, 1-2 CPU-minutes: out of CI's time (docs/development.md); the 2-D tank and the 3-D slice stay
+@pytest.mark.slow  # 3-D, 1-2 CPU-minutes: out of CI's time (docs/development.md); the 2-D inclined tank stays
 def test_cylinder_tank_quick():
     r = validation.run("cylinder-tank", quick=True)
     m = r["metrics"]

@@ -40,7 +40,7 @@ def test_the_interior_decay_is_lambs_and_the_floor_adds_its_boundary_layer():
     assert floor[0] / floor[1] == pytest.approx(2.0, rel=1e-12)
 
 
-@pytest.mark.slow  # out of CI's time (docs/development.md); the piston and flap waves and the
+@pytest.mark.slow  # out of CI's time (docs/development.md); the coarse piston waves and the
 # near field's box stay in the long tier
 def test_quick_waves_keep_their_height_over_three_wavelengths():
     """cosim validate wave-propagation --quick: 10 rows over the depth, the scenes' wave

@@ -313,6 +313,20 @@ def westergaard_profile(f: Fluid, shake, a0: float, Tp: float, length: float, H:
                         **{f"kp_{k}": v.tolist() for k, v in refs.items()}}}
 
 
+def _scene_profile(scene, periods_skip: int = 1) -> dict:
+    """:func:`westergaard_profile` of the shaken tank ``scene`` built as ``cosim run`` builds
+    it: k_p fitted over its periods after ``periods_skip`` of them, sampled at its
+    ``world.sample_every``."""
+    from cosim.validations import case_scene
+
+    d, shake = scene.domain, scene.base_motion
+    samples = round(shake.period / scene.world.sample_every)
+    periods = round(scene.world.duration / shake.period)
+    with case_scene.built(scene) as b:
+        return westergaard_profile(b.sph, b.base_motion, shake.acceleration, shake.period, d.length, d.depth,
+                                   d.width or 0.0, periods_skip, periods - periods_skip, samples)
+
+
 def westergaard_scene(quick: bool):
     """The scene of westergaard (``scenes/westergaard.toml``, the quick variant's: dx = 0.1 m,
     3 periods); the full variant's spacing is 0.025 m, its run 5 periods."""
@@ -333,11 +347,11 @@ def westergaard(quick: bool) -> dict:
     walls and shaking of :func:`run_westergaard`), read by :func:`westergaard_profile`; see
     :func:`run_westergaard` for set-up and extraction. c0 = 1430 m/s (the paper's c_p);
     tank walls carrying the fluid's pressure (``walls="adami"``: fluid.wall_density, with
-    the wall acceleration of Adami et al. 2012 Eq. 27); Wendland, h = sqrt(2) dx, alpha = 0.01, Fourtakas delta = 0.1, CFL 0.2
-    (the defaults); 2 periods skipped, 3 fitted (quick: 1 and 2), 40 samples a period. Why
-    h = sqrt(2) dx and not the sloshing set-up's 2 dx: shaken far above its first sloshing
-    frequency the water's pressure is impulsive and the waves' speed hardly enters; at dx =
-    0.1 m h = 2 dx reads 0.073 face RMS against 0.040 (docs/setup_chooser.md). A scene of
+    the wall acceleration of Adami et al. 2012 Eq. 27); Wendland, h = sqrt(2) dx, alpha =
+    0.01, Fourtakas delta = 0.1, CFL 0.2 (the defaults); 2 periods skipped, 3 fitted (quick:
+    1 and 2), 40 samples a period. Why h = sqrt(2) dx and not the sloshing set-up's 2 dx:
+    shaken far above its first sloshing frequency the water's pressure is impulsive and the
+    waves' speed hardly enters; at dx = 0.1 m h = 2 dx reads 0.073 face RMS against 0.040 (docs/setup_chooser.md). A scene of
     this kind gets this set-up from the chooser ("impulsive", :mod:`cosim.scene.setup`).
 
     Reference: the exact incompressible wall pressure of this 3 m tank
@@ -358,15 +372,7 @@ def westergaard(quick: bool) -> dict:
     it there. What was tried before (the default walls, whose raw pressure misses the
     target at every dx; the wave set-up): docs/validation/westergaard_history.md.
     """
-    from cosim.validations import case_scene
-
-    scene = westergaard_scene(quick)
-    d, shake = scene.domain, scene.base_motion
-    samples = round(shake.period / scene.world.sample_every)
-    skip = 1 if quick else 2
-    with case_scene.built(scene) as b:
-        out = westergaard_profile(b.sph, b.base_motion, shake.acceleration, shake.period, d.length, d.depth,
-                                  d.width or 0.0, skip, round(scene.world.duration / shake.period) - skip, samples)
+    out = _scene_profile(westergaard_scene(quick), periods_skip=1 if quick else 2)
     out["series"] = westergaard_series_plot(out.pop("profile"))
     out["stated_tolerances"], out["departure"] = dict(WESTERGAARD_STATED), dict(WESTERGAARD_DEPARTURE)
     if quick:
@@ -388,18 +394,6 @@ def westergaard_3d_scene(quick: bool):
     return case_scene.load("westergaard-3d", [
         f"fluid.dx={n(QUICK_3D_DX)}", "fluid.c0=700.0", "domain.width=0.3",
         'probes.pressure=[{name = "mid_plane", centre = [0.0, 0.15, 0.25], normal = [1.0, 0.0, 0.0], size = 0.2}]'])
-
-
-def _scene_profile(scene) -> dict:
-    """:func:`westergaard_profile` of the shaken tank ``scene`` built as ``cosim run`` builds
-    it: k_p fitted over its periods after the first, sampled at its ``world.sample_every``."""
-    from cosim.validations import case_scene
-
-    d, shake = scene.domain, scene.base_motion
-    samples = round(shake.period / scene.world.sample_every)
-    with case_scene.built(scene) as b:
-        return westergaard_profile(b.sph, b.base_motion, shake.acceleration, shake.period, d.length, d.depth,
-                                   d.width or 0.0, 1, round(scene.world.duration / shake.period) - 1, samples)
 
 
 def westergaard_3d_series_plot(profile: dict) -> dict:
@@ -428,8 +422,8 @@ def westergaard_3d(quick: bool) -> dict:
     water 1.0 m, a0 = 0.5 g, Tp = 0.03 s; the paper's 38 170 particles at dx = 0.05 m fix
     the 1.0 m as the width: 60 x 20 x 20 fluid particles): the scene
     :func:`westergaard_3d_scene` (the tank of :func:`run_westergaard` with ``dim=3``), read
-    by :func:`westergaard_profile`. k_p is read on the end walls' rows on the mid-plane (y = 0.5 m) and next to
-    the side walls (averaged); references and targets as :func:`westergaard`'s. In theory the
+    by :func:`westergaard_profile`. k_p is read on the end walls' rows on the mid-plane
+    (y = 0.5 m) and next to the side walls (averaged); references and targets as :func:`westergaard`'s. In theory the
     flow is uniform across the tank (the side walls are parallel to the shaking and carry
     no pressure gradient), so the 3-D profile is the 2-D one everywhere across; what the
     whole tank adds over a slice is the measured effect of the side walls.

@@ -284,10 +284,11 @@ def inclined_3d_scene(quick: bool, beta_deg: float = 45.0):
 
 
 def run_inclined_scene(scene, periods_skip: int = 1) -> dict:
-    """The inclined tank of ``scene`` (:func:`inclined_3d_scene`, or its :func:`~cosim.validations.case_scene.section`),
-    built as ``cosim run`` builds it and read as :func:`run_inclined` reads its tank: k_p
-    fitted over the scene's periods after ``periods_skip`` of them, sampled at its
-    ``world.sample_every``, on the slice's mid-plane in 3-D."""
+    """The inclined tank of ``scene`` (:func:`inclined_3d_scene`, or its
+    :func:`~cosim.validations.case_scene.section`), built as ``cosim run`` builds it and read
+    as :func:`run_inclined` reads its tank: k_p fitted over the scene's periods after
+    ``periods_skip`` of them, sampled at its ``world.sample_every``, on the slice's mid-plane
+    in 3-D."""
     d, shake = scene.domain, scene.base_motion
     samples = round(shake.period / scene.world.sample_every)
     periods = round(scene.world.duration / shake.period)
