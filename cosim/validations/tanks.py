@@ -9,7 +9,6 @@ import numpy as np
 
 from cosim import refdata
 from cosim.validations import case_scene
-from cosim.validations.case_scene import fluid_setup
 from cosim.validations.registry import case
 from cosim.validations.sloshing import _harmonic_fit, face_pressure
 from cosim.validations.tank_potential import wall_profiles
@@ -434,9 +433,13 @@ def petrov_moiseev_bottom(r, h: float, R: float) -> np.ndarray:
     return 0.5 * math.sqrt(3) * np.sinh(math.sqrt(3) * np.asarray(r, float) / h) / math.cosh(math.sqrt(3) * R / h)
 
 
+#: the angles from +x [deg] where the cylinder's wall pressure is read (half the wall)
+CYLINDER_ANGLES = tuple(range(0, 181, 15))
+
+
 def run_cylinder(dx: float, c0: float = 1430.0, periods_skip: int = 2, periods_fit: int = 3,
                  samples_per_period: int = 40, a0: float = 0.5 * G, Tp: float = 0.02, diameter: float = 2.0,
-                 depth: float = 0.6, height: float = 1.0, angles_deg=tuple(range(0, 181, 15)), **overrides) -> dict:
+                 depth: float = 0.6, height: float = 1.0, angles_deg=CYLINDER_ANGLES, **overrides) -> dict:
     """Sunara et al. 2021, §3.3 (Fig. 14-17): the rigid cylinder ``diameter`` [m],
     ``height`` [m], water ``depth`` [m] (:func:`fluid.shapes.cylinder_tank`: rings of equal
     volume, wall shells) under the base acceleration ``a0 sin(2 pi t / Tp)`` along +x from
@@ -450,6 +453,15 @@ def run_cylinder(dx: float, c0: float = 1430.0, periods_skip: int = 2, periods_f
     (face points every dx, both sides of the axis) against :func:`cylinder_bottom_series`
     and Petrov-Moiseev's Eq. 21 (:func:`petrov_moiseev_bottom`), reported."""
     f, shake, cfg = _shaken_tank(cylinder_tank(dx, diameter, depth, height), 3, dx, depth, c0, a0, Tp, **overrides)
+    return _cylinder_profile(f, shake, cfg, a0, Tp, diameter, depth, angles_deg, samples_per_period, periods_skip,
+                             periods_fit)
+
+
+def _cylinder_profile(f, shake, cfg, a0: float, Tp: float, diameter: float, depth: float, angles_deg,
+                      samples_per_period: int, periods_skip: int, periods_fit: int) -> dict:
+    """The cylinder's wall and bottom pressure of :func:`run_cylinder` from its running fluid
+    ``f`` (shaken by ``shake``, ``cfg`` its FluidConfig): the metrics and profiles."""
+    dx, c0 = cfg.dx, cfg.speed_of_sound
     R = 0.5 * diameter
     z = dx * (0.5 + np.arange(int(math.floor(depth / dx + 1e-9))))
     phi = np.radians(np.asarray(angles_deg, float))
@@ -519,18 +531,43 @@ def cylinder_series_plot(profile: dict) -> dict:
                            "SPH (ours)": {"x": profile["x_bottom_m"], "y": profile["p_bottom_kpa"], "style": "o-"}}}}
 
 
+def cylinder_scene(quick: bool):
+    """The scene ``scenes/cylinder-tank.toml``: the full variant as written (dx = 0.05 m,
+    2 + 3 periods); the quick variant at dx = 0.1 m over 1 + 2 periods."""
+    if not quick:
+        return case_scene.load("cylinder-tank")
+    period = case_scene.load("cylinder-tank").base_motion.period
+    return case_scene.load("cylinder-tank", ["fluid.dx=0.1", f"world.duration={case_scene.number(3 * period)}"])
+
+
+def run_cylinder_scene(scene, periods_skip: int) -> dict:
+    """The cylinder of ``scene`` (:func:`cylinder_scene`), built as ``cosim run`` builds it
+    and read as :func:`run_cylinder` reads its tank: the pressure fitted over the scene's
+    periods after ``periods_skip`` of them, sampled at its ``world.sample_every``."""
+    d, shake = scene.domain, scene.base_motion
+    samples = round(shake.period / scene.world.sample_every)
+    periods = round(scene.world.duration / shake.period)
+    with case_scene.built(scene) as b:
+        f = b.sph
+        return _cylinder_profile(f, b.base_motion, f.config, shake.acceleration, shake.period, d.diameter, d.depth,
+                                 CYLINDER_ANGLES, samples, periods_skip, periods - periods_skip)
+
+
 @case("cylinder-tank", "3-D cylinder D = 2 m, 1.0 m high, water 0.6 m, base acceleration 0.5 g sin(2 pi t / 0.02 s) "
       "(Sunara et al. 2021, §3.3): the wall's hydrodynamic pressure on the x-z plane vs the exact series, RMS < 0.127 kPa; "
       "Petrov-Moiseev (the stated reference) beside it", target=CYLINDER_TARGET,
       quick="dx = 0.1 m (6 rows over the depth), 1 + 2 periods: the x-z plane's RMS against the exact series "
             "below 0.35 kPa, the base pressure within 6 %, the out-of-phase part below 0.15 kPa (the row next to "
-            "the free surface reads high by ~dx/h: the stated 0.127 kPa needs the full variant's dx = 0.05 m)")
+            "the free surface reads high by ~dx/h: the stated 0.127 kPa needs the full variant's dx = 0.05 m)",
+      scene=cylinder_scene)
 def cylinder_tank_case(quick: bool) -> dict:
-    """See :func:`run_cylinder`. c0 = 1430 m/s, tank walls carrying the fluid's pressure
-    (``walls="adami"``), the solver's other defaults (Wendland, h = sqrt(2) dx: at dx = 0.1 m
-    0.29 kPa RMS against 0.51 at h = 2 dx, for 3/4 of its CPU; docs/setup_chooser.md; the
-    chooser's "impulsive"); 40 samples a period. Reference: the exact series
-    (:func:`cylinder_series`: 2.41 kPa at the bottom); Petrov-Moiseev (Sunara et al. 2021, Eq. 20, what the paper compares with) is a Ritz
+    """The scene :func:`cylinder_scene` read by :func:`run_cylinder_scene`; see
+    :func:`run_cylinder` for the set-up and the extraction. c0 = 1430 m/s, tank walls
+    carrying the fluid's pressure (``walls="adami"``), the solver's other defaults
+    (Wendland, h = sqrt(2) dx: at dx = 0.1 m 0.29 kPa RMS against 0.51 at h = 2 dx, for 3/4
+    of its CPU; docs/setup_chooser.md; the chooser's "impulsive"); 40 samples a period.
+    Reference: the exact series (:func:`cylinder_series`: 2.41 kPa at the bottom);
+    Petrov-Moiseev (Sunara et al. 2021, Eq. 20, what the paper compares with) is a Ritz
     approximation 0.15 kPa RMS from it on this tank (2.53 kPa at the bottom).
 
     The stated target (0.127 kPa) is met at dx = 0.05 m against the exact series; against
@@ -540,8 +577,7 @@ def cylinder_tank_case(quick: bool) -> dict:
     and the bottom along x: docs/validation/cylinder-tank_history.md.
     Figures: ``docs/validation/figures/cylinder-tank_dx0.05_*.png``.
     """
-    dx, skip, fit = (0.1, 1, 2) if quick else (0.05, 2, 3)
-    r = run_cylinder(dx, periods_skip=skip, periods_fit=fit, **fluid_setup("cylinder-tank", {"walls": "adami"}))
+    r = run_cylinder_scene(cylinder_scene(quick), periods_skip=1 if quick else 2)
     m = r["metrics"]
     m["p_base_rel_err"] = m["p_base_kpa"] / m["p_base_exact_kpa"] - 1
     out = {"metrics": m, "tolerances": {"rms_kpa_plane_vs_exact": 0.127}, "particles": r["particles"],
