@@ -263,6 +263,25 @@ class MujocoBodies:
             self.data.qpos[m.jnt_qposadr[i]] = float(v)
         mujoco.mj_forward(m, self.data)
 
+    def set_velocity(self, body: int, velocity) -> None:
+        """Give the coupled body ``body`` (its index) the linear velocity ``velocity`` [m/s]
+        (world frame, (x, y, z)) without spin: a free joint's translational velocity, each
+        slide's the component along its axis, each hinge at rest. Its derived state is
+        brought up to date."""
+        m, d = self.model, self.data
+        v = np.asarray(velocity, float)
+        b = self.body_ids[body]
+        mujoco.mj_kinematics(m, d)  # the joints' axes in the world
+        for j in range(int(m.body_jntadr[b]), int(m.body_jntadr[b]) + int(m.body_jntnum[b])):
+            adr, kind = int(m.jnt_dofadr[j]), int(m.jnt_type[j])
+            if kind == mujoco.mjtJoint.mjJNT_FREE:
+                d.qvel[adr:adr + 6] = np.concatenate([v, np.zeros(3)])
+            elif kind == mujoco.mjtJoint.mjJNT_SLIDE:
+                d.qvel[adr] = float(d.xaxis[j] @ v)
+            else:
+                d.qvel[adr:adr + (3 if kind == mujoco.mjtJoint.mjJNT_BALL else 1)] = 0.0
+        mujoco.mj_forward(m, d)
+
     def save_state(self):
         buf = np.empty(mujoco.mj_stateSize(self.model, self._state_spec))
         mujoco.mj_getState(self.model, self.data, buf, self._state_spec)

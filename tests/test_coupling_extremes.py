@@ -13,7 +13,7 @@ from bodies import builders
 from bodies.mujoco_bodies import MujocoBodies
 from cosim.coupler import Coupler
 from cosim.errors import ConfigurationError, InputError, InstabilityError
-from cosim.validations.coupling import momentum_exchange_run
+from cosim.validations.coupling import momentum_exchange_run, momentum_exchange_scene
 from fluid.analytic import AnalyticFluid
 from moorings import CatenaryMooring, MooringLine
 
@@ -309,8 +309,9 @@ def test_sub_iterated_fluid_first_keeps_momentum_to_round_off():
     gravity and no walls, sub-iterated: the bodies still receive exactly the impulse
     the fluid exchanged, so the linear and angular momentum of fluid + box (about the
     origin, per metre) stay constant to round-off while the water slows and spins it."""
-    r = momentum_exchange_run("fluid-first", 150, dx=DX, density=100.0, side=0.06, x0=0.06,
-                              light_body="subiterate")
+    scene = momentum_exchange_scene(values=[f"fluid.dx={DX}", "bodies[0].density=100.0", "bodies[0].size=[0.06, 0.06]",
+                                            "bodies[0].pos=[0.06, 0.17]", 'coupling.light_body="subiterate"'])
+    r = momentum_exchange_run(scene, 150)
     vx, omega = r["body_vx_m_s"][1], r["body_omega_rad_s"][1]
     assert vx < 0.4 and abs(omega) > 0.1  # the water slowed and spun the box
     assert r["max_subiterations"] > 1

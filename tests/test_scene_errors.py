@@ -387,6 +387,8 @@ def case(id, base, change, path, says, python, files=None):
     return Case(id, base, change, path, says, python, tuple((files or {}).items()))
 
 
+OPEN = {"kind": "open", "lo": [-0.5, -0.5, -0.5], "hi": [1.5, 1.0, 1.0], "water": [{"lo": [0.0, 0.0, 0.0],
+                                                                                 "hi": [1.0, 0.5, 0.2]}]}
 INCLINED = {"kind": "inclined-tank", "angle": 95.0, "length": 1.0, "depth": 0.2, "height": 0.6, "width": 0.5}
 LINE_DYN = {"EA": 1e5, "mass_per_length": 0.6, "diameter": 0.01}
 LINEAR = {"kind": "linear", "height": 0.7, "period": 20.0, "depth": 20.0}  # Barreiro et al. 2016's waves
@@ -594,6 +596,26 @@ CASES = [
          (("fluid", {"model": "analytic"}), ("probes.pressure", []),
           ("waves", {"kind": "record", "paddle": "piston", "file": "paddle.txt"})),
          "waves.kind", "the analytic fluid takes the waves themselves", "Scene.waves.kind"),
+    case("open water shaken", "tank3d", ("domain", OPEN), "base_motion",
+         "open water has no tank to move; leave base_motion out", "Scene.base_motion"),
+    case("a floating body in open water", "tank3d", (("domain", OPEN), ("base_motion", OUT)), "bodies[0].place",
+         "\"floating\" finds a waterline under a still level; open water has none", "Scene.bodies[0].place"),
+    case("open water's block beyond its box", "tank3d",
+         (("domain", OPEN | {"hi": [1.5, 1.0, 0.1]}), ("base_motion", OUT)), "domain.water[0]",
+         "the block [0.0, 0.0, 0.0] .. [1.0, 0.5, 0.2] m reaches outside the fluid's box [-0.5, -0.5, -0.5] .. "
+         "[1.5, 1.0, 0.1] m", "Scene.domain.water[0]"),
+    case("open water without water", "tank3d", (("domain", OPEN | {"water": []}), ("base_motion", OUT)),
+         "domain.water", "give at least one block of water", "OpenWater.water"),
+    case("open water that nothing moves, without c0", "tank3d",
+         (("domain", OPEN), ("base_motion", OUT), ("bodies", OUT), ("world.gravity", 0.0)), "fluid.c0",
+         "nothing sets the open water's flow speed (no gravity, no body given a velocity)", "Scene.fluid.c0"),
+    case("a body's velocity in the wrong dimension", "analytic", ("bodies[0].velocity", [1.0, 0.0, 0.0]),
+         "bodies[0].velocity", "has 3 coordinates; a 2-D scene gives a velocity as (x, z)",
+         "Scene.bodies[0].velocity"),
+    case("a driven body given a velocity", "analytic",
+         (("bodies[0].velocity", [1.0, 0.0]), ("bodies[0].motion", {"amplitude": 0.1, "period": 2.0})),
+         "bodies[0].velocity", "a body with a prescribed motion moves as its motion says; leave velocity out",
+         "Box.velocity"),
     case("a cylinder-tank in 2-D", "flume", ("domain", {"kind": "cylinder-tank", "diameter": 1.0, "depth": 0.3,
                                                         "height": 0.5}),
          "domain.kind", "a cylinder-tank is 3-D; set world.dim = 3", "Scene.domain.kind"),

@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 from cosim.scene import (MJCF, SPH, Analytic, Block, Box, Cylinder, CylinderTank, Earthquake, Flap, Flume,
-                         InclinedTank, PaddleRecord, Piston, PolygonTank, Probes, Roll, RollTable, Scene, Shake,
-                         Sphere, TableMotion, Tank, World)
+                         InclinedTank, NoFluid, OpenWater, PaddleRecord, Piston, PolygonTank, Probes, Roll, RollTable,
+                         Scene, Shake, Sphere, TableMotion, Tank, World)
 from cosim.scene.build import build
 
 W2 = World(dim=2, duration=0.01, sample_every=0.005, snapshot_every=0)
@@ -250,3 +250,52 @@ def test_a_depth_that_is_not_whole_rows_is_warned_of_with_the_level_the_water_ge
         assert len(said) == 1 and f"lies {short:.4g} m below" in said[0] and f"{depth - short:.6g} or" in said[0]
     else:
         assert not said
+
+
+def test_open_water_without_gravity_stays_at_rest_and_loses_what_leaves_its_box(tmp_path):
+    """Open water (no walls, no floor) without gravity: two blocks at rest carry no
+    pressure (no hydrostatics in free fall) and nothing moves them, so after 40 steps every
+    particle stands where it was laid to round-off; the fluid's box is the scene's, and a
+    particle put outside it is removed."""
+    from fluid.particles import Kind
+
+    blocks = [Block((0.0, 0.0), (0.2, 0.1)), Block((0.3, 0.0), (0.4, 0.1))]
+    scene = Scene(world=World(dim=2, gravity=0.0, duration=0.01, snapshot_every=0), fluid=SPH(dx=0.02, c0=10.0),
+                  domain=OpenWater(lo=(-0.5, -0.5), hi=(1.0, 0.5), water=blocks))
+    b = build(scene, tmp_path)
+    f = b.sph
+    assert b.setup.name == "impact" and f.config.domain_lo == (-0.5, -0.5) and f.config.domain_hi == (1.0, 0.5)
+    assert not (f.ps.kind != Kind.FLUID).any() and _water_volume(b, 2) == pytest.approx(0.2 * 0.1 + 0.1 * 0.1)
+    assert np.all(f.ps.rho == f.config.rho0)
+    start = f.ps.pos[np.argsort(f.ps.ids)].copy()
+    t = 0.0
+    for _ in range(40):
+        dt = f.max_dt()
+        f.advance(t, dt)
+        t += dt
+    assert np.abs(f.ps.pos[np.argsort(f.ps.ids)] - start).max() < 1e-12
+    f.ps.pos[0] = (1.5, 0.0)  # beyond hi along x
+    f.advance(t, f.max_dt())
+    assert f.ps.n == len(start) - 1
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_a_body_given_a_velocity_flies_as_a_projectile(dim, tmp_path):
+    """A free box given a ``velocity`` and no fluid moves as a projectile under gravity,
+    without spin: x = x0 + vx t, z = z0 + vz t - g t^2 / 2, to round-off."""
+    g, T = 9.81, 0.5
+    v = (1.5, 2.0) if dim == 2 else (1.5, -0.5, 2.0)
+    pos = (0.0, 1.0) if dim == 2 else (0.0, 0.0, 1.0)
+    box = Box(name="b", size=(0.1,) * dim, pos=pos, density=500.0, velocity=v)
+    scene = Scene(world=World(dim=dim, gravity=g, duration=T, snapshot_every=0), fluid=NoFluid(), bodies=[box])
+    b = build(scene, tmp_path)
+    k = b.bodies.kinematics()
+    v3 = np.array([v[0], 0.0, v[1]] if dim == 2 else v)
+    np.testing.assert_allclose(k.velocity[0], v3, atol=1e-15)
+    b.coupler.run(T)
+    k = b.bodies.kinematics()
+    p0 = np.array([pos[0], 0.0, pos[1]] if dim == 2 else pos)
+    expect = p0 + v3 * T + np.array([0.0, 0.0, -0.5 * g * T * T])
+    np.testing.assert_allclose(k.com[0], expect, atol=1e-12)
+    np.testing.assert_allclose(k.velocity[0], v3 + np.array([0.0, 0.0, -g * T]), atol=1e-9)
+    assert np.abs(k.omega[0]).max() < 1e-12

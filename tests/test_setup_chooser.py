@@ -75,7 +75,7 @@ SLOW = ["cylinder-tank", "inclined-wall-3d"]
 #: validation run (``cosim validate NAME --quick``) is the chooser's, so not run again here
 SAME = ["westergaard", "westergaard-3d", "hydrostatic", "arch-rib", "elastic-table2", "hydrostatic-3d",
         "nearfield-floating-box", "nearfield-radiation", "dambreak-2d", "dambreak-lobovsky", "elastic-plate",
-        "nearfield-waves", "long-period", "wave-propagation", "elastic-gate"]
+        "nearfield-waves", "long-period", "wave-propagation", "elastic-gate", "momentum-exchange"]
 #: SPH cases whose scene sets a lever the chooser does not, and why; not run here
 OWN = {"wind-turbine-sph": "h = sqrt(2) dx, the kernel width that holds the base's static draft within 2 % at dx = "
                            "0.5 m, where the chooser's near field takes 2 dx for waves that cross a box several "

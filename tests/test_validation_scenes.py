@@ -21,6 +21,15 @@ def test_every_scene_file_loads_as_a_scene(path):
     assert isinstance(scene, Scene) and scene.name
 
 
+@pytest.mark.parametrize("path", FILES, ids=[p.stem for p in FILES])
+def test_every_scene_file_written_and_read_again_is_the_same_scene(path, tmp_path):
+    """The TOML writer keeps every field of the packaged scenes (open water, a body's
+    velocity, tables of base motion among them)."""
+    scene = Scene.from_toml(path)
+    scene.to_toml(tmp_path / path.name)
+    assert _resolved(Scene.from_toml(tmp_path / path.name)) == _resolved(scene)
+
+
 def test_every_scene_file_belongs_to_a_case():
     """Named after its case, or named by the module of the case that runs it."""
     known = validation.cases()

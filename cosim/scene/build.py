@@ -25,7 +25,7 @@ from pathlib import Path
 import numpy as np
 
 from cosim.scene.spec import (MJCF, ROLLS, SPH, Analytic, LinearWaves, CylinderTank, Earthquake, ElasticPlate, Flap,
-                              Flume, GroundMotion, InclinedTank, NearField, Piston, PolygonTank, Potential, Roll,
+                              Flume, GroundMotion, InclinedTank, NearField, OpenWater, Piston, PolygonTank, Potential, Roll,
                               RollTable, Shake, TableMotion, Tank)
 
 PADDLE, WALLS = 1, 0  # the flume's paddle group and every tank's wall group
@@ -81,6 +81,8 @@ def fluid_config(scene, setup, numbers_only: bool = False):
     cfg = {k: v for k, v in setup.config.items() if not (numbers_only and k == "device")}
     if isinstance(scene.domain, NearField) and scene.domain.symmetry:
         cfg["symmetry_y"] = 0.0  # fluid.mirror
+    if isinstance(scene.domain, OpenWater):  # particles that leave the box are removed
+        cfg["domain_lo"], cfg["domain_hi"] = scene.domain.lo, scene.domain.hi
     # the walls' loads only where a probe reads them (wall-pressure patches): a scene pays
     # for what it contains, and the fluid's motion and step are the same either way
     return FluidConfig(dim=scene.world.dim, dx=scene.fluid.dx, g=scene.world.gravity,
@@ -232,7 +234,7 @@ def domain_water(scene, cfg, back: float = 0.0):
 
     pts, walls = _domain_points(scene, cfg, back)
     d = scene.domain
-    if not scene.world.tilted or isinstance(d, Flume) or (isinstance(d, Tank) and d.water):
+    if not scene.world.tilted or isinstance(d, (Flume, OpenWater)) or (isinstance(d, Tank) and d.water):
         return pts, walls, None
     brim, _ = _domain_points(scene, cfg, back, brim=True)
     pts, surface = water_under_gravity(brim, len(pts), cfg.gravity)
@@ -260,6 +262,8 @@ def _domain_points(scene, cfg, back: float = 0.0, brim: bool = False):
         fl = flume(dx, d.length, d.depth, d.height, layers=layers, back=back,
                    beach=None if d.beach is None else (d.beach.toe, d.beach.slope), width=d.width)
         return fl.fluid, fl.walls
+    if isinstance(d, OpenWater):
+        return np.concatenate([block(b.lo, b.hi, dx) for b in d.water]), []
     if isinstance(d, Tank) and d.water:
         inner = [d.length] + ([d.width] if dim == 3 else []) + [d.height]
         walls = np.concatenate([tank_walls(np.zeros(dim), np.array(inner), dx, layers), *_inner_walls(d, dx, layers)])
@@ -316,8 +320,12 @@ def _in_blocks(points, blocks, margin: float) -> np.ndarray:
 
 
 def _surface_heights(scene, points):
-    """The free surface over each fluid point [m]: the top of its water block, or the level."""
+    """The free surface over each fluid point [m]: the top of its water block, or the level;
+    in open water the point itself (water falling freely, or without gravity, carries no
+    hydrostatic pressure)."""
     d = scene.domain
+    if isinstance(d, OpenWater):
+        return points[:, -1].copy()
     if isinstance(d, Tank) and d.water:
         top = np.full(len(points), -np.inf)
         for b in d.water:
@@ -365,7 +373,7 @@ def _water_top(scene, b) -> float | None:
     d = scene.domain
     if not isinstance(scene.fluid, SPH):
         return None
-    if isinstance(d, Tank) and d.water:
+    if isinstance(d, OpenWater) or (isinstance(d, Tank) and d.water):
         foot = b.base
         tops = [w.hi[-1] for w in d.water
                 if all(lo <= x <= hi for lo, x, hi in zip(w.lo[:-1], foot[:-1], w.hi[:-1])) and w.lo[-1] <= foot[-1]]
@@ -534,6 +542,15 @@ def _drive_forced(scene, out: Built) -> None:
             out.bodies.drive([slide_joint(b.name)], forced_drive(b.motion))
 
 
+def _start_velocities(scene, out: Built) -> None:
+    """The free bodies given a ``velocity``: moving at it at the start, without spin (in
+    2-D the scene's (x, z), the x-z plane's)."""
+    for b in scene.bodies:
+        v = getattr(b, "velocity", None)
+        if v is not None:
+            out.bodies.set_velocity(out.bodies.body_names.index(b.name), (v[0], 0.0, v[1]) if len(v) == 2 else v)
+
+
 def _warn_tilted_water(scene, out: Built) -> None:
     """Under a tilted gravity a tank's water starts at rest (its surface normal to g,
     :func:`domain_water`), but explicit water blocks (``domain.water``) start as given, level,
@@ -662,6 +679,7 @@ def build(scene, workdir: Path) -> Built:
         out.plates = plates(scene)
         _start_plates(scene, out)
         _drive_forced(scene, out)
+        _start_velocities(scene, out)
         _warn_mjcf_world(scene, out)
     _warn_tilted_water(scene, out)
     _warn_partial_row(scene, out)
@@ -777,7 +795,8 @@ def sph_fluid(scene, out: Built) -> None:
     if out.bodies is not None:
         from cosim.sph_fluid import SPHFluid
 
-        out.fluid = SPHFluid(cfg, pts, walls, z_surface=out.level if turned is None else turned,
+        z_surface = None if isinstance(scene.domain, OpenWater) else out.level if turned is None else turned
+        out.fluid = SPHFluid(cfg, pts, walls, z_surface=z_surface,
                              surface_normal_to_gravity=turned is not None, boundary=scene.fluid.body_boundary,
                              motions=motions, elastic=list(out.plates.values()), zones=zones,
                              controllers=out.controllers)

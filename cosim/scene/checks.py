@@ -28,9 +28,9 @@ from cosim.scene.shapes import corners as _corners
 from cosim.scene.shapes import hull as _hull
 from cosim.scene.shapes import rotation as _rotation
 from cosim.scene.spec import (MJCF, SPH, Analytic, LinearWaves, CylinderTank, Earthquake, Flap, Flume, ArchRib,
-                              ElasticPlate, GroundMotion, InclinedTank, IrregularWaves, NearField, NoFluid, StillWaves,
-                              PaddleRecord, Piston, PolygonTank, Potential, RegularWaves, ROLLS, RollTable, TableMotion,
-                              Tank)
+                              ElasticPlate, GroundMotion, InclinedTank, IrregularWaves, NearField, NoFluid, OpenWater,
+                              StillWaves, PaddleRecord, Piston, PolygonTank, Potential, RegularWaves, ROLLS, RollTable,
+                              TableMotion, Tank)
 
 #: the fluids whose free surface is a plane (with an incident sea on it), not particles
 _SURFACE = (Analytic, Potential)
@@ -146,8 +146,8 @@ def _check_fluid_and_domain(s, dim):
     d = s.domain
     if isinstance(s.fluid, SPH):
         if d is None:
-            raise SceneError("domain", "the SPH fluid needs a domain: a tank, flume, inclined-tank, cylinder-tank or "
-                             "polygon")
+            raise SceneError("domain", "the SPH fluid needs a domain: a tank, flume, inclined-tank, cylinder-tank, "
+                             "polygon, nearfield or open water")
     elif isinstance(s.fluid, _SURFACE) and isinstance(d, Flume):
         # the analytic fluid takes a flume's depth (the still level) and its wavemaker's far-field wave
         if s.fluid.level not in (0.0, d.depth):
@@ -177,44 +177,72 @@ def _check_fluid_and_domain(s, dim):
             raise SceneError("domain.width", "a 2-D scene is the x-z plane; leave width out")
     if isinstance(d, Tank):
         _check_tank_walls(s, d, dim)
-        for i, b in enumerate(d.water):
-            _dim_vec(b.lo, dim, f"domain.water[{i}].lo")
-            _dim_vec(b.hi, dim, f"domain.water[{i}].hi")
-            inner = (d.length,) + ((d.width,) if dim == 3 else ()) + (d.height,)
-            if any(lo < 0 for lo in b.lo) or any(h > e for h, e in zip(b.hi, inner)):
-                raise SceneError(f"domain.water[{i}]", f"the block {list(b.lo)} .. {list(b.hi)} m reaches outside "
-                                 f"the tank 0 .. {list(inner)} m")
-            for k, w in enumerate(d.walls):
-                if _blocks_overlap(b, w):
-                    raise SceneError(f"domain.water[{i}]", f"the block {list(b.lo)} .. {list(b.hi)} m overlaps the "
-                                     f"solid domain.walls[{k}] ({list(w.lo)} .. {list(w.hi)} m); let the water end "
-                                     f"where the wall begins")
-            dx = s.fluid.dx
-            for k, (lo, hi) in enumerate(zip(b.lo, b.hi)):
-                if math.floor((hi - lo) / dx + 1e-9) < 1:  # as fluid.geometry.block counts its rows
-                    raise SceneError(f"domain.water[{i}]", f"the block is {hi - lo:.4g} m thick along "
-                                     f"{_axis(k, dim)}, less than one particle spacing (fluid.dx = {dx:g} m): it "
-                                     f"would hold no particle; make it at least {dx:g} m thick, or refine dx")
-        for j, b in enumerate(d.water):
-            for i, a in enumerate(d.water[:j]):
-                if _blocks_overlap(a, b):
-                    raise SceneError(f"domain.water[{j}]", f"the block {list(b.lo)} .. {list(b.hi)} m overlaps "
-                                     f"domain.water[{i}] ({list(a.lo)} .. {list(a.hi)} m): the water there would be "
-                                     f"laid twice, its particles on top of each other; let the blocks meet (one's "
-                                     f"hi = the other's lo) without overlapping")
+        inner = (d.length,) + ((d.width,) if dim == 3 else ()) + (d.height,)
+        _check_water_blocks(s, d, dim, (0.0,) * dim, inner, f"the tank 0 .. {list(inner)} m")
+    if isinstance(d, OpenWater):
+        _check_open_water(s, d, dim)
     if isinstance(d, PolygonTank):
         _check_outline(d.vertices)
     sph = s.fluid
     if isinstance(d, ArchRib) and isinstance(sph, SPH) and d.inner_height < 3 * sph.dx:
         raise SceneError("fluid.dx", f"{sph.dx} m leaves fewer than 3 particles across the rib's cavity "
                          f"(inner_height {d.inner_height:g} m); refine dx to at most {d.inner_height / 3:.3g} m")
-    if isinstance(sph, SPH):
+    if isinstance(sph, SPH) and not isinstance(d, OpenWater):  # its blocks are checked a spacing thick
         depth = getattr(d, "level", None)
         if isinstance(d, PolygonTank):
             depth = d.fill_level - min(v[1] for v in d.vertices)
         if depth is not None and depth < 2 * sph.dx:
             raise SceneError("fluid.dx", f"{sph.dx} m leaves fewer than 2 particles over the water depth "
                              f"{depth:g} m; refine dx to at most {depth / 4:.3g} m (4 layers)")
+
+
+def _check_water_blocks(s, d, dim, lo_box, hi_box, box: str) -> None:
+    """A domain's water blocks (``domain.water``): each within ``lo_box`` .. ``hi_box`` [m]
+    (``box`` says where, for a message), clear of the tank's solid blocks, a spacing thick at least, none
+    overlapping another."""
+    for i, b in enumerate(d.water):
+        _dim_vec(b.lo, dim, f"domain.water[{i}].lo")
+        _dim_vec(b.hi, dim, f"domain.water[{i}].hi")
+        if any(lo < e for lo, e in zip(b.lo, lo_box)) or any(h > e for h, e in zip(b.hi, hi_box)):
+            raise SceneError(f"domain.water[{i}]", f"the block {list(b.lo)} .. {list(b.hi)} m reaches outside "
+                             f"{box}")
+        for k, w in enumerate(getattr(d, "walls", ())):
+            if _blocks_overlap(b, w):
+                raise SceneError(f"domain.water[{i}]", f"the block {list(b.lo)} .. {list(b.hi)} m overlaps the "
+                                 f"solid domain.walls[{k}] ({list(w.lo)} .. {list(w.hi)} m); let the water end "
+                                 f"where the wall begins")
+        dx = s.fluid.dx
+        for k, (lo, hi) in enumerate(zip(b.lo, b.hi)):
+            if math.floor((hi - lo) / dx + 1e-9) < 1:  # as fluid.geometry.block counts its rows
+                raise SceneError(f"domain.water[{i}]", f"the block is {hi - lo:.4g} m thick along "
+                                 f"{_axis(k, dim)}, less than one particle spacing (fluid.dx = {dx:g} m): it "
+                                 f"would hold no particle; make it at least {dx:g} m thick, or refine dx")
+    for j, b in enumerate(d.water):
+        for i, a in enumerate(d.water[:j]):
+            if _blocks_overlap(a, b):
+                raise SceneError(f"domain.water[{j}]", f"the block {list(b.lo)} .. {list(b.hi)} m overlaps "
+                                 f"domain.water[{i}] ({list(a.lo)} .. {list(a.hi)} m): the water there would be "
+                                 f"laid twice, its particles on top of each other; let the blocks meet (one's "
+                                 f"hi = the other's lo) without overlapping")
+
+
+def _check_open_water(s, d, dim) -> None:
+    """Open water: its box and blocks in the scene's dimension, nothing that needs walls
+    or a still level (a shaken tank, a floating placement)."""
+    _dim_vec(d.lo, dim, "domain.lo")
+    _dim_vec(d.hi, dim, "domain.hi")
+    _check_water_blocks(s, d, dim, d.lo, d.hi, f"the fluid's box {list(d.lo)} .. {list(d.hi)} m")
+    if s.base_motion is not None:
+        raise SceneError("base_motion", "open water has no tank to move; leave base_motion out, or hold the water "
+                         "in a tank (domain.kind = \"tank\")")
+    for i, b in enumerate(s.bodies):
+        if getattr(b, "place", None) == "floating":
+            raise SceneError(f"bodies[{i}].place", f"\"floating\" finds a waterline under a still level; open water "
+                             f"has none: place body {b.name!r} at a given pos")
+    if isinstance(s.fluid, SPH) and s.fluid.c0 is None and s.fluid.u_max is None:
+        from cosim.scene.setup import u_max
+
+        u_max(s, "impact")  # refuses open water that nothing sets moving
 
 
 #: each sea input (fluid.waves' field names) as the scene's key
@@ -429,6 +457,7 @@ def _check_bodies(s, dim):
                                      f"to float a body at; place it at a given pos")
             else:
                 _dim_vec(b.pos, dim, f"{key}.pos")
+            _dim_vec(getattr(b, "velocity", None), dim, f"{key}.velocity", "velocity")
             try:
                 b.fit(dim)
             except SceneError as e:
@@ -557,6 +586,8 @@ def _domain_box(d, dim, s=None):
 
         c = box_for(s)
         return [c.x[0]] + ([c.y[0]] if dim == 3 else []) + [0.0], [c.x[1]] + ([c.y[1]] if dim == 3 else []) + [c.height]
+    if isinstance(d, OpenWater):
+        return list(d.lo), list(d.hi)
     if isinstance(d, (Tank, Flume, InclinedTank)):
         lo = [0.0] * dim
         hi = [d.length] + ([d.width] if dim == 3 else []) + [d.height]

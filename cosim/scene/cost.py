@@ -45,8 +45,8 @@ from dataclasses import dataclass, field
 from cosim.scene.registry import MOORINGS
 from cosim.scene.shapes import RigidBody
 from cosim.scene.spec import (MJCF, SPH, Analytic, ArchRib, CylinderTank, ElasticPlate, Flap, Flume, InclinedTank,
-                              IrregularWaves, LinearWaves, NearField, PaddleRecord, Piston, PolygonTank, RegularWaves,
-                              Tank)
+                              IrregularWaves, LinearWaves, NearField, OpenWater, PaddleRecord, Piston, PolygonTank,
+                              RegularWaves, Tank)
 
 #: CPU [s] per particle and step of the SPH fluid at h = sqrt(2) dx, by dimension (one
 #: thread, the symplectic scheme's two pair loops, Adami's walls; measured on scenes of
@@ -231,6 +231,9 @@ def sph_particles(scene) -> tuple[float, float, float]:
             w, sides = c.y[1] - c.y[0], 1 if d.symmetry else 2  # a symmetry plane has no wall
             water = length * w * d.depth / dx ** 3
             walls = (span * (w + sides * t) * t + 2 * c.height * w * t + sides * span * c.height * t) / dx ** 3
+    elif isinstance(d, OpenWater):
+        water = sum(math.prod(h - lo for lo, h in zip(b.lo, b.hi)) for b in d.water) / dx ** dim
+        walls = 0.0
     elif isinstance(d, CylinderTank):
         r = 0.5 * d.diameter
         water = math.pi * r * r * d.depth / dx ** 3

@@ -44,7 +44,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from cosim.scene.spec import SETUPS, CylinderTank, Flume, NearField, PolygonTank, Tank
+from cosim.scene.fields import SceneError
+from cosim.scene.spec import SETUPS, CylinderTank, Flume, NearField, OpenWater, PolygonTank, Tank
 from fluid.settings import SETTINGS
 
 #: FluidConfig settings that the SPH scene class can set over the set-up's (fluid.settings:
@@ -60,8 +61,8 @@ _REASONS = {
                  "impulsive (Westergaard) wall pressures, the solver's defaults with walls carrying the pressure",
     "sloshing": "the tank moves (at a period over a third of its first sloshing period, by a record or table, "
                 "or with inclined walls): sloshing frequencies and wall pressures need the wave set-up",
-    "impact": "water blocks in a tank (a dam break): the solver's defaults, which keep violent flow's pressure "
-              "noise low",
+    "impact": "water blocks in a tank (a dam break) or in open water: the solver's defaults, which keep violent "
+              "flow's pressure noise low",
     "still": "still water",
     "defaults": "asked for: the solver's defaults",
 }
@@ -128,7 +129,7 @@ def _auto(scene) -> str:
         return "waves"
     if scene.base_motion is not None:
         return "impulsive" if _impulsive(scene) else "sloshing"
-    if isinstance(scene.domain, Tank) and scene.domain.water:
+    if isinstance(scene.domain, OpenWater) or (isinstance(scene.domain, Tank) and scene.domain.water):
         return "impact"
     return "still"
 
@@ -136,6 +137,14 @@ def _auto(scene) -> str:
 def u_max(scene, name: str) -> float:
     """The expected largest flow speed [m/s] of the scene (see the module docstring)."""
     g, d = scene.world.g, scene.domain
+    if isinstance(d, OpenWater):  # the water's fall over its blocks' height, or the fastest body's start
+        fall = math.sqrt(2.0 * g * (d.level - min(b.lo[-1] for b in d.water)))
+        speed = max((math.hypot(*b.velocity) for b in scene.bodies if getattr(b, "velocity", None)), default=0.0)
+        if max(fall, speed) == 0.0:
+            raise SceneError("fluid.c0", "nothing sets the open water's flow speed (no gravity, no body given a "
+                             "velocity), from which the speed of sound follows; give fluid.c0 [m/s] (about 10 "
+                             "times the fastest flow expected)")
+        return max(fall, speed)
     if isinstance(d, Tank) and d.water:
         top = max(b.hi[-1] for b in d.water)
         return math.sqrt(2.0 * g * top) if name == "impact" else math.sqrt(g * top)

@@ -194,6 +194,9 @@ class RigidBody(Shape):
         if self.place == "floating" and self.euler is not None:
             raise SceneError("euler", "a floating body is placed upright; give place = \"given\" with a full pos "
                              "to turn it")
+        if getattr(self, "velocity", None) is not None and getattr(self, "motion", None) is not None:
+            raise SceneError("velocity", "a body with a prescribed motion moves as its motion says; leave velocity "
+                             "out (or the motion, for a free body)")
 
     def mjcf(self, pos, dim: int, sites: dict) -> str:
         """The MuJoCo ``<body>`` element of the body with its centre at ``pos`` (x, y, z)

@@ -520,7 +520,33 @@ class NearField(Spec):
         return self.depth
 
 
-DOMAINS = (Tank, Flume, InclinedTank, CylinderTank, PolygonTank, ArchRib, NearField)
+@dataclass(frozen=True)
+class OpenWater(Spec):
+    """Water blocks in open space: no walls, no floor. The SPH fluid lives in the box
+    ``lo`` .. ``hi`` [m], which holds every block; a particle that leaves it is removed (and
+    counted as lost). For water without gravity (``world.gravity = 0``), where nothing but
+    the bodies acts on it: a blob a body strikes, which checks that the coupling exchanges
+    momentum exactly; under gravity the blocks fall freely."""
+
+    TAG = ("kind", "open")
+    kind: str = tag("open")
+    lo: tuple = required(vec(None, "lower corner of the fluid's box", "m"))
+    hi: tuple = required(vec(None, "upper corner of the fluid's box", "m"))
+    water: tuple = parts("boxes of water, inside the fluid's box (at least one)", Block)
+
+    def validate(self):
+        if len(self.lo) != len(self.hi) or not all(h > lo for lo, h in zip(self.lo, self.hi)):
+            raise SceneError("hi", f"{list(self.hi)} must exceed lo = {list(self.lo)} in every coordinate")
+        if not self.water:
+            raise SceneError("water", "give at least one block of water (lo and hi corners)")
+
+    @property
+    def level(self):
+        """The top of the highest block [m]: open water has no still level."""
+        return max(b.hi[-1] for b in self.water)
+
+
+DOMAINS = (Tank, Flume, InclinedTank, CylinderTank, PolygonTank, ArchRib, NearField, OpenWater)
 
 
 # ------------------------------------------------------------------------ excitations
@@ -930,7 +956,8 @@ _BODY_COMMON = """``pos`` is the centre [m] ((x, z) in 2-D, (x, y, z) in 3-D); w
 "floating"`` give the horizontal position only ((x,) or (x, y)): the height is the
 hydrostatic equilibrium with the moorings' pull. ``fairleads``: named points in the body
 frame [m], referred to by lines as ``"BODY.NAME"``. Give ``density`` or ``mass``. ``motion``:
-a prescribed harmonic motion instead of a free body (:class:`ForcedMotion`)."""
+a prescribed harmonic motion instead of a free body (:class:`ForcedMotion`). ``velocity``: a
+free body's velocity at the start [m/s] ((x, z) in 2-D, (x, y, z) in 3-D), without spin."""
 
 
 @dataclass(frozen=True)
@@ -948,6 +975,7 @@ class Box(shapes.BoxShape):
     euler: tuple = vec(None, "initial orientation (Euler angles)", "deg", sizes=(3,))
     fairleads: dict = table("named points in the body frame", "m")
     motion: ForcedMotion = part(None, "a prescribed harmonic motion (unset: a free body)", ForcedMotion)
+    velocity: tuple = vec(None, "initial velocity of its centre of mass (unset: at rest)", "m/s", sizes=(2, 3))
 
     def validate(self):
         super().validate()
@@ -972,6 +1000,7 @@ class Cylinder(shapes.CylinderShape):
     euler: tuple = vec(None, "initial orientation (Euler angles)", "deg", sizes=(3,))
     fairleads: dict = table("named points in the body frame", "m")
     motion: ForcedMotion = part(None, "a prescribed harmonic motion (unset: a free body)", ForcedMotion)
+    velocity: tuple = vec(None, "initial velocity of its centre of mass (unset: at rest)", "m/s", sizes=(2, 3))
 
 
 @dataclass(frozen=True)
@@ -989,6 +1018,7 @@ class Sphere(shapes.SphereShape):
     euler: tuple = vec(None, "initial orientation (Euler angles)", "deg", sizes=(3,))
     fairleads: dict = table("named points in the body frame", "m")
     motion: ForcedMotion = part(None, "a prescribed harmonic motion (unset: a free body)", ForcedMotion)
+    velocity: tuple = vec(None, "initial velocity of its centre of mass (unset: at rest)", "m/s", sizes=(2, 3))
 
 
 @dataclass(frozen=True)
@@ -1265,7 +1295,8 @@ class Scene(Spec):
 
 
 __all__ = ["World", "NoFluid", "Analytic", "Potential", "SPH", "Block", "Tank", "Beach", "Absorber", "Flume", "InclinedTank",
-           "CylinderTank", "PolygonTank", "ArchRib", "NearField", "arch_rib_monitors", "Piston", "Flap", "PaddleRecord",
+           "CylinderTank", "PolygonTank", "ArchRib", "NearField", "OpenWater", "arch_rib_monitors", "Piston", "Flap",
+           "PaddleRecord",
            "LinearWaves", "RegularWaves", "IrregularWaves", "StillWaves",
            "Shake", "Roll", "RollTable", "TableMotion",
            "Earthquake", "Record", "GroundMotion", "Box", "Cylinder", "Sphere", "MJCF", "ElasticPlate", "Line",

@@ -89,71 +89,72 @@ def moored_body(quick: bool) -> dict:
     }
 
 
-def momentum_exchange_run(scheme: str, steps: int, dx: float = 0.01, *, density: float = 800.0,
-                          side: float = 0.05, x0: float = 0.07, light_body: str = "auto") -> dict:
-    """A free 2-D square box (``density`` [kg/m^3], ``side`` [m], centre at x = ``x0``
-    [m], z = 0.17 m; no gravity, no walls) hits a resting blob of SPH water
-    off-centre, so that it slows and spins. Returns the relative drift of the total
-    linear and angular momentum (about the origin, per metre of depth) of fluid plus
-    body after ``steps`` coupling steps, and the most sub-iterations a step took."""
-    from bodies import builders
-    from bodies.mujoco_bodies import MujocoBodies
-    from cosim.coupler import Coupler
-    from cosim.sph_fluid import SPHFluid
-    from fluid.geometry import block
+def momentum_exchange_scene(quick: bool = True, values=()):
+    """The scene ``scenes/momentum-exchange.toml`` (both variants: they differ in the steps
+    run) with ``values`` set (``KEY=VALUE``, as ``cosim run --set``): a free 2-D square box
+    hits a resting blob of SPH water off-centre in open water, with no gravity."""
+    from cosim.validations import case_scene
+
+    return case_scene.load("momentum-exchange", list(values))
+
+
+def momentum_exchange_run(scene, steps: int) -> dict:
+    """Step ``scene`` (:func:`momentum_exchange_scene`) ``steps`` coupling steps, each as
+    long as the participants allow. Returns the relative drift of the total linear and
+    angular momentum (about the origin, per metre of depth) of fluid plus body, the body's
+    speed along x and spin [rad/s] at the start and end, and the most sub-iterations a
+    step took."""
+    from cosim.validations import case_scene
     from fluid.particles import Kind
-    from fluid.solver import FluidConfig
 
-    cfg = FluidConfig(dim=2, dx=dx, g=0.0, c0=20.0, domain_lo=(-1.0, -1.0), domain_hi=(2.0, 2.0))
-    fluid = SPHFluid(cfg, block(np.array([0.1, 0.0]), np.array([0.3, 0.2]), dx))
-    box = builders.box("b", (side, side), (x0, 0.0, 0.17), density=density, planar=True)
-    bodies = MujocoBodies(builders.scene(box, gravity=0.0))
-    bodies.data.qvel[:2] = [0.5, -0.2]  # m/s, towards the blob's upper corner
-    coupler = Coupler(bodies=bodies, fluid=fluid, scheme=scheme, light_body=light_body)
-    M, Iyy = bodies.masses()[0], bodies.model.body_inertia[bodies.body_ids[0]][1]
+    with case_scene.built(scene) as b:
+        bodies, fluid, coupler = b.bodies, b.sph, b.coupler
+        M, Iyy = bodies.masses()[0], bodies.model.body_inertia[bodies.body_ids[0]][1]
 
-    def totals():
-        ps = fluid.fluid.ps
-        fl = ps.kind == Kind.FLUID
-        m, x, v = ps.mass[fl], ps.pos[fl], ps.vel[fl]
+        def totals():
+            ps = fluid.ps
+            fl = ps.kind == Kind.FLUID
+            m, x, v = ps.mass[fl], ps.pos[fl], ps.vel[fl]
+            k = bodies.kinematics()
+            com, V, w = k.com[0], k.velocity[0], k.omega[0]
+            P = (m[:, None] * v).sum(axis=0) + M * V[[0, 2]]
+            L = (m * (x[:, 1] * v[:, 0] - x[:, 0] * v[:, 1])).sum() + Iyy * w[1] + M * (com[2] * V[0] - com[0] * V[2])
+            return P, L
+
+        P0, L0 = totals()
+        v0, w0 = bodies.kinematics().velocity[0, 0], bodies.kinematics().omega[0, 1]
+        iterations = 0
+        for _ in range(steps):
+            coupler.step(10.0)
+            iterations = max(iterations, coupler.subiterations)
+        P, L = totals()
         k = bodies.kinematics()
-        com, V, w = k.com[0], k.velocity[0], k.omega[0]
-        P = (m[:, None] * v).sum(axis=0) + M * V[[0, 2]]
-        L = (m * (x[:, 1] * v[:, 0] - x[:, 0] * v[:, 1])).sum() + Iyy * w[1] + M * (com[2] * V[0] - com[0] * V[2])
-        return P, L
-
-    coupler.initialize()
-    P0, L0 = totals()
-    v0, w0 = bodies.kinematics().velocity[0, 0], bodies.kinematics().omega[0, 1]
-    iterations = 0
-    for _ in range(steps):
-        coupler.step(10.0)
-        iterations = max(iterations, coupler.subiterations)
-    P, L = totals()
-    k = bodies.kinematics()
-    return {
-        "linear_drift": float(np.abs(P - P0).max() / np.abs(P0).max()),
-        "angular_drift": float(abs(L - L0) / abs(L0)),
-        "body_vx_m_s": [float(v0), float(k.velocity[0, 0])],
-        "body_omega_rad_s": [float(w0), float(k.omega[0, 1])],
-        "particles": int(fluid.fluid.ps.n),
-        "t_s": coupler.t,
-        "max_subiterations": iterations,
-    }
+        return {
+            "linear_drift": float(np.abs(P - P0).max() / np.abs(P0).max()),
+            "angular_drift": float(abs(L - L0) / abs(L0)),
+            "body_vx_m_s": [float(v0), float(k.velocity[0, 0])],
+            "body_omega_rad_s": [float(w0), float(k.omega[0, 1])],
+            "particles": int(fluid.ps.n),
+            "t_s": coupler.t,
+            "max_subiterations": iterations,
+        }
 
 
 @case("momentum-exchange", "a free body hits SPH water (no gravity, no walls): momentum of fluid + body to round-off",
       target="conserved to round-off (1e-10 relative per step)",
       quick="the full variant's 1e-12 relative drift of the total linear and angular momentum over the run "
-            "(stricter than the stated 1e-10 per step), over 300 coupling steps instead of 2000")
+            "(stricter than the stated 1e-10 per step), over 300 coupling steps instead of 2000",
+      scene=momentum_exchange_scene)
 def momentum_exchange(quick: bool) -> dict:
     """Total linear and angular momentum of fluid and body are conserved to
     round-off with the fluid-first scheme (the body receives exactly the impulse
-    and angular impulse the fluid exchanged); the start-of-step loads of the
-    explicit scheme are shown beside it for contrast."""
+    and angular impulse the fluid exchanged): the scene :func:`momentum_exchange_scene`
+    stepped by :func:`momentum_exchange_run`; the start-of-step loads of the explicit
+    scheme are shown beside it for contrast."""
     steps = 300 if quick else 2000
-    exact = momentum_exchange_run("fluid-first", steps)
-    explicit = momentum_exchange_run("explicit", steps)
+    scene = momentum_exchange_scene(quick)
+    exact = momentum_exchange_run(scene, steps)
+    explicit = momentum_exchange_run(scene.with_values(['coupling.scheme="explicit"']), steps)
     tol = 1e-12
     return {
         "metrics": {"fluid_first": exact, "explicit": {k: explicit[k] for k in ("linear_drift", "angular_drift")}},
