@@ -159,6 +159,35 @@ def test_wavemakers_drive_the_paddle(kind, tmp_path):
     assert r.summary["setup"]["name"] == "waves" and np.isfinite(r["gauge1.eta"]).all()
 
 
+@pytest.mark.parametrize("paddle", ["piston", "flap"])
+def test_a_paddle_record_started_later_starts_from_its_zero(paddle, tmp_path):
+    """A record shifted to start 0.5 s in (``t_shift`` = -0.5) with its value there as the
+    paddle's zero (``zero_at_start``) moves the paddle by the record less that value: the
+    paddle starts where the flume builds it, and 0.1 s later has moved by s(0.6) - s(0.5)
+    (a flap's top turned by that angle about the hinge)."""
+    from cosim.scene.build import PADDLE
+    from fluid.particles import Kind
+
+    t = np.linspace(0.0, 2.0, 201)
+    s = 0.05 + 0.02 * np.sin(np.pi * t)  # an offset record: 0.05 m (or rad) at the start
+    rec = PaddleRecord(paddle=paddle, file=_table(tmp_path / "p.txt", t, s), t_shift=-0.5, zero_at_start=True)
+    scene = Scene(world=W2.replace(duration=0.1), fluid=SPH(dx=0.05), domain=Flume(length=1.5, depth=0.2, height=0.3),
+                  waves=rec)
+    b = build(scene, tmp_path)
+    f = b.sph
+    paddle_ps = (f.ps.group == PADDLE) & (f.ps.kind != Kind.FLUID)
+    ids = np.sort(f.ps.ids[paddle_ps])
+    start = {i: p for i, p in zip(f.ps.ids, f.ps.pos.copy())}
+    b.coupler.run(0.1)
+    moved = {i: p for i, p in zip(f.ps.ids, f.ps.pos)}
+    ds = float(np.interp(0.6, t, s) - np.interp(0.5, t, s))  # the spline's, to its interpolation error
+    top = max(ids, key=lambda i: start[i][1])
+    dx_top = moved[top][0] - start[top][0]
+    expect = ds if paddle == "piston" else start[top][1] * math.sin(ds) + start[top][0] * (math.cos(ds) - 1)
+    assert dx_top == pytest.approx(expect, rel=2e-3)
+    assert abs(expect) < 0.01  # not the record's 0.05 offset
+
+
 @pytest.mark.parametrize("body, dim", [
     (Cylinder("c", radius=0.05, density=500.0, pos=(0.3,), place="floating"), 2),
     (Box("b", size=(0.1, 0.1, 0.08), density=600.0, pos=(0.2, 0.15), place="floating"), 3),

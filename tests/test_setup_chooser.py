@@ -80,7 +80,11 @@ SAME = ["westergaard", "westergaard-3d", "hydrostatic", "arch-rib", "elastic-tab
 OWN = {"wind-turbine-sph": "h = sqrt(2) dx, the kernel width that holds the base's static draft within 2 % at dx = "
                            "0.5 m, where the chooser's near field takes 2 dx for waves that cross a box several "
                            "wavelengths long; c0 = 5 sqrt(g d), half the steps, measured to hold surge, heave and "
-                           "tensions at dx = 1.0 m; its quick variant costs about 20 CPU-minutes"}
+                           "tensions at dx = 1.0 m; its quick variant costs about 20 CPU-minutes",
+       "floating-box-waves": "the reference's set-up (Hadzic et al. 2005 as DualSPHysics runs it): h = 1.70 dx, its "
+                             "kinematic artificial viscosity, none against the walls, each measured against the "
+                             "defaults in docs/validation/floating-box-waves_history.md; the chooser's wave set-up "
+                             "is not measured on this packet"}
 #: the cases with a scene file whose quick variant runs another fluid
 OTHER_FLUID = {"wind-turbine-moorings", "potential-hemisphere", "moored-body", "potential-irregular",
                "potential-cylinder-rao"}

@@ -97,10 +97,21 @@ def _wavemaker(scene):
         wm = RegularWavemaker(w.kind, w.height, w.period, scene.domain.depth, w.ramp, scene.world.gravity)
         return wm, wm.paddle(), wm.stroke if w.kind == "piston" else wm.stroke * scene.domain.height / wm.depth
     rec = MotionRecord.from_file(w.file, w.column, w.scale, w.t_shift)
-    reach = float(np.abs(rec.value).max())
+    zero = rec(0.0)[0] if w.zero_at_start else 0.0
+    reach = float(np.abs(rec.value - zero).max())
+    motion = _from_zero(rec, zero) if w.zero_at_start else rec
     if w.paddle == "piston":
-        return None, piston(rec), 2 * reach
-    return None, flap(rec, hinge=(0.0, 0.0)), 2 * reach * scene.domain.height
+        return None, piston(motion), 2 * reach
+    return None, flap(motion, hinge=(0.0, 0.0)), 2 * reach * scene.domain.height
+
+
+def _from_zero(rec, zero: float):
+    """A paddle record ``rec`` (``t -> (value, rate)``) less ``zero``."""
+    def motion(t):
+        value, rate = rec(t)
+        return value - zero, rate
+
+    return motion
 
 
 def _base_motion(scene):

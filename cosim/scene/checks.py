@@ -1183,12 +1183,14 @@ def _check_paddle_record(s) -> None:
         value = float(MotionRecord.from_file(w.file, w.column, w.scale, w.t_shift)(0.0)[0])
     except InputError as e:
         raise SceneError("waves.file", f"{e}; give rows of numbers: the time [s] first, then the values") from None
+    if w.zero_at_start:  # the paddle starts where it is built, whatever the record's value there
+        return
+    fix = ", a t_shift that starts it there, or set waves.zero_at_start = true"
     if w.paddle == "piston":
-        _at_rest(value, s.fluid.dx, "waves.file", "the record puts the piston", ", or a t_shift that starts it there")
+        _at_rest(value, s.fluid.dx, "waves.file", "the record puts the piston", fix)
     else:  # the flap's top moves by the angle times the flume's height
         _at_rest(value * s.domain.height, s.fluid.dx, "waves.file",
-                 f"the record turns the flap by {value:.4g} rad, which puts its top", ", or a t_shift that starts it "
-                 "there")
+                 f"the record turns the flap by {value:.4g} rad, which puts its top", fix)
 
 
 # ------------------------------------------------------------------------ an MJCF file

@@ -579,7 +579,11 @@ class Flap(_Regular):
 @dataclass(frozen=True)
 class PaddleRecord(Spec):
     """A paddle driven by a recorded history: time [s] in the first column, the piston's
-    displacement [m] or the flap's angle [rad] (times ``scale``) in ``column``."""
+    displacement [m] or the flap's angle [rad] (times ``scale``) in ``column``. To start the
+    run later in the record, shift its times back (``t_shift`` = minus the record time that
+    is the run's t = 0) and take the value there as the paddle's zero (``zero_at_start``):
+    the flume builds the paddle upright at x = 0, and a constant offset of it makes no wave
+    (to first order)."""
 
     TAG = ("kind", "record")
     kind: str = tag("record")
@@ -588,6 +592,8 @@ class PaddleRecord(Spec):
     column: int = whole(1, "the column of the value (0 is time)", lo=1)
     scale: float = num(1.0, "factor on the values (pi/180 for degrees)")
     t_shift: float = num(0.0, "added to the record's times", "s")
+    zero_at_start: bool = flag(False, "subtract the record's value at the run's start (t = 0, after t_shift): the "
+                               "paddle starts where the flume builds it")
 
 
 @dataclass(frozen=True)

@@ -3,7 +3,6 @@ moored-body with SPH, floating-box-waves."""
 
 from __future__ import annotations
 
-import dataclasses
 import math
 
 import numpy as np
@@ -125,11 +124,8 @@ def moored_body_sph(quick: bool) -> dict:
     }
 
 
-# floating-box-waves: Hadzic et al. (2005), DualSPHysics' CaseFloatingWavesVal (refdata SOURCE.txt)
-HZ_DEPTH, HZ_WALL = 0.4, 0.6  # still water, flap and wall height [m]
-HZ_BEACH = (4.0, 0.1)  # toe x [m], slope (0.6 m over 6 m)
-HZ_BOX = (0.10, 0.05, 680.0, 2.11, 0.395)  # width, height [m], density [kg/m^3], initial centre x, z [m]
-HZ_PROBES = (1.16, 2.66)  # wave probes N1, N2 [m]
+# floating-box-waves: Hadzic et al. (2005), DualSPHysics' CaseFloatingWavesVal (refdata SOURCE.txt);
+# its flume, flap record, box and probes are the scene's (scenes/floating-box-waves.toml)
 # The reference's artificial viscosity (DualSPHysics CaseFloatingWavesVal_Def.xml, refdata
 # SOURCE.txt): alpha = 0.01 at dp = 2 mm, h = coefh sqrt(2) dp with coefh = 1.2, c0 = 15
 # sqrt(g d): as a kinematic viscosity nu = alpha h c0 / 8 (Monaghan 2005, Rep. Prog. Phys.
@@ -217,29 +213,6 @@ def hadzic_measured() -> dict:
     return {n.strip(): (np.array(cols[2 * i]), np.array(cols[2 * i + 1])) for i, n in enumerate(names)}
 
 
-def hadzic_flap(t0: float):
-    """The measured flap angle (refdata ``CaseFloatingWavesVal_Flap.dat``, t [s], angle
-    [deg]) as ``angle(t) -> (θ [rad], θ' [rad/s])`` in :func:`fluid.wavemaker.flap`'s
-    sense (θ > 0 towards the water), taken relative to its value at ``t0`` [s] (a
-    run that starts later starts with the flap upright; an offset angle makes no
-    wave to first order). The file's angle is positive AWAY from the water: with
-    that sign, linear wavemaker theory (the flap transfer function of
-    :mod:`fluid.wavemaker`, each frequency propagated with its own wavenumber)
-    reproduces probe N1 with correlation 0.97 and the peaks within 8 %, the other
-    sign gives −0.97."""
-    from fluid.wavemaker import MotionRecord
-
-    rec = MotionRecord.from_file(refdata.path("floating_box_waves_hadzic2005", "CaseFloatingWavesVal_Flap.dat"),
-                                 scale=-math.pi / 180.0)
-    a0 = rec(t0)[0]
-
-    def angle(t):
-        a, w = rec(t)
-        return a - a0, w
-
-    return angle
-
-
 def hadzic_alpha(h: float, c0: float) -> float:
     """The artificial viscosity alpha [-] that gives, at smoothing length ``h`` [m] and
     speed of sound ``c0`` [m/s], the reference set-up's kinematic artificial viscosity
@@ -257,48 +230,48 @@ def hadzic_alpha(h: float, c0: float) -> float:
     return 8.0 * HZ_NU_ART / (h * c0)
 
 
-def floating_box_waves_run(dx: float, t0: float, t_end: float, gauge_every: float = 0.02,
-                           alpha: float | None = None, alpha_wall: float = 0.0, h_coef: float = HZ_H_COEF):
-    """Run the Hadzic et al. (2005) flume from ``t0`` to ``t_end`` [s] (record
-    time) at spacing ``dx`` [m]; returns histories of the box centre, roll and
-    the probes, the coupler and the fluid. ``alpha`` [-]: the artificial viscosity
-    (None: :func:`hadzic_alpha`, the reference's kinematic artificial viscosity);
-    ``alpha_wall`` [-]: its factor between fluid and walls (0: as the reference,
-    DualSPHysics' ViscoBoundFactor = 0)."""
-    from bodies import builders
-    from bodies.mujoco_bodies import MujocoBodies
-    from cosim.coupler import Coupler
-    from cosim.sph_fluid import SPHFluid
-    from fluid.flume import PADDLE_GROUP, flume
+#: the record time [s] at which the scene's run starts (its t = 0: ``waves.t_shift`` = -HZ_T0)
+HZ_T0 = 1.0
+
+
+def floating_box_scene(quick: bool):
+    """The scene ``scenes/floating-box-waves.toml`` (the full variant as written: dx = 1 cm,
+    record time 1 -> 8.2 s); the quick variant at dx = 2 cm (its artificial viscosity
+    :func:`hadzic_alpha` there) for 0.3 s."""
+    scene = case_scene.load("floating-box-waves")
+    if not quick:
+        return scene
+    from cosim.scene.build import fluid_config
+    from cosim.scene.setup import choose
+
+    c0 = fluid_config(scene, choose(scene), numbers_only=True).speed_of_sound
+    alpha = hadzic_alpha(scene.fluid.h_coef * 0.02, c0)
+    return case_scene.load("floating-box-waves", ["fluid.dx=0.02", f"fluid.alpha={case_scene.number(alpha)}",
+                                                  "world.duration=0.3"])
+
+
+def floating_box_waves_run(scene, gauge_every: float = 0.02):
+    """Run ``scene`` (:func:`floating_box_scene`: the Hadzic et al. (2005) flume, its t = 0
+    the record's :data:`HZ_T0`); returns histories of the box centre and roll at every
+    coupling step and the probes every ``gauge_every`` [s], in record time, the coupler
+    and the fluid."""
     from fluid.probes import surface_elevation
-    from fluid.solver import FluidConfig
-    from fluid.wavemaker import flap
 
-    bw, bh, rb, xc, zc = HZ_BOX
-    length = HZ_BEACH[0] + HZ_WALL / HZ_BEACH[1]
-    fl = flume(dx, length, HZ_DEPTH, HZ_WALL, back=0.0, beach=HZ_BEACH)
-    cfg = FluidConfig(dim=2, dx=dx, g=G, u_max=math.sqrt(G * HZ_DEPTH), alpha_wall=alpha_wall, h_coef=h_coef)
-    if alpha is None:
-        alpha = hadzic_alpha(cfg.h, cfg.speed_of_sound)
-    cfg = dataclasses.replace(cfg, alpha=alpha)
-    fluid = SPHFluid(cfg, fl.fluid, fl.walls, z_surface=HZ_DEPTH)
-    box = builders.box("box", (bw, bh), (xc, 0.0, zc), density=rb, planar=True)
-    bodies = MujocoBodies(builders.scene(box, gravity=G, timestep=1e-3))
-    c = Coupler(bodies=bodies, fluid=fluid, scheme="fluid-first", t0=t0)
-    c.initialize()
-    fluid.fluid.prescribe_motion(PADDLE_GROUP, flap(hadzic_flap(t0), hinge=(0.0, 0.0)))
+    gauges, depth = [g for g in scene.probes.gauges], scene.domain.depth
     rec, probes = [], []
-    nxt = [t0]
+    nxt = [0.0]
+    with case_scene.built(scene) as b:
+        bodies, fluid = b.bodies, b.sph
 
-    def record(info):
-        k = bodies.kinematics()
-        rec.append((info.t, k.com[0, 0], k.com[0, 2], float(bodies.data.qpos[2])))
-        if info.t >= nxt[0] - 1e-12:
-            probes.append((info.t, *(surface_elevation(fluid.fluid, HZ_PROBES) - HZ_DEPTH)))
-            nxt[0] += gauge_every
+        def record(info):
+            k = bodies.kinematics()
+            rec.append((HZ_T0 + info.t, k.com[0, 0], k.com[0, 2], float(bodies.data.qpos[2])))
+            if info.t >= nxt[0] - 1e-12:
+                probes.append((HZ_T0 + info.t, *(surface_elevation(fluid, gauges) - depth)))
+                nxt[0] += gauge_every
 
-    c.run(t_end, callback=record)
-    return np.array(rec), np.array(probes), c, fluid
+        b.coupler.run(scene.world.duration, callback=record)
+        return np.array(rec), np.array(probes), b.coupler, b.fluid
 
 
 def hadzic_compare(rec, probes):
@@ -383,17 +356,19 @@ def _peaks(t, v, window):
                             "measured angle (Hadzic et al. 2005): heave and sway peaks, phase",
       target="peaks within 15 %, in phase",
       quick="a smoke run of the whole set-up at dx = 2 cm from 1 to 1.3 s (the packet reaches the box after 6 s): "
-            "every value finite, the box within one spacing of its initial position, no particle lost")
+            "every value finite, the box within one spacing of its initial position, no particle lost",
+      scene=floating_box_scene)
 def floating_box_waves(quick: bool) -> dict:
     """Set-up (Barreiro et al. 2016, §4.1; Hadzic, Hennig, Peric & Xing-Kaeding 2005, Appl.
     Math. Modelling 29:1196-1210; the DualSPHysics case CaseFloatingWavesVal as in
     refdata SOURCE.txt): 2-D flume, still water 0.4 m, flap hinged at the bottom of
-    x = 0 driven by the measured angle (the file's sign is away from the water:
-    :func:`hadzic_flap`), 1:10 beach from x = 4 m; the box 0.10 x 0.05 m, 680
+    x = 0 driven by the measured angle (the file's sign is away from the water: its
+    scale is -pi/180), 1:10 beach from x = 4 m; the box 0.10 x 0.05 m, 680
     kg/m^3, initially x = 2.06..2.16 m, z = 0.37..0.42 m (it starts 4 mm above its
-    Archimedes draft of 34 mm), free (no lines). Record time is the experiment's:
-    the run starts at ``t0`` = 1 s with the flap upright (before, it moves by less than
-    0.18 deg; the packet is a chirp that focuses near the box). Reference: the digitised heave
+    Archimedes draft of 34 mm), free (no lines): the scene :func:`floating_box_scene`, run
+    by :func:`floating_box_waves_run`. Record time is the experiment's: the run starts at
+    :data:`HZ_T0` = 1 s with the flap upright (the record's angle there its zero; before, it
+    moves by less than 0.18 deg; the packet is a chirp that focuses near the box). Reference: the digitised heave
     (6.3-8.1 s), sway (6.3-8.1 s) and probes N1 (x = 1.16 m), N2 (2.66 m) of
     refdata; heave and sway are displacements from the position at rest (the
     SPH box's mean over the 0.5 s before the first measured sample, 6.3 s).
@@ -424,15 +399,15 @@ def floating_box_waves(quick: bool) -> dict:
     (best-correlation lags 0.012 and 0.002 s); at dx = 2 cm the focused packet's crest at N2 is
     22 % low. The figures and what limits them: docs/validation/floating-box-waves_history.md.
     """
-    dx = 0.02 if quick else 0.01
-    t0, t_end = 1.0, (1.3 if quick else 8.2)
-    rec, probes, c, fluid = floating_box_waves_run(dx, t0, t_end)
+    scene = floating_box_scene(quick)
+    dx, t0 = scene.fluid.dx, HZ_T0
+    rec, probes, c, fluid = floating_box_waves_run(scene)
     t, x, z, th = rec.T
-    bw, bh, rb, xc, zc = HZ_BOX
+    xc, zc = scene.bodies[0].pos
     heave, sway = z - zc, x - xc
     ps = fluid.fluid.ps
     lost = {k: int(v) for k, v in fluid.fluid.counters.removed.items() if v}
-    metrics = {"dx_m": dx, "t0_s": t0, "t_end_s": t_end, "lost_particles": lost,
+    metrics = {"dx_m": dx, "t0_s": t0, "t_end_s": t0 + scene.world.duration, "lost_particles": lost,
                "heave_range_m": [float(heave.min()), float(heave.max())],
                "sway_range_m": [float(sway.min()), float(sway.max())],
                "max_roll_deg": float(np.degrees(np.abs(th)).max())}
