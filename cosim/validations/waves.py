@@ -390,13 +390,13 @@ def floating_box_waves(quick: bool) -> dict:
     probes (the settings measured one at a time:
     docs/validation/floating-box-waves_history.md).
 
-    Full: dx = 1 cm (box 10 x 5 particles, 29 000 particles), 1 → 8.2 s. Quick: dx = 2 cm, 1 → 1.3 s,
+    Full: dx = 1 cm (box 10 x 5 particles, 30 700 particles), 1 → 8.2 s. Quick: dx = 2 cm, 1 → 1.3 s,
     a smoke run of the whole set-up (the flap follows its record, the box stays
     afloat at its initial position within dx, no particle lost): too short for
     the packet, which reaches the box after 6 s.
 
-    At dx = 1 cm the full variant passes: heave and sway peaks within 11 % and 5 %, in phase
-    (best-correlation lags 0.012 and 0.002 s); at dx = 2 cm the focused packet's crest at N2 is
+    At dx = 1 cm the full variant passes: heave and sway peaks within 11 % and 1 %, in phase
+    (best-correlation lags 0.002 and -0.004 s); at dx = 2 cm the focused packet's crest at N2 is
     22 % low. The figures and what limits them: docs/validation/floating-box-waves_history.md.
     """
     scene = floating_box_scene(quick)
