@@ -117,6 +117,13 @@ def built(scene) -> Iterator:
             close_participants(b)
 
 
+def shaken_samples(scene) -> tuple[int, int]:
+    """(samples a period, whole periods run) of a scene whose base is shaken harmonically:
+    its ``world.sample_every`` and ``world.duration`` in periods of its ``base_motion``."""
+    period = scene.base_motion.period
+    return round(period / scene.world.sample_every), round(scene.world.duration / period)
+
+
 def section(scene):
     """The 2-D section of a shaken 3-D tank ``scene`` (its domain's ``width`` along y): the
     same tank, shaking, fluid and run in the x-z plane, its pressure patches taken from

@@ -320,8 +320,7 @@ def _scene_profile(scene, periods_skip: int = 1) -> dict:
     from cosim.validations import case_scene
 
     d, shake = scene.domain, scene.base_motion
-    samples = round(shake.period / scene.world.sample_every)
-    periods = round(scene.world.duration / shake.period)
+    samples, periods = case_scene.shaken_samples(scene)
     with case_scene.built(scene) as b:
         return westergaard_profile(b.sph, b.base_motion, shake.acceleration, shake.period, d.length, d.depth,
                                    d.width or 0.0, periods_skip, periods - periods_skip, samples)

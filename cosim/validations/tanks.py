@@ -289,8 +289,7 @@ def run_inclined_scene(scene, periods_skip: int = 1) -> dict:
     ``periods_skip`` of them, sampled at its ``world.sample_every``, on the slice's mid-plane
     in 3-D."""
     d, shake = scene.domain, scene.base_motion
-    samples = round(shake.period / scene.world.sample_every)
-    periods = round(scene.world.duration / shake.period)
+    samples, periods = case_scene.shaken_samples(scene)
     with case_scene.built(scene) as b:
         f = b.sph
         return _inclined_profile(f, b.base_motion, f.config, d.angle, d.length, d.depth, shake.acceleration,
@@ -545,8 +544,7 @@ def run_cylinder_scene(scene, periods_skip: int) -> dict:
     and read as :func:`run_cylinder` reads its tank: the pressure fitted over the scene's
     periods after ``periods_skip`` of them, sampled at its ``world.sample_every``."""
     d, shake = scene.domain, scene.base_motion
-    samples = round(shake.period / scene.world.sample_every)
-    periods = round(scene.world.duration / shake.period)
+    samples, periods = case_scene.shaken_samples(scene)
     with case_scene.built(scene) as b:
         f = b.sph
         return _cylinder_profile(f, b.base_motion, f.config, shake.acceleration, shake.period, d.diameter, d.depth,
