@@ -10,13 +10,14 @@ chosen from what a scene contains, :mod:`cosim.scene.runner` for what a run writ
 from cosim.scene.fields import SceneError
 from cosim.scene.spec import (MJCF, SPH, Absorber, Analytic, ArchRib, Beach, Block, Box, Coupling, Cylinder, CylinderTank, Earthquake,
                               ElasticPlate, Flap, Flume, GroundMotion, InclinedTank, IrregularWaves, Line, LinearWaves,
-                              Moorings, NearField, NoFluid, OpenWater, PaddleRecord, Patch, Piston, PolygonTank, Potential, Probes, Record,
-                              RegularWaves, Roll, RollTable, Scene, Shake, Sphere, TableMotion, Tank, World,
+                              Moorings, NearField, NoFluid, OpenWater, PaddleRecord, Patch, Piston, PolygonTank,
+                              Potential, Probes, Record, RegularWaves, Roll, RollTable, Scene, Shake, Sphere, TableMotion, Tank, World,
                               arch_rib_monitors)
 
 __all__ = ["MJCF", "SPH", "Absorber", "Analytic", "ArchRib", "Beach", "Block", "Box", "Coupling", "Cylinder", "CylinderTank", "Earthquake",
            "ElasticPlate",
            "Flap", "Flume", "GroundMotion", "InclinedTank", "IrregularWaves", "Line", "LinearWaves", "Moorings",
-           "NearField", "NoFluid", "OpenWater", "PaddleRecord", "Patch", "Piston", "PolygonTank", "Potential", "Probes", "Record", "RegularWaves",
+           "NearField", "NoFluid", "OpenWater", "PaddleRecord", "Patch", "Piston", "PolygonTank", "Potential", "Probes",
+           "Record", "RegularWaves",
            "Roll", "RollTable", "Scene", "SceneError", "Shake",
            "Sphere", "TableMotion", "Tank", "World", "arch_rib_monitors"]

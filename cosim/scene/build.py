@@ -25,8 +25,8 @@ from pathlib import Path
 import numpy as np
 
 from cosim.scene.spec import (MJCF, ROLLS, SPH, Analytic, LinearWaves, CylinderTank, Earthquake, ElasticPlate, Flap,
-                              Flume, GroundMotion, InclinedTank, NearField, OpenWater, Piston, PolygonTank, Potential, Roll,
-                              RollTable, Shake, TableMotion, Tank)
+                              Flume, GroundMotion, InclinedTank, NearField, OpenWater, Piston, PolygonTank, Potential,
+                              Roll, RollTable, Shake, TableMotion, Tank)
 
 PADDLE, WALLS = 1, 0  # the flume's paddle group and every tank's wall group
 

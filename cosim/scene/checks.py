@@ -198,8 +198,8 @@ def _check_fluid_and_domain(s, dim):
 
 def _check_water_blocks(s, d, dim, lo_box, hi_box, box: str) -> None:
     """A domain's water blocks (``domain.water``): each within ``lo_box`` .. ``hi_box`` [m]
-    (``box`` says where, for a message), clear of the tank's solid blocks, a spacing thick at least, none
-    overlapping another."""
+    (``box`` says where, for a message), clear of the tank's solid blocks, a spacing thick at
+    least, none overlapping another."""
     for i, b in enumerate(d.water):
         _dim_vec(b.lo, dim, f"domain.water[{i}].lo")
         _dim_vec(b.hi, dim, f"domain.water[{i}].hi")
