@@ -53,6 +53,11 @@ MAX_LINE_STRAIN = 0.3
 #: shaking tables' and recorded earthquakes' peaks (about 3-4 g)
 MAX_BASE_ACCELERATION = 5 * G0
 
+#: the fastest a body may start [m/s]: above the fastest water entries these models are used
+#: for (an aircraft ditching, about 70 m/s; a free-fall lifeboat, 25-30 m/s)
+MAX_BODY_SPEED = 100.0
+BODY_SPEED_WHY = "above the fastest water entries these models serve (an aircraft ditching, about 70 m/s)"
+
 #: how far from its centre a body's fairlead may lie, in bounding radii of the body [-]
 #: (its hull and a short arm: a fairlead further out is not on the body)
 FAIRLEAD_REACH = 1.5

@@ -29,6 +29,7 @@ import math
 
 import numpy as np
 
+from cosim.scene import limits as L
 from cosim.scene.fields import SceneError, Spec
 
 
@@ -197,6 +198,10 @@ class RigidBody(Shape):
         if getattr(self, "velocity", None) is not None and getattr(self, "motion", None) is not None:
             raise SceneError("velocity", "a body with a prescribed motion moves as its motion says; leave velocity "
                              "out (or the motion, for a free body)")
+        speed = math.hypot(*self.velocity) if getattr(self, "velocity", None) is not None else 0.0
+        if speed > L.MAX_BODY_SPEED:
+            raise SceneError("velocity", f"{list(self.velocity)} m/s: {speed:.4g} m/s is beyond {L.MAX_BODY_SPEED:g} "
+                             f"m/s, {L.BODY_SPEED_WHY}; give the body's speed in m/s")
 
     def mjcf(self, pos, dim: int, sites: dict) -> str:
         """The MuJoCo ``<body>`` element of the body with its centre at ``pos`` (x, y, z)
