@@ -195,12 +195,12 @@ class RigidBody(Shape):
         if self.place == "floating" and self.euler is not None:
             raise SceneError("euler", "a floating body is placed upright; give place = \"given\" with a full pos "
                              "to turn it")
-        if getattr(self, "velocity", None) is not None and getattr(self, "motion", None) is not None:
+        v = getattr(self, "velocity", None)
+        if v is not None and getattr(self, "motion", None) is not None:
             raise SceneError("velocity", "a body with a prescribed motion moves as its motion says; leave velocity "
                              "out (or the motion, for a free body)")
-        speed = math.hypot(*self.velocity) if getattr(self, "velocity", None) is not None else 0.0
-        if speed > L.MAX_BODY_SPEED:
-            raise SceneError("velocity", f"{list(self.velocity)} m/s: {speed:.4g} m/s is beyond {L.MAX_BODY_SPEED:g} "
+        if v is not None and math.hypot(*v) > L.MAX_BODY_SPEED:
+            raise SceneError("velocity", f"{list(v)} m/s: {math.hypot(*v):.4g} m/s is beyond {L.MAX_BODY_SPEED:g} "
                              f"m/s, {L.BODY_SPEED_WHY}; give the body's speed in m/s")
 
     def mjcf(self, pos, dim: int, sites: dict) -> str:

@@ -350,8 +350,9 @@ def westergaard(quick: bool) -> dict:
     0.01, Fourtakas delta = 0.1, CFL 0.2 (the defaults); 2 periods skipped, 3 fitted (quick:
     1 and 2), 40 samples a period. Why h = sqrt(2) dx and not the sloshing set-up's 2 dx:
     shaken far above its first sloshing frequency the water's pressure is impulsive and the
-    waves' speed hardly enters; at dx = 0.1 m h = 2 dx reads 0.073 face RMS against 0.040 (docs/setup_chooser.md). A scene of
-    this kind gets this set-up from the chooser ("impulsive", :mod:`cosim.scene.setup`).
+    waves' speed hardly enters; at dx = 0.1 m h = 2 dx reads 0.073 face RMS against 0.040
+    (docs/setup_chooser.md). A scene of this kind gets this set-up from the chooser
+    ("impulsive", :mod:`cosim.scene.setup`).
 
     Reference: the exact incompressible wall pressure of this 3 m tank
     (:func:`westergaard_series`; base k_p = 0.728, Westergaard's semi-infinite 0.742, the

@@ -230,10 +230,6 @@ def hadzic_alpha(h: float, c0: float) -> float:
     return 8.0 * HZ_NU_ART / (h * c0)
 
 
-#: the record time [s] at which the scene's run starts (its t = 0: ``waves.t_shift`` = -HZ_T0)
-HZ_T0 = 1.0
-
-
 def floating_box_scene(quick: bool):
     """The scene ``scenes/floating-box-waves.toml`` (the full variant as written: dx = 1 cm,
     record time 1 -> 8.2 s); the quick variant at dx = 2 cm (its artificial viscosity
@@ -252,12 +248,12 @@ def floating_box_scene(quick: bool):
 
 def floating_box_waves_run(scene, gauge_every: float = 0.02):
     """Run ``scene`` (:func:`floating_box_scene`: the Hadzic et al. (2005) flume, its t = 0
-    the record's :data:`HZ_T0`); returns histories of the box centre and roll at every
+    the record's ``-waves.t_shift``); returns histories of the box centre and roll at every
     coupling step and the probes every ``gauge_every`` [s], in record time, the coupler
     and the fluid."""
     from fluid.probes import surface_elevation
 
-    gauges, depth = [g for g in scene.probes.gauges], scene.domain.depth
+    gauges, depth, t0 = list(scene.probes.gauges), scene.domain.depth, -scene.waves.t_shift
     rec, probes = [], []
     nxt = [0.0]
     with case_scene.built(scene) as b:
@@ -265,9 +261,9 @@ def floating_box_waves_run(scene, gauge_every: float = 0.02):
 
         def record(info):
             k = bodies.kinematics()
-            rec.append((HZ_T0 + info.t, k.com[0, 0], k.com[0, 2], float(bodies.data.qpos[2])))
+            rec.append((t0 + info.t, k.com[0, 0], k.com[0, 2], float(bodies.data.qpos[2])))
             if info.t >= nxt[0] - 1e-12:
-                probes.append((HZ_T0 + info.t, *(surface_elevation(fluid, gauges) - depth)))
+                probes.append((t0 + info.t, *(surface_elevation(fluid, gauges) - depth)))
                 nxt[0] += gauge_every
 
         b.coupler.run(scene.world.duration, callback=record)
@@ -366,10 +362,10 @@ def floating_box_waves(quick: bool) -> dict:
     scale is -pi/180), 1:10 beach from x = 4 m; the box 0.10 x 0.05 m, 680
     kg/m^3, initially x = 2.06..2.16 m, z = 0.37..0.42 m (it starts 4 mm above its
     Archimedes draft of 34 mm), free (no lines): the scene :func:`floating_box_scene`, run
-    by :func:`floating_box_waves_run`. Record time is the experiment's: the run starts at
-    :data:`HZ_T0` = 1 s with the flap upright (the record's angle there its zero; before, it
-    moves by less than 0.18 deg; the packet is a chirp that focuses near the box). Reference: the digitised heave
-    (6.3-8.1 s), sway (6.3-8.1 s) and probes N1 (x = 1.16 m), N2 (2.66 m) of
+    by :func:`floating_box_waves_run`. Record time is the experiment's: the run starts 1 s
+    into it (``waves.t_shift = -1``) with the flap upright (the record's angle there its
+    zero; before, it moves by less than 0.18 deg; the packet is a chirp that focuses near
+    the box). Reference: the digitised heave (6.3-8.1 s), sway (6.3-8.1 s) and probes N1 (x = 1.16 m), N2 (2.66 m) of
     refdata; heave and sway are displacements from the position at rest (the
     SPH box's mean over the 0.5 s before the first measured sample, 6.3 s).
     Target: heave and sway peaks within 15 %, in phase (the lag of best correlation
@@ -400,7 +396,7 @@ def floating_box_waves(quick: bool) -> dict:
     22 % low. The figures and what limits them: docs/validation/floating-box-waves_history.md.
     """
     scene = floating_box_scene(quick)
-    dx, t0 = scene.fluid.dx, HZ_T0
+    dx, t0 = scene.fluid.dx, -scene.waves.t_shift
     rec, probes, c, fluid = floating_box_waves_run(scene)
     t, x, z, th = rec.T
     xc, zc = scene.bodies[0].pos
