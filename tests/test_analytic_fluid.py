@@ -82,6 +82,7 @@ def heave_period(dt=None, h=1.0, rho_b=500.0, width=2.0, ma=600.0, T=6.0):
     return np.mean(np.diff(tc)), expected, f
 
 
+@pytest.mark.long
 def test_undamped_heave_period_matches_hydrostatics_with_added_mass():
     """T = 2 pi sqrt((m + m_a) / (rho g A_wp)) for a wall-sided box, at the default
     (stability-limited) coupling step, and converging as the step shrinks."""

@@ -167,6 +167,7 @@ def harmonic(t, y, w):
     return math.hypot(c[0], c[1]), math.atan2(c[1], c[0])
 
 
+@pytest.mark.long
 @pytest.mark.parametrize("dim, direction", [(2, 0.0), (3, 30.0)])
 def test_small_floating_box_rides_a_long_wave(dim, direction):
     """T = 20 s in 20 m (the Barreiro et al. 2016 wave, λ = 271 m) on a 1 m box: heave RAO = 1 and in

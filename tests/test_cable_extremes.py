@@ -48,6 +48,7 @@ def test_free_fall_slack_then_taut_keeps_energy_bookkept():
     assert z_low < -0.75 and strain < 0.01
 
 
+@pytest.mark.long
 def test_stiff_short_steel_wire_is_stable():
     EA = 200e9 * math.pi / 4 * 1e-3**2  # 1 mm steel wire, 157 kN
     c = SPHCable(1.0, 51, EA, 0.00617, (0, 0), (0.9, 0.1), omega=20.0)
@@ -154,6 +155,7 @@ def test_heavy_mass_damping_settles():
     assert run(True).max_speed() > 0.5  # the old step: 1.1 m/s after 5 s, never settles
 
 
+@pytest.mark.long
 def test_many_particles_heavy_seabed_contact_with_defaults():
     """1000 particles of the Johanning chain (EA = 1e4 N, 0.12 kg/m), X = 5.5 m: half the line on the
     seabed with Coulomb friction 1; 0.2 s of a 2 mm surge at the defaults."""

@@ -115,6 +115,7 @@ def test_save_and_load_state_replays_exactly():
     np.testing.assert_array_equal(m.fairlead_forces(), a)
 
 
+@pytest.mark.long
 def test_swaps_for_the_catenary_in_a_coupled_scene():
     """The same MooringLine list drives either model through the coupler; with a (nearly)
     fixed body the settled SPH line pulls the fairlead as the catenary does."""

@@ -261,6 +261,7 @@ def _same_outputs(a: Path, b: Path):
         assert "snapshot_times" in seen and any(n.startswith("series/ledger") for n in seen)
 
 
+@pytest.mark.long
 def test_a_run_interrupted_between_checkpoints_resumes_bit_for_bit(tmp_path, monkeypatch):
     """The main example, interrupted mid-step far from any event with checkpoints written
     by wall time, resumes to the outputs of the run never interrupted (and never
@@ -303,6 +304,7 @@ def _env(tmpdir: Path) -> dict:
                 PYTHONPATH=os.pathsep.join([str(ROOT)] + [x for x in [os.environ.get("PYTHONPATH")] if x]))
 
 
+@pytest.mark.long
 @pytest.mark.parametrize("model", ["fmu", "moordyn"])
 def test_runs_leave_no_temporary_folder(model, tmp_path):
     """A run stopped by SIGTERM mid-run and a run refused while it is built leave nothing

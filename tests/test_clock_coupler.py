@@ -35,6 +35,7 @@ class Recorder:
         del self.calls[state[1]:]
 
 
+@pytest.mark.long
 def test_million_steps_land_on_100_s():
     c = Coupler([Recorder(record=False)], dt=1e-4)
     assert c.run(100.0) == 1_000_000

@@ -35,8 +35,9 @@ BOX = Box("box", size=(0.2, 0.1), density=500.0, pos=(0.5,), place="floating")
                                                            fill_level=0.3)),
     Scene(world=W3, fluid=SPH(dx=0.05), domain=Tank(length=1.0, width=0.5, height=0.6, depth=0.3)),
     Scene(world=W3, fluid=SPH(dx=0.05), domain=CylinderTank(diameter=1.0, depth=0.3, height=0.5)),
-    Scene(world=W3, fluid=SPH(dx=0.05), domain=Flume(length=3.0, width=0.5, depth=0.3, height=0.45,
-                                                     beach=Beach(2.0, 0.3)), waves=Piston(height=0.04, period=1.0)),
+    pytest.param(Scene(world=W3, fluid=SPH(dx=0.05), domain=Flume(length=3.0, width=0.5, depth=0.3, height=0.45,
+                                                                  beach=Beach(2.0, 0.3)),
+                       waves=Piston(height=0.04, period=1.0)), marks=pytest.mark.long),  # a pair loop of its own
     Scene(world=W2, fluid=SPH(dx=0.005), domain=Tank(length=0.584, height=0.32, water=[Block((0.0, 0.0),
                                                                                              (0.146, 0.292))]),
           bodies=[ElasticPlate("plate", length=0.08, thickness=0.012, E=1e6, density=2500.0, base=(0.298, 0.0))]),
@@ -92,6 +93,7 @@ def test_the_lines_internal_steps_are_the_models(model, tmp_path):
     assert dt == pytest.approx(got, rel=1e-9 if model == "moordyn" else 0.06)
 
 
+@pytest.mark.long
 def test_the_coupling_steps_and_the_estimate_in_the_summary(tmp_path):
     """The coupling steps estimated are those the run takes, to 15 % (the lines' bound on
     MoorDyn is taken from the catenary at rest), and summary.json keeps the estimate."""
@@ -149,6 +151,7 @@ def test_each_unbounded_work_is_named_by_its_field(change, field):
     assert e.value.path == field, str(e.value)
 
 
+@pytest.mark.long
 def test_dry_run_prints_the_estimate_and_writes_nothing(tmp_path):
     """``cosim run --dry-run``: the estimate on stdout, exit 0, no folder; a run it would
     refuse: exit 2 and the refusal."""

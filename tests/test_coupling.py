@@ -121,6 +121,7 @@ def tethered_body(lines, sites, force, t_end=6.0):
     return b, m, c
 
 
+@pytest.mark.long
 def test_a_pulled_body_is_held_at_the_line_length():
     """Inextensible, nearly weightless line: the body stops with the chord at L
     (to the constraint's softness) and the tether carries the pull."""
@@ -139,6 +140,7 @@ def test_a_pulled_body_is_held_at_the_line_length():
     np.testing.assert_allclose(total + pull, 0.0, atol=2e-3 * F)
 
 
+@pytest.mark.long
 def test_two_taut_lines_share_a_load_as_statics_says():
     """A buoyant pull F up on a body held by two taut lines at different angles:
     T1 e1 + T2 e2 = -F (a two-bar truss), not Barreiro et al. 2016, Eq. 40's proportional split."""

@@ -262,6 +262,7 @@ class Storm(AnalyticFluid):
         return F + self.push, T
 
 
+@pytest.mark.long
 def test_a_storm_pulls_the_catenary_taut_and_the_tether_holds_the_box():
     """A 2 x 1 m box (500 kg/m^3, 1 m thick) on one slack inextensible catenary line
     (25 m, 50 N/m, anchor 20 m upwind and 10 m down) is pushed downwind by 10 kN:
@@ -295,6 +296,7 @@ def test_a_storm_pulls_the_catenary_taut_and_the_tether_holds_the_box():
     assert np.abs(b.kinematics().velocity).max() < 1e-3
 
 
+@pytest.mark.long
 def test_a_heavy_body_without_a_floor_stops_with_a_message_not_a_crash():
     """Ratio 10 with no MuJoCo floor: only the SPH wall holds the box, and at dx = 2 cm
     it sinks through; the run stops naming the step, the body and the fix."""

@@ -145,6 +145,7 @@ def test_a_dynamic_line_whose_mean_force_is_not_finite_stops_the_run_naming_it()
         c.run(DT)
 
 
+@pytest.mark.long
 def test_a_light_body_on_a_dynamic_line_in_sph_water_rises_at_the_lines_terminal_speed():
     """A submerged 2-D box of density ratio 0.1 (sub-iterated with the SPH fluid) held by a
     dashpot line (dynamic, sub-iterated inside each of the fluid's tries) rises steadily at

@@ -79,6 +79,7 @@ def test_momentum_lost_by_the_fluid_is_what_the_links_receive_to_round_off(dim, 
         assert J[1] == 0.0
 
 
+@pytest.mark.long
 def test_clamped_to_a_free_base_fluid_and_structure_keep_their_momentum():
     """The clamp on a free base: its reaction is internal, and fluid + base + links keep
     their total linear momentum to MuJoCo's RK4 truncation (a chain's momentum is not
@@ -130,7 +131,8 @@ def _side_of_plate(fluid, bodies, top_band):
     return dict(zip(ps.ids[fl], right)), dict(zip(ps.ids[fl], free))
 
 
-@pytest.mark.parametrize("thickness", [0.01, pytest.param(0.005, marks=pytest.mark.long)])
+@pytest.mark.long
+@pytest.mark.parametrize("thickness", [0.01, 0.005])
 def test_no_fluid_particle_crosses_a_plate_under_two_spacings_thick(thickness):
     """A dam-break column (0.15 x 0.3 m, dx = 10 mm) strikes a plate one spacing (and half a
     spacing) thick with the thin-wall treatment (two columns of particles, each taking its
@@ -216,6 +218,7 @@ base = [0.298, 0.0]
 """
 
 
+@pytest.mark.long
 def test_an_elastic_plate_is_a_scene_body_with_corner_and_tip_probes(tmp_path):
     from cosim.scene import ElasticPlate, Scene
 

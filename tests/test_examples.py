@@ -89,6 +89,7 @@ def test_moored_box_compares_every_model(tmp_path):
         assert (tmp_path / "out" / "moored_box" / model / "summary.json").is_file()
 
 
+@pytest.mark.long
 def test_two_line_mooring(tmp_path):
     out = _run([EXAMPLES / "two_line_mooring.py", "--out", tmp_path])
     assert out.returncode == 0, out.stderr[-3000:]

@@ -132,6 +132,7 @@ def test_sinking_cylinder_reference_starts_at_the_impulsive_acceleration():
     assert v[0] / 1e-4 == pytest.approx(700.0 / 1700.0 * 9.81, rel=1e-5)
 
 
+@pytest.mark.long
 def test_sinking_cylinder_quick():
     """The 2-D cylinder (r = 1 m, 1200 kg/m^3) released half submerged, dx = 0.1 m:
     velocity over the first 0.25 s within 20 % of the added-mass + buoyancy model

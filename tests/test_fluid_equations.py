@@ -113,7 +113,7 @@ def test_fourtakas_diffusion_vanishes_at_the_free_surface_where_molteni_does_not
     assert np.abs(d_f).max() < 1e-3 * np.abs(d_m[top]).mean()
 
 
-@pytest.mark.parametrize("dim", [2, 3])
+@pytest.mark.parametrize("dim", [2, pytest.param(3, marks=pytest.mark.long)])
 def test_antuono_diffusion_vanishes_for_any_linear_density_field_where_the_others_do_not(dim):
     """Dinçer & Demir 2020, Eq. 1-4 on a disordered set at rest under gravity, with a
     density field linear in every direction (not the hydrostatic one): the renormalised

@@ -156,6 +156,7 @@ def test_xsph_moves_particles_with_the_smoothed_velocity(integrator):
         np.testing.assert_allclose(dpos, 1e-4 * xs, rtol=0, atol=2e-2 * np.abs(1e-4 * xs).max())
 
 
+@pytest.mark.long
 def test_dam_break_with_xsph_and_laminar_viscosity_is_stable():
     """The dam break of the validation set at 12 particles across the column, with
     XSPH (eps = 0.5) and water's viscosity: it runs to T = 2 without losing a particle or

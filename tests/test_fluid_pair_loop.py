@@ -111,12 +111,13 @@ def scene(dim, seed, jitter=0.15, mass_spread=0.1):
 
 
 # every kernel and dimension, and the optional terms with each dimension (each variant
-# costs a few seconds of compilation on a cold cache; the ones without optional terms
-# are compiled by the other fluid tests anyway)
+# costs a few seconds of compilation on a cold cache: the fast tier keeps the variants its
+# other tests compile anyway, the long tier the ones no other test uses)
 @pytest.mark.parametrize("dim, kernel, nu, xsph, alpha_wall", [
     (2, "wendland", 0.0, 0.0, 1.0), (3, "wendland", 0.0, 0.0, 1.0), (2, "cubic", 0.0, 0.0, 1.0),
     (3, "cubic", 0.0, 0.0, 1.0), (2, "wendland", 1e-3, 0.3, 1.0), (3, "wendland", 1e-3, 0.3, 1.0),
-    (2, "wendland", 0.0, 0.0, 0.25), (2, "wendland", 0.0, 0.0, "antuono"), (3, "cubic", 0.0, 0.0, "antuono"),
+    pytest.param(2, "wendland", 0.0, 0.0, 0.25, marks=pytest.mark.long), (2, "wendland", 0.0, 0.0, "antuono"),
+    pytest.param(3, "cubic", 0.0, 0.0, "antuono", marks=pytest.mark.long),
     (2, "wendland", 0.0, 0.0, "fade"), (3, "wendland", 0.0, 0.0, "fade"), (3, "wendland", 0.0, 0.0, "tilted")])
 def test_pair_loop_equals_brute_force(dim, kernel, nu, xsph, alpha_wall):
     check_pair_loop(dim, kernel, nu, xsph, alpha_wall, "float64")
@@ -128,10 +129,13 @@ F32_TOL = 3e-6
 
 
 # the float32 loop (FluidConfig(precision="float32")) in both dimensions, with each optional
-# term once
+# term once (the fast tier: the variant without optional terms, which the solver's float32
+# tests compile anyway)
 @pytest.mark.parametrize("dim, kernel, nu, xsph, alpha_wall", [
-    (2, "wendland", 0.0, 0.0, 0.25), (3, "cubic", 1e-3, 0.3, 1.0), (3, "wendland", 0.0, 0.0, "fade"),
-    (2, "cubic", 0.0, 0.0, "antuono")])
+    (2, "wendland", 0.0, 0.0, 1.0), pytest.param(2, "wendland", 0.0, 0.0, 0.25, marks=pytest.mark.long),
+    pytest.param(3, "cubic", 1e-3, 0.3, 1.0, marks=pytest.mark.long),
+    pytest.param(3, "wendland", 0.0, 0.0, "fade", marks=pytest.mark.long),
+    pytest.param(2, "cubic", 0.0, 0.0, "antuono", marks=pytest.mark.long)])
 def test_float32_pair_loop_equals_brute_force_to_float32_round_off(dim, kernel, nu, xsph, alpha_wall):
     check_pair_loop(dim, kernel, nu, xsph, alpha_wall, "float32")
 

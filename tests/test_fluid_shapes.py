@@ -168,6 +168,7 @@ def test_cylinder_tank():
     assert f[:, 2].max() < 0.6 and w[:, 2].max() < 1.0
 
 
+@pytest.mark.long
 def test_inclined_tank_at_rest_keeps_its_particles_in_place():
     # 2-D, 45 deg, 0.4 m long, 0.2 m deep, dx = 0.02 m, 1 s at rest with the solver's
     # defaults: with the conforming fluid layer no particle moves by more than 2 dx

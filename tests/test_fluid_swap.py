@@ -55,6 +55,7 @@ def test_analytic_flume_wave_has_wavemaker_theory_height(kind, tmp_path):
     assert built.level == pytest.approx(d) and built.fluid.eta == pytest.approx(d)
 
 
+@pytest.mark.long
 def test_analytic_flume_gauges_read_the_far_field_wave(tmp_path):
     T = 1.2
     res = _scene(Piston(height=0.04, period=T, ramp=1.0)).run(tmp_path / "a")

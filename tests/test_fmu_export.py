@@ -558,6 +558,7 @@ def _case_body_pose(path3, path2):
     return {"worst": worst, "msg": h.messages[-1][2]}
 
 
+@pytest.mark.long
 def test_body_pose_moves_the_fairleads(tmp_path):
     from fmpy.validation import validate_fmu
 

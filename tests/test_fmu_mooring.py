@@ -163,6 +163,7 @@ def test_messages_reach_the_right_instance(fmu3, tmp_path):
     b.close()
 
 
+@pytest.mark.long
 def test_same_body_motion_in_a_coupled_scene(fmu3):
     """Issue 6 round trip: the exported FMU in place of CatenaryMooring in a coupled MuJoCo
     scene (the coupler's default scheme, which rolls participants back with save/load_state)

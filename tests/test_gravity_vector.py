@@ -52,6 +52,7 @@ def fit(p, pos, down):
     return a, b
 
 
+@pytest.mark.long
 def test_a_turned_tank_under_turned_gravity_is_the_straight_tank_turned():
     """After 1 s (~5 sloshing periods) the straight tank's pressure rises along g at rho0 g
     within 2 % (the lattice's quadrature error, +1.2 %), and the tank turned by 30 degrees

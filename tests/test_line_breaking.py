@@ -61,6 +61,7 @@ def run(c, m, b, t_end):
     return np.array(rows)
 
 
+@pytest.mark.long
 def test_a_break_is_reported_at_the_first_step_past_the_load_and_the_run_goes_on():
     """Report only: the run is the same as without break loads, bit for bit; the event is
     the first step at which the line's tension exceeds its break load."""
@@ -80,6 +81,7 @@ def test_a_break_is_reported_at_the_first_step_past_the_load_and_the_run_goes_on
     assert m.released_lines() == []
 
 
+@pytest.mark.long
 def test_a_released_line_stops_acting():
     c, m, b = moored_box()
     ref = run(c, m, b, 12.0)
@@ -128,6 +130,7 @@ def tension_leg(break_load=None, release=False):
     return Coupler(bodies=b, fluid=f, moorings=[(m, ("keel",))]), m, b
 
 
+@pytest.mark.long
 def test_the_tension_of_a_taut_lines_constraint_counts():
     net = (RHO - 500.0) * G * 1.0  # net buoyancy of the submerged box [N]
     c, m, b = tension_leg()

@@ -4,6 +4,7 @@ every step (``moorings.line_events``), in a probe column and in summary.json."""
 import math
 
 import numpy as np
+import pytest
 
 from moorings import CatenaryMooring, MooringLine
 from moorings.catenary import LineState
@@ -57,6 +58,7 @@ def test_resting_line_has_no_events():
     assert LineState(int(m.line_states()[0])) == LineState.RESTING
 
 
+@pytest.mark.long
 def test_scene_reports_line_events_and_a_state_column(tmp_path):
     """A box on one line, pushed by long waves out past the line's lift-off point and back:
     summary.json's line_events agree with the state column sampled every step."""

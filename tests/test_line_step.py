@@ -41,6 +41,7 @@ def _swing(res, after):
     return float(np.abs(t - t.mean()).max() / t.mean())
 
 
+@pytest.mark.long
 def test_the_spring_bound_is_within_a_factor_two_of_where_a_body_on_a_stiff_line_goes_unstable(tmp_path,
                                                                                                 monkeypatch):
     """The bound 2 / omega (omega from MuJoCo's mass matrix, the added mass and EA / L) and the
@@ -63,6 +64,7 @@ def test_the_spring_bound_is_within_a_factor_two_of_where_a_body_on_a_stiff_line
     assert _swing(at_bound, 2.0) > 0.1  # unstable: growing swings of more than 10 % of the pretension
 
 
+@pytest.mark.long
 def test_the_sub_iterated_exchange_holds_a_body_on_a_stiff_line_at_one_and_a_half_times_the_bound(tmp_path,
                                                                                                    monkeypatch):
     """The same box, the line advanced with the body until its mean force over each step is
@@ -81,6 +83,7 @@ def test_the_sub_iterated_exchange_holds_a_body_on_a_stiff_line_at_one_and_a_hal
     assert np.ptp(late) < np.ptp(early) and np.ptp(late) < 0.3 * late.mean()
 
 
+@pytest.mark.long
 @pytest.mark.parametrize("model", ["moordyn", "sph-cable"])
 def test_the_wind_turbine_base_takes_the_lines_step_and_goes_unstable_at_twice_it(model, tmp_path, monkeypatch):
     """Barreiro et al. 2016's chain (EA 1.9e9 N, 442 kg/m) on the 16 t base, the lines' force held over

@@ -52,7 +52,7 @@ def _matched(whole, half, values_whole, values_half):
     return values_whole[at], values_half[real]
 
 
-@pytest.mark.parametrize("diffusion", ["fourtakas", "antuono"])
+@pytest.mark.parametrize("diffusion", ["fourtakas", pytest.param("antuono", marks=pytest.mark.long)])
 def test_the_half_with_its_images_has_the_whole_tanks_rates(diffusion):
     """Continuity and momentum rates of every particle of the half (fluid and walls, the
     Adami wall densities, the renormalised density gradients of Antuono's diffusion) equal

@@ -174,6 +174,7 @@ def test_two_systems_in_one_process_are_independent():
     assert both["b"].shape == (1, 2) and both["b"][0, 0] < 0 and both["b"][0, 1] < 0
 
 
+@pytest.mark.long
 @needs_moordyn
 def test_swaps_for_the_catenary_in_a_coupled_scene():
     """The same MooringLine list drives MoorDyn through the coupler (which hands it the fairlead
@@ -280,6 +281,7 @@ def test_roll_backs_keep_the_reference_count_of_none():
     """moordyn 2.7's Deserialize drops a reference to None per call; the adapter gives it
     back, so the coupler's per-step roll-backs cannot run it down (a crash after ~15 000
     steps on Python < 3.12, benchmarks/soak.py)."""
+    import gc
     import sys
 
     from moorings import MooringLine
@@ -290,10 +292,17 @@ def test_roll_backs_keep_the_reference_count_of_none():
     m.set_fairlead_motion([[0.0, 0.0]])
     m.initialize(0.0)
     state = m.save_state()
-    before = sys.getrefcount(None)
-    for _ in range(500):
-        m.load_state(state)
-    assert abs(sys.getrefcount(None) - before) <= 5  # without the repair: 500 fewer
+    gc.collect()
+    gc.disable()  # a collection inside the loop frees other objects' references to None
+    try:
+        before = sys.getrefcount(None)
+        for _ in range(500):
+            m.load_state(state)
+        after = sys.getrefcount(None)
+    finally:
+        gc.enable()
+    # without the repair: 500 fewer; the process's other threads move the count by a few tens
+    assert abs(after - before) <= 50, after - before
     m.close()
 
 

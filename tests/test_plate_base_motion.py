@@ -58,7 +58,7 @@ def test_the_first_mode_takes_gamma_1_of_a_uniform_cantilever():
     assert g1 == pytest.approx(0.7830, abs=5e-5) and tip1 == pytest.approx(1.5660, abs=1e-4)
 
 
-@pytest.mark.parametrize("r", [0.5, 0.85])
+@pytest.mark.parametrize("r", [0.5, pytest.param(0.85, marks=pytest.mark.long)])
 def test_the_relative_tip_motion_of_a_shaken_plate_is_the_base_excited_cantilevers(r, tmp_path):
     """No fluid, no gravity: the tank shaken along x at ``r`` times the chain's own first
     frequency. The clamp moves as the tank does, to round-off; the tip's deflection in the
@@ -101,6 +101,7 @@ def beam_frequencies(beam):
     return modal_frequencies(m, mujoco.MjData(m))[:3]
 
 
+@pytest.mark.long
 def test_a_plate_in_a_rolling_tank_turns_with_it(tmp_path):
     """A roll about a point below the floor: the clamp goes round the axis as the tank's
     points do (``fluid.motion.Rotation``), the tip's deflection in the tank's frame stays
@@ -128,6 +129,7 @@ def roll_angle(move, t):
     return math.atan2(o[1] - e[1], e[0] - o[0])
 
 
+@pytest.mark.long
 def test_in_a_shaken_sph_tank_the_clamp_moves_with_the_walls(tmp_path):
     """2-D SPH tank (dx 1 cm, 0.3 s: 3 s of CPU once the fluid's kernels are compiled)
     shaken at 20 mm: at every sample the plate's clamp has moved exactly as the tank's walls

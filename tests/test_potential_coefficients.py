@@ -67,6 +67,7 @@ def test_box_hydrostatics_are_exact(tmp_path):
         assert (np.einsum("wii->wi", M)[:, :5] > 0).all()
 
 
+@pytest.mark.long
 def test_cache_hit_and_keys(tmp_path):
     h = wetted_hull("cylinder", [1.0, 1.0], np.eye(3), [0.0, 0.0, 0.0], 0.5)
     args = dict(omega=[0.5, 1.0, 1.5], headings=[0.0], rho=RHO, g=G, cache=tmp_path)

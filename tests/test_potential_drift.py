@@ -50,6 +50,7 @@ def deep_cylinder(tmp_path_factory):
                    cache=tmp_path_factory.mktemp("drift"), kochin=True)
 
 
+@pytest.mark.long
 def test_fixed_cylinder_drift_is_havelocks(deep_cylinder):
     d = mean_drift(deep_cylinder)
     ref = np.array([cylinder_drift(ka) for ka in KA])
@@ -67,6 +68,7 @@ def _power_balance(c, H):
     return c.omega * -H[:, 0, i0].imag, c.wavenumber**2 * np.trapezoid(np.abs(H[:, 0, turn]) ** 2, th[turn], axis=-1)
 
 
+@pytest.mark.long
 def test_far_field_conserves_energy(deep_cylinder):
     """A body that dissipates nothing removes from the incident wave the power it scatters and
     radiates (the optical theorem: Newman 1967; Maruo 1960), fixed or floating freely."""
@@ -109,6 +111,7 @@ def test_newman_two_components_beat_at_the_difference_frequency():
     assert np.ptp(Fx) / 2 == pytest.approx(2 * 0.3 * 0.4 * math.sqrt(d1 * d2), rel=1e-6)  # T_12 = sqrt(D_1 D_2)
 
 
+@pytest.mark.long
 def test_drift_refusals(deep_cylinder):
     from fluid.potential.participant import PotentialFluid
 

@@ -28,6 +28,7 @@ def _cache(tmp_path_factory):
         yield
 
 
+@pytest.mark.long
 def test_a_body_at_its_floating_pose_stays_at_rest():
     coupler, bodies, fluid = P.floating_cylinder(1.0, GRID)
     p0 = bodies.data.qpos.copy()
@@ -38,6 +39,7 @@ def test_a_body_at_its_floating_pose_stays_at_rest():
     assert np.allclose(bodies.model.dof_armature[:5], np.diag(A)[:5], rtol=1e-12)
 
 
+@pytest.mark.long
 def test_heave_decay_period_is_the_natural_period():
     d = P.heave_decay(P.rao_scene(True))
     assert np.mean(d["periods"][:2]) == pytest.approx(d["natural_period"], rel=0.015)
@@ -69,6 +71,7 @@ def test_bad_inputs_are_refused_before_any_solve(tmp_path):
         P.floating_cylinder(1.0, GRID, sea=Sea(regular(0.1, 2.5)))  # a 2.5 s wave: 2.5 rad/s
 
 
+@pytest.mark.long
 def test_hemisphere_quick(tmp_path):
     r = validation.run("potential-hemisphere", quick=True)
     assert r["passed"], r["metrics"]

@@ -56,6 +56,7 @@ def test_coupled_coefficients_are_reciprocal(cache):
     assert np.linalg.eigvalsh(g.damping).min() > -1e-5 * np.abs(g.damping).max()
 
 
+@pytest.mark.long
 def test_far_apart_each_body_has_its_own_coefficients(cache, alone):
     near, far = _pair(50.0, cache), _pair(200.0, cache)
     for c in far.bodies:
@@ -70,6 +71,7 @@ def test_far_apart_each_body_has_its_own_coefficients(cache, alone):
     assert 0.3 < ratio < 0.7
 
 
+@pytest.mark.long
 def test_close_bodies_interact_measurably(cache, alone):
     g = _pair(3.0, cache)  # 1 m of water between them
     a = g.bodies[0]
@@ -80,6 +82,7 @@ def test_close_bodies_interact_measurably(cache, alone):
     assert _coupling(g, "added_mass") > 0.1
 
 
+@pytest.mark.long
 def test_cache_keys_on_positions(cache):
     _pair(4.0, cache)  # solved here, or already by another test of this module in this process
     g1 = _pair(4.0, cache)

@@ -65,6 +65,7 @@ def _scene(tp, spectrum):
     })
 
 
+@pytest.mark.long
 @capytaine
 def test_a_jonswap_sea_runs_on_the_default_omega_max(tmp_path, monkeypatch):
     monkeypatch.setenv("COSIM_POTENTIAL_CACHE", str(tmp_path / "cache"))

@@ -50,6 +50,7 @@ def test_readme_python_runs(tmp_path, monkeypatch):
     assert ran["results"].units["box.left.tension"] == "N"
 
 
+@pytest.mark.long
 def test_pages_python_runs(tmp_path, monkeypatch):
     ran = {}
     for page in PAGES:
@@ -111,6 +112,7 @@ def test_readme_commands_run_or_parse(tmp_path, monkeypatch, capsys):
 TEST_COMMANDS = [["python", "-m", "pytest"], ["python", "-m", "pytest", "-m", "long"]]
 
 
+@pytest.mark.long
 def test_readme_test_commands_select_their_tiers():
     """Each test command of the README is one `.ci/run` runs, and, run (collecting only) on
     the hydrostatic validations and the links' momentum test, selects its tier: the fast one
@@ -123,8 +125,10 @@ def test_readme_test_commands_select_their_tiers():
     links = "test_momentum_lost_by_the_fluid_is_what_the_links_receive_to_round_off"
     expected = [{"test_hydrostatic_quick[hydrostatic]", f"{links}[2-300]"}, {f"{links}[3-20]"}]
     for cmd, tests in zip(TEST_COMMANDS, expected):
-        out = subprocess.run([sys.executable, *cmd[1:], "--collect-only", "-q", "tests/test_fluid_hydrostatic.py",
-                              "tests/test_elastic_coupling.py", "-k", "hydrostatic_quick or momentum_lost"],
+        # -n 0: collected in this process, not in the addopts' two workers (the selection is the same)
+        out = subprocess.run([sys.executable, *cmd[1:], "--collect-only", "-q", "-n", "0",
+                              "tests/test_fluid_hydrostatic.py", "tests/test_elastic_coupling.py",
+                              "-k", "hydrostatic_quick or momentum_lost"],
                              cwd=ROOT, capture_output=True, text=True, timeout=300)
         assert out.returncode == 0, out.stdout[-2000:] + out.stderr[-2000:]
         assert {ln.split("::")[1] for ln in out.stdout.splitlines() if "::" in ln} == tests, (cmd, out.stdout)
@@ -143,3 +147,25 @@ def test_readme_is_short_and_starts_with_the_commands():
 def test_pages_link_to_files_that_exist(page):
     for link in re.findall(r"\]\(([^)#:]+)", page.read_text()):
         assert (page.parent / link).exists(), (page.name, link)
+
+
+def test_the_quick_validations_cost_is_the_records():
+    """The README's cost of `cosim validate all --quick` is what the committed records say
+    (each variant's CPU as `cosim validate --list` counts it, `cosim.validation.cost`):
+    the total, the near-field cases' share, the flagship's, and the minutes on 2 cores."""
+    from cosim.report import read_records
+    from cosim.validation import cost
+
+    text = " ".join(README.read_text().split())
+    m = re.search(r"the records' CPU is about ([\d ]+) s, ([\d ]+) of it the four near-field cases "
+                  r"\(wind-turbine-sph's quick alone ([\d ]+) s\), so about (\d+) minutes on 2 cores", text)
+    assert m, "the README's sentence on the quick validations' cost"
+    total, near, flagship, minutes = (float(g.replace(" ", "")) for g in m.groups())
+    quick = {r["name"]: cost(r) for r in read_records(ROOT / "docs" / "validation" / "records.jsonl") if r.get("quick")}
+    measured = sum(quick.values())
+    assert total == pytest.approx(measured, rel=0.02)
+    assert near == pytest.approx(sum(v for k, v in quick.items() if k.startswith(("nearfield", "wind-turbine-sph"))),
+                                 rel=0.02)
+    assert flagship == pytest.approx(quick["wind-turbine-sph"], rel=0.02)
+    assert minutes == pytest.approx(measured / 2 / 60, abs=1.0)
+

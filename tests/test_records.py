@@ -235,6 +235,7 @@ def test_the_walls_move_by_exactly_the_integrated_record_in_both_directions(tmp_
         assert abs(d_t - q(t)) > 1e-6  # it did move
 
 
+@pytest.mark.long
 def test_a_small_tank_under_horizontal_and_vertical_el_centro_stays_stable(tmp_path):
     """A 0.5 m tank (walls 0.6 m high), 0.2 m of water, dx = 25 mm (160 fluid particles),
     under El Centro NS (x) and vertical (z) scaled by 3 for the first 2.5 s (the NS peak,
@@ -264,6 +265,7 @@ def test_a_small_tank_under_horizontal_and_vertical_el_centro_stays_stable(tmp_p
     assert np.abs(vel[fl]).max() > 0.3 and kinetic.max() > 1.0
 
 
+@pytest.mark.long
 def test_gauges_and_wall_patches_move_with_the_tank(tmp_path):
     """A tank carried 0.1 m sideways and 0.05 m up (4 and 2 dx) by one smooth 2 s pulse of
     displacement along (2, 1) (a table, so that no baseline correction touches it;

@@ -69,12 +69,14 @@ def by_hand():
     PROBES.unregister("tether_energy")
 
 
+@pytest.mark.long
 def test_a_shape_and_a_mooring_model_registered_by_hand_run_a_python_scene(by_hand, tmp_path):
     scene = _scene()
     assert isinstance(scene.bodies[0], Capsule) and scene.moorings.model == "tether"
     _check(scene.run(tmp_path / "run", progress=False))
 
 
+@pytest.mark.long
 def test_entry_points_register_them_for_a_toml_scene(monkeypatch, tmp_path):
     fake = {"cosim.shapes": [EntryPoint("capsule", "plugin_example:Capsule", "cosim.shapes")],
             "cosim.moorings": [EntryPoint("tether", "plugin_example:Tether", "cosim.moorings")],

@@ -36,6 +36,7 @@ def test_a_coupling_step_lands_on_every_output_time_or_is_refused():
     assert Scene.from_toml(BOX).with_values([f"world.sample_every={5 * dt!r}", f"coupling.dt={dt!r}"])
 
 
+@pytest.mark.long
 def test_the_step_taken_is_the_step_set_and_summary_json_says_so(tmp_path):
     r = Scene.from_toml(BOX).with_values(["world.duration=0.2", "coupling.dt=0.01"]).run(tmp_path, progress=False)
     c = r.summary["coupling"]
@@ -46,6 +47,7 @@ def test_the_step_taken_is_the_step_set_and_summary_json_says_so(tmp_path):
     assert free.summary["coupling"]["dt_set_s"] is None and "fluid" in free.summary["coupling"]["by_limiter"]
 
 
+@pytest.mark.long
 def test_an_output_folder_holds_one_run(tmp_path):
     """A second run into a folder that holds one is refused before any work; with overwrite
     the earlier run's files go, the new run's come."""

@@ -4,6 +4,7 @@ a fixed neighbour order; sums over particles, such as the fluid's energy, are re
 an order that depends on the thread count and agree to round-off)."""
 
 import numpy as np
+import pytest
 
 from cosim.scene import SPH, Beach, Box, Flume, Line, Moorings, Piston, Probes, Scene, World
 
@@ -22,6 +23,7 @@ def scene(threads):
                  probes=Probes(gauges=[0.5, 1.3], energy=True))
 
 
+@pytest.mark.long
 def test_same_scene_twice_and_on_two_threads(tmp_path):
     a = scene(1).run(tmp_path / "a", progress=False)
     b = scene(1).run(tmp_path / "b", progress=False)

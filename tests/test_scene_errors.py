@@ -1764,7 +1764,9 @@ def test_refused_when_built_before_anything_is_written(c, tmp_path):
     assert not (tmp_path / "out").exists()
 
 
-@pytest.mark.parametrize("c", CLI_CASES, ids=[c.id for c in CLI_CASES])
+# a case that first runs a scene to make its checkpoint costs two runs of cosim: the long tier
+@pytest.mark.parametrize("c", [pytest.param(c, marks=pytest.mark.long) if c.prepare else c for c in CLI_CASES],
+                         ids=[c.id for c in CLI_CASES])
 def test_refused_by_the_command_line(c):
     """``cosim run`` (``cosim study``) exits with status 2, the last line of stderr says what
     is wrong (no traceback), no output folder is made and none that was there is written into."""
@@ -1911,6 +1913,7 @@ def render() -> str:
     return "\n".join(lines)
 
 
+@pytest.mark.long  # it runs every case, the command line's too
 def test_docs_table_is_current():
     assert DOC.is_file(), "write it: python tests/test_scene_errors.py > docs/scene_errors.md"
     assert DOC.read_text() == render() + "\n", ("docs/scene_errors.md is out of date: "

@@ -60,6 +60,7 @@ def whole(tmp_path_factory):
     return d
 
 
+@pytest.mark.long
 @pytest.mark.parametrize("after_checkpoints, delay", [(1, 0.0), pytest.param(3, 0.13, marks=pytest.mark.long),
                                                       pytest.param(5, 0.29, marks=pytest.mark.long)])
 def test_killed_run_reads_and_resumes_bit_for_bit(whole, after_checkpoints, delay, tmp_path):

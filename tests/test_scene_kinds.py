@@ -219,6 +219,7 @@ def test_mjcf_bodies(tmp_path):
     assert np.abs(r["float.heave"]).max() < 1e-6  # half its volume under water: afloat at rest
 
 
+@pytest.mark.long
 def test_an_mjcf_models_own_gravity_is_replaced_with_its_lines_too(tmp_path):
     """The world's gravity replaces the file's (docs/scenes.md), also once an inextensible
     line's tether has recompiled the model, and the build warns that it was replaced: the
@@ -247,6 +248,7 @@ def test_an_mjcf_models_own_gravity_is_replaced_with_its_lines_too(tmp_path):
     assert np.abs(r["float.heave"]).max() > 1e-3  # the line's weight pulls it down: a test that can fail
 
 
+@pytest.mark.long
 def test_analytic_added_mass_slows_the_heave(tmp_path):
     """Added mass in the analytic fluid goes into the body's inertia: the heave period grows
     as sqrt((m + m_a) / m) (the hydrostatic stiffness is the same)."""

@@ -282,6 +282,7 @@ def test_a_near_field_re_initialises_its_density(tmp_path):
     assert choose(_scene(tmp_path, SCENE, "fluid.mls_every=0")).config["mls_every"] == 0
 
 
+@pytest.mark.long
 def test_absorbing_end_walls_record_their_correction_and_resume_bit_for_bit(tmp_path):
     """``domain.absorbing_walls``: the end walls' correction and the elevation they read
     are recorded (``end_walls``: near_wall.xi, ...); a run stopped at a checkpoint and

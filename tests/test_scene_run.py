@@ -154,6 +154,7 @@ def test_resume_is_bit_for_bit(tmp_path):
         np.testing.assert_array_equal(f["series/ledger/box/fluid_force"][:], g["series/ledger/box/fluid_force"][:])
 
 
+@pytest.mark.long
 def test_a_resumed_run_may_add_plot_times(tmp_path):
     """Plot times on the sampling grid added when resuming are drawn, and the run stays the
     one made in one go (they change no step)."""
@@ -168,6 +169,7 @@ def test_a_resumed_run_may_add_plot_times(tmp_path):
         np.testing.assert_array_equal(resumed[name], whole[name], err_msg=name)
 
 
+@pytest.mark.long
 def test_a_resumed_runs_time_counts_every_segment(tmp_path):
     """``summary.json``'s ``cpu_s`` and ``wall_s`` are the whole run's: the first segment's
     (kept in the checkpoint) plus the resumed one's, ``cpu_s_this_run`` the latter's."""
@@ -180,6 +182,7 @@ def test_a_resumed_runs_time_counts_every_segment(tmp_path):
     assert second["wall_s"] > ck["wall_s"] and first["cpu_s_this_run"] == first["cpu_s"]
 
 
+@pytest.mark.long
 def test_resume_refuses_a_changed_scene(tmp_path):
     from cosim.errors import InputError
 
@@ -191,6 +194,7 @@ def test_resume_refuses_a_changed_scene(tmp_path):
         moored_box().run(tmp_path / "empty", resume=True, progress=False)
 
 
+@pytest.mark.long
 def test_the_checkpoint_drawn_afterwards_is_the_plot_drawn_during_the_run(tmp_path):
     """``cosim plot FOLDER`` rebuilds the scene and restores its checkpoint: at the run's end
     it draws, pixel for pixel, the particle plot the run drew then; a folder without a run,
@@ -284,6 +288,26 @@ def test_analytic_scene_matches_its_physics(tmp_path):
     assert r["b.fluid_Fz"][-1] == pytest.approx(500.0 * 9.81, rel=1e-6)
 
 
+def test_the_loads_list_the_moorings_force_only_where_there_are_lines(tmp_path):
+    """An unmoored body's loads are the fluid's alone (no column of zeros named after a
+    mooring); with lines, each body has both, in the order the scene promises
+    (``series_names``) and the run records."""
+    from cosim.scene.probes import series_names
+
+    bare = Scene(world=World(dim=2, duration=0.1, sample_every=0.05), fluid=Analytic(level=0.0),
+                 bodies=[Box("b", size=(1.0, 1.0), density=500.0, pos=(0.0, 0.0))])
+    r = bare.run(tmp_path / "bare", progress=False)
+    loads = [n for n in r.names if "_F" in n]
+    assert loads == ["b.fluid_Fx", "b.fluid_Fz"] == [n for n in series_names(bare) if "_F" in n]
+    moored = Scene.from_toml(ROOT / "examples" / "moored_box.toml").with_values(["world.duration=0.1"])
+    r = moored.run(tmp_path / "moored", progress=False)
+    loads = [n for n in r.names if "_F" in n]
+    assert loads == ["box.fluid_Fx", "box.fluid_Fz", "box.mooring_Fx", "box.mooring_Fz"]
+    assert loads == [n for n in series_names(moored) if "_F" in n]
+    assert np.abs(r["box.mooring_Fx"]).max() > 0
+
+
+@pytest.mark.long
 @pytest.mark.parametrize("kind", ["analytic", "sph-no-bodies"])
 def test_a_scene_loads_only_what_it_contains(kind, tmp_path):
     """A scene without the SPH fluid never imports (so never compiles) the fluid's
@@ -365,6 +389,7 @@ def test_unreadable_scene_files_are_refused_by_name(name, content, says, tmp_pat
         load(tmp_path / name)
 
 
+@pytest.mark.long
 def test_anchor_tensions_agree_between_models(tmp_path):
     """The anchor tension of MoorDyn's line matches the catenary's at the start where the line
     pulls its anchor up (the box 3 m off its rest position); an FMU reports none."""

@@ -57,6 +57,7 @@ def test_the_scene_gives_the_analytic_fluid_its_waves(tmp_path, dim):
     b.coupler.run(1.0)
 
 
+@pytest.mark.long
 def test_a_break_is_reported_in_the_summary_and_the_run_goes_on(tmp_path):
     r = moored(800.0).run(tmp_path / "out")
     heave = r["box.heave"][r.t > 6.0]
@@ -70,6 +71,7 @@ def test_a_break_is_reported_in_the_summary_and_the_run_goes_on(tmp_path):
     assert r.t[np.argmax(t > 800.0)] >= ev[0]["t_s"] - 0.1  # no sample saw it past the load earlier
 
 
+@pytest.mark.long
 def test_a_released_line_stops_pulling(tmp_path):
     r = moored(800.0, release=True).run(tmp_path / "out")
     ev = r.summary["line_breaks"][0]
@@ -168,6 +170,7 @@ def test_gauges_read_the_irregular_sea(tmp_path):
         np.testing.assert_allclose(r[f"gauge{i + 1}.eta"], sea.elevation(x, 0.0, r.t), rtol=0, atol=1e-12)
 
 
+@pytest.mark.long
 def test_a_recorded_series_is_what_its_gauge_reads(tmp_path):
     """A scene's series sea, read from its file (relative to the scene's folder), gives back
     the record (less its mean) at the point where it was measured, at the record's times."""

@@ -92,6 +92,7 @@ def test_a_roll_is_covered_by_its_turned_corners():
     assert d.hi[1] == pytest.approx(1.0 + (d.travel[1][1]) + 0.1 + 1.0)
 
 
+@pytest.mark.long
 def test_no_wall_particle_leaves_over_a_long_shake(tmp_path):
     """A small tank (0.6 m, dx = 5 cm) shaken at 2 m/s^2 with a 0.4 s period from rest for
     10 periods, held, then 1 s at rest: it drifts a0 T^2 N / (2 pi) = 0.51 m, more than the

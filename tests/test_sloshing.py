@@ -63,6 +63,7 @@ def test_spheric10_roll_record():
     assert (np.diff(p[:, 0]) >= 0).all() and p[:, 1].max() == pytest.approx(7147.5, abs=1.0)
 
 
+@pytest.mark.long
 def test_westergaard_quick():
     r = validation.run("westergaard", quick=True)
     m = r["metrics"]

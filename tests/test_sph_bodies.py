@@ -43,6 +43,7 @@ def _held_wrenches(f, bodies, duration: float):
     return np.array(F), np.array(T)
 
 
+@pytest.mark.long
 def test_a_held_submerged_body_feels_archimedes():
     """A box held still under water: vertical force rho g A (per metre), no side
     force, no torque, over 0.1 s of SPH (lattice-aligned box, dx = 1 cm)."""

@@ -82,17 +82,22 @@ def _refdata_reads():
     a one-line wrapper ``def f(name): ... refdata.path("dataset", name)`` called with a
     literal, and that the scene files name by a path into cosim/refdata; problems lists the
     calls that cannot be checked that way."""
-    files, problems, wrappers, trees = set(), [], {}, []
+    files, problems, wrappers, calls_of = set(), [], {}, []
     for path in _files(".py"):
         tree = ast.parse(path.read_text())
-        trees.append((path, tree))
+        nodes = list(ast.walk(tree))  # one walk of each file: walking again per call costs minutes
+        calls = [n for n in nodes if isinstance(n, ast.Call)]
+        calls_of.append((path, calls))
+        imported = any(isinstance(n, ast.ImportFrom) and n.module == "cosim.refdata"
+                       and any(a.name == "path" and a.asname is None for a in n.names) for n in nodes)
+        reads = [c for c in calls if _is_refdata_path(c.func, imported)]
+        if not reads:
+            continue
         consts = {t.id: n.value.value for n in tree.body if isinstance(n, ast.Assign)
                   for t in n.targets if isinstance(t, ast.Name)
                   and isinstance(n.value, ast.Constant) and isinstance(n.value.value, str)}
-        imported = any(isinstance(n, ast.ImportFrom) and n.module == "cosim.refdata"
-                       and any(a.name == "path" and a.asname is None for a in n.names) for n in ast.walk(tree))
-        params = {}  # call node -> parameter names of the function around it
-        for fn in ast.walk(tree):
+        params = {}  # call node -> parameter names of the innermost function around it
+        for fn in nodes:
             if isinstance(fn, (ast.FunctionDef, ast.AsyncFunctionDef)):
                 for c in ast.walk(fn):
                     params[c] = (fn.name, [a.arg for a in fn.args.args])
@@ -104,9 +109,7 @@ def _refdata_reads():
                 return consts[node.id]
             return None
 
-        for call in ast.walk(tree):
-            if not (isinstance(call, ast.Call) and _is_refdata_path(call.func, imported)):
-                continue
+        for call in reads:
             where = f"{path.relative_to(ROOT)}:{call.lineno}"
             args = list(call.args) + [k.value for k in call.keywords]
             ds = value(args[0]) if args else None
@@ -122,9 +125,9 @@ def _refdata_reads():
                 problems.append(f"{where}: file name not a literal")
     for fname, (ds, i, pname, where) in wrappers.items():
         used = 0
-        for path, tree in trees:
-            for call in ast.walk(tree):
-                f = call.func if isinstance(call, ast.Call) else None
+        for path, calls in calls_of:
+            for call in calls:
+                f = call.func
                 if not ((isinstance(f, ast.Name) and f.id == fname) or (isinstance(f, ast.Attribute) and f.attr == fname)):
                     continue
                 arg = call.args[i] if len(call.args) > i else next((k.value for k in call.keywords if k.arg == pname), None)

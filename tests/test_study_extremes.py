@@ -44,6 +44,7 @@ def test_extremes_of_a_floating_box(tmp_path):
     assert (tmp_path / "extremes.md").read_text().startswith("# Extremes")
 
 
+@pytest.mark.long
 def test_a_body_denser_than_water_sinks_as_physics_says(tmp_path):
     """The analytic moored box at twice the water's density falls (net weight 20 kN/m on
     4.1 t/m) until its fairleads pass below its anchors' seabed, where the run stops: that

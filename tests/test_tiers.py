@@ -35,6 +35,7 @@ def test_a_fast_test_has_the_tiers_time_limit(request):
     assert request.node.get_closest_marker("timeout").args == (TIER_TIMEOUT_S,)
 
 
+@pytest.mark.long
 @pytest.mark.timeout(120)
 def test_a_hung_call_is_stopped_by_the_time_limit(pytester):
     """The limit interrupts a test blocked in a system call (here a child process's wait):

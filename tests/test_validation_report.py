@@ -29,6 +29,7 @@ def quick_report(tmp_path_factory):
     return folder, rc, out.getvalue()
 
 
+@pytest.mark.long
 def test_the_report_has_a_row_and_a_page_per_case(quick_report):
     folder, rc, stdout = quick_report
     assert rc == 0
@@ -57,6 +58,7 @@ def test_the_report_has_a_row_and_a_page_per_case(quick_report):
     assert (folder / "records.jsonl").read_text().splitlines() == stdout.splitlines()
 
 
+@pytest.mark.long
 def test_from_rebuilds_the_same_report(quick_report, tmp_path):
     folder, _, stdout = quick_report
     # from the report's own records (the series beside them): the same pages, the same plots
@@ -83,6 +85,7 @@ def test_from_rebuilds_the_same_report(quick_report, tmp_path):
         main(["validate", "--from", str(saved)])
 
 
+@pytest.mark.long
 def test_cases_run_at_once_give_the_records_of_one_after_the_other(capsys):
     """--jobs 2 runs the cases in two worker processes: the same records (but their costs),
     printed in the order named; --jobs 0 is refused."""

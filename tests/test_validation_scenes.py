@@ -59,6 +59,7 @@ def _resolved(scene) -> dict:
     return walk(scene.to_dict())
 
 
+@pytest.mark.long
 def test_a_case_that_runs_its_scene_runs_the_file_as_written():
     """A case that builds its run from its scene (``Case.scene``) runs the file unchanged in
     one variant (the quick one's, or the full one's where the file is an example's): a

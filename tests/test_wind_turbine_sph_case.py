@@ -20,6 +20,7 @@ def _short(model="potential", duration=4.0):
                                                                       "world.sample_every=0.5"])
 
 
+@pytest.mark.long
 def test_a_finished_run_reads_back_as_it_returned(tmp_path):
     scene = _short("analytic")
     res = scene.run(tmp_path / "r", progress=False)
@@ -37,6 +38,7 @@ def test_read_refuses_a_folder_without_a_run(tmp_path):
         read(tmp_path)
 
 
+@pytest.mark.long
 def test_a_kept_run_is_read_back_and_a_stopped_one_resumes(tmp_path):
     whole = _short("analytic", 6.0).run(tmp_path / "whole", progress=False)
     first = _short("analytic", 3.0).run(tmp_path / "kept", progress=False)

@@ -208,6 +208,12 @@ class Motion(Probe):
         return [Group("motion", cols, units, motion)]
 
 
+def _load_sources(scene) -> tuple:
+    """Whose forces the ``loads`` probe reports: the fluid's, and the moorings' where the
+    scene has lines (a column that could only read zero is left out)."""
+    return ("fluid", "mooring") if scene.moorings is not None else ("fluid",)
+
+
 class Loads(Probe):
     """``loads``: the fluid's and the moorings' force on each body; each plate's node pressures."""
 
@@ -216,7 +222,7 @@ class Loads(Probe):
             return []
         comps = _axes(scene.world.dim)[3]
         rigid, plates = _scene_bodies(scene)
-        out = [f"{n}.{src}_F{c}" for n in rigid + list(plates) for src in ("fluid", "mooring") for c in comps]
+        out = [f"{n}.{src}_F{c}" for n in rigid + list(plates) for src in _load_sources(scene) for c in comps]
         return out + [f"{n}.p{k}" for n, b in plates.items() for k in range(b.elements + 1)]
 
     def groups(self, scene, built):
@@ -227,17 +233,16 @@ class Loads(Probe):
         axes, comps = _axes(scene.world.dim)[2:]
         led = built.coupler.ledger
         rows = [[names.index(n)] for n in rigid] + [[names.index(k) for k in m.link_names] for m in plates.values()]
+        sources = _load_sources(scene)
 
         def loads():
             last = led.last()
             if not last:  # before the first step: the loads the coupler would apply now
                 F, _, Fm, _ = built.coupler._loads(b.kinematics())
                 last = {"fluid_force": F, "mooring_force": Fm}
-            return np.concatenate([np.concatenate([last["fluid_force"][j][:, axes].sum(axis=0),
-                                                   last["mooring_force"][j][:, axes].sum(axis=0)])
-                                   for j in rows])
+            return np.concatenate([last[f"{src}_force"][j][:, axes].sum(axis=0) for j in rows for src in sources])
 
-        cols = [f"{n}.{src}_F{c}" for n in rigid + list(plates) for src in ("fluid", "mooring") for c in comps]
+        cols = [f"{n}.{src}_F{c}" for n in rigid + list(plates) for src in sources for c in comps]
         out = [Group("loads", cols, ["N"] * len(cols), loads)]
         for n, m in plates.items():  # the net pressure on each node's share of the plate
             ids = [names.index(k) for k in m.link_names]
