@@ -11,9 +11,10 @@ absorbing end walls".
     python benchmarks/nearfield_zones.py "" "domain.zone=0.1716,domain.absorbing_walls=true"
         [--flume] [--gauge 0.9]
 
-Each variant is a comma-separated list of scene assignments ("" for the case's own near
-field). ``--gauge`` [m]: the upstream gauge's x (the case's 0.6 m lies outside boxes with
-zones narrower than half the wavelength).
+Each variant is a comma-separated list of scene assignments on the case's own near field
+(its quarter-wavelength zones and absorbing end walls; "" for it as it is). ``--gauge``
+[m]: the upstream gauge's x (the case's reads 0.8 m, which boxes with zones wider than a
+quarter wavelength leave inside; narrower ones need one nearer the body).
 """
 
 from __future__ import annotations

@@ -162,16 +162,19 @@ def test_the_first_harmonic_is_read_through_a_slow_drift():
 @pytest.mark.slow
 def test_the_quick_floating_box_case_runs_and_judges_its_targets():
     """cosim validate nearfield-floating-box --quick: the moored box in its flume, in the near
-    field, and the flume without it (dx = 0.02 m, 5 s). What the case found holds: the
-    flume's wave at the body is above the nominal height (the piston and the beach), and
-    the near field holds fewer particles (docs/validation/nearfield.md has the figures; the
-    targets are not met)."""
+    field (absorbing end walls, quarter-wavelength zones), and the flume without it (dx =
+    0.02 m, 5 s). What the case found holds: the flume's wave at the body within 2 % of the
+    nominal height the near field imposes, the box's heave and surge per incident height
+    within the 5 % of the target, on under half the flume's particles
+    (docs/validation/nearfield.md has the figures; the cost target is not met)."""
     from cosim import validation
 
     r = validation.run("nearfield-floating-box", quick=True)
     m = r["metrics"]
-    assert m["incident_H1_at_body_m"]["flume"] > 1.02 * m["incident_H1_at_body_m"]["near_field"]
-    assert m["particle_fraction"] < 0.8
+    inc = m["incident_H1_at_body_m"]
+    assert inc["flume"] == pytest.approx(inc["near_field"], rel=0.02)
+    assert m["heave_per_wave_error"] < 0.05 and m["surge_per_wave_error"] < 0.05
+    assert m["particle_fraction"] < 0.45
     assert r["stated"]["measured"]["heave_error"] == m["heave_error"]
 
 
