@@ -283,10 +283,10 @@ def nearfield_waves(quick: bool) -> dict:
 
 #: the moored box's scene (the flume of examples/moored_box_waves.toml)
 FLOATING_SCENE = Path(__file__).with_name("scenes") / "nearfield-floating-box.toml"
-#: the same wave as the flume's piston makes, in the near field: its end walls absorbing (they
-#: also move with the wave the box sends back) and its zones a quarter wavelength wide
-#: (0.35 m of 1.37; the chooser's half wavelength is for walls that only follow the sea)
-#: (its box then starts past the flume's first gauge, x = 0.6 m, so that gauge is left out)
+#: the same wave as the flume's piston makes, in the near field, with absorbing end walls
+#: (they also move with the wave the box sends back) and zones a quarter wavelength wide
+#: (0.35 m of 1.37 m; the chooser's half wavelength suits walls that only follow the sea);
+#: the box then starts past the flume's first gauge (x = 0.6 m), which it leaves out
 FLOATING_NEAR_FIELD = ("domain.kind=nearfield", "waves.kind=regular", "waves.depth=0.3",
                        "domain.absorbing_walls=true", "domain.zone=0.35", "probes.gauges=[0.8, 1.6]")
 #: the gauge upstream of the box [m] both runs read (inside the near field's box)
