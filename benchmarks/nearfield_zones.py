@@ -42,7 +42,8 @@ def main() -> None:
     period = flume.waves.period
     with tempfile.TemporaryDirectory(prefix="nearfield_zones_") as tmp:
         if a.flume:
-            ref = nf.floating_figures(flume.run(Path(tmp) / "flume", progress=False), t0, period)
+            ref = nf.floating_figures(flume.run(Path(tmp) / "flume", progress=False), t0, period,
+                                      nf.upstream_gauge(flume))
             empty = nf._without_bodies(flume, flume.bodies[0].pos[0]).run(Path(tmp) / "empty", progress=False)
             late = empty.t >= t0
             incident = 2.0 * nf.first_harmonic(empty.t[late], empty[nf._gauge(empty)][late], 2.0 * math.pi / period)

@@ -168,4 +168,3 @@ def test_the_quick_validations_cost_is_the_records():
                                  rel=0.02)
     assert flagship == pytest.approx(quick["wind-turbine-sph"], rel=0.02)
     assert minutes == pytest.approx(measured / 2 / 60, abs=1.0)
-

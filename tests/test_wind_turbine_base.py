@@ -80,7 +80,8 @@ def test_base_settles_at_hydrostatics_plus_catenaries(tmp_path):
     assert set(res.summary["line_events"]) == {"back", "front_port", "front_starboard"}
 
 
-@pytest.mark.parametrize("model", [pytest.param("moordyn", marks=pytest.mark.slow), pytest.param("fmu", marks=pytest.mark.long),
+@pytest.mark.parametrize("model", [pytest.param("moordyn", marks=pytest.mark.slow),
+                                   pytest.param("fmu", marks=pytest.mark.long),
                                    pytest.param("sph-cable", marks=pytest.mark.slow)])
 def test_each_mooring_model_runs_the_scene(model, tmp_path):
     """One field swaps the model, nothing else: the dynamic models of this stiff chain

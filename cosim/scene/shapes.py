@@ -199,8 +199,9 @@ class RigidBody(Shape):
         if v is not None and getattr(self, "motion", None) is not None:
             raise SceneError("velocity", "a body with a prescribed motion moves as its motion says; leave velocity "
                              "out (or the motion, for a free body)")
-        if v is not None and math.hypot(*v) > L.MAX_BODY_SPEED:
-            raise SceneError("velocity", f"{list(v)} m/s: {math.hypot(*v):.4g} m/s is beyond {L.MAX_BODY_SPEED:g} "
+        speed = math.hypot(*v) if v is not None else 0.0
+        if speed > L.MAX_BODY_SPEED:
+            raise SceneError("velocity", f"{list(v)} m/s: {speed:.4g} m/s is beyond {L.MAX_BODY_SPEED:g} "
                              f"m/s, {L.BODY_SPEED_WHY}; give the body's speed in m/s")
 
     def mjcf(self, pos, dim: int, sites: dict) -> str:

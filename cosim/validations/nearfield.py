@@ -287,10 +287,10 @@ FLOATING_SCENE = Path(__file__).with_name("scenes") / "nearfield-floating-box.to
 #: (they also move with the wave the box sends back) and zones a quarter wavelength wide
 #: (0.35 m of 1.37 m; the chooser's half wavelength suits walls that only follow the sea);
 #: the box then starts past the flume's first gauge (x = 0.6 m), which it leaves out
-FLOATING_NEAR_FIELD = ("domain.kind=nearfield", "waves.kind=regular", "waves.depth=0.3",
-                       "domain.absorbing_walls=true", "domain.zone=0.35", "probes.gauges=[0.8, 1.6]")
 #: the gauge upstream of the box [m] both runs read (inside the near field's box)
 UPSTREAM_GAUGE_X = 0.8
+FLOATING_NEAR_FIELD = ("domain.kind=nearfield", "waves.kind=regular", "waves.depth=0.3",
+                       "domain.absorbing_walls=true", "domain.zone=0.35", f"probes.gauges=[{UPSTREAM_GAUGE_X}, 1.6]")
 #: targets: heave and surge first-harmonic amplitudes within 5 % of the flume's; the near
 #: field at least 3 times cheaper (CPU)
 FLOATING_AMPLITUDE_TOL, FLOATING_CHEAPER = 0.05, 3.0
