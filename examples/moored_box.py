@@ -5,7 +5,8 @@ A 2-D box (2 m wide, 1 m tall, 500 kg/m^3, 1 m thick) floats on the analytic flu
 20 m either side, 10 m down. It starts 3 m to the right of its rest position and is let
 go. `cosim run examples/moored_box.py` runs it once (the catenary); run as a script it
 runs every mooring model (`moorings.model`: catenary, sph-cable, fmu, moordyn when
-installed) and plots their surge and fairlead tensions together in out/moored_box/.
+installed) and plots their surge and fairlead tensions together in out/moored_box/
+(`--duration S`: each model over S seconds instead of the scene's 20).
 1200 coupling steps for the 20 s with the catenary; what each model costs: docs/examples.md.
 """
 from cosim.scene import Analytic, Box, Coupling, Line, Moorings, Scene, World
@@ -24,6 +25,8 @@ scene = Scene(
 )
 
 if __name__ == "__main__":
+    import argparse
+
     import matplotlib
 
     matplotlib.use("Agg")
@@ -31,9 +34,13 @@ if __name__ == "__main__":
 
     from moorings.moordyn_mooring import moordyn_available
 
+    parser = argparse.ArgumentParser(description="Run the moored box with every mooring model and plot them together.")
+    parser.add_argument("--duration", type=float, default=scene.world.duration, help="seconds simulated per model")
+    duration = parser.parse_args().duration
     fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(7, 6), dpi=120, sharex=True)
     for model in ("catenary", "sph-cable", "fmu", "moordyn")[:None if moordyn_available() else 3]:
-        r = scene.with_values([f"moorings.model={model}"]).run(f"out/moored_box/{model}", overwrite=True, progress=False)
+        r = scene.with_values([f"moorings.model={model}", f"world.duration={duration}"]).run(
+            f"out/moored_box/{model}", overwrite=True, progress=False)
         print(f"{model:10s} {r.summary['steps']} steps, {r.summary['wall_s']:.2f} s wall; surge at the end "
               f"{r['box.surge'][-1]:+.4f} m, tensions {r['box.left.tension'][-1]:.1f} / "
               f"{r['box.right.tension'][-1]:.1f} N")
