@@ -42,6 +42,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field, replace
+from functools import cached_property
 from pathlib import Path
 
 import numpy as np
@@ -394,10 +395,17 @@ class Translation:
         object.__setattr__(self, "direction", tuple((e / np.linalg.norm(e)).tolist()))
 
     def __call__(self, t: float, ref):
-        e = np.asarray(self.direction)
+        e = self._e
         ref = _check_ref("Translation", ref, e.size)
         s, ds = self.signal(t)
-        return ref + s * e, np.broadcast_to(ds * e, ref.shape).copy()
+        vel = np.empty_like(ref)
+        vel[:] = ds * e
+        return ref + s * e, vel
+
+    @cached_property
+    def _e(self) -> np.ndarray:
+        """The unit direction as an array (made once: a paddle is placed every step)."""
+        return np.asarray(self.direction)
 
     def acceleration(self, t: float) -> np.ndarray:
         """Acceleration of every point [m/s^2] (dim,)."""

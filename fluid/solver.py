@@ -660,7 +660,7 @@ class Fluid:
         idx = self._rows_of(np.where(inside, ids, 0))
         if not inside.all() or (idx < 0).any():
             raise InputError("fluid: set_particle_motion got ids of particles that do not exist (removed?)")
-        if (ps.kind[idx] == Kind.FLUID).any() or (ps.kind[idx] == Kind.FIXED_WALL).any():
+        if (ps.kind[idx] == Kind.FLUID.value).any() or (ps.kind[idx] == Kind.FIXED_WALL.value).any():
             raise InputError("fluid: set_particle_motion moves MOVING_WALL or BODY particles only")
         pos, vel = np.asarray(pos, np.float64), np.asarray(vel, np.float64)
         if pos.shape != (len(ids), self.config.dim) or vel.shape != pos.shape:
@@ -812,7 +812,7 @@ class Fluid:
             self._prm, c.rho0, c.speed_of_sound, c.gamma, ps.p, self._work, self._xbins, self.near_fluid,
             self._walls_rates, m)
         if self._drop_wall_continuity:
-            self._drho[(ps.kind == Kind.FIXED_WALL) | (ps.kind == Kind.MOVING_WALL)] = 0.0
+            self._drho[(ps.kind == Kind.FIXED_WALL.value) | (ps.kind == Kind.MOVING_WALL.value)] = 0.0  # ints: fast
         if m is None:
             self._limit = stable_dt(self._acc, visc, self._cs, ps.kind, c.h, c.cfl, c.dt_max, c.nu,
                                     **self._diffusivity)

@@ -115,12 +115,19 @@ class RegularWavemaker:
     def wavelength(self) -> float:
         return 2.0 * math.pi / self.k
 
-    @property
+    @cached_property
     def stroke(self) -> float:
         """Paddle stroke S [m] (piston) or stroke at the still-water level [m] (flap)."""
         return self.H / height_to_stroke(self.kind, self.k * self.depth)
 
     def _ramp(self, t):
+        if np.ndim(t) == 0:  # one time, as a paddle is placed every step: no arrays to make
+            t = float(t)
+            if self.ramp == 0:
+                return 1.0, 0.0
+            s = min(max(t / (self.ramp * self.T), 0.0), 1.0)
+            r = 0.5 * (1.0 - np.cos(math.pi * s))
+            return r, (0.5 * math.pi * np.sin(math.pi * s) / (self.ramp * self.T) if 0.0 < s < 1.0 else 0.0)
         t = np.asarray(t, dtype=float)
         if self.ramp == 0:
             return np.ones_like(t), np.zeros_like(t)
@@ -136,7 +143,7 @@ class RegularWavemaker:
         w = 2.0 * math.pi / self.T
         a = 0.5 * self.stroke if self.kind == "piston" else 0.5 * self.stroke / self.depth
         r, dr = self._ramp(t)
-        t = np.asarray(t, dtype=float)
+        t = float(t) if np.ndim(t) == 0 else np.asarray(t, dtype=float)
         return a * r * np.sin(w * t), a * (dr * np.sin(w * t) + r * w * np.cos(w * t))
 
     def paddle(self, x0: float = 0.0, z_bottom: float = 0.0):
