@@ -21,6 +21,7 @@ it with ``python tests/test_scene_errors.py > docs/scene_errors.md``.
 
 from __future__ import annotations
 
+import atexit
 import contextlib
 import copy
 import dataclasses
@@ -28,6 +29,7 @@ import functools
 import math
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -1661,16 +1663,38 @@ def _cosim(args, cwd) -> subprocess.CompletedProcess:
     return subprocess.run(cmd, capture_output=True, text=True, cwd=cwd, env=env, timeout=300)
 
 
+def _write_case_files(folder, files: tuple) -> None:
+    for name, text in {**CLI_FILES, **dict(files)}.items():
+        Path(folder, name).parent.mkdir(parents=True, exist_ok=True)
+        Path(folder, name).write_text(text, encoding="utf-8")
+
+
+@functools.lru_cache(maxsize=None)
+def _made_by(args: tuple, files: tuple) -> Path:
+    """The output folder that the command ``args`` (``cosim run ... --out OUT``) makes among
+    ``files``: run once per test process and copied into each case that starts from it (a
+    run costs seconds, and the cases that spoil its checkpoint start from the same one)."""
+    tmp = tempfile.mkdtemp(prefix="scene-errors-made-")
+    atexit.register(shutil.rmtree, tmp, True)
+    _write_case_files(tmp, files)
+    r = _cosim(args, tmp)
+    assert r.returncode == 0, f"{' '.join(args)}: {r.stderr[-2000:]}"
+    return Path(tmp, args[args.index("--out") + 1])
+
+
 @functools.lru_cache(maxsize=None)
 def run_cli(c: CliCase) -> tuple[int, str, bool]:
     """(exit status, stderr, whether the output folder was left as it was: not made, or,
     where the case made it first, unchanged) of ``python -m cosim.cli run ARGS`` in a fresh
-    folder holding the case's files, after the case's ``prepare`` commands."""
+    folder holding the case's files, after the case's ``prepare`` commands (a ``cosim run``
+    among them: its folder copied from :func:`_made_by`)."""
     with tempfile.TemporaryDirectory(prefix="scene-errors-cli-") as tmp:
-        for name, text in {**CLI_FILES, **dict(c.files)}.items():
-            Path(tmp, name).parent.mkdir(parents=True, exist_ok=True)
-            Path(tmp, name).write_text(text, encoding="utf-8")
+        _write_case_files(tmp, c.files)
         for args in c.prepare:
+            if args[:2] == ("cosim", "run"):
+                made = _made_by(args, c.files)
+                shutil.copytree(made, Path(tmp, made.name), dirs_exist_ok=True)
+                continue
             r = _cosim(args, tmp)
             assert r.returncode == 0, f"{' '.join(args)}: {r.stderr[-2000:]}"
         before = _listing(Path(tmp, c.out))
