@@ -5,7 +5,9 @@ NUMBA_ENABLE_CUDASIM=1, which must be set before numba.cuda is first imported an
 reach the other tests; the simulator runs each kernel in Python, so the cases are tiny
 (156-274 particles), and take 5-30 s each (the 3-D ones the longest; the worker makes
 the simulator yield the GIL as it polls its threads, without which a case took up to ten
-times longer on a loaded machine); each runs once, in the one test that checks it.
+times longer on a loaded machine, and call device functions without the per-call swap of
+their module's ``cuda`` under a lock that every thread contends for, which took three
+quarters of a case's time); each runs once, in the one test that checks it.
 Skipped, with the reason, where numba-cuda is not installed. Each starts from a disturbed state (positions moved by up to
 0.05 dx, velocities of 0.1 m/s, densities within 0.5 %), so that every term acts:
 
@@ -18,11 +20,10 @@ Skipped, with the reason, where numba-cuda is not installed. Each starts from a 
   diffusion faded under the free surface, alpha 0.05 with alpha_wall 0.3, MLS every 3
   steps (Verlet's n-1 density shifted with it), Verlet with an Euler step every 4.
 * ``col3d``: a 3-D column (156 particles, 24 fluid) on a floor beside a wall, Wendland,
-  the renormalised (Antuono) diffusion, XSPH, symplectic; two steps (five for the cases
-  above, whose re-initialisations and Verlet resets act every 3-4 steps).
+  the renormalised (Antuono) diffusion, XSPH, symplectic.
 * ``tilt2d``, ``tilt3d``: the dam break with Adami walls and the column, under gravity
   tilted off -z (g = (2.5, -9.5) and (1.5, -1.0, -9.6) m/s^2): the Fourtakas diffusion's
-  hydrostatic part taken along g; two steps.
+  hydrostatic part taken along g.
 
 Tolerance: every compared field (accelerations, density rates, displacements, velocities,
 densities, group forces and moments, per-particle boundary forces) agrees within
@@ -31,7 +32,7 @@ the CPU pair loop sums a particle's neighbour terms in vector lanes (fastmath le
 reassociate), the GPU's in sequence, and the group loads are summed with atomics in any
 order. Why 1e-10: a pair sum holds up to ~100 terms, each up to ~100 times the result where
 pressure terms cancel (hydrostatic columns), so reordering moves it by ~100 x 100 x 1.1e-16
-~ 1e-12 of its scale per evaluation, and the worker's five steps at most accumulate five of those; a wrong or
+~ 1e-12 of its scale per evaluation, and the worker's five steps accumulate five of those; a wrong or
 missing term (viscosity, XSPH, diffusion, the fade) moves a field by 1e-6 of its scale or
 more. Measured (2026-11-25): at most 2.0e-13 over all fields and steps (body2d after one step).
 """
