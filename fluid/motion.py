@@ -385,6 +385,8 @@ class Translation:
 
     direction: tuple
     signal: Signal
+    #: every point moves alike (``Fluid.prescribed_acceleration`` differences one of them)
+    uniform = True
 
     def __post_init__(self):
         e = np.asarray(self.direction, np.float64)
@@ -487,6 +489,8 @@ class Combined:
     (x, z), or 3). A callable for :meth:`fluid.solver.Fluid.prescribe_motion`."""
 
     components: tuple
+    #: every point moves alike (``Fluid.prescribed_acceleration`` differences one of them)
+    uniform = True
 
     def __post_init__(self):
         comps = tuple(self.components) if isinstance(self.components, (tuple, list)) else ()

@@ -624,8 +624,9 @@ class Fluid:
         """Acceleration [m/s^2] (N, dim) of every particle (current order) at the time the
         prescribed groups were last placed: the motion's own
         ``motion.particle_acceleration(t, ref)`` where it has one that gives an array, else the central difference of its velocity
-        over ``+-eps`` [s] about it; zero for the other particles. None when no group has a
-        prescribed motion."""
+        over ``+-eps`` [s] about it (of one particle, for every one, where the motion says it
+        is ``uniform``: a rigid translation); zero for the other particles. None when no group
+        has a prescribed motion."""
         if not self._motions or math.isnan(self._t_placed):
             return None
         ps, t = self.ps, self._t_placed
@@ -634,10 +635,11 @@ class Fluid:
             sel, keep = self._group_rows(group, ids)
             own = getattr(motion, "particle_acceleration", None)
             a = None if own is None else own(t, ref)
-            if a is None:
-                v1 = np.asarray(motion(t + eps, ref)[1])
-                v0 = np.asarray(motion(t - eps, ref)[1])
-                a = (v1 - v0) / (2.0 * eps)
+            if a is None:  # a motion that moves every point alike (``uniform``): its difference on one row
+                rows = ref[:1] if getattr(motion, "uniform", False) else ref
+                v1 = np.asarray(motion(t + eps, rows)[1])
+                v0 = np.asarray(motion(t - eps, rows)[1])
+                a = np.broadcast_to((v1 - v0) / (2.0 * eps), ref.shape)
             acc[sel] = np.asarray(a)[keep]
         return acc
 

@@ -185,6 +185,7 @@ def piston(displacement):
     def motion(t, ref):
         return by_dim[np.shape(ref)[-1]](t, ref)
 
+    motion.uniform = True  # a translation: every point moves alike
     return motion
 
 

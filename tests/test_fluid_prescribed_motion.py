@@ -64,3 +64,38 @@ def test_prescribing_a_fixed_wall_or_missing_group_is_refused():
         fluid.prescribe_motion(7, _stroke)
     with pytest.raises(InputError, match="shapes"):
         fluid.prescribe_motion(1, lambda t, ref: (ref[:3], ref[:3]))
+
+
+def _full_difference(motion, t, ref, eps=1e-6):
+    """The central difference of the motion's velocity at every point (what
+    ``Fluid.prescribed_acceleration`` takes for a motion without its own acceleration)."""
+    return (np.asarray(motion(t + eps, ref)[1]) - np.asarray(motion(t - eps, ref)[1])) / (2.0 * eps)
+
+
+@pytest.mark.parametrize("kind", ["translation", "combined", "piston", "flap"])
+def test_a_uniform_motions_acceleration_is_its_one_point_difference_for_all(kind):
+    """A motion that moves every point alike (``uniform``: a translation, several at once, a
+    piston paddle) has its velocity differenced at one point, bit for bit the difference at
+    each; a flap (a rotation: every point its own) is differenced at each point."""
+    from fluid.motion import Combined, Harmonic, Translation
+    from fluid.wavemaker import RegularWavemaker, flap
+
+    paddle = RegularWavemaker("piston", 0.02, 1.0, 0.2)
+    motion = {"translation": Translation((1.0, 0.0), Harmonic(0.01, 0.5)),
+              "combined": Combined((Translation((1.0, 0.0), Harmonic(0.01, 0.5)),
+                                    Translation((0.0, 1.0), Harmonic(0.004, 0.3, phase=0.4)))),
+              "piston": paddle.paddle(),
+              "flap": flap(lambda t: (0.05 * math.sin(3.0 * t), 0.15 * math.cos(3.0 * t)), hinge=(0.0, 0.0))}[kind]
+    assert getattr(motion, "uniform", False) == (kind != "flap")
+    fluid = _tank_with_piston("symplectic")
+    sel = fluid.ps.group == 1
+    ref = fluid.ps.pos[sel][np.argsort(fluid.ps.ids[sel])].copy()
+    fluid.prescribe_motion(1, motion)
+    fluid.initialize(0.3)
+    acc = fluid.prescribed_acceleration()
+    rows = fluid._rows_of(np.sort(fluid.ps.ids[fluid.ps.group == 1]))
+    want = _full_difference(motion, 0.3, ref)
+    assert np.array_equal(acc[rows], want)
+    assert (acc[fluid.ps.group != 1] == 0).all()
+    assert np.abs(want).max() > 1e-3  # [m/s^2] it accelerates
+    assert (kind == "flap") == (np.ptp(want, axis=0).max() > 0)  # a rotation's differs from point to point
