@@ -1671,15 +1671,15 @@ def _write_case_files(folder, files: tuple) -> None:
 
 @functools.lru_cache(maxsize=None)
 def _made_by(args: tuple, files: tuple) -> Path:
-    """The output folder that the command ``args`` (``cosim run ... --out OUT``) makes among
-    ``files``: run once per test process and copied into each case that starts from it (a
-    run costs seconds, and the cases that spoil its checkpoint start from the same one)."""
+    """The folder in which the command ``args`` (``cosim run ... --out OUT``) ran among
+    ``files``: run once per test process, its OUT copied into each case that starts from it
+    (a run costs seconds, and the cases that spoil its checkpoint start from the same one)."""
     tmp = tempfile.mkdtemp(prefix="scene-errors-made-")
     atexit.register(shutil.rmtree, tmp, True)
     _write_case_files(tmp, files)
     r = _cosim(args, tmp)
     assert r.returncode == 0, f"{' '.join(args)}: {r.stderr[-2000:]}"
-    return Path(tmp, args[args.index("--out") + 1])
+    return Path(tmp)
 
 
 @functools.lru_cache(maxsize=None)
@@ -1692,8 +1692,8 @@ def run_cli(c: CliCase) -> tuple[int, str, bool]:
         _write_case_files(tmp, c.files)
         for args in c.prepare:
             if args[:2] == ("cosim", "run"):
-                made = _made_by(args, c.files)
-                shutil.copytree(made, Path(tmp, made.name), dirs_exist_ok=True)
+                out = args[args.index("--out") + 1]  # OUT as given (a path under the folder)
+                shutil.copytree(_made_by(args, c.files) / out, Path(tmp, out), dirs_exist_ok=True)
                 continue
             r = _cosim(args, tmp)
             assert r.returncode == 0, f"{' '.join(args)}: {r.stderr[-2000:]}"
