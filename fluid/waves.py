@@ -310,7 +310,7 @@ class Sea:
 
     def velocity(self, x, y, z, t) -> np.ndarray:
         """Water velocity [m/s], ``(..., 3)``, at points ``x``, ``y``, ``z`` [m], time ``t`` [s]."""
-        return self.kinematics(x, y, z, t)[0]
+        return self._vector(self._evaluate(x, y, z, t, ("u",)), "uh", "w")
 
     def acceleration(self, x, y, z, t) -> np.ndarray:
         """The local time derivative ∂u/∂t [m/s^2], ``(..., 3)`` (not Du/Dt)."""
@@ -327,10 +327,17 @@ class Sea:
         return (o["eta"], *self._vectors(o))
 
     def _vectors(self, o):
-        e = self.heading
-        u = np.stack([o["uh"] * e[0], o["uh"] * e[1], o["w"]], axis=-1)
-        a = np.stack([o["ah"] * e[0], o["ah"] * e[1], o["aw"]], axis=-1)
-        return u, a
+        return self._vector(o, "uh", "w"), self._vector(o, "ah", "aw")
+
+    def _vector(self, o, along: str, up: str) -> np.ndarray:
+        """The world vector ``(..., 3)`` of the components ``o[along]`` along the heading
+        and ``o[up]`` along z."""
+        e, h = self.heading, o[along]
+        out = np.empty(h.shape + (3,))
+        np.multiply(h, e[0], out=out[..., 0])
+        np.multiply(h, e[1], out=out[..., 1])
+        out[..., 2] = o[up]
+        return out
 
     def dynamic_pressure(self, x, y, z, t, rho: float) -> np.ndarray:
         """The wave's pressure [Pa] in water of density ``rho`` [kg/m^3]: the total pressure

@@ -92,6 +92,7 @@ def test_linear_wave_is_the_airy_closed_form_and_linear_wave_is_it():
         np.testing.assert_allclose(lw.elevation(p, t), eta, rtol=0, atol=1e-12 * a)
         ru, ra = rw.kinematics(p[:, 0], p[:, 1], p[:, 2], t)
         lu, la = lw.kinematics(p, t, level)
+        assert np.array_equal(rw.velocity(p[:, 0], p[:, 1], p[:, 2], t), ru)  # asked alone: the same sums
         for got in (ru, lu, rw.velocity(p[:, 0], p[:, 1], p[:, 2], t)):
             np.testing.assert_allclose(got, u, rtol=0, atol=tol)
         for got in (ra, la, rw.acceleration(p[:, 0], p[:, 1], p[:, 2], t)):
