@@ -180,7 +180,8 @@ SETTINGS: tuple[Setting, ...] = (
             "step; verlet, 1 pair loop per step", kind=str, choices=("symplectic", "verlet"),
             note="fluid.integrator", scene="set-up"),
     Setting("verlet_reset", 40, "Verlet: steps between forward-Euler steps", kind=int, lo=1,
-            hint="DualSPHysics uses 40"),
+            hint="DualSPHysics uses 40", note="fewer lets the density diffusion take longer steps (fluid.integrator)",
+            scene="set-up"),
     Setting("dt_max", math.inf, "upper bound of the fluid step; inf: none", "s", lo=0, lo_open=True, finite=False),
     Setting("domain_lo", None, "the domain box's lower corner; particles leaving the box are removed and counted "
             "(unset: the box of the initial particles grown by max(10 % of its size, 4 h) on every side)", "m",
