@@ -38,6 +38,7 @@ from typing import Any, Callable, Sequence
 
 import numpy as np
 
+from bodies.sampling import cross
 from cosim.added_mass import LIGHT_BODY, AddedMass, fluid_density
 from cosim.clock import TICKS_PER_SECOND, Clock, to_ticks
 from cosim.errors import ConfigurationError, ConvergenceError, InputError, InstabilityError, SolverError
@@ -375,7 +376,7 @@ class Coupler:
     def _fairlead_motion(self, a: MooringAttachment, sites, kin):
         ids, body = sites
         pos = self.bodies.site_positions(ids)
-        vel = kin.velocity[body] + np.cross(kin.omega[body], pos - kin.com[body])
+        vel = kin.velocity[body] + cross(kin.omega[body], pos - kin.com[body])
         if a.mooring.dim == 2:
             return pos[:, [0, 2]], vel[:, [0, 2]]
         return pos, vel
@@ -413,7 +414,7 @@ class Coupler:
             f3 = f if a.mooring.dim == 3 else np.stack([f[:, 0], np.zeros(len(f)), f[:, 1]], axis=1)
             r = arms[j] if arms and j in arms else self.bodies.site_positions(ids) - kin.com[body]
             np.add.at(F, body, f3)
-            np.add.at(T, body, np.cross(r, f3))
+            np.add.at(T, body, cross(r, f3))
         return F, T
 
     def step(self, t_end: float) -> StepInfo:
@@ -535,7 +536,7 @@ class Coupler:
         self._check_loads(F_fluid, T_fluid)
         # the fluid's moment is about the centre of mass at the start of the step; the
         # bodies take the force at their moving centre, half a step on on average
-        return F_fluid, T_fluid - np.cross(0.5 * dt * velocity, F_fluid)
+        return F_fluid, T_fluid - cross(0.5 * dt * velocity, F_fluid)
 
     #: sub-iterations: relative tolerance on the bodies' mean velocity over a step [-]
     #: (of its size plus g dt, the velocity one step of gravity gives) ...

@@ -48,7 +48,7 @@ from typing import Mapping, Sequence
 
 import numpy as np
 
-from bodies.sampling import half_extents, mesh_volume, signed_distance
+from bodies.sampling import cross, half_extents, mesh_volume, signed_distance
 from errors import InputError
 from fluid.waves import RegularWave, Sea, SeaError
 
@@ -340,12 +340,6 @@ class AnalyticFluid:
             self._update()
             self._dirty = False
 
-    @staticmethod
-    def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-        """Row-wise a × b of ``(n, 3)`` arrays (np.cross costs more than the sum here)."""
-        return np.column_stack([a[:, 1] * b[:, 2] - a[:, 2] * b[:, 1], a[:, 2] * b[:, 0] - a[:, 0] * b[:, 2],
-                                a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]])
-
     def _per_body(self, values: np.ndarray) -> np.ndarray:
         """Sums of per-cell rows ``(n_cells, 3)`` over each body, ``(n_bodies, 3)``."""
         return self._membership @ values
@@ -370,12 +364,12 @@ class AnalyticFluid:
         centre = np.divide(moment, vsub[:, None], out=kin.com.copy(), where=vsub[:, None] > 0)
         F = np.zeros((self.n_bodies, 3))
         F[:, 2] = self.rho * self.g * vsub
-        T = np.cross(centre - kin.com, F)
+        T = cross(centre - kin.com, F)
         v_rel = kin.velocity
         if sea is not None:
             f_fk = self.rho * wv[:, None] * a  # Froude–Krylov inertia of each cell [N]
             F += self._per_body(f_fk)
-            T += self._per_body(self._cross(p_w - kin.com[self._owner], f_fk))
+            T += self._per_body(cross(p_w - kin.com[self._owner], f_fk))
             inside = vsub[:, None] > 0
             u_mean = np.divide(self._per_body(wv[:, None] * u), vsub[:, None], out=np.zeros((self.n_bodies, 3)),
                                where=inside)
@@ -383,7 +377,7 @@ class AnalyticFluid:
                                where=inside)
             f_am = self._ma * a_mean  # diffraction: the added mass times the water's acceleration, at the centre
             F += f_am  #                of buoyancy
-            T += np.cross(centre - kin.com, f_am)
+            T += cross(centre - kin.com, f_am)
             v_rel = kin.velocity - u_mean
         s = (vsub / self.volume)[:, None]
         F -= s * (self._lin[:, :3] * v_rel + self._quad[:, :3] * np.abs(v_rel) * v_rel)
