@@ -317,7 +317,7 @@ def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """Row-wise ``a × b`` of ``(n, 3)`` arrays: ``np.cross``'s products and differences in its
     order (the same bits), without its axis moves and checks, which cost more than the
     products on the few rows of a step's bodies, fairleads and boundary particles."""
-    out = np.empty(np.broadcast_shapes(a.shape, b.shape))
+    out = np.empty((max(len(a), len(b)), 3))  # one row broadcasts against many
     out[:, 0] = a[:, 1] * b[:, 2] - a[:, 2] * b[:, 1]
     out[:, 1] = a[:, 2] * b[:, 0] - a[:, 0] * b[:, 2]
     out[:, 2] = a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]
