@@ -162,7 +162,7 @@ def test_the_first_harmonic_is_read_through_a_slow_drift():
 @pytest.mark.slow
 def test_the_quick_floating_box_case_runs_and_judges_its_targets():
     """cosim validate nearfield-floating-box --quick: the moored box in its flume, in the near
-    field (absorbing end walls, quarter-wavelength zones), and the flume without it (dx =
+    field (absorbing end walls, quarter-wavelength zones, Verlet), and the flume without it (dx =
     0.02 m, 5 s). What the case found holds: the flume's wave at the body within 2 % of the
     nominal height the near field imposes, the box's heave and surge per incident height
     within the 5 % of the target, on under half the flume's particles

@@ -361,9 +361,9 @@ def floating_flume(quick: bool):
       quick="dx = 0.02 m, 5 s, amplitudes over 3-5 s: the same tolerances", scene=floating_flume)
 def nearfield_floating_box(quick: bool) -> dict:
     """The scene ``FLOATING_SCENE`` run in its flume, and with the near field and the regular
-    wave of the piston's nominal height (``FLOATING_NEAR_FIELD``: absorbing end walls and
-    zones a quarter wavelength wide given, the rest of the box chosen by
-    ``fluid.nearfield.choose_box``), and the flume once more without the body, a gauge where
+    wave of the piston's nominal height (``FLOATING_NEAR_FIELD``: absorbing end walls,
+    zones a quarter wavelength wide and the Verlet scheme given, the rest of the box chosen
+    by ``fluid.nearfield.choose_box``), and the flume once more without the body, a gauge where
     it was: the incident wave it met. The flume's wave there is the piston's, carried along
     the flume and its absorbing zone's small reflection: a per cent or two off the nominal
     height the near field imposes.
