@@ -8,13 +8,16 @@ heave (not judged by the case); with the particles, steps and CPU seconds of eac
 line per variant, then a markdown table.
 
 A variant is ``LABEL:KEY=VALUE[,KEY=VALUE...]`` (scene keys, as ``--set`` takes them); the
-case's scene as written is always run as ``base``. Runs are kept in ``OUT/LABEL`` and read
+case's scene as written (its full variant's, c0 = 70 m/s) at ``--dx`` and ``--duration`` is
+run as ``base`` unless ``--no-base``. Runs are kept in ``OUT/LABEL`` and read
 back or resumed when the script runs again (the case's ``run_or_resume``).
 
     python benchmarks/wind_turbine_levers.py --out OUT [--dx 1.25] [--duration 40]
-        [--window 20 40] [--variant c70:fluid.c0=70] [--variant verlet:fluid.c0=70,fluid.integrator=verlet]
+        [--window 20 40] [--no-base] [--variant c140:fluid.c0=140]
+        [--variant v10:fluid.integrator=verlet,fluid.verlet_reset=10]
 
-The defaults are the case's quick variant (dx = 1.25 m, 40 s, window 20-40 s). CPU seconds
+The defaults are the case's quick variant's spacing, duration and window (dx = 1.25 m, 40 s,
+20-40 s; that variant also sets c0 = 140 m/s, ``case.QUICK_C0``: give it as a variant). CPU seconds
 are this machine's, under whatever else runs on it: compare variants run side by side.
 """
 
