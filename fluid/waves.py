@@ -310,7 +310,8 @@ class Sea:
 
     def velocity(self, x, y, z, t) -> np.ndarray:
         """Water velocity [m/s], ``(..., 3)``, at points ``x``, ``y``, ``z`` [m], time ``t`` [s]."""
-        return self._vector(self._evaluate(x, y, z, t, ("u",)), "uh", "w")
+        o = self._evaluate(x, y, z, t, ("u",))
+        return _world(o["uh"], o["w"], self.heading)
 
     def acceleration(self, x, y, z, t) -> np.ndarray:
         """The local time derivative ∂u/∂t [m/s^2], ``(..., 3)`` (not Du/Dt)."""
@@ -327,17 +328,8 @@ class Sea:
         return (o["eta"], *self._vectors(o))
 
     def _vectors(self, o):
-        return self._vector(o, "uh", "w"), self._vector(o, "ah", "aw")
-
-    def _vector(self, o, along: str, up: str) -> np.ndarray:
-        """The world vector ``(..., 3)`` of the components ``o[along]`` along the heading
-        and ``o[up]`` along z."""
-        e, h = self.heading, o[along]
-        out = np.empty(h.shape + (3,))
-        np.multiply(h, e[0], out=out[..., 0])
-        np.multiply(h, e[1], out=out[..., 1])
-        out[..., 2] = o[up]
-        return out
+        e = self.heading
+        return _world(o["uh"], o["w"], e), _world(o["ah"], o["aw"], e)
 
     def dynamic_pressure(self, x, y, z, t, rho: float) -> np.ndarray:
         """The wave's pressure [Pa] in water of density ``rho`` [kg/m^3]: the total pressure
@@ -419,6 +411,16 @@ class Sea:
         """Add the terms beyond linear superposition to the rows of ``sums`` (those of
         :func:`_linear_sums`, the fade-in in rows 6-7) that ``want`` asks for; ``zeta``
         empty for the elevation alone. None for a linear sea."""
+
+
+def _world(along: np.ndarray, up: np.ndarray, heading: np.ndarray) -> np.ndarray:
+    """The world vectors ``(..., 3)`` of components ``along`` the unit ``heading`` (3,)
+    and ``up`` along z."""
+    out = np.empty(along.shape + (3,))
+    np.multiply(along, heading[0], out=out[..., 0])
+    np.multiply(along, heading[1], out=out[..., 1])
+    out[..., 2] = up
+    return out
 
 
 # ------------------------------------------------------------------------ regular waves
