@@ -101,7 +101,8 @@ class Coupler:
         the start loads and those at the predicted pose, exchanging participants rolled back;
         growth ~ (ω dt)⁴), ``"fluid-first"`` (the fluid first; the bodies receive exactly the
         impulse it exchanged, ``exchanged_wrenches()``), ``"auto"`` (default: fluid-first with
-        a fluid that reports its exchanged loads, the SPH fluid; else predictor-corrector).
+        the SPH fluid; explicit where no participant gives the bodies loads, which every
+        scheme then steps alike; else predictor-corrector).
     light_body:
         For bodies much lighter than the fluid they displace (added mass, :mod:`cosim.added_mass`,
         ``benchmarks/density_ratio_sweep.py``): ``"auto"`` (default) takes ``"subiterate"`` with
@@ -157,8 +158,13 @@ class Coupler:
             raise InputError(f"coupling step dt={dt!r} s is below the clock resolution of 1e-12 s")
         if scheme not in SCHEMES:
             raise InputError(f"coupling scheme {scheme!r} is not one of {', '.join(SCHEMES)}")
+        #: whether a participant gives the bodies loads (with none, every scheme steps them alike)
+        self._exchanges = fluid is not None or bool(self.moorings) or bool(self.others)
         if scheme == "auto":
-            scheme = "fluid-first" if isinstance(fluid, ExchangedLoads) else "predictor-corrector"
+            if isinstance(fluid, ExchangedLoads):
+                scheme = "fluid-first"
+            else:
+                scheme = "predictor-corrector" if self._exchanges else "explicit"
         if scheme == "fluid-first" and not isinstance(fluid, ExchangedLoads):
             raise ConfigurationError("the fluid-first scheme needs a fluid that reports the loads it exchanged "
                                      "over its last advance (exchanged_wrenches(), e.g. cosim.sph_fluid.SPHFluid)")
@@ -426,7 +432,7 @@ class Coupler:
             raise InputError(f"t_end = {t_end!r} s is not after the current time {self.t!r} s")
         n, limiter = self._step_size(ticks_left)
         t, dt = self.clock.t, n / TICKS_PER_SECOND
-        if self.scheme == "explicit" and not self._warned_held:
+        if self.scheme == "explicit" and self._exchanges and not self._warned_held:
             self._warn_held_loads(dt)
         try:
             if self.bodies is not None:

@@ -46,7 +46,8 @@ CASE_MODULES = ("cosim.validations.catenary", "cosim.validations.cable", "cosim.
                 "cosim.validations.dambreak_lobovsky", "cosim.validations.long_period",
                 "cosim.validations.elastic_table2", "cosim.validations.wind_turbine", "cosim.validations.wind_turbine_sph",
                 "cosim.validations.wave_propagation", "cosim.validations.potential",
-                "cosim.validations.nearfield", "cosim.validations.radiation")
+                "cosim.validations.nearfield", "cosim.validations.radiation",
+                "cosim.validations.shaken_cantilever")
 
 #: where the stated targets are written
 VALIDATION_DOC = "docs/VALIDATION.md"

@@ -255,6 +255,26 @@ def test_auto_scheme_fits_the_fluid():
 
     assert Coupler(bodies=bodies(), fluid=AnalyticFluid()).scheme == "predictor-corrector"
     assert Coupler(bodies=bodies(), fluid=Exchanging()).scheme == "fluid-first"
+    assert Coupler(bodies=bodies()).scheme == "explicit"  # nothing gives the bodies loads
+
+
+def test_without_loads_every_scheme_steps_the_bodies_alike(caplog):
+    """No fluid, no mooring, no other participant: the explicit and predictor-corrector
+    schemes give the same motion bit for bit (a box falling and bouncing on MuJoCo's
+    ground), so "auto" takes the explicit one's single advance, and its held-loads warning,
+    about loads nobody gives, is not said."""
+    def run_with(scheme):
+        xml = builders.scene(builders.box("b", (0.2, 0.1), (0, 0, 0.3), density=500.0, planar=True), floor_z=0.0)
+        b = MujocoBodies(xml)
+        c = Coupler(bodies=b, scheme=scheme, dt=0.01)
+        caplog.clear()
+        with caplog.at_level("WARNING", logger="cosim.coupler"):
+            c.run(0.5)
+        assert not [r for r in caplog.records if "holds the loads" in r.getMessage()]
+        return b.kinematics().com.copy(), c.scheme
+
+    (auto, scheme), (pc, _) = run_with("auto"), run_with("predictor-corrector")
+    assert scheme == "explicit" and np.array_equal(auto, pc) and auto[0, 2] < 0.3 - 0.05
 
 
 def test_a_non_finite_fluid_load_stops_the_run_naming_fluid_and_body():

@@ -16,29 +16,14 @@ import math
 
 import numpy as np
 import pytest
-from scipy.integrate import quad
 
-from bodies.elastic import BETA_L
-from cosim.scene import Coupling, ElasticPlate, NoFluid, Roll, Scene, Shake, World
+from cosim.scene import Coupling, ElasticPlate, NoFluid, Roll, Scene, World
 from cosim.scene.build import build
 from cosim.scene.probes import groups
+from cosim.validations.shaken_cantilever import (cantilever_scene, chain_frequencies, continuum_frequencies,
+                                                 shaken_run, sph_clamp_run, tip_participation)
 
 PLATE = dict(length=0.5, thickness=0.01, E=1e8, density=1000.0, base=(0.3, 0.0))  # L/h = 50, f1 = 2.04 Hz
-U = 1e-3  # base amplitude [m]: the tip moves < 1 % of L, so the chain stays linear
-
-
-def tip_participation(n: int) -> tuple[float, float]:
-    """``Gamma_n`` (``phi_n(L) = 2``) and ``Gamma_n phi_n(L)`` of the uniform cantilever's
-    n-th mode ``phi = cosh bx - cos bx - s (sinh bx - sin bx)``, ``s = (cosh bL + cos bL) /
-    (sinh bL + sin bL)``, L = 1, by quadrature."""
-    b = BETA_L[n - 1]
-    s = (math.cosh(b) + math.cos(b)) / (math.sinh(b) + math.sin(b))
-
-    def phi(x):
-        return math.cosh(b * x) - math.cos(b * x) - s * (math.sinh(b * x) - math.sin(b * x))
-
-    gamma = quad(phi, 0.0, 1.0)[0] / quad(lambda x: phi(x) ** 2, 0.0, 1.0)[0]
-    return gamma, gamma * phi(1.0)
 
 
 def sampled(scene, tmp_path, every):
@@ -58,47 +43,33 @@ def test_the_first_mode_takes_gamma_1_of_a_uniform_cantilever():
     assert g1 == pytest.approx(0.7830, abs=5e-5) and tip1 == pytest.approx(1.5660, abs=1e-4)
 
 
-@pytest.mark.parametrize("r", [0.5, pytest.param(0.85, marks=pytest.mark.long)])
-def test_the_relative_tip_motion_of_a_shaken_plate_is_the_base_excited_cantilevers(r, tmp_path):
-    """No fluid, no gravity: the tank shaken along x at ``r`` times the chain's own first
-    frequency. The clamp moves as the tank does, to round-off; the tip's deflection in the
-    tank's frame, at the forcing frequency, is the modal closed form's steady state within
-    1.5 % (the chain's frequencies, the continuum's participation factors); the chain's
-    first frequency is Euler-Bernoulli's ``1.875^2 sqrt(E I / (rho A L^4)) / 2 pi`` within
-    1 % (8 elements: +0.33 %, shear at L/h = 50 included)."""
-    probe = Scene(world=World(dim=2, duration=0.01, gravity=0.0), fluid=NoFluid(),
-                  bodies=[ElasticPlate("p", **PLATE)])
-    beam = build(probe, tmp_path / "probe").plates["p"]
-    f_chain = beam_frequencies(beam)
-    f_eb = beam.natural_frequencies(1, "euler-bernoulli")[0]
-    assert f_chain[0] == pytest.approx(f_eb, rel=0.01)
-    w = 2 * math.pi * r * f_chain[0]
-    duration = 4.0 if r > 0.6 else 2.0  # a beat of the forcing against the first mode at least
-    scene = Scene(world=World(dim=2, duration=duration, gravity=0.0, sample_every=0.005), fluid=NoFluid(),
-                  base_motion=Shake(period=2 * math.pi / w, amplitude=U), bodies=[ElasticPlate("p", **PLATE)],
-                  coupling=Coupling(scheme="explicit"))
-    _, t, cols = sampled(scene, tmp_path / "run", 0.005)
-    assert np.abs(cols["p.clamp_x"] - U * np.sin(w * t)).max() < 1e-12
-    assert np.abs(cols["p.clamp_z"]).max() < 1e-12
-    wn = 2 * math.pi * f_chain
-    closed = U * sum(tip_participation(n)[1] * (w / wn[n - 1]) ** 2 / (1 - (w / wn[n - 1]) ** 2) for n in (1, 2, 3))
-    A = np.column_stack([f(x * t) for x in (w, wn[0], wn[1]) for f in (np.sin, np.cos)])
-    fit, *_ = np.linalg.lstsq(A, cols["p.tip_x"], rcond=None)
-    assert fit[0] == pytest.approx(closed, rel=0.015)
-    assert abs(fit[1]) < 1e-3 * abs(closed)  # in phase with the base: no damping
-    # started at rest on the base, the first mode rings at its own frequency: -r of its steady state
-    assert fit[2] == pytest.approx(-r * U * tip_participation(1)[1] * r**2 / (1 - r**2), rel=0.05)
+def test_the_chain_of_the_case_has_euler_bernoullis_first_frequency():
+    """The plate of the shaken-cantilever case as an 8-element chain (shear included, L/h =
+    50): its first frequency within 1 % of ``1.875^2 sqrt(E I / (rho A L^4)) / 2 pi`` (+0.33 %),
+    and its support's rigid-body modes left out of its own frequencies."""
+    scene = cantilever_scene(0.5, 8)
+    f_chain, f_eb = chain_frequencies(scene), continuum_frequencies(scene.bodies[0])
+    assert f_eb[0] == pytest.approx(2.0433, abs=1e-4)
+    assert f_chain[0] == pytest.approx(f_eb[0], rel=0.01) and f_chain[0] > f_eb[0]
+    assert f_chain[1] == pytest.approx(f_eb[1], rel=0.02)
 
 
-def beam_frequencies(beam):
-    """The chain's own first three frequencies [Hz] (welded, linearised, no gravity)."""
-    import mujoco
-
-    from bodies import builders
-    from bodies.elastic import modal_frequencies
-
-    m = mujoco.MjModel.from_xml_string(builders.scene(beam.xml, gravity=0.0))
-    return modal_frequencies(m, mujoco.MjData(m))[:3]
+@pytest.mark.parametrize("r, elements, tol", [(0.5, 8, 0.015), pytest.param(0.85, 16, 0.01, marks=pytest.mark.long),
+                                              pytest.param(1.5, 8, 0.01, marks=pytest.mark.long)])
+def test_the_relative_tip_motion_of_a_shaken_plate_is_the_base_excited_cantilevers(r, elements, tol):
+    """No fluid, no gravity: the tank shaken along x at ``r`` times the plate's first
+    frequency (the shaken-cantilever case's runs). The clamp moves as the tank does, to
+    round-off; the tip's deflection in the tank's frame, at the forcing frequency, is the
+    continuum's modal closed form's steady state within ``tol`` (8 elements: the chain's f1
+    +0.33 %, which the closed form amplifies by 2 / (1 - r^2)), in phase with the base below
+    the first mode and in antiphase above it, with no part in quadrature (undamped); started
+    at rest on the base, the first mode rings at -r of its steady part."""
+    run = shaken_run(cantilever_scene(r, elements))
+    assert run["clamp_error_m"] < 1e-12
+    assert run["tip_error"] < tol
+    assert np.sign(run["steady_tip_m"]) == (1 if r < 1 else -1)
+    assert run["quadrature_over_closed"] < 1e-3
+    assert run["ringing_over_predicted"] == pytest.approx(1.0, abs=0.05)
 
 
 @pytest.mark.long
@@ -130,38 +101,14 @@ def roll_angle(move, t):
 
 
 @pytest.mark.long
-def test_in_a_shaken_sph_tank_the_clamp_moves_with_the_walls(tmp_path):
-    """2-D SPH tank (dx 1 cm, 0.3 s: 3 s of CPU once the fluid's kernels are compiled)
-    shaken at 20 mm: at every sample the plate's clamp has moved exactly as the tank's walls
-    (wall particles' displacement), and the plate has not been left behind as the floor
-    slid under it (issue 38)."""
-    from fluid.particles import Kind
-
-    scene = Scene.from_dict({
-        "world": {"dim": 2, "duration": 0.3, "sample_every": 0.05, "snapshot_every": 0.0},
-        "fluid": {"model": "sph", "dx": 0.01},
-        "domain": {"kind": "tank", "length": 0.4, "height": 0.25, "depth": 0.1},
-        "base_motion": {"kind": "harmonic", "period": 0.6, "amplitude": 0.02},
-        "bodies": [{"shape": "elastic-plate", "name": "p", "length": 0.08, "thickness": 0.02, "E": 1e6,
-                    "density": 2500.0, "base": [0.3, 0.0]}]})
-    built = build(scene, tmp_path)
-    sph, c = built.sph, built.coupler
-    g = next(x for x in groups(scene, built) if x.name == "motion")
-    ids = sph.ps.ids[sph.ps.kind == Kind.MOVING_WALL][::50]  # a few wall particles, by their stable ids
-
-    def walls():
-        return sph.ps.pos[np.argsort(sph.ps.ids)[ids]]  # ids are 0..N-1
-
-    start, seen = walls(), 0.0
-    for k in range(1, 7):
-        c.run(0.05 * k)
-        row = dict(zip(g.columns, g.sample()))
-        shift = walls() - start
-        assert np.ptp(shift, axis=0) == pytest.approx([0.0, 0.0], abs=1e-12)  # the walls move rigidly
-        assert row["p.clamp_x"] == pytest.approx(shift[0, 0], abs=1e-9)
-        assert row["p.clamp_z"] == pytest.approx(shift[0, 1], abs=1e-9)
-        seen = max(seen, abs(row["p.clamp_x"]))
-    assert seen > 0.015
+def test_in_a_shaken_sph_tank_the_clamp_moves_with_the_walls():
+    """The case's 2-D SPH tank (dx 1 cm, 0.3 s: 3 s of CPU once the fluid's kernels are
+    compiled) shaken at 20 mm: at every sample the plate's clamp has moved exactly as the
+    tank's walls (wall particles' displacement), the walls rigidly, and the plate has not
+    been left behind as the floor slid under it."""
+    run = sph_clamp_run()
+    assert run["clamp_vs_walls_m"] < 1e-9 and run["walls_spread_m"] < 1e-12
+    assert run["walls_moved_m"] > 0.015
 
 
 def test_what_an_mjcf_model_fixes_to_its_world_is_warned_of_under_base_motion(tmp_path):

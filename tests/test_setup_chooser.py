@@ -87,7 +87,7 @@ OWN = {"wind-turbine-sph": "h = sqrt(2) dx, the kernel width that holds the base
                              "is not measured on this packet"}
 #: the cases with a scene file whose quick variant runs another fluid
 OTHER_FLUID = {"wind-turbine-moorings", "potential-hemisphere", "moored-body", "potential-irregular",
-               "potential-cylinder-rao"}
+               "potential-cylinder-rao", "shaken-cantilever"}
 
 
 def _run_auto(name: str):

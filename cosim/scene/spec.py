@@ -1211,7 +1211,8 @@ class Probes(Spec):
 class Coupling(Spec):
     """How the coupler exchanges loads (``cosim.coupler.Coupler``). ``"auto"`` scheme:
     fluid-first with the SPH fluid (bodies receive exactly the impulse the fluid
-    exchanged), predictor-corrector otherwise."""
+    exchanged), explicit where nothing gives the bodies loads (no fluid and no mooring:
+    every scheme steps them alike), predictor-corrector otherwise."""
 
     scheme: str = choice("auto", "coupling scheme", ("auto", "explicit", "predictor-corrector", "fluid-first"))
     light_body: str = choice("auto", "remedy for bodies lighter than the fluid they displace",
