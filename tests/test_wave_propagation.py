@@ -70,3 +70,35 @@ def test_the_linear_reference_is_the_paddles_wave_behind_its_front():
     np.testing.assert_allclose(np.angle(a * np.exp(1j * wm.k * x)), 0.0, atol=2e-3)
     ahead = linear_elevation(wm, np.array([30.0]), np.array([5.0]))
     assert abs(ahead[0, 0]) < 1e-4
+
+
+def test_the_figures_of_linear_theorys_own_wave_are_linear_theory():
+    """flume_figures read at the case's gauges (five across each of 8 stations) from linear
+    theory's wave itself, long after the ramp's front has passed: every station's height
+    and phase are theory's, no decay, no reflection, theory's wavenumber."""
+    from cosim.validations.wave_propagation import _wave, flume_figures, linear_elevation, station_gauges
+
+    wm, L, _ = _wave(0.04, 1.0, 0.3)
+    ts = 40.0 + np.arange(97) / 32.0
+    eta = linear_elevation(wm, station_gauges(L, 8), ts)
+    f = flume_figures(ts, eta, wm, 8)
+    np.testing.assert_allclose(f["H1_over_H"], 1.0, atol=1e-9)
+    np.testing.assert_allclose(f["phase_lag_periods"], 0.0, atol=1e-9)
+    assert abs(f["decay_per_wavelength"]) < 1e-9 and f["reflection"] < 1e-5
+    assert f["k_over_linear"] == pytest.approx(1.0, abs=1e-9)
+    np.testing.assert_allclose(f["stations_m"], L * np.arange(1, 9))
+
+
+@pytest.mark.long
+def test_a_kept_flume_run_is_read_back_with_the_same_figures(tmp_path):
+    """run_scene in a kept folder (the full variant's, resumable across processes): run
+    once, then read back, not run, with the same figures and its CPU as read back."""
+    from cosim.validations.wave_propagation import run_scene, wave_scene
+
+    scene = wave_scene(10, 1).with_values(["world.duration=4.0"])
+    first = run_scene(scene, tmp_path / "kept")
+    again = run_scene(scene, tmp_path / "kept")
+    assert first["read_back_cpu_s"] == 0.0 and first["cpu_s"] > 0.0
+    assert again["cpu_s"] == 0.0 and again["read_back_cpu_s"] == pytest.approx(first["cpu_s"])
+    for k in ("H1_over_H", "phase_lag_periods", "reflection"):
+        np.testing.assert_array_equal(again[k], first[k])

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import contextvars
 import dataclasses
+import os
 import tempfile
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
@@ -115,6 +116,43 @@ def built(scene) -> Iterator:
             yield b
         finally:
             close_participants(b)
+
+
+def kept_runs(case: str, quick: bool) -> Path:
+    """Where a case keeps the runs it resumes between sessions (:func:`run_or_resume`):
+    ``$COSIM_CASE_RUNS/CASE/quick`` or ``/full`` (default ``out/case-runs``)."""
+    root = Path(os.environ.get("COSIM_CASE_RUNS", "out/case-runs"))
+    return root / case / ("quick" if quick else "full")
+
+
+def run_or_resume(scene, out: Path):
+    """``(results, earlier_cpu_s)`` of ``scene`` in the folder ``out``: read back if a run of
+    it there has finished (a run of another scene there is refused), resumed from its
+    checkpoint if one stopped (written by any version of the code: it may then not continue
+    bit for bit, which its summary's ``resumed`` says), else run from the start.
+    ``earlier_cpu_s`` [s]: the CPU the run recorded in earlier processes (all of it when read
+    back, the earlier segments' when resumed), which the case's own CPU does not count."""
+    import json
+
+    from cosim.errors import InputError
+    from cosim.scene.runner import CHECKPOINT, kept_scene_difference, read
+
+    done = out / "summary.json"
+    if done.is_file():
+        other = kept_scene_difference(scene, out)
+        if other is not None:
+            raise InputError(f"{out} holds a run of another scene ({other} differs); move it away, or point "
+                             f"COSIM_CASE_RUNS elsewhere")
+        s = json.loads(done.read_text())
+        if s.get("t_reached_s", 0.0) >= scene.world.duration - 1e-9 and not s.get("error"):
+            res = read(out)
+            return res, float(res.summary.get("cpu_s") or 0.0)
+    if (out / CHECKPOINT).is_file():
+        res = scene.run(out, resume=True, resume_any_version=True, progress=False, yes=True)
+    else:
+        res = scene.run(out, overwrite=True, progress=False, yes=True)
+    s = res.summary
+    return res, float(s.get("cpu_s") or 0.0) - float(s.get("cpu_s_this_run") or 0.0)
 
 
 def shaken_samples(scene) -> tuple[int, int]:

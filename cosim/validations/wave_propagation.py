@@ -20,6 +20,7 @@ import time
 
 import numpy as np
 
+from cosim.validations import case_scene
 from cosim.validations.registry import case
 from cosim.validations.waves import G
 
@@ -175,22 +176,57 @@ def propagate(dx: float, depth: float, H: float, T: float, wavelengths: int = 8,
     return read_flume(fluid, depth, H, T, wavelengths, width=width, progress=progress)
 
 
+#: gauges per station, across half a wavelength about it; and the periods fitted at the end
+GAUGES_PER_STATION, FIT_PERIODS = 5, 3.0
+
+
+def station_gauges(L: float, wavelengths: int) -> np.ndarray:
+    """The gauges' x [m]: :data:`GAUGES_PER_STATION` across each of ``wavelengths`` stations
+    whole wavelengths ``L`` [m] out, within a quarter wavelength of it, station by station."""
+    stations = np.arange(1, wavelengths + 1) * L
+    return (stations[:, None] + np.linspace(-0.25, 0.25, GAUGES_PER_STATION)[None, :] * L).ravel()
+
+
+def flume_figures(ts, eta, wm, wavelengths: int) -> dict:
+    """From the elevations ``eta`` (times ``ts`` [s], gauges :func:`station_gauges`) [m] of
+    the piston ``wm``'s flume over the fitted periods: at each station the incident first
+    harmonic's height over linear theory's at the same times (``H1_over_H``,
+    :func:`linear_elevation`: the ramp's front included) and its lag behind it [periods];
+    the decay per wavelength (a fit of ``log H1`` over the stations), the wavenumber over
+    theory's and the reflection."""
+    ts, eta = np.asarray(ts, float), np.asarray(eta, float)
+    k, omega, L = wm.k, 2.0 * math.pi / wm.T, 2.0 * math.pi / wm.k
+    gx, stations = station_gauges(L, wavelengths), np.arange(1, wavelengths + 1) * L
+    a = harmonics(ts, eta, omega).reshape(wavelengths, GAUGES_PER_STATION)
+    xs = gx.reshape(wavelengths, GAUGES_PER_STATION)
+    inc, refl = zip(*(separate(xs[j], a[j], k) for j in range(wavelengths)))
+    inc, refl = np.array(inc), np.array(refl)
+    # linear theory's incident wave at the same gauges and times (its front included)
+    a_lin = harmonics(ts, linear_elevation(wm, gx, ts), omega).reshape(wavelengths, GAUGES_PER_STATION)
+    inc_lin = np.array([separate(xs[j], a_lin[j], k)[0] for j in range(wavelengths)])
+    ratio = inc / inc_lin
+    H1 = np.abs(ratio)
+    j = np.arange(1, wavelengths + 1)
+    slope = np.polyfit(j, np.log(H1), 1)[0]
+    # eta = Re(A exp(i(w t - k_s x))): a wave that travels slower than theory's lags behind it
+    lag = -np.unwrap(np.angle(ratio)) / (2.0 * math.pi)  # periods behind linear theory
+    k_sph = k * (1.0 + np.polyfit(stations, lag, 1)[0] * 2.0 * math.pi / k)
+    return {"stations_m": stations, "wavelength_m": L, "H1_over_H": H1, "decay_per_wavelength": float(-math.expm1(slope)),
+            "k_over_linear": float(k_sph / k), "phase_lag_periods": lag,
+            "reflection": float(np.median(np.abs(refl) / np.abs(inc))), "kd": k * wm.depth}
+
+
 def read_flume(fluid, depth: float, H: float, T: float, wavelengths: int, settle_periods: float = 4.0,
-               fit_periods: float = 3.0, width: float | None = None, progress: bool = False) -> dict:
+               fit_periods: float = FIT_PERIODS, width: float | None = None, progress: bool = False) -> dict:
     """Run the piston flume ``fluid`` (initialised at t = 0; waves of height ``H`` [m], period
     ``T`` [s] in ``depth`` [m] of water) until ``settle_periods`` after the ramp's front (at
     the group velocity) has passed the last of ``wavelengths`` whole wavelengths out, then
-    ``fit_periods`` more, sampling five gauges across each station every T/32 over those.
-    Returns, at each station, the incident first harmonic's height over linear theory's at
-    the same times (``H1_over_H``, :func:`linear_elevation`: the ramp's front included) and
-    its lag behind it [periods]; the decay per wavelength (a fit of ``log H1`` over the
-    stations), the wavenumber over theory's, the reflection and the run's cost."""
+    ``fit_periods`` more, sampling the gauges of :func:`station_gauges` every T/32 over those;
+    returns :func:`flume_figures`' and the run's cost."""
     from fluid.probes import surface_elevation
 
     wm, L, _ = _wave(H, T, depth)
-    k, omega = wm.k, 2.0 * math.pi / T
-    stations = np.arange(1, wavelengths + 1) * L
-    gx = (stations[:, None] + np.linspace(-0.25, 0.25, 5)[None, :] * L).ravel()
+    gx = station_gauges(L, wavelengths)
     at = gx if width is None else np.stack([gx, np.full_like(gx, 0.5 * width)], 1)
     t_end = _duration(H, T, depth, wavelengths, settle_periods, fit_periods)
     every = T / 32.0
@@ -208,26 +244,9 @@ def read_flume(fluid, depth: float, H: float, T: float, wavelengths: int, settle
             log.info("wave propagation: t = %6.2f / %.2f s, %d steps", t, t_end, fluid.counters.steps)
     cpu = time.process_time() - cpu0
     removed = int(sum(fluid.counters.removed.values()))
-    a = harmonics(np.array(ts), np.array(eta), omega).reshape(wavelengths, 5)
-    xs = gx.reshape(wavelengths, 5)
-    inc, refl = zip(*(separate(xs[j], a[j], k) for j in range(wavelengths)))
-    inc, refl = np.array(inc), np.array(refl)
-    # linear theory's incident wave at the same gauges and times (its front included)
-    a_lin = harmonics(np.array(ts), linear_elevation(wm, gx, np.array(ts)), omega).reshape(wavelengths, 5)
-    inc_lin = np.array([separate(xs[j], a_lin[j], k)[0] for j in range(wavelengths)])
-    ratio = inc / inc_lin
-    H1 = np.abs(ratio)
-    j = np.arange(1, wavelengths + 1)
-    slope = np.polyfit(j, np.log(H1), 1)[0]
-    # eta = Re(A exp(i(w t - k_s x))): a wave that travels slower than theory's lags behind it
-    lag = -np.unwrap(np.angle(ratio)) / (2.0 * math.pi)  # periods behind linear theory
-    k_sph = k * (1.0 + np.polyfit(stations, lag, 1)[0] * 2.0 * math.pi / k)
-    return {
-        "stations_m": stations, "wavelength_m": L, "H1_over_H": H1, "decay_per_wavelength": float(-math.expm1(slope)),
-        "k_over_linear": float(k_sph / k), "phase_lag_periods": lag,
-        "reflection": float(np.median(np.abs(refl) / np.abs(inc))), "particles": int(fluid.ps.n + removed),
-        "steps": int(fluid.counters.steps), "cpu_s": cpu, "t_end_s": t_end, "kd": k * depth, "removed": removed,
-    }
+    return flume_figures(ts, eta, wm, wavelengths) | {
+        "particles": int(fluid.ps.n + removed), "steps": int(fluid.counters.steps), "cpu_s": cpu, "t_end_s": t_end,
+        "removed": removed}
 
 
 # the wave of the case: a piston flume of the wavemaker tests (kd = 1.37, H/d = 0.13, H/L = 0.029)
@@ -259,17 +278,35 @@ def wave_scene(rows: int, wavelengths: int):
     return case_scene.load("wave-propagation", [
         f"fluid.dx={n(WP_DEPTH / rows)}", f"domain.length={n((wavelengths + 0.5 + WP_ABSORBER) * L)}",
         f"domain.absorber.length={n(WP_ABSORBER * L)}", f"world.duration={n(math.ceil(t_end / every) * every)}",
-        "probes.gauges=[" + ", ".join(n(j * L) for j in range(1, wavelengths + 1)) + "]"])
+        "probes.gauges=[" + ", ".join(n(x) for x in station_gauges(L, wavelengths)) + "]"])
 
 
-def run_scene(scene) -> dict:
-    """:func:`wave_scene`'s flume built as ``cosim run`` builds it, run and read by
-    :func:`read_flume` at its stations (its gauges, one a wavelength)."""
+def run_scene(scene, out=None) -> dict:
+    """:func:`wave_scene`'s flume run by ``cosim run``'s runner and read by
+    :func:`flume_figures` from its gauges over the last :data:`FIT_PERIODS` periods. ``out``:
+    the folder where the run is kept, read back once finished and resumed from its
+    checkpoint when stopped (:func:`case_scene.run_or_resume`: a run of hours may span
+    processes); None: a temporary folder. Adds the run's particles, steps and CPU seconds
+    (``read_back_cpu_s``: those recorded by earlier processes)."""
+    import tempfile
+    from pathlib import Path
+
     from cosim.validations import case_scene
 
     w = scene.waves
-    with case_scene.built(scene) as b:
-        return read_flume(b.sph, scene.domain.depth, w.height, w.period, len(scene.probes.gauges))
+    wm, _, _ = _wave(w.height, w.period, scene.domain.depth)
+    wavelengths = len(scene.probes.gauges) // GAUGES_PER_STATION
+    if out is None:
+        with tempfile.TemporaryDirectory(prefix="wave_propagation_") as tmp:
+            res, earlier = scene.run(Path(tmp) / "run", progress=False), 0.0
+    else:
+        res, earlier = case_scene.run_or_resume(scene, Path(out))
+    fit = res.t >= scene.world.duration - FIT_PERIODS * w.period - 1e-9
+    eta = np.column_stack([res[f"gauge{i + 1}.eta"][fit] for i in range(wavelengths * GAUGES_PER_STATION)])
+    s = res.summary
+    return flume_figures(res.t[fit], eta, wm, wavelengths) | {
+        "particles": int(s["particles"]), "steps": int(s["steps"]), "cpu_s": float(s["cpu_s"]) - earlier,
+        "read_back_cpu_s": earlier}
 
 
 def _metrics(r: dict, rows: int) -> dict:
@@ -289,10 +326,12 @@ def _metrics(r: dict, rows: int) -> dict:
       scene=lambda quick: wave_scene(WP_QUICK_ROWS if quick else WP_ROWS[-1],
                                      WP_QUICK_WAVELENGTHS if quick else WP_WAVELENGTHS))
 def wave_propagation(quick: bool) -> dict:
-    """Regular waves made by a piston (linear wavemaker theory) run over 8 wavelengths
-    (:func:`propagate`) with the scenes' wave set-up; the first-harmonic heights, phases and
-    reflection at each whole wavelength out. The decay per wavelength is judged at 20 rows
-    and finer; the coarsest spacing shows the convergence.
+    """Regular waves made by a piston (linear wavemaker theory) run over 8 wavelengths of
+    the flume :func:`wave_scene` with the scenes' wave set-up (:func:`run_scene`; the full
+    variant's runs kept under ``$COSIM_CASE_RUNS/wave-propagation/full`` and resumed there,
+    :func:`case_scene.run_or_resume`); the first-harmonic heights, phases and reflection at
+    each whole wavelength out. The decay per wavelength is judged at 20 rows and finer; the
+    coarsest spacing shows the convergence.
 
     What damps a wave in weakly-compressible SPH, measured here (docs/validation/
     wave-propagation_history.md): the density diffusion where the free surface cuts the kernel, the
@@ -303,7 +342,9 @@ def wave_propagation(quick: bool) -> dict:
     harmonics (Madsen 1971), which beat along the flume."""
     rows_list = (WP_QUICK_ROWS,) if quick else WP_ROWS
     n = WP_QUICK_WAVELENGTHS if quick else WP_WAVELENGTHS
-    runs = {rows: run_scene(wave_scene(rows, n)) for rows in rows_list}
+    # the full variant's runs (the finest takes hours) are kept and resumed across processes
+    kept = None if quick else case_scene.kept_runs("wave-propagation", False)
+    runs = {rows: run_scene(wave_scene(rows, n), None if kept is None else kept / f"rows{rows}") for rows in rows_list}
     metrics, tol = {}, {}
     for rows, r in runs.items():
         metrics.update(_metrics(r, rows))
@@ -322,4 +363,5 @@ def wave_propagation(quick: bool) -> dict:
         "linear theory": {"x": [1, n], "y": [1.0, 1.0], "style": "--"}}}}
     return {"metrics": metrics, "tolerances": tol, "series": series,
             "particles": int(finest["particles"]), "steps": int(finest["steps"]),
-            "cpu_s": {str(rows): round(r["cpu_s"], 1) for rows, r in runs.items()}}
+            "cpu_s": {str(rows): round(r["cpu_s"] + r["read_back_cpu_s"], 1) for rows, r in runs.items()},
+            "read_back_cpu_s": round(sum(r["read_back_cpu_s"] for r in runs.values()), 1)}

@@ -28,11 +28,12 @@ is run again and read back once finished (:func:`cosim.scene.runner.read`).
 from __future__ import annotations
 
 import math
-import os
 from pathlib import Path
 
 import numpy as np
 
+from cosim.validations import case_scene
+from cosim.validations.case_scene import run_or_resume
 from cosim.validations.registry import case
 from cosim.validations.wave_propagation import harmonics
 
@@ -96,39 +97,8 @@ def surface_scene(scene, model: str):
 
 
 def runs_folder(quick: bool) -> Path:
-    """Where the variant's runs are kept between sessions."""
-    root = Path(os.environ.get("COSIM_CASE_RUNS", "out/case-runs"))
-    return root / "wind-turbine-sph" / ("quick" if quick else "full")
-
-
-def run_or_resume(scene, out: Path):
-    """``(results, earlier_cpu_s)`` of ``scene`` in the folder ``out``: read back if a run of
-    it there has finished (a run of another scene there is refused), resumed from its
-    checkpoint if one stopped (written by any version of the code: it may then not continue
-    bit for bit, which its summary's ``resumed`` says), else run from the start.
-    ``earlier_cpu_s`` [s]: the CPU the run recorded in earlier processes (all of it when read
-    back, the earlier segments' when resumed), which the case's own CPU does not count."""
-    import json
-
-    from cosim.errors import InputError
-    from cosim.scene.runner import CHECKPOINT, kept_scene_difference, read
-
-    done = out / "summary.json"
-    if done.is_file():
-        other = kept_scene_difference(scene, out)
-        if other is not None:
-            raise InputError(f"{out} holds a run of another scene ({other} differs); move it away, or point "
-                             f"COSIM_CASE_RUNS elsewhere")
-        s = json.loads(done.read_text())
-        if s.get("t_reached_s", 0.0) >= scene.world.duration - 1e-9 and not s.get("error"):
-            res = read(out)
-            return res, float(res.summary.get("cpu_s") or 0.0)
-    if (out / CHECKPOINT).is_file():
-        res = scene.run(out, resume=True, resume_any_version=True, progress=False, yes=True)
-    else:
-        res = scene.run(out, overwrite=True, progress=False, yes=True)
-    s = res.summary
-    return res, float(s.get("cpu_s") or 0.0) - float(s.get("cpu_s_this_run") or 0.0)
+    """Where the variant's runs are kept between sessions (:func:`case_scene.kept_runs`)."""
+    return case_scene.kept_runs("wind-turbine-sph", quick)
 
 
 def _window(res, window) -> np.ndarray:
