@@ -6,7 +6,7 @@ R = 3 m, forced 0.3 m at k R = 1) at each R/dx, read by the case's ``radiation_m
 reflection and its amplitude against the one B33 carries). Each run is kept in
 ``OUT/R_over_dx_N`` and resumed from its checkpoint or read back when the script runs again
 (``cosim.validations.case_scene.run_or_resume``): R/dx = 8 takes several CPU-hours (``cosim
-run ... --dry-run`` estimates 2.2), more than one process may be given.
+run ... --dry-run`` estimates 2.2), and a run a stopped process leaves, the next one resumes.
 
     python benchmarks/radiation_convergence.py --out OUT [--r-over-dx 4 6 8]
 
