@@ -182,8 +182,10 @@ def _order_cells(perm, start, pos, grid: Grid, tab) -> None:
 
 
 def x_bin_array(grid: Grid) -> np.ndarray:
-    """An array for the sub-bin table of :func:`order_cells_by_x` on ``grid``."""
-    return np.empty((grid.ncells + 1) * XBINS, np.uint16)
+    """An array for the sub-bin table of :func:`order_cells_by_x` on ``grid``, zeroed: a
+    sort fills the entries of the cells that hold particles, and a checkpoint saves the
+    whole table, so that two runs of the same scene write the same bytes."""
+    return np.zeros((grid.ncells + 1) * XBINS, np.uint16)
 
 
 def x_bins(xs: np.ndarray, start: np.ndarray, grid: Grid) -> np.ndarray:
