@@ -118,3 +118,18 @@ def test_the_particle_plot_draws_each_line_from_its_anchor_to_its_fairlead(tmp_p
         length = float(np.sum(np.linalg.norm(np.diff(p, axis=0), axis=1)))
         assert length == pytest.approx(ln.length, rel=2e-3), name
     assert math.isclose(shapes["box.left"][0, 0], 0.5) and list(shapes) == ["box.left", "box.right"]
+
+
+def test_a_scene_without_fluid_or_lines_records_no_loads():
+    """The loads probe leaves out what could only read zero: a plate on a shaken base with
+    no fluid and no lines has no fluid force and no node pressures to report; in the SPH
+    tank it has both, and no mooring force (no lines)."""
+    from cosim.scene.probes import PROBES
+    from cosim.validations.shaken_cantilever import cantilever_scene
+
+    scene = cantilever_scene(0.5, 8)
+    assert PROBES["loads"].names(scene) == []
+    assert "plate.tip_x" in PROBES["motion"].names(scene)
+    sph = Scene.from_toml(Path(__file__).parents[1] / "cosim" / "validations" / "scenes" / "shaken-cantilever-sph.toml")
+    names = PROBES["loads"].names(sph)
+    assert "plate.fluid_Fx" in names and "plate.p0" in names and not any("mooring" in n for n in names)

@@ -18,9 +18,9 @@ that become one HDF5 series, one CSV and one plot each:
   (``.anchor_tension`` [N]; the catenary, the SPH cable and MoorDyn report it, an FMU does
   not) and ``.tether`` [N], the load a taut inextensible catenary line carries as a length
   constraint;
-- ``loads``: per body, the fluid's and the moorings' force [N] over the last step (a
-  plate's: the sum over its links, the clamped foot's share included); per elastic plate
-  also the net pressure along x [Pa] on each node's share, ``plate.p0`` (the clamp) to
+- ``loads``: per body, the fluid's and the moorings' force [N] over the last step (each
+  where the scene has a fluid, lines; a plate's: the sum over its links, the clamped foot's
+  share included); with a fluid, per elastic plate also the net pressure along x [Pa] on each node's share, ``plate.p0`` (the clamp) to
   ``plate.pN`` (the free end), node ``k`` at ``k L / N`` from the clamp: the fluid's x
   force on link ``k`` (the hat-weighted share of the boundary particles' forces,
   :meth:`bodies.elastic.ElasticBody.split`) over its span (``l / 2`` at the two ends,
@@ -209,9 +209,11 @@ class Motion(Probe):
 
 
 def _load_sources(scene) -> tuple:
-    """Whose forces the ``loads`` probe reports: the fluid's, and the moorings' where the
-    scene has lines (a column that could only read zero is left out)."""
-    return ("fluid", "mooring") if scene.moorings is not None else ("fluid",)
+    """Whose forces the ``loads`` probe reports: the fluid's where the scene has one
+    (``fluid.model`` not "none"), the moorings' where it has lines (a column that could only
+    read zero is left out)."""
+    return tuple(s for s, there in (("fluid", scene.fluid.model != "none"), ("mooring", scene.moorings is not None))
+                 if there)
 
 
 class Loads(Probe):
@@ -222,18 +224,19 @@ class Loads(Probe):
             return []
         comps = _axes(scene.world.dim)[3]
         rigid, plates = _scene_bodies(scene)
-        out = [f"{n}.{src}_F{c}" for n in rigid + list(plates) for src in _load_sources(scene) for c in comps]
-        return out + [f"{n}.p{k}" for n, b in plates.items() for k in range(b.elements + 1)]
+        sources = _load_sources(scene)
+        out = [f"{n}.{src}_F{c}" for n in rigid + list(plates) for src in sources for c in comps]
+        return out + [f"{n}.p{k}" for n, b in plates.items() for k in range(b.elements + 1) if "fluid" in sources]
 
     def groups(self, scene, built):
         b = built.bodies
-        if b is None or not scene.probes.loads:
+        sources = _load_sources(scene)
+        if b is None or not scene.probes.loads or not sources:
             return []
         names, plates, rigid = _body_names(built)
         axes, comps = _axes(scene.world.dim)[2:]
         led = built.coupler.ledger
         rows = [[names.index(n)] for n in rigid] + [[names.index(k) for k in m.link_names] for m in plates.values()]
-        sources = _load_sources(scene)
 
         def loads():
             last = led.last()
@@ -244,7 +247,7 @@ class Loads(Probe):
 
         cols = [f"{n}.{src}_F{c}" for n in rigid + list(plates) for src in sources for c in comps]
         out = [Group("loads", cols, ["N"] * len(cols), loads)]
-        for n, m in plates.items():  # the net pressure on each node's share of the plate
+        for n, m in plates.items() if "fluid" in sources else ():  # the net pressure on each node's share
             ids = [names.index(k) for k in m.link_names]
             area = np.diff(m.link_bounds, axis=1)[:, 0] * m.width
 

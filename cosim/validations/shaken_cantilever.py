@@ -26,7 +26,7 @@ from cosim.validations.registry import case
 #: the scene of the SPH run (both variants)
 SPH_SCENE = "shaken-cantilever-sph.toml"
 #: the forcing frequency over the continuum's first bending frequency, and the run [s] at
-#: each: two beats of the forcing against the first mode or more
+#: each: a beat of the forcing against the first mode or more, for the fit to tell them apart
 RUNS = {0.5: 2.0, 0.85: 4.0, 1.5: 2.0}
 #: the forcing ratios and the plate's elements by variant (quick: True)
 VARIANTS = {True: ((0.5,), 8), False: ((0.5, 0.85, 1.5), 16)}
