@@ -2,15 +2,9 @@
 tank's support (``bodies.elastic.Support``, driven by ``MujocoBodies.drive``), so the plate
 feels the base's acceleration as a base-excited cantilever does.
 
-Reference: the uniform Euler-Bernoulli cantilever under harmonic base translation
-``u_g = U sin(w t)``, by modal superposition (Clough & Penzien 1993, Dynamics of
-Structures, §18-5, base excitation of distributed-parameter systems; Chopra 2012,
-Dynamics of Structures, §16.4): each mode's coordinate obeys ``q_n'' + w_n^2 q_n = -Gamma_n
-u_g''`` with ``Gamma_n = int phi_n / int phi_n^2`` (``Gamma_1 = 0.7830`` for the first mode
-normalised to ``phi_1(L) = 2``), so the steady-state relative tip displacement is ``U sum_n
-Gamma_n phi_n(L) r_n^2 / (1 - r_n^2) sin(w t)``, ``r_n = w / w_n``. Started at rest
-relative to the base, each mode also rings at its own frequency; fitting both
-frequencies separates the steady state from it (the run is undamped)."""
+Reference: the base-excited uniform cantilever's modal closed form (Clough & Penzien 1993,
+§18-5; Chopra 2012, §16.4), as the ``shaken-cantilever`` validation case computes and fits
+it (:mod:`cosim.validations.shaken_cantilever`), whose runs these tests make."""
 
 import math
 
