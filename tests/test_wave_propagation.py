@@ -90,9 +90,11 @@ def test_the_figures_of_linear_theorys_own_wave_are_linear_theory():
 
 
 @pytest.mark.long
-def test_a_kept_flume_run_is_read_back_with_the_same_figures(tmp_path):
+def test_a_kept_flume_run_is_read_back_with_the_same_figures(tmp_path, monkeypatch, caplog):
     """run_scene in a kept folder (the full variant's, resumable across processes): run
-    once, then read back, not run, with the same figures and its CPU as read back."""
+    once, then read back, not run, with the same figures and its CPU as read back; read
+    back by other code, the run is warned of and named as that code's."""
+    from cosim import version
     from cosim.validations.wave_propagation import run_scene, wave_scene
 
     scene = wave_scene(10, 2).with_values(["world.duration=2.0"])
@@ -102,3 +104,10 @@ def test_a_kept_flume_run_is_read_back_with_the_same_figures(tmp_path):
     assert again["cpu_s"] == 0.0 and again["read_back_cpu_s"] == pytest.approx(first["cpu_s"])
     for k in ("H1_over_H", "phase_lag_periods", "reflection"):
         np.testing.assert_array_equal(again[k], first[k])
+    assert first["read_back_other_code"] is None and again["read_back_other_code"] is None
+    made_by = version.code_version()
+    monkeypatch.setattr(version, "code_version", lambda: "0123456789abcdef")
+    with caplog.at_level("WARNING", logger="cosim.validations.case_scene"):
+        later = run_scene(scene, tmp_path / "kept")
+    assert later["read_back_other_code"] == made_by and "made by other code" in caplog.text
+    np.testing.assert_array_equal(later["H1_over_H"], first["H1_over_H"])

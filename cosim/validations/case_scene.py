@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import contextvars
 import dataclasses
+import logging
 import os
 import tempfile
 from collections.abc import Iterator, Sequence
@@ -25,6 +26,8 @@ from contextlib import contextmanager
 from pathlib import Path
 
 from cosim.validations.folders import SCENES
+
+log = logging.getLogger(__name__)
 
 #: whether the cases run the chooser's set-up (set by :func:`auto_setup`; a context variable, so
 #: that a thread or task that did not enter it is not affected)
@@ -131,11 +134,16 @@ def run_or_resume(scene, out: Path):
     checkpoint if one stopped (written by any version of the code: it may then not continue
     bit for bit, which its summary's ``resumed`` says), else run from the start.
     ``earlier_cpu_s`` [s]: the CPU the run recorded in earlier processes (all of it when read
-    back, the earlier segments' when resumed), which the case's own CPU does not count."""
+    back, the earlier segments' when resumed), which the case's own CPU does not count. A
+    run read back that other code made (its checkpoint's ``code_version``) is warned of and
+    its ``summary["read_back_other_code"]`` names that code: its figures are that code's."""
     import json
 
+    from cosim import checkpoint
+    from cosim.checkpoint import CheckpointError
     from cosim.errors import InputError
     from cosim.scene.runner import CHECKPOINT, kept_scene_difference, read
+    from cosim.version import code_version
 
     done = out / "summary.json"
     if done.is_file():
@@ -146,6 +154,14 @@ def run_or_resume(scene, out: Path):
         s = json.loads(done.read_text())
         if s.get("t_reached_s", 0.0) >= scene.world.duration - 1e-9 and not s.get("error"):
             res = read(out)
+            try:
+                made_by = checkpoint.read(out / CHECKPOINT)["meta"]["code_version"]
+            except (OSError, KeyError, CheckpointError):
+                made_by = None
+            if made_by is not None and made_by != code_version():
+                log.warning("%s: read back a finished run made by other code (sources %s, these %s); move the "
+                            "folder away to measure this code", out, made_by, code_version())
+                res.summary["read_back_other_code"] = made_by
             return res, float(res.summary.get("cpu_s") or 0.0)
     if (out / CHECKPOINT).is_file():
         res = scene.run(out, resume=True, resume_any_version=True, progress=False, yes=True)
