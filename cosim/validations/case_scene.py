@@ -128,11 +128,12 @@ def kept_runs(case: str, quick: bool) -> Path:
     return root / case / ("quick" if quick else "full")
 
 
-def run_or_resume(scene, out: Path):
+def run_or_resume(scene, out: Path, progress=None):
     """``(results, earlier_cpu_s)`` of ``scene`` in the folder ``out``: read back if a run of
     it there has finished (a run of another scene there is refused), resumed from its
     checkpoint if one stopped (written by any version of the code: it may then not continue
-    bit for bit, which its summary's ``resumed`` says), else run from the start.
+    bit for bit, which its summary's ``resumed`` says), else run from the start, with the
+    runner's ``progress`` line (None: redrawn on a terminal, else a whole line a minute).
     ``earlier_cpu_s`` [s]: the CPU the run recorded in earlier processes (all of it when read
     back, the earlier segments' when resumed), which the case's own CPU does not count. A
     run read back that other code made (its checkpoint's ``code_version``) is warned of and
@@ -164,9 +165,9 @@ def run_or_resume(scene, out: Path):
                 res.summary["read_back_other_code"] = made_by
             return res, float(res.summary.get("cpu_s") or 0.0)
     if (out / CHECKPOINT).is_file():
-        res = scene.run(out, resume=True, resume_any_version=True, progress=False, yes=True)
+        res = scene.run(out, resume=True, resume_any_version=True, progress=progress, yes=True)
     else:
-        res = scene.run(out, overwrite=True, progress=False, yes=True)
+        res = scene.run(out, overwrite=True, progress=progress, yes=True)
     s = res.summary
     return res, float(s.get("cpu_s") or 0.0) - float(s.get("cpu_s_this_run") or 0.0)
 
