@@ -20,9 +20,10 @@ that become one HDF5 series, one CSV and one plot each:
   constraint;
 - ``loads``: per body, the fluid's and the moorings' force [N] over the last step (each
   where the scene has a fluid, lines; a plate's: the sum over its links, the clamped foot's
-  share included); with a fluid, per elastic plate also the net pressure along x [Pa] on each node's share, ``plate.p0`` (the clamp) to
-  ``plate.pN`` (the free end), node ``k`` at ``k L / N`` from the clamp: the fluid's x
-  force on link ``k`` (the hat-weighted share of the boundary particles' forces,
+  share included); with a fluid, per elastic plate also the net pressure along x [Pa] on
+  each node's share, ``plate.p0`` (the clamp) to ``plate.pN`` (the free end), node ``k``
+  at ``k L / N`` from the clamp: the fluid's x force on link ``k`` (the hat-weighted share
+  of the boundary particles' forces,
   :meth:`bodies.elastic.ElasticBody.split`) over its span (``l / 2`` at the two ends,
   ``l`` between) times the width (one group per plate, ``PLATE_pressure``);
 - ``gauges``: free-surface elevation above the still water [m] at each gauge (the SPH

@@ -291,8 +291,6 @@ def run_scene(scene, out=None) -> dict:
     import tempfile
     from pathlib import Path
 
-    from cosim.validations import case_scene
-
     w = scene.waves
     wm, _, _ = _wave(w.height, w.period, scene.domain.depth)
     wavelengths = len(scene.probes.gauges) // GAUGES_PER_STATION

@@ -222,15 +222,13 @@ def wind_turbine_sph(quick: bool) -> dict:
                "still": static_draft(still_res, still), "window_s": list(window)}
     earlier += cpu
     runs = {f"SPH, dx = {waves.fluid.dx:g} m": res}
-    other = {k: r.summary["read_back_other_code"] for k, r in (("waves", res), ("still", still_res))
-             if r.summary.get("read_back_other_code")}
+    kept = {"waves": res, "still": still_res}
     for model in ("potential", "analytic"):
         ref, cpu = run_or_resume(surface_scene(waves, model), folder / model)
         figures[model] = motion_figures(ref, window, omega)
         earlier += cpu
-        runs[f"{model} fluid"] = ref
-        if ref.summary.get("read_back_other_code"):
-            other[model] = ref.summary["read_back_other_code"]
+        runs[f"{model} fluid"] = kept[model] = ref
     # the kept runs read back that other code made: their figures are that code's
+    other = {k: r.summary["read_back_other_code"] for k, r in kept.items() if r.summary.get("read_back_other_code")}
     return judge(figures, quick) | {"read_back_cpu_s": round(earlier, 1), "series": motion_series(runs),
                                     "runs_of_other_code": other}
