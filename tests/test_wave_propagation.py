@@ -111,3 +111,21 @@ def test_a_kept_flume_run_is_read_back_with_the_same_figures(tmp_path, monkeypat
         later = run_scene(scene, tmp_path / "kept")
     assert later["read_back_other_code"] == made_by and "made by other code" in caplog.text
     np.testing.assert_array_equal(later["H1_over_H"], first["H1_over_H"])
+
+
+def test_the_3d_flume_is_the_2d_flume_extruded_with_its_gauges_on_the_mid_line():
+    """wave_scene's 3-D flume (the full variant's): the 2-D scene's flume, wave, spacing,
+    set-up and duration, ``width_rows`` rows wide, each gauge at the 2-D one's x on the
+    mid-line."""
+    from cosim.validations.wave_propagation import wave_scene
+
+    flat, deep = wave_scene(10, 3), wave_scene(10, 3, 5)
+    assert (flat.world.dim, deep.world.dim) == (2, 3)
+    assert deep.domain.width == pytest.approx(5 * flat.fluid.dx)
+    assert [g[0] for g in deep.probes.gauges] == list(flat.probes.gauges)
+    assert [g[1] for g in deep.probes.gauges] == pytest.approx([0.5 * deep.domain.width] * len(flat.probes.gauges))
+    for part in ("fluid", "waves"):
+        assert getattr(deep, part) == getattr(flat, part)
+    assert (deep.domain.length, deep.domain.depth, deep.domain.absorber) == (
+        flat.domain.length, flat.domain.depth, flat.domain.absorber)
+    assert deep.world.duration == flat.world.duration
