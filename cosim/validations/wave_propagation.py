@@ -287,12 +287,11 @@ def wave_scene(rows: int, wavelengths: int, width_rows: int | None = None):
     gx = [n(x) for x in station_gauges(L, wavelengths)]
     values = [f"fluid.dx={n(WP_DEPTH / rows)}", f"domain.length={n((wavelengths + 0.5 + WP_ABSORBER) * L)}",
               f"domain.absorber.length={n(WP_ABSORBER * L)}", f"world.duration={n(math.ceil(t_end / every) * every)}"]
-    if width_rows is None:
-        return case_scene.load("wave-propagation", values + ["probes.gauges=[" + ", ".join(gx) + "]"])
-    width = width_rows * WP_DEPTH / rows
-    return case_scene.load("wave-propagation", values + [
-        "world.dim=3", f"domain.width={n(width)}",
-        "probes.gauges=[" + ", ".join(f"[{x}, {n(0.5 * width)}]" for x in gx) + "]"])
+    if width_rows is not None:
+        width = width_rows * WP_DEPTH / rows
+        values += ["world.dim=3", f"domain.width={n(width)}"]
+        gx = [f"[{x}, {n(0.5 * width)}]" for x in gx]
+    return case_scene.load("wave-propagation", values + ["probes.gauges=[" + ", ".join(gx) + "]"])
 
 
 def run_scene(scene, out=None) -> dict:
@@ -321,7 +320,7 @@ def run_scene(scene, out=None) -> dict:
         "read_back_cpu_s": earlier, "read_back_other_code": s.get("read_back_other_code")}
 
 
-def _metrics(r: dict, rows: int) -> dict:
+def _metrics(r: dict, rows: int | str) -> dict:
     return {f"decay_per_wavelength_{rows}": r["decay_per_wavelength"],
             f"worst_lag_periods_{rows}": float(np.abs(r["phase_lag_periods"]).max()),
             f"reflection_{rows}": r["reflection"], f"k_over_linear_{rows}": r["k_over_linear"],
