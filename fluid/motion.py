@@ -15,6 +15,7 @@ returns are the exact time derivatives of the positions it returns:
 - :class:`Tabulated`: a record of displacement, velocity or acceleration against time,
   interpolated (C2 cubic spline for displacement and velocity, piecewise linear for
   acceleration as seismic records are sampled) and integrated exactly to displacement;
+- :class:`Polyline`: straight between given points (a test rig's constant speeds and holds);
 - :class:`Ramped`: any signal multiplied by a half-cosine window rising over ``t_ramp``
   (and optionally falling to zero at ``t_stop``), so that a motion sets off and stops without
   a jump in velocity or acceleration;
@@ -225,6 +226,45 @@ class Tabulated(Signal):
         tau = tc - t0
         return (d(tc) - q(tau), np.where(inside, v(tc) - dq(tau), 0.0),
                 np.where(inside, a(tc) - ddq(tau), 0.0))
+
+
+@dataclass(frozen=True)
+class Polyline(Signal):
+    """A displacement through the points (``times`` [s], ``values`` [m] or [rad]), straight
+    between them: constant velocity on each interval (the slope of the interval that ``t``
+    lies in, the later one at a point), zero acceleration. Before the first point it holds
+    the first value, after the last the last, at rest. What a test rig does that moves a
+    fairlead at constant speed, holds it, or steps it through a list of offsets; the
+    velocity jumps at each point, so a motion that
+    must start and stop smoothly is a :class:`Tabulated` spline or a :class:`Ramped` one."""
+
+    times: tuple
+    values: tuple
+
+    def __post_init__(self):
+        t = np.asarray(self.times, np.float64)
+        v = np.asarray(self.values, np.float64)
+        if t.ndim != 1 or v.shape != t.shape or t.size < 2:
+            raise InputError(f"Polyline: times and values must be 1-D of one length, at least 2, got shapes "
+                             f"{t.shape} and {v.shape}")
+        if not (np.isfinite(t).all() and np.isfinite(v).all()):
+            raise InputError("Polyline: the points hold non-finite times or values")
+        if not (np.diff(t) > 0).all():
+            k = int(np.argmax(np.diff(t) <= 0))
+            raise InputError(f"Polyline: times must increase strictly; point {k + 1} (t={t[k + 1]} s) does not "
+                             f"follow t={t[k]} s")
+        object.__setattr__(self, "times", tuple(t.tolist()))
+        object.__setattr__(self, "values", tuple(v.tolist()))
+
+    def state(self, t):
+        ts, vs = self.times, self.values
+        if t < ts[0]:
+            return vs[0], 0.0, 0.0
+        if t >= ts[-1]:
+            return vs[-1], 0.0, 0.0
+        i = int(np.searchsorted(ts, t, side="right")) - 1
+        rate = (vs[i + 1] - vs[i]) / (ts[i + 1] - ts[i])
+        return vs[i] + rate * (t - ts[i]), rate, 0.0
 
 
 def baseline_correct(record: Tabulated, degree: int = 6) -> Tabulated:

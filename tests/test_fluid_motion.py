@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 
 from cosim.errors import InputError
-from fluid.motion import (G_STANDARD, Harmonic, Ramped, Rotation, Tabulated, Translation, baseline_correct,
-                          read_at2)
+from fluid.motion import (G_STANDARD, Harmonic, Polyline, Ramped, Rotation, Tabulated, Translation,
+                          baseline_correct, read_at2)
 
 
 def _central(f, t, h=1e-6):
@@ -78,6 +78,21 @@ def _ground_motion(T=20.0, n=4001):
 
     h = 1e-4
     return t, d, (d(t + h) - 2 * d(t) + d(t - h)) / h**2
+
+
+def test_a_polyline_moves_at_each_interval_s_constant_speed_and_holds_outside_its_points():
+    """Straight between the points: the value interpolates them, the rate is the interval's
+    slope (the later interval's at a point), no acceleration; held at rest before and after."""
+    p = Polyline((1.0, 3.0, 4.0, 6.0), (0.0, 2.0, 2.0, -1.0))
+    assert p.state(0.0) == (0.0, 0.0, 0.0) and p.state(7.0) == (-1.0, 0.0, 0.0)
+    assert p.state(2.0) == pytest.approx((1.0, 1.0, 0.0), abs=1e-15)
+    assert p.state(3.0) == pytest.approx((2.0, 0.0, 0.0), abs=1e-15)  # the hold starts
+    assert p.state(5.0) == pytest.approx((0.5, -1.5, 0.0), abs=1e-15)
+    ts = np.linspace(1.05, 5.95, 50)
+    s = np.array([p.state(t)[0] for t in ts])
+    assert np.allclose(_central(lambda t: np.array([p.state(x)[0] for x in np.atleast_1d(t)]), ts, 1e-7),
+                       [p.state(t)[1] for t in ts], atol=1e-6)
+    assert s.min() >= -1.0 and s.max() <= 2.0  # no overshoot between the points
 
 
 def test_baseline_correction_ends_at_rest_and_barely_changes_the_acceleration():
@@ -214,6 +229,9 @@ def test_2d_rotation_sign_convention():
     (lambda: Tabulated((0.0, 1.0), (1.0,)), "one length"),
     (lambda: Tabulated((0.0, 1.0), (1.0, 2.0), "jerk"), "quantity"),
     (lambda: Ramped(Harmonic(1.0, 1.0), 1.0, 0.0, t_stop=1.5), "no room"),
+    (lambda: Polyline((0.0, 1.0, 1.0), (0.0, 1.0, 2.0)), "increase strictly"),
+    (lambda: Polyline((0.0,), (0.0,)), "at least 2"),
+    (lambda: Polyline((0.0, 1.0), (0.0, float("inf"))), "non-finite"),
     (lambda: Ramped(Harmonic(1.0, 1.0), -1.0), "t_ramp"),
     (lambda: Translation((0.0, 0.0), Harmonic(1.0, 1.0)), "not all zero"),
     (lambda: Translation((1.0, 0.0), lambda t: (0, 0)), "Signal"),

@@ -85,9 +85,10 @@ OWN = {"wind-turbine-sph": "h = sqrt(2) dx, the kernel width that holds the base
                              "kinematic artificial viscosity, none against the walls, each measured against the "
                              "defaults in docs/validation/floating-box-waves_history.md; the chooser's wave set-up "
                              "is not measured on this packet"}
-#: the cases with a scene file whose quick variant runs another fluid
+#: the cases with a scene file whose quick variant runs another fluid, or none
 OTHER_FLUID = {"wind-turbine-moorings", "potential-hemisphere", "moored-body", "potential-irregular",
-               "potential-cylinder-rao", "shaken-cantilever"}
+               "potential-cylinder-rao", "shaken-cantilever", "catenary-johanning-2007", "catenary-johanning-2006",
+               "catenary-two-lines"}
 
 
 def _run_auto(name: str):

@@ -494,15 +494,14 @@ def _check_bodies(s, dim):
 
 
 def _check_forced(s, dim) -> None:
-    """A body with a prescribed ``motion`` stands at a given pos, on no mooring line (it is
-    held by its motion: a line would pull on nothing), in a fluid with particles or the
-    analytic one (the potential fluid's bodies are free in six degrees of freedom), along
-    an axis of the scene (no sway in 2-D, nor across a symmetry plane); heaving through the
+    """A body with a prescribed ``motion`` stands at a given pos (lines may end on it: a
+    fairlead moved as a test rig moves it, their pull recorded and taken by the drive), in
+    a fluid with particles, the analytic one or none (the potential fluid's bodies are free
+    in six degrees of freedom), along an axis of the scene (no sway in 2-D, nor across a symmetry plane); heaving through the
     surface, its amplitude is below its draft (its keel stays in the water: a linear
     forced-oscillation test)."""
     from cosim.scene.build import water_level
 
-    lines = s.moorings.lines if s.moorings is not None else ()
     for i, b in enumerate(s.bodies):
         m = getattr(b, "motion", None)
         if m is None:
@@ -519,11 +518,6 @@ def _check_forced(s, dim) -> None:
                              ("a 2-D scene is the x-z plane; give surge or heave" if dim == 2 else
                               "the scene would not stay symmetric about y = 0; give surge or heave, or leave "
                               "domain.symmetry out"))
-        for k, ln in enumerate(lines):
-            if ln.fairlead.split(".")[0] == b.name:
-                raise SceneError(f"{key}.motion", f"body {b.name!r} is held on its prescribed motion, but "
-                                 f"moorings.lines[{k}] ends on it ({ln.fairlead}) and would pull on nothing; "
-                                 f"leave the line out, or the motion to let the body float on its lines")
         level = water_level(s)
         if m.dof == "heave" and level is not None:
             bottom = b.pos[-1] - b.extent(dim)[-1]

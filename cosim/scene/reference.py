@@ -17,7 +17,7 @@ SECTIONS = [
     ("Domains (`[domain]`, by `kind`)", list(spec.DOMAINS) + [spec.Block, spec.Beach, spec.Absorber]),
     ("Waves (`[waves]`, by `kind`): wavemakers, the incident sea", list(WAVES.classes())),
     ("Base motions (`[base_motion]`, by `kind`)", list(spec.BASE_MOTIONS) + [spec.Record]),
-    ("Bodies (`[[bodies]]`, by `shape`)", list(SHAPES.classes()) + [spec.ForcedMotion]),
+    ("Bodies (`[[bodies]]`, by `shape`)", list(SHAPES.classes()) + [spec.ForcedMotion, spec.ForcedTable]),
     ("Moorings (`[moorings]`)", [spec.Moorings, spec.Line]),
     ("Probes (`[probes]`)", [spec.Probes, spec.Patch]),
 ]

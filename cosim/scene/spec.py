@@ -958,11 +958,59 @@ class ForcedMotion(Spec):
         return Ramped(sig, self.ramp * self.period) if self.ramp > 0 else sig
 
 
+@dataclass(frozen=True)
+class ForcedTable(Spec):
+    """A rigid body's prescribed motion along one axis through given points: its centre at
+    ``pos`` plus ``s(t)`` along x (``dof = "surge"``), y (``"sway"``, 3-D) or z (``"heave"``),
+    ``points`` the pairs (t [s], s [m]), straight between them (``fluid.motion.Polyline``:
+    constant speed on each interval, held before the first and after the last). The first
+    point's ``s`` is 0 (the body starts at ``pos``). A test rig's fairlead: moved at a
+    constant speed, held, stepped through offsets, with the lines' tensions recorded
+    (``probes.tensions``, ``probes.loads``). Driven as :class:`ForcedMotion` is."""
+
+    TAG = ("kind", "table")
+    kind: str = tag("table")
+    points: tuple = required(vecs("the points (t [s], s [m]), times increasing", sizes=(2,), min_len=2))
+    dof: str = choice("heave", "the axis of the motion: surge (x), sway (y, 3-D) or heave (z)",
+                      ("surge", "sway", "heave"))
+
+    def validate(self):
+        super().validate()
+        t = [p[0] for p in self.points]
+        if any(b <= a for a, b in zip(t, t[1:])):
+            k = next(i for i, (a, b) in enumerate(zip(t, t[1:])) if b <= a)
+            raise SceneError(f"points[{k + 1}]", f"t = {t[k + 1]:g} s does not follow t = {t[k]:g} s; give the "
+                             "points in increasing time, each time once")
+        if self.points[0][1] != 0.0:
+            raise SceneError("points[0]", f"s = {self.points[0][1]:g} m: the motion starts at the body's pos; give "
+                             "0 as the first point's s (and pos where the body starts)")
+
+    @property
+    def axis(self) -> str:
+        """The world axis of the motion, "x", "y" or "z"."""
+        return {"surge": "x", "sway": "y", "heave": "z"}[self.dof]
+
+    @property
+    def amplitude(self) -> float:
+        """The largest displacement from ``pos`` [m]."""
+        return max(abs(p[1]) for p in self.points)
+
+    def signal(self):
+        """The displacement [m] as a :class:`fluid.motion.Polyline`."""
+        from fluid.motion import Polyline
+
+        return Polyline(tuple(p[0] for p in self.points), tuple(p[1] for p in self.points))
+
+
+#: a body's prescribed motions (``bodies[].motion``)
+BODY_MOTIONS = (ForcedMotion, ForcedTable)
+
+
 _BODY_COMMON = """``pos`` is the centre [m] ((x, z) in 2-D, (x, y, z) in 3-D); with ``place =
 "floating"`` give the horizontal position only ((x,) or (x, y)): the height is the
 hydrostatic equilibrium with the moorings' pull. ``fairleads``: named points in the body
 frame [m], referred to by lines as ``"BODY.NAME"``. Give ``density`` or ``mass``. ``motion``:
-a prescribed harmonic motion instead of a free body (:class:`ForcedMotion`). ``velocity``: a
+a prescribed motion instead of a free body (:class:`ForcedMotion`, :class:`ForcedTable`). ``velocity``: a
 free body's velocity at the start [m/s] ((x, z) in 2-D, (x, y, z) in 3-D), without spin."""
 
 
@@ -980,7 +1028,7 @@ class Box(shapes.BoxShape):
     place: str = choice("given", "given: at pos; floating: at its hydrostatic equilibrium", ("given", "floating"))
     euler: tuple = vec(None, "initial orientation (Euler angles)", "deg", sizes=(3,))
     fairleads: dict = table("named points in the body frame", "m")
-    motion: ForcedMotion = part(None, "a prescribed harmonic motion (unset: a free body)", ForcedMotion)
+    motion: Spec = part(None, "a prescribed motion, harmonic or through points (unset: a free body)", BODY_MOTIONS)
     velocity: tuple = vec(None, "initial velocity of its centre of mass (unset: at rest)", "m/s", sizes=(2, 3))
 
     def validate(self):
@@ -1005,7 +1053,7 @@ class Cylinder(shapes.CylinderShape):
     place: str = choice("given", "given: at pos; floating: at its hydrostatic equilibrium", ("given", "floating"))
     euler: tuple = vec(None, "initial orientation (Euler angles)", "deg", sizes=(3,))
     fairleads: dict = table("named points in the body frame", "m")
-    motion: ForcedMotion = part(None, "a prescribed harmonic motion (unset: a free body)", ForcedMotion)
+    motion: Spec = part(None, "a prescribed motion, harmonic or through points (unset: a free body)", BODY_MOTIONS)
     velocity: tuple = vec(None, "initial velocity of its centre of mass (unset: at rest)", "m/s", sizes=(2, 3))
 
 
@@ -1023,7 +1071,7 @@ class Sphere(shapes.SphereShape):
     place: str = choice("given", "given: at pos; floating: at its hydrostatic equilibrium", ("given", "floating"))
     euler: tuple = vec(None, "initial orientation (Euler angles)", "deg", sizes=(3,))
     fairleads: dict = table("named points in the body frame", "m")
-    motion: ForcedMotion = part(None, "a prescribed harmonic motion (unset: a free body)", ForcedMotion)
+    motion: Spec = part(None, "a prescribed motion, harmonic or through points (unset: a free body)", BODY_MOTIONS)
     velocity: tuple = vec(None, "initial velocity of its centre of mass (unset: at rest)", "m/s", sizes=(2, 3))
 
 
@@ -1307,6 +1355,6 @@ __all__ = ["World", "NoFluid", "Analytic", "Potential", "SPH", "Block", "Tank", 
            "LinearWaves", "RegularWaves", "IrregularWaves", "StillWaves",
            "Shake", "Roll", "RollTable", "TableMotion",
            "Earthquake", "Record", "GroundMotion", "Box", "Cylinder", "Sphere", "MJCF", "ElasticPlate", "Line",
-           "Moorings", "Patch", "ForcedMotion",
+           "Moorings", "Patch", "ForcedMotion", "ForcedTable",
            "Probes", "Coupling",
            "Scene", "SceneError", "SETUPS"]
