@@ -393,7 +393,8 @@ def line_coupling_step(scene) -> tuple[float, str]:
     and ``rate = sum c (1 + |r x e|^2 / rho_g^2) / M`` over its lines: ``r`` the fairlead's
     arm, ``e`` the line's tangent there, ``rho_g`` the body's smallest radius of gyration,
     ``M`` its mass with its smallest translational added mass), and the key path of the
-    line that pulls hardest on that body; (inf, "") where no line is stiff."""
+    line that pulls hardest on that body; (inf, "") where no line is stiff (or every body
+    with lines is driven, ``motion``)."""
     from cosim.line_step import SAFETY
 
     m = scene.moorings
@@ -404,8 +405,8 @@ def line_coupling_step(scene) -> tuple[float, str]:
     added = getattr(scene.fluid, "added_mass", {}) or {}
     best, key = math.inf, ""
     for b in scene.bodies:
-        if not isinstance(b, RigidBody):
-            continue
+        if not isinstance(b, RigidBody) or getattr(b, "motion", None) is not None:
+            continue  # a driven body follows its motion whatever its lines pull: no bound
         mine = [(i, ln) for i, ln in enumerate(m.lines) if ln.fairlead.split(".")[0] == b.name]
         if not mine:
             continue

@@ -224,73 +224,71 @@ def exp2_static_series(c: SPHCable) -> dict:
 
 #: the mooring line of cable-vs-catenary (Barreiro et al. 2016, Table 2 geometry: h = 50 m, l = 150 m,
 #: w = 918.75 N/m; a chain of 107.7 kg/m, EA = 1 GN, d = 0.15 m)
-VS_CAT = dict(h=50.0, length=150.0, w=918.75, EA=1e9, mu=107.7, d=0.15, X0=120.0, X1=140.0)
+def vs_catenary_scene(quick: bool, particles: int | None = None, speed: float | None = None):
+    """cable-vs-catenary's scene (``scenes/cable-vs-catenary.toml``: 60 particles, 0.05 m/s;
+    quick: 20 at 0.1 m/s), or with ``particles`` and the fairlead's ``speed`` [m/s] given:
+    the same 20 m of travel."""
+    from cosim.validations import case_scene
+
+    scene = case_scene.load("cable-vs-catenary")
+    if quick:
+        particles, speed = particles or 20, speed or 0.1
+    if particles is None and speed is None:
+        return scene
+    (t0, s0), (t1, s1) = scene.bodies[0].motion.points
+    v0 = (s1 - s0) / (t1 - t0)
+    v = speed or v0
+    n = case_scene.number
+    return scene.with_values([f"moorings.segments={particles or scene.moorings.segments}",
+                              f"world.duration={n(scene.world.duration * v0 / v)}",
+                              f"bodies[0].motion.points=[[0.0, 0.0], [{n(t1 * v0 / v)}, {n(s1)}]]"])
 
 
-def run_vs_catenary(n_particles: int, speed: float, dt_couple: float = 0.5, sample: float = 10.0,
-                    rows_out: list | None = None):
-    """Hang the line with seabed contact, settle it, then move the fairlead from X0 to X1
-    at ``speed`` [m/s] through the coupling interface; compare the fairlead tension with
-    the quasi-static elastic catenary with seabed (moorings.catenary.solve) every
-    ``sample`` seconds. Returns (metrics, mooring); ``rows_out``, if given, receives every
-    sample (X [m], T [N], quasi-static T [N])."""
+def run_vs_catenary(scene):
+    """Run the rig ``scene`` (:func:`vs_catenary_scene`) by ``cosim run``'s runner; compare its
+    line's fairlead tension with the quasi-static elastic catenary with seabed
+    (moorings.catenary.solve) at every sample after the start. Returns (metrics, rows (X [m],
+    T [N], quasi-static T [N]), the run's summary)."""
+    import tempfile
+    from pathlib import Path
+
     from moorings.catenary import solve
-    from moorings.line import MooringLine
-    from moorings.sph_cable import SPHCableMooring
 
-    p = VS_CAT
-    line = MooringLine(anchor=(0.0, -p["h"]), length=p["length"], weight=p["w"], EA=p["EA"],
-                       mass_per_length=p["mu"], diameter=p["d"])
-    m = SPHCableMooring([line], fairleads=[[p["X0"], 0.0]], n_particles=n_particles, omega=1.0)
-    m.initialize(0.0)
-    while m.t < 60.0 - 1e-9:  # settle at rest with a large mass damping
-        m.advance(m.t, 1.0)
-    cab = m.cables[0]
-    cab.omega = 0.04  # then the paper's damping (Dinçer & Demir 2020); water drag does the rest
-    t_start = m.t
-    duration = (p["X1"] - p["X0"]) / speed
-    errs, rows = [], []
-    next_sample = t_start + sample
-    while m.t < t_start + duration - 1e-9:
-        t_next = m.t + dt_couple
-        X = p["X0"] + speed * (t_next - t_start)
-        m.set_fairlead_motion([[X, 0.0]], [[speed, 0.0]])
-        m.advance(m.t, dt_couple)
-        if m.t >= next_sample - 1e-9:
-            next_sample += sample
-            r = solve(X, p["h"], p["length"], p["w"], p["EA"])
-            T_qs = math.hypot(r.H, r.V)
-            T = float(m.fairlead_tensions()[0])
-            errs.append(T / T_qs - 1)
-            rows.append((round(X, 3), T, T_qs))
-    e = np.array(errs)
+    body, ln = scene.bodies[0], scene.moorings.lines[0]
+    with tempfile.TemporaryDirectory(prefix="cable_vs_catenary_") as tmp:
+        res = scene.run(Path(tmp) / "run", progress=False)
+    site = body.fairleads[ln.fairlead.split(".", 1)[1]]
+    X = (body.pos[0] + site[0] + res[f"{body.name}.surge"] - ln.anchor[0])[1:]
+    T = res[f"{ln.name}.tension"][1:]
+    law = solve(X, body.pos[-1] + site[-1] - ln.anchor[-1], ln.length, ln.weight, ln.EA)
+    T_qs = np.hypot(law.H, law.V)
+    e = T / T_qs - 1.0
+    rows = [(round(float(x), 3), float(a), float(b)) for x, a, b in zip(X, T, T_qs)]
+    (t0, s0), (t1, s1) = body.motion.points
     metrics = {"max_abs_err_tension": float(np.abs(e).max()), "mean_err_tension": float(e.mean()),
-               "samples_X_T_Tqs": rows[:: max(1, len(rows) // 8)], "speed_m_s": speed}
-    if rows_out is not None:
-        rows_out.extend(rows)
-    return metrics, m
+               "samples_X_T_Tqs": rows[:: max(1, len(rows) // 8)], "speed_m_s": (s1 - s0) / (t1 - t0)}
+    return metrics, rows, res.summary
 
 
 @case("cable-vs-catenary", "SPH cable as a mooring line with seabed, slowly moved fairlead, vs the elastic catenary",
       target="fairlead tension within 2 % when quasi-static",
       quick="the stated target, fairlead tension within 2 % at every sample, with 20 particles moved at 0.1 m/s "
-            "instead of 60 at 0.05 m/s")
+            "instead of 60 at 0.05 m/s", scene=vs_catenary_scene)
 def cable_vs_catenary(quick: bool) -> dict:
     """A 150 m chain (h = 50 m, w = 918.75 N/m, EA = 1 GN, d = 0.15 m with Morison drag
-    and added mass) hung from its anchor with seabed contact; the fairlead moves from
-    X = 120 m to 140 m (fairlead tension 62 to 250 kN) at 0.05 m/s (quick: 0.1 m/s, 20 particles).
-    Target: fairlead tension within 2 % of the quasi-static elastic catenary with seabed
-    (Barreiro et al. 2016, §3, moorings.catenary) at every sample."""
-    n, speed = (20, 0.1) if quick else (60, 0.05)
-    rows = []
-    m, moor = run_vs_catenary(n, speed, rows_out=rows)
-    tol = 0.02
+    and added mass) from its anchor with seabed contact; a rig moves its fairlead from
+    X = 120 m to 140 m (fairlead tension 62 to 304 kN) at 0.05 m/s (quick: 0.1 m/s, 20
+    particles): the case's scene. Target: fairlead tension within 2 % of the quasi-static
+    elastic catenary with seabed (Barreiro et al. 2016, §3, moorings.catenary) at every
+    sample."""
+    scene = vs_catenary_scene(quick)
+    m, rows, summary = run_vs_catenary(scene)
     X, T, Tqs = np.array(rows).T
     series = {"fairlead tension": {"xlabel": "fairlead X [m]", "ylabel": "tension [kN]", "curves": {
         "quasi-static elastic catenary": {"x": X, "y": Tqs / 1e3},
         "SPH cable (ours)": {"x": X, "y": T / 1e3, "style": "o"}}}}
-    return {"metrics": m, "tolerances": {"max_abs_err_tension": tol},
-            "particles": n, "steps": moor.cables[0].steps, "series": series}
+    return {"metrics": m, "tolerances": {"max_abs_err_tension": 0.02},
+            "particles": scene.moorings.segments, "steps": summary["steps"], "series": series}
 
 
 def fit_length_to_measured_shape() -> float:
