@@ -165,3 +165,19 @@ def test_dry_run_prints_the_estimate_and_writes_nothing(tmp_path):
                         "fluid.settle=1e9"], capture_output=True, text=True, cwd=tmp_path, env=env, timeout=300)
     assert r.returncode == 2 and "fluid.settle: the run would take about" in r.stderr
     assert not list(tmp_path.iterdir())
+
+
+def test_a_driven_body_sets_no_line_step_bound():
+    """A body on its prescribed motion follows it whatever its lines pull (the drive takes
+    their load): the SPH cable's stiff fairlead spring bounds the step of the same body
+    left free, not of the driven rig (cable-vs-catenary's scene)."""
+    from cosim.scene import Scene
+    from cosim.scene.toml_io import from_dict, to_dict
+    from cosim.validations.folders import SCENES
+
+    rig = Scene.from_toml(SCENES / "cable-vs-catenary.toml")
+    assert cost.line_coupling_step(rig) == (math.inf, "")
+    d = to_dict(rig)
+    del d["bodies"][0]["motion"]
+    dt, key = cost.line_coupling_step(from_dict(d))
+    assert 0.0 < dt < 1e-3 and key == "moorings.lines[0].EA"

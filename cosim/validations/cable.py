@@ -222,8 +222,6 @@ def exp2_static_series(c: SPHCable) -> dict:
         "measured P1-P5 (Table 5)": {"x": meas[:, 0], "y": meas[:, 1], "style": "s"}}}}
 
 
-#: the mooring line of cable-vs-catenary (Barreiro et al. 2016, Table 2 geometry: h = 50 m, l = 150 m,
-#: w = 918.75 N/m; a chain of 107.7 kg/m, EA = 1 GN, d = 0.15 m)
 def vs_catenary_scene(quick: bool, particles: int | None = None, speed: float | None = None):
     """cable-vs-catenary's scene (``scenes/cable-vs-catenary.toml``: 60 particles, 0.05 m/s;
     quick: 20 at 0.1 m/s), or with ``particles`` and the fairlead's ``speed`` [m/s] given:
