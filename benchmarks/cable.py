@@ -89,22 +89,23 @@ def main(quick: bool = False) -> None:
     print(f"catenary law: {1e6 * (time.perf_counter() - w0) / k:.2f} us per evaluation (quasi-static: one per "
           "coupling step)")
 
-    from cosim.validations.cable import run_case1, run_exp2_static, run_vs_catenary, vs_catenary_scene
+    from cosim.validations.cable import (case1_scene, exp2_scene, exp2_static_metrics, run_case1, run_vs_catenary,
+                                         vs_catenary_scene)
 
     print("\nDinçer & Demir 2020, Case 1 (35.586 kN at L): error of the displacement of L against the exact catenary")
     print(f"{'particles':>10} {'err dz':>10} {'err dx':>10} {'err dz vs Table 2':>18} {'wall [s]':>9}")
     for n in ([20, 40, 80] if quick else [20, 40, 80, 160, 313]):
         w0 = time.perf_counter()
-        mm, c = run_case1(n)
+        mm = run_case1(case1_scene(False, particles=n))[0]
         print(f"{n:>10} {mm['err_dz_vs_exact']:>10.2e} {mm['err_dx_vs_exact']:>10.2e} "
               f"{mm['err_dz_vs_table2']:>18.2e} {time.perf_counter() - w0:>9.2f}")
 
     print("\nDinçer & Demir 2020, Experiment 2 at rest: shape and reactions against the exact catenary")
-    print(f"{'particles':>10} {'max shape err [m]':>18} {'err H vs exact':>15} {'err weight':>11} {'wall [s]':>9}")
+    print(f"{'particles':>10} {'max shape err [m]':>18} {'err H vs exact':>15} {'err V at P0':>12} {'wall [s]':>9}")
     for n in ([16, 31, 61] if quick else [16, 31, 61, 121]):
         w0 = time.perf_counter()
-        mm, c = run_exp2_static(n)
-        print(f"{n:>10} {mm['shape_max_err_m']:>18.2e} {mm['err_H_vs_exact']:>15.2e} {mm['err_weight']:>11.2e} "
+        mm = exp2_static_metrics(exp2_scene("cable-exp2-static", False, particles=n))[0]
+        print(f"{n:>10} {mm['shape_max_err_m']:>18.2e} {mm['err_H_vs_exact']:>15.2e} {mm['err_V_P0_vs_exact']:>12.2e} "
               f"{time.perf_counter() - w0:>9.2f}")
 
     print("\nmooring line with seabed, fairlead moved at 0.05 m/s: fairlead tension vs the quasi-static catenary")
@@ -120,11 +121,11 @@ def main(quick: bool = False) -> None:
 
 def shake_convergence(sizes: list[int]) -> None:
     """cable-exp2-shake (the case's geometry: the length fitted to the measured shape)."""
-    from cosim.validations.cable import (EXP2_PERIOD, SHAKE_DT_OUT, SHAKE_NFFT, fit_length_to_measured_shape,
-                                         run_exp2_shake)
+    from cosim.validations.cable import (EXP2_PERIOD, SHAKE_NFFT, fit_length_to_measured_shape, run_exp2_shake,
+                                         shake_scene)
 
     L = fit_length_to_measured_shape()
-    bin_ms = 1e3 * EXP2_PERIOD**2 / (SHAKE_NFFT * SHAKE_DT_OUT)
+    bin_ms = 1e3 * EXP2_PERIOD**2 / (SHAKE_NFFT * shake_scene(False).world.sample_every)
     print(f"\nDinçer & Demir 2020, Experiment 2 shaken (l = {L:.4f} m fitted to Table 5): free period vs the measured "
           f"{EXP2_PERIOD} s and vs the finest run\n(FFT peak: one spectral bin is {bin_ms:.1f} ms of period; "
           "wall = both types)")
@@ -133,8 +134,8 @@ def shake_convergence(sizes: list[int]) -> None:
     rows = []
     for n in sizes:
         w0 = time.perf_counter()
-        T1 = run_exp2_shake(n, 1.0, L)[0]
-        T2 = run_exp2_shake(n, 1.5, L)[0]
+        T1 = run_exp2_shake(shake_scene(False, 1.0, L, particles=n))[0]
+        T2 = run_exp2_shake(shake_scene(False, 1.5, L, particles=n))[0]
         rows.append((n, T1, T2, time.perf_counter() - w0))
     f1, f2 = rows[-1][1:3]
     for n, T1, T2, wall in rows:

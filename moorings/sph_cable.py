@@ -631,14 +631,17 @@ class SPHCableMooring:
     fairleads : optional initial fairlead positions [m], ``(n_lines, dim)``.
     n_particles : SPH particles per line (ends included).
     seabed : keep particles above the seabed plane through each anchor (no penetration).
+    point_loads : per line, ``(s, force)`` pairs: constant forces [N] (world frame) at material
+        points ``s`` [m] from the anchor (:meth:`SPHCable.add_point_load`), from the start.
+    nodes_at : per line, material points [m] from the anchor that must be nodes (point loads,
+        recorded points: :meth:`points_at` reads them there, not between two nodes).
     name : participant name used in messages.
     **cable_options : passed to :class:`SPHCable` (``omega`` [1/s], ``cfl``, Morison
         coefficients, ``water_z`` [m], ...).
     """
 
     def __init__(self, lines: list[MooringLine], fairleads=None, n_particles: int = 40, seabed: bool = True,
-                 name="sph_cable",
-                 **cable_options):
+                 point_loads=None, nodes_at=None, name="sph_cable", **cable_options):
         self.lines = named_lines(lines)
         self.name = name
         self.n_lines = len(self.lines)
@@ -652,6 +655,12 @@ class SPHCableMooring:
         self.n_particles = n_particles
         self.seabed = seabed
         self._opts = cable_options
+        for what, given in (("point_loads", point_loads), ("nodes_at", nodes_at)):
+            if given is not None and len(given) != len(self.lines):
+                raise InputError(f"{name}: {what} has {len(given)} entries for {len(self.lines)} lines; give one "
+                                 "(possibly empty) list per line")
+        self._point_loads = [list(x) for x in point_loads] if point_loads is not None else [[] for _ in self.lines]
+        self._nodes_at = [tuple(x) for x in nodes_at] if nodes_at is not None else [() for _ in self.lines]
         self.cables: list[SPHCable] = []
         self._fpos = None
         self._fvel = None
@@ -687,8 +696,10 @@ class SPHCableMooring:
             raise InputError(f"{self.name}: fairlead positions are not set; call set_fairlead_motion() "
                              "or pass fairleads= before the run")
         cables = []
-        for ln, fp in zip(self.lines, self._fpos):
+        for ln, fp, loads, nodes in zip(self.lines, self._fpos, self._point_loads, self._nodes_at):
             opts = dict(self._opts)
+            if nodes:
+                opts["nodes_at"] = tuple(sorted(set(opts.get("nodes_at", ())) | set(nodes)))
             if ln.diameter is not None:
                 opts.setdefault("diameter", ln.diameter)
             if self.seabed and "positions" not in opts:
@@ -696,6 +707,8 @@ class SPHCableMooring:
             c = SPHCable(ln.length, self.n_particles, ln.EA, ln.mass_per_length, ln.anchor, fp,
                          weight_per_length=ln.weight, seabed_z=ln.anchor[-1] if self.seabed else None,
                          name=ln.name, **opts)
+            for s_load, force in loads:
+                c.add_point_load(s_load, force)
             c.t = float(t0)
             cables.append(c)
         self.cables = cables
@@ -730,6 +743,12 @@ class SPHCableMooring:
         pos = in_world(xs, zs)
         pos[-1] = fairlead  # exactly on the fairlead (round-off of the closed form)
         return pos
+
+    def points_at(self, line: int, s) -> np.ndarray:
+        """Positions [m] of line ``line``'s material points ``s`` [m] from its anchor, (k, dim)
+        (:meth:`SPHCable.position_at`: linear between nodes; exact at ``nodes_at``)."""
+        c = self.cables[line]
+        return np.array([c.position_at(x) for x in s], float).reshape(-1, self.dim)
 
     def max_dt(self) -> float:
         """No limit: each cable sub-cycles to the coupling time (see :meth:`stable_dt`)."""

@@ -35,6 +35,10 @@ class MooringModel:
     tethers: bool = False
     #: CPU time [s] per node and internal step (the cost estimate's, measured)
     node_cost: float = 0.0
+    #: the optional scene fields it honours, of ``moorings`` (``seabed``, ``damping``) and of
+    #: its lines (``point_loads``, ``points``: then it has ``points_at(line, s)``); the checks
+    #: refuse the others
+    extras: tuple[str, ...] = ()
     #: the line's axial damping over its impedance ``sqrt(EA m)`` at the fairlead [-]
     #: (the coupling step's bound, :func:`cosim.scene.cost.line_coupling_step`)
     damping: float = 0.0
@@ -69,17 +73,23 @@ class Catenary(MooringModel):
 class SPHCable(MooringModel):
     """Dynamic lines as SPH cables (:class:`moorings.sph_cable.SPHCableMooring`, Dinçer & Demir 2020)."""
 
-    line_fields = _DYNAMIC_FIELDS
+    line_fields = ("EA", "mass_per_length")  # a line without a diameter feels no water (a cable in air)
     dynamic = anchor_tensions = line_states = True
+    extras = ("seabed", "damping", "point_loads", "points")
     node_cost = 3.3e-7
     damping = 15.0 / 32.0
 
     def from_scene(self, scene, lines, *, level, rho, workdir):
         from moorings.sph_cable import SPHCableMooring
 
-        return SPHCableMooring(lines, n_particles=scene.moorings.segments,
+        m = scene.moorings
+        options = {} if m.damping is None else {"omega": m.damping}
+        return SPHCableMooring(lines, n_particles=m.segments, seabed=m.seabed,
+                               point_loads=[[(p.s, p.force) for p in ln.point_loads] for ln in m.lines],
+                               nodes_at=[sorted({p.s for p in ln.point_loads} | {x for x in ln.points if 0.0 < x < ln.length})
+                                         for ln in m.lines],
                                water_z=level if level is not None else math.inf, gravity=scene.world.gravity,
-                               rho_water=rho)
+                               rho_water=rho, **options)
 
     def internal_step(self, scene, line):
         """The Courant step ``cfl ds / c``, ``c = sqrt(EA / m)`` the axial wave speed."""

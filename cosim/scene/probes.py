@@ -14,6 +14,8 @@ that become one HDF5 series, one CSV and one plot each:
   fully lifted, 3 taut; :class:`moorings.catenary.LineState`), from every model that
   reports them (:mod:`moorings.line_events`: the catenary, the catenary FMU, the SPH cable,
   MoorDyn);
+- ``line_points``: the positions [m] of the material ``points`` a line names,
+  ``LINE.point1_x`` ... (the sph-cable);
 - ``tensions``: per line, the tension at its fairlead [N], at its anchor
   (``.anchor_tension`` [N]; the catenary, the SPH cable and MoorDyn report it, an FMU does
   not) and ``.tether`` [N], the load a taut inextensible catenary line carries as a length
@@ -23,9 +25,8 @@ that become one HDF5 series, one CSV and one plot each:
   share included); with a fluid, per elastic plate also the net pressure along x [Pa] on
   each node's share, ``plate.p0`` (the clamp) to ``plate.pN`` (the free end), node ``k``
   at ``k L / N`` from the clamp: the fluid's x force on link ``k`` (the hat-weighted share
-  of the boundary particles' forces,
-  :meth:`bodies.elastic.ElasticBody.split`) over its span (``l / 2`` at the two ends,
-  ``l`` between) times the width (one group per plate, ``PLATE_pressure``);
+  of the boundary particles' forces, :meth:`bodies.elastic.ElasticBody.split`) over its
+  span (``l / 2`` at the two ends, ``l`` between) times the width (``PLATE_pressure``);
 - ``gauges``: free-surface elevation above the still water [m] at each gauge (the SPH
   fluid's, or the analytic fluid's incident sea, :mod:`fluid.waves`); ``sea``: with an
   incident sea and no gauge, its elevation at the origin, ``sea.eta`` [m];
@@ -323,6 +324,34 @@ class LineStates(Probe):
                       lambda: np.asarray(m.line_states(), float), categories=_state_names())]
 
 
+class LinePoints(Probe):
+    """``line_points``: the positions [m] of the material points each line names in its
+    ``points`` (arc lengths from its anchor), ``LINE.pointK_x`` (``_y`` in 3-D), ``_z``,
+    K from 1 in the order given (the models that take ``points``: the sph-cable)."""
+
+    @staticmethod
+    def _lines(scene):
+        m = scene.moorings
+        return [] if m is None else [(i, ln.name or ln.fairlead, ln.points) for i, ln in enumerate(m.lines)
+                                     if ln.points]
+
+    def names(self, scene):
+        comps = _axes(scene.world.dim)[3]
+        return [f"{n}.point{k + 1}_{c}" for _, n, pts in self._lines(scene) for k in range(len(pts)) for c in comps]
+
+    def groups(self, scene, built):
+        chosen = self._lines(scene)
+        if not chosen:
+            return []
+        m = built.mooring
+        cols = self.names(scene)
+
+        def points():
+            return np.concatenate([m.points_at(i, pts).ravel() for i, _, pts in chosen])
+
+        return [Group("line_points", cols, ["m"] * len(cols), points)]
+
+
 def _has_sea(scene) -> bool:
     """Whether a fluid without particles has an incident sea (given, or a flume's wavemaker's)."""
     from cosim.scene.seas import IncidentSea
@@ -456,7 +485,7 @@ class EndWalls(Probe):
 
 #: the built-in probes, in the order of the outputs' series
 PROBES = {"motion": Motion(), "loads": Loads(), "tensions": Tensions(), "line_states": LineStates(),
-          "gauges": Gauges(), "pressure": Pressure(), "energy": Energy(), "end_walls": EndWalls()}
+          "line_points": LinePoints(), "gauges": Gauges(), "pressure": Pressure(), "energy": Energy(), "end_walls": EndWalls()}
 
 
 class _PotentialSea:

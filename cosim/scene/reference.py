@@ -18,7 +18,7 @@ SECTIONS = [
     ("Waves (`[waves]`, by `kind`): wavemakers, the incident sea", list(WAVES.classes())),
     ("Base motions (`[base_motion]`, by `kind`)", list(spec.BASE_MOTIONS) + [spec.Record]),
     ("Bodies (`[[bodies]]`, by `shape`)", list(SHAPES.classes()) + [spec.ForcedMotion, spec.ForcedTable]),
-    ("Moorings (`[moorings]`)", [spec.Moorings, spec.Line]),
+    ("Moorings (`[moorings]`)", [spec.Moorings, spec.Line, spec.PointLoad]),
     ("Probes (`[probes]`)", [spec.Probes, spec.Patch]),
 ]
 

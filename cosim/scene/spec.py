@@ -933,9 +933,11 @@ class ForcedMotion(Spec):
     (radiation: the fluid's load gives added mass and damping): its centre at ``pos`` plus
     ``amplitude w(t) sin(2 pi t / period)`` along x (``dof = "surge"``), y (``"sway"``, 3-D)
     or z (``"heave"``), ``w`` a half-cosine window rising over ``ramp`` periods from rest
-    (:class:`fluid.motion.Ramped`). The body has that one slide and no other freedom, driven
-    (:meth:`bodies.mujoco_bodies.MujocoBodies.drive`): what the fluid does to it moves
-    nothing and is recorded (``probes.loads``)."""
+    (:class:`fluid.motion.Ramped`); with ``cycles``, cut after that many periods and held
+    there (``fluid.motion.Stopped``: a shaken support stopped; its velocity jumps to zero
+    unless it stops at a turning point). The body has that one slide and no other
+    freedom, driven (:meth:`bodies.mujoco_bodies.MujocoBodies.drive`): what the fluid does
+    to it moves nothing and is recorded (``probes.loads``)."""
 
     TAG = ("kind", "harmonic")
     kind: str = tag("harmonic")
@@ -944,6 +946,8 @@ class ForcedMotion(Spec):
     dof: str = choice("heave", "the axis of the motion: surge (x), sway (y, 3-D) or heave (z)",
                       ("surge", "sway", "heave"))
     ramp: float = num(2.0, "periods over which the amplitude fades in (0: none)", lo=0)
+    cycles: float = num(None, "periods after which the motion stops, the body held where it got to (unset: never)",
+                        lo=0, lo_open=True)
 
     @property
     def axis(self) -> str:
@@ -952,10 +956,11 @@ class ForcedMotion(Spec):
 
     def signal(self):
         """The displacement [m] as a :class:`fluid.motion.Signal` (value, rate, acceleration)."""
-        from fluid.motion import Harmonic, Ramped
+        from fluid.motion import Harmonic, Ramped, Stopped
 
         sig = Harmonic(self.amplitude, self.period)
-        return Ramped(sig, self.ramp * self.period) if self.ramp > 0 else sig
+        sig = Ramped(sig, self.ramp * self.period) if self.ramp > 0 else sig
+        return sig if self.cycles is None else Stopped(sig, self.cycles * self.period, fade=0.0)
 
 
 @dataclass(frozen=True)
@@ -1171,10 +1176,24 @@ BODIES = (Box, Cylinder, Sphere, MJCF, ElasticPlate)
 
 # ------------------------------------------------------------------------ moorings
 @dataclass(frozen=True)
+class PointLoad(Spec):
+    """A constant force ``force`` [N] ((x, z) in 2-D, (x, y, z) in 3-D, the world's axes) on
+    a line at the material point ``s`` [m] along its unstretched length from the anchor: a
+    clump weight or a buoy's net lift, a load hung from a cable (the sph-cable model)."""
+
+    s: float = required(num(None, "where, along the unstretched line from its anchor", "m", lo=0, lo_open=True,
+                            optional=False))
+    force: tuple = required(vec(None, "the force", "N"))
+
+
+@dataclass(frozen=True)
 class Line(Spec):
     """One mooring line from a fixed ``anchor`` [m] to the fairlead ``"BODY.NAME"``
-    (``moorings.MooringLine``). The dynamic models (sph-cable, moordyn) need ``EA``,
-    ``mass_per_length`` and ``diameter``; the catenary uses ``EA`` when given."""
+    (``moorings.MooringLine``). The dynamic models (sph-cable, moordyn) need ``EA`` and
+    ``mass_per_length``, MoorDyn also ``diameter`` (an SPH cable without one feels no
+    water: a cable in air); the catenary uses ``EA`` when given. The
+    sph-cable also takes ``point_loads`` on the line and records the positions of its
+    material ``points`` (``probes.tensions``)."""
 
     fairlead: str = required(text(None, "the fairlead, as BODY.NAME"))
     anchor: tuple = required(vec(None, "anchor position; the seabed is the horizontal plane through it", "m"))
@@ -1191,11 +1210,22 @@ class Line(Spec):
     break_load: float = num(None, "tension at which the line breaks (unset: never); reported, and released with "
                             "moorings.release_broken", "N", lo=0, lo_open=True, hi=L.MAX_BREAK_LOAD,
                             why=L.BREAK_LOAD_WHY)
+    point_loads: tuple = parts("forces on the line at points along it (the sph-cable model)", PointLoad)
+    points: tuple = vecs("material points, arc lengths along the unstretched line from its anchor, whose positions "
+                         "are recorded (LINE.pointK_x, ..., the sph-cable model)", "m", sizes=(0,))
 
     def validate(self):
         if self.fairlead.count(".") != 1 or not all(is_name(x) for x in self.fairlead.split(".")):
             raise SceneError("fairlead", f"{self.fairlead!r}: give it as BODY.NAME, two names of letters, digits, "
                              f"'_' and '-', e.g. \"box.left\"")
+        for i, p in enumerate(self.point_loads):
+            if p.s >= self.length:
+                raise SceneError(f"point_loads[{i}].s", f"{p.s:g} m is not inside the line (0 .. {self.length:g} m "
+                                 "from its anchor); give a point on it")
+        for i, x in enumerate(self.points):
+            if not 0.0 <= x <= self.length:
+                raise SceneError(f"points[{i}]", f"{x:g} m is not on the line (0 .. {self.length:g} m from its "
+                                 "anchor); give arc lengths along it")
 
 
 @dataclass(frozen=True)
@@ -1204,7 +1234,9 @@ class Moorings(Spec):
     (quasi-static, Barreiro et al. 2016, §3), ``"sph-cable"`` (Dinçer & Demir 2020), ``"moordyn"`` or ``"fmu"``
     (the catenary exported as an FMU and run through FMPy). A line with a ``break_load``
     is watched: the time, line and tension at which its fairlead tension first passes it
-    go into the log and ``summary.json`` (``line_breaks``)."""
+    go into the log and ``summary.json`` (``line_breaks``). ``seabed``, ``damping`` and the
+    lines' ``point_loads`` and ``points`` are the sph-cable model's (another model refuses
+    them)."""
 
     model: str = choice("catenary", "the mooring model", MOORINGS)
     lines: tuple = parts("the lines", Line)
@@ -1212,6 +1244,10 @@ class Moorings(Spec):
                           lo=2)
     release_broken: bool = flag(False, "true: a line whose tension passes its break_load stops acting (false: the "
                                 "break is reported and the line holds)")
+    seabed: bool = flag(True, "false: the lines hang free, no seabed under them (a cable between two supports in "
+                        "air; the sph-cable model)")
+    damping: float = num(None, "mass-proportional damping rate of the lines (unset: the model's own; the sph-cable "
+                         "model, Dinçer & Demir 2020, Eq. 12, 0.04 1/s)", "1/s", lo=0)
 
     def validate(self):
         if not self.lines:
@@ -1221,6 +1257,14 @@ class Moorings(Spec):
                 if getattr(ln, key) is None:
                     raise SceneError(f"lines[{i}].{key}", f"the {self.model!r} model needs it for every line; "
                                      f"give it, or use model = \"catenary\"")
+        takes = getattr(MOORINGS[self.model], "extras", ())
+        unusual = [("seabed", not self.seabed), ("damping", self.damping is not None)]
+        unusual += [(f"lines[{i}].{k}", bool(getattr(ln, k))) for i, ln in enumerate(self.lines)
+                    for k in ("point_loads", "points")]
+        for key, given in unusual:
+            if given and key.split(".")[-1] not in takes:
+                raise SceneError(key, f"the {self.model!r} model does not take it; give model = \"sph-cable\", or "
+                                 "leave it out")
 
 
 # ------------------------------------------------------------------------ probes and coupling
@@ -1355,6 +1399,6 @@ __all__ = ["World", "NoFluid", "Analytic", "Potential", "SPH", "Block", "Tank", 
            "LinearWaves", "RegularWaves", "IrregularWaves", "StillWaves",
            "Shake", "Roll", "RollTable", "TableMotion",
            "Earthquake", "Record", "GroundMotion", "Box", "Cylinder", "Sphere", "MJCF", "ElasticPlate", "Line",
-           "Moorings", "Patch", "ForcedMotion", "ForcedTable",
+           "Moorings", "PointLoad", "Patch", "ForcedMotion", "ForcedTable",
            "Probes", "Coupling",
            "Scene", "SceneError", "SETUPS"]

@@ -80,55 +80,61 @@ def elastic_catenary(span_x, span_z, length, w, EA, loads=(), s=None):
     return H, Q0, pos
 
 
-def _settle(c: SPHCable, t_max: float, v_tol: float, chunk: float) -> float:
-    """Advance until the fastest particle is slower than ``v_tol`` [m/s] (checked every
-    ``chunk`` [s]) or ``t_max`` [s] has passed; returns the final fastest speed."""
-    t_end = c.t + t_max
-    while c.t < t_end - 1e-12:
-        c.advance(c.t, min(chunk, t_end - c.t))
-        if c.max_speed() < v_tol:
-            break
-    return c.max_speed()
-
-
-#: Dinçer & Demir 2020, Table 1 (Case 1)
-CASE1 = dict(length=312.73, span=304.8, E=131e9, A=548.4e-6, w=46.12, P=35586.0, s_L=125.88)
 #: Dinçer & Demir 2020, Table 2: displacement of L (vertical, horizontal) [m], consensus of 8 methods
 CASE1_REF = (-5.626, -0.859)
 
 
-def run_case1(n_particles: int, omega: float = 2.5, t_max: float = 60.0, v_tol: float = 1e-6):
-    """Dinçer & Demir 2020, Case 1 with ``n_particles``; returns (metrics, cable)."""
-    p = CASE1
-    EA = p["E"] * p["A"]
-    c = SPHCable(p["length"], n_particles, EA, p["w"] / G_STANDARD, (0.0, 0.0), (p["span"], 0.0),
-                 weight_per_length=p["w"], omega=omega, nodes_at=(p["s_L"],))
-    iL = int(np.argmin(np.abs(c.s - p["s_L"])))
-    v1 = _settle(c, t_max, v_tol, 1.0)
-    xL0, F0 = c.x[iL].copy(), c.end_forces()
-    c.add_point_load(p["s_L"], (0.0, -p["P"]))
-    v2 = _settle(c, t_max, v_tol, 1.0)
-    xL1, F1 = c.x[iL].copy(), c.end_forces()
+def case1_scene(quick: bool, particles: int | None = None):
+    """cable-case1's scene (``scenes/cable-case1.toml``, the point load at L on), the quick
+    variant's 40 particles, or ``particles``."""
+    from cosim.validations import case_scene
+
+    n = particles or (40 if quick else None)
+    return case_scene.load("cable-case1", [f"moorings.segments={n}"] if n else [])
+
+
+def run_case1(scene):
+    """Dinçer & Demir 2020, Case 1: ``scene`` (:func:`case1_scene`) run as written and without
+    its point load, by ``cosim run``'s runner; the displacement of L (the line's recorded
+    point) between the two settled states against Table 2 and the exact elastic catenary.
+    Returns (metrics, steps of both runs)."""
+    import tempfile
+    from pathlib import Path
+
+    ln, body = scene.moorings.lines[0], scene.bodies[0]
+    (s_L,), (load,) = ln.points, ln.point_loads
+    span = body.pos[0] + body.fairleads[ln.fairlead.split(".", 1)[1]][0] - ln.anchor[0]
+    settled, steps = {}, 0
+    for label, sc in (("selfweight", scene.with_values(["moorings.lines[0].point_loads=[]"])), ("loaded", scene)):
+        with tempfile.TemporaryDirectory(prefix="cable_case1_") as tmp:
+            res = sc.run(Path(tmp) / "run", progress=False)
+        xL = np.stack([res[f"{ln.name}.point1_x"], res[f"{ln.name}.point1_z"]], axis=-1)
+        speed = float(np.linalg.norm(xL[-1] - xL[-2]) / sc.world.sample_every)
+        settled[label] = (xL[-1], -float(res[f"{body.name}.mooring_Fx"][-1]), speed)  # H: the pull on the far support
+        steps += res.summary["steps"]
+    (xL0, Hs, v1), (xL1, Hl, v2) = settled["selfweight"], settled["loaded"]
     d = xL1 - xL0
-    H0, _, e0 = elastic_catenary(p["span"], 0.0, p["length"], p["w"], EA, s=[p["s_L"]])
-    H1, _, e1 = elastic_catenary(p["span"], 0.0, p["length"], p["w"], EA, loads=[(p["s_L"], p["P"])], s=[p["s_L"]])
+    P = -load.force[-1]
+    H0, _, e0 = elastic_catenary(span, 0.0, ln.length, ln.weight, ln.EA, s=[s_L])
+    H1, _, e1 = elastic_catenary(span, 0.0, ln.length, ln.weight, ln.EA, loads=[(s_L, P)], s=[s_L])
     de = e1[0] - e0[0]
     m = {
         "dz_L_m": float(d[1]), "dx_L_m": float(d[0]),
         "err_dz_vs_table2": float(d[1] / CASE1_REF[0] - 1), "err_dx_vs_table2": float(d[0] / CASE1_REF[1] - 1),
         "exact_dz_L_m": float(de[1]), "exact_dx_L_m": float(de[0]),
         "err_dz_vs_exact": float(d[1] / de[1] - 1), "err_dx_vs_exact": float(d[0] / de[0] - 1),
-        "H_selfweight_N": float(F0[0, 0]), "H_selfweight_exact_N": H0,
-        "H_loaded_N": float(F1[0, 0]), "H_loaded_exact_N": H1,
+        "H_selfweight_N": Hs, "H_selfweight_exact_N": H0,
+        "H_loaded_N": Hl, "H_loaded_exact_N": H1,
         "err_L_selfweight_m": float(np.linalg.norm(xL0 - e0[0])),
-        "residual_speed_m_s": float(max(v1, v2)),
+        "residual_speed_m_s": max(v1, v2),
     }
-    return m, c
+    return m, steps
 
 
 @case("cable-case1", "SPH cable, Dinçer & Demir 2020, Case 1: self-weight catenary + 35.586 kN point load (Table 1-2)",
       target="within 0.5 %",
-      quick="the stated target, the displacement of L within 0.5 % of Table 2, with 40 particles instead of 313")
+      quick="the stated target, the displacement of L within 0.5 % of Table 2, with 40 particles instead of 313",
+      scene=case1_scene)
 def cable_case1(quick: bool) -> dict:
     """Dinçer & Demir 2020, Case 1 (Table 1): span 304.8 m, length 312.73 m, E = 131 GPa, A = 548.4 mm²,
     w = 46.12 N/m; after the self-weight state has settled, 35.586 kN at L (125.88 m of
@@ -136,12 +142,13 @@ def cable_case1(quick: bool) -> dict:
     (-5.626 m vertical, -0.859 m horizontal); also reported against the exact two-segment
     elastic catenary (``refdata/cable_static_dynamic``: -5.6313, -0.8615 m).
     The seed used 312 particles; the full case uses 313 (nodes at both supports), the
-    quick one 40."""
-    n = 40 if quick else 313
-    m, c = run_case1(n)
+    quick one 40. The case's scene (``scenes/cable-case1.toml``) runs with the load and
+    without it, each settled at 2.5 1/s from the inextensible catenary."""
+    scene = case1_scene(quick)
+    m, steps = run_case1(scene)
     tol = 0.005
     return {"metrics": m, "tolerances": {"err_dz_vs_table2": tol, "err_dx_vs_table2": tol},
-            "particles": c.n, "steps": c.steps}
+            "particles": scene.moorings.segments, "steps": steps}
 
 
 #: Dinçer & Demir 2020, Experiment 2 (Section 3.3.2, Table 5)
@@ -151,66 +158,99 @@ EXP2_POINTS = ((0.212, 0.187, -0.127), (0.424, 0.371, -0.223), (0.636, 0.573, -0
                (0.848, 0.782, -0.306), (1.060, 0.989, -0.288))
 
 
-def run_exp2_static(n_particles: int, omega: float = 30.0, t_max: float = 4.0, v_tol: float = 1e-6):
-    """Dinçer & Demir 2020, Experiment 2 at rest with ``n_particles``; returns (metrics, cable).
+def exp2_scene(case: str, quick: bool, particles: int | None = None):
+    """The scene of an Experiment 2 case (``scenes/CASE.toml``), the quick variant's 31
+    particles, or ``particles``."""
+    from cosim.validations import case_scene
 
-    The cable starts from the catenary of a 2 % shorter line (its segments compressed, so
-    slack) and falls into its equilibrium."""
-    p = EXP2
-    EA = p["E"] * math.pi / 4 * p["d_wire"] ** 2
-    L, (bx, bz), w = p["length"], p["support_b"], p["w"]
+    n = particles or (31 if quick else None)
+    return case_scene.load(case, [f"moorings.segments={n}"] if n else [])
+
+
+def exp2_run(scene, every_particle: bool = False):
+    """Run an Experiment 2 scene (:func:`exp2_scene`) by ``cosim run``'s runner; returns
+    (its results, the line's material points recorded [m] from P0, their positions over
+    time (samples, points, 2) [m]). ``every_particle``: every particle's position is
+    recorded too (the points set to all the cable's nodes, which adds none)."""
+    import tempfile
+    from pathlib import Path
+
     from moorings.sph_cable import material_coordinates
 
-    s = material_coordinates(L, n_particles, [q[0] for q in EXP2_POINTS])
-    start = catenary_points((0.0, 0.0), (bx, bz), 0.98 * L, 0.98 * s)
-    c = SPHCable(L, n_particles, EA, w / G_STANDARD, (0.0, 0.0), (bx, bz), weight_per_length=w, omega=omega,
-                 positions=start, nodes_at=[q[0] for q in EXP2_POINTS])
-    v = _settle(c, t_max, v_tol, 0.05)
-    F = c.end_forces()  # force of the cable on the supports; the reactions are their negatives
-    H, Q0, ex = elastic_catenary(bx, bz, L, w, EA, s=c.s)
-    shape_err = np.linalg.norm(c.x - ex, axis=1)
+    ln = scene.moorings.lines[0]
+    if every_particle:
+        nodes = material_coordinates(ln.length, scene.moorings.segments, [x for x in ln.points if 0 < x < ln.length])
+        from cosim.validations.case_scene import number
+
+        scene = scene.with_values(["moorings.lines[0].points=[" + ", ".join(number(x) for x in nodes) + "]"])
+        ln = scene.moorings.lines[0]
+    with tempfile.TemporaryDirectory(prefix="cable_exp2_") as tmp:
+        res = scene.run(Path(tmp) / "run", progress=False)
+    xz = np.stack([np.stack([res[f"{ln.name}.point{k + 1}_x"], res[f"{ln.name}.point{k + 1}_z"]], axis=-1)
+                   for k in range(len(ln.points))], axis=1)
+    return res, ln.length - np.asarray(ln.points), xz
+
+
+def exp2_static_metrics(scene):
+    """Dinçer & Demir 2020, Experiment 2 at rest: ``scene`` run and its settled cable against
+    the exact elastic catenary (shape at every particle, the reactions at both supports) and
+    the measured P1-P5; returns (metrics, every particle's settled position (n, 2) [m] from
+    P0 on, their arc lengths [m] from P0)."""
+    ln = scene.moorings.lines[0]
+    bx, bz = ln.anchor
+    L, w, EA = ln.length, ln.weight, ln.EA
+    res, s0, xz = exp2_run(scene, every_particle=True)
+    order = np.argsort(s0)
+    s0, x = s0[order], xz[-1][order]
+    H, Q0, ex = elastic_catenary(bx, bz, L, w, EA, s=s0)
+    marks = [q[0] for q in EXP2_POINTS]
+    sph_pts = np.array([x[np.argmin(np.abs(s0 - m))] for m in marks])
+    ex_pts = elastic_catenary(bx, bz, L, w, EA, s=marks)[2]
     meas = np.array([q[1:] for q in EXP2_POINTS])
-    sph_pts = np.array([c.position_at(q[0]) for q in EXP2_POINTS])
-    ex_pts = elastic_catenary(bx, bz, L, w, EA, s=[q[0] for q in EXP2_POINTS])[2]
-    weight = w * L
+    Fx, Fz = res["support.mooring_Fx"][-1], res["support.mooring_Fz"][-1]  # the cable's pull on P0
+    Ta = res[f"{ln.name}.anchor_tension"][-1]
     m = {
         "EA_assumed_N": EA,
-        "shape_max_err_m": float(shape_err.max()),
-        "reaction_x_a_N": float(-F[0, 0]), "reaction_x_b_N": float(-F[1, 0]),
-        "reaction_z_a_N": float(-F[0, 1]), "reaction_z_b_N": float(-F[1, 1]),
-        "H_exact_N": H,
-        "err_H_balance": float(abs(abs(F[0, 0]) - abs(F[1, 0])) / abs(F[0, 0])),
-        "reaction_z_sum_N": float(-F[:, 1].sum()), "weight_N": weight,
-        "err_weight": float(abs(-F[:, 1].sum() / weight - 1)),
-        "err_H_vs_exact": float(abs(-F[0, 0] / H + 1)) if H else 0.0,
+        "shape_max_err_m": float(np.linalg.norm(x - ex, axis=1).max()),
+        "reaction_x_P0_N": float(-Fx), "reaction_z_P0_N": float(-Fz), "anchor_tension_N": float(Ta),
+        "H_exact_N": H, "V_P0_exact_N": float(-Q0), "anchor_tension_exact_N": math.hypot(H, Q0 + w * L),
+        "err_H_vs_exact": float(abs(Fx / H - 1.0)),
+        "err_V_P0_vs_exact": float(abs(Fz / Q0 - 1.0)),
+        "err_anchor_tension_vs_exact": float(abs(Ta / math.hypot(H, Q0 + w * L) - 1.0)),
+        "weight_N": w * L,
         "dist_to_measured_P1_P5_m": [float(d) for d in np.linalg.norm(sph_pts - meas, axis=1)],
         "exact_dist_to_measured_P1_P5_m": [float(d) for d in np.linalg.norm(ex_pts - meas, axis=1)],
-        "residual_speed_m_s": float(v),
+        "residual_speed_m_s": float(np.linalg.norm(xz[-1] - xz[-2], axis=1).max() / scene.world.sample_every),
+        "steps": res.summary["steps"],
     }
-    return m, c
+    return m, x, s0
 
 
 @case("cable-exp2-static", "SPH cable, Dinçer & Demir 2020, Experiment 2 at rest: reactions and shape (Table 5)",
       target="shape within 1 mm of the exact catenary; reactions within 1 %; report the distance to the measured "
              "points",
-      quick="the stated target (shape within 1 mm, reactions within 1 %) with 31 particles instead of 121")
+      quick="the stated target (shape within 1 mm, reactions within 1 %) with 31 particles instead of 121",
+      scene=lambda quick: exp2_scene("cable-exp2-static", quick))
 def cable_exp2_static(quick: bool) -> dict:
     """Dinçer & Demir 2020, Experiment 2 (Section 3.3.2): supports (0, 0) and (1.2, -0.22) m, l = 1.272 m,
     w = 0.2656 N/m, E = 109 GPa. The paper gives no wire diameter; 0.5 mm is assumed
     (EA = 21.4 kN; the strain is ~2e-5, so the shape hardly depends on it and the reference
-    catenary uses the same EA). Targets: equal horizontal reactions and vertical reactions
-    summing to the weight 0.338 N within 1 %; the shape within 1 mm of the exact elastic
-    catenary. The distance to the measured P1-P5 is reported, not targeted (the measured
+    catenary uses the same EA). The case's scene settles the cable at 30 1/s; targets: the
+    reactions at both supports (the horizontal and vertical pull on P0, the anchor's
+    tension) within 1 % of the exact elastic catenary's, the shape at every particle within
+    1 mm of it. The distance to the measured P1-P5 is reported, not targeted (the measured
     points imply a longer cable: the exact 1.272 m catenary misses them by 15-19 mm)."""
-    n = 31 if quick else 121
-    m, c = run_exp2_static(n)
-    tol = {"err_H_balance": 0.01, "err_weight": 0.01, "shape_max_err_m": 1e-3}
-    return {"metrics": m, "tolerances": tol, "particles": c.n, "steps": c.steps, "series": exp2_static_series(c)}
+    scene = exp2_scene("cable-exp2-static", quick)
+    m, x, _ = exp2_static_metrics(scene)
+    tol = {"err_H_vs_exact": 0.01, "err_V_P0_vs_exact": 0.01, "err_anchor_tension_vs_exact": 0.01,
+           "shape_max_err_m": 1e-3}
+    return {"metrics": m, "tolerances": tol, "particles": scene.moorings.segments, "steps": m["steps"],
+            "series": exp2_static_series(x)}
 
 
-def exp2_static_series(c: SPHCable) -> dict:
-    """The settled cable of Experiment 2 against the exact elastic catenary and the measured
-    points P1-P5 (for the report's plot)."""
+def exp2_static_series(x) -> dict:
+    """The settled cable of Experiment 2 (its particles ``x`` (n, 2) [m]) against the exact
+    elastic catenary and the measured points P1-P5 (for the report's plot)."""
     p = EXP2
     EA = p["E"] * math.pi / 4 * p["d_wire"] ** 2
     s = np.linspace(0.0, p["length"], 201)
@@ -218,7 +258,7 @@ def exp2_static_series(c: SPHCable) -> dict:
     meas = np.array([q[1:] for q in EXP2_POINTS])
     return {"shape": {"xlabel": "x [m]", "ylabel": "z [m]", "curves": {
         "exact elastic catenary, 1.272 m": {"x": ex[:, 0], "y": ex[:, 1]},
-        "SPH cable (ours)": {"x": c.x[:, 0], "y": c.x[:, 1], "style": "o"},
+        "SPH cable (ours)": {"x": x[:, 0], "y": x[:, 1], "style": "o"},
         "measured P1-P5 (Table 5)": {"x": meas[:, 0], "y": meas[:, 1], "style": "s"}}}}
 
 
@@ -307,50 +347,57 @@ def fit_length_to_measured_shape() -> float:
                                  options={"xatol": 1e-6}).x)
 
 
-#: output interval [s] and FFT length of the free-period measurement of run_exp2_shake: the
-#: spectral bin is 1/(SHAKE_NFFT * SHAKE_DT_OUT) = 0.0061 Hz (about 1 ms of period at 0.42 s)
-SHAKE_DT_OUT = 0.0025
+#: the FFT length of the free-period measurement of :func:`run_exp2_shake`: at the scene's
+#: sampling (2.5 ms) the spectral bin is 0.0061 Hz (about 1 ms of period at 0.42 s)
 SHAKE_NFFT = 1 << 16
+#: the free oscillation after the shaking [s]
+SHAKE_FREE_S = 8.0
 
 
-def run_exp2_shake(n_particles: int, frequency: float, length: float, omega: float = 0.04, cycles: int = 3,
-                   free_time: float = 8.0):
-    """Shake P0 of Experiment 2 by 25 mm in x at ``frequency`` [Hz] for ``cycles`` cycles, then
-    let the cable oscillate freely for ``free_time`` [s]. Returns (fundamental free period [s],
-    RMS vertical displacement of P1-P5 in the first and the last 2 s of the free phase [m],
-    cable)."""
-    saved = EXP2["length"]
-    EXP2["length"] = length
-    try:
-        _, c = run_exp2_static(n_particles)
-    finally:
-        EXP2["length"] = saved
-    c.omega = omega
-    t0 = c.t
-    c.set_harmonic("a", (0.025, 0.0), frequency, t_on=t0, cycles=cycles)
-    s_pts = [q[0] * length / saved for q in EXP2_POINTS]
-    ref = np.array([c.position_at(s) for s in s_pts])
-    t_free = t0 + cycles / frequency
-    ts, zs = [], []
-    dt_out = SHAKE_DT_OUT
-    while c.t < t_free + free_time - 1e-9:
-        c.advance(c.t, dt_out)
-        if c.t > t_free + 0.5:
-            ts.append(c.t)
-            zs.append([c.position_at(s)[1] for s in s_pts])
-    z = np.array(zs) - ref[:, 1]
+def shake_scene(quick: bool, frequency: float = 1.0, length: float | None = None, damping: float | None = None,
+                particles: int | None = None):
+    """cable-exp2-shake's scene (``scenes/cable-exp2-shake.toml``: 1.0 Hz, the stated length,
+    the paper's damping) shaken at ``frequency`` [Hz] for its 3 cycles then 8 s free, on a
+    cable of ``length`` [m] (its points P1-P5 at the same fractions of it), at ``damping``
+    [1/s]; the quick variant's 31 particles, or ``particles``."""
+    from cosim.validations.case_scene import number as n
+
+    scene = exp2_scene("cable-exp2-shake", quick, particles)
+    m, ln = scene.bodies[0].motion, scene.moorings.lines[0]
+    L = length or ln.length
+    points = [L - q[0] * L / EXP2["length"] for q in EXP2_POINTS]
+    values = [f"bodies[0].motion.period={n(1.0 / frequency)}",
+              f"world.duration={n(m.cycles / frequency + SHAKE_FREE_S)}",
+              f"moorings.lines[0].length={n(L)}", "moorings.lines[0].points=[" + ", ".join(n(x) for x in points) + "]"]
+    if damping is not None:
+        values.append(f"moorings.damping={n(damping)}")
+    return scene.with_values(values)
+
+
+def run_exp2_shake(scene):
+    """Run a shaken Experiment 2 scene (:func:`shake_scene`) and read the free oscillation
+    after the shaking: returns (the fundamental free period [s], the RMS vertical
+    displacement of P1-P5 in the first and the last 2 s of the free phase [m], the run's
+    steps). The fundamental: the lowest-frequency spectral peak above 0.5 Hz holding at
+    least 20 % of the largest peak's power (which mode dominates depends on the excitation
+    frequency), in the summed spectra of P1-P5's vertical motion from 0.5 s after the
+    shaking stops."""
+    m = scene.bodies[0].motion
+    res, _, xz = exp2_run(scene)
+    t = res.t
+    t_free = m.cycles * m.period
+    free = t > t_free + 0.5 - 1e-9
+    z = xz[free, :, 1] - xz[0, :, 1]
     z = z - z.mean(axis=0)
-    nfft = SHAKE_NFFT
-    spec = (np.abs(np.fft.rfft(z * np.hanning(len(z))[:, None], n=nfft, axis=0)) ** 2).sum(axis=1)
-    f = np.fft.rfftfreq(nfft, dt_out)
-    # the fundamental: the lowest-frequency spectral peak above 0.5 Hz holding >= 20 % of the
-    # largest peak's power (which mode dominates depends on the excitation frequency)
+    dt = scene.world.sample_every
+    spec = (np.abs(np.fft.rfft(z * np.hanning(len(z))[:, None], n=SHAKE_NFFT, axis=0)) ** 2).sum(axis=1)
+    f = np.fft.rfftfreq(SHAKE_NFFT, dt)
     band = f > 0.5
     peaks = np.nonzero(band[1:-1] & (spec[1:-1] > spec[:-2]) & (spec[1:-1] >= spec[2:])
                        & (spec[1:-1] >= 0.2 * spec[band].max()))[0] + 1
-    period = 1.0 / f[peaks[0]]
-    k = int(round(2.0 / dt_out))
-    return period, float(np.sqrt((z[:k] ** 2).mean())), float(np.sqrt((z[-k:] ** 2).mean())), c
+    k = int(round(2.0 / dt))
+    return (1.0 / f[peaks[0]], float(np.sqrt((z[:k] ** 2).mean())), float(np.sqrt((z[-k:] ** 2).mean())),
+            res.summary["steps"])
 
 
 #: Dinçer & Demir 2020, §3.3.2: free oscillation period after the excitation [s]
@@ -360,7 +407,8 @@ EXP2_PERIOD = 0.42
 @case("cable-exp2-shake", "SPH cable, Dinçer & Demir 2020, Experiment 2: free oscillation period after 1.0/1.5 Hz shaking",
       target="period within 7 % of 0.42 s",
       quick="as the full variant (the period within 7 % of 0.42 s on the length fitted to the measured shape, "
-            "damping lowers the late motion) with 31 particles instead of 61")
+            "damping lowers the late motion) with 31 particles instead of 61",
+      scene=lambda quick: shake_scene(quick))
 def cable_exp2_shake(quick: bool) -> dict:
     """Dinçer & Demir 2020, Experiment 2, Type1 (1.0 Hz) and Type2 (1.5 Hz), 25 mm at P0 in x (3 cycles
     assumed: the paper does not give the duration), then free oscillation; the dominant
@@ -374,26 +422,28 @@ def cable_exp2_shake(quick: bool) -> dict:
     the 1.272 m catenary). The period is very sensitive to the sag here, so the case passes
     on the measured geometry and reports the stated-length period beside it. Also checked:
     with omega = 0.04 1/s the RMS motion late in the free phase is smaller than without
-    damping, by about exp(-omega t/2) (reported beside that expectation)."""
-    n = 31 if quick else 61
+    damping, by about exp(-omega t/2) (reported beside that expectation). The case's scene
+    (``scenes/cable-exp2-shake.toml``) starts the cable on the inextensible catenary at
+    the paper's damping; each run sets its frequency, length and points."""
     L_fit = fit_length_to_measured_shape()
     m = {"length_fit_m": L_fit}
     for label, fr in (("type1", 1.0), ("type2", 1.5)):
         for lname, L in (("measured_shape", L_fit), ("stated", EXP2["length"])):
-            T, a0, a1, c = run_exp2_shake(n, fr, L)
+            T, a0, a1, steps = run_exp2_shake(shake_scene(quick, fr, L))
             m[f"period_{label}_{lname}_s"] = float(T)
             m[f"err_period_{label}_{lname}"] = float(T / EXP2_PERIOD - 1)
             if lname == "measured_shape" and label == "type1":
                 rms_damped = a1
     # damping: the same run without it; mass-proportional damping scales every mode by
     # exp(-omega t/2), t from the start of the shaking to the middle of the last 2 s
-    _, _, rms_free, _ = run_exp2_shake(n, 1.0, L_fit, omega=0.0)
+    scene = shake_scene(quick, 1.0, L_fit)
+    _, _, rms_free, _ = run_exp2_shake(shake_scene(quick, 1.0, L_fit, damping=0.0))
     m["rms_last2s_damped_over_undamped"] = rms_damped / rms_free
-    m["expected_exp(-omega t/2)"] = math.exp(-0.02 * (3.0 + 8.0 - 1.0))
+    m["expected_exp(-omega t/2)"] = math.exp(-0.02 * (3.0 + SHAKE_FREE_S - 1.0))
     m["damped_rms_below_undamped"] = bool(rms_damped < rms_free)
     tol = {"err_period_type1_measured_shape": 0.07, "err_period_type2_measured_shape": 0.07,
            "damped_rms_below_undamped": True}
-    return {"metrics": m, "tolerances": tol, "particles": n, "steps": c.steps,
+    return {"metrics": m, "tolerances": tol, "particles": scene.moorings.segments, "steps": steps,
             "stated_tolerances": {"err_period_type1_stated": 0.07, "err_period_type2_stated": 0.07},
             "departure": {
                 "criterion": "the free period within 7 % of 0.42 s on the cable length (about 1.286 m) whose exact "
