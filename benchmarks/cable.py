@@ -146,12 +146,12 @@ def shake_convergence(sizes: list[int]) -> None:
 def free_fall_convergence(sizes: list[int], times=(0.3, 0.6, 0.9, 1.2)) -> None:
     """cable-free-fall: distance of the free end from the finest run's at fixed times and
     the dissipated energy (fraction of w L^2), against the finest run."""
-    from cosim.validations.cable import run_free_fall
+    from cosim.validations.cable import free_fall_scene, run_free_fall
 
     runs = []
     for n in sizes:
         w0 = time.perf_counter()
-        m, _ = run_free_fall(n)
+        m, _ = run_free_fall(free_fall_scene(False, particles=n))
         traj = {round(t, 3): np.array([x, z]) for t, x, z in m["free_end_xz_every_0.1s"]}
         runs.append((n, traj, m["dissipated_fraction_of_w_L_L"], time.perf_counter() - w0))
     fine, dfine = runs[-1][1], runs[-1][2]

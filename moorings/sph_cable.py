@@ -595,6 +595,14 @@ class SPHCable:
     def kinetic_energy(self) -> float:
         return 0.5 * float((self.m * (self.v ** 2).sum(axis=1)).sum())
 
+    def mechanical_energy(self) -> float:
+        """Kinetic + potential of the constant loads (weight, point loads: ``-sum f . x``) +
+        elastic (``EA ds eps^2 / 2`` over the stretched segments) [J]: conserved but for the
+        damping, the artificial viscosity and a moving support's work."""
+        ell = np.linalg.norm(np.diff(self.x, axis=0), axis=1)
+        eps = np.maximum(ell / self.ds - 1.0, 0.0)
+        return self.kinetic_energy() - float((self.fext * self.x).sum()) + float((0.5 * self.EA * self.ds * eps**2).sum())
+
     def max_speed(self) -> float:
         return float(np.sqrt((self.v ** 2).sum(axis=1)).max())
 
@@ -635,13 +643,16 @@ class SPHCableMooring:
         points ``s`` [m] from the anchor (:meth:`SPHCable.add_point_load`), from the start.
     nodes_at : per line, material points [m] from the anchor that must be nodes (point loads,
         recorded points: :meth:`points_at` reads them there, not between two nodes).
+    released : per line, whether its fairlead end is free from the start (it starts hanging
+        between anchor and fairlead: a line parted at the fairlead, Dinçer & Demir 2020's
+        Experiment 1); it then pulls on nothing.
     name : participant name used in messages.
     **cable_options : passed to :class:`SPHCable` (``omega`` [1/s], ``cfl``, Morison
         coefficients, ``water_z`` [m], ...).
     """
 
     def __init__(self, lines: list[MooringLine], fairleads=None, n_particles: int = 40, seabed: bool = True,
-                 point_loads=None, nodes_at=None, name="sph_cable", **cable_options):
+                 point_loads=None, nodes_at=None, released=None, name="sph_cable", **cable_options):
         self.lines = named_lines(lines)
         self.name = name
         self.n_lines = len(self.lines)
@@ -655,12 +666,13 @@ class SPHCableMooring:
         self.n_particles = n_particles
         self.seabed = seabed
         self._opts = cable_options
-        for what, given in (("point_loads", point_loads), ("nodes_at", nodes_at)):
+        for what, given in (("point_loads", point_loads), ("nodes_at", nodes_at), ("released", released)):
             if given is not None and len(given) != len(self.lines):
                 raise InputError(f"{name}: {what} has {len(given)} entries for {len(self.lines)} lines; give one "
                                  "(possibly empty) list per line")
         self._point_loads = [list(x) for x in point_loads] if point_loads is not None else [[] for _ in self.lines]
         self._nodes_at = [tuple(x) for x in nodes_at] if nodes_at is not None else [() for _ in self.lines]
+        self.released = np.array([bool(x) for x in released] if released is not None else [False] * len(self.lines))
         self.cables: list[SPHCable] = []
         self._fpos = None
         self._fvel = None
@@ -687,8 +699,9 @@ class SPHCableMooring:
             raise InputError(f"{self.name}, line '{self.lines[i].name}': fairlead at z = {p[i, -1]:.6g} m is below "
                              f"the seabed through its anchor (z = {self.anchors[i, -1]:.6g} m)")
         self._fpos, self._fvel = p.copy(), vv.copy()
-        for c, pi, vi in zip(self.cables, p, vv):
-            c.set_end_motion("b", pi, vi)
+        for c, pi, vi, free in zip(self.cables, p, vv, self.released):
+            if not free:
+                c.set_end_motion("b", pi, vi)
 
     def initialize(self, t0: float) -> None:
         """Build the cables (checks every line before any work)."""
@@ -696,8 +709,10 @@ class SPHCableMooring:
             raise InputError(f"{self.name}: fairlead positions are not set; call set_fairlead_motion() "
                              "or pass fairleads= before the run")
         cables = []
-        for ln, fp, loads, nodes in zip(self.lines, self._fpos, self._point_loads, self._nodes_at):
+        for ln, fp, loads, nodes, free in zip(self.lines, self._fpos, self._point_loads, self._nodes_at, self.released):
             opts = dict(self._opts)
+            if free:
+                opts["free_end"] = "b"
             if nodes:
                 opts["nodes_at"] = tuple(sorted(set(opts.get("nodes_at", ())) | set(nodes)))
             if ln.diameter is not None:
@@ -791,7 +806,9 @@ class SPHCableMooring:
         k, c = zip(*(axial(cb.x, cb.s, ln.EA, ln.mass_per_length, ln.anchor[-1] if self.seabed else -math.inf,
                            self._seabed_tol(cb), 15.0 / 32.0 * cb.visc_alpha)
                      for cb, ln in zip(self.cables, self.lines)))
-        return FairleadStiffness(np.array(k), np.array(c))
+        k, c = np.array(k), np.array(c)
+        k[self.released], c[self.released] = 0.0, 0.0  # a released line holds nothing
+        return FairleadStiffness(k, c)
 
     #: a dynamic line: its force over a step is an integral (the coupler advances it with the bodies)
     dynamic = True
@@ -800,14 +817,15 @@ class SPHCableMooring:
         """Force [N] each line exerts on its fairlead, ``(n_lines, dim)``, world frame."""
         if not self.cables:
             raise InputError(f"{self.name}: not initialised; call initialize() first")
-        return np.array([c.end_forces()[1] for c in self.cables])
+        return np.array([np.zeros(self.dim) if free else c.end_forces()[1] for c, free in zip(self.cables, self.released)])
 
     def mean_fairlead_forces(self) -> np.ndarray:
         """Mean force [N] each line exerted on its fairlead over the last advance (the
         mean over its sub-steps), ``(n_lines, dim)``."""
         if not self.cables:
             raise InputError(f"{self.name}: not initialised; call initialize() first")
-        return np.array([c.end_forces(mean=True)[1] for c in self.cables])
+        return np.array([np.zeros(self.dim) if free else c.end_forces(mean=True)[1]
+                         for c, free in zip(self.cables, self.released)])
 
     def anchor_forces(self) -> np.ndarray:
         """Force [N] each line exerts on its anchor, ``(n_lines, dim)``."""
@@ -820,6 +838,10 @@ class SPHCableMooring:
     def anchor_tensions(self) -> np.ndarray:
         """Magnitude [N] of the anchor force of each line."""
         return np.linalg.norm(self.anchor_forces(), axis=1)
+
+    def line_energies(self) -> np.ndarray:
+        """Each line's mechanical energy [J] (:meth:`SPHCable.mechanical_energy`)."""
+        return np.array([c.mechanical_energy() for c in self.cables])
 
     def shapes(self) -> list[np.ndarray]:
         """Particle positions [m] of each line."""

@@ -849,6 +849,8 @@ CASES = [
           ("moorings.lines[1].EA", 1e5), ("moorings.lines[1].mass_per_length", 0.6),
           ("moorings.lines[0].point_loads", [{"s": 99.0, "force": [0.0, -10.0]}])),
          "moorings.lines[0].point_loads[0].s", "99 m is not inside the line", "Line.point_loads[0].s"),
+    case("a released catenary line", "analytic", ("moorings.lines[0].released", True), "moorings.lines[0].released",
+         "the 'catenary' model does not take it", "Moorings.lines[0].released"),
     case("a recorded point off the line", "analytic",
          (("moorings.model", "sph-cable"), ("moorings.lines[0].EA", 1e5), ("moorings.lines[0].mass_per_length", 0.6),
           ("moorings.lines[1].EA", 1e5), ("moorings.lines[1].mass_per_length", 0.6),

@@ -88,7 +88,8 @@ OWN = {"wind-turbine-sph": "h = sqrt(2) dx, the kernel width that holds the base
 #: the cases with a scene file whose quick variant runs another fluid, or none
 OTHER_FLUID = {"wind-turbine-moorings", "potential-hemisphere", "moored-body", "potential-irregular",
                "potential-cylinder-rao", "shaken-cantilever", "catenary-johanning-2007", "catenary-johanning-2006",
-               "catenary-two-lines", "cable-vs-catenary", "cable-exp2-static", "cable-exp2-shake", "cable-case1"}
+               "catenary-two-lines", "cable-vs-catenary", "cable-exp2-static", "cable-exp2-shake", "cable-case1",
+               "cable-free-fall"}
 
 
 def _run_auto(name: str):

@@ -22,6 +22,7 @@ import math
 
 from cosim.scene import plausible
 from cosim.scene.fields import SceneError, is_name
+from cosim.scene.registry import MOORINGS
 from cosim.scene.seas import IncidentSea
 from cosim.scene.shapes import RigidBody
 from cosim.scene.shapes import corners as _corners
@@ -788,13 +789,16 @@ def _check_probes(s, dim, mj):
             raise SceneError(f"probes.motion[{i}]", f"no body named {n!r}; bodies: {sorted(names)} (or \"all\")")
     # the analytic and potential fluids' gauges read their incident sea (given, or a flume's wavemaker's far-field wave)
     linear = isinstance(s.fluid, _SURFACE) and isinstance(s.waves, (IncidentSea, Piston, Flap))
-    fluid_probes = (p.gauges and not linear) or p.pressure or p.energy
+    line_energy = s.moorings is not None and "energy" in getattr(MOORINGS[s.moorings.model], "extras", ())
+    fluid_probes = (p.gauges and not linear) or p.pressure or (p.energy and not line_energy)
     if fluid_probes and not isinstance(s.fluid, SPH):
         which = "gauges" if p.gauges and not linear else "pressure" if p.pressure else "energy"
         raise SceneError(f"probes.{which}", "wave gauges, pressure patches and the fluid's energy need the SPH "
                          "fluid (fluid.model = \"sph\")" + ("; the analytic fluid's gauges read its incident sea "
                                                              "(waves.kind = \"linear\", \"regular\" or "
-                                                             "\"irregular\")" if which == "gauges" else ""))
+                                                             "\"irregular\")" if which == "gauges" else
+                                                             "; the lines' energy, moorings.model = \"sph-cable\""
+                                                             if which == "energy" else ""))
     for i, g in enumerate(p.gauges):
         n = 1 if isinstance(g, float) else len(g)
         if n != dim - 1:

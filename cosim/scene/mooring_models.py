@@ -36,8 +36,8 @@ class MooringModel:
     #: CPU time [s] per node and internal step (the cost estimate's, measured)
     node_cost: float = 0.0
     #: the optional scene fields it honours, of ``moorings`` (``seabed``, ``damping``) and of
-    #: its lines (``point_loads``, ``points``: then it has ``points_at(line, s)``); the checks
-    #: refuse the others
+    #: its lines (``point_loads``, ``points``: then it has ``points_at(line, s)``; ``released``),
+    #: and ``energy``: it has ``line_energies()`` (``probes.energy``); the checks refuse the others
     extras: tuple[str, ...] = ()
     #: the line's axial damping over its impedance ``sqrt(EA m)`` at the fairlead [-]
     #: (the coupling step's bound, :func:`cosim.scene.cost.line_coupling_step`)
@@ -75,7 +75,7 @@ class SPHCable(MooringModel):
 
     line_fields = ("EA", "mass_per_length")  # a line without a diameter feels no water (a cable in air)
     dynamic = anchor_tensions = line_states = True
-    extras = ("seabed", "damping", "point_loads", "points")
+    extras = ("seabed", "damping", "point_loads", "points", "released", "energy")
     node_cost = 3.3e-7
     damping = 15.0 / 32.0
 
@@ -88,6 +88,7 @@ class SPHCable(MooringModel):
                                point_loads=[[(p.s, p.force) for p in ln.point_loads] for ln in m.lines],
                                nodes_at=[sorted({p.s for p in ln.point_loads} | {x for x in ln.points if 0.0 < x < ln.length})
                                          for ln in m.lines],
+                               released=[ln.released for ln in m.lines],
                                water_z=level if level is not None else math.inf, gravity=scene.world.gravity,
                                rho_water=rho, **options)
 

@@ -30,8 +30,8 @@ that become one HDF5 series, one CSV and one plot each:
 - ``gauges``: free-surface elevation above the still water [m] at each gauge (the SPH
   fluid's, or the analytic fluid's incident sea, :mod:`fluid.waves`); ``sea``: with an
   incident sea and no gauge, its elevation at the origin, ``sea.eta`` [m];
-- ``pressure``: each wall patch's pressure [Pa];
-- ``energy``: the SPH fluid's kinetic and potential energy [J] (2-D: per metre, J/m).
+- ``pressure``: each wall patch's pressure [Pa]; ``energy``: the SPH fluid's kinetic and
+  potential energy [J] (2-D: J/m), and an SPH cable's mechanical energy, ``LINE.energy``.
 
 Gauges and wall patches are fixed to the tank: under base motion they move with it, as
 instruments on a shaking table do (a gauge at x measures, on the vertical through where
@@ -456,6 +456,26 @@ class Energy(Probe):
                       lambda: np.array(fluid_energies(sph)))]
 
 
+class LineEnergy(Probe):
+    """``energy`` with lines of a model that reports it (the sph-cable): each line's
+    mechanical energy [J], ``LINE.energy`` (kinetic + the constant loads' potential +
+    elastic)."""
+
+    def names(self, scene):
+        from cosim.scene.registry import MOORINGS
+
+        m = scene.moorings
+        if m is None or not scene.probes.energy or "energy" not in getattr(MOORINGS[m.model], "extras", ()):
+            return []
+        return [f"{ln.name or ln.fairlead}.energy" for ln in m.lines]
+
+    def groups(self, scene, built):
+        cols = self.names(scene)
+        if not cols:
+            return []
+        return [Group("line_energy", cols, ["J"] * len(cols), lambda: np.asarray(built.mooring.line_energies()))]
+
+
 class EndWalls(Probe):
     """``end_walls``: a near field's absorbing end walls (``domain.absorbing_walls``,
     :mod:`fluid.wall_absorption`): each wall's correction ``xi`` to the sea's orbits and
@@ -485,7 +505,8 @@ class EndWalls(Probe):
 
 #: the built-in probes, in the order of the outputs' series
 PROBES = {"motion": Motion(), "loads": Loads(), "tensions": Tensions(), "line_states": LineStates(),
-          "line_points": LinePoints(), "gauges": Gauges(), "pressure": Pressure(), "energy": Energy(), "end_walls": EndWalls()}
+          "line_points": LinePoints(), "gauges": Gauges(), "pressure": Pressure(), "energy": Energy(),
+          "line_energy": LineEnergy(), "end_walls": EndWalls()}
 
 
 class _PotentialSea:

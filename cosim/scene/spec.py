@@ -1192,8 +1192,8 @@ class Line(Spec):
     (``moorings.MooringLine``). The dynamic models (sph-cable, moordyn) need ``EA`` and
     ``mass_per_length``, MoorDyn also ``diameter`` (an SPH cable without one feels no
     water: a cable in air); the catenary uses ``EA`` when given. The
-    sph-cable also takes ``point_loads`` on the line and records the positions of its
-    material ``points`` (``probes.tensions``)."""
+    sph-cable also takes ``point_loads`` on the line, records the positions of its material
+    ``points`` and lets go of a ``released`` line's fairlead end."""
 
     fairlead: str = required(text(None, "the fairlead, as BODY.NAME"))
     anchor: tuple = required(vec(None, "anchor position; the seabed is the horizontal plane through it", "m"))
@@ -1213,6 +1213,9 @@ class Line(Spec):
     point_loads: tuple = parts("forces on the line at points along it (the sph-cable model)", PointLoad)
     points: tuple = vecs("material points, arc lengths along the unstretched line from its anchor, whose positions "
                          "are recorded (LINE.pointK_x, ..., the sph-cable model)", "m", sizes=(0,))
+    released: bool = flag(False, "true: the line is let go of at its fairlead at the start (it starts hanging between "
+                          "anchor and fairlead, then that end is free: a line parted at the fairlead; the sph-cable "
+                          "model)")
 
     def validate(self):
         if self.fairlead.count(".") != 1 or not all(is_name(x) for x in self.fairlead.split(".")):
@@ -1235,8 +1238,8 @@ class Moorings(Spec):
     (the catenary exported as an FMU and run through FMPy). A line with a ``break_load``
     is watched: the time, line and tension at which its fairlead tension first passes it
     go into the log and ``summary.json`` (``line_breaks``). ``seabed``, ``damping`` and the
-    lines' ``point_loads`` and ``points`` are the sph-cable model's (another model refuses
-    them)."""
+    lines' ``point_loads``, ``points`` and ``released`` are the sph-cable model's (another
+    model refuses them); with ``probes.energy`` it records each line's mechanical energy."""
 
     model: str = choice("catenary", "the mooring model", MOORINGS)
     lines: tuple = parts("the lines", Line)
@@ -1260,7 +1263,7 @@ class Moorings(Spec):
         takes = getattr(MOORINGS[self.model], "extras", ())
         unusual = [("seabed", not self.seabed), ("damping", self.damping is not None)]
         unusual += [(f"lines[{i}].{k}", bool(getattr(ln, k))) for i, ln in enumerate(self.lines)
-                    for k in ("point_loads", "points")]
+                    for k in ("point_loads", "points", "released")]
         for key, given in unusual:
             if given and key.split(".")[-1] not in takes:
                 raise SceneError(key, f"the {self.model!r} model does not take it; give model = \"sph-cable\", or "
@@ -1296,7 +1299,7 @@ class Probes(Spec):
     motion: tuple = names("bodies whose motion is recorded; [\"all\"]: every body", default=("all",))
     tensions: bool = flag(True, "fairlead tensions")
     loads: bool = flag(True, "fluid and mooring loads on each body")
-    energy: bool = flag(False, "kinetic and potential energy of the SPH fluid")
+    energy: bool = flag(False, "kinetic and potential energy of the SPH fluid; the SPH cables' mechanical energy")
 
 
 @dataclass(frozen=True)

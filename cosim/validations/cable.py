@@ -4,9 +4,12 @@ The reference for the static cases is the exact elastic catenary between two sup
 with point loads (Irvine, *Cable Structures* 1981, Eq. 2.24-2.25 generalised piecewise),
 solved here independently of the cable solver: :func:`elastic_catenary`.
 
-Static cases settle with a large mass-proportional damping ``omega`` (Dinçer & Demir 2020, Eq. 12 as
-implemented: it changes no equilibrium) until the fastest particle moves slower than a
-threshold; the reported ``residual_speed`` shows how settled the answer is.
+Every case runs its scene (``scenes/cable-*.toml``) by ``cosim run``'s runner: the cable in
+air between a held or shaken body and its anchor, or hanging from a moved fairlead. The
+static cases settle for a fixed time at a large mass-proportional damping rate
+(``moorings.damping``, Dinçer & Demir 2020, Eq. 12 as implemented: it changes no
+equilibrium); the reported ``residual_speed`` (from the last two samples) shows how
+settled the answer is.
 """
 
 from __future__ import annotations
@@ -17,7 +20,7 @@ import numpy as np
 from scipy.optimize import fsolve
 
 from cosim.validations.registry import case
-from moorings.sph_cable import G_STANDARD, SPHCable, catenary_points
+from moorings.sph_cable import SPHCable, catenary_points
 
 
 def elastic_catenary(span_x, span_z, length, w, EA, loads=(), s=None):
@@ -459,45 +462,51 @@ EXP1_POINTS = ((0.138, 0.098, -0.086), (0.350, 0.284, -0.183), (0.562, 0.492, -0
                (1.000, 0.880, 0.000))
 
 
-def _mech_energy(c: SPHCable) -> float:
-    """Kinetic + gravitational (constant loads) + elastic energy of a cable [J]."""
-    pe = -float((c.fext * c.x).sum())
-    ell = np.linalg.norm(np.diff(c.x, axis=0), axis=1)
-    eps = np.maximum(ell / c.ds - 1.0, 0.0)
-    return c.kinetic_energy() + pe + float((0.5 * c.EA * c.ds * eps**2).sum())
+def _max_strain() -> float:
+    """The largest strain an SPH cable takes elastically (its default ``max_strain``)."""
+    import inspect
+
+    return inspect.signature(SPHCable).parameters["max_strain"].default
 
 
-def run_free_fall(n_particles: int, t_end: float = 1.2, dt_out: float = 0.005):
-    """Dinçer & Demir 2020, Experiment 1 with ``n_particles``: the 1 m cable hung from (0, 0) and
-    (0.88, 0), released at P5 and followed for ``t_end`` [s] (checked every ``dt_out`` [s]).
-    Returns (metrics, cable); see :func:`cable_free_fall` for the metrics."""
-    p = EXP2
-    EA = p["E"] * math.pi / 4 * p["d_wire"] ** 2
-    c = SPHCable(1.0, n_particles, EA, p["w"] / G_STANDARD, (0.0, 0.0), (0.88, 0.0), weight_per_length=p["w"],
-                 free_end="b", nodes_at=[q[0] for q in EXP1_POINTS[:-1]])
+def free_fall_scene(quick: bool, particles: int | None = None):
+    """cable-free-fall's scene (``scenes/cable-free-fall.toml``), the quick variant's 48
+    particles, or ``particles``."""
+    from cosim.validations import case_scene
+
+    n = particles or (48 if quick else None)
+    return case_scene.load("cable-free-fall", [f"moorings.segments={n}"] if n else [])
+
+
+def run_free_fall(scene):
+    """Dinçer & Demir 2020, Experiment 1: ``scene`` (:func:`free_fall_scene`: the cable let
+    go of at P5) run by ``cosim run``'s runner, every particle's position and the line's
+    energy recorded; returns (metrics, the run's summary). See :func:`cable_free_fall`
+    for the metrics."""
+    ln = scene.moorings.lines[0]
+    res, from_fairlead, xz = exp2_run(scene, every_particle=True)
+    s = ln.length - from_fairlead  # Table 4's arc lengths are from the anchor, (0, 0)
+    order = np.argsort(s)
+    s, xz = s[order], xz[:, order]  # (samples, nodes along the line from the anchor, 2)
+    E = res[f"{ln.name}.energy"]
+    scale = ln.weight * ln.length * ln.length  # weight times length [J]
+    strain = np.linalg.norm(np.diff(xz, axis=1), axis=2) / np.diff(s)[None, :] - 1.0
     table = np.array([q[1:] for q in EXP1_POINTS])
-    init = np.array([c.position_at(q[0]) for q in EXP1_POINTS])
-    E0 = _mech_energy(c)
-    scale = p["w"] * 1.0 * 1.0  # weight times length [J]
-    rise, z_low, strain, traj = 0.0, 0.0, 0.0, []
-    while c.t < t_end - 1e-9:
-        c.advance(c.t, dt_out)
-        rise = max(rise, _mech_energy(c) - E0)
-        z_low = min(z_low, float(c.x[-1, 1]))
-        strain = max(strain, float((np.linalg.norm(np.diff(c.x, axis=0), axis=1) / c.ds - 1).max()))
-        if abs(c.t / 0.1 - round(c.t / 0.1)) < 1e-6:
-            traj.append([round(c.t, 3), float(c.x[-1, 0]), float(c.x[-1, 1])])
+    init = np.array([xz[0, np.argmin(np.abs(s - q[0]))] for q in EXP1_POINTS])
+    every = [k for k, t in enumerate(res.t) if t > 0 and abs(t / 0.1 - round(t / 0.1)) < 1e-6]
     m = {"initial_vs_table4_m": [float(d) for d in np.linalg.norm(init - table, axis=1)],
-         "max_energy_rise_J": rise, "energy_scale_J": scale,
-         "dissipated_fraction_of_w_L_L": float((E0 - _mech_energy(c)) / scale),
-         "free_end_lowest_z_m": z_low, "max_strain": strain, "free_end_xz_every_0.1s": traj}
-    return m, c
+         "max_energy_rise_J": float(max(0.0, (E - E[0]).max())), "energy_scale_J": scale,
+         "dissipated_fraction_of_w_L_L": float((E[0] - E[-1]) / scale),
+         "free_end_lowest_z_m": float(xz[:, -1, 1].min()), "max_strain": float(strain.max()),
+         "free_end_xz_every_0.1s": [[round(float(res.t[k]), 3), float(xz[k, -1, 0]), float(xz[k, -1, 1])]
+                                    for k in every]}
+    return m, res.summary
 
 
 @case("cable-free-fall", "SPH cable, Dinçer & Demir 2020, Experiment 1: released at one end from its catenary (Table 4)",
       target="no published trajectory: invariants: the mechanical energy never grows (1e-6 of w L L), the line "
              "stays within its elastic range, the free end swings below z = -0.75 m",
-      quick="the same invariants with 48 particles instead of 95", row=None)
+      quick="the same invariants with 48 particles instead of 95", row=None, scene=free_fall_scene)
 def cable_free_fall(quick: bool) -> dict:
     """Dinçer & Demir 2020, Experiment 1 (§3.3.1): a 1 m cable of the Experiment 2 kind (w = 0.2656 N/m,
     0.5 mm wire at 109 GPa assumed) hangs from (0, 0) and (0.88, 0) and is released at P5.
@@ -505,11 +514,13 @@ def cable_free_fall(quick: bool) -> dict:
     invariants: the mechanical energy (kinetic + potential + elastic) never grows (only
     artificial viscosity and the omega damping remove it; the fraction removed is
     reported), the line never stretches beyond its elastic range, the free end falls and
-    swings through the bottom. The initial catenary is reported against the Table 4 points."""
-    n = 48 if quick else 95
-    m, c = run_free_fall(n)
+    swings through the bottom. The initial catenary is reported against the Table 4 points.
+    The case's scene (``scenes/cable-free-fall.toml``) releases a line from its fairlead
+    (``released``) and records its energy (``probes.energy``) and every particle's place."""
+    scene = free_fall_scene(quick)
+    m, summary = run_free_fall(scene)
     scale = m["energy_scale_J"]
     return {"metrics": m,
-            "tolerances": {"max_energy_rise_J": [None, 1e-6 * scale], "max_strain": [None, c.max_strain],
+            "tolerances": {"max_energy_rise_J": [None, 1e-6 * scale], "max_strain": [None, _max_strain()],
                            "free_end_lowest_z_m": [None, -0.75]},
-            "particles": c.n, "steps": c.steps}
+            "particles": scene.moorings.segments, "steps": summary["steps"]}
