@@ -471,10 +471,10 @@ def taut_distance(h: float, L: float) -> float:
     return _taut_x(float(h), float(L))
 
 
-def shape(X: float, h: float, L: float, w: float, EA: float | None = None, n: int = 101):
+def shape(X: float, h: float, L: float, w: float, EA: float | None = None, n: int = 101, s=None):
     """Coordinates of the line, anchor to fairlead, at ``n`` points evenly spaced
-    in unstretched arc length: returns ``(s, x, z)`` [m] with the anchor at
-    (0, 0). Raises :class:`~cosim.errors.TautLineError` for a taut inextensible line.
+    in unstretched arc length (or at the arc lengths ``s`` [m] from the anchor, within
+    0 .. L): returns ``(s, x, z)`` [m] with the anchor at (0, 0). Raises :class:`~cosim.errors.TautLineError` for a taut inextensible line.
     A resting line (``X <= L - h``) hangs vertically below the fairlead and lies on the
     seabed from the anchor to below the fairlead, its slack spread evenly along the bed
     (points closer than their arc length: no tension).
@@ -491,7 +491,7 @@ def shape(X: float, h: float, L: float, w: float, EA: float | None = None, n: in
             f"(distance {math.hypot(X, h):.6g} m): no catenary shape exists"
         )
     ea = math.inf if EA is None else float(EA)
-    s = np.linspace(0.0, L, n)
+    s = np.linspace(0.0, L, n) if s is None else np.clip(np.asarray(s, float), 0.0, L)
     H, Va = sol.H, sol.V - w * L  # Va < 0: part of the line lies on the seabed
     lb = sol.touchdown
     on_bed = s <= lb

@@ -170,6 +170,18 @@ class CatenaryMooring:
         forces = np.concatenate([-sol.H[:, None] * e, -sol.V[:, None]], axis=1)
         return sol, forces
 
+    def points_at(self, line: int, s) -> np.ndarray:
+        """World positions [m] of line ``line``'s points at arc lengths ``s`` [m] from its
+        anchor, (k, dim), on the solved line's shape (:func:`moorings.catenary.shape`)."""
+        from moorings.catenary import shape
+        from moorings.line import vertical_plane
+
+        ln = self.lines[line]
+        X, h, in_world = vertical_plane(ln.anchor, self._pos[line])
+        _, x, z = shape(X, h, self._L[line], self._w[line], None if np.isinf(self._EA[line]) else self._EA[line],
+                        s=s)
+        return in_world(x, z)
+
     def fairlead_forces(self) -> np.ndarray:
         """Force [N] each line exerts on its fairlead, ``(n_lines, dim)``, world frame."""
         if self.solution is None:

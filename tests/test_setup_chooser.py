@@ -89,7 +89,7 @@ OWN = {"wind-turbine-sph": "h = sqrt(2) dx, the kernel width that holds the base
 OTHER_FLUID = {"wind-turbine-moorings", "potential-hemisphere", "moored-body", "potential-irregular",
                "potential-cylinder-rao", "shaken-cantilever", "catenary-johanning-2007", "catenary-johanning-2006",
                "catenary-two-lines", "cable-vs-catenary", "cable-exp2-static", "cable-exp2-shake", "cable-case1",
-               "cable-free-fall"}
+               "cable-free-fall", "catenary-limits"}
 
 
 def _run_auto(name: str):

@@ -63,6 +63,7 @@ class Catenary(MooringModel):
     """Quasi-static catenary lines (:class:`moorings.CatenaryMooring`, Barreiro et al. 2016, §3)."""
 
     anchor_tensions = line_states = tethers = True
+    extras = ("points",)
 
     def from_scene(self, scene, lines, *, level, rho, workdir):
         from moorings import CatenaryMooring

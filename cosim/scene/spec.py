@@ -1212,7 +1212,7 @@ class Line(Spec):
                             why=L.BREAK_LOAD_WHY)
     point_loads: tuple = parts("forces on the line at points along it (the sph-cable model)", PointLoad)
     points: tuple = vecs("material points, arc lengths along the unstretched line from its anchor, whose positions "
-                         "are recorded (LINE.pointK_x, ..., the sph-cable model)", "m", sizes=(0,))
+                         "are recorded (LINE.pointK_x, ...; the sph-cable and catenary models)", "m", sizes=(0,))
     released: bool = flag(False, "true: the line is let go of at its fairlead at the start (it starts hanging between "
                           "anchor and fairlead, then that end is free: a line parted at the fairlead; the sph-cable "
                           "model)")
