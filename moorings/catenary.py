@@ -474,7 +474,8 @@ def taut_distance(h: float, L: float) -> float:
 def shape(X: float, h: float, L: float, w: float, EA: float | None = None, n: int = 101, s=None):
     """Coordinates of the line, anchor to fairlead, at ``n`` points evenly spaced
     in unstretched arc length (or at the arc lengths ``s`` [m] from the anchor, within
-    0 .. L): returns ``(s, x, z)`` [m] with the anchor at (0, 0). Raises :class:`~cosim.errors.TautLineError` for a taut inextensible line.
+    0 .. L): returns ``(s, x, z)`` [m] with the anchor at (0, 0). Raises
+    :class:`~cosim.errors.TautLineError` for a taut inextensible line.
     A resting line (``X <= L - h``) hangs vertically below the fairlead and lies on the
     seabed from the anchor to below the fairlead, its slack spread evenly along the bed
     (points closer than their arc length: no tension).

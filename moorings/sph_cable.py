@@ -601,7 +601,8 @@ class SPHCable:
         damping, the artificial viscosity and a moving support's work."""
         ell = np.linalg.norm(np.diff(self.x, axis=0), axis=1)
         eps = np.maximum(ell / self.ds - 1.0, 0.0)
-        return self.kinetic_energy() - float((self.fext * self.x).sum()) + float((0.5 * self.EA * self.ds * eps**2).sum())
+        elastic = float((0.5 * self.EA * self.ds * eps**2).sum())
+        return self.kinetic_energy() - float((self.fext * self.x).sum()) + elastic
 
     def max_speed(self) -> float:
         return float(np.sqrt((self.v ** 2).sum(axis=1)).max())
@@ -817,7 +818,8 @@ class SPHCableMooring:
         """Force [N] each line exerts on its fairlead, ``(n_lines, dim)``, world frame."""
         if not self.cables:
             raise InputError(f"{self.name}: not initialised; call initialize() first")
-        return np.array([np.zeros(self.dim) if free else c.end_forces()[1] for c, free in zip(self.cables, self.released)])
+        return np.array([np.zeros(self.dim) if free else c.end_forces()[1]
+                         for c, free in zip(self.cables, self.released)])
 
     def mean_fairlead_forces(self) -> np.ndarray:
         """Mean force [N] each line exerted on its fairlead over the last advance (the

@@ -498,9 +498,9 @@ def _check_forced(s, dim) -> None:
     """A body with a prescribed ``motion`` stands at a given pos (lines may end on it: a
     fairlead moved as a test rig moves it, their pull recorded and taken by the drive), in
     a fluid with particles, the analytic one or none (the potential fluid's bodies are free
-    in six degrees of freedom), along an axis of the scene (no sway in 2-D, nor across a symmetry plane); heaving through the
-    surface, its amplitude is below its draft (its keel stays in the water: a linear
-    forced-oscillation test)."""
+    in six degrees of freedom), along an axis of the scene (no sway in 2-D, nor across a
+    symmetry plane); heaving through the surface, its amplitude is below its draft (its
+    keel stays in the water: a linear forced-oscillation test)."""
     from cosim.scene.build import water_level
 
     for i, b in enumerate(s.bodies):

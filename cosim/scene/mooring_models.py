@@ -85,10 +85,11 @@ class SPHCable(MooringModel):
 
         m = scene.moorings
         options = {} if m.damping is None else {"omega": m.damping}
-        return SPHCableMooring(lines, n_particles=m.segments, seabed=m.seabed,
+        # the loads and the recorded points on nodes (exact there, not between two)
+        nodes = [sorted({p.s for p in ln.point_loads} | {x for x in ln.points if 0.0 < x < ln.length})
+                 for ln in m.lines]
+        return SPHCableMooring(lines, n_particles=m.segments, seabed=m.seabed, nodes_at=nodes,
                                point_loads=[[(p.s, p.force) for p in ln.point_loads] for ln in m.lines],
-                               nodes_at=[sorted({p.s for p in ln.point_loads} | {x for x in ln.points if 0.0 < x < ln.length})
-                                         for ln in m.lines],
                                released=[ln.released for ln in m.lines],
                                water_z=level if level is not None else math.inf, gravity=scene.world.gravity,
                                rho_water=rho, **options)

@@ -1015,8 +1015,9 @@ _BODY_COMMON = """``pos`` is the centre [m] ((x, z) in 2-D, (x, y, z) in 3-D); w
 "floating"`` give the horizontal position only ((x,) or (x, y)): the height is the
 hydrostatic equilibrium with the moorings' pull. ``fairleads``: named points in the body
 frame [m], referred to by lines as ``"BODY.NAME"``. Give ``density`` or ``mass``. ``motion``:
-a prescribed motion instead of a free body (:class:`ForcedMotion`, :class:`ForcedTable`). ``velocity``: a
-free body's velocity at the start [m/s] ((x, z) in 2-D, (x, y, z) in 3-D), without spin."""
+a prescribed motion instead of a free body (:class:`ForcedMotion`, :class:`ForcedTable`).
+``velocity``: a free body's velocity at the start [m/s] ((x, z) in 2-D, (x, y, z) in 3-D),
+without spin."""
 
 
 @dataclass(frozen=True)
@@ -1191,9 +1192,9 @@ class Line(Spec):
     """One mooring line from a fixed ``anchor`` [m] to the fairlead ``"BODY.NAME"``
     (``moorings.MooringLine``). The dynamic models (sph-cable, moordyn) need ``EA`` and
     ``mass_per_length``, MoorDyn also ``diameter`` (an SPH cable without one feels no
-    water: a cable in air); the catenary uses ``EA`` when given. The
-    sph-cable also takes ``point_loads`` on the line, records the positions of its material
-    ``points`` and lets go of a ``released`` line's fairlead end."""
+    water: a cable in air); the catenary uses ``EA`` when given. The sph-cable also takes
+    ``point_loads`` on the line and lets go of a ``released`` line's fairlead end; it and
+    the catenary record the positions of the line's material ``points``."""
 
     fairlead: str = required(text(None, "the fairlead, as BODY.NAME"))
     anchor: tuple = required(vec(None, "anchor position; the seabed is the horizontal plane through it", "m"))
@@ -1238,8 +1239,9 @@ class Moorings(Spec):
     (the catenary exported as an FMU and run through FMPy). A line with a ``break_load``
     is watched: the time, line and tension at which its fairlead tension first passes it
     go into the log and ``summary.json`` (``line_breaks``). ``seabed``, ``damping`` and the
-    lines' ``point_loads``, ``points`` and ``released`` are the sph-cable model's (another
-    model refuses them); with ``probes.energy`` it records each line's mechanical energy."""
+    lines' ``point_loads`` and ``released`` are the sph-cable model's, ``points`` its and
+    the catenary's (another model refuses them); with ``probes.energy`` the sph-cable
+    records each line's mechanical energy."""
 
     model: str = choice("catenary", "the mooring model", MOORINGS)
     lines: tuple = parts("the lines", Line)
