@@ -18,13 +18,17 @@ import numpy as np
 TITLES = {"motion": "body motion from the start", "loads": "loads on the bodies over each coupling step",
           "tensions": "mooring line tensions", "line_states": "mooring line states (Barreiro et al. 2016, Fig. 5)",
           "gauges": "free-surface elevation above still water", "sea": "incident sea at the origin",
-          "pressure": "wall pressure", "energy": "fluid energy"}
+          "pressure": "wall pressure", "energy": "fluid energy",
+          "line_points": "positions of points along the lines", "line_energy": "mechanical energy of the lines"}
 #: readable names of the probe columns' quantities (``ENTITY.QUANTITY``), where the column's is terse
 QUANTITIES = {"fluid_Fx": "fluid force Fx", "fluid_Fy": "fluid force Fy", "fluid_Fz": "fluid force Fz",
               "mooring_Fx": "mooring force Fx", "mooring_Fy": "mooring force Fy", "mooring_Fz": "mooring force Fz",
               "tension": "tension at the fairlead", "anchor_tension": "tension at the anchor",
               "tether": "tension of the length constraint", "state": "line state", "eta": "elevation η",
-              "p": "pressure", "kinetic": "kinetic energy", "potential": "potential energy"}
+              "p": "pressure", "kinetic": "kinetic energy", "potential": "potential energy",
+              "energy": "mechanical energy", "x": "x", "y": "y", "z": "z"}
+#: the most curves a panel's legend names
+LEGEND_MAX = 12
 
 
 def _pyplot():
@@ -46,18 +50,20 @@ def group_figure(t: np.ndarray, table: np.ndarray, group, title: str):
     """The figure of one probe group's series ``table`` (n_samples, n_columns) at times
     ``t`` [s] (the caller saves and closes it)."""
     plt = _pyplot()
-    qs = list(dict.fromkeys(c.rsplit(".", 1)[1] for c in group.columns))
-    labels = group.labels or [c.rsplit(".", 1)[0] for c in group.columns]
+    # a line's points: one panel per coordinate (``line.point3_x``: the quantity "x"), not per point
+    split = (lambda c: c.rsplit("_", 1)) if group.name == "line_points" else (lambda c: c.rsplit(".", 1))
+    qs = list(dict.fromkeys(split(c)[1] for c in group.columns))
+    labels = group.labels or [split(c)[0] for c in group.columns]
     tall = 2.2 if group.categories else 1.8
     fig, axes = plt.subplots(len(qs), 1, figsize=(7.5, 1.3 + tall * len(qs)), dpi=110, sharex=True, squeeze=False)
     for ax, q in zip(axes[:, 0], qs):
-        cols = [j for j, c in enumerate(group.columns) if c.rsplit(".", 1)[1] == q]
+        cols = [j for j, c in enumerate(group.columns) if split(c)[1] == q]
         for k, j in enumerate(cols):
             if group.categories:  # codes: steps, each curve nudged so that equal codes stay apart
                 ax.step(t, table[:, j] + 0.06 * (k - (len(cols) - 1) / 2), where="post", label=labels[j])
             else:
                 ax.plot(t, table[:, j], label=labels[j])
-        name = quantity(group.columns[cols[0]])
+        name = quantity(group.columns[cols[0]]) if group.name != "line_points" else QUANTITIES[q]
         if group.categories:
             ax.set_yticks(range(len(group.categories)), group.categories)
             ax.set_ylim(-0.5, len(group.categories) - 0.5)
@@ -65,7 +71,8 @@ def group_figure(t: np.ndarray, table: np.ndarray, group, title: str):
         else:
             ax.set_ylabel(f"{name} [{group.units[cols[0]]}]")
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=7, loc="best")
+        if len(cols) <= LEGEND_MAX:
+            ax.legend(fontsize=7, loc="best")
     axes[-1, 0].set_xlabel("t [s]")
     axes[0, 0].set_title(title, fontsize=10)
     fig.tight_layout()

@@ -349,7 +349,9 @@ class LinePoints(Probe):
         def points():
             return np.concatenate([m.points_at(i, pts).ravel() for i, _, pts in chosen])
 
-        return [Group("line_points", cols, ["m"] * len(cols), points)]
+        comps = _axes(scene.world.dim)[3]
+        labels = [f"{n}, s = {x:g} m" for _, n, pts in chosen for x in pts for _ in comps]
+        return [Group("line_points", cols, ["m"] * len(cols), points, labels=labels)]
 
 
 def _has_sea(scene) -> bool:
