@@ -684,8 +684,9 @@ class Coupler:
         the same step: no force is held from the step's start, so a wave the fairlead sends
         down a line and back within a few steps cannot pump the body (the explicit exchange's
         limit cycle, ``benchmarks/line_step_sweep.py``). The first try is the explicit one
-        (the force at the step's start). Returns the lines' force and torque on the bodies;
-        the bodies and the lines stay advanced."""
+        (the force at the step's start); where the bodies move on prescribed joints only (a
+        test rig), it is the last, with the lines' mean force as the load. Returns the lines'
+        force and torque on the bodies; the bodies and the lines stay advanced."""
         b = self.bodies
         moorings = [self.moorings[j].mooring for j in dynamic]
         body_state, line_states = b.save_state(), [m.save_state() for m in moorings]
@@ -694,6 +695,7 @@ class Coupler:
         cuts = np.cumsum([int(np.prod(sh)) for sh in shapes])[:-1]
         arms0 = self._lever_arms(kin0, dynamic)
         arms = arms0
+        held = self._only_driven(dynamic)
         w, r_prev = 0.5, None
         for it in range(1, self.LINES_MAX + 1):
             if it > 1:
@@ -717,6 +719,11 @@ class Coupler:
                                               zip(dynamic, np.split(got, cuts), shapes)}, dynamic)
             r = got - x
             tol = self.LINES_TOL * max(float(np.abs(got).max()), float(np.abs(x).max()), 1.0)
+            if held:  # the bodies moved as prescribed whatever the force: the lines' own mean is the load
+                F_lines, T_lines = self._mooring_wrenches(
+                    kin0, {j: part.reshape(sh) for j, part, sh in zip(dynamic, np.split(got, cuts), shapes)}, dynamic,
+                    arms)
+                break
             if np.abs(r).max() <= tol:
                 break
             dr = None if r_prev is None else r - r_prev
@@ -734,6 +741,15 @@ class Coupler:
                 f"faster, or lines='explicit' holds the force at the step's start")
         self.line_iterations = it
         return F_lines, T_lines
+
+    def _only_driven(self, attachments) -> bool:
+        """Whether every body the ``attachments``' lines end on moves only on prescribed joints
+        (:meth:`bodies.mujoco_bodies.MujocoBodies.drive`: a test rig): their motion over a
+        step does not depend on the lines' force, so one advance is the converged one."""
+        b = self.bodies
+        driven = b.driven_dofs
+        ends = {int(k) for j in attachments for k in self._sites[j][1]}
+        return bool(driven) and all(set(range(b.model.nv)[b.dofs(k)]) <= driven for k in ends)
 
     def _check_loads(self, F, T) -> None:
         """Nothing non-finite crosses the coupler: a fluid load that is not finite stops the
