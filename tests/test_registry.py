@@ -174,4 +174,5 @@ def test_bad_registrations_are_refused_naming_what_to_fix(monkeypatch):
     assert MOORINGS.names() == ["catenary", "sph-cable", "moordyn", "fmu"]
     assert SHAPES.names() == ["box", "cylinder", "sphere", "mjcf", "elastic-plate"]
     assert FLUIDS.names() == ["none", "analytic", "potential", "sph"]
-    assert PROBES.names() == ["motion", "loads", "tensions", "line_states", "gauges", "pressure", "energy", "end_walls"]
+    assert PROBES.names() == ["motion", "loads", "tensions", "line_states", "line_points", "gauges", "pressure", "energy",
+                              "line_energy", "end_walls"]
