@@ -816,17 +816,19 @@ class SPHCableMooring:
 
     def fairlead_forces(self) -> np.ndarray:
         """Force [N] each line exerts on its fairlead, ``(n_lines, dim)``, world frame."""
-        if not self.cables:
-            raise InputError(f"{self.name}: not initialised; call initialize() first")
-        return np.array([np.zeros(self.dim) if free else c.end_forces()[1]
-                         for c, free in zip(self.cables, self.released)])
+        return self._fairlead_end_forces(mean=False)
 
     def mean_fairlead_forces(self) -> np.ndarray:
         """Mean force [N] each line exerted on its fairlead over the last advance (the
         mean over its sub-steps), ``(n_lines, dim)``."""
+        return self._fairlead_end_forces(mean=True)
+
+    def _fairlead_end_forces(self, mean: bool) -> np.ndarray:
+        """Each cable's force on its fairlead end (its second held end; a released line's:
+        zero), at the last sub-step or its mean over the last advance."""
         if not self.cables:
             raise InputError(f"{self.name}: not initialised; call initialize() first")
-        return np.array([np.zeros(self.dim) if free else c.end_forces(mean=True)[1]
+        return np.array([np.zeros(self.dim) if free else c.end_forces(mean=mean)[1]
                          for c, free in zip(self.cables, self.released)])
 
     def anchor_forces(self) -> np.ndarray:

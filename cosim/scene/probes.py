@@ -15,7 +15,7 @@ that become one HDF5 series, one CSV and one plot each:
   reports them (:mod:`moorings.line_events`: the catenary, the catenary FMU, the SPH cable,
   MoorDyn);
 - ``line_points``: the positions [m] of the material ``points`` a line names,
-  ``LINE.point1_x`` ... (the sph-cable);
+  ``LINE.point1_x`` ... (the sph-cable, the catenary);
 - ``tensions``: per line, the tension at its fairlead [N], at its anchor
   (``.anchor_tension`` [N]; the catenary, the SPH cable and MoorDyn report it, an FMU does
   not) and ``.tether`` [N], the load a taut inextensible catenary line carries as a length
@@ -327,7 +327,8 @@ class LineStates(Probe):
 class LinePoints(Probe):
     """``line_points``: the positions [m] of the material points each line names in its
     ``points`` (arc lengths from its anchor), ``LINE.pointK_x`` (``_y`` in 3-D), ``_z``,
-    K from 1 in the order given (the models that take ``points``: the sph-cable)."""
+    K from 1 in the order given (the models that take ``points``: the sph-cable, the
+    catenary)."""
 
     @staticmethod
     def _lines(scene):
@@ -349,8 +350,7 @@ class LinePoints(Probe):
         def points():
             return np.concatenate([m.points_at(i, pts).ravel() for i, _, pts in chosen])
 
-        comps = _axes(scene.world.dim)[3]
-        labels = [f"{n}, s = {x:g} m" for _, n, pts in chosen for x in pts for _ in comps]
+        labels = [f"{n}, s = {x:g} m" for _, n, pts in chosen for x in pts for _ in _axes(scene.world.dim)[3]]
         return [Group("line_points", cols, ["m"] * len(cols), points, labels=labels)]
 
 

@@ -101,16 +101,14 @@ def run_case1(scene):
     its point load, by ``cosim run``'s runner; the displacement of L (the line's recorded
     point) between the two settled states against Table 2 and the exact elastic catenary.
     Returns (metrics, steps of both runs)."""
-    import tempfile
-    from pathlib import Path
+    from cosim.validations.case_scene import run_once
 
     ln, body = scene.moorings.lines[0], scene.bodies[0]
     (s_L,), (load,) = ln.points, ln.point_loads
     span = body.pos[0] + body.fairleads[ln.fairlead.split(".", 1)[1]][0] - ln.anchor[0]
     settled, steps = {}, 0
     for label, sc in (("selfweight", scene.with_values(["moorings.lines[0].point_loads=[]"])), ("loaded", scene)):
-        with tempfile.TemporaryDirectory(prefix="cable_case1_") as tmp:
-            res = sc.run(Path(tmp) / "run", progress=False)
+        res = run_once(sc)
         xL = np.stack([res[f"{ln.name}.point1_x"], res[f"{ln.name}.point1_z"]], axis=-1)
         speed = float(np.linalg.norm(xL[-1] - xL[-2]) / sc.world.sample_every)
         settled[label] = (xL[-1], -float(res[f"{body.name}.mooring_Fx"][-1]), speed)  # H: the pull on the far support
@@ -175,20 +173,16 @@ def exp2_run(scene, every_particle: bool = False):
     (its results, the line's material points recorded [m] from P0, their positions over
     time (samples, points, 2) [m]). ``every_particle``: every particle's position is
     recorded too (the points set to all the cable's nodes, which adds none)."""
-    import tempfile
-    from pathlib import Path
-
+    from cosim.validations import case_scene
     from moorings.sph_cable import material_coordinates
 
     ln = scene.moorings.lines[0]
     if every_particle:
         nodes = material_coordinates(ln.length, scene.moorings.segments, [x for x in ln.points if 0 < x < ln.length])
-        from cosim.validations.case_scene import number
-
-        scene = scene.with_values(["moorings.lines[0].points=[" + ", ".join(number(x) for x in nodes) + "]"])
+        scene = scene.with_values(["moorings.lines[0].points=[" + ", ".join(case_scene.number(x) for x in nodes)
+                                   + "]"])
         ln = scene.moorings.lines[0]
-    with tempfile.TemporaryDirectory(prefix="cable_exp2_") as tmp:
-        res = scene.run(Path(tmp) / "run", progress=False)
+    res = case_scene.run_once(scene)
     xz = np.stack([np.stack([res[f"{ln.name}.point{k + 1}_x"], res[f"{ln.name}.point{k + 1}_z"]], axis=-1)
                    for k in range(len(ln.points))], axis=1)
     return res, ln.length - np.asarray(ln.points), xz
@@ -290,14 +284,11 @@ def run_vs_catenary(scene):
     line's fairlead tension with the quasi-static elastic catenary with seabed
     (moorings.catenary.solve) at every sample after the start. Returns (metrics, rows (X [m],
     T [N], quasi-static T [N]), the run's summary)."""
-    import tempfile
-    from pathlib import Path
-
+    from cosim.validations.case_scene import run_once
     from moorings.catenary import solve
 
     body, ln = scene.bodies[0], scene.moorings.lines[0]
-    with tempfile.TemporaryDirectory(prefix="cable_vs_catenary_") as tmp:
-        res = scene.run(Path(tmp) / "run", progress=False)
+    res = run_once(scene)
     site = body.fairleads[ln.fairlead.split(".", 1)[1]]
     X = (body.pos[0] + site[0] + res[f"{body.name}.surge"] - ln.anchor[0])[1:]
     T = res[f"{ln.name}.tension"][1:]

@@ -121,6 +121,13 @@ def built(scene) -> Iterator:
             close_participants(b)
 
 
+def run_once(scene):
+    """``scene`` run by ``cosim run``'s runner (no progress line) in a temporary folder,
+    removed after: its results (:class:`cosim.scene.runner.RunResults`, held in memory)."""
+    with tempfile.TemporaryDirectory(prefix="cosim-case-") as tmp:
+        return scene.run(Path(tmp) / "run", progress=False)
+
+
 def kept_runs(case: str, quick: bool) -> Path:
     """Where a case keeps the runs it resumes between sessions (:func:`run_or_resume`):
     ``$COSIM_CASE_RUNS/CASE/quick`` or ``/full`` (default ``out/case-runs``)."""

@@ -126,12 +126,10 @@ def rig_run(scene) -> dict:
     line's state, its recorded points (``x`` horizontal from the anchor, ``z`` over it,
     (samples, points) [m], at arc lengths ``s``); per body its ``offset`` [m] along x from
     the middle of its lines' anchors."""
-    import tempfile
-    from pathlib import Path
+    from cosim.validations.case_scene import run_once
 
     bodies = {b.name: b for b in scene.bodies}
-    with tempfile.TemporaryDirectory(prefix="catenary_rig_") as tmp:
-        res = scene.run(Path(tmp) / "run", progress=False)
+    res = run_once(scene)
     lines, anchors = {}, {n: [] for n in bodies}
     for ln in scene.moorings.lines:
         name, site = ln.fairlead.split(".", 1)

@@ -301,15 +301,13 @@ def run_scene(scene, out=None) -> dict:
     checkpoint when stopped (:func:`case_scene.run_or_resume`: a run of hours may span
     processes); None: a temporary folder. Adds the run's particles, steps and CPU seconds
     (``read_back_cpu_s``: those recorded by earlier processes)."""
-    import tempfile
     from pathlib import Path
 
     w = scene.waves
     wm, _, _ = _wave(w.height, w.period, scene.domain.depth)
     wavelengths = len(scene.probes.gauges) // GAUGES_PER_STATION
     if out is None:
-        with tempfile.TemporaryDirectory(prefix="wave_propagation_") as tmp:
-            res, earlier = scene.run(Path(tmp) / "run", progress=False), 0.0
+        res, earlier = case_scene.run_once(scene), 0.0
     else:
         res, earlier = case_scene.run_or_resume(scene, Path(out))
     fit = res.t >= scene.world.duration - FIT_PERIODS * w.period - 1e-9
