@@ -278,6 +278,9 @@ def _validate_parser(sub):
                         "their quick and full variants from the records of a report (--from FILE.jsonl, default "
                         "docs/validation/records.jsonl where a checkout has one), and exit")
     p.add_argument("--quick", action="store_true", help="coarse variant (what CI runs)")
+    p.add_argument("--long", action="store_true",
+                   help="with 'all --quick': also the long cases, whose quick variants take more than 5 CPU-minutes "
+                        "each (near-field runs of many periods; marked long in --list), which 'all --quick' leaves out")
     p.add_argument("--jobs", type=int, metavar="N",
                    help="cases run at once, each in a process of its own with cores/N numba threads, the costliest "
                         "first by the committed records; default: as many as the machine has cores (1: one after "
@@ -612,6 +615,14 @@ def cmd_validate(args, parser) -> int:
     names = list(known) if args.names == ["all"] else args.names
     if not names:
         parser.error("name a case (see --list), or 'all'")
+    if args.long and not (args.quick and args.names == ["all"]):
+        parser.error("--long goes with 'all --quick': it adds the long cases' quick variants, which 'all --quick' "
+                     "leaves out (a case named runs whatever its tier; 'all' without --quick runs every case)")
+    if args.quick and args.names == ["all"] and not args.long:
+        names, left = validation.quick_tier()
+        print(f"all --quick: {len(names)} cases; left out, as long (quick variants beyond "
+              f"{validation.LONG_QUICK_S / 60:.0f} CPU-minutes each): {', '.join(left)}; add --long for them too",
+              file=sys.stderr)
     unknown = [n for n in names if n not in known]
     if unknown:
         parser.error(f"unknown case(s) {', '.join(unknown)}; known: {', '.join(known)}")

@@ -36,7 +36,7 @@ from pathlib import Path
 from cosim.errors import InputError
 from cosim.validations.folders import SCENES
 from cosim.validations.judging import judge, lookup, measured, within  # noqa: F401 (this module's API)
-from cosim.validations.registry import _CASES, Case, case  # noqa: F401 (this module's API)
+from cosim.validations.registry import _CASES, LONG_QUICK_S, Case, case  # noqa: F401 (this module's API)
 
 #: modules that register cases; a new family adds its module here
 CASE_MODULES = ("cosim.validations.catenary", "cosim.validations.cable", "cosim.validations.fluid",
@@ -185,6 +185,13 @@ def run_many(names: list[str], quick: bool = False, jobs: int = 1,
     pool.shutdown()
 
 
+def quick_tier() -> tuple[list[str], list[str]]:
+    """The cases ``cosim validate all --quick`` runs (their quick variants within
+    :data:`LONG_QUICK_S` of CPU each), and the long ones it leaves out (:attr:`Case.long`)."""
+    known = cases()
+    return [n for n, c in known.items() if not c.long], [n for n, c in known.items() if c.long]
+
+
 # ------------------------------------------------------------------------------- listing
 #: where a checkout keeps the records of the last validation runs (``cosim validate --report``'s
 #: records.jsonl), which ``cosim validate --list`` reads when it is there
@@ -218,6 +225,12 @@ def cost(rec: dict | None) -> float | None:
     return own if own is None else own + rec.get("read_back_cpu_s", 0.0)
 
 
+def _wall(costs: list[float], n: int) -> float:
+    """The wall time [s] of cases costing ``costs`` [s] each, ``n`` at once: the total over
+    the cores, or the costliest case if that is longer (0 for none)."""
+    return max(sum(costs) / n, max(costs, default=0.0))
+
+
 def _seconds(s: float | None) -> str:
     """Seconds, short ("-" for none)."""
     if s is None:
@@ -229,8 +242,8 @@ def listing(records: list[dict] | None, source: str = "") -> list[str]:
     """``cosim validate --list``: each case with the cost (:func:`cost`) and status of its
     quick and full variant in ``records`` (records of :func:`run`, e.g. read from a report's
     records.jsonl), a record judged against another target than the case's present one
-    marked as such, and the quick variants' total with the wall time it takes on this
-    machine's cores (the total over the cores, or the costliest case if that is longer);
+    marked as such, the long cases' quick variants marked ``(long)``, and the quick variants'
+    total with the wall time ``all --quick`` (and ``--long``) take on this machine's cores;
     or, without records, the cases and their descriptions with a line that says that their
     costs and statuses are unknown and how to measure them."""
     known = cases()
@@ -251,19 +264,25 @@ def listing(records: list[dict] | None, source: str = "") -> list[str]:
         said = []
         for variant, quick in (("quick", True), ("full", False)):
             r = by.get((c.name, quick))
-            said.append(f"{variant}: {status(r)}" if r else f"{variant}: no record")
+            label = f"{variant} (long)" if quick and c.long else variant
+            said.append(f"{label}: {status(r)}" if r else f"{label}: no record")
             if r and r.get("target") != target_text(c, quick, r.get("departure")):
                 said[-1] += " (*)"
                 stale = True
         costs = [_seconds(cost(by.get((c.name, quick)))) for quick in (True, False)]
         lines.append(f"{c.name:28s} {costs[0]:>9s} {costs[1]:>9s}  {'; '.join(said)}")
-    quick = [cost(r) or 0.0 for (name, q), r in by.items() if q and name in known]
+    quick = {name: cost(r) or 0.0 for (name, q), r in by.items() if q and name in known}
     lines += [""]
     if quick:
         n = cores()
-        lines += [f"quick variants: {len(quick)} of {len(known)} cases recorded, {sum(quick):.0f} s in all;",
-                  f"  cosim validate all --quick runs {n} at once on this machine's {n} cores (--jobs): about "
-                  f"{max(sum(quick) / n, max(quick)):.0f} s of wall time"]
+        tier = [v for k, v in quick.items() if not known[k].long]
+        long = [v for k, v in quick.items() if known[k].long]
+        lines += [f"quick variants: {len(quick)} of {len(known)} cases recorded, {sum(quick.values()):.0f} s in all;",
+                  f"  cosim validate all --quick runs the {len(tier)} recorded of the quick tier ({sum(tier):.0f} s), "
+                  f"{n} at once on this machine's {n} cores (--jobs): about {_wall(tier, n):.0f} s of wall time;"]
+        if long:
+            lines += [f"  --long adds the {len(long)} recorded long ones (quick variants beyond {LONG_QUICK_S:.0f} s "
+                      f"each, {sum(long):.0f} s): about {_wall(tier + long, n):.0f} s of wall time in all"]
     if stale:
         lines += ["(*) the record was judged against another target than the case's present one: run it again"]
     lines += ["cost: the CPU seconds of the recorded run, on one core (its wall time where it has none)",

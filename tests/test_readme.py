@@ -151,20 +151,26 @@ def test_pages_link_to_files_that_exist(page):
 
 def test_the_quick_validations_cost_is_the_records():
     """The README's cost of `cosim validate all --quick` is what the committed records say
-    (each variant's CPU as `cosim validate --list` counts it, `cosim.validation.cost`):
-    the total, the near-field cases' share, the flagship's, and the minutes on 2 cores."""
+    (each variant's CPU as `cosim validate --list` counts it, `cosim.validation.cost`): the
+    quick tier's cases, their total and minutes on 2 cores, the long cases it leaves out
+    and what `--long` makes of the whole."""
+    from cosim import validation
     from cosim.report import read_records
-    from cosim.validation import cost
 
     text = " ".join(README.read_text().split())
-    m = re.search(r"the records' CPU is about ([\d ]+) s, ([\d ]+) of it the four near-field cases "
-                  r"\(wind-turbine-sph's quick alone ([\d ]+) s\), so about (\d+) minutes on 2 cores", text)
+    m = re.search(r"runs the quick tier, one case per core \(`--jobs`\): (\d+) cases whose records' CPU is about "
+                  r"([\d ]+) s, so about (\d+) minutes on 2 cores\. It leaves out the (\w+) long cases \(quick variants "
+                  r"beyond (\d+) CPU-minutes each: ([^)]*), about ([\d ]+) s\), which `--long` adds \(about (\d+) minutes "
+                  r"on 2 cores in all\)", text)
     assert m, "the README's sentence on the quick validations' cost"
-    total, near, flagship, minutes = (float(g.replace(" ", "")) for g in m.groups())
-    quick = {r["name"]: cost(r) for r in read_records(ROOT / "docs" / "validation" / "records.jsonl") if r.get("quick")}
-    measured = sum(quick.values())
-    assert total == pytest.approx(measured, rel=0.02)
-    assert near == pytest.approx(sum(v for k, v in quick.items() if k.startswith(("nearfield", "wind-turbine-sph"))),
-                                 rel=0.02)
-    assert flagship == pytest.approx(quick["wind-turbine-sph"], rel=0.02)
-    assert minutes == pytest.approx(measured / 2 / 60, abs=1.0)
+    count, total, minutes, n_long, bound, names, long_total, all_minutes = m.groups()
+    quick = {r["name"]: validation.cost(r) for r in read_records(validation.committed_records()) if r.get("quick")}
+    tier, long = validation.quick_tier()
+    number = {"two": 2, "three": 3, "four": 4, "five": 5}
+    assert int(count) == len(tier) and number[n_long] == len(long) and float(bound) * 60 == validation.LONG_QUICK_S
+    assert sorted(re.split(r", | and ", names)) == sorted(long)
+    seconds = sum(quick[n] for n in tier)
+    assert float(total.replace(" ", "")) == pytest.approx(seconds, rel=0.02)
+    assert float(minutes) == pytest.approx(seconds / 2 / 60, abs=1.0)
+    assert float(long_total.replace(" ", "")) == pytest.approx(sum(quick[n] for n in long), rel=0.02)
+    assert float(all_minutes) == pytest.approx(sum(quick.values()) / 2 / 60, abs=1.0)

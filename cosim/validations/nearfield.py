@@ -261,7 +261,7 @@ def _tolerances(metrics: dict) -> dict:
              "20 periods; the mean level's drift below 1 % of the depth; for the JONSWAP sea Hs and Tp within 5 % "
              "and the spectrum within 10 % over 0.7-1.5 fp",
       quick="H/dx = 3, Stokes-2 waves 20 periods (the linear ones are the full variant's) and the JONSWAP sea 24 "
-            "peak periods: the same tolerances", scene=lambda quick: waves_scene(*FIRST_RUN[quick]))
+            "peak periods: the same tolerances", scene=lambda quick: waves_scene(*FIRST_RUN[quick]), long=True)
 def nearfield_waves(quick: bool) -> dict:
     """The near field's incident sea with nothing in it: the scene ``scenes/nearfield-waves.toml``
     with each variant's seas and spacings (:func:`nearfield_case`), what the box does to the

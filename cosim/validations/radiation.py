@@ -131,7 +131,7 @@ def radiation_metrics(res, scene) -> dict:
              "first harmonic within 10 % of the boundary-element reference",
       quick=f"R/dx = 4 (two particles across the draft), the ramp and {PERIODS_AFTER_RAMP} periods: reflection below "
             f"{QUICK_REFLECTION_TOL:.0%}, A33 and B33 within {QUICK_COEFFICIENT_TOL:.0%} of Capytaine's",
-      scene=radiation_scene)
+      scene=radiation_scene, long=True)
 def nearfield_radiation(quick: bool) -> dict:
     """The scene ``SCENE`` at the variant's spacing (quick R/dx = 4, full R/dx = 6), judged
     over its last :data:`FIT_PERIODS` periods (module docstring)."""

@@ -27,23 +27,33 @@ class Case:
     #: several), built from the case's file ``scenes/NAME.toml``; the quick variant's is the
     #: file's (tests/test_validation_scenes.py). None: the case builds its set-up in code
     scene: Callable[[bool], object] | None = None
+    #: the quick variant takes more than :data:`LONG_QUICK_S` of CPU (near-field runs of many
+    #: periods): ``cosim validate all --quick`` leaves it out unless ``--long`` asks for it
+    long: bool = False
 
+
+#: the quick variants of the tier ``cosim validate all --quick`` runs take at most this much
+#: CPU each [s] (by the committed records, tests/test_validation_tiers.py); a case whose quick
+#: variant takes more is marked ``long``
+LONG_QUICK_S = 300.0
 
 _CASES: dict[str, Case] = {}
 
 
-def case(name: str, description: str, *, target: str, quick: str, row: str | None = "", scene=None):
+def case(name: str, description: str, *, target: str, quick: str, row: str | None = "", scene=None,
+         long: bool = False):
     """Decorator registering ``fn(quick) -> dict`` as validation case ``name``.
 
     ``target``: the stated target (the target column of the ``row`` of docs/VALIDATION.md,
     by default the row named ``name``; ``row=None``: no row, the target is declared here);
     ``quick``: what the quick variant is judged against; ``scene``: ``scene(quick)``, the
-    scene the variant runs (:attr:`Case.scene`), for a case that runs its scene file."""
+    scene the variant runs (:attr:`Case.scene`), for a case that runs its scene file;
+    ``long``: its quick variant is beyond the quick tier (:attr:`Case.long`)."""
 
     def register(fn):
         if name in _CASES and _CASES[name].fn is not fn:
             raise ValueError(f"validation case {name!r} registered twice")
-        _CASES[name] = Case(name, description, fn, target, quick, name if row == "" else row, scene)
+        _CASES[name] = Case(name, description, fn, target, quick, name if row == "" else row, scene, long)
         return fn
 
     return register
