@@ -159,7 +159,7 @@ def test_the_quick_validations_cost_is_the_records():
 
     text = " ".join(README.read_text().split())
     m = re.search(r"runs the quick tier, one case per core \(`--jobs`\): (\d+) cases whose records' CPU is about "
-                  r"([\d ]+) s, so about (\d+) minutes on 2 cores\. It leaves out the (\w+) long cases \(quick variants "
+                  r"([\d ]+) s, so about (\d+) minutes on 2 cores \(from a fresh clone[^)]*\)\)\. It leaves out the (\w+) long cases \(quick variants "
                   r"beyond (\d+) CPU-minutes each: ([^)]*), about ([\d ]+) s\), which `--long` adds \(about (\d+) minutes "
                   r"on 2 cores in all\)", text)
     assert m, "the README's sentence on the quick validations' cost"
