@@ -159,9 +159,9 @@ def test_the_quick_validations_cost_is_the_records():
 
     text = " ".join(README.read_text().split())
     m = re.search(r"runs the quick tier, one case per core \(`--jobs`\): (\d+) cases whose records' CPU is about "
-                  r"([\d ]+) s, so about (\d+) minutes on 2 cores \(from a fresh clone[^)]*\)\)\. It leaves out the (\w+) long cases \(quick variants "
-                  r"beyond (\d+) CPU-minutes each: ([^)]*), about ([\d ]+) s\), which `--long` adds \(about (\d+) minutes "
-                  r"on 2 cores in all\)", text)
+                  r"([\d ]+) s, so about (\d+) minutes on 2 cores \(from a fresh clone[^)]*\)\)\. "
+                  r"It leaves out the (\w+) long cases \(quick variants beyond (\d+) CPU-minutes each: ([^)]*), "
+                  r"about ([\d ]+) s\), which `--long` adds \(about (\d+) minutes on 2 cores in all\)", text)
     assert m, "the README's sentence on the quick validations' cost"
     count, total, minutes, n_long, bound, names, long_total, all_minutes = m.groups()
     quick = {r["name"]: validation.cost(r) for r in read_records(validation.committed_records()) if r.get("quick")}
