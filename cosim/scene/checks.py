@@ -789,7 +789,7 @@ def _check_probes(s, dim, mj):
             raise SceneError(f"probes.motion[{i}]", f"no body named {n!r}; bodies: {sorted(names)} (or \"all\")")
     # the analytic and potential fluids' gauges read their incident sea (given, or a flume's wavemaker's far-field wave)
     linear = isinstance(s.fluid, _SURFACE) and isinstance(s.waves, (IncidentSea, Piston, Flap))
-    line_energy = s.moorings is not None and "energy" in getattr(MOORINGS[s.moorings.model], "extras", ())
+    line_energy = s.moorings is not None and "energy" in MOORINGS[s.moorings.model].extras
     fluid_probes = (p.gauges and not linear) or p.pressure or (p.energy and not line_energy)
     if fluid_probes and not isinstance(s.fluid, SPH):
         which = "gauges" if p.gauges and not linear else "pressure" if p.pressure else "energy"

@@ -467,7 +467,7 @@ class LineEnergy(Probe):
         from cosim.scene.registry import MOORINGS
 
         m = scene.moorings
-        if m is None or not scene.probes.energy or "energy" not in getattr(MOORINGS[m.model], "extras", ()):
+        if m is None or not scene.probes.energy or "energy" not in MOORINGS[m.model].extras:
             return []
         return [f"{ln.name or ln.fairlead}.energy" for ln in m.lines]
 

@@ -1262,7 +1262,7 @@ class Moorings(Spec):
                 if getattr(ln, key) is None:
                     raise SceneError(f"lines[{i}].{key}", f"the {self.model!r} model needs it for every line; "
                                      f"give it, or use model = \"catenary\"")
-        takes = getattr(MOORINGS[self.model], "extras", ())
+        takes = MOORINGS[self.model].extras
         unusual = [("seabed", not self.seabed), ("damping", self.damping is not None)]
         unusual += [(f"lines[{i}].{k}", bool(getattr(ln, k))) for i, ln in enumerate(self.lines)
                     for k in ("point_loads", "points", "released")]
