@@ -8,30 +8,59 @@ reflection and its amplitude against the one B33 carries). Each run is kept in
 (``cosim.validations.case_scene.run_or_resume``): R/dx = 8 takes several CPU-hours (``cosim
 run ... --dry-run`` estimates 2.2), and a run a stopped process leaves, the next one resumes.
 
-    python benchmarks/radiation_convergence.py --out OUT [--r-over-dx 4 6 8] [--periods 3]
+    python benchmarks/radiation_convergence.py --out OUT [--r-over-dx 4 6 8] [--periods 3] [--amplitude 0.3]
 
-``--periods``: the periods run after the ramp (the case's 3); the fit takes the last two, so
-a longer run shows whether B33 has settled or still swings with what the zones send back.
+``--periods``: the periods run after the ramp (the case's 3); the case's fit takes the last
+two, so a longer run shows whether B33 has settled or still swings with what the zones send
+back: each run's B33 and A33 are also fitted over every whole period after the ramp, and
+over the last 2, 4 and 6. ``--amplitude``: the heave amplitude [m] (the case's 0.3 m), for
+how the coefficients' errors scale with the motion.
 
-Prints one JSON line per run, then a markdown table.
+Prints one JSON line per run, then two markdown tables.
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import math
 from pathlib import Path
 
 from cosim.validations import case_scene
-from cosim.validations.radiation import PERIODS_AFTER_RAMP, radiation_metrics, radiation_scene
+from cosim.validations.radiation import PERIODS_AFTER_RAMP, added_mass_damping, radiation_metrics, radiation_scene
 
 
-def scene_at(r_over_dx: float, periods: float = PERIODS_AFTER_RAMP):
-    """The case's full scene at ``R / dx = r_over_dx``, run ``periods`` periods after the ramp."""
+def scene_at(r_over_dx: float, periods: float = PERIODS_AFTER_RAMP, amplitude: float | None = None):
+    """The case's full scene at ``R / dx = r_over_dx``, run ``periods`` periods after the ramp
+    (``amplitude`` [m]: its heave amplitude instead of the case's)."""
     scene = radiation_scene(False)
     m = scene.bodies[0].motion
-    return scene.with_values([f"fluid.dx={case_scene.number(scene.bodies[0].radius / r_over_dx)}",
-                              f"world.duration={case_scene.number((m.ramp + periods) * m.period)}"])
+    values = [f"fluid.dx={case_scene.number(scene.bodies[0].radius / r_over_dx)}",
+              f"world.duration={case_scene.number((m.ramp + periods) * m.period)}"]
+    if amplitude is not None:
+        values.append(f"bodies[0].motion.amplitude={case_scene.number(amplitude)}")
+    return scene.with_values(values)
+
+
+def by_period(res, scene, reference: tuple) -> dict:
+    """B33 [kg/s] and the errors of B33 and A33 against ``reference`` = (A33, B33, C33) fitted
+    by the case's ``added_mass_damping`` over each whole period after the ramp, and over the
+    last 2, 4 and 6 periods where the run has them."""
+    a_ref, b_ref, c33 = reference
+    b = scene.bodies[0]
+    m = b.motion
+    w = 2.0 * math.pi / m.period
+    t, fz = res.t, res[f"{b.name}.fluid_Fz"]
+
+    def fit(sel):
+        a33, b33 = added_mass_damping(t[sel], fz[sel], m.amplitude, w, c33)
+        return {"B33_kg_s": b33, "B33_error": b33 / b_ref - 1.0, "A33_error": a33 / a_ref - 1.0}
+
+    whole = int((t[-1] + 1e-9) / m.period - m.ramp)
+    periods = [fit((t >= (m.ramp + j) * m.period - 1e-9) & (t <= (m.ramp + j + 1) * m.period + 1e-9))
+               for j in range(whole)]
+    last = {n: fit(t >= t[-1] - n * m.period - 1e-9) for n in (2, 4, 6) if n <= whole}
+    return {"periods": periods, "last": last}
 
 
 def main(argv=None) -> int:
@@ -39,17 +68,20 @@ def main(argv=None) -> int:
     p.add_argument("--out", type=Path, required=True, help="folder of the kept runs")
     p.add_argument("--r-over-dx", type=float, nargs="+", default=[4.0, 6.0, 8.0], help="radii per spacing")
     p.add_argument("--periods", type=float, default=PERIODS_AFTER_RAMP, help="periods run after the ramp")
+    p.add_argument("--amplitude", type=float, help="heave amplitude [m] (default: the case's)")
     a = p.parse_args(argv)
     rows = []
     for r in a.r_over_dx:
-        scene = scene_at(r, a.periods)
+        scene = scene_at(r, a.periods, a.amplitude)
         tag = "" if a.periods == PERIODS_AFTER_RAMP else f"_{a.periods:g}periods"
+        tag += "" if a.amplitude is None else f"_A{a.amplitude:g}"
         res, earlier = case_scene.run_or_resume(scene, a.out / f"R_over_dx_{r:g}{tag}")
         m = radiation_metrics(res, scene)
         keep = ("R_over_dx", "A33_kg", "A33_error", "B33_kg_s", "B33_error", "reflection", "particles", "steps",
                 "cpu_s")
         row = {k: m.get(k) for k in keep} | {"cpu_s_earlier": earlier, "outgoing_over_B33": max(
-            v["outgoing_over_theory"] for v in m["lines"].values())}
+            v["outgoing_over_theory"] for v in m["lines"].values()), "heave_amplitude_m": m["heave_amplitude_m"]}
+        row["by_period"] = by_period(res, scene, (m["A33_ref_kg"], m["B33_ref_kg_s"], m["C33_N_m"]))
         print(json.dumps(row), flush=True)
         rows.append(row)
     print("\n| R/dx | A33 error | B33 error | reflection | outgoing / B33's | particles | steps | CPU s |")
@@ -57,6 +89,15 @@ def main(argv=None) -> int:
     for w in rows:
         print(f"| {w['R_over_dx']:g} | {w['A33_error']:.1%} | {w['B33_error']:.1%} | {w['reflection']:.3f} | "
               f"{w['outgoing_over_B33']:.3f} | {w['particles']} | {w['steps']} | {w['cpu_s']:.0f} |")
+    print("\n| R/dx | heave [m] | B33 per period after the ramp [kN s/m] | B33 error over the last 2 / 4 / 6 periods "
+          "| A33 error over the same |")
+    print("|---|---|---|---|---|")
+    for w in rows:
+        bp = w["by_period"]
+        per = ", ".join(f"{q['B33_kg_s'] / 1e3:.1f}" for q in bp["periods"])
+        print(f"| {w['R_over_dx']:g} | {w['heave_amplitude_m']:.3g} | {per} | "
+              + " / ".join(f"{q['B33_error']:+.1%}" for q in bp["last"].values()) + " | "
+              + " / ".join(f"{q['A33_error']:+.1%}" for q in bp["last"].values()) + " |")
     return 0
 
 
