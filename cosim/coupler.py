@@ -693,6 +693,10 @@ class Coupler:
         shapes = [np.shape(m.fairlead_forces()) for m in moorings]
         x = np.concatenate([np.asarray(m.fairlead_forces(), dtype=float).ravel() for m in moorings])
         cuts = np.cumsum([int(np.prod(sh)) for sh in shapes])[:-1]
+
+        def by_mooring(v):  # the stacked fairlead forces, back to each mooring's (lines, dim)
+            return {j: part.reshape(sh) for j, part, sh in zip(dynamic, np.split(v, cuts), shapes)}
+
         arms0 = self._lever_arms(kin0, dynamic)
         arms = arms0
         held = self._only_driven(dynamic)
@@ -702,8 +706,7 @@ class Coupler:
                 b.load_state(body_state)
                 for m, st in zip(moorings, line_states):
                     m.load_state(st)
-            guess = {j: part.reshape(sh) for j, part, sh in zip(dynamic, np.split(x, cuts), shapes)}
-            F_lines, T_lines = self._mooring_wrenches(kin0, guess, dynamic, arms)
+            F_lines, T_lines = self._mooring_wrenches(kin0, by_mooring(x), dynamic, arms)
             b.set_wrenches(F_other + F_lines, T_other + T_lines)
             self._advance_bodies(t, dt)
             kin1 = b.kinematics()
@@ -715,15 +718,12 @@ class Coupler:
                 m.advance(t, dt)
             got = np.concatenate([np.asarray(m.mean_fairlead_forces(), dtype=float).ravel() for m in moorings])
             if not np.isfinite(got).all():  # stop, naming the mooring and the line
-                self._mooring_wrenches(kin0, {j: part.reshape(sh) for j, part, sh in
-                                              zip(dynamic, np.split(got, cuts), shapes)}, dynamic)
+                self._mooring_wrenches(kin0, by_mooring(got), dynamic)
+            if held:  # the bodies moved as prescribed whatever the force: the lines' own mean is the load
+                F_lines, T_lines = self._mooring_wrenches(kin0, by_mooring(got), dynamic, arms)
+                break
             r = got - x
             tol = self.LINES_TOL * max(float(np.abs(got).max()), float(np.abs(x).max()), 1.0)
-            if held:  # the bodies moved as prescribed whatever the force: the lines' own mean is the load
-                F_lines, T_lines = self._mooring_wrenches(
-                    kin0, {j: part.reshape(sh) for j, part, sh in zip(dynamic, np.split(got, cuts), shapes)}, dynamic,
-                    arms)
-                break
             if np.abs(r).max() <= tol:
                 break
             dr = None if r_prev is None else r - r_prev

@@ -22,6 +22,11 @@ from moorings.line import MooringLine, named_lines, per_line
 from moorings.line_events import LineStateLog
 
 
+#: the relative slack ``1 - chord / L`` within which a taut inextensible line is held as a
+#: length constraint by default (``CatenaryMooring``'s ``slack``) [-]
+TETHER_SLACK = 1e-3
+
+
 class CatenaryMooring:
     """Quasi-static catenary lines; satisfies ``cosim.protocol.Mooring``.
 
@@ -47,7 +52,7 @@ class CatenaryMooring:
         capped in ``"tether"`` mode (default 1e-3: there the tension is ~6.5 w L).
     """
 
-    def __init__(self, lines, fairleads=None, name: str = "moorings", taut: str = "tether", slack: float = 1e-3):
+    def __init__(self, lines, fairleads=None, name: str = "moorings", taut: str = "tether", slack: float = TETHER_SLACK):
         self.lines = named_lines(lines)
         self.name = name
         if taut not in ("tether", "raise"):

@@ -140,6 +140,10 @@ class _Load:
         return self.t_on <= t + 1e-12 < self.t_off
 
 
+#: the largest strain an SPH cable takes elastically by default (``SPHCable``'s ``max_strain``) [-]
+MAX_STRAIN = 0.1
+
+
 class SPHCable:
     """One cable of SPH particles between two ends (Dinçer & Demir 2020, Eq. 1-12).
 
@@ -184,7 +188,7 @@ class SPHCable:
 
     def __init__(self, length, n_particles, EA, mass_per_length, end_a, end_b, weight_per_length=None,
                  free_end=None, positions=None, nodes_at=(), cfl=0.4, omega=0.04,
-                 visc_alpha=1.0, visc_beta=0.2, delta=0.0, max_strain=0.1, seabed_z=None,
+                 visc_alpha=1.0, visc_beta=0.2, delta=0.0, max_strain=MAX_STRAIN, seabed_z=None,
                  seabed_friction=0.0, diameter=None, rho_water=1025.0, cd_normal=1.2, cd_tangential=0.008, ca_normal=1.0,
                  ca_tangential=0.0, water_z=math.inf, gravity=G_STANDARD, name="cable", safety=0.8):
         self.name = name

@@ -23,21 +23,12 @@ from moorings.catenary import (
     solve,
     taut_distance,
 )
+from moorings.catenary_mooring import TETHER_SLACK
 
 
 def _rel(a, b):
     a, b = np.asarray(a, float), np.asarray(b, float)
     return float(np.max(np.abs(a - b) / np.maximum(np.abs(b), 1e-300)))
-
-
-def _tether_slack() -> float:
-    """The slack [-] within which a rig's taut inextensible line is held as a length
-    constraint (``moorings.CatenaryMooring``'s default)."""
-    import inspect
-
-    from moorings import CatenaryMooring
-
-    return inspect.signature(CatenaryMooring).parameters["slack"].default
 
 
 def limits_scene(quick: bool):
@@ -92,7 +83,7 @@ def catenary_limits(quick: bool) -> dict:
             errs["shape_end"] = max(errs["shape_end"], math.hypot(x[-1] - X[k], z[-1] - h) / L)
         # within the tether's slack of taut the rig's line is a length constraint (the coupler's
         # taut inextensible line, moorings.CatenaryMooring's ``slack``): there the law itself
-        if math.hypot(X[-1], h) > L * (1.0 - _tether_slack()):
+        if math.hypot(X[-1], h) > L * (1.0 - TETHER_SLACK):
             H_lift, from_law = float(law.H[-1]), from_law + 1
         else:
             H_lift = H[-1]
