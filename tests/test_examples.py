@@ -44,6 +44,14 @@ def test_scene_example_runs_at_default(path, tmp_path):
         for k in range(2):
             assert {0.0, 1.0} <= set(states[:, k]), k  # resting and partly lifted, each line
             assert tension[:, k].max() > 1.25 * tension[:, k].min(), k
+        # the README's tension ranges, to the 0.1 N it gives them in
+        import re
+
+        readme = " ".join((EXAMPLES.parent / "README.md").read_text().split())
+        said = re.search(r"tensions ([\d.]+)–([\d.]+) N and ([\d.]+)–([\d.]+) N", readme)
+        assert said, "the README's tension ranges of the main example"
+        measured = [tension[:, 0].min(), tension[:, 0].max(), tension[:, 1].min(), tension[:, 1].max()]
+        np.testing.assert_allclose([float(g) for g in said.groups()], measured, atol=0.06)
 
 
 def test_the_quick_example_is_an_example():
