@@ -8,13 +8,14 @@ reflection and its amplitude against the one B33 carries). Each run is kept in
 (``cosim.validations.case_scene.run_or_resume``): R/dx = 8 takes several CPU-hours (``cosim
 run ... --dry-run`` estimates 2.2), and a run a stopped process leaves, the next one resumes.
 
-    python benchmarks/radiation_convergence.py --out OUT [--r-over-dx 4 6 8] [--periods 3] [--amplitude 0.3]
+    python benchmarks/radiation_convergence.py --out OUT [--r-over-dx 4 6 8] [--periods 6] [--amplitude 0.3] [--no-tare]
 
-``--periods``: the periods run after the ramp (the case's 3); the case's fit takes the last
-two, so a longer run shows whether B33 has settled or still swings with what the zones send
-back: each run's B33 and A33 are also fitted over every whole period after the ramp, and
-over the last 2, 4 and 6. ``--amplitude``: the heave amplitude [m] (the case's 0.3 m), for
-how the coefficients' errors scale with the motion.
+``--periods``: the periods run after the ramp (the case's 6, all of them fitted); each run's
+B33 and A33 are also fitted over every whole period after the ramp, and over the last 2, 4
+and 6, which show how B33 swings with what the zones send back. ``--amplitude``: the heave
+amplitude [m] (the case's 0.3 m), for how the coefficients' errors scale with the motion.
+Each spacing's tare (the body held still, ``radiation.held_scene``) is run and subtracted
+as the case does; ``--no-tare`` leaves it out (the forced run's force alone).
 
 Prints one JSON line per run, then two markdown tables.
 """
@@ -27,7 +28,8 @@ import math
 from pathlib import Path
 
 from cosim.validations import case_scene
-from cosim.validations.radiation import PERIODS_AFTER_RAMP, added_mass_damping, radiation_metrics, radiation_scene
+from cosim.validations.radiation import (PERIODS_AFTER_RAMP, added_mass_damping, held_scene, radiation_metrics,
+                                         radiation_scene)
 
 
 def scene_at(r_over_dx: float, periods: float = PERIODS_AFTER_RAMP, amplitude: float | None = None):
@@ -42,15 +44,17 @@ def scene_at(r_over_dx: float, periods: float = PERIODS_AFTER_RAMP, amplitude: f
     return scene.with_values(values)
 
 
-def by_period(res, scene, reference: tuple) -> dict:
+def by_period(res, scene, reference: tuple, tare=None) -> dict:
     """B33 [kg/s] and the errors of B33 and A33 against ``reference`` = (A33, B33, C33) fitted
     by the case's ``added_mass_damping`` over each whole period after the ramp, and over the
-    last 2, 4 and 6 periods where the run has them."""
+    last 2, 4 and 6 periods where the run has them; less the held run ``tare``'s force where
+    given."""
     a_ref, b_ref, c33 = reference
     b = scene.bodies[0]
     m = b.motion
     w = 2.0 * math.pi / m.period
-    t, fz = res.t, res[f"{b.name}.fluid_Fz"]
+    name = f"{b.name}.fluid_Fz"
+    t, fz = res.t, res[name] - (0.0 if tare is None else tare[name])
 
     def fit(sel):
         a33, b33 = added_mass_damping(t[sel], fz[sel], m.amplitude, w, c33)
@@ -69,25 +73,33 @@ def main(argv=None) -> int:
     p.add_argument("--r-over-dx", type=float, nargs="+", default=[4.0, 6.0, 8.0], help="radii per spacing")
     p.add_argument("--periods", type=float, default=PERIODS_AFTER_RAMP, help="periods run after the ramp")
     p.add_argument("--amplitude", type=float, help="heave amplitude [m] (default: the case's)")
+    p.add_argument("--no-tare", action="store_true", help="no held run: the forced run's force alone")
     a = p.parse_args(argv)
     rows = []
     for r in a.r_over_dx:
         scene = scene_at(r, a.periods, a.amplitude)
-        tag = "" if a.periods == PERIODS_AFTER_RAMP else f"_{a.periods:g}periods"
-        tag += "" if a.amplitude is None else f"_A{a.amplitude:g}"
-        res, earlier = case_scene.run_or_resume(scene, a.out / f"R_over_dx_{r:g}{tag}")
-        m = radiation_metrics(res, scene)
+        held = f"R_over_dx_{r:g}" + ("" if a.periods == PERIODS_AFTER_RAMP else f"_{a.periods:g}periods")
+        tag = held + ("" if a.amplitude is None else f"_A{a.amplitude:g}")
+        res, earlier = case_scene.run_or_resume(scene, a.out / tag)
+        tare = None
+        if not a.no_tare:  # one held run for every amplitude at this spacing and length
+            tare, held_cpu = case_scene.run_or_resume(held_scene(scene), a.out / f"{held}_held")
+            earlier += held_cpu
+        m = radiation_metrics(res, scene, tare)
         keep = ("R_over_dx", "A33_kg", "A33_error", "B33_kg_s", "B33_error", "reflection", "particles", "steps",
                 "cpu_s")
         row = {k: m.get(k) for k in keep} | {"cpu_s_earlier": earlier, "outgoing_over_B33": max(
             v["outgoing_over_theory"] for v in m["lines"].values()), "heave_amplitude_m": m["heave_amplitude_m"]}
-        row["by_period"] = by_period(res, scene, (m["A33_ref_kg"], m["B33_ref_kg_s"], m["C33_N_m"]))
+        row["by_period"] = by_period(res, scene, (m["A33_ref_kg"], m["B33_ref_kg_s"], m["C33_N_m"]), tare)
+        row |= {"tared": m["tared"], "B33_error_untared": m["B33_error_untared"]}
         print(json.dumps(row), flush=True)
         rows.append(row)
-    print("\n| R/dx | A33 error | B33 error | reflection | outgoing / B33's | particles | steps | CPU s |")
-    print("|---|---|---|---|---|---|---|---|")
+    print("\n| R/dx | A33 error | B33 error | B33 error untared | reflection | outgoing / B33's | particles | steps "
+          "| CPU s |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for w in rows:
-        print(f"| {w['R_over_dx']:g} | {w['A33_error']:.1%} | {w['B33_error']:.1%} | {w['reflection']:.3f} | "
+        print(f"| {w['R_over_dx']:g} | {w['A33_error']:.1%} | {w['B33_error']:.1%} | {w['B33_error_untared']:.1%} | "
+              f"{w['reflection']:.3f} | "
               f"{w['outgoing_over_B33']:.3f} | {w['particles']} | {w['steps']} | {w['cpu_s']:.0f} |")
     print("\n| R/dx | heave [m] | B33 per period after the ramp [kN s/m] | B33 error over the last 2 / 4 / 6 periods "
           "| A33 error over the same |")
