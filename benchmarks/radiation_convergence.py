@@ -9,13 +9,16 @@ reflection and its amplitude against the one B33 carries). Each run is kept in
 run ... --dry-run`` estimates 2.2), and a run a stopped process leaves, the next one resumes.
 
     python benchmarks/radiation_convergence.py --out OUT [--r-over-dx 4 6 8] [--periods 6] [--amplitude 0.3] [--no-tare]
+        [--set fluid.alpha=0 ...]
 
 ``--periods``: the periods run after the ramp (the case's 6, all of them fitted); each run's
 B33 and A33 are also fitted over every whole period after the ramp, and over the last 2, 4
 and 6, which show how B33 swings with what the zones send back. ``--amplitude``: the heave
 amplitude [m] (the case's 0.3 m), for how the coefficients' errors scale with the motion.
 Each spacing's tare (the body held still, ``radiation.held_scene``) is run and subtracted
-as the case does; ``--no-tare`` leaves it out (the forced run's force alone).
+as the case does; ``--no-tare`` leaves it out (the forced run's force alone). ``--set``:
+scene values changed in both runs (``cosim run``'s ``--set``), for the fluid's levers; the
+runs' folders are named by them.
 
 Prints one JSON line per run, then two markdown tables.
 """
@@ -32,16 +35,18 @@ from cosim.validations.radiation import (PERIODS_AFTER_RAMP, added_mass_damping,
                                          radiation_scene)
 
 
-def scene_at(r_over_dx: float, periods: float = PERIODS_AFTER_RAMP, amplitude: float | None = None):
+def scene_at(r_over_dx: float, periods: float = PERIODS_AFTER_RAMP, amplitude: float | None = None,
+             extra=()):
     """The case's full scene at ``R / dx = r_over_dx``, run ``periods`` periods after the ramp
-    (``amplitude`` [m]: its heave amplitude instead of the case's)."""
+    (``amplitude`` [m]: its heave amplitude instead of the case's; ``extra``: further
+    ``KEY=VALUE`` changes)."""
     scene = radiation_scene(False)
     m = scene.bodies[0].motion
     values = [f"fluid.dx={case_scene.number(scene.bodies[0].radius / r_over_dx)}",
               f"world.duration={case_scene.number((m.ramp + periods) * m.period)}"]
     if amplitude is not None:
         values.append(f"bodies[0].motion.amplitude={case_scene.number(amplitude)}")
-    return scene.with_values(values)
+    return scene.with_values(values + list(extra))
 
 
 def by_period(res, scene, reference: tuple, tare=None) -> dict:
@@ -74,11 +79,14 @@ def main(argv=None) -> int:
     p.add_argument("--periods", type=float, default=PERIODS_AFTER_RAMP, help="periods run after the ramp")
     p.add_argument("--amplitude", type=float, help="heave amplitude [m] (default: the case's)")
     p.add_argument("--no-tare", action="store_true", help="no held run: the forced run's force alone")
+    p.add_argument("--set", dest="values", action="append", default=[], metavar="KEY=VALUE",
+                   help="a scene value changed in both runs (repeat)")
     a = p.parse_args(argv)
     rows = []
     for r in a.r_over_dx:
-        scene = scene_at(r, a.periods, a.amplitude)
-        held = f"R_over_dx_{r:g}" + ("" if a.periods == PERIODS_AFTER_RAMP else f"_{a.periods:g}periods")
+        scene = scene_at(r, a.periods, a.amplitude, a.values)
+        held = (f"R_over_dx_{r:g}" + ("" if a.periods == PERIODS_AFTER_RAMP else f"_{a.periods:g}periods")
+                + "".join(f"_{v}" for v in a.values))
         tag = held + ("" if a.amplitude is None else f"_A{a.amplitude:g}")
         res, earlier = case_scene.run_or_resume(scene, a.out / tag)
         tare = None
