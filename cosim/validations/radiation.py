@@ -31,9 +31,9 @@ and radiation damping of linear potential flow.
   force of 0.3 m of heave at R/dx = 4) is not the body's radiation. The fits without it
   are reported beside (``*_untared``).
 - The fluid: the reference is inviscid, so the scene runs without the artificial viscosity,
-  whose dissipation reads as damping, and with a small laminar
-  viscosity (Lo & Shao 2002), without which the damping falls short after three periods
-  (the scene file; docs/validation/nearfield.md, "The viscosity round the body").
+  whose dissipation reads as damping, and with a small laminar viscosity (Lo & Shao 2002),
+  without which the damping falls short after three periods (the scene file;
+  docs/validation/nearfield.md, "The viscosity round the body").
 """
 
 from __future__ import annotations
