@@ -9,7 +9,7 @@ reflection and its amplitude against the one B33 carries). Each run is kept in
 run ... --dry-run`` estimates 2.2), and a run a stopped process leaves, the next one resumes.
 
     python benchmarks/radiation_convergence.py --out OUT [--r-over-dx 4 6 8] [--periods 6] [--amplitude 0.3] [--no-tare]
-        [--set fluid.alpha=0 ...]
+        [--set fluid.nu=0 ...]
 
 ``--periods``: the periods run after the ramp (the case's 6, all of them fitted); each run's
 B33 and A33 are also fitted over every whole period after the ramp, and over the last 2, 4
@@ -39,14 +39,15 @@ def scene_at(r_over_dx: float, periods: float = PERIODS_AFTER_RAMP, amplitude: f
              extra=()):
     """The case's full scene at ``R / dx = r_over_dx``, run ``periods`` periods after the ramp
     (``amplitude`` [m]: its heave amplitude instead of the case's; ``extra``: further
-    ``KEY=VALUE`` changes)."""
-    scene = radiation_scene(False)
+    ``KEY=VALUE`` changes, made first, so that a longer ramp lengthens the run; the spacing
+    is ``r_over_dx``'s)."""
+    scene = radiation_scene(False).with_values(list(extra))
     m = scene.bodies[0].motion
     values = [f"fluid.dx={case_scene.number(scene.bodies[0].radius / r_over_dx)}",
               f"world.duration={case_scene.number((m.ramp + periods) * m.period)}"]
     if amplitude is not None:
         values.append(f"bodies[0].motion.amplitude={case_scene.number(amplitude)}")
-    return scene.with_values(values + list(extra))
+    return scene.with_values(values)
 
 
 def by_period(res, scene, reference: tuple, tare=None) -> dict:
