@@ -60,6 +60,18 @@ def test_a_kept_run_is_read_back_and_a_stopped_one_resumes(tmp_path):
         wt.run_or_resume(_short("analytic", 6.0).with_values(["fluid.rho=1000.0"]), tmp_path / "kept")
 
 
+def test_the_runs_read_back_from_other_code_are_named_by_run():
+    """A case's record names each kept run that other code made (its sources' version), and
+    only those."""
+    from cosim.validations.case_scene import runs_of_other_code
+
+    runs = {"waves": types.SimpleNamespace(summary={"read_back_other_code": "0123456789abcdef"}),
+            "still": types.SimpleNamespace(summary={"read_back_other_code": None}),
+            "potential": types.SimpleNamespace(summary={"cpu_s": 3.0})}
+    assert runs_of_other_code(runs) == {"waves": "0123456789abcdef"}
+    assert runs_of_other_code({}) == {}
+
+
 def test_a_record_costs_its_own_cpu_and_that_of_the_runs_it_read_back():
     from cosim import validation
 

@@ -135,6 +135,12 @@ def kept_runs(case: str, quick: bool) -> Path:
     return root / case / ("quick" if quick else "full")
 
 
+def runs_of_other_code(runs: dict) -> dict:
+    """Of ``runs`` (name -> results of :func:`run_or_resume`), those read back that other code
+    made, name -> that code's version: their figures are that code's, not these sources'."""
+    return {k: r.summary["read_back_other_code"] for k, r in runs.items() if r.summary.get("read_back_other_code")}
+
+
 def run_or_resume(scene, out: Path, progress=None):
     """``(results, earlier_cpu_s)`` of ``scene`` in the folder ``out``: read back if a run of
     it there has finished (a run of another scene there is refused), resumed from its

@@ -175,13 +175,11 @@ def nearfield_radiation(quick: bool) -> dict:
     res, earlier = case_scene.run_or_resume(scene, folder / "forced")
     tare, earlier_held = case_scene.run_or_resume(held_scene(scene), folder / "held")
     m = radiation_metrics(res, scene, tare)
-    # the kept runs read back that other code made: their figures are that code's
-    other = {k: r.summary["read_back_other_code"] for k, r in (("forced", res), ("held", tare))
-             if r.summary.get("read_back_other_code")}
     tol = ((QUICK_REFLECTION_TOL, QUICK_COEFFICIENT_TOL) if quick else (REFLECTION_TOL, COEFFICIENT_TOL))
     return {"metrics": m,
             "tolerances": {"reflection": tol[0], "A33_error": tol[1], "B33_error": tol[1]},
             "stated_tolerances": ({"reflection": REFLECTION_TOL, "A33_error": COEFFICIENT_TOL,
                                    "B33_error": COEFFICIENT_TOL} if quick else None),
             "particles": m["particles"], "steps": m["steps"], "cpu_s": m["cpu_s"],
-            "read_back_cpu_s": round(earlier + earlier_held, 1), "runs_of_other_code": other}
+            "read_back_cpu_s": round(earlier + earlier_held, 1),
+            "runs_of_other_code": case_scene.runs_of_other_code({"forced": res, "held": tare})}

@@ -228,7 +228,5 @@ def wind_turbine_sph(quick: bool) -> dict:
         figures[model] = motion_figures(ref, window, omega)
         earlier += cpu
         runs[f"{model} fluid"] = kept[model] = ref
-    # the kept runs read back that other code made: their figures are that code's
-    other = {k: r.summary["read_back_other_code"] for k, r in kept.items() if r.summary.get("read_back_other_code")}
     return judge(figures, quick) | {"read_back_cpu_s": round(earlier, 1), "series": motion_series(runs),
-                                    "runs_of_other_code": other}
+                                    "runs_of_other_code": case_scene.runs_of_other_code(kept)}
