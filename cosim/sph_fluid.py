@@ -212,6 +212,7 @@ class SPHFluid:
             self._ids[(owner == k) & ~plane] = ps.ids[ps.group == self._g0 + k]
             if self.symmetry:
                 self._ids[(owner == k) & plane] = ps.ids[ps.group == self._plane0 + k]
+        self._ids.flags.writeable = False  # the fluid checks read-only ids once (Fluid.set_particle_motion)
         self._pb, self._owner = pb, owner
         self._elastic_ids, self._elastic_groups = [], []
         g_next = g_e + len(self.elastic)
@@ -220,6 +221,7 @@ class SPHFluid:
             rows = rows[np.argsort(ps.ids[rows])]  # assembly order: the beam's particle order
             ps.group[rows] = g_next + np.arange(len(rows))
             self._elastic_ids.append(ps.ids[rows].copy())
+            self._elastic_ids[-1].flags.writeable = False
             self._elastic_groups.append(g_next + np.arange(len(rows)))
             g_next += len(rows)
         if self.z_surface is not None:

@@ -26,13 +26,14 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+from numba import njit, prange
 
 from errors import InputError
 from fluid.geometry import block
 from fluid.particles import Kind
-from fluid.relaxation import Slab
+from fluid.relaxation import Slab, zone_factor
 from fluid.sea_tables import PointOrbits, VelocityTable, tabulable
-from fluid.waves import wavenumbers
+from fluid.waves import component_factors, point_sums, wavenumbers
 
 FIXED_GROUP, NEAR_END_GROUP, FAR_END_GROUP = 0, 1, 2
 
@@ -71,9 +72,8 @@ class FollowingWall:
         if kept is None or kept[0] is not ref:
             kept = self._kept[id(ref)] = [ref, PointOrbits(self.sea, *_xyz(ref)), None]
         if kept[2] is None or kept[2][0] != t:
-            cols = [0, 2] if ref.shape[1] == 2 else [0, 1, 2]
-            disp, rate, acc = kept[1].motion(t)
-            kept[2] = (t, ref + disp[:, cols], rate[:, cols], acc[:, cols])
+            disp, rate, acc = kept[1].motion(t, ref.shape[1])
+            kept[2] = (t, ref + disp, rate, acc)
         return kept[2]
 
     def __call__(self, t: float, ref):
@@ -101,25 +101,114 @@ def return_current(sea) -> np.ndarray:
     return -q / sea.depth * sea.heading
 
 
-def sea_velocity(sea, drift: bool = True, reach: tuple | None = None):
+def sea_velocity(sea, drift: bool = True, reach: tuple | None = None) -> "SeaVelocity":
     """The relaxation target ``target(pos, t) -> vel`` (``fluid.relaxation.Slab``): the sea's
     velocity at the particles, (N, 2) (x, z) or (N, 3); ``drift``: with the
     :func:`return_current` (faded in with the sea). ``reach``: the range (lo, hi) [m] along
     the heading that the particles asking can reach; a many-component sea is then read
     from a :class:`fluid.sea_tables.VelocityTable` over it (within 1 % of its shortest
-    components' velocity) instead of summed at each particle."""
-    back = return_current(sea) if drift else np.zeros(3)
-    velocity = VelocityTable(sea, *reach).velocity if reach is not None and tabulable(sea) else None
+    components' velocity) instead of summed at each particle (:class:`SeaVelocity`)."""
+    table = VelocityTable(sea, *reach).velocity if reach is not None and tabulable(sea) else None
+    return SeaVelocity(sea, return_current(sea) if drift else None, table)
 
-    def target(pos, t):
-        x, y, z = _xyz(np.asarray(pos, float))
-        v = sea.velocity(x, y, z, t) if velocity is None else velocity(x, y, z, t)
-        if drift:  # the mass transport grows as the square of the faded-in amplitude
-            q = min(max(t / sea.ramp, 0.0), 1.0) if sea.ramp > 0 else 1.0
-            v = v + (0.5 * (1.0 - math.cos(math.pi * q))) ** 2 * back
-        return v[:, [0, 2]] if pos.shape[1] == 2 else v
 
-    return target
+class SeaVelocity:
+    """The sea's velocity as a relaxation target (:func:`sea_velocity`): called as
+    ``target(pos, t) -> vel``, and able to relax a zone itself (:meth:`relax`, the
+    ``fluid.relaxation.Slab`` hook) in one compiled pass where the sea is a linear sum read
+    directly (not tabulated): a zone asks every step, and the calls of the general path cost
+    more than a small box's step. ``back``: the return current [m/s] (3,) or None; ``table``:
+    a ``VelocityTable.velocity`` or None; ``wall``: an absorbing end wall
+    (``fluid.wall_absorption.AbsorbingEnd``) whose correction's velocity along x is added,
+    so that the zone lets pass what the wall absorbs."""
+
+    def __init__(self, sea, back=None, table=None, wall=None):
+        self.sea, self.back, self.table, self.wall = sea, back, table, wall
+
+    def with_wall(self, wall) -> "SeaVelocity":
+        """This target plus the end wall ``wall``'s correction velocity along x."""
+        return SeaVelocity(self.sea, self.back, self.table, wall)
+
+    def _current(self, t: float) -> np.ndarray:
+        """The return current at time ``t`` [s] (3,): the waves' mass transport grows as the
+        square of the faded-in amplitude."""
+        sea = self.sea
+        q = min(max(t / sea.ramp, 0.0), 1.0) if sea.ramp > 0 else 1.0
+        return (0.5 * (1.0 - math.cos(math.pi * q))) ** 2 * self.back
+
+    def __call__(self, pos, t):
+        pos = np.asarray(pos, float)
+        if self.table is None:
+            v = self.sea.velocity_at(pos, t)
+        else:
+            v = self.table(*_xyz(pos), t)
+            v = v[:, [0, 2]] if pos.shape[1] == 2 else v
+        if self.back is not None:
+            v += self._current(t)[[0, 2]] if pos.shape[1] == 2 else self._current(t)
+        if self.wall is not None:
+            v[:, 0] += self.wall.rate
+        return v
+
+    def relax(self, slab, pos, vel, kind, t: float, dt: float, extra) -> bool:
+        """Relax ``slab``'s fluid particles towards this target over ``dt`` [s] at ``t`` [s]
+        as ``Slab.apply`` does (``extra``: a second velocity array alike, or None) in one
+        compiled pass (:func:`_relax_to_sea`); False where it cannot (a tabulated or
+        higher-order sea: the caller takes the general path)."""
+        sea = self.sea
+        if self.table is not None or not sea.linear:
+            return False
+        w, a, ph, k = sea._comp
+        e0, e1 = sea._heading2
+        current = self._current(t) if self.back is not None else np.zeros(3)
+        wall = self.wall.rate if self.wall is not None else 0.0
+        _relax_to_sea(pos, vel, np.zeros((0, vel.shape[1])) if extra is None else extra, kind, slab.axis,
+                      float(slab.inner), float(slab.outer), float(slab.rate), float(dt), float(t), e0, e1,
+                      float(sea.level), float(sea.depth), float(sea.g), w, a, ph, k, float(sea._s_ref),
+                      sea._fade_args(), current, self.back is not None, float(wall), self.wall is not None)
+        return True
+
+
+_U_ONLY = np.array([False, True, True, False, False, False])  # point_sums' rows: the velocity
+
+
+@njit(parallel=True, cache=True)
+def _relax_to_sea(pos, vel, extra, kind, axis, x_in, x_out, rate, dt, t, e0, e1, level, depth, g, w, a, ph, k,
+                  s_ref, fade, current, has_current, wall, has_wall):
+    """``fluid.relaxation.Slab.apply`` towards :class:`SeaVelocity`'s target in one pass: each
+    fluid particle in the slab (``chi > 0``) relaxed over ``dt`` with the factor
+    ``exp(-sigma(chi) dt)``, towards the sea's velocity at it (``fluid.waves.point_sums``,
+    as ``Sea.velocity_at``), plus the return ``current`` (3,) and the ``wall``'s rate along
+    x where given, in that order (the general path's); ``extra`` alike when not empty."""
+    inv = 1.0 / (x_out - x_in)
+    dim = pos.shape[1]
+    three = dim == 3
+    den, ap = component_factors(a, k, depth, g)
+    for i in prange(pos.shape[0]):
+        f = zone_factor(pos, kind, i, axis, x_in, inv, rate, dt)
+        if f < 0.0:
+            continue
+        s = pos[i, 0] * e0 + pos[i, 1] * e1 if three else pos[i, 0] * e0
+        zeta = min(max(pos[i, dim - 1] - level, -depth), 0.0)
+        _, uh, wz, _, _, _, _, _ = point_sums(s, zeta, t, True, w, a, ph, k, depth, den, ap, s_ref, fade, _U_ONLY)
+        vx, vy, vz = uh * e0, uh * e1, wz
+        if has_current:
+            vx += current[0]
+            vy += current[1]
+            vz += current[2]
+        if has_wall:
+            vx += wall
+        _relax_row(vel, i, vx, vy, vz, f, three)
+        if extra.shape[0] > 0:
+            _relax_row(extra, i, vx, vy, vz, f, three)
+
+
+@njit(cache=True)
+def _relax_row(vel, i, vx, vy, vz, f, three):
+    """``vel[i] <- vt + (vel[i] - vt) f``, ``vt`` = (vx, vz) in 2-D, (vx, vy, vz) in 3-D."""
+    vel[i, 0] = vx + (vel[i, 0] - vx) * f
+    if three:
+        vel[i, 1] = vy + (vel[i, 1] - vy) * f
+    vel[i, -1] = vz + (vel[i, -1] - vz) * f
 
 
 @dataclass(frozen=True)
@@ -156,7 +245,7 @@ class NearFieldBox:
         motions (:meth:`absorbing_ends`), whose correction's velocity each end zone adds to
         its target, so that the zone lets pass what the wall absorbs."""
         target = sea_velocity(sea, drift, self.reach(sea))
-        near, far = (target, target) if ends is None else (_with_wall(target, e) for e in ends)
+        near, far = (target, target) if ends is None else (target.with_wall(e) for e in ends)
         out = [Slab(0, self.x0 + self.zone, self.x0, rate, near), Slab(0, self.x1 - self.zone, self.x1, rate, far)]
         if self.y is not None and self.side_zone is not None:
             (y0, y1), w = self.y, self.side_zone
@@ -172,36 +261,31 @@ class NearFieldBox:
         :func:`excursion` and a spacing ``dx`` [m] from its mean place: four gauges across
         the strip (sine-squared weights), in 3-D on lines a kernel support (2 ``h``) apart
         across the box's width, a support from its side walls (a symmetry plane's side: from
-        the plane). Add both to the fluid's ``controllers`` and pass them to :meth:`zones`."""
-        from fluid.wall_absorption import AbsorbingEnd
+        the plane). Add both to the fluid's ``controllers`` and pass them to :meth:`zones`.
+        Both read their strips in one pass a step (a shared
+        :class:`fluid.wall_absorption.StripReader`)."""
+        from fluid.wall_absorption import AbsorbingEnd, StripReader
 
         gap, strip = excursion(sea) + dx, 4.0 * h
         u = (np.arange(4) + 0.5) / 4
         w = np.sin(math.pi * u) ** 2
         w /= w.sum()
-        orbits = FollowingWall(sea)
-        ends = []
+        strips = []  # (side, gauges, weights) of each end
         for side, a in ((-1, self.x0 + gap), (1, self.x1 - gap - strip)):
             xs = a + strip * u
             if self.y is None:
-                ends.append(AbsorbingEnd(sea, orbits, side, xs, w))
+                strips.append((side, xs, w))
                 continue
             lo = self.y[0] + (0.0 if self.mirror else 2.0 * h)
             hi = self.y[1] - 2.0 * h
             n = max(1, int(round((hi - lo) / (2.0 * h))) + 1)
             ys = np.linspace(lo, hi, n) if hi > lo else np.array([0.5 * (self.y[0] + self.y[1])])
-            g = np.array([(x, y) for x in xs for y in ys])
-            ends.append(AbsorbingEnd(sea, orbits, side, g, np.repeat(w, ys.size) / ys.size))
-        return tuple(ends)
-
-
-def _with_wall(target, end):
-    """``target`` plus the absorbing wall ``end``'s correction velocity along x."""
-    def with_wall(pos, t):
-        v = target(pos, t)
-        v[:, 0] += end.rate
-        return v
-    return with_wall
+            strips.append((side, np.array([(x, y) for x in xs for y in ys]), np.repeat(w, ys.size) / ys.size))
+        orbits = FollowingWall(sea)
+        reader = StripReader(sea, np.concatenate([g for _, g, _ in strips]))
+        m = len(strips[0][1])
+        return tuple(AbsorbingEnd(sea, orbits, side, g, wt, reader=reader, rows=slice(i * m, (i + 1) * m))
+                     for i, (side, g, wt) in enumerate(strips))
 
 
 def whole_spacings(x0: float, x1: float, dx: float) -> float:

@@ -211,6 +211,36 @@ def _fraction(z, dh2, zb, vb, kernel, h, ad):
     return c
 
 
+@njit(**_OPTS)
+def _crossing(z_lo, f_lo, z_hi, f_hi, dh2, zb, vb, kernel, h, ad, tol):
+    """The height in ``z_lo .. z_hi`` where the fluid fraction less 0.5 (``f_lo`` >= 0 at
+    ``z_lo``, ``f_hi`` < 0 at ``z_hi``) crosses zero, to ``tol`` [m]: the Illinois variant
+    of false position (Dowell & Jarratt 1971, BIT 11), whose bracket closes from both
+    sides; the fraction is smooth, so a handful of evaluations replace bisection's forty."""
+    side = 0
+    z = 0.5 * (z_lo + z_hi)
+    for _ in range(100):
+        z_new = (z_lo * f_hi - z_hi * f_lo) / (f_hi - f_lo)
+        if not z_lo <= z_new <= z_hi:  # round-off at a flat crossing: bisect
+            z_new = 0.5 * (z_lo + z_hi)
+        done = abs(z_new - z) < tol or z_hi - z_lo < tol
+        z = z_new
+        if done:
+            break
+        f = _fraction(z, dh2, zb, vb, kernel, h, ad) - 0.5
+        if f >= 0.0:
+            z_lo, f_lo = z, f
+            if side == -1:
+                f_hi *= 0.5
+            side = -1
+        else:
+            z_hi, f_hi = z, f
+            if side == 1:
+                f_lo *= 0.5
+            side = 1
+    return z
+
+
 @njit(**_OPTS)  # serial: a handful of gauges
 def _surface(gauges, pos, kind, mass, rho, start, lo, inv_cell, nx, ny, nz, reach, kernel, h, ad,
              step, out):
@@ -265,22 +295,18 @@ def _surface(gauges, pos, kind, mass, rho, start, lo, inv_cell, nx, ny, nz, reac
                         vb[n] = mass[b] / rho[b]
                         n += 1
         # march down from above every candidate's support (fraction 0) in steps of
-        # ``step`` until the fraction reaches 0.5, then bisect the last step
+        # ``step`` until the fraction reaches 0.5, then solve for the crossing in that step
         z_hi = zb.max() + 2.0 * h
         z_end = zb.min() - 2.0 * h
+        f_hi = -0.5
         out[a] = dry
         while z_hi > z_end:
             z_lo = z_hi - step
-            if _fraction(z_lo, dh2, zb, vb, kernel, h, ad) >= 0.5:
-                for _ in range(40):
-                    zm = 0.5 * (z_lo + z_hi)
-                    if _fraction(zm, dh2, zb, vb, kernel, h, ad) >= 0.5:
-                        z_lo = zm
-                    else:
-                        z_hi = zm
-                out[a] = 0.5 * (z_lo + z_hi)
+            f_lo = _fraction(z_lo, dh2, zb, vb, kernel, h, ad) - 0.5
+            if f_lo >= 0.0:
+                out[a] = _crossing(z_lo, f_lo, z_hi, f_hi, dh2, zb, vb, kernel, h, ad, 1e-9 * step)
                 break
-            z_hi = z_lo
+            z_hi, f_hi = z_lo, f_lo
 
 
 def _gauges(gauges, dim: int, what: str) -> np.ndarray:
@@ -307,7 +333,7 @@ def surface_elevation(fluid, gauges) -> np.ndarray:
     the kernel). A dry gauge (a film too thin for the fraction to reach 0.5, or no fluid
     within 2h of the line) reads the bed's surface, half a spacing above the highest wall or
     body particle within 0.75 dx of the line (a water depth of zero); NaN where there is
-    neither water nor bed under it. Located to dx/4, then bisected."""
+    neither water nor bed under it. Located to dx/4, then solved to 1e-9 of that."""
     c = fluid.config
     g = _gauges(gauges, c.dim, "surface_elevation")
     grid, start = _cells(fluid)

@@ -44,6 +44,19 @@ def _weight(chi):
     return (math.exp(chi ** 3.5) - 1.0) / _E1
 
 
+@njit(cache=True)
+def zone_factor(pos, kind, i, axis, x_in, inv, rate, dt):
+    """Row ``i``'s factor ``exp(-sigma(chi) dt)`` over a step ``dt`` [s] in the slab from
+    ``x_in`` (``inv`` = 1 / (x_out - x_in)) along ``axis`` (chi clipped at 1), or -1 where
+    the row is not a fluid particle inside it (``chi > 0``)."""
+    if kind[i] != 0:
+        return -1.0
+    chi = (pos[i, axis] - x_in) * inv
+    if chi <= 0.0:
+        return -1.0
+    return math.exp(-rate * _weight(min(chi, 1.0)) * dt)
+
+
 @njit(parallel=True, cache=True)
 def _damp_to_rest(pos, vel, kind, axis, x_in, x_out, rate, dt, extra):
     """Multiply the velocity of fluid particles in the slab by exp(-sigma dt), and the rows
@@ -52,12 +65,9 @@ def _damp_to_rest(pos, vel, kind, axis, x_in, x_out, rate, dt, extra):
     dim = vel.shape[1]
     use_extra = extra.shape[0] > 0
     for i in prange(pos.shape[0]):
-        if kind[i] != 0:
+        f = zone_factor(pos, kind, i, axis, x_in, inv, rate, dt)
+        if f < 0.0:
             continue
-        chi = (pos[i, axis] - x_in) * inv
-        if chi <= 0.0:
-            continue
-        f = math.exp(-rate * _weight(min(chi, 1.0)) * dt)
         for k in range(dim):
             vel[i, k] *= f
             if use_extra:
@@ -77,10 +87,10 @@ def _zone_rows(pos, kind, axis, x_in, x_out, rate, dt):
     f = np.empty(n)
     n = 0
     for i in range(pos.shape[0]):
-        chi = (pos[i, axis] - x_in) * inv
-        if kind[i] == 0 and chi > 0.0:
+        fi = zone_factor(pos, kind, i, axis, x_in, inv, rate, dt)
+        if fi >= 0.0:
             rows[n] = i
-            f[n] = math.exp(-rate * _weight(min(chi, 1.0)) * dt)
+            f[n] = fi
             n += 1
     return rows, f
 
@@ -99,7 +109,9 @@ class Slab:
     """A relaxation zone between the planes ``coordinate[axis] = inner`` (weight 0) and
     ``= outer`` (weight 1; beyond it the weight stays 1), ``outer`` on either side of
     ``inner``; ``rate`` [1/s] the relaxation rate at the outer edge; ``target`` None (rest)
-    or ``target(pos, t) -> vel``."""
+    or ``target(pos, t) -> vel``. A target that can relax the zone itself in one compiled
+    pass has ``target.relax(slab, pos, vel, kind, t, dt, extra) -> bool``, True when it
+    did (``fluid.nearfield.SeaVelocity``)."""
 
     axis: int
     inner: float
@@ -141,6 +153,9 @@ class Slab:
             e = extra if extra is not None else np.zeros((0, vel.shape[1]))
             _damp_to_rest(pos, vel, kind, self.axis, float(self.inner), float(self.outer), float(self.rate),
                           float(dt), e)
+            return
+        relax = getattr(self.target, "relax", None)
+        if relax is not None and relax(self, pos, vel, kind, t, dt, extra):
             return
         rows, f = _zone_rows(pos, kind, self.axis, float(self.inner), float(self.outer), float(self.rate), float(dt))
         if rows.size == 0:

@@ -36,7 +36,7 @@ import math
 import numpy as np
 from numba import njit, prange
 
-from fluid.waves import Sea, depth_factors, wavenumbers
+from fluid.waves import depth_factors, wavenumbers
 
 #: table nodes per wavelength of the sea's shortest period (linear interpolation error
 #: (2π/24)²/8 = 0.9 % of those components' velocity)
@@ -50,8 +50,7 @@ MIN_COMPONENTS = 8
 def tabulable(sea) -> bool:
     """Whether ``sea`` is a linear superposition of at least :data:`MIN_COMPONENTS` waves
     (no higher-order terms), which the tables here evaluate."""
-    linear = type(sea)._add_higher_order is Sea._add_higher_order
-    return linear and len(sea._comp.omega) >= MIN_COMPONENTS
+    return sea.linear and len(sea._comp.omega) >= MIN_COMPONENTS
 
 
 def _time_factors(sea, t: float) -> tuple[np.ndarray, np.ndarray]:
@@ -73,7 +72,8 @@ def _orbit_motion(chc, chs, shc, shs, a, w, cb, sb, r, dr, ddr, ex, ey, out):
     sh cos θ, u = ∂ξ/∂t (Σ a_j ω_j (ch cos θ, sh sin θ)) and ∂u/∂t (Σ a_j ω_j² (ch sin θ,
     −sh cos θ)), faded with the point's ``r``, ``r'``, ``r''`` (``r ξ``, ``r u + r' ξ``, ``r
     ∂u/∂t + 2 r' u + r'' ξ``) into ``out`` (3, N, 3): displacement, rate, second rate, the
-    horizontal part along the heading (``ex``, ``ey``)."""
+    horizontal part along the heading (``ex``, ``ey``); ``out`` (3, N, 2): their (x, z)
+    columns."""
     for p in range(chc.shape[0]):
         o0 = o1 = o2 = o3 = o4 = o5 = 0.0
         for j in range(chc.shape[1]):
@@ -92,8 +92,9 @@ def _orbit_motion(chc, chs, shc, shs, a, w, cb, sb, r, dr, ddr, ex, ey, out):
         for q in range(3):
             h, v = parts[q]
             out[q, p, 0] = h * ex
-            out[q, p, 1] = h * ey
-            out[q, p, 2] = v
+            if out.shape[2] == 3:
+                out[q, p, 1] = h * ey
+            out[q, p, out.shape[2] - 1] = v
 
 
 class PointOrbits:
@@ -111,17 +112,17 @@ class PointOrbits:
         self._f = tuple(np.ascontiguousarray(f) for f in (ch * ca, ch * sa, sh * ca, sh * sa))
         self._a, self._w = a, w
 
-    def motion(self, t: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """(displacement [m], its rate [m/s], its second rate [m/s^2]), each (N, 3), at time
-        ``t`` [s], the fade-in r(t) included: ``r ξ``, ``r u + r' ξ``, ``r ∂u/∂t + 2 r' u +
-        r'' ξ``, with ξ = (−Σ a ch sin θ, Σ a sh cos θ) the linear displacement, u = ∂ξ/∂t
-        its velocity (θ = α − ω t + phase)."""
+    def motion(self, t: float, dim: int = 3) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(displacement [m], its rate [m/s], its second rate [m/s^2]), each (N, 3) (``dim``
+        2: their (x, z) columns, (N, 2)), at time ``t`` [s], the fade-in r(t) included: ``r
+        ξ``, ``r u + r' ξ``, ``r ∂u/∂t + 2 r' u + r'' ξ``, with ξ = (−Σ a ch sin θ, Σ a sh
+        cos θ) the linear displacement, u = ∂ξ/∂t its velocity (θ = α − ω t + phase)."""
         sea = self.sea
         cb, sb = _time_factors(sea, t)
         r, dr, ddr = sea._fade(self.s, np.full_like(self.s, float(t)), second=True)
-        e = sea.heading
-        out = np.empty((3, len(self.s), 3))
-        _orbit_motion(*self._f, self._a, self._w, cb, sb, r, dr, ddr, float(e[0]), float(e[1]), out)
+        e0, e1 = sea._heading2
+        out = np.empty((3, len(self.s), dim))
+        _orbit_motion(*self._f, self._a, self._w, cb, sb, r, dr, ddr, e0, e1, out)
         return out[0], out[1], out[2]
 
     def displacement(self, t: float) -> tuple[np.ndarray, np.ndarray]:

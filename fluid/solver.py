@@ -230,6 +230,8 @@ class Fluid:
         self.name = config.name
         self.ps = particles.copy()
         self._id_rows = None  # Fluid._rows_of's table, made after each sort
+        self._group_kept: dict = {}  # Fluid._group_rows' answers, per group, while _id_rows stays
+        self._movable_ids: dict = {}  # read-only id arrays set_particle_motion checked, by id()
         self._id_count = int(self.ps.ids.max()) + 1
         self.t = math.nan
         self.counters = _Counters()
@@ -312,9 +314,16 @@ class Fluid:
         finally:
             numba.set_num_threads(saved)
 
-    def initialize(self, t0: float) -> None:
+    def _on_own_threads(self, work, *args):
+        """``work(*args)`` on this fluid's numba threads (:meth:`_own_threads`), switched only
+        where the caller's differ: the switch costs more than a small fluid's step."""
+        if numba.get_num_threads() == self._threads():
+            return work(*args)
         with self._own_threads():
-            self._initialize(t0)
+            return work(*args)
+
+    def initialize(self, t0: float) -> None:
+        self._on_own_threads(self._initialize, t0)
 
     def _initialize(self, t0: float) -> None:
         c = self.config
@@ -360,8 +369,7 @@ class Fluid:
         return self.counters.limiter
 
     def advance(self, t: float, dt: float) -> None:
-        with self._own_threads():
-            self._advance(t, dt)
+        self._on_own_threads(self._advance, t, dt)
 
     def _advance(self, t: float, dt: float) -> None:
         if self._limit is None:
@@ -595,10 +603,16 @@ class Fluid:
 
     def _group_rows(self, group: int, ids: np.ndarray):
         """(rows of the prescribed ``group``'s particles ``ids`` (in id order) still present,
-        the selection of those among ``ids``: particles may have left the domain)."""
+        the selection of those among ``ids``: particles may have left the domain), kept
+        until the next sort (each sort makes a new :meth:`_rows_of` table)."""
+        kept = self._group_kept.get(group)
+        if kept is not None and kept[0] is self._id_rows and kept[1] is ids:
+            return kept[2]
         rows = self._rows_of(ids)
         keep = rows >= 0
-        return (rows, slice(None)) if keep.all() else (rows[keep], keep)
+        out = (rows, slice(None)) if keep.all() else (rows[keep], keep)
+        self._group_kept[group] = (self._id_rows, ids, out)
+        return out
 
     def _place_prescribed(self, t: float) -> None:
         """Place every prescribed group at time ``t`` [s]."""
@@ -658,12 +672,19 @@ class Fluid:
         new placement first (:meth:`refresh_rates`)."""
         ps = self.ps
         ids = np.asarray(ids, np.int64)
-        inside = (ids >= 0) & (ids < self._id_count)
-        idx = self._rows_of(np.where(inside, ids, 0))
-        if not inside.all() or (idx < 0).any():
-            raise InputError("fluid: set_particle_motion got ids of particles that do not exist (removed?)")
-        if (ps.kind[idx] == Kind.FLUID.value).any() or (ps.kind[idx] == Kind.FIXED_WALL.value).any():
-            raise InputError("fluid: set_particle_motion moves MOVING_WALL or BODY particles only")
+        if self._movable_ids.get(id(ids)) is ids:  # read-only ids checked before (a body's, every step)
+            idx = self._rows_of(ids)
+            if (idx < 0).any():
+                raise InputError("fluid: set_particle_motion got ids of particles that do not exist (removed?)")
+        else:
+            inside = (ids >= 0) & (ids < self._id_count)
+            idx = self._rows_of(np.where(inside, ids, 0))
+            if not inside.all() or (idx < 0).any():
+                raise InputError("fluid: set_particle_motion got ids of particles that do not exist (removed?)")
+            if (ps.kind[idx] == Kind.FLUID.value).any() or (ps.kind[idx] == Kind.FIXED_WALL.value).any():
+                raise InputError("fluid: set_particle_motion moves MOVING_WALL or BODY particles only")
+            if not ids.flags.writeable:  # held, so its id stays its own; a particle's kind never changes
+                self._movable_ids[id(ids)] = ids
         pos, vel = np.asarray(pos, np.float64), np.asarray(vel, np.float64)
         if pos.shape != (len(ids), self.config.dim) or vel.shape != pos.shape:
             raise InputError(f"fluid: positions and velocities must have shape ({len(ids)}, {self.config.dim})")

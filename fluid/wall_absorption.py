@@ -50,6 +50,40 @@ from fluid.probes import surface_elevation
 from fluid.waves import wavenumbers
 
 
+class StripReader:
+    """The free surface (:func:`fluid.probes.surface_elevation`) and the incident sea's
+    elevation at the gauges of every absorbing end wall of a box, each read in one pass
+    once a step (both ends ask at the end of each step; a pass each would cost twice the
+    calls). ``gauges``: 2-D x positions (M,) [m], 3-D (x, y) positions (M, 2) [m]."""
+
+    def __init__(self, sea, gauges):
+        g = np.asarray(gauges, float)
+        self.sea, self.gauges = sea, g
+        gx, gy = (g, np.zeros(g.shape[0])) if g.ndim == 1 else (g[:, 0], g[:, 1])
+        self._gx, self._gy = np.ascontiguousarray(gx), np.ascontiguousarray(gy)
+        self._surface = (None, None)  # (the fluid's cell list it was read on, the heights)
+        self._sea = (math.nan, None)  # (t, the elevations)
+
+    def surface(self, fluid) -> np.ndarray:
+        """The free surface's height [m] at every gauge, kept while the fluid's particles stay
+        as sorted (each sort makes a new cell list)."""
+        fluid.refresh_rates()
+        cells, eta = self._surface
+        if cells is not fluid._start:  # same package: the cell list the solver keeps sorted
+            eta = surface_elevation(fluid, self.gauges)
+            self._surface = (fluid._start, eta)
+        return eta
+
+    def sea_elevation(self, t: float) -> np.ndarray:
+        """The incident sea's elevation [m] above its still level at every gauge at time
+        ``t`` [s]."""
+        t_kept, eta = self._sea
+        if t_kept != t:
+            eta = self.sea.elevation(self._gx, self._gy, float(t))
+            self._sea = (t, eta)
+        return eta
+
+
 class AbsorbingEnd:
     """The motion ``motion(t, ref) -> (pos, vel)`` of one end wall of a near field
     (``Fluid.prescribe_motion``): the incident sea's orbits (``orbits``, a
@@ -60,10 +94,12 @@ class AbsorbingEnd:
     ``side``: +1 for the far end (water at x below it), -1 for the near end; ``gauges``:
     where the elevation is read, 2-D x positions (M,) [m], 3-D (x, y) positions (M, 2) [m],
     and ``weights`` (M,) their shares of the reading (summing to 1); ``tau``, ``tau_fast``
-    [s]: the filters' time constants (default 2 and 1/40 peak periods)."""
+    [s]: the filters' time constants (default 2 and 1/40 peak periods); ``reader``: a
+    :class:`StripReader` shared with the box's other end wall and ``rows``, this wall's
+    gauges among its (default: a reader of this wall's gauges alone)."""
 
     def __init__(self, sea, orbits, side: int, gauges, weights, tau: float | None = None,
-                 tau_fast: float | None = None):
+                 tau_fast: float | None = None, reader: StripReader | None = None, rows=None):
         if side not in (-1, 1):
             raise InputError(f"absorbing end wall: side = {side!r}; give +1 (far end) or -1 (near end)")
         g = np.asarray(gauges, float)
@@ -73,8 +109,12 @@ class AbsorbingEnd:
                              f"{w.sum():.6g}; give one weight per gauge, summing to 1")
         self.sea, self.orbits, self.side = sea, orbits, side
         self.gauges, self.weights = g, w
-        gx, gy = (g, np.zeros(g.shape[0])) if g.ndim == 1 else (g[:, 0], g[:, 1])
-        self._gx, self._gy = np.ascontiguousarray(gx), np.ascontiguousarray(gy)
+        if reader is None:
+            reader, rows = StripReader(sea, g), slice(None)
+        if not np.array_equal(reader.gauges[rows], g):
+            raise InputError("absorbing end wall: the shared reader's rows are not this wall's gauges; give the "
+                             "rows of its gauges among the reader's")
+        self.reader, self.rows = reader, rows
         omega = 2.0 * math.pi / sea.peak_period
         k = float(wavenumbers(omega, sea.depth, sea.g))
         self.gain = omega / (k * sea.depth)
@@ -117,13 +157,12 @@ class AbsorbingEnd:
     def elevation(self, fluid) -> float:
         """The free surface's elevation [m] over the strip above the sea's still level
         (module docstring); ``fluid``: the ``fluid.solver.Fluid``."""
-        return float(self.weights @ surface_elevation(fluid, self.gauges)) - self.sea.level
+        return float(self.weights @ self.reader.surface(fluid)[self.rows]) - self.sea.level
 
     def beyond_sea(self, fluid, t: float) -> float:
         """The elevation [m] over the strip beyond the incident sea's at time ``t`` [s]:
         what comes back to the wall (and the fluid's own offset)."""
-        n = self._gx.size
-        return self.elevation(fluid) - float(self.weights @ self.sea.elevation(self._gx, self._gy, np.full(n, float(t))))
+        return self.elevation(fluid) - float(self.weights @ self.reader.sea_elevation(t)[self.rows])
 
     def update(self, fluid, t: float, dt: float) -> None:
         """Read the elevation in front of the wall at the end of a step (time ``t`` [s], the

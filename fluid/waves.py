@@ -79,49 +79,67 @@ def _linear_sums(s, zeta, t, w, a, ph, k, depth, g, s_ref, fade, want, out):
     ``s`` [m] along the heading, ``zeta`` [m] below the still water (empty: the elevation
     alone) and times ``t`` [s], faded in: rows :data:`ETA` ... :data:`P` of ``out`` (6, n)
     where ``want`` (6 booleans) asks for them, and ``r``, ``r'`` in ``out[6:8]``; ``fade``
-    = (has_source, source, c_front, ramp). Per component, θ = k (s − s_ref) − ω t + phase
-    (Dean & Dalrymple 1991, Table 4.1)::
+    = (has_source, source, c_front, ramp), ``g`` [m/s^2]; each point's sums are
+    :func:`point_sums`'."""
+    n = s.shape[0]
+    have_z = zeta.shape[0] > 0
+    den, ap = component_factors(a, k, depth, g)
+    for i in prange(n):
+        z = zeta[i] if have_z else 0.0
+        (out[ETA, i], out[UH, i], out[W, i], out[P, i], out[AH, i], out[AW, i], out[6, i],
+         out[7, i]) = point_sums(s[i], z, t[i], have_z, w, a, ph, k, depth, den, ap, s_ref, fade, want)
+
+
+@njit(cache=True)
+def component_factors(a, k, depth, g):
+    """Each component's ``den = 1 − e^-2kd`` and ``ap = g a / (1 + e^-2kd)`` (:func:`point_sums`)."""
+    m = k.shape[0]
+    den, ap = np.empty(m), np.empty(m)
+    for j in range(m):
+        den[j] = -math.expm1(-2.0 * k[j] * depth)
+        ap[j] = g * a[j] / (1.0 + math.exp(-2.0 * k[j] * depth))
+    return den, ap
+
+
+@njit(cache=True)
+def point_sums(s, zeta, t, have_z, w, a, ph, k, depth, den, ap, s_ref, fade, want):
+    """The linear superposition at one point ``s`` [m] along the heading, ``zeta`` [m] below
+    the still water (``have_z`` False: the elevation alone), time ``t`` [s], faded in:
+    (η, u_h, w, p/ρ, ∂u_h/∂t, ∂w/∂t, r, r'), each where ``want`` (6 booleans, the rows
+    :data:`ETA` ... :data:`P`) asks for it (else 0); ``den``, ``ap`` from
+    :func:`component_factors`. Per component, θ = k (s − s_ref) − ω t + phase (Dean &
+    Dalrymple 1991, Table 4.1)::
 
         η = a cos θ,  u_h = a ω ch cos θ,  w = a ω sh sin θ,
         ∂u_h/∂t = a ω² ch sin θ,  ∂w/∂t = −a ω² sh cos θ,  p/ρ = g a cosh k(ζ+d)/cosh kd cos θ
 
     with ``ch, sh = cosh, sinh k(ζ+d) / sinh kd`` as ``(e1 ± e2) / den``, ``den = 1 −
     e^-2kd``, ``e1 = exp(kζ)``, ``e2 = exp(−k(ζ + 2d))`` (both ≤ 1: no overflow in deep
-    water), and ``ap = g a / (1 + e^-2kd)`` (so that ``p/ρ = ap (e1 + e2) cos θ``), ``g``
-    [m/s^2]; each times r, and the accelerations plus r' times the velocity (∂/∂t of the
-    faded field)."""
-    n, m = s.shape[0], w.shape[0]
-    have_z = zeta.shape[0] > 0
+    water), and ``ap = g a / (1 + e^-2kd)`` (so that ``p/ρ = ap (e1 + e2) cos θ``); each
+    times r, and the accelerations plus r' times the velocity (∂/∂t of the faded field)."""
     has_source, source, c_front, ramp = fade
-    den, ap = np.empty(m), np.empty(m)
-    for j in range(m):
-        den[j] = -math.expm1(-2.0 * k[j] * depth)
-        ap[j] = g * a[j] / (1.0 + math.exp(-2.0 * k[j] * depth))
-    for i in prange(n):
-        r, dr, _ = _fade_at(s[i], t[i], has_source, source, c_front, ramp)
-        eta = uh = wz = ah = aw = p = 0.0
-        for j in range(m):
-            th = k[j] * (s[i] - s_ref) - w[j] * t[i] + ph[j]
-            c = math.cos(th)
-            eta += a[j] * c
-            if not have_z:
-                continue
-            kj = k[j]
-            e1 = math.exp(kj * zeta[i])
-            e2 = math.exp(-kj * zeta[i] - 2.0 * kj * depth)
-            if want[P]:
-                p += ap[j] * (e1 + e2) * c
-            if want[UH] or want[AH]:
-                sn = math.sin(th)
-                ch, sh = (e1 + e2) / den[j], (e1 - e2) / den[j]
-                awj = a[j] * w[j]
-                uh += awj * ch * c
-                wz += awj * sh * sn
-                ah += awj * w[j] * ch * sn
-                aw -= awj * w[j] * sh * c
-        out[ETA, i], out[UH, i], out[W, i], out[P, i] = r * eta, r * uh, r * wz, r * p
-        out[AH, i], out[AW, i] = r * ah + dr * uh, r * aw + dr * wz
-        out[6, i], out[7, i] = r, dr
+    r, dr, _ = _fade_at(s, t, has_source, source, c_front, ramp)
+    eta = uh = wz = ah = aw = p = 0.0
+    for j in range(w.shape[0]):
+        th = k[j] * (s - s_ref) - w[j] * t + ph[j]
+        c = math.cos(th)
+        eta += a[j] * c
+        if not have_z:
+            continue
+        kj = k[j]
+        e1 = math.exp(kj * zeta)
+        e2 = math.exp(-kj * zeta - 2.0 * kj * depth)
+        if want[P]:
+            p += ap[j] * (e1 + e2) * c
+        if want[UH] or want[AH]:
+            sn = math.sin(th)
+            ch, sh = (e1 + e2) / den[j], (e1 - e2) / den[j]
+            awj = a[j] * w[j]
+            uh += awj * ch * c
+            wz += awj * sh * sn
+            ah += awj * w[j] * ch * sn
+            aw -= awj * w[j] * sh * c
+    return r * eta, r * uh, r * wz, r * p, r * ah + dr * uh, r * aw + dr * wz, r, dr
 
 
 #: :func:`_linear_sums` on one thread, and over the threads for many points × components
@@ -382,8 +400,7 @@ class Sea:
 
     def _evaluate(self, x, y, z, t, want) -> dict:
         """The quantities in ``want`` ("eta", "u" (uh, w), "a" (ah, aw), "p" (p/ρ)) in the
-        broadcast shape of the inputs (:func:`_linear_sums`, then the kind's higher-order
-        terms)."""
+        broadcast shape of the inputs (:meth:`_sums`)."""
         args = [np.asarray(v, float) for v in ([x, y, t] if z is None else [x, y, z, t])]
         if args[-1].ndim == 0 and all(a.ndim == 1 and a.shape == args[0].shape for a in args[:-1]):
             shape, flat = args[0].shape, args[:-1] + [np.full(args[0].shape, float(args[-1]))]  # points, one time
@@ -391,26 +408,77 @@ class Sea:
             arrays = np.broadcast_arrays(*args)
             shape, flat = arrays[0].shape, [np.ascontiguousarray(a.ravel()) for a in arrays]
         xs, ys, ts = flat[0], flat[1], flat[-1]
-        e = self.heading
-        s = xs * e[0] + ys * e[1]
+        e0, e1 = self._heading2
+        s = xs * e0 + ys * e1
         zeta = np.empty(0) if z is None else np.clip(flat[2] - self.level, -self.depth, 0.0)
-        flags = np.zeros(6, np.bool_)
-        for key, rows in (("eta", (ETA,)), ("u", (UH, W)), ("a", (AH, AW)), ("p", (P,))):
-            if key in want:
-                flags[list(rows)] = True
+        flags = _flags(want)
+        sums = self._sums(s, zeta, ts, flags)
+        return {name: sums[row].reshape(shape) for name, row in _ROWS.items() if flags[row]}
+
+    def velocity_at(self, pos: np.ndarray, t: float) -> np.ndarray:
+        """The water velocity [m/s] at the points ``pos`` (M, 2) (x, z; y = 0) or (M, 3)
+        [m] at time ``t`` [s], in their columns: :meth:`velocity` for an array of particle
+        positions, without its broadcasting (a relaxation zone asks every step)."""
+        pos = np.asarray(pos, float)
+        n, three = pos.shape[0], pos.shape[1] == 3
+        e0, e1 = self._heading2
+        s = pos[:, 0] * e0 + pos[:, 1] * e1 if three else pos[:, 0] * e0
+        zeta = np.clip(pos[:, -1] - self.level, -self.depth, 0.0)
+        flags = _flags(("u",))
+        sums = self._sums(s, zeta, np.full(n, float(t)), flags)
+        out = np.empty((n, pos.shape[1]))
+        np.multiply(sums[UH], e0, out=out[:, 0])
+        if three:
+            np.multiply(sums[UH], e1, out=out[:, 1])
+        out[:, -1] = sums[W]
+        return out
+
+    def _sums(self, s, zeta, ts, flags) -> np.ndarray:
+        """:func:`_linear_sums` at the points ``s`` [m] along the heading, ``zeta`` [m]
+        below the still water (empty: the elevation alone) and times ``ts`` [s] (1-D, of
+        one length), then the kind's higher-order terms: the rows of (8, n)."""
         sums = np.empty((8, s.shape[0]))
         w, a, ph, k = self._comp
         kernel = _linear_sums_parallel if s.shape[0] * w.shape[0] > _PARALLEL_TERMS else _linear_sums_serial
         kernel(s, zeta, ts, w, a, ph, k, float(self.depth), float(self.g), float(self._s_ref), self._fade_args(), flags,
                sums)
         self._add_higher_order(sums, s, zeta, ts, flags)
-        names = {"eta": ETA, "uh": UH, "w": W, "ah": AH, "aw": AW, "p": P}
-        return {name: sums[row].reshape(shape) for name, row in names.items() if flags[row]}
+        return sums
+
+    @property
+    def _heading2(self) -> tuple[float, float]:
+        """(cos β, sin β) of the heading, as floats."""
+        b = math.radians(self.direction)
+        return math.cos(b), math.sin(b)
+
+    @property
+    def linear(self) -> bool:
+        """Whether the sea is the linear superposition of its components alone (no
+        higher-order terms)."""
+        return type(self)._add_higher_order is Sea._add_higher_order
 
     def _add_higher_order(self, sums, s, zeta, t, want) -> None:
         """Add the terms beyond linear superposition to the rows of ``sums`` (those of
         :func:`_linear_sums`, the fade-in in rows 6-7) that ``want`` asks for; ``zeta``
         empty for the elevation alone. None for a linear sea."""
+
+
+#: the rows of :func:`_linear_sums`' output by name
+_ROWS = {"eta": ETA, "uh": UH, "w": W, "ah": AH, "aw": AW, "p": P}
+_WANTS = {"eta": (ETA,), "u": (UH, W), "a": (AH, AW), "p": (P,)}
+_FLAGS: dict = {}
+
+
+def _flags(want: tuple) -> np.ndarray:
+    """The rows of :func:`_linear_sums` that ``want`` (of "eta", "u", "a", "p") asks for, as
+    its 6 booleans (kept per ``want``: the sums are asked for every step)."""
+    f = _FLAGS.get(want)
+    if f is None:
+        f = np.zeros(6, np.bool_)
+        for key in want:
+            f[list(_WANTS[key])] = True
+        _FLAGS[want] = f
+    return f
 
 
 def _world(along: np.ndarray, up: np.ndarray, heading: np.ndarray) -> np.ndarray:
@@ -564,6 +632,10 @@ class RegularWave(Sea):
     @property
     def shortest_period(self) -> float:
         return self.period / (2.0 if self.theory == "stokes2" else 1.0)
+
+    @property
+    def linear(self) -> bool:
+        return self.theory != "stokes2"
 
     def _add_higher_order(self, sums, s, zeta, t, want) -> None:
         if self.theory != "stokes2":

@@ -345,16 +345,39 @@ def _solve_batch_serial(X, h, L, w, EA, H, V, td, state):
 _PARALLEL_MIN = 512
 
 
+_TAUT_CODE = int(LineState.TAUT)
+
+
 @nb.njit(**_JIT)
-def solve_packed(P, out):
-    """The law for lines packed as rows ``P[i] = (X, h, L, w, EA)`` (float64,
-    ``EA = inf`` for inextensible), written to ``out[i] = (H, V, touchdown,
-    state)``. No checks: for callers that validated their lines once (a mooring
-    system inside a coupling loop), where the checks and array handling of
-    :func:`solve` would cost more than the solve."""
-    for i in range(P.shape[0]):
-        H, V, td, state = _solve_dim(P[i, 0], P[i, 1], P[i, 2], P[i, 3], P[i, 4])
-        out[i, 0], out[i, 1], out[i, 2], out[i, 3] = H, V, td, state
+def solve_fairleads(pos, anchors, L, w, EA, capped_slack, out, forces):
+    """The law for fairleads at ``pos`` (r n, dim) [m] of ``n`` lines anchored at
+    ``anchors`` (n, dim) [m] (``pos`` may stack r sets of the lines' fairleads; the seabed
+    the horizontal plane through each anchor): ``out[i] = (H, V, touchdown, state)`` and
+    the force on the fairlead ``forces[i]`` (dim) [N], ``H`` along the fairlead→anchor
+    direction, ``V`` downwards. ``capped_slack`` > 0: an inextensible line whose chord is
+    beyond ``L (1 - capped_slack)`` is solved where its slack is that, its state TAUT (a
+    tethered line: its length constraint carries the rest); 0: none. No checks: for a
+    mooring inside a coupling loop that validated its lines and fairleads once."""
+    n, dim = anchors.shape[0], pos.shape[1]
+    for i in range(pos.shape[0]):
+        j = i % n
+        X2 = 0.0
+        for k in range(dim - 1):
+            X2 += (pos[i, k] - anchors[j, k]) ** 2
+        X = math.sqrt(X2)
+        h = pos[i, dim - 1] - anchors[j, dim - 1]
+        scale = 1.0
+        capped = False
+        if capped_slack > 0.0 and math.isinf(EA[j]):
+            chord = math.hypot(X, h)
+            if chord > L[j] * (1.0 - capped_slack):
+                capped = True
+                scale = L[j] * (1.0 - capped_slack) / chord
+        H, V, td, state = _solve_dim(X * scale, h * scale, L[j], w[j], EA[j])
+        out[i, 0], out[i, 1], out[i, 2], out[i, 3] = H, V, td, _TAUT_CODE if capped else state
+        for k in range(dim - 1):
+            forces[i, k] = -H * ((pos[i, k] - anchors[j, k]) / X) if X > 0.0 else -H * 0.0
+        forces[i, dim - 1] = -V
 
 
 # ---------------------------------------------------------------------------
@@ -514,7 +537,7 @@ def shape(X: float, h: float, L: float, w: float, EA: float | None = None, n: in
 
 
 __all__ = [
-    "solve_packed",
+    "solve_fairleads",
     "FULLY_LIFTED",
     "PARTLY_LIFTED",
     "RESTING",

@@ -16,7 +16,7 @@ import math
 import numpy as np
 
 from errors import InputError, TautLineError
-from moorings.catenary import TAUT, LineSolution, solve_packed
+from moorings.catenary import LineSolution, solve_fairleads
 from moorings.fairlead_stiffness import FairleadStiffness, by_differences
 from moorings.line import MooringLine, named_lines, per_line
 from moorings.line_events import LineStateLog
@@ -67,9 +67,7 @@ class CatenaryMooring:
         self._L = np.array([ln.length for ln in self.lines])
         self._w = np.array([ln.weight for ln in self.lines])
         self._EA = np.array([math.inf if ln.inextensible else ln.EA for ln in self.lines])
-        # rows (X, h, L, w, EA) for catenary.solve_packed: the lines were checked above
-        self._packed = np.column_stack([np.zeros(self.n_lines), np.zeros(self.n_lines), self._L, self._w, self._EA])
-        self._out = np.empty((self.n_lines, 4))
+        self._inextensible = np.isinf(self._EA)
         self.t = 0.0
         self._pos: np.ndarray | None = None
         self.solution: LineSolution | None = None  #: per-line H, V, touchdown, state
@@ -118,8 +116,7 @@ class CatenaryMooring:
         """Fairlead positions [m], ``(n_lines, dim)``, world frame; velocities are
         ignored (quasi-static). Solves every line at once."""
         pos = per_line(positions, [ln.name for ln in self.lines], self.dim, self.name, "fairlead positions")
-        d = pos - self.anchors
-        h = d[:, -1]
+        h = pos[:, -1] - self.anchors[:, -1]
         if (h < 0).any():
             i = int(np.argmax(h < 0))
             raise InputError(
@@ -127,11 +124,11 @@ class CatenaryMooring:
                 f"the seabed through its anchor (z = {self.anchors[i, -1]:.6g} m); move the anchor down "
                 f"or the fairlead up"
             )
-        horiz = d[:, :-1]
-        X = np.sqrt(np.sum(horiz**2, axis=1))
-        chord = np.hypot(X, h)
-        inext = np.isinf(self._EA)
-        over = inext & (chord >= self._L * (1.0 + (0.01 if self._tethered else 0.0)))
+        over = self._inextensible
+        if over.any():  # an inextensible line cannot span more than its length
+            X = np.sqrt(np.sum((pos - self.anchors)[:, :-1] ** 2, axis=1))
+            chord = np.hypot(X, h)
+            over = over & (chord >= self._L * (1.0 + (0.01 if self._tethered else 0.0)))
         if over.any():
             i = int(np.argmax(over))
             why = ("its length constraint lets it stretch more than 1 %: the load is too large for the "
@@ -150,30 +147,14 @@ class CatenaryMooring:
     def _law(self, pos: np.ndarray) -> tuple[LineSolution, np.ndarray]:
         """The lines' solution and fairlead forces [N] for fairlead positions ``pos`` [m]
         (checked by the caller), without storing them; ``pos`` may stack several sets of
-        the lines' fairleads, ``(r n_lines, dim)`` (:meth:`fairlead_stiffness`)."""
-        r = len(pos) // self.n_lines
-        L, EA, tethered = np.tile(self._L, r), np.tile(self._EA, r), self._tethered
-        d = pos - np.tile(self.anchors, (r, 1))
-        h = d[:, -1]
-        horiz = d[:, :-1]
-        X = np.sqrt(np.sum(horiz**2, axis=1))
-        chord = np.hypot(X, h)
-        inext = np.isinf(EA)
-        # capped: solve at the point of the chord where the slack is `slack`
-        capped = inext & tethered & (chord > L * (1.0 - self.slack))
-        scale = np.ones(len(pos))
-        scale[capped] = L[capped] * (1.0 - self.slack) / chord[capped]
-        if r == 1:
-            packed, out = self._packed, self._out
-        else:
-            packed, out = np.column_stack([X, h, L, np.tile(self._w, r), EA]), np.empty((len(pos), 4))
-        packed[:, 0], packed[:, 1] = X * scale, h * scale
-        solve_packed(packed, out)
-        state = np.where(capped, int(TAUT), out[:, 3]).astype(np.int8)
-        sol = LineSolution(out[:, 0].copy(), out[:, 1].copy(), out[:, 2].copy(), state)
-        e = np.divide(horiz, X[:, None], out=np.zeros_like(horiz), where=X[:, None] > 0)
-        forces = np.concatenate([-sol.H[:, None] * e, -sol.V[:, None]], axis=1)
-        return sol, forces
+        the lines' fairleads, ``(r n_lines, dim)`` (:meth:`fairlead_stiffness`). A tethered
+        inextensible line is solved at the point of its chord where the slack is ``slack``
+        (:func:`moorings.catenary.solve_fairleads`)."""
+        pos = np.ascontiguousarray(pos, dtype=float)
+        out, forces = np.empty((len(pos), 4)), np.empty(pos.shape)
+        solve_fairleads(pos, self.anchors, self._L, self._w, self._EA, self.slack if self._tethered else 0.0, out,
+                        forces)
+        return LineSolution(out[:, 0], out[:, 1], out[:, 2], out[:, 3].astype(np.int8)), forces
 
     def points_at(self, line: int, s) -> np.ndarray:
         """World positions [m] of line ``line``'s points at arc lengths ``s`` [m] from its

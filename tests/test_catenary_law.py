@@ -317,3 +317,31 @@ def test_shape_of_a_resting_line_ends_at_the_fairlead():
         assert np.all(x[hanging] == X) and np.all(z[~hanging] == 0.0)
         assert np.all(np.diff(x) >= 0) and np.all(np.diff(x[~hanging]) < np.diff(s[~hanging]))  # slack on the bed
         np.testing.assert_allclose(np.diff(z[hanging]), np.diff(s[hanging]), rtol=1e-4)  # hanging at its length
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_the_fairleads_law_is_solve_along_each_line(dim):
+    """``solve_fairleads`` (the mooring's compiled law over stacked sets of fairleads) gives
+    per line what ``solve`` gives for its span and height, the force along the fairlead's
+    horizontal direction to the anchor and down; a tethered inextensible line beyond its
+    slack is solved at the slack's geometry and flagged TAUT."""
+    from moorings.catenary import solve_fairleads
+
+    rng = np.random.default_rng(7)
+    anchors = rng.uniform(-10, 10, size=(3, dim))
+    L, w, EA = np.array([12.0, 15.0, 9.0]), np.array([1.0, 2.5, 0.7]), np.array([math.inf, 4e4, math.inf])
+    pos = np.tile(anchors, (4, 1)) + rng.uniform(0.5, 7.0, size=(12, dim))
+    out, forces = np.empty((12, 4)), np.empty((12, dim))
+    solve_fairleads(pos, anchors, L, w, EA, 0.0, out, forces)
+    for i in range(12):
+        j = i % 3
+        d = pos[i] - anchors[j]
+        X = float(np.linalg.norm(d[:-1]))
+        ref = solve(X, d[-1], L[j], w[j], None if math.isinf(EA[j]) else EA[j])
+        assert tuple(out[i]) == (ref.H, ref.V, ref.touchdown, int(ref.state))
+        np.testing.assert_array_equal(forces[i], np.append(-ref.H * (d[:-1] / X), -ref.V))
+    far = anchors[0] + np.append(np.full(dim - 1, 11.99 / math.sqrt(dim - 1)), 0.1)[None, :]
+    solve_fairleads(far, anchors[:1], L[:1], w[:1], EA[:1], 1e-3, out[:1], forces[:1])
+    chord = math.hypot(11.99, 0.1)
+    ref = solve(11.99 * 0.999 * 12.0 / chord, 0.1 * 0.999 * 12.0 / chord, 12.0, 1.0)
+    assert out[0, 0] == pytest.approx(ref.H, rel=1e-12) and out[0, 3] == int(TAUT)

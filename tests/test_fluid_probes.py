@@ -57,6 +57,25 @@ def test_gauges_find_the_water_depth(tank2d):
     assert surface_elevation(tank2d, [-0.02])[0] == pytest.approx(top + 0.005, abs=1e-12)
 
 
+def test_the_surface_is_where_the_fluid_fraction_is_one_half(tank2d):
+    """The height a gauge reads is solved to 1e-9 of the march's step (dx / 4): there the
+    kernel-interpolated fluid fraction of the particles within 2h of its line is 0.5 to
+    within its slope times that."""
+    from fluid.kernels import alpha_d
+    from fluid.probes import _fraction
+
+    f, c = tank2d, tank2d.config
+    ps = f.ps
+    x = 0.13
+    eta = surface_elevation(f, [x])[0]
+    near = (ps.kind == Kind.FLUID) & (np.abs(ps.pos[:, 0] - x) < 2.0 * c.h)
+    args = ((ps.pos[near, 0] - x) ** 2, ps.pos[near, 1].copy(), ps.mass[near] / ps.rho[near], f._kernel, c.h,
+            alpha_d(f._kernel, 2, c.h))
+    slope = (_fraction(eta - 1e-4, *args) - _fraction(eta + 1e-4, *args)) / 2e-4
+    assert abs(eta - 0.2) < 0.005  # dx / 2 of the water's depth
+    assert abs(_fraction(eta, *args) - 0.5) < slope * 1e-9 * c.dx / 4 + 1e-13
+
+
 @pytest.mark.parametrize("dim", [2, 3])
 def test_a_gauge_over_the_dry_floor_reads_the_floor(dim):
     """Water held in the left third of a tank (a dam break at t = 0): a gauge over the dry

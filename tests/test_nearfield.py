@@ -217,3 +217,33 @@ def test_the_water_meets_both_end_walls_at_half_a_spacing(length):
     gap_far = far[:, 0].min() - box.fluid[:, 0].max()
     assert gap_near == pytest.approx(dx, abs=1e-9) and gap_far == pytest.approx(dx, abs=1e-9)
     assert [z.outer for z in box.zones(SEA, 10.0)] == [0.0, pytest.approx(box.x1)]
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_the_sea_target_relaxes_its_zone_in_one_pass_as_the_general_path_does(dim):
+    """A zone towards the sea's velocity (with the return current and an absorbing wall's
+    rate) relaxes its particles in one compiled pass (``SeaVelocity.relax``) to the same
+    bits as the general path (the target called at the zone's rows), the second velocity
+    array alike and the particles outside the zone or not fluid untouched; a Stokes-2 sea
+    takes the general path."""
+    from fluid.nearfield import sea_velocity
+    from fluid.relaxation import Slab
+
+    class Wall:
+        rate = 0.013
+
+    rng = np.random.default_rng(3)
+    n = 400
+    cols = [rng.uniform(-0.2, 2.2, n)] + ([rng.uniform(0.0, 0.5, n)] if dim == 3 else []) + [rng.uniform(0.0, 0.35, n)]
+    pos = np.column_stack(cols)
+    kind = np.where(np.arange(n) % 7 == 0, Kind.FIXED_WALL.value, Kind.FLUID.value).astype(np.int8)
+    for target in (sea_velocity(SEA), sea_velocity(SEA, drift=False).with_wall(Wall())):
+        vel0, extra0 = rng.normal(size=(n, dim)), rng.normal(size=(n, dim))
+        (v1, e1), (v2, e2) = (vel0.copy(), extra0.copy()), (vel0.copy(), extra0.copy())
+        Slab(0, 1.7, 2.0, 8.0, target).apply(pos, v1, kind, 2.6, 4e-4, e1)
+        Slab(0, 1.7, 2.0, 8.0, lambda p, t: target(p, t)).apply(pos, v2, kind, 2.6, 4e-4, e2)
+        moved = (v1 != vel0).any(axis=1)
+        assert np.array_equal(v1, v2) and np.array_equal(e1, e2)
+        assert np.array_equal(moved, (pos[:, 0] > 1.7) & (kind == Kind.FLUID.value)) and moved.sum() > 30
+    stokes = sea_velocity(RegularWave(0.04, 1.0, 0.3, level=0.3, theory="stokes2"))
+    assert not stokes.relax(Slab(0, 1.7, 2.0, 8.0, stokes), pos, vel0.copy(), kind, 2.6, 4e-4, None)

@@ -107,3 +107,30 @@ def test_the_end_zones_let_the_walls_correction_pass():
     pos = np.array([[0.1, 0.15], [1.9, 0.15]])
     for z0, z, extra in zip(plain, zones, (0.01, -0.02)):
         np.testing.assert_allclose(z.target(pos, 7.0) - z0.target(pos, 7.0), [[extra, 0.0]] * 2, atol=1e-15)
+
+
+def test_both_end_walls_read_their_strips_in_one_pass_as_each_would_alone():
+    """The box's two end walls share one reader (one surface pass a step): each reads what a
+    wall with a reader of its own gauges reads, to the bit; the reading is taken again once
+    the fluid's particles move (a new sort), and the sea's at a new time."""
+    from fluid.geometry import assemble, tank_walls
+    from fluid.particles import Kind
+    from fluid.solver import Fluid, FluidConfig
+
+    dx = 0.02
+    box = near_field_box(dx, 0.0, 2.0, SEA, 0.45, 0.4, layers=4)
+    near, far = box.absorbing_ends(SEA, dx, 2 * dx)
+    assert near.reader is far.reader
+    lo, hi = np.array([-0.1, 0.0]), np.array([2.1, 0.45])
+    b = assemble(2, dx, 1000.0, box.fluid[box.fluid[:, 1] < 0.32 - 0.05 * box.fluid[:, 0]],
+                 [(tank_walls(lo, hi, dx), Kind.FIXED_WALL, 0)])
+    f = Fluid(FluidConfig(dim=2, dx=dx, c0=20.0, threads=1), b.particles)
+    f.initialize(0.0)
+    read = [end.beyond_sea(f, 3.1) for end in (near, far)]
+    alone = [AbsorbingEnd(SEA, FollowingWall(SEA), e.side, e.gauges, e.weights).beyond_sea(f, 3.1) for e in (near, far)]
+    assert read == alone and read[0] - read[1] > 0.05  # the surface slopes down along x
+    f.advance(0.0, 0.02)
+    again = AbsorbingEnd(SEA, FollowingWall(SEA), 1, far.gauges, far.weights)
+    assert far.beyond_sea(f, 3.3) == again.beyond_sea(f, 3.3) != read[1]
+    with pytest.raises(InputError, match="rows"):
+        AbsorbingEnd(SEA, FollowingWall(SEA), 1, far.gauges, far.weights, reader=near.reader, rows=slice(0, 4))
