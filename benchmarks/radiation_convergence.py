@@ -33,6 +33,7 @@ from pathlib import Path
 from cosim.validations import case_scene
 from cosim.validations.radiation import (PERIODS_AFTER_RAMP, added_mass_damping, held_scene, radiation_metrics,
                                          radiation_scene)
+from cosim.validations.wave_propagation import harmonics
 
 
 def scene_at(r_over_dx: float, periods: float = PERIODS_AFTER_RAMP, amplitude: float | None = None,
@@ -54,7 +55,9 @@ def by_period(res, scene, reference: tuple, tare=None) -> dict:
     """B33 [kg/s] and the errors of B33 and A33 against ``reference`` = (A33, B33, C33) fitted
     by the case's ``added_mass_damping`` over each whole period after the ramp, and over the
     last 2, 4 and 6 periods where the run has them; less the held run ``tare``'s force where
-    given."""
+    given. ``sliding``: B33 [kg/s] and the first gauge's first-harmonic amplitude [m] (the
+    radiated wave 2 R from the axis) in one-period windows every quarter period after the
+    ramp: whether a swing of the damping is the body's radiated wave's too."""
     a_ref, b_ref, c33 = reference
     b = scene.bodies[0]
     m = b.motion
@@ -70,7 +73,14 @@ def by_period(res, scene, reference: tuple, tare=None) -> dict:
     periods = [fit((t >= (m.ramp + j) * m.period - 1e-9) & (t <= (m.ramp + j + 1) * m.period + 1e-9))
                for j in range(whole)]
     last = {n: fit(t >= t[-1] - n * m.period - 1e-9) for n in (2, 4, 6) if n <= whole}
-    return {"periods": periods, "last": last}
+    eta = res["gauge1.eta"] - (0.0 if tare is None else tare["gauge1.eta"])
+    sliding = []
+    for j in range(4 * whole - 3):
+        t0 = (m.ramp + 0.25 * j) * m.period
+        sel = (t >= t0 - 1e-9) & (t <= t0 + m.period + 1e-9)
+        sliding.append({"periods_after_ramp": 0.25 * j, "B33_kg_s": fit(sel)["B33_kg_s"],
+                        "gauge1_m": float(abs(harmonics(t[sel], eta[sel][:, None], w)[0]))})
+    return {"periods": periods, "last": last, "sliding": sliding}
 
 
 def main(argv=None) -> int:
@@ -119,6 +129,13 @@ def main(argv=None) -> int:
         print(f"| {w['R_over_dx']:g} | {w['heave_amplitude_m']:.3g} | {per} | "
               + " / ".join(f"{q['B33_error']:+.1%}" for q in bp["last"].values()) + " | "
               + " / ".join(f"{q['A33_error']:+.1%}" for q in bp["last"].values()) + " |")
+    print("\n| R/dx | heave [m] | B33 [kN s/m] / first gauge's amplitude [cm], one-period windows every quarter "
+          "period after the ramp |")
+    print("|---|---|---|")
+    for w in rows:
+        print(f"| {w['R_over_dx']:g} | {w['heave_amplitude_m']:.3g} | "
+              + ", ".join(f"{q['B33_kg_s'] / 1e3:.1f} / {100 * q['gauge1_m']:.2f}" for q in w["by_period"]["sliding"])
+              + " |")
     return 0
 
 
