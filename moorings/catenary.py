@@ -345,6 +345,7 @@ def _solve_batch_serial(X, h, L, w, EA, H, V, td, state):
 _PARALLEL_MIN = 512
 
 
+#: TAUT as the plain integer the compiled laws return
 _TAUT_CODE = int(LineState.TAUT)
 
 
