@@ -310,8 +310,7 @@ class Sea:
     @property
     def heading(self) -> np.ndarray:
         """Unit vector of propagation, (cos β, sin β, 0)."""
-        b = math.radians(self.direction)
-        return np.array([math.cos(b), math.sin(b), 0.0])
+        return np.array([*self._heading2, 0.0])
 
     @property
     def shortest_period(self) -> float:
