@@ -90,6 +90,7 @@ def main(argv=None) -> int:
     p.add_argument("--periods", type=float, default=PERIODS_AFTER_RAMP, help="periods run after the ramp")
     p.add_argument("--amplitude", type=float, help="heave amplitude [m] (default: the case's)")
     p.add_argument("--no-tare", action="store_true", help="no held run: the forced run's force alone")
+    p.add_argument("--only", choices=("forced", "held"), help="run this one of the pair alone (two processes)")
     p.add_argument("--set", dest="values", action="append", default=[], metavar="KEY=VALUE",
                    help="a scene value changed in both runs (repeat)")
     a = p.parse_args(argv)
@@ -99,6 +100,10 @@ def main(argv=None) -> int:
         held = (f"R_over_dx_{r:g}" + ("" if a.periods == PERIODS_AFTER_RAMP else f"_{a.periods:g}periods")
                 + "".join(f"_{v}" for v in a.values))
         tag = held + ("" if a.amplitude is None else f"_A{a.amplitude:g}")
+        if a.only is not None:
+            case_scene.run_or_resume(scene if a.only == "forced" else held_scene(scene),
+                                     a.out / (tag if a.only == "forced" else f"{held}_held"))
+            continue
         res, earlier = case_scene.run_or_resume(scene, a.out / tag)
         tare = None
         if not a.no_tare:  # one held run for every amplitude at this spacing and length
@@ -113,6 +118,8 @@ def main(argv=None) -> int:
         row |= {"tared": m["tared"], "B33_error_untared": m["B33_error_untared"]}
         print(json.dumps(row), flush=True)
         rows.append(row)
+    if not rows:
+        return 0
     print("\n| R/dx | A33 error | B33 error | B33 error untared | reflection | outgoing / B33's | particles | steps "
           "| CPU s |")
     print("|---|---|---|---|---|---|---|---|---|")
