@@ -365,23 +365,25 @@ SMALL_BODY_KA = 0.1
 @dataclass(frozen=True)
 class BoxChoice:
     """The near-field box chosen for a scene (:func:`choose_box`): the water's x range ``x``
-    and 3-D y range ``y`` [m] (walls outside), the zones' width ``zone`` [m], the wall
-    ``height`` [m] above the seabed, and ``reasons``: for each, what set it."""
+    and 3-D y range ``y`` [m] (walls outside), the end zones' width ``zone`` [m], the wall
+    ``height`` [m] above the seabed, ``reasons``: for each, what set it, and 3-D the side
+    zones' width ``side_zone`` [m] (None: none, in 2-D or a channel)."""
 
     x: tuple
     y: tuple | None
     zone: float
     height: float
     reasons: dict
+    side_zone: float | None = None
 
     def as_dict(self) -> dict:
         return {"x_m": list(self.x), "y_m": None if self.y is None else list(self.y), "zone_m": self.zone,
-                "height_m": self.height, "reasons": dict(self.reasons)}
+                "side_zone_m": self.side_zone, "height_m": self.height, "reasons": dict(self.reasons)}
 
 
 def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(), size: float = 0.0,
                symmetric: bool = False, dx: float | None = None, dim: int = 2, zone: float | None = None, x=(None, None),
-               width: float | None = None, height: float | None = None) -> BoxChoice:
+               width: float | None = None, height: float | None = None, side_zones: bool = True) -> BoxChoice:
     """A near-field box for bodies whose horizontal extent is ``footprint = (lo, hi)``
     ((x,) or (x, y) corners [m]; no bodies: a point), in ``sea`` (heading +x), at smoothing
     length ``h`` [m].
@@ -406,7 +408,9 @@ def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(
 
     ``zone``, ``x = (x0, x1)``, ``width`` and ``height`` given are kept (reason "given").
     3-D: the box is centred across y on the bodies (``symmetric``: from y = 0, a symmetry
-    plane); a length and a width it chooses are whole numbers of spacings ``dx`` [m] when
+    plane), with zones as wide as the end ones inside its side walls, or (``side_zones``
+    False) none: a channel whose slip side walls return what reaches them, for plane waves
+    along x (a flume's slice) or bodies far enough from the sides; a length and a width it chooses are whole numbers of spacings ``dx`` [m] when
     given (the length widened on both chosen ends alike), so that the particles' lattice
     meets the walls at dx / 2 and is symmetric about the centre as the scene may be."""
     lo, hi = (np.atleast_1d(np.asarray(v, float)) for v in footprint)
@@ -449,10 +453,11 @@ def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(
     if dim == 3:
         centre = 0.0 if symmetric else 0.5 * float(lo[1] + hi[1])
         if width is None:
-            half = max(hi[1] - centre, centre - lo[1]) + margin + zone
+            half = max(hi[1] - centre, centre - lo[1]) + margin + (zone if side_zones else 0.0)
             if dx is not None:
                 half = math.ceil(half / dx - 1e-9) * dx
-            reasons["width"] = why + (" (y >= 0: a symmetry plane at y = 0)" if symmetric else ", on both sides")
+            reasons["width"] = ((why if side_zones else why.replace(", then the zone", ", no side zones")) +
+                                (" (y >= 0: a symmetry plane at y = 0)" if symmetric else ", on both sides"))
         else:
             half = 0.5 * float(width)
             reasons["width"] = "given"
@@ -463,4 +468,7 @@ def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(
         reasons["height"] = f"the depth, twice the sea's largest height ({largest:.4g} m) and two kernel supports"
     else:
         reasons["height"] = "given"
-    return BoxChoice((float(x0), float(x1)), y, float(zone), float(height), reasons)
+    side_zone = float(zone) if y is not None and side_zones else None
+    if y is not None:
+        reasons["side_zone"] = "as wide as the end zones" if side_zones else "none: a channel (side_zones false)"
+    return BoxChoice((float(x0), float(x1)), y, float(zone), float(height), reasons, side_zone)

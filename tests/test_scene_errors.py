@@ -731,6 +731,8 @@ CASES = [
          "a near field follows its sea and does not move as a whole", "Scene.base_motion"),
     case("a symmetry plane in 2-D", "nearfield", ("domain.symmetry", True), "domain.symmetry",
          "a 2-D near field is the x-z plane; leave symmetry out", "Scene.domain.symmetry"),
+    case("a channel's side walls in 2-D", "nearfield", ("domain.side_zones", False), "domain.side_zones",
+         "a 2-D near field is the x-z plane, with no side walls; leave side_zones out", "Scene.domain.side_zones"),
     case("a body off the symmetry plane", "nearfield3d", ("bodies[0].pos", [70.0, 4.0]), "bodies[0].pos",
          "y = 4 m: with domain.symmetry each body is centred on the symmetry plane y = 0", "Scene.bodies[0].pos"),
     case("a body turned out of its mirror image", "nearfield3d", (("bodies[0].place", "given"),

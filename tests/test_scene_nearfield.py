@@ -117,6 +117,12 @@ def test_the_zone_is_half_the_wavelength_of_the_longest_natural_period_within_th
     c5 = choose_box(sea, h, ((1.1, -0.3), (1.3, 0.3)), reach=0.05, periods=(0.7,), dim=3, dx=dx, symmetric=True)
     whole = choose_box(sea, h, ((1.1, -0.3), (1.3, 0.3)), reach=0.05, periods=(0.7,), dim=3, dx=dx)
     assert c5.y == pytest.approx((0.0, whole.y[1])) and "symmetry plane" in c5.reasons["width"]
+    # side zones as wide as the end ones; a channel (no side zones) as wide as the bodies and their margin
+    assert c3.side_zone == c3.zone and c.side_zone is None
+    ch = choose_box(sea, h, ((1.1, -0.2), (1.3, 0.3)), reach=0.05, periods=(0.7,), dim=3, side_zones=False)
+    assert ch.side_zone is None and ch.zone == c3.zone and ch.x == c3.x
+    assert ch.y == pytest.approx((-0.2 - margin, 0.3 + margin)) and "no side zones" in ch.reasons["width"]
+    assert "channel" in ch.reasons["side_zone"] and ch.as_dict()["side_zone_m"] is None
 
 
 def test_a_scene_gets_its_box_from_its_bodies_and_sea(tmp_path):
@@ -234,6 +240,28 @@ def test_a_3d_near_field_is_centred_on_its_bodies(tmp_path):
     assert 0.5 * (c.y[0] + c.y[1]) == pytest.approx(20.0) and c.y[1] - c.y[0] == pytest.approx(c.x[1] - c.x[0], abs=3.0)
     assert (c.y[1] - 20.0) / 1.5 == pytest.approx(round((c.y[1] - 20.0) / 1.5), abs=1e-9)
     assert "natural period" in c.reasons["zone"]
+
+
+def test_a_3d_channel_has_zones_at_its_ends_only(tmp_path):
+    """``domain.side_zones = false``: the box as wide as the base and its margin, slip side
+    walls with no zone inside them (two slabs, both across x), and the base may stand
+    nearer the sides than the zones' width; with side zones (the default) four slabs."""
+    from cosim.scene.build import build
+
+    zoned, channel = _base_at(tmp_path, 0.0), _base_at(tmp_path, 0.0, "domain.side_zones=false")
+    cz, cc = box_for(zoned), box_for(channel)
+    assert cc.side_zone is None and cz.side_zone == cz.zone
+    assert cz.y[1] - cc.y[1] == pytest.approx(cz.zone, abs=1.5)  # the zone's width, to a spacing
+    slabs = {}
+    for name, s in (("zoned", zoned), ("channel", channel)):
+        b = build(s, tmp_path / name)
+        slabs[name] = sorted(z.axis for z in b.sph.zones)
+    assert slabs == {"zoned": [0, 0, 1, 1], "channel": [0, 0]}
+    # a box 40 m wide: its side zones (24 m) would reach the base and its reach; the channel's water holds them
+    with pytest.raises(SceneError) as e:
+        _base_at(tmp_path, 0.0, "domain.width=40.0")
+    assert e.value.path == "bodies[0].pos" and "relaxation zones" in e.value.problem
+    assert box_for(_base_at(tmp_path, 0.0, "domain.width=40.0", "domain.side_zones=false")).y == (-20.0, 20.0)
 
 
 @pytest.mark.slow  # a minute of CPU: out of CI's time (docs/development.md); the mirror's own tests stay

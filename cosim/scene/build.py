@@ -868,7 +868,7 @@ def _near_field(scene, cfg, out: Built):
     sea = out.sea = incident_sea(scene)
     c = out.near_field = box_for(scene)
     box = near_field_box(cfg.dx, c.x[0], c.x[1], sea, c.height, c.zone, layers=math.ceil(2.0 * cfg.h_coef - 1e-9),
-                         y=c.y, side_zone=None if c.y is None else c.zone, mirror=scene.domain.symmetry)
+                         y=c.y, side_zone=c.side_zone, mirror=scene.domain.symmetry)
     rate = scene.domain.rate * 2.0 * math.pi / sea.peak_period
     if scene.domain.absorbing_walls:
         ends = box.absorbing_ends(sea, cfg.dx, cfg.h)

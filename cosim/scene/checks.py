@@ -610,6 +610,9 @@ def _check_near_field(s, dim):
         for key in ("width", "symmetry"):
             if getattr(d, key) not in (None, False):
                 raise SceneError(f"domain.{key}", f"a 2-D near field is the x-z plane; leave {key} out")
+        if not d.side_zones:
+            raise SceneError("domain.side_zones", "a 2-D near field is the x-z plane, with no side walls; leave "
+                             "side_zones out")
     if d.symmetry:
         _check_symmetric(s)
     if s.base_motion is not None:
@@ -674,8 +677,9 @@ def _check_inside_near_field(s, dim):
     from cosim.scene.nearfield import box_for, reach
 
     c, r = box_for(s), reach(s)
-    lo = [c.x[0] + c.zone] + ([c.y[0] + (0.0 if s.domain.symmetry else c.zone)] if dim == 3 else [])
-    hi = [c.x[1] - c.zone] + ([c.y[1] - c.zone] if dim == 3 else [])
+    side = c.side_zone or 0.0
+    lo = [c.x[0] + c.zone] + ([c.y[0] + (0.0 if s.domain.symmetry else side)] if dim == 3 else [])
+    hi = [c.x[1] - c.zone] + ([c.y[1] - side] if dim == 3 else [])
     keys = ("domain.x0 and domain.x1", "domain.width")
     for i, b in enumerate(s.bodies):
         if isinstance(b, MJCF):

@@ -79,7 +79,8 @@ def box_for(scene):
         fp = footprint(scene)
         size = max((b.extent(dim)[0] for b in scene.bodies), default=0.0)
     return choose_box(sea, h, fp, reach=reach(scene), periods=periods, size=size, symmetric=d.symmetry,
-                      dx=scene.fluid.dx, dim=dim, zone=d.zone, x=(d.x0, d.x1), width=d.width, height=d.height)
+                      dx=scene.fluid.dx, dim=dim, zone=d.zone, x=(d.x0, d.x1), width=d.width, height=d.height,
+                      side_zones=d.side_zones)
 
 
 def reach(scene) -> float:

@@ -479,7 +479,7 @@ class NearField(Spec):
     zones inside them pull the water towards the sea's velocity, so that the incident waves
     pass through and what the bodies send out dies there (:mod:`fluid.nearfield`). 3-D:
     slip walls across y, width/2 each side of the bodies (the incident flow runs along
-    them), with zones inside them too; with ``symmetry`` the plane y = 0 is a symmetry
+    them), with zones inside them too unless ``side_zones`` is false (a channel); with ``symmetry`` the plane y = 0 is a symmetry
     plane instead of one of them: only y >= 0 is simulated, the particles near the plane
     mirrored across it (:mod:`fluid.mirror`), half the particles for a scene symmetric
     about it. The mooring lines are not in the SPH fluid: their anchors may lie outside
@@ -505,6 +505,9 @@ class NearField(Spec):
     absorbing_walls: bool = flag(False, "the end walls also move with the waves that come back to them (active "
                                         "absorption, fluid.wall_absorption): waves much longer than the box, which "
                                         "its zones reflect, leave through them")
+    side_zones: bool = flag(True, "3-D: relaxation zones inside the side walls too; false: none, a channel whose "
+                                  "slip side walls return what reaches them (plane waves along x, a slice of a "
+                                  "flume; bodies far from the sides)")
     symmetry: bool = flag(False, "3-D: the plane y = 0 is a symmetry plane of the scene: only y >= 0 is simulated "
                                  "(half the particles), the water near the plane mirrored across it; the waves, "
                                  "bodies, lines and probes must be symmetric about it")

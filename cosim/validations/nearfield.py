@@ -37,6 +37,9 @@ NF_SEAS, NF_QUICK_SEAS = ("linear", "stokes2", "jonswap"), ("stokes2", "jonswap"
 #: targets: height 5 %, phase 5 % of a period, mean-level drift 1 % of the depth, Hs and Tp 5 %,
 #: spectrum 10 % over 0.7-1.5 fp
 NF_HEIGHT_TOL, NF_LAG_TOL, NF_DRIFT_TOL, NF_HS_TOL, NF_SPECTRUM_TOL = 0.05, 0.05, 0.01, 0.05, 0.10
+#: 3-D: the channel's width in spacings (both halves; half of it simulated on the symmetry
+#: plane), and the full variant's 3-D runs (sea, H / dx): plane waves along a slice of the box
+NF_3D_ROWS, NF_3D_RUNS = 6, (("stokes2", 3),)
 
 
 def run_box(sea, dx: float, length: float, zone: float, duration: float, *, width: float | None = None,
@@ -67,18 +70,19 @@ def run_box(sea, dx: float, length: float, zone: float, duration: float, *, widt
     fluid.zones.extend(box.zones(sea, rate_per_omega * omega, drift=drift))
     cpu0 = time.process_time()
     fluid.initialize(0.0)
-    return read_box(fluid, sea, length, zone, duration, cpu0, width=width, settle=settle, gauges=gauges,
+    return read_box(fluid, sea, length, zone, duration, cpu0, y=None if width is None else 0.5 * width,
+                    settle=settle, gauges=gauges,
                     samples_per_period=samples_per_period, progress=progress)
 
 
 def read_box(fluid, sea, length: float, zone: float, duration: float, cpu0: float, *, x0: float = 0.0,
-             width: float | None = None, settle: float = 0.0, gauges: int = 9, samples_per_period: int = 32,
+             y: float | None = None, settle: float = 0.0, gauges: int = 9, samples_per_period: int = 32,
              progress: bool = False) -> dict:
     """Run the near field ``fluid`` (initialised at t = 0; its box ``length`` [m] long from
-    ``x0`` [m] in ``sea``, zones ``zone`` [m] wide; 3-D ``width`` [m] wide) for ``duration`` [s]
+    ``x0`` [m] in ``sea``, zones ``zone`` [m] wide) for ``duration`` [s]
     after ``settle`` [s] of damped relaxation at rest (``Fluid.settle``), reading the
     surface at ``gauges`` points from one zone's inner edge to the other's (3-D on the
-    centre line) and across the box ``samples_per_period`` times a (peak) period. Returns
+    line ``y`` [m] along the box) and across the box ``samples_per_period`` times a (peak) period. Returns
     the gauges' x [m], the times [s], the elevations there [m] (rows: times), the
     sea's elevations at the same points and times, the mean level over the box (clear of
     the end walls' excursion) [m] at each time, the still level the settled water started
@@ -95,7 +99,7 @@ def read_box(fluid, sea, length: float, zone: float, duration: float, cpu0: floa
     reach = excursion(sea) + dx  # clear of the end walls' excursion
     gall = x0 + np.linspace(reach, length - reach, max(8, int(length / dx) // 2))
     xs = np.concatenate([gx, gall])
-    points = xs if dim == 2 else np.column_stack([xs, np.full(xs.size, 0.5 * width)])
+    points = xs if dim == 2 else np.column_stack([xs, np.full(xs.size, y)])
     if settle > 0:
         fluid.settle(settle)
     start = surface_elevation(fluid, points)[len(gx):].mean() - depth
@@ -109,7 +113,7 @@ def read_box(fluid, sea, length: float, zone: float, duration: float, cpu0: floa
             log.info("near field: t = %6.2f s, %d steps", t, fluid.counters.steps)
     cpu = time.process_time() - cpu0
     return {"gauges_m": gx, "t": ts, "eta": eta[:, :len(gx)],
-            "sea_eta": sea.elevation(gx[None, :], 0.5 * (width or 0.0), ts[:, None]),
+            "sea_eta": sea.elevation(gx[None, :], y or 0.0, ts[:, None]),
             "box_level_m": eta[:, len(gx):].mean(axis=1), "settled_level_m": float(start),
             "particles": particles, "fluid_particles": fluid_particles, "steps": int(fluid.counters.steps),
             "cpu_s": cpu, "removed": int(sum(fluid.counters.removed.values()))}
@@ -168,18 +172,26 @@ def _sea(kind: str, duration: float):
     return RegularWave(NF_HEIGHT, NF_PERIOD, NF_DEPTH, theory=kind, level=NF_DEPTH, ramp=ramp, g=G)
 
 
-def waves_scene(kind: str, h_over_dx: float, periods: float):
+def waves_scene(kind: str, h_over_dx: float, periods: float, dim: int = 2):
     """The scene ``scenes/nearfield-waves.toml`` (the quick variant's Stokes-2 run) with the
     sea ``kind``: "linear" or "stokes2", its regular waves by that theory; "jonswap", the
     JONSWAP sea of Hs = :data:`NF_HS` and Tp the waves' period (seed 1) in their place; dx =
-    H / ``h_over_dx`` (H the regular waves' height), ``periods`` (peak) periods long."""
+    H / ``h_over_dx`` (H the regular waves' height), ``periods`` (peak) periods long.
+    ``dim`` 3: the same box as a channel :data:`NF_3D_ROWS` spacings wide with no side zones
+    (slip side walls, along which the waves run), on a symmetry plane at y = 0 (half of it
+    simulated), the gauges on the plane."""
     n = case_scene.number
     w = case_scene.load("nearfield-waves").waves
-    values = [f"fluid.dx={n(w.height / h_over_dx)}", f"world.duration={n(periods * w.period)}"]
+    dx = w.height / h_over_dx
+    values = [f"fluid.dx={n(dx)}", f"world.duration={n(periods * w.period)}"]
     if kind == "jonswap":
         values += ["waves.kind=irregular", f"waves.hs={n(NF_HS)}", f"waves.tp={n(w.period)}", "waves.seed=1"]
     else:
         values.append(f"waves.theory={kind}")
+    if dim == 3:
+        gauges = ", ".join(f"[{n(x)}, 0]" for x in case_scene.load("nearfield-waves").probes.gauges)
+        values += ["world.dim=3", f"domain.width={n(NF_3D_ROWS * dx)}", "domain.side_zones=false",
+                   "domain.symmetry=true", f"probes.gauges=[{gauges}]"]
     return case_scene.load("nearfield-waves", values)
 
 
@@ -190,8 +202,10 @@ def run_scene(scene) -> dict:
     d = scene.domain
     cpu0 = time.process_time()
     with case_scene.built(scene) as b:
-        r = read_box(b.sph, b.sea, d.x1 - d.x0, d.zone, scene.world.duration, cpu0, x0=d.x0,
-                     settle=scene.fluid.settle, samples_per_period=round(b.sea.peak_period / scene.world.sample_every))
+        y = None if b.near_field.y is None else 0.5 * sum(b.near_field.y)
+        r = read_box(b.sph, b.sea, d.x1 - d.x0, d.zone, scene.world.duration, cpu0, x0=d.x0, y=y,
+                     settle=scene.fluid.settle, samples_per_period=round(b.sea.peak_period / scene.world.sample_every),
+                     progress=True)
         return r | {"sea": b.sea}
 
 
@@ -199,45 +213,47 @@ def run_scene(scene) -> dict:
 FIRST_RUN = {True: (NF_QUICK_SEAS[0], NF_QUICK_H_OVER_DX, 20), False: (NF_SEAS[0], NF_H_OVER_DX[0], 20)}
 
 
-def nearfield_case(h_over_dx, periods: float, jonswap_periods: float, seas=NF_SEAS) -> tuple[dict, dict]:
+def nearfield_case(h_over_dx, periods: float, jonswap_periods: float, seas=NF_SEAS,
+                   runs_3d=()) -> tuple[dict, dict]:
     """The case's runs at each ``H / dx`` of the ``seas`` ("linear", "stokes2": regular
     waves ``periods`` periods; "jonswap": the JONSWAP sea ``jonswap_periods`` peak periods,
     at the same dx), each the scene :func:`waves_scene` (a box 1.8 wavelengths long with
     zones half a wavelength wide, as :func:`fluid.nearfield.choose_box` gives a sea without
-    bodies, the near field's set-up ``fluid.solver.NEAR_FIELD``) run by :func:`run_scene`;
-    returns (metrics, series)."""
+    bodies, the near field's set-up ``fluid.solver.NEAR_FIELD``) run by :func:`run_scene`,
+    then ``runs_3d`` ((sea, H / dx) pairs) in the 3-D channel of :func:`waves_scene`, keyed
+    ``SEA_3d_HOVERDX``; returns (metrics, series)."""
     metrics, series = {}, {}
-    for r in h_over_dx:
-        for kind in seas:
-            scene = waves_scene(kind, r, jonswap_periods if kind == "jonswap" else periods)
-            run = run_scene(scene)
-            sea, depth = run["sea"], scene.domain.depth
-            period, ramp = sea.peak_period, scene.waves.ramp * sea.peak_period
-            key = f"{kind}_{r}"
-            m = {"drift_over_depth": level_drift(run, period, ramp) / depth,
-                 "settled_level_over_depth": run["settled_level_m"] / depth,
-                 "particles": run["particles"], "steps": run["steps"], "cpu_s": round(run["cpu_s"], 1),
-                 "lost": run["removed"]}
-            if kind == "jonswap":
-                q = irregular_metrics(run, period, ramp)
-                m |= {"Hs_error": float(np.abs(q["Hs_over_sea"] - 1.0).max()),
-                      "Tp_error": float(np.abs(q["Tp_over_sea"] - 1.0).max()),
-                      "spectrum_error": float(q["spectrum_worst"].max())}
-                series[f"JONSWAP spectrum, Hs/dx = {r}"] = {
-                    "xlabel": "f / fp", "ylabel": "S [m^2/Hz]", "curves": {
-                        "SPH (mean over the gauges)": {"x": (q["f_Hz"] * period).tolist(), "y": q["S_sph"].tolist()},
-                        "the sea at the gauges": {"x": (q["f_Hz"] * period).tolist(), "y": q["S_sea"].tolist(),
-                                                  "style": "--"}}}
-            else:
-                q = regular_metrics(run, period)
-                m |= {"height_error": float(np.abs(q["H1_over_H"] - 1.0).max()),
-                      "worst_lag_periods": float(np.abs(q["lag_periods"]).max()),
-                      "H1_over_H": np.round(q["H1_over_H"], 4).tolist()}
-                series.setdefault("first-harmonic height across the box", {
-                    "xlabel": "x / wavelength", "ylabel": "H1 / H of the sea", "curves": {}})["curves"][
-                    f"{kind}, H/dx = {r}"] = {"x": (run["gauges_m"] / sea.wavelength).tolist(),
-                                              "y": q["H1_over_H"].tolist()}
-            metrics[key] = m
+    plan = [(kind, r, 2) for r in h_over_dx for kind in seas] + [(kind, r, 3) for kind, r in runs_3d]
+    for kind, r, dim in plan:
+        scene = waves_scene(kind, r, jonswap_periods if kind == "jonswap" else periods, dim=dim)
+        run = run_scene(scene)
+        sea, depth = run["sea"], scene.domain.depth
+        period, ramp = sea.peak_period, scene.waves.ramp * sea.peak_period
+        key = f"{kind}_{r}" if dim == 2 else f"{kind}_3d_{r}"
+        m = {"drift_over_depth": level_drift(run, period, ramp) / depth,
+             "settled_level_over_depth": run["settled_level_m"] / depth,
+             "particles": run["particles"], "steps": run["steps"], "cpu_s": round(run["cpu_s"], 1),
+             "lost": run["removed"]}
+        if kind == "jonswap":
+            q = irregular_metrics(run, period, ramp)
+            m |= {"Hs_error": float(np.abs(q["Hs_over_sea"] - 1.0).max()),
+                  "Tp_error": float(np.abs(q["Tp_over_sea"] - 1.0).max()),
+                  "spectrum_error": float(q["spectrum_worst"].max())}
+            series[f"JONSWAP spectrum, Hs/dx = {r}"] = {
+                "xlabel": "f / fp", "ylabel": "S [m^2/Hz]", "curves": {
+                    "SPH (mean over the gauges)": {"x": (q["f_Hz"] * period).tolist(), "y": q["S_sph"].tolist()},
+                    "the sea at the gauges": {"x": (q["f_Hz"] * period).tolist(), "y": q["S_sea"].tolist(),
+                                              "style": "--"}}}
+        else:
+            q = regular_metrics(run, period)
+            m |= {"height_error": float(np.abs(q["H1_over_H"] - 1.0).max()),
+                  "worst_lag_periods": float(np.abs(q["lag_periods"]).max()),
+                  "H1_over_H": np.round(q["H1_over_H"], 4).tolist()}
+            label = f"{kind}, H/dx = {r}" + (", 3-D" if dim == 3 else "")
+            series.setdefault("first-harmonic height across the box", {
+                "xlabel": "x / wavelength", "ylabel": "H1 / H of the sea", "curves": {}})["curves"][label] = {
+                "x": (run["gauges_m"] / sea.wavelength).tolist(), "y": q["H1_over_H"].tolist()}
+        metrics[key] = m
     return metrics, series
 
 
@@ -255,8 +271,9 @@ def _tolerances(metrics: dict) -> dict:
 
 
 @case("nearfield-waves", "regular (linear, Stokes-2) waves and a JONSWAP sea (d = 0.3 m, T = Tp = 1.2 s, H = 6 cm, "
-      "Hs = 4 cm) through a 2-D SPH near-field box 1.8 wavelengths long with no body: end walls on the sea's orbits, "
-      "relaxation zones half a wavelength wide (fluid.nearfield)",
+      "Hs = 4 cm) through a 2-D SPH near-field box 1.8 wavelengths long with no body, and the Stokes-2 waves through "
+      "the same box in 3-D (a channel six spacings wide, half of it on a symmetry plane): end walls on the sea's "
+      "orbits, relaxation zones half a wavelength wide (fluid.nearfield)",
       target="elevation at 9 gauges across the box within 5 % of the sea's height and 5 % of a period in phase over "
              "20 periods; the mean level's drift below 1 % of the depth; for the JONSWAP sea Hs and Tp within 5 % "
              "and the spectrum within 10 % over 0.7-1.5 fp",
@@ -270,11 +287,13 @@ def nearfield_waves(quick: bool) -> dict:
     segments), not against the target spectrum: a finite record of one realisation
     scatters about the target by ~1/sqrt(segments) per band, which is not the fluid's.
     Quick: the regular wave is Stokes-2 alone (:data:`NF_QUICK_SEAS`), its first harmonic
-    the linear wave's, judged the same; the linear wave runs in the full variant. The scene
+    the linear wave's, judged the same; the linear wave runs in the full variant, and the
+    Stokes-2 waves in 3-D (:data:`NF_3D_RUNS`) at the quick spacing only: the channel costs
+    about 25 times the 2-D box a run, and at H/dx = 5 about eight times more again. The scene
     computes no walls' loads (no pressure patch), which the MLS re-initialisation feels:
     docs/validation/nearfield.md, "As a scene"."""
     levels, seas = ((NF_QUICK_H_OVER_DX,), NF_QUICK_SEAS) if quick else (NF_H_OVER_DX, NF_SEAS)
-    metrics, series = nearfield_case(levels, 20, 24 if quick else 64, seas=seas)
+    metrics, series = nearfield_case(levels, 20, 24 if quick else 64, seas=seas, runs_3d=() if quick else NF_3D_RUNS)
     finest = metrics[f"{seas[0]}_{levels[-1]}"]
     return {"metrics": metrics, "tolerances": _tolerances(metrics), "series": series,
             "particles": finest["particles"], "steps": finest["steps"],
