@@ -53,7 +53,8 @@ def main(argv=None) -> None:
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     p.add_argument("--radius", type=float, default=0.05, help="the circle's radius [m]")
     p.add_argument("--r-over-dx", type=float, nargs="+", default=[5.0, 10.0, 20.0])
-    p.add_argument("--duration", type=float, default=2.0, help="simulated time [s] (about 3.5 heave periods at R = 5 cm)")
+    p.add_argument("--duration", type=float, default=2.0,
+                   help="simulated time [s] (about 3.5 heave periods at R = 5 cm)")
     a = p.parse_args(argv)
     print("| R/dx | draft / R | offset [dx] | spread / R | steps | CPU s |")
     print("|---|---|---|---|---|---|")

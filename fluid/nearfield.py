@@ -383,7 +383,8 @@ class BoxChoice:
 
 def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(), size: float = 0.0,
                symmetric: bool = False, dx: float | None = None, dim: int = 2, zone: float | None = None, x=(None, None),
-               width: float | None = None, height: float | None = None, side_zones: bool = True) -> BoxChoice:
+               width: float | None = None, height: float | None = None,
+               side_zones: bool = True) -> BoxChoice:
     """A near-field box for bodies whose horizontal extent is ``footprint = (lo, hi)``
     ((x,) or (x, y) corners [m]; no bodies: a point), in ``sea`` (heading +x), at smoothing
     length ``h`` [m].
@@ -410,9 +411,10 @@ def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(
     3-D: the box is centred across y on the bodies (``symmetric``: from y = 0, a symmetry
     plane), with zones as wide as the end ones inside its side walls, or (``side_zones``
     False) none: a channel whose slip side walls return what reaches them, for plane waves
-    along x (a flume's slice) or bodies far enough from the sides; a length and a width it chooses are whole numbers of spacings ``dx`` [m] when
-    given (the length widened on both chosen ends alike), so that the particles' lattice
-    meets the walls at dx / 2 and is symmetric about the centre as the scene may be."""
+    along x (a flume's slice) or bodies far enough from the sides; a length and a width it
+    chooses are whole numbers of spacings ``dx`` [m] when given (the length widened on both
+    chosen ends alike), so that the particles' lattice meets the walls at dx / 2 and is
+    symmetric about the centre as the scene may be."""
     lo, hi = (np.atleast_1d(np.asarray(v, float)) for v in footprint)
     reasons = {}
     peak = sea.peak_period

@@ -479,14 +479,14 @@ class NearField(Spec):
     zones inside them pull the water towards the sea's velocity, so that the incident waves
     pass through and what the bodies send out dies there (:mod:`fluid.nearfield`). 3-D:
     slip walls across y, width/2 each side of the bodies (the incident flow runs along
-    them), with zones inside them too unless ``side_zones`` is false (a channel); with ``symmetry`` the plane y = 0 is a symmetry
-    plane instead of one of them: only y >= 0 is simulated, the particles near the plane
-    mirrored across it (:mod:`fluid.mirror`), half the particles for a scene symmetric
-    about it. The mooring lines are not in the SPH fluid: their anchors may lie outside
-    the box. Extents left unset are chosen from the bodies and the sea
-    (:func:`fluid.nearfield.choose_box`: zones half the sea's wavelength, or half that of
-    the bodies' heave period when they are small against the sea's; water beyond the
-    bodies' reach) and reported with the reasons in summary.json."""
+    them), with zones inside them too unless ``side_zones`` is false (a channel); with
+    ``symmetry`` the plane y = 0 is a symmetry plane instead of one of them: only y >= 0
+    is simulated, the particles near the plane mirrored across it (:mod:`fluid.mirror`),
+    half the particles for a scene symmetric about it. The mooring lines are not in the SPH
+    fluid: their anchors may lie outside the box. Extents left unset are chosen from the
+    bodies and the sea (:func:`fluid.nearfield.choose_box`: zones half the sea's wavelength,
+    or half that of the bodies' heave period when they are small against the sea's; water
+    beyond the bodies' reach) and reported with the reasons in summary.json."""
 
     TAG = ("kind", "nearfield")
     kind: str = tag("nearfield")
