@@ -437,7 +437,8 @@ def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(
     else:
         reasons["zone"] = "given"
     margin = reach + MIN_MARGIN_SUPPORTS * 2.0 * h
-    why = f"the bodies' reach {reach:.4g} m and {MIN_MARGIN_SUPPORTS} kernel supports of water, then the zone"
+    water = f"the bodies' reach {reach:.4g} m and {MIN_MARGIN_SUPPORTS} kernel supports of water"
+    why = water + ", then the zone"
     x0 = lo[0] - margin - zone if x[0] is None else float(x[0])
     x1 = hi[0] + margin + zone if x[1] is None else float(x[1])
     reasons["x0"] = "given" if x[0] is not None else why
@@ -458,7 +459,7 @@ def choose_box(sea, h: float, footprint: tuple, *, reach: float = 0.0, periods=(
             half = max(hi[1] - centre, centre - lo[1]) + margin + (zone if side_zones else 0.0)
             if dx is not None:
                 half = math.ceil(half / dx - 1e-9) * dx
-            reasons["width"] = ((why if side_zones else why.replace(", then the zone", ", no side zones")) +
+            reasons["width"] = ((why if side_zones else water + ", no side zones") +
                                 (" (y >= 0: a symmetry plane at y = 0)" if symmetric else ", on both sides"))
         else:
             half = 0.5 * float(width)

@@ -10,9 +10,10 @@ cell covers. Removing the cells that reach into a body (``cosim.sph_fluid``) lea
 first row ``s1`` in [dx/2, 3dx/2) off a face, so a face lying between lattice planes
 carries ``rho g (s1 - dx/2) A`` too much: up to a whole row, the same sign on every
 particle of a face parallel to the lattice (curved faces see every phase, and the water
-closes most of their gap: a free 2-D circle floats 0.16-0.21 dx high). A floating body then settles that much high, and starts with a force far from
-its weight (0.5-1.3 of it, from the kernel's overlap across the gap). Measured in
-docs/validation/nearfield.md ("The static draft's offset").
+closes most of their gap: a free 2-D circle floats 0.16-0.21 dx high). A floating body
+then settles that much high, and starts with a force far from its weight (0.5-1.3 of it,
+from the kernel's overlap across the gap). Measured in docs/validation/nearfield.md ("The
+static draft's offset").
 
 What: for each planar face whose outward normal lies along a lattice axis, the fluid
 points in front of it (within ``rows`` rows, over the face itself: a point beyond its

@@ -71,8 +71,7 @@ def run_box(sea, dx: float, length: float, zone: float, duration: float, *, widt
     cpu0 = time.process_time()
     fluid.initialize(0.0)
     return read_box(fluid, sea, length, zone, duration, cpu0, y=None if width is None else 0.5 * width,
-                    settle=settle, gauges=gauges,
-                    samples_per_period=samples_per_period, progress=progress)
+                    settle=settle, gauges=gauges, samples_per_period=samples_per_period, progress=progress)
 
 
 def read_box(fluid, sea, length: float, zone: float, duration: float, cpu0: float, *, x0: float = 0.0,
@@ -82,7 +81,8 @@ def read_box(fluid, sea, length: float, zone: float, duration: float, cpu0: floa
     ``x0`` [m] in ``sea``, zones ``zone`` [m] wide) for ``duration`` [s]
     after ``settle`` [s] of damped relaxation at rest (``Fluid.settle``), reading the
     surface at ``gauges`` points from one zone's inner edge to the other's (3-D on the
-    line ``y`` [m] along the box) and across the box ``samples_per_period`` times a (peak) period. Returns
+    line ``y`` [m] along the box) and across the box ``samples_per_period`` times a (peak)
+    period. Returns
     the gauges' x [m], the times [s], the elevations there [m] (rows: times), the
     sea's elevations at the same points and times, the mean level over the box (clear of
     the end walls' excursion) [m] at each time, the still level the settled water started
@@ -179,9 +179,11 @@ def waves_scene(kind: str, h_over_dx: float, periods: float, dim: int = 2):
     H / ``h_over_dx`` (H the regular waves' height), ``periods`` (peak) periods long.
     ``dim`` 3: the same box as a channel :data:`NF_3D_ROWS` spacings wide with no side zones
     (slip side walls, along which the waves run), on a symmetry plane at y = 0 (half of it
-    simulated), the gauges on the plane."""
+    simulated), the scene's gauges on the plane (the case reads its own along the middle of
+    the simulated half: :func:`run_scene`)."""
     n = case_scene.number
-    w = case_scene.load("nearfield-waves").waves
+    base = case_scene.load("nearfield-waves")
+    w = base.waves
     dx = w.height / h_over_dx
     values = [f"fluid.dx={n(dx)}", f"world.duration={n(periods * w.period)}"]
     if kind == "jonswap":
@@ -189,7 +191,7 @@ def waves_scene(kind: str, h_over_dx: float, periods: float, dim: int = 2):
     else:
         values.append(f"waves.theory={kind}")
     if dim == 3:
-        gauges = ", ".join(f"[{n(x)}, 0]" for x in case_scene.load("nearfield-waves").probes.gauges)
+        gauges = ", ".join(f"[{n(x)}, 0]" for x in base.probes.gauges)
         values += ["world.dim=3", f"domain.width={n(NF_3D_ROWS * dx)}", "domain.side_zones=false",
                    "domain.symmetry=true", f"probes.gauges=[{gauges}]"]
     return case_scene.load("nearfield-waves", values)
