@@ -763,8 +763,8 @@ class Fluid:
         self.counters.steps += 1
         self.t += dt
         self._place_prescribed(self.t)
-        ps = self.ps
-        for zone in self.zones:
+        for zone in self.zones:  # self.ps only where a zone needs it: on a GPU, reading it brings the state back
+            ps = self.ps
             zone.apply(ps.pos, ps.vel, ps.kind, self.t, dt, self._aux["vel"] if self.config.integrator == "verlet"
                        else None)
         self._check_finite()

@@ -93,6 +93,14 @@ def column_3d():
     return assemble(3, dx, 1000.0, fl, [(np.vstack([floor, side]), Kind.FIXED_WALL, 0)]).particles
 
 
+def many_groups(ps):
+    """The walls split into 20 groups by id (ids mod 20), more than the GPU's group sums
+    keep in shared memory (fluid.cuda.kernels.GROUPS_SHARED): both of its paths add up."""
+    walls = ps.group >= 0
+    ps.group[walls] = ps.ids[walls] % 20
+    return ps
+
+
 def by_id(f, a):
     """``a`` (rows in f.ps's current order) in particle-id order."""
     return np.asarray(a)[np.argsort(f.ps.ids)]
@@ -212,6 +220,31 @@ def nan_guard():
     OUT["nan.cpu"], OUT["nan.gpu"] = np.array(msgs[0]), np.array(msgs[1])
 
 
+def transfers():
+    """Whole-state transfers between host and device (DeviceState.pull and push) while a
+    fluid steps with nothing reading its host copy: none is expected (a step brings back
+    three scalars and the group loads only); reading ``Fluid.ps`` then pulls once. Both
+    integrators, with a density re-initialisation every other step."""
+    from fluid.cuda.state import DeviceState
+
+    counts = {"pull": 0, "push": 0}
+    for name in counts:
+        def counted(self, *args, _f=getattr(DeviceState, name), _name=name):
+            counts[_name] += 1
+            return _f(self, *args)
+        setattr(DeviceState, name, counted)
+    for integrator in ("symplectic", "verlet"):
+        f = Fluid(FluidConfig(dim=2, dx=0.01, c0=20.0, device="cuda", integrator=integrator, mls_every=2),
+                  disturbed(dam_2d(), 0.01, 6))
+        f.initialize(0.0)
+        counts.update(pull=0, push=0)
+        for _ in range(3):
+            f.step(f.max_dt())
+        OUT[f"transfers.{integrator}.steps"] = np.array([counts["pull"], counts["push"]])
+        f.ps.pos.sum()
+        OUT[f"transfers.{integrator}.read"] = np.array([counts["pull"], counts["push"]])
+
+
 def scene_run(out: str) -> None:
     """A coupled scene on both paths: a 0.1 x 0.06 m box of 500 kg/m^3 released 15 mm above
     its floating height in a 0.4 m tank (centred at the still water, it floats: it would
@@ -262,7 +295,10 @@ PARTS = {
                                     domain_hi=(0.25, 0.2))),
     "tilt3d": lambda: run_case("tilt3d", disturbed(column_3d(), 0.02, 5),
                                dict(dim=3, dx=0.02, c0=20.0, g=(1.5, -1.0, -9.6))),
+    "groups2d": lambda: run_case("groups2d", many_groups(disturbed(dam_2d(), 0.01, 7)),
+                                 dict(dim=2, dx=0.01, c0=20.0, domain_lo=(-0.05, -0.05), domain_hi=(0.25, 0.2))),
     "nan": nan_guard,
+    "transfers": transfers,
 }
 
 

@@ -21,6 +21,8 @@ Skipped, with the reason, where numba-cuda is not installed. Each starts from a 
   steps (Verlet's n-1 density shifted with it), Verlet with an Euler step every 4.
 * ``col3d``: a 3-D column (156 particles, 24 fluid) on a floor beside a wall, Wendland,
   the renormalised (Antuono) diffusion, XSPH, symplectic.
+* ``groups2d``: the dam break with its walls in 20 groups, more than a block sums in
+  shared memory (``fluid.cuda.kernels.GROUPS_SHARED``).
 * ``tilt2d``, ``tilt3d``: the dam break with Adami walls and the column, under gravity
   tilted off -z (g = (2.5, -9.5) and (1.5, -1.0, -9.6) m/s^2): the Fourtakas diffusion's
   hydrostatic part taken along g.
@@ -57,7 +59,7 @@ requires_numba_cuda = pytest.mark.skipif(not HAVE_NUMBA_CUDA,
 
 WORKER = Path(__file__).with_name("cuda_sim_worker.py")
 RTOL = 1e-10
-CASES = ("dam2d", "body2d", "col3d", "tilt2d", "tilt3d")
+CASES = ("dam2d", "body2d", "col3d", "tilt2d", "tilt3d", "groups2d")
 STAGES = ("loop", "step1", "last")
 FIELDS = ("acc", "drho", "disp", "vel", "rho", "F", "M", "bforce")
 
@@ -178,6 +180,19 @@ def test_nan_guard_and_the_project_without_numba_cuda(tmp_path):
     msg = str(nan["absent_error"])
     assert "numba-cuda is not installed" in msg and "pip install numba-cuda" in msg
     assert "NUMBA_ENABLE_CUDASIM=1" in msg and "device='cpu'" in msg
+
+
+@pytest.mark.long  # the simulator: about 10 s of CPU
+@requires_numba_cuda
+def test_a_step_leaves_the_state_on_the_device(tmp_path):
+    """Stepping with nothing reading the host copy moves no whole state between host and
+    device (each round trip costs more than the step itself on a GPU: 9.4 M particles,
+    1.6 s a step with one, docs/fluid_cuda.md); reading ``Fluid.ps`` brings it back once,
+    and the next step sends it once."""
+    d = _worker(tmp_path / "transfers.npz", "transfers")
+    for integrator in ("symplectic", "verlet"):
+        assert d[f"transfers.{integrator}.steps"].tolist() == [0, 0], integrator  # [pulls, pushes]
+        assert d[f"transfers.{integrator}.read"].tolist() == [1, 0], integrator
 
 
 @pytest.mark.slow

@@ -27,11 +27,13 @@ re-initialisation (``mls_every``, fluid.mls).
 Not on the GPU yet, refused with the setting to change: ``precision="float32"`` (the
 CPU's float32 pair terms) and particle shifting (``shifting``, :mod:`fluid.shifting`), by
 :func:`check_config`; boundary-correction hooks other than
-the Adami walls and mDBC, at the first rate evaluation. A float32 variant of the GPU
+the Adami walls and mDBC, at the first rate evaluation; relaxation zones and absorbing
+walls (``Fluid.zones``, ``Fluid.controllers``: the near field), at the first step. A float32 variant of the GPU
 pair loop is not written: float64 is the GPU default and its reference, as on the CPU.
 
 Checked on numba's CUDA simulator against the CPU path, term for term (tests/test_fluid_cuda.py);
-every kernel compiles to PTX without a GPU (benchmarks/cuda_compile_check.py). What was
+every kernel compiles to PTX without a GPU (benchmarks/cuda_compile_check.py); the same
+comparisons pass on an NVIDIA H200 (benchmarks/gpu_session.sh). What was
 checked and to what tolerance, device memory per particle and the costs outside the
 kernels: docs/fluid_cuda.md.
 """
