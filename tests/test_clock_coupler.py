@@ -90,6 +90,15 @@ def test_a_fixed_step_is_the_step_used_or_refused_and_every_other_step_is_counte
     assert s["dt_mean_s"] == pytest.approx(0.03 / 6, rel=1e-12)
 
 
+def test_fluid_steps_is_a_whole_number_and_needs_a_fluid():
+    for bad in (0, -1, 1.5, True, "2"):
+        with pytest.raises(InputError, match=r"fluid_steps must be a whole number .* 1 or more; got"):
+            Coupler([Recorder()], fluid_steps=bad)
+    with pytest.raises(ConfigurationError, match=r"fluid_steps > 1 .* this coupler has none; leave fluid_steps at 1"):
+        Coupler([Recorder()], fluid_steps=4)
+    assert Coupler([Recorder()], fluid_steps=1).fluid_steps == 1
+
+
 def test_checkpoint_restores_clock_and_participants():
     p = Recorder(max_dt=0.1)
     c = Coupler([p])

@@ -123,6 +123,38 @@ def test_floating_heave_period_quick():
     assert 0.02 < m["damping_ratio"] < 0.5  # it radiates waves: damped, not overdamped
 
 
+def _heave_period(fluid_steps: int) -> tuple[float, float, int, int]:
+    """floating-heave-period's quick scene with ``coupling.fluid_steps``: the fitted natural
+    period [s], the case's reference period [s], the exchanges and the fluid's steps."""
+    from cosim.validations import case_scene
+    from cosim.validations.floating import HEAVE_BOX, RHO, G, added_mass_rectangle_2d, fit_decay, heave_scene
+
+    scene, _ = heave_scene(True)
+    width, height, rho_b = HEAVE_BOX
+    m = rho_b * width * height
+    t_ref = 2 * math.pi * math.sqrt((m + added_mass_rectangle_2d(width, rho_b / RHO * height)) / (RHO * G * width))
+    with case_scene.built(scene.with_values([f"coupling.fluid_steps={fluid_steps}"])) as b:
+        t, z = [0.0], [b.bodies.kinematics().com[0, 2]]
+        b.coupler.run(1.0, callback=lambda i: (t.append(i.t), z.append(b.bodies.kinematics().com[0, 2])))
+        exchanges, steps = b.coupler.steps, b.fluid.fluid.counters.steps
+    *_, w, _ = fit_decay(np.array(t), np.array(z))
+    return 2 * math.pi / w, t_ref, exchanges, steps
+
+
+@pytest.mark.long
+def test_a_box_exchanging_every_fourth_fluid_step_keeps_its_heave_period():
+    """coupling.fluid_steps = 4 on floating-heave-period's quick scene: the fluid takes four
+    (or more) of its steps per exchange, and the box's natural period stays within the
+    case's 10 % of the hydrostatic + DNV added-mass period, and within 1 % of the period
+    with an exchange every step."""
+    t1, t_ref, ex1, steps1 = _heave_period(1)
+    t4, _, ex4, steps4 = _heave_period(4)
+    assert ex1 == steps1
+    assert steps4 >= 4 * ex4 - 4  # but where an output time cut an exchange short
+    assert abs(t4 / t_ref - 1) < 0.10
+    assert abs(t4 / t1 - 1) < 0.01, (t1, t4)
+
+
 def test_sinking_cylinder_reference_starts_at_the_impulsive_acceleration():
     """At release the model's acceleration is (rho_c - rho/2) / (rho_c + rho/2) g."""
     from cosim.validations.floating import sinking_cylinder_reference

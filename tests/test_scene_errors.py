@@ -1136,6 +1136,11 @@ CASES = [
          "is found", "Scene.probes.gauges[0]"),
     case("a coupling step longer than the run", "analytic", ("coupling.dt", 20.0), "coupling.dt",
          "20 s is longer than the run (10 s)", "Scene.coupling.dt"),
+    case("fluid steps per exchange without an SPH fluid", "analytic", ("coupling.fluid_steps", 4),
+         "coupling.fluid_steps", "this scene has no SPH fluid: leave coupling.fluid_steps out (1)",
+         "Scene.coupling.fluid_steps"),
+    case("fluid steps per exchange of none", "flume", ("coupling.fluid_steps", 0), "coupling.fluid_steps",
+         "0 is out of range; give a whole number from 1 to 100", "Coupling.fluid_steps"),
     case("a paddle stroke beyond the flume", "flume", ("waves.period", 100.0), "waves.period",
          "waves of 0.04 m at 100 s in 0.3 m of water need a paddle stroke of 3.64 m (linear wavemaker theory): the "
          "paddle would sweep 1.82 m into the flume", "Scene.waves.period"),

@@ -707,7 +707,8 @@ def build(scene, workdir: Path) -> Built:
         out.coupler = Coupler(others, dt=scene.coupling.dt)
     else:
         out.coupler = Coupler(bodies=out.bodies, fluid=out.fluid, moorings=moorings, dt=scene.coupling.dt,
-                              scheme=scheme, light_body=scene.coupling.light_body, lines=scene.coupling.lines)
+                              scheme=scheme, light_body=scene.coupling.light_body, lines=scene.coupling.lines,
+                              fluid_steps=scene.coupling.fluid_steps)
     _initialize(scene, out.coupler)
     if isinstance(scene.fluid, SPH) and out.bodies is not None:
         out.sph = out.fluid.fluid

@@ -97,6 +97,10 @@ def check_scene(s) -> None:
         _check_potential(s, dim)
     if s.coupling.scheme == "fluid-first" and not isinstance(s.fluid, SPH):
         raise SceneError("coupling.scheme", "'fluid-first' needs the SPH fluid (the loads it exchanged); use 'auto'")
+    if s.coupling.fluid_steps > 1 and not (isinstance(s.fluid, SPH) and s.bodies):
+        raise SceneError("coupling.fluid_steps", "sub-cycles the SPH fluid between its exchanges with the bodies; "
+                         "this scene has " + ("no bodies" if isinstance(s.fluid, SPH) else "no SPH fluid")
+                         + ": leave coupling.fluid_steps out (1)")
     if s.coupling.dt is not None and s.coupling.dt > s.world.duration:
         raise SceneError("coupling.dt", f"{s.coupling.dt:g} s is longer than the run ({s.world.duration:g} s); give "
                          f"a step of at most world.duration, or leave coupling.dt out (the participants' stable step)")

@@ -1324,6 +1324,11 @@ class Coupling(Spec):
                     "the output intervals (world.sample_every, snapshot_every with particles, checkpoint_every) and is "
                     "not above any participant's stable step at the start, else it is refused; summary.json's "
                     "coupling counts every step by what set it", "s", lo=0, lo_open=True)
+    fluid_steps: int = whole(1, "the SPH fluid's stable steps per exchange with the bodies and lines (1: each step): "
+                             "above 1 the fluid sub-steps across an exchange, the bodies' particles moving with the "
+                             "bodies' motion at its start and the bodies taking the impulse the fluid exchanged; it "
+                             "saves the exchange's own work where that is a large part of a step (small scenes), for "
+                             "a lag of (fluid_steps - 1) / 2 fluid steps in the bodies' motion", lo=1, hi=100)
     body_timestep: float = num(1e-3, "MuJoCo's largest step", "s", lo=0, lo_open=True)
 
 
