@@ -173,7 +173,7 @@ def test_the_quick_floating_box_case_runs_and_judges_its_targets():
     0.02 m, 5 s). What the case found holds: the flume's wave at the body within 2 % of the
     nominal height the near field imposes, the box's heave and surge per incident height
     within the 5 % of the target, on under half the flume's particles
-    (docs/validation/nearfield.md has the figures, the cost's among them: 0.323 of the flume's
+    (docs/validation/nearfield.md has the figures, the cost's among them: 0.320 of the flume's
     CPU, the box exchanging every fourth fluid step; a ratio of CPU times, not asserted)."""
     from cosim import validation
 
