@@ -262,24 +262,27 @@ def _same_outputs(a: Path, b: Path):
 
 
 @pytest.mark.long
-def test_a_run_interrupted_between_checkpoints_resumes_bit_for_bit(tmp_path, monkeypatch):
+@pytest.mark.parametrize("fluid_steps", [1, 4])
+def test_a_run_interrupted_between_checkpoints_resumes_bit_for_bit(fluid_steps, tmp_path, monkeypatch):
     """The main example, interrupted mid-step far from any event with checkpoints written
     by wall time, resumes to the outputs of the run never interrupted (and never
-    checkpointed) exactly; by default a run writes its last state."""
+    checkpointed) exactly, exchanging every step or every fourth fluid step
+    (``coupling.fluid_steps``); by default a run writes its last state."""
     from cosim.coupler import Coupler
 
-    whole = _short(0.1, "world.checkpoint_wall=0").run(tmp_path / "whole", progress=False)
+    whole = _short(0.1, "world.checkpoint_wall=0", f"coupling.fluid_steps={fluid_steps}").run(
+        tmp_path / "whole", progress=False)
     assert whole.summary["checkpoints"]["written"] == 0 and not (tmp_path / "whole" / "checkpoint.h5").exists()
     from cosim.scene import runner
 
     share = runner.CHECKPOINT_SHARE
     monkeypatch.setattr(runner, "CHECKPOINT_SHARE", 1.0)  # writing may take all the time: one every other step
-    scene = _short(0.1, "world.checkpoint_wall=1e-6")
+    scene = _short(0.1, "world.checkpoint_wall=1e-6", f"coupling.fluid_steps={fluid_steps}")
     step, n = Coupler.step, {"steps": 0}
 
     def interrupted(self, *a, **k):
         n["steps"] += 1
-        if n["steps"] == 61:
+        if n["steps"] == 61 // fluid_steps:
             raise KeyboardInterrupt
         return step(self, *a, **k)
 
