@@ -79,23 +79,22 @@ def main() -> None:
     cfg, ps = tp.build(a.case, a.dp, a.integrator)
     f = Fluid(cfg, ps)
     f.initialize(0.0)
-    f.step(f.max_dt())  # compiles
-    cuda.synchronize()
-    t = time.perf_counter()
-    for _ in range(a.steps):
-        f.step(f.max_dt())
-    cuda.synchronize()
-    plain = (time.perf_counter() - t) / a.steps
+
+    def seconds_a_step() -> float:
+        f.step(f.max_dt())  # compiles (the first time), or the timed launchers' first calls
+        times.clear()
+        counts.clear()
+        cuda.synchronize()
+        t = time.perf_counter()
+        for _ in range(a.steps):
+            f.step(f.max_dt())
+        cuda.synchronize()
+        return (time.perf_counter() - t) / a.steps
+
     times, counts = defaultdict(float), defaultdict(int)
+    plain = seconds_a_step()
     time_kernels(times, counts)
-    f.step(f.max_dt())  # the timed launchers' first calls
-    times.clear()
-    counts.clear()
-    t = time.perf_counter()
-    for _ in range(a.steps):
-        f.step(f.max_dt())
-    cuda.synchronize()
-    synced = (time.perf_counter() - t) / a.steps
+    synced = seconds_a_step()
     n = f.device_memory["particles"]
     print(f"case={a.case} dp={a.dp} particles={n} integrator={a.integrator} steps={a.steps} "
           f"ms_per_step={1e3 * plain:.3f} (synchronised per kernel: {1e3 * synced:.3f}) "
