@@ -763,10 +763,7 @@ class Fluid:
         self.counters.steps += 1
         self.t += dt
         self._place_prescribed(self.t)
-        for zone in self.zones:  # self.ps only where a zone needs it: on a GPU, reading it brings the state back
-            ps = self.ps
-            zone.apply(ps.pos, ps.vel, ps.kind, self.t, dt, self._aux["vel"] if self.config.integrator == "verlet"
-                       else None)
+        self._apply_zones(dt)
         self._check_finite()
         self._sort()
         if self.config.mls_every and self.counters.steps % self.config.mls_every == 0:
@@ -774,6 +771,14 @@ class Fluid:
         self._rates()
         for control in self.controllers:  # on the sorted particles and their rates: the next step's motion
             control.update(self, self.t, dt)
+
+    def _apply_zones(self, dt: float) -> None:
+        """Relax the fluid in :attr:`zones` over the step ``dt`` [s] that ended now (Verlet's
+        n-1 velocity alike)."""
+        for zone in self.zones:
+            ps = self.ps
+            zone.apply(ps.pos, ps.vel, ps.kind, self.t, dt, self._aux["vel"] if self.config.integrator == "verlet"
+                       else None)
 
     def _reinitialise_density(self) -> None:
         """Fluid densities from the MLS interpolation (fluid.mls). Verlet's n-1 density is

@@ -161,15 +161,17 @@ def box_mdbc(ps, group: int, lo, hi, config: dict):
     return m
 
 
-def run_case(tag: str, ps, config: dict, steps: int = 5, body=None, motion=None, hook=None):
+def run_case(tag: str, ps, config: dict, steps: int = 5, body=None, motion=None, hook=None, zones=()):
     """Initialise the case on both paths (the first pair loop), step once, then to
     ``steps`` (recorded as the stage "last"; 5 pass a density re-initialisation every 3 or
     4 steps and a Verlet reset every 4); with ``body = (group, velocity)`` the body's
     particles are placed before every step (positions at the step's time, as the coupler places them); ``motion =
     (group, motion)`` a prescribed wall motion; ``hook()`` a boundary correction made for
-    each path, run after the fluid's own."""
+    each path, run after the fluid's own; ``zones`` relaxation zones (fluid.relaxation.Slab)."""
     cpu = Fluid(FluidConfig(**config), ps)
     gpu = Fluid(FluidConfig(device="cuda", **config), ps)
+    for f in (cpu, gpu):
+        f.zones = list(zones)
     if hook is not None:
         for f in (cpu, gpu):
             own, new = f.boundary_correction, hook()
@@ -283,6 +285,38 @@ def _body2d():
              hook=lambda: box_mdbc(body, 1, (0.075, 0.04), (0.125, 0.08), cfg))
 
 
+def sea_zones(dim: int, heading: float):
+    """Two relaxation zones across a water column 0.1 m (2-D) or 0.08 m (3-D) deep: towards a
+    linear regular wave fading in over 0.2 s with its return current (from x = 0.03 m down
+    to 0) and towards rest (from x = 0.03 m up to 0.06 m), each over part of the column."""
+    from fluid.nearfield import sea_velocity
+    from fluid.relaxation import Slab
+    from fluid.waves import RegularWave
+
+    depth = 0.1 if dim == 2 else 0.08
+    sea = RegularWave(0.01, 0.5, depth, direction=heading, ramp=0.2, level=depth)
+    return (Slab(0, 0.03, 0.0, 30.0, sea_velocity(sea)), Slab(0, 0.03, 0.06, 10.0, None))
+
+
+def near_field_scene() -> None:
+    """A 2-D near field (relaxation zones towards a linear regular wave, end walls on its
+    orbits) round a floating box, dx = 0.05 m, four steps, on both paths: the box's heave,
+    surge and pitch."""
+    import tempfile
+
+    from cosim.scene import SPH, Box, NearField, RegularWaves, Scene, World
+
+    for device in ("cpu", "cuda"):
+        scene = Scene(name="gpu_near_field", world=World(dim=2, duration=0.004, sample_every=0.002),
+                      fluid=SPH(dx=0.05, device=device), domain=NearField(depth=0.3),
+                      waves=RegularWaves(height=0.04, period=1.0, depth=0.3),
+                      bodies=[Box("box", size=(0.2, 0.1), density=500.0, pos=(1.2,), place="floating")])
+        with tempfile.TemporaryDirectory() as d:
+            r = scene.run(d, progress=False)
+            for k in ("box.surge", "box.heave", "box.pitch"):
+                OUT[f"near.{device}.{k}"] = np.asarray(r[k], float)
+
+
 #: what the worker runs, by name: the cases, and the NaN guard. Gravity tilted off -z (tilt*):
 #: the Fourtakas diffusion's hydrostatic part along g, Adami walls in 2-D
 PARTS = {
@@ -297,6 +331,12 @@ PARTS = {
                                dict(dim=3, dx=0.02, c0=20.0, g=(1.5, -1.0, -9.6))),
     "groups2d": lambda: run_case("groups2d", many_groups(disturbed(dam_2d(), 0.01, 7)),
                                  dict(dim=2, dx=0.01, c0=20.0, domain_lo=(-0.05, -0.05), domain_hi=(0.25, 0.2))),
+    "zones2d": lambda: run_case("zones2d", disturbed(dam_2d(), 0.01, 8),
+                                dict(dim=2, dx=0.01, c0=20.0, integrator="verlet", verlet_reset=4,
+                                     domain_lo=(-0.05, -0.05), domain_hi=(0.25, 0.2)), zones=sea_zones(2, 0.0)),
+    "zones3d": lambda: run_case("zones3d", disturbed(column_3d(), 0.02, 9), dict(dim=3, dx=0.02, c0=20.0),
+                                zones=sea_zones(3, 30.0)),
+    "near": near_field_scene,
     "nan": nan_guard,
     "transfers": transfers,
 }

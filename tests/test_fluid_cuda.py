@@ -23,6 +23,9 @@ Skipped, with the reason, where numba-cuda is not installed. Each starts from a 
   the renormalised (Antuono) diffusion, XSPH, symplectic.
 * ``groups2d``: the dam break with its walls in 20 groups, more than a block sums in
   shared memory (``fluid.cuda.kernels.GROUPS_SHARED``).
+* ``zones2d``, ``zones3d``: the dam break (Verlet, its n-1 velocity relaxed too) and the
+  column (symplectic) with two relaxation zones over the water, one towards a linear wave
+  fading in with its return current (heading 0 and 30 deg), one towards rest.
 * ``tilt2d``, ``tilt3d``: the dam break with Adami walls and the column, under gravity
   tilted off -z (g = (2.5, -9.5) and (1.5, -1.0, -9.6) m/s^2): the Fourtakas diffusion's
   hydrostatic part taken along g.
@@ -59,7 +62,7 @@ requires_numba_cuda = pytest.mark.skipif(not HAVE_NUMBA_CUDA,
 
 WORKER = Path(__file__).with_name("cuda_sim_worker.py")
 RTOL = 1e-10
-CASES = ("dam2d", "body2d", "col3d", "tilt2d", "tilt3d", "groups2d")
+CASES = ("dam2d", "body2d", "col3d", "tilt2d", "tilt3d", "groups2d", "zones2d", "zones3d")
 STAGES = ("loop", "step1", "last")
 FIELDS = ("acc", "drho", "disp", "vel", "rho", "F", "M", "bforce")
 
@@ -193,6 +196,20 @@ def test_a_step_leaves_the_state_on_the_device(tmp_path):
     for integrator in ("symplectic", "verlet"):
         assert d[f"transfers.{integrator}.steps"].tolist() == [0, 0], integrator  # [pulls, pushes]
         assert d[f"transfers.{integrator}.read"].tolist() == [1, 0], integrator
+
+
+@pytest.mark.long  # the simulator: about 10 s of CPU
+@requires_numba_cuda
+def test_a_near_field_scene_moves_its_body_as_on_the_cpu(tmp_path):
+    """A 2-D near field (its zones towards a linear wave on the GPU, k_relax) round a floating
+    box, four steps on each path: the box's heave within RTOL of its largest value, surge
+    and pitch within 1e-12 m and deg."""
+    d = _worker(tmp_path / "near.npz", "near")
+    cpu, gpu = d["near.cpu.box.heave"], d["near.cuda.box.heave"]
+    assert np.abs(cpu).max() > 1e-6  # [m] it moved
+    assert np.abs(cpu - gpu).max() <= RTOL * np.abs(cpu).max()
+    for q in ("surge", "pitch"):
+        assert np.abs(d[f"near.cpu.box.{q}"] - d[f"near.cuda.box.{q}"]).max() <= 1e-12
 
 
 @pytest.mark.slow

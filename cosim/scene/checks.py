@@ -624,6 +624,26 @@ def _check_near_field(s, dim):
     if s.probes.pressure:
         raise SceneError("probes.pressure", "a near field's walls are not a structure: its wall-pressure patches "
                          "would read its moving end walls; read the bodies' loads instead")
+    if isinstance(s.fluid, SPH) and s.fluid.device == "cuda":
+        _check_near_field_on_gpu(s)
+
+
+def _check_near_field_on_gpu(s) -> None:
+    """What a near field asks of the GPU path (fluid.cuda): its zones relaxed towards a linear
+    sea summed at each particle, and end walls that only follow the sea's orbits."""
+    from cosim.scene.build import incident_sea
+    from fluid.sea_tables import tabulable
+
+    if s.domain.absorbing_walls:
+        raise SceneError("domain.absorbing_walls", "the absorbing end walls read the fluid every step on the CPU: "
+                         "with fluid.device = \"cuda\" leave them out (walls on the sea's orbits), or run on the CPU")
+    sea = incident_sea(s)
+    if not sea.linear:
+        raise SceneError("waves", "the GPU path relaxes the near field's zones towards a linear sea: with "
+                         "fluid.device = \"cuda\" give linear waves (theory = \"linear\"), or run on the CPU")
+    if tabulable(sea):
+        raise SceneError("waves", f"a sea of {len(sea._comp.omega)} components is read from a table on the CPU: "
+                         f"with fluid.device = \"cuda\" give a regular wave, or run on the CPU")
 
 
 def _check_symmetric(s):

@@ -22,13 +22,17 @@ NaN guard (the CPU path's message), particles leaving the domain, the group load
 the device, boundary particles placed by id (bodies, prescribed motions), and the
 bodies' mDBC densities (fluid.boundary_correction, the hook cosim.sph_fluid sets; its
 diagnostic ``MDBC.low_order`` is not filled on the GPU), the MLS density
-re-initialisation (``mls_every``, fluid.mls).
+re-initialisation (``mls_every``, fluid.mls), and the relaxation zones
+(``Fluid.zones``: fluid.relaxation's slabs towards rest, or towards a linear sea summed at
+each particle as fluid.nearfield.SeaVelocity does, with its return current): a flume's
+absorbing zone, a near field's zones.
 
 Not on the GPU yet, refused with the setting to change: ``precision="float32"`` (the
 CPU's float32 pair terms) and particle shifting (``shifting``, :mod:`fluid.shifting`), by
 :func:`check_config`; boundary-correction hooks other than
-the Adami walls and mDBC, at the first rate evaluation; relaxation zones and absorbing
-walls (``Fluid.zones``, ``Fluid.controllers``: the near field), at the first step. A float32 variant of the GPU
+the Adami walls and mDBC, at the first rate evaluation; controllers that read the fluid
+(``Fluid.controllers``: a near field's absorbing end walls) and zones towards a tabulated
+or Stokes-2 sea, at the first step (a scene refuses them before any work). A float32 variant of the GPU
 pair loop is not written: float64 is the GPU default and its reference, as on the CPU.
 
 Checked on numba's CUDA simulator against the CPU path, term for term (tests/test_fluid_cuda.py);

@@ -30,6 +30,7 @@ from fluid.integrator import step_limit
 from fluid.kernels import alpha_d
 from fluid.particles import Kind
 from fluid.boundary_correction import MDBC
+from fluid.relaxation import Slab
 from fluid.wall_density import AdamiWalls
 from fluid.solver import Fluid
 
@@ -134,9 +135,11 @@ class CudaFluid(Fluid):
     # ------------------------------------------------------------------ the step
     def step(self, dt: float):
         c = self.config
-        if self.zones or self.controllers:
-            raise InputError("fluid: relaxation zones and absorbing walls (Fluid.zones, Fluid.controllers) run on the "
-                             "CPU only; use device='cpu'")
+        if self.controllers:
+            raise InputError("fluid: controllers of prescribed motions that read the fluid (Fluid.controllers: the "
+                             "absorbing end walls) run on the CPU only; use device='cpu'")
+        for i, zone in enumerate(self.zones):
+            _zone_on_device(zone, i)
         dev = self._to_device()
         if c.integrator == "verlet":
             loads = self._group_sums()
@@ -262,10 +265,43 @@ class CudaFluid(Fluid):
         if self._limit is not None:
             self._stale = True
 
+    def _apply_zones(self, dt: float) -> None:
+        dev = self._to_device()
+        verlet = self.config.integrator == "verlet"
+        for i, zone in enumerate(self.zones):
+            target = _zone_on_device(zone, i)
+            if target is None:
+                dev.relax(zone.axis, zone.inner, zone.outer, zone.rate, dt, verlet, self.t)
+                continue
+            current = target._current(self.t) if target.back is not None else None
+            wall = target.wall.rate if target.wall is not None else 0.0
+            dev.relax(zone.axis, zone.inner, zone.outer, zone.rate, dt, verlet, self.t, target.sea, current, wall)
+
     def _reinitialise_density(self) -> None:
         c = self.config
         self._to_device().reinitialise_density(self._kernel, alpha_d(self._kernel, c.dim, c.h), c.h,
                                                mls.MIN_SCALED_DET)
+
+
+def _zone_on_device(zone, i: int):
+    """The target of relaxation zone ``i`` as the GPU relaxes it: None (rest) or a
+    ``fluid.nearfield.SeaVelocity`` of a linear sea read directly; any other zone is
+    refused, saying which and what to change."""
+    from fluid.nearfield import SeaVelocity
+
+    if not isinstance(zone, Slab):
+        raise InputError(f"fluid: relaxation zone {i} is a {type(zone).__name__}; the GPU relaxes fluid.relaxation."
+                         f"Slab zones only; use device='cpu'")
+    target = zone.target
+    if target is None:
+        return None
+    if isinstance(target, SeaVelocity) and target.table is None and target.sea.linear:
+        return target
+    what = ("a tabulated sea" if isinstance(target, SeaVelocity) and target.table is not None else
+            "a sea beyond linear theory (Stokes-2)" if isinstance(target, SeaVelocity) else
+            f"a {type(target).__name__}")
+    raise InputError(f"fluid: relaxation zone {i} relaxes towards {what}; the GPU relaxes towards rest or a linear "
+                     f"sea read directly; use device='cpu'")
 
 
 def _hooks(hook) -> list:

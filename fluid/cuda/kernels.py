@@ -26,6 +26,9 @@ to round-off in float64. A new term is written there once and called here as
   ``fluid.wall_density.adami_wall_density``; :func:`k_mdbc` is
   ``fluid.boundary_correction.mdbc_density``; :func:`k_mls` is ``fluid.mls.mls_density``
   (these three walk whole rows of cells, as their CPU functions do).
+* :func:`k_relax` is ``fluid.relaxation.Slab.apply`` towards rest (``_damp_to_rest``) or
+  a linear sea (``fluid.nearfield._relax_to_sea``), its weight and the sea's sums compiled
+  from the CPU's own functions (:func:`_device`).
 * :func:`k_predictor`, :func:`k_corrector`, :func:`k_verlet` are those of
   ``fluid.integrator``, from the same terms (``fluid.terms.predictor_density`` ...);
   :func:`d_block_max3` (in the pair loop) its ``_bounds``; :func:`k_first_non_finite` its
@@ -39,12 +42,13 @@ the first ``n`` columns hold particles.
 from __future__ import annotations
 
 import math
+import types
 
 import numpy as np
 from numba import cuda
 
 from fluid import equations as eq
-from fluid import neighbours, terms
+from fluid import neighbours, relaxation, terms, waves
 from fluid.wall_density import SW_MIN
 
 #: threads per block of every kernel
@@ -540,6 +544,72 @@ def k_damp(V, Vaux, kind, n, factor):
             V[k, i] *= factor
             if Vaux.shape[1] > 0:
                 Vaux[k, i] *= factor
+
+
+# ------------------------------------------------------------------ relaxation zones
+def _device(fn, **calls):
+    """The numba CPU function ``fn`` compiled as a device function from its Python code, the
+    numba functions it calls replaced by ``calls`` (their device versions)."""
+    py = fn.py_func
+    scope = dict(py.__globals__)
+    scope.update(calls)
+    return cuda.jit(device=True)(types.FunctionType(py.__code__, scope, py.__name__, py.__defaults__,
+                                                    py.__closure__))
+
+
+#: the slab's weight (Jacobsen et al. 2012, Eq. 5) and the linear sea's sums at a point, from
+#: the CPU's code (fluid.relaxation._weight, fluid.waves.point_sums and its fade-in)
+d_zone_weight = _device(relaxation._weight)
+d_point_sums = _device(waves.point_sums, _fade_at=_device(waves._fade_at))
+
+
+@cuda.jit(device=True)
+def d_relax_col(V, i, vx, vy, vz, f, three):
+    """``V[:, i] <- vt + (V[:, i] - vt) f`` (fluid.nearfield._relax_row)."""
+    V[0, i] = vx + (V[0, i] - vx) * f
+    if three:
+        V[1, i] = vy + (V[1, i] - vy) * f
+    dim = V.shape[0]
+    V[dim - 1, i] = vz + (V[dim - 1, i] - vz) * f
+
+
+@cuda.jit
+def k_relax(P, V, X, use_x, kind, n, axis, x_in, inv, rate, dt, to_sea, t, e0, e1, level, depth, w, a, ph, k,
+            den, ap, s_ref, has_source, source, c_front, ramp, want, current, wall):
+    """A relaxation slab over a step ``dt`` [s] ending at ``t`` [s] (``fluid.relaxation.Slab``):
+    each fluid particle inside it (``chi > 0``, ``chi = (x - x_in) inv`` along ``axis``)
+    relaxed with the factor ``exp(-rate w(chi) dt)`` (``zone_factor``), towards rest
+    (``_damp_to_rest``) or, ``to_sea``, towards the linear sea's velocity at it plus the
+    return ``current`` (3,) and the end wall's rate ``wall`` along x
+    (``fluid.nearfield._relax_to_sea``, in its order); ``X`` (Verlet's n-1 velocity)
+    alike where ``use_x``."""
+    dim = P.shape[0]
+    three = dim == 3
+    fade = (has_source, source, c_front, ramp)
+    for i in range(cuda.grid(1), n, cuda.gridsize(1)):
+        if kind[i] != 0:
+            continue
+        chi = (P[axis, i] - x_in) * inv
+        if chi <= 0.0:
+            continue
+        f = math.exp(-rate * d_zone_weight(min(chi, 1.0)) * dt)
+        if not to_sea:
+            for d in range(dim):
+                V[d, i] *= f
+                if use_x:
+                    X[d, i] *= f
+            continue
+        s = P[0, i] * e0 + P[1, i] * e1 if three else P[0, i] * e0
+        zeta = min(max(P[dim - 1, i] - level, -depth), 0.0)
+        _, uh, wz, _, _, _, _, _ = d_point_sums(s, zeta, t, True, w, a, ph, k, depth, den, ap, s_ref, fade, want)
+        vx, vy, vz = uh * e0, uh * e1, wz
+        vx += current[0]
+        vy += current[1]
+        vz += current[2]
+        vx += wall
+        d_relax_col(V, i, vx, vy, vz, f, three)
+        if use_x:
+            d_relax_col(X, i, vx, vy, vz, f, three)
 
 
 # ------------------------------------------------------------------ reductions

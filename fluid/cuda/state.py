@@ -236,6 +236,43 @@ class DeviceState:
             K.k_place_one[K.launch(len(ids))](self.slot, cuda.to_device(np.ascontiguousarray(ids, np.int32)),
                                               cuda.to_device(np.ascontiguousarray(acc, np.float64)), self.accw)
 
+    def relax(self, axis: int, inner: float, outer: float, rate: float, dt: float, verlet: bool, t: float,
+              sea=None, current=None, wall: float = 0.0) -> None:
+        """A relaxation slab (``fluid.relaxation.Slab`` from ``inner`` to ``outer`` [m] along
+        ``axis``, ``rate`` [1/s]) over ``dt`` [s] ending at ``t`` [s], towards rest or the
+        linear ``sea``'s velocity (``fluid.waves.Sea``, read directly) plus the return
+        ``current`` (3,) [m/s] and the end wall's rate ``wall`` [m/s] along x; Verlet's n-1
+        velocity alike (``verlet``)."""
+        want, comps = self._sea_arrays(sea)
+        w, a, ph, k, den, ap = comps
+        has_source, source, c_front, ramp = sea._fade_args() if sea is not None else (False, 0.0, 1.0, 0.0)
+        e0, e1 = sea._heading2 if sea is not None else (1.0, 0.0)
+        cur = cuda.to_device(np.zeros(3) if current is None else np.asarray(current, np.float64))
+        K.k_relax[K.launch(self.n)](
+            self.a["P"], self.a["V"], self.a["aux_vel"] if verlet else self.zero_aux, verlet, self.a["kind"],
+            self.n, axis, float(inner), 1.0 / (outer - inner), float(rate), float(dt), sea is not None, float(t),
+            float(e0), float(e1), float(sea.level) if sea is not None else 0.0,
+            float(sea.depth) if sea is not None else 1.0, w, a, ph, k, den, ap,
+            float(sea._s_ref) if sea is not None else 0.0, has_source, source, c_front, ramp, want, cur, float(wall))
+
+    def _sea_arrays(self, sea):
+        """The device copies of ``sea``'s components and their factors
+        (``fluid.waves.component_factors``) and of the velocity rows ``point_sums`` is asked
+        for, kept for the fluid's life (one entry per sea; an empty set for rest)."""
+        from fluid.nearfield import _U_ONLY
+        from fluid.waves import component_factors
+
+        cache = self.__dict__.setdefault("_seas", {})
+        key = id(sea)
+        if key not in cache:
+            if sea is None:
+                comps = tuple(np.zeros(0) for _ in range(6))
+            else:
+                w, a, ph, k = (np.ascontiguousarray(v, np.float64) for v in sea._comp)
+                comps = (w, a, ph, k) + component_factors(a, k, float(sea.depth), float(sea.g))
+            cache[key] = (sea, cuda.to_device(_U_ONLY), tuple(cuda.to_device(c) for c in comps))
+        return cache[key][1:]
+
     def reinitialise_density(self, kernel: int, ad: float, h: float, min_det: float) -> None:
         """MLS densities of the fluid particles (fluid.mls; Fluid._reinitialise_density),
         into the sort's scratch array, then applied (Verlet's n-1 density shifted with them)."""
