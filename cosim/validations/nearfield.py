@@ -390,9 +390,9 @@ def nearfield_floating_box(quick: bool) -> dict:
     zones a quarter wavelength wide and the Verlet scheme given, the rest of the box chosen
     by ``fluid.nearfield.choose_box``), and the flume once more without the body, a gauge where
     it was: the incident wave it met. The scene's box exchanges with the fluid every fourth
-    fluid step (its ``coupling.fluid_steps``) in both runs. The flume's wave there is the piston's, carried along
-    the flume and its absorbing zone's small reflection: a per cent or two off the nominal
-    height the near field imposes.
+    fluid step (its ``coupling.fluid_steps``) in both runs. The flume's wave there is the
+    piston's, carried along the flume and its absorbing zone's small reflection: a per cent
+    or two off the nominal height the near field imposes.
     Judged on the amplitudes per incident height (a departure; the stated criterion, the
     amplitudes themselves, is measured beside it). Full: dx = 0.01 m, 10 s, window 5-10 s."""
     import tempfile

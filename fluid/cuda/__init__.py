@@ -32,8 +32,9 @@ CPU's float32 pair terms) and particle shifting (``shifting``, :mod:`fluid.shift
 :func:`check_config`; boundary-correction hooks other than
 the Adami walls and mDBC, at the first rate evaluation; controllers that read the fluid
 (``Fluid.controllers``: a near field's absorbing end walls) and zones towards a tabulated
-or Stokes-2 sea, at the first step (a scene refuses them before any work). A float32 variant of the GPU
-pair loop is not written: float64 is the GPU default and its reference, as on the CPU.
+or Stokes-2 sea, at the first step (a scene refuses them before any work). A float32
+variant of the GPU pair loop is not written: float64 is the GPU default and its
+reference, as on the CPU.
 
 Checked on numba's CUDA simulator against the CPU path, term for term (tests/test_fluid_cuda.py);
 every kernel compiles to PTX without a GPU (benchmarks/cuda_compile_check.py); the same
