@@ -336,7 +336,9 @@ def surface_elevation(fluid, gauges) -> np.ndarray:
     neither water nor bed under it. Located to dx/4, then solved to 1e-9 of that."""
     c = fluid.config
     g = _gauges(gauges, c.dim, "surface_elevation")
-    grid, start = _cells(fluid)
+    if fluid.limit is None:
+        raise InputError("probe: the fluid is not initialised; call fluid.initialize(t0) first")
+    grid = fluid._grid
     lo = np.asarray(grid.lo, np.float64)
     n_h = np.array(grid.shape)[[0, 1]] if c.dim == 3 else np.array([grid.shape[0]])
     hi = lo[:-1] + grid.cell * n_h
@@ -345,6 +347,10 @@ def surface_elevation(fluid, gauges) -> np.ndarray:
         i = int(np.argmax(bad))
         raise InputError(f"surface_elevation: gauge {g[i]} m lies outside the fluid's domain "
                          f"{lo[:-1]} .. {hi} m; move it inside")
+    on_device = getattr(fluid, "surface_on_device", None)
+    if on_device is not None:  # a GPU fluid reads it there (fluid.cuda): the state stays on the device
+        return on_device(g)
+    grid, start = _cells(fluid)
     ps = fluid.ps
     out = np.empty(g.shape[0])
     nx, ny, nz = grid.shape

@@ -695,6 +695,13 @@ class Fluid:
         if self._limit is not None:
             self._stale = True
 
+    @property
+    def cells_version(self):
+        """What identifies the current cell list: a new object after each sort (the sort's
+        ``start`` array here), for readers that keep what they read while the particles stay
+        as sorted (fluid.wall_absorption.StripReader)."""
+        return self._start
+
     def refresh_rates(self) -> None:
         """Take the rates (and the cell list) for the current placement of the boundary
         particles, if they were placed since the rates were last taken."""

@@ -69,9 +69,9 @@ class StripReader:
         as sorted (each sort makes a new cell list)."""
         fluid.refresh_rates()
         cells, eta = self._surface
-        if cells is not fluid._start:  # same package: the cell list the solver keeps sorted
+        if cells is not fluid.cells_version:
             eta = surface_elevation(fluid, self.gauges)
-            self._surface = (fluid._start, eta)
+            self._surface = (fluid.cells_version, eta)
         return eta
 
     def sea_elevation(self, t: float) -> np.ndarray:

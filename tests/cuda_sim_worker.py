@@ -300,21 +300,42 @@ def sea_zones(dim: int, heading: float):
 
 def near_field_scene() -> None:
     """A 2-D near field (relaxation zones towards a linear regular wave, end walls on its
-    orbits) round a floating box, dx = 0.05 m, four steps, on both paths: the box's heave,
-    surge and pitch."""
+    orbits, or absorbing ones) round a floating box, dx = 0.05 m, four steps, on both
+    paths: the box's heave, surge and pitch, and the gauges' elevations."""
     import tempfile
 
     from cosim.scene import SPH, Box, NearField, RegularWaves, Scene, World
 
-    for device in ("cpu", "cuda"):
-        scene = Scene(name="gpu_near_field", world=World(dim=2, duration=0.004, sample_every=0.002),
-                      fluid=SPH(dx=0.05, device=device), domain=NearField(depth=0.3),
-                      waves=RegularWaves(height=0.04, period=1.0, depth=0.3),
-                      bodies=[Box("box", size=(0.2, 0.1), density=500.0, pos=(1.2,), place="floating")])
-        with tempfile.TemporaryDirectory() as d:
-            r = scene.run(d, progress=False)
-            for k in ("box.surge", "box.heave", "box.pitch"):
-                OUT[f"near.{device}.{k}"] = np.asarray(r[k], float)
+    for walls in ("orbits", "absorbing"):
+        for device in ("cpu", "cuda"):
+            scene = Scene(name="gpu_near_field", world=World(dim=2, duration=0.004, sample_every=0.002),
+                          fluid=SPH(dx=0.05, device=device),
+                          domain=NearField(depth=0.3, absorbing_walls=walls == "absorbing"),
+                          waves=RegularWaves(height=0.04, period=1.0, depth=0.3),
+                          bodies=[Box("box", size=(0.2, 0.1), density=500.0, pos=(1.2,), place="floating")])
+            scene = scene.with_values(["probes.gauges=[0.8, 1.6]"])
+            with tempfile.TemporaryDirectory() as d:
+                r = scene.run(d, progress=False)
+                for k in ("box.surge", "box.heave", "box.pitch", "gauge1.eta", "gauge2.eta"):
+                    OUT[f"near.{walls}.{device}.{k}"] = np.asarray(r[k], float)
+
+
+def surfaces() -> None:
+    """The free surface's height at gauges across the dam break (2-D) and the column (3-D),
+    one of them dry, after two steps, read on both paths (fluid.probes.surface_elevation)."""
+    from fluid.probes import surface_elevation
+
+    for tag, ps, config, gauges in (
+            ("2d", disturbed(dam_2d(), 0.01, 10), dict(dim=2, dx=0.01, c0=20.0, domain_lo=(-0.05, -0.05),
+                                                          domain_hi=(0.25, 0.2)), [0.005, 0.024, 0.047, 0.12]),
+            ("3d", disturbed(column_3d(), 0.02, 11), dict(dim=3, dx=0.02, c0=20.0),
+             [[0.01, 0.01], [0.03, 0.02], [0.055, 0.035], [0.1, 0.02]])):
+        for device in ("cpu", "cuda"):
+            f = Fluid(FluidConfig(device=device, **config), ps)
+            f.initialize(0.0)
+            for _ in range(2):
+                f.step(f.max_dt())
+            OUT[f"surface.{tag}.{device}"] = surface_elevation(f, gauges)
 
 
 #: what the worker runs, by name: the cases, and the NaN guard. Gravity tilted off -z (tilt*):
@@ -337,6 +358,7 @@ PARTS = {
     "zones3d": lambda: run_case("zones3d", disturbed(column_3d(), 0.02, 9), dict(dim=3, dx=0.02, c0=20.0),
                                 zones=sea_zones(3, 30.0)),
     "near": near_field_scene,
+    "surface": surfaces,
     "nan": nan_guard,
     "transfers": transfers,
 }

@@ -200,16 +200,33 @@ def test_a_step_leaves_the_state_on_the_device(tmp_path):
 
 @pytest.mark.long  # the simulator: about 10 s of CPU
 @requires_numba_cuda
-def test_a_near_field_scene_moves_its_body_as_on_the_cpu(tmp_path):
-    """A 2-D near field (its zones towards a linear wave on the GPU, k_relax) round a floating
-    box, four steps on each path: the box's heave within RTOL of its largest value, surge
-    and pitch within 1e-12 m and deg."""
+@pytest.mark.parametrize("walls", ["orbits", "absorbing"])
+def test_a_near_field_scene_moves_its_body_as_on_the_cpu(walls, tmp_path):
+    """A 2-D near field (its zones towards a linear wave on the GPU, k_relax; its end walls on
+    the sea's orbits, or absorbing ones that read the surface on the device, k_surface)
+    round a floating box, four steps on each path: the box's heave and the gauges within
+    RTOL of their largest values, surge and pitch within 1e-12 m and deg."""
     d = _worker(tmp_path / "near.npz", "near")
-    cpu, gpu = d["near.cpu.box.heave"], d["near.cuda.box.heave"]
+    cpu, gpu = d[f"near.{walls}.cpu.box.heave"], d[f"near.{walls}.cuda.box.heave"]
     assert np.abs(cpu).max() > 1e-6  # [m] it moved
     assert np.abs(cpu - gpu).max() <= RTOL * np.abs(cpu).max()
+    for q in ("gauge1.eta", "gauge2.eta"):
+        a, b = d[f"near.{walls}.cpu.{q}"], d[f"near.{walls}.cuda.{q}"]
+        assert np.isfinite(a).all() and np.abs(a - b).max() <= RTOL * np.abs(a).max(), q
     for q in ("surge", "pitch"):
-        assert np.abs(d[f"near.cpu.box.{q}"] - d[f"near.cuda.box.{q}"]).max() <= 1e-12
+        assert np.abs(d[f"near.{walls}.cpu.box.{q}"] - d[f"near.{walls}.cuda.box.{q}"]).max() <= 1e-12
+
+
+@pytest.mark.long  # the simulator: about 10 s of CPU
+@requires_numba_cuda
+def test_the_free_surface_is_read_on_the_device_as_on_the_cpu(tmp_path):
+    """fluid.probes.surface_elevation on a GPU fluid (kernels.k_surface, one thread a gauge)
+    against the CPU's, 2-D and 3-D, a dry gauge among them: within 1e-12 m."""
+    d = _worker(tmp_path / "surface.npz", "surface")
+    for tag in ("2d", "3d"):
+        cpu, gpu = d[f"surface.{tag}.cpu"], d[f"surface.{tag}.cuda"]
+        assert np.isfinite(cpu).all(), cpu
+        assert np.abs(cpu - gpu).max() <= 1e-12, (tag, cpu, gpu)
 
 
 @pytest.mark.slow

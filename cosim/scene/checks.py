@@ -630,13 +630,10 @@ def _check_near_field(s, dim):
 
 def _check_near_field_on_gpu(s) -> None:
     """What a near field asks of the GPU path (fluid.cuda): its zones relaxed towards a linear
-    sea summed at each particle, and end walls that only follow the sea's orbits."""
+    sea summed at each particle."""
     from cosim.scene.build import incident_sea
     from fluid.sea_tables import tabulable
 
-    if s.domain.absorbing_walls:
-        raise SceneError("domain.absorbing_walls", "the absorbing end walls read the fluid every step on the CPU: "
-                         "with fluid.device = \"cuda\" leave them out (walls on the sea's orbits), or run on the CPU")
     sea = incident_sea(s)
     if not sea.linear:
         raise SceneError("waves", "the GPU path relaxes the near field's zones towards a linear sea: with "

@@ -25,14 +25,14 @@ diagnostic ``MDBC.low_order`` is not filled on the GPU), the MLS density
 re-initialisation (``mls_every``, fluid.mls), and the relaxation zones
 (``Fluid.zones``: fluid.relaxation's slabs towards rest, or towards a linear sea summed at
 each particle as fluid.nearfield.SeaVelocity does, with its return current): a flume's
-absorbing zone, a near field's zones.
+absorbing zone, a near field's zones; the free surface's height at gauges
+(fluid.probes.surface_elevation: wave gauges, the absorbing end walls' readings).
 
 Not on the GPU yet, refused with the setting to change: ``precision="float32"`` (the
 CPU's float32 pair terms) and particle shifting (``shifting``, :mod:`fluid.shifting`), by
 :func:`check_config`; boundary-correction hooks other than
-the Adami walls and mDBC, at the first rate evaluation; controllers that read the fluid
-(``Fluid.controllers``: a near field's absorbing end walls) and zones towards a tabulated
-or Stokes-2 sea, at the first step (a scene refuses them before any work). A float32
+the Adami walls and mDBC, at the first rate evaluation; zones towards a tabulated or
+Stokes-2 sea, at the first step (a scene refuses them before any work). A float32
 variant of the GPU pair loop is not written: float64 is the GPU default and its
 reference, as on the CPU.
 

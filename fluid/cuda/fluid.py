@@ -135,9 +135,6 @@ class CudaFluid(Fluid):
     # ------------------------------------------------------------------ the step
     def step(self, dt: float):
         c = self.config
-        if self.controllers:
-            raise InputError("fluid: controllers of prescribed motions that read the fluid (Fluid.controllers: the "
-                             "absorbing end walls) run on the CPU only; use device='cpu'")
         for i, zone in enumerate(self.zones):
             _zone_on_device(zone, i)
         dev = self._to_device()
@@ -172,6 +169,7 @@ class CudaFluid(Fluid):
             if not (self._kind_by_id[self._alive] == Kind.FLUID).any():
                 raise InstabilityError(f"fluid: every fluid particle has left the domain by t={self.t:.6g} s")
         dev.gather(n)
+        self.__dict__["_sorted"] = object()  # a new cell list (cells_version)
 
     def _rates(self):
         c = self.config
@@ -264,6 +262,17 @@ class CudaFluid(Fluid):
         self._to_device().place(ids, pos, vel)
         if self._limit is not None:
             self._stale = True
+
+    @property
+    def cells_version(self):
+        return self.__dict__.get("_sorted")
+
+    def surface_on_device(self, gauges: np.ndarray) -> np.ndarray:
+        """``fluid.probes.surface_elevation`` at ``gauges`` (M, 1) or (M, 2) [m], read on the
+        device (only the heights come back)."""
+        self.refresh_rates()
+        c = self.config
+        return self._to_device().surface(gauges, self._kernel, c.h, alpha_d(self._kernel, c.dim, c.h), 0.25 * c.dx)
 
     def _apply_zones(self, dt: float) -> None:
         dev = self._to_device()

@@ -28,7 +28,8 @@ to round-off in float64. A new term is written there once and called here as
   (these three walk whole rows of cells, as their CPU functions do).
 * :func:`k_relax` is ``fluid.relaxation.Slab.apply`` towards rest (``_damp_to_rest``) or
   a linear sea (``fluid.nearfield._relax_to_sea``), its weight and the sea's sums compiled
-  from the CPU's own functions (:func:`_device`).
+  from the CPU's own functions (:func:`_device`); :func:`k_surface` is
+  ``fluid.probes._surface`` (one thread a gauge, the candidates walked, not gathered).
 * :func:`k_predictor`, :func:`k_corrector`, :func:`k_verlet` are those of
   ``fluid.integrator``, from the same terms (``fluid.terms.predictor_density`` ...);
   :func:`d_block_max3` (in the pair loop) its ``_bounds``; :func:`k_first_non_finite` its
@@ -48,7 +49,7 @@ import numpy as np
 from numba import cuda
 
 from fluid import equations as eq
-from fluid import neighbours, relaxation, terms, waves
+from fluid import neighbours, probes, relaxation, terms, waves
 from fluid.wall_density import SW_MIN
 
 #: threads per block of every kernel
@@ -610,6 +611,89 @@ def k_relax(P, V, X, use_x, kind, n, axis, x_in, inv, rate, dt, to_sea, t, e0, e
         d_relax_col(V, i, vx, vy, vz, f, three)
         if use_x:
             d_relax_col(X, i, vx, vy, vz, f, three)
+
+
+# ------------------------------------------------------------------ free surface
+@cuda.jit(device=True)
+def d_walk_fraction(z, rows, arrays, unused, kernel, h, ad):
+    """``fluid.probes._fraction`` at height ``z`` [m] of a gauge's line, its candidates (the
+    fluid particles within 2h of the line) walked in the order ``_surface`` gathers them:
+    ``rows`` = (gx, gy, cx, cy, nx, ny, nz, reach, R2), ``arrays`` = (P, kind, mass, rho,
+    start)."""
+    gx, gy, cx, cy, nx, ny, nz, reach, R2 = rows
+    P, kind, mass, rho, start = arrays
+    three = P.shape[0] == 3
+    zc = P.shape[0] - 1
+    dys = 2 * reach + 1 if three else 1
+    c = 0.0
+    for cz in range(nz):
+        for k in range(dys):
+            dy = k - reach if three else 0
+            j0, j1 = row_range(cx, cy, cz, dy, 0, nx, ny, nz, start, reach)
+            for b in range(j0, j1):
+                rx = gx - P[0, b]
+                ry = gy - P[1, b] if three else 0.0
+                dh2 = rx * rx + ry * ry
+                if kind[b] == 0 and dh2 < R2:
+                    dz = z - P[zc, b]
+                    c += mass[b] / rho[b] * tm.kernel_w(kernel, math.sqrt(dh2 + dz * dz) / h, ad)
+    return c
+
+
+#: ``fluid.probes._crossing`` (Illinois false position) over :func:`d_walk_fraction`
+d_line_crossing = _device(probes._crossing, _fraction=d_walk_fraction)
+
+
+@cuda.jit
+def k_surface(G, P, kind, mass, rho, start, lo, inv_cell, nx, ny, nz, reach, kernel, h, ad, step, out):
+    """``fluid.probes._surface`` with one thread per gauge (``G`` (M, 2): x, and y in 3-D):
+    the highest z where the fluid fraction crosses 0.5 going down the gauge's line, else
+    the bed's surface (2 ``step`` above the highest boundary particle within 3 ``step`` of
+    the line), NaN where there is neither; ``lo`` the grid's corner (dim,)."""
+    three = P.shape[0] == 3
+    zc = P.shape[0] - 1
+    dys = 2 * reach + 1 if three else 1
+    R2 = 4.0 * h * h
+    B2 = 9.0 * step * step
+    arrays = (P, kind, mass, rho, start)
+    for a in range(cuda.grid(1), G.shape[0], cuda.gridsize(1)):
+        gx = G[a, 0]
+        gy = G[a, 1] if three else 0.0
+        cx, cy, cz0 = cell_coords(gx, gy, lo[zc], lo, inv_cell, three, nx, ny, nz)
+        n = 0
+        bed = -math.inf
+        z_top = -math.inf
+        z_bottom = math.inf
+        for cz in range(nz):
+            for k in range(dys):
+                dy = k - reach if three else 0
+                j0, j1 = row_range(cx, cy, cz, dy, 0, nx, ny, nz, start, reach)
+                for b in range(j0, j1):
+                    rx = gx - P[0, b]
+                    ry = gy - P[1, b] if three else 0.0
+                    r2 = rx * rx + ry * ry
+                    if kind[b] == 0:
+                        if r2 < R2:
+                            n += 1
+                            z_top = max(z_top, P[zc, b])
+                            z_bottom = min(z_bottom, P[zc, b])
+                    elif r2 <= B2 and P[zc, b] > bed:
+                        bed = P[zc, b]
+        dry = bed + 2.0 * step if bed > -math.inf else math.nan
+        out[a] = dry
+        if n == 0:
+            continue
+        rows = (gx, gy, cx, cy, nx, ny, nz, reach, R2)
+        z_hi = z_top + 2.0 * h
+        z_end = z_bottom - 2.0 * h
+        f_hi = -0.5
+        while z_hi > z_end:
+            z_lo = z_hi - step
+            f_lo = d_walk_fraction(z_lo, rows, arrays, 0.0, kernel, h, ad) - 0.5
+            if f_lo >= 0.0:
+                out[a] = d_line_crossing(z_lo, f_lo, z_hi, f_hi, rows, arrays, 0.0, kernel, h, ad, 1e-9 * step)
+                break
+            z_hi, f_hi = z_lo, f_lo
 
 
 # ------------------------------------------------------------------ reductions

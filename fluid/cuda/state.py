@@ -273,6 +273,18 @@ class DeviceState:
             cache[key] = (sea, cuda.to_device(_U_ONLY), tuple(cuda.to_device(c) for c in comps))
         return cache[key][1:]
 
+    def surface(self, gauges: np.ndarray, kernel: int, h: float, ad: float, step: float) -> np.ndarray:
+        """The free surface's height [m] at each gauge (M, 1) x or (M, 2) (x, y) [m]
+        (``fluid.probes.surface_elevation``), from the current cell list."""
+        g = self.grid
+        nx, ny, nz = g.shape
+        out = cuda.device_array(gauges.shape[0], np.float64)
+        K.k_surface[K.launch(gauges.shape[0])](cuda.to_device(np.ascontiguousarray(gauges, np.float64)),
+                                               self.a["P"], self.a["kind"], self.a["mass"], self.a["rho"],
+                                               self.start, self.lo, 1.0 / g.cell, nx, ny, nz, g.reach, kernel,
+                                               h, ad, step, out)
+        return out.copy_to_host()
+
     def reinitialise_density(self, kernel: int, ad: float, h: float, min_det: float) -> None:
         """MLS densities of the fluid particles (fluid.mls; Fluid._reinitialise_density),
         into the sort's scratch array, then applied (Verlet's n-1 density shifted with them)."""
