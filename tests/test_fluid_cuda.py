@@ -248,6 +248,9 @@ def test_a_coupled_scene_moves_its_body_as_on_the_cpu(tmp_path):
 def test_device_is_validated_with_a_clear_error():
     with pytest.raises(InputError, match="device='gpu'.*'cpu'.*'cuda'"):
         FluidConfig(c0=20.0, device="gpu")
+    with pytest.raises(InputError, match=r"symmetry_y=0.0 is not available with device='cuda'; leave symmetry_y "
+                                         r"unset .* fluid.mirror, are made on the CPU only"):
+        FluidConfig(dim=3, c0=20.0, device="cuda", symmetry_y=0.0)
     if "precision" in FluidConfig.__dataclass_fields__:  # the CPU's float32 pair terms
         with pytest.raises(InputError, match="precision='float32' is not available with device='cuda'"):
             FluidConfig(c0=20.0, device="cuda", precision="float32")

@@ -714,6 +714,9 @@ CASES = [
          "180 deg: the near field's end walls stand across x; give the sea along +x (0)", "Scene.waves.direction"),
     case("a near field's depth not the sea's", "nearfield", ("waves.depth", 0.4), "waves.depth",
          "0.4 m differs from the nearfield's still-water depth 0.3 m", "Scene.waves.depth"),
+    case("a near field on the GPU on a symmetry plane", "nearfield3d", ("fluid.device", "cuda"), "domain.symmetry",
+         "the symmetry plane's mirror images are made on the CPU only: with fluid.device = \"cuda\" simulate the "
+         "whole box", "Scene.domain.symmetry"),
     case("a near field on the GPU in Stokes-2 waves", "nearfield",
          (("fluid.device", "cuda"), ("waves.theory", "stokes2")), "waves",
          "the GPU path relaxes the near field's zones towards a linear sea", "Scene.waves"),

@@ -630,9 +630,13 @@ def _check_near_field(s, dim):
 
 def _check_near_field_on_gpu(s) -> None:
     """What a near field asks of the GPU path (fluid.cuda): its zones relaxed towards a linear
-    sea summed at each particle."""
+    sea summed at each particle, and no symmetry plane (its mirror images are the CPU's)."""
     from cosim.scene.build import incident_sea
     from fluid.sea_tables import tabulable
+
+    if s.domain.symmetry:
+        raise SceneError("domain.symmetry", "the symmetry plane's mirror images are made on the CPU only: with "
+                         "fluid.device = \"cuda\" simulate the whole box (leave symmetry out), or run on the CPU")
 
     sea = incident_sea(s)
     if not sea.linear:

@@ -29,7 +29,8 @@ absorbing zone, a near field's zones; the free surface's height at gauges
 (fluid.probes.surface_elevation: wave gauges, the absorbing end walls' readings).
 
 Not on the GPU yet, refused with the setting to change: ``precision="float32"`` (the
-CPU's float32 pair terms) and particle shifting (``shifting``, :mod:`fluid.shifting`), by
+CPU's float32 pair terms), a symmetry plane (``symmetry_y``: its mirror images, :mod:`fluid.mirror`)
+and particle shifting (``shifting``, :mod:`fluid.shifting`), by
 :func:`check_config`; boundary-correction hooks other than
 the Adami walls and mDBC, at the first rate evaluation; zones towards a tabulated or
 Stokes-2 sea, at the first step (a scene refuses them before any work). A float32
@@ -87,6 +88,9 @@ def check_config(config) -> None:
     bad = []
     if getattr(config, "precision", "float64") != "float64":
         bad.append((f"precision={config.precision!r}", "use precision='float64' (the GPU path's pair loop is float64)"))
+    if getattr(config, "symmetry_y", None) is not None:
+        bad.append((f"symmetry_y={config.symmetry_y!r}", "leave symmetry_y unset and simulate the whole domain (the "
+                    "symmetry plane's mirror images, fluid.mirror, are made on the CPU only)"))
     if getattr(config, "shifting", "none") != "none":
         bad.append((f"shifting={config.shifting!r}", "use shifting='none' (particle shifting, fluid.shifting, runs on "
                     "the CPU only)"))
