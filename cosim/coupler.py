@@ -85,24 +85,16 @@ class Coupler:
     ----------
     participants: participants with no data exchange (advanced last, in this order).
     bodies: the bodies participant (``bodies.MujocoBodies``), if the scene has bodies.
-    fluid:
-        A fluid that loads the bodies: besides the participant protocol it has
-        ``attach_bodies(bodies)``, ``set_body_kinematics(kinematics)``, ``body_wrenches()``.
+    fluid: a fluid that loads the bodies: a participant with ``attach_bodies(bodies)``,
+        ``set_body_kinematics(kinematics)`` and ``body_wrenches()``.
     moorings: :class:`MooringAttachment` records (or ``(mooring, sites)`` pairs).
     dt:
         Fixed coupling step [s]; ``None``: the participants' ``max_dt()`` and the lines'
         limit (:mod:`cosim.line_step`) decide. A step above a participant's stable step or the
         lines' limit at the start is refused (:class:`~cosim.errors.ConfigurationError` naming
         it, the limit and the fix); :meth:`step_summary` counts what set each step.
-    t0: start time [s].
-    fluid_steps:
-        The fluid's stable steps per exchange (1: every step is one). Above 1 the fluid's
-        ``max_dt()`` counts that many times over: it advances across the exchange in its own
-        stable steps (``Fluid.advance`` sub-steps), its bodies' particles moving with the
-        bodies' motion at the exchange, and the bodies take the impulse it exchanged over
-        them (fluid-first: momentum stays exact). What it saves is the exchange's own work
-        a step (the bodies, the lines, placing the bodies' particles); what it costs is the
-        bodies' motion held over those steps, a lag of (fluid_steps - 1) / 2 steps.
+    t0: start time [s]. ``fluid_steps``: the fluid's stable steps per exchange (1: each);
+        above 1 it sub-steps across an exchange with the bodies' motion held (docs/coupling.md).
     scheme:
         How body loads are taken over a step: ``"explicit"`` (the start loads held; adds
         energy, growth ~ (ω dt)²/4 per step, ω² = k/m), ``"predictor-corrector"`` (the mean of

@@ -22,26 +22,20 @@ NaN guard (the CPU path's message), particles leaving the domain, the group load
 the device, boundary particles placed by id (bodies, prescribed motions), and the
 bodies' mDBC densities (fluid.boundary_correction, the hook cosim.sph_fluid sets; its
 diagnostic ``MDBC.low_order`` is not filled on the GPU), the MLS density
-re-initialisation (``mls_every``, fluid.mls), and the relaxation zones
-(``Fluid.zones``: fluid.relaxation's slabs towards rest, or towards a linear sea summed at
-each particle as fluid.nearfield.SeaVelocity does, with its return current): a flume's
-absorbing zone, a near field's zones; the free surface's height at gauges
-(fluid.probes.surface_elevation: wave gauges, the absorbing end walls' readings).
+re-initialisation (``mls_every``, fluid.mls), the relaxation zones (``Fluid.zones``:
+towards rest, or a linear sea summed at each particle) and the free surface's height at
+gauges (fluid.probes.surface_elevation: wave gauges, absorbing end walls' readings).
 
 Not on the GPU yet, refused with the setting to change: ``precision="float32"`` (the
-CPU's float32 pair terms), a symmetry plane (``symmetry_y``: its mirror images, :mod:`fluid.mirror`)
-and particle shifting (``shifting``, :mod:`fluid.shifting`), by
-:func:`check_config`; boundary-correction hooks other than
-the Adami walls and mDBC, at the first rate evaluation; zones towards a tabulated or
-Stokes-2 sea, at the first step (a scene refuses them before any work). A float32
-variant of the GPU pair loop is not written: float64 is the GPU default and its
-reference, as on the CPU.
+CPU's float32 pair terms; float64 is the GPU's default and reference), a symmetry plane
+(``symmetry_y``: the mirror images of :mod:`fluid.mirror`) and particle shifting
+(:mod:`fluid.shifting`), by :func:`check_config`; boundary-correction hooks other than the
+Adami walls and mDBC, at the first rate evaluation; zones towards a tabulated or Stokes-2
+sea, at the first step (a scene refuses them before any work).
 
-Checked on numba's CUDA simulator against the CPU path, term for term (tests/test_fluid_cuda.py);
-every kernel compiles to PTX without a GPU (benchmarks/cuda_compile_check.py); the same
-comparisons pass on an NVIDIA H200 (benchmarks/gpu_session.sh). What was
-checked and to what tolerance, device memory per particle and the costs outside the
-kernels: docs/fluid_cuda.md.
+Checked against the CPU path, term for term, on numba's CUDA simulator
+(tests/test_fluid_cuda.py) and on an NVIDIA H200; to what tolerance, what is not yet run on
+a GPU, device memory and the costs outside the kernels: docs/fluid_cuda.md.
 """
 
 from __future__ import annotations

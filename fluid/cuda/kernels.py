@@ -26,10 +26,8 @@ to round-off in float64. A new term is written there once and called here as
   ``fluid.wall_density.adami_wall_density``; :func:`k_mdbc` is
   ``fluid.boundary_correction.mdbc_density``; :func:`k_mls` is ``fluid.mls.mls_density``
   (these three walk whole rows of cells, as their CPU functions do).
-* :func:`k_relax` is ``fluid.relaxation.Slab.apply`` towards rest (``_damp_to_rest``) or
-  a linear sea (``fluid.nearfield._relax_to_sea``), its weight and the sea's sums compiled
-  from the CPU's own functions (:func:`_device`); :func:`k_surface` is
-  ``fluid.probes._surface`` (one thread a gauge, the candidates walked, not gathered).
+* :func:`k_relax` is ``fluid.relaxation.Slab.apply`` (``fluid.nearfield._relax_to_sea``
+  towards a sea) and :func:`k_surface` ``fluid.probes._surface`` (a thread a gauge).
 * :func:`k_predictor`, :func:`k_corrector`, :func:`k_verlet` are those of
   ``fluid.integrator``, from the same terms (``fluid.terms.predictor_density`` ...);
   :func:`d_block_max3` (in the pair loop) its ``_bounds``; :func:`k_first_non_finite` its
