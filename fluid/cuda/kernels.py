@@ -613,17 +613,22 @@ def k_relax(P, V, X, use_x, kind, n, axis, x_in, inv, rate, dt, to_sea, t, e0, e
 
 # ------------------------------------------------------------------ free surface
 @cuda.jit(device=True)
-def d_walk_fraction(z, rows, arrays, unused, kernel, h, ad):
-    """``fluid.probes._fraction`` at height ``z`` [m] of a gauge's line, its candidates (the
-    fluid particles within 2h of the line) walked in the order ``_surface`` gathers them:
-    ``rows`` = (gx, gy, cx, cy, nx, ny, nz, reach, R2), ``arrays`` = (P, kind, mass, rho,
-    start)."""
+def d_line_walk(z, rows, arrays, kernel, h, ad, B2):
+    """One walk over a gauge's line in the order ``fluid.probes._surface`` gathers its
+    candidates: the fluid fraction at height ``z`` [m] (``_fraction``), the count of fluid
+    particles within 2h of the line and their highest and lowest z [m], and the top of the
+    boundary particles within ``sqrt(B2)`` of it (the bed); ``rows`` = (gx, gy, cx, cy, nx,
+    ny, nz, reach, R2), ``arrays`` = (P, kind, mass, rho, start)."""
     gx, gy, cx, cy, nx, ny, nz, reach, R2 = rows
     P, kind, mass, rho, start = arrays
     three = P.shape[0] == 3
     zc = P.shape[0] - 1
     dys = 2 * reach + 1 if three else 1
     c = 0.0
+    n = 0
+    bed = -math.inf
+    top = -math.inf
+    bottom = math.inf
     for cz in range(nz):
         for k in range(dys):
             dy = k - reach if three else 0
@@ -632,9 +637,24 @@ def d_walk_fraction(z, rows, arrays, unused, kernel, h, ad):
                 rx = gx - P[0, b]
                 ry = gy - P[1, b] if three else 0.0
                 dh2 = rx * rx + ry * ry
-                if kind[b] == 0 and dh2 < R2:
-                    dz = z - P[zc, b]
-                    c += mass[b] / rho[b] * tm.kernel_w(kernel, math.sqrt(dh2 + dz * dz) / h, ad)
+                zb = P[zc, b]
+                if kind[b] == 0:
+                    if dh2 < R2:
+                        n += 1
+                        top = max(top, zb)
+                        bottom = min(bottom, zb)
+                        dz = z - zb
+                        c += mass[b] / rho[b] * tm.kernel_w(kernel, math.sqrt(dh2 + dz * dz) / h, ad)
+                elif dh2 <= B2 and zb > bed:
+                    bed = zb
+    return c, n, bed, top, bottom
+
+
+@cuda.jit(device=True)
+def d_walk_fraction(z, rows, arrays, unused, kernel, h, ad):
+    """``fluid.probes._fraction`` at height ``z`` [m] of a gauge's line (:func:`d_line_walk`),
+    in ``_fraction``'s signature for :data:`d_line_crossing`."""
+    c, _, _, _, _ = d_line_walk(z, rows, arrays, kernel, h, ad, -1.0)
     return c
 
 
@@ -647,41 +667,21 @@ def k_surface(G, P, kind, mass, rho, start, lo, inv_cell, nx, ny, nz, reach, ker
     """``fluid.probes._surface`` with one thread per gauge (``G`` (M, 2): x, and y in 3-D):
     the highest z where the fluid fraction crosses 0.5 going down the gauge's line, else
     the bed's surface (2 ``step`` above the highest boundary particle within 3 ``step`` of
-    the line), NaN where there is neither; ``lo`` the grid's corner (dim,)."""
+    the line), NaN where there is neither; ``lo`` the grid's corner (dim,). The candidates
+    are walked in the cells' rows at each evaluation, not gathered (no arrays here)."""
     three = P.shape[0] == 3
     zc = P.shape[0] - 1
-    dys = 2 * reach + 1 if three else 1
     R2 = 4.0 * h * h
-    B2 = 9.0 * step * step
     arrays = (P, kind, mass, rho, start)
     for a in range(cuda.grid(1), G.shape[0], cuda.gridsize(1)):
         gx = G[a, 0]
         gy = G[a, 1] if three else 0.0
         cx, cy, cz0 = cell_coords(gx, gy, lo[zc], lo, inv_cell, three, nx, ny, nz)
-        n = 0
-        bed = -math.inf
-        z_top = -math.inf
-        z_bottom = math.inf
-        for cz in range(nz):
-            for k in range(dys):
-                dy = k - reach if three else 0
-                j0, j1 = row_range(cx, cy, cz, dy, 0, nx, ny, nz, start, reach)
-                for b in range(j0, j1):
-                    rx = gx - P[0, b]
-                    ry = gy - P[1, b] if three else 0.0
-                    r2 = rx * rx + ry * ry
-                    if kind[b] == 0:
-                        if r2 < R2:
-                            n += 1
-                            z_top = max(z_top, P[zc, b])
-                            z_bottom = min(z_bottom, P[zc, b])
-                    elif r2 <= B2 and P[zc, b] > bed:
-                        bed = P[zc, b]
-        dry = bed + 2.0 * step if bed > -math.inf else math.nan
-        out[a] = dry
+        rows = (gx, gy, cx, cy, nx, ny, nz, reach, R2)
+        _, n, bed, z_top, z_bottom = d_line_walk(0.0, rows, arrays, kernel, h, ad, 9.0 * step * step)
+        out[a] = bed + 2.0 * step if bed > -math.inf else math.nan  # dry: the bed's surface
         if n == 0:
             continue
-        rows = (gx, gy, cx, cy, nx, ny, nz, reach, R2)
         z_hi = z_top + 2.0 * h
         z_end = z_bottom - 2.0 * h
         f_hi = -0.5
