@@ -265,7 +265,7 @@ class Coupler:
         if self.dt is None:
             return
         for p in self.participants:
-            d = p.max_dt() * (self.fluid_steps if p is self.fluid else 1)
+            d = self._exchange_dt(p)
             if d < self.dt * (1.0 - 1e-9):
                 why = p.dt_limit if isinstance(p, LimitReported) else None
                 why = f" (limited by {why})" if isinstance(why, str) and why else ""
@@ -357,14 +357,20 @@ class Coupler:
     #: floating-heave-period's quick scene, +2.0 % at every k with the margin; docs/coupling.md)
     FLUID_STEPS_MARGIN = 0.02
 
+    def _exchange_dt(self, p) -> float:
+        """The longest exchange participant ``p`` allows now [s]: its stable step, the fluid's
+        ``fluid_steps`` of them less :data:`FLUID_STEPS_MARGIN`."""
+        d = p.max_dt()
+        if p is self.fluid and self.fluid_steps > 1:
+            d *= self.fluid_steps * (1.0 - self.FLUID_STEPS_MARGIN)
+        return d
+
     def _step_size(self, ticks_left: int) -> tuple[int, str]:
         best, limiter = math.inf, "user dt"
         if self.dt is not None:
             best = self.dt
         for p in self.participants:
-            d = p.max_dt()
-            if p is self.fluid and self.fluid_steps > 1:
-                d *= self.fluid_steps * (1.0 - self.FLUID_STEPS_MARGIN)
+            d = self._exchange_dt(p)
             if not (d > 0):  # catches NaN too
                 raise InstabilityError(
                     f"step {self.steps + 1}, t = {self.t:.9g} s: participant '{p.name}' reports a "

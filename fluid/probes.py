@@ -31,12 +31,17 @@ _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 _FLUID = int(Kind.FLUID)
 
 
-def _cells(fluid):
-    """The fluid's cell list: (grid, start). Probes read the fluid's sorted particles."""
+def _grid(fluid):
+    """The fluid's grid, its cell list and pressures refreshed for the current placement."""
     if fluid.limit is None:
         raise InputError("probe: the fluid is not initialised; call fluid.initialize(t0) first")
     fluid.refresh_rates()  # pressures and cells of the current placement
-    return fluid._grid, fluid._start  # same package: the cell list the solver keeps sorted
+    return fluid._grid
+
+
+def _cells(fluid):
+    """The fluid's cell list: (grid, start). Probes read the fluid's sorted particles."""
+    return _grid(fluid), fluid._start  # same package: the cell list the solver keeps sorted
 
 
 # ---------------------------------------------------------------------- pressure
@@ -336,9 +341,7 @@ def surface_elevation(fluid, gauges) -> np.ndarray:
     neither water nor bed under it. Located to dx/4, then solved to 1e-9 of that."""
     c = fluid.config
     g = _gauges(gauges, c.dim, "surface_elevation")
-    if fluid.limit is None:
-        raise InputError("probe: the fluid is not initialised; call fluid.initialize(t0) first")
-    grid = fluid._grid
+    grid = _grid(fluid)
     lo = np.asarray(grid.lo, np.float64)
     n_h = np.array(grid.shape)[[0, 1]] if c.dim == 3 else np.array([grid.shape[0]])
     hi = lo[:-1] + grid.cell * n_h
@@ -350,7 +353,7 @@ def surface_elevation(fluid, gauges) -> np.ndarray:
     on_device = getattr(fluid, "surface_on_device", None)
     if on_device is not None:  # a GPU fluid reads it there (fluid.cuda): the state stays on the device
         return on_device(g)
-    grid, start = _cells(fluid)
+    start = fluid._start
     ps = fluid.ps
     out = np.empty(g.shape[0])
     nx, ny, nz = grid.shape

@@ -782,10 +782,12 @@ class Fluid:
     def _apply_zones(self, dt: float) -> None:
         """Relax the fluid in :attr:`zones` over the step ``dt`` [s] that ended now (Verlet's
         n-1 velocity alike)."""
+        if not self.zones:  # self.ps is the host copy on a GPU: not read for nothing
+            return
+        ps = self.ps
+        extra = self._aux["vel"] if self.config.integrator == "verlet" else None
         for zone in self.zones:
-            ps = self.ps
-            zone.apply(ps.pos, ps.vel, ps.kind, self.t, dt, self._aux["vel"] if self.config.integrator == "verlet"
-                       else None)
+            zone.apply(ps.pos, ps.vel, ps.kind, self.t, dt, extra)
 
     def _reinitialise_density(self) -> None:
         """Fluid densities from the MLS interpolation (fluid.mls). Verlet's n-1 density is

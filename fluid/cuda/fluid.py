@@ -135,7 +135,7 @@ class CudaFluid(Fluid):
     # ------------------------------------------------------------------ the step
     def step(self, dt: float):
         c = self.config
-        for i, zone in enumerate(self.zones):
+        for i, zone in enumerate(self.zones):  # before any work: _apply_zones takes them as checked
             _zone_on_device(zone, i)
         dev = self._to_device()
         if c.integrator == "verlet":
@@ -277,12 +277,12 @@ class CudaFluid(Fluid):
     def _apply_zones(self, dt: float) -> None:
         dev = self._to_device()
         verlet = self.config.integrator == "verlet"
-        for i, zone in enumerate(self.zones):
-            target = _zone_on_device(zone, i)
+        for zone in self.zones:
+            target = zone.target  # None (rest) or a linear SeaVelocity: _zone_on_device at the step's start
             if target is None:
                 dev.relax(zone.axis, zone.inner, zone.outer, zone.rate, dt, verlet, self.t)
                 continue
-            current = target._current(self.t) if target.back is not None else None
+            current = target._current(self.t) if target.back is not None else (0.0, 0.0, 0.0)
             wall = target.wall.rate if target.wall is not None else 0.0
             dev.relax(zone.axis, zone.inner, zone.outer, zone.rate, dt, verlet, self.t, target.sea, current, wall)
 

@@ -574,12 +574,12 @@ def d_relax_col(V, i, vx, vy, vz, f, three):
 
 @cuda.jit
 def k_relax(P, V, X, use_x, kind, n, axis, x_in, inv, rate, dt, to_sea, t, e0, e1, level, depth, w, a, ph, k,
-            den, ap, s_ref, has_source, source, c_front, ramp, want, current, wall):
+            den, ap, s_ref, has_source, source, c_front, ramp, want, cx, cy, cz, wall):
     """A relaxation slab over a step ``dt`` [s] ending at ``t`` [s] (``fluid.relaxation.Slab``):
     each fluid particle inside it (``chi > 0``, ``chi = (x - x_in) inv`` along ``axis``)
     relaxed with the factor ``exp(-rate w(chi) dt)`` (``zone_factor``), towards rest
     (``_damp_to_rest``) or, ``to_sea``, towards the linear sea's velocity at it plus the
-    return ``current`` (3,) and the end wall's rate ``wall`` along x
+    return current (``cx``, ``cy``, ``cz``) and the end wall's rate ``wall`` along x
     (``fluid.nearfield._relax_to_sea``, in its order); ``X`` (Verlet's n-1 velocity)
     alike where ``use_x``."""
     dim = P.shape[0]
@@ -602,9 +602,9 @@ def k_relax(P, V, X, use_x, kind, n, axis, x_in, inv, rate, dt, to_sea, t, e0, e
         zeta = min(max(P[dim - 1, i] - level, -depth), 0.0)
         _, uh, wz, _, _, _, _, _ = d_point_sums(s, zeta, t, True, w, a, ph, k, depth, den, ap, s_ref, fade, want)
         vx, vy, vz = uh * e0, uh * e1, wz
-        vx += current[0]
-        vy += current[1]
-        vz += current[2]
+        vx += cx
+        vy += cy
+        vz += cz
         vx += wall
         d_relax_col(V, i, vx, vy, vz, f, three)
         if use_x:

@@ -237,28 +237,24 @@ class DeviceState:
                                               cuda.to_device(np.ascontiguousarray(acc, np.float64)), self.accw)
 
     def relax(self, axis: int, inner: float, outer: float, rate: float, dt: float, verlet: bool, t: float,
-              sea=None, current=None, wall: float = 0.0) -> None:
+              sea=None, current=(0.0, 0.0, 0.0), wall: float = 0.0) -> None:
         """A relaxation slab (``fluid.relaxation.Slab`` from ``inner`` to ``outer`` [m] along
         ``axis``, ``rate`` [1/s]) over ``dt`` [s] ending at ``t`` [s], towards rest or the
         linear ``sea``'s velocity (``fluid.waves.Sea``, read directly) plus the return
         ``current`` (3,) [m/s] and the end wall's rate ``wall`` [m/s] along x; Verlet's n-1
         velocity alike (``verlet``)."""
-        want, comps = self._sea_arrays(sea)
-        w, a, ph, k, den, ap = comps
-        has_source, source, c_front, ramp = sea._fade_args() if sea is not None else (False, 0.0, 1.0, 0.0)
-        e0, e1 = sea._heading2 if sea is not None else (1.0, 0.0)
-        cur = cuda.to_device(np.zeros(3) if current is None else np.asarray(current, np.float64))
+        want, comps, frame = self._sea_arrays(sea)
+        cx, cy, cz = (float(v) for v in current)
         K.k_relax[K.launch(self.n)](
             self.a["P"], self.a["V"], self.a["aux_vel"] if verlet else self.zero_aux, verlet, self.a["kind"],
             self.n, axis, float(inner), 1.0 / (outer - inner), float(rate), float(dt), sea is not None, float(t),
-            float(e0), float(e1), float(sea.level) if sea is not None else 0.0,
-            float(sea.depth) if sea is not None else 1.0, w, a, ph, k, den, ap,
-            float(sea._s_ref) if sea is not None else 0.0, has_source, source, c_front, ramp, want, cur, float(wall))
+            *frame[:4], *comps, *frame[4:], want, cx, cy, cz, float(wall))
 
     def _sea_arrays(self, sea):
-        """The device copies of ``sea``'s components and their factors
-        (``fluid.waves.component_factors``) and of the velocity rows ``point_sums`` is asked
-        for, kept for the fluid's life (one entry per sea; an empty set for rest)."""
+        """What :meth:`relax` passes for ``sea`` (None: rest), made once and kept for the
+        fluid's life: the velocity rows ``point_sums`` is asked for, the device copies of the
+        components and their factors (``fluid.waves.component_factors``), and the frame
+        (heading cosines, level, depth, ``s_ref`` and the fade-in's arguments)."""
         from fluid.nearfield import _U_ONLY
         from fluid.waves import component_factors
 
@@ -267,10 +263,14 @@ class DeviceState:
         if key not in cache:
             if sea is None:
                 comps = tuple(np.zeros(0) for _ in range(6))
+                frame = (1.0, 0.0, 0.0, 1.0, 0.0, False, 0.0, 1.0, 0.0)
             else:
                 w, a, ph, k = (np.ascontiguousarray(v, np.float64) for v in sea._comp)
                 comps = (w, a, ph, k) + component_factors(a, k, float(sea.depth), float(sea.g))
-            cache[key] = (sea, cuda.to_device(_U_ONLY), tuple(cuda.to_device(c) for c in comps))
+                e0, e1 = sea._heading2
+                frame = (float(e0), float(e1), float(sea.level), float(sea.depth), float(sea._s_ref),
+                         *sea._fade_args())
+            cache[key] = (sea, cuda.to_device(_U_ONLY), tuple(cuda.to_device(c) for c in comps), frame)
         return cache[key][1:]
 
     def surface(self, gauges: np.ndarray, kernel: int, h: float, ad: float, step: float) -> np.ndarray:
