@@ -151,41 +151,57 @@ _PARALLEL_TERMS = 20000
 
 
 @njit(cache=True)
-def _stokes2_terms(s, zeta, t, k, w, a, depth, phase, a2, want, sums):
-    """Add Stokes second order's terms (:class:`RegularWave`'s docstring: Sorensen 2006,
-    Eqs. 3.7-3.10, and the pressure derived there) to the rows of ``sums``
-    (:func:`_linear_sums`'s, its fade-in ``r``, ``r'`` in rows 6-7) that ``want`` asks for,
-    faded with ``r²``: wavenumber ``k`` [rad/m], ``w`` [rad/s], amplitude ``a`` [m],
-    ``phase`` [rad], ``a2`` the second harmonic's amplitude [m]; ``zeta`` empty: η alone.
-    ``cosh 2k(ζ+d) / sinh⁴ kd`` and ``sinh 2k(ζ+d) / sinh⁴ kd`` as ``8 (e1 ± e2) / (1 −
-    e^-2kd)⁴`` with ``e1 = exp(2kζ − 2kd)``, ``e2 = exp(−2kζ − 6kd)``, both ≤ 1."""
-    have_z = zeta.shape[0] > 0
+def stokes2_point(s, zeta, have_z, t, k, w, a, depth, phase, a2, r, dr, want):
+    """Stokes second order's terms at one point (:class:`RegularWave`'s docstring: Sorensen
+    2006, Eqs. 3.7-3.10, and the pressure derived there): the increments of (η, u_h, w,
+    ∂u_h/∂t, ∂w/∂t, p/ρ) that ``want`` (the rows :data:`ETA` ... :data:`P`) asks for (else
+    0), faded with ``r²`` (``r``, ``r'`` the linear sums' fade-in), at ``s`` [m] along the
+    heading, ``zeta`` [m] below the still water (``have_z`` False: η alone), time ``t`` [s];
+    wavenumber ``k`` [rad/m], ``w`` [rad/s], amplitude ``a`` [m], ``phase`` [rad], ``a2`` the
+    second harmonic's amplitude [m]. ``cosh 2k(ζ+d) / sinh⁴ kd`` and ``sinh 2k(ζ+d) / sinh⁴
+    kd`` as ``8 (e1 ± e2) / (1 − e^-2kd)⁴`` with ``e1 = exp(2kζ − 2kd)``, ``e2 = exp(−2kζ −
+    6kd)``, both ≤ 1."""
+    r2, dr2 = r * r, 2.0 * r * dr
+    th2 = 2.0 * (k * s - w * t + phase)
+    c2, s2 = math.cos(th2), math.sin(th2)
+    eta = uh = wz = ah = aw = p = 0.0
+    if want[ETA]:
+        eta = r2 * a2 * c2
+    if not have_z:
+        return eta, uh, wz, ah, aw, p
     q = math.exp(-2.0 * k * depth)
     q4 = 8.0 / (1.0 - q) ** 4
     A = 0.75 * a * a * w * k
-    inv_sh2 = 4.0 * q / (1.0 - q) ** 2
-    den = -math.expm1(-2.0 * k * depth)
+    e1, e2 = math.exp(2.0 * k * zeta - 2.0 * k * depth), math.exp(-2.0 * k * zeta - 6.0 * k * depth)
+    C2, S2 = q4 * (e1 + e2), q4 * (e1 - e2)
+    if want[UH]:
+        uh = r2 * A * C2 * c2
+        wz = r2 * A * S2 * s2
+    if want[AH]:
+        ah = r2 * A * C2 * 2.0 * w * s2 + dr2 * A * C2 * c2
+        aw = -r2 * A * S2 * 2.0 * w * c2 + dr2 * A * S2 * s2
+    if want[P]:
+        inv_sh2 = 4.0 * q / (1.0 - q) ** 2
+        sh = (math.exp(k * zeta) - math.exp(-k * (zeta + 2.0 * depth))) / -math.expm1(-2.0 * k * depth)
+        p = r2 * a * a * w * w * ((0.75 * C2 - 0.25 * inv_sh2) * c2 - 0.5 * sh * sh)
+    return eta, uh, wz, ah, aw, p
+
+
+@njit(cache=True)
+def _stokes2_terms(s, zeta, t, k, w, a, depth, phase, a2, want, sums):
+    """Add :func:`stokes2_point` at each point to the rows of ``sums`` (:func:`_linear_sums`'s,
+    its fade-in ``r``, ``r'`` in rows 6-7) that ``want`` asks for; ``zeta`` empty: η alone."""
+    have_z = zeta.shape[0] > 0
     for i in range(s.shape[0]):
-        r, dr = sums[6, i], sums[7, i]
-        r2, dr2 = r * r, 2.0 * r * dr
-        th2 = 2.0 * (k * s[i] - w * t[i] + phase)
-        c2, s2 = math.cos(th2), math.sin(th2)
-        if want[ETA]:
-            sums[ETA, i] += r2 * a2 * c2
-        if not have_z:
-            continue
-        z = zeta[i]
-        e1, e2 = math.exp(2.0 * k * z - 2.0 * k * depth), math.exp(-2.0 * k * z - 6.0 * k * depth)
-        C2, S2 = q4 * (e1 + e2), q4 * (e1 - e2)
-        if want[UH]:
-            sums[UH, i] += r2 * A * C2 * c2
-            sums[W, i] += r2 * A * S2 * s2
-        if want[AH]:
-            sums[AH, i] += r2 * A * C2 * 2.0 * w * s2 + dr2 * A * C2 * c2
-            sums[AW, i] += -r2 * A * S2 * 2.0 * w * c2 + dr2 * A * S2 * s2
-        if want[P]:
-            sh = (math.exp(k * z) - math.exp(-k * (z + 2.0 * depth))) / den  # sinh k(ζ+d)/sinh kd
-            sums[P, i] += r2 * a * a * w * w * ((0.75 * C2 - 0.25 * inv_sh2) * c2 - 0.5 * sh * sh)
+        z = zeta[i] if have_z else 0.0
+        eta, uh, wz, ah, aw, p = stokes2_point(s[i], z, have_z, t[i], k, w, a, depth, phase, a2, sums[6, i],
+                                               sums[7, i], want)
+        sums[ETA, i] += eta
+        sums[UH, i] += uh
+        sums[W, i] += wz
+        sums[AH, i] += ah
+        sums[AW, i] += aw
+        sums[P, i] += p
 
 
 class SeaError(InputError):

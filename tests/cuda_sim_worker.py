@@ -161,17 +161,17 @@ def box_mdbc(ps, group: int, lo, hi, config: dict):
     return m
 
 
-def run_case(tag: str, ps, config: dict, steps: int = 5, body=None, motion=None, hook=None, zones=()):
+def run_case(tag: str, ps, config: dict, steps: int = 5, body=None, motion=None, hook=None, zones=(), gpu_zones=None):
     """Initialise the case on both paths (the first pair loop), step once, then to
     ``steps`` (recorded as the stage "last"; 5 pass a density re-initialisation every 3 or
     4 steps and a Verlet reset every 4); with ``body = (group, velocity)`` the body's
     particles are placed before every step (positions at the step's time, as the coupler places them); ``motion =
     (group, motion)`` a prescribed wall motion; ``hook()`` a boundary correction made for
-    each path, run after the fluid's own; ``zones`` relaxation zones (fluid.relaxation.Slab)."""
+    each path, run after the fluid's own; ``zones`` relaxation zones (fluid.relaxation.Slab),
+    ``gpu_zones`` the GPU path's where they differ (the same targets, as each path is given them)."""
     cpu = Fluid(FluidConfig(**config), ps)
     gpu = Fluid(FluidConfig(device="cuda", **config), ps)
-    for f in (cpu, gpu):
-        f.zones = list(zones)
+    cpu.zones, gpu.zones = list(zones), list(zones if gpu_zones is None else gpu_zones)
     if hook is not None:
         for f in (cpu, gpu):
             own, new = f.boundary_correction, hook()
@@ -285,17 +285,25 @@ def _body2d():
              hook=lambda: box_mdbc(body, 1, (0.075, 0.04), (0.125, 0.08), cfg))
 
 
-def sea_zones(dim: int, heading: float):
+def sea_zones(dim: int, heading: float, kind: str = "linear", reach=None):
     """Two relaxation zones across a water column 0.1 m (2-D) or 0.08 m (3-D) deep: towards a
-    linear regular wave fading in over 0.2 s with its return current (from x = 0.03 m down
-    to 0) and towards rest (from x = 0.03 m up to 0.06 m), each over part of the column."""
+    sea with its return current (from x = 0.03 m down to 0) and towards rest (from x = 0.03 m
+    up to 0.06 m), each over part of the column. ``kind``: the sea, a "linear" regular wave
+    fading in over 0.2 s, or at full height from the start (so that the second order's
+    terms, faded in with the square, act in the first steps) a "stokes2" regular wave or an
+    "irregular" one of 12 components; ``reach``:
+    the (lo, hi) [m] over which the CPU would read that from a table (fluid.sea_tables)."""
     from fluid.nearfield import sea_velocity
     from fluid.relaxation import Slab
-    from fluid.waves import RegularWave
+    from fluid.waves import RegularWave, SpectralSea
 
     depth = 0.1 if dim == 2 else 0.08
-    sea = RegularWave(0.01, 0.5, depth, direction=heading, ramp=0.2, level=depth)
-    return (Slab(0, 0.03, 0.0, 30.0, sea_velocity(sea)), Slab(0, 0.03, 0.06, 10.0, None))
+    ramp = 0.2 if kind == "linear" else 0.0
+    if kind == "irregular":
+        sea = SpectralSea(0.01, 0.5, depth, n_components=12, seed=3, direction=heading, ramp=ramp, level=depth)
+    else:
+        sea = RegularWave(0.01, 0.5, depth, direction=heading, ramp=ramp, level=depth, theory=kind)
+    return (Slab(0, 0.03, 0.0, 30.0, sea_velocity(sea, reach=reach)), Slab(0, 0.03, 0.06, 10.0, None))
 
 
 def near_field_scene() -> None:
@@ -357,6 +365,12 @@ PARTS = {
                                      domain_lo=(-0.05, -0.05), domain_hi=(0.25, 0.2)), zones=sea_zones(2, 0.0)),
     "zones3d": lambda: run_case("zones3d", disturbed(column_3d(), 0.02, 9), dict(dim=3, dx=0.02, c0=20.0),
                                 zones=sea_zones(3, 30.0)),
+    "stokes2d": lambda: run_case("stokes2d", disturbed(dam_2d(), 0.01, 11),
+                                 dict(dim=2, dx=0.01, c0=20.0, domain_lo=(-0.05, -0.05), domain_hi=(0.25, 0.2)),
+                                 zones=sea_zones(2, 0.0, "stokes2")),
+    "irregular3d": lambda: run_case("irregular3d", disturbed(column_3d(), 0.02, 12), dict(dim=3, dx=0.02, c0=20.0),
+                                    zones=sea_zones(3, 20.0, "irregular"),
+                                    gpu_zones=sea_zones(3, 20.0, "irregular", reach=(-0.5, 0.5))),
     "near": near_field_scene,
     "surface": surfaces,
     "nan": nan_guard,

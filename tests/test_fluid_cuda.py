@@ -26,6 +26,11 @@ Skipped, with the reason, where numba-cuda is not installed. Each starts from a 
 * ``zones2d``, ``zones3d``: the dam break (Verlet, its n-1 velocity relaxed too) and the
   column (symplectic) with two relaxation zones over the water, one towards a linear wave
   fading in with its return current (heading 0 and 30 deg), one towards rest.
+* ``stokes2d``, ``irregular3d``: the same zones towards a Stokes-2 regular wave (the dam
+  break, symplectic) and towards an irregular sea of 12 components (the column, heading
+  20 deg), which the GPU is given as the CPU would read it from a table
+  (``fluid.sea_tables``) and sums at each particle, as the CPU path given it without the
+  table does.
 * ``tilt2d``, ``tilt3d``: the dam break with Adami walls and the column, under gravity
   tilted off -z (g = (2.5, -9.5) and (1.5, -1.0, -9.6) m/s^2): the Fourtakas diffusion's
   hydrostatic part taken along g.
@@ -62,7 +67,7 @@ requires_numba_cuda = pytest.mark.skipif(not HAVE_NUMBA_CUDA,
 
 WORKER = Path(__file__).with_name("cuda_sim_worker.py")
 RTOL = 1e-10
-CASES = ("dam2d", "body2d", "col3d", "tilt2d", "tilt3d", "groups2d", "zones2d", "zones3d")
+CASES = ("dam2d", "body2d", "col3d", "tilt2d", "tilt3d", "groups2d", "zones2d", "zones3d", "stokes2d", "irregular3d")
 STAGES = ("loop", "step1", "last")
 FIELDS = ("acc", "drho", "disp", "vel", "rho", "F", "M", "bforce")
 
@@ -266,3 +271,35 @@ def test_the_scene_passes_the_device_to_the_fluid():
     assert "device" not in choose(scene.with_values(["fluid.dx=0.02"]).replace(fluid=SPH(dx=0.02))).config
     with pytest.raises(InputError, match="fluid.device"):
         scene.with_values(["fluid.device='gpu'"])
+
+
+def test_a_near_field_on_the_gpu_takes_every_sea_and_refuses_other_zones():
+    """A near-field scene with fluid.device = "cuda" is accepted in linear, Stokes-2 and
+    irregular seas (the GPU relaxes its zones towards each: cases stokes2d, irregular3d);
+    the fluid refuses a zone towards anything else, naming it and the way out."""
+    from cosim.scene import SPH, Box, NearField, RegularWaves, Scene, World
+    from fluid.cuda.fluid import _zone_on_device
+    from fluid.nearfield import SeaVelocity
+    from fluid.relaxation import Slab
+    from fluid.waves import RegularWave, Sea
+
+    scene = Scene(world=World(dim=2, duration=0.1), fluid=SPH(dx=0.05, device="cuda"), domain=NearField(depth=0.3),
+                  waves=RegularWaves(height=0.04, period=1.0, depth=0.3, theory="stokes2"),
+                  bodies=[Box("box", size=(0.2, 0.1), density=500.0, pos=(1.2,), place="floating")])
+    irregular = scene.with_values(['waves={kind="irregular", hs=0.04, tp=1.0, depth=0.3}'])
+    assert irregular.waves.hs == 0.04 and scene.waves.theory == "stokes2"
+
+    wave = RegularWave(0.01, 0.5, 0.1, level=0.1, theory="stokes2")
+    assert _zone_on_device(Slab(0, 0.03, 0.0, 30.0, SeaVelocity(wave)), 0).sea is wave
+
+    class Cubic(Sea):  # a sea with terms beyond linear superposition that the GPU does not sum
+        def _add_higher_order(self, sums, s, zeta, t, want):
+            pass
+
+    odd = object.__new__(Cubic)
+    with pytest.raises(InputError, match="relaxation zone 1 relaxes towards a Cubic with terms beyond linear theory; "
+                                         "the GPU relaxes towards rest, a linear sea or a Stokes-2 regular wave; use "
+                                         "device='cpu'"):
+        _zone_on_device(Slab(0, 0.03, 0.0, 30.0, SeaVelocity(odd)), 1)
+    with pytest.raises(InputError, match="relaxation zone 2 relaxes towards a function"):
+        _zone_on_device(Slab(0, 0.03, 0.0, 30.0, lambda pos, t: pos), 2)

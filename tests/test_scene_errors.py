@@ -717,13 +717,6 @@ CASES = [
     case("a near field on the GPU on a symmetry plane", "nearfield3d", ("fluid.device", "cuda"), "domain.symmetry",
          "the symmetry plane's mirror images are made on the CPU only: with fluid.device = \"cuda\" simulate the "
          "whole box", "Scene.domain.symmetry"),
-    case("a near field on the GPU in Stokes-2 waves", "nearfield",
-         (("fluid.device", "cuda"), ("waves.theory", "stokes2")), "waves",
-         "the GPU path relaxes the near field's zones towards a linear sea", "Scene.waves"),
-    case("a near field on the GPU in an irregular sea", "nearfield",
-         (("fluid.device", "cuda"), ("waves", {"kind": "irregular", "hs": 0.04, "tp": 1.0, "depth": 0.3})), "waves",
-         "components is read from a table on the CPU: with fluid.device = \"cuda\" give a regular wave",
-         "Scene.waves"),
     case("a 2-D near field with a width", "nearfield", ("domain.width", 1.0), "domain.width",
          "a 2-D near field is the x-z plane; leave width out", "Scene.domain.width"),
     case("walls below the water", "nearfield", ("domain.height", 0.2), "domain.height",

@@ -629,22 +629,12 @@ def _check_near_field(s, dim):
 
 
 def _check_near_field_on_gpu(s) -> None:
-    """What a near field asks of the GPU path (fluid.cuda): its zones relaxed towards a linear
-    sea summed at each particle, and no symmetry plane (its mirror images are the CPU's)."""
-    from cosim.scene.build import incident_sea
-    from fluid.sea_tables import tabulable
-
+    """What a near field asks of the GPU path (fluid.cuda): no symmetry plane (its mirror
+    images are the CPU's). Its zones' seas (linear, Stokes-2, irregular) are all relaxed
+    there."""
     if s.domain.symmetry:
         raise SceneError("domain.symmetry", "the symmetry plane's mirror images are made on the CPU only: with "
                          "fluid.device = \"cuda\" simulate the whole box (leave symmetry out), or run on the CPU")
-
-    sea = incident_sea(s)
-    if not sea.linear:
-        raise SceneError("waves", "the GPU path relaxes the near field's zones towards a linear sea: with "
-                         "fluid.device = \"cuda\" give linear waves (theory = \"linear\"), or run on the CPU")
-    if tabulable(sea):
-        raise SceneError("waves", f"a sea of {len(sea._comp.omega)} components is read from a table on the CPU: "
-                         f"with fluid.device = \"cuda\" give a regular wave, or run on the CPU")
 
 
 def _check_symmetric(s):

@@ -23,15 +23,15 @@ the device, boundary particles placed by id (bodies, prescribed motions), and th
 bodies' mDBC densities (fluid.boundary_correction, the hook cosim.sph_fluid sets; its
 diagnostic ``MDBC.low_order`` is not filled on the GPU), the MLS density
 re-initialisation (``mls_every``, fluid.mls), the relaxation zones (``Fluid.zones``:
-towards rest, or a linear sea summed at each particle) and the free surface's height at
+towards rest, a linear sea summed at each particle (one the CPU tabulates included), or a
+Stokes-2 regular wave) and the free surface's height at
 gauges (fluid.probes.surface_elevation: wave gauges, absorbing end walls' readings).
 
 Not on the GPU yet, refused with the setting to change: ``precision="float32"`` (the
 CPU's float32 pair terms; float64 is the GPU's default and reference), a symmetry plane
 (``symmetry_y``: the mirror images of :mod:`fluid.mirror`) and particle shifting
 (:mod:`fluid.shifting`), by :func:`check_config`; boundary-correction hooks other than the
-Adami walls and mDBC, at the first rate evaluation; zones towards a tabulated or Stokes-2
-sea, at the first step (a scene refuses them before any work).
+Adami walls and mDBC, at the first rate evaluation.
 
 Checked against the CPU path, term for term, on numba's CUDA simulator
 (tests/test_fluid_cuda.py) and on an NVIDIA H200; to what tolerance, what is not yet run on

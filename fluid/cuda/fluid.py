@@ -278,7 +278,7 @@ class CudaFluid(Fluid):
         dev = self._to_device()
         verlet = self.config.integrator == "verlet"
         for zone in self.zones:
-            target = zone.target  # None (rest) or a linear SeaVelocity: _zone_on_device at the step's start
+            target = zone.target  # None (rest) or a SeaVelocity: _zone_on_device at the step's start
             if target is None:
                 dev.relax(zone.axis, zone.inner, zone.outer, zone.rate, dt, verlet, self.t)
                 continue
@@ -294,9 +294,13 @@ class CudaFluid(Fluid):
 
 def _zone_on_device(zone, i: int):
     """The target of relaxation zone ``i`` as the GPU relaxes it: None (rest) or a
-    ``fluid.nearfield.SeaVelocity`` of a linear sea read directly; any other zone is
+    ``fluid.nearfield.SeaVelocity`` of a linear sea or a Stokes-2 regular wave. A sea the
+    CPU reads from a table (``fluid.sea_tables``, many components) is summed at each zone
+    particle on the GPU: the table's interpolation (within 1 % of its shortest components'
+    velocity) saves the CPU's time, where the GPU has the threads to sum. Any other zone is
     refused, saying which and what to change."""
     from fluid.nearfield import SeaVelocity
+    from fluid.waves import RegularWave
 
     if not isinstance(zone, Slab):
         raise InputError(f"fluid: relaxation zone {i} is a {type(zone).__name__}; the GPU relaxes fluid.relaxation."
@@ -304,13 +308,12 @@ def _zone_on_device(zone, i: int):
     target = zone.target
     if target is None:
         return None
-    if isinstance(target, SeaVelocity) and target.table is None and target.sea.linear:
+    if isinstance(target, SeaVelocity) and (target.sea.linear or isinstance(target.sea, RegularWave)):
         return target
-    what = ("a tabulated sea" if isinstance(target, SeaVelocity) and target.table is not None else
-            "a sea beyond linear theory (Stokes-2)" if isinstance(target, SeaVelocity) else
+    what = (f"a {type(target.sea).__name__} with terms beyond linear theory" if isinstance(target, SeaVelocity) else
             f"a {type(target).__name__}")
-    raise InputError(f"fluid: relaxation zone {i} relaxes towards {what}; the GPU relaxes towards rest or a linear "
-                     f"sea read directly; use device='cpu'")
+    raise InputError(f"fluid: relaxation zone {i} relaxes towards {what}; the GPU relaxes towards rest, a linear "
+                     f"sea or a Stokes-2 regular wave; use device='cpu'")
 
 
 def _hooks(hook) -> list:

@@ -10,6 +10,8 @@ loads (G x dim).
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numba import cuda
 
@@ -240,21 +242,22 @@ class DeviceState:
               sea=None, current=(0.0, 0.0, 0.0), wall: float = 0.0) -> None:
         """A relaxation slab (``fluid.relaxation.Slab`` from ``inner`` to ``outer`` [m] along
         ``axis``, ``rate`` [1/s]) over ``dt`` [s] ending at ``t`` [s], towards rest or the
-        linear ``sea``'s velocity (``fluid.waves.Sea``, read directly) plus the return
-        ``current`` (3,) [m/s] and the end wall's rate ``wall`` [m/s] along x; Verlet's n-1
-        velocity alike (``verlet``)."""
-        want, comps, frame = self._sea_arrays(sea)
+        ``sea``'s velocity (``fluid.waves.Sea``: a linear sea summed at each particle, or a
+        Stokes-2 ``RegularWave``) plus the return ``current`` (3,) [m/s] and the end wall's
+        rate ``wall`` [m/s] along x; Verlet's n-1 velocity alike (``verlet``)."""
+        want, comps, frame, stokes2 = self._sea_arrays(sea)
         cx, cy, cz = (float(v) for v in current)
         K.k_relax[K.launch(self.n)](
             self.a["P"], self.a["V"], self.a["aux_vel"] if verlet else self.zero_aux, verlet, self.a["kind"],
             self.n, axis, float(inner), 1.0 / (outer - inner), float(rate), float(dt), sea is not None, float(t),
-            *frame[:4], *comps, *frame[4:], want, cx, cy, cz, float(wall))
+            *frame[:4], *comps, *frame[4:], want, cx, cy, cz, float(wall), *stokes2)
 
     def _sea_arrays(self, sea):
         """What :meth:`relax` passes for ``sea`` (None: rest), made once and kept for the
         fluid's life: the velocity rows ``point_sums`` is asked for, the device copies of the
-        components and their factors (``fluid.waves.component_factors``), and the frame
-        (heading cosines, level, depth, ``s_ref`` and the fade-in's arguments)."""
+        components and their factors (``fluid.waves.component_factors``), the frame
+        (heading cosines, level, depth, ``s_ref`` and the fade-in's arguments), and Stokes
+        second order's flag and wave (``k_relax``'s last six arguments)."""
         from fluid.nearfield import _U_ONLY
         from fluid.waves import component_factors
 
@@ -264,13 +267,16 @@ class DeviceState:
             if sea is None:
                 comps = tuple(np.zeros(0) for _ in range(6))
                 frame = (1.0, 0.0, 0.0, 1.0, 0.0, False, 0.0, 1.0, 0.0)
+                stokes2 = (False, 0.0, 0.0, 0.0, 0.0, 0.0)
             else:
                 w, a, ph, k = (np.ascontiguousarray(v, np.float64) for v in sea._comp)
                 comps = (w, a, ph, k) + component_factors(a, k, float(sea.depth), float(sea.g))
                 e0, e1 = sea._heading2
                 frame = (float(e0), float(e1), float(sea.level), float(sea.depth), float(sea._s_ref),
                          *sea._fade_args())
-            cache[key] = (sea, cuda.to_device(_U_ONLY), tuple(cuda.to_device(c) for c in comps), frame)
+                stokes2 = ((True, float(sea.k), float(sea.omega), float(sea.amplitude), math.radians(sea.phase),
+                            float(sea.second_harmonic)) if not sea.linear else (False, 0.0, 0.0, 0.0, 0.0, 0.0))
+            cache[key] = (sea, cuda.to_device(_U_ONLY), tuple(cuda.to_device(c) for c in comps), frame, stokes2)
         return cache[key][1:]
 
     def surface(self, gauges: np.ndarray, kernel: int, h: float, ad: float, step: float) -> np.ndarray:
