@@ -204,6 +204,22 @@ class _Counters:
                         "when the total has doubled)", kinds.size, t, dict(self.removed))
 
 
+def motion_acceleration(motion, ref: np.ndarray, t: float, eps: float = 1e-6) -> np.ndarray:
+    """The acceleration [m/s^2] (m, dim) at time ``t`` [s] of the points ``ref`` (their
+    reference positions) under a prescribed ``motion`` (``motion(t, ref) -> (pos, vel)``):
+    its own ``particle_acceleration(t, ref)`` where it has one that gives an array, else the
+    central difference of its velocity over ``+-eps`` [s] (of one point, for every one,
+    where the motion says it is ``uniform``: a rigid translation)."""
+    own = getattr(motion, "particle_acceleration", None)
+    a = None if own is None else own(t, ref)
+    if a is None:
+        rows = ref[:1] if getattr(motion, "uniform", False) else ref
+        v1 = np.asarray(motion(t + eps, rows)[1])
+        v0 = np.asarray(motion(t - eps, rows)[1])
+        a = np.broadcast_to((v1 - v0) / (2.0 * eps), ref.shape)
+    return np.asarray(a)
+
+
 class Fluid:
     """Weakly-compressible SPH fluid participant.
 
@@ -647,14 +663,7 @@ class Fluid:
         acc = np.zeros((ps.n, self.config.dim))
         for group, (motion, ids, ref) in self._motions.items():
             sel, keep = self._group_rows(group, ids)
-            own = getattr(motion, "particle_acceleration", None)
-            a = None if own is None else own(t, ref)
-            if a is None:  # a motion that moves every point alike (``uniform``): its difference on one row
-                rows = ref[:1] if getattr(motion, "uniform", False) else ref
-                v1 = np.asarray(motion(t + eps, rows)[1])
-                v0 = np.asarray(motion(t - eps, rows)[1])
-                a = np.broadcast_to((v1 - v0) / (2.0 * eps), ref.shape)
-            acc[sel] = np.asarray(a)[keep]
+            acc[sel] = motion_acceleration(motion, ref, t, eps)[keep]
         return acc
 
     def set_particle_motion(self, ids, pos, vel) -> None:

@@ -247,6 +247,28 @@ def transfers():
         OUT[f"transfers.{integrator}.read"] = np.array([counts["pull"], counts["push"]])
 
 
+def wall_accelerations():
+    """The swaying tank's wall accelerations as each path hands them to the Adami walls, by
+    particle id, after one step: the motion's own ``particle_acceleration`` (here a
+    constant, which no difference of its velocity gives) where it has one, on both paths."""
+    def motion(t, ref):
+        return sway(t, ref)
+
+    motion.particle_acceleration = lambda t, ref: np.broadcast_to(np.array([3.0, -1.0]), ref.shape)
+    for device in ("cpu", "cuda"):
+        f = Fluid(FluidConfig(dim=2, dx=0.01, c0=20.0, walls="adami", device=device), body_2d())
+        f.prescribe_motion(0, motion)
+        f.initialize(0.0)
+        f.step(f.max_dt())
+        if device == "cpu":
+            acc, ids = f.prescribed_acceleration(), f.ps.ids
+        else:
+            dev = f._to_device()
+            acc, ids = dev.accw.copy_to_host()[:, :dev.n].T, dev.a["ids"].copy_to_host()[:dev.n]
+        moving = np.isin(ids, f.ps.ids[f.ps.kind == int(Kind.MOVING_WALL)])
+        OUT[f"wallacc.{device}"] = acc[moving][np.argsort(ids[moving])]
+
+
 def scene_run(out: str) -> None:
     """A coupled scene on both paths: a 0.1 x 0.06 m box of 500 kg/m^3 released 15 mm above
     its floating height in a 0.4 m tank (centred at the still water, it floats: it would
@@ -375,6 +397,7 @@ PARTS = {
     "surface": surfaces,
     "nan": nan_guard,
     "transfers": transfers,
+    "wallacc": wall_accelerations,
 }
 
 

@@ -174,6 +174,19 @@ def test_gpu_matches_cpu_to_round_off(case, tmp_path):
         assert d[f"{case}.bytes_per_particle"] == pytest.approx(table, rel=1e-12)
 
 
+@pytest.mark.long  # the simulator
+@requires_numba_cuda
+def test_the_walls_take_a_motions_own_acceleration_on_both_paths(tmp_path):
+    """A prescribed wall motion that states its acceleration (``particle_acceleration``, as
+    the near field's end walls do) gives the Adami walls that acceleration on the GPU too,
+    not a difference of its velocity (``fluid.solver.motion_acceleration``)."""
+    d = _worker(tmp_path / "wallacc.npz", "wallacc")
+    cpu, gpu = d["wallacc.cpu"], d["wallacc.cuda"]
+    assert cpu.shape == gpu.shape and cpu.shape[0] > 50
+    assert np.array_equal(cpu, np.broadcast_to([3.0, -1.0], cpu.shape))
+    assert np.array_equal(gpu, cpu)
+
+
 @pytest.mark.long  # the simulator: about 10 s of CPU
 @requires_numba_cuda
 def test_nan_guard_and_the_project_without_numba_cuda(tmp_path):

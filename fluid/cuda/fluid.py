@@ -32,7 +32,7 @@ from fluid.particles import Kind
 from fluid.boundary_correction import MDBC
 from fluid.relaxation import Slab
 from fluid.wall_density import AdamiWalls
-from fluid.solver import Fluid
+from fluid.solver import Fluid, motion_acceleration
 
 log = logging.getLogger(__name__)
 
@@ -206,17 +206,15 @@ class CudaFluid(Fluid):
 
     def _wall_accelerations(self, dev, eps: float = 1e-6) -> bool:
         """The prescribed groups' accelerations onto the device, as
-        Fluid.prescribed_acceleration takes them (central difference over +-eps [s] about
+        Fluid.prescribed_acceleration takes them (``fluid.solver.motion_acceleration`` at
         the time they were last placed); False when there are none."""
         if not self._motions or math.isnan(self._t_placed):
             return False
         t, ids_all, acc_all = self._t_placed, [], []
         for group, (motion, ids, ref) in self._motions.items():
             keep = self._alive[ids]
-            v1 = np.asarray(motion(t + eps, ref)[1])[keep]
-            v0 = np.asarray(motion(t - eps, ref)[1])[keep]
             ids_all.append(ids[keep])
-            acc_all.append((v1 - v0) / (2.0 * eps))
+            acc_all.append(motion_acceleration(motion, ref, t, eps)[keep])
         dev.wall_accelerations(np.concatenate(ids_all), np.concatenate(acc_all))
         return True
 
