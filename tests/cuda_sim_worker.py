@@ -350,6 +350,28 @@ def near_field_scene() -> None:
                     OUT[f"near.{walls}.{device}.{k}"] = np.asarray(r[k], float)
 
 
+def near_waves() -> None:
+    """nearfield-waves' scene (a 2-D near field with no body) at dx = 0.06 m, its Stokes-2
+    wave at full height from the start (so that the second order acts in the first steps),
+    absorbing end walls, no settling, five steps on both paths: the elevations at three
+    gauges in its relaxation zones."""
+    import tempfile
+    from pathlib import Path
+
+    from cosim.scene import Scene
+
+    path = Path(__file__).parents[1] / "cosim" / "validations" / "scenes" / "nearfield-waves.toml"
+    for device in ("cpu", "cuda"):
+        scene = Scene.from_toml(path).with_values(
+            ["fluid.dx=0.06", "world.duration=0.006", "world.sample_every=0.002", "fluid.settle=0",
+             "waves.ramp=0", "domain.absorbing_walls=true", "probes.gauges=[0.3, 0.6, 2.9]",
+             f"fluid.device='{device}'"])
+        with tempfile.TemporaryDirectory() as d:
+            r = scene.run(d, progress=False)
+            for k in ("gauge1.eta", "gauge2.eta", "gauge3.eta"):
+                OUT[f"nearwaves.{device}.{k}"] = np.asarray(r[k], float)
+
+
 def surfaces() -> None:
     """The free surface's height at gauges across the dam break (2-D) and the column (3-D),
     one of them dry, after two steps, read on both paths (fluid.probes.surface_elevation)."""
@@ -394,6 +416,7 @@ PARTS = {
                                     zones=sea_zones(3, 20.0, "irregular"),
                                     gpu_zones=sea_zones(3, 20.0, "irregular", reach=(-0.5, 0.5))),
     "near": near_field_scene,
+    "nearwaves": near_waves,
     "surface": surfaces,
     "nan": nan_guard,
     "transfers": transfers,

@@ -176,6 +176,21 @@ def test_gpu_matches_cpu_to_round_off(case, tmp_path):
 
 @pytest.mark.long  # the simulator
 @requires_numba_cuda
+def test_a_near_field_in_stokes2_waves_reads_its_gauges_as_on_the_cpu(tmp_path):
+    """nearfield-waves' scene (no body, absorbing end walls) in its Stokes-2 wave on the
+    GPU path and on the CPU: the gauges' elevations agree within 1e-10 of their scale (the
+    zones, the end walls' readings and motions, the gauges), and the wave moved them."""
+    d = _worker(tmp_path / "nearwaves.npz", "nearwaves")
+    for k in ("gauge1.eta", "gauge2.eta", "gauge3.eta"):
+        cpu, gpu = d[f"nearwaves.cpu.{k}"], d[f"nearwaves.cuda.{k}"]
+        assert cpu.shape == gpu.shape and len(cpu) >= 3
+        moved = np.abs(cpu - cpu[0]).max()
+        assert moved > 1e-7, k  # [m]
+        assert np.abs(cpu - gpu).max() <= RTOL * max(np.abs(cpu).max(), 1e-3), k
+
+
+@pytest.mark.long  # the simulator
+@requires_numba_cuda
 def test_the_walls_take_a_motions_own_acceleration_on_both_paths(tmp_path):
     """A prescribed wall motion that states its acceleration (``particle_acceleration``, as
     the near field's end walls do) gives the Adami walls that acceleration on the GPU too,
