@@ -1,6 +1,7 @@
-"""How fast a standing wave loses its amplitude in a closed 2-D tank: a quick probe of the
-numerical damping that makes travelling waves lose height (docs/validation/
-wave-propagation_history.md), at a few seconds a run where the flume takes minutes.
+"""How fast a standing wave loses its amplitude in a closed tank (2-D, or a 3-D slice): a
+quick probe of the numerical damping that makes travelling waves lose height
+(docs/validation/wave-propagation_history.md), at a few seconds a run where the flume takes
+minutes.
 
 The tank is one wavelength long, L = 1.373 m, water d = 0.3 m (the wave-propagation case's
 wave: kd = 1.37, T = 1 s); its second sloshing mode has the wavenumber k = 2 pi / L. The water
@@ -25,6 +26,14 @@ The tank's walls add the friction of the standing wave's vertical flow along the
 figure is a probe to compare set-ups with, not the flume's decay.
 
     python benchmarks/standing_wave_decay.py --rows 10 --periods 10 --set alpha=0 --set alpha=0 delta=0.2
+    python benchmarks/standing_wave_decay.py --rows 10 --periods 4 --width 5
+
+``--width ROWS``: the tank as a 3-D slice that many spacings wide between its walls, the
+mode uniform across it, the middle's elevation the mean of a gauge on each particle column
+across the width (the 3-D flume's wave reads high: docs/validation/
+wave-propagation_history.md). ``first_period_elevation_over_mode`` compares the surface with
+the water under it: the middle's first-period amplitude over ``a`` against the mode's over
+``A``.
 
 Each ``--set`` is one run (FluidConfig settings on top of the wave set-up,
 ``cosim.scene.setup.settings("waves", 2)``); with none, the set-up alone.
@@ -50,8 +59,10 @@ LENGTH = 2.0 * math.pi / wavenumber(WP_PERIOD, DEPTH, G)
 AMPLITUDE = 0.02
 
 
-def run(rows: int, periods: int, extra: dict) -> dict:
-    """One run at ``rows`` particle rows over the depth for ``periods`` periods."""
+def run(rows: int, periods: int, extra: dict, width_rows: int = 0) -> dict:
+    """One run at ``rows`` particle rows over the depth for ``periods`` periods; in 2-D, or
+    with ``width_rows`` > 0 in a 3-D slice that many spacings wide between the tank's walls
+    (the mode uniform across it)."""
     from fluid.geometry import set_hydrostatic, tank_with_water
     from fluid.probes import surface_elevation
     from fluid.solver import Fluid, FluidConfig
@@ -59,35 +70,45 @@ def run(rows: int, periods: int, extra: dict) -> dict:
     k, T = 2.0 * math.pi / LENGTH, WP_PERIOD
     omega = 2.0 * math.pi / T
     dx = DEPTH / rows
-    cfg = FluidConfig(dim=2, dx=dx, g=G, **{"u_max": math.sqrt(G * DEPTH), **settings("waves", 2), **extra})
-    ps = tank_with_water(2, dx, LENGTH, DEPTH, 1.6 * DEPTH, layers=math.ceil(2.0 * cfg.h_coef - 1e-9)).particles
+    dim = 3 if width_rows else 2
+    width = width_rows * dx
+    cfg = FluidConfig(dim=dim, dx=dx, g=G, **{"u_max": math.sqrt(G * DEPTH), **settings("waves", dim), **extra})
+    ps = tank_with_water(dim, dx, LENGTH, DEPTH, 1.6 * DEPTH, width=width,
+                         layers=math.ceil(2.0 * cfg.h_coef - 1e-9)).particles
     set_hydrostatic(ps, DEPTH, cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g)
     fluid = Fluid(cfg, ps)
     fluid.initialize(0.0)
     fluid.settle(2.0)
     water = fluid.ps.kind == 0
-    x, z = fluid.ps.pos[water, 0], fluid.ps.pos[water, 1]
+    x, z = fluid.ps.pos[water, 0], fluid.ps.pos[water, -1]
     A = AMPLITUDE * G * k / (omega * math.cosh(k * DEPTH))
     fluid.ps.vel[water, 0] = -A * np.cosh(k * z) * np.sin(k * x)
-    fluid.ps.vel[water, 1] = A * np.sinh(k * z) * np.cos(k * x)
+    fluid.ps.vel[water, -1] = A * np.sinh(k * z) * np.cos(k * x)
     ke0 = fluid.kinetic_energy()
 
     def modal() -> float:
         """The velocity field's projection on the mode's shape [m/s] (A at the start)."""
         w = fluid.ps.kind == 0
-        m, (xx, zz), v = fluid.ps.mass[w], fluid.ps.pos[w].T, fluid.ps.vel[w]
+        m, xx, zz, v = fluid.ps.mass[w], fluid.ps.pos[w, 0], fluid.ps.pos[w, -1], fluid.ps.vel[w]
         fu, fw = -np.cosh(k * zz) * np.sin(k * xx), np.sinh(k * zz) * np.cos(k * xx)
-        return float((m * (v[:, 0] * fu + v[:, 1] * fw)).sum() / (m * (fu * fu + fw * fw)).sum())
+        return float((m * (v[:, 0] * fu + v[:, -1] * fw)).sum() / (m * (fu * fu + fw * fw)).sum())
+
+    # the middle's elevation: on the tank's mid-line in 2-D; in 3-D the mean of a gauge on
+    # every particle column across the width
+    middle = [0.5 * LENGTH] if dim == 2 else [[0.5 * LENGTH, (j + 0.5) * dx] for j in range(width_rows)]
+
+    def middle_eta() -> float:
+        return float(np.mean(surface_elevation(fluid, middle)) - DEPTH)
 
     every = T / 32.0
-    ts, ke, eta, q = [0.0], [ke0], [surface_elevation(fluid, [0.5 * LENGTH])[0] - DEPTH], [modal()]
+    ts, ke, eta, q = [0.0], [ke0], [middle_eta()], [modal()]
     cpu0, t = time.process_time(), 0.0
     for _ in range(32 * periods):
         fluid.advance(t, every)
         t += every
         ts.append(t)
         ke.append(fluid.kinetic_energy())
-        eta.append(surface_elevation(fluid, [0.5 * LENGTH])[0] - DEPTH)
+        eta.append(middle_eta())
         q.append(modal())
     ts, ke, eta, q = np.array(ts), np.array(ke), np.array(eta), np.array(q)
     period_of = np.minimum((ts / T + 1e-9).astype(int), periods - 1)
@@ -103,7 +124,8 @@ def run(rows: int, periods: int, extra: dict) -> dict:
 
     decay = per_period(np.array(mode))
     n = 0.5 * (1.0 + 2.0 * k * DEPTH / math.sinh(2.0 * k * DEPTH))  # group over phase velocity
-    return {"rows": rows, "set": extra, "decay_per_period": decay, "per_wavelength_if_travelling": decay / n,
+    return {"rows": rows, "width_rows": width_rows, "set": extra,
+            "first_period_elevation_over_mode": round(amp[0] / mode[0], 4), "decay_per_period": decay, "per_wavelength_if_travelling": decay / n,
             "decay_of_the_middle_elevation": per_period(np.array(amp)),
             "decay_of_the_kinetic_energy_amplitude": per_period(np.sqrt(mean_ke)),
             "mode_amplitude_over_start": np.round(mode, 4).tolist(),
@@ -116,6 +138,8 @@ def main(argv=None) -> None:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--rows", nargs="+", type=int, default=[10], help="particle rows over the depth")
     ap.add_argument("--periods", type=int, default=10)
+    ap.add_argument("--width", type=int, default=0, metavar="ROWS",
+                    help="a 3-D slice this many spacings wide (default: 2-D)")
     ap.add_argument("--set", nargs="*", action="append", metavar="KEY=VALUE",
                     help="one run's FluidConfig settings on top of the wave set-up (repeat for more runs)")
     args = ap.parse_args(argv)
@@ -124,7 +148,7 @@ def main(argv=None) -> None:
     rows_out = []
     for rows in args.rows:
         for extra in variants:
-            r = run(rows, args.periods, extra)
+            r = run(rows, args.periods, extra, args.width)
             print(json.dumps(r), flush=True)
             rows_out.append(r)
     print("\n| rows | settings on the wave set-up | decay per period: the mode | the middle's elevation "
