@@ -64,7 +64,7 @@ def main() -> int:
      "k_mls_apply": (f8_1, f8_1, f8_1, b1, i8),
      "k_mdbc": (f8_2, f8_1, f8_1, i1_1, i4_1, f8_2, i8, i8, i4_1, f8_1, f8, i8, i8, i8, i8, f8, f8, f8, f8),
      "k_relax": (f8_2, f8_2, f8_2, b1, i1_1, i8, i8, f8, f8, f8, f8, b1, f8, f8, f8, f8, f8, f8_1, f8_1, f8_1, f8_1,
-                 f8_1, f8_1, f8, b1, f8, f8, f8, A(b1, 1), f8, f8, f8, f8, b1, f8, f8, f8, f8, f8),
+                 f8_1, f8_1, f8, b1, f8, f8, f8, A(b1, 1), f8, f8, f8, f8, b1, T.UniTuple(f8, 9)),
      "k_surface": (f8_2, f8_2, i1_1, f8_1, f8_1, i4_1, f8_1, f8, i8, i8, i8, i8, i8, f8, f8, f8, f8_1),
     }
     bad = 0

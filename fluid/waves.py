@@ -150,28 +150,41 @@ _linear_sums_parallel = njit(parallel=True, cache=True)(_linear_sums)
 _PARALLEL_TERMS = 20000
 
 
+#: the entries of :func:`stokes2_wave`'s array
+S2_K, S2_W, S2_PHASE, S2_A2, S2_A, S2_Q4, S2_INV_SH2, S2_DEN, S2_AW2 = range(9)
+
+
+def stokes2_wave(k: float, w: float, a: float, depth: float, phase: float, a2: float) -> tuple:
+    """What :func:`stokes2_point` needs of a Stokes-2 wave (9 floats, a tuple: passed by
+    value, numba keeps them in registers), its factors computed once:
+    wavenumber ``k`` [rad/m], ``w`` [rad/s], ``phase`` [rad], the second harmonic's amplitude
+    ``a2`` [m], ``A = 3/4 a² ω k``, ``8 / (1 − q)⁴`` and ``4 q / (1 − q)²`` with ``q =
+    e^-2kd``, ``1 − e^-2kd`` and ``a² ω²`` (amplitude ``a`` [m], depth ``depth`` [m])."""
+    q = math.exp(-2.0 * k * depth)
+    return tuple(float(v) for v in (k, w, phase, a2, 0.75 * a * a * w * k, 8.0 / (1.0 - q) ** 4,
+                                    4.0 * q / (1.0 - q) ** 2, -math.expm1(-2.0 * k * depth), a * a * w * w))
+
+
 @njit(cache=True)
-def stokes2_point(s, zeta, have_z, t, k, w, a, depth, phase, a2, r, dr, want):
+def stokes2_point(s, zeta, have_z, t, wave, depth, r, dr, want):
     """Stokes second order's terms at one point (:class:`RegularWave`'s docstring: Sorensen
     2006, Eqs. 3.7-3.10, and the pressure derived there): the increments of (η, u_h, w,
     ∂u_h/∂t, ∂w/∂t, p/ρ) that ``want`` (the rows :data:`ETA` ... :data:`P`) asks for (else
     0), faded with ``r²`` (``r``, ``r'`` the linear sums' fade-in), at ``s`` [m] along the
-    heading, ``zeta`` [m] below the still water (``have_z`` False: η alone), time ``t`` [s];
-    wavenumber ``k`` [rad/m], ``w`` [rad/s], amplitude ``a`` [m], ``phase`` [rad], ``a2`` the
-    second harmonic's amplitude [m]. ``cosh 2k(ζ+d) / sinh⁴ kd`` and ``sinh 2k(ζ+d) / sinh⁴
-    kd`` as ``8 (e1 ± e2) / (1 − e^-2kd)⁴`` with ``e1 = exp(2kζ − 2kd)``, ``e2 = exp(−2kζ −
-    6kd)``, both ≤ 1."""
+    heading, ``zeta`` [m] below the still water (``have_z`` False: η alone), time ``t`` [s],
+    of the wave ``wave`` (:func:`stokes2_wave`) in ``depth`` [m] of water. ``cosh 2k(ζ+d) /
+    sinh⁴ kd`` and ``sinh 2k(ζ+d) / sinh⁴ kd`` as ``8 (e1 ± e2) / (1 − e^-2kd)⁴`` with
+    ``e1 = exp(2kζ − 2kd)``, ``e2 = exp(−2kζ − 6kd)``, both ≤ 1."""
+    k, w = wave[S2_K], wave[S2_W]
     r2, dr2 = r * r, 2.0 * r * dr
-    th2 = 2.0 * (k * s - w * t + phase)
+    th2 = 2.0 * (k * s - w * t + wave[S2_PHASE])
     c2, s2 = math.cos(th2), math.sin(th2)
     eta = uh = wz = ah = aw = p = 0.0
     if want[ETA]:
-        eta = r2 * a2 * c2
+        eta = r2 * wave[S2_A2] * c2
     if not have_z:
         return eta, uh, wz, ah, aw, p
-    q = math.exp(-2.0 * k * depth)
-    q4 = 8.0 / (1.0 - q) ** 4
-    A = 0.75 * a * a * w * k
+    A, q4 = wave[S2_A], wave[S2_Q4]
     e1, e2 = math.exp(2.0 * k * zeta - 2.0 * k * depth), math.exp(-2.0 * k * zeta - 6.0 * k * depth)
     C2, S2 = q4 * (e1 + e2), q4 * (e1 - e2)
     if want[UH]:
@@ -181,27 +194,30 @@ def stokes2_point(s, zeta, have_z, t, k, w, a, depth, phase, a2, r, dr, want):
         ah = r2 * A * C2 * 2.0 * w * s2 + dr2 * A * C2 * c2
         aw = -r2 * A * S2 * 2.0 * w * c2 + dr2 * A * S2 * s2
     if want[P]:
-        inv_sh2 = 4.0 * q / (1.0 - q) ** 2
-        sh = (math.exp(k * zeta) - math.exp(-k * (zeta + 2.0 * depth))) / -math.expm1(-2.0 * k * depth)
-        p = r2 * a * a * w * w * ((0.75 * C2 - 0.25 * inv_sh2) * c2 - 0.5 * sh * sh)
+        sh = (math.exp(k * zeta) - math.exp(-k * (zeta + 2.0 * depth))) / wave[S2_DEN]  # sinh k(ζ+d)/sinh kd
+        p = r2 * wave[S2_AW2] * ((0.75 * C2 - 0.25 * wave[S2_INV_SH2]) * c2 - 0.5 * sh * sh)
     return eta, uh, wz, ah, aw, p
 
 
 @njit(cache=True)
-def _stokes2_terms(s, zeta, t, k, w, a, depth, phase, a2, want, sums):
-    """Add :func:`stokes2_point` at each point to the rows of ``sums`` (:func:`_linear_sums`'s,
-    its fade-in ``r``, ``r'`` in rows 6-7) that ``want`` asks for; ``zeta`` empty: η alone."""
+def _stokes2_terms(s, zeta, t, wave, depth, want, sums):
+    """Add :func:`stokes2_point` of ``wave`` (:func:`stokes2_wave`) at each point to the rows
+    of ``sums`` (:func:`_linear_sums`'s, its fade-in ``r``, ``r'`` in rows 6-7) that ``want``
+    asks for; ``zeta`` empty: η alone."""
     have_z = zeta.shape[0] > 0
     for i in range(s.shape[0]):
         z = zeta[i] if have_z else 0.0
-        eta, uh, wz, ah, aw, p = stokes2_point(s[i], z, have_z, t[i], k, w, a, depth, phase, a2, sums[6, i],
-                                               sums[7, i], want)
-        sums[ETA, i] += eta
-        sums[UH, i] += uh
-        sums[W, i] += wz
-        sums[AH, i] += ah
-        sums[AW, i] += aw
-        sums[P, i] += p
+        eta, uh, wz, ah, aw, p = stokes2_point(s[i], z, have_z, t[i], wave, depth, sums[6, i], sums[7, i], want)
+        if want[ETA]:  # the rows asked for only: the others are zeros
+            sums[ETA, i] += eta
+        if want[UH]:
+            sums[UH, i] += uh
+            sums[W, i] += wz
+        if want[AH]:
+            sums[AH, i] += ah
+            sums[AW, i] += aw
+        if want[P]:
+            sums[P, i] += p
 
 
 class SeaError(InputError):
@@ -591,6 +607,9 @@ class RegularWave(Sea):
                            f"d/λ = {d / lam:.3g}; here H/λ = {steep:.4f}, Ursell number H λ²/d³ = "
                            f"{self.ursell:.3g}); lower H, or use theory = 'linear' (a cnoidal theory would fit "
                            f"this shallow a wave)")
+        # Stokes second order's wave (stokes2_wave): None for a linear one
+        object.__setattr__(self, "_stokes2", stokes2_wave(k, self.omega, a, d, math.radians(ph), self.second_harmonic)
+                           if self.theory == "stokes2" else None)
 
     @property
     def omega(self) -> float:
@@ -653,10 +672,8 @@ class RegularWave(Sea):
         return self.theory != "stokes2"
 
     def _add_higher_order(self, sums, s, zeta, t, want) -> None:
-        if self.theory != "stokes2":
-            return
-        _stokes2_terms(s, zeta, t, self.k, self.omega, self.amplitude, self.depth, math.radians(self.phase),
-                       self.second_harmonic, want, sums)
+        if self._stokes2 is not None:
+            _stokes2_terms(s, zeta, t, self._stokes2, float(self.depth), want, sums)
 
 
 @dataclass(frozen=True)

@@ -576,16 +576,14 @@ def d_relax_col(V, i, vx, vy, vz, f, three):
 
 @cuda.jit
 def k_relax(P, V, X, use_x, kind, n, axis, x_in, inv, rate, dt, to_sea, t, e0, e1, level, depth, w, a, ph, k,
-            den, ap, s_ref, has_source, source, c_front, ramp, want, cx, cy, cz, wall, stokes2, k2, w2, a1, phase2,
-            a2):
+            den, ap, s_ref, has_source, source, c_front, ramp, want, cx, cy, cz, wall, stokes2, wave2):
     """A relaxation slab over a step ``dt`` [s] ending at ``t`` [s] (``fluid.relaxation.Slab``):
     each fluid particle inside it (``chi > 0``, ``chi = (x - x_in) inv`` along ``axis``)
     relaxed with the factor ``exp(-rate w(chi) dt)`` (``zone_factor``), towards rest
     (``_damp_to_rest``) or, ``to_sea``, towards the linear sea's velocity at it plus the
     return current (``cx``, ``cy``, ``cz``) and the end wall's rate ``wall`` along x
     (``fluid.nearfield._relax_to_sea``, in its order); ``stokes2``: plus Stokes second
-    order's terms of the regular wave (wavenumber ``k2``, ``w2`` [rad/s], amplitude ``a1``,
-    ``phase2`` [rad], second harmonic ``a2`` [m]: ``fluid.waves.RegularWave``), as its
+    order's terms of the regular wave ``wave2`` (``fluid.waves.stokes2_wave``), as its
     ``velocity_at`` adds them; ``X`` (Verlet's n-1 velocity) alike where ``use_x``."""
     dim = P.shape[0]
     three = dim == 3
@@ -607,7 +605,7 @@ def k_relax(P, V, X, use_x, kind, n, axis, x_in, inv, rate, dt, to_sea, t, e0, e
         zeta = min(max(P[dim - 1, i] - level, -depth), 0.0)
         _, uh, wz, _, _, _, r, dr = d_point_sums(s, zeta, t, True, w, a, ph, k, depth, den, ap, s_ref, fade, want)
         if stokes2:
-            _, uh2, wz2, _, _, _ = d_stokes2_point(s, zeta, True, t, k2, w2, a1, depth, phase2, a2, r, dr, want)
+            _, uh2, wz2, _, _, _ = d_stokes2_point(s, zeta, True, t, wave2, depth, r, dr, want)
             uh += uh2
             wz += wz2
         vx, vy, vz = uh * e0, uh * e1, wz

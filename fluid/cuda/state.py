@@ -10,8 +10,6 @@ loads (G x dim).
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 from numba import cuda
 
@@ -257,25 +255,24 @@ class DeviceState:
         fluid's life: the velocity rows ``point_sums`` is asked for, the device copies of the
         components and their factors (``fluid.waves.component_factors``), the frame
         (heading cosines, level, depth, ``s_ref`` and the fade-in's arguments), and Stokes
-        second order's flag and wave (``k_relax``'s last six arguments)."""
+        second order's flag and wave (``k_relax``'s last two arguments)."""
         from fluid.nearfield import _U_ONLY
         from fluid.waves import component_factors
 
         cache = self.__dict__.setdefault("_seas", {})
         key = id(sea)
         if key not in cache:
+            wave2 = getattr(sea, "_stokes2", None)  # a Stokes-2 RegularWave's (fluid.waves.stokes2_wave)
             if sea is None:
                 comps = tuple(np.zeros(0) for _ in range(6))
                 frame = (1.0, 0.0, 0.0, 1.0, 0.0, False, 0.0, 1.0, 0.0)
-                stokes2 = (False, 0.0, 0.0, 0.0, 0.0, 0.0)
             else:
                 w, a, ph, k = (np.ascontiguousarray(v, np.float64) for v in sea._comp)
                 comps = (w, a, ph, k) + component_factors(a, k, float(sea.depth), float(sea.g))
                 e0, e1 = sea._heading2
                 frame = (float(e0), float(e1), float(sea.level), float(sea.depth), float(sea._s_ref),
                          *sea._fade_args())
-                stokes2 = ((True, float(sea.k), float(sea.omega), float(sea.amplitude), math.radians(sea.phase),
-                            float(sea.second_harmonic)) if not sea.linear else (False, 0.0, 0.0, 0.0, 0.0, 0.0))
+            stokes2 = (wave2 is not None, (0.0,) * 9 if wave2 is None else wave2)
             cache[key] = (sea, cuda.to_device(_U_ONLY), tuple(cuda.to_device(c) for c in comps), frame, stokes2)
         return cache[key][1:]
 
