@@ -8,7 +8,8 @@ cases (docs/fluid.md, docs/setup_chooser.md). ``SPH(setup="auto")`` picks, from 
 set-up            picked when the scene has                 FluidConfig settings (2-D / 3-D)
 ================  ========================================  =========================================
 ``waves``         waves (a wavemaker, a near field's sea)   ``travelling_waves`` (h = 2 dx, 2.5 dx
-                                                            from 20 rows; walls "adami", ...); a
+                                                            from 20 rows; walls "adami", ...; 3-D:
+                                                            diffusion kept at the surface); a
                                                             near field: ``NEAR_FIELD`` (+ MLS)
 ``impulsive``     a vertical-walled tank shaken at a        the solver's defaults, walls "adami"
                   period <= T1 / 3 (T1: first sloshing)
@@ -21,7 +22,8 @@ set-up            picked when the scene has                 FluidConfig settings
 ``defaults``      (only when asked for)                     the solver's defaults
 ================  ========================================  =========================================
 
-Why: travelling waves lose height to the diffusion at the surface and the floor's friction;
+Why: travelling waves lose height to the diffusion at the surface and the floor's friction
+(in 2-D; a 3-D flume's wave grows along it with the surface's diffusion faded);
 at h = sqrt(2) dx the square lattice under pressure makes waves and sloshing 5-8 % fast
 (h = 2 dx is stable) and plain dynamic walls stiffen the contact line; in 3-D, diffusion
 everywhere sets a tank at rest circulating. Shaken fast, the wall pressure is impulsive
@@ -168,14 +170,17 @@ def choose(scene) -> Setup:
         cfg.update(NEAR_FIELD)
         reason += "; a near field: the density re-initialised every 150 steps, which holds its mean level"
     elif name == "waves" and isinstance(scene.domain, Flume):
-        from fluid.solver import FINE_WAVE_ROWS, FINE_WAVES, travelling_waves
+        from fluid.solver import FINE_WAVE_ROWS, FINE_WAVES, WAVES_3D, travelling_waves
 
         rows = scene.domain.level / scene.fluid.dx
-        waves = travelling_waves(rows)
+        waves = travelling_waves(rows, scene.world.dim)
         cfg.update(waves)
         if waves == FINE_WAVES:
             reason += (f"; {rows:.3g} particle rows over the depth (>= {FINE_WAVE_ROWS}): h = 2.5 dx, with which a "
                        "wave's decay per wavelength halves")
+        elif waves == WAVES_3D:
+            reason += ("; a 3-D flume: the density diffusion kept at the surface, without which a 3-D wave grows "
+                       "along the flume")
     cfg.update({key: getattr(sph, key) for key in _GIVEN})
     overridden = []
     for key in CONFIG_FIELDS:
