@@ -207,13 +207,25 @@ class PatchPressureProbe:
 # ---------------------------------------------------------------------- free surface
 @njit(**_OPTS)
 def _fraction(z, dh2, zb, vb, kernel, h, ad):
-    """Kernel-interpolated fluid fraction ``sum_b V_b W(r_b)`` at height ``z`` [m] of the
-    gauge line; ``dh2`` the squared horizontal distances of the candidates."""
+    """The fraction whose crossing of 0.5 is the surface at height ``z`` [m] of the gauge
+    line: the kernel-interpolated fluid fraction ``f = sum_b V_b W(r_b)`` over the fluid
+    candidates (``vb`` > 0), plus half the solid's ``s`` (the same sum over the boundary
+    candidates, ``vb`` < 0, whose volume is -vb), ``s`` taken up to 1/2. ``f + s/2 = 1/2``
+    is ``f = (1 - s) / 2``: the water fills half the kernel's room that no wall or body
+    takes, so a gauge beside a wall, or over water shallower than the kernel, reads the
+    surface where the water is; up to 1/2, since a gauge's line stands in the water (a wall
+    face takes at most half the kernel), so inside a solid ``f`` must still reach 1/4. ``dh2``
+    the squared horizontal distances of the candidates."""
     c = 0.0
+    s = 0.0
     for b in range(zb.shape[0]):
         dz = z - zb[b]
-        c += vb[b] * w_value(kernel, math.sqrt(dh2[b] + dz * dz) / h, ad)
-    return c
+        v = vb[b] * w_value(kernel, math.sqrt(dh2[b] + dz * dz) / h, ad)
+        if v >= 0.0:
+            c += v
+        else:
+            s -= v
+    return c + 0.5 * min(s, 0.5)
 
 
 @njit(**_OPTS)
@@ -249,8 +261,8 @@ def _crossing(z_lo, f_lo, z_hi, f_hi, dh2, zb, vb, kernel, h, ad, tol):
 @njit(**_OPTS)  # serial: a handful of gauges
 def _surface(gauges, pos, kind, mass, rho, start, lo, inv_cell, nx, ny, nz, reach, kernel, h, ad,
              step, out):
-    """Highest z where the fluid fraction crosses 0.5 going down each gauge's vertical
-    line; where it never does (a dry gauge), the bed's surface: half a spacing (2 ``step``)
+    """Highest z where the fraction of :func:`_fraction` crosses 0.5 going down each gauge's
+    vertical line; where it never does (a dry gauge), the bed's surface: half a spacing (2 ``step``)
     above the highest boundary particle within 3 ``step`` of the line; NaN where there is
     neither."""
     three = pos.shape[1] == 3
@@ -262,10 +274,14 @@ def _surface(gauges, pos, kind, mass, rho, start, lo, inv_cell, nx, ny, nz, reac
         gx = gauges[a, 0]
         gy = gauges[a, 1] if three else 0.0
         cx, cy, cz0 = cell_coords(gx, gy, lo[zc], lo, inv_cell, three, nx, ny, nz)
-        # the fluid particles within 2h of the line (two passes, count then fill), and the
-        # top of the bed under it
+        # the particles within 2h of the line (two passes, count then fill; the fluid's
+        # volumes positive, the boundary's negative: _fraction), the fluid's extent, and
+        # the top of the bed under the line
         n = 0
+        n_fluid = 0
         bed = -np.inf
+        z_top = -np.inf
+        z_bottom = np.inf
         for cz in range(nz):
             for k in range(dys):
                 dy = k - reach if three else 0
@@ -274,13 +290,17 @@ def _surface(gauges, pos, kind, mass, rho, start, lo, inv_cell, nx, ny, nz, reac
                     rx = gx - pos[b, 0]
                     ry = gy - pos[b, 1] if three else 0.0
                     r2 = rx * rx + ry * ry
+                    if r2 < R2:
+                        n += 1
                     if kind[b] == _FLUID:
                         if r2 < R2:
-                            n += 1
+                            n_fluid += 1
+                            z_top = max(z_top, pos[b, zc])
+                            z_bottom = min(z_bottom, pos[b, zc])
                     elif r2 <= B2 and pos[b, zc] > bed:
                         bed = pos[b, zc]
         dry = bed + 2.0 * step if bed > -np.inf else np.nan
-        if n == 0:
+        if n_fluid == 0:
             out[a] = dry
             continue
         dh2 = np.empty(n)
@@ -294,15 +314,15 @@ def _surface(gauges, pos, kind, mass, rho, start, lo, inv_cell, nx, ny, nz, reac
                 for b in range(j0, j1):
                     rx = gx - pos[b, 0]
                     ry = gy - pos[b, 1] if three else 0.0
-                    if kind[b] == _FLUID and rx * rx + ry * ry < R2:
+                    if rx * rx + ry * ry < R2:
                         dh2[n] = rx * rx + ry * ry
                         zb[n] = pos[b, zc]
-                        vb[n] = mass[b] / rho[b]
+                        vb[n] = mass[b] / rho[b] if kind[b] == _FLUID else -mass[b] / rho[b]
                         n += 1
-        # march down from above every candidate's support (fraction 0) in steps of
+        # march down from above the fluid candidates' support (no water there) in steps of
         # ``step`` until the fraction reaches 0.5, then solve for the crossing in that step
-        z_hi = zb.max() + 2.0 * h
-        z_end = zb.min() - 2.0 * h
+        z_hi = z_top + 2.0 * h
+        z_end = z_bottom - 2.0 * h
         f_hi = -0.5
         out[a] = dry
         while z_hi > z_end:
@@ -332,13 +352,17 @@ def _gauges(gauges, dim: int, what: str) -> np.ndarray:
 def surface_elevation(fluid, gauges) -> np.ndarray:
     """Free-surface height z [m] at each gauge: 2-D ``gauges`` are x positions (M,) [m],
     3-D (x, y) positions (M, 2) [m]. The surface is the highest z on the gauge's vertical
-    line where the kernel-interpolated fluid fraction ``sum_b (m_b/rho_b) W(r_b)`` crosses
-    0.5 (a flat surface lies dx/2 above its top particle layer, where a half-space of fluid
-    fills half the kernel). Isolated drops do not count (one particle fills at most ~0.3 of
-    the kernel). A dry gauge (a film too thin for the fraction to reach 0.5, or no fluid
-    within 2h of the line) reads the bed's surface, half a spacing above the highest wall or
-    body particle within 0.75 dx of the line (a water depth of zero); NaN where there is
-    neither water nor bed under it. Located to dx/4, then solved to 1e-9 of that."""
+    line where the kernel-interpolated fluid fraction ``f = sum_b (m_b/rho_b) W(r_b)``
+    fills half the kernel's room that walls and bodies leave, ``f = (1 - s) / 2`` with ``s``
+    the same sum over the boundary particles, up to 1/2 (a flat surface lies dx/2 above its
+    top particle layer, where a half-space of fluid fills half the kernel; beside a wall or
+    over water shallower than the kernel's support the wall takes its share of the kernel,
+    which the fluid's fraction alone would read as a surface up to a spacing low). Isolated
+    drops in the air do not count (one particle fills at most ~0.3 of the kernel). A dry
+    gauge (a film too thin for the fraction to reach its half, or no fluid within 2h of the
+    line) reads the bed's surface, half a spacing above the highest wall or body particle
+    within 0.75 dx of the line (a water depth of zero); NaN where there is neither water nor
+    bed under it. Located to dx/4, then solved to 1e-9 of that."""
     c = fluid.config
     g = _gauges(gauges, c.dim, "surface_elevation")
     grid = _grid(fluid)

@@ -267,3 +267,22 @@ def test_gauges_read_a_cosine_surface_in_2d_and_3d(dim):
     c = np.linalg.lstsq(np.column_stack([np.cos(k * x), np.sin(k * x), np.ones_like(x)]), eta, rcond=None)[0]
     assert math.hypot(c[0], c[1]) / a == pytest.approx(1.0, abs=0.015)
     assert abs(c[1]) < 0.02 * a and abs(c[2] - depth) < dx / 10
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_gauges_beside_a_wall_and_over_shallow_water_read_the_water(dim):
+    """Still water at rest in a tank (h = 2 dx): gauges on the first six particle columns
+    from a wall (in 3-D on the diagonal from the corner of two walls) read the still level
+    within dx / 10, the columns beside a wall as the middle does, over water 10 and 3 rows
+    deep (the latter shallower than the kernel's support: the floor in it). Counting
+    the fluid alone, the wall's share of the kernel read as missing water: the column beside
+    a wall 0.6 dx low, the corner's column dry (10 dx low)."""
+    dx = 0.01
+    for depth in (0.1, 0.03):
+        b = tank_with_water(dim, dx, 0.12, depth, depth + 0.1, width=0.08)
+        cfg = FluidConfig(dim=dim, dx=dx, u_max=1.0, h_coef=2.0, threads=1)
+        f = Fluid(cfg, b.particles)
+        f.initialize(0.0)
+        x = (np.arange(6) + 0.5) * dx  # from the left wall's face inwards
+        eta = surface_elevation(f, x if dim == 2 else np.stack([x, (np.arange(6) + 0.5) * dx], 1))
+        np.testing.assert_allclose(eta, depth, atol=dx / 10, err_msg=f"depth {depth}")

@@ -8,9 +8,8 @@ cases (docs/fluid.md, docs/setup_chooser.md). ``SPH(setup="auto")`` picks, from 
 set-up            picked when the scene has                 FluidConfig settings (2-D / 3-D)
 ================  ========================================  =========================================
 ``waves``         waves (a wavemaker, a near field's sea)   ``travelling_waves`` (h = 2 dx, 2.5 dx
-                                                            from 20 rows; walls "adami", ...; 3-D:
-                                                            diffusion kept at the surface); a
-                                                            near field: ``NEAR_FIELD`` (+ MLS)
+                                                            from 20 rows in 2-D; walls "adami",
+                                                            ...); a near field: ``NEAR_FIELD``
 ``impulsive``     a vertical-walled tank shaken at a        the solver's defaults, walls "adami"
                   period <= T1 / 3 (T1: first sloshing)
 ``sloshing``      any other moving tank (``base_motion``)   2-D: ``SLOSHING_2D`` (h = 2 dx, walls
@@ -23,13 +22,12 @@ set-up            picked when the scene has                 FluidConfig settings
 ================  ========================================  =========================================
 
 Why: travelling waves lose height to the diffusion at the surface and the floor's friction
-(in 2-D; a 3-D flume's wave grows along it with the surface's diffusion faded);
-at h = sqrt(2) dx the square lattice under pressure makes waves and sloshing 5-8 % fast
-(h = 2 dx is stable) and plain dynamic walls stiffen the contact line; in 3-D, diffusion
-everywhere sets a tank at rest circulating. Shaken fast, the wall pressure is impulsive
-(Housner 1963, Bull. Seismol. Soc. Am. 53): at steady state mode n's convective part is
-``w_n^2 / (w^2 - w_n^2)`` of its impulsive part (the modal equation of
-``cosim.validations.forced_sloshing``), at most 1/8 for the first mode at T <= T1 / 3, and
+(a 3-D flume's wave grows without the former); at h = sqrt(2) dx the square lattice under
+pressure makes waves and sloshing 5-8 % fast (h = 2 dx is stable) and plain dynamic walls
+stiffen the contact line; in 3-D, diffusion everywhere sets a still tank circulating.
+Shaken fast, the wall pressure is impulsive (Housner 1963, Bull. Seismol. Soc. Am. 53): at
+steady state mode n's convective part is ``w_n^2 / (w^2 - w_n^2)`` of its impulsive part
+(``cosim.validations.forced_sloshing``'s modal equation), at most 1/8 for mode 1 at T <= T1 / 3, and
 the wall-pressure cases meet their targets with less error at the solver's h (an inclined
 wall's pressure at it grows noisy at fine dx: inclined tanks keep "sloshing"). An impact keeps
 the defaults (the faded diffusion quadruples a dam break's pressure noise). The measured

@@ -622,16 +622,18 @@ def k_relax(P, V, X, use_x, kind, n, axis, x_in, inv, rate, dt, to_sea, t, e0, e
 @cuda.jit(device=True)
 def d_line_walk(z, rows, arrays, kernel, h, ad, B2):
     """One walk over a gauge's line in the order ``fluid.probes._surface`` gathers its
-    candidates: the fluid fraction at height ``z`` [m] (``_fraction``), the count of fluid
-    particles within 2h of the line and their highest and lowest z [m], and the top of the
-    boundary particles within ``sqrt(B2)`` of it (the bed); ``rows`` = (gx, gy, cx, cy, nx,
-    ny, nz, reach, R2), ``arrays`` = (P, kind, mass, rho, start)."""
+    candidates: the fraction at height ``z`` [m] (``_fraction``: the fluid's, plus half the
+    boundary's up to 1/2), the count of fluid particles within 2h of the line and their
+    highest and lowest z [m], and the top of the boundary particles within ``sqrt(B2)`` of
+    it (the bed); ``rows`` = (gx, gy, cx, cy, nx, ny, nz, reach, R2), ``arrays`` = (P, kind,
+    mass, rho, start)."""
     gx, gy, cx, cy, nx, ny, nz, reach, R2 = rows
     P, kind, mass, rho, start = arrays
     three = P.shape[0] == 3
     zc = P.shape[0] - 1
     dys = 2 * reach + 1 if three else 1
     c = 0.0
+    s = 0.0
     n = 0
     bed = -math.inf
     top = -math.inf
@@ -645,16 +647,21 @@ def d_line_walk(z, rows, arrays, kernel, h, ad, B2):
                 ry = gy - P[1, b] if three else 0.0
                 dh2 = rx * rx + ry * ry
                 zb = P[zc, b]
+                if dh2 < R2:
+                    dz = z - zb
+                    v = mass[b] / rho[b] * tm.kernel_w(kernel, math.sqrt(dh2 + dz * dz) / h, ad)
+                    if kind[b] == 0:
+                        c += v
+                    else:
+                        s += v
                 if kind[b] == 0:
                     if dh2 < R2:
                         n += 1
                         top = max(top, zb)
                         bottom = min(bottom, zb)
-                        dz = z - zb
-                        c += mass[b] / rho[b] * tm.kernel_w(kernel, math.sqrt(dh2 + dz * dz) / h, ad)
                 elif dh2 <= B2 and zb > bed:
                     bed = zb
-    return c, n, bed, top, bottom
+    return c + 0.5 * min(s, 0.5), n, bed, top, bottom
 
 
 @cuda.jit(device=True)
@@ -672,7 +679,7 @@ d_line_crossing = _device(probes._crossing, _fraction=d_walk_fraction)
 @cuda.jit
 def k_surface(G, P, kind, mass, rho, start, lo, inv_cell, nx, ny, nz, reach, kernel, h, ad, step, out):
     """``fluid.probes._surface`` with one thread per gauge (``G`` (M, 2): x, and y in 3-D):
-    the highest z where the fluid fraction crosses 0.5 going down the gauge's line, else
+    the highest z where the fraction (``_fraction``) crosses 0.5 going down the gauge's line, else
     the bed's surface (2 ``step`` above the highest boundary particle within 3 ``step`` of
     the line), NaN where there is neither; ``lo`` the grid's corner (dim,). The candidates
     are walked in the cells' rows at each evaluation, not gathered (no arrays here)."""
