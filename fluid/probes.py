@@ -23,7 +23,7 @@ import numpy as np
 from numba import njit, prange
 
 from errors import InputError
-from fluid.kernels import alpha_d, w_value
+from fluid.kernels import alpha_d, kernel_id, w_value
 from fluid.neighbours import cell_coords, row_range
 from fluid.particles import Kind
 
@@ -385,6 +385,31 @@ def surface_elevation(fluid, gauges) -> np.ndarray:
     _surface(g, ps.pos, ps.kind, ps.mass, ps.rho, start, lo, 1.0 / grid.cell, nx, ny, nz, grid.reach,
              k, c.h, alpha_d(k, c.dim, c.h), 0.25 * c.dx, out)
     return out
+
+
+def gauge_response(k, h: float, dim: int, kernel: str = "wendland") -> np.ndarray:
+    """The fraction of a small sinusoidal surface wave's amplitude that
+    :func:`surface_elevation` reads, at wavenumbers ``k`` [1/m] (any shape), smoothing
+    length ``h`` [m], in ``dim`` dimensions: a gauge is a low-pass filter. Linearised about a
+    flat surface, the fraction at the gauge's line changes by ``sum_b V_b W`` over the
+    surface's displacement, ``int eta(x') W(x - x', 0) dx'``, and by ``z int W(s, 0) ds``
+    with the height ``z``; so the crossing reads ``eta`` averaged with the kernel's profile
+    across the surface, ``G(k) = int W(s) cos(k s) ds / int W(s) ds`` (2-D: along a line;
+    3-D: over the plane, ``int W(r) J0(k r) r dr / int W(r) r dr``). G = 0.80, 0.905, 0.945,
+    0.975, 0.991 at wavelengths 10, 15, 20, 30, 50 dx at h = 2 dx (the wave's height
+    stands beside it in the particles; tests/test_fluid_probes.py reads stretched lattices).
+    Limits: linear in the amplitude (measured independent of it up to a = dx); the lattice's
+    discreteness adds about 0.002."""
+    from scipy.special import j0
+
+    kid = kernel_id(kernel)
+    x, wq = np.polynomial.legendre.leggauss(64)
+    r = h * (1.0 + x)  # the support 0 .. 2h
+    w = np.array([w_value(kid, q, 1.0) for q in r / h]) * wq
+    kr = np.multiply.outer(np.asarray(k, np.float64), r)
+    if dim == 2:
+        return (np.cos(kr) * w).sum(-1) / w.sum()
+    return (j0(kr) * (w * r)).sum(-1) / (w * r).sum()
 
 
 class WaveGauge:

@@ -286,3 +286,37 @@ def test_gauges_beside_a_wall_and_over_shallow_water_read_the_water(dim):
         x = (np.arange(6) + 0.5) * dx  # from the left wall's face inwards
         eta = surface_elevation(f, x if dim == 2 else np.stack([x, (np.arange(6) + 0.5) * dx], 1))
         np.testing.assert_allclose(eta, depth, atol=dx / 10, err_msg=f"depth {depth}")
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_a_gauge_reads_a_short_wave_by_its_response(dim):
+    """Lattices stretched to a cosine surface (the particles' own amplitude a = dx / 2) at
+    wavelengths 10, 15, 20 and 40 dx, h = 2 dx: the gauges' least-squares amplitude is
+    fluid.probes.gauge_response of the wavenumber within 0.004 (0.80 at 10 dx: the kernel's
+    profile across the surface averages the wave), and the response falls with k, from 1."""
+    from fluid.probes import gauge_response
+
+    dx, depth, rows_wide = 0.02, 0.2, 3
+    h = 2.0 * dx
+    read = []
+    for lam in (10, 15, 20, 40):
+        wavelength, a = lam * dx, 0.5 * dx
+        k = 2.0 * math.pi / wavelength
+        lo = np.zeros(dim)
+        hi = np.array([2.0 * wavelength, 0.4] if dim == 2 else [2.0 * wavelength, rows_wide * dx, 0.4])
+        top = hi.copy()
+        top[-1] = depth
+        pts = block(lo, top, dx)
+        stretch = 1.0 + a * np.cos(k * pts[:, 0]) / depth
+        pts[:, -1] *= stretch
+        b = assemble(dim, dx, RHO0, pts, [(tank_walls(lo, hi, dx), Kind.FIXED_WALL, 0)])
+        b.particles.mass[b.particles.kind == Kind.FLUID] *= stretch
+        f = Fluid(FluidConfig(dim=dim, dx=dx, c0=20.0, h_coef=2.0, threads=1), b.particles)
+        f.initialize(0.0)
+        x = np.linspace(0.5, 1.5, 21) * wavelength
+        eta = surface_elevation(f, x if dim == 2 else np.stack([x, np.full(x.size, 0.5 * rows_wide * dx)], 1))
+        c = np.linalg.lstsq(np.column_stack([np.cos(k * x), np.sin(k * x), np.ones_like(x)]), eta, rcond=None)[0]
+        read.append(math.hypot(c[0], c[1]) / a)
+        assert read[-1] == pytest.approx(float(gauge_response(k, h, dim)), abs=0.004), lam
+    assert read[0] < 0.82 and np.all(np.diff(read) > 0)
+    assert gauge_response(0.0, h, dim) == pytest.approx(1.0)

@@ -166,6 +166,26 @@ def test_the_first_harmonic_is_read_through_a_slow_drift():
     assert first_harmonic(t, x, w) == pytest.approx(0.0217, rel=1e-10)
 
 
+def test_an_irregular_record_is_read_through_the_gauges_response():
+    """irregular_metrics with the gauges' response (fluid.probes.gauge_response at linear
+    dispersion's wavenumber): a record whose every component is the sea's times that
+    response (h = 4 cm, d = 0.3 m, 0.5-3 fp at equal amplitudes: 0.997 at fp, 0.865 at
+    3 fp) reads Hs 3.4 % short, and the particles' Hs (the record less the response) is the
+    sea's within 0.3 %."""
+    from cosim.validations.nearfield import gauge_response_of, irregular_metrics
+
+    tp, t = 1.2, np.arange(0.0, 240.0, 0.02)
+    response = gauge_response_of(0.04, 0.3, 9.81, 2)
+    f = np.linspace(0.5, 3.0, 60) / tp
+    phase = np.random.default_rng(3).uniform(0.0, 2.0 * math.pi, f.size)
+    waves = np.cos(2.0 * math.pi * np.multiply.outer(t, f) + phase)
+    r = {"t": t, "sea_eta": (waves * 0.002)[:, :, None].sum(1), "eta": (waves * 0.002 * response(f))[:, :, None].sum(1)}
+    q = irregular_metrics(r, tp, 0.0, response)
+    assert 0.96 < q["Hs_over_sea"][0] < 0.97
+    assert q["Hs_fluid_over_sea"][0] == pytest.approx(1.0, abs=0.003)
+    assert response(np.array([1.0 / tp, 3.0 / tp])) == pytest.approx([0.997, 0.865], abs=0.001)
+
+
 @pytest.mark.slow
 def test_the_quick_floating_box_case_runs_and_judges_its_targets():
     """cosim validate nearfield-floating-box --quick: the moored box in its flume, in the near

@@ -138,12 +138,17 @@ def regular_metrics(r: dict, period: float, fit_periods: float = 3.0) -> dict:
     return {"H1_over_H": np.abs(ratio), "lag_periods": -np.angle(ratio) / (2.0 * math.pi)}
 
 
-def irregular_metrics(r: dict, tp: float, ramp: float) -> dict:
+def irregular_metrics(r: dict, tp: float, ramp: float, response=None) -> dict:
     """Per gauge, after the sea's ``ramp`` [s]: ``Hs = 4 sqrt(m0)`` and the peak period of
     the record over the sea's there, and the worst ratio of the record's Welch spectrum to
     the sea's over 0.7-1.5 fp (segments of 8 peak periods, Hann windows overlapping by
     half: about 2 (n_segments) degrees of freedom per band each, but the same realisation in
-    both, so the ratio's scatter is what the fluid adds)."""
+    both, so the ratio's scatter is what the fluid adds). ``response``: a function of the
+    frequency [Hz] giving the gauges' own response (:func:`fluid.probes.gauge_response` at
+    the wave's wavenumber); with it, also ``Hs_fluid_over_sea``, the record's spectrum
+    divided by its square where the response is at least 1/2 (waves at least ~7 spacings
+    long; the record's noise above is taken as read): the Hs the particles carry, which the
+    gauge reads low where the waves are a few tens of spacings long."""
     from scipy.signal import welch
 
     ts = r["t"]
@@ -157,9 +162,23 @@ def irregular_metrics(r: dict, tp: float, ramp: float) -> dict:
     df = f[1] - f[0]
     hs = 4.0 * np.sqrt(s_sph[f > 0].sum(axis=0) * df) / (4.0 * np.sqrt(s_sea[f > 0].sum(axis=0) * df))
     tp_ratio = f[np.argmax(s_sea, axis=0)] / f[np.argmax(s_sph, axis=0)]
-    return {"Hs_over_sea": hs, "Tp_over_sea": tp_ratio,
-            "spectrum_worst": np.abs(s_sph[band] / s_sea[band] - 1.0).max(axis=0),
-            "f_Hz": f, "S_sph": s_sph.mean(axis=1), "S_sea": s_sea.mean(axis=1)}
+    out = {"Hs_over_sea": hs, "Tp_over_sea": tp_ratio,
+           "spectrum_worst": np.abs(s_sph[band] / s_sea[band] - 1.0).max(axis=0),
+           "f_Hz": f, "S_sph": s_sph.mean(axis=1), "S_sea": s_sea.mean(axis=1)}
+    if response is not None:
+        g2 = np.maximum(response(f[f > 0]), 0.5)[:, None] ** 2  # shorter than ~7 dx: taken as read
+        out["Hs_fluid_over_sea"] = np.sqrt((s_sph[f > 0] / g2).sum(axis=0) / s_sea[f > 0].sum(axis=0))
+    return out
+
+
+def gauge_response_of(h: float, depth: float, g: float, dim: int):
+    """The function of the frequency [Hz] that :func:`irregular_metrics` takes: the gauges'
+    response (:func:`fluid.probes.gauge_response`, smoothing length ``h`` [m], ``dim``) at
+    the wavenumber of linear dispersion in water ``depth`` [m] deep."""
+    from fluid.probes import gauge_response
+    from fluid.wavemaker import wavenumbers
+
+    return lambda f: gauge_response(wavenumbers(2.0 * np.pi * f, depth, g), h, dim)
 
 
 def _sea(kind: str, duration: float):
@@ -208,7 +227,7 @@ def run_scene(scene) -> dict:
         r = read_box(b.sph, b.sea, d.x1 - d.x0, d.zone, scene.world.duration, cpu0, x0=d.x0, y=y,
                      settle=scene.fluid.settle, samples_per_period=round(b.sea.peak_period / scene.world.sample_every),
                      progress=True)
-        return r | {"sea": b.sea}
+        return r | {"sea": b.sea, "h": b.sph.config.h}
 
 
 #: the first run of each variant (quick: True): the sea, H / dx and periods of :func:`waves_scene`
@@ -237,8 +256,9 @@ def nearfield_case(h_over_dx, periods: float, jonswap_periods: float, seas=NF_SE
              "particles": run["particles"], "steps": run["steps"], "cpu_s": round(run["cpu_s"], 1),
              "lost": run["removed"]}
         if kind == "jonswap":
-            q = irregular_metrics(run, period, ramp)
+            q = irregular_metrics(run, period, ramp, gauge_response_of(run["h"], depth, scene.world.g, dim))
             m |= {"Hs_error": float(np.abs(q["Hs_over_sea"] - 1.0).max()),
+                  "Hs_fluid_error": float(np.abs(q["Hs_fluid_over_sea"] - 1.0).max()),
                   "Tp_error": float(np.abs(q["Tp_over_sea"] - 1.0).max()),
                   "spectrum_error": float(q["spectrum_worst"].max())}
             series[f"JONSWAP spectrum, Hs/dx = {r}"] = {
