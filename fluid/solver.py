@@ -66,7 +66,7 @@ def _sum_groups(pos, mass, acc, group, centre, F, M):
 #: Fluid.settle. Measured figures: the docstring of cosim.scene.setup.
 SLOSHING_2D = {"h_coef": 2.0, "walls": "adami"}
 
-#: the set-up for waves that travel (a 2-D flume's wavemaker, a near field's sea): that of
+#: the set-up for waves that travel (a flume's wavemaker, 2-D and 3-D): that of
 #: :data:`SLOSHING_2D`, and what keeps a wave's height along the flume (docs/validation/
 #: wave-propagation_history.md; ``cosim validate wave-propagation``). Measured, the height a wave loses per
 #: wavelength comes from three terms: the density diffusion where the free surface cuts
@@ -88,23 +88,10 @@ FINE_WAVE_ROWS = 20
 FINE_WAVES = TRAVELLING_WAVES | {"h_coef": 2.5}
 
 
-#: the wave set-up of a 3-D flume, at any spacing: :data:`TRAVELLING_WAVES` with the density
-#: diffusion kept at the surface. With it faded, the piston wave in a 3-D slice grows to
-#: 1.05-1.09 of linear theory's height over three wavelengths at 10 rows (the 2-D flume
-#: 0.97-0.99) and a standing wave in a slice loses 0.2-3.7 % a period as the slice's width
-#: changes (2.3 % in 2-D); kept, the slices decay as the 2-D tank does and the flume's wave
-#: stays within 2 % of linear theory to 1.25 wavelengths. h = 2.5 dx, which serves 2-D from
-#: 20 rows, made the 3-D wave 1.14-1.32 of linear theory's at 10 rows (docs/validation/
-#: wave-propagation_history.md, "The 3-D slice's high wave ...")
-WAVES_3D = TRAVELLING_WAVES | {"diffusion_at_surface": True}
-
-
-def travelling_waves(rows: float, dim: int = 2) -> dict:
+def travelling_waves(rows: float) -> dict:
     """The set-up of waves that travel many wavelengths at ``rows`` particle rows over the
-    water's depth: in 2-D :data:`FINE_WAVES` from :data:`FINE_WAVE_ROWS`, else
-    :data:`TRAVELLING_WAVES`; in 3-D :data:`WAVES_3D`."""
-    if dim == 3:
-        return dict(WAVES_3D)
+    water's depth: :data:`FINE_WAVES` from :data:`FINE_WAVE_ROWS`, else
+    :data:`TRAVELLING_WAVES`."""
     return dict(FINE_WAVES if rows >= FINE_WAVE_ROWS - 1e-9 else TRAVELLING_WAVES)
 
 

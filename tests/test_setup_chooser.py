@@ -152,23 +152,3 @@ def test_a_flume_at_twenty_rows_or_more_takes_the_wider_kernel():
     near = flume.with_values(["fluid.dx=0.01", "domain.kind=nearfield", "waves.kind=regular", "waves.depth=0.3"])
     assert choose(near).config["h_coef"] == 2.0
     assert choose(flume.with_values(["fluid.dx=0.01", "fluid.h_coef=1.8"])).config["h_coef"] == 1.8
-
-
-def test_a_3d_flume_keeps_the_density_diffusion_at_the_surface():
-    """A flume in 3-D takes fluid.solver.WAVES_3D at any spacing (with the diffusion faded
-    at the surface a 3-D wave grows along the flume, and h = 2.5 dx made it worse): h = 2 dx,
-    the diffusion kept at the surface; in 2-D the same flume fades it; a near field in 3-D
-    fades it as NEAR_FIELD does; the scene's own value overrides."""
-    from cosim.validations.wave_propagation import wave_scene
-    from fluid.solver import NEAR_FIELD, WAVES_3D
-
-    for rows in (10, 20):
-        s = choose(wave_scene(rows, 1, 5))
-        assert s.name == "waves" and {k: s.config[k] for k in WAVES_3D} == WAVES_3D, rows
-        assert s.config["diffusion_at_surface"] is True and s.config["h_coef"] == 2.0
-        assert "diffusion kept at the surface" in s.reason
-        assert choose(wave_scene(rows, 1)).config["diffusion_at_surface"] is False
-    near = case_scene.load("wind-turbine-sph")
-    assert near.world.dim == 3 and choose(near).config["diffusion_at_surface"] is NEAR_FIELD["diffusion_at_surface"]
-    own = wave_scene(10, 1, 5).with_values(["fluid.diffusion_at_surface=false"])
-    assert choose(own).config["diffusion_at_surface"] is False

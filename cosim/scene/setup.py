@@ -8,8 +8,8 @@ cases (docs/fluid.md, docs/setup_chooser.md). ``SPH(setup="auto")`` picks, from 
 set-up            picked when the scene has                 FluidConfig settings (2-D / 3-D)
 ================  ========================================  =========================================
 ``waves``         waves (a wavemaker, a near field's sea)   ``travelling_waves`` (h = 2 dx, 2.5 dx
-                                                            from 20 rows in 2-D; walls "adami",
-                                                            ...); a near field: ``NEAR_FIELD``
+                                                            from 20 rows; walls "adami", ...); a
+                                                            near field: ``NEAR_FIELD`` (+ MLS)
 ``impulsive``     a vertical-walled tank shaken at a        the solver's defaults, walls "adami"
                   period <= T1 / 3 (T1: first sloshing)
 ``sloshing``      any other moving tank (``base_motion``)   2-D: ``SLOSHING_2D`` (h = 2 dx, walls
@@ -21,13 +21,13 @@ set-up            picked when the scene has                 FluidConfig settings
 ``defaults``      (only when asked for)                     the solver's defaults
 ================  ========================================  =========================================
 
-Why: travelling waves lose height to the diffusion at the surface and the floor's friction
-(a 3-D flume's wave grows without the former); at h = sqrt(2) dx the square lattice under
-pressure makes waves and sloshing 5-8 % fast (h = 2 dx is stable) and plain dynamic walls
-stiffen the contact line; in 3-D, diffusion everywhere sets a still tank circulating.
-Shaken fast, the wall pressure is impulsive (Housner 1963, Bull. Seismol. Soc. Am. 53): at
-steady state mode n's convective part is ``w_n^2 / (w^2 - w_n^2)`` of its impulsive part
-(``cosim.validations.forced_sloshing``'s modal equation), at most 1/8 for mode 1 at T <= T1 / 3, and
+Why: travelling waves lose height to the diffusion at the surface and the floor's friction;
+at h = sqrt(2) dx the square lattice under pressure makes waves and sloshing 5-8 % fast
+(h = 2 dx is stable) and plain dynamic walls stiffen the contact line; in 3-D, diffusion
+everywhere sets a tank at rest circulating. Shaken fast, the wall pressure is impulsive
+(Housner 1963, Bull. Seismol. Soc. Am. 53): at steady state mode n's convective part is
+``w_n^2 / (w^2 - w_n^2)`` of its impulsive part (the modal equation of
+``cosim.validations.forced_sloshing``), at most 1/8 for the first mode at T <= T1 / 3, and
 the wall-pressure cases meet their targets with less error at the solver's h (an inclined
 wall's pressure at it grows noisy at fine dx: inclined tanks keep "sloshing"). An impact keeps
 the defaults (the faded diffusion quadruples a dam break's pressure noise). The measured
@@ -168,17 +168,14 @@ def choose(scene) -> Setup:
         cfg.update(NEAR_FIELD)
         reason += "; a near field: the density re-initialised every 150 steps, which holds its mean level"
     elif name == "waves" and isinstance(scene.domain, Flume):
-        from fluid.solver import FINE_WAVE_ROWS, FINE_WAVES, WAVES_3D, travelling_waves
+        from fluid.solver import FINE_WAVE_ROWS, FINE_WAVES, travelling_waves
 
         rows = scene.domain.level / scene.fluid.dx
-        waves = travelling_waves(rows, scene.world.dim)
+        waves = travelling_waves(rows)
         cfg.update(waves)
         if waves == FINE_WAVES:
             reason += (f"; {rows:.3g} particle rows over the depth (>= {FINE_WAVE_ROWS}): h = 2.5 dx, with which a "
                        "wave's decay per wavelength halves")
-        elif waves == WAVES_3D:
-            reason += ("; a 3-D flume: the density diffusion kept at the surface, without which a 3-D wave grows "
-                       "along the flume")
     cfg.update({key: getattr(sph, key) for key in _GIVEN})
     overridden = []
     for key in CONFIG_FIELDS:
