@@ -31,23 +31,51 @@ from cosim.validations.wave_propagation import (WP_ABSORBER, WP_DEPTH, WP_HEIGHT
                                                 linear_elevation)
 
 
-def run(rows: int, width_rows: int, per_wavelength: int, duration: float, values=()) -> dict:
-    """One flume: ``rows`` particle rows over the depth, ``width_rows`` wide (0: 2-D)."""
+def stations(rows: int, per_wavelength: int) -> tuple[np.ndarray, float]:
+    """The stations' x [m] (L / N to 1.25 L) and the spacing dx [m] at ``rows``."""
+    _, L, _ = _wave(WP_HEIGHT, WP_PERIOD, WP_DEPTH)
+    return np.arange(1, math.floor(1.25 * per_wavelength + 1e-9) + 1) * L / per_wavelength, WP_DEPTH / rows
+
+
+def slice_scene(rows: int, width_rows: int, duration: float, gauges=(), values=()):
+    """The case's flume one wavelength long plus its absorber, ``width_rows`` wide (0: 2-D),
+    run ``duration`` [s], with ``gauges`` (scene values' strings) and ``values`` on top."""
     n = case_scene.number
-    wm, L, _ = _wave(WP_HEIGHT, WP_PERIOD, WP_DEPTH)
+    _, L, _ = _wave(WP_HEIGHT, WP_PERIOD, WP_DEPTH)
     dx = WP_DEPTH / rows
-    xs = np.arange(1, math.floor(1.25 * per_wavelength + 1e-9) + 1) * L / per_wavelength
-    ys = (np.arange((width_rows + 1) // 2) + 0.5) * dx
     scene_values = [f"fluid.dx={n(dx)}", f"domain.length={n(1.5 * L + WP_ABSORBER * L)}",
                     f"domain.absorber.length={n(WP_ABSORBER * L)}", f"world.duration={n(duration)}"]
     if width_rows:
         scene_values += ["world.dim=3", f"domain.width={n(width_rows * dx)}"]
+    return case_scene.load("wave-propagation", scene_values + ["probes.gauges=[" + ", ".join(gauges) + "]"]
+                           + list(values))
+
+
+def arguments(doc: str, width: int, per_wavelength: int, argv=None):
+    """The command line both slice benchmarks take."""
+    ap = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--rows", type=int, default=10, help="particle rows over the depth")
+    ap.add_argument("--width", type=int, default=width, help="the slice's width in spacings (0: the 2-D flume)")
+    ap.add_argument("--per-wavelength", type=int, default=per_wavelength, help="stations a wavelength")
+    ap.add_argument("--duration", type=float, default=6.5, help="the run [s]; the last 3 periods are read")
+    ap.add_argument("--set", nargs="*", default=[], metavar="KEY=VALUE", help="scene values on top (cosim run --set)")
+    args = ap.parse_args(argv)
+    print(f"# CPU: {cpu_name()}")
+    return args
+
+
+def run(rows: int, width_rows: int, per_wavelength: int, duration: float, values=()) -> dict:
+    """One flume: ``rows`` particle rows over the depth, ``width_rows`` wide (0: 2-D)."""
+    n = case_scene.number
+    wm, L, _ = _wave(WP_HEIGHT, WP_PERIOD, WP_DEPTH)
+    xs, dx = stations(rows, per_wavelength)
+    ys = (np.arange((width_rows + 1) // 2) + 0.5) * dx
+    if width_rows:
         gauges = [f"[{n(x)}, {n(y)}]" for x in xs for y in ys]
     else:
         ys = np.array([0.0])
         gauges = [n(x) for x in xs]
-    scene = case_scene.load("wave-propagation", scene_values + ["probes.gauges=[" + ", ".join(gauges) + "]"]
-                            + list(values))
+    scene = slice_scene(rows, width_rows, duration, gauges, values)
     res = case_scene.run_once(scene)
     fit = res.t >= duration - 3.0 * WP_PERIOD - 1e-9
     eta = np.column_stack([res[f"gauge{i + 1}.eta"][fit] for i in range(len(gauges))])
@@ -61,14 +89,7 @@ def run(rows: int, width_rows: int, per_wavelength: int, duration: float, values
 
 
 def main(argv=None) -> None:
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--rows", type=int, default=10, help="particle rows over the depth")
-    ap.add_argument("--width", type=int, default=9, help="the slice's width in spacings (0: the 2-D flume)")
-    ap.add_argument("--per-wavelength", type=int, default=4, help="stations a wavelength")
-    ap.add_argument("--duration", type=float, default=6.5, help="the run [s]; the last 3 periods are read")
-    ap.add_argument("--set", nargs="*", default=[], metavar="KEY=VALUE", help="scene values on top (cosim run --set)")
-    args = ap.parse_args(argv)
-    print(f"# CPU: {cpu_name()}")
+    args = arguments(__doc__, 9, 4, argv)
     r = run(args.rows, args.width, args.per_wavelength, args.duration, args.set)
     print(json.dumps(r))
     print("\n| x / L | " + " | ".join(f"y = {y} dx" for y in r["y_over_dx"]) + " |")

@@ -22,34 +22,24 @@ so compare 3-D with 2-D there, not with 1.
 
 from __future__ import annotations
 
-import argparse
 import json
 import math
 import time
 
 import numpy as np
 
-from machine import cpu_name  # benchmarks/machine.py, beside this script
+from wave_slice_across import arguments, slice_scene, stations  # beside this script
 from cosim.validations import case_scene
-from cosim.validations.wave_propagation import (WP_ABSORBER, WP_DEPTH, WP_HEIGHT, WP_PERIOD, _wave, harmonics,
-                                                linear_elevation)
+from cosim.validations.wave_propagation import WP_DEPTH, WP_HEIGHT, WP_PERIOD, _wave, harmonics, linear_elevation
 from fluid.particles import Kind
 from fluid.probes import surface_elevation
 
 
 def run(rows: int, width_rows: int, per_wavelength: int, duration: float, values=()) -> dict:
-    n = case_scene.number
     wm, L, _ = _wave(WP_HEIGHT, WP_PERIOD, WP_DEPTH)
-    dx = WP_DEPTH / rows
-    xs = np.arange(1, math.floor(1.25 * per_wavelength + 1e-9) + 1) * L / per_wavelength
-    scene_values = [f"fluid.dx={n(dx)}", f"domain.length={n(1.5 * L + WP_ABSORBER * L)}",
-                    f"domain.absorber.length={n(WP_ABSORBER * L)}", f"world.duration={n(duration)}"]
-    if width_rows:
-        scene_values += ["world.dim=3", f"domain.width={n(width_rows * dx)}"]
-        at = np.stack([xs, np.full(xs.size, 0.5 * width_rows * dx)], 1)
-    else:
-        at = xs
-    scene = case_scene.load("wave-propagation", scene_values + ["probes.gauges=[]"] + list(values))
+    xs, dx = stations(rows, per_wavelength)
+    at = np.stack([xs, np.full(xs.size, 0.5 * width_rows * dx)], 1) if width_rows else xs
+    scene = slice_scene(rows, width_rows, duration, (), values)
     every = WP_PERIOD / 32.0
     t_fit = duration - 3.0 * WP_PERIOD
     times = list(np.arange(WP_PERIOD, t_fit - 1e-9, WP_PERIOD)) + list(t_fit + every * np.arange(97))
@@ -92,14 +82,7 @@ def run(rows: int, width_rows: int, per_wavelength: int, duration: float, values
 
 
 def main(argv=None) -> None:
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--rows", type=int, default=10, help="particle rows over the depth")
-    ap.add_argument("--width", type=int, default=5, help="the slice's width in spacings (0: the 2-D flume)")
-    ap.add_argument("--per-wavelength", type=int, default=8, help="stations a wavelength")
-    ap.add_argument("--duration", type=float, default=6.5, help="the run [s]; the last 3 periods are read")
-    ap.add_argument("--set", nargs="*", default=[], metavar="KEY=VALUE", help="scene values on top (cosim run --set)")
-    args = ap.parse_args(argv)
-    print(f"# CPU: {cpu_name()}")
+    args = arguments(__doc__, 5, 8, argv)
     r = run(args.rows, args.width, args.per_wavelength, args.duration, args.set)
     print(json.dumps(r))
     print("\n| x / L | surface (gauge) | top particles | u at mid-depth | w at mid-depth |")

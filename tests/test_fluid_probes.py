@@ -242,29 +242,35 @@ def test_bad_probe_input_is_refused(tank2d):
         pressure_at(_uninitialised, [[0.1, 0.1]])
 
 
-@pytest.mark.parametrize("dim", [2, 3])
-def test_gauges_read_a_cosine_surface_in_2d_and_3d(dim):
-    """Columns of a lattice stretched to eta = a cos(k x) (their particles' volumes with
-    them): the gauges' least-squares cosine has the surface's amplitude within 1.5 % and its
-    mean level within dx / 10, in 3-D as in 2-D (a wave's height read in a 3-D flume is the
-    water's, not the gauge's)."""
-    dx, depth, a, wavelength, rows_wide = 0.03, 0.3, 0.02, 1.373, 5
+def _read_cosine(dim, dx, depth, a, wavelength, rows_wide, x):
+    """The gauges at ``x`` (on the mid-line in 3-D) over a lattice whose columns are stretched
+    to eta = a cos(k x), their particles' volumes with them (h = 2 dx): the least-squares
+    cosine's (cos, sin, mean) coefficients [m]."""
     k = 2.0 * math.pi / wavelength
     lo = np.zeros(dim)
-    hi = np.array([2.0 * wavelength, 0.5] if dim == 2 else [2.0 * wavelength, rows_wide * dx, 0.5])
+    height = depth + 0.2
+    hi = np.array([2.0 * wavelength, height] if dim == 2 else [2.0 * wavelength, rows_wide * dx, height])
     top = hi.copy()
     top[-1] = depth
     pts = block(lo, top, dx)
     stretch = 1.0 + a * np.cos(k * pts[:, 0]) / depth
     pts[:, -1] *= stretch
     b = assemble(dim, dx, RHO0, pts, [(tank_walls(lo, hi, dx), Kind.FIXED_WALL, 0)])
-    fluid = b.particles.kind == Kind.FLUID
-    b.particles.mass[fluid] *= stretch  # the block's particles, in its order
+    b.particles.mass[b.particles.kind == Kind.FLUID] *= stretch  # the block's particles, in its order
     f = Fluid(FluidConfig(dim=dim, dx=dx, c0=20.0, h_coef=2.0, threads=1), b.particles)
     f.initialize(0.0)
-    x = np.linspace(0.25, 1.75, 31) * wavelength
     eta = surface_elevation(f, x if dim == 2 else np.stack([x, np.full(x.size, 0.5 * rows_wide * dx)], 1))
-    c = np.linalg.lstsq(np.column_stack([np.cos(k * x), np.sin(k * x), np.ones_like(x)]), eta, rcond=None)[0]
+    return np.linalg.lstsq(np.column_stack([np.cos(k * x), np.sin(k * x), np.ones_like(x)]), eta, rcond=None)[0]
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_gauges_read_a_cosine_surface_in_2d_and_3d(dim):
+    """Columns of a lattice stretched to eta = a cos(k x) (their particles' volumes with
+    them): the gauges' least-squares cosine has the surface's amplitude within 1.5 % and its
+    mean level within dx / 10, in 3-D as in 2-D (a wave's height read in a 3-D flume is the
+    water's, not the gauge's)."""
+    dx, depth, a, wavelength = 0.03, 0.3, 0.02, 1.373
+    c = _read_cosine(dim, dx, depth, a, wavelength, 5, np.linspace(0.25, 1.75, 31) * wavelength)
     assert math.hypot(c[0], c[1]) / a == pytest.approx(1.0, abs=0.015)
     assert abs(c[1]) < 0.02 * a and abs(c[2] - depth) < dx / 10
 
@@ -296,27 +302,13 @@ def test_a_gauge_reads_a_short_wave_by_its_response(dim):
     profile across the surface averages the wave), and the response falls with k, from 1."""
     from fluid.probes import gauge_response
 
-    dx, depth, rows_wide = 0.02, 0.2, 3
-    h = 2.0 * dx
+    dx = 0.02
     read = []
     for lam in (10, 15, 20, 40):
         wavelength, a = lam * dx, 0.5 * dx
-        k = 2.0 * math.pi / wavelength
-        lo = np.zeros(dim)
-        hi = np.array([2.0 * wavelength, 0.4] if dim == 2 else [2.0 * wavelength, rows_wide * dx, 0.4])
-        top = hi.copy()
-        top[-1] = depth
-        pts = block(lo, top, dx)
-        stretch = 1.0 + a * np.cos(k * pts[:, 0]) / depth
-        pts[:, -1] *= stretch
-        b = assemble(dim, dx, RHO0, pts, [(tank_walls(lo, hi, dx), Kind.FIXED_WALL, 0)])
-        b.particles.mass[b.particles.kind == Kind.FLUID] *= stretch
-        f = Fluid(FluidConfig(dim=dim, dx=dx, c0=20.0, h_coef=2.0, threads=1), b.particles)
-        f.initialize(0.0)
-        x = np.linspace(0.5, 1.5, 21) * wavelength
-        eta = surface_elevation(f, x if dim == 2 else np.stack([x, np.full(x.size, 0.5 * rows_wide * dx)], 1))
-        c = np.linalg.lstsq(np.column_stack([np.cos(k * x), np.sin(k * x), np.ones_like(x)]), eta, rcond=None)[0]
+        c = _read_cosine(dim, dx, 0.2, a, wavelength, 3, np.linspace(0.5, 1.5, 21) * wavelength)
         read.append(math.hypot(c[0], c[1]) / a)
-        assert read[-1] == pytest.approx(float(gauge_response(k, h, dim)), abs=0.004), lam
+        assert read[-1] == pytest.approx(float(gauge_response(2.0 * math.pi / wavelength, 2.0 * dx, dim)),
+                                         abs=0.004), lam
     assert read[0] < 0.82 and np.all(np.diff(read) > 0)
-    assert gauge_response(0.0, h, dim) == pytest.approx(1.0)
+    assert gauge_response(0.0, 2.0 * dx, dim) == pytest.approx(1.0)
