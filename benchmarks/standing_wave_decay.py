@@ -125,7 +125,8 @@ def run(rows: int, periods: int, extra: dict, width_rows: int = 0) -> dict:
     decay = per_period(np.array(mode))
     n = 0.5 * (1.0 + 2.0 * k * DEPTH / math.sinh(2.0 * k * DEPTH))  # group over phase velocity
     return {"rows": rows, "width_rows": width_rows, "set": extra,
-            "first_period_elevation_over_mode": round(amp[0] / mode[0], 4), "decay_per_period": decay, "per_wavelength_if_travelling": decay / n,
+            "first_period_elevation_over_mode": round(amp[0] / mode[0], 4), "decay_per_period": decay,
+            "per_wavelength_if_travelling": decay / n,
             "decay_of_the_middle_elevation": per_period(np.array(amp)),
             "decay_of_the_kinetic_energy_amplitude": per_period(np.sqrt(mean_ke)),
             "mode_amplitude_over_start": np.round(mode, 4).tolist(),

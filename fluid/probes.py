@@ -23,7 +23,7 @@ import numpy as np
 from numba import njit, prange
 
 from errors import InputError
-from fluid.kernels import alpha_d, kernel_id, w_value
+from fluid.kernels import W, alpha_d, w_value
 from fluid.neighbours import cell_coords, row_range
 from fluid.particles import Kind
 
@@ -292,12 +292,11 @@ def _surface(gauges, pos, kind, mass, rho, start, lo, inv_cell, nx, ny, nz, reac
                     r2 = rx * rx + ry * ry
                     if r2 < R2:
                         n += 1
-                    if kind[b] == _FLUID:
-                        if r2 < R2:
+                        if kind[b] == _FLUID:
                             n_fluid += 1
                             z_top = max(z_top, pos[b, zc])
                             z_bottom = min(z_bottom, pos[b, zc])
-                    elif r2 <= B2 and pos[b, zc] > bed:
+                    if kind[b] != _FLUID and r2 <= B2 and pos[b, zc] > bed:
                         bed = pos[b, zc]
         dry = bed + 2.0 * step if bed > -np.inf else np.nan
         if n_fluid == 0:
@@ -402,10 +401,9 @@ def gauge_response(k, h: float, dim: int, kernel: str = "wendland") -> np.ndarra
     discreteness adds about 0.002."""
     from scipy.special import j0
 
-    kid = kernel_id(kernel)
     x, wq = np.polynomial.legendre.leggauss(64)
     r = h * (1.0 + x)  # the support 0 .. 2h
-    w = np.array([w_value(kid, q, 1.0) for q in r / h]) * wq
+    w = W(r, h, dim, kernel) * wq  # the normalisation cancels
     kr = np.multiply.outer(np.asarray(k, np.float64), r)
     if dim == 2:
         return (np.cos(kr) * w).sum(-1) / w.sum()

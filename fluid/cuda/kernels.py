@@ -652,14 +652,12 @@ def d_line_walk(z, rows, arrays, kernel, h, ad, B2):
                     v = mass[b] / rho[b] * tm.kernel_w(kernel, math.sqrt(dh2 + dz * dz) / h, ad)
                     if kind[b] == 0:
                         c += v
-                    else:
-                        s += v
-                if kind[b] == 0:
-                    if dh2 < R2:
                         n += 1
                         top = max(top, zb)
                         bottom = min(bottom, zb)
-                elif dh2 <= B2 and zb > bed:
+                    else:
+                        s += v
+                if kind[b] != 0 and dh2 <= B2 and zb > bed:
                     bed = zb
     return c + 0.5 * min(s, 0.5), n, bed, top, bottom
 
