@@ -51,12 +51,13 @@ def slice_scene(rows: int, width_rows: int, duration: float, gauges=(), values=(
                            + list(values))
 
 
-def arguments(doc: str, width: int, per_wavelength: int, argv=None):
-    """The command line both slice benchmarks take."""
+def arguments(doc: str, width: int, per_wavelength: int | None, argv=None):
+    """The command line the slice benchmarks take."""
     ap = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--rows", type=int, default=10, help="particle rows over the depth")
     ap.add_argument("--width", type=int, default=width, help="the slice's width in spacings (0: the 2-D flume)")
-    ap.add_argument("--per-wavelength", type=int, default=per_wavelength, help="stations a wavelength")
+    if per_wavelength is not None:  # None: a benchmark without stations
+        ap.add_argument("--per-wavelength", type=int, default=per_wavelength, help="stations a wavelength")
     ap.add_argument("--duration", type=float, default=6.5, help="the run [s]; the last 3 periods are read")
     ap.add_argument("--set", nargs="*", default=[], metavar="KEY=VALUE", help="scene values on top (cosim run --set)")
     args = ap.parse_args(argv)
