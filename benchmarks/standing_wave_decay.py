@@ -59,21 +59,20 @@ LENGTH = 2.0 * math.pi / wavenumber(WP_PERIOD, DEPTH, G)
 AMPLITUDE = 0.02
 
 
-def run(rows: int, periods: int, extra: dict, width_rows: int = 0) -> dict:
-    """One run at ``rows`` particle rows over the depth for ``periods`` periods; in 2-D, or
-    with ``width_rows`` > 0 in a 3-D slice that many spacings wide between the tank's walls
-    (the mode uniform across it)."""
+def started_tank(rows: int, extra: dict, width_rows: int = 0):
+    """``(fluid, A)``: the tank at ``rows`` particle rows over the depth, settled at rest,
+    then given the mode's velocity of amplitude ``A`` [m/s] at the instant its surface is
+    flat; in 2-D, or with ``width_rows`` > 0 a 3-D slice that many spacings wide between the
+    tank's walls (the mode uniform across it). ``extra``: FluidConfig settings on top of the
+    wave set-up."""
     from fluid.geometry import set_hydrostatic, tank_with_water
-    from fluid.probes import surface_elevation
     from fluid.solver import Fluid, FluidConfig
 
-    k, T = 2.0 * math.pi / LENGTH, WP_PERIOD
-    omega = 2.0 * math.pi / T
+    k, omega = 2.0 * math.pi / LENGTH, 2.0 * math.pi / WP_PERIOD
     dx = DEPTH / rows
     dim = 3 if width_rows else 2
-    width = width_rows * dx
     cfg = FluidConfig(dim=dim, dx=dx, g=G, **{"u_max": math.sqrt(G * DEPTH), **settings("waves", dim), **extra})
-    ps = tank_with_water(dim, dx, LENGTH, DEPTH, 1.6 * DEPTH, width=width,
+    ps = tank_with_water(dim, dx, LENGTH, DEPTH, 1.6 * DEPTH, width=width_rows * dx,
                          layers=math.ceil(2.0 * cfg.h_coef - 1e-9)).particles
     set_hydrostatic(ps, DEPTH, cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g)
     fluid = Fluid(cfg, ps)
@@ -84,6 +83,18 @@ def run(rows: int, periods: int, extra: dict, width_rows: int = 0) -> dict:
     A = AMPLITUDE * G * k / (omega * math.cosh(k * DEPTH))
     fluid.ps.vel[water, 0] = -A * np.cosh(k * z) * np.sin(k * x)
     fluid.ps.vel[water, -1] = A * np.sinh(k * z) * np.cos(k * x)
+    return fluid, A
+
+
+def run(rows: int, periods: int, extra: dict, width_rows: int = 0) -> dict:
+    """One run of :func:`started_tank` for ``periods`` periods."""
+    from fluid.probes import surface_elevation
+
+    k, T = 2.0 * math.pi / LENGTH, WP_PERIOD
+    omega = 2.0 * math.pi / T
+    dx = DEPTH / rows
+    dim = 3 if width_rows else 2
+    fluid, A = started_tank(rows, extra, width_rows)
     ke0 = fluid.kinetic_energy()
 
     def modal() -> float:
@@ -131,7 +142,7 @@ def run(rows: int, periods: int, extra: dict, width_rows: int = 0) -> dict:
             "decay_of_the_kinetic_energy_amplitude": per_period(np.sqrt(mean_ke)),
             "mode_amplitude_over_start": np.round(mode, 4).tolist(),
             "mean_ke_over_start": np.round(mean_ke / ke0, 4).tolist(), "middle_amplitude_over_a": np.round(amp, 3).tolist(),
-            "period_s": T, "particles": int(ps.n), "steps": int(fluid.counters.steps),
+            "period_s": T, "particles": int(fluid.ps.n), "steps": int(fluid.counters.steps),
             "cpu_s": round(time.process_time() - cpu0, 1)}
 
 

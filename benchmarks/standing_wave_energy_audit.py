@@ -17,43 +17,17 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 import time
 
 import numpy as np
 
 from machine import cpu_name  # benchmarks/machine.py, beside this script
-from standing_wave_decay import AMPLITUDE, LENGTH  # beside this script
-from wave_energy_budget import Budget  # beside this script
-from cosim.scene.setup import settings
+from standing_wave_decay import AMPLITUDE, LENGTH, started_tank  # beside this script
+from wave_energy_budget import RHO_WATER, term_rates  # beside this script
 from cosim.validations.wave_propagation import G, WP_DEPTH as DEPTH, WP_PERIOD
-from fluid import equations as eq
 from fluid.particles import Kind
 
 TERMS = ("diffusion", "viscosity", "floor", "side walls")
-
-
-def tank(rows: int, width_rows: int):
-    """The settled tank with the mode's velocity (standing_wave_decay's start)."""
-    from fluid.geometry import set_hydrostatic, tank_with_water
-    from fluid.solver import Fluid, FluidConfig
-
-    k, omega = 2.0 * math.pi / LENGTH, 2.0 * math.pi / WP_PERIOD
-    dx = DEPTH / rows
-    dim = 3 if width_rows else 2
-    cfg = FluidConfig(dim=dim, dx=dx, g=G, **{"u_max": math.sqrt(G * DEPTH), **settings("waves", dim)})
-    ps = tank_with_water(dim, dx, LENGTH, DEPTH, 1.6 * DEPTH, width=width_rows * dx,
-                         layers=math.ceil(2.0 * cfg.h_coef - 1e-9)).particles
-    set_hydrostatic(ps, DEPTH, cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g)
-    f = Fluid(cfg, ps)
-    f.initialize(0.0)
-    f.settle(2.0)
-    w = f.ps.kind == Kind.FLUID
-    x, z = f.ps.pos[w, 0], f.ps.pos[w, -1]
-    A = AMPLITUDE * G * k / (omega * math.cosh(k * DEPTH))
-    f.ps.vel[w, 0] = -A * np.cosh(k * z) * np.sin(k * x)
-    f.ps.vel[w, -1] = A * np.sinh(k * z) * np.cos(k * x)
-    return f
 
 
 def energy(f) -> float:
@@ -67,9 +41,8 @@ def energy(f) -> float:
 
 
 def run(rows: int, width_rows: int, periods: int) -> dict:
-    f = tank(rows, width_rows)
-    dx = DEPTH / rows
-    budget = Budget(f, dx, width_rows * dx, 0.0, 1)
+    f, _ = started_tank(rows, {}, width_rows)
+    width = width_rows * DEPTH / rows
     times, powers = [], []
     rates, calls = f._rates, [0]
 
@@ -81,9 +54,7 @@ def run(rows: int, width_rows: int, periods: int) -> dict:
         ps = f.ps
         fl = ps.kind == Kind.FLUID
         m, v = ps.mass[fl], ps.vel[fl]
-        D = f._drho - budget.rates_without(f, eq.P_DDT)[0]
-        dv = f._acc - budget.rates_without(f, eq.P_ALPHA)[1]
-        X = budget.wall_pressure_acceleration(f)
+        D, dv, X = term_rates(f, width)
         times.append(f.t)
         powers.append([float((m * ps.p[fl] / ps.rho[fl] ** 2 * D[fl]).sum()),
                        float((m * (v * dv[fl]).sum(axis=1)).sum()),
@@ -93,7 +64,7 @@ def run(rows: int, width_rows: int, periods: int) -> dict:
     f._rates = sampled
     cpu0, t, E0 = time.process_time(), 0.0, energy(f)
     out = {"rows": rows, "width_rows": width_rows,
-           "wave_energy_J": 0.25 * 1000.0 * G * AMPLITUDE ** 2 * LENGTH * (width_rows * dx if width_rows else 1.0),
+           "wave_energy_J": 0.25 * RHO_WATER * G * AMPLITUDE ** 2 * LENGTH * (width if width_rows else 1.0),
            "periods": []}
     for p in range(periods):
         for _ in range(32):

@@ -8,7 +8,7 @@ pressure form with the continuity equation keeps the sum of the kinetic, gravita
 internal energies: Monaghan 2005, Rep. Prog. Phys. 68, 1703); the terms that do
 not are the density diffusion, the artificial viscosity and the walls, whose pressures are
 set from the fluid (Adami et al. 2012) instead of evolving with it. Their powers [W] on
-the fluid particles, sampled every ``--every`` evaluation of the rates over the last three
+the fluid particles, sampled every eighth evaluation of the rates over the last three
 periods:
 
 - the density diffusion: ``P_D = sum_a m_a p_a / rho_a^2 D_a`` (the internal energy it
@@ -37,7 +37,6 @@ the stretch).
 from __future__ import annotations
 
 import json
-import math
 import time
 
 import numpy as np
@@ -45,62 +44,72 @@ from scipy.spatial import cKDTree
 
 from wave_slice_across import arguments, slice_scene  # beside this script
 from cosim.validations import case_scene
-from cosim.validations.wave_propagation import WP_DEPTH, WP_HEIGHT, WP_PERIOD, _wave
+from cosim.validations.wave_propagation import G, WP_DEPTH, WP_HEIGHT, WP_PERIOD, _wave
 from fluid import equations as eq
 from fluid.kernels import grad_W
 from fluid.particles import Kind
 
 ROWS_SHOWN = 8  # rows under the surface binned apart; deeper ones join the last bin
 TERMS = ("diffusion", "viscosity", "floor", "side walls")
+RHO_WATER = 1000.0  # kg/m^3: the scenes' rho0, for linear theory's wave energy
+
+
+def rates_without(f, index: int):
+    """The fluid ``f``'s rates with the parameter ``index`` of the pair loop set to 0."""
+    ps, c = f.ps, f.config
+    prm = f._prm.copy()
+    prm[index] = 0.0
+    return eq.evaluate(ps.pos, ps.vel, ps.rho, ps.mass, ps.kind, f._start, f._grid, f._kernel, prm, c.rho0,
+                       c.speed_of_sound, c.gamma, ps.p.copy(), eq.Workspace(), f._xbins, f.near_fluid,
+                       f._walls_rates, f.mirror)
+
+
+def wall_pressure_acceleration(f, width: float) -> dict:
+    """``-sum_w m_w p_w / rho_w^2 grad_a W_aw`` on every particle [m/s^2], from the floor
+    (and end walls) and from the side walls (outside 0 <= y <= ``width`` [m]), (N, dim) each."""
+    ps, h = f.ps, f.config.h
+    dim = ps.pos.shape[1]
+    fl = np.flatnonzero(ps.kind == Kind.FLUID)
+    wl = np.flatnonzero(ps.kind == Kind.FIXED_WALL)
+    near = cKDTree(ps.pos[wl]).query_ball_point(ps.pos[fl], 2.0 * h)
+    a = fl[np.repeat(np.arange(fl.size), [len(q) for q in near])]
+    w = wl[np.concatenate([np.asarray(q, int) for q in near])]
+    term = -(ps.mass[w] * ps.p[w] / ps.rho[w] ** 2)[:, None] * grad_W(ps.pos[a] - ps.pos[w], h)
+    side = np.zeros(w.size, bool) if dim == 2 else (ps.pos[w, 1] < 0.0) | (ps.pos[w, 1] > width)
+    return {name: np.stack([np.bincount(a[m], term[m, d], len(ps.pos)) for d in range(dim)], 1)
+            for name, m in (("floor", ~side), ("side", side))}
+
+
+def term_rates(f, width: float):
+    """What the terms that do not conserve energy add to the rates of ``f`` now: the
+    density diffusion's ``D`` [kg/(m^3 s)], the artificial viscosity's acceleration and
+    the walls' pressure accelerations [m/s^2] (:func:`wall_pressure_acceleration`)."""
+    D = f._drho - rates_without(f, eq.P_DDT)[0]
+    dv = f._acc - rates_without(f, eq.P_ALPHA)[1]
+    return D, dv, wall_pressure_acceleration(f, width)
 
 
 class Budget:
-    """The four powers' time sums per particle id (the covariances' parts)."""
+    """The four powers' time sums per particle id (the covariances' parts), sampled every
+    ``every`` rate evaluation from ``t_from`` [s]."""
 
     def __init__(self, f, dx: float, width: float, t_from: float, every: int):
         ps = f.ps
         n = int(ps.ids.max()) + 1
-        self.dim = ps.pos.shape[1]
+        dim = ps.pos.shape[1]
         self.z0, self.x0, self.m = (np.full(n, np.nan) for _ in range(3))
         self.z0[ps.ids], self.x0[ps.ids], self.m[ps.ids] = ps.pos[:, -1], ps.pos[:, 0], ps.mass
         self.s = {k: np.zeros(n) for k in ("w", "p", "D", "pD", "V", "Xv_floor", "Xv_side")}
-        self.v = {k: np.zeros((n, self.dim)) for k in ("v", "X_floor", "X_side")}
+        self.v = {k: np.zeros((n, dim)) for k in ("v", "X_floor", "X_side")}
         self.dx, self.width, self.t_from, self.every = dx, width, t_from, every
         self.calls = self.samples = 0
-
-    def rates_without(self, f, index: int):
-        """The rates with the parameter ``index`` of the pair loop set to 0."""
-        ps, c = f.ps, f.config
-        prm = f._prm.copy()
-        prm[index] = 0.0
-        return eq.evaluate(ps.pos, ps.vel, ps.rho, ps.mass, ps.kind, f._start, f._grid, f._kernel, prm, c.rho0,
-                           c.speed_of_sound, c.gamma, ps.p.copy(), eq.Workspace(), f._xbins, f.near_fluid,
-                           f._walls_rates, f.mirror)
-
-    def wall_pressure_acceleration(self, f):
-        """``-sum_w m_w p_w / rho_w^2 grad_a W_aw`` on every particle [m/s^2], from the
-        floor (and end walls) and from the side walls, (N, dim) each."""
-        ps, h = f.ps, f.config.h
-        fl = np.flatnonzero(ps.kind == Kind.FLUID)
-        wl = np.flatnonzero(ps.kind == Kind.FIXED_WALL)
-        near = cKDTree(ps.pos[wl]).query_ball_point(ps.pos[fl], 2.0 * h)
-        a = fl[np.repeat(np.arange(fl.size), [len(q) for q in near])]
-        w = wl[np.concatenate([np.asarray(q, int) for q in near])]
-        term = -(ps.mass[w] * ps.p[w] / ps.rho[w] ** 2)[:, None] * grad_W(ps.pos[a] - ps.pos[w], h)
-        side = np.zeros(w.size, bool) if self.dim == 2 else (ps.pos[w, 1] < 0.0) | (ps.pos[w, 1] > self.width)
-        out = {}
-        for name, m in (("floor", ~side), ("side", side)):
-            out[name] = np.stack([np.bincount(a[m], term[m, d], len(ps.pos)) for d in range(self.dim)], 1)
-        return out
 
     def sample(self, f):
         self.calls += 1
         if f.t < self.t_from or self.calls % self.every:
             return
         ps = f.ps
-        D = f._drho - self.rates_without(f, eq.P_DDT)[0]
-        dv = f._acc - self.rates_without(f, eq.P_ALPHA)[1]
-        X = self.wall_pressure_acceleration(f)
+        D, dv, X = term_rates(f, self.width)
         fl = ps.kind == Kind.FLUID
         ids = ps.ids[fl]
         s, v = self.s, self.v
@@ -129,7 +138,7 @@ class Budget:
 
 
 def run(rows: int, width_rows: int, duration: float, values=(), every: int = 8) -> dict:
-    wm, L, _ = _wave(WP_HEIGHT, WP_PERIOD, WP_DEPTH)
+    _, L, cg = _wave(WP_HEIGHT, WP_PERIOD, WP_DEPTH)
     dx = WP_DEPTH / rows
     scene = slice_scene(rows, width_rows, duration, (), values)
     cpu0 = time.process_time()
@@ -145,9 +154,7 @@ def run(rows: int, width_rows: int, duration: float, values=(), every: int = 8) 
         f._rates = sampled
         f.advance(0.0, duration)
     x0, x1 = 0.25 * L, 1.25 * L
-    k, omega = wm.k, 2.0 * math.pi / WP_PERIOD
-    cg = 0.5 * (1.0 + 2.0 * k * WP_DEPTH / math.sinh(2.0 * k * WP_DEPTH)) * omega / k
-    E = 0.125 * 1000.0 * 9.81 * WP_HEIGHT ** 2 * (width_rows * dx if width_rows else 1.0) * (x1 - x0)
+    E = 0.125 * RHO_WATER * G * WP_HEIGHT ** 2 * (width_rows * dx if width_rows else 1.0) * (x1 - x0)
     P = budget.powers(x0, x1)
     return {"rows": rows, "width_rows": width_rows, "set": list(values), "samples": budget.samples,
             "cpu_s": round(time.process_time() - cpu0, 1),
