@@ -80,7 +80,7 @@ def run(rows: int, width_rows: int, per_wavelength: int, duration: float, values
         amp = np.abs(harmonics(ts, np.asarray(series), omega)) / per_a[key]
         out[key] = np.round(amp / a_lin, 4).tolist()
     # the mean flow at mid-depth over the three periods [m/s]: a current U along the flume
-    # makes the wave longer by about U / c_g (the 3-D slice's wave is 1.4-1.9 % long)
+    # makes the wave longer by about U / c_g
     out["u_mean_mid_m_s"] = np.round(np.mean(rec["u"], axis=0), 5).tolist()
     return out
 
