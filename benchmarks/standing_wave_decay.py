@@ -51,7 +51,7 @@ import numpy as np
 from machine import cpu_name  # benchmarks/machine.py, beside this script
 from wave_propagation import setting_value  # benchmarks/, beside this script
 from cosim.scene.setup import settings
-from cosim.validations.wave_propagation import G, WP_DEPTH as DEPTH, WP_PERIOD, harmonics
+from cosim.validations.wave_propagation import G, WP_DEPTH as DEPTH, WP_PERIOD, harmonics, upward_crossings
 from fluid.wavemaker import wavenumber
 
 #: the tank's length [m]: the wave-propagation case's wavelength
@@ -138,9 +138,7 @@ def run(rows: int, periods: int, extra: dict, width_rows: int = 0) -> dict:
     # interpolation between samples): how fast the tank's water makes the wave (a wave that
     # is fast in time is long in space: k / k_linear = 1 - (T / T_sph - 1) / n in a flume)
     after = ts >= T - 1e-9
-    tq, qq = ts[after], q[after]
-    up = np.nonzero((qq[:-1] < 0.0) & (qq[1:] >= 0.0))[0]
-    crossings = tq[up] - qq[up] * (tq[up + 1] - tq[up]) / (qq[up + 1] - qq[up])
+    crossings = upward_crossings(ts[after], q[after])
     period = float(np.diff(crossings).mean()) if len(crossings) > 1 else float("nan")
     n = 0.5 * (1.0 + 2.0 * k * DEPTH / math.sinh(2.0 * k * DEPTH))  # group over phase velocity
     return {"rows": rows, "width_rows": width_rows, "set": extra,

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from cosim import validation
-from cosim.validations.wave_propagation import harmonics, separate, viscous_decay_per_wavelength
+from cosim.validations.wave_propagation import harmonics, separate, upward_crossings, viscous_decay_per_wavelength
 from cosim.validations.waves import viscous_decay
 from fluid.wavemaker import wavenumber
 
@@ -25,6 +25,19 @@ def test_incident_and_reflected_waves_are_separated_exactly():
     a = harmonics(t[:, 0], eta, w)
     got_i, got_r = separate(x, a, k)
     assert abs(got_i - Ai) < 1e-14 and abs(got_r - Ar) < 1e-14
+
+
+def test_upward_crossings_are_a_sine_waves_to_the_interpolations_error():
+    """A sine of period 0.7 s (phase 0.3 rad) sampled every T/32: its upward zero crossings at
+    (2 pi n - 0.3) / omega, to the linear interpolation's error (sub-1e-4 T near a zero),
+    and none at the downward ones."""
+    T, phase = 0.7, 0.3
+    t = np.arange(0.0, 5.0, T / 32)
+    y = np.sin(2 * np.pi * t / T + phase)
+    exact = (np.arange(1, 8) * 2 * np.pi - phase) * T / (2 * np.pi)
+    got = upward_crossings(t, y)
+    assert got.shape == exact[exact < t[-1]].shape
+    assert np.abs(got - exact[exact < t[-1]]).max() < 1e-4 * T
 
 
 def test_the_interior_decay_is_lambs_and_the_floor_adds_its_boundary_layer():

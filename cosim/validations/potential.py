@@ -137,6 +137,7 @@ def heave_decay(scene, z0: float = 0.1) -> dict:
     import mujoco
 
     from cosim.validations import case_scene
+    from cosim.validations.wave_propagation import upward_crossings
 
     with case_scene.built(scene) as b:
         coupler, bodies, fluid = b.coupler, b.bodies, b.fluid
@@ -147,9 +148,7 @@ def heave_decay(scene, z0: float = 0.1) -> dict:
         ts, zs = [0.0], [z0]
         coupler.run(scene.world.duration,
                     callback=lambda info: (ts.append(info.t), zs.append(bodies.data.qpos[2] - z_eq)))
-    t, z = np.array(ts), np.array(zs)
-    up = np.flatnonzero((z[:-1] < 0) & (z[1:] >= 0))
-    crossings = t[up] - z[up] * (t[up + 1] - t[up]) / (z[up + 1] - z[up])
+    crossings = upward_crossings(np.array(ts), np.array(zs))
     c = fluid.coefficients[0]
     m = float(bodies.masses()[0])
     C33 = c.stiffness[2, 2]

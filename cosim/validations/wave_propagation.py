@@ -91,6 +91,13 @@ def harmonics(ts: np.ndarray, eta: np.ndarray, omega: float, trend: bool = False
     return coef[len(slow)] - 1j * coef[len(slow) + 1]
 
 
+def upward_crossings(t: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """The times [s] at which the series ``y`` (sampled at ``t``) crosses zero upwards,
+    interpolated linearly between the samples either side."""
+    up = np.flatnonzero((y[:-1] < 0.0) & (y[1:] >= 0.0))
+    return t[up] - y[up] * (t[up + 1] - t[up]) / (y[up + 1] - y[up])
+
+
 def linear_elevation(wm, x: np.ndarray, t: np.ndarray, dt: float = 0.005) -> np.ndarray:
     """Linear theory's surface elevation [m] (times, gauges) of the progressive waves that
     the paddle ``wm`` (a :class:`fluid.wavemaker.RegularWavemaker`, its ramp included)
