@@ -99,7 +99,7 @@ def run(rows: int, periods: int, extra: dict, width_rows: int = 0) -> dict:
 
     def modal() -> float:
         """The velocity field's projection on the mode's shape [m/s] (A at the start)."""
-        w = fluid.ps.kind == 0
+        w = (fluid.ps.kind == 0) & (fluid.ps.ids >= 0)  # a symmetry plane's images left out
         m, xx, zz, v = fluid.ps.mass[w], fluid.ps.pos[w, 0], fluid.ps.pos[w, -1], fluid.ps.vel[w]
         fu, fw = -np.cosh(k * zz) * np.sin(k * xx), np.sinh(k * zz) * np.cos(k * xx)
         return float((m * (v[:, 0] * fu + v[:, -1] * fw)).sum() / (m * (fu * fu + fw * fw)).sum())

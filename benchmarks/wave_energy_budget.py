@@ -17,7 +17,8 @@ periods:
 - the artificial viscosity: ``P_V = sum_a m_a v_a . (a_a - a_a(alpha = 0))``;
 - the fixed walls: ``P_W = -sum_a sum_w m_a m_w p_w / rho_w^2 v_a . grad_a W_aw`` (what is
   left of a fluid-wall pair's pressure and continuity terms when the wall's density is not
-  evolved), for the floor and the side walls apart.
+  evolved), for the floor and the side walls apart; the floor's part along it (the
+  horizontal velocity's) is printed apart too, within the floor's.
 
 Each is the time covariance of the particle's two factors (power less the product of the
 means): the water settles by a fraction of a millimetre a period while it moves, and the
@@ -51,6 +52,7 @@ from fluid.particles import Kind
 
 ROWS_SHOWN = 8  # rows under the surface binned apart; deeper ones join the last bin
 TERMS = ("diffusion", "viscosity", "floor", "side walls")
+SHOWN = TERMS + ("floor, along it",)  # the last is part of "floor"
 RHO_WATER = 1000.0  # kg/m^3: the scenes' rho0, for linear theory's wave energy
 
 
@@ -99,7 +101,7 @@ class Budget:
         dim = ps.pos.shape[1]
         self.z0, self.x0, self.m = (np.full(n, np.nan) for _ in range(3))
         self.z0[ps.ids], self.x0[ps.ids], self.m[ps.ids] = ps.pos[:, -1], ps.pos[:, 0], ps.mass
-        self.s = {k: np.zeros(n) for k in ("w", "p", "D", "pD", "V", "Xv_floor", "Xv_side")}
+        self.s = {k: np.zeros(n) for k in ("w", "p", "D", "pD", "V", "Xv_floor", "Xv_side", "Xv_along")}
         self.v = {k: np.zeros((n, dim)) for k in ("v", "X_floor", "X_side")}
         self.dx, self.width, self.t_from, self.every = dx, width, t_from, every
         self.calls = self.samples = 0
@@ -122,6 +124,7 @@ class Budget:
         for name in ("floor", "side"):
             v["X_" + name][ids] += X[name][fl]
             s["Xv_" + name][ids] += (X[name][fl] * ps.vel[fl]).sum(axis=1)
+        s["Xv_along"][ids] += (X["floor"][fl, :-1] * ps.vel[fl, :-1]).sum(axis=1)
         self.samples += 1
 
     def powers(self, x0: float, x1: float) -> dict:
@@ -134,6 +137,7 @@ class Budget:
         per = {"diffusion": s["w"] * (s["pD"] - s["p"] * s["D"]), "viscosity": s["V"]}
         for name, key in (("floor", "floor"), ("side walls", "side")):
             per[name] = self.m[sel] * (s["Xv_" + key] - (v["X_" + key] * v["v"]).sum(axis=1))
+        per["floor, along it"] = self.m[sel] * (s["Xv_along"] - (v["X_floor"][:, :-1] * v["v"][:, :-1]).sum(axis=1))
         return {k: np.bincount(row, p, ROWS_SHOWN) for k, p in per.items()}
 
 
@@ -158,9 +162,9 @@ def run(rows: int, width_rows: int, duration: float, values=(), every: int = 8) 
     P = budget.powers(x0, x1)
     return {"rows": rows, "width_rows": width_rows, "set": list(values), "samples": budget.samples,
             "cpu_s": round(time.process_time() - cpu0, 1),
-            "power_by_row_W": {t: np.round(P[t], 6).tolist() for t in TERMS},
+            "power_by_row_W": {t: np.round(P[t], 6).tolist() for t in SHOWN},
             "height_change_per_wavelength_pct": {t: round(100.0 * 0.5 * float(P[t].sum()) / E * L / cg, 3)
-                                                 for t in TERMS}}
+                                                 for t in SHOWN}}
 
 
 def main(argv=None) -> None:
@@ -169,7 +173,7 @@ def main(argv=None) -> None:
     print(json.dumps(r))
     print("\n| term | " + " | ".join(f"row {i}" for i in range(ROWS_SHOWN)) + " | height per wavelength |")
     print("|---|" + "---|" * (ROWS_SHOWN + 1))
-    for t in TERMS:
+    for t in SHOWN:
         print(f"| {t} | " + " | ".join(f"{p * 1e3:.2f}" for p in r["power_by_row_W"][t])
               + f" | {r['height_change_per_wavelength_pct'][t]:+.2f} % |")
     print("(powers in mW over the stretch L/4 ... 1.25 L; rows under the surface, the last one and deeper)")

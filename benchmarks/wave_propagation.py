@@ -5,11 +5,13 @@ spacings. Prints one JSON line per run and a table of the decay per wavelength.
     python benchmarks/wave_propagation.py --setup waves sloshing --rows 10 20 --wavelengths 8
     python benchmarks/wave_propagation.py --set alpha=0 --rows 10
     python benchmarks/wave_propagation.py --rows 10 --set shifting=fickian shifting_coef=2
+    python benchmarks/wave_propagation.py --rows 40 --height 0.075
 
 ``--setup``: the scenes' set-ups (cosim.scene.setup.settings: "waves" is a flume's,
 fluid.solver.travelling_waves at the rows, "sloshing" the sloshing one); ``--set KEY=VALUE`` adds
 FluidConfig settings on top (numbers, true/false or text). The wave: d = 0.3 m, T = 1 s,
-H = 4 cm (kd = 1.37), as the wave-propagation case.
+H = 4 cm (kd = 1.37), as the wave-propagation case; ``--height`` another height [m] (H/dx, the
+height in spacings, is printed: the issue's "H/dx >= 10" at 40 rows is H = 7.5 cm).
 """
 
 from __future__ import annotations
@@ -44,6 +46,7 @@ def main(argv=None) -> None:
     ap.add_argument("--setup", nargs="+", default=["waves"], help="scene set-ups to compare")
     ap.add_argument("--rows", nargs="+", type=int, default=[10, 20], help="particle rows over the depth")
     ap.add_argument("--wavelengths", type=int, default=8)
+    ap.add_argument("--height", type=float, default=WP_HEIGHT, help="the wave's height [m]")
     ap.add_argument("--set", nargs="*", default=[], metavar="KEY=VALUE", help="FluidConfig settings on top")
     args = ap.parse_args(argv)
     extra = {k: setting_value(v) for k, v in (s.split("=", 1) for s in args.set)}
@@ -52,15 +55,16 @@ def main(argv=None) -> None:
     for setup in args.setup:
         for rows in args.rows:
             cfg = {**(travelling_waves(rows) if setup == "waves" else settings(setup, 2)), **extra}
-            r = propagate(WP_DEPTH / rows, WP_DEPTH, WP_HEIGHT, WP_PERIOD, wavelengths=args.wavelengths, **cfg)
+            r = propagate(WP_DEPTH / rows, WP_DEPTH, args.height, WP_PERIOD, wavelengths=args.wavelengths, **cfg)
+            r["H_over_dx"] = args.height * rows / WP_DEPTH
             line = {k: (np.round(v, 4).tolist() if isinstance(v, np.ndarray) else v) for k, v in r.items()}
-            print(json.dumps({"setup": setup, "rows": rows, "config": cfg, **line}), flush=True)
+            print(json.dumps({"setup": setup, "rows": rows, "height_m": args.height, "config": cfg, **line}), flush=True)
             table.append((setup, rows, r))
-    print("\n| set-up | rows over the depth | H1/H at 1, 2, ... wavelengths | decay per wavelength | lag at the last "
-          "[periods] | particles | steps | CPU s |\n|---|---|---|---|---|---|---|---|")
+    print("\n| set-up | rows over the depth | H/dx | H1/H at 1, 2, ... wavelengths | decay per wavelength | lag at the last "
+          "[periods] | particles | steps | CPU s |\n|---|---|---|---|---|---|---|---|---|")
     for setup, rows, r in table:
         h = " ".join(f"{v:.3f}" for v in r["H1_over_H"])
-        print(f"| {setup} | {rows} | {h} | {100 * r['decay_per_wavelength']:.2f} % | {r['phase_lag_periods'][-1]:.3f} "
+        print(f"| {setup} | {rows} | {r['H_over_dx']:.1f} | {h} | {100 * r['decay_per_wavelength']:.2f} % | {r['phase_lag_periods'][-1]:.3f} "
               f"| {r['particles']} | {r['steps']} | {r['cpu_s']:.0f} |")
 
 
