@@ -68,7 +68,8 @@ def started_tank(rows: int, extra: dict, width_rows: int = 0):
 
     k, omega = 2.0 * math.pi / tank.LENGTH, 2.0 * math.pi / tank.WP_PERIOD
     dx = tank.DEPTH / rows
-    cfg = FluidConfig(dim=2, dx=dx, g=tank.G, **{"u_max": math.sqrt(tank.G * tank.DEPTH), **settings("waves", 2), **extra})
+    cfg = FluidConfig(dim=2, dx=dx, g=tank.G,
+                      **{"u_max": math.sqrt(tank.G * tank.DEPTH), **settings("waves", 2), **extra})
     ps = tank_with_water(2, dx, tank.LENGTH, tank.DEPTH, 1.6 * tank.DEPTH, width=0.0,
                          layers=math.ceil(2.0 * cfg.h_coef - 1e-9)).particles
     set_hydrostatic(ps, tank.DEPTH, cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g)

@@ -58,14 +58,15 @@ def main(argv=None) -> None:
             r = propagate(WP_DEPTH / rows, WP_DEPTH, args.height, WP_PERIOD, wavelengths=args.wavelengths, **cfg)
             r["H_over_dx"] = args.height * rows / WP_DEPTH
             line = {k: (np.round(v, 4).tolist() if isinstance(v, np.ndarray) else v) for k, v in r.items()}
-            print(json.dumps({"setup": setup, "rows": rows, "height_m": args.height, "config": cfg, **line}), flush=True)
+            print(json.dumps({"setup": setup, "rows": rows, "height_m": args.height, "config": cfg, **line}),
+                  flush=True)
             table.append((setup, rows, r))
-    print("\n| set-up | rows over the depth | H/dx | H1/H at 1, 2, ... wavelengths | decay per wavelength | lag at the last "
-          "[periods] | particles | steps | CPU s |\n|---|---|---|---|---|---|---|---|---|")
+    print("\n| set-up | rows over the depth | H/dx | H1/H at 1, 2, ... wavelengths | decay per wavelength | lag at the "
+          "last [periods] | particles | steps | CPU s |\n|---|---|---|---|---|---|---|---|---|")
     for setup, rows, r in table:
         h = " ".join(f"{v:.3f}" for v in r["H1_over_H"])
-        print(f"| {setup} | {rows} | {r['H_over_dx']:.1f} | {h} | {100 * r['decay_per_wavelength']:.2f} % | {r['phase_lag_periods'][-1]:.3f} "
-              f"| {r['particles']} | {r['steps']} | {r['cpu_s']:.0f} |")
+        print(f"| {setup} | {rows} | {r['H_over_dx']:.1f} | {h} | {100 * r['decay_per_wavelength']:.2f} % "
+              f"| {r['phase_lag_periods'][-1]:.3f} | {r['particles']} | {r['steps']} | {r['cpu_s']:.0f} |")
 
 
 if __name__ == "__main__":
