@@ -6,8 +6,9 @@ The floor's wall particles (``walls="adami"``: their pressure carried from the f
 et al. 2012) are replaced by the mirror images across z = 0 of every particle within 2h of
 it (free-slip ghost particles: Colagrossi & Landrini 2003, J. Comput. Phys. 191, 448-475),
 the image's pressure that of its source plus ``rho0 g (z_source - z_image)`` so that the
-hydrostatic pressure carries on through the floor (their §3.2) and the Fourtakas diffusion
-sees no density step across it. The end walls and the paddle keep their particles above the
+hydrostatic pressure carries on through the floor (the body-force term with which Adami et
+al. 2012, Eq. 27, carry the fluid's pressure to a wall particle) and the Fourtakas
+diffusion sees no density step across it. The end walls and the paddle keep their particles above the
 floor, and their images stand for them below it. Not a supported set-up: the solver's
 symmetry plane (fluid.mirror, ``symmetry_y`` in 3-D) is used here as a floor in 2-D (its
 axis 1 is z there), past the check that keeps it to 3-D, with the images' density set
