@@ -15,6 +15,7 @@ import subprocess
 import sys
 import time
 from pathlib import Path
+from types import SimpleNamespace
 
 import h5py
 import numpy as np
@@ -276,7 +277,12 @@ def test_a_run_interrupted_between_checkpoints_resumes_bit_for_bit(fluid_steps, 
     from cosim.scene import runner
 
     share = runner.CHECKPOINT_SHARE
-    monkeypatch.setattr(runner, "CHECKPOINT_SHARE", 1.0)  # writing may take all the time: one every other step
+    monkeypatch.setattr(runner, "CHECKPOINT_SHARE", 1.0)  # writing may take all the time
+    # a clock that ticks a second at every reading: a checkpoint is due at every step whatever
+    # the machine's speed (by the real clock, which steps get one depended on it)
+    ticks = iter(range(10 ** 9))
+    monkeypatch.setattr(runner, "time", SimpleNamespace(perf_counter=lambda: float(next(ticks)),
+                                                        process_time=time.process_time, time=time.time))
     scene = _short(0.1, "world.checkpoint_wall=1e-6", f"coupling.fluid_steps={fluid_steps}")
     step, n = Coupler.step, {"steps": 0}
 
@@ -292,7 +298,8 @@ def test_a_run_interrupted_between_checkpoints_resumes_bit_for_bit(fluid_steps, 
     monkeypatch.setattr(Coupler, "step", step)
     t = checkpoint.read(tmp_path / "split" / "checkpoint.h5")["meta"]["t"]
     assert 0 < t < 0.1 and round(t / 0.01) * 0.01 != pytest.approx(t, abs=1e-9)  # between two samples
-    monkeypatch.setattr(runner, "CHECKPOINT_SHARE", share)  # the resumed part need not write every other step
+    monkeypatch.setattr(runner, "CHECKPOINT_SHARE", share)  # the resumed part need not write at every step
+    monkeypatch.setattr(runner, "time", time)
     resumed = scene.run(tmp_path / "split", resume=True, progress=False)
     assert resumed.summary["resumed"] and resumed.summary["steps"] == whole.summary["steps"]
     _same_outputs(tmp_path / "whole", tmp_path / "split")
