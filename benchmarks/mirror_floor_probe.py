@@ -27,13 +27,11 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 
 import numpy as np
 
 import standing_wave_decay as tank  # beside this script
 from machine import cpu_name  # beside this script
-from cosim.scene.setup import settings
 from cosim.validations import wave_propagation as wp
 from fluid.mirror import Mirror
 from fluid.solver import Fluid, FluidConfig, travelling_waves
@@ -63,51 +61,6 @@ def floor_fluid(cfg: FluidConfig, ps) -> Fluid:
     return fluid
 
 
-def started_tank(rows: int, extra: dict, width_rows: int = 0):
-    """standing_wave_decay.started_tank's tank with the mirror floor (2-D only)."""
-    from fluid.geometry import set_hydrostatic, tank_with_water
-
-    k, omega = 2.0 * math.pi / tank.LENGTH, 2.0 * math.pi / tank.WP_PERIOD
-    dx = tank.DEPTH / rows
-    cfg = FluidConfig(dim=2, dx=dx, g=tank.G,
-                      **{"u_max": math.sqrt(tank.G * tank.DEPTH), **settings("waves", 2), **extra})
-    ps = tank_with_water(2, dx, tank.LENGTH, tank.DEPTH, 1.6 * tank.DEPTH, width=0.0,
-                         layers=math.ceil(2.0 * cfg.h_coef - 1e-9)).particles
-    set_hydrostatic(ps, tank.DEPTH, cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g)
-    fluid = floor_fluid(cfg, ps)
-    fluid.initialize(0.0)
-    fluid.settle(2.0)
-    water = (fluid.ps.kind == 0) & (fluid.ps.ids >= 0)
-    x, z = fluid.ps.pos[water, 0], fluid.ps.pos[water, -1]
-    A = tank.AMPLITUDE * tank.G * k / (omega * math.cosh(k * tank.DEPTH))
-    fluid.ps.vel[water, 0] = -A * np.cosh(k * z) * np.sin(k * x)
-    fluid.ps.vel[water, -1] = A * np.sinh(k * z) * np.cos(k * x)
-    return fluid, A
-
-
-def flume(rows: int, wavelengths: int) -> dict:
-    """wave_propagation.propagate's flume (the case's wave, the chooser's set-up) with the
-    mirror floor."""
-    from fluid.flume import PADDLE_GROUP, flume as build
-    from fluid.geometry import assemble, set_hydrostatic
-    from fluid.relaxation import Slab
-
-    depth, H, T = wp.WP_DEPTH, wp.WP_HEIGHT, wp.WP_PERIOD
-    dx = depth / rows
-    wm, L, _ = wp._wave(H, T, depth)
-    x_abs = (wavelengths + 0.5) * L
-    length = x_abs + wp.WP_ABSORBER * L
-    cfg = FluidConfig(dim=2, dx=dx, g=wp.G, u_max=math.sqrt(wp.G * depth), **travelling_waves(rows))
-    f = build(dx, length, depth, 1.5 * depth, layers=math.ceil(2.0 * cfg.h_coef - 1e-9), back=0.5 * wm.stroke + dx)
-    ps = assemble(2, dx, cfg.rho0, f.fluid, f.walls).particles
-    set_hydrostatic(ps, depth, cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g)
-    fluid = floor_fluid(cfg, ps)
-    fluid.prescribe_motion(PADDLE_GROUP, wm.paddle())
-    fluid.zones.append(Slab(0, x_abs, length, 2.0 * 2.0 * math.pi / T))  # as propagate's rate_per_omega = 2
-    fluid.initialize(0.0)
-    return wp.read_flume(fluid, depth, H, T, wavelengths)
-
-
 def main(argv=None) -> None:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("what", choices=("tank", "flume"))
@@ -117,10 +70,10 @@ def main(argv=None) -> None:
     print(f"# CPU: {cpu_name()}")
     for rows in args.rows:
         if args.what == "tank":
-            tank.started_tank = started_tank
-            r = tank.run(rows, 6, {})
+            r = tank.run(rows, 6, {}, make_fluid=floor_fluid)
         else:
-            r = flume(rows, args.wavelengths)
+            r = wp.propagate(wp.WP_DEPTH / rows, wp.WP_DEPTH, wp.WP_HEIGHT, wp.WP_PERIOD, wavelengths=args.wavelengths,
+                             make_fluid=floor_fluid, **travelling_waves(rows))
         line = {k: (np.round(v, 4).tolist() if isinstance(v, np.ndarray) else v) for k, v in r.items()}
         print(json.dumps({"what": args.what, "floor": "mirror", "rows": rows, **line}), flush=True)
 

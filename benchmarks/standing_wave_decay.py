@@ -59,12 +59,13 @@ LENGTH = 2.0 * math.pi / wavenumber(WP_PERIOD, DEPTH, G)
 AMPLITUDE = 0.02
 
 
-def started_tank(rows: int, extra: dict, width_rows: int = 0):
+def started_tank(rows: int, extra: dict, width_rows: int = 0, make_fluid=None):
     """``(fluid, A)``: the tank at ``rows`` particle rows over the depth, settled at rest,
     then given the mode's velocity of amplitude ``A`` [m/s] at the instant its surface is
     flat; in 2-D, or with ``width_rows`` > 0 a 3-D slice that many spacings wide between the
     tank's walls (the mode uniform across it). ``extra``: FluidConfig settings on top of the
-    wave set-up."""
+    wave set-up; ``make_fluid(config, particles)``: the fluid built instead of ``Fluid(config,
+    particles)`` (a probe's variant)."""
     from fluid.geometry import set_hydrostatic, tank_with_water
     from fluid.solver import Fluid, FluidConfig
 
@@ -75,10 +76,10 @@ def started_tank(rows: int, extra: dict, width_rows: int = 0):
     ps = tank_with_water(dim, dx, LENGTH, DEPTH, 1.6 * DEPTH, width=width_rows * dx,
                          layers=math.ceil(2.0 * cfg.h_coef - 1e-9)).particles
     set_hydrostatic(ps, DEPTH, cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g)
-    fluid = Fluid(cfg, ps)
+    fluid = (make_fluid or Fluid)(cfg, ps)
     fluid.initialize(0.0)
     fluid.settle(2.0)
-    water = fluid.ps.kind == 0
+    water = (fluid.ps.kind == 0) & (fluid.ps.ids >= 0)  # a symmetry plane's images left out
     x, z = fluid.ps.pos[water, 0], fluid.ps.pos[water, -1]
     A = AMPLITUDE * G * k / (omega * math.cosh(k * DEPTH))
     fluid.ps.vel[water, 0] = -A * np.cosh(k * z) * np.sin(k * x)
@@ -86,7 +87,7 @@ def started_tank(rows: int, extra: dict, width_rows: int = 0):
     return fluid, A
 
 
-def run(rows: int, periods: int, extra: dict, width_rows: int = 0) -> dict:
+def run(rows: int, periods: int, extra: dict, width_rows: int = 0, make_fluid=None) -> dict:
     """One run of :func:`started_tank` for ``periods`` periods."""
     from fluid.probes import surface_elevation
 
@@ -94,7 +95,7 @@ def run(rows: int, periods: int, extra: dict, width_rows: int = 0) -> dict:
     omega = 2.0 * math.pi / T
     dx = DEPTH / rows
     dim = 3 if width_rows else 2
-    fluid, A = started_tank(rows, extra, width_rows)
+    fluid, A = started_tank(rows, extra, width_rows, make_fluid)
     ke0 = fluid.kinetic_energy()
 
     def modal() -> float:

@@ -152,14 +152,15 @@ def _duration(H: float, T: float, depth: float, wavelengths: int, settle_periods
 
 def propagate(dx: float, depth: float, H: float, T: float, wavelengths: int = 8, absorber: float = 1.5,
               rate_per_omega: float = 2.0, settle_periods: float = 4.0, fit_periods: float = 3.0,
-              width: float | None = None, progress: bool = False, **config) -> dict:
+              width: float | None = None, progress: bool = False, make_fluid=None, **config) -> dict:
     """Run the flume: piston waves of height ``H`` [m], period ``T`` [s] in ``depth`` [m] of
     water at spacing ``dx`` [m], read at ``wavelengths`` whole wavelengths out; an absorbing
     zone ``absorber`` wavelengths long at the far end, relaxing at ``rate_per_omega`` wave
     frequencies at its end; 2-D, or 3-D across ``width`` [m] (gauges on the mid-line).
     ``config``: FluidConfig settings (default ``u_max = sqrt(g depth)``): the flume built
     here as a scene builds it, with any setting (the case runs its scene,
-    :func:`wave_scene`). Returns :func:`read_flume`'s."""
+    :func:`wave_scene`). ``make_fluid(config, particles)``: the fluid built instead of
+    ``Fluid(config, particles)`` (a probe's variant). Returns :func:`read_flume`'s."""
     from fluid.flume import PADDLE_GROUP, flume
     from fluid.geometry import assemble, set_hydrostatic
     from fluid.relaxation import Slab
@@ -176,7 +177,7 @@ def propagate(dx: float, depth: float, H: float, T: float, wavelengths: int = 8,
               width=width)
     ps = assemble(dim, dx, cfg.rho0, f.fluid, f.walls).particles
     set_hydrostatic(ps, depth, cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g)
-    fluid = Fluid(cfg, ps)
+    fluid = (make_fluid or Fluid)(cfg, ps)
     fluid.prescribe_motion(PADDLE_GROUP, wm.paddle())
     fluid.zones.append(Slab(0, x_abs, length, rate_per_omega * 2.0 * math.pi / T))
     fluid.initialize(0.0)
