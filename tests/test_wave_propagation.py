@@ -142,3 +142,18 @@ def test_the_3d_flume_is_the_2d_flume_extruded_with_its_gauges_on_the_mid_line()
     assert (deep.domain.length, deep.domain.depth, deep.domain.absorber) == (
         flat.domain.length, flat.domain.depth, flat.domain.absorber)
     assert deep.world.duration == flat.world.duration
+
+
+def test_the_flume_is_sampled_over_the_periods_asked_for():
+    """propagate passes its settle and fit periods to read_flume: the samples (kept with
+    ``series``) run every T/32 over the last ``fit_periods`` of a run that ends
+    ``settle_periods + fit_periods`` after the ramp's front has passed the last station."""
+    from cosim.validations.wave_propagation import _duration, propagate
+    from fluid.solver import travelling_waves
+
+    r = propagate(0.3 / 4, 0.3, 0.04, 1.0, wavelengths=2, settle_periods=0.5, fit_periods=1.0, series=True,
+                  **travelling_waves(4))
+    t_end = _duration(0.04, 1.0, 0.3, 2, 0.5, 1.0)
+    assert r["t_end_s"] == pytest.approx(t_end)
+    np.testing.assert_allclose(r["ts"], t_end - 1.0 + np.arange(33) / 32.0, atol=1e-9)
+    assert r["eta"].shape == (33, 10) and np.all(np.abs(r["eta"]) < 0.04)

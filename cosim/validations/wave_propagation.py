@@ -152,7 +152,8 @@ def _duration(H: float, T: float, depth: float, wavelengths: int, settle_periods
 
 def propagate(dx: float, depth: float, H: float, T: float, wavelengths: int = 8, absorber: float = 1.5,
               rate_per_omega: float = 2.0, settle_periods: float = 4.0, fit_periods: float = 3.0,
-              width: float | None = None, progress: bool = False, make_fluid=None, **config) -> dict:
+              width: float | None = None, progress: bool = False, make_fluid=None, series: bool = False,
+              **config) -> dict:
     """Run the flume: piston waves of height ``H`` [m], period ``T`` [s] in ``depth`` [m] of
     water at spacing ``dx`` [m], read at ``wavelengths`` whole wavelengths out; an absorbing
     zone ``absorber`` wavelengths long at the far end, relaxing at ``rate_per_omega`` wave
@@ -160,7 +161,8 @@ def propagate(dx: float, depth: float, H: float, T: float, wavelengths: int = 8,
     ``config``: FluidConfig settings (default ``u_max = sqrt(g depth)``): the flume built
     here as a scene builds it, with any setting (the case runs its scene,
     :func:`wave_scene`). ``make_fluid(config, particles)``: the fluid built instead of
-    ``Fluid(config, particles)`` (a probe's variant). Returns :func:`read_flume`'s."""
+    ``Fluid(config, particles)`` (a probe's variant). ``settle_periods``, ``fit_periods``,
+    ``series``: :func:`read_flume`'s. Returns :func:`read_flume`'s."""
     from fluid.flume import PADDLE_GROUP, flume
     from fluid.geometry import assemble, set_hydrostatic
     from fluid.relaxation import Slab
@@ -181,7 +183,8 @@ def propagate(dx: float, depth: float, H: float, T: float, wavelengths: int = 8,
     fluid.prescribe_motion(PADDLE_GROUP, wm.paddle())
     fluid.zones.append(Slab(0, x_abs, length, rate_per_omega * 2.0 * math.pi / T))
     fluid.initialize(0.0)
-    return read_flume(fluid, depth, H, T, wavelengths, width=width, progress=progress)
+    return read_flume(fluid, depth, H, T, wavelengths, settle_periods, fit_periods, width=width, progress=progress,
+                      series=series)
 
 
 #: gauges per station, across half a wavelength about it; and the periods fitted at the end
@@ -225,12 +228,14 @@ def flume_figures(ts, eta, wm, wavelengths: int) -> dict:
 
 
 def read_flume(fluid, depth: float, H: float, T: float, wavelengths: int, settle_periods: float = 4.0,
-               fit_periods: float = FIT_PERIODS, width: float | None = None, progress: bool = False) -> dict:
+               fit_periods: float = FIT_PERIODS, width: float | None = None, progress: bool = False,
+               series: bool = False) -> dict:
     """Run the piston flume ``fluid`` (initialised at t = 0; waves of height ``H`` [m], period
     ``T`` [s] in ``depth`` [m] of water) until ``settle_periods`` after the ramp's front (at
     the group velocity) has passed the last of ``wavelengths`` whole wavelengths out, then
     ``fit_periods`` more, sampling the gauges of :func:`station_gauges` every T/32 over those;
-    returns :func:`flume_figures`' and the run's cost."""
+    returns :func:`flume_figures`' and the run's cost; ``series``: the samples too (``ts``
+    [s], ``eta`` [m], samples by gauges), for a probe that reads other windows."""
     from fluid.probes import surface_elevation
 
     wm, L, _ = _wave(H, T, depth)
@@ -254,7 +259,7 @@ def read_flume(fluid, depth: float, H: float, T: float, wavelengths: int, settle
     removed = int(sum(fluid.counters.removed.values()))
     return flume_figures(ts, eta, wm, wavelengths) | {
         "particles": int(fluid.ps.n + removed), "steps": int(fluid.counters.steps), "cpu_s": cpu, "t_end_s": t_end,
-        "removed": removed}
+        "removed": removed} | ({"ts": np.array(ts), "eta": np.array(eta)} if series else {})
 
 
 # the wave of the case: a piston flume of the wavemaker tests (kd = 1.37, H/d = 0.13, H/L = 0.029)
