@@ -157,3 +157,25 @@ def test_the_flume_is_sampled_over_the_periods_asked_for():
     assert r["t_end_s"] == pytest.approx(t_end)
     np.testing.assert_allclose(r["ts"], t_end - 1.0 + np.arange(33) / 32.0, atol=1e-9)
     assert r["eta"].shape == (33, 10) and np.all(np.abs(r["eta"]) < 0.04)
+
+
+def test_the_fronts_tail_has_passed_every_station_when_the_case_reads_it():
+    """The case reads its 8 stations over the last periods of a run that ends four periods
+    after the ramp's front (at the group velocity) has passed the last one. Linear theory's
+    own wave, read there, is within 0.25 % of its steady height at every station with the
+    case's ramp (WP_RAMP periods); with a ramp of one period, read as long after it ends,
+    its front's dispersive tail still swings the far stations by more than 1 %, as much as
+    the decay the case measures."""
+    from cosim.validations.wave_propagation import (FIT_PERIODS, WP_RAMP, _duration, _wave, linear_elevation,
+                                                    station_gauges)
+
+    def worst_height_error(ramp: float) -> float:
+        wm, L, _ = _wave(0.04, 1.0, 0.3, ramp)
+        ts = _duration(0.04, 1.0, 0.3, 8) - (WP_RAMP - ramp) - FIT_PERIODS + np.arange(97) / 32.0
+        x = station_gauges(L, 8)
+        a = harmonics(ts, linear_elevation(wm, x, ts), 2 * math.pi).reshape(8, 5)
+        incident = np.array([abs(separate(xs, z, wm.k)[0]) for xs, z in zip(x.reshape(8, 5), a)])
+        return float(np.abs(incident / 0.02 - 1.0).max())
+
+    assert worst_height_error(WP_RAMP) < 2.5e-3
+    assert worst_height_error(1.0) > 0.01
