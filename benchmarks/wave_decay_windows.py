@@ -29,8 +29,6 @@ from wave_propagation import setting_value  # benchmarks/wave_propagation.py
 from cosim.validations import wave_propagation as wp
 from fluid.solver import travelling_waves
 
-SETTLE_PERIODS = 4.0  # the case's: a station is read once the front has passed it by four periods
-
 
 def windows(ts, eta, wm, wavelengths: int, window: float, anchor: float) -> list[dict]:
     """Every ``window``-period window of the samples, a period apart and one of them from
@@ -38,8 +36,8 @@ def windows(ts, eta, wm, wavelengths: int, window: float, anchor: float) -> list
     stations' H1 / linear theory's, and the decay per wavelength fitted over the stations
     settled in it (None with fewer than three)."""
     T = wm.T
-    _, L, cg = wp._wave(wm.H, T, wm.depth)
-    settled_at = wm.ramp * T + np.arange(1, wavelengths + 1) * L / cg + SETTLE_PERIODS * T
+    # when the case would start reading each station, as if it were the last
+    settled_at = np.array([wp._duration(wm.H, T, wm.depth, j, fit_periods=0.0) for j in range(1, wavelengths + 1)])
     out = []
     t0 = anchor - math.floor((anchor - ts[0]) / T + 1e-9) * T
     while t0 + window * T <= ts[-1] + 1e-9:
@@ -78,7 +76,7 @@ def main(argv=None) -> None:
         T = wp.WP_PERIOD
         t_end = wp._duration(args.height, T, wp.WP_DEPTH, args.wavelengths) + args.extra * T
         fit = (t_end - args.t_from) / T
-        settle = (t_end - wp._duration(args.height, T, wp.WP_DEPTH, args.wavelengths, 0.0, 0.0)) / T - fit
+        settle = wp.SETTLE_PERIODS + wp.FIT_PERIODS + args.extra - fit  # so that the run ends at t_end
         cfg = travelling_waves(args.rows) | {k: setting_value(v) for k, v in (s.split("=", 1) for s in args.set)}
         r = wp.propagate(wp.WP_DEPTH / args.rows, wp.WP_DEPTH, args.height, T, wavelengths=args.wavelengths,
                          settle_periods=settle, fit_periods=fit, series=True, **cfg)

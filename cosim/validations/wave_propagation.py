@@ -138,6 +138,9 @@ def linear_elevation(wm, x: np.ndarray, t: np.ndarray, dt: float = 0.005) -> np.
 #: to that. Over three periods the tail is within 0.2 % there (docs/validation/
 #: wave-propagation_history.md, "The front's tail")
 WP_RAMP = 3.0
+#: the periods a station's reading waits after the ramp's front (at the group velocity) has
+#: passed it, and the periods then fitted
+SETTLE_PERIODS, FIT_PERIODS = 4.0, 3.0
 
 
 def _wave(H: float, T: float, depth: float, ramp: float = WP_RAMP):
@@ -151,8 +154,8 @@ def _wave(H: float, T: float, depth: float, ramp: float = WP_RAMP):
     return wm, 2.0 * math.pi / k, 0.5 * (1.0 + 2.0 * kd / math.sinh(2.0 * kd)) * omega / k
 
 
-def _duration(H: float, T: float, depth: float, wavelengths: int, settle_periods: float = 4.0,
-              fit_periods: float = 3.0) -> float:
+def _duration(H: float, T: float, depth: float, wavelengths: int, settle_periods: float = SETTLE_PERIODS,
+              fit_periods: float = FIT_PERIODS) -> float:
     """How long [s] :func:`read_flume` runs: the ramp (:data:`WP_RAMP` periods),
     ``settle_periods`` after the ramp's front (at the group velocity) has passed the last
     station, ``wavelengths`` whole wavelengths out, then ``fit_periods``."""
@@ -161,7 +164,7 @@ def _duration(H: float, T: float, depth: float, wavelengths: int, settle_periods
 
 
 def propagate(dx: float, depth: float, H: float, T: float, wavelengths: int = 8, absorber: float = 1.5,
-              rate_per_omega: float = 2.0, settle_periods: float = 4.0, fit_periods: float = 3.0,
+              rate_per_omega: float = 2.0, settle_periods: float = SETTLE_PERIODS, fit_periods: float = FIT_PERIODS,
               width: float | None = None, progress: bool = False, make_fluid=None, series: bool = False,
               **config) -> dict:
     """Run the flume: piston waves of height ``H`` [m], period ``T`` [s] in ``depth`` [m] of
@@ -197,8 +200,8 @@ def propagate(dx: float, depth: float, H: float, T: float, wavelengths: int = 8,
                       series=series)
 
 
-#: gauges per station, across half a wavelength about it; and the periods fitted at the end
-GAUGES_PER_STATION, FIT_PERIODS = 5, 3.0
+#: gauges per station, across half a wavelength about it
+GAUGES_PER_STATION = 5
 
 
 def station_gauges(L: float, wavelengths: int) -> np.ndarray:
@@ -237,7 +240,7 @@ def flume_figures(ts, eta, wm, wavelengths: int) -> dict:
             "reflection": float(np.median(np.abs(refl) / np.abs(inc))), "kd": k * wm.depth}
 
 
-def read_flume(fluid, depth: float, H: float, T: float, wavelengths: int, settle_periods: float = 4.0,
+def read_flume(fluid, depth: float, H: float, T: float, wavelengths: int, settle_periods: float = SETTLE_PERIODS,
                fit_periods: float = FIT_PERIODS, width: float | None = None, progress: bool = False,
                series: bool = False) -> dict:
     """Run the piston flume ``fluid`` (initialised at t = 0; waves of height ``H`` [m], period
