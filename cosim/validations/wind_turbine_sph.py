@@ -72,9 +72,8 @@ def sph_scene(quick: bool):
 def still_scene(quick: bool):
     """The full variant's scene in still water (a wave of :data:`STILL_HEIGHT`) for the draft,
     over the variant's still run (the quick one's shorter). Both variants read the draft at
-    the full spacing: at the quick one's the draft is not resolved (1.25, 0.8 and 0.625 m,
-    1.2-2.4 spacings in it, read it 15.9, 13.2 and 9.8 % short, 0.5 m 1.3 %:
-    docs/validation/wind-turbine-sph_history.md, "The quick variant's draft")."""
+    the full spacing, three spacings in the draft: with fewer it is not resolved
+    (docs/validation/wind-turbine-sph_history.md, "The quick variant's draft")."""
     return sph_scene(False).with_values([f"waves.height={STILL_HEIGHT}", f"world.duration={RUNS[quick][2]}"])
 
 
