@@ -29,11 +29,18 @@ log = logging.getLogger(__name__)
 #: the near-field case's water and waves: 0.3 m deep, regular T = 1.2 s (kd = 1.05), H = 6 cm
 #: (H/L = 0.033, a third of Miche's limit); the JONSWAP sea Hs = 4 cm, Tp = 1.2 s
 NF_DEPTH, NF_PERIOD, NF_HEIGHT, NF_HS = 0.3, 1.2, 0.06, 0.04
-#: H / dx of the quick run and of the full run's three spacings (the JONSWAP sea at the same dx)
-NF_QUICK_H_OVER_DX, NF_H_OVER_DX = 3, (5, 10, 20)
-#: the seas of the full variant, and of the quick one: Stokes-2 carries linear theory's first
-#: harmonic and adds the bound second one, so the quick run's regular wave is Stokes-2 alone
-NF_SEAS, NF_QUICK_SEAS = ("linear", "stokes2", "jonswap"), ("stokes2", "jonswap")
+#: H / dx of the full variant's three spacings, each sea at each
+NF_H_OVER_DX = (5, 10, 20)
+#: the seas of the full variant
+NF_SEAS = ("linear", "stokes2", "jonswap")
+#: the quick variant's 2-D runs (sea, H / dx): Stokes-2 carries linear theory's first harmonic
+#: and adds the bound second one, so its regular wave is Stokes-2 alone, at the coarsest
+#: spacing that keeps the height; the JONSWAP sea at the full variant's first spacing, whose
+#: Hs dx = H / 3 does not carry (the sea's tail above 1.5 fp)
+NF_QUICK_RUNS = (("stokes2", 3), ("jonswap", 5))
+#: the JONSWAP sea's record [peak periods]: Welch's spectrum over 24 of them scatters by 17 %
+#: in the worst band at H/dx = 3 and 5 alike (docs/validation/nearfield.md)
+NF_JONSWAP_PERIODS = 64
 #: targets: height 5 %, phase 5 % of a period, mean-level drift 1 % of the depth, Hs and Tp 5 %,
 #: spectrum 10 % over 0.7-1.5 fp
 NF_HEIGHT_TOL, NF_LAG_TOL, NF_DRIFT_TOL, NF_HS_TOL, NF_SPECTRUM_TOL = 0.05, 0.05, 0.01, 0.05, 0.10
@@ -231,20 +238,24 @@ def run_scene(scene) -> dict:
 
 
 #: the first run of each variant (quick: True): the sea, H / dx and periods of :func:`waves_scene`
-FIRST_RUN = {True: (NF_QUICK_SEAS[0], NF_QUICK_H_OVER_DX, 20), False: (NF_SEAS[0], NF_H_OVER_DX[0], 20)}
+FIRST_RUN = {True: (*NF_QUICK_RUNS[0], 20), False: (NF_SEAS[0], NF_H_OVER_DX[0], 20)}
 
 
-def nearfield_case(h_over_dx, periods: float, jonswap_periods: float, seas=NF_SEAS,
-                   runs_3d=()) -> tuple[dict, dict]:
-    """The case's runs at each ``H / dx`` of the ``seas`` ("linear", "stokes2": regular
-    waves ``periods`` periods; "jonswap": the JONSWAP sea ``jonswap_periods`` peak periods,
-    at the same dx), each the scene :func:`waves_scene` (a box 1.8 wavelengths long with
+def runs_at(h_over_dx, seas=NF_SEAS) -> list[tuple[str, float]]:
+    """(sea, H / dx) of every one of the ``seas`` at every ``h_over_dx``, by spacing."""
+    return [(kind, r) for r in h_over_dx for kind in seas]
+
+
+def nearfield_case(runs, periods: float, jonswap_periods: float, runs_3d=()) -> tuple[dict, dict]:
+    """The case's 2-D ``runs`` ((sea, H / dx) pairs; "linear", "stokes2": regular
+    waves ``periods`` periods; "jonswap": the JONSWAP sea ``jonswap_periods`` peak periods),
+    each the scene :func:`waves_scene` (a box 1.8 wavelengths long with
     zones half a wavelength wide, as :func:`fluid.nearfield.choose_box` gives a sea without
     bodies, the near field's set-up ``fluid.solver.NEAR_FIELD``) run by :func:`run_scene`,
     then ``runs_3d`` ((sea, H / dx) pairs) in the 3-D channel of :func:`waves_scene`, keyed
     ``SEA_3d_HOVERDX``; returns (metrics, series)."""
     metrics, series = {}, {}
-    plan = [(kind, r, 2) for r in h_over_dx for kind in seas] + [(kind, r, 3) for kind, r in runs_3d]
+    plan = [(kind, r, 2) for kind, r in runs] + [(kind, r, 3) for kind, r in runs_3d]
     for kind, r, dim in plan:
         scene = waves_scene(kind, r, jonswap_periods if kind == "jonswap" else periods, dim=dim)
         run = run_scene(scene)
@@ -299,8 +310,8 @@ def _tolerances(metrics: dict) -> dict:
       target="elevation at 9 gauges across the box within 5 % of the sea's height and 5 % of a period in phase over "
              "20 periods; the mean level's drift below 1 % of the depth; for the JONSWAP sea Hs and Tp within 5 % "
              "and the spectrum within 10 % over 0.7-1.5 fp",
-      quick="H/dx = 3, Stokes-2 waves 20 periods (the linear ones are the full variant's) and the JONSWAP sea 24 "
-            "peak periods: the same tolerances", scene=lambda quick: waves_scene(*FIRST_RUN[quick]), long=True)
+      quick="Stokes-2 waves 20 periods at H/dx = 3 (the linear ones are the full variant's) and the JONSWAP sea "
+            "64 peak periods at H/dx = 5 (the full variant's first spacing): the same tolerances", scene=lambda quick: waves_scene(*FIRST_RUN[quick]), long=True)
 def nearfield_waves(quick: bool) -> dict:
     """The near field's incident sea with nothing in it: the scene ``scenes/nearfield-waves.toml``
     with each variant's seas and spacings (:func:`nearfield_case`), what the box does to the
@@ -308,15 +319,17 @@ def nearfield_waves(quick: bool) -> dict:
     realisation at the gauges (the same components, Welch's method with the same
     segments), not against the target spectrum: a finite record of one realisation
     scatters about the target by ~1/sqrt(segments) per band, which is not the fluid's.
-    Quick: the regular wave is Stokes-2 alone (:data:`NF_QUICK_SEAS`), its first harmonic
-    the linear wave's, judged the same; the linear wave runs in the full variant, and the
-    Stokes-2 waves in 3-D (:data:`NF_3D_RUNS`) at the quick spacing only: the channel costs
+    Quick: :data:`NF_QUICK_RUNS`, the regular wave Stokes-2 alone, its first harmonic
+    the linear wave's, judged the same, and the JONSWAP sea at the full variant's first
+    spacing over the same record; the linear wave runs in the full variant, and the
+    Stokes-2 waves in 3-D (:data:`NF_3D_RUNS`) at H/dx = 3 only: the channel costs
     about 25 times the 2-D box a run, and at H/dx = 5 about eight times more again. The scene
     computes no walls' loads (no pressure patch), which the MLS re-initialisation feels:
     docs/validation/nearfield.md, "As a scene"."""
-    levels, seas = ((NF_QUICK_H_OVER_DX,), NF_QUICK_SEAS) if quick else (NF_H_OVER_DX, NF_SEAS)
-    metrics, series = nearfield_case(levels, 20, 24 if quick else 64, seas=seas, runs_3d=() if quick else NF_3D_RUNS)
-    finest = metrics[f"{seas[0]}_{levels[-1]}"]
+    runs = NF_QUICK_RUNS if quick else runs_at(NF_H_OVER_DX)
+    metrics, series = nearfield_case(runs, 20, NF_JONSWAP_PERIODS, runs_3d=() if quick else NF_3D_RUNS)
+    first = runs[0][0]
+    finest = metrics[f"{first}_{max(r for kind, r in runs if kind == first)}"]
     return {"metrics": metrics, "tolerances": _tolerances(metrics), "series": series,
             "particles": finest["particles"], "steps": finest["steps"],
             "cpu_s": {k: v["cpu_s"] for k, v in metrics.items()}}
