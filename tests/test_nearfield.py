@@ -275,3 +275,41 @@ def test_the_sea_target_relaxes_its_zone_in_one_pass_as_the_general_path_does(di
         assert np.array_equal(moved, (pos[:, 0] > 1.7) & (kind == Kind.FLUID.value)) and moved.sum() > 30
     stokes = sea_velocity(RegularWave(0.04, 1.0, 0.3, level=0.3, theory="stokes2"))
     assert not stokes.relax(Slab(0, 1.7, 2.0, 8.0, stokes), pos, vel0.copy(), kind, 2.6, 4e-4, None)
+
+
+def test_a_kept_near_field_run_resumes_where_it_stopped(tmp_path, monkeypatch):
+    """nearfield-waves' runs span processes (run_scene with a folder): a run stopped after
+    its checkpoint and run again resumes from it and reads what the run without a stop
+    reads, to round-off; the finished run is then read back (its readings, no fluid run),
+    and a run of another scene in the folder is refused, naming the field that differs."""
+    import fluid.probes
+    from cosim.validations import nearfield as nf
+
+    scene = nf.waves_scene("stokes2", 1.5, 1.5)  # dx = 4 cm, 1.8 s
+    whole = nf.run_scene(scene)
+    reads, stop_at = [0], 30  # the gauges read once after the settling, then once a sample
+    surface = fluid.probes.surface_elevation
+
+    def stopping(*args):
+        reads[0] += 1
+        if reads[0] > stop_at:
+            raise KeyboardInterrupt
+        return surface(*args)
+
+    monkeypatch.setattr(nf, "CHECKPOINT_EVERY_S", 0.0)  # a checkpoint after every sample
+    monkeypatch.setattr(fluid.probes, "surface_elevation", stopping)
+    with pytest.raises(KeyboardInterrupt):
+        nf.run_scene(scene, tmp_path / "run")
+    assert (tmp_path / "run" / "checkpoint.h5").is_file() and not (tmp_path / "run" / "readings.h5").exists()
+    monkeypatch.undo()
+    resumed = nf.run_scene(scene, tmp_path / "run")
+    assert resumed["t"].size == whole["t"].size == 48
+    np.testing.assert_allclose(resumed["eta"], whole["eta"], rtol=0, atol=1e-12)
+    np.testing.assert_allclose(resumed["box_level_m"], whole["box_level_m"], rtol=0, atol=1e-12)
+    assert resumed["steps"] == whole["steps"] and resumed["settled_level_m"] == whole["settled_level_m"]
+    assert not (tmp_path / "run" / "checkpoint.h5").exists()
+    again = nf.run_scene(scene, tmp_path / "run")
+    np.testing.assert_array_equal(again["eta"], resumed["eta"])
+    assert again["read_back_other_code"] is None
+    with pytest.raises(InputError, match="fluid.dx"):
+        nf.run_scene(nf.waves_scene("stokes2", 2, 1.5), tmp_path / "run")

@@ -81,9 +81,13 @@ def run_box(sea, dx: float, length: float, zone: float, duration: float, *, widt
                     settle=settle, gauges=gauges, samples_per_period=samples_per_period, progress=progress)
 
 
+#: how often a kept run (:func:`run_scene`) writes its checkpoint [s of wall time]
+CHECKPOINT_EVERY_S = 600.0
+
+
 def read_box(fluid, sea, length: float, zone: float, duration: float, cpu0: float, *, x0: float = 0.0,
              y: float | None = None, settle: float = 0.0, gauges: int = 9, samples_per_period: int = 32,
-             progress: bool = False) -> dict:
+             progress: bool = False, checkpoint: Path | None = None) -> dict:
     """Run the near field ``fluid`` (initialised at t = 0; its box ``length`` [m] long from
     ``x0`` [m] in ``sea``, zones ``zone`` [m] wide) for ``duration`` [s]
     after ``settle`` [s] of damped relaxation at rest (``Fluid.settle``), reading the
@@ -94,7 +98,14 @@ def read_box(fluid, sea, length: float, zone: float, duration: float, cpu0: floa
     sea's elevations at the same points and times, the mean level over the box (clear of
     the end walls' excursion) [m] at each time, the still level the settled water started
     from (relative to the sea's) [m], the lost fluid particles and the run's cost (CPU
-    seconds since ``cpu0``, a ``time.process_time()``)."""
+    seconds since ``cpu0``, a ``time.process_time()``, and those of the earlier processes
+    of a resumed run).
+
+    ``checkpoint``: a file (:mod:`cosim.checkpoint`) where the fluid's state and the samples
+    so far are written every :data:`CHECKPOINT_EVERY_S` of wall time, and from which a run
+    that stopped resumes (the same fluid built again by its caller): a run of hours then
+    spans processes."""
+    from cosim import checkpoint as ck
     from fluid.nearfield import excursion
     from fluid.particles import Kind
     from fluid.probes import surface_elevation
@@ -107,18 +118,31 @@ def read_box(fluid, sea, length: float, zone: float, duration: float, cpu0: floa
     gall = x0 + np.linspace(reach, length - reach, max(8, int(length / dx) // 2))
     xs = np.concatenate([gx, gall])
     points = xs if dim == 2 else np.column_stack([xs, np.full(xs.size, y)])
-    if settle > 0:
-        fluid.settle(settle)
-    start = surface_elevation(fluid, points)[len(gx):].mean() - depth
     every = sea.peak_period / samples_per_period
     n = int(round(duration / every))
     ts, eta = np.arange(1, n + 1) * every, np.empty((n, xs.size))
-    for i, t in enumerate(ts):
-        fluid.advance(fluid.t, t - fluid.t)
+    done, cpu_before = 0, 0.0
+    if checkpoint is not None and checkpoint.is_file():
+        saved = ck.read(checkpoint)
+        fluid.load_state(saved["fluid"])
+        done, start, cpu_before = int(saved["samples"]), float(saved["start"]), float(saved["cpu_s"])
+        eta[:done] = saved["eta"]
+        log.info("near field: resumed at t = %.2f s (%d of %d samples) from %s", fluid.t, done, n, checkpoint)
+    else:
+        if settle > 0:
+            fluid.settle(settle)
+        start = surface_elevation(fluid, points)[len(gx):].mean() - depth
+    written = time.perf_counter()
+    for i in range(done, n):
+        fluid.advance(fluid.t, ts[i] - fluid.t)
         eta[i] = surface_elevation(fluid, points) - depth
         if progress and (i + 1) % (4 * samples_per_period) == 0:
-            log.info("near field: t = %6.2f s, %d steps", t, fluid.counters.steps)
-    cpu = time.process_time() - cpu0
+            log.info("near field: t = %6.2f s, %d steps", ts[i], fluid.counters.steps)
+        if checkpoint is not None and i + 1 < n and time.perf_counter() - written >= CHECKPOINT_EVERY_S:
+            ck.write(checkpoint, {"fluid": fluid.save_state(), "samples": i + 1, "eta": eta[:i + 1],
+                                  "start": start, "cpu_s": cpu_before + time.process_time() - cpu0})
+            written = time.perf_counter()
+    cpu = cpu_before + time.process_time() - cpu0
     return {"gauges_m": gx, "t": ts, "eta": eta[:, :len(gx)],
             "sea_eta": sea.elevation(gx[None, :], y or 0.0, ts[:, None]),
             "box_level_m": eta[:, len(gx):].mean(axis=1), "settled_level_m": float(start),
@@ -223,18 +247,48 @@ def waves_scene(kind: str, h_over_dx: float, periods: float, dim: int = 2):
     return case_scene.load("nearfield-waves", values)
 
 
-def run_scene(scene) -> dict:
+def run_scene(scene, out: Path | None = None) -> dict:
     """The near field of ``scene`` (:func:`waves_scene`) built as ``cosim run`` builds it and
     read by :func:`read_box` over its box and zones, after its ``fluid.settle``, every
-    ``world.sample_every``; with ``sea``, its incident sea."""
+    ``world.sample_every``; with ``sea``, its incident sea, and ``h``, the smoothing length.
+    ``out``: a folder where the run is kept (its scene, its checkpoint while it runs, its
+    readings once finished, then read back; a run of another scene there is refused), so
+    that a run of hours spans processes; ``read_back_other_code`` names the code that made
+    readings read back which these sources did not."""
+    from cosim import checkpoint as ck
+    from cosim.errors import InputError
+    from cosim.scene.runner import kept_scene_difference
+    from cosim.version import code_version
+
     d = scene.domain
     cpu0 = time.process_time()
+    if out is not None:
+        out.mkdir(parents=True, exist_ok=True)
+        if (out / "scene.toml").is_file():
+            other = kept_scene_difference(scene, out)
+            if other is not None:
+                raise InputError(f"{out} holds a run of another scene ({other} differs); move it away, or point "
+                                 f"COSIM_CASE_RUNS elsewhere")
+        else:
+            scene.to_toml(out / "scene.toml")
+    done = None if out is None else out / "readings.h5"
     with case_scene.built(scene) as b:
+        extra = {"sea": b.sea, "h": b.sph.config.h}
+        if done is not None and done.is_file():
+            kept = ck.read(done)
+            other = kept["code_version"] if kept["code_version"] != code_version() else None
+            if other:
+                log.warning("%s: read back readings made by other code (%s); move the folder away to measure "
+                            "this code", out, other)
+            return kept["readings"] | extra | {"read_back_other_code": other}
         y = None if b.near_field.y is None else 0.5 * sum(b.near_field.y)
         r = read_box(b.sph, b.sea, d.x1 - d.x0, d.zone, scene.world.duration, cpu0, x0=d.x0, y=y,
                      settle=scene.fluid.settle, samples_per_period=round(b.sea.peak_period / scene.world.sample_every),
-                     progress=True)
-        return r | {"sea": b.sea, "h": b.sph.config.h}
+                     progress=True, checkpoint=None if out is None else out / "checkpoint.h5")
+    if done is not None:
+        ck.write(done, {"readings": r, "code_version": code_version()})
+        (out / "checkpoint.h5").unlink(missing_ok=True)
+    return r | extra | {"read_back_other_code": None}
 
 
 #: the first run of each variant (quick: True): the sea, H / dx and periods of :func:`waves_scene`
@@ -246,26 +300,31 @@ def runs_at(h_over_dx, seas=NF_SEAS) -> list[tuple[str, float]]:
     return [(kind, r) for r in h_over_dx for kind in seas]
 
 
-def nearfield_case(runs, periods: float, jonswap_periods: float, runs_3d=()) -> tuple[dict, dict]:
+def nearfield_case(runs, periods: float, jonswap_periods: float, runs_3d=(),
+                   kept: Path | None = None) -> tuple[dict, dict, dict]:
     """The case's 2-D ``runs`` ((sea, H / dx) pairs; "linear", "stokes2": regular
     waves ``periods`` periods; "jonswap": the JONSWAP sea ``jonswap_periods`` peak periods),
     each the scene :func:`waves_scene` (a box 1.8 wavelengths long with
     zones half a wavelength wide, as :func:`fluid.nearfield.choose_box` gives a sea without
     bodies, the near field's set-up ``fluid.solver.NEAR_FIELD``) run by :func:`run_scene`,
     then ``runs_3d`` ((sea, H / dx) pairs) in the 3-D channel of :func:`waves_scene`, keyed
-    ``SEA_3d_HOVERDX``; returns (metrics, series)."""
-    metrics, series = {}, {}
+    ``SEA_3d_HOVERDX``; ``kept``: the folder under which each run is kept (``kept / KEY``,
+    :func:`run_scene`), None: none kept; returns (metrics, series, the runs read back that
+    other code made: key -> that code's version)."""
+    metrics, series, other = {}, {}, {}
     plan = [(kind, r, 2) for kind, r in runs] + [(kind, r, 3) for kind, r in runs_3d]
     for kind, r, dim in plan:
         scene = waves_scene(kind, r, jonswap_periods if kind == "jonswap" else periods, dim=dim)
-        run = run_scene(scene)
+        key = f"{kind}_{r}" if dim == 2 else f"{kind}_3d_{r}"
+        run = run_scene(scene, None if kept is None else kept / key)
         sea, depth = run["sea"], scene.domain.depth
         period, ramp = sea.peak_period, scene.waves.ramp * sea.peak_period
-        key = f"{kind}_{r}" if dim == 2 else f"{kind}_3d_{r}"
         m = {"drift_over_depth": level_drift(run, period, ramp) / depth,
              "settled_level_over_depth": run["settled_level_m"] / depth,
              "particles": run["particles"], "steps": run["steps"], "cpu_s": round(run["cpu_s"], 1),
              "lost": run["removed"]}
+        if run["read_back_other_code"]:
+            other[key] = run["read_back_other_code"]
         if kind == "jonswap":
             q = irregular_metrics(run, period, ramp, gauge_response_of(run["h"], depth, scene.world.g, dim))
             m |= {"Hs_error": float(np.abs(q["Hs_over_sea"] - 1.0).max()),
@@ -287,7 +346,7 @@ def nearfield_case(runs, periods: float, jonswap_periods: float, runs_3d=()) -> 
                 "xlabel": "x / wavelength", "ylabel": "H1 / H of the sea", "curves": {}})["curves"][label] = {
                 "x": (run["gauges_m"] / sea.wavelength).tolist(), "y": q["H1_over_H"].tolist()}
         metrics[key] = m
-    return metrics, series
+    return metrics, series, other
 
 
 def _tolerances(metrics: dict) -> dict:
@@ -325,14 +384,20 @@ def nearfield_waves(quick: bool) -> dict:
     Stokes-2 waves in 3-D (:data:`NF_3D_RUNS`) at H/dx = 3 only: the channel costs
     about 25 times the 2-D box a run, and at H/dx = 5 about eight times more again. The scene
     computes no walls' loads (no pressure patch), which the MLS re-initialisation feels:
-    docs/validation/nearfield.md, "As a scene"."""
+    docs/validation/nearfield.md, "As a scene". The full variant's runs (about 80 CPU-hours,
+    70 of them at H/dx = 20) are kept under ``$COSIM_CASE_RUNS/nearfield-waves/full`` and
+    resumed there (:func:`run_scene`), so that it can be run over many sessions."""
     runs = NF_QUICK_RUNS if quick else runs_at(NF_H_OVER_DX)
-    metrics, series = nearfield_case(runs, 20, NF_JONSWAP_PERIODS, runs_3d=() if quick else NF_3D_RUNS)
+    kept = None if quick else case_scene.kept_runs("nearfield-waves", False)
+    metrics, series, other = nearfield_case(runs, 20, NF_JONSWAP_PERIODS, runs_3d=() if quick else NF_3D_RUNS,
+                                            kept=kept)
     first = runs[0][0]
     finest = metrics[f"{first}_{max(r for kind, r in runs if kind == first)}"]
     return {"metrics": metrics, "tolerances": _tolerances(metrics), "series": series,
             "particles": finest["particles"], "steps": finest["steps"],
-            "cpu_s": {k: v["cpu_s"] for k, v in metrics.items()}}
+            "cpu_s": {k: v["cpu_s"] for k, v in metrics.items()},
+            # the kept runs read back that other code made: their figures are that code's
+            "runs_of_other_code": other}
 
 
 #: the moored box's scene (the flume of examples/moored_box_waves.toml)
