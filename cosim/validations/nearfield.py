@@ -35,8 +35,8 @@ NF_H_OVER_DX = (5, 10, 20)
 NF_SEAS = ("linear", "stokes2", "jonswap")
 #: the quick variant's 2-D runs (sea, H / dx): Stokes-2 carries linear theory's first harmonic
 #: and adds the bound second one, so its regular wave is Stokes-2 alone, at the coarsest
-#: spacing that keeps the height; the JONSWAP sea at the full variant's first spacing, whose
-#: Hs dx = H / 3 does not carry (the sea's tail above 1.5 fp)
+#: spacing that keeps the height; the JONSWAP sea at the full variant's first spacing (at
+#: dx = H / 3 the fluid does not carry the sea's tail above 1.5 fp: Hs 6.5 % short)
 NF_QUICK_RUNS = (("stokes2", 3), ("jonswap", 5))
 #: the JONSWAP sea's record [peak periods]: Welch's spectrum over 24 of them scatters by 17 %
 #: in the worst band at H/dx = 3 and 5 alike (docs/validation/nearfield.md)
@@ -370,7 +370,8 @@ def _tolerances(metrics: dict) -> dict:
              "20 periods; the mean level's drift below 1 % of the depth; for the JONSWAP sea Hs and Tp within 5 % "
              "and the spectrum within 10 % over 0.7-1.5 fp",
       quick="Stokes-2 waves 20 periods at H/dx = 3 (the linear ones are the full variant's) and the JONSWAP sea "
-            "64 peak periods at H/dx = 5 (the full variant's first spacing): the same tolerances", scene=lambda quick: waves_scene(*FIRST_RUN[quick]), long=True)
+            "64 peak periods at H/dx = 5 (the full variant's first spacing): the same tolerances",
+      scene=lambda quick: waves_scene(*FIRST_RUN[quick]), long=True)
 def nearfield_waves(quick: bool) -> dict:
     """The near field's incident sea with nothing in it: the scene ``scenes/nearfield-waves.toml``
     with each variant's seas and spacings (:func:`nearfield_case`), what the box does to the
