@@ -56,14 +56,15 @@ from fluid.wavemaker import wavenumber
 
 #: the tank's length [m]: the wave-propagation case's wavelength
 LENGTH = 2.0 * math.pi / wavenumber(WP_PERIOD, DEPTH, G)
+#: the mode's amplitude at the tank's ends [m] (``--amplitude``)
 AMPLITUDE = 0.02
 
 
-def started_tank(rows: int, extra: dict, width_rows: int = 0, make_fluid=None):
+def started_tank(rows: int, extra: dict, width_rows: int = 0, make_fluid=None, amplitude: float = AMPLITUDE):
     """``(fluid, A)``: the tank at ``rows`` particle rows over the depth, settled at rest,
-    then given the mode's velocity of amplitude ``A`` [m/s] at the instant its surface is
-    flat; in 2-D, or with ``width_rows`` > 0 a 3-D slice that many spacings wide between the
-    tank's walls (the mode uniform across it). ``extra``: FluidConfig settings on top of the
+    then given the velocity of the mode of elevation amplitude ``amplitude`` [m], ``A``
+    [m/s], at the instant its surface is flat; in 2-D, or with ``width_rows`` > 0 a 3-D
+    slice that many spacings wide between the tank's walls (the mode uniform across it). ``extra``: FluidConfig settings on top of the
     wave set-up; ``make_fluid(config, particles)``: the fluid built instead of ``Fluid(config,
     particles)`` (a probe's variant)."""
     from fluid.geometry import set_hydrostatic, tank_with_water
@@ -81,13 +82,14 @@ def started_tank(rows: int, extra: dict, width_rows: int = 0, make_fluid=None):
     fluid.settle(2.0)
     water = (fluid.ps.kind == 0) & (fluid.ps.ids >= 0)  # a symmetry plane's images left out
     x, z = fluid.ps.pos[water, 0], fluid.ps.pos[water, -1]
-    A = AMPLITUDE * G * k / (omega * math.cosh(k * DEPTH))
+    A = amplitude * G * k / (omega * math.cosh(k * DEPTH))
     fluid.ps.vel[water, 0] = -A * np.cosh(k * z) * np.sin(k * x)
     fluid.ps.vel[water, -1] = A * np.sinh(k * z) * np.cos(k * x)
     return fluid, A
 
 
-def run(rows: int, periods: int, extra: dict, width_rows: int = 0, make_fluid=None) -> dict:
+def run(rows: int, periods: int, extra: dict, width_rows: int = 0, make_fluid=None,
+        amplitude: float = AMPLITUDE) -> dict:
     """One run of :func:`started_tank` for ``periods`` periods."""
     from fluid.probes import surface_elevation
 
@@ -95,7 +97,7 @@ def run(rows: int, periods: int, extra: dict, width_rows: int = 0, make_fluid=No
     omega = 2.0 * math.pi / T
     dx = DEPTH / rows
     dim = 3 if width_rows else 2
-    fluid, A = started_tank(rows, extra, width_rows, make_fluid)
+    fluid, A = started_tank(rows, extra, width_rows, make_fluid, amplitude)
     ke0 = fluid.kinetic_energy()
 
     def modal() -> float:
@@ -128,7 +130,7 @@ def run(rows: int, periods: int, extra: dict, width_rows: int = 0, make_fluid=No
     amp, mode = [], []
     for p in range(periods):  # first harmonics over each period: the middle's elevation, the mode's velocity
         m = period_of == p
-        amp.append(abs(harmonics(ts[m], eta[m], omega)) / AMPLITUDE)
+        amp.append(abs(harmonics(ts[m], eta[m], omega)) / amplitude)
         mode.append(abs(harmonics(ts[m], q[m], omega)) / A)
 
     def per_period(x):  # 1 - exp(slope of log x over the periods after the first)
@@ -142,7 +144,7 @@ def run(rows: int, periods: int, extra: dict, width_rows: int = 0, make_fluid=No
     crossings = upward_crossings(ts[after], q[after])
     period = float(np.diff(crossings).mean()) if len(crossings) > 1 else float("nan")
     n = 0.5 * (1.0 + 2.0 * k * DEPTH / math.sinh(2.0 * k * DEPTH))  # group over phase velocity
-    return {"rows": rows, "width_rows": width_rows, "set": extra,
+    return {"rows": rows, "width_rows": width_rows, "amplitude_m": amplitude, "set": extra,
             "first_period_elevation_over_mode": round(amp[0] / mode[0], 4), "decay_per_period": decay,
             "per_wavelength_if_travelling": decay / n,
             "decay_of_the_middle_elevation": per_period(np.array(amp)),
@@ -159,6 +161,8 @@ def main(argv=None) -> None:
     ap.add_argument("--periods", type=int, default=10)
     ap.add_argument("--width", type=int, default=0, metavar="ROWS",
                     help="a 3-D slice this many spacings wide (default: 2-D)")
+    ap.add_argument("--amplitude", type=float, nargs="+", default=[AMPLITUDE], metavar="M",
+                    help="the mode's elevation amplitude at the tank's ends [m], one run each")
     ap.add_argument("--set", nargs="*", action="append", metavar="KEY=VALUE",
                     help="one run's FluidConfig settings on top of the wave set-up (repeat for more runs)")
     args = ap.parse_args(argv)
@@ -166,15 +170,16 @@ def main(argv=None) -> None:
     print(f"# CPU: {cpu_name()}")
     rows_out = []
     for rows in args.rows:
-        for extra in variants:
-            r = run(rows, args.periods, extra, args.width)
-            print(json.dumps(r), flush=True)
-            rows_out.append(r)
-    print("\n| rows | settings on the wave set-up | decay per period: the mode | the middle's elevation "
-          "| the kinetic energy's root | period / linear | particles | steps | CPU s |\n|---|---|---|---|---|---|---|---|---|")
+        for amplitude in args.amplitude:
+            for extra in variants:
+                r = run(rows, args.periods, extra, args.width, amplitude=amplitude)
+                print(json.dumps(r), flush=True)
+                rows_out.append(r)
+    print("\n| rows | amplitude [m] | settings on the wave set-up | decay per period: the mode | the middle's elevation "
+          "| the kinetic energy's root | period / linear | particles | steps | CPU s |\n|---|---|---|---|---|---|---|---|---|---|")
     for r in rows_out:
         s = " ".join(f"{k}={v}" for k, v in r["set"].items()) or "(none)"
-        print(f"| {r['rows']} | {s} | {100 * r['decay_per_period']:.2f} % | "
+        print(f"| {r['rows']} | {r['amplitude_m']:g} | {s} | {100 * r['decay_per_period']:.2f} % | "
               f"{100 * r['decay_of_the_middle_elevation']:.2f} % | {100 * r['decay_of_the_kinetic_energy_amplitude']:.2f} % "
               f"| {r['period_over_linear']:.4f} | {r['particles']} | {r['steps']} | {r['cpu_s']:.0f} |")
 
