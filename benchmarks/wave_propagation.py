@@ -6,12 +6,16 @@ spacings. Prints one JSON line per run and a table of the decay per wavelength.
     python benchmarks/wave_propagation.py --set alpha=0 --rows 10
     python benchmarks/wave_propagation.py --rows 10 --set shifting=fickian shifting_coef=2
     python benchmarks/wave_propagation.py --rows 40 --height 0.075
+    python benchmarks/wave_propagation.py --rows 10 --wavelengths 3 --width 5 --height 0.01 0.04
 
 ``--setup``: the scenes' set-ups (cosim.scene.setup.settings: "waves" is a flume's,
 fluid.solver.travelling_waves at the rows, "sloshing" the sloshing one); ``--set KEY=VALUE`` adds
 FluidConfig settings on top (numbers, true/false or text). The wave: d = 0.3 m, T = 1 s,
-H = 4 cm (kd = 1.37), as the wave-propagation case; ``--height`` another height [m] (H/dx, the
-height in spacings, is printed: the issue's "H/dx >= 10" at 40 rows is H = 7.5 cm).
+H = 4 cm (kd = 1.37), as the wave-propagation case; ``--height`` other heights [m], one run
+each (H/dx, the height in spacings, is printed: the issue's "H/dx >= 10" at 40 rows is H =
+7.5 cm). ``--width ROWS``: the flume as a 3-D slice that many spacings wide between slip
+walls, as the case's 3-D flume. ``k / linear``: the wavenumber the waves travel with over
+linear theory's (a wave that travels fast is long: below 1).
 """
 
 from __future__ import annotations
@@ -46,27 +50,33 @@ def main(argv=None) -> None:
     ap.add_argument("--setup", nargs="+", default=["waves"], help="scene set-ups to compare")
     ap.add_argument("--rows", nargs="+", type=int, default=[10, 20], help="particle rows over the depth")
     ap.add_argument("--wavelengths", type=int, default=8)
-    ap.add_argument("--height", type=float, default=WP_HEIGHT, help="the wave's height [m]")
+    ap.add_argument("--height", type=float, nargs="+", default=[WP_HEIGHT], help="the wave's heights [m]")
+    ap.add_argument("--width", type=int, default=0, metavar="ROWS",
+                    help="a 3-D slice this many spacings wide (default: 2-D)")
     ap.add_argument("--set", nargs="*", default=[], metavar="KEY=VALUE", help="FluidConfig settings on top")
     args = ap.parse_args(argv)
     extra = {k: setting_value(v) for k, v in (s.split("=", 1) for s in args.set)}
     print(f"# CPU: {cpu_name()}")
     table = []
+    dim = 3 if args.width else 2
     for setup in args.setup:
         for rows in args.rows:
-            cfg = {**(travelling_waves(rows) if setup == "waves" else settings(setup, 2)), **extra}
-            r = propagate(WP_DEPTH / rows, WP_DEPTH, args.height, WP_PERIOD, wavelengths=args.wavelengths, **cfg)
-            r["H_over_dx"] = args.height * rows / WP_DEPTH
-            line = {k: (np.round(v, 4).tolist() if isinstance(v, np.ndarray) else v) for k, v in r.items()}
-            print(json.dumps({"setup": setup, "rows": rows, "height_m": args.height, "config": cfg, **line}),
-                  flush=True)
-            table.append((setup, rows, r))
+            for height in args.height:
+                cfg = {**(travelling_waves(rows) if setup == "waves" else settings(setup, dim)), **extra}
+                r = propagate(WP_DEPTH / rows, WP_DEPTH, height, WP_PERIOD, wavelengths=args.wavelengths,
+                              width=args.width * WP_DEPTH / rows if args.width else None, **cfg)
+                r["H_over_dx"] = height * rows / WP_DEPTH
+                line = {k: (np.round(v, 4).tolist() if isinstance(v, np.ndarray) else v) for k, v in r.items()}
+                print(json.dumps({"setup": setup, "rows": rows, "width_rows": args.width, "height_m": height,
+                                  "config": cfg, **line}), flush=True)
+                table.append((setup, rows, r))
     print("\n| set-up | rows over the depth | H/dx | H1/H at 1, 2, ... wavelengths | decay per wavelength | lag at the "
-          "last [periods] | particles | steps | CPU s |\n|---|---|---|---|---|---|---|---|---|")
+          "last [periods] | k / linear | particles | steps | CPU s |\n|---|---|---|---|---|---|---|---|---|---|")
     for setup, rows, r in table:
         h = " ".join(f"{v:.3f}" for v in r["H1_over_H"])
         print(f"| {setup} | {rows} | {r['H_over_dx']:.1f} | {h} | {100 * r['decay_per_wavelength']:.2f} % "
-              f"| {r['phase_lag_periods'][-1]:.3f} | {r['particles']} | {r['steps']} | {r['cpu_s']:.0f} |")
+              f"| {r['phase_lag_periods'][-1]:.3f} | {r['k_over_linear']:.4f} | {r['particles']} | {r['steps']} "
+              f"| {r['cpu_s']:.0f} |")
 
 
 if __name__ == "__main__":
