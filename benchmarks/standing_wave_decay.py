@@ -64,9 +64,10 @@ def started_tank(rows: int, extra: dict, width_rows: int = 0, make_fluid=None, a
     """``(fluid, A)``: the tank at ``rows`` particle rows over the depth, settled at rest,
     then given the velocity of the mode of elevation amplitude ``amplitude`` [m], ``A``
     [m/s], at the instant its surface is flat; in 2-D, or with ``width_rows`` > 0 a 3-D
-    slice that many spacings wide between the tank's walls (the mode uniform across it). ``extra``: FluidConfig settings on top of the
-    wave set-up; ``make_fluid(config, particles)``: the fluid built instead of ``Fluid(config,
-    particles)`` (a probe's variant)."""
+    slice that many spacings wide between the tank's walls (the mode uniform across it).
+    ``extra``: FluidConfig settings on top of the wave set-up; ``make_fluid(config,
+    particles)``: the fluid built instead of ``Fluid(config, particles)`` (a probe's
+    variant)."""
     from fluid.geometry import set_hydrostatic, tank_with_water
     from fluid.solver import Fluid, FluidConfig
 
