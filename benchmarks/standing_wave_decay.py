@@ -5,7 +5,7 @@ minutes.
 
 The tank is one wavelength long, L = 1.373 m, water d = 0.3 m (the wave-propagation case's
 wave: kd = 1.37, T = 1 s); its second sloshing mode has the wavenumber k = 2 pi / L. The water
-is settled at rest first (``Fluid.settle``, 2 s), then given linear theory's velocity of that
+is settled at rest first (``Fluid.settle``, 2 s; ``--settle``), then given linear theory's velocity of that
 mode at the instant its surface is flat (Dean & Dalrymple 1991, §4.3: standing waves,
 ``u = -A cosh kz sin kx``, ``w = A sinh kz cos kx``, ``A = a g k / (omega cosh kd)``, z from
 the bed, amplitude ``a`` = 2 cm). Read every T/32: the velocity field projected on the mode's
@@ -58,11 +58,14 @@ from fluid.wavemaker import wavenumber
 LENGTH = 2.0 * math.pi / wavenumber(WP_PERIOD, DEPTH, G)
 #: the mode's amplitude at the tank's ends [m] (``--amplitude``)
 AMPLITUDE = 0.02
+#: how long the water settles at rest before the mode starts [s] (``--settle``)
+SETTLE_S = 2.0
 
 
-def started_tank(rows: int, extra: dict, width_rows: int = 0, make_fluid=None, amplitude: float = AMPLITUDE):
-    """``(fluid, A)``: the tank at ``rows`` particle rows over the depth, settled at rest,
-    then given the velocity of the mode of elevation amplitude ``amplitude`` [m], ``A``
+def started_tank(rows: int, extra: dict, width_rows: int = 0, make_fluid=None, amplitude: float = AMPLITUDE,
+                 settle: float = SETTLE_S):
+    """``(fluid, A)``: the tank at ``rows`` particle rows over the depth, settled at rest for
+    ``settle`` [s], then given the velocity of the mode of elevation amplitude ``amplitude`` [m], ``A``
     [m/s], at the instant its surface is flat; in 2-D, or with ``width_rows`` > 0 a 3-D
     slice that many spacings wide between the tank's walls (the mode uniform across it).
     ``extra``: FluidConfig settings on top of the wave set-up; ``make_fluid(config,
@@ -80,7 +83,7 @@ def started_tank(rows: int, extra: dict, width_rows: int = 0, make_fluid=None, a
     set_hydrostatic(ps, DEPTH, cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g)
     fluid = (make_fluid or Fluid)(cfg, ps)
     fluid.initialize(0.0)
-    fluid.settle(2.0)
+    fluid.settle(settle)
     water = (fluid.ps.kind == 0) & (fluid.ps.ids >= 0)  # a symmetry plane's images left out
     x, z = fluid.ps.pos[water, 0], fluid.ps.pos[water, -1]
     A = amplitude * G * k / (omega * math.cosh(k * DEPTH))
@@ -90,7 +93,7 @@ def started_tank(rows: int, extra: dict, width_rows: int = 0, make_fluid=None, a
 
 
 def run(rows: int, periods: int, extra: dict, width_rows: int = 0, make_fluid=None,
-        amplitude: float = AMPLITUDE) -> dict:
+        amplitude: float = AMPLITUDE, settle: float = SETTLE_S) -> dict:
     """One run of :func:`started_tank` for ``periods`` periods."""
     from fluid.probes import surface_elevation
 
@@ -98,7 +101,7 @@ def run(rows: int, periods: int, extra: dict, width_rows: int = 0, make_fluid=No
     omega = 2.0 * math.pi / T
     dx = DEPTH / rows
     dim = 3 if width_rows else 2
-    fluid, A = started_tank(rows, extra, width_rows, make_fluid, amplitude)
+    fluid, A = started_tank(rows, extra, width_rows, make_fluid, amplitude, settle)
     ke0 = fluid.kinetic_energy()
 
     def modal() -> float:
@@ -145,7 +148,7 @@ def run(rows: int, periods: int, extra: dict, width_rows: int = 0, make_fluid=No
     crossings = upward_crossings(ts[after], q[after])
     period = float(np.diff(crossings).mean()) if len(crossings) > 1 else float("nan")
     n = 0.5 * (1.0 + 2.0 * k * DEPTH / math.sinh(2.0 * k * DEPTH))  # group over phase velocity
-    return {"rows": rows, "width_rows": width_rows, "amplitude_m": amplitude, "set": extra,
+    return {"rows": rows, "width_rows": width_rows, "amplitude_m": amplitude, "settle_s": settle, "set": extra,
             "first_period_elevation_over_mode": round(amp[0] / mode[0], 4), "decay_per_period": decay,
             "per_wavelength_if_travelling": decay / n,
             "decay_of_the_middle_elevation": per_period(np.array(amp)),
@@ -164,6 +167,8 @@ def main(argv=None) -> None:
                     help="a 3-D slice this many spacings wide (default: 2-D)")
     ap.add_argument("--amplitude", type=float, nargs="+", default=[AMPLITUDE], metavar="M",
                     help="the mode's elevation amplitude at the tank's ends [m], one run each")
+    ap.add_argument("--settle", type=float, default=SETTLE_S, metavar="S",
+                    help="how long the water settles at rest before the mode starts [s]")
     ap.add_argument("--set", nargs="*", action="append", metavar="KEY=VALUE",
                     help="one run's FluidConfig settings on top of the wave set-up (repeat for more runs)")
     args = ap.parse_args(argv)
@@ -173,7 +178,7 @@ def main(argv=None) -> None:
     for rows in args.rows:
         for amplitude in args.amplitude:
             for extra in variants:
-                r = run(rows, args.periods, extra, args.width, amplitude=amplitude)
+                r = run(rows, args.periods, extra, args.width, amplitude=amplitude, settle=args.settle)
                 print(json.dumps(r), flush=True)
                 rows_out.append(r)
     print("\n| rows | amplitude [m] | settings on the wave set-up | decay per period: the mode | the middle's elevation "
