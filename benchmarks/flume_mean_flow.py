@@ -38,9 +38,8 @@ def read(folder, troughs: float) -> dict:
     from cosim.scene.load import load
 
     scene = load(folder / "scene.toml")
-    wm, L, _ = _wave(WP_HEIGHT, WP_PERIOD, WP_DEPTH)
+    wm, L, cg = _wave(WP_HEIGHT, WP_PERIOD, WP_DEPTH)
     k, d = wm.k, WP_DEPTH
-    cg = 0.5 * (1.0 + 2.0 * k * d / math.sinh(2.0 * k * d)) * 2.0 * math.pi / WP_PERIOD / k
     state = checkpoint.read(folder / "checkpoint.h5")["state"]["participants"]["fluid"]
     ps = state["ps"]
     water = ps.kind == int(Kind.FLUID)
@@ -51,7 +50,7 @@ def read(folder, troughs: float) -> dict:
     edges = np.linspace(0.0, 1.1 * d, 12)
     stations = len(scene.probes.gauges) // GAUGES_PER_STATION
     # whole wavelengths from half a wavelength out, as far as the flume's stations go
-    for x0 in np.arange(0.5, stations - 0.4, 1.0)[:-1] * L:
+    for x0 in np.arange(0.5, stations - 1.0) * L:
         inside = (pos[:, 0] >= x0) & (pos[:, 0] < x0 + L)
         layers, num, den = [], 0.0, 0.0
         for z0, z1 in zip(edges[:-1], edges[1:]):

@@ -5,10 +5,10 @@ minutes.
 
 The tank is one wavelength long, L = 1.373 m, water d = 0.3 m (the wave-propagation case's
 wave: kd = 1.37, T = 1 s); its second sloshing mode has the wavenumber k = 2 pi / L. The water
-is settled at rest first (``Fluid.settle``, 2 s; ``--settle``), then given linear theory's velocity of that
-mode at the instant its surface is flat (Dean & Dalrymple 1991, §4.3: standing waves,
-``u = -A cosh kz sin kx``, ``w = A sinh kz cos kx``, ``A = a g k / (omega cosh kd)``, z from
-the bed, amplitude ``a`` = 2 cm). Read every T/32: the velocity field projected on the mode's
+is settled at rest first (``Fluid.settle``, 2 s; ``--settle``), then given linear theory's
+velocity of that mode at the instant its surface is flat (Dean & Dalrymple 1991, §4.3:
+standing waves, ``u = -A cosh kz sin kx``, ``w = A sinh kz cos kx``, ``A = a g k / (omega
+cosh kd)``, z from the bed, amplitude ``a`` = 2 cm; ``--amplitude``). Read every T/32: the velocity field projected on the mode's
 shape (``sum m v . phi / sum m |phi|^2``, A at the start), the elevation at the middle and the
 kinetic energy. The decay of the amplitude per period is ``1 - exp(s)``, ``s`` the slope of a
 straight line through log(each period's first harmonic of the projection) over the periods
@@ -65,9 +65,10 @@ SETTLE_S = 2.0
 def started_tank(rows: int, extra: dict, width_rows: int = 0, make_fluid=None, amplitude: float = AMPLITUDE,
                  settle: float = SETTLE_S):
     """``(fluid, A)``: the tank at ``rows`` particle rows over the depth, settled at rest for
-    ``settle`` [s], then given the velocity of the mode of elevation amplitude ``amplitude`` [m], ``A``
-    [m/s], at the instant its surface is flat; in 2-D, or with ``width_rows`` > 0 a 3-D
-    slice that many spacings wide between the tank's walls (the mode uniform across it).
+    ``settle`` [s], then given the velocity of the mode of elevation amplitude
+    ``amplitude`` [m], ``A`` [m/s], at the instant its surface is flat; in 2-D, or with
+    ``width_rows`` > 0 a 3-D slice that many spacings wide between the tank's walls (the
+    mode uniform across it).
     ``extra``: FluidConfig settings on top of the wave set-up; ``make_fluid(config,
     particles)``: the fluid built instead of ``Fluid(config, particles)`` (a probe's
     variant)."""

@@ -61,8 +61,8 @@ def main(argv=None) -> None:
     dim = 3 if args.width else 2
     for setup in args.setup:
         for rows in args.rows:
+            cfg = {**(travelling_waves(rows) if setup == "waves" else settings(setup, dim)), **extra}
             for height in args.height:
-                cfg = {**(travelling_waves(rows) if setup == "waves" else settings(setup, dim)), **extra}
                 r = propagate(WP_DEPTH / rows, WP_DEPTH, height, WP_PERIOD, wavelengths=args.wavelengths,
                               width=args.width * WP_DEPTH / rows if args.width else None, **cfg)
                 r["H_over_dx"] = height * rows / WP_DEPTH
