@@ -4,7 +4,9 @@ quick probe of the numerical damping that makes travelling waves lose height
 minutes.
 
 The tank is one wavelength long, L = 1.373 m, water d = 0.3 m (the wave-propagation case's
-wave: kd = 1.37, T = 1 s); its second sloshing mode has the wavenumber k = 2 pi / L. The water
+wave: kd = 1.37, T = 1 s), rounded to a whole number of spacings (``tank_mode``: 1.38 m at
+10 rows); its second sloshing mode has the wavenumber k = 2 pi / L and linear theory's
+period T at that k, against which the periods are read. The water
 is settled at rest first (``Fluid.settle``, 2 s; ``--settle``), then given linear theory's
 velocity of that mode at the instant its surface is flat (Dean & Dalrymple 1991, §4.3:
 standing waves, ``u = -A cosh kz sin kx``, ``w = A sinh kz cos kx``, ``A = a g k / (omega
@@ -62,6 +64,17 @@ AMPLITUDE = 0.02
 SETTLE_S = 2.0
 
 
+def tank_mode(dx: float) -> tuple[float, float, float]:
+    """``(length, k, omega)``: the tank's length [m] at spacing ``dx``, :data:`LENGTH` rounded
+    to a whole number of spacings (the water and the walls share one lattice: at any other
+    length a column of it next to the far wall is left empty and the water at rest falls into
+    it, turning over the whole tank), and its mode's wavenumber [rad/m] and linear angular
+    frequency [rad/s] (``omega^2 = g k tanh kd``)."""
+    length = round(LENGTH / dx) * dx
+    k = 2.0 * math.pi / length
+    return length, k, math.sqrt(G * k * math.tanh(k * DEPTH))
+
+
 def started_tank(rows: int, extra: dict, width_rows: int = 0, make_fluid=None, amplitude: float = AMPLITUDE,
                  settle: float = SETTLE_S):
     """``(fluid, A)``: the tank at ``rows`` particle rows over the depth, settled at rest for
@@ -75,11 +88,11 @@ def started_tank(rows: int, extra: dict, width_rows: int = 0, make_fluid=None, a
     from fluid.geometry import set_hydrostatic, tank_with_water
     from fluid.solver import Fluid, FluidConfig
 
-    k, omega = 2.0 * math.pi / LENGTH, 2.0 * math.pi / WP_PERIOD
     dx = DEPTH / rows
+    length, k, omega = tank_mode(dx)
     dim = 3 if width_rows else 2
     cfg = FluidConfig(dim=dim, dx=dx, g=G, **{"u_max": math.sqrt(G * DEPTH), **settings("waves", dim), **extra})
-    ps = tank_with_water(dim, dx, LENGTH, DEPTH, 1.6 * DEPTH, width=width_rows * dx,
+    ps = tank_with_water(dim, dx, length, DEPTH, 1.6 * DEPTH, width=width_rows * dx,
                          layers=math.ceil(2.0 * cfg.h_coef - 1e-9)).particles
     set_hydrostatic(ps, DEPTH, cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g)
     fluid = (make_fluid or Fluid)(cfg, ps)
@@ -98,9 +111,9 @@ def run(rows: int, periods: int, extra: dict, width_rows: int = 0, make_fluid=No
     """One run of :func:`started_tank` for ``periods`` periods."""
     from fluid.probes import surface_elevation
 
-    k, T = 2.0 * math.pi / LENGTH, WP_PERIOD
-    omega = 2.0 * math.pi / T
     dx = DEPTH / rows
+    length, k, omega = tank_mode(dx)
+    T = 2.0 * math.pi / omega
     dim = 3 if width_rows else 2
     fluid, A = started_tank(rows, extra, width_rows, make_fluid, amplitude, settle)
     ke0 = fluid.kinetic_energy()
@@ -114,7 +127,7 @@ def run(rows: int, periods: int, extra: dict, width_rows: int = 0, make_fluid=No
 
     # the middle's elevation: on the tank's mid-line in 2-D; in 3-D the mean of a gauge on
     # every particle column across the width
-    middle = [0.5 * LENGTH] if dim == 2 else [[0.5 * LENGTH, (j + 0.5) * dx] for j in range(width_rows)]
+    middle = [0.5 * length] if dim == 2 else [[0.5 * length, (j + 0.5) * dx] for j in range(width_rows)]
 
     def middle_eta() -> float:
         return float(np.mean(surface_elevation(fluid, middle)) - DEPTH)

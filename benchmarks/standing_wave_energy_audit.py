@@ -17,14 +17,15 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import time
 
 import numpy as np
 
 from machine import cpu_name  # benchmarks/machine.py, beside this script
-from standing_wave_decay import AMPLITUDE, LENGTH, started_tank  # beside this script
+from standing_wave_decay import AMPLITUDE, started_tank, tank_mode  # beside this script
 from wave_energy_budget import RHO_WATER, term_rates  # beside this script
-from cosim.validations.wave_propagation import G, WP_DEPTH as DEPTH, WP_PERIOD
+from cosim.validations.wave_propagation import G, WP_DEPTH as DEPTH
 from fluid.particles import Kind
 
 TERMS = ("diffusion", "viscosity", "floor", "side walls")
@@ -43,6 +44,8 @@ def energy(f) -> float:
 def run(rows: int, width_rows: int, periods: int) -> dict:
     f, _ = started_tank(rows, {}, width_rows)
     width = width_rows * DEPTH / rows
+    length, _, omega = tank_mode(DEPTH / rows)
+    period = 2.0 * math.pi / omega
     times, powers = [], []
     rates, calls = f._rates, [0]
 
@@ -64,12 +67,12 @@ def run(rows: int, width_rows: int, periods: int) -> dict:
     f._rates = sampled
     cpu0, t, E0 = time.process_time(), 0.0, energy(f)
     out = {"rows": rows, "width_rows": width_rows,
-           "wave_energy_J": 0.25 * RHO_WATER * G * AMPLITUDE ** 2 * LENGTH * (width if width_rows else 1.0),
+           "wave_energy_J": 0.25 * RHO_WATER * G * AMPLITUDE ** 2 * length * (width if width_rows else 1.0),
            "periods": []}
     for p in range(periods):
         for _ in range(32):
-            f.advance(t, WP_PERIOD / 32.0)
-            t += WP_PERIOD / 32.0
+            f.advance(t, period / 32.0)
+            t += period / 32.0
         ts, P = np.asarray(times), np.asarray(powers)
         work = {name: float(np.trapezoid(P[:, i], ts)) for i, name in enumerate(TERMS)}
         dE = energy(f) - E0

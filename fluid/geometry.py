@@ -9,6 +9,7 @@ layers ``k = 0..n-1`` lie at ``dx/2 + k dx`` outside the inner faces.
 from __future__ import annotations
 
 import logging
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -137,17 +138,34 @@ def water_under_gravity(candidates: np.ndarray, count: int, gravity) -> tuple[np
     return candidates[keep], 0.5 * float(up[order[count - 1]] + up[order[count]])
 
 
+def lattice_extent(size: float, dx: float) -> float:
+    """The extent [m] of the lattice columns (spacing ``dx`` [m], centres at ``(i + 1/2)
+    dx``) that lie strictly inside ``0 .. size`` [m]: ``size`` rounded to a whole number of
+    spacings (a half spacing rounds down), the tank's length as its walls and water build
+    it."""
+    return max(math.ceil(size / dx - 0.5 - 1e-9), 0) * dx
+
+
 def tank_with_water(dim: int, dx: float, length: float, depth: float, height: float,
                     width: float = 0.0, layers: int = 3, rho0: float = 1000.0) -> Built:
     """A rectangular open tank, inner corner at the origin: ``length`` [m] along x, ``width``
     [m] along y (3-D only), wall ``height`` [m], filled with water to ``depth`` [m]. The
-    walls are group 0, kind FIXED_WALL."""
+    walls are group 0, kind FIXED_WALL.
+
+    Water and walls share one lattice: the water fills every lattice column inside the
+    walls, so a length (width) that is not a whole number of spacings is built as
+    :func:`lattice_extent` of it (the nearest whole number; the water's top, in whole rows
+    from the floor, is left as :func:`block` lays it). Filling whole columns only up to the
+    length would leave the column next to the far wall empty where the length exceeds a
+    whole number by more than half a spacing: the water at rest falls into it and turns
+    over the whole tank."""
     if dim == 3 and not width > 0:
         raise InputError("a 3-D tank needs a width > 0 m along y")
     if not 0 < depth <= height:
         raise InputError(f"the water depth {depth} m must lie in (0, height={height} m]")
     lo = np.zeros(dim)
     hi = np.array([length, height] if dim == 2 else [length, width, height])
+    hi[:-1] = [lattice_extent(x, dx) for x in hi[:-1]]
     top = hi.copy()
     top[-1] = depth
     walls = tank_walls(lo, hi, dx, layers)

@@ -283,6 +283,29 @@ def test_a_depth_that_is_not_whole_rows_is_warned_of_with_the_level_the_water_ge
         assert not said
 
 
+@pytest.mark.parametrize("dim, length, built", [(2, 0.314, 0.32), (2, 0.306, 0.3), (2, 0.3, 0.3), (3, 0.1, 0.1)])
+def test_a_length_that_is_not_whole_spacings_is_built_rounded_and_warned_of(tmp_path, dim, length, built):
+    """A tank filled to a depth lays its walls and water on one lattice: its length (and, in
+    3-D, its width, 0.15 m = 7.5 spacings here, rounded down) is built as the nearest whole
+    number of spacings, the water reaching half a spacing short of the far wall's face; the
+    build says so, naming the built size and the sizes that fit."""
+    from fluid.particles import Kind
+
+    dx = 0.02
+    domain = Tank(length=length, height=0.2, depth=0.1, width=0.15 if dim == 3 else None)
+    built_scene = build(Scene(world=World(dim=dim, duration=0.01), fluid=SPH(dx=dx), domain=domain), tmp_path)
+    ps = built_scene.fluid.ps
+    assert ps.pos[ps.kind == Kind.FLUID, 0].max() + 0.5 * dx == pytest.approx(built, abs=1e-9)
+    said = [w for w in built_scene.warnings if w.startswith("domain.length")]
+    if abs(built - length) > 1e-9:
+        assert len(said) == 1 and f"built {built:.6g} m" in said[0] and "or" in said[0]
+    else:
+        assert not said
+    if dim == 3:
+        assert ps.pos[ps.kind == Kind.FLUID, 1].max() + 0.5 * dx == pytest.approx(0.14, abs=1e-9)
+        assert any(w.startswith("domain.width: 0.15 m") and "built 0.14 m" in w for w in built_scene.warnings)
+
+
 def test_open_water_without_gravity_stays_at_rest_and_loses_what_leaves_its_box(tmp_path):
     """Open water (no walls, no floor) without gravity: two blocks at rest carry no
     pressure (no hydrostatics in free fall) and nothing moves them, so after 40 steps every

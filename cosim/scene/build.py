@@ -594,6 +594,27 @@ def _warn_partial_row(scene, out: Built) -> None:
                             f"a depth of {rows * dx:.6g} or {(rows + 1) * dx:.6g} m, or a dx that divides {depth:g} m")
 
 
+def _warn_partial_column(scene, out: Built) -> None:
+    """A tank filled to a depth is built with its walls and water on one lattice, so a
+    length (width) that is not a whole number of spacings is built as the nearest whole
+    number (``fluid.geometry.lattice_extent``): said, with the lengths that fit."""
+    from fluid.geometry import lattice_extent
+
+    d = scene.domain
+    if not isinstance(scene.fluid, SPH) or type(d) is not Tank or d.water:
+        return
+    dx = scene.fluid.dx
+    for key in ("length", "width") if scene.world.dim == 3 else ("length",):
+        size = getattr(d, key)
+        built = lattice_extent(size, dx)
+        if abs(built - size) > 1e-6 * dx:
+            n = math.floor(size / dx + 1e-9)
+            out.warnings.append(f"domain.{key}: {size:g} m is {size / dx:.4g} spacings of fluid.dx = {dx:g} m; the "
+                                f"tank's walls and water share one lattice, so it is built {built:.6g} m "
+                                f"({round(built / dx)} spacings) {'long' if key == 'length' else 'wide'}; give a "
+                                f"{key} of {n * dx:.6g} or {(n + 1) * dx:.6g} m, or a dx that divides {size:g} m")
+
+
 def _warn_mjcf_world(scene, out: Built) -> None:
     """Under base motion, what an MJCF model fixes to its world stays where it is while the
     tank moves (the model's world is the inertial frame): bodies welded to it, joints that
@@ -694,6 +715,7 @@ def build(scene, workdir: Path) -> Built:
         _warn_mjcf_world(scene, out)
     _warn_tilted_water(scene, out)
     _warn_partial_row(scene, out)
+    _warn_partial_column(scene, out)
     for w in out.warnings:
         log.warning("%s", w)
     moorings = []
