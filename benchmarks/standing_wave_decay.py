@@ -1,13 +1,11 @@
-"""How fast a standing wave loses its amplitude in a closed tank (2-D, or a 3-D slice): a
-quick probe of the numerical damping that makes travelling waves lose height
-(docs/validation/wave-propagation_history.md), at a few seconds a run where the flume takes
-minutes.
+"""How fast a standing wave loses its amplitude in a closed tank (2-D, or a 3-D slice), and
+its period: a quick probe of the water's numerical damping and speed
+(docs/validation/wave-propagation_history.md), minutes where the flume takes hours.
 
 The tank is one wavelength long, L = 1.373 m, water d = 0.3 m (the wave-propagation case's
-wave: kd = 1.37, T = 1 s), rounded to a whole number of spacings (``tank_mode``: 1.38 m at
-10 rows); its second sloshing mode has the wavenumber k = 2 pi / L and linear theory's
-period T at that k, against which the periods are read. The water
-is settled at rest first (``Fluid.settle``, 2 s; ``--settle``), then given linear theory's
+wave: kd = 1.37, T = 1 s), rounded to whole spacings (``tank_mode``: 1.38 m at 10 rows); its
+second sloshing mode has k = 2 pi / L, its periods read against linear theory's at that k.
+The water is settled at rest first (``Fluid.settle``, 2 s; ``--settle``), then given linear theory's
 velocity of that mode at the instant its surface is flat (Dean & Dalrymple 1991, §4.3:
 standing waves, ``u = -A cosh kz sin kx``, ``w = A sinh kz cos kx``, ``A = a g k / (omega
 cosh kd)``, z from the bed, amplitude ``a`` = 2 cm; ``--amplitude``). Read every T/32: the velocity field projected on the mode's
