@@ -598,11 +598,11 @@ def _warn_partial_column(scene, out: Built) -> None:
     """A tank filled to a depth is built with its walls and water on one lattice, so a
     length (width) that is not a whole number of spacings is built as the nearest whole
     number (``fluid.geometry.lattice_extent``): said, with the lengths that fit."""
-    from fluid.geometry import lattice_extent
-
     d = scene.domain
     if not isinstance(scene.fluid, SPH) or type(d) is not Tank or d.water:
         return
+    from fluid.geometry import lattice_extent  # here: a scene without SPH loads no fluid module
+
     dx = scene.fluid.dx
     for key in ("length", "width") if scene.world.dim == 3 else ("length",):
         size = getattr(d, key)
