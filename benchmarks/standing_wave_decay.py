@@ -63,12 +63,13 @@ SETTLE_S = 2.0
 
 
 def tank_mode(dx: float) -> tuple[float, float, float]:
-    """``(length, k, omega)``: the tank's length [m] at spacing ``dx``, :data:`LENGTH` rounded
-    to a whole number of spacings (the water and the walls share one lattice: at any other
-    length a column of it next to the far wall is left empty and the water at rest falls into
-    it, turning over the whole tank), and its mode's wavenumber [rad/m] and linear angular
-    frequency [rad/s] (``omega^2 = g k tanh kd``)."""
-    length = round(LENGTH / dx) * dx
+    """``(length, k, omega)``: the tank's length [m] at spacing ``dx`` as it is built,
+    :data:`LENGTH` rounded to whole spacings (``fluid.geometry.lattice_extent``), and its
+    mode's wavenumber [rad/m] and linear angular frequency [rad/s] (``omega^2 = g k tanh
+    kd``)."""
+    from fluid.geometry import lattice_extent
+
+    length = lattice_extent(LENGTH, dx)
     k = 2.0 * math.pi / length
     return length, k, math.sqrt(G * k * math.tanh(k * DEPTH))
 

@@ -7,7 +7,6 @@
     python benchmarks/tank_at_rest_figure.py docs/validation/figures/standing-wave-tank_empty-column.png
 """
 
-import math
 import sys
 
 import matplotlib
@@ -16,24 +15,20 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from fluid.geometry import set_hydrostatic, tank_with_water
-from fluid.solver import Fluid, FluidConfig
-from cosim.scene.setup import settings
+from standing_wave_decay import DEPTH, started_tank, tank_mode  # noqa: E402  (beside this script)
+from fluid.solver import Fluid  # noqa: E402
+
+ROWS = 10
 
 
 def main(path: str) -> None:
-    dx, d, L = 0.03, 0.3, 1.38
+    length = tank_mode(DEPTH / ROWS)[0]
     fig, axs = plt.subplots(2, 1, figsize=(9, 5.2), sharex=True)
     for ax, hole in zip(axs, (True, False)):
-        cfg = FluidConfig(dim=2, dx=dx, g=9.81, u_max=math.sqrt(9.81 * d), **settings("waves", 2))
-        ps = tank_with_water(2, dx, L, d, 0.48, layers=4).particles
-        if hole:
-            keep = ~((ps.kind == 0) & (ps.pos[:, 0] > L - dx))
-            ps = ps.select(keep)
-        set_hydrostatic(ps, d, cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g)
-        f = Fluid(cfg, ps)
-        f.initialize(0.0)
-        f.settle(2.0)
+        def emptied(cfg, ps):  # the column by the far wall taken out of the water
+            return Fluid(cfg, ps.select(~((ps.kind == 0) & (ps.pos[:, 0] > length - cfg.dx))))
+
+        f, _ = started_tank(ROWS, {}, make_fluid=emptied if hole else None, amplitude=0.0)
         f.advance(0.0, 1.0)
         w = f.ps.kind == 0
         p, v = f.ps.pos[w], f.ps.vel[w]
