@@ -28,12 +28,11 @@ figure is a probe to compare set-ups with, not the flume's decay.
     python benchmarks/standing_wave_decay.py --rows 10 --periods 10 --set alpha=0 --set alpha=0 delta=0.2
     python benchmarks/standing_wave_decay.py --rows 10 --periods 4 --width 5
 
-``--width ROWS``: the tank as a 3-D slice that many spacings wide between its walls, the
+``--width ROWS``: the tank as a 3-D slice that many spacings wide between its walls
+(``--sides symmetry``: between two symmetry planes, a slice of a tank of any width), the
 mode uniform across it, the middle's elevation the mean of a gauge on each particle column
-across the width (the 3-D flume's wave reads high: docs/validation/
-wave-propagation_history.md). ``first_period_elevation_over_mode`` compares the surface with
-the water under it: the middle's first-period amplitude over ``a`` against the mode's over
-``A``.
+across the width. ``first_period_elevation_over_mode`` compares the surface with the water
+under it: the middle's first-period amplitude over ``a`` against the mode's over ``A``.
 
 Each ``--set`` is one run (FluidConfig settings on top of the wave set-up,
 ``cosim.scene.setup.settings("waves", 2)``); with none, the set-up alone.
@@ -75,12 +74,13 @@ def tank_mode(dx: float) -> tuple[float, float, float]:
 
 
 def started_tank(rows: int, extra: dict, width_rows: int = 0, make_fluid=None, amplitude: float = AMPLITUDE,
-                 settle: float = SETTLE_S):
+                 settle: float = SETTLE_S, sides: str = "walls"):
     """``(fluid, A)``: the tank at ``rows`` particle rows over the depth, settled at rest for
     ``settle`` [s], then given the velocity of the mode of elevation amplitude
     ``amplitude`` [m], ``A`` [m/s], at the instant its surface is flat; in 2-D, or with
     ``width_rows`` > 0 a 3-D slice that many spacings wide between the tank's walls (the
-    mode uniform across it).
+    mode uniform across it); ``sides`` "symmetry": between two symmetry planes instead of
+    side walls (the fluid's ``symmetry_y`` and ``symmetry_y_hi``, fluid.mirror).
     ``extra``: FluidConfig settings on top of the wave set-up; ``make_fluid(config,
     particles)``: the fluid built instead of ``Fluid(config, particles)`` (a probe's
     variant)."""
@@ -90,9 +90,13 @@ def started_tank(rows: int, extra: dict, width_rows: int = 0, make_fluid=None, a
     dx = DEPTH / rows
     length, k, omega = tank_mode(dx)
     dim = 3 if width_rows else 2
-    cfg = FluidConfig(dim=dim, dx=dx, g=G, **{"u_max": math.sqrt(G * DEPTH), **settings("waves", dim), **extra})
+    planes = {"symmetry_y": 0.0, "symmetry_y_hi": width_rows * dx} if width_rows and sides == "symmetry" else {}
+    cfg = FluidConfig(dim=dim, dx=dx, g=G, **{"u_max": math.sqrt(G * DEPTH), **settings("waves", dim), **planes,
+                                              **extra})
     ps = tank_with_water(dim, dx, length, DEPTH, 1.6 * DEPTH, width=width_rows * dx,
                          layers=math.ceil(2.0 * cfg.h_coef - 1e-9)).particles
+    if planes:  # the side walls give way to the planes' mirror images
+        ps = ps.select((ps.pos[:, 1] > 0.0) & (ps.pos[:, 1] < width_rows * dx))
     set_hydrostatic(ps, DEPTH, cfg.rho0, cfg.speed_of_sound, cfg.gamma, cfg.g)
     fluid = (make_fluid or Fluid)(cfg, ps)
     fluid.initialize(0.0)
@@ -106,7 +110,7 @@ def started_tank(rows: int, extra: dict, width_rows: int = 0, make_fluid=None, a
 
 
 def run(rows: int, periods: int, extra: dict, width_rows: int = 0, make_fluid=None,
-        amplitude: float = AMPLITUDE, settle: float = SETTLE_S) -> dict:
+        amplitude: float = AMPLITUDE, settle: float = SETTLE_S, sides: str = "walls") -> dict:
     """One run of :func:`started_tank` for ``periods`` periods."""
     from fluid.probes import surface_elevation
 
@@ -114,7 +118,7 @@ def run(rows: int, periods: int, extra: dict, width_rows: int = 0, make_fluid=No
     length, k, omega = tank_mode(dx)
     T = 2.0 * math.pi / omega
     dim = 3 if width_rows else 2
-    fluid, A = started_tank(rows, extra, width_rows, make_fluid, amplitude, settle)
+    fluid, A = started_tank(rows, extra, width_rows, make_fluid, amplitude, settle, sides)
     ke0 = fluid.kinetic_energy()
 
     def modal() -> float:
@@ -161,7 +165,8 @@ def run(rows: int, periods: int, extra: dict, width_rows: int = 0, make_fluid=No
     crossings = upward_crossings(ts[after], q[after])
     period = float(np.diff(crossings).mean()) if len(crossings) > 1 else float("nan")
     n = 0.5 * (1.0 + 2.0 * k * DEPTH / math.sinh(2.0 * k * DEPTH))  # group over phase velocity
-    return {"rows": rows, "width_rows": width_rows, "amplitude_m": amplitude, "settle_s": settle, "set": extra,
+    return {"rows": rows, "width_rows": width_rows, "sides": sides if width_rows else None, "amplitude_m": amplitude,
+            "settle_s": settle, "set": extra,
             "first_period_elevation_over_mode": round(amp[0] / mode[0], 4), "decay_per_period": decay,
             "per_wavelength_if_travelling": decay / n,
             "decay_of_the_middle_elevation": per_period(np.array(amp)),
@@ -178,6 +183,8 @@ def main(argv=None) -> None:
     ap.add_argument("--periods", type=int, default=10)
     ap.add_argument("--width", type=int, default=0, metavar="ROWS",
                     help="a 3-D slice this many spacings wide (default: 2-D)")
+    ap.add_argument("--sides", choices=("walls", "symmetry"), default="walls",
+                    help="3-D: the slice between side walls, or between two symmetry planes")
     ap.add_argument("--amplitude", type=float, nargs="+", default=[AMPLITUDE], metavar="M",
                     help="the mode's elevation amplitude at the tank's ends [m], one run each")
     ap.add_argument("--settle", type=float, default=SETTLE_S, metavar="S",
@@ -191,7 +198,8 @@ def main(argv=None) -> None:
     for rows in args.rows:
         for amplitude in args.amplitude:
             for extra in variants:
-                r = run(rows, args.periods, extra, args.width, amplitude=amplitude, settle=args.settle)
+                r = run(rows, args.periods, extra, args.width, amplitude=amplitude, settle=args.settle,
+                        sides=args.sides)
                 print(json.dumps(r), flush=True)
                 rows_out.append(r)
     print("\n| rows | amplitude [m] | settings on the wave set-up | decay per period: the mode | the middle's elevation "

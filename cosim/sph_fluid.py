@@ -121,6 +121,8 @@ class SPHFluid:
         if self.symmetry and (config.symmetry_y != 0.0 or self.elastic_beams):
             raise InputError(f"SPH fluid: a symmetry plane (symmetry_y = {config.symmetry_y}) is the plane y = 0 "
                              "of rigid bodies centred on it (no elastic plates)")
+        if config.symmetry_y_hi is not None and self.elastic_beams:
+            raise InputError(self._NO_BODIES_IN_SLICE.format(config.symmetry_y_hi))
 
     # -- coupling ----------------------------------------------------------------
     #: fewest boundary particles a body's geom may have across any of its axes [-]. With
@@ -168,8 +170,15 @@ class SPHFluid:
                         f"{extent[j] / self.MIN_PARTICLES_ACROSS:.3g} m or less, or make the body at least "
                         f"{self.MIN_PARTICLES_ACROSS * dx:.3g} m thick there")
 
+    #: why a slice between two symmetry planes takes no bodies (its loads stand for a
+    #: body repeated across y at the slice's width, which no scene means)
+    _NO_BODIES_IN_SLICE = ("SPH fluid: a slice between two symmetry planes (symmetry_y_hi = {}) carries a flow "
+                           "uniform across y and no bodies; leave symmetry_y_hi unset for a scene with bodies")
+
     def attach_bodies(self, bodies) -> None:
         c = self.config
+        if c.symmetry_y_hi is not None and bodies.n_bodies:
+            raise InputError(self._NO_BODIES_IN_SLICE.format(c.symmetry_y_hi))
         self.check_body_resolution(bodies)
         kin = bodies.kinematics()
         pb, owner = bodies.boundary_particles(c.dx, self.body_layers, c.dim)

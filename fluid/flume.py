@@ -14,7 +14,11 @@ piston still has a floor. A beach (``beach=(x_toe, slope)``) is a solid ramp of
 absorbs most of their energy. In 3-D every piece is extruded across the width, the
 side walls run from behind the paddle (its ``back`` floor) to the far wall, and the
 paddle slides (piston) or turns (flap, about the y axis) between them:
-``fluid.wavemaker.piston``/``flap`` move 3-D wall groups as 2-D ones.
+``fluid.wavemaker.piston``/``flap`` move 3-D wall groups as 2-D ones. With
+``side_walls=False`` the flume has no side walls and its floor, paddle and far wall span
+y = 0 .. ``width`` only: a slice between two symmetry planes there (the fluid's
+``symmetry_y = 0`` and ``symmetry_y_hi = width``, :mod:`fluid.mirror`), for waves uniform
+across a flume of any width.
 """
 
 from __future__ import annotations
@@ -46,12 +50,13 @@ class Flume:
 
 
 def flume(dx: float, length: float, depth: float, height: float, *, layers: int = 3, back: float = 0.0,
-          beach: tuple[float, float] | None = None, width: float | None = None) -> Flume:
+          beach: tuple[float, float] | None = None, width: float | None = None, side_walls: bool = True) -> Flume:
     """A flume of ``length`` [m] (paddle at x = 0 to the far wall), still water
     ``depth`` [m], walls ``height`` [m] high, spacing ``dx`` [m]; ``layers`` [-]
     wall layers; ``back`` [m] of extra floor behind the paddle (at least the
     paddle's largest retreat); ``beach`` = (toe x [m], slope [-]) or None;
-    ``width`` [m]: a 3-D tank that wide along y (None: 2-D, x-z plane)."""
+    ``width`` [m]: a 3-D tank that wide along y (None: 2-D, x-z plane); ``side_walls``
+    False: 3-D without side walls, for two symmetry planes at y = 0 and ``width``."""
     dims = (("dx", dx), ("length", length), ("depth", depth), ("height", height))
     for name, v in dims + ((("width", width),) if width is not None else ()):
         if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
@@ -72,9 +77,9 @@ def flume(dx: float, length: float, depth: float, height: float, *, layers: int 
         def box(lo, hi, y=(0.0, width)):  # (x, z) corners, extruded across y
             return block((lo[0], y[0], lo[1]), (hi[0], y[1], hi[1]), dx)
         sides = [box((-t - back, 0.0), (length + t, height), (-t, 0.0)),
-                 box((-t - back, 0.0), (length + t, height), (width, width + t))]
+                 box((-t - back, 0.0), (length + t, height), (width, width + t))] if side_walls else []
     floor = (box((-t - back, -t), (length + t, 0.0)) if width is None else
-             box((-t - back, -t), (length + t, 0.0), (-t, width + t)))
+             box((-t - back, -t), (length + t, 0.0), (-t, width + t) if side_walls else (0.0, width)))
     far = box((length, 0.0), (length + t, height))
     paddle = box((-t, 0.0), (0.0, height))
     fixed = [floor, far] + sides

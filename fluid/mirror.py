@@ -20,37 +20,63 @@ the band's edge) and nothing integrates them for more than one step. A source cl
 the plane than 1e-9 dx is its own image and has none; a particle that crosses the plane
 is reflected back (specular: its place and its normal velocity), as the symmetric flow it
 stands for cannot cross it.
+
+A second plane ``y = y1`` above the first makes the simulated particles a slice between two
+symmetry planes, each with its own images: a flow uniform across y (a plane wave along x)
+in a slice of a flume of any width, without side walls. Each image reflects across one
+plane only, so the slice is at least the band (2h) wide: a particle's support then reaches
+past one plane, or past both but no farther than either band. Why: Adami-type side walls
+along a free surface change the waves that run along them (the surface meets the wall
+along the whole flume): a standing wave in a slice 5 spacings wide between walls runs
+2.3 % fast and grows 4 % a period, between two symmetry planes it runs as the 2-D water
+(docs/validation/wave-propagation_history.md, "Side walls, not the 3-D water").
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from errors import InputError
+
 Y = 1  #: the plane's normal axis (y)
 
 
 class Mirror:
     """The mirror images across ``y = y0`` [m] of the particles within ``band`` [m] (the
-    kernel's support 2h) of the plane; ``dx`` [m] sets the tolerance of "on the plane"."""
+    kernel's support 2h) of the plane; ``dx`` [m] sets the tolerance of "on the plane".
+    ``y1`` [m]: a second plane above the first, at least ``band`` from it, with the images
+    of the particles within ``band`` below it (None: one plane)."""
 
-    def __init__(self, y0: float, band: float, dx: float):
+    def __init__(self, y0: float, band: float, dx: float, y1: float | None = None):
         self.y0, self.band, self.tol = float(y0), float(band), 1e-9 * float(dx)
+        self.y1 = None if y1 is None else float(y1)
+        if self.y1 is not None and not self.y1 - self.y0 >= self.band:
+            raise InputError(f"symmetry planes y = {self.y0:g} and {self.y1:g} m are closer than the kernel's "
+                             f"support {self.band:g} m: an image would need images; widen the slice")
         self.rows = np.zeros(0, np.int64)  #: rows of the images after the last sort
         self.src = np.zeros(0, np.int64)  #: rows of their sources
+        self.plane = np.zeros(0)  #: the y [m] of the plane each image is reflected across
         self._source_ext = np.zeros(0, np.int64)
+        self._plane_ext = np.zeros(0)
 
-    def _reflect(self, ps, aux: dict, rows: np.ndarray) -> None:
-        """Reflect the places and velocities of ``rows`` across the plane, and those of the
-        integrator's saved state ``aux``."""
+    @staticmethod
+    def _reflect(ps, aux: dict, rows: np.ndarray, plane) -> None:
+        """Reflect the places and velocities of ``rows`` across the plane(s) y = ``plane``
+        (a number, or one per row), and those of the integrator's saved state ``aux``."""
         for k, a in (("pos", ps.pos), ("vel", ps.vel), *((k, aux[k]) for k in ("pos", "vel") if k in aux)):
-            a[rows, Y] = 2.0 * self.y0 - a[rows, Y] if k == "pos" else -a[rows, Y]
+            a[rows, Y] = 2.0 * plane - a[rows, Y] if k == "pos" else -a[rows, Y]
 
     def reflect_crossing(self, ps, aux: dict) -> None:
-        """Reflect back the simulated particles that have crossed the plane (y < y0), and
-        their integrator's saved state with them."""
-        below = np.flatnonzero((ps.pos[:, Y] < self.y0) & (ps.ids >= 0))
+        """Reflect back the simulated particles that have crossed a plane (y < y0, or y >
+        y1), and their integrator's saved state with them."""
+        real = ps.ids >= 0
+        below = np.flatnonzero((ps.pos[:, Y] < self.y0) & real)
         if below.size:
-            self._reflect(ps, aux, below)
+            self._reflect(ps, aux, below, self.y0)
+        if self.y1 is not None:
+            above = np.flatnonzero((ps.pos[:, Y] > self.y1) & real)
+            if above.size:
+                self._reflect(ps, aux, above, self.y1)
 
     def extend(self, ps) -> tuple[np.ndarray, np.ndarray, int]:
         """(rows, positions, n) of the set to sort: the ``n`` simulated particles' rows,
@@ -58,10 +84,16 @@ class Mirror:
         real = np.flatnonzero(ps.ids >= 0)
         d = ps.pos[real, Y] - self.y0
         near = np.flatnonzero((d > self.tol) & (d < self.band))
+        plane = np.full(near.size, self.y0)
+        if self.y1 is not None:
+            d = self.y1 - ps.pos[real, Y]
+            top = np.flatnonzero((d > self.tol) & (d < self.band))
+            near, plane = np.concatenate([near, top]), np.concatenate([plane, np.full(top.size, self.y1)])
         self._source_ext = near  # each image's source: its row among the simulated ones
+        self._plane_ext = plane
         rows = np.concatenate([real, real[near]])
         pos = ps.pos[rows]
-        pos[real.size:, Y] = 2.0 * self.y0 - pos[real.size:, Y]
+        pos[real.size:, Y] = 2.0 * plane - pos[real.size:, Y]
         return rows, pos, real.size
 
     def finish(self, ps, aux: dict, perm: np.ndarray, kept: int, n: int) -> None:
@@ -75,11 +107,12 @@ class Mirror:
         at = np.empty(perm.size, np.int64)
         at[perm] = np.arange(perm.size)
         src = at[self._source_ext[order[rows] - n]]
+        plane = self._plane_ext[order[rows] - n]
         ok = src < kept
-        self._reflect(ps, aux, rows)
+        self._reflect(ps, aux, rows, plane)
         ps.ids[rows] = -1 - ps.ids[rows]
         ps.group[rows] = -1
-        self.rows, self.src = rows[ok], src[ok]
+        self.rows, self.src, self.plane = rows[ok], src[ok], plane[ok]
 
     def refresh(self, ps, density_only: bool = False) -> None:
         """Bring the images to their sources' state (density; and place and velocity)."""
@@ -87,7 +120,7 @@ class Mirror:
         ps.rho[r] = ps.rho[s]
         if not density_only:
             ps.pos[r] = ps.pos[s]
-            ps.pos[r, Y] = 2.0 * self.y0 - ps.pos[s, Y]
+            ps.pos[r, Y] = 2.0 * self.plane - ps.pos[s, Y]
             ps.vel[r] = ps.vel[s]
             ps.vel[r, Y] = -ps.vel[s, Y]
 

@@ -511,11 +511,13 @@ def fluid_energies(fluid, z_ref: float = 0.0) -> tuple[float, float]:
     ``-sum m g . (r - z_ref e_z)`` (``sum m g (z - z_ref)`` for gravity along -z) with
     ``z_ref`` [m] the height of zero potential energy. With a symmetry plane
     (``fluid.mirror``): the whole domain's, twice the simulated half's (no fluid particle
-    lies on the plane)."""
+    lies on the plane); between two planes (a slice of a flow uniform across y), the
+    slice's."""
     ps = fluid.simulated()
     with fluid._own_threads():  # the fluid's own choice: one thread for small sets
         k, u = _energies(ps.pos, ps.vel, ps.mass, ps.kind, fluid.config.gravity, float(z_ref))
-    return (2.0 * k, 2.0 * u) if fluid.mirror is not None else (k, u)
+    half = fluid.mirror is not None and fluid.mirror.y1 is None
+    return (2.0 * k, 2.0 * u) if half else (k, u)
 
 
 class Energy:

@@ -218,6 +218,10 @@ SETTINGS: tuple[Setting, ...] = (
             "simulated, those near it with mirror images (fluid.mirror); the scene must be symmetric about it; unset: no "
             "plane", "m",
             optional=True),
+    Setting("symmetry_y_hi", None, "3-D: a second symmetry plane y = symmetry_y_hi above symmetry_y: only the "
+            "particles between the two are simulated, a slice of a flow uniform across y (plane waves along x) "
+            "with no side walls; at least the kernel's support 2h above symmetry_y; unset: no second plane", "m",
+            optional=True),
     Setting("name", "fluid", "participant name", kind=str),
 )
 

@@ -139,6 +139,14 @@ class FluidConfig:
                            "finite number in 3-D; leave it None in 2-D")
             if self.device != "cpu":
                 raise _bad(f"symmetry_y with device={self.device!r}", "run a symmetry plane on device='cpu'")
+        if self.symmetry_y_hi is not None:
+            if self.symmetry_y is None:
+                raise _bad(f"symmetry_y_hi={self.symmetry_y_hi!r} m without symmetry_y", "give symmetry_y too, the "
+                           "slice's lower plane")
+            if not self.symmetry_y_hi - self.symmetry_y >= 2.0 * self.h:
+                raise _bad(f"symmetry_y_hi={self.symmetry_y_hi!r} m, {self.symmetry_y_hi - self.symmetry_y:g} m "
+                           f"above symmetry_y", f"give a slice at least the kernel's support 2h = {2.0 * self.h:g} m "
+                           "wide (its images reflect across one plane only)")
         if (self.domain_lo is None) != (self.domain_hi is None):
             raise _bad("only one domain corner given", "give both domain_lo and domain_hi, or neither")
         if self.domain_lo is not None:
@@ -306,7 +314,12 @@ class Fluid:
                 i = int(np.argmax(below))
                 raise InputError(f"particle {particles.ids[i]} at y = {particles.pos[i, 1]:.6g} m lies beyond the "
                                  f"symmetry plane y = {c.symmetry_y:g} m: give only the half y >= it")
-            self.mirror = Mirror(c.symmetry_y, 2.0 * c.h, c.dx)
+            if c.symmetry_y_hi is not None and (particles.pos[:, 1] > c.symmetry_y_hi).any():
+                i = int(np.argmax(particles.pos[:, 1] > c.symmetry_y_hi))
+                raise InputError(f"particle {particles.ids[i]} at y = {particles.pos[i, 1]:.6g} m lies beyond the "
+                                 f"symmetry plane y = {c.symmetry_y_hi:g} m (symmetry_y_hi): give only the slice "
+                                 f"between the planes")
+            self.mirror = Mirror(c.symmetry_y, 2.0 * c.h, c.dx, c.symmetry_y_hi)
         #: the groups made of wall particles: their loads are NaN when not computed
         self._wall_groups = np.zeros(self.n_groups, bool)
         if not c.wall_loads and self.n_groups:
@@ -353,6 +366,9 @@ class Fluid:
         if self.mirror is not None:  # room for the images
             lo = lo.copy()
             lo[1] = min(lo[1], c.symmetry_y - 2.0 * c.h - c.dx)
+            if c.symmetry_y_hi is not None:
+                hi = hi.copy()
+                hi[1] = max(hi[1], c.symmetry_y_hi + 2.0 * c.h + c.dx)
         # reach 1 (cells of the support 2h): fewer, longer contiguous rows vectorise
         # better; reach 2 visits 9 % fewer candidates in 3-D at the same speed
         # (docs/benchmarks/fluid_throughput_history.md)
@@ -493,7 +509,8 @@ class Fluid:
                 "removed": dict(self.counters.removed),
                 "aux": {k: v.copy() for k, v in self._aux.items()},  # Verlet's n-1 state
                 "rates": tuple(None if a is None else a.copy() for a in rates) + (self._limit, self._stale),
-                "mirror": None if self.mirror is None else (self.mirror.rows.copy(), self.mirror.src.copy()),
+                "mirror": None if self.mirror is None else (self.mirror.rows.copy(), self.mirror.src.copy(),
+                                                            self.mirror.plane.copy()),
                 "controllers": [c.save_state() for c in self.controllers]}
 
     def load_state(self, state) -> None:
@@ -506,7 +523,10 @@ class Fluid:
         for control, saved in zip(self.controllers, state.get("controllers", ())):
             control.load_state(saved)
         if self.mirror is not None and state.get("mirror") is not None:  # the images' sources in this order
-            self.mirror.rows, self.mirror.src = (np.array(a, np.int64) for a in state["mirror"])
+            rows, src, *plane = state["mirror"]
+            self.mirror.rows, self.mirror.src = np.array(rows, np.int64), np.array(src, np.int64)
+            # a state saved before the planes were kept: one plane
+            self.mirror.plane = np.array(plane[0], float) if plane else np.full(len(rows), self.mirror.y0)
         if "rates" not in state or (self.mirror is not None and state.get("mirror") is None):
             self._sort()
             self._rates()

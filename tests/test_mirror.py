@@ -127,3 +127,78 @@ def test_a_saved_state_with_images_continues_bit_for_bit():
     half.advance(0.005, 0.005)
     np.testing.assert_array_equal(half.ps.pos, first[0])
     np.testing.assert_array_equal(half.mirror.rows, first[1])
+
+
+WS = 6 * DX  #: the slice's width between its two planes: more than the kernel's support 2h = 4 dx
+
+
+def _slice_and_copies(seed=3):
+    """A jittered 3-D slice y = 0 .. WS (floor and end walls across it only, no side walls)
+    and the same slice with its mirror copies across y = 0 and y = WS laid out explicitly
+    (y = -WS .. 2 WS): (slice's particles, copies' particles)."""
+    t = 4 * DX
+    walls = np.concatenate([block((-t, 0.0, -t), (L + t, WS, 0.0), DX),  # floor, under the end walls too
+                            block((-t, 0.0, 0.0), (0.0, WS, D + 0.1), DX), block((L, 0.0, 0.0), (L + t, WS, D + 0.1), DX)])
+    ps = assemble(3, DX, 1000.0, block((0.0, 0.0, 0.0), (L, WS, D), DX), [(walls, Kind.FIXED_WALL, 0)]).particles
+    set_hydrostatic(ps, D, 1000.0, 20.0, 7.0, 9.81)
+    rng = np.random.default_rng(seed)
+    fl = np.flatnonzero(ps.kind == Kind.FLUID)
+    ps.pos[fl] += rng.uniform(-0.15, 0.15, (fl.size, 3)) * DX
+    ps.pos[fl, 1] = np.clip(ps.pos[fl, 1], 1e-3 * DX, WS - 1e-3 * DX)
+    ps.vel[fl] = rng.normal(0.0, 0.05, (fl.size, 3))
+    ps.rho[fl] *= 1.0 + rng.uniform(-2e-3, 2e-3, fl.size)
+    from fluid.particles import ParticleSet
+    parts = []
+    for plane in (None, 0.0, WS):  # the slice first: its rows keep ids 0..N-1
+        pos, vel = ps.pos.copy(), ps.vel.copy()
+        if plane is not None:
+            pos[:, 1] = 2.0 * plane - pos[:, 1]
+            vel[:, 1] *= -1.0
+        parts.append((pos, vel))
+    whole = ParticleSet.create(np.concatenate([p for p, _ in parts]), np.tile(ps.rho, 3), np.tile(ps.mass, 3),
+                               kind=np.tile(ps.kind, 3), group=np.tile(ps.group, 3),
+                               vel=np.concatenate([v for _, v in parts]))
+    return ps, whole
+
+
+def test_a_slice_between_two_planes_has_the_rates_of_its_mirrored_copies():
+    """The slice y = 0 .. WS with symmetry planes at both sides (symmetry_y, symmetry_y_hi)
+    gives every one of its particles (fluid and walls) the continuity and momentum rates
+    that the same particles have beside their mirror copies laid out explicitly, to
+    round-off: what a flow symmetric about both planes (uniform across y) has."""
+    ps, whole_ps = _slice_and_copies()
+    base = dict(dim=3, dx=DX, c0=20.0, h_coef=2.0, walls="adami", alpha=0.02, g=(1.5, 0.0, -9.81))
+    whole = Fluid(FluidConfig(**base), whole_ps)
+    part = Fluid(FluidConfig(**base, symmetry_y=0.0, symmetry_y_hi=WS), ps)
+    whole.initialize(0.0)
+    part.initialize(0.0)
+    images = part.ps.pos[part.ps.ids < 0, 1]
+    assert (images < 0).any() and (images > WS).any()  # both planes made images
+    n = ps.n
+    for a, b in ((whole._drho, part._drho), (whole._acc, part._acc)):
+        real = np.flatnonzero(part.ps.ids >= 0)
+        at = np.argsort(whole.ps.ids)[part.ps.ids[real]]  # the copies' ids follow the slice's
+        assert (whole.ps.ids[at] < n).all()
+        np.testing.assert_allclose(b[real], a[at], rtol=0, atol=1e-10 * np.abs(a[at]).max())
+
+
+def test_a_particle_that_crosses_the_upper_plane_is_reflected_back():
+    from fluid.particles import ParticleSet
+    ps = ParticleSet.create(np.array([[0.0, 0.107, 0.0], [0.1, 0.05, 0.0]]), 1000.0, 1.0,
+                            vel=np.array([[0.0, 0.5, 0.0], [0.0, 0.0, 0.0]]))
+    aux = {"pos": ps.pos.copy(), "vel": ps.vel.copy()}
+    Mirror(0.0, 0.05, 0.01, 0.1).reflect_crossing(ps, aux)
+    np.testing.assert_allclose(ps.pos[0], [0.0, 0.093, 0.0])
+    np.testing.assert_allclose(ps.vel[0], [0.0, -0.5, 0.0])
+    np.testing.assert_allclose(aux["pos"][0], [0.0, 0.093, 0.0])
+    np.testing.assert_allclose(ps.pos[1], [0.1, 0.05, 0.0])
+
+
+def test_a_slice_between_two_planes_is_refused_where_it_cannot_hold():
+    with pytest.raises(InputError, match="symmetry_y_hi=0.2 m without symmetry_y"):
+        FluidConfig(dim=3, dx=0.01, c0=10.0, symmetry_y_hi=0.2)
+    with pytest.raises(InputError, match=r"symmetry_y_hi=0.03 m.*at least the kernel's support 2h = 0.04 m"):
+        FluidConfig(dim=3, dx=0.01, c0=10.0, h_coef=2.0, symmetry_y=0.0, symmetry_y_hi=0.03)
+    ps, _ = _slice_and_copies()
+    with pytest.raises(InputError, match=r"beyond the symmetry plane y = 0.1 m \(symmetry_y_hi\)"):
+        Fluid(FluidConfig(dim=3, dx=DX, c0=20.0, symmetry_y=0.0, symmetry_y_hi=0.1), ps)

@@ -353,3 +353,32 @@ def test_a_body_given_a_velocity_flies_as_a_projectile(dim, tmp_path):
     np.testing.assert_allclose(k.com[0], expect, atol=1e-12)
     np.testing.assert_allclose(k.velocity[0], v3 + np.array([0.0, 0.0, -g * T]), atol=1e-9)
     assert np.abs(k.omega[0]).max() < 1e-12
+
+
+def test_a_flume_between_symmetry_planes_keeps_its_waves_uniform_across_it(tmp_path):
+    """``domain.sides = "symmetry"``: a 3-D flume with no side walls, its floor, paddle and
+    far wall across y = 0 .. width, the fluid's symmetry planes at both sides (each particle
+    near one has a mirror image); the particle count is the cost estimate's. Its columns
+    across y are alike, so a paddle's wave stays uniform across the slice: no particle
+    moves along y (a walled slice's water moves along y by its side walls)."""
+    from cosim.scene import cost
+    from fluid.particles import Kind
+
+    dx, width = 0.03, 0.15
+    flume = Flume(length=0.9, depth=0.15, height=0.25, width=width, sides="symmetry")
+    scene = Scene(world=W3.replace(duration=0.4, sample_every=0.1), fluid=SPH(dx=dx), domain=flume,
+                  waves=Piston(height=0.02, period=0.8))
+    b = build(scene, tmp_path)
+    ps = b.sph.ps
+    real = ps.ids >= 0
+    assert (ps.pos[real, 1] > 0.0).all() and (ps.pos[real, 1] < width).all()
+    assert (b.sph.config.symmetry_y, b.sph.config.symmetry_y_hi) == (0.0, width)
+    water, walls, _ = cost.sph_particles(scene)
+    assert int((ps.kind[real] == Kind.FLUID).sum()) == pytest.approx(water, rel=0.02)
+    assert int((ps.kind[real] != Kind.FLUID).sum()) == pytest.approx(walls, rel=0.1)
+    b.coupler.run(0.4)
+    ps = b.sph.ps
+    fl = (ps.kind == Kind.FLUID) & (ps.ids >= 0)
+    u = np.abs(ps.vel[fl][:, [0, 2]]).max()
+    assert u > 0.02  # the paddle's wave
+    assert np.abs(ps.vel[fl, 1]).max() < 1e-9 * u

@@ -81,6 +81,8 @@ def fluid_config(scene, setup, numbers_only: bool = False):
     cfg = {k: v for k, v in setup.config.items() if not (numbers_only and k == "device")}
     if isinstance(scene.domain, NearField) and scene.domain.symmetry:
         cfg["symmetry_y"] = 0.0  # fluid.mirror
+    if isinstance(scene.domain, Flume) and scene.domain.sides == "symmetry":  # a slice between two planes
+        cfg["symmetry_y"], cfg["symmetry_y_hi"] = 0.0, scene.domain.width
     if isinstance(scene.domain, OpenWater):  # particles that leave the box are removed
         cfg["domain_lo"], cfg["domain_hi"] = scene.domain.lo, scene.domain.hi
     # the walls' loads only where a probe reads them (wall-pressure patches): a scene pays
@@ -271,7 +273,8 @@ def _domain_points(scene, cfg, back: float = 0.0, brim: bool = False):
         from fluid.flume import flume
 
         fl = flume(dx, d.length, d.depth, d.height, layers=layers, back=back,
-                   beach=None if d.beach is None else (d.beach.toe, d.beach.slope), width=d.width)
+                   beach=None if d.beach is None else (d.beach.toe, d.beach.slope), width=d.width,
+                   side_walls=d.sides == "walls")
         return fl.fluid, fl.walls
     if isinstance(d, OpenWater):
         return np.concatenate([block(b.lo, b.hi, dx) for b in d.water]), []

@@ -173,6 +173,14 @@ def _check_fluid_and_domain(s, dim):
             raise SceneError("domain.width", "a 3-D flume (a wave tank) needs its width along y [m]")
         if dim == 2 and d.width is not None:
             raise SceneError("domain.width", "a 2-D flume is the x-z plane; leave width out")
+        if d.sides == "symmetry":
+            if dim == 2:
+                raise SceneError("domain.sides", "symmetry planes bound a 3-D flume across y; a 2-D flume has no "
+                                 "sides: leave sides out")
+            if s.bodies:
+                raise SceneError("domain.sides", f"a flume between symmetry planes carries waves uniform across y "
+                                 f"and no bodies ({len(s.bodies)} given): give sides = \"walls\", or put the "
+                                 f"bodies in a near field (domain.kind = \"nearfield\", with its own symmetry plane)")
     if isinstance(d, CylinderTank) and dim != 3:
         raise SceneError("domain.kind", "a cylinder-tank is 3-D; set world.dim = 3")
     if isinstance(d, (Tank, InclinedTank)):

@@ -262,7 +262,10 @@ def sph_particles(scene) -> tuple[float, float, float]:
             w = d.width
             if section is not None:
                 water = section * w / dx ** 3
-            walls = (edge * (w + 2 * t) + 2 * (_area(v) + back * top)) * t / dx ** 3
+            if isinstance(d, Flume) and d.sides == "symmetry":  # no side walls, the rest only across the width
+                walls = edge * w * t / dx ** 3
+            else:
+                walls = (edge * (w + 2 * t) + 2 * (_area(v) + back * top)) * t / dx ** 3
     bodies = 0.0
     for b in scene.bodies:
         if isinstance(b, MJCF):

@@ -303,7 +303,9 @@ class Absorber(Spec):
 class Flume(Spec):
     """A wave flume: the paddle at x = 0, the far wall at ``length``, water ``depth``
     deep, walls ``height`` high, an optional :class:`Beach` or :class:`Absorber` (SPH); 3-D: a wave tank ``width``
-    wide along y (side walls at y = 0 and ``width``), the paddle across the whole width.
+    wide along y (side walls at y = 0 and ``width``, or with ``sides = "symmetry"`` two
+    symmetry planes there: the side walls of a narrow slice change the waves that run along
+    them, docs/fluid.md), the paddle across the whole width.
     With ``fluid.model = "analytic"`` the flume gives the still level (its depth, the
     seabed at z = 0) and its wavemaker's far-field wave (``cosim.scene.build``)."""
 
@@ -315,6 +317,9 @@ class Flume(Spec):
     beach: Beach = part(None, "a sloping beach that absorbs the waves", Beach)
     absorber: Absorber = part(None, "an absorbing relaxation zone before the far wall (SPH)", Absorber)
     width: float = num(None, "width along y between the side walls (3-D only)", "m", lo=0, lo_open=True)
+    sides: str = choice("walls", "3-D: what bounds the flume across y: walls (slip side walls at y = 0 and width), "
+                        "or symmetry (two symmetry planes there: a slice of a flume of any width for waves uniform "
+                        "across it, no bodies; fluid.mirror)", ("walls", "symmetry"))
 
     def validate(self):
         if self.depth >= self.height:
