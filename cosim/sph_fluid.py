@@ -118,7 +118,7 @@ class SPHFluid:
         self.zones = list(zones)  #: relaxation zones (fluid.relaxation), given to the fluid at attachment
         self.controllers = list(controllers)  #: the fluid's controllers (Fluid.controllers), given alike
         self.symmetry = config.symmetry_y is not None
-        if self.symmetry and (config.symmetry_y != 0.0 or self.elastic_beams):
+        if self.symmetry and config.symmetry_y_hi is None and (config.symmetry_y != 0.0 or self.elastic_beams):
             raise InputError(f"SPH fluid: a symmetry plane (symmetry_y = {config.symmetry_y}) is the plane y = 0 "
                              "of rigid bodies centred on it (no elastic plates)")
         if config.symmetry_y_hi is not None and self.elastic_beams:

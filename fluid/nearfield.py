@@ -218,7 +218,8 @@ class NearFieldBox:
     2, to be moved by :func:`following_wall`), the x range ``x0 .. x1`` [m] of the water,
     3-D its y range ``y`` [m] (None in 2-D), the relaxation zones' width ``zone`` [m] inside
     each end wall and ``side_zone`` [m] inside each side wall (None: no side zones, a
-    channel); ``mirror``: y = y[0] is a symmetry plane, with no wall or zone."""
+    channel); ``mirror``: y = y[0] is a symmetry plane, with no wall or zone; ``planes``:
+    both y[0] and y[1] are (a channel between symmetry planes, :mod:`fluid.mirror`)."""
 
     fluid: np.ndarray
     walls: list
@@ -228,6 +229,7 @@ class NearFieldBox:
     y: tuple | None = None
     side_zone: float | None = None
     mirror: bool = False
+    planes: bool = False
 
     def reach(self, sea) -> tuple[float, float]:
         """The range [m] along the sea's heading that the box's water can reach: its corners'
@@ -276,8 +278,8 @@ class NearFieldBox:
             if self.y is None:
                 strips.append((side, xs, w))
                 continue
-            lo = self.y[0] + (0.0 if self.mirror else 2.0 * h)
-            hi = self.y[1] - 2.0 * h
+            lo = self.y[0] + (0.0 if self.mirror or self.planes else 2.0 * h)
+            hi = self.y[1] - (0.0 if self.planes else 2.0 * h)
             n = max(1, int(round((hi - lo) / (2.0 * h))) + 1)
             ys = np.linspace(lo, hi, n) if hi > lo else np.array([0.5 * (self.y[0] + self.y[1])])
             strips.append((side, np.array([(x, y) for x in xs for y in ys]), np.repeat(w, ys.size) / ys.size))
@@ -300,14 +302,15 @@ def whole_spacings(x0: float, x1: float, dx: float) -> float:
 
 def near_field_box(dx: float, x0: float, x1: float, sea, height: float, zone: float, *, layers: int = 4,
                    y: tuple | None = None, side_zone: float | None = None,
-                   slack: float | None = None, mirror: bool = False) -> NearFieldBox:
+                   slack: float | None = None, mirror: bool = False, planes: bool = False) -> NearFieldBox:
     """Water from ``x0`` to ``x1`` [m] over the sea's seabed (``sea.level - sea.depth``) up
     to its still level, spacing ``dx`` [m]; walls ``height`` [m] above the seabed and
     ``layers`` thick (``x1`` moved out to a whole number of spacings, :func:`whole_spacings`);
     relaxation zones ``zone`` [m] wide inside each end wall; 3-D across
     ``y = (y0, y1)`` [m] with fixed side walls beyond, zones ``side_zone`` [m] wide inside
     them (None: none); ``mirror``: the plane y = y0 is a symmetry plane (:mod:`fluid.mirror`),
-    with no wall or zone at it. The seabed runs on beyond each end wall by
+    with no wall or zone at it; ``planes``: y0 and y1 both are, no side walls (a channel: no
+    side zones). The seabed runs on beyond each end wall by
     ``slack`` [m] (default: the sea's largest horizontal excursion there and a layer), so
     that the moving walls always stand on it."""
     for name, v in (("dx", dx), ("height", height), ("zone", zone)):
@@ -336,20 +339,23 @@ def near_field_box(dx: float, x0: float, x1: float, sea, height: float, zone: fl
     else:
         def box(lo, hi, across=tuple(y)):
             return block((lo[0], across[0], lo[1]), (hi[0], across[1], hi[1]), dx)
-        inner = y[0] if mirror else y[0] - t  # a symmetry plane's water is mirrored, not walled
-        sides = [box((span[0], bed), (span[1], bed + height), (y[1], y[1] + t))]
-        if not mirror:
+        # a symmetry plane's water is mirrored, not walled
+        inner, outer = (y[0] if mirror or planes else y[0] - t), (y[1] if planes else y[1] + t)
+        sides = [] if planes else [box((span[0], bed), (span[1], bed + height), (y[1], y[1] + t))]
+        if not (mirror or planes):
             sides.append(box((span[0], bed), (span[1], bed + height), (y[0] - t, y[0])))
-        floor = box((span[0], bed - t), (span[1], bed), (inner, y[1] + t))
+        floor = box((span[0], bed - t), (span[1], bed), (inner, outer))
     near = box((x0 - t, bed), (x0, bed + height))
     far = box((x1, bed), (x1 + t, bed + height))
     water = box((x0, bed), (x1, sea.level))
     walls = [(np.concatenate([floor] + sides), Kind.FIXED_WALL, FIXED_GROUP), (near, Kind.MOVING_WALL, NEAR_END_GROUP),
              (far, Kind.MOVING_WALL, FAR_END_GROUP)]
-    if mirror and y is None:
+    if (mirror or planes) and y is None:
         raise InputError("near field: a symmetry plane y = y0 is for a 3-D box; give y")
+    if planes and side_zone is not None:
+        raise InputError("near field: a channel between symmetry planes has no side zones; give side_zone=None")
     return NearFieldBox(water, walls, float(x0), float(x1), float(zone), None if y is None else tuple(map(float, y)),
-                        None if y is None or side_zone is None else float(side_zone), bool(mirror))
+                        None if y is None or side_zone is None else float(side_zone), bool(mirror), bool(planes))
 
 
 #: the fewest kernel supports (2 h) a relaxation zone spans, and the water kept between a

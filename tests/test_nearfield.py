@@ -313,3 +313,35 @@ def test_a_kept_near_field_run_resumes_where_it_stopped(tmp_path, monkeypatch):
     assert again["read_back_other_code"] is None
     with pytest.raises(InputError, match="fluid.dx"):
         nf.run_scene(nf.waves_scene("stokes2", 2, 1.5), tmp_path / "run")
+
+
+@pytest.mark.parametrize("half", [True, pytest.param(False, marks=pytest.mark.long)])
+def test_a_channel_between_symmetry_planes_keeps_the_sea_uniform_across_it(half, tmp_path):
+    """``domain.sides = "symmetry"`` on the 3-D channel (no side zones): no side walls, the
+    seabed and end walls across the channel only, the fluid's two symmetry planes at its
+    sides (y = 0 and width/2 on the scene's own symmetry plane, +-width/2 without it); the
+    particle count is the cost estimate's, and the sea crosses it uniform across y (no
+    particle moves along y), where the walled channel's water does."""
+    from cosim.scene import cost
+    from cosim.scene.build import build
+    from cosim.validations import nearfield as nf
+
+    scene = nf.waves_scene("stokes2", 2, 20, dim=3)
+    dx = scene.fluid.dx
+    scene = scene.with_values([f"domain.width={8 * dx}", "domain.sides=symmetry", f"domain.symmetry={str(half).lower()}",
+                               "world.duration=0.1", "world.sample_every=0.05", "fluid.settle=0"])
+    b = build(scene, tmp_path)
+    ps = b.sph.ps
+    real = ps.ids >= 0
+    lo, hi = (0.0 if half else -4 * dx), 4 * dx
+    assert (b.sph.config.symmetry_y, b.sph.config.symmetry_y_hi) == pytest.approx((lo, hi))
+    assert (ps.pos[real, 1] > lo).all() and (ps.pos[real, 1] < hi).all()
+    water, walls, _ = cost.sph_particles(scene)
+    assert int((ps.kind[real] == Kind.FLUID).sum()) == pytest.approx(water, rel=0.05)
+    assert int((ps.kind[real] != Kind.FLUID).sum()) == pytest.approx(walls, rel=0.1)
+    b.coupler.run(0.1)
+    ps = b.sph.ps
+    fl = (ps.kind == Kind.FLUID) & (ps.ids >= 0)
+    u = np.abs(ps.vel[fl][:, [0, 2]]).max()
+    assert u > 1e-3  # the sea's orbits, ramping up
+    assert np.abs(ps.vel[fl, 1]).max() < 1e-9 * u

@@ -83,6 +83,9 @@ def fluid_config(scene, setup, numbers_only: bool = False):
         cfg["symmetry_y"] = 0.0  # fluid.mirror
     if isinstance(scene.domain, Flume) and scene.domain.sides == "symmetry":  # a slice between two planes
         cfg["symmetry_y"], cfg["symmetry_y_hi"] = 0.0, scene.domain.width
+    if isinstance(scene.domain, NearField) and scene.domain.sides == "symmetry":  # a channel between two planes
+        half = 0.5 * scene.domain.width  # no bodies: the box is centred on y = 0 (fluid.nearfield.choose_box)
+        cfg["symmetry_y"], cfg["symmetry_y_hi"] = 0.0 if scene.domain.symmetry else -half, half
     if isinstance(scene.domain, OpenWater):  # particles that leave the box are removed
         cfg["domain_lo"], cfg["domain_hi"] = scene.domain.lo, scene.domain.hi
     # the walls' loads only where a probe reads them (wall-pressure patches): a scene pays
@@ -894,7 +897,8 @@ def _near_field(scene, cfg, out: Built):
     sea = out.sea = incident_sea(scene)
     c = out.near_field = box_for(scene)
     box = near_field_box(cfg.dx, c.x[0], c.x[1], sea, c.height, c.zone, layers=math.ceil(2.0 * cfg.h_coef - 1e-9),
-                         y=c.y, side_zone=c.side_zone, mirror=scene.domain.symmetry)
+                         y=c.y, side_zone=c.side_zone, mirror=scene.domain.symmetry,
+                         planes=scene.domain.sides == "symmetry")
     rate = scene.domain.rate * 2.0 * math.pi / sea.peak_period
     if scene.domain.absorbing_walls:
         ends = box.absorbing_ends(sea, cfg.dx, cfg.h)

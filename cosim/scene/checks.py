@@ -625,7 +625,9 @@ def _check_near_field(s, dim):
         if not d.side_zones:
             raise SceneError("domain.side_zones", "a 2-D near field is the x-z plane, with no side walls; leave "
                              "side_zones out")
-    if d.symmetry:
+    if d.sides == "symmetry":
+        _check_channel_planes(s, dim)
+    elif d.symmetry:
         _check_symmetric(s)
     if s.base_motion is not None:
         raise SceneError("base_motion", "a near field follows its sea and does not move as a whole; use a tank")
@@ -634,6 +636,21 @@ def _check_near_field(s, dim):
                          "would read its moving end walls; read the bodies' loads instead")
     if isinstance(s.fluid, SPH) and s.fluid.device == "cuda":
         _check_near_field_on_gpu(s)
+
+
+def _check_channel_planes(s, dim) -> None:
+    """A near field between two symmetry planes (``sides = "symmetry"``) is a 3-D channel
+    of a given width with nothing in it: a slice of a sea uniform across y."""
+    d = s.domain
+    if dim == 2 or d.side_zones:
+        raise SceneError("domain.sides", "symmetry planes bound a 3-D channel (side_zones = false) across y; "
+                         + ("a 2-D near field has no sides: leave sides out" if dim == 2 else
+                            "set side_zones = false, or leave sides out"))
+    if d.width is None:
+        raise SceneError("domain.width", "a channel between symmetry planes needs its width [m] (sides = \"symmetry\")")
+    if s.bodies or s.moorings:
+        raise SceneError("domain.sides", "a channel between symmetry planes carries a sea uniform across y and no "
+                         "bodies or lines: give sides = \"walls\" (or leave sides out)")
 
 
 def _check_near_field_on_gpu(s) -> None:

@@ -228,7 +228,8 @@ def sph_particles(scene) -> tuple[float, float, float]:
             water = length * d.depth / dx ** 2
             walls = (span * t + 2 * c.height * t) / dx ** 2
         else:
-            w, sides = c.y[1] - c.y[0], 1 if d.symmetry else 2  # a symmetry plane has no wall
+            w = c.y[1] - c.y[0]
+            sides = 0 if d.sides == "symmetry" else 1 if d.symmetry else 2  # a symmetry plane has no wall
             water = length * w * d.depth / dx ** 3
             walls = (span * (w + sides * t) * t + 2 * c.height * w * t + sides * span * c.height * t) / dx ** 3
     elif isinstance(d, OpenWater):

@@ -490,7 +490,8 @@ class NearField(Spec):
     them), with zones inside them too unless ``side_zones`` is false (a channel); with
     ``symmetry`` the plane y = 0 is a symmetry plane instead of one of them: only y >= 0
     is simulated, the particles near the plane mirrored across it (:mod:`fluid.mirror`),
-    half the particles for a scene symmetric about it. The mooring lines are not in the SPH
+    half the particles for a scene symmetric about it; a channel's ``sides = "symmetry"``
+    makes both its sides symmetry planes (a slice of a sea uniform across y, no bodies). The mooring lines are not in the SPH
     fluid: their anchors may lie outside the box. Extents left unset are chosen from the
     bodies and the sea (:func:`fluid.nearfield.choose_box`: zones half the sea's wavelength,
     or half that of the bodies' heave period when they are small against the sea's; water
@@ -516,6 +517,9 @@ class NearField(Spec):
     side_zones: bool = flag(True, "3-D: relaxation zones inside the side walls too; false: none, a channel whose "
                                   "slip side walls return what reaches them (plane waves along x, a slice of a "
                                   "flume; bodies far from the sides)")
+    sides: str = choice("walls", "3-D channel (side_zones false): what bounds it across y: walls (slip side walls) "
+                        "or symmetry (symmetry planes: a slice of a sea uniform across y, of any width; needs the "
+                        "width, no bodies; fluid.mirror)", ("walls", "symmetry"))
     symmetry: bool = flag(False, "3-D: the plane y = 0 is a symmetry plane of the scene: only y >= 0 is simulated "
                                  "(half the particles), the water near the plane mirrored across it; the waves, "
                                  "bodies, lines and probes must be symmetric about it")
