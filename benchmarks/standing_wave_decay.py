@@ -109,9 +109,10 @@ def started_tank(rows: int, extra: dict, width_rows: int = 0, make_fluid=None, a
     return fluid, A
 
 
-def run(rows: int, periods: int, extra: dict, width_rows: int = 0, make_fluid=None,
-        amplitude: float = AMPLITUDE, settle: float = SETTLE_S, sides: str = "walls") -> dict:
-    """One run of :func:`started_tank` for ``periods`` periods."""
+def run(rows: int, periods: int, extra: dict, width_rows: int = 0, make_fluid=None, amplitude: float = AMPLITUDE,
+        settle: float = SETTLE_S, sides: str = "walls", series: list | None = None) -> dict:
+    """One run of :func:`started_tank` for ``periods`` periods; ``series``: a list that
+    gets each sample's ``(t / T, projection / A)``."""
     from fluid.probes import surface_elevation
 
     dx = DEPTH / rows
@@ -145,6 +146,8 @@ def run(rows: int, periods: int, extra: dict, width_rows: int = 0, make_fluid=No
         ke.append(fluid.kinetic_energy())
         eta.append(middle_eta())
         q.append(modal())
+    if series is not None:
+        series.extend(zip((t / T for t in ts), (v / A for v in q)))
     ts, ke, eta, q = np.array(ts), np.array(ke), np.array(eta), np.array(q)
     period_of = np.minimum((ts / T + 1e-9).astype(int), periods - 1)
     mean_ke = np.array([ke[period_of == p].mean() for p in range(periods)])

@@ -138,7 +138,8 @@ def _slice_and_copies(seed=3):
     (y = -WS .. 2 WS): (slice's particles, copies' particles)."""
     t = 4 * DX
     walls = np.concatenate([block((-t, 0.0, -t), (L + t, WS, 0.0), DX),  # floor, under the end walls too
-                            block((-t, 0.0, 0.0), (0.0, WS, D + 0.1), DX), block((L, 0.0, 0.0), (L + t, WS, D + 0.1), DX)])
+                            block((-t, 0.0, 0.0), (0.0, WS, D + 0.1), DX),
+                            block((L, 0.0, 0.0), (L + t, WS, D + 0.1), DX)])
     ps = assemble(3, DX, 1000.0, block((0.0, 0.0, 0.0), (L, WS, D), DX), [(walls, Kind.FIXED_WALL, 0)]).particles
     set_hydrostatic(ps, D, 1000.0, 20.0, 7.0, 9.81)
     rng = np.random.default_rng(seed)

@@ -328,8 +328,9 @@ def test_a_channel_between_symmetry_planes_keeps_the_sea_uniform_across_it(half,
 
     scene = nf.waves_scene("stokes2", 2, 20, dim=3)
     dx = scene.fluid.dx
-    scene = scene.with_values([f"domain.width={8 * dx}", "domain.sides=symmetry", f"domain.symmetry={str(half).lower()}",
-                               "world.duration=0.1", "world.sample_every=0.05", "fluid.settle=0"])
+    scene = scene.with_values([f"domain.width={8 * dx}", "domain.sides=symmetry",
+                               f"domain.symmetry={str(half).lower()}", "world.duration=0.1",
+                               "world.sample_every=0.05", "fluid.settle=0"])
     b = build(scene, tmp_path)
     ps = b.sph.ps
     real = ps.ids >= 0

@@ -492,10 +492,11 @@ class NearField(Spec):
     is simulated, the particles near the plane mirrored across it (:mod:`fluid.mirror`),
     half the particles for a scene symmetric about it; a channel's ``sides = "symmetry"``
     makes both its sides symmetry planes (a slice of a sea uniform across y, no bodies).
-    The mooring lines are not in the SPH fluid: their anchors may lie outside the box. Extents left unset are chosen from the
-    bodies and the sea (:func:`fluid.nearfield.choose_box`: zones half the sea's wavelength,
-    or half that of the bodies' heave period when they are small against the sea's; water
-    beyond the bodies' reach) and reported with the reasons in summary.json."""
+    The mooring lines are not in the SPH fluid: their anchors may lie outside the box.
+    Extents left unset are chosen from the bodies and the sea
+    (:func:`fluid.nearfield.choose_box`: zones half the sea's wavelength, or half that of
+    the bodies' heave period when they are small against the sea's; water beyond the
+    bodies' reach) and reported with the reasons in summary.json."""
 
     TAG = ("kind", "nearfield")
     kind: str = tag("nearfield")
