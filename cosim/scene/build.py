@@ -75,7 +75,8 @@ def water_level(scene) -> float | None:
 def fluid_config(scene, setup, numbers_only: bool = False):
     """The SPH fluid's FluidConfig from the scene and its set-up; ``numbers_only``: its
     settings on the CPU, for checks that need its numbers (h, c0) and not its device (a
-    GPU that this machine may not have)."""
+    GPU that this machine may not have) nor a near-field channel's planes (which the box's
+    choice, itself taking h from here, places)."""
     from fluid.solver import FluidConfig
 
     cfg = {k: v for k, v in setup.config.items() if not (numbers_only and k == "device")}
@@ -83,9 +84,12 @@ def fluid_config(scene, setup, numbers_only: bool = False):
         cfg["symmetry_y"] = 0.0  # fluid.mirror
     if isinstance(scene.domain, Flume) and scene.domain.sides == "symmetry":  # a slice between two planes
         cfg["symmetry_y"], cfg["symmetry_y_hi"] = 0.0, scene.domain.width
-    if isinstance(scene.domain, NearField) and scene.domain.sides == "symmetry":  # a channel between two planes
-        half = 0.5 * scene.domain.width  # no bodies: the box is centred on y = 0 (fluid.nearfield.choose_box)
-        cfg["symmetry_y"], cfg["symmetry_y_hi"] = 0.0 if scene.domain.symmetry else -half, half
+    if isinstance(scene.domain, NearField) and scene.domain.sides == "symmetry" and not numbers_only:
+        # a channel between two planes: its sides as the box chooses them (box_for takes
+        # only the numbers of this config, so it does not come back here)
+        from cosim.scene.nearfield import box_for
+
+        cfg["symmetry_y"], cfg["symmetry_y_hi"] = box_for(scene).y
     if isinstance(scene.domain, OpenWater):  # particles that leave the box are removed
         cfg["domain_lo"], cfg["domain_hi"] = scene.domain.lo, scene.domain.hi
     # the walls' loads only where a probe reads them (wall-pressure patches): a scene pays
