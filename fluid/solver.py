@@ -309,16 +309,14 @@ class Fluid:
         #: a symmetry plane's mirror images (fluid.mirror), None without one
         self.mirror = None
         if c.symmetry_y is not None:
-            below = particles.pos[:, 1] < c.symmetry_y
-            if below.any():
-                i = int(np.argmax(below))
-                raise InputError(f"particle {particles.ids[i]} at y = {particles.pos[i, 1]:.6g} m lies beyond the "
-                                 f"symmetry plane y = {c.symmetry_y:g} m: give only the half y >= it")
-            if c.symmetry_y_hi is not None and (particles.pos[:, 1] > c.symmetry_y_hi).any():
-                i = int(np.argmax(particles.pos[:, 1] > c.symmetry_y_hi))
-                raise InputError(f"particle {particles.ids[i]} at y = {particles.pos[i, 1]:.6g} m lies beyond the "
-                                 f"symmetry plane y = {c.symmetry_y_hi:g} m (symmetry_y_hi): give only the slice "
-                                 f"between the planes")
+            y = particles.pos[:, 1]
+            for beyond, plane, fix in ((y < c.symmetry_y, c.symmetry_y, "the half y >= it"),
+                                       (y > (np.inf if c.symmetry_y_hi is None else c.symmetry_y_hi),
+                                        c.symmetry_y_hi, "the slice between the planes (symmetry_y_hi)")):
+                if beyond.any():
+                    i = int(np.argmax(beyond))
+                    raise InputError(f"particle {particles.ids[i]} at y = {y[i]:.6g} m lies beyond the symmetry "
+                                     f"plane y = {plane:g} m: give only {fix}")
             self.mirror = Mirror(c.symmetry_y, 2.0 * c.h, c.dx, c.symmetry_y_hi)
         #: the groups made of wall particles: their loads are NaN when not computed
         self._wall_groups = np.zeros(self.n_groups, bool)
