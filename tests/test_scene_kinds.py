@@ -306,6 +306,29 @@ def test_a_length_that_is_not_whole_spacings_is_built_rounded_and_warned_of(tmp_
         assert any(w.startswith("domain.width: 0.15 m") and "built 0.14 m" in w for w in built_scene.warnings)
 
 
+@pytest.mark.parametrize("length, built, gap", [(0.314, 0.32, 0.02), (0.306, 0.3, 0.0)])
+def test_a_water_block_to_a_far_wall_not_whole_spacings_away_is_warned_of_its_empty_column(tmp_path, length,
+                                                                                          built, gap):
+    """A tank filled by a water block up to its far wall: the walls are built at the
+    nearest whole number of spacings (as a tank filled to a depth), the block in whole
+    columns from its own corner; where the length rounds up the block stops a spacing
+    short of the wall's face, and the warning says so beside the built length."""
+    from cosim.scene.spec import Block
+    from fluid.particles import Kind
+
+    dx = 0.02
+    domain = Tank(length=length, height=0.2, water=(Block(lo=(0.0, 0.0), hi=(length, 0.1)),))
+    b = build(Scene(world=World(dim=2, duration=0.01), fluid=SPH(dx=dx), domain=domain), tmp_path)
+    ps = b.fluid.ps
+    far_wall = (ps.kind != Kind.FLUID) & (ps.pos[:, 1] > 0.0) & (ps.pos[:, 0] > 0.5 * length)
+    wall_face = ps.pos[far_wall, 0].min() - 0.5 * dx
+    water_face = ps.pos[ps.kind == Kind.FLUID, 0].max() + 0.5 * dx
+    assert wall_face == pytest.approx(built, abs=1e-9) and built - water_face == pytest.approx(gap, abs=1e-9)
+    said = [w for w in b.warnings if w.startswith("domain.length")]
+    assert len(said) == 1 and f"built {built:.6g} m" in said[0]
+    assert ("empty column" in said[0]) == (gap > 0)
+
+
 def test_open_water_without_gravity_stays_at_rest_and_loses_what_leaves_its_box(tmp_path):
     """Open water (no walls, no floor) without gravity: two blocks at rest carry no
     pressure (no hydrostatics in free fall) and nothing moves them, so after 40 steps every

@@ -605,23 +605,31 @@ def _warn_partial_row(scene, out: Built) -> None:
 
 
 def _warn_partial_column(scene, out: Built) -> None:
-    """A tank filled to a depth is built with its walls and water on one lattice, so a
-    length (width) that is not a whole number of spacings is built as the nearest whole
-    number (``fluid.geometry.lattice_extent``): said, with the lengths that fit."""
+    """A tank's walls lie on its water's lattice, so a length (width) that is not a whole
+    number of spacings is built as the nearest whole number (``fluid.geometry.lattice_extent``):
+    said, with the lengths that fit. Water blocks are laid in whole columns from their
+    lower corner, so a block given up to the far wall may stop half a spacing or more short
+    of the built face: an empty column the water at rest falls into (said too)."""
     d = scene.domain
-    if not isinstance(scene.fluid, SPH) or type(d) is not Tank or d.water:
+    if not isinstance(scene.fluid, SPH) or type(d) is not Tank:
         return
     from fluid.geometry import lattice_extent  # here: a scene without SPH loads no fluid module
 
     dx = scene.fluid.dx
-    for key in ("length", "width") if scene.world.dim == 3 else ("length",):
+    for axis, key in enumerate(("length", "width") if scene.world.dim == 3 else ("length",)):
         size = getattr(d, key)
         built = lattice_extent(size, dx)
         if abs(built - size) > 1e-6 * dx:
             n = math.floor(size / dx + 1e-9)
+            # a block laid as given up to the far wall: its last column's face, whole spacings from its lo
+            faces = [b.lo[axis] + math.floor((b.hi[axis] - b.lo[axis]) / dx + 1e-9) * dx for b in d.water
+                     if b.hi[axis] >= size - 1e-6 * dx]
+            gap = "" if not faces or built - min(faces) < 0.5 * dx else (
+                f"; the water block reaching the far wall stops at {min(faces):.6g} m, {built - min(faces):.3g} m "
+                f"short of its face: an empty column the water at rest falls into")
             out.warnings.append(f"domain.{key}: {size:g} m is {size / dx:.4g} spacings of fluid.dx = {dx:g} m; the "
-                                f"tank's walls and water share one lattice, so it is built {built:.6g} m "
-                                f"({round(built / dx)} spacings) {'long' if key == 'length' else 'wide'}; give a "
+                                f"tank's walls lie on the particle lattice from its inner corner, so it is built {built:.6g} m "
+                                f"({round(built / dx)} spacings) {'long' if key == 'length' else 'wide'}{gap}; give a "
                                 f"{key} of {n * dx:.6g} or {(n + 1) * dx:.6g} m, or a dx that divides {size:g} m")
 
 

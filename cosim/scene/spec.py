@@ -249,10 +249,11 @@ class Tank(Spec):
     gate hangs from (Antoci et al. 2007), a baffle. Water laid to ``depth`` leaves them
     out; water blocks may not overlap them. Each is at least as thick as the tank's walls
     (their layers, the kernel's support 2h, times dx), so that the water beside it is held
-    and does not feel the other side. With SPH water laid to ``depth``, the walls and the
-    water share the particle lattice, so a length (width) that is not a whole number of
-    spacings is built as the nearest whole number (the build warns, naming the sizes that
-    fit)."""
+    and does not feel the other side. With SPH the walls lie on the particle lattice from
+    the inner corner (water laid to ``depth`` shares it), so a length (width) that is not a
+    whole number of spacings is built as the nearest whole number (the build warns, naming
+    the sizes that fit, and a water block given up to the far wall that then stops a
+    spacing short of it)."""
 
     TAG = ("kind", "tank")
     kind: str = tag("tank")
