@@ -270,7 +270,7 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
     pad = PAD_F32 if f32 else PAD
     o = -1 if f32 else 0  # float32: T's rows are S's shifted by one (the cell's x index first)
 
-    def pair_loop(S, T, n, start, tab, lo, cell, nx, ny, nz, prm, out, acc, xs, G, near, kind, walls):
+    def pair_loop(S, T, n, start, tab, lo, cell, nx, ny, nz, prm, out, acc, xs, G, near, kind, walls, skip):
         h = prm[P_H]
         ad = prm[P_AD]
         ddt = prm[P_DDT]
@@ -301,7 +301,16 @@ def _make_interact(kernel: int, three: bool, laminar: bool, xsph: bool, wall_vis
         inv_w = XBINS / cell
         dys = 3 if three else 1
         skip_dry = near.shape[0] > 0
+        skip_rows = skip.shape[0] > 0
         for a in prange(n):
+            if skip_rows and skip[a]:  # a row whose rates nobody reads (a symmetry plane's image)
+                for d in range(acc.shape[1]):
+                    acc[a, d] = 0.0
+                    if xsph:
+                        xs[a, d] = 0.0
+                out[DRHO, a] = 0.0
+                out[VISC, a] = 0.0
+                continue
             xa = S[X, a]
             ya = S[Y, a]
             za = S[Z, a]
@@ -539,7 +548,7 @@ def _make_gradient(kernel: int, three: bool):
     one kernel and dimension."""
 
     @njit(parallel=True, **_OPTS)
-    def gradient_loop(S, n, start, tab, lo, cell, nx, ny, nz, prm, G):
+    def gradient_loop(S, n, start, tab, lo, cell, nx, ny, nz, prm, G, skip):
         h = prm[P_H]
         gx = prm[P_G]
         gy = prm[P_G + 1] if three else 0.0
@@ -548,8 +557,9 @@ def _make_gradient(kernel: int, three: bool):
         inv_cell = 1.0 / cell
         inv_w = XBINS / cell
         dys = 3 if three else 1
+        skip_rows = skip.shape[0] > 0
         for a in prange(n):
-            if S[ISF, a] == 0.0:  # boundary particles take no diffusion
+            if S[ISF, a] == 0.0 or (skip_rows and skip[a]):  # boundary particles take no diffusion
                 G[0, a] = 0.0
                 G[1, a] = 0.0
                 G[2, a] = 0.0
@@ -599,7 +609,7 @@ def _make_gradient(kernel: int, three: bool):
 _GRADIENTS = {}
 
 
-def density_gradients(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, G) -> None:
+def density_gradients(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, G, skip=None) -> None:
     """The renormalised density gradient ``G[:, a]`` [kg/m^4] (rows x, y, z; y = 0 in 2-D)
     of every fluid particle a, Dinçer & Demir 2020, Eq. 3-4:
     ``<grad rho>_a = L_a sum_b V_b (rho_b - rho_a) grad_a W_ab`` with
@@ -607,13 +617,14 @@ def density_gradients(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, G) -> No
     ``r_ab``, which gives the gradient's negative with ``grad_a W_ab``; with ``r_ba = r_b -
     r_a`` it reproduces any linear field exactly). Where ``L_a`` is near singular (|det| of
     its inverse below :data:`DET_MIN` of the mean diagonal's power), the hydrostatic
-    gradient ``rho_a g / c_a^2``; 0 on boundary particles. Arguments as :func:`interact`."""
+    gradient ``rho_a g / c_a^2``; 0 on boundary particles (and on the ``skip`` rows).
+    Arguments as :func:`interact`."""
     key = (int(kernel), bool(ny > 1))
     loop = _GRADIENTS.get(key)
     if loop is None:
         loop = _GRADIENTS[key] = _make_gradient(*key)
     with dynamic_chunks():
-        loop(S, G.shape[1], start, tab, lo, cell, nx, ny, nz, prm, G)
+        loop(S, G.shape[1], start, tab, lo, cell, nx, ny, nz, prm, G, _NO_SKIP if skip is None else skip)
 
 
 #: particles per chunk of the pair loops, handed to the threads as they come free: with
@@ -637,10 +648,11 @@ _LOOPS = {}
 #: ``near`` for a pair loop that skips no particle
 _NOWHERE = np.zeros(0, np.uint8)
 _NO_KINDS = np.zeros(0, np.int8)
+_NO_SKIP = np.zeros(0, np.bool_)
 
 
 def interact(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, out, acc, xs, G, T=None, near=None, kind=None,
-             walls: int = WALLS_FULL):
+             walls: int = WALLS_FULL, skip=None):
     """One pass over all pairs of the ``n = acc.shape[0]`` particles; writes, for every
     particle a:
 
@@ -662,7 +674,10 @@ def interact(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, out, acc, xs, G, 
     taken as the 8-norm over the pairs (an upper bound within ``N_b^(1/8)``: a slightly
     conservative step). A boundary particle with no fluid within one cell (``near``) gets zero
     rates without a pass; tank walls whose loads nobody reads (``walls``) get only their
-    continuity rate and viscous bound (:func:`wall_sums`), as DualSPHysics' fixed boundaries.
+    continuity rate and viscous bound (:func:`wall_sums`), as DualSPHysics' fixed boundaries;
+    the rows marked in ``skip`` (bool, (n,); a symmetry plane's mirror images, neighbours
+    only) get zero rates without a pass: between two planes 2h apart they are two thirds
+    of the rows.
     With ``precision="float32"`` every pair term is float32 (16 pairs a pass), read from the
     table ``T`` of :func:`pack_f32`, separations from in-cell offsets and densities as ``rho -
     rho0``, summed into float64 totals. Why each, and what it measured: docs/fluid_equations.md.
@@ -684,7 +699,8 @@ def interact(S, start, tab, lo, cell, nx, ny, nz, kernel, prm, out, acc, xs, G, 
         raise InputError(f"interact: walls={walls} picks the wall particles by kind; give kind ({acc.shape[0]},)")
     with dynamic_chunks():
         loop(S, S if T is None or not f32 else T, acc.shape[0], start, tab, lo, cell, nx, ny, nz, prm, out, acc, xs, G,
-             _NOWHERE if near is None else near, _NO_KINDS if kind is None else kind, walls)
+             _NOWHERE if near is None else near, _NO_KINDS if kind is None else kind, walls,
+             _NO_SKIP if skip is None else skip)
 
 
 def require_pair_grid(grid, h: float) -> None:
@@ -721,7 +737,8 @@ class Rates(NamedTuple):
 
 def evaluate(pos, vel, rho, mass, kind, start, grid, kernel: int, prm, rho0: float, c0: float,
              gamma: float, p, work: Workspace | None = None, xbins: np.ndarray | None = None,
-             near: np.ndarray | None = None, walls: int = WALLS_FULL, images=None) -> Rates:
+             near: np.ndarray | None = None, walls: int = WALLS_FULL, images=None,
+             skip: np.ndarray | None = None) -> Rates:
     """EOS and all pair rates of particles sorted by cell on ``grid``. Writes the pressure
     into ``p`` [Pa]. With a ``work`` space the returned arrays are its own and are
     overwritten by the next call with it. ``xbins``: the sub-bin table that
@@ -732,7 +749,8 @@ def evaluate(pos, vel, rho, mass, kind, start, grid, kernel: int, prm, rho0: flo
     ``walls``: what the tank-wall particles get (:data:`WALLS_FULL`, :data:`WALLS_CONTINUITY`,
     :data:`WALLS_NONE`); their other rates are zero. ``images``: a symmetry plane's
     :class:`fluid.mirror.Mirror`, which gives its images the first pass's density gradients
-    of their sources before the pair loop reads them as neighbours."""
+    of their sources before the pair loop reads them as neighbours. ``skip``: rows whose
+    rates are not wanted (bool, (n,); the images), zero without a pass."""
     n, dim = pos.shape
     work = Workspace() if work is None else work
     S = work.get("S", (N_ROWS, n))
@@ -747,7 +765,7 @@ def evaluate(pos, vel, rho, mass, kind, start, grid, kernel: int, prm, rho0: flo
     tab = x_bins(S[X], start, grid) if xbins is None else xbins
     if prm[P_RENORM] > 0.0:
         G = work.get("grad", (3, n))
-        density_gradients(S, start, tab, lo, grid.cell, nx, ny, nz, kernel, prm, G)
+        density_gradients(S, start, tab, lo, grid.cell, nx, ny, nz, kernel, prm, G, skip)
         if images is not None:
             images.reflect_rows(G)
     else:
@@ -756,7 +774,7 @@ def evaluate(pos, vel, rho, mass, kind, start, grid, kernel: int, prm, rho0: flo
     if prm[P_F32] > 0.0:
         T = work.get("T", (N_ROWS_F32, n), np.float32)
         pack_f32(S, rho0, lo, grid.cell, nx, ny, nz, T)
-    interact(S, start, tab, lo, grid.cell, nx, ny, nz, kernel, prm, out, acc, xs, G, T, near, kind, walls)
+    interact(S, start, tab, lo, grid.cell, nx, ny, nz, kernel, prm, out, acc, xs, G, T, near, kind, walls, skip)
     return Rates(out[DRHO], acc, out[VISC], S[CS], xs if xsph else None)
 
 

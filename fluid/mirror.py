@@ -16,7 +16,8 @@ Mirror images are rows of the fluid's particle set with a negative id (``-1 - id
 their source) and group -1: rebuilt from the sources at every sort (:meth:`Mirror.extend`,
 :meth:`Mirror.finish`), brought to their sources' state before every rate evaluation
 (:meth:`Mirror.refresh`); their own rates are not used (their neighbourhoods are cut at
-the band's edge) and nothing integrates them for more than one step. A source closer to
+the band's edge), so the pair loops skip them (zero rates), and nothing integrates them
+for more than one step. A source closer to
 the plane than 1e-9 dx is its own image and has none; a particle that crosses the plane
 is reflected back (specular: its place and its normal velocity), as the symmetric flow it
 stands for cannot cross it.

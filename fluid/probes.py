@@ -171,7 +171,9 @@ def wall_patch_pressure(fluid, centre, normal, size: float, group: int | None = 
     d = ps.pos - cen
     dn = d @ n
     along = np.linalg.norm(d - dn[:, None] * n, axis=1)
-    sel = (ps.kind != Kind.FLUID) & (along <= 0.5 * size) & (dn <= 0.0) & (dn >= -2.0 * c.h)
+    # the simulated particles only: a symmetry plane's images carry no rates (on the half
+    # that is simulated, force over area is the whole patch's)
+    sel = (ps.kind != Kind.FLUID) & (ps.ids >= 0) & (along <= 0.5 * size) & (dn <= 0.0) & (dn >= -2.0 * c.h)
     if group is not None:
         sel &= ps.group == group
     first = sel & (dn >= -c.dx)

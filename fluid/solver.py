@@ -554,7 +554,8 @@ class Fluid:
     def boundary_forces_now(self) -> np.ndarray:
         """Force [N] (N, dim) the fluid exerts on each particle at the current state, in the
         current order of ``self.ps``: ``m a`` of the boundary particles from the rates (the
-        per-particle terms of :meth:`group_forces_now`), zero rows for the fluid."""
+        per-particle terms of :meth:`group_forces_now`), zero rows for the fluid and for a
+        symmetry plane's images."""
         if not self.config.wall_loads:
             raise InputError("fluid: the walls' loads are not computed (FluidConfig.wall_loads=False); "
                              "set wall_loads=True to read boundary forces")
@@ -874,7 +875,7 @@ class Fluid:
         self._drho, self._acc, visc, self._cs, self._xsph = eq.evaluate(
             ps.pos, ps.vel, ps.rho, ps.mass, ps.kind, self._start, self._grid, self._kernel,
             self._prm, c.rho0, c.speed_of_sound, c.gamma, ps.p, self._work, self._xbins, self.near_fluid,
-            self._walls_rates, m)
+            self._walls_rates, m, None if m is None else ps.ids < 0)
         if self._drop_wall_continuity:
             # the kinds' int values: numpy compares an array with an IntEnum member three times slower
             self._drho[(ps.kind == Kind.FIXED_WALL.value) | (ps.kind == Kind.MOVING_WALL.value)] = 0.0

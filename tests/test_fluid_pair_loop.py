@@ -207,6 +207,30 @@ def test_laminar_viscosity_conserves_momentum_and_damps_relative_motion():
     assert (m * v * a).sum() < -1e-3 * (m * np.abs(v * a)).sum()
 
 
+def test_rows_marked_to_skip_get_zero_rates_and_leave_the_others_exact():
+    """``skip`` (a symmetry plane's mirror images: neighbours whose own rates nobody reads):
+    the marked rows get zero rates without a pass, every other row the rates of the full
+    pass, bit for bit, the marked rows still taking part as neighbours. (With the
+    renormalised diffusion the marked rows get no density gradient either: the mirror
+    gives its images their sources', ``Mirror.reflect_rows``, as tests/test_mirror.py
+    checks through the rates.)"""
+    pos, vel, rho, mass, kind, dx = scene(3, seed=7)
+    h = 1.3 * dx
+    g = np.array([0.0, 0.0, -9.81])
+    grid = Grid.covering(pos.min(0) - 1e-9, pos.max(0) + 1e-9, 2 * h)
+    perm, start, _ = sort_by_cell(pos, grid)
+    args = (pos[perm], vel[perm], rho[perm], mass[perm], kind[perm], start, grid, 0,
+            eq.params(h, alpha_d(0, 3, h), 0.1, 0.1, "fourtakas", RHO0, C0, g, nu=1e-3, xsph=0.3), RHO0, C0, GAMMA)
+    skip = pos[perm, 1] < 2 * h  # a band as thick as an image band
+    assert 0.1 * len(pos) < skip.sum() < 0.9 * len(pos)
+    full = eq.evaluate(*args, np.empty(len(pos)))
+    full = [a.copy() for a in (full.drho, full.acc, full.visc, full.xsph)]
+    part = eq.evaluate(*args, np.empty(len(pos)), skip=skip)
+    for a, b in zip(full, (part.drho, part.acc, part.visc, part.xsph)):
+        assert np.array_equal(a[~skip], b[~skip]) and not b[skip].any()
+        assert np.abs(a[skip]).max() > 0  # what the full pass gave them
+
+
 @pytest.mark.parametrize("dim", [2, 3])
 def test_boundary_particles_far_from_the_fluid_are_skipped_exactly(dim):
     """With the cells near the fluid given (fluid_near_cells, as the solver does), the
