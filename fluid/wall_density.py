@@ -78,7 +78,7 @@ def _fluid_rows(pos, rho, kind, rho0, B, gamma, R):
 
 @njit(parallel=True, **_OPTS)
 def adami_wall_density(R, rho, kind, acc_w, has_acc, start, tab, near, lo, cell, nx, ny, nz, kernel, h, rho0, B,
-                       gamma, g, kmin, kmax, p_floor):
+                       gamma, g, kmin, kmax, p_floor, skip):
     """Set ``rho`` of every particle with ``kmin <= kind <= kmax`` from Adami et al. (2012)
     Eq. 27 (module docstring). ``R`` the rows of :func:`_fluid_rows`; ``acc_w`` (N, dim)
     [m/s^2] the wall accelerations (read only if ``has_acc``); ``g`` (3,) [m/s^2] gravity
@@ -86,7 +86,8 @@ def adami_wall_density(R, rho, kind, acc_w, has_acc, start, tab, near, lo, cell,
     list's sub-bin table (:func:`fluid.neighbours.order_cells_by_x`), ``near`` the cells
     near the fluid (:func:`fluid.neighbours.fluid_near_cells`; the walls of the others
     have no fluid within 2h and take ``rho0`` without a pass); ``lo`` has 3 components
-    (y = 0, ``ny = 1`` in 2-D).
+    (y = 0, ``ny = 1`` in 2-D); the rows marked in ``skip`` (bool, empty for none: a
+    symmetry plane's images, which take their sources' densities) are left as they are.
 
     As the pair loop of fluid.equations: each row of cells trimmed to 2h in x and padded
     to whole vectors (:func:`fluid.neighbours.row_range_binned`), the fluid picked by a 0/1
@@ -100,9 +101,10 @@ def adami_wall_density(R, rho, kind, acc_w, has_acc, start, tab, near, lo, cell,
     inv_gamma = 1.0 / gamma
     inv_cell = 1.0 / cell
     inv_w = XBINS / cell
+    skip_rows = skip.shape[0] > 0
     for i in prange(n):
         k = kind[i]
-        if k < kmin or k > kmax:
+        if k < kmin or k > kmax or (skip_rows and skip[i]):
             continue
         xw = R[0, i]
         yw = R[1, i]
@@ -161,6 +163,7 @@ class AdamiWalls:
         #: lowest wall pressure [Pa] (0: no tension, the clamp of the plain dynamic boundaries)
         self.p_floor = 0.0
         self._rows = np.empty((5, 0))
+        self._no_skip = np.zeros(0, np.bool_)
 
     def __call__(self, ps, start, grid) -> None:
         c = self.fluid.config
@@ -174,4 +177,5 @@ class AdamiWalls:
         _fluid_rows(ps.pos, ps.rho, ps.kind, c.rho0, self.B, c.gamma, self._rows)
         adami_wall_density(self._rows, ps.rho, ps.kind, acc if has else self._zero, has, start, self.fluid.x_bins,
                            self.fluid.near_fluid, lo, grid.cell, nx, ny, nz, self.kernel, c.h, c.rho0, self.B,
-                           c.gamma, self.g, int(Kind.FIXED_WALL), int(Kind.MOVING_WALL), self.p_floor)
+                           c.gamma, self.g, int(Kind.FIXED_WALL), int(Kind.MOVING_WALL), self.p_floor,
+                           self._no_skip if self.fluid.mirror is None else ps.ids < 0)
