@@ -135,13 +135,14 @@ def test_the_near_field_cases_scene_is_its_box_and_seas():
         assert scene.world.duration == pytest.approx(20 * 1.2)
     sea = nf.waves_scene("jonswap", 3, 24).waves
     assert (sea.kind, sea.spectrum, sea.hs, sea.tp, sea.seed) == ("irregular", "jonswap", 0.04, 1.2, 1)
-    # 3-D: the same box as a channel six spacings wide without side zones, half of it on the
-    # symmetry plane y = 0, the gauges on the plane
+    # 3-D: the same box as a channel eight spacings wide without side zones or side walls,
+    # between symmetry planes, half of it simulated (the kernel's support 2h = 4 dx), the
+    # gauges on the scene's plane y = 0
     s3 = nf.waves_scene("stokes2", 3, 20, dim=3)
     b3, b2 = box_for(s3), box_for(nf.waves_scene("stokes2", 3, 20))
-    assert s3.world.dim == 3 and s3.domain.symmetry and not s3.domain.side_zones
+    assert s3.world.dim == 3 and s3.domain.symmetry and not s3.domain.side_zones and s3.domain.sides == "symmetry"
     assert b3.x == b2.x and b3.zone == b2.zone and b3.side_zone is None
-    assert b3.y == pytest.approx((0.0, 3 * 0.02)) and all(g[1] == 0.0 for g in s3.probes.gauges)
+    assert b3.y == pytest.approx((0.0, 4 * 0.02)) and all(g[1] == 0.0 for g in s3.probes.gauges)
 
 
 @pytest.mark.slow

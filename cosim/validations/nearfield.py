@@ -44,9 +44,12 @@ NF_JONSWAP_PERIODS = 64
 #: targets: height 5 %, phase 5 % of a period, mean-level drift 1 % of the depth, Hs and Tp 5 %,
 #: spectrum 10 % over 0.7-1.5 fp
 NF_HEIGHT_TOL, NF_LAG_TOL, NF_DRIFT_TOL, NF_HS_TOL, NF_SPECTRUM_TOL = 0.05, 0.05, 0.01, 0.05, 0.10
-#: 3-D: the channel's width in spacings (both halves; half of it simulated on the symmetry
-#: plane), and the full variant's 3-D runs (sea, H / dx): plane waves along a slice of the box
-NF_3D_ROWS, NF_3D_RUNS = 6, (("stokes2", 3),)
+#: 3-D: the channel's width in spacings (both halves; half of it simulated on the scene's
+#: symmetry plane, its other side a second plane: the kernel's support 2h = 4 dx at least),
+#: and the full variant's 3-D runs (sea, H / dx): plane waves along a slice of the box.
+#: Between symmetry planes, not side walls: a slip wall along a free surface changes the
+#: wave that runs beside it (docs/validation/nearfield.md, "The 3-D channel's side walls")
+NF_3D_ROWS, NF_3D_RUNS = 8, (("stokes2", 3),)
 
 
 def run_box(sea, dx: float, length: float, zone: float, duration: float, *, width: float | None = None,
@@ -228,8 +231,8 @@ def waves_scene(kind: str, h_over_dx: float, periods: float, dim: int = 2):
     JONSWAP sea of Hs = :data:`NF_HS` and Tp the waves' period (seed 1) in their place; dx =
     H / ``h_over_dx`` (H the regular waves' height), ``periods`` (peak) periods long.
     ``dim`` 3: the same box as a channel :data:`NF_3D_ROWS` spacings wide with no side zones
-    (slip side walls, along which the waves run), on a symmetry plane at y = 0 (half of it
-    simulated), the scene's gauges on the plane (the case reads its own along the middle of
+    and no side walls, between symmetry planes (``domain.sides = "symmetry"``) on the
+    scene's symmetry plane at y = 0 (half of it simulated), the scene's gauges on the plane (the case reads its own along the middle of
     the simulated half: :func:`run_scene`)."""
     n = case_scene.number
     base = case_scene.load("nearfield-waves")
@@ -243,7 +246,7 @@ def waves_scene(kind: str, h_over_dx: float, periods: float, dim: int = 2):
     if dim == 3:
         gauges = ", ".join(f"[{n(x)}, 0]" for x in base.probes.gauges)
         values += ["world.dim=3", f"domain.width={n(NF_3D_ROWS * dx)}", "domain.side_zones=false",
-                   "domain.symmetry=true", f"probes.gauges=[{gauges}]"]
+                   "domain.symmetry=true", "domain.sides=symmetry", f"probes.gauges=[{gauges}]"]
     return case_scene.load("nearfield-waves", values)
 
 
@@ -364,7 +367,7 @@ def _tolerances(metrics: dict) -> dict:
 
 @case("nearfield-waves", "regular (linear, Stokes-2) waves and a JONSWAP sea (d = 0.3 m, T = Tp = 1.2 s, H = 6 cm, "
       "Hs = 4 cm) through a 2-D SPH near-field box 1.8 wavelengths long with no body, and the Stokes-2 waves through "
-      "the same box in 3-D (a channel six spacings wide, half of it on a symmetry plane): end walls on the sea's "
+      "the same box in 3-D (a channel between symmetry planes, eight spacings wide, half of it simulated): end walls on the sea's "
       "orbits, relaxation zones half a wavelength wide (fluid.nearfield)",
       target="elevation at 9 gauges across the box within 5 % of the sea's height and 5 % of a period in phase over "
              "20 periods; the mean level's drift below 1 % of the depth; for the JONSWAP sea Hs and Tp within 5 % "
