@@ -278,6 +278,10 @@ class Fluid:
         #: the cells near the fluid (fluid.neighbours.fluid_near_cells), set before each rate
         #: evaluation for the boundary_correction hook and the pair loop
         self.near_fluid = None
+        #: the rows of a symmetry plane's mirror images (bool; empty without a plane), set
+        #: before each rate evaluation: the pair loops and the boundary_correction hook skip
+        #: them, the step limit leaves them out
+        self.image_rows = np.zeros(0, np.bool_)
         self._limit: StepLimit | None = None
         #: boundary particles were placed since the rates were taken (set_particle_motion)
         self._stale = False
@@ -868,6 +872,8 @@ class Fluid:
         if m is not None:
             m.refresh(ps)
         self.near_fluid = fluid_near_cells(ps.kind, self._start, self._grid, self._work)
+        if m is not None:
+            self.image_rows = ps.ids < 0
         if self.boundary_correction is not None:
             self.boundary_correction(ps, self._start, self._grid)
             if m is not None:  # the images' own neighbourhoods are cut at the band's edge
@@ -875,7 +881,7 @@ class Fluid:
         self._drho, self._acc, visc, self._cs, self._xsph = eq.evaluate(
             ps.pos, ps.vel, ps.rho, ps.mass, ps.kind, self._start, self._grid, self._kernel,
             self._prm, c.rho0, c.speed_of_sound, c.gamma, ps.p, self._work, self._xbins, self.near_fluid,
-            self._walls_rates, m, None if m is None else ps.ids < 0)
+            self._walls_rates, m, None if m is None else self.image_rows)
         if self._drop_wall_continuity:
             # the kinds' int values: numpy compares an array with an IntEnum member three times slower
             self._drho[(ps.kind == Kind.FIXED_WALL.value) | (ps.kind == Kind.MOVING_WALL.value)] = 0.0
@@ -883,7 +889,7 @@ class Fluid:
             self._limit = stable_dt(self._acc, visc, self._cs, ps.kind, c.h, c.cfl, c.dt_max, c.nu,
                                     **self._diffusivity)
         else:  # the images' rates are not used
-            r = ps.ids >= 0
+            r = ~self.image_rows
             self._limit = stable_dt(self._acc[r], visc[r], self._cs[r], ps.kind[r], c.h, c.cfl, c.dt_max, c.nu,
                                     **self._diffusivity)
         self._stale = False

@@ -163,7 +163,6 @@ class AdamiWalls:
         #: lowest wall pressure [Pa] (0: no tension, the clamp of the plain dynamic boundaries)
         self.p_floor = 0.0
         self._rows = np.empty((5, 0))
-        self._no_skip = np.zeros(0, np.bool_)
 
     def __call__(self, ps, start, grid) -> None:
         c = self.fluid.config
@@ -178,4 +177,4 @@ class AdamiWalls:
         adami_wall_density(self._rows, ps.rho, ps.kind, acc if has else self._zero, has, start, self.fluid.x_bins,
                            self.fluid.near_fluid, lo, grid.cell, nx, ny, nz, self.kernel, c.h, c.rho0, self.B,
                            c.gamma, self.g, int(Kind.FIXED_WALL), int(Kind.MOVING_WALL), self.p_floor,
-                           self._no_skip if self.fluid.mirror is None else ps.ids < 0)
+                           self.fluid.image_rows)

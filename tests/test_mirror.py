@@ -201,5 +201,7 @@ def test_a_slice_between_two_planes_is_refused_where_it_cannot_hold():
     with pytest.raises(InputError, match=r"symmetry_y_hi=0.03 m.*at least the kernel's support 2h = 0.04 m"):
         FluidConfig(dim=3, dx=0.01, c0=10.0, h_coef=2.0, symmetry_y=0.0, symmetry_y_hi=0.03)
     ps, _ = _slice_and_copies()
-    with pytest.raises(InputError, match=r"beyond the symmetry plane y = 0.1 m: give only the slice between the planes \(symmetry_y_hi\)"):
+    with pytest.raises(InputError,
+                       match=r"beyond the symmetry plane y = 0.1 m: give only the slice between the planes "
+                             r"\(symmetry_y_hi\)"):
         Fluid(FluidConfig(dim=3, dx=DX, c0=20.0, symmetry_y=0.0, symmetry_y_hi=0.1), ps)

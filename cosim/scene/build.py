@@ -628,9 +628,10 @@ def _warn_partial_column(scene, out: Built) -> None:
                 f"; the water block reaching the far wall stops at {min(faces):.6g} m, {built - min(faces):.3g} m "
                 f"short of its face: an empty column the water at rest falls into")
             out.warnings.append(f"domain.{key}: {size:g} m is {size / dx:.4g} spacings of fluid.dx = {dx:g} m; the "
-                                f"tank's walls lie on the particle lattice from its inner corner, so it is built {built:.6g} m "
-                                f"({round(built / dx)} spacings) {'long' if key == 'length' else 'wide'}{gap}; give a "
-                                f"{key} of {n * dx:.6g} or {(n + 1) * dx:.6g} m, or a dx that divides {size:g} m")
+                                f"tank's walls lie on the particle lattice from its inner corner, so it is built "
+                                f"{built:.6g} m ({round(built / dx)} spacings) "
+                                f"{'long' if key == 'length' else 'wide'}{gap}; give a {key} of {n * dx:.6g} or "
+                                f"{(n + 1) * dx:.6g} m, or a dx that divides {size:g} m")
 
 
 def _warn_mjcf_world(scene, out: Built) -> None:

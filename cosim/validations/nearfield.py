@@ -232,8 +232,9 @@ def waves_scene(kind: str, h_over_dx: float, periods: float, dim: int = 2):
     H / ``h_over_dx`` (H the regular waves' height), ``periods`` (peak) periods long.
     ``dim`` 3: the same box as a channel :data:`NF_3D_ROWS` spacings wide with no side zones
     and no side walls, between symmetry planes (``domain.sides = "symmetry"``) on the
-    scene's symmetry plane at y = 0 (half of it simulated), the scene's gauges on the plane (the case reads its own along the middle of
-    the simulated half: :func:`run_scene`)."""
+    scene's symmetry plane at y = 0 (half of it simulated), the scene's gauges on the
+    plane (the case reads its own along the middle of the simulated half:
+    :func:`run_scene`)."""
     n = case_scene.number
     base = case_scene.load("nearfield-waves")
     w = base.waves
@@ -367,8 +368,8 @@ def _tolerances(metrics: dict) -> dict:
 
 @case("nearfield-waves", "regular (linear, Stokes-2) waves and a JONSWAP sea (d = 0.3 m, T = Tp = 1.2 s, H = 6 cm, "
       "Hs = 4 cm) through a 2-D SPH near-field box 1.8 wavelengths long with no body, and the Stokes-2 waves through "
-      "the same box in 3-D (a channel between symmetry planes, eight spacings wide, half of it simulated): end walls on the sea's "
-      "orbits, relaxation zones half a wavelength wide (fluid.nearfield)",
+      "the same box in 3-D (a channel between symmetry planes, eight spacings wide, half of it simulated): end "
+      "walls on the sea's orbits, relaxation zones half a wavelength wide (fluid.nearfield)",
       target="elevation at 9 gauges across the box within 5 % of the sea's height and 5 % of a period in phase over "
              "20 periods; the mean level's drift below 1 % of the depth; for the JONSWAP sea Hs and Tp within 5 % "
              "and the spectrum within 10 % over 0.7-1.5 fp",
