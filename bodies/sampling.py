@@ -4,11 +4,12 @@ Dynamic boundary particles (Barreiro et al. 2016, §2.6) fill a band ``layers ×
 inside each geom's surface (box, sphere, cylinder, capsule, ellipsoid, or a
 closed triangle mesh), on a lattice of spacing ``dx`` in the geom's own
 frame (cell-centred, so the outer layer sits half a spacing inside the surface,
-as the fluid's own particles sit inside their cells); a cylinder's cross-section is laid
-in rings instead (:func:`disc_rings`), whose cells tile the disc at every spacing. They are stored once in
-body coordinates and placed every step by the rigid transform of the body's pose,
-with velocities ``u = V + Ω × (r − r_com)`` (Barreiro et al. 2016, Eq. 13), so they never
-drift. Plain numpy, no MuJoCo: the geometry here also serves the analytic fluid.
+as the fluid's own particles sit inside their cells); a cylinder's section is laid in
+rings instead (:func:`disc_rings`), whose points carry the disc's area at every spacing.
+They are stored once in body coordinates and placed every step by the rigid transform of
+the body's pose, with velocities ``u = V + Ω × (r − r_com)`` (Barreiro et al. 2016,
+Eq. 13), so they never drift. Plain numpy, no MuJoCo: the geometry here also serves the
+analytic fluid.
 """
 
 from __future__ import annotations
