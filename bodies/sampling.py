@@ -4,12 +4,12 @@ Dynamic boundary particles (Barreiro et al. 2016, §2.6) fill a band ``layers ×
 inside each geom's surface (box, sphere, cylinder, capsule, ellipsoid, or a
 closed triangle mesh), on a lattice of spacing ``dx`` in the geom's own
 frame (cell-centred, so the outer layer sits half a spacing inside the surface,
-as the fluid's own particles sit inside their cells); a cylinder's section is laid in
-rings instead (:func:`disc_rings`), whose points carry the disc's area at every spacing.
-They are stored once in body coordinates and placed every step by the rigid transform of
-the body's pose, with velocities ``u = V + Ω × (r − r_com)`` (Barreiro et al. 2016,
-Eq. 13), so they never drift. Plain numpy, no MuJoCo: the geometry here also serves the
-analytic fluid.
+as the fluid's own particles sit inside their cells); a cylinder's section (from a
+radius of a spacing) is laid in rings instead (:func:`disc_rings`), whose points carry the
+disc's area at every spacing. They are stored once in body coordinates and placed every
+step by the rigid transform of the body's pose, with velocities ``u = V + Ω × (r − r_com)``
+(Barreiro et al. 2016, Eq. 13), so they never drift. Plain numpy, no MuJoCo: the geometry
+here also serves the analytic fluid.
 """
 
 from __future__ import annotations
@@ -265,7 +265,10 @@ def sample_geoms(geoms, dx: float, layers: int, dim: int = 3):
                 raise InputError(f"boundary particles: a planar body's geom {gi} ({g.kind}) has no axis along y; "
                                  f"2-D sampling cuts geoms by the x-z plane")
             axes[along_y[0]] = np.array([-g.pos[1] * g.rot[1, along_y[0]]])  # the y = 0 plane of the body
-        if g.kind == "cylinder" and (dim == 3 or along_y[0] == 2):  # its section a disc: rings
+        # a cylinder's section a disc: rings, from a radius of a spacing (below it a disc of
+        # two points would lie on one line through the axis, one particle across the other
+        # way, which the lattice's 2 x 2 does not)
+        if g.kind == "cylinder" and (dim == 3 or along_y[0] == 2) and size[0] >= dx:
             xy = disc_rings(size[0], dx)
             p = np.concatenate([np.column_stack([xy, np.full(len(xy), z)]) for z in axes[2]])
         else:

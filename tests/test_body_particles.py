@@ -80,6 +80,17 @@ def test_a_cylinders_layers_are_its_discs_rings_full_at_the_caps_a_band_between(
     assert sd.max() < 0 and sd.min() > -layers * dx
 
 
+@pytest.mark.parametrize("r_over_dx", [0.76, 0.8, 0.88, 0.9, 1.0, 1.2])
+def test_a_thin_cylinder_has_two_particles_across_its_section_each_way(r_over_dx):
+    """A cylinder 1.5-2.4 spacings across (what SPHFluid.MIN_PARTICLES_ACROSS admits) has at
+    least two distinct coordinates along each axis of its section: below R = dx, where rings
+    would lay two points on one line through the axis, it keeps the lattice's 2 x 2."""
+    dx = 0.1
+    p, _ = sample_geoms([GeomShape("cylinder", np.array([r_over_dx * dx, 0.3, 0.0]), np.zeros(3), I3)], dx, 3)
+    layer = p[np.abs(p[:, 2] - p[:, 2].min()) < 1e-9]
+    assert min(np.unique(np.round(layer[:, k], 9)).size for k in (0, 1)) >= 2
+
+
 def test_planar_sections_of_a_box_and_an_end_on_cylinder():
     dx = 0.05
     b = MujocoBodies(builders.scene(builders.box("box", (1.0, 0.5), (0, 0, 0), mass=1.0, planar=True),
