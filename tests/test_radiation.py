@@ -120,6 +120,31 @@ def test_the_tare_takes_the_held_bodys_force_and_waves_out_of_the_fit(monkeypatc
         radiation.radiation_metrics(_Records(t, forced), scene, _Records(t[:-1], held))
 
 
+def test_the_damping_is_also_fitted_period_by_period(monkeypatch):
+    """A force whose damping changes from one fitted period to the next (B33 1.0, 1.2, 0.9,
+    1.1, 0.8, 1.3 times the reference's, each over one whole period): each period's fit
+    gives its own B33 back, and the spread reported is their standard error of the mean."""
+    from cosim.validations import radiation
+
+    a_ref, b_ref, c33 = 4.16e4, 2.39e4, 2.77e5
+    monkeypatch.setattr(radiation, "reference", lambda *args, **kw: (a_ref, b_ref, c33))
+    scene = radiation.radiation_scene(True)
+    b, m = scene.bodies[0], scene.bodies[0].motion
+    w = 2.0 * math.pi / m.period
+    t = np.arange(1, int(round(scene.world.duration / scene.world.sample_every)) + 1) * scene.world.sample_every
+    factors = np.array([1.0, 1.2, 0.9, 1.1, 0.8, 1.3])
+    window = np.clip(np.floor((t - (t[-1] - radiation.FIT_PERIODS * m.period)) / m.period + 1e-6), 0, 5)
+    damping = b_ref * factors[window.astype(int)]
+    z, v, acc = m.amplitude * np.sin(w * t), m.amplitude * w * np.cos(w * t), -m.amplitude * w * w * np.sin(w * t)
+    forced = {f"{b.name}.fluid_Fz": 4.5e5 - c33 * z - a_ref * acc - damping * v, f"{b.name}.heave": z}
+    for i in range(len(scene.probes.gauges)):
+        forced[f"gauge{i + 1}.eta"] = 0.01 * np.cos(w * t + i)
+    got = radiation.radiation_metrics(_Records(t, forced), scene)
+    assert np.asarray(got["B33_per_period_kg_s"]) / b_ref == pytest.approx(factors, abs=1e-5)
+    spread = np.std(factors, ddof=1) / math.sqrt(factors.size)
+    assert got["B33_error_standard"] == pytest.approx(spread, rel=1e-4)
+
+
 def test_the_held_scene_is_the_forced_one_with_its_body_still():
     """The tare's scene differs from the case's only in the body's motion, which holds it at
     its position over the whole run."""

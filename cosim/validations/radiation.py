@@ -114,10 +114,29 @@ def _lines(scene) -> dict:
     return {"x": (np.flatnonzero(along_x), r[along_x]), "y": (np.flatnonzero(~along_x), r[~along_x])}
 
 
+def _damping_by_period(ts, force, amplitude: float, omega: float, stiffness: float, period: float) -> list:
+    """B33 [kg/s] fitted by :func:`added_mass_damping` over each whole ``period`` [s] of the
+    samples ``ts`` [s] from the first (windows ``[t0, t0 + period)``, each period's samples
+    once)."""
+    eps = 1e-6 * period
+    n = int((ts[-1] - ts[0]) / period + 1e-6)
+    out = []
+    for j in range(n):
+        sel = (ts >= ts[0] + j * period - eps) & (ts < ts[0] + (j + 1) * period - eps)
+        out.append(added_mass_damping(ts[sel], force[sel], amplitude, omega, stiffness)[1])
+    return out
+
+
 def radiation_metrics(res, scene, tare=None) -> dict:
     """The case's measured figures from a run's records ``res`` of ``scene``, less the
     records ``tare`` of :func:`held_scene` (the same sample times) where given; A33 and B33
-    of the forced run alone beside them (``*_untared``)."""
+    of the forced run alone beside them (``*_untared``). ``B33_per_period_kg_s``: B33 fitted
+    over each fitted period alone, and ``B33_error_standard`` their standard error of the
+    mean over B33's reference: the force's part in phase with the velocity swings from
+    period to period with what the box sends back (docs/validation/nearfield.md, "B33's
+    swing is not the ramp's"), which this sizes; the periods are not independent draws (the
+    swing's cycle is several periods), so it is an indication of the fit's spread, not a
+    confidence interval."""
     from fluid.waves import group_velocity, wavenumbers
 
     b, d = scene.bodies[0], scene.domain
@@ -138,6 +157,7 @@ def radiation_metrics(res, scene, tare=None) -> dict:
     z1 = harmonics(ts, res[f"{b.name}.heave"][fit][:, None], w)[0]
     a33, b33 = added_mass_damping(ts, less_tare(f"{b.name}.fluid_Fz"), m.amplitude, w, c33)
     a33_raw, b33_raw = added_mass_damping(ts, res[f"{b.name}.fluid_Fz"][fit], m.amplitude, w, c33)
+    per_period = _damping_by_period(ts, less_tare(f"{b.name}.fluid_Fz"), m.amplitude, w, c33, m.period)
     eta = np.column_stack([less_tare(f"gauge{i + 1}.eta") for i in range(len(scene.probes.gauges))])
     z = harmonics(ts, eta, w)
     theory = m.amplitude * w * math.sqrt(b_ref * k / (4.0 * rho * g * float(group_velocity(k, d.depth, g))))
@@ -150,6 +170,9 @@ def radiation_metrics(res, scene, tare=None) -> dict:
     return {"A33_kg": a33, "B33_kg_s": b33, "A33_ref_kg": a_ref, "B33_ref_kg_s": b_ref, "C33_N_m": c33,
             "A33_error": abs(a33 / a_ref - 1.0), "B33_error": abs(b33 / b_ref - 1.0), "tared": tare is not None,
             "A33_error_untared": abs(a33_raw / a_ref - 1.0), "B33_error_untared": abs(b33_raw / b_ref - 1.0),
+            "B33_per_period_kg_s": [round(x, 1) for x in per_period],
+            "B33_error_standard": float(np.std(per_period, ddof=1) / math.sqrt(len(per_period)) / b_ref)
+            if len(per_period) > 1 else None,
             "reflection": max(v["reflection"] for v in lines.values()), "lines": lines,
             "heave_amplitude_m": abs(z1), "kR": k * b.radius, "R_over_dx": b.radius / scene.fluid.dx,
             "draft_over_dx": draft / scene.fluid.dx, "fit_s": [float(ts[0]), t_end],
