@@ -735,7 +735,7 @@ CASES = [
     case("walls below the water", "nearfield", ("domain.height", 0.2), "domain.height",
          "0.2 m must exceed the depth 0.3 m", "NearField.height"),
     case("a body in a relaxation zone", "nearfield", ("domain.x0", 1.0), "bodies[0].pos",
-         "beyond the near field's water between its relaxation zones", "Scene.bodies[0].pos"),
+         "between its relaxation zones, of which there is none: the zones overlap", "Scene.bodies[0].pos"),
     case("a box too short for the body's motion", "nearfield", (("domain.zone", 0.5), ("domain.x0", 0.6),
                                                                  ("domain.x1", 1.8)), "bodies[0].pos",
          "the body and its reach 0.0455 m (the sea's orbit, doubled) span", "Scene.bodies[0].pos"),

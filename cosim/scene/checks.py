@@ -731,9 +731,12 @@ def _check_inside_near_field(s, dim):
             if k == 1 and s.domain.symmetry:  # the half beyond the plane y = 0 is its mirror image
                 a = max(a, lo[k])
             if a < lo[k] - 1e-9 or z > hi[k] + 1e-9:
+                water = (f"between its relaxation zones ({lo[k]:.4g} .. {hi[k]:.4g} m)" if hi[k] > lo[k] else
+                         f"between its relaxation zones, of which there is none: the zones overlap (their inner "
+                         f"edges at {lo[k]:.4g} and {hi[k]:.4g} m)")
                 raise SceneError(f"bodies[{i}].{_pos_key(b)}", f"the body and its reach {r:.3g} m (the sea's orbit, "
                                  f"doubled) span {a:.4g} .. {z:.4g} m along {'xy'[k]}, beyond the near field's water "
-                                 f"between its relaxation zones ({lo[k]:.4g} .. {hi[k]:.4g} m): a zone would pull the "
+                                 f"{water}: a zone would pull the "
                                  f"water round it towards the sea's; widen the box ({keys[k]}) or narrow the zones "
                                  f"(domain.zone), or leave them unset to be chosen")
 
