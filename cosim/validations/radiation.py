@@ -155,9 +155,10 @@ def radiation_metrics(res, scene, tare=None) -> dict:
         return res[name][fit] - (0.0 if tare is None else tare[name][fit])
 
     z1 = harmonics(ts, res[f"{b.name}.heave"][fit][:, None], w)[0]
-    a33, b33 = added_mass_damping(ts, less_tare(f"{b.name}.fluid_Fz"), m.amplitude, w, c33)
+    fz = less_tare(f"{b.name}.fluid_Fz")
+    a33, b33 = added_mass_damping(ts, fz, m.amplitude, w, c33)
     a33_raw, b33_raw = added_mass_damping(ts, res[f"{b.name}.fluid_Fz"][fit], m.amplitude, w, c33)
-    per_period = _damping_by_period(ts, less_tare(f"{b.name}.fluid_Fz"), m.amplitude, w, c33, m.period)
+    per_period = _damping_by_period(ts, fz, m.amplitude, w, c33, m.period)
     eta = np.column_stack([less_tare(f"gauge{i + 1}.eta") for i in range(len(scene.probes.gauges))])
     z = harmonics(ts, eta, w)
     theory = m.amplitude * w * math.sqrt(b_ref * k / (4.0 * rho * g * float(group_velocity(k, d.depth, g))))
