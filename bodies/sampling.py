@@ -301,6 +301,27 @@ def _section_distance(kind, size, p, axis, mesh=None):
     return signed_distance(kind, size, p)
 
 
+def _cylinder_edge_ghosts(size, p: np.ndarray, sd: np.ndarray) -> np.ndarray:
+    """Ghost offsets (n, 3) [m], geom frame, of the particles ``p`` inside a cylinder
+    (``size`` = radius, half-length) that lie as deep under its side as under an end: the
+    point reflection through the nearest point of the rim, as a box's edge (NaN rows for
+    the others). Why: there the signed distance's gradient is the bisector of the two
+    normals, which mirrors the particle only 2 d along it, inside the fluid's first layer
+    rather than beyond the corner; :func:`disc_rings` puts ring k of the k-th layer from
+    an end on such a diagonal, and with those mirrored along the bisector a cylinder
+    forced in heave radiated more than on the square lattice (docs/validation/nearfield.md,
+    "The rings raise the quick variant's B33")."""
+    r = np.hypot(p[:, 0], p[:, 1])
+    q_side, q_end = r - size[0], np.abs(p[:, 2]) - size[1]
+    tie = (sd <= 0) & (r > 0) & (np.abs(q_side - q_end) <= 1e-9 * max(size[0], size[1], 1.0))
+    out = np.full_like(p, np.nan)
+    rr = np.where(r > 0, r, 1.0)
+    edge = np.column_stack([-2.0 * q_side * p[:, 0] / rr, -2.0 * q_side * p[:, 1] / rr,
+                            -2.0 * q_end * np.sign(p[:, 2])])
+    out[tie] = edge[tie]
+    return out
+
+
 def ghost_offsets(geoms, points: np.ndarray, dim: int = 3) -> np.ndarray:
     """Vectors [m] (n, 3), body frame, from each boundary particle (``points``, body
     coordinates, e.g. from :func:`sample_geoms`) to its ghost node: its mirror image
@@ -308,11 +329,13 @@ def ghost_offsets(geoms, points: np.ndarray, dim: int = 3) -> np.ndarray:
     al. 2022, Comp. Part. Mech. 9: 911-925, §3). The particle's geom is the one it
     lies deepest in (exact for one geom and for geoms that do not overlap). A box
     reflects the particle across every face at the least depth, so that particles
-    on a corner diagonal mirror through the corner; other shapes mirror along the
-    gradient of the signed distance (radial for spheres, cylinders, capsules; for a
-    mesh the nearest face's normal, and on a tie between faces, e.g. a particle on the
-    diagonal of a mesh box's edge or corner, their bisector: mirrored 2 d along it, where
-    a box geom mirrors it through the edge or corner, 2 sqrt(2) d or 2 sqrt(3) d)."""
+    on a corner diagonal mirror through the corner; a cylinder likewise mirrors a
+    particle as deep under its side as under an end through the rim (the nearest point
+    of the rim's circle); other shapes mirror along the gradient of the signed distance
+    (radial for spheres, cylinders, capsules; for a mesh the nearest face's normal, and
+    on a tie between faces, e.g. a particle on the diagonal of a mesh box's edge or
+    corner, their bisector: mirrored 2 d along it, where a box geom mirrors it through
+    the edge or corner, 2 sqrt(2) d or 2 sqrt(3) d)."""
     points = np.asarray(points, float)
     best = np.full(len(points), np.inf)
     out = np.zeros((len(points), 3))
@@ -347,6 +370,9 @@ def ghost_offsets(geoms, points: np.ndarray, dim: int = 3) -> np.ndarray:
                 grad[:, k] = (dist(p + e) - dist(p - e)) / (2 * eps)
             norm = np.linalg.norm(grad, axis=1, keepdims=True)
             ghost_g = -2.0 * sd[:, None] * grad / np.where(norm > 0, norm, 1.0)
+            if g.kind == "cylinder" and ax != 2:
+                edge = _cylinder_edge_ghosts(size, p, sd)
+                ghost_g = np.where(np.isnan(edge), ghost_g, edge)
         take = sd < best
         best = np.where(take, sd, best)
         out[take] = ghost_g[take] @ g.rot.T  # back to the body frame
