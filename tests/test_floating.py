@@ -40,38 +40,42 @@ def test_cylinder_ghosts_are_radial_mirror_images():
     assert np.allclose(ghost[:, 0] * p[side, 1], ghost[:, 1] * p[side, 0], atol=1e-9)  # same ray
 
 
-def test_cylinder_ghosts_mirror_through_the_rim_where_side_and_end_tie():
+def test_cylinder_ghosts_mirror_across_the_side_where_side_and_end_tie():
     """R/dx = 4, half-length 2 dx: ring k of layer k from an end lies as deep (d) under the
-    side as under the end; its ghost is its point reflection through the nearest point of
-    the rim (sqrt(2) d beyond it, as a box's edge), not a mirror 2 d along the bisector.
-    The wind-turbine base's hull at the quick spacing has 76 such particles of 200."""
+    side as under the end; its ghost is its mirror image across the side (2 d out along
+    the radius, at its own height), not 2 d along the bisector of the two normals, which
+    the signed distance's gradient gives on the tie. The wind-turbine base's hull at the
+    quick spacing has 76 such particles of 200."""
     g = GeomShape("cylinder", np.array([3.0, 1.5]), np.zeros(3), I3)
     p, _ = sample_geoms([g], 0.75, 2, dim=3)
     r = np.hypot(p[:, 0], p[:, 1])
     d_side, d_end = 3.0 - r, 1.5 - np.abs(p[:, 2])
-    tie = np.isclose(d_side, d_end, rtol=0, atol=1e-12)
+    tie = np.isclose(d_side, d_end, rtol=0, atol=1e-9)  # the rings' radii carry round-off
     assert tie.sum() == 76
-    o = ghost_offsets([g], p)
-    mid = p + o / 2  # a point reflection's centre
-    np.testing.assert_allclose(np.hypot(mid[tie, 0], mid[tie, 1]), 3.0, atol=1e-12)
-    np.testing.assert_allclose(np.abs(mid[tie, 2]), 1.5, atol=1e-12)
-    np.testing.assert_allclose(np.linalg.norm(o[tie], axis=1), 2 * np.sqrt(2) * d_side[tie], rtol=1e-12)
-    side = ~tie & (d_side < d_end)  # the rest mirror across the nearest face alone
-    np.testing.assert_allclose(np.hypot(*(p + o)[side, :2].T), 6.0 - r[side], atol=1e-6)
-    np.testing.assert_allclose((p + o)[side, 2], p[side, 2], atol=1e-6)
+    ghost = p + ghost_offsets([g], p)
+    side = tie | (d_side < d_end)
+    np.testing.assert_allclose(np.hypot(ghost[side, 0], ghost[side, 1]), 6.0 - r[side], atol=1e-6)
+    np.testing.assert_allclose(ghost[side, 2], p[side, 2], atol=1e-6)
+    np.testing.assert_allclose(ghost[side, 0] * p[side, 1], ghost[side, 1] * p[side, 0], atol=1e-9)  # same ray
+    end = ~tie & (d_end < d_side)
+    np.testing.assert_allclose(ghost[end, :2], p[end, :2], atol=1e-6)
+    np.testing.assert_allclose(np.abs(ghost[end, 2]), 3.0 - np.abs(p[end, 2]), atol=1e-6)
 
 
-def test_a_lying_cylinders_section_mirrors_as_a_box_of_that_section():
-    """In a 2-D scene a cylinder lying along x is cut to a rectangle; its ghost nodes are
-    those of a box of that section, through the corners included."""
+def test_a_lying_cylinders_section_mirrors_its_corners_across_the_side():
+    """In a 2-D scene a cylinder lying along x is cut to a rectangle: its ghost nodes are
+    those of a box of that section but at the corners' diagonals, which mirror across the
+    cylinder's side (here z = +-R) where the box mirrors them through the corner."""
     along_x = np.array([[0.0, 0.0, 1.0], [0.0, 1.0, 0.0], [-1.0, 0.0, 0.0]])  # geom z along body x
     cyl = GeomShape("cylinder", np.array([0.3, 0.5]), np.zeros(3), along_x)
     box = GeomShape("box", np.array([0.5, 0.3, 0.3]), np.zeros(3), I3)
     p, _ = sample_geoms([cyl], 0.05, 3, dim=2)
     oc, ob = ghost_offsets([cyl], p, 2), ghost_offsets([box], p, 2)
-    corner = np.argmin(np.linalg.norm(p - [-0.475, 0.0, -0.275], axis=1))
-    np.testing.assert_allclose((p + ob)[corner], [-0.525, 0.0, -0.325], atol=1e-12)
-    np.testing.assert_allclose(oc, ob, atol=1e-6)
+    corner = np.isclose(0.5 - np.abs(p[:, 0]), 0.3 - np.abs(p[:, 2]), rtol=0, atol=1e-12)
+    assert corner.sum() == 12  # three on each corner's diagonal
+    np.testing.assert_allclose(oc[~corner], ob[~corner], atol=1e-6)
+    np.testing.assert_allclose(oc[corner, 0], 0.0, atol=1e-12)
+    np.testing.assert_allclose((p + oc)[corner, 2], np.sign(p[corner, 2]) * 0.6 - p[corner, 2], atol=1e-12)
 
 
 @pytest.mark.parametrize("dim", [2, 3])
