@@ -306,12 +306,12 @@ def _cylinder_rim_ghosts(size, p: np.ndarray, sd: np.ndarray) -> np.ndarray:
     (``size`` = radius, half-length) that lie as deep under its side as under an end: their
     mirror images across the side (NaN rows for the others). Why: on that tie the signed
     distance's gradient is the bisector of the two normals, and :func:`disc_rings` puts
-    ring k of the k-th layer from an end on it (76 of the 200 particles of a cylinder with
-    R = 4 dx and a draft of 2 dx). Mirrored along the bisector, or through the rim as a
-    box's edge, those ghosts made a cylinder forced in heave radiate 15-20 % more than on
-    the square lattice, whose particles there lay nearer the side and mirrored across it;
-    mirrored across the side they radiate as the lattice's did
-    (docs/validation/nearfield.md, "The rings' ghost nodes at the rim")."""
+    ring k of the k-th layer from an end on it (76 of the 200 particles of the wind-turbine
+    base's hull at R = 4 dx). Mirrored along the bisector, or through the rim as a box's
+    edge, those ghosts made the hull forced in heave radiate more than on the square
+    lattice, whose particles there lay nearer the side and mirrored across it; mirrored
+    across the side they radiate as the lattice's did (docs/validation/nearfield.md, "The
+    rings' ghost nodes at the rim")."""
     r = np.hypot(p[:, 0], p[:, 1])
     q_side, q_end = r - size[0], np.abs(p[:, 2]) - size[1]
     tie = (sd <= 0) & (r > 0) & (np.abs(q_side - q_end) <= 1e-9 * max(size[0], size[1], 1.0))
@@ -331,11 +331,10 @@ def ghost_offsets(geoms, points: np.ndarray, dim: int = 3) -> np.ndarray:
     reflects the particle across every face at the least depth, so that particles
     on a corner diagonal mirror through the corner; a cylinder mirrors a particle as
     deep under its side as under an end across the side; other shapes mirror along the
-    gradient of the signed distance
-    (radial for spheres, cylinders, capsules; for a mesh the nearest face's normal, and
-    on a tie between faces, e.g. a particle on the diagonal of a mesh box's edge or
-    corner, their bisector: mirrored 2 d along it, where a box geom mirrors it through
-    the edge or corner, 2 sqrt(2) d or 2 sqrt(3) d)."""
+    gradient of the signed distance (radial for spheres, cylinders, capsules; for a mesh
+    the nearest face's normal, and on a tie between faces, e.g. a particle on the
+    diagonal of a mesh box's edge or corner, their bisector: mirrored 2 d along it, where
+    a box geom mirrors it through the edge or corner, 2 sqrt(2) d or 2 sqrt(3) d)."""
     points = np.asarray(points, float)
     best = np.full(len(points), np.inf)
     out = np.zeros((len(points), 3))
