@@ -301,24 +301,23 @@ def _section_distance(kind, size, p, axis, mesh=None):
     return signed_distance(kind, size, p)
 
 
-def _cylinder_rim_ghosts(size, p: np.ndarray, sd: np.ndarray) -> np.ndarray:
-    """Ghost offsets (n, 3) [m], geom frame, of the particles ``p`` inside a cylinder
-    (``size`` = radius, half-length) that lie as deep under its side as under an end: their
-    mirror images across the side (NaN rows for the others). Why: on that tie the signed
-    distance's gradient is the bisector of the two normals, and :func:`disc_rings` puts
-    ring k of the k-th layer from an end on it (76 of the 200 particles of the wind-turbine
-    base's hull at R = 4 dx). Mirrored along the bisector, or through the rim as a box's
-    edge, those ghosts made the hull forced in heave radiate more than on the square
-    lattice, whose particles there lay nearer the side and mirrored across it; mirrored
-    across the side they radiate as the lattice's did (docs/validation/nearfield.md, "The
-    rings' ghost nodes at the rim")."""
+def _cylinder_rim_ghosts(size, p: np.ndarray, sd: np.ndarray, ghost: np.ndarray) -> np.ndarray:
+    """The ghost offsets ``ghost`` (n, 3) [m], geom frame, of the particles ``p`` in a
+    cylinder (``size`` = radius, half-length; ``sd`` their signed distances), with those of
+    the particles as deep under its side as under an end replaced by their mirror images
+    across the side. Why: on that tie the signed distance's gradient is the bisector of
+    the two normals, and :func:`disc_rings` puts ring k of the k-th layer from an end on it
+    (76 of the 200 particles of the wind-turbine base's hull at R = 4 dx). Mirrored along
+    the bisector, or through the rim as a box's edge, those ghosts made the hull forced in
+    heave radiate more than on the square lattice, whose particles there lay nearer the
+    side and mirrored across it; mirrored across the side they radiate as the lattice's did
+    (docs/validation/nearfield.md, "The rings' ghost nodes at the rim")."""
     r = np.hypot(p[:, 0], p[:, 1])
     q_side, q_end = r - size[0], np.abs(p[:, 2]) - size[1]
     tie = (sd <= 0) & (r > 0) & (np.abs(q_side - q_end) <= 1e-9 * max(size[0], size[1], 1.0))
-    out = np.full_like(p, np.nan)
-    rr = np.where(r > 0, r, 1.0)
-    side = np.column_stack([-2.0 * q_side * p[:, 0] / rr, -2.0 * q_side * p[:, 1] / rr, np.zeros(len(p))])
-    out[tie] = side[tie]
+    out = ghost.copy()
+    out[tie, :2] = -2.0 * q_side[tie, None] * p[tie, :2] / r[tie, None]
+    out[tie, 2] = 0.0
     return out
 
 
@@ -370,8 +369,7 @@ def ghost_offsets(geoms, points: np.ndarray, dim: int = 3) -> np.ndarray:
             norm = np.linalg.norm(grad, axis=1, keepdims=True)
             ghost_g = -2.0 * sd[:, None] * grad / np.where(norm > 0, norm, 1.0)
             if g.kind == "cylinder" and ax != 2:
-                rim = _cylinder_rim_ghosts(size, p, sd)
-                ghost_g = np.where(np.isnan(rim), ghost_g, rim)
+                ghost_g = _cylinder_rim_ghosts(size, p, sd, ghost_g)
         take = sd < best
         best = np.where(take, sd, best)
         out[take] = ghost_g[take] @ g.rot.T  # back to the body frame
