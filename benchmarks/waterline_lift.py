@@ -4,17 +4,19 @@ its sides and in the far water.
 
 A body that pierces the free surface is lifted by a force of the order of rho g h^2 per
 metre of waterline (docs/benchmarks/wind_turbine_static.md, "The kernel's width"); it is
-what keeps the wind-turbine base's draft short of hydrostatics. The box (B = 0.2 m wide,
-0.2 m high, its centre on the still level of a tank 1.2 m long and 0.3 m deep, mDBC
-body, the wave set-up) is held still for ``--duration`` s; the mean of its ``fluid_Fz``
-over the second half is set against rho g B (d + eta), eta the mean level at two gauges
-0.45 m from it. ``--oracle`` sets the body's mDBC densities of some particles to rho0 after
-each correction (a probe, not a model): ``shepard``, those whose ghost node took the
-Shepard fallback (too few fluid neighbours, above the water); ``above``, every body
-particle above the still level. Per height band [dx] it prints the side particles' mean
-pressure and the far water's (``|x - xc| > 0.3 m``), over rho g dx, from snapshots every
-0.02 s over the run's last third. Figures: docs/validation/nearfield.md, "The still draft's
-window, and where the lift over the waterline sits".
+what keeps the wind-turbine base's draft short of hydrostatics. The box (B = 0.2 m wide, 0.2
+m high, its centre on the still level of a tank 1.2 m long and 0.3 m deep, mDBC body, the
+wave set-up) is held still for ``--duration`` s; the mean of its ``fluid_Fz`` over the
+second half is set against rho g B (d + eta), eta the mean level at two gauges 0.45 m from
+it. ``--oracle`` sets the body's mDBC densities of some particles to rho0 after each
+correction (a probe, not a model): ``shepard``, those whose ghost node took the Shepard
+fallback (too few fluid neighbours, above the water); ``above``, every body particle above
+the still level. It prints the water's volume (sum m / rho above the box's bottom) missing
+from the 12 lattice columns beside each face against the far columns' (whether the lift is a
+gap in the water), and per height band [dx] the side particles' mean pressure and the far
+water's (``|x - xc| > 0.3 m``), over rho g dx, from snapshots every 0.02 s over the run's
+last third. Figures: docs/validation/nearfield.md, "The still draft's window, and where the
+lift over the waterline sits".
 
     python benchmarks/waterline_lift.py [--dx 0.02] [--h-coef 2] [--oracle none|shepard|above]
 """
@@ -50,7 +52,8 @@ def _oracle(kind: str) -> None:
 
 
 def held_box(dx: float, h_coef: float, duration: float) -> dict:
-    """The held box's vertical force over Archimedes' and the pressure bands (module docstring)."""
+    """The held box's vertical force over Archimedes', the water missing beside it and the
+    pressure bands (module docstring)."""
     from cosim.scene import SPH, Box, Probes, Scene, Tank, World
     from cosim.scene.build import build
     from cosim.scene.spec import ForcedTable
@@ -71,6 +74,7 @@ def held_box(dx: float, h_coef: float, duration: float) -> dict:
     edges = np.arange(-6, 5) * dx
     nb = len(edges) - 1
     side_p, far_p, side_n, far_n = np.zeros(nb), np.zeros(nb), np.zeros(nb), np.zeros(nb)
+    gap = []  # the water missing beside the box [m^2], against the far water's columns
     fz, eta = [], []
     times = np.arange(0.5 * duration, duration + 1e-9, 0.01)
     b.coupler.run(times[0])
@@ -86,6 +90,10 @@ def held_box(dx: float, h_coef: float, duration: float) -> dict:
         side = (ps.kind != Kind.FLUID) & (np.abs(x) < 0.5 * B) & (np.abs(x) > 0.5 * B - 2.0 * h_coef * dx)
         far = (ps.kind == Kind.FLUID) & (np.abs(x) > 0.3) & (np.abs(x) < 0.5 * LENGTH - 0.1)
         band = np.digitize(z, edges) - 1
+        water = (ps.kind == Kind.FLUID) & (z > -DRAFT)
+        vol, off = ps.mass / ps.rho, np.abs(x) - 0.5 * B
+        near, away = water & (off < 12 * dx), water & (off > 0.2) & (off < 0.4)
+        gap.append(0.5 * (vol[away].sum() / 0.4 * 24 * dx - vol[near].sum()))
         for j in range(nb):
             s_sel, f_sel = side & (band == j), far & (band == j)
             side_p[j] += p[s_sel].sum()
@@ -94,8 +102,8 @@ def held_box(dx: float, h_coef: float, duration: float) -> dict:
             far_n[j] += f_sel.sum()
     level = float(np.mean(eta))
     return {"lift": float(np.mean(fz)) / (RHO * G * B * (DRAFT + level)), "eta_m": level, "edges": edges,
-            "side_p": side_p / np.maximum(side_n, 1), "far_p": far_p / np.maximum(far_n, 1), "steps": int(b.coupler.steps),
-            "cpu_s": time.process_time() - cpu}
+            "gap_dx2": float(np.mean(gap)) / dx ** 2, "side_p": side_p / np.maximum(side_n, 1),
+            "far_p": far_p / np.maximum(far_n, 1), "steps": int(b.coupler.steps), "cpu_s": time.process_time() - cpu}
 
 
 def main(argv=None) -> None:
@@ -110,6 +118,8 @@ def main(argv=None) -> None:
     r = held_box(a.dx, a.h_coef, a.duration)
     print(f"dx = {a.dx} m, h = {a.h_coef:g} dx, oracle {a.oracle}: Fz / (rho g B (d + eta)) = {r['lift']:.4f} "
           f"(eta {1e3 * r['eta_m']:+.2f} mm; {r['steps']} steps, {r['cpu_s']:.0f} CPU s)")
+    print(f"the water beside each face (12 columns) lacks {r['gap_dx2']:+.4f} dx^2 of the far columns' volume "
+          f"(a gap carrying the lift would be about {0.1 * a.h_coef ** 2:.2f} dx^2)")
     print("| z above the still level [dx] | the body's side: p / (rho g dx) | the far water's |")
     print("|---|---|---|")
     e = r["edges"] / a.dx
