@@ -110,7 +110,9 @@ def main(argv=None) -> None:
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     p.add_argument("--dx", type=float, default=0.02, help="particle spacing [m] (the draft is 0.1 m)")
     p.add_argument("--h-coef", type=float, default=2.0, help="h / dx (the wave set-up's is 2)")
-    p.add_argument("--oracle", choices=("none", "shepard", "above"), default="none")
+    p.add_argument("--oracle", choices=("none", "shepard", "above"), default="none",
+                   help="body particles given rho0 after each mDBC pass (a probe): none; those whose ghost took "
+                        "the Shepard fallback; those above the still level")
     p.add_argument("--duration", type=float, default=2.0, help="simulated time [s]")
     a = p.parse_args(argv)
     if a.oracle != "none":
