@@ -12,9 +12,9 @@ it. ``--oracle`` sets the body's mDBC densities of some particles to rho0 after 
 correction (a probe, not a model): ``shepard``, those whose ghost node took the Shepard
 fallback (too few fluid neighbours, above the water); ``above``, every body particle above
 the still level. It prints the water's volume (sum m / rho above the box's bottom) missing
-from the 12 lattice columns beside each face against the far columns' (whether the lift is a
+from the :data:`NEAR_COLUMNS` lattice columns beside each face against the far columns' (whether the lift is a
 gap in the water), and per height band [dx] the side particles' mean pressure and the far
-water's (``|x - xc| > 0.3 m``), over rho g dx, from snapshots every 0.02 s over the run's
+water's (:data:`FAR`), over rho g dx, from snapshots every 0.02 s over the run's
 last third. Figures: docs/validation/nearfield.md, "The still draft's window, and where the
 lift over the waterline sits".
 
@@ -30,6 +30,10 @@ import numpy as np
 
 B, HEIGHT, DRAFT, DEPTH, LENGTH = 0.2, 0.2, 0.1, 0.3, 1.2
 RHO, G = 1000.0, 9.81
+#: the far water: |x - xc| within these [m] (clear of the box's kernel and of the tank's walls)
+FAR = (0.3, 0.5)
+#: lattice columns beside each face whose water is set against the far water's
+NEAR_COLUMNS = 12
 
 
 def _oracle(kind: str) -> None:
@@ -88,12 +92,12 @@ def held_box(dx: float, h_coef: float, duration: float) -> dict:
         z, x = ps.pos[:, -1] - DEPTH, ps.pos[:, 0] - xc
         p = (ps.rho - RHO) * c0 ** 2 / (RHO * G * dx)
         side = (ps.kind != Kind.FLUID) & (np.abs(x) < 0.5 * B) & (np.abs(x) > 0.5 * B - 2.0 * h_coef * dx)
-        far = (ps.kind == Kind.FLUID) & (np.abs(x) > 0.3) & (np.abs(x) < 0.5 * LENGTH - 0.1)
+        far = (ps.kind == Kind.FLUID) & (np.abs(x) > FAR[0]) & (np.abs(x) < FAR[1])
         band = np.digitize(z, edges) - 1
-        water = (ps.kind == Kind.FLUID) & (z > -DRAFT)
-        vol, off = ps.mass / ps.rho, np.abs(x) - 0.5 * B
-        near, away = water & (off < 12 * dx), water & (off > 0.2) & (off < 0.4)
-        gap.append(0.5 * (vol[away].sum() / 0.4 * 24 * dx - vol[near].sum()))
+        vol, above_bottom = ps.mass / ps.rho, z > -DRAFT
+        near = (ps.kind == Kind.FLUID) & above_bottom & (np.abs(x) - 0.5 * B < NEAR_COLUMNS * dx)
+        far_per_m = vol[far & above_bottom].sum() / (2.0 * (FAR[1] - FAR[0]))  # both sides
+        gap.append(far_per_m * NEAR_COLUMNS * dx - 0.5 * vol[near].sum())
         for j in range(nb):
             s_sel, f_sel = side & (band == j), far & (band == j)
             side_p[j] += p[s_sel].sum()
@@ -120,7 +124,8 @@ def main(argv=None) -> None:
     r = held_box(a.dx, a.h_coef, a.duration)
     print(f"dx = {a.dx} m, h = {a.h_coef:g} dx, oracle {a.oracle}: Fz / (rho g B (d + eta)) = {r['lift']:.4f} "
           f"(eta {1e3 * r['eta_m']:+.2f} mm; {r['steps']} steps, {r['cpu_s']:.0f} CPU s)")
-    print(f"the water beside each face (12 columns) lacks {r['gap_dx2']:+.4f} dx^2 of the far columns' volume "
+    print(f"the water beside each face ({NEAR_COLUMNS} columns) lacks {r['gap_dx2']:+.4f} dx^2 of the far "
+          f"columns' volume "
           f"(a gap carrying the lift would be about {0.1 * a.h_coef ** 2:.2f} dx^2)")
     print("| z above the still level [dx] | the body's side: p / (rho g dx) | the far water's |")
     print("|---|---|---|")
