@@ -232,3 +232,45 @@ def test_floating_validations_full(name):
 
     r = run(name, quick=False)
     assert r["passed"], r["metrics"]
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_mdbc_ghosts_above_the_free_surface_carry_the_airs_pressure(dim):
+    """A vertical wall (x < 0) beside water to depth D whose density grows downward: a wall
+    particle whose ghost node lies above the water by more than a spacing gets rho0 (the
+    air's pressure; ``fluid.terms.mdbc_in_air``, diagnostic 2), one whose ghost lies deeper
+    than the kernel's support below the surface gets the water's density there (above
+    rho0), as a submerged wall does."""
+    dx, h, depth = 0.01, 0.02, 0.1
+    lo, hi = np.zeros(dim), np.full(dim, 0.1)
+    hi[-1] = depth
+    water = block(lo, hi, dx)
+    wlo, whi = lo.copy(), hi.copy()
+    wlo[0], whi[0], whi[-1] = -0.04, 0.0, depth + 0.05
+    wall = block(wlo, whi, dx)
+    pos = np.concatenate([water, wall])
+    n = len(pos)
+    kind = np.r_[np.zeros(len(water), np.int8), np.full(len(wall), Kind.FIXED_WALL, np.int8)]
+    rho = 1000.0 + 10.0 * (depth - pos[:, -1]) / depth
+    rho[kind != 0] = 1000.0
+    ps = ParticleSet(pos=pos, vel=np.zeros_like(pos), rho=rho, mass=np.full(n, 1000.0 * dx**dim), kind=kind,
+                     group=np.where(kind == 0, -1, 0).astype(np.int32), ids=np.arange(n, dtype=np.int64),
+                     p=np.zeros(n))
+    grid = Grid.covering(wlo - 0.05, whi + 0.05, 2 * h)
+    perm, start, _ = sort_by_cell(ps.pos, grid)
+    ps.permute(perm)
+    m = MDBC(dim, h, 1000.0, "wendland", n)
+    w = ps.kind != 0
+    off = np.zeros((w.sum(), dim))
+    off[:, 0] = -2.0 * ps.pos[w, 0]  # mirrored across x = 0, at the particle's own height
+    m.set_offsets(ps.ids[w], off)
+    m(ps, start, grid)
+    inner = np.ones(n, bool) if dim == 2 else (ps.pos[:, 1] > 2 * h) & (ps.pos[:, 1] < 0.1 - 2 * h)
+    z = ps.pos[:, -1]
+    air = w & inner & (z > depth + dx)
+    under = w & inner & (z < depth - 2 * h) & (z > 2 * h)
+    assert air.sum() > 0 and under.sum() > 0
+    assert (ps.rho[air] == 1000.0).all() and (m.low_order[air] == 2).all()
+    exact = 1000.0 + 10.0 * (depth - z[under]) / depth
+    assert np.max(np.abs(ps.rho[under] - exact)) < 0.05
+    assert (m.low_order[under] == 0).all()
