@@ -219,12 +219,7 @@ def test_sinking_cylinder_quick():
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("name", [
-    "floating-box-draft", "floating-heave-period",
-    pytest.param("sinking-cylinder", marks=pytest.mark.xfail(
-        reason="measured -11.9 % at dx = 0.05 m against the added-mass + buoyancy model (target 10 %), "
-               "which itself omits the added mass growing with submergence; Fekken's curves not found")),
-])
+@pytest.mark.parametrize("name", ["floating-box-draft", "floating-heave-period", "sinking-cylinder"])
 def test_floating_validations_full(name):
     """Full resolution: 2-D and 3-D drafts within 2 % of the height, heave period
     within 10 %, sinking-cylinder velocity within 10 % of the model (minutes each)."""
