@@ -27,18 +27,13 @@ with no fluid near it gives rho0. The result is clamped below at rho0: a free
 surface holds no tension, and a wall that pulled fluid would glue it to the body
 (the same clamp as the plain dynamic boundaries of ``fluid.integrator``).
 
-A ghost node above the free surface is in the air, and its particle carries the air's
-pressure (rho0): the test is the one by which ``fluid.probes.surface_elevation`` places the
-surface, the fluid filling less than half the kernel's room the boundary particles leave
-(``fluid.terms.mdbc_in_air``; the boundary share summed with nominal volumes m/rho0, so
-that the loop reads no density it is writing). Extrapolated from the water below, as
-above, a body's particles up to a few spacings over the waterline would push the
-surface's water down and lift the body (docs/validation/nearfield.md, "The still draft's
-window, and where the lift over the waterline sits").
-
+A ghost node outside the fluid's surface is in the air and its particle takes rho0, the
+air's pressure (``fluid.terms.mdbc_in_air``: the fluid fills less than half the kernel's
+room the boundary particles leave, ``fluid.probes.surface_elevation``'s test); extrapolated
+from the water below, a body's particles over the waterline would lift it
+(docs/validation/nearfield.md, "mDBC's ghost nodes in the air carry the air's pressure").
 With the boundary particles half a spacing inside the geometric surface (as
-``bodies.sampling`` places them) the fluid then rests half a spacing outside it:
-the wall sits where the geometry says.
+``bodies.sampling`` places them) the fluid rests half a spacing outside it.
 
 This module only sets boundary densities before a rate evaluation (hook
 ``Fluid.boundary_correction``); the pair loop is unchanged.

@@ -498,7 +498,7 @@ def mdbc_in_air(fluid_share, boundary_share):
     ``fluid.probes.surface_elevation`` places the surface). A boundary particle whose ghost
     is in the air carries the air's pressure (rho0): extrapolated from the water below, it
     would push the surface's water down and lift the body (docs/validation/nearfield.md,
-    "The still draft's window, and where the lift over the waterline sits")."""
+    "mDBC's ghost nodes in the air carry the air's pressure")."""
     return 2.0 * fluid_share + boundary_share < 1.0
 
 
