@@ -27,13 +27,9 @@ with no fluid near it gives rho0. The result is clamped below at rho0: a free
 surface holds no tension, and a wall that pulled fluid would glue it to the body
 (the same clamp as the plain dynamic boundaries of ``fluid.integrator``).
 
-A ghost node outside the fluid's surface is in the air and its particle takes rho0, the
-air's pressure (``fluid.terms.mdbc_in_air``: the fluid fills less than half the kernel's
-room the boundary particles leave, ``fluid.probes.surface_elevation``'s test); extrapolated
-from the water below, a body's particles over the waterline would lift it
-(docs/validation/nearfield.md, "mDBC's ghost nodes in the air carry the air's pressure").
 With the boundary particles half a spacing inside the geometric surface (as
-``bodies.sampling`` places them) the fluid rests half a spacing outside it.
+``bodies.sampling`` places them) the fluid then rests half a spacing outside it:
+the wall sits where the geometry says.
 
 This module only sets boundary densities before a rate evaluation (hook
 ``Fluid.boundary_correction``); the pair loop is unchanged.
@@ -65,7 +61,7 @@ def mdbc_density(pos, rho, mass, kind, ids, offset, start, lo, inv_cell, nx, ny,
     node [m], (max id + 1, dim)) is non-zero from the fluid at its ghost node (see
     module docstring). Particles sorted by cell (``start``); ``lo`` has 3
     components (y = 0, ``ny = 1`` in 2-D). ``n_low[i]`` is set to 1 where the
-    Shepard fallback was taken, 2 where the ghost node is in the air (for diagnostics)."""
+    Shepard fallback was taken (for diagnostics)."""
     n, dim = pos.shape
     three = dim == 3
     zc = dim - 1
@@ -90,13 +86,14 @@ def mdbc_density(pos, rho, mass, kind, ids, offset, start, lo, inv_cell, nx, ny,
         row = np.empty(4)  # the weights V W, V grad W (solver order: x, z or x, y, z)
         col = np.empty(4)  # 1 and r_jg (same order)
         col[0] = 1.0
-        sb = 0.0  # the boundary particles' share of the kernel (their nominal volumes: no race)
         cx, cy, cz = cell_coords(gx, gy, gz, lo, inv_cell, True, nx, ny, nz)
         for dz in range(-reach, reach + 1):
             for kk in range(dys):
                 dy = kk - reach if three else 0
                 j0, j1 = row_range(cx, cy, cz, dy, dz, nx, ny, nz, start, reach)
                 for j in range(j0, j1):
+                    if kind[j] != 0:
+                        continue
                     rx = pos[j, 0] - gx
                     ry = pos[j, 1] - gy if three else 0.0
                     rz = pos[j, zc] - gz
@@ -104,16 +101,10 @@ def mdbc_density(pos, rho, mass, kind, ids, offset, start, lo, inv_cell, nx, ny,
                     if r2 >= R2:
                         continue
                     q = math.sqrt(r2) / h
-                    if kind[j] != 0:
-                        sb += mass[j] / rho0 * w_value(kernel, q, ad)
-                        continue
                     V = mass[j] / rho[j]
                     VF = -V * grad_factor(kernel, q, ad, h)  # grad_g W(r_g - r_j) = F (r_g - r_j) = -F r_jg
                     terms.cpu.mdbc_add_neighbour(A, bv, row, col, m, V, w_value(kernel, q, ad), VF, rx, ry, rz,
                                                  rho[j], three)
-        if terms.cpu.mdbc_in_air(A[0, 0], sb):
-            rho[i], n_low[i] = rho0, 2
-            continue
         rho[i], n_low[i] = terms.cpu.mdbc_extrapolate(A, bv, m, o, dim, det_min, rho0)
 
 

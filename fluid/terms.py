@@ -491,17 +491,6 @@ def mdbc_add_neighbour(A, bv, row, col, m, V, w, VF, rx, ry, rz, rhoj, three):
         bv[a] += row[a] * rhoj
 
 
-def mdbc_in_air(fluid_share, boundary_share):
-    """Whether an mDBC ghost node lies above the free surface: the fluid fills less than
-    half the kernel's room that the walls and bodies leave, ``f < (1 - s) / 2`` with ``f``
-    the fluid's ``sum V W`` and ``s`` the boundary particles' (the test by which
-    ``fluid.probes.surface_elevation`` places the surface). A boundary particle whose ghost
-    is in the air carries the air's pressure (rho0): extrapolated from the water below, it
-    would push the surface's water down and lift the body (docs/validation/nearfield.md,
-    "mDBC's ghost nodes in the air carry the air's pressure")."""
-    return 2.0 * fluid_share + boundary_share < 1.0
-
-
 def mdbc_extrapolate(A, bv, m, o, dim, det_min, rho0):
     """``(rho_b, low)``: the boundary particle's density [kg/m^3] from its ghost node's system
     (English et al. 2022, Eq. 12-13, :func:`mdbc_add_neighbour`), ``rho_g + (r_b - r_g) .
@@ -590,8 +579,8 @@ TERMS = ("kernel_w", "kernel_grad_shape", "kernel_grad_scale", "tait", "tait_pre
          "support_volume", "artificial_viscosity", "wall_viscosity", "momentum", "laminar_viscosity",
          "viscous_bound", "xsph_weight", "adami_pressure", "surface_fade", "adami_wall_pressure", "continuity_rate",
          "acceleration", "viscous_speed", "fickian_weight", "symmetric_min_eigenvalue", "fickian_shift",
-         "renormalised_gradient", "det4", "solve_in_place", "mls_moments", "mls_solve", "mdbc_add_neighbour",
-         "mdbc_in_air", "mdbc_extrapolate", "wall_clamped", "predictor_density", "predictor_component",
+         "renormalised_gradient", "det4", "solve_in_place", "mls_moments", "mls_solve",
+         "mdbc_add_neighbour", "mdbc_extrapolate", "wall_clamped", "predictor_density", "predictor_component",
          "corrector_density", "corrector_component", "verlet_density", "verlet_component", "particle_load")
 _OPTS = dict(fastmath=True, cache=True, error_model="numpy")
 #: the terms compiled for the CPU loops (numba.njit; LLVM inlines them), and for the

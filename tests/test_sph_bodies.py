@@ -80,9 +80,7 @@ def test_momentum_exchange_validation_quick():
     assert m["fluid_first"]["linear_drift"] < 1e-12 and m["fluid_first"]["angular_drift"] < 1e-12
     assert m["explicit"]["linear_drift"] > 1e-9
     vx, w = m["fluid_first"]["body_vx_m_s"], m["fluid_first"]["body_omega_rad_s"]
-    # the exchange took place, so the drifts above are not those of a body that missed the water:
-    # the box gave the water a good part of its momentum (measured: it keeps 0.52 of its speed) and spins
-    assert vx[1] < 0.75 * vx[0] and abs(w[1]) > 0.1
+    assert vx[1] < 0.5 * vx[0] and abs(w[1]) > 0.1  # the water slowed the box and spun it
 
 
 def test_a_body_fewer_than_two_particles_across_is_refused_before_any_work():

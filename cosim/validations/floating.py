@@ -138,11 +138,9 @@ def floating_box_draft(quick: bool) -> dict:
     spacing uncertain at a wave crest, averaged over columns and time).
 
     Measured (``cosim validate floating-box-draft [--quick]``, see the record):
-    quick 2-D 500 at 12.5 mm: -0.9 % of the height (plain DBC: -0.4 %); full: 2-D
-    500 and 800 at 5 mm -0.15 % and -0.14 %, 3-D 500 at 12.5 mm -1.40 % (two rows
-    in the draft) and 3-D 800 at 10 mm -0.71 % (13 min of CPU in all; -1.3, -0.20,
-    -0.19, -1.86 and -0.90 % before the body particles whose mDBC ghost node is in
-    the air took rho0, ``fluid.boundary_correction``). Released
+    quick 2-D 500 at 12.5 mm: -1.3 % of the height (plain DBC: -0.4 %); full: 2-D
+    500 and 800 at 5 mm -0.20 % and -0.19 %, 3-D 500 at 12.5 mm -1.86 % (two rows
+    in the draft) and 3-D 800 at 10 mm -0.90 % (13 min of CPU in all). Released
     one spacing above the equilibrium instead (``benchmarks/floating_box_sph.py``,
     1.5 s), the error is -3.1 % with mDBC and -6.5 % with plain DBC at 12.5 mm,
     -1.6 % and -2.2 % at 6.25 mm: plain DBC keeps the density the fluid gave its
@@ -344,12 +342,12 @@ def sinking_cylinder_case(quick: bool) -> dict:
     fluid removed around the circle leaves the first fluid particles 0.5 ... 1.2
     spacings from the surface (a circle cannot lie on the lattice) at release.
 
-    Measured (``cosim validate sinking-cylinder [--quick]``): velocity ratio 0.887
-    (-11.3 %) at dx = 0.1 m and 0.902 (-9.8 %) at dx = 0.05 m: the full variant
-    meets the 10 % target against this model by a small margin, converging towards it
-    (-15.0 and -11.9 % before the body's particles whose mDBC ghost node is in the air
-    took rho0, ``fluid.boundary_correction``). Trajectory at dx = 0.05 m: the
-    record's ``trajectory``.
+    Measured (``cosim validate sinking-cylinder [--quick]``): velocity ratio 0.850
+    (-15.0 %) at dx = 0.1 m and 0.881 (-11.9 %) at dx = 0.05 m: the full variant
+    misses the 10 % target against this model, converging towards it; v(0.2 s) =
+    0.66, 0.71 m/s against the model's 0.79 m/s. Trajectory at dx = 0.05 m: depth
+    0.39 m and 1.31 m/s at 0.5 s, 0.74 m and 1.44 m/s at 0.75 s, 1.09 m and 1.36 m/s
+    at 1 s.
     """
     dx, t_end = SINKING_RUN[quick]
     t, s, v, coupler, fluid = sinking_cylinder(dx, t_end)

@@ -956,7 +956,6 @@ def k_mdbc(P, rho, mass, kind, ids, goff, id_lo, n, start, lo, inv_cell, nx, ny,
             for k in range(4):
                 A[a, k] = 0.0
         col[0] = 1.0
-        sb = 0.0  # the boundary particles' share of the kernel (nominal volumes)
         cx, cy, cz = cell_coords(gx, gy, gz, lo, inv_cell, True, nx, ny, nz)
         dys = 3 if three else 1
         for dz in range(-1, 2):
@@ -964,6 +963,8 @@ def k_mdbc(P, rho, mass, kind, ids, goff, id_lo, n, start, lo, inv_cell, nx, ny,
                 dy = kk - 1 if three else 0
                 j0, j1 = row_range(cx, cy, cz, dy, dz, nx, ny, nz, start, 1)
                 for j in range(j0, j1):
+                    if kind[j] != 0:
+                        continue
                     rx = P[0, j] - gx
                     ry = P[1, j] - gy if three else 0.0
                     rz = P[zc, j] - gz
@@ -971,14 +972,11 @@ def k_mdbc(P, rho, mass, kind, ids, goff, id_lo, n, start, lo, inv_cell, nx, ny,
                     if r2 >= R2:
                         continue
                     q = math.sqrt(r2) / h
-                    if kind[j] != 0:
-                        sb += mass[j] / rho0 * tm.kernel_w(kernel, q, ad)
-                        continue
                     V = mass[j] / rho[j]
                     VF = -V * (Fs * tm.kernel_grad_shape(kernel, q))
                     tm.mdbc_add_neighbour(A, bv, row, col, m, V, tm.kernel_w(kernel, q, ad), VF, rx, ry, rz, rho[j],
                                           three)
-        rho[i] = rho0 if tm.mdbc_in_air(A[0, 0], sb) else tm.mdbc_extrapolate(A, bv, m, o, dim, det_min, rho0)[0]
+        rho[i] = tm.mdbc_extrapolate(A, bv, m, o, dim, det_min, rho0)[0]
 
 
 # ------------------------------------------------------------------ MLS density re-initialisation (fluid.mls)
