@@ -125,8 +125,7 @@ def main(argv=None) -> None:
     print(f"dx = {a.dx} m, h = {a.h_coef:g} dx, oracle {a.oracle}: Fz / (rho g B (d + eta)) = {r['lift']:.4f} "
           f"(eta {1e3 * r['eta_m']:+.2f} mm; {r['steps']} steps, {r['cpu_s']:.0f} CPU s)")
     print(f"the water beside each face ({NEAR_COLUMNS} columns) lacks {r['gap_dx2']:+.4f} dx^2 of the far "
-          f"columns' volume "
-          f"(a gap carrying the lift would be about {0.1 * a.h_coef ** 2:.2f} dx^2)")
+          f"columns' volume (a gap carrying the lift would be about {0.1 * a.h_coef ** 2:.2f} dx^2)")
     print("| z above the still level [dx] | the body's side: p / (rho g dx) | the far water's |")
     print("|---|---|---|")
     e = r["edges"] / a.dx
