@@ -328,26 +328,26 @@ def sea_zones(dim: int, heading: float, kind: str = "linear", reach=None):
     return (Slab(0, 0.03, 0.0, 30.0, sea_velocity(sea, reach=reach)), Slab(0, 0.03, 0.06, 10.0, None))
 
 
-def near_field_scene() -> None:
-    """A 2-D near field (relaxation zones towards a linear regular wave, end walls on its
-    orbits, or absorbing ones) round a floating box, dx = 0.05 m, four steps, on both
-    paths: the box's heave, surge and pitch, and the gauges' elevations."""
+def near_field_scene(walls: str) -> None:
+    """A 2-D near field (relaxation zones towards a linear regular wave, its end walls on
+    the wave's orbits, ``walls = "orbits"``, or absorbing ones, ``"absorbing"``) round a
+    floating box, dx = 0.05 m, four steps, on both paths: the box's heave, surge and
+    pitch, and the gauges' elevations."""
     import tempfile
 
     from cosim.scene import SPH, Box, NearField, RegularWaves, Scene, World
 
-    for walls in ("orbits", "absorbing"):
-        for device in ("cpu", "cuda"):
-            scene = Scene(name="gpu_near_field", world=World(dim=2, duration=0.004, sample_every=0.002),
-                          fluid=SPH(dx=0.05, device=device),
-                          domain=NearField(depth=0.3, absorbing_walls=walls == "absorbing"),
-                          waves=RegularWaves(height=0.04, period=1.0, depth=0.3),
-                          bodies=[Box("box", size=(0.2, 0.1), density=500.0, pos=(1.2,), place="floating")])
-            scene = scene.with_values(["probes.gauges=[0.8, 1.6]"])
-            with tempfile.TemporaryDirectory() as d:
-                r = scene.run(d, progress=False)
-                for k in ("box.surge", "box.heave", "box.pitch", "gauge1.eta", "gauge2.eta"):
-                    OUT[f"near.{walls}.{device}.{k}"] = np.asarray(r[k], float)
+    for device in ("cpu", "cuda"):
+        scene = Scene(name="gpu_near_field", world=World(dim=2, duration=0.004, sample_every=0.002),
+                      fluid=SPH(dx=0.05, device=device),
+                      domain=NearField(depth=0.3, absorbing_walls=walls == "absorbing"),
+                      waves=RegularWaves(height=0.04, period=1.0, depth=0.3),
+                      bodies=[Box("box", size=(0.2, 0.1), density=500.0, pos=(1.2,), place="floating")])
+        scene = scene.with_values(["probes.gauges=[0.8, 1.6]"])
+        with tempfile.TemporaryDirectory() as d:
+            r = scene.run(d, progress=False)
+            for k in ("box.surge", "box.heave", "box.pitch", "gauge1.eta", "gauge2.eta"):
+                OUT[f"near.{walls}.{device}.{k}"] = np.asarray(r[k], float)
 
 
 def near_waves() -> None:
@@ -415,7 +415,8 @@ PARTS = {
     "irregular3d": lambda: run_case("irregular3d", disturbed(column_3d(), 0.02, 12), dict(dim=3, dx=0.02, c0=20.0),
                                     zones=sea_zones(3, 20.0, "irregular"),
                                     gpu_zones=sea_zones(3, 20.0, "irregular", reach=(-0.5, 0.5))),
-    "near": near_field_scene,
+    "near_orbits": lambda: near_field_scene("orbits"),
+    "near_absorbing": lambda: near_field_scene("absorbing"),
     "nearwaves": near_waves,
     "surface": surfaces,
     "nan": nan_guard,

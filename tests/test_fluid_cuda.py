@@ -239,7 +239,7 @@ def test_a_near_field_scene_moves_its_body_as_on_the_cpu(walls, tmp_path):
     the sea's orbits, or absorbing ones that read the surface on the device, k_surface)
     round a floating box, four steps on each path: the box's heave and the gauges within
     RTOL of their largest values, surge and pitch within 1e-12 m and deg."""
-    d = _worker(tmp_path / "near.npz", "near")
+    d = _worker(tmp_path / "near.npz", f"near_{walls}")
     cpu, gpu = d[f"near.{walls}.cpu.box.heave"], d[f"near.{walls}.cuda.box.heave"]
     assert np.abs(cpu).max() > 1e-6  # [m] it moved
     assert np.abs(cpu - gpu).max() <= RTOL * np.abs(cpu).max()
