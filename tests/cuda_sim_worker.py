@@ -426,8 +426,9 @@ PARTS = {
 
 
 def yielding_simulator() -> None:
-    """Make numba's CUDA simulator give up the GIL each time it polls a block's threads, and
-    call a device function without the module swap it already is in.
+    """Make numba's CUDA simulator give up the GIL each time it polls a block's threads,
+    call a device function without the module swap it already is in, and read an array in
+    a kernel with one call.
 
     The simulator runs a block's threads as Python threads while its main thread polls
     them in a loop that never releases the GIL, so a thread woken from ``syncthreads``
@@ -459,19 +460,43 @@ def yielding_simulator() -> None:
     from numba.cuda.simulator import kernelapi
 
     device_call = kernel.FakeCUDAKernel.__call__
-    plain = {}  # id(module globals) -> whether the module holds no cuda
+    swaps = kernelapi._swap_refcount
 
     def call(self, *args):
-        if self._device:
+        # found once per function: None for a kernel; True where its module holds no cuda;
+        # else the id of its module's globals, which a running kernel of that module swapped
+        try:
+            module = self._module_swap
+        except AttributeError:
             g = self.fn.__globals__
-            free = plain.get(id(g))
-            if free is None:
-                free = plain[id(g)] = not any(v is cuda for v in g.values())
-            if free or kernelapi._swap_refcount.get(id(g), 0) > 0:
-                return self.fn(*args)
+            module = self._module_swap = (None if not self._device
+                                          else not any(v is cuda for v in g.values()) or id(g))
+        if module is True or (module is not None and swaps.get(module, 0) > 0):
+            return self.fn(*args)
         return device_call(self, *args)
 
     kernel.FakeCUDAKernel.__call__ = call
+
+    # An array read in a kernel goes through two wrappers' methods (the in-kernel array's,
+    # then the array's, which builds a list to test the item's type): a quarter to a half of
+    # a case's CPU time. Read the NumPy array under both, wrapping what is still an array as
+    # they would.
+    from numba.cuda.simulator.cudadrv import devicearray
+
+    fake, within = devicearray.FakeCUDAArray, devicearray.FakeWithinKernelCUDAArray
+    arrays = (np.ndarray, np.void)
+
+    def read(self, idx):
+        inner = self._item
+        item = inner._ary[idx]
+        if type(item) in arrays:
+            return within(fake(item, stream=inner.stream))
+        return item
+
+    def write(self, idx, value):
+        self._item._ary[idx] = value
+
+    within.__getitem__, within.__setitem__ = read, write
 
 
 def main(out: str, parts) -> None:
