@@ -101,6 +101,48 @@ def test_plots_name_their_quantities_units_states_and_gauge_positions():
     assert fig.axes[0].get_ylabel() == "elevation η [m]"
 
 
+@pytest.mark.parametrize("scale", [1e-3, 1.0, 2.5e6])
+def test_a_group_plots_texts_lie_inside_the_figure_and_apart(scale):
+    """The margins found from the texts' extents (plots._fit_margins, not tight_layout):
+    drawn, every tick label, axis label, offset text and the title lie inside the figure,
+    each panel's y label left of its tick labels, the x label below the bottom panel's
+    tick labels, and the panels do not overlap; for small, unit and large values (an
+    offset text), categorical codes and four panels."""
+    from cosim.scene.plots import group_figure
+    from cosim.scene.probes import _state_names
+
+    t = np.linspace(0.0, 120.0, 301)
+    loads = Group("loads", ["box.fluid_Fx", "box.fluid_Fz", "box.mooring_Fx", "box.mooring_Fz"], ["N"] * 4, None)
+    table = scale * np.column_stack([np.sin(t), -3 - np.cos(t), 100 * t, np.full_like(t, -7.5)])
+    states = Group("line_states", ["a.state", "b.state"], ["-", "-"], None, categories=_state_names())
+    for fig in (group_figure(t, table, loads, "a scene: loads on the bodies over each coupling step"),
+                group_figure(t, np.zeros((len(t), 2)), states, "a scene: mooring line states")):
+        fig.canvas.draw()
+        r = fig.canvas.get_renderer()
+        inside = fig.bbox.padded(-1.0)
+        axes = fig.axes
+
+        def shown(labels, lo_hi, k):  # the tick labels drawn: those within the axis's limits
+            lo, hi = sorted(lo_hi)
+            return [x for x in labels if x.get_text() and lo <= x.get_position()[k] <= hi]
+
+        yticks = [shown(a.get_yticklabels(), a.get_ylim(), 1) for a in axes]
+        xticks = shown(axes[-1].get_xticklabels(), axes[-1].get_xlim(), 0)
+        texts = [axes[0].title, axes[-1].xaxis.label] + [a.yaxis.label for a in axes] \
+            + [a.yaxis.get_offset_text() for a in axes] + [x for y in yticks for x in y] + xticks
+        for x in texts:
+            if x.get_visible() and x.get_text():
+                e = x.get_window_extent(r)
+                assert inside.x0 <= e.x0 and e.x1 <= inside.x1 and inside.y0 <= e.y0 and e.y1 <= inside.y1, x
+        for a, ticks in zip(axes, yticks):
+            assert a.yaxis.label.get_window_extent(r).x1 <= min(x.get_window_extent(r).x0 for x in ticks)
+        assert axes[-1].xaxis.label.get_window_extent(r).y1 <= min(x.get_window_extent(r).y0 for x in xticks)
+        for upper, lower in zip(axes, axes[1:]):  # apart, a lower panel's offset text too
+            top = lower.yaxis.get_offset_text().get_window_extent(r).y1 if lower.yaxis.get_offset_text().get_text() \
+                else lower.get_window_extent(r).y1
+            assert upper.get_window_extent(r).y0 >= max(top, lower.get_window_extent(r).y1) + 3.0  # px, clear of the frame
+
+
 def test_the_particle_plot_draws_each_line_from_its_anchor_to_its_fairlead(tmp_path):
     """The catenary's shape through the anchor and where the fairlead is: it starts at
     the anchor, ends at the fairlead, and (partly lifted, nearly inextensible) is as long

@@ -31,13 +31,52 @@ QUANTITIES = {"fluid_Fx": "fluid force Fx", "fluid_Fy": "fluid force Fy", "fluid
 LEGEND_MAX = 12
 
 
-def _pyplot():
-    import matplotlib
+def _figure(figsize, dpi: int = 110):
+    """A figure drawn by Agg, outside pyplot (no figure manager to import, keep or close)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    fig = Figure(figsize=figsize, dpi=dpi)
+    FigureCanvasAgg(fig)
+    return fig
 
-    return plt
+
+def _fit_margins(fig, axes, title: str) -> None:
+    """Place a column of panels sharing their x axis so that the y tick labels and labels,
+    the title and the bottom panel's x axis fit inside the figure with matplotlib's own
+    paddings (``tight_layout``'s pad of 1.08 font sizes and the rcParams' tick and label
+    pads): what ``Figure.tight_layout`` finds, from the extents of those texts alone, where
+    tight_layout lays out every artist of the figure to find them (as long as the draw that
+    saves the figure). Texts are measured with the figure's renderer; a panel's y offset
+    text (``1e6``) is given a line above it."""
+    import matplotlib as mpl
+    from matplotlib.font_manager import FontProperties
+
+    renderer = fig.canvas.get_renderer()
+    px = fig.dpi / 72.0  # pixels per point
+
+    def extent(texts, size):
+        prop = FontProperties(size=size)
+        ext = [renderer.get_text_width_height_descent(s, prop, ismath=False) for s in texts if s] or [(0.0, 0.0, 0.0)]
+        return max(w for w, _, _ in ext), max(h for _, h, _ in ext)
+
+    rc = mpl.rcParams
+    pad = 1.08 * rc["font.size"] * px
+    label_h = extent(["[Tg"], rc["axes.labelsize"])[1]
+    tick_w = max(extent([t.get_text() for t in ax.get_yticklabels()], rc["ytick.labelsize"])[0] for ax in axes)
+    xtick_w, xtick_h = extent([t.get_text() for t in axes[-1].get_xticklabels()], rc["xtick.labelsize"])
+    title_h = extent([title], 10)[1]
+    offset = any(ax.yaxis.get_major_formatter().get_offset() for ax in axes)
+    W, H = fig.bbox.width, fig.bbox.height
+    left = pad + label_h + rc["axes.labelpad"] * px + tick_w + (rc["ytick.major.pad"] + rc["ytick.major.size"]) * px
+    bottom = pad + label_h + rc["axes.labelpad"] * px + xtick_h + (rc["xtick.major.pad"] + rc["xtick.major.size"]) * px
+    top = pad + title_h + rc["axes.titlepad"] * px + (label_h if offset else 0.0)
+    right = pad + 0.5 * xtick_w
+    n = len(axes)
+    gap = pad + (label_h if offset else 0.0)  # between two panels
+    panel = (H - top - bottom - (n - 1) * gap) / n
+    fig.subplots_adjust(left=left / W, right=1.0 - right / W, bottom=bottom / H, top=1.0 - top / H,
+                        hspace=gap / max(panel, 1.0))
 
 
 def quantity(column: str) -> str:
@@ -48,14 +87,14 @@ def quantity(column: str) -> str:
 
 def group_figure(t: np.ndarray, table: np.ndarray, group, title: str):
     """The figure of one probe group's series ``table`` (n_samples, n_columns) at times
-    ``t`` [s] (the caller saves and closes it)."""
-    plt = _pyplot()
+    ``t`` [s] (the caller saves it)."""
     # a line's points: one panel per coordinate (``line.point3_x``: the quantity "x"), not per point
     split = (lambda c: c.rsplit("_", 1)) if group.name == "line_points" else (lambda c: c.rsplit(".", 1))
     qs = list(dict.fromkeys(split(c)[1] for c in group.columns))
     labels = group.labels or [split(c)[0] for c in group.columns]
     tall = 2.2 if group.categories else 1.8
-    fig, axes = plt.subplots(len(qs), 1, figsize=(7.5, 1.3 + tall * len(qs)), dpi=110, sharex=True, squeeze=False)
+    fig = _figure((7.5, 1.3 + tall * len(qs)))
+    axes = fig.subplots(len(qs), 1, sharex=True, squeeze=False)
     for ax, q in zip(axes[:, 0], qs):
         cols = [j for j, c in enumerate(group.columns) if split(c)[1] == q]
         for k, j in enumerate(cols):
@@ -75,18 +114,16 @@ def group_figure(t: np.ndarray, table: np.ndarray, group, title: str):
             ax.legend(fontsize=7, loc="best")
     axes[-1, 0].set_xlabel("t [s]")
     axes[0, 0].set_title(title, fontsize=10)
-    fig.tight_layout()
+    _fit_margins(fig, axes[:, 0], title)
     return fig
 
 
 def plot_groups(out, t, groups, tables, scene) -> None:
     """``GROUP.png`` for each probe group (``tables[name]``: its samples at ``t``)."""
-    plt = _pyplot()
     for g in groups:
         fig = group_figure(np.asarray(t), tables[g.name], g,
                            f"{scene.name}: {TITLES.get(g.name, g.name.replace('_', ' '))}")
         fig.savefig(out / f"{g.name}.png")
-        plt.close(fig)
 
 
 def line_shapes(scene, built) -> list[tuple[str, np.ndarray]]:
@@ -121,7 +158,6 @@ def line_shapes(scene, built) -> list[tuple[str, np.ndarray]]:
 
 def plot_particles(path, scene, built, t: float) -> None:
     """The particles at time ``t`` [s] and what the scene holds besides (module docstring)."""
-    plt = _pyplot()
     from cosim.scene.build import PADDLE
     from cosim.scene.spec import Flume
     from fluid.particles import Kind
@@ -132,7 +168,8 @@ def plot_particles(path, scene, built, t: float) -> None:
     speed = scene.world.plot_color == "velocity"
     c = np.linalg.norm(ps.vel[fl], axis=1) if speed else ps.p[fl]
     aspect = (np.ptp(z) + 1e-9) / (np.ptp(x) + 1e-9)
-    fig, ax = plt.subplots(figsize=(9, min(max(7.5 * aspect + 1.9, 3.0), 9)), dpi=110)
+    fig = _figure((9, min(max(7.5 * aspect + 1.9, 3.0), 9)))
+    ax = fig.subplots()
     size = max(0.5, 3000.0 / max(len(x), 1))
     body = ps.kind == Kind.BODY
     paddle = (ps.group == PADDLE) & ~fl & ~body if isinstance(scene.domain, Flume) and scene.waves is not None \
@@ -169,7 +206,6 @@ def plot_particles(path, scene, built, t: float) -> None:
         fig.legend(handles, labels, fontsize=7, loc="lower center", ncol=min(5, len(handles)), frameon=False)
     fig.tight_layout(rect=(0, 0.07 if handles else 0, 1, 1))
     fig.savefig(path)
-    plt.close(fig)
 
 
 __all__ = ["TITLES", "QUANTITIES", "quantity", "group_figure", "plot_groups", "line_shapes", "plot_particles"]
