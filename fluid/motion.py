@@ -47,7 +47,6 @@ from functools import cached_property
 from pathlib import Path
 
 import numpy as np
-from scipy.interpolate import CubicSpline, PPoly
 
 from errors import InputError
 
@@ -172,6 +171,8 @@ class Tabulated(Signal):
         c = np.asarray(self.baseline, np.float64)
         if c.ndim != 1 or not np.isfinite(c).all():
             raise InputError(f"Tabulated: baseline must be a flat tuple of finite coefficients, got {self.baseline!r}")
+        from scipy.interpolate import CubicSpline, PPoly  # here: a second off every run's start that has no record
+
         if self.quantity == "displacement":
             d = CubicSpline(t, v)
         elif self.quantity == "velocity":
@@ -337,6 +338,8 @@ class Stopped(Signal):
         if fade == 0:
             object.__setattr__(self, "_pp", (float(self.signal.state(stop)[0]), None))
             return
+        from scipy.interpolate import CubicSpline
+
         t1 = stop - fade
         t = np.linspace(t1, stop, 4001)
         st = np.array([self.signal.state(float(x)) for x in t])
