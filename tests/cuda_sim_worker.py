@@ -499,6 +499,141 @@ def yielding_simulator() -> None:
     within.__getitem__, within.__setitem__ = read, write
 
 
+#: what a kernel's code names where its threads must run side by side: the block's barriers,
+#: its shared memory, warp and cooperative-group functions (:func:`sequential_blocks`)
+SIDE_BY_SIDE = frozenset({
+    "syncthreads", "syncthreads_count", "syncthreads_and", "syncthreads_or", "shared", "cg", "this_grid", "sync",
+    "syncwarp", "activemask", "lanemask_lt", "all_sync", "any_sync", "eq_sync", "ballot_sync", "shfl_sync",
+    "shfl_up_sync", "shfl_down_sync", "shfl_xor_sync", "match_any_sync", "match_all_sync"})
+
+
+def sequential_blocks() -> None:
+    """Run the blocks of a kernel that never waits for its block's other threads one thread
+    after another in the main thread, with no Python threads.
+
+    The simulator starts a Python thread for every thread of every block and polls them
+    until they end (``kernel.BlockManager.run``): for the many small kernels of a step
+    (cell build and sort, gathers, integrators) starting, polling and handing the GIL
+    between the threads costs more than their work (docs/development.md). A thread that
+    never meets a barrier can as well run to its end before the next starts, as the
+    threads run one at a time under the GIL anyway. Which kernels qualify is found once per
+    kernel function, from its code: neither it nor any device function it calls (the
+    names in their code objects, nested ones included, looked up in their globals, closures
+    and the namespaces they name, such as ``tm``) names a barrier, shared memory, warp or
+    cooperative-group function (:data:`SIDE_BY_SIDE`); the others, and every kernel
+    launched with ``debug=True``, run on the simulator's threads as before. While a block
+    runs, kernelapi's ``threading`` is a stand-in whose ``current_thread()`` gives the
+    running thread's indices (a barrier there raises), restored after, also on an
+    exception; each thread runs under NumPy's floating-point error state as a new thread
+    has it. An exception in a kernel is raised as the simulator raises it (its type, the
+    message prefixed with ``tid=[...] ctaid=[...]``). Atomics take their lock as before.
+
+    Limits: the threads of a block run in index order, so where they race (the fill of a
+    cell by atomics, which the sort then orders; floating-point sums by atomics) the
+    result is one of the orders the threaded run may give, but always the same one; a
+    kernel reading another thread's writes to global memory without a barrier (wrong on a
+    GPU as well) would see every earlier thread's writes; and a name is all the check
+    sees: a barrier reached through something it does not look into (a function passed as
+    an argument, a device function named through an object other than a module or
+    namespace) is not found, and would raise there."""
+    import threading
+    import types as pytypes
+
+    from fluid.cuda import simulator
+
+    if not simulator():  # a GPU
+        return
+    from numba import cuda
+    from numba.cuda.simulator import kernel, kernelapi
+
+    device = kernel.FakeCUDAKernel
+    Dim3 = kernelapi.Dim3
+
+    def side_by_side(fn, seen) -> bool:
+        """Whether ``fn`` or a function it calls names one of SIDE_BY_SIDE."""
+        if fn in seen:
+            return False
+        seen.add(fn)
+        code = fn.__code__
+        scope = dict(fn.__globals__)
+        for name, cell in zip(code.co_freevars, fn.__closure__ or ()):
+            try:
+                scope[name] = cell.cell_contents
+            except ValueError:  # an empty cell
+                pass
+        todo = [code]
+        while todo:
+            c = todo.pop()
+            if SIDE_BY_SIDE.intersection(c.co_names):
+                return True
+            todo.extend(k for k in c.co_consts if isinstance(k, pytypes.CodeType))
+            for name in c.co_names + c.co_freevars:
+                v = scope.get(name)
+                if v is None or v is cuda:
+                    continue
+                if isinstance(v, (pytypes.ModuleType, pytypes.SimpleNamespace)):  # tm.term(...)
+                    for attr in c.co_names:
+                        w = vars(v).get(attr)
+                        if isinstance(w, device) and side_by_side(w.fn, seen):
+                            return True
+                elif isinstance(v, device) and side_by_side(v.fn, seen):
+                    return True
+                elif isinstance(v, pytypes.FunctionType) and side_by_side(v, seen):
+                    return True
+        return False
+
+    decided = {}  # kernel function: whether its blocks run in the main thread
+
+    class Thread:
+        """What ``threading.current_thread()`` gives kernelapi while a block runs here."""
+
+        __slots__ = ("blockIdx", "threadIdx", "thread_id")
+
+        def syncthreads(self, *args):
+            raise RuntimeError("syncthreads in a kernel run one thread after another (tests/cuda_sim_worker.py)")
+
+        syncthreads_count = syncthreads_and = syncthreads_or = syncthreads
+
+    current = Thread()
+    stand_in = pytypes.SimpleNamespace(current_thread=lambda: current)
+
+    fresh = []  # NumPy's error state in a new thread (the simulator's threads run under it)
+    t = threading.Thread(target=lambda: fresh.append(np.geterr()))
+    t.start()
+    t.join()
+    fresh = fresh[0]
+
+    threaded, own = kernel.BlockManager.run, kernelapi.threading
+
+    def run(self, grid_point, *args):
+        f = self._f
+        one = decided.get(f)
+        if one is None:
+            one = decided[f] = not side_by_side(f, set())
+        if not one or self._debug:
+            return threaded(self, grid_point, *args)
+        bx, by, _ = self._block_dim
+        current.blockIdx = Dim3(*grid_point)
+        error = None
+        kernelapi.threading = stand_in
+        try:
+            with np.errstate(**fresh):
+                for x, y, z in np.ndindex(*self._block_dim):  # the order the simulator starts them in
+                    current.threadIdx = Dim3(x, y, z)
+                    current.thread_id = x + bx * (y + by * z)
+                    f(*args)
+        except Exception as e:  # as kernel.BlockThread.run words it
+            tid, ctaid = "tid=%s" % list(current.threadIdx), "ctaid=%s" % list(current.blockIdx)
+            error = (type(e)("%s %s" % (tid, ctaid) if str(e) == "" else "%s %s: %s" % (tid, ctaid, e)),
+                     e.__traceback__)
+        finally:
+            kernelapi.threading = own
+        if error is not None:  # raised outside the handler, as the simulator's main thread does
+            raise error[0].with_traceback(error[1])
+
+    kernel.BlockManager.run = run
+
+
 def main(out: str, parts) -> None:
     """The check without numba.cuda, which simulator ran, then each of ``parts`` (names of
     :data:`PARTS`), into ``out``."""
@@ -507,6 +642,7 @@ def main(out: str, parts) -> None:
     from numba import cuda  # noqa: F401  (the simulator where NUMBA_ENABLE_CUDASIM=1, else the GPU)
 
     yielding_simulator()
+    sequential_blocks()
 
     from fluid.cuda import simulator
     OUT["simulator"] = np.array(simulator())
@@ -519,6 +655,7 @@ if __name__ == "__main__":
     if sys.argv[2:] == ["--scene"]:
         del sys.modules["numba.cuda"]
         yielding_simulator()
+        sequential_blocks()
         scene_run(sys.argv[1])
     else:
         main(sys.argv[1], sys.argv[2:] or list(PARTS))
