@@ -208,7 +208,7 @@ def test_nan_guard_and_the_project_without_numba_cuda(tmp_path):
     """The GPU path's NaN guard stops with the CPU's message. And in the worker, before
     numba.cuda could be imported: a CPU step ran, and device='cuda' was refused saying
     what to install and how to use the simulator."""
-    nan = _worker(tmp_path / "nan.npz", "nan")
+    nan = _worker(tmp_path / "nan.npz", "absent", "nan")
     msg = str(nan["nan.gpu"])
     assert msg and msg == str(nan["nan.cpu"])
     assert "non-finite state" in msg and "particle id 40" in msg
