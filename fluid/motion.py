@@ -171,7 +171,7 @@ class Tabulated(Signal):
         c = np.asarray(self.baseline, np.float64)
         if c.ndim != 1 or not np.isfinite(c).all():
             raise InputError(f"Tabulated: baseline must be a flat tuple of finite coefficients, got {self.baseline!r}")
-        from scipy.interpolate import CubicSpline, PPoly  # here: a second off every run's start that has no record
+        from scipy.interpolate import CubicSpline, PPoly  # here: half a second off the start of a run without a record
 
         if self.quantity == "displacement":
             d = CubicSpline(t, v)

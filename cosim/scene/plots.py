@@ -43,12 +43,13 @@ def _figure(figsize, dpi: int = 110):
 
 def _fit_margins(fig, axes, title: str) -> None:
     """Place a column of panels sharing their x axis so that the y tick labels and labels,
-    the title and the bottom panel's x axis fit inside the figure with matplotlib's own
-    paddings (``tight_layout``'s pad of 1.08 font sizes and the rcParams' tick and label
-    pads): what ``Figure.tight_layout`` finds, from the extents of those texts alone, where
-    tight_layout lays out every artist of the figure to find them (as long as the draw that
-    saves the figure). Texts are measured with the figure's renderer; a panel's y offset
-    text (``1e6``) is given a line above it."""
+    the title (10 pt) and the bottom panel's x axis fit inside the figure with matplotlib's
+    own paddings (``tight_layout``'s pad of 1.08 font sizes, the rcParams' tick and label
+    pads). ``Figure.tight_layout`` finds the same margins by laying out every artist of the
+    figure, which costs as much as the draw that saves it: here only those texts are
+    measured, with the figure's renderer (the tick labels the locator gives, a few beyond
+    the limits included: the margin errs wide). A panel's y offset text (``1e6``) is given
+    a line above the panel."""
     import matplotlib as mpl
     from matplotlib.font_manager import FontProperties
 
