@@ -138,9 +138,9 @@ def test_a_group_plots_texts_lie_inside_the_figure_and_apart(scale):
             assert a.yaxis.label.get_window_extent(r).x1 <= min(x.get_window_extent(r).x0 for x in ticks)
         assert axes[-1].xaxis.label.get_window_extent(r).y1 <= min(x.get_window_extent(r).y0 for x in xticks)
         for upper, lower in zip(axes, axes[1:]):  # apart, a lower panel's offset text too
-            top = lower.yaxis.get_offset_text().get_window_extent(r).y1 if lower.yaxis.get_offset_text().get_text() \
-                else lower.get_window_extent(r).y1
-            assert upper.get_window_extent(r).y0 >= max(top, lower.get_window_extent(r).y1) + 3.0  # px, clear of the frame
+            below = [lower, lower.yaxis.get_offset_text()] if lower.yaxis.get_offset_text().get_text() else [lower]
+            top = max(x.get_window_extent(r).y1 for x in below)
+            assert upper.get_window_extent(r).y0 >= top + 3.0  # px, clear of the frame
 
 
 def test_the_particle_plot_draws_each_line_from_its_anchor_to_its_fairlead(tmp_path):

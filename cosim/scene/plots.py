@@ -41,9 +41,9 @@ def _figure(figsize, dpi: int = 110):
     return fig
 
 
-def _fit_margins(fig, axes, title: str) -> None:
+def _fit_margins(fig, axes) -> None:
     """Place a column of panels sharing their x axis so that the y tick labels and labels,
-    the title (10 pt) and the bottom panel's x axis fit inside the figure with matplotlib's
+    the top panel's title and the bottom panel's x axis fit inside the figure with matplotlib's
     own paddings (``tight_layout``'s pad of 1.08 font sizes, the rcParams' tick and label
     pads). ``Figure.tight_layout`` finds the same margins by laying out every artist of the
     figure, which costs as much as the draw that saves it: here only those texts are
@@ -66,7 +66,8 @@ def _fit_margins(fig, axes, title: str) -> None:
     label_h = extent(["[Tg"], rc["axes.labelsize"])[1]
     tick_w = max(extent([t.get_text() for t in ax.get_yticklabels()], rc["ytick.labelsize"])[0] for ax in axes)
     xtick_w, xtick_h = extent([t.get_text() for t in axes[-1].get_xticklabels()], rc["xtick.labelsize"])
-    title_h = extent([title], 10)[1]
+    title = axes[0].title
+    title_h = extent([title.get_text()], title.get_fontsize())[1]
     offset = any(ax.yaxis.get_major_formatter().get_offset() for ax in axes)
     W, H = fig.bbox.width, fig.bbox.height
     left = pad + label_h + rc["axes.labelpad"] * px + tick_w + (rc["ytick.major.pad"] + rc["ytick.major.size"]) * px
@@ -115,7 +116,7 @@ def group_figure(t: np.ndarray, table: np.ndarray, group, title: str):
             ax.legend(fontsize=7, loc="best")
     axes[-1, 0].set_xlabel("t [s]")
     axes[0, 0].set_title(title, fontsize=10)
-    _fit_margins(fig, axes[:, 0], title)
+    _fit_margins(fig, axes[:, 0])
     return fig
 
 
