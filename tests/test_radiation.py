@@ -145,6 +145,32 @@ def test_the_damping_is_also_fitted_period_by_period(monkeypatch):
     assert got["B33_error_standard"] == pytest.approx(spread, rel=1e-4)
 
 
+def test_the_errors_against_the_first_panels_reference_are_kept_beside(monkeypatch):
+    """The case is judged against Capytaine's reference at ``PANEL``; the figures against
+    the reference it was first judged by (``FIRST_PANEL``, another A33, B33 and C33) come
+    beside: a force made exactly of the first reference's coefficients reads zero error
+    there and the two references' difference in the judged fields."""
+    from cosim.validations import radiation
+
+    refs = {radiation.PANEL: (4.15e4, 2.41e4, 2.773e5), radiation.FIRST_PANEL: (4.16e4, 2.39e4, 2.769e5)}
+    monkeypatch.setattr(radiation, "reference", lambda *args, panel=radiation.PANEL, **kw: refs[panel])
+    scene = radiation.radiation_scene(True)
+    b, m = scene.bodies[0], scene.bodies[0].motion
+    w = 2.0 * math.pi / m.period
+    t = np.arange(1, int(round(scene.world.duration / scene.world.sample_every)) + 1) * scene.world.sample_every
+    a1, b1, c1 = refs[radiation.FIRST_PANEL]
+    z, v, acc = m.amplitude * np.sin(w * t), m.amplitude * w * np.cos(w * t), -m.amplitude * w * w * np.sin(w * t)
+    forced = {f"{b.name}.fluid_Fz": 4.5e5 - c1 * z - a1 * acc - b1 * v, f"{b.name}.heave": z}
+    for i in range(len(scene.probes.gauges)):
+        forced[f"gauge{i + 1}.eta"] = 0.01 * np.cos(w * t + i)
+    got = radiation.radiation_metrics(_Records(t, forced), scene)
+    assert got["A33_error_panel_0.1R"] < 1e-9 and got["B33_error_panel_0.1R"] < 1e-9
+    a0, b0, c0 = refs[radiation.PANEL]
+    assert got["B33_error"] == pytest.approx(abs(b1 / b0 - 1.0), rel=1e-6)
+    assert got["A33_error"] == pytest.approx(abs((a1 + (c0 - c1) / w**2) / a0 - 1.0), rel=1e-6)
+    assert got["reference_panel_R"] == radiation.PANEL
+
+
 def test_the_held_scene_is_the_forced_one_with_its_body_still():
     """The tare's scene differs from the case's only in the body's motion, which holds it at
     its position over the whole run."""
