@@ -1,21 +1,20 @@
-"""Where on nearfield-radiation's cylinder the damping force sits: the vertical fluid force on
-the body's boundary particles split by where they stand (each ring of the section, from the rim
-inwards, every layer; and of the outer ring, the part above the bottom layer), each part's first harmonic fitted as
-the case fits the whole (``cosim.validations.radiation.added_mass_damping``: its share of
-A33 and B33), against Capytaine's pressure on the same cylinder integrated over the annuli
-of the bottom that the rings stand for (each ring's particles, in every layer, sample the
-annulus a spacing wide round their radius; the side's panels carry no vertical force).
+"""Where on nearfield-radiation's cylinder the force's parts sit: the vertical fluid force on
+the body's boundary particles split by ring of its section (from the rim inwards, every
+layer; and, of the outer ring, the side's part above the bottom layer), each part's first
+harmonic fitted as the case fits the whole (``cosim.validations.radiation.added_mass_damping``,
+the annulus' hydrostatic restoring added back to its A33), against Capytaine's heave
+pressure integrated over the annuli of the bottom that the rings stand for (each ring
+samples the annulus a spacing wide round its radius; the side's panels carry no vertical
+force). docs/validation/nearfield.md, "The reference's panels, and the full variant in rings".
 
     python benchmarks/radiation_force_by_ring.py --out OUT [--r-over-dx 4] [--periods 2] [--only forced|held]
 
 The case's scene at ``--r-over-dx``, run for its ramp and ``--periods`` periods, the force
-on every boundary particle read every twentieth of a period after the ramp
-(``m a`` of each, as ``fluid.solver.Fluid.boundary_forces_now`` reads it; on the half body, the plane's particles once,
-the others twice); ``--only held`` the case's tare (``held_scene``), whose parts are
-subtracted where ``OUT`` holds both. Each run's parts are saved in ``OUT/RUN.npz``; a call
-without ``--only`` runs what is missing and prints the table. The cylinder's section is in
-rings (``bodies.sampling.disc_rings``), the bottom layer's rings a spacing apart from dx/2
-inside the side.
+on every body particle read every twentieth of a period after the ramp (``m a``, as
+``fluid.solver.Fluid.boundary_forces_now`` reads it; on the half body the plane's particles
+once, the others twice); ``--only held`` the case's tare (``held_scene``), whose parts are
+subtracted. Each run's parts are saved in ``OUT/RUN.npz``; a call without ``--only`` runs
+what is missing and prints the table.
 """
 
 from __future__ import annotations
@@ -34,6 +33,7 @@ SAMPLES_A_PERIOD = 20
 
 
 def scene_for(r_over_dx: float, periods: float, held: bool):
+    """The case's quick scene at ``r_over_dx`` for its ramp and ``periods`` periods (``held``: its tare)."""
     s = radiation_scene(True)
     b = s.bodies[0]
     s = s.with_values([f"fluid.dx={b.radius / r_over_dx:.6g}",
@@ -128,8 +128,8 @@ def main(argv=None):
     dx = scene.fluid.dx
     edges = np.concatenate([[b.radius], np.maximum(b.radius - dx * np.arange(1, len(radii) + 1), 0.0)])
     a_cap, b_cap = capytaine_by_annulus(scene, edges)
-    print(f"R/dx = {args.r_over_dx:g}, {args.periods:g} periods after the ramp, tared; CPU {float(forced['cpu_s']):.0f} + "
-          f"{float(held['cpu_s']):.0f} s")
+    print(f"R/dx = {args.r_over_dx:g}, {args.periods:g} periods after the ramp, tared; "
+          f"CPU {float(forced['cpu_s']):.0f} + {float(held['cpu_s']):.0f} s")
     print("| part | SPH A33 [t] | Capytaine A33 [t] | SPH B33 [kN s/m] | Capytaine B33 [kN s/m] |")
     print("|---|---|---|---|---|")
     names = [f"ring at r = {r:.3g} m (annulus {hi:.3g}-{lo:.3g} m)" for r, hi, lo in zip(radii, edges[:-1], edges[1:])]

@@ -43,8 +43,8 @@ def main(argv=None):
         t = time.process_time()
         rows.append(reference(b.radius, draft, d.depth, w, scene.fluid.rho0, scene.world.gravity, args.cache, panel=p))
         a, bb, c = rows[-1]
-        print(f"panel {p:g} R: A33 {a:.1f} kg, B33 {bb:.1f} kg/s, C33 {c:.1f} N/m ({time.process_time() - t:.1f} CPU-s)",
-              flush=True)
+        print(f"panel {p:g} R: A33 {a:.1f} kg, B33 {bb:.1f} kg/s, C33 {c:.1f} N/m "
+              f"({time.process_time() - t:.1f} CPU-s)", flush=True)
     if len(rows) >= 3:
         for name, j in (("A33", 0), ("B33", 1), ("C33", 2)):
             x = [r[j] for r in rows[-3:]]
