@@ -1,16 +1,15 @@
 """How nearfield-radiation's reference converges with Capytaine's panels: A33, B33 and C33 of
 the case's cylinder (``cosim.validations.radiation.reference``: R = 3 m, draft 1.5 m, 6 m of
 water, the case's frequency) at each panel size, and Richardson's estimate of the limit
-from the last three (an observed order ``p`` from their two differences, the panel halved
-each time: ``X_inf = X3 + (X3 - X2) / (r - 1)``, ``r = (X2 - X1) / (X3 - X2)``; Richardson
+from the last three (``cosim.study``'s: ``X(h) = X_inf + C h^p`` through the three; Richardson
 1911, Roache 1998 §5.4). The sharp edge between side and bottom makes B33 converge slowly
 (docs/validation/nearfield.md, "The reference's panels").
 
     python benchmarks/radiation_reference_panels.py [--panels 0.2 0.1 0.05] [--cache DIR]
 
-``--panels``: sizes in radii, each half the one before for the estimate. Solved results are
-cached (default Capytaine's cache of ``fluid.potential``); CPU seconds are the solve's
-(0 when read from the cache). Prints one line per size, then the estimate.
+``--panels``: sizes in radii, coarsest first. Solved results are cached (default
+Capytaine's cache of ``fluid.potential``); CPU seconds are the solve's (next to none when
+read from the cache). Prints one line per size, then the estimate.
 """
 
 from __future__ import annotations
@@ -19,14 +18,9 @@ import argparse
 import math
 import time
 
+from cosim.errors import InputError
+from cosim.study import _richardson
 from cosim.validations.radiation import PANEL, radiation_scene, reference
-
-
-def richardson(x1: float, x2: float, x3: float) -> tuple[float, float]:
-    """``(limit, order)`` of a sequence at sizes h, h/2, h/4 converging as ``h^p`` (its
-    differences shrinking)."""
-    r = (x2 - x1) / (x3 - x2)
-    return x3 + (x3 - x2) / (r - 1.0), math.log2(abs(r))
 
 
 def main(argv=None):
@@ -48,11 +42,11 @@ def main(argv=None):
     if len(rows) >= 3:
         for name, j in (("A33", 0), ("B33", 1), ("C33", 2)):
             x = [r[j] for r in rows[-3:]]
-            if abs(x[2] - x[1]) >= abs(x[1] - x[0]):  # not converging over these sizes: no limit to estimate
-                print(f"{name}: no monotone convergence over the last three sizes (spread "
-                      f"{(max(x) - min(x)) / abs(x[-1]):.2%} of the last)")
+            try:  # finest first, as cosim study extrapolates its spacings
+                lim, order = _richardson(args.panels[-1:-4:-1], x[::-1])
+            except InputError as exc:  # not converging over these sizes: no limit to estimate
+                print(f"{name}: {exc.args[0].split(';')[0]} (spread {(max(x) - min(x)) / abs(x[-1]):.2%} of the last)")
                 continue
-            lim, order = richardson(*x)
             print(f"{name}: limit {lim:.1f} (order {order:.2f}); the last size {rows[-1][j] / lim - 1.0:+.2%} from it, "
                   f"{args.panels[-2]:g} R {rows[-2][j] / lim - 1.0:+.2%}")
 
