@@ -53,6 +53,7 @@ def ring_forces(scene) -> dict:
     ramp_end = m.ramp * m.period
     times = ramp_end + np.arange(1, round((scene.world.duration - ramp_end) / m.period * SAMPLES_A_PERIOD) + 1) \
         * m.period / SAMPLES_A_PERIOD
+    n_rings = int(math.ceil(b.radius / dx))
     rows, cpu = [], time.process_time()
     with case_scene.built(scene) as built:
         sph, fl = built.sph, built.fluid
@@ -67,12 +68,11 @@ def ring_forces(scene) -> dict:
             weight = np.where(plane, 1.0, 2.0)[mine]
             x, y, z = ps.pos[mine, 0] - b.pos[0], ps.pos[mine, 1] - b.pos[1], ps.pos[mine, 2]
             z = z - z.min()
-            n_rings = int(math.ceil(b.radius / dx))
             ring = np.clip(np.floor((b.radius - np.hypot(x, y)) / dx).astype(int), 0, n_rings - 1)
             fz = weight * F[mine, 2]
             rim_above = (ring == 0) & (z > 0.5 * dx)
             rows.append(np.append(np.bincount(ring, weights=fz, minlength=n_rings), fz[rim_above].sum()))
-    radii = b.radius - dx * (0.5 + np.arange(int(math.ceil(b.radius / dx))))
+    radii = b.radius - dx * (0.5 + np.arange(n_rings))
     return {"t": times, "parts": np.array(rows), "radii": radii, "cpu_s": time.process_time() - cpu}
 
 
