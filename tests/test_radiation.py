@@ -86,6 +86,13 @@ class _Records:
         return self._s[name]
 
 
+def _outgoing(radius, draft, depth, omega, rho, g, points, panel=None):
+    """An outgoing cylindrical wave at ``points`` in place of Capytaine's (tests not about it)."""
+    from scipy.special import hankel2
+
+    return hankel2(0, np.hypot(*np.asarray(points, float).T))
+
+
 def test_the_tare_takes_the_held_bodys_force_and_waves_out_of_the_fit(monkeypatch):
     """A forced run whose force is F0 - C z - A z'' - B z' and whose gauges read an outgoing
     cylindrical wave, both plus the box's own oscillation (a component at the heave's
@@ -103,6 +110,10 @@ def test_the_tare_takes_the_held_bodys_force_and_waves_out_of_the_fit(monkeypatc
     b, m = scene.bodies[0], scene.bodies[0].motion
     w = 2.0 * math.pi / m.period
     k = float(wavenumbers(w, scene.domain.depth, scene.world.gravity))
+    # the reference's wave per unit heave (z = a sin w t: -i a), the gauges' 1.1 times it, 0.2 rad ahead
+    gain = 1.1 * np.exp(0.2j)
+    monkeypatch.setattr(radiation, "reference_elevation", lambda *args, **kw: 0.05 * hankel2(
+        0, k * np.hypot(*np.asarray(args[6], float).T)) / (-1j * m.amplitude) / gain)
     t = np.arange(1, int(round(scene.world.duration / scene.world.sample_every)) + 1) * scene.world.sample_every
     z, v, acc = m.amplitude * np.sin(w * t), m.amplitude * w * np.cos(w * t), -m.amplitude * w * w * np.sin(w * t)
     box = 2e3 * np.cos(w * t + 0.3) + 5e3 * np.sin(1.3 * w * t)
@@ -116,6 +127,10 @@ def test_the_tare_takes_the_held_bodys_force_and_waves_out_of_the_fit(monkeypatc
     got = radiation.radiation_metrics(_Records(t, forced), scene, _Records(t, held))
     assert got["tared"] and got["A33_error"] < 1e-9 and got["B33_error"] < 1e-9 and got["reflection"] < 1e-9
     assert got["B33_error_untared"] > 0.1 and got["A33_error_untared"] > 1e-3
+    for line in got["lines"].values():  # each gauge against the reference's elevation there
+        assert line["H1_over_reference"] == pytest.approx([1.1] * 4, abs=1e-4)
+        assert line["lag_periods"] == pytest.approx([-0.2 / (2.0 * math.pi)] * 4, abs=1e-4)
+        assert line["reflection_floor"] < 1e-9
     with pytest.raises(ValueError, match="sample times"):
         radiation.radiation_metrics(_Records(t, forced), scene, _Records(t[:-1], held))
 
@@ -128,6 +143,7 @@ def test_the_damping_is_also_fitted_period_by_period(monkeypatch):
 
     a_ref, b_ref, c33 = 4.16e4, 2.39e4, 2.77e5
     monkeypatch.setattr(radiation, "reference", lambda *args, **kw: (a_ref, b_ref, c33))
+    monkeypatch.setattr(radiation, "reference_elevation", _outgoing)
     scene = radiation.radiation_scene(True)
     b, m = scene.bodies[0], scene.bodies[0].motion
     w = 2.0 * math.pi / m.period
@@ -145,6 +161,36 @@ def test_the_damping_is_also_fitted_period_by_period(monkeypatch):
     assert got["B33_error_standard"] == pytest.approx(spread, rel=1e-4)
 
 
+def test_the_reflection_floor_is_the_split_of_the_references_own_wave(monkeypatch):
+    """Where the reference's wave at the gauges is not a pure outgoing one (near the body its
+    evanescent modes are not in the split's basis), the split reads a reflection from it:
+    the floor reported is that, whatever the gauges read (here 3 % built in)."""
+    from scipy.special import hankel1, hankel2
+
+    from cosim.validations import radiation
+    from fluid.waves import wavenumbers
+
+    monkeypatch.setattr(radiation, "reference", lambda *args, **kw: (4.16e4, 2.39e4, 2.77e5))
+    scene = radiation.radiation_scene(True)
+    b, m = scene.bodies[0], scene.bodies[0].motion
+    w = 2.0 * math.pi / m.period
+    k = float(wavenumbers(w, scene.domain.depth, scene.world.gravity))
+
+    def reference_wave(*args, **kw):
+        r = k * np.hypot(*np.asarray(args[6], float).T)
+        return hankel2(0, r) + 0.03 * np.exp(1.0j) * hankel1(0, r)
+
+    monkeypatch.setattr(radiation, "reference_elevation", reference_wave)
+    t = np.arange(1, int(round(scene.world.duration / scene.world.sample_every)) + 1) * scene.world.sample_every
+    z = m.amplitude * np.sin(w * t)
+    forced = {f"{b.name}.fluid_Fz": 4.5e5 - 2.77e5 * z, f"{b.name}.heave": z}
+    for i, (gx, gy) in enumerate(scene.probes.gauges):
+        forced[f"gauge{i + 1}.eta"] = np.real(0.05 * hankel2(0, k * math.hypot(gx, gy)) * np.exp(1j * w * t))
+    got = radiation.radiation_metrics(_Records(t, forced), scene)
+    for line in got["lines"].values():
+        assert line["reflection"] < 1e-9 and line["reflection_floor"] == pytest.approx(0.03, rel=1e-6)
+
+
 def test_the_errors_against_the_first_panels_reference_are_kept_beside(monkeypatch):
     """The case is judged against Capytaine's reference at ``PANEL``; the figures against
     the reference it was first judged by (``FIRST_PANEL``, another A33, B33 and C33) come
@@ -154,6 +200,7 @@ def test_the_errors_against_the_first_panels_reference_are_kept_beside(monkeypat
 
     refs = {radiation.PANEL: (4.15e4, 2.41e4, 2.773e5), radiation.FIRST_PANEL: (4.16e4, 2.39e4, 2.769e5)}
     monkeypatch.setattr(radiation, "reference", lambda *args, panel=radiation.PANEL, **kw: refs[panel])
+    monkeypatch.setattr(radiation, "reference_elevation", _outgoing)
     scene = radiation.radiation_scene(True)
     b, m = scene.bodies[0], scene.bodies[0].motion
     w = 2.0 * math.pi / m.period

@@ -23,7 +23,9 @@ and radiation damping of linear potential flow.
   depth (``fluid.potential.compute``, cached), and the outgoing wave that B33 implies by
   the energy flux, ``|A_out| = a w sqrt(B33 k / (4 rho g c_g))`` (the far field
   ``A_out H0^(2)(k r)`` carries ``2 rho g |A_out|^2 c_g / k`` [W], which the body's
-  ``B33 w^2 a^2 / 2`` feeds: Newman 1977 §6.18), reported beside the gauges' amplitude.
+  ``B33 w^2 a^2 / 2`` feeds: Newman 1977 §6.18), reported beside the gauges' amplitude;
+  and Capytaine's elevation at each gauge (:func:`reference_elevation`), over which each
+  gauge's is reported, and whose split is the method's floor (``reflection_floor``).
 - The tare: the same box run once more with the body held still (:func:`held_scene`), whose
   force and gauges are subtracted from the forced run's before the fits, as a towing tank
   subtracts its still-model record: the water's own start-up oscillation in the box (the
@@ -87,6 +89,19 @@ def reference(radius: float, draft: float, depth: float, omega: float, rho: floa
     return float(c.added_mass[1, 2, 2]), float(c.damping[1, 2, 2]), float(c.stiffness[2, 2])
 
 
+def reference_elevation(radius: float, draft: float, depth: float, omega: float, rho: float, g: float, points,
+                        panel: float = PANEL) -> np.ndarray:
+    """Capytaine's complex elevation [m per m of heave] radiated at ``points`` (n, 2) [m] by
+    the cylinder of :func:`reference` heaving as ``Re(X exp(i omega t))``: the elevation is
+    ``Re(X e exp(i omega t))`` (this module's time factor; :mod:`fluid.potential.elevation`
+    works in Capytaine's ``exp(-i omega t)``, hence the conjugate). Cached."""
+    from fluid.potential import wetted_hull
+    from fluid.potential.elevation import radiated_elevation
+
+    hull = wetted_hull("cylinder", [radius, draft], np.eye(3), [0.0, 0.0, 0.0], panel * radius, name="cylinder")
+    return np.conj(radiated_elevation(hull, 0.0, "Heave", omega, points, depth=depth, rho=rho, g=g))
+
+
 def radiation_scene(quick: bool):
     """The case's scene at the variant's spacing, run for the ramp and
     :data:`PERIODS_AFTER_RAMP` periods."""
@@ -141,7 +156,10 @@ def radiation_metrics(res, scene, tare=None) -> dict:
     period to period with what the box sends back (docs/validation/nearfield.md, "B33's
     swing is not the ramp's"), which this sizes; the periods are not independent draws (the
     swing's cycle is several periods), so it is an indication of the fit's spread, not a
-    confidence interval."""
+    confidence interval. On each gauge line: the reflection, its floor (the same split of
+    Capytaine's own elevation at those gauges), the outgoing wave over the one B33's
+    energy flux implies, and each gauge's first harmonic ``H1_m``, over Capytaine's
+    (``H1_over_reference``) and its lag behind Capytaine's (``lag_periods``, periods)."""
     from fluid.waves import group_velocity, wavenumbers
 
     b, d = scene.bodies[0], scene.domain
@@ -169,11 +187,17 @@ def radiation_metrics(res, scene, tare=None) -> dict:
     eta = np.column_stack([less_tare(f"gauge{i + 1}.eta") for i in range(len(scene.probes.gauges))])
     z = harmonics(ts, eta, w)
     theory = m.amplitude * w * math.sqrt(b_ref * k / (4.0 * rho * g * float(group_velocity(k, d.depth, g))))
+    gauges = np.asarray(scene.probes.gauges, float)[:, :2] - np.asarray(b.pos[:2], float)
+    z_ref = z1 * reference_elevation(b.radius, draft, d.depth, w, rho, g, gauges)  # for the heave measured
     lines = {}
     for name, (idx, r) in _lines(scene).items():
         out, back = separate(r, z[idx], k, "cylindrical")
+        out_ref, back_ref = separate(r, z_ref[idx], k, "cylindrical")
         lines[name] = {"r_m": np.round(r, 4).tolist(), "reflection": abs(back) / abs(out),
-                       "outgoing_over_theory": abs(out) / theory, "H1_m": np.round(2.0 * np.abs(z[idx]), 5).tolist()}
+                       "reflection_floor": abs(back_ref) / abs(out_ref),
+                       "outgoing_over_theory": abs(out) / theory, "H1_m": np.round(2.0 * np.abs(z[idx]), 5).tolist(),
+                       "H1_over_reference": np.round(np.abs(z[idx] / z_ref[idx]), 4).tolist(),
+                       "lag_periods": np.round(-np.angle(z[idx] / z_ref[idx]) / (2.0 * math.pi), 4).tolist()}
     s = res.summary
     return {"A33_kg": a33, "B33_kg_s": b33, "A33_ref_kg": a_ref, "B33_ref_kg_s": b_ref, "C33_N_m": c33,
             "A33_error": abs(a33 / a_ref - 1.0), "B33_error": abs(b33 / b_ref - 1.0), "tared": tare is not None,

@@ -7,6 +7,7 @@ added mass: seconds) and SPH (hours in 3-D): the model offshore engineers use ev
 - :mod:`fluid.potential.coefficients`: added mass, damping, excitation and hydrostatics
   from Capytaine (optional dependency: ``pip install cosim-sph[potential]``), cached;
 - :mod:`fluid.potential.radiation`: the radiation impulse response and its checks;
+- :mod:`fluid.potential.elevation`: the elevation a body radiates, at given points;
 - :mod:`fluid.potential.waves`: wave components and the excitation they give;
 - :mod:`fluid.potential.participant`: :class:`PotentialFluid`, the Cummins equation as a
   participant with the analytic fluid's coupling interface.
