@@ -10,8 +10,8 @@ force). docs/validation/nearfield.md, "The reference's panels, and the full vari
     python benchmarks/radiation_force_by_ring.py --out OUT [--r-over-dx 4] [--periods 2] [--only forced|held]
 
 The case's scene at ``--r-over-dx``, run for its ramp and ``--periods`` periods, the force
-on every body particle read every twentieth of a period after the ramp (``m a``, as
-``fluid.solver.Fluid.boundary_forces_now`` reads it; on the half body the plane's particles
+on every body particle read every twentieth of a period after the ramp
+(``cosim.sph_fluid.SPHFluid.body_particle_forces``: on the half body the plane's particles
 once, the others twice); ``--only held`` the case's tare (``held_scene``), whose parts are
 subtracted. Each run's parts are saved in ``OUT/RUN.npz``; a call without ``--only`` runs
 what is missing and prints the table.
@@ -46,8 +46,6 @@ def ring_forces(scene) -> dict:
     the body's particles by ring from the rim inwards, every layer (the kernel reaches past the
     bottom layer), the last column the outer ring's particles above the bottom layer (a part
     of the first: the side's)."""
-    from fluid.particles import Kind
-
     b, m = scene.bodies[0], radiation_scene(True).bodies[0].motion  # the forced motion's times (held too)
     dx = scene.fluid.dx
     ramp_end = m.ramp * m.period
@@ -56,20 +54,12 @@ def ring_forces(scene) -> dict:
     n_rings = int(math.ceil(b.radius / dx))
     rows, cpu = [], time.process_time()
     with case_scene.built(scene) as built:
-        sph, fl = built.sph, built.fluid
         for t in times:
             built.coupler.run(float(t))
-            sph.refresh_rates()  # the body's particles' rates at this state (kept whatever wall_loads says)
-            ps = sph.ps
-            F = ps.mass[:, None] * sph._acc
-            own = ps.group == fl._g0
-            plane = ps.group == fl._plane0 if fl._plane0 is not None else np.zeros_like(own)
-            mine = (own | plane) & (ps.kind != Kind.FLUID)
-            weight = np.where(plane, 1.0, 2.0)[mine]
-            x, y, z = ps.pos[mine, 0] - b.pos[0], ps.pos[mine, 1] - b.pos[1], ps.pos[mine, 2]
-            z = z - z.min()
+            pos, F, shares = built.fluid.body_particle_forces(0)
+            x, y, z = pos[:, 0] - b.pos[0], pos[:, 1] - b.pos[1], pos[:, 2] - pos[:, 2].min()
             ring = np.clip(np.floor((b.radius - np.hypot(x, y)) / dx).astype(int), 0, n_rings - 1)
-            fz = weight * F[mine, 2]
+            fz = shares * F[:, 2]
             rim_above = (ring == 0) & (z > 0.5 * dx)
             rows.append(np.append(np.bincount(ring, weights=fz, minlength=n_rings), fz[rim_above].sum()))
     radii = b.radius - dx * (0.5 + np.arange(n_rings))

@@ -193,7 +193,8 @@ class SPHFluid:
             keep = pb[:, 1] >= -tol
             pb, owner = pb[keep], owner[keep]
             plane = np.abs(pb[:, 1]) <= tol
-        x, _ = place(pb, owner, kin)
+        self._on_plane = plane
+        x, _ = self._placed(pb, owner, kin)
         self._g0 = 1 + max([int(g) for _, _, g in self._walls], default=-1)
         pts = self._to_dim(x)
         body_sets = [(pts[(owner == k) & ~plane], Kind.BODY, self._g0 + k) for k in range(bodies.n_bodies)]
@@ -342,10 +343,20 @@ class SPHFluid:
         for e, ids, ghost in zip(self.elastic, self._elastic_ids, self._elastic_ghost):
             self._mdbc.set_offsets(ids, self._to_dim(e.rotate(ghost, kin)))
 
+    def _placed(self, pb, owner, kin):
+        """World positions and velocities of the rigid bodies' particles (``place``), those on
+        a symmetry plane put on it exactly: the pose's round-off (1e-17 m) would put them
+        beyond it, where the fluid refuses particles."""
+        x, u = place(pb, owner, kin)
+        if self.symmetry:
+            x[self._on_plane, 1] = 0.0
+            u[self._on_plane, 1] = 0.0
+        return x, u
+
     def set_body_kinematics(self, kin) -> None:
         if self._mdbc is not None:
             self._set_ghosts(kin)
-        x, u = place(self._pb, self._owner, kin)
+        x, u = self._placed(self._pb, self._owner, kin)
         self.fluid.set_particle_motion(self._ids, self._to_dim(x), self._to_dim(u))
         self.fluid.moment_points[self._g0:self._g0 + self.n_bodies] = self._to_dim(kin.com)
         if self.symmetry:
@@ -361,6 +372,24 @@ class SPHFluid:
         body, world frame, from the rates at the current state (2-D: per metre of
         depth, which is the 1 m thick body's load)."""
         return self._to_wrench3(*self.fluid.group_forces_now())
+
+    def body_particle_forces(self, k: int):
+        """``(positions (n, 3) [m], forces (n, 3) [N], shares (n,))`` of body ``k``'s boundary
+        particles at the current state, world frame: the force the fluid exerts on each
+        (:meth:`fluid.solver.Fluid.boundary_forces_now`) and the number of times it counts in
+        the body's load, so that ``(shares[:, None] * forces).sum(0)`` is the force of
+        :meth:`body_wrenches` (a symmetry plane: 2 for the simulated half's rows, their
+        images' too, and 1 on the plane, before the mirrored ``y`` component is dropped;
+        without one 1). Rigid bodies only (``0 <= k < n_bodies``)."""
+        if not 0 <= k < self.n_bodies:
+            raise InputError(f"SPH fluid: no rigid body {k}; bodies are 0..{self.n_bodies - 1}")
+        F = self.fluid.boundary_forces_now()
+        ps = self.fluid.ps
+        own = ps.group == self._g0 + k
+        plane = (ps.group == self._plane0 + k) if self.symmetry else np.zeros_like(own)
+        rows = np.flatnonzero((own | plane) & (ps.ids >= 0))
+        shares = np.where(plane[rows], 1.0, 2.0 if self.symmetry else 1.0)
+        return self._to_3d(ps.pos[rows]), self._to_3d(F[rows]), shares
 
     def exchanged_wrenches(self):
         """The loads the fluid actually exchanged with each body over its last

@@ -180,6 +180,9 @@ def wall_patch_pressure(fluid, centre, normal, size: float, group: int | None = 
     if not first.any():
         raise InputError(f"wall_patch_pressure: no boundary particle within one dx behind the face at "
                          f"{cen} m (normal {n}); put the centre on the wall's face")
+    if np.isnan(F[sel]).any():
+        raise InputError("wall_patch_pressure: the patch is on a tank wall, whose loads are not computed "
+                         "(FluidConfig.wall_loads=False); set wall_loads=True to read them")
     area = first.sum() * c.dx ** (dim - 1)
     return float(-(F[sel] @ n).sum() / area)
 

@@ -559,14 +559,15 @@ class Fluid:
         """Force [N] (N, dim) the fluid exerts on each particle at the current state, in the
         current order of ``self.ps``: ``m a`` of the boundary particles from the rates (the
         per-particle terms of :meth:`group_forces_now`), zero rows for the fluid and for a
-        symmetry plane's images."""
-        if not self.config.wall_loads:
-            raise InputError("fluid: the walls' loads are not computed (FluidConfig.wall_loads=False); "
-                             "set wall_loads=True to read boundary forces")
+        symmetry plane's images. With ``FluidConfig.wall_loads = False`` the tank walls' rows
+        are NaN (their accelerations are not computed, as their groups' loads read NaN); the
+        bodies' rows are computed either way."""
         self.refresh_rates()
         ps = self.ps
         F = ps.mass[:, None] * self._acc
         F[ps.kind == Kind.FLUID] = 0.0
+        if not self.config.wall_loads:
+            F[(ps.kind == Kind.FIXED_WALL) | (ps.kind == Kind.MOVING_WALL)] = np.nan
         return F
 
     def fluid_force_from_groups(self):

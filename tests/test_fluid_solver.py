@@ -300,8 +300,9 @@ def test_adami_walls_loads_leave_the_fluid_as_it_is(integrator):
 def test_without_wall_loads_the_fluid_and_the_bodies_get_the_same_rates(walls):
     """FluidConfig(wall_loads=False): the fluid's rates, the walls' continuity rates (plain
     dynamic boundaries) and a body's load are those of the full pass; the walls' own
-    accelerations are not computed, so their groups' loads read NaN and the readers of
-    wall loads refuse with the reason."""
+    accelerations are not computed, so their groups' loads and their rows of
+    boundary_forces_now read NaN (the body's rows as with loads), and the readers of wall
+    loads refuse with the reason."""
     from dataclasses import replace
 
     from fluid.geometry import block
@@ -346,8 +347,14 @@ def test_without_wall_loads_the_fluid_and_the_bodies_get_the_same_rates(walls):
     np.testing.assert_array_equal(F[2], F_full[2])
     np.testing.assert_array_equal(M[2], M_full[2])
     assert np.abs(F_full[2]).max() > 0.1
+    per_row = lite.boundary_forces_now()  # the walls' rows not computed, the body's as with loads
+    assert np.isnan(per_row[lite.ps.kind == Kind.FIXED_WALL]).all()
+    on_body = lite.ps.kind == Kind.BODY
+    np.testing.assert_array_equal(per_row[on_body], full.boundary_forces_now()[on_body])
+    from fluid.probes import wall_patch_pressure
+
     with pytest.raises(InputError, match="wall_loads"):
-        lite.boundary_forces_now()
+        wall_patch_pressure(lite, [0.0, 0.02], [1.0, 0.0], 0.02)
     with pytest.raises(InputError, match="wall_loads"):
         GroupLoad(0).sample(lite)
     assert GroupLoad(2).sample(lite)["F"][1] == F_full[2][1]

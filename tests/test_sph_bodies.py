@@ -131,11 +131,13 @@ def test_a_mesh_box_displaces_the_fluid_of_the_box_geom():
     np.testing.assert_allclose(got["mesh"][1], got["box"][1], atol=1e-6)
 
 
-def _held_box_3d(half: bool, dx=0.025, L=0.3, W=0.3, D=0.2, box=(0.1, 0.1, 0.05), centre=(0.15, 0.0, 0.1)):
+def _held_box_3d(half: bool, dx=0.025, L=0.3, W=0.3, D=0.2, box=(0.1, 0.1, 0.05), centre=(0.15, 0.0, 0.1),
+                 **config):
     """A box held under still water in a 3-D tank across y = -W/2 .. W/2, or (``half``) the
-    half y >= 0 of the same particles with a symmetry plane at y = 0 (fluid.mirror)."""
+    half y >= 0 of the same particles with a symmetry plane at y = 0 (fluid.mirror);
+    ``config``: more FluidConfig fields."""
     cfg = FluidConfig(dim=3, dx=dx, u_max=math.sqrt(G * D), c0_factor=20.0, walls="adami", alpha_wall=0.0,
-                      symmetry_y=0.0 if half else None)
+                      symmetry_y=0.0 if half else None, **config)
     lo, hi = np.array([0.0, -0.5 * W, 0.0]), np.array([L, 0.5 * W, D + 0.1])
     walls, water = tank_walls(lo, hi, dx, 4), block(lo, np.array([L, 0.5 * W, D]), dx)
     if half:
@@ -169,3 +171,24 @@ def test_a_symmetry_plane_gives_the_whole_body_its_mirrored_half_load():
     assert 2 * nh == nf
     with pytest.raises(InputError, match="symmetry plane"):
         SPHFluid(FluidConfig(dim=3, dx=0.01, u_max=1.0, symmetry_y=0.5), np.zeros((0, 3)))
+
+
+@pytest.mark.parametrize("half", [False, True])
+def test_a_bodys_particle_forces_add_up_to_its_load(half):
+    """SPHFluid.body_particle_forces: the force on each of the body's particles, counted as
+    often as its load counts it (twice off a symmetry plane, the image's share), sums to
+    body_wrenches' force, with the tank's loads off (the body's rows are computed either
+    way); the rows are the body's own, inside its box. An odd number across y: the middle
+    row lies on the plane, where the pose's round-off must not put it beyond."""
+    f, bodies = _held_box_3d(half, box=(0.1, 0.115, 0.05), wall_loads=False)
+    _held_wrenches(f, bodies, 0.003)
+    x, F, shares = f.body_particle_forces(0)
+    want = f.body_wrenches()[0][0]
+    got = (shares[:, None] * F).sum(axis=0)
+    assert want[2] > 0.5 * 1000.0 * G * 0.1 * 0.1 * 0.05 and np.isfinite(F).all()
+    np.testing.assert_allclose(got[[0, 2]], want[[0, 2]], rtol=0, atol=1e-9 * want[2])
+    assert sorted(set(shares)) == ([1.0, 2.0] if half else [1.0])
+    assert (np.abs(x - [0.15, 0.0, 0.1]) <= [0.1, 0.115, 0.05]).all()
+    assert len(x) == (f.fluid.simulated().kind == Kind.BODY).sum()
+    with pytest.raises(InputError, match="no rigid body 1"):
+        f.body_particle_forces(1)
