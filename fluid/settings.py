@@ -200,7 +200,8 @@ SETTINGS: tuple[Setting, ...] = (
             "2016, §2.6); adami, the fluid's pressure carried to each wall particle (Adami, Hu & Adams 2012, "
             "J. Comput. Phys. 231, Eq. 27; fluid.wall_density). BODY particles are not affected", scene="set-up"),
     Setting("wall_loads", True, "the fluid's load on the tank walls is computed (their group loads, wall-pressure "
-            "patches); false: those read NaN and boundary_forces_now refuses", kind=bool,
+            "patches); false: those read NaN, as do their rows of boundary_forces_now (the bodies' rows are "
+            "computed either way)", kind=bool,
             note="false: the pair loop gives the FIXED_WALL and MOVING_WALL particles their continuity rate and "
             "their viscous terms' bound on the step only, not their accelerations; the fluid's rates and step are "
             "those of the full pass (to round-off) and it costs less (docs/benchmarks/"
