@@ -55,7 +55,8 @@ def radiated_elevation(hull: Hull, centre_of_mass_z: float, dof: str, omega: flo
     cog = np.array([0.0, 0.0, centre_of_mass_z])
     mesh = cpt.Mesh(vertices=hull.vertices, faces=hull.faces, name="body")
     lid_mesh, lid_arrays = _lid(cpt, mesh, hull, omega, g, lid)
-    h = hashlib.sha256(_key(hull, lid_arrays, cog, rho, g, depth, np.array([omega]), np.zeros(1),
+    # the coefficients' key of this hull, lid and water at the one frequency (no heading), then the dof and points
+    h = hashlib.sha256(_key(hull, lid_arrays, cog, rho, g, depth, np.array([omega]), np.zeros(0),
                             cpt.__version__).encode())
     h.update(dof.encode())
     h.update(np.ascontiguousarray(np.round(pts, 12)).tobytes())
