@@ -133,7 +133,7 @@ def _lines(scene) -> dict:
     return {"x": (np.flatnonzero(along_x), r[along_x]), "y": (np.flatnonzero(~along_x), r[~along_x])}
 
 
-def _damping_by_period(ts, force, amplitude: float, omega: float, stiffness: float, period: float) -> list:
+def damping_by_period(ts, force, amplitude: float, omega: float, stiffness: float, period: float) -> list:
     """B33 [kg/s] fitted by :func:`added_mass_damping` over each whole ``period`` [s] of the
     samples ``ts`` [s] from the first (windows ``[t0, t0 + period)``, each period's samples
     once)."""
@@ -183,7 +183,7 @@ def radiation_metrics(res, scene, tare=None) -> dict:
     a33, b33 = added_mass_damping(ts, fz, m.amplitude, w, c33)
     a33_raw, b33_raw = added_mass_damping(ts, res[f"{b.name}.fluid_Fz"][fit], m.amplitude, w, c33)
     a33_first = added_mass_damping(ts, fz, m.amplitude, w, c_first)[0]
-    per_period = _damping_by_period(ts, fz, m.amplitude, w, c33, m.period)
+    per_period = damping_by_period(ts, fz, m.amplitude, w, c33, m.period)
     eta = np.column_stack([less_tare(f"gauge{i + 1}.eta") for i in range(len(scene.probes.gauges))])
     z = harmonics(ts, eta, w)
     theory = m.amplitude * w * math.sqrt(b_ref * k / (4.0 * rho * g * float(group_velocity(k, d.depth, g))))

@@ -1,0 +1,153 @@
+"""nearfield-radiation's box with another hull of the cylinder's waterline (R = 3 m): a floating
+hemisphere (no sharp edge, draft R) or the cylinder drawing another draft, forced in heave
+as the case forces its cylinder (0.3 m, T = 3.54 s, k R = 1), its tare run beside, read as
+the case reads its own (``cosim.validations.radiation``: the tared force's first harmonic
+over whole periods after the ramp, period by period too; each gauge against Capytaine's
+radiated elevation there). The reference: Capytaine's A33, B33 of the same hull at the
+case's depth (panels 0.05 R, cached). docs/validation/nearfield.md, "Other hulls in the
+case's box".
+
+    python benchmarks/radiation_hull.py --out OUT [--hull hemisphere|cylinder] [--draft D]
+        [--r-over-dx 4] [--periods 6] [--only forced|held] [--upto N]
+
+Each run is kept in ``OUT/forced`` and ``OUT/held`` and resumed from its checkpoint; a
+call without ``--only`` runs what is missing (one after the other) and prints the figures.
+``--upto N`` reads the first N periods after the ramp of runs still going.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+from pathlib import Path
+
+import numpy as np
+
+from cosim.validations import case_scene
+from cosim.validations.radiation import PANEL, added_mass_damping, damping_by_period, held_scene, radiation_scene
+from cosim.validations.wave_propagation import harmonics, separate
+
+RADIUS = 3.0  # m: the cylinder's
+
+
+def scene_for(hull: str, draft: float, r_over_dx: float, periods: int, held: bool):
+    """The case's quick scene with ``hull`` in place of its cylinder: a sphere of
+    :data:`RADIUS` centred on the still water ("hemisphere"), or the cylinder drawing
+    ``draft`` [m] (its centre on the still water, twice as long), at ``r_over_dx``, for the
+    ramp and ``periods`` periods."""
+    from cosim.scene.toml_io import from_dict, to_dict
+
+    d = to_dict(radiation_scene(True))
+    b = d["bodies"][0]
+    depth = d["domain"]["depth"]
+    if hull == "hemisphere":
+        b.pop("length")
+        b.update(shape="sphere", name="hemisphere", radius=RADIUS, pos=[0.0, 0.0, depth])
+        d["probes"]["motion"] = ["hemisphere"]
+    else:
+        b.update(radius=RADIUS, length=2.0 * draft, pos=[0.0, 0.0, depth])
+    d["fluid"]["dx"] = RADIUS / r_over_dx
+    d["world"]["duration"] = (b["motion"]["ramp"] + periods) * b["motion"]["period"]
+    d["name"] = f"radiation-{hull}"
+    s = from_dict(d)
+    return held_scene(s) if held else s
+
+
+def reference_hull(hull: str, draft: float):
+    """The wetted hull of ``hull`` (:func:`scene_for`) for Capytaine, panels :data:`PANEL` R."""
+    from fluid.potential import wetted_hull
+
+    kind, size = ("sphere", [RADIUS]) if hull == "hemisphere" else ("cylinder", [RADIUS, draft])
+    return wetted_hull(kind, size, np.eye(3), [0.0, 0.0, 0.0], PANEL * RADIUS, name=hull)
+
+
+def _records(folder: Path):
+    """The run's records (``cosim.scene.runner.read``), or, for a run still going, its
+    ``run.h5`` as far as written: ``(t, series)``."""
+    import h5py
+
+    from cosim.scene.runner import read
+
+    if (folder / "summary.json").is_file():
+        r = read(folder)
+        return r.t, r.series
+    series = {}
+    with h5py.File(folder / "run.h5", "r") as h5:
+        for g in h5["series/probes"].values():
+            series.update({name: d[:] for name, d in g.items()})
+    n = min(len(v) for v in series.values())
+    series = {k: v[:n] for k, v in series.items()}
+    return series.pop("t"), series
+
+
+def figures(out: Path, hull_name: str, draft: float, r_over_dx: float, periods: int) -> str:
+    """The table's lines: A33, B33 (whole and by period) and the gauges against Capytaine."""
+    from fluid.potential import compute
+    from fluid.potential.elevation import radiated_elevation
+    from fluid.waves import group_velocity, wavenumbers
+
+    s = scene_for(hull_name, draft, r_over_dx, periods, False)
+    m, depth = s.bodies[0].motion, s.domain.depth
+    g, rho = s.world.gravity, s.fluid.rho0
+    w = 2.0 * math.pi / m.period
+    k = float(wavenumbers(w, depth, g))
+    hull = reference_hull(hull_name, draft)
+    c = compute(hull, 0.0, omega=w * np.array([0.9, 1.0, 1.1]), depth=depth, rho=rho, g=g,
+                name=f"radiation-{hull_name}")
+    a_ref, b_ref, c33 = float(c.added_mass[1, 2, 2]), float(c.damping[1, 2, 2]), float(c.stiffness[2, 2])
+    (t, forced), (t_held, held) = _records(out / "forced"), _records(out / "held")
+    n = min(len(t), len(t_held))
+    t0 = m.ramp * m.period
+    fit = (t[:n] > t0 - 1e-9) & (t[:n] <= t0 + periods * m.period + 1e-9)  # as the case: from the ramp's end
+    if t[:n][-1] < t0 + periods * m.period - 1e-6:
+        raise SystemExit(f"the runs reach {t[:n][-1]:.4g} s, short of {periods} periods after the ramp; "
+                         f"give --upto with fewer")
+    ts = t[:n][fit]
+
+    def tared(name):
+        return forced[name][:n][fit] - held[name][:n][fit]
+
+    body = next(k for k in forced if k.endswith(".fluid_Fz"))[:-len(".fluid_Fz")]  # the one body's series
+    fz = tared(f"{body}.fluid_Fz")
+    a33, b33 = added_mass_damping(ts, fz, m.amplitude, w, c33)
+    per = damping_by_period(ts, fz, m.amplitude, w, c33, m.period)
+    z1 = harmonics(ts, forced[f"{body}.heave"][:n][fit][:, None], w)[0]
+    pts = np.asarray(s.probes.gauges, float)[:, :2]
+    z = harmonics(ts, np.column_stack([tared(f"gauge{i + 1}.eta") for i in range(len(pts))]), w)
+    z_ref = z1 * np.conj(radiated_elevation(hull, 0.0, "Heave", w, pts, depth=depth, rho=rho, g=g))
+    theory = m.amplitude * w * math.sqrt(b_ref * k / (4.0 * rho * g * float(group_velocity(k, depth, g))))
+    r = np.hypot(pts[:, 0], pts[:, 1])
+    along_x = np.abs(pts[:, 0]) > np.abs(pts[:, 1])
+    lines = [f"{hull_name}, draft {hull.draft:g} m, R/dx = {r_over_dx:g}, {periods} periods after the ramp, tared; Capytaine (panels "
+             f"{PANEL:g} R): A33 {a_ref:.0f} kg, B33 {b_ref:.0f} kg/s, C33 {c33:.0f} N/m",
+             f"SPH: A33 {a33:.0f} kg ({a33 / a_ref - 1:+.1%}), B33 {b33:.0f} kg/s ({b33 / b_ref - 1:+.1%}); "
+             f"B33 by period " + ", ".join(f"{x / 1e3:.1f}" for x in per) + " kN s/m"]
+    for name, sel in (("x", along_x), ("y", ~along_x)):
+        out_w, back = separate(r[sel], z[sel], k, "cylindrical")
+        q = z[sel] / z_ref[sel]
+        lines.append(f"{name} line, r = {np.round(r[sel], 2).tolist()} m: H1 / Capytaine's "
+                     f"{np.round(np.abs(q), 3).tolist()}, lag {np.round(-np.angle(q) / (2 * math.pi), 4).tolist()} "
+                     f"periods; outgoing / B33's {abs(out_w) / theory:.3f}, reflection {abs(back) / abs(out_w):.3f}")
+    return "\n".join(lines)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--out", required=True, type=Path)
+    ap.add_argument("--hull", choices=("hemisphere", "cylinder"), default="hemisphere")
+    ap.add_argument("--draft", type=float, default=1.5, help="the cylinder's draft [m] (the case's: 1.5)")
+    ap.add_argument("--r-over-dx", type=float, default=4.0)
+    ap.add_argument("--periods", type=int, default=6)
+    ap.add_argument("--only", choices=("forced", "held"))
+    ap.add_argument("--upto", type=int, help="read the first UPTO periods after the ramp (runs still going)")
+    args = ap.parse_args(argv)
+    if args.upto is None:
+        for run in ([args.only] if args.only else ["forced", "held"]):
+            case_scene.run_or_resume(scene_for(args.hull, args.draft, args.r_over_dx, args.periods, run == "held"),
+                                     args.out / run)
+    if not args.only:
+        print(figures(args.out, args.hull, args.draft, args.r_over_dx, args.upto or args.periods))
+
+
+if __name__ == "__main__":
+    main()
