@@ -24,8 +24,9 @@ from pathlib import Path
 import numpy as np
 
 from cosim.validations import case_scene
-from cosim.validations.radiation import PANEL, added_mass_damping, damping_by_period, held_scene, radiation_scene
-from cosim.validations.wave_propagation import harmonics, separate
+from cosim.validations.radiation import (PANEL, added_mass_damping, damping_by_period, gauge_line, held_scene,
+                                         outgoing_amplitude, radiation_scene)
+from cosim.validations.wave_propagation import harmonics
 
 RADIUS = 3.0  # m: the cylinder's
 
@@ -84,7 +85,7 @@ def figures(out: Path, hull_name: str, draft: float, r_over_dx: float, periods: 
     """The table's lines: A33, B33 (whole and by period) and the gauges against Capytaine."""
     from fluid.potential import compute
     from fluid.potential.elevation import radiated_elevation
-    from fluid.waves import group_velocity, wavenumbers
+    from fluid.waves import wavenumbers
 
     s = scene_for(hull_name, draft, r_over_dx, periods, False)
     m, depth = s.bodies[0].motion, s.domain.depth
@@ -115,19 +116,18 @@ def figures(out: Path, hull_name: str, draft: float, r_over_dx: float, periods: 
     pts = np.asarray(s.probes.gauges, float)[:, :2]
     z = harmonics(ts, np.column_stack([tared(f"gauge{i + 1}.eta") for i in range(len(pts))]), w)
     z_ref = z1 * np.conj(radiated_elevation(hull, 0.0, "Heave", w, pts, depth=depth, rho=rho, g=g))
-    theory = m.amplitude * w * math.sqrt(b_ref * k / (4.0 * rho * g * float(group_velocity(k, depth, g))))
+    theory = outgoing_amplitude(b_ref, m.amplitude, w, depth, rho, g)
     r = np.hypot(pts[:, 0], pts[:, 1])
     along_x = np.abs(pts[:, 0]) > np.abs(pts[:, 1])
-    lines = [f"{hull_name}, draft {hull.draft:g} m, R/dx = {r_over_dx:g}, {periods} periods after the ramp, tared; Capytaine (panels "
-             f"{PANEL:g} R): A33 {a_ref:.0f} kg, B33 {b_ref:.0f} kg/s, C33 {c33:.0f} N/m",
+    lines = [f"{hull_name}, draft {hull.draft:g} m, R/dx = {r_over_dx:g}, {periods} periods after the ramp, tared; "
+             f"Capytaine (panels {PANEL:g} R): A33 {a_ref:.0f} kg, B33 {b_ref:.0f} kg/s, C33 {c33:.0f} N/m",
              f"SPH: A33 {a33:.0f} kg ({a33 / a_ref - 1:+.1%}), B33 {b33:.0f} kg/s ({b33 / b_ref - 1:+.1%}); "
              f"B33 by period " + ", ".join(f"{x / 1e3:.1f}" for x in per) + " kN s/m"]
     for name, sel in (("x", along_x), ("y", ~along_x)):
-        out_w, back = separate(r[sel], z[sel], k, "cylindrical")
-        q = z[sel] / z_ref[sel]
-        lines.append(f"{name} line, r = {np.round(r[sel], 2).tolist()} m: H1 / Capytaine's "
-                     f"{np.round(np.abs(q), 3).tolist()}, lag {np.round(-np.angle(q) / (2 * math.pi), 4).tolist()} "
-                     f"periods; outgoing / B33's {abs(out_w) / theory:.3f}, reflection {abs(back) / abs(out_w):.3f}")
+        f = gauge_line(r[sel], z[sel], z_ref[sel], k, theory)
+        lines.append(f"{name} line, r = {np.round(r[sel], 2).tolist()} m: H1 / Capytaine's {f['H1_over_reference']}, "
+                     f"lag {f['lag_periods']} periods; outgoing / B33's {f['outgoing_over_theory']:.3f}, "
+                     f"reflection {f['reflection']:.3f} (floor {f['reflection_floor']:.3f})")
     return "\n".join(lines)
 
 

@@ -76,15 +76,21 @@ def added_mass_damping(ts, force, amplitude: float, omega: float, stiffness: flo
     return float((fs / amplitude + stiffness) / omega**2), float(-fc / (amplitude * omega))
 
 
+def _cylinder(radius: float, draft: float, panel: float):
+    """The wetted hull of :func:`reference`'s cylinder, panels ``panel`` radii across."""
+    from fluid.potential import wetted_hull
+
+    return wetted_hull("cylinder", [radius, draft], np.eye(3), [0.0, 0.0, 0.0], panel * radius, name="cylinder")
+
+
 def reference(radius: float, draft: float, depth: float, omega: float, rho: float, g: float, cache=None,
               panel: float = PANEL):
     """Capytaine's ``(A33, B33, C33)`` of an upright cylinder of ``radius`` [m] drawing
     ``draft`` [m] in water ``depth`` [m] deep at ``omega`` [rad/s] (panels ``panel`` radii
     across; solved at 0.9, 1 and 1.1 omega, cached)."""
-    from fluid.potential import compute, wetted_hull
+    from fluid.potential import compute
 
-    hull = wetted_hull("cylinder", [radius, draft], np.eye(3), [0.0, 0.0, 0.0], panel * radius, name="cylinder")
-    c = compute(hull, 0.0, omega=omega * np.array([0.9, 1.0, 1.1]), depth=depth, rho=rho, g=g, cache=cache,
+    c = compute(_cylinder(radius, draft, panel), 0.0, omega=omega * np.array([0.9, 1.0, 1.1]), depth=depth, rho=rho, g=g, cache=cache,
                 name="radiation-cylinder")
     return float(c.added_mass[1, 2, 2]), float(c.damping[1, 2, 2]), float(c.stiffness[2, 2])
 
@@ -95,11 +101,34 @@ def reference_elevation(radius: float, draft: float, depth: float, omega: float,
     the cylinder of :func:`reference` heaving as ``Re(X exp(i omega t))``: the elevation is
     ``Re(X e exp(i omega t))`` (this module's time factor; :mod:`fluid.potential.elevation`
     works in Capytaine's ``exp(-i omega t)``, hence the conjugate). Cached."""
-    from fluid.potential import wetted_hull
     from fluid.potential.elevation import radiated_elevation
 
-    hull = wetted_hull("cylinder", [radius, draft], np.eye(3), [0.0, 0.0, 0.0], panel * radius, name="cylinder")
-    return np.conj(radiated_elevation(hull, 0.0, "Heave", omega, points, depth=depth, rho=rho, g=g))
+    return np.conj(radiated_elevation(_cylinder(radius, draft, panel), 0.0, "Heave", omega, points, depth=depth, rho=rho, g=g))
+
+
+def outgoing_amplitude(b33: float, amplitude: float, omega: float, depth: float, rho: float, g: float) -> float:
+    """The far-field amplitude ``|A_out|`` [m] of ``A_out H0^(2)(k r)`` that a body heaving
+    ``amplitude`` [m] at ``omega`` [rad/s] radiates when its damping is ``b33`` [kg/s], by
+    the energy flux (module docstring)."""
+    from fluid.waves import group_velocity, wavenumbers
+
+    k = float(wavenumbers(omega, depth, g))
+    return amplitude * omega * math.sqrt(b33 * k / (4.0 * rho * g * float(group_velocity(k, depth, g))))
+
+
+def gauge_line(r, z, z_ref, k: float, outgoing: float) -> dict:
+    """The figures of one line of gauges at distances ``r`` [m] from the axis: their
+    first-harmonic elevations ``z`` [m], the reference's ``z_ref`` for the same heave, split
+    into outgoing and incoming cylindrical waves of wavenumber ``k`` (the reflection, and
+    its floor from ``z_ref``), the outgoing wave over ``outgoing`` (:func:`outgoing_amplitude`)
+    and each gauge over the reference in height and lag [periods]."""
+    out, back = separate(r, z, k, "cylindrical")
+    out_ref, back_ref = separate(r, z_ref, k, "cylindrical")
+    q = z / z_ref
+    return {"r_m": np.round(r, 4).tolist(), "reflection": abs(back) / abs(out),
+            "reflection_floor": abs(back_ref) / abs(out_ref), "outgoing_over_theory": abs(out) / outgoing,
+            "H1_m": np.round(2.0 * np.abs(z), 5).tolist(), "H1_over_reference": np.round(np.abs(q), 4).tolist(),
+            "lag_periods": np.round(-np.angle(q) / (2.0 * math.pi), 4).tolist()}
 
 
 def radiation_scene(quick: bool):
@@ -160,7 +189,7 @@ def radiation_metrics(res, scene, tare=None) -> dict:
     Capytaine's own elevation at those gauges), the outgoing wave over the one B33's
     energy flux implies, and each gauge's first harmonic ``H1_m``, over Capytaine's
     (``H1_over_reference``) and its lag behind Capytaine's (``lag_periods``, periods)."""
-    from fluid.waves import group_velocity, wavenumbers
+    from fluid.waves import wavenumbers
 
     b, d = scene.bodies[0], scene.domain
     m, g, rho = b.motion, scene.world.gravity, scene.fluid.rho0
@@ -186,18 +215,10 @@ def radiation_metrics(res, scene, tare=None) -> dict:
     per_period = damping_by_period(ts, fz, m.amplitude, w, c33, m.period)
     eta = np.column_stack([less_tare(f"gauge{i + 1}.eta") for i in range(len(scene.probes.gauges))])
     z = harmonics(ts, eta, w)
-    theory = m.amplitude * w * math.sqrt(b_ref * k / (4.0 * rho * g * float(group_velocity(k, d.depth, g))))
+    theory = outgoing_amplitude(b_ref, m.amplitude, w, d.depth, rho, g)
     gauges = np.asarray(scene.probes.gauges, float)[:, :2] - np.asarray(b.pos[:2], float)
     z_ref = z1 * reference_elevation(b.radius, draft, d.depth, w, rho, g, gauges)  # for the heave measured
-    lines = {}
-    for name, (idx, r) in _lines(scene).items():
-        out, back = separate(r, z[idx], k, "cylindrical")
-        out_ref, back_ref = separate(r, z_ref[idx], k, "cylindrical")
-        lines[name] = {"r_m": np.round(r, 4).tolist(), "reflection": abs(back) / abs(out),
-                       "reflection_floor": abs(back_ref) / abs(out_ref),
-                       "outgoing_over_theory": abs(out) / theory, "H1_m": np.round(2.0 * np.abs(z[idx]), 5).tolist(),
-                       "H1_over_reference": np.round(np.abs(z[idx] / z_ref[idx]), 4).tolist(),
-                       "lag_periods": np.round(-np.angle(z[idx] / z_ref[idx]) / (2.0 * math.pi), 4).tolist()}
+    lines = {name: gauge_line(r, z[idx], z_ref[idx], k, theory) for name, (idx, r) in _lines(scene).items()}
     s = res.summary
     return {"A33_kg": a33, "B33_kg_s": b33, "A33_ref_kg": a_ref, "B33_ref_kg_s": b_ref, "C33_N_m": c33,
             "A33_error": abs(a33 / a_ref - 1.0), "B33_error": abs(b33 / b_ref - 1.0), "tared": tare is not None,
