@@ -8,11 +8,15 @@ case's depth (panels 0.05 R, cached). docs/validation/nearfield.md, "Other hulls
 case's box".
 
     python benchmarks/radiation_hull.py --out OUT [--hull hemisphere|cylinder] [--draft D]
-        [--r-over-dx 4] [--periods 6] [--only forced|held] [--upto N]
+        [--r-over-dx 4] [--periods 6] [--amplitude 0.3] [--only forced|held] [--upto N]
 
 Each run is kept in ``OUT/forced`` and ``OUT/held`` and resumed from its checkpoint; a
 call without ``--only`` runs what is missing (one after the other) and prints the figures.
-``--upto N`` reads the first N periods after the ramp of runs still going.
+``--upto N`` reads the first N periods after the ramp of runs still going. ``--amplitude A``
+forces the hull through A [m] instead of the case's 0.3 m: radiation damping does not depend
+on it, a drag from flow separating at an edge grows in proportion to it (its equivalent
+linear damping, Lorentz's equal work per cycle, is (8/3pi) (rho/2) Cd A_p omega a); the tare
+run does not depend on it and can be copied from another OUT.
 """
 
 from __future__ import annotations
@@ -31,11 +35,11 @@ from cosim.validations.wave_propagation import harmonics
 RADIUS = 3.0  # m: the cylinder's
 
 
-def scene_for(hull: str, draft: float, r_over_dx: float, periods: int, held: bool):
+def scene_for(hull: str, draft: float, r_over_dx: float, periods: int, held: bool, amplitude: float = 0.3):
     """The case's quick scene with ``hull`` in place of its cylinder: a sphere of
     :data:`RADIUS` centred on the still water ("hemisphere"), or the cylinder drawing
-    ``draft`` [m] (its centre on the still water, twice as long), at ``r_over_dx``, for the
-    ramp and ``periods`` periods."""
+    ``draft`` [m] (its centre on the still water, twice as long), at ``r_over_dx``, forced
+    through ``amplitude`` [m], for the ramp and ``periods`` periods."""
     from cosim.scene.toml_io import from_dict, to_dict
 
     d = to_dict(radiation_scene(True))
@@ -47,6 +51,7 @@ def scene_for(hull: str, draft: float, r_over_dx: float, periods: int, held: boo
         d["probes"]["motion"] = ["hemisphere"]
     else:
         b.update(radius=RADIUS, length=2.0 * draft, pos=[0.0, 0.0, depth])
+    b["motion"]["amplitude"] = amplitude
     d["fluid"]["dx"] = RADIUS / r_over_dx
     d["world"]["duration"] = (b["motion"]["ramp"] + periods) * b["motion"]["period"]
     d["name"] = f"radiation-{hull}"
@@ -81,13 +86,13 @@ def _records(folder: Path):
     return series.pop("t"), series
 
 
-def figures(out: Path, hull_name: str, draft: float, r_over_dx: float, periods: int) -> str:
+def figures(out: Path, hull_name: str, draft: float, r_over_dx: float, periods: int, amplitude: float = 0.3) -> str:
     """The table's lines: A33, B33 (whole and by period) and the gauges against Capytaine."""
     from fluid.potential import compute
     from fluid.potential.elevation import radiated_elevation
     from fluid.waves import wavenumbers
 
-    s = scene_for(hull_name, draft, r_over_dx, periods, False)
+    s = scene_for(hull_name, draft, r_over_dx, periods, False, amplitude)
     m, depth = s.bodies[0].motion, s.domain.depth
     g, rho = s.world.gravity, s.fluid.rho0
     w = 2.0 * math.pi / m.period
@@ -119,7 +124,8 @@ def figures(out: Path, hull_name: str, draft: float, r_over_dx: float, periods: 
     theory = outgoing_amplitude(b_ref, m.amplitude, w, depth, rho, g)
     r = np.hypot(pts[:, 0], pts[:, 1])
     along_x = np.abs(pts[:, 0]) > np.abs(pts[:, 1])
-    lines = [f"{hull_name}, draft {hull.draft:g} m, R/dx = {r_over_dx:g}, {periods} periods after the ramp, tared; "
+    lines = [f"{hull_name}, draft {hull.draft:g} m, R/dx = {r_over_dx:g}, amplitude {m.amplitude:g} m, "
+             f"{periods} periods after the ramp, tared; "
              f"Capytaine (panels {PANEL:g} R): A33 {a_ref:.0f} kg, B33 {b_ref:.0f} kg/s, C33 {c33:.0f} N/m",
              f"SPH: A33 {a33:.0f} kg ({a33 / a_ref - 1:+.1%}), B33 {b33:.0f} kg/s ({b33 / b_ref - 1:+.1%}); "
              f"B33 by period " + ", ".join(f"{x / 1e3:.1f}" for x in per) + " kN s/m"]
@@ -138,15 +144,16 @@ def main(argv=None):
     ap.add_argument("--draft", type=float, default=1.5, help="the cylinder's draft [m] (the case's: 1.5)")
     ap.add_argument("--r-over-dx", type=float, default=4.0)
     ap.add_argument("--periods", type=int, default=6)
+    ap.add_argument("--amplitude", type=float, default=0.3, help="the heave amplitude [m] (the case's: 0.3)")
     ap.add_argument("--only", choices=("forced", "held"))
     ap.add_argument("--upto", type=int, help="read the first UPTO periods after the ramp (runs still going)")
     args = ap.parse_args(argv)
     if args.upto is None:
         for run in ([args.only] if args.only else ["forced", "held"]):
-            case_scene.run_or_resume(scene_for(args.hull, args.draft, args.r_over_dx, args.periods, run == "held"),
-                                     args.out / run)
+            case_scene.run_or_resume(scene_for(args.hull, args.draft, args.r_over_dx, args.periods, run == "held",
+                                               args.amplitude), args.out / run)
     if not args.only:
-        print(figures(args.out, args.hull, args.draft, args.r_over_dx, args.upto or args.periods))
+        print(figures(args.out, args.hull, args.draft, args.r_over_dx, args.upto or args.periods, args.amplitude))
 
 
 if __name__ == "__main__":

@@ -233,6 +233,20 @@ def test_the_held_scene_is_the_forced_one_with_its_body_still():
     assert a == h
 
 
+def test_another_hulls_amplitude_changes_its_forced_run_only():
+    """benchmarks/radiation_hull.py --amplitude: the forced scene heaves through the amplitude
+    asked for, and the tare is the same scene whatever the amplitude (one tare serves them)."""
+    from benchmarks.radiation_hull import scene_for
+    from cosim.scene.toml_io import to_dict
+
+    forced = scene_for("cylinder", 3.0, 4.0, 6, False, amplitude=0.15)
+    sig = forced.bodies[0].motion.signal()
+    t = np.linspace(3.54, forced.world.duration, 400)  # after the one-period ramp
+    assert max(sig(tt)[0] for tt in t) == pytest.approx(0.15, rel=1e-3)
+    assert to_dict(scene_for("cylinder", 3.0, 4.0, 6, True, amplitude=0.15)) \
+        == to_dict(scene_for("cylinder", 3.0, 4.0, 6, True, amplitude=0.6))
+
+
 FORCED = """
 name = "forced"
 [world]
