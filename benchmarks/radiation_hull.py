@@ -8,7 +8,7 @@ case's depth (panels 0.05 R, cached). docs/validation/nearfield.md, "Other hulls
 case's box".
 
     python benchmarks/radiation_hull.py --out OUT [--hull hemisphere|cylinder] [--draft D]
-        [--r-over-dx 4] [--periods 6] [--amplitude 0.3] [--only forced|held] [--upto N]
+        [--r-over-dx 4] [--periods 6] [--amplitude 0.3] [--set KEY=VALUE ...] [--only forced|held] [--upto N]
 
 Each run is kept in ``OUT/forced`` and ``OUT/held`` and resumed from its checkpoint; a
 call without ``--only`` runs what is missing (one after the other) and prints the figures.
@@ -16,7 +16,9 @@ call without ``--only`` runs what is missing (one after the other) and prints th
 forces the hull through A [m] instead of the case's 0.3 m: radiation damping does not depend
 on it, a drag from flow separating at an edge grows in proportion to it (its equivalent
 linear damping, Lorentz's equal work per cycle, is (8/3pi) (rho/2) Cd A_p omega a); the tare
-run does not depend on it and can be copied from another OUT.
+run does not depend on it and can be copied from another OUT. ``--set`` changes the scene's
+values in both runs (``fluid.nu=0``: no laminar viscosity). ``--only forced`` prints the
+figures untared (at 0.6 m of heave the tare moves the deep cylinder's B33 by 1.2 kN s/m).
 """
 
 from __future__ import annotations
@@ -35,11 +37,13 @@ from cosim.validations.wave_propagation import harmonics
 RADIUS = 3.0  # m: the cylinder's
 
 
-def scene_for(hull: str, draft: float, r_over_dx: float, periods: int, held: bool, amplitude: float = 0.3):
+def scene_for(hull: str, draft: float, r_over_dx: float, periods: int, held: bool, amplitude: float = 0.3,
+              settings=()):
     """The case's quick scene with ``hull`` in place of its cylinder: a sphere of
     :data:`RADIUS` centred on the still water ("hemisphere"), or the cylinder drawing
     ``draft`` [m] (its centre on the still water, twice as long), at ``r_over_dx``, forced
-    through ``amplitude`` [m], for the ramp and ``periods`` periods."""
+    through ``amplitude`` [m], for the ramp and ``periods`` periods, with ``settings``
+    ("KEY=VALUE", as ``cosim run --set``)."""
     from cosim.scene.toml_io import from_dict, to_dict
 
     d = to_dict(radiation_scene(True))
@@ -55,7 +59,7 @@ def scene_for(hull: str, draft: float, r_over_dx: float, periods: int, held: boo
     d["fluid"]["dx"] = RADIUS / r_over_dx
     d["world"]["duration"] = (b["motion"]["ramp"] + periods) * b["motion"]["period"]
     d["name"] = f"radiation-{hull}"
-    s = from_dict(d)
+    s = from_dict(d).with_values(list(settings))
     return held_scene(s) if held else s
 
 
@@ -86,13 +90,15 @@ def _records(folder: Path):
     return series.pop("t"), series
 
 
-def figures(out: Path, hull_name: str, draft: float, r_over_dx: float, periods: int, amplitude: float = 0.3) -> str:
-    """The table's lines: A33, B33 (whole and by period) and the gauges against Capytaine."""
+def figures(out: Path, hull_name: str, draft: float, r_over_dx: float, periods: int, amplitude: float = 0.3,
+            settings=()) -> str:
+    """The table's lines: A33, B33 (whole and by period) and the gauges against Capytaine;
+    tared by ``out/held`` where it is there."""
     from fluid.potential import compute
     from fluid.potential.elevation import radiated_elevation
     from fluid.waves import wavenumbers
 
-    s = scene_for(hull_name, draft, r_over_dx, periods, False, amplitude)
+    s = scene_for(hull_name, draft, r_over_dx, periods, False, amplitude, settings)
     m, depth = s.bodies[0].motion, s.domain.depth
     g, rho = s.world.gravity, s.fluid.rho0
     w = 2.0 * math.pi / m.period
@@ -101,7 +107,9 @@ def figures(out: Path, hull_name: str, draft: float, r_over_dx: float, periods: 
     c = compute(hull, 0.0, omega=w * np.array([0.9, 1.0, 1.1]), depth=depth, rho=rho, g=g,
                 name=f"radiation-{hull_name}")
     a_ref, b_ref, c33 = float(c.added_mass[1, 2, 2]), float(c.damping[1, 2, 2]), float(c.stiffness[2, 2])
-    (t, forced), (t_held, held) = _records(out / "forced"), _records(out / "held")
+    tare = (out / "held").is_dir()
+    t, forced = _records(out / "forced")
+    t_held, held = _records(out / "held") if tare else (t, {k: np.zeros_like(v) for k, v in forced.items()})
     n = min(len(t), len(t_held))
     t0 = m.ramp * m.period
     fit = (t[:n] > t0 - 1e-9) & (t[:n] <= t0 + periods * m.period + 1e-9)  # as the case: from the ramp's end
@@ -125,7 +133,8 @@ def figures(out: Path, hull_name: str, draft: float, r_over_dx: float, periods: 
     r = np.hypot(pts[:, 0], pts[:, 1])
     along_x = np.abs(pts[:, 0]) > np.abs(pts[:, 1])
     lines = [f"{hull_name}, draft {hull.draft:g} m, R/dx = {r_over_dx:g}, amplitude {m.amplitude:g} m, "
-             f"{periods} periods after the ramp, tared; "
+             f"{' '.join(settings) + ', ' if settings else ''}{periods} periods after the ramp, "
+             f"{'tared' if tare else 'untared'}; "
              f"Capytaine (panels {PANEL:g} R): A33 {a_ref:.0f} kg, B33 {b_ref:.0f} kg/s, C33 {c33:.0f} N/m",
              f"SPH: A33 {a33:.0f} kg ({a33 / a_ref - 1:+.1%}), B33 {b33:.0f} kg/s ({b33 / b_ref - 1:+.1%}); "
              f"B33 by period " + ", ".join(f"{x / 1e3:.1f}" for x in per) + " kN s/m"]
@@ -145,15 +154,18 @@ def main(argv=None):
     ap.add_argument("--r-over-dx", type=float, default=4.0)
     ap.add_argument("--periods", type=int, default=6)
     ap.add_argument("--amplitude", type=float, default=0.3, help="the heave amplitude [m] (the case's: 0.3)")
+    ap.add_argument("--set", dest="settings", action="append", default=[], metavar="KEY=VALUE",
+                    help="a scene value for both runs (as cosim run --set), e.g. fluid.nu=0")
     ap.add_argument("--only", choices=("forced", "held"))
     ap.add_argument("--upto", type=int, help="read the first UPTO periods after the ramp (runs still going)")
     args = ap.parse_args(argv)
     if args.upto is None:
         for run in ([args.only] if args.only else ["forced", "held"]):
             case_scene.run_or_resume(scene_for(args.hull, args.draft, args.r_over_dx, args.periods, run == "held",
-                                               args.amplitude), args.out / run)
-    if not args.only:
-        print(figures(args.out, args.hull, args.draft, args.r_over_dx, args.upto or args.periods, args.amplitude))
+                                               args.amplitude, args.settings), args.out / run)
+    if args.only != "held":
+        print(figures(args.out, args.hull, args.draft, args.r_over_dx, args.upto or args.periods, args.amplitude,
+                      args.settings))
 
 
 if __name__ == "__main__":

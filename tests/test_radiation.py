@@ -235,7 +235,8 @@ def test_the_held_scene_is_the_forced_one_with_its_body_still():
 
 def test_another_hulls_amplitude_changes_its_forced_run_only():
     """benchmarks/radiation_hull.py --amplitude: the forced scene heaves through the amplitude
-    asked for, and the tare is the same scene whatever the amplitude (one tare serves them)."""
+    asked for, and the tare is the same scene whatever the amplitude (one tare serves them);
+    --set reaches both runs."""
     from benchmarks.radiation_hull import scene_for
     from cosim.scene.toml_io import to_dict
 
@@ -245,6 +246,8 @@ def test_another_hulls_amplitude_changes_its_forced_run_only():
     assert max(sig(tt)[0] for tt in t) == pytest.approx(0.15, rel=1e-3)
     assert to_dict(scene_for("cylinder", 3.0, 4.0, 6, True, amplitude=0.15)) \
         == to_dict(scene_for("cylinder", 3.0, 4.0, 6, True, amplitude=0.6))
+    assert [scene_for("cylinder", 3.0, 4.0, 6, held, settings=["fluid.nu=0"]).fluid.nu for held in (False, True)] \
+        == [0.0, 0.0] != [forced.fluid.nu] * 2
 
 
 FORCED = """
