@@ -17,8 +17,8 @@ forces the hull through A [m] instead of the case's 0.3 m: radiation damping doe
 on it, a drag from flow separating at an edge grows in proportion to it (its equivalent
 linear damping, Lorentz's equal work per cycle, is (8/3pi) (rho/2) Cd A_p omega a); the tare
 run does not depend on it and can be copied from another OUT. ``--set`` changes the scene's
-values in both runs (``fluid.nu=0``: no laminar viscosity). ``--only forced`` prints the
-figures untared (at 0.6 m of heave the tare moves the deep cylinder's B33 by 1.2 kN s/m).
+values in both runs (``fluid.nu=0``: no laminar viscosity). Without ``OUT/held`` the figures
+are untared (at 0.6 m of heave the tare moves the deep cylinder's B33 by 1.2 kN s/m).
 """
 
 from __future__ import annotations
