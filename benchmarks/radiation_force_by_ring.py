@@ -125,7 +125,8 @@ def main(argv=None):
     edges = np.concatenate([[b.radius], np.maximum(b.radius - dx * np.arange(1, len(radii) + 1), 0.0)])
     a_cap, b_cap = capytaine_by_annulus(scene, edges)
     print(f"draft {args.draft:g} m, amplitude {m.amplitude:g} m, R/dx = {args.r_over_dx:g}, {args.periods:g} periods "
-          f"after the ramp, {'tared' if tared else 'untared'}; CPU {float(forced['cpu_s']):.0f} + {float(held['cpu_s']):.0f} s")
+          f"after the ramp, {'tared' if tared else 'untared'}; "
+          f"CPU {float(forced['cpu_s']):.0f} + {float(held['cpu_s']):.0f} s")
     print("| part | SPH A33 [t] | Capytaine A33 [t] | SPH B33 [kN s/m] | Capytaine B33 [kN s/m] |")
     print("|---|---|---|---|---|")
     names = [f"ring at r = {r:.3g} m (annulus {hi:.3g}-{lo:.3g} m)" for r, hi, lo in zip(radii, edges[:-1], edges[1:])]

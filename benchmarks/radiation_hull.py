@@ -31,7 +31,7 @@ import numpy as np
 
 from cosim.validations import case_scene
 from cosim.validations.radiation import (PANEL, added_mass_damping, damping_by_period, gauge_line, held_scene,
-                                         outgoing_amplitude, radiation_scene)
+                                         hull_elevation, hull_reference, outgoing_amplitude, radiation_scene)
 from cosim.validations.wave_propagation import harmonics
 
 RADIUS = 3.0  # m: the cylinder's
@@ -94,8 +94,6 @@ def figures(out: Path, hull_name: str, draft: float, r_over_dx: float, periods: 
             settings=()) -> str:
     """The table's lines: A33, B33 (whole and by period) and the gauges against Capytaine;
     tared by ``out/held`` where it is there."""
-    from fluid.potential import compute
-    from fluid.potential.elevation import radiated_elevation
     from fluid.waves import wavenumbers
 
     s = scene_for(hull_name, draft, r_over_dx, periods, False, amplitude, settings)
@@ -104,12 +102,10 @@ def figures(out: Path, hull_name: str, draft: float, r_over_dx: float, periods: 
     w = 2.0 * math.pi / m.period
     k = float(wavenumbers(w, depth, g))
     hull = reference_hull(hull_name, draft)
-    c = compute(hull, 0.0, omega=w * np.array([0.9, 1.0, 1.1]), depth=depth, rho=rho, g=g,
-                name=f"radiation-{hull_name}")
-    a_ref, b_ref, c33 = float(c.added_mass[1, 2, 2]), float(c.damping[1, 2, 2]), float(c.stiffness[2, 2])
-    tare = (out / "held").is_dir()
+    a_ref, b_ref, c33 = hull_reference(hull, depth, w, rho, g, name=f"radiation-{hull_name}")
     t, forced = _records(out / "forced")
-    t_held, held = _records(out / "held") if tare else (t, {k: np.zeros_like(v) for k, v in forced.items()})
+    tare = (out / "held").is_dir()
+    t_held, held = _records(out / "held") if tare else (t, None)
     n = min(len(t), len(t_held))
     t0 = m.ramp * m.period
     fit = (t[:n] > t0 - 1e-9) & (t[:n] <= t0 + periods * m.period + 1e-9)  # as the case: from the ramp's end
@@ -119,7 +115,7 @@ def figures(out: Path, hull_name: str, draft: float, r_over_dx: float, periods: 
     ts = t[:n][fit]
 
     def tared(name):
-        return forced[name][:n][fit] - held[name][:n][fit]
+        return forced[name][:n][fit] - (held[name][:n][fit] if tare else 0.0)
 
     body = next(k for k in forced if k.endswith(".fluid_Fz"))[:-len(".fluid_Fz")]  # the one body's series
     fz = tared(f"{body}.fluid_Fz")
@@ -128,7 +124,7 @@ def figures(out: Path, hull_name: str, draft: float, r_over_dx: float, periods: 
     z1 = harmonics(ts, forced[f"{body}.heave"][:n][fit][:, None], w)[0]
     pts = np.asarray(s.probes.gauges, float)[:, :2]
     z = harmonics(ts, np.column_stack([tared(f"gauge{i + 1}.eta") for i in range(len(pts))]), w)
-    z_ref = z1 * np.conj(radiated_elevation(hull, 0.0, "Heave", w, pts, depth=depth, rho=rho, g=g))
+    z_ref = z1 * hull_elevation(hull, depth, w, rho, g, pts)
     theory = outgoing_amplitude(b_ref, m.amplitude, w, depth, rho, g)
     r = np.hypot(pts[:, 0], pts[:, 1])
     along_x = np.abs(pts[:, 0]) > np.abs(pts[:, 1])

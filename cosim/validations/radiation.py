@@ -83,27 +83,39 @@ def _cylinder(radius: float, draft: float, panel: float):
     return wetted_hull("cylinder", [radius, draft], np.eye(3), [0.0, 0.0, 0.0], panel * radius, name="cylinder")
 
 
-def reference(radius: float, draft: float, depth: float, omega: float, rho: float, g: float, cache=None,
-              panel: float = PANEL):
-    """Capytaine's ``(A33, B33, C33)`` of an upright cylinder of ``radius`` [m] drawing
-    ``draft`` [m] in water ``depth`` [m] deep at ``omega`` [rad/s] (panels ``panel`` radii
-    across; solved at 0.9, 1 and 1.1 omega, cached)."""
+def hull_reference(hull, depth: float, omega: float, rho: float, g: float, cache=None,
+                   name: str = "radiation-cylinder"):
+    """Capytaine's ``(A33, B33, C33)`` of ``hull`` (a :func:`fluid.potential.wetted_hull`, its
+    waterline at z = 0) in water ``depth`` [m] deep at ``omega`` [rad/s] (solved at 0.9, 1 and
+    1.1 omega, cached under ``name``)."""
     from fluid.potential import compute
 
-    c = compute(_cylinder(radius, draft, panel), 0.0, omega=omega * np.array([0.9, 1.0, 1.1]), depth=depth, rho=rho, g=g, cache=cache,
-                name="radiation-cylinder")
+    c = compute(hull, 0.0, omega=omega * np.array([0.9, 1.0, 1.1]), depth=depth, rho=rho, g=g, cache=cache,
+                name=name)
     return float(c.added_mass[1, 2, 2]), float(c.damping[1, 2, 2]), float(c.stiffness[2, 2])
 
 
-def reference_elevation(radius: float, draft: float, depth: float, omega: float, rho: float, g: float, points,
-                        panel: float = PANEL) -> np.ndarray:
+def reference(radius: float, draft: float, depth: float, omega: float, rho: float, g: float, cache=None,
+              panel: float = PANEL):
+    """:func:`hull_reference` of an upright cylinder of ``radius`` [m] drawing ``draft`` [m]
+    (panels ``panel`` radii across)."""
+    return hull_reference(_cylinder(radius, draft, panel), depth, omega, rho, g, cache)
+
+
+def hull_elevation(hull, depth: float, omega: float, rho: float, g: float, points) -> np.ndarray:
     """Capytaine's complex elevation [m per m of heave] radiated at ``points`` (n, 2) [m] by
-    the cylinder of :func:`reference` heaving as ``Re(X exp(i omega t))``: the elevation is
+    ``hull`` (as :func:`hull_reference`) heaving as ``Re(X exp(i omega t))``: the elevation is
     ``Re(X e exp(i omega t))`` (this module's time factor; :mod:`fluid.potential.elevation`
     works in Capytaine's ``exp(-i omega t)``, hence the conjugate). Cached."""
     from fluid.potential.elevation import radiated_elevation
 
-    return np.conj(radiated_elevation(_cylinder(radius, draft, panel), 0.0, "Heave", omega, points, depth=depth, rho=rho, g=g))
+    return np.conj(radiated_elevation(hull, 0.0, "Heave", omega, points, depth=depth, rho=rho, g=g))
+
+
+def reference_elevation(radius: float, draft: float, depth: float, omega: float, rho: float, g: float, points,
+                        panel: float = PANEL) -> np.ndarray:
+    """:func:`hull_elevation` of the cylinder of :func:`reference`."""
+    return hull_elevation(_cylinder(radius, draft, panel), depth, omega, rho, g, points)
 
 
 def outgoing_amplitude(b33: float, amplitude: float, omega: float, depth: float, rho: float, g: float) -> float:
