@@ -30,8 +30,9 @@ from pathlib import Path
 import numpy as np
 
 from cosim.validations import case_scene
-from cosim.validations.radiation import (PANEL, added_mass_damping, damping_by_period, gauge_line, held_scene,
-                                         hull_elevation, hull_reference, outgoing_amplitude, radiation_scene)
+from cosim.validations.radiation import (PANEL, added_mass_damping, cylinder_hull, damping_by_period, gauge_line,
+                                         held_scene, hull_elevation, hull_reference, outgoing_amplitude,
+                                         radiation_scene)
 from cosim.validations.wave_propagation import harmonics
 
 RADIUS = 3.0  # m: the cylinder's
@@ -67,8 +68,9 @@ def reference_hull(hull: str, draft: float):
     """The wetted hull of ``hull`` (:func:`scene_for`) for Capytaine, panels :data:`PANEL` R."""
     from fluid.potential import wetted_hull
 
-    kind, size = ("sphere", [RADIUS]) if hull == "hemisphere" else ("cylinder", [RADIUS, draft])
-    return wetted_hull(kind, size, np.eye(3), [0.0, 0.0, 0.0], PANEL * RADIUS, name=hull)
+    if hull == "cylinder":
+        return cylinder_hull(RADIUS, draft)
+    return wetted_hull("sphere", [RADIUS], np.eye(3), [0.0, 0.0, 0.0], PANEL * RADIUS, name=hull)
 
 
 def _records(folder: Path):

@@ -76,8 +76,9 @@ def added_mass_damping(ts, force, amplitude: float, omega: float, stiffness: flo
     return float((fs / amplitude + stiffness) / omega**2), float(-fc / (amplitude * omega))
 
 
-def _cylinder(radius: float, draft: float, panel: float):
-    """The wetted hull of :func:`reference`'s cylinder, panels ``panel`` radii across."""
+def cylinder_hull(radius: float, draft: float, panel: float = PANEL):
+    """The wetted hull of an upright cylinder of ``radius`` [m] drawing ``draft`` [m], its
+    waterline at z = 0, panels ``panel`` radii across: the case's reference hull."""
     from fluid.potential import wetted_hull
 
     return wetted_hull("cylinder", [radius, draft], np.eye(3), [0.0, 0.0, 0.0], panel * radius, name="cylinder")
@@ -99,7 +100,7 @@ def reference(radius: float, draft: float, depth: float, omega: float, rho: floa
               panel: float = PANEL):
     """:func:`hull_reference` of an upright cylinder of ``radius`` [m] drawing ``draft`` [m]
     (panels ``panel`` radii across)."""
-    return hull_reference(_cylinder(radius, draft, panel), depth, omega, rho, g, cache)
+    return hull_reference(cylinder_hull(radius, draft, panel), depth, omega, rho, g, cache)
 
 
 def hull_elevation(hull, depth: float, omega: float, rho: float, g: float, points) -> np.ndarray:
@@ -115,7 +116,7 @@ def hull_elevation(hull, depth: float, omega: float, rho: float, g: float, point
 def reference_elevation(radius: float, draft: float, depth: float, omega: float, rho: float, g: float, points,
                         panel: float = PANEL) -> np.ndarray:
     """:func:`hull_elevation` of the cylinder of :func:`reference`."""
-    return hull_elevation(_cylinder(radius, draft, panel), depth, omega, rho, g, points)
+    return hull_elevation(cylinder_hull(radius, draft, panel), depth, omega, rho, g, points)
 
 
 def outgoing_amplitude(b33: float, amplitude: float, omega: float, depth: float, rho: float, g: float) -> float:
