@@ -8,7 +8,8 @@ case's depth (panels 0.05 R, cached). docs/validation/nearfield.md, "Other hulls
 case's box".
 
     python benchmarks/radiation_hull.py --out OUT [--hull hemisphere|cylinder] [--draft D]
-        [--r-over-dx 4] [--periods 6] [--amplitude 0.3] [--set KEY=VALUE ...] [--only forced|held] [--upto N]
+        [--r-over-dx 4] [--periods 6] [--amplitude 0.3] [--depth 6] [--set KEY=VALUE ...] [--only forced|held]
+        [--upto N]
 
 Each run is kept in ``OUT/forced`` and ``OUT/held`` and resumed from its checkpoint; a
 call without ``--only`` runs what is missing (one after the other) and prints the figures.
@@ -39,16 +40,20 @@ RADIUS = 3.0  # m: the cylinder's
 
 
 def scene_for(hull: str, draft: float, r_over_dx: float, periods: int, held: bool, amplitude: float = 0.3,
-              settings=()):
+              settings=(), depth: float | None = None):
     """The case's quick scene with ``hull`` in place of its cylinder: a sphere of
     :data:`RADIUS` centred on the still water ("hemisphere"), or the cylinder drawing
     ``draft`` [m] (its centre on the still water, twice as long), at ``r_over_dx``, forced
     through ``amplitude`` [m], for the ramp and ``periods`` periods, with ``settings``
-    ("KEY=VALUE", as ``cosim run --set``)."""
+    ("KEY=VALUE", as ``cosim run --set``), in water ``depth`` [m] deep (unset: the case's;
+    the walls keep the case's height above the water)."""
     from cosim.scene.toml_io import from_dict, to_dict
 
     d = to_dict(radiation_scene(True))
     b = d["bodies"][0]
+    if depth is not None:
+        d["domain"]["height"] += depth - d["domain"]["depth"]
+        d["domain"]["depth"] = d["waves"]["depth"] = depth
     depth = d["domain"]["depth"]
     if hull == "hemisphere":
         b.pop("length")
@@ -93,12 +98,12 @@ def _records(folder: Path):
 
 
 def figures(out: Path, hull_name: str, draft: float, r_over_dx: float, periods: int, amplitude: float = 0.3,
-            settings=()) -> str:
+            settings=(), depth: float | None = None) -> str:
     """The table's lines: A33, B33 (whole and by period) and the gauges against Capytaine;
     tared by ``out/held`` where it is there."""
     from fluid.waves import wavenumbers
 
-    s = scene_for(hull_name, draft, r_over_dx, periods, False, amplitude, settings)
+    s = scene_for(hull_name, draft, r_over_dx, periods, False, amplitude, settings, depth)
     m, depth = s.bodies[0].motion, s.domain.depth
     g, rho = s.world.gravity, s.fluid.rho0
     w = 2.0 * math.pi / m.period
@@ -130,7 +135,8 @@ def figures(out: Path, hull_name: str, draft: float, r_over_dx: float, periods: 
     theory = outgoing_amplitude(b_ref, m.amplitude, w, depth, rho, g)
     r = np.hypot(pts[:, 0], pts[:, 1])
     along_x = np.abs(pts[:, 0]) > np.abs(pts[:, 1])
-    lines = [f"{hull_name}, draft {hull.draft:g} m, R/dx = {r_over_dx:g}, amplitude {m.amplitude:g} m, "
+    lines = [f"{hull_name}, draft {hull.draft:g} m, depth {depth:g} m, R/dx = {r_over_dx:g}, "
+             f"amplitude {m.amplitude:g} m, "
              f"{' '.join(settings) + ', ' if settings else ''}{periods} periods after the ramp, "
              f"{'tared' if tare else 'untared'}; "
              f"Capytaine (panels {PANEL:g} R): A33 {a_ref:.0f} kg, B33 {b_ref:.0f} kg/s, C33 {c33:.0f} N/m",
@@ -152,6 +158,7 @@ def main(argv=None):
     ap.add_argument("--r-over-dx", type=float, default=4.0)
     ap.add_argument("--periods", type=int, default=6)
     ap.add_argument("--amplitude", type=float, default=0.3, help="the heave amplitude [m] (the case's: 0.3)")
+    ap.add_argument("--depth", type=float, help="the water's depth [m] (the case's: 6)")
     ap.add_argument("--set", dest="settings", action="append", default=[], metavar="KEY=VALUE",
                     help="a scene value for both runs (as cosim run --set), e.g. fluid.nu=0")
     ap.add_argument("--only", choices=("forced", "held"))
@@ -160,10 +167,10 @@ def main(argv=None):
     if args.upto is None:
         for run in ([args.only] if args.only else ["forced", "held"]):
             case_scene.run_or_resume(scene_for(args.hull, args.draft, args.r_over_dx, args.periods, run == "held",
-                                               args.amplitude, args.settings), args.out / run)
+                                               args.amplitude, args.settings, args.depth), args.out / run)
     if args.only != "held":
         print(figures(args.out, args.hull, args.draft, args.r_over_dx, args.upto or args.periods, args.amplitude,
-                      args.settings))
+                      args.settings, args.depth))
 
 
 if __name__ == "__main__":

@@ -251,6 +251,21 @@ def test_another_hulls_amplitude_changes_its_forced_run_only():
         == [0.0, 0.0]
 
 
+def test_another_hulls_depth_keeps_its_draft_and_the_air_above():
+    """benchmarks/radiation_hull.py --depth: the water, the wave theory and the body's
+    waterline move to the depth asked for, the draft and the walls' height above the water
+    stay."""
+    from benchmarks.radiation_hull import scene_for
+
+    case, deep = scene_for("cylinder", 3.0, 4.0, 6, False), scene_for("cylinder", 3.0, 4.0, 6, False, depth=12.0)
+    assert (deep.domain.depth, deep.waves.depth) == (12.0, 12.0)
+    assert deep.domain.height - deep.domain.depth == pytest.approx(case.domain.height - case.domain.depth)
+    for s in (case, deep):
+        b = s.bodies[0]
+        assert s.domain.depth - (b.pos[-1] - 0.5 * b.length) == pytest.approx(3.0)
+        assert b.pos[-1] == pytest.approx(s.domain.depth)
+
+
 FORCED = """
 name = "forced"
 [world]
