@@ -381,15 +381,21 @@ class SPHFluid:
         :meth:`body_wrenches` (a symmetry plane: 2 for the simulated half's rows, their
         images' too, and 1 on the plane, before the mirrored ``y`` component is dropped;
         without one 1). Rigid bodies only (``0 <= k < n_bodies``)."""
+        F = self.fluid.boundary_forces_now()
+        rows, shares = self.body_particle_rows(k)
+        return self._to_3d(self.fluid.ps.pos[rows]), self._to_3d(F[rows]), shares
+
+    def body_particle_rows(self, k: int):
+        """``(rows, shares)``: body ``k``'s boundary particles in the current order of the
+        fluid's particles, and the number of times each counts in the body's load (see
+        :meth:`body_particle_forces`). Rigid bodies only."""
         if not 0 <= k < self.n_bodies:
             raise InputError(f"SPH fluid: no rigid body {k}; bodies are 0..{self.n_bodies - 1}")
-        F = self.fluid.boundary_forces_now()
         ps = self.fluid.ps
         own = ps.group == self._g0 + k
         plane = (ps.group == self._plane0 + k) if self.symmetry else np.zeros_like(own)
         rows = np.flatnonzero((own | plane) & (ps.ids >= 0))
-        shares = np.where(plane[rows], 1.0, 2.0 if self.symmetry else 1.0)
-        return self._to_3d(ps.pos[rows]), self._to_3d(F[rows]), shares
+        return rows, np.where(plane[rows], 1.0, 2.0 if self.symmetry else 1.0)
 
     def exchanged_wrenches(self):
         """The loads the fluid actually exchanged with each body over its last

@@ -570,6 +570,24 @@ class Fluid:
             F[(ps.kind == Kind.FIXED_WALL) | (ps.kind == Kind.MOVING_WALL)] = np.nan
         return F
 
+    def boundary_compression_power_now(self) -> np.ndarray:
+        """Per particle [W] at the current state: ``m_b p_b / rho_b^2 (drho_b/dt)`` of each
+        boundary particle, ``drho_b/dt`` its continuity sum over the fluid (Barreiro et al.
+        2016, Eq. 7), ``p_b`` the pressure it acted with in that rate evaluation; zero for
+        the fluid, and for tank walls whose densities do not follow the continuity equation
+        (``walls = "adami"``: their rate is not kept). Summed over a body, it is the part of
+        the work its pair forces do that no energy of the fluid receives: with neither
+        viscosity nor density diffusion, the fluid's kinetic and internal energy (``de_a/dt
+        = p_a / rho_a^2 drho_a/dt``, the SPH thermal energy equation; Monaghan 2005, Rep.
+        Prog. Phys. 68: 1703) gain exactly the boundary's power less this sum. A boundary
+        particle whose density follows the same continuity equation stores it as its own
+        internal energy; one whose density is set otherwise (mDBC) does not."""
+        self.refresh_rates()
+        ps = self.ps
+        out = ps.mass * ps.p / ps.rho ** 2 * self._drho
+        out[ps.kind == Kind.FLUID] = 0.0
+        return out
+
     def fluid_force_from_groups(self):
         """The force the boundary particles exert on the fluid at the current state (total
         rate of fluid momentum minus gravity) [N]; equal and opposite to the sum of

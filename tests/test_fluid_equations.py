@@ -246,6 +246,27 @@ def test_group_forces_are_the_exact_reaction_of_the_fluid(dim):
     np.testing.assert_allclose(M.sum(axis=0), -np.atleast_1d(m_fluid), rtol=0, atol=1e-11 * np.abs(M).max())
 
 
+@pytest.mark.parametrize("dim", [2, 3])
+def test_the_boundarys_power_less_its_compression_work_is_what_the_fluid_gains(dim):
+    """Energy of the pair terms without viscosity or density diffusion: the fluid's kinetic
+    and internal energy (de_a/dt = p_a / rho_a^2 drho_a/dt) gain the power the boundary
+    particles put in (-F_b . v_b) less boundary_compression_power_now, to round-off; the
+    fluid's own pairs exchange energy without loss."""
+    ps, dx = random_scene(dim)
+    ps.vel[ps.kind == Kind.FIXED_WALL, -1] = 0.1  # the walls move too: every boundary row does work
+    f = Fluid(FluidConfig(dim=dim, dx=dx, c0=C0, alpha=0.0, delta=0.0, g=0.0), ps)
+    f.initialize(0.0)
+    fl = f.ps.kind == Kind.FLUID
+    m, v, rho, p = f.ps.mass, f.ps.vel, f.ps.rho, f.ps.p
+    gained = (m[fl] * (v[fl] * f._acc[fl]).sum(axis=1)).sum() + (m[fl] * p[fl] / rho[fl] ** 2 * f._drho[fl]).sum()
+    put_in = -(f.boundary_forces_now()[~fl] * v[~fl]).sum()
+    leak = f.boundary_compression_power_now()
+    assert (leak[fl] == 0).all()
+    assert abs(leak.sum()) > 1e-3 * abs(put_in)  # a real term, not a zero
+    scale = (m[fl] * np.abs(v[fl] * f._acc[fl]).sum(axis=1)).sum()
+    assert gained == pytest.approx(put_in - leak.sum(), abs=1e-10 * scale)
+
+
 def test_fluid_momentum_is_conserved_without_walls():
     """Without walls and gravity the pair forces cancel: the fluid's momentum rate is zero."""
     ps, dx = random_scene(2, seed=3)

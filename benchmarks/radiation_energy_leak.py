@@ -1,0 +1,89 @@
+"""Where the work of a heaving hull's force goes: the power the hull puts into the water
+through its pair forces, against the part of it that no energy of the fluid receives,
+the boundary particles' compression work ``sum_b m_b p_b / rho_b^2 (drho_b/dt)``
+(:meth:`fluid.solver.Fluid.boundary_compression_power_now`; mDBC sets their densities by
+extrapolation, so this work is stored nowhere). Both are averaged over whole periods
+after the ramp and given as the linear damping that would spend them, ``2 <P> / (omega
+a)^2`` [kg/s], beside B33 fitted from the force and Capytaine's. docs/validation/
+nearfield.md, "Not the weak compressibility, the density diffusion, the re-initialisation
+or the seabed".
+
+    python benchmarks/radiation_energy_leak.py [--hull cylinder|hemisphere] [--draft 3]
+        [--r-over-dx 4] [--periods 6] [--amplitude 0.6] [--depth D] [--set KEY=VALUE ...]
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import time
+
+import numpy as np
+
+from cosim.validations import case_scene
+from cosim.validations.radiation import added_mass_damping, hull_reference
+from radiation_hull import reference_hull, scene_for  # benchmarks/radiation_hull.py, beside this script
+
+#: samples a period of the forced motion
+SAMPLES_A_PERIOD = 20
+
+
+def powers(scene) -> dict:
+    """``{"t", "fz", "w", "p_in", "leak"}`` at :data:`SAMPLES_A_PERIOD` samples a period after
+    the ramp: the fluid's vertical force on the body [N], its heave velocity [m/s], the power
+    [W] the body puts into the fluid (``-F . v``) and the boundary particles' compression
+    work [W] (module docstring), each body particle counted as in its load."""
+    m = scene.bodies[0].motion
+    ramp_end = m.ramp * m.period
+    n = round((scene.world.duration - ramp_end) / m.period * SAMPLES_A_PERIOD)
+    times = ramp_end + np.arange(1, n + 1) * m.period / SAMPLES_A_PERIOD
+    rows_out, cpu = [], time.process_time()
+    with case_scene.built(scene) as built:
+        sph = built.fluid
+        for t in times:
+            built.coupler.run(float(t))
+            _, F, _ = sph.body_particle_forces(0)
+            rows, shares = sph.body_particle_rows(0)
+            v = sph.fluid.ps.vel[rows].mean(axis=0)  # a rigid body moving in heave: every particle's
+            leak = float((shares * sph.fluid.boundary_compression_power_now()[rows]).sum())
+            fz = float((shares * F[:, 2]).sum())
+            rows_out.append((fz, float(v[-1]), -fz * float(v[-1]), leak))
+    a = np.array(rows_out)
+    return {"t": times, "fz": a[:, 0], "w": a[:, 1], "p_in": a[:, 2], "leak": a[:, 3],
+            "cpu_s": time.process_time() - cpu}
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--hull", choices=("hemisphere", "cylinder"), default="cylinder")
+    ap.add_argument("--draft", type=float, default=3.0, help="the cylinder's draft [m]")
+    ap.add_argument("--r-over-dx", type=float, default=4.0)
+    ap.add_argument("--periods", type=int, default=6)
+    ap.add_argument("--amplitude", type=float, default=0.6, help="the heave amplitude [m]")
+    ap.add_argument("--depth", type=float, help="the water's depth [m] (the case's: 6)")
+    ap.add_argument("--set", dest="settings", action="append", default=[], metavar="KEY=VALUE")
+    args = ap.parse_args(argv)
+    s = scene_for(args.hull, args.draft, args.r_over_dx, args.periods, False, args.amplitude, args.settings,
+                  args.depth)
+    m, d = s.bodies[0].motion, s.domain
+    w = 2.0 * math.pi / m.period
+    a_ref, b_ref, c33 = hull_reference(reference_hull(args.hull, args.draft), d.depth, w, s.fluid.rho0,
+                                      s.world.gravity, name=f"radiation-{args.hull}")
+    r = powers(s)
+    a33, b33 = added_mass_damping(r["t"], r["fz"], m.amplitude, w, c33)
+    to_b = 2.0 / (w * m.amplitude) ** 2
+    per = SAMPLES_A_PERIOD
+    by_period = lambda x: ", ".join(f"{to_b * x[i * per:(i + 1) * per].mean() / 1e3:.1f}"
+                                    for i in range(len(x) // per))
+    print(f"{args.hull}, draft {args.draft:g} m, depth {d.depth:g} m, R/dx = {args.r_over_dx:g}, amplitude "
+          f"{m.amplitude:g} m, {' '.join(args.settings) + ', ' if args.settings else ''}{args.periods} periods after "
+          f"the ramp, untared; {r['cpu_s']:.0f} CPU-s")
+    print(f"Capytaine B33 {b_ref / 1e3:.2f} kN s/m; SPH B33 from the force's fit {b33 / 1e3:.2f} kN s/m")
+    print(f"as dampings [kN s/m]: the body's power into the fluid {to_b * r['p_in'].mean() / 1e3:.2f} "
+          f"(by period {by_period(r['p_in'])}); the boundary's compression work {to_b * r['leak'].mean() / 1e3:.2f} "
+          f"(by period {by_period(r['leak'])}); the fluid receives "
+          f"{to_b * (r['p_in'] - r['leak']).mean() / 1e3:.2f}")
+
+
+if __name__ == "__main__":
+    main()
