@@ -22,7 +22,7 @@ import numpy as np
 
 from cosim.validations import case_scene
 from cosim.validations.radiation import added_mass_damping, hull_reference
-from radiation_hull import reference_hull, scene_for  # benchmarks/radiation_hull.py, beside this script
+from radiation_hull import add_scene_arguments, reference_hull, scene_for  # benchmarks/radiation_hull.py, beside this script
 
 #: samples a period of the forced motion
 SAMPLES_A_PERIOD = 20
@@ -55,13 +55,7 @@ def powers(scene) -> dict:
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--hull", choices=("hemisphere", "cylinder"), default="cylinder")
-    ap.add_argument("--draft", type=float, default=3.0, help="the cylinder's draft [m]")
-    ap.add_argument("--r-over-dx", type=float, default=4.0)
-    ap.add_argument("--periods", type=int, default=6)
-    ap.add_argument("--amplitude", type=float, default=0.6, help="the heave amplitude [m]")
-    ap.add_argument("--depth", type=float, help="the water's depth [m] (the case's: 6)")
-    ap.add_argument("--set", dest="settings", action="append", default=[], metavar="KEY=VALUE")
+    add_scene_arguments(ap, hull="cylinder", draft=3.0, amplitude=0.6)
     args = ap.parse_args(argv)
     s = scene_for(args.hull, args.draft, args.r_over_dx, args.periods, False, args.amplitude, args.settings,
                   args.depth)

@@ -150,17 +150,22 @@ def figures(out: Path, hull_name: str, draft: float, r_over_dx: float, periods: 
     return "\n".join(lines)
 
 
+def add_scene_arguments(ap, hull: str = "hemisphere", draft: float = 1.5, amplitude: float = 0.3) -> None:
+    """The options of :func:`scene_for` on the parser ``ap``, with these defaults."""
+    ap.add_argument("--hull", choices=("hemisphere", "cylinder"), default=hull)
+    ap.add_argument("--draft", type=float, default=draft, help="the cylinder's draft [m] (the case's: 1.5)")
+    ap.add_argument("--r-over-dx", type=float, default=4.0)
+    ap.add_argument("--periods", type=int, default=6)
+    ap.add_argument("--amplitude", type=float, default=amplitude, help="the heave amplitude [m] (the case's: 0.3)")
+    ap.add_argument("--depth", type=float, help="the water's depth [m] (the case's: 6)")
+    ap.add_argument("--set", dest="settings", action="append", default=[], metavar="KEY=VALUE",
+                    help="a scene value (as cosim run --set), e.g. fluid.nu=0")
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--out", required=True, type=Path)
-    ap.add_argument("--hull", choices=("hemisphere", "cylinder"), default="hemisphere")
-    ap.add_argument("--draft", type=float, default=1.5, help="the cylinder's draft [m] (the case's: 1.5)")
-    ap.add_argument("--r-over-dx", type=float, default=4.0)
-    ap.add_argument("--periods", type=int, default=6)
-    ap.add_argument("--amplitude", type=float, default=0.3, help="the heave amplitude [m] (the case's: 0.3)")
-    ap.add_argument("--depth", type=float, help="the water's depth [m] (the case's: 6)")
-    ap.add_argument("--set", dest="settings", action="append", default=[], metavar="KEY=VALUE",
-                    help="a scene value for both runs (as cosim run --set), e.g. fluid.nu=0")
+    add_scene_arguments(ap)
     ap.add_argument("--only", choices=("forced", "held"))
     ap.add_argument("--upto", type=int, help="read the first UPTO periods after the ramp (runs still going)")
     args = ap.parse_args(argv)
