@@ -42,12 +42,12 @@ def powers(scene) -> dict:
         sph = built.fluid
         for t in times:
             built.coupler.run(float(t))
-            _, F, _ = sph.body_particle_forces(0)
+            fz_all = sph.fluid.boundary_forces_now()[:, -1]  # takes the rates, and the order rows refers to
             rows, shares = sph.body_particle_rows(0)
-            v = sph.fluid.ps.vel[rows].mean(axis=0)  # a rigid body moving in heave: every particle's
+            w = float(sph.fluid.ps.vel[rows, -1].mean())  # a rigid body moving in heave: every particle's
+            fz = float((shares * fz_all[rows]).sum())
             leak = float((shares * sph.fluid.boundary_compression_power_now()[rows]).sum())
-            fz = float((shares * F[:, 2]).sum())
-            rows_out.append((fz, float(v[-1]), -fz * float(v[-1]), leak))
+            rows_out.append((fz, w, -fz * w, leak))
     a = np.array(rows_out)
     return {"t": times, "fz": a[:, 0], "w": a[:, 1], "p_in": a[:, 2], "leak": a[:, 3],
             "cpu_s": time.process_time() - cpu}
