@@ -388,7 +388,9 @@ class SPHFluid:
     def body_particle_rows(self, k: int):
         """``(rows, shares)``: body ``k``'s boundary particles in the current order of the
         fluid's particles, and the number of times each counts in the body's load (see
-        :meth:`body_particle_forces`). Rigid bodies only."""
+        :meth:`body_particle_forces`). The order is the one the last rates were taken in:
+        read per-particle arrays with these rows after taking them (e.g.
+        ``fluid.boundary_forces_now()``), not before. Rigid bodies only."""
         if not 0 <= k < self.n_bodies:
             raise InputError(f"SPH fluid: no rigid body {k}; bodies are 0..{self.n_bodies - 1}")
         ps = self.fluid.ps
