@@ -30,7 +30,7 @@ from pathlib import Path
 import numpy as np
 
 from cosim.validations import case_scene
-from cosim.validations.radiation import added_mass_damping, cylinder_hull, radiation_scene
+from cosim.validations.radiation import added_mass_damping, cylinder_hull, draft_of, radiation_scene
 from radiation_hull import scene_for as hull_scene  # benchmarks/radiation_hull.py, beside this script
 
 SAMPLES_A_PERIOD = 20
@@ -75,7 +75,7 @@ def capytaine_by_annulus(scene, edges) -> tuple[np.ndarray, np.ndarray]:
 
     b, d = scene.bodies[0], scene.domain
     w = 2.0 * math.pi / b.motion.period
-    hull = cylinder_hull(b.radius, d.depth - (b.pos[-1] - 0.5 * b.length))
+    hull = cylinder_hull(b.radius, draft_of(scene))
     mesh = cpt.Mesh(hull.vertices, hull.faces)
     body = cpt.FloatingBody(mesh=mesh, dofs=cpt.rigid_body_dofs())
     pb = cpt.RadiationProblem(body=body, radiating_dof="Heave", omega=w, water_depth=d.depth, rho=scene.fluid.rho0,

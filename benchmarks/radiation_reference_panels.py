@@ -20,7 +20,7 @@ import time
 
 from cosim.errors import InputError
 from cosim.study import _richardson
-from cosim.validations.radiation import PANEL, radiation_scene, reference
+from cosim.validations.radiation import PANEL, draft_of, radiation_scene, reference
 
 
 def main(argv=None):
@@ -31,7 +31,7 @@ def main(argv=None):
     scene = radiation_scene(True)
     b, d = scene.bodies[0], scene.domain
     w = 2.0 * math.pi / b.motion.period
-    draft = d.depth - (b.pos[-1] - 0.5 * b.length)
+    draft = draft_of(scene)
     rows = []
     for p in args.panels:
         t = time.process_time()

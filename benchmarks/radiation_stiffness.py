@@ -24,7 +24,7 @@ from pathlib import Path
 import numpy as np
 
 from cosim.validations import case_scene
-from cosim.validations.radiation import held_scene, radiation_scene, reference
+from cosim.validations.radiation import draft_of, held_scene, radiation_scene, reference
 
 PERIODS, AVERAGED = 3, 2
 
@@ -59,7 +59,7 @@ def main(argv=None) -> int:
             return 0
         b, d = scene.bodies[0], scene.domain
         g, rho = scene.world.gravity, scene.fluid.rho0
-        draft = d.depth - (b.pos[-1] - 0.5 * b.length)
+        draft = draft_of(scene)
         fit = res.t > res.t[-1] - AVERAGED * period - 1e-9
         f = res[f"{b.name}.fluid_Fz"][fit]
         weight = rho * g * math.pi * b.radius**2 * draft

@@ -13,7 +13,7 @@ import pytest
 from scipy.special import j0, y0
 
 from cosim.errors import InputError
-from cosim.validations.radiation import added_mass_damping, separate
+from cosim.validations.radiation import added_mass_damping, draft_of, separate
 
 K = 2.0 * math.pi / 7.3  # a wave 7.3 m long
 A_OUT, B_IN = 0.021 * np.exp(0.4j), 0.0042 * np.exp(-1.9j)  # reflection 0.2
@@ -261,9 +261,8 @@ def test_another_hulls_depth_keeps_its_draft_and_the_air_above():
     assert (deep.domain.depth, deep.waves.depth) == (12.0, 12.0)
     assert deep.domain.height - deep.domain.depth == pytest.approx(case.domain.height - case.domain.depth)
     for s in (case, deep):
-        b = s.bodies[0]
-        assert s.domain.depth - (b.pos[-1] - 0.5 * b.length) == pytest.approx(3.0)
-        assert b.pos[-1] == pytest.approx(s.domain.depth)
+        assert draft_of(s) == pytest.approx(3.0)
+        assert s.bodies[0].pos[-1] == pytest.approx(s.domain.depth)
 
 
 FORCED = """

@@ -155,6 +155,13 @@ def radiation_scene(quick: bool):
     return s.with_values([f"fluid.dx={RUNS[quick]}", f"world.duration={duration:.6g}"])
 
 
+def draft_of(scene) -> float:
+    """The draft [m] of ``scene``'s first body, an upright cylinder: the still water's depth
+    less the height of its bottom."""
+    b = scene.bodies[0]
+    return scene.domain.depth - (b.pos[-1] - 0.5 * b.length)
+
+
 def held_scene(scene):
     """``scene`` with its body held still where its motion starts (the tare run)."""
     from cosim.scene.toml_io import from_dict, to_dict
@@ -208,7 +215,7 @@ def radiation_metrics(res, scene, tare=None) -> dict:
     m, g, rho = b.motion, scene.world.gravity, scene.fluid.rho0
     w = 2.0 * math.pi / m.period
     k = float(wavenumbers(w, d.depth, g))
-    draft = d.depth - (b.pos[-1] - 0.5 * b.length)
+    draft = draft_of(scene)
     a_ref, b_ref, c33 = reference(b.radius, draft, d.depth, w, rho, g)
     a_first, b_first, c_first = reference(b.radius, draft, d.depth, w, rho, g, panel=FIRST_PANEL)
     t_end = float(res.t[-1])
