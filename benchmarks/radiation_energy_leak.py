@@ -28,18 +28,23 @@ from radiation_hull import add_scene_arguments, reference_hull, scene_for  # ben
 SAMPLES_A_PERIOD = 20
 
 
-def powers(scene) -> dict:
+def powers(scene, extra=None, on_built=None) -> dict:
     """``{"t", "fz", "w", "p_in", "leak"}`` at :data:`SAMPLES_A_PERIOD` samples a period after
     the ramp: the fluid's vertical force on the body [N], its heave velocity [m/s], the power
     [W] the body puts into the fluid (``-F . v``) and the boundary particles' compression
-    work [W] (module docstring), each body particle counted as in its load."""
+    work [W] (module docstring), each body particle counted as in its load. ``extra(fluid)``:
+    called at each sample after the rates are taken, its results listed in ``"extra"``;
+    ``on_built(fluid)``: called once, before the run starts (``fluid`` the
+    :class:`fluid.solver.Fluid`)."""
     m = scene.bodies[0].motion
     ramp_end = m.ramp * m.period
     n = round((scene.world.duration - ramp_end) / m.period * SAMPLES_A_PERIOD)
     times = ramp_end + np.arange(1, n + 1) * m.period / SAMPLES_A_PERIOD
-    rows_out, cpu = [], time.process_time()
+    rows_out, extras, cpu = [], [], time.process_time()
     with case_scene.built(scene) as built:
         sph = built.fluid
+        if on_built is not None:
+            on_built(sph.fluid)
         for t in times:
             built.coupler.run(float(t))
             fz_all = sph.fluid.boundary_forces_now()[:, -1]  # takes the rates, and the order rows refers to
@@ -48,8 +53,10 @@ def powers(scene) -> dict:
             fz = float((shares * fz_all[rows]).sum())
             leak = float((shares * sph.fluid.boundary_compression_power_now()[rows]).sum())
             rows_out.append((fz, w, -fz * w, leak))
+            if extra is not None:
+                extras.append(extra(sph.fluid))
     a = np.array(rows_out)
-    return {"t": times, "fz": a[:, 0], "w": a[:, 1], "p_in": a[:, 2], "leak": a[:, 3],
+    return {"t": times, "fz": a[:, 0], "w": a[:, 1], "p_in": a[:, 2], "leak": a[:, 3], "extra": extras,
             "cpu_s": time.process_time() - cpu}
 
 

@@ -31,13 +31,19 @@ from fluid.particles import Kind
 TERMS = ("diffusion", "viscosity", "floor", "side walls")
 
 
+def internal_energy(c, rho) -> np.ndarray:
+    """The Tait equation of state's internal energy per unit mass [J/kg] at densities ``rho``
+    (``int p / rho^2 d rho`` from ``rho0``; ``c`` the fluid's config)."""
+    B, g1 = c.speed_of_sound ** 2 * c.rho0 / c.gamma, c.gamma - 1.0
+    return B * ((rho ** g1 - c.rho0 ** g1) / (g1 * c.rho0 ** c.gamma) + 1.0 / rho - 1.0 / c.rho0)
+
+
 def energy(f) -> float:
     """The fluid particles' kinetic, gravitational and internal energy [J]."""
     c, ps = f.config, f.ps
     fl = ps.kind == Kind.FLUID
     m, rho = ps.mass[fl], ps.rho[fl]
-    B, g1 = c.speed_of_sound ** 2 * c.rho0 / c.gamma, c.gamma - 1.0
-    e = B * ((rho ** g1 - c.rho0 ** g1) / (g1 * c.rho0 ** c.gamma) + 1.0 / rho - 1.0 / c.rho0)
+    e = internal_energy(c, rho)
     return float((m * (0.5 * (ps.vel[fl] ** 2).sum(axis=1) + G * ps.pos[fl, -1] + e)).sum())
 
 

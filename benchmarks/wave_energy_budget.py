@@ -58,12 +58,12 @@ RHO_WATER = 1000.0  # kg/m^3: the scenes' rho0, for linear theory's wave energy
 
 def rates_without(f, index: int):
     """The fluid ``f``'s rates with the parameter ``index`` of the pair loop set to 0."""
-    ps, c = f.ps, f.config
+    ps, c, m = f.ps, f.config, f.mirror
     prm = f._prm.copy()
     prm[index] = 0.0
     return eq.evaluate(ps.pos, ps.vel, ps.rho, ps.mass, ps.kind, f._start, f._grid, f._kernel, prm, c.rho0,
                        c.speed_of_sound, c.gamma, ps.p.copy(), eq.Workspace(), f._xbins, f.near_fluid,
-                       f._walls_rates, f.mirror)
+                       f._walls_rates, m, None if m is None else f.image_rows)
 
 
 def wall_pressure_acceleration(f, width: float) -> dict:
