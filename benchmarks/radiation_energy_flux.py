@@ -1,6 +1,6 @@
 """Where a heaving hull's work on the water goes: the energy budget of the water inside
 upright cylinders round the hull's axis, radius by radius, period by period after the ramp.
-docs/validation/nearfield.md, "Where the deep cylinder's work goes".
+docs/validation/nearfield.md, "The deep cylinder at R/dx = 6, and where its work goes".
 
 For the water inside radius ``r_k`` (a smooth edge: each particle counts with a weight
 ``S(r)`` that falls from 1 to 0 across the band ``|r - r_k| < w``, ``w`` = :data:`BAND`
@@ -70,6 +70,7 @@ class Audit:
         self.depth, self.t_from, self.period = depth, t_from, period
         self.mls = np.zeros((periods, len(RADII)))
         self.zones = np.zeros(periods)  # the zones' change of the whole water's kinetic energy [J]
+        self.ids, self.particles = None, []  # the kept particles' ids and their values by sample (_keep)
 
     def _bucket(self, t: float):
         i = math.floor((t - self.t_from) / self.period - 1e-9)
@@ -116,7 +117,8 @@ class Audit:
             fl = f._fluid_rows()
             before = f.ps.mass[fl] @ (f.ps.vel[fl] ** 2).sum(axis=1)
             zones(dt)
-            self.zones[i] += f.ps.mass[fl] @ (f.ps.vel[fl] ** 2).sum(axis=1) - before  # twice the half box's
+            # m v^2 summed: the kinetic energy's change of the half box, doubled for the whole
+            self.zones[i] += f.ps.mass[fl] @ (f.ps.vel[fl] ** 2).sum(axis=1) - before
 
         f._reinitialise_density, f._apply_zones = reinitialise, apply_zones
 
@@ -144,8 +146,8 @@ class Audit:
         in :attr:`particles`, for :func:`by_particle`."""
         ps = f.ps
         ids = ps.ids[fl]
-        if not hasattr(self, "ids"):
-            self.ids, self.particles = np.sort(ids), []
+        if self.ids is None:
+            self.ids = np.sort(ids)
         at = np.searchsorted(self.ids, ids)
         ok = (at < self.ids.size) & (self.ids[np.minimum(at, self.ids.size - 1)] == ids)
         rows = {"pos": ps.pos[fl], "vel": ps.vel[fl], "rho": ps.rho[fl], "p": ps.p[fl], "m": ps.mass[fl], **per}
