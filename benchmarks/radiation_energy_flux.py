@@ -204,20 +204,19 @@ ANNULI = (0.0, 1.1, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0, math.inf)
 
 
 def _rings_and_layers(raw, depth: float, dx: float):
-    """Each kept particle's mean place: its annulus of :data:`ANNULI` and its layer (0: the
-    top two spacings, 2: the bottom two, 1: between), and whether it has one."""
+    """Each kept particle's mean place [m], its annulus of :data:`ANNULI` and its layer (0:
+    the top two spacings, 2: the bottom two, 1: between), and whether it has one."""
     pos = np.nanmean(raw["particle_pos"].astype(np.float64), axis=0)
     r, z = np.hypot(pos[:, 0], pos[:, 1]) / RADIUS, pos[:, 2]
     layer = np.where(z > depth - 2 * dx, 0, np.where(z < 2 * dx, 2, 1))
-    return np.digitize(r, ANNULI) - 1, layer, np.isfinite(r)
+    return pos, np.digitize(r, ANNULI) - 1, layer, np.isfinite(r)
 
 
 def drift(raw, depth: float, dx: float) -> dict:
     """The particles' mean velocity over the samples [m/s], radial (from the axis) and
     vertical, averaged by annulus (:data:`ANNULI`) and layer: ``{"radial", "vertical"}``,
     each (3, len(ANNULI) - 1)."""
-    ring, layer, ok = _rings_and_layers(raw, depth, dx)
-    pos = np.nanmean(raw["particle_pos"].astype(np.float64), axis=0)
+    pos, ring, layer, ok = _rings_and_layers(raw, depth, dx)
     v = np.nanmean(raw["particle_vel"].astype(np.float64), axis=0)
     ur = (pos[:, 0] * v[:, 0] + pos[:, 1] * v[:, 1]) / np.maximum(np.hypot(pos[:, 0], pos[:, 1]), 1e-12)
     cell = lambda x, i, j: float(np.nanmean(x[ok & (ring == i) & (layer == j)])) if (
@@ -246,7 +245,7 @@ def by_particle(raw, depth: float, to_b: float, dx: float) -> dict:
         settle = (np.nanmean(P["vel"], axis=0) * np.nanmean(P["a_walls"], axis=0)).sum(axis=1)
         terms["walls"] = m * ((P["vel"] * P["a_walls"]).sum(axis=2).mean(axis=0) - settle)
         terms["walls' settling"] = m * settle
-    ring, layer, ok = _rings_and_layers(raw, depth, dx)
+    _, ring, layer, ok = _rings_and_layers(raw, depth, dx)
     out = {}
     for name, x in terms.items():
         x = np.where(ok & np.isfinite(x), x, 0.0) * 2.0 * to_b / 1e3
@@ -269,8 +268,8 @@ def report(raw, scene, title: str) -> str:
              f"(B33 of the force's fit), its boundary's compression work {to_b * raw['leak'].mean() / 1e3:.2f}", "",
              "as dampings [kN s/m], the mean of the periods (the energy's change and the residual: "
              "of all but the first two too)", "", "| r / R | " + " | ".join(b) + " |", "|---" * (len(b) + 1) + "|"]
+    last = ("energy's change", "residual") if len(b["residual"]) > 2 else ()
     for k, rk in enumerate(RADII):
-        last = ("energy's change", "residual") if len(b["residual"]) > 2 else ()
         lines.append(f"| {rk:g} | " + " | ".join(f"{a[:, k].mean():.2f}" + (f" ({a[2:, k].mean():.2f})" if name in last
                                                                           else "") for name, a in b.items()) + " |")
     lines += ["", "flux out by period [kN s/m]: " + "; ".join(

@@ -26,6 +26,7 @@ from machine import cpu_name  # benchmarks/machine.py, beside this script
 from standing_wave_decay import AMPLITUDE, started_tank, tank_mode  # beside this script
 from wave_energy_budget import RHO_WATER, term_rates  # beside this script
 from cosim.validations.wave_propagation import G, WP_DEPTH as DEPTH
+from fluid import equations as eq
 from fluid.particles import Kind
 
 TERMS = ("diffusion", "viscosity", "floor", "side walls")
@@ -34,7 +35,7 @@ TERMS = ("diffusion", "viscosity", "floor", "side walls")
 def internal_energy(c, rho) -> np.ndarray:
     """The Tait equation of state's internal energy per unit mass [J/kg] at densities ``rho``
     (``int p / rho^2 d rho`` from ``rho0``; ``c`` the fluid's config)."""
-    B, g1 = c.speed_of_sound ** 2 * c.rho0 / c.gamma, c.gamma - 1.0
+    B, g1 = eq.tait_B(c.rho0, c.speed_of_sound, c.gamma), c.gamma - 1.0
     return B * ((rho ** g1 - c.rho0 ** g1) / (g1 * c.rho0 ** c.gamma) + 1.0 / rho - 1.0 / c.rho0)
 
 
