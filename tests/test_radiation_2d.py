@@ -1,0 +1,76 @@
+"""benchmarks/radiation_2d.py: the 2-D sections' boundary-element reference (its damping is
+the energy its waves carry; converged in the panels and the box), the scene it runs and
+the reading of a run's force and gauges."""
+
+import math
+import numpy as np
+import pytest
+
+from benchmarks.radiation_2d import (DEPTH, GAUGES, PERIOD, RADIUS, contour, figures, scene_2d,
+                                     section_coefficients)
+
+OMEGA = 2.0 * math.pi / PERIOD
+
+
+@pytest.mark.parametrize("hull", ["box", "circle", "diamond"])
+def test_a_sections_damping_is_the_energy_flux_of_its_waves(hull):
+    """B33 from the body's pressure equals B33 from the outgoing waves' energy flux at the
+    open boundaries (energy conservation), the gap closing in proportion to the panels."""
+    coarse = section_coefficients(contour(hull), DEPTH, OMEGA, panel=RADIUS / 20)
+    fine = section_coefficients(contour(hull), DEPTH, OMEGA, panel=RADIUS / 40)
+    gap_coarse, gap_fine = (1.0 - c["B33_far"] / c["B33"] for c in (coarse, fine))
+    assert 0.0 < gap_fine < 0.03
+    assert gap_fine == pytest.approx(0.5 * gap_coarse, rel=0.1)
+    assert fine["A33"] > 0.0 and fine["B33"] > 0.0
+
+
+def test_the_sections_coefficients_converge_in_the_panels_and_do_not_depend_on_the_box():
+    """Halving the panels from R / 20 moves A33 and B33 of the box by under 0.5 %; the open
+    boundaries at 0.8 m instead of 1.2 m by under 0.3 % (the evanescent modes have decayed
+    there; what is left is the surface panels' own dispersion over the longer way)."""
+    ref = section_coefficients(contour("box"), DEPTH, OMEGA, panel=RADIUS / 20)
+    finer = section_coefficients(contour("box"), DEPTH, OMEGA, panel=RADIUS / 40)
+    nearer = section_coefficients(contour("box"), DEPTH, OMEGA, panel=RADIUS / 20, half_length=0.8)
+    for other, tol in ((finer, 5e-3), (nearer, 3e-3)):
+        assert other["A33"] == pytest.approx(ref["A33"], rel=tol)
+        assert other["B33"] == pytest.approx(ref["B33"], rel=tol)
+
+
+def test_the_2d_scene_heaves_its_hull_about_the_still_water():
+    """The box drawing ``draft`` radii is centred on the still water and twice as high as
+    its draft; the amplitude is in radii; the gauges stand on both sides; dx = R / r_over_dx."""
+    s = scene_2d("box", 0.5, 8.0, 0.1, 3)
+    b = s.bodies[0]
+    assert s.world.dim == 2 and s.fluid.dx == pytest.approx(RADIUS / 8)
+    assert b.pos[-1] == pytest.approx(DEPTH) and b.size[-1] == pytest.approx(RADIUS)
+    assert b.motion.amplitude == pytest.approx(0.1 * RADIUS) and b.motion.period == pytest.approx(PERIOD)
+    assert s.world.duration == pytest.approx(4 * PERIOD)
+    assert sorted(s.probes.gauges) == sorted([-x for x in GAUGES] + list(GAUGES))
+    with pytest.raises(ValueError, match="hull"):
+        scene_2d("wedge", 1.0, 4.0, 0.1, 3)
+
+
+def test_the_reading_recovers_a_known_force_and_outgoing_waves():
+    """A force ``-(C - A w^2) z - B w a cos`` and waves travelling out on both sides of
+    known amplitude give back A, B, the waves' damping and the excess as a drag."""
+    s = scene_2d("box", 1.0, 4.0, 0.2, 6)
+    m = s.bodies[0].motion
+    g, rho = s.world.gravity, s.fluid.rho0
+    from fluid.waves import group_velocity, wavenumbers
+
+    k = float(wavenumbers(OMEGA, DEPTH, g))
+    a33, b33, amp = 20.0, 60.0, 0.004
+    t = np.arange(0.0, s.world.duration, PERIOD / 40)
+    z = m.amplitude * np.sin(OMEGA * t)
+    c = rho * g * 2.0 * RADIUS
+    series = {"body.fluid_Fz": -(c - a33 * OMEGA**2) * z - b33 * OMEGA * m.amplitude * np.cos(OMEGA * t)}
+    for i, x in enumerate([-x for x in GAUGES] + list(GAUGES)):
+        series[f"gauge{i + 1}.eta"] = amp * np.cos(OMEGA * t - k * abs(x))
+    res = type("Res", (), {"t": t, "__getitem__": lambda self, key: series[key]})()
+    f = figures(res, s, {"B33": 40.0})
+    assert f["A33"] == pytest.approx(a33, rel=1e-9) and f["B33"] == pytest.approx(b33, rel=1e-9)
+    assert f["B33_wave"] == pytest.approx(2 * rho * g * amp**2 * float(group_velocity(k, DEPTH, g))
+                                          / (OMEGA * m.amplitude)**2, rel=1e-6)
+    assert f["reflection"] < 1e-6
+    drag = (8.0 / (3.0 * math.pi)) * 0.5 * rho * 2.0 * RADIUS * OMEGA * m.amplitude
+    assert f["Cd_of_excess"] == pytest.approx(20.0 / drag, rel=1e-9)
