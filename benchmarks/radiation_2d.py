@@ -12,6 +12,10 @@ cylinder's draft over its radius) or R / 2 (the case's). A run costs 20 s at R/d
 
     python benchmarks/radiation_2d.py [--hull box|circle|diamond] [--draft 1.0] [--r-over-dx 4 8 16]
         [--amplitude 0.2] [--periods 8] [--set KEY=VALUE ...] [--out OUT] [--reference-only]
+    python benchmarks/radiation_2d.py --figure PNG [--r-over-dx 8] [--amplitude 0.2]
+
+``--figure``: the water's vorticity round the box and the circle, phase-averaged
+(:func:`vorticity_figure`; docs/validation/figures/radiation-2d_vorticity.png).
 
 ``--draft`` and ``--amplitude`` are in radii (the box's draft; the heave amplitude, the
 case's 0.1, KC = pi a / R). The force is fitted over the periods after the ramp and the
@@ -187,6 +191,74 @@ def figures(res, scene, reference: dict) -> dict:
             "Cd_of_excess": (b33 - reference["B33"]) / drag}
 
 
+def vorticity_figure(path: Path, r_over_dx: float = 8.0, amplitude: float = 0.2, draft: float = 1.0,
+                     periods: tuple = (2, 3, 4, 5)) -> None:
+    """The water's vorticity round the box and the circle (:func:`scene_2d`) at the top of
+    the stroke and at the fastest downstroke, averaged over the same phase of ``periods``
+    (counted after the ramp; the particles' noise averages out, the shed vortices stay):
+    the particles' velocities averaged in cells a spacing wide, curled by central
+    differences. Written to ``path`` (PNG)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from cosim.validations import case_scene
+    from fluid.particles import Kind
+
+    phases = (0.25, 0.5)  # of the period: the top (at rest), the fastest downstroke
+    fig, axes = plt.subplots(2, 2, figsize=(10, 6.2), sharex=True, sharey=True, constrained_layout=True)
+    dx = RADIUS / r_over_dx
+    edges_x = np.arange(-2.0 * RADIUS, 2.0 * RADIUS + 1e-9, dx)
+    edges_z = np.arange(0.0, DEPTH + 0.5 * RADIUS + 1e-9, dx)
+    for row, hull in enumerate(("box", "circle")):
+        s = scene_2d(hull, draft, r_over_dx, amplitude, max(periods) + 1)
+        m = s.bodies[0].motion
+        times = sorted((m.ramp + n + f) * m.period for n in periods for f in phases)
+        sums = {f: np.zeros((3, len(edges_x) - 1, len(edges_z) - 1)) for f in phases}
+        with case_scene.built(s) as b:
+            ps = b.fluid.fluid.ps
+            left = list(times)
+
+            def grab(info):
+                if left and info.t >= left[0] - 1e-9:
+                    f = phases[int(round((left.pop(0) / m.period - m.ramp) % 1.0 / 0.25)) - 1]
+                    fl = ps.kind == Kind.FLUID
+                    x, z = ps.pos[fl, 0], ps.pos[fl, -1]
+                    for k, wts in enumerate((None, ps.vel[fl, 0], ps.vel[fl, -1])):
+                        sums[f][k] += np.histogram2d(x, z, [edges_x, edges_z], weights=wts)[0]
+
+            b.coupler.run(times[-1] + 1e-3 * m.period, callback=grab)
+        scale = 2.0 * 2.0 * math.pi / m.period
+        for col, f in enumerate(phases):
+            count, u, w = sums[f]
+            with np.errstate(invalid="ignore"):
+                u, w = u / count, w / count
+            curl = np.gradient(u, dx, axis=1) - np.gradient(w, dx, axis=0)  # du/dz - dw/dx
+            ax = axes[row, col]
+            im = ax.pcolormesh(edges_x, edges_z, np.nan_to_num(curl).T, cmap="RdBu_r", vmin=-scale, vmax=scale)
+            zc = DEPTH + m.amplitude * math.sin(2.0 * math.pi * f)
+            if hull == "box":
+                h = draft * RADIUS
+                c = np.array([(RADIUS, h), (RADIUS, -h), (-RADIUS, -h), (-RADIUS, h), (RADIUS, h)])
+            else:
+                th = np.linspace(0.0, 2.0 * math.pi, 181)
+                c = RADIUS * np.column_stack([np.cos(th), np.sin(th)])
+            ax.plot(c[:, 0], c[:, 1] + zc, "k-", lw=1.2)
+            ax.axhline(DEPTH, color="0.5", lw=0.6, ls=":")
+            ax.set_aspect("equal")
+            ax.set_ylim(0.0, DEPTH + 0.5 * RADIUS)
+            ax.set_title(f"{hull}: {'top of the stroke' if col == 0 else 'fastest downstroke'}", fontsize=9)
+    fig.colorbar(im, ax=axes, label="vorticity [1/s]", shrink=0.8)
+    for ax in axes[-1]:
+        ax.set_xlabel("x [m]")
+    for ax in axes[:, 0]:
+        ax.set_ylabel("z [m]")
+    fig.suptitle(f"heave {amplitude:g} R, R/dx = {r_over_dx:g}: the water's vorticity, averaged over the same "
+                 f"phase of periods {periods[0]}-{periods[-1]} after the ramp", fontsize=10)
+    fig.savefig(path, dpi=110)
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--hull", choices=HULLS, default="box")
@@ -198,7 +270,12 @@ def main(argv=None):
                     help="a scene value (as cosim run --set), e.g. fluid.nu=0")
     ap.add_argument("--out", type=Path, help="keep each run in OUT/<hull>-... (default: a temporary folder)")
     ap.add_argument("--reference-only", action="store_true", help="print the boundary-element reference only")
+    ap.add_argument("--figure", type=Path, metavar="PNG",
+                    help="draw the vorticity round the box and the circle at the first --r-over-dx instead")
     a = ap.parse_args(argv)
+    if a.figure:
+        vorticity_figure(a.figure, a.r_over_dx[0], a.amplitude, a.draft)
+        return
     w = 2.0 * math.pi / PERIOD
     ref = section_coefficients(contour(a.hull, a.draft), DEPTH, w)
     print(f"{a.hull}, draft {a.draft:g} R (R = {RADIUS} m, depth {DEPTH} m, T = {PERIOD:.4f} s), "
