@@ -3,12 +3,12 @@ SPH near field, its added mass and damping per metre from the force's first harm
 against a 2-D linear potential-flow reference (:func:`section_coefficients`, below), and
 the damping its radiated wave carries (the energy flux of the outgoing wave at gauges on
 both sides). The sections: a box (a rectangle's sharp corners, as the case's cylinder has
-at its rim), a circle centred on the still water (smooth), a square turned 45 degrees (a
-corner at the keel, faces at 45 degrees to the lattice). The case at 1/30 scale: half-beam
-R = 0.1 m, water 2 R deep, T = 3.54 s / sqrt(30) (k R = 1), the box drawing R (the deep
-cylinder's draft over its radius) or R / 2 (the case's). A run costs 20 s at R/dx = 4 to
-10 min at R/dx = 16 on one core: the cheap place to study the sharp edge's excess
-(docs/validation/nearfield.md, "The sharp edge's excess in 2-D").
+at its rim), a circle centred on the still water (smooth), a square turned 45 degrees
+("diamond": a corner at the keel, faces at 45 degrees to the lattice). The case at 1/30
+scale: half-beam R = 0.1 m, water 2 R deep, T = 3.54 s / sqrt(30) (k R = 1), the box
+drawing R (the deep cylinder's draft over its radius) or R / 2 (the case's). A run costs
+20 s at R/dx = 4 to 10 min at R/dx = 16 on one core: the cheap place to study the sharp
+edge's excess (docs/validation/nearfield.md, "The sharp edge's excess in 2-D").
 
     python benchmarks/radiation_2d.py [--hull box|circle|diamond] [--draft 1.0] [--r-over-dx 4 8 16]
         [--amplitude 0.2] [--periods 8] [--set KEY=VALUE ...] [--out OUT] [--reference-only]
@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import tempfile
 import time
 from pathlib import Path
 
@@ -214,21 +215,21 @@ def vorticity_figure(path: Path, r_over_dx: float = 8.0, amplitude: float = 0.2,
     for row, hull in enumerate(("box", "circle")):
         s = scene_2d(hull, draft, r_over_dx, amplitude, max(periods) + 1)
         m = s.bodies[0].motion
-        times = sorted((m.ramp + n + f) * m.period for n in periods for f in phases)
+        left = sorted(((m.ramp + n + f) * m.period, f) for n in periods for f in phases)  # (time, phase)
+        end = left[-1][0]
         sums = {f: np.zeros((3, len(edges_x) - 1, len(edges_z) - 1)) for f in phases}
         with case_scene.built(s) as b:
             ps = b.fluid.fluid.ps
-            left = list(times)
 
             def grab(info):
-                if left and info.t >= left[0] - 1e-9:
-                    f = phases[int(round((left.pop(0) / m.period - m.ramp) % 1.0 / 0.25)) - 1]
+                if left and info.t >= left[0][0] - 1e-9:
+                    f = left.pop(0)[1]
                     fl = ps.kind == Kind.FLUID
                     x, z = ps.pos[fl, 0], ps.pos[fl, -1]
                     for k, wts in enumerate((None, ps.vel[fl, 0], ps.vel[fl, -1])):
                         sums[f][k] += np.histogram2d(x, z, [edges_x, edges_z], weights=wts)[0]
 
-            b.coupler.run(times[-1] + 1e-3 * m.period, callback=grab)
+            b.coupler.run(end + 1e-3 * m.period, callback=grab)
         scale = 2.0 * 2.0 * math.pi / m.period
         for col, f in enumerate(phases):
             count, u, w = sums[f]
@@ -287,8 +288,6 @@ def main(argv=None):
     print("| R/dx | particles | steps | CPU s | A33 [kg/m] (ref) | B33 [kg/(m s)] (ref) | B33 by period | "
           "the wave's B33 | reflection | excess as Cd |")
     print("|---|---|---|---|---|---|---|---|---|---|")
-    import tempfile
-
     for rdx in a.r_over_dx:
         s = scene_2d(a.hull, a.draft, rdx, a.amplitude, a.periods, a.settings)
         cpu = time.process_time()
