@@ -3,11 +3,13 @@ the energy its waves carry; converged in the panels and the box), the scene it r
 the reading of a run's force and gauges."""
 
 import math
+
 import numpy as np
 import pytest
 
 from benchmarks.radiation_2d import (DEPTH, GAUGES, PERIOD, RADIUS, contour, figures, scene_2d,
                                      section_coefficients)
+from fluid.waves import group_velocity, wavenumbers
 
 OMEGA = 2.0 * math.pi / PERIOD
 
@@ -22,6 +24,22 @@ def test_a_sections_damping_is_the_energy_flux_of_its_waves(hull):
     assert 0.0 < gap_fine < 0.03
     assert gap_fine == pytest.approx(0.5 * gap_coarse, rel=0.1)
     assert fine["A33"] > 0.0 and fine["B33"] > 0.0
+
+
+def test_a_sections_damping_tends_to_the_long_wave_limit():
+    """In long waves a section of beam b heaving at velocity V sends b V / 2 of water each
+    way as a wave of speed c = sqrt(g h), so B33 -> rho g b^2 / (2 c) (the energy flux of
+    the two waves); the BEM's damping of a thin box (draft h / 10) approaches it as k h
+    falls, its error about quartering as k h halves."""
+    g, h, beam = 9.81, DEPTH, 2.0 * RADIUS
+    limit = 1000.0 * g * beam**2 / (2.0 * math.sqrt(g * h))
+    section = [(RADIUS, 0.0), (RADIUS, -0.1 * h), (-RADIUS, -0.1 * h), (-RADIUS, 0.0)]
+    errors = []
+    for kh in (0.2, 0.1):
+        k = kh / h
+        errors.append(abs(section_coefficients(section, h, math.sqrt(g * k * math.tanh(kh)))["B33"] / limit - 1.0))
+    assert errors[1] < 2e-3
+    assert errors[1] < 0.4 * errors[0]
 
 
 def test_the_sections_coefficients_converge_in_the_panels_and_do_not_depend_on_the_box():
@@ -56,8 +74,6 @@ def test_the_reading_recovers_a_known_force_and_outgoing_waves():
     s = scene_2d("box", 1.0, 4.0, 0.2, 6)
     m = s.bodies[0].motion
     g, rho = s.world.gravity, s.fluid.rho0
-    from fluid.waves import group_velocity, wavenumbers
-
     k = float(wavenumbers(OMEGA, DEPTH, g))
     a33, b33, amp = 20.0, 60.0, 0.004
     t = np.arange(0.0, s.world.duration, PERIOD / 40)
