@@ -13,9 +13,11 @@ edge's excess (docs/validation/nearfield.md, "The sharp edge's excess in 2-D").
     python benchmarks/radiation_2d.py [--hull box|circle|diamond] [--draft 1.0] [--r-over-dx 4 8 16]
         [--amplitude 0.2] [--periods 8] [--set KEY=VALUE ...] [--out OUT] [--reference-only]
     python benchmarks/radiation_2d.py --figure PNG [--r-over-dx 8] [--amplitude 0.2]
+    python benchmarks/radiation_2d.py --slab 6 --r-over-dx 4 [--amplitude 0.2]
 
 ``--figure``: the water's vorticity round the box and the circle, phase-averaged
 (:func:`vorticity_figure`; docs/validation/figures/radiation-2d_vorticity.png).
+``--slab ROWS``: the box in 3-D numerics, a slab ROWS spacings wide between slip walls.
 
 ``--draft`` and ``--amplitude`` are in radii (the box's draft; the heave amplitude, the
 case's 0.1, KC = pi a / R). The force is fitted over the periods after the ramp and the
@@ -134,13 +136,16 @@ def section_coefficients(section, depth: float, omega: float, *, g: float = 9.81
             "B33_far": 2.0 * rho * g * eta**2 * float(group_velocity(k, depth, g)), "panels": n}
 
 
-def scene_2d(hull: str, draft: float, r_over_dx: float, amplitude: float, periods: int, settings=()):
+def scene_2d(hull: str, draft: float, r_over_dx: float, amplitude: float, periods: int, settings=(),
+             slab: int = 0):
     """The 2-D scene: ``hull`` (``draft`` in radii: the box's) centred on the still water
     at x = 0, forced in heave through ``amplitude`` radii at :data:`PERIOD` (a period's
     ramp), the ramp and ``periods`` periods long, 40 samples a period; the case's fluid at
     this scale (no artificial viscosity, :data:`NU`), dx = R / ``r_over_dx``; the near
     field's box :data:`HALF_LENGTH` each side with zones :data:`ZONE` wide; ``settings``
-    ("KEY=VALUE", as ``cosim run --set``) last."""
+    ("KEY=VALUE", as ``cosim run --set``) last. ``slab`` > 0: the same section in 3-D
+    numerics, a slab ``slab`` spacings wide between slip side walls (no side zones), the
+    box spanning it (boxes only), the gauges across its middle."""
     from cosim.scene.toml_io import from_dict
 
     r = RADIUS
@@ -162,13 +167,22 @@ def scene_2d(hull: str, draft: float, r_over_dx: float, amplitude: float, period
          "waves": {"kind": "still", "period": PERIOD, "depth": DEPTH},
          "bodies": [body],
          "probes": {"gauges": [-x for x in GAUGES] + list(GAUGES), "motion": ["body"], "tensions": False}}
+    if slab:
+        if hull != "box":
+            raise ValueError(f"slab: a box only spans the slab, not a {hull}")
+        width = slab * r / r_over_dx
+        d["world"]["dim"] = 3
+        d["domain"].update(width=width, side_zones=False, symmetry=False, sides="walls")
+        body.update(size=[2.0 * r, width, 2.0 * draft * r], pos=[0.0, 0.5 * width, DEPTH])
+        d["probes"]["gauges"] = [[x, 0.5 * width] for x in d["probes"]["gauges"]]
     return from_dict(d).with_values(list(settings))
 
 
 def figures(res, scene, reference: dict) -> dict:
-    """The run's A33 and B33 per metre (whole, and B33 by period) from the force's first
-    harmonic after the ramp and two periods, the damping its outgoing waves carry, each
-    side's reflection, and the excess of B33 over ``reference`` as a drag coefficient."""
+    """The run's A33 and B33 per metre (a slab's force over its width; whole, and B33 by
+    period) from the force's first harmonic after the ramp and two periods, the damping
+    its outgoing waves carry, each side's reflection, and the excess of B33 over
+    ``reference`` as a drag coefficient."""
     from cosim.validations.radiation import added_mass_damping, damping_by_period
     from cosim.validations.wave_propagation import harmonics, separate
     from fluid.waves import group_velocity, wavenumbers
@@ -180,7 +194,7 @@ def figures(res, scene, reference: dict) -> dict:
     fit = res.t > (m.ramp + 2.0) * m.period - 1e-9
     ts = res.t[fit]
     stiffness = rho * g * 2.0 * RADIUS
-    fz = res["body.fluid_Fz"][fit]
+    fz = res["body.fluid_Fz"][fit] / (scene.domain.width if scene.world.dim == 3 else 1.0)  # per metre
     a33, b33 = added_mass_damping(ts, fz, m.amplitude, w, stiffness)
     per = damping_by_period(ts, fz, m.amplitude, w, stiffness, m.period)
     z = harmonics(ts, np.column_stack([res[f"gauge{i + 1}.eta"][fit] for i in range(2 * len(GAUGES))]), w)
@@ -271,6 +285,8 @@ def main(argv=None):
                     help="a scene value (as cosim run --set), e.g. fluid.nu=0")
     ap.add_argument("--out", type=Path, help="keep each run in OUT/<hull>-... (default: a temporary folder)")
     ap.add_argument("--reference-only", action="store_true", help="print the boundary-element reference only")
+    ap.add_argument("--slab", type=int, default=0, metavar="ROWS",
+                    help="run the box as a 3-D slab ROWS spacings wide between slip side walls")
     ap.add_argument("--figure", type=Path, metavar="PNG",
                     help="draw the vorticity round the box and the circle at the first --r-over-dx instead")
     a = ap.parse_args(argv)
@@ -289,7 +305,7 @@ def main(argv=None):
           "the wave's B33 | reflection | excess as Cd |")
     print("|---|---|---|---|---|---|---|---|---|---|")
     for rdx in a.r_over_dx:
-        s = scene_2d(a.hull, a.draft, rdx, a.amplitude, a.periods, a.settings)
+        s = scene_2d(a.hull, a.draft, rdx, a.amplitude, a.periods, a.settings, a.slab)
         cpu = time.process_time()
         with tempfile.TemporaryDirectory(prefix="radiation-2d-") as tmp:
             out = (a.out or Path(tmp)) / f"{a.hull}-d{a.draft:g}-r{rdx:g}-a{a.amplitude:g}"

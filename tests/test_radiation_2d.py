@@ -68,6 +68,23 @@ def test_the_2d_scene_heaves_its_hull_about_the_still_water():
         scene_2d("wedge", 1.0, 4.0, 0.1, 3)
 
 
+def test_the_slab_is_the_2d_box_in_3d_spanning_its_width():
+    """--slab: the box spans a 3-D slab ROWS spacings wide between side walls, centred across
+    it, its section and motion the 2-D scene's, the gauges across the slab's middle; only a
+    box can span it."""
+    flat, slab = scene_2d("box", 1.0, 4.0, 0.2, 3), scene_2d("box", 1.0, 4.0, 0.2, 3, slab=6)
+    width = 6 * RADIUS / 4.0
+    b = slab.bodies[0]
+    assert slab.world.dim == 3 and slab.domain.width == pytest.approx(width) and slab.domain.sides == "walls"
+    assert not slab.domain.symmetry and not slab.domain.side_zones
+    assert b.size == pytest.approx([2.0 * RADIUS, width, 2.0 * RADIUS]) and b.pos == pytest.approx([0.0, width / 2, DEPTH])
+    assert b.motion == flat.bodies[0].motion
+    assert [g[0] for g in slab.probes.gauges] == pytest.approx(list(flat.probes.gauges))
+    assert all(g[1] == pytest.approx(width / 2) for g in slab.probes.gauges)
+    with pytest.raises(ValueError, match="slab"):
+        scene_2d("circle", 1.0, 4.0, 0.2, 3, slab=6)
+
+
 def test_the_reading_recovers_a_known_force_and_outgoing_waves():
     """A force ``-(C - A w^2) z - B w a cos`` and waves travelling out on both sides of
     known amplitude give back A, B, the waves' damping and the excess as a drag."""
