@@ -17,7 +17,8 @@ edge's excess (docs/validation/nearfield.md, "The sharp edge's excess in 2-D").
 
 ``--figure``: the water's vorticity round the box and the circle, phase-averaged
 (:func:`vorticity_figure`; docs/validation/figures/radiation-2d_vorticity.png).
-``--slab ROWS``: the box in 3-D numerics, a slab ROWS spacings wide between slip walls.
+``--slab ROWS``: the box in 3-D numerics, a slab ROWS spacings wide between side walls
+(no artificial viscosity at them; the laminar one holds them no-slip, as every wall).
 
 ``--draft`` and ``--amplitude`` are in radii (the box's draft; the heave amplitude, the
 case's 0.1, KC = pi a / R). The force is fitted over the periods after the ramp and the
@@ -144,7 +145,7 @@ def scene_2d(hull: str, draft: float, r_over_dx: float, amplitude: float, period
     this scale (no artificial viscosity, :data:`NU`), dx = R / ``r_over_dx``; the near
     field's box :data:`HALF_LENGTH` each side with zones :data:`ZONE` wide; ``settings``
     ("KEY=VALUE", as ``cosim run --set``) last. ``slab`` > 0: the same section in 3-D
-    numerics, a slab ``slab`` spacings wide between slip side walls (no side zones), the
+    numerics, a slab ``slab`` spacings wide between side walls (no side zones), the
     box spanning it (boxes only), the gauges across its middle."""
     from cosim.scene.toml_io import from_dict
 
@@ -176,6 +177,15 @@ def scene_2d(hull: str, draft: float, r_over_dx: float, amplitude: float, period
         body.update(size=[2.0 * r, width, 2.0 * draft * r], pos=[0.0, 0.5 * width, DEPTH])
         d["probes"]["gauges"] = [[x, 0.5 * width] for x in d["probes"]["gauges"]]
     return from_dict(d).with_values(list(settings))
+
+
+def run_name(hull: str, draft: float, r_over_dx: float, amplitude: float, periods: int, slab: int = 0,
+             settings=()) -> str:
+    """The folder name of one run under ``--out``: every argument of :func:`scene_2d` in it,
+    so that two variants kept in one OUT do not meet (the runner refuses a folder that
+    holds another scene's run)."""
+    name = f"{hull}-d{draft:g}-r{r_over_dx:g}-a{amplitude:g}-p{periods}" + (f"-slab{slab}" if slab else "")
+    return name + "".join(f"-{s.replace('/', '_')}" for s in settings)
 
 
 def figures(res, scene, reference: dict) -> dict:
@@ -286,7 +296,7 @@ def main(argv=None):
     ap.add_argument("--out", type=Path, help="keep each run in OUT/<hull>-... (default: a temporary folder)")
     ap.add_argument("--reference-only", action="store_true", help="print the boundary-element reference only")
     ap.add_argument("--slab", type=int, default=0, metavar="ROWS",
-                    help="run the box as a 3-D slab ROWS spacings wide between slip side walls")
+                    help="run the box as a 3-D slab ROWS spacings wide between side walls")
     ap.add_argument("--figure", type=Path, metavar="PNG",
                     help="draw the vorticity round the box and the circle at the first --r-over-dx instead")
     a = ap.parse_args(argv)
@@ -308,7 +318,7 @@ def main(argv=None):
         s = scene_2d(a.hull, a.draft, rdx, a.amplitude, a.periods, a.settings, a.slab)
         cpu = time.process_time()
         with tempfile.TemporaryDirectory(prefix="radiation-2d-") as tmp:
-            out = (a.out or Path(tmp)) / f"{a.hull}-d{a.draft:g}-r{rdx:g}-a{a.amplitude:g}"
+            out = (a.out or Path(tmp)) / run_name(a.hull, a.draft, rdx, a.amplitude, a.periods, a.slab, a.settings)
             res = s.run(out, progress=False)
         cpu = time.process_time() - cpu
         f = figures(res, s, ref)

@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from benchmarks.radiation_2d import (DEPTH, GAUGES, PERIOD, RADIUS, contour, figures, scene_2d,
+from benchmarks.radiation_2d import (DEPTH, GAUGES, PERIOD, RADIUS, contour, figures, run_name, scene_2d,
                                      section_coefficients)
 from fluid.waves import group_velocity, wavenumbers
 
@@ -83,6 +83,18 @@ def test_the_slab_is_the_2d_box_in_3d_spanning_its_width():
     assert all(g[1] == pytest.approx(width / 2) for g in slab.probes.gauges)
     with pytest.raises(ValueError, match="slab"):
         scene_2d("circle", 1.0, 4.0, 0.2, 3, slab=6)
+
+
+def test_each_variant_of_a_run_is_kept_in_its_own_folder():
+    """--out: runs that differ in any argument of the scene (the slab and --set too) are kept
+    in different folders, each one path component."""
+    base = ("box", 1.0, 8.0, 0.2, 8, 0, ())
+    variants = [base, ("circle",) + base[1:], base[:1] + (0.5,) + base[2:], base[:2] + (16.0,) + base[3:],
+                base[:3] + (0.1,) + base[4:], base[:4] + (5,) + base[5:], base[:5] + (4, ()),
+                base[:6] + (("fluid.nu=0",),), base[:6] + (("fluid.nu=0", "fluid.delta=0"),)]
+    names = [run_name(*v) for v in variants]
+    assert len(set(names)) == len(variants)
+    assert all("/" not in n and n == n.strip() for n in names)
 
 
 def test_the_reading_recovers_a_known_force_and_outgoing_waves():
