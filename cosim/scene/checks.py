@@ -1486,7 +1486,7 @@ def potential_depth(s) -> float:
 def _check_potential(s, dim) -> None:
     """The potential fluid: 3-D, builder bodies that pierce the surface, one water depth, waves
     inside the band its frequencies trust, a memory the frequency spacing resolves."""
-    from fluid.potential.coefficients import EXTRA
+    from fluid.potential.capytaine_io import EXTRA
 
     f = s.fluid
     try:

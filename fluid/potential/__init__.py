@@ -6,6 +6,8 @@ added mass: seconds) and SPH (hours in 3-D): the model offshore engineers use ev
 - :mod:`fluid.potential.hull`: the wetted hull of a body at its floating position, panelled;
 - :mod:`fluid.potential.coefficients`: added mass, damping, excitation and hydrostatics
   from Capytaine (optional dependency: ``pip install cosim-sph[potential]``), cached;
+- :mod:`fluid.potential.capytaine_io`: what every Capytaine solve shares (its import, its
+  log, the irregular-frequency lid, the cache's keys and files);
 - :mod:`fluid.potential.radiation`: the radiation impulse response and its checks;
 - :mod:`fluid.potential.elevation`: the elevation a body radiates, at given points;
 - :mod:`fluid.potential.waves`: wave components and the excitation they give;
@@ -15,7 +17,8 @@ added mass: seconds) and SPH (hours in 3-D): the model offshore engineers use ev
 Capytaine is imported only when coefficients are computed.
 """
 
-from fluid.potential.coefficients import Coefficients, cache_dir, compute
+from fluid.potential.capytaine_io import cache_dir
+from fluid.potential.coefficients import Coefficients, compute
 from fluid.potential.hull import Hull, wetted_hull
 from fluid.potential.participant import PotentialFluid, default_omega
 from fluid.potential.waves import Sea, WaveComponent, from_spectrum, regular

@@ -38,55 +38,23 @@ bar while it solves.
 
 from __future__ import annotations
 
-import hashlib
-import logging
 import math
-import os
 import sys
 import time
-from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 
 from errors import InputError
+from fluid.potential.capytaine_io import (cache_dir, cache_key, lid_for, plain, quiet, read_dataset,
+                                          require_capytaine, say, write_dataset)
 from fluid.potential.hull import Hull
-
-log = logging.getLogger(__name__)
 
 #: the six rigid-body degrees of freedom, in Capytaine's names and this order
 DOFS = ("Surge", "Sway", "Heave", "Roll", "Pitch", "Yaw")
-#: bump when what is stored changes meaning (old cache files are then not read)
-CACHE_FORMAT = 2
 #: Kochin angles per turn (:func:`kochin_angles`)
 KOCHIN_STEPS = 64
-ENV_CACHE = "COSIM_POTENTIAL_CACHE"
-EXTRA = "pip install cosim-sph[potential]"
-
-
-def _say(msg: str, *args) -> None:
-    """A log record, and on a terminal the same line on standard error."""
-    log.info(msg, *args)
-    if sys.stderr.isatty():
-        print(msg % args, file=sys.stderr, flush=True)
-
-
-def require_capytaine():
-    """Capytaine and the NetCDF engine, or an :class:`InputError` naming the extra."""
-    try:
-        import capytaine  # noqa: F401
-        import h5netcdf  # noqa: F401
-    except ImportError as e:
-        raise InputError(f"the potential-flow fluid needs Capytaine and h5netcdf ({e.name} is not installed): "
-                         f"{EXTRA}") from None
-    return capytaine
-
-
-def cache_dir() -> Path:
-    """Where coefficients are cached: ``$COSIM_POTENTIAL_CACHE`` or ``~/.cache/cosim-sph/potential``."""
-    env = os.environ.get(ENV_CACHE)
-    return Path(env) if env else Path.home() / ".cache" / "cosim-sph" / "potential"
 
 
 @dataclass(frozen=True)
@@ -128,35 +96,6 @@ def kochin_angles(headings) -> np.ndarray:
     return np.arange(lo, hi + 1) * step
 
 
-def _key(hull: Hull, lid, cog, rho, g, depth, omega, headings, version, theta=None) -> str:
-    h = hashlib.sha256()
-    h.update(f"cosim-potential-{CACHE_FORMAT}|capytaine-{version}|".encode())
-    extra = () if theta is None else (theta,)  # without: the keys of files written before Kochin functions
-    for arr in (hull.vertices, hull.faces, lid[0], lid[1], cog, omega, headings,
-                np.array([rho, g, depth], float)) + extra:
-        a = np.ascontiguousarray(np.round(np.asarray(arr, float), 12))
-        h.update(str(a.shape).encode())
-        h.update(a.tobytes())
-    return h.hexdigest()[:24]
-
-
-def _lid(cpt, mesh, hull: Hull, omega_max: float, g: float, lid: bool | None):
-    """The lid mesh and its arrays, or (None, empty arrays) when ``lid`` is False or, None,
-    when no irregular frequency is estimated below 1.5 ``omega_max`` [rad/s] (the estimate is
-    rough and the errors grow on the way to the first irregular frequency)."""
-    empty = (np.zeros((0, 3)), np.zeros((0, 4)))
-    if lid is False or min(hull.waterline_span) <= 0:
-        return None, empty
-    bare = cpt.FloatingBody(mesh=mesh)
-    if lid is None and bare.first_irregular_frequency_estimate(g=g) > 1.5 * omega_max:
-        return None, empty
-    with np.errstate(invalid="ignore"):  # NaN where no irregular frequency lies below omega_max
-        z = mesh.lowest_lid_position(omega_max, g=g)
-    z = 0.0 if not math.isfinite(z) else max(z, -0.5 * hull.draft)  # inside the hull, above its keel
-    lid = mesh.generate_lid(z=z)
-    return lid, (np.asarray(lid.vertices, float), np.asarray(lid.faces, float))
-
-
 def compute(hull: Hull, centre_of_mass_z: float, *, omega, headings=(0.0,), depth: float = math.inf,
             rho: float = 1000.0, g: float = 9.81, cache: Path | str | None = None, name: str = "body",
             lid: bool | None = None, use_cache: bool = True, kochin: bool = False) -> Coefficients:
@@ -181,14 +120,14 @@ def compute(hull: Hull, centre_of_mass_z: float, *, omega, headings=(0.0,), dept
                          f"must float clear of the seabed")
     cog = np.array([0.0, 0.0, centre_of_mass_z])
     mesh = cpt.Mesh(vertices=hull.vertices, faces=hull.faces, name=name)
-    lid_mesh, lid = _lid(cpt, mesh, hull, float(omega[-1]), g, lid)
+    lid_mesh, lid = lid_for(cpt, mesh, hull, float(omega[-1]), g, lid)
     theta = kochin_angles(headings) if kochin else None
-    key = _key(hull, lid, cog, rho, g, depth, omega, headings, cpt.__version__, theta)
+    key = cache_key(hull, lid, cog, rho, g, depth, omega, headings, cpt.__version__, theta)
     folder = Path(cache) if cache is not None else cache_dir()
     path = folder / f"{name}-{key}.nc"
     if use_cache and path.is_file():
-        ds = _read(cpt, path)
-        _say("potential flow: body '%s': coefficients from the cache %s (%d panels, %d frequencies, %d headings)",
+        ds = read_dataset(cpt, path)
+        say("potential flow: body '%s': coefficients from the cache %s (%d panels, %d frequencies, %d headings)",
              name, path, hull.panels, len(omega), len(headings))
         return _coefficients(ds, key, hull, from_cache=True)
     body = cpt.FloatingBody(mesh=mesh, lid_mesh=lid_mesh, dofs=cpt.rigid_body_dofs(rotation_center=cog),
@@ -196,7 +135,7 @@ def compute(hull: Hull, centre_of_mass_z: float, *, omega, headings=(0.0,), dept
     import xarray as xr
 
     problems = len(omega) * (6 + len(headings)) + 6
-    _say("potential flow: body '%s': solving %d problems on %d panels (+%d lid panels), %d frequencies "
+    say("potential flow: body '%s': solving %d problems on %d panels (+%d lid panels), %d frequencies "
          "%.3g-%.3g rad/s and infinity, %d headings, depth %s; cached in %s", name, problems, hull.panels,
          len(lid[1]), len(omega), omega[0], omega[-1], len(headings), f"{depth:g} m", folder)
     common = {"radiating_dof": list(DOFS), "water_depth": [depth], "rho": [rho], "g": [g]}
@@ -205,12 +144,12 @@ def compute(hull: Hull, centre_of_mass_z: float, *, omega, headings=(0.0,), dept
     infinite = xr.Dataset(coords={"omega": [np.inf], **common})  # radiation only: no wave at ω = ∞
     solver = cpt.BEMSolver()
     t0 = time.perf_counter()
-    with _quiet("capytaine"):
+    with quiet("capytaine"):
         ds = solver.fill_dataset(waves, body, progress_bar=sys.stderr.isatty())
         ds_inf = solver.fill_dataset(infinite, body, progress_bar=False)
     wall = time.perf_counter() - t0
-    ds = _plain(ds)
-    ds["added_mass_inf"] = _plain(ds_inf)["added_mass"].isel(omega=0, drop=True)
+    ds = plain(ds)
+    ds["added_mass_inf"] = plain(ds_inf)["added_mass"].isel(omega=0, drop=True)
     # the hydrostatics with a 2 x 2 Gauss-Legendre rule on each panel: its waterplane moments are
     # exact on flat panels (the one-point rule's second moments are short by A h^2 / 12)
     exact = cpt.FloatingBody(mesh=mesh.with_quadrature("Gauss-Legendre 2"),
@@ -222,57 +161,15 @@ def compute(hull: Hull, centre_of_mass_z: float, *, omega, headings=(0.0,), dept
     ds["centre_of_buoyancy"] = (("xyz",), np.asarray(hs["center_of_buoyancy"], float))
     ds["waterplane_area"] = float(hs["waterplane_area"])
     ds.attrs.update(cosim_key=key, cosim_panels=hull.panels, cosim_lid_panels=len(lid[1]), cosim_solve_s=wall)
-    _say("potential flow: body '%s': solved in %.1f s", name, wall)
+    say("potential flow: body '%s': solved in %.1f s", name, wall)
     if use_cache:
-        _write(path, ds)
+        write_dataset(path, ds)
     return _coefficients(ds, key, hull, from_cache=False)
 
 
-@contextmanager
-def _quiet(logger: str):
-    """Capytaine's log held back to its errors while it solves: its per-problem lines, and its
-    warnings, which its handler prints on standard output (where ``cosim validate`` writes
-    JSON) and which say what this module checks itself (the frequencies against the panels,
-    ``fluid.potential.participant.default_omega``; a finite depth at ω = ∞)."""
-    lg = logging.getLogger(logger)
-    level = lg.level
-    lg.setLevel(max(level, logging.ERROR))
-    try:
-        yield
-    finally:
-        lg.setLevel(level)
-
-
-def _plain(ds):
-    """Categorical coordinates (Capytaine's dof names) as plain strings, which NetCDF stores."""
-    for name in ("radiating_dof", "influenced_dof"):
-        if name in ds.coords:
-            ds = ds.assign_coords({name: np.asarray(ds[name].values, dtype=str)})
-    return ds
-
-
-def _write(path: Path, ds) -> None:
-    from capytaine.io.xarray import separate_complex_values
-
-    path.parent.mkdir(parents=True, exist_ok=True)
-    out = separate_complex_values(ds)
-    for k in list(out.attrs):  # NetCDF attributes are numbers or strings
-        if not isinstance(out.attrs[k], (int, float, str, np.number)):
-            out.attrs[k] = str(out.attrs[k])
-    tmp = path.with_suffix(f".{os.getpid()}.tmp")
-    out.to_netcdf(tmp, engine="h5netcdf")
-    os.replace(tmp, path)  # whole or not at all: a reader never sees half a file
-
-
-def _read(cpt, path: Path):
-    import xarray as xr
-    from capytaine.io.xarray import merge_complex_values
-
-    with xr.open_dataset(path, engine="h5netcdf") as f:
-        return merge_complex_values(f.load())
-
-
-def _sym(a: np.ndarray) -> np.ndarray:
+def symmetric_part(a: np.ndarray) -> np.ndarray:
+    """``(a + aᵀ) / 2`` over the last two axes: the panel method's matrices are symmetric only
+    to discretisation error (Newman 1977 §6.17)."""
     return 0.5 * (a + np.swapaxes(a, -1, -2))
 
 
@@ -297,7 +194,7 @@ def _coefficients(ds, key: str, hull: Hull, from_cache: bool) -> Coefficients:
     if not (np.isfinite(A).all() and np.isfinite(B).all() and np.isfinite(X).all()):
         raise InputError(f"potential flow: the BEM solve of body '{ds.attrs.get('body', '?')}' left non-finite "
                          f"coefficients (a degenerate mesh?); refine or coarsen panel_size")
-    return Coefficients(omega=omega, added_mass=_sym(A), damping=_sym(B), added_mass_inf=_sym(Ainf),
+    return Coefficients(omega=omega, added_mass=symmetric_part(A), damping=symmetric_part(B), added_mass_inf=symmetric_part(Ainf),
                         excitation=X, headings=np.degrees(np.asarray(ds["wave_direction"].values, float)),
                         stiffness=C, volume=float(ds["disp_volume"]), centre_of_buoyancy=cob, centre_of_mass=cog,
                         waterplane_area=float(ds["waterplane_area"]), rho=float(ds["rho"]), g=float(ds["g"]),

@@ -20,7 +20,7 @@ Limits: linear (small motion), zero forward speed, points outside the hull's wat
 lid against irregular frequencies as in :func:`fluid.potential.coefficients.compute`.
 
 Cache: one ``.npz`` per hull mesh, lid, centre of mass, dof, ``omega``, points, ``rho``,
-``g``, depth and Capytaine version (hashed), in :func:`fluid.potential.coefficients.cache_dir`.
+``g``, depth and Capytaine version (hashed), in :func:`fluid.potential.capytaine_io.cache_dir`.
 """
 
 from __future__ import annotations
@@ -32,7 +32,8 @@ from pathlib import Path
 import numpy as np
 
 from errors import InputError
-from fluid.potential.coefficients import DOFS, _key, _lid, _quiet, _say, cache_dir, require_capytaine
+from fluid.potential.capytaine_io import cache_dir, cache_key, lid_for, quiet, require_capytaine, say
+from fluid.potential.coefficients import DOFS
 from fluid.potential.hull import Hull
 
 
@@ -54,9 +55,9 @@ def radiated_elevation(hull: Hull, centre_of_mass_z: float, dof: str, omega: flo
                          f"float clear of the seabed")
     cog = np.array([0.0, 0.0, centre_of_mass_z])
     mesh = cpt.Mesh(vertices=hull.vertices, faces=hull.faces, name="body")
-    lid_mesh, lid_arrays = _lid(cpt, mesh, hull, omega, g, lid)
+    lid_mesh, lid_arrays = lid_for(cpt, mesh, hull, omega, g, lid)
     # the coefficients' key of this hull, lid and water at the one frequency (no heading), then the dof and points
-    h = hashlib.sha256(_key(hull, lid_arrays, cog, rho, g, depth, np.array([omega]), np.zeros(0),
+    h = hashlib.sha256(cache_key(hull, lid_arrays, cog, rho, g, depth, np.array([omega]), np.zeros(0),
                             cpt.__version__).encode())
     h.update(dof.encode())
     h.update(np.ascontiguousarray(np.round(pts, 12)).tobytes())
@@ -65,10 +66,10 @@ def radiated_elevation(hull: Hull, centre_of_mass_z: float, dof: str, omega: flo
         return np.load(path)["e"]
     body = cpt.FloatingBody(mesh=mesh, lid_mesh=lid_mesh, dofs=cpt.rigid_body_dofs(rotation_center=cog),
                             center_of_mass=cog)
-    _say("potential flow: the elevation radiated in %s at %.4g rad/s, %d points (%d panels); cached in %s",
+    say("potential flow: the elevation radiated in %s at %.4g rad/s, %d points (%d panels); cached in %s",
          dof, omega, len(pts), hull.panels, path.parent)
     solver = cpt.BEMSolver()
-    with _quiet("capytaine"):
+    with quiet("capytaine"):
         result = solver.solve(cpt.RadiationProblem(body=body, radiating_dof=dof, omega=omega, water_depth=depth,
                                                    rho=rho, g=g), keep_details=True)
         e = np.asarray(solver.compute_free_surface_elevation(pts, result), complex).reshape(len(pts))

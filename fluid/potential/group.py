@@ -38,8 +38,9 @@ from typing import Sequence
 import numpy as np
 
 from errors import InputError
-from fluid.potential.coefficients import (CACHE_FORMAT, DOFS, Coefficients, _lid, _plain, _quiet, _read, _say, _sym,
-                                          _write, cache_dir, require_capytaine)
+from fluid.potential.capytaine_io import (CACHE_FORMAT, cache_dir, lid_for, plain, quiet, read_dataset,
+                                          require_capytaine, say, write_dataset)
+from fluid.potential.coefficients import DOFS, Coefficients, symmetric_part
 from fluid.potential.hull import Hull
 
 
@@ -106,7 +107,7 @@ def compute_group(hulls: Sequence[Hull], positions, centre_of_mass_z, *, names: 
     for hull, name, (x, y), z in zip(hulls, names, positions, zc):
         cog = np.array([x, y, z])
         mesh = cpt.Mesh(vertices=hull.vertices + [x, y, 0.0], faces=hull.faces, name=name)
-        lid_mesh, lid_arrays = _lid(cpt, mesh, hull, float(omega[-1]), g, lid)
+        lid_mesh, lid_arrays = lid_for(cpt, mesh, hull, float(omega[-1]), g, lid)
         members.append(cpt.FloatingBody(mesh=mesh, lid_mesh=lid_mesh, dofs=cpt.rigid_body_dofs(rotation_center=cog),
                                         center_of_mass=cog, name=name))
         parts.append((name, (mesh.vertices, hull.faces, lid_arrays[0], lid_arrays[1], cog)))
@@ -119,30 +120,30 @@ def compute_group(hulls: Sequence[Hull], positions, centre_of_mass_z, *, names: 
     dofs = [f"{s}__{d}" for s in names for d in DOFS]
     hit = use_cache and path.is_file()
     if hit:
-        ds = _read(cpt, path)
-        _say("potential flow: bodies %s solved together: coefficients from the cache %s", ", ".join(names), path)
+        ds = read_dataset(cpt, path)
+        say("potential flow: bodies %s solved together: coefficients from the cache %s", ", ".join(names), path)
     else:
         body = cpt.FloatingBody.join_bodies(*members, name="group") if n > 1 else members[0]
         common = {"radiating_dof": list(body.dofs), "water_depth": [depth], "rho": [rho], "g": [g]}
         waves = xr.Dataset(coords={"omega": omega, "wave_direction": np.radians(headings), **common})
-        _say("potential flow: bodies %s solved together: %d problems on %d panels", ", ".join(names),
+        say("potential flow: bodies %s solved together: %d problems on %d panels", ", ".join(names),
              len(omega) * (6 * n + len(headings)) + 6 * n, sum(h.panels for h in hulls))
         solver = cpt.BEMSolver()
         t0 = time.perf_counter()
-        with _quiet("capytaine"):
+        with quiet("capytaine"):
             ds = solver.fill_dataset(waves, body, progress_bar=sys.stderr.isatty())
             ds_inf = solver.fill_dataset(xr.Dataset(coords={"omega": [np.inf], **common}), body, progress_bar=False)
-        ds = _plain(ds)
-        ds["added_mass_inf"] = _plain(ds_inf)["added_mass"].isel(omega=0, drop=True)
+        ds = plain(ds)
+        ds["added_mass_inf"] = plain(ds_inf)["added_mass"].isel(omega=0, drop=True)
         if n == 1:  # a lone body's dofs carry no prefix
             ds = ds.assign_coords(radiating_dof=dofs, influenced_dof=dofs)
         ds.attrs.update(cosim_key=key, cosim_solve_s=time.perf_counter() - t0)
         if use_cache:
-            _write(path, ds)
+            write_dataset(path, ds)
     order = dict(influenced_dof=dofs, radiating_dof=dofs)
-    A = _sym(ds["added_mass"].sel(**order).transpose("omega", "influenced_dof", "radiating_dof").values)
-    B = _sym(ds["radiation_damping"].sel(**order).transpose("omega", "influenced_dof", "radiating_dof").values)
-    Ainf = _sym(ds["added_mass_inf"].sel(**order).values)
+    A = symmetric_part(ds["added_mass"].sel(**order).transpose("omega", "influenced_dof", "radiating_dof").values)
+    B = symmetric_part(ds["radiation_damping"].sel(**order).transpose("omega", "influenced_dof", "radiating_dof").values)
+    Ainf = symmetric_part(ds["added_mass_inf"].sel(**order).values)
     X = ds["excitation_force"].sel(influenced_dof=dofs).transpose("omega", "wave_direction", "influenced_dof").values
     k = np.asarray(ds["wavenumber"].values, float).ravel()
     if not (np.isfinite(A).all() and np.isfinite(B).all() and np.isfinite(X).all()):
