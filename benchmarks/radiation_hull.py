@@ -79,22 +79,13 @@ def reference_hull(hull: str, draft: float):
 
 
 def _records(folder: Path):
-    """The run's records (``cosim.scene.runner.read``), or, for a run still going, its
-    ``run.h5`` as far as written: ``(t, series)``."""
-    import h5py
-
+    """The run's records, of a run still going too, as far as every series is written:
+    ``(t, series)``."""
     from cosim.scene.runner import read
 
-    if (folder / "summary.json").is_file():
-        r = read(folder)
-        return r.t, r.series
-    series = {}
-    with h5py.File(folder / "run.h5", "r") as h5:
-        for g in h5["series/probes"].values():
-            series.update({name: d[:] for name, d in g.items()})
-    n = min(len(v) for v in series.values())
-    series = {k: v[:n] for k, v in series.items()}
-    return series.pop("t"), series
+    r = read(folder, unfinished=True)
+    n = min([len(r.t)] + [len(v) for v in r.series.values()])
+    return r.t[:n], {k: v[:n] for k, v in r.series.items()}
 
 
 def figures(out: Path, hull_name: str, draft: float, r_over_dx: float, periods: int, amplitude: float = 0.3,

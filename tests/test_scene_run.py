@@ -236,6 +236,34 @@ def test_failed_run_leaves_readable_outputs(tmp_path, monkeypatch):
         np.testing.assert_array_equal(f["series/probes/gauges/t"][:], [0.0, 0.05, 0.1])
 
 
+def test_a_run_reads_back_finished_and_as_far_as_written_while_unfinished(tmp_path):
+    """``read``: a finished run's series as the run returned them; without its summary (a
+    run still going or killed) refused, unless ``unfinished``, which reads the same
+    series, and of a row half written (one key a sample ahead) only the whole rows."""
+    from cosim.scene.runner import read
+    from errors import InputError
+
+    res = shaken_tank(duration=0.2).run(tmp_path, progress=False)
+    back = read(tmp_path)
+    assert back.names == res.names and back.summary == res.summary
+    np.testing.assert_array_equal(back.t, res.t)
+    for k in res.names:
+        np.testing.assert_array_equal(back[k], res[k], err_msg=k)
+    (tmp_path / "summary.json").unlink()
+    with pytest.raises(InputError, match="no summary.json.*unfinished=True"):
+        read(tmp_path)
+    with h5py.File(tmp_path / "run.h5", "a") as f:
+        g = f["series/probes/gauges"]
+        key = next(k for k in g if k != "t")
+        g[key].resize(g[key].shape[0] + 1, axis=0)  # the writer one key into the next row
+    part = read(tmp_path, unfinished=True)
+    assert part.summary == {} and len(res.t) == 5
+    np.testing.assert_array_equal(part.t, res.t)
+    for k in res.names:
+        np.testing.assert_array_equal(part[k], res[k], err_msg=k)
+    with pytest.raises(InputError, match="no run.h5"):
+        read(tmp_path / "nothing", unfinished=True)
+
 def test_a_probe_that_fails_mid_run_leaves_whole_rows(tmp_path, monkeypatch):
     """The energy probe fails at its third sample, after the gauges were taken: the run
     stops with that error (not a reshape error of half a row) and the outputs hold the

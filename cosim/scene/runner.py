@@ -96,27 +96,33 @@ class Results:
         return f"Results({len(self.t)} samples of {len(self.series)} series in {self.out})"
 
 
-def read(out) -> Results:
+def read(out, unfinished: bool = False) -> Results:
     """The :class:`Results` of a run that another process wrote into the folder ``out``
     (its ``run.h5`` and ``summary.json``), as ``Scene.run`` returned them: for judging a
     long run after it ended, or one resumed over several sessions. A series' unit is its
-    ``units`` attribute ("1": a pure number); the series in the run's order."""
+    ``units`` attribute ("1": a pure number); the series in the run's order.
+    ``unfinished``: also a run still going, or killed, that has no ``summary.json`` yet:
+    its ``run.h5`` as far as written (opened without HDF5's file lock, which the writing
+    process holds), the samples every series has whole, an empty ``summary``."""
     import h5py
 
     out = Path(out)
-    for f in ("run.h5", "summary.json"):
+    for f in ("run.h5",) if unfinished else ("run.h5", "summary.json"):
         if not (out / f).is_file():
-            raise InputError(f"{out}: no {f}; the folder holds no finished run (cosim run writes both)")
+            raise InputError(f"{out}: no {f}; the folder holds no " + ("run" if unfinished else
+                             "finished run (cosim run writes both; read(out, unfinished=True) reads a run still "
+                             "going or killed, as far as it wrote)"))
     series, units, t = {}, {}, None
-    with h5py.File(out / "run.h5", "r") as h5:
+    with h5py.File(out / "run.h5", "r", locking=not unfinished) as h5:
         for g in h5["series/probes"].values():
-            tg = g["t"][:]
+            n = min(d.shape[0] for d in g.values())  # a row half written by a run still going: left out
+            tg = g["t"][:n]
             if t is None or len(tg) > len(t):
                 t = tg
             for name, d in g.items():
                 if name != "t":
-                    series[name], units[name] = d[:], str(d.attrs.get("units", ""))
-    summary = json.loads((out / "summary.json").read_text())
+                    series[name], units[name] = d[:n], str(d.attrs.get("units", ""))
+    summary = json.loads((out / "summary.json").read_text()) if (out / "summary.json").is_file() else {}
     order = [k for k in summary.get("series", {}) if k in series]  # the run's order of its series
     series = {k: series[k] for k in order + sorted(set(series) - set(order))}
     return Results(t if t is not None else np.zeros(0), series, units, summary, out)
