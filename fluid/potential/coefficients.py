@@ -128,7 +128,7 @@ def compute(hull: Hull, centre_of_mass_z: float, *, omega, headings=(0.0,), dept
     if use_cache and path.is_file():
         ds = read_dataset(cpt, path)
         say("potential flow: body '%s': coefficients from the cache %s (%d panels, %d frequencies, %d headings)",
-             name, path, hull.panels, len(omega), len(headings))
+            name, path, hull.panels, len(omega), len(headings))
         return _coefficients(ds, key, hull, from_cache=True)
     body = cpt.FloatingBody(mesh=mesh, lid_mesh=lid_mesh, dofs=cpt.rigid_body_dofs(rotation_center=cog),
                             center_of_mass=cog, name=name)
@@ -136,8 +136,8 @@ def compute(hull: Hull, centre_of_mass_z: float, *, omega, headings=(0.0,), dept
 
     problems = len(omega) * (6 + len(headings)) + 6
     say("potential flow: body '%s': solving %d problems on %d panels (+%d lid panels), %d frequencies "
-         "%.3g-%.3g rad/s and infinity, %d headings, depth %s; cached in %s", name, problems, hull.panels,
-         len(lid[1]), len(omega), omega[0], omega[-1], len(headings), f"{depth:g} m", folder)
+        "%.3g-%.3g rad/s and infinity, %d headings, depth %s; cached in %s", name, problems, hull.panels,
+        len(lid[1]), len(omega), omega[0], omega[-1], len(headings), f"{depth:g} m", folder)
     common = {"radiating_dof": list(DOFS), "water_depth": [depth], "rho": [rho], "g": [g]}
     far = {} if theta is None else {"theta": theta}
     waves = xr.Dataset(coords={"omega": omega, "wave_direction": np.radians(headings), **common, **far})

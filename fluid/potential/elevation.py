@@ -67,7 +67,7 @@ def radiated_elevation(hull: Hull, centre_of_mass_z: float, dof: str, omega: flo
     body = cpt.FloatingBody(mesh=mesh, lid_mesh=lid_mesh, dofs=cpt.rigid_body_dofs(rotation_center=cog),
                             center_of_mass=cog)
     say("potential flow: the elevation radiated in %s at %.4g rad/s, %d points (%d panels); cached in %s",
-         dof, omega, len(pts), hull.panels, path.parent)
+        dof, omega, len(pts), hull.panels, path.parent)
     solver = cpt.BEMSolver()
     with quiet("capytaine"):
         result = solver.solve(cpt.RadiationProblem(body=body, radiating_dof=dof, omega=omega, water_depth=depth,

@@ -127,7 +127,7 @@ def compute_group(hulls: Sequence[Hull], positions, centre_of_mass_z, *, names: 
         common = {"radiating_dof": list(body.dofs), "water_depth": [depth], "rho": [rho], "g": [g]}
         waves = xr.Dataset(coords={"omega": omega, "wave_direction": np.radians(headings), **common})
         say("potential flow: bodies %s solved together: %d problems on %d panels", ", ".join(names),
-             len(omega) * (6 * n + len(headings)) + 6 * n, sum(h.panels for h in hulls))
+            len(omega) * (6 * n + len(headings)) + 6 * n, sum(h.panels for h in hulls))
         solver = cpt.BEMSolver()
         t0 = time.perf_counter()
         with quiet("capytaine"):
