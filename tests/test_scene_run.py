@@ -264,6 +264,7 @@ def test_a_run_reads_back_finished_and_as_far_as_written_while_unfinished(tmp_pa
     with pytest.raises(InputError, match="no run.h5"):
         read(tmp_path / "nothing", unfinished=True)
 
+
 def test_a_probe_that_fails_mid_run_leaves_whole_rows(tmp_path, monkeypatch):
     """The energy probe fails at its third sample, after the gauges were taken: the run
     stops with that error (not a reshape error of half a row) and the outputs hold the
