@@ -88,7 +88,7 @@ def lid_for(cpt, mesh, hull: Hull, omega_max: float, g: float, lid: bool | None)
 def quiet(logger: str):
     """Capytaine's log held back to its errors while it solves: its per-problem lines, and its
     warnings, which its handler prints on standard output (where ``cosim validate`` writes
-    JSON) and which say what this module checks itself (the frequencies against the panels,
+    JSON) and which say what :mod:`fluid.potential` checks itself (the frequencies against the panels,
     ``fluid.potential.participant.default_omega``; a finite depth at ω = ∞)."""
     lg = logging.getLogger(logger)
     level = lg.level
