@@ -11,7 +11,7 @@ drawing R (the deep cylinder's draft over its radius) or R / 2 (the case's). A r
 edge's excess (docs/validation/nearfield.md, "The sharp edge's excess in 2-D").
 
     python benchmarks/radiation_2d.py [--hull box|circle|diamond] [--draft 1.0] [--r-over-dx 4 8 16]
-        [--amplitude 0.2] [--periods 8] [--set KEY=VALUE ...] [--out OUT] [--reference-only]
+        [--amplitude 0.2 [0.05 ...]] [--periods 8] [--set KEY=VALUE ...] [--out OUT] [--reference-only]
     python benchmarks/radiation_2d.py --figure PNG [--r-over-dx 8] [--amplitude 0.2]
     python benchmarks/radiation_2d.py --slab 6 --r-over-dx 4 [--amplitude 0.2]
 
@@ -27,7 +27,8 @@ wide), where the first evanescent mode is down to 8 % or less. An excess of the 
 B33 over the reference is also given as the drag coefficient that would do its work
 (Lorentz's equivalent linearisation, ``(8 / 3 pi) (rho / 2) Cd 2R omega a``): a drag's
 equivalent damping grows in proportion to the amplitude, an error linear in the motion
-does not.
+does not: with several ``--amplitude`` values the excess at each spacing is split by least
+squares into the two (``excess = L + D a``, :func:`cosim.validations.radiation.excess_split`).
 """
 
 from __future__ import annotations
@@ -284,12 +285,30 @@ def vorticity_figure(path: Path, r_over_dx: float = 8.0, amplitude: float = 0.2,
     fig.savefig(path, dpi=110)
 
 
+def print_split(amplitudes, excess: dict, reference_b33: float) -> None:
+    """The excess of B33 over the reference at each R/dx (``excess``: R/dx to the excess at
+    each of ``amplitudes`` [radii]) split as ``L + D a`` (:func:`excess_split`), ``D``
+    given as the beam's drag coefficient (Lorentz's linearisation, as ``figures``)."""
+    from cosim.validations.radiation import excess_split
+
+    per_cd = (8.0 / (3.0 * math.pi)) * 0.5 * 1000.0 * 2.0 * RADIUS * (2.0 * math.pi / PERIOD) * RADIUS
+    print("\nthe excess split as L + D a (least squares over the amplitudes; standard errors from the residuals)")
+    print("| R/dx | L [kg/(m s)] | L / reference | D a at a = 0.1 R | D as the beam's Cd |")
+    print("|---|---|---|---|---|")
+    for rdx, e in excess.items():
+        f = excess_split(amplitudes, e)
+        se = (lambda v: f" +- {v:.1f}" if v is not None else "")
+        cd_se = f" +- {f['D_se'] / per_cd:.2f}" if f["D_se"] is not None else ""
+        print(f"| {rdx:g} | {f['L']:.1f}{se(f['L_se'])} | {f['L'] / reference_b33:+.0%} | {0.1 * f['D']:.1f} | "
+              f"{f['D'] / per_cd:.2f}{cd_se} |")
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--hull", choices=HULLS, default="box")
     ap.add_argument("--draft", type=float, default=1.0, help="the box's draft in radii")
     ap.add_argument("--r-over-dx", type=float, nargs="+", default=[4.0, 8.0])
-    ap.add_argument("--amplitude", type=float, default=0.2, help="the heave amplitude in radii (the case's: 0.1)")
+    ap.add_argument("--amplitude", type=float, nargs="+", default=[0.2],
+                    help="the heave amplitude in radii (the case's: 0.1); with several, the excess split as L + D a")
     ap.add_argument("--periods", type=int, default=8)
     ap.add_argument("--set", dest="settings", action="append", default=[], metavar="KEY=VALUE",
                     help="a scene value (as cosim run --set), e.g. fluid.nu=0")
@@ -301,31 +320,37 @@ def main(argv=None):
                     help="draw the vorticity round the box and the circle at the first --r-over-dx instead")
     a = ap.parse_args(argv)
     if a.figure:
-        vorticity_figure(a.figure, a.r_over_dx[0], a.amplitude, a.draft)
+        vorticity_figure(a.figure, a.r_over_dx[0], a.amplitude[0], a.draft)
         return
     w = 2.0 * math.pi / PERIOD
     ref = section_coefficients(contour(a.hull, a.draft), DEPTH, w)
-    print(f"{a.hull}, draft {a.draft:g} R (R = {RADIUS} m, depth {DEPTH} m, T = {PERIOD:.4f} s), "
-          f"heave {a.amplitude:g} R (KC = {math.pi * a.amplitude:.3f}) {' '.join(a.settings)}")
+    print(f"{a.hull}, draft {a.draft:g} R (R = {RADIUS} m, depth {DEPTH} m, T = {PERIOD:.4f} s) "
+          f"{' '.join(a.settings)}")
     print(f"reference ({ref['panels']} panels): A33 {ref['A33']:.2f} kg/m, B33 {ref['B33']:.2f} kg/(m s) "
           f"(far field {ref['B33_far']:.2f})")
     if a.reference_only:
         return
-    print("| R/dx | particles | steps | CPU s | A33 [kg/m] (ref) | B33 [kg/(m s)] (ref) | B33 by period | "
-          "the wave's B33 | reflection | excess as Cd |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
-    for rdx in a.r_over_dx:
-        s = scene_2d(a.hull, a.draft, rdx, a.amplitude, a.periods, a.settings, a.slab)
-        cpu = time.process_time()
-        with tempfile.TemporaryDirectory(prefix="radiation-2d-") as tmp:
-            out = (a.out or Path(tmp)) / run_name(a.hull, a.draft, rdx, a.amplitude, a.periods, a.slab, a.settings)
-            res = s.run(out, progress=False)
-        cpu = time.process_time() - cpu
-        f = figures(res, s, ref)
-        per = ", ".join(f"{x:.0f}" for x in f["B33_per_period"])
-        print(f"| {rdx:g} | {res.summary['particles']} | {res.summary['steps']} | {cpu:.0f} | "
-              f"{f['A33']:.2f} ({ref['A33']:.2f}) | {f['B33']:.1f} ({ref['B33']:.1f}), {f['B33'] / ref['B33'] - 1:+.0%} | "
-              f"{per} | {f['B33_wave']:.1f} | {f['reflection']:.3f} | {f['Cd_of_excess']:.2f} |", flush=True)
+    print("| a / R (KC) | R/dx | particles | steps | CPU s | A33 [kg/m] (ref) | B33 [kg/(m s)] (ref) | "
+          "B33 by period | the wave's B33 | reflection | excess as Cd |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    excess = {rdx: [] for rdx in a.r_over_dx}
+    for amp in a.amplitude:
+        for rdx in a.r_over_dx:
+            s = scene_2d(a.hull, a.draft, rdx, amp, a.periods, a.settings, a.slab)
+            cpu = time.process_time()
+            with tempfile.TemporaryDirectory(prefix="radiation-2d-") as tmp:
+                out = (a.out or Path(tmp)) / run_name(a.hull, a.draft, rdx, amp, a.periods, a.slab, a.settings)
+                res = s.run(out, progress=False)
+            cpu = time.process_time() - cpu
+            f = figures(res, s, ref)
+            excess[rdx].append(f["B33"] - ref["B33"])
+            per = ", ".join(f"{x:.0f}" for x in f["B33_per_period"])
+            print(f"| {amp:g} ({math.pi * amp:.3f}) | {rdx:g} | {res.summary['particles']} | {res.summary['steps']} | "
+                  f"{cpu:.0f} | {f['A33']:.2f} ({ref['A33']:.2f}) | {f['B33']:.1f} ({ref['B33']:.1f}), "
+                  f"{f['B33'] / ref['B33'] - 1:+.0%} | {per} | {f['B33_wave']:.1f} | {f['reflection']:.3f} | "
+                  f"{f['Cd_of_excess']:.2f} |", flush=True)
+    if len(set(a.amplitude)) > 1:
+        print_split(a.amplitude, excess, ref["B33"])
 
 
 if __name__ == "__main__":

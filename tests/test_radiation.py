@@ -161,6 +161,37 @@ def test_the_damping_is_also_fitted_period_by_period(monkeypatch):
     assert got["B33_error_standard"] == pytest.approx(spread, rel=1e-4)
 
 
+
+def test_the_excess_splits_into_a_part_independent_of_the_amplitude_and_a_drags():
+    """An excess ``12 + 200 a`` at five amplitudes gives L = 12 and D = 200 back with no
+    residual; with two amplitudes the line through them and no standard errors; with
+    noise of a known spread the standard errors are least squares' (sigma^2 (X'X)^-1)
+    estimated from the residuals, and the truth lies within a few of them."""
+    from cosim.validations.radiation import excess_split
+
+    a = np.array([0.025, 0.05, 0.1, 0.2, 0.4])
+    f = excess_split(a, 12.0 + 200.0 * a)
+    assert f["L"] == pytest.approx(12.0, rel=1e-12) and f["D"] == pytest.approx(200.0, rel=1e-12)
+    assert f["L_se"] < 1e-9 and f["D_se"] < 1e-9
+    two = excess_split([0.1, 0.3], [5.0, 9.0])
+    assert (two["L"], two["D"]) == (pytest.approx(3.0), pytest.approx(20.0)) and two["L_se"] is None
+    rng = np.random.default_rng(7)
+    e = 12.0 + 200.0 * a + rng.normal(0.0, 1.0, a.size)
+    f = excess_split(a, e)
+    x = np.column_stack([np.ones_like(a), a])
+    resid = e - x @ np.array([f["L"], f["D"]])
+    cov = resid @ resid / (a.size - 2) * np.linalg.inv(x.T @ x)
+    assert (f["L_se"], f["D_se"]) == (pytest.approx(math.sqrt(cov[0, 0])), pytest.approx(math.sqrt(cov[1, 1])))
+    assert abs(f["L"] - 12.0) < 4.0 * f["L_se"] and abs(f["D"] - 200.0) < 4.0 * f["D_se"]
+
+
+@pytest.mark.parametrize("a, e", [([0.1], [3.0]), ([0.1, 0.1], [3.0, 4.0]), ([0.1, 0.2], [3.0])])
+def test_an_excess_split_needs_two_amplitudes_one_value_each(a, e):
+    from cosim.validations.radiation import excess_split
+
+    with pytest.raises(ValueError, match="two different amplitudes"):
+        excess_split(a, e)
+
 def test_the_reflection_floor_is_the_split_of_the_references_own_wave(monkeypatch):
     """Where the reference's wave at the gauges is not a pure outgoing one (near the body its
     evanescent modes are not in the split's basis), the split reads a reflection from it:

@@ -7,8 +7,8 @@ import math
 import numpy as np
 import pytest
 
-from benchmarks.radiation_2d import (DEPTH, GAUGES, PERIOD, RADIUS, contour, figures, run_name, scene_2d,
-                                     section_coefficients)
+from benchmarks.radiation_2d import (DEPTH, GAUGES, PERIOD, RADIUS, contour, figures, print_split, run_name,
+                                     scene_2d, section_coefficients)
 from fluid.waves import group_velocity, wavenumbers
 
 OMEGA = 2.0 * math.pi / PERIOD
@@ -119,3 +119,14 @@ def test_the_reading_recovers_a_known_force_and_outgoing_waves():
     assert f["reflection"] < 1e-6
     drag = (8.0 / (3.0 * math.pi)) * 0.5 * rho * 2.0 * RADIUS * OMEGA * m.amplitude
     assert f["Cd_of_excess"] == pytest.approx(20.0 / drag, rel=1e-9)
+
+
+def test_the_split_gives_the_drag_as_the_beams_coefficient(capsys):
+    """An excess ``L + Cd``'s equivalent damping (Lorentz's linearisation on the beam 2R)
+    at three amplitudes is printed back as L and that Cd."""
+    drag_per_radius = (8.0 / (3.0 * math.pi)) * 0.5 * 1000.0 * 2.0 * RADIUS * OMEGA * RADIUS
+    amps = [0.05, 0.1, 0.2]
+    print_split(amps, {8.0: [8.0 + 2.5 * drag_per_radius * x for x in amps]}, 40.0)
+    row = capsys.readouterr().out.strip().splitlines()[-1].split("|")
+    assert row[1].strip() == "8" and row[2].strip().startswith("8.0 +- 0.0") and row[3].strip() == "+20%"
+    assert row[5].strip().startswith("2.50 +- 0.00")

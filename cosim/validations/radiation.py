@@ -195,6 +195,33 @@ def damping_by_period(ts, force, amplitude: float, omega: float, stiffness: floa
     return out
 
 
+def excess_split(amplitudes, excess) -> dict:
+    """The damping's excess over the potential-flow reference, measured at several heave
+    ``amplitudes`` (any unit), split by least squares as ``excess = L + D a``: ``L``, a
+    part that does not depend on the amplitude (an error linear in the motion, or a loss
+    that is, as a laminar boundary layer's), and ``D a``, the equivalent damping of a drag
+    whose coefficient does not depend on the amplitude, as the vortex shedding at a
+    right-angled edge at low KC (Graham 1980, J. Fluid Mech. 97, 331, whose scaling gives
+    ``Cd ~ KC^((3n - 2) / (2 - n))`` at an edge the fluid turns round through ``pi / n``:
+    KC^0 at a right angle, ``n = 2 / 3``; KC^(-1/3) at a flat plate's edge): by Lorentz's
+    linearisation a drag ``(rho / 2) Cd S |v| v`` does over a period the work of a damping
+    ``(8 / 3 pi) (rho / 2) Cd S w a``. Returns ``L``, ``D`` (excess per unit of amplitude)
+    and, with three amplitudes or more, their standard errors from the residuals
+    (``L_se``, ``D_se``; None with two)."""
+    a = np.asarray(amplitudes, float)
+    e = np.asarray(excess, float)
+    if a.shape != e.shape or a.size < 2 or np.unique(a).size < 2:
+        raise ValueError("excess_split: give the excess at two different amplitudes or more, one value each")
+    m = np.column_stack([np.ones_like(a), a])
+    (lin, drag), *_ = np.linalg.lstsq(m, e, rcond=None)
+    out = {"L": float(lin), "D": float(drag), "L_se": None, "D_se": None}
+    if a.size > 2:
+        s2 = float(np.sum((e - m @ np.array([lin, drag]))**2)) / (a.size - 2)
+        cov = s2 * np.linalg.inv(m.T @ m)
+        out.update(L_se=math.sqrt(cov[0, 0]), D_se=math.sqrt(cov[1, 1]))
+    return out
+
+
 def radiation_metrics(res, scene, tare=None) -> dict:
     """The case's measured figures from a run's records ``res`` of ``scene``, less the
     records ``tare`` of :func:`held_scene` (the same sample times) where given; A33 and B33
