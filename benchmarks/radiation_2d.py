@@ -288,8 +288,12 @@ def vorticity_figure(path: Path, r_over_dx: float = 8.0, amplitude: float = 0.2,
 def print_split(amplitudes, excess: dict, reference_b33: float) -> None:
     """The excess of B33 over the reference at each R/dx (``excess``: R/dx to the excess at
     each of ``amplitudes`` [radii]) split as ``L + D a`` (:func:`excess_split`), ``D``
-    given as the beam's drag coefficient (Lorentz's linearisation, as ``figures``)."""
+    given as the beam's drag coefficient (Lorentz's linearisation, as ``figures``, in the
+    scene's water of 1000 kg/m^3)."""
     from cosim.validations.radiation import excess_split
+
+    def pm(v, digits: int) -> str:
+        return f" +- {v:.{digits}f}" if v is not None else ""
 
     per_cd = (8.0 / (3.0 * math.pi)) * 0.5 * 1000.0 * 2.0 * RADIUS * (2.0 * math.pi / PERIOD) * RADIUS
     print("\nthe excess split as L + D a (least squares over the amplitudes; standard errors from the residuals)")
@@ -297,10 +301,10 @@ def print_split(amplitudes, excess: dict, reference_b33: float) -> None:
     print("|---|---|---|---|---|")
     for rdx, e in excess.items():
         f = excess_split(amplitudes, e)
-        se = (lambda v: f" +- {v:.1f}" if v is not None else "")
-        cd_se = f" +- {f['D_se'] / per_cd:.2f}" if f["D_se"] is not None else ""
-        print(f"| {rdx:g} | {f['L']:.1f}{se(f['L_se'])} | {f['L'] / reference_b33:+.0%} | {0.1 * f['D']:.1f} | "
-              f"{f['D'] / per_cd:.2f}{cd_se} |")
+        cd_se = None if f["D_se"] is None else f["D_se"] / per_cd
+        print(f"| {rdx:g} | {f['L']:.1f}{pm(f['L_se'], 1)} | {f['L'] / reference_b33:+.0%} | {0.1 * f['D']:.1f} | "
+              f"{f['D'] / per_cd:.2f}{pm(cd_se, 2)} |")
+
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
