@@ -211,10 +211,17 @@ def figures(res, scene, reference: dict) -> dict:
     z = harmonics(ts, np.column_stack([res[f"gauge{i + 1}.eta"][fit] for i in range(2 * len(GAUGES))]), w)
     sides = [separate(np.asarray(GAUGES), z[sl], k, "plane") for sl in (slice(len(GAUGES)), slice(len(GAUGES), None))]
     b_wave = sum(rho * g * abs(out)**2 for out, _ in sides) * float(group_velocity(k, DEPTH, g)) / (w * m.amplitude)**2
-    drag = (8.0 / (3.0 * math.pi)) * 0.5 * rho * 2.0 * RADIUS * w * m.amplitude
+    drag = drag_damping(m.amplitude, rho)
     return {"A33": a33, "B33": b33, "B33_per_period": per, "B33_wave": b_wave,
             "reflection": max(abs(back) / abs(out) for out, back in sides),
             "Cd_of_excess": (b33 - reference["B33"]) / drag}
+
+
+def drag_damping(amplitude: float, rho: float = 1000.0) -> float:
+    """The damping [kg/(m s)] equivalent to a drag of Cd = 1 on the beam 2R at a heave
+    ``amplitude`` [m] at :data:`PERIOD`, by Lorentz's linearisation: ``(8 / 3 pi) (rho / 2)
+    2R omega a``; an excess over it is the drag coefficient that would do the excess's work."""
+    return (8.0 / (3.0 * math.pi)) * 0.5 * rho * 2.0 * RADIUS * (2.0 * math.pi / PERIOD) * amplitude
 
 
 def vorticity_figure(path: Path, r_over_dx: float = 8.0, amplitude: float = 0.2, draft: float = 1.0,
@@ -288,14 +295,14 @@ def vorticity_figure(path: Path, r_over_dx: float = 8.0, amplitude: float = 0.2,
 def print_split(amplitudes, excess: dict, reference_b33: float) -> None:
     """The excess of B33 over the reference at each R/dx (``excess``: R/dx to the excess at
     each of ``amplitudes`` [radii]) split as ``L + D a`` (:func:`excess_split`), ``D``
-    given as the beam's drag coefficient (Lorentz's linearisation, as ``figures``, in the
-    scene's water of 1000 kg/m^3)."""
+    given as the beam's drag coefficient (:func:`drag_damping`, in the scene's water of
+    1000 kg/m^3)."""
     from cosim.validations.radiation import excess_split
 
     def pm(v, digits: int) -> str:
         return f" +- {v:.{digits}f}" if v is not None else ""
 
-    per_cd = (8.0 / (3.0 * math.pi)) * 0.5 * 1000.0 * 2.0 * RADIUS * (2.0 * math.pi / PERIOD) * RADIUS
+    per_cd = drag_damping(RADIUS)  # the amplitudes are in radii
     print("\nthe excess split as L + D a (least squares over the amplitudes; standard errors from the residuals)")
     print("| R/dx | L [kg/(m s)] | L / reference | D a at a = 0.1 R | D as the beam's Cd |")
     print("|---|---|---|---|---|")

@@ -161,7 +161,6 @@ def test_the_damping_is_also_fitted_period_by_period(monkeypatch):
     assert got["B33_error_standard"] == pytest.approx(spread, rel=1e-4)
 
 
-
 def test_the_excess_splits_into_a_part_independent_of_the_amplitude_and_a_drags():
     """An excess ``12 + 200 a`` at five amplitudes gives L = 12 and D = 200 back with no
     residual; with two amplitudes the line through them and no standard errors; with
@@ -191,6 +190,7 @@ def test_an_excess_split_needs_two_amplitudes_one_value_each(a, e):
 
     with pytest.raises(ValueError, match="two different amplitudes"):
         excess_split(a, e)
+
 
 def test_the_reflection_floor_is_the_split_of_the_references_own_wave(monkeypatch):
     """Where the reference's wave at the gauges is not a pure outgoing one (near the body its
