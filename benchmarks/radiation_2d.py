@@ -83,15 +83,33 @@ def section_coefficients(section, depth: float, omega: float, *, g: float = 9.81
                          half_length: float = HALF_LENGTH, panel: float = RADIUS / 40) -> dict:
     """Heave added mass ``A33`` [kg/m] and damping ``B33`` [kg/(m s)] of the 2-D section
     ``section`` (:func:`contour`) floating in water ``depth`` [m] deep, heaving at
-    ``omega`` [rad/s], by linear potential flow: Green's second identity with the Rankine
-    kernel ln(r) / 2 pi over constant panels (Brebbia & Dominguez 1992, ch. 3) on the
-    body, the free surface (``dphi/dn = omega^2 phi / g``), the flat bed and two vertical
-    boundaries ``half_length`` [m] from the axis, where the outgoing wave's condition
-    ``dphi/dn = i k phi`` holds (Sommerfeld; exact for the propagating mode, the
-    evanescent ones decayed there, e^-(k1 x)). ``B33_far``: the same damping from the
-    energy flux of the wave at the vertical boundaries (``rho g |eta|^2 c_g`` a side), a
-    check (it converges to ``B33`` with the panels, 2.4 % under it at R / 40). Panels no
-    longer than ``panel`` [m]; the bed's twice that."""
+    ``omega`` [rad/s], by linear potential flow (:func:`section_solution`). ``B33_far``:
+    the same damping from the energy flux of the wave at the vertical boundaries (``rho g
+    |eta|^2 c_g`` a side), a check (it converges to ``B33`` with the panels, 2.4 % under
+    it at R / 40). ``panels``: their number."""
+    sol = section_solution(section, depth, omega, g=g, half_length=half_length, panel=panel)
+    body = sol["kind"] == "body"
+    f = (sol["phi"][body] * sol["normal"][body, 1] * sol["length"][body]).sum()  # force / (i omega rho)
+    top = np.flatnonzero(sol["kind"] == "open")[0]
+    eta = omega * abs(sol["phi"][top]) / g
+    return {"A33": rho * f.real, "B33": omega * rho * f.imag,
+            "B33_far": 2.0 * rho * g * eta**2 * float(sol["group_velocity"]), "panels": len(sol["kind"])}
+
+
+def section_solution(section, depth: float, omega: float, *, g: float = 9.81, half_length: float = HALF_LENGTH,
+                     panel: float = RADIUS / 40) -> dict:
+    """The linear radiation problem of the 2-D section ``section`` (:func:`contour`) heaving
+    at unit velocity ``Re(e^(-i omega t))`` [m/s] in water ``depth`` [m] deep, solved by
+    Green's second identity with the Rankine kernel ln(r) / 2 pi over constant panels
+    (Brebbia & Dominguez 1992, ch. 3) on the body, the free surface (``dphi/dn = omega^2
+    phi / g``), the flat bed and two vertical boundaries ``half_length`` [m] from the axis,
+    where the outgoing wave's condition ``dphi/dn = i k phi`` holds (Sommerfeld; exact for
+    the propagating mode, the evanescent ones decayed there, e^-(k1 x)). Panels no longer
+    than ``panel`` [m]; the bed's twice that. Returns the panels (``p``, ``q`` their ends,
+    ``mid``, ``length``, ``normal`` out of the water, ``kind``: body, surface, bed, open),
+    the potential ``phi`` [m^2/s] and its normal derivative ``dphi_dn`` on them, the
+    wavenumber ``k`` and ``group_velocity``; :func:`section_field` evaluates the potential
+    inside the water."""
     from fluid.waves import group_velocity, wavenumbers
 
     k = float(wavenumbers(omega, depth, g))
@@ -131,11 +149,32 @@ def section_coefficients(section, depth: float, omega: float, *, g: float = 9.81
     lhs[:, surface] -= G[:, surface] * (omega**2 / g)
     lhs[:, open_] -= G[:, open_] * (1j * k)
     phi = np.linalg.solve(lhs, G[:, body] @ normal[body, 1])  # the body's unit heave velocity
-    f = (phi[body] * normal[body, 1] * length[body]).sum()  # force / (i omega rho): e^(-i omega t)
-    top = np.flatnonzero(open_)[0]
-    eta = omega * abs(phi[top]) / g
-    return {"A33": rho * f.real, "B33": omega * rho * f.imag,
-            "B33_far": 2.0 * rho * g * eta**2 * float(group_velocity(k, depth, g)), "panels": n}
+    dphi_dn = np.zeros(n, complex)
+    dphi_dn[body] = normal[body, 1]
+    dphi_dn[surface] = omega**2 / g * phi[surface]
+    dphi_dn[open_] = 1j * k * phi[open_]
+    return {"p": p, "q": q, "mid": mid, "length": length, "normal": normal, "kind": kind, "phi": phi,
+            "dphi_dn": dphi_dn, "k": k, "group_velocity": float(group_velocity(k, depth, g))}
+
+
+def section_field(sol: dict, points) -> np.ndarray:
+    """The potential [m^2/s] of :func:`section_solution`'s ``sol`` at ``points`` (M, 2) [m]
+    inside the water, by Green's representation ``phi(x) = sum_j H_j(x) phi_j - G_j(x)
+    dphi/dn_j`` (the identity :func:`section_solution` solves, with 1 for its 1/2 off the
+    boundary); 16 Gauss points a panel, so a point nearer a panel than its length reads
+    that panel's quadrature error."""
+    pts = np.atleast_2d(np.asarray(points, float))
+    xg, wg = _GAUSS
+    s = 0.5 * (xg + 1.0)
+    out = np.zeros(len(pts), complex)
+    for a, b, length, normal, phi, dn in zip(sol["p"], sol["q"], sol["length"], sol["normal"], sol["phi"],
+                                             sol["dphi_dn"]):
+        r = pts[:, None, :] - (a + np.outer(s, b - a))[None, :, :]
+        r2 = (r**2).sum(-1)
+        G = (0.5 * np.log(r2) * wg).sum(1) * 0.5 * length / (2.0 * math.pi)
+        H = (-(r @ normal) / r2 * wg).sum(1) * 0.5 * length / (2.0 * math.pi)
+        out += H * phi - G * dn
+    return out
 
 
 def scene_2d(hull: str, draft: float, r_over_dx: float, amplitude: float, periods: int, settings=(),
