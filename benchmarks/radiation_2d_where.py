@@ -20,7 +20,7 @@ takes the bodies' particle forces at every fluid step. Measured:
 docs/validation/nearfield.md, "Where the box's excess sits (session 80)".
 
     python benchmarks/radiation_2d_where.py [--hull box|circle|diamond] [--draft 1.0] [--r-over-dx 8]
-        [--amplitude 0.025] [--periods 8] [--rows 8] [--set KEY=VALUE ...]
+        [--amplitude 0.025] [--periods 8] [--rows 8] [--map PNG] [--set KEY=VALUE ...]
 """
 
 from __future__ import annotations
@@ -34,7 +34,7 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from radiation_2d import DEPTH, HULLS, PERIOD, RADIUS, contour, scene_2d, section_field, section_solution  # noqa: E402
+from radiation_2d import DEPTH, HULLS, RADIUS, contour, scene_2d, section_field, section_solution  # noqa: E402
 
 BANDS = ("keel", "between", "waterline")
 
@@ -79,18 +79,21 @@ def reference_rows(sol: dict, heights, half_width: float, omega: float, rho: flo
     return np.array(out)
 
 
-def record(scene, keel: float, heights, half_width: float):
-    """Run ``scene`` (:func:`radiation_2d.scene_2d`) to its end and return, at every fluid
-    step, the time [s], the vertical force [N] on the body's particles of each band of
-    :data:`BANDS` (body frame: heights from the mean of the body's particles, which is its
-    centre on the still water; the bands' ``reach`` is the fluid's kernel support 2 h) and
-    the fluid's dynamic pressure [Pa] averaged over each row under the keel (``heights`` [m]
-    their centres, a spacing high, ``|x| < half_width``); and ``reach`` [m]."""
+def record(scene, keel: float, heights, half_width: float, grid=None):
+    """Run ``scene`` (:func:`radiation_2d.scene_2d`) to its end, reading at every fluid
+    step: ``t`` [s]; ``forces``, the vertical force [N] on the body's particles of each band
+    of :data:`BANDS` (body frame: heights from the mean of the body's particles, which is
+    its centre on the still water; the bands' ``reach`` [m] is the fluid's kernel support
+    2 h); ``rows``, the fluid's dynamic pressure [Pa] (its pressure less the still water's
+    hydrostatic one at its height) averaged over each row under the keel (``heights`` [m]
+    their centres, a spacing high, ``|x| < half_width``); with ``grid`` (cell edges ``(x,
+    z)`` [m], the still water's frame) ``cells``, the dynamic pressure averaged over each
+    cell, NaN where a cell holds no fluid. Returned as a dict of those names."""
     from cosim.validations import case_scene
     from fluid.particles import Kind
 
     level = DEPTH
-    ts, forces, pressures = [], [], []
+    ts, forces, pressures, cells = [], [], [], []
     with case_scene.built(scene) as b:
         ps, sph = b.sph.ps, b.sph
         rho0, g = sph.config.rho0, scene.world.gravity
@@ -111,10 +114,73 @@ def record(scene, keel: float, heights, half_width: float):
             n = np.bincount(row[ok], minlength=len(heights))
             s = np.bincount(row[ok], weights=dyn[ok], minlength=len(heights))
             pressures.append(np.where(n > 0, s / np.maximum(n, 1), np.nan))
+            if grid is not None:
+                fl = ps.kind == Kind.FLUID
+                x, z = ps.pos[fl, 0], ps.pos[fl, -1]
+                s = np.histogram2d(x, z, grid, weights=ps.p[fl] - rho0 * g * (level - z))[0]
+                n = np.histogram2d(x, z, grid)[0]
+                cells.append(np.where(n > 0, s / np.maximum(n, 1), np.nan).astype(np.float32))
             ts.append(info.t)
 
         b.coupler.run(scene.world.duration, callback=grab)
-    return np.array(ts), np.array(forces), np.array(pressures), reach
+    out = {"t": np.array(ts), "forces": np.array(forces), "rows": np.array(pressures), "reach": reach}
+    return out | ({"cells": np.array(cells)} if grid is not None else {})
+
+
+def map_grid(keel: float, dx: float) -> tuple:
+    """Cell edges ``(x, z)`` [m] of :func:`map_fields`' map: cells two spacings square from
+    the bed to the still water (``z`` from the bed, as the scene's), 3 R each side."""
+    x = np.arange(-3.0 * RADIUS, 3.0 * RADIUS + 1e-9, 2.0 * dx)
+    return x, np.arange(0.0, DEPTH + 1e-9, 2.0 * dx)
+
+
+def map_fields(ts, cells, grid, sol, hull: str, draft: float, amplitude: float, omega: float,
+               rho: float = 1000.0) -> tuple:
+    """The water's dynamic pressure in phase with the heave velocity, per unit velocity
+    [Pa s/m] (signed as it adds to B33 under the keel), on :func:`record`'s ``cells``
+    (series at ``ts`` [s] of a heave ``amplitude`` [m]): ``(sph, ref, ok)``, SPH's and the
+    reference's at the cells' centres (:func:`radiation_2d.section_field` of ``sol``), and
+    the cells to show: not those the hull sweeps, nor those within 2 dx of the still water
+    (where the surface crosses them), nor those that were ever empty."""
+    from cosim.validations.wave_propagation import harmonics
+
+    ex, ez = grid
+    xc, zc = 0.5 * (ex[1:] + ex[:-1]), 0.5 * (ez[1:] + ez[:-1]) - DEPTH
+    X, Z = np.meshgrid(xc, zc, indexing="ij")
+    half = 0.5 * (ex[1] - ex[0])
+    swept = (np.abs(X) < RADIUS + half) & (Z > keel_of(hull, draft) - amplitude - half)
+    ok = ~swept & (Z < -2.0 * half) & ~np.isnan(cells).any(axis=0)
+    c = harmonics(ts, np.nan_to_num(cells).reshape(len(ts), -1).astype(float), omega).reshape(X.shape)
+    ref = np.full(X.shape, np.nan)
+    ref[ok] = omega * rho * section_field(sol, np.column_stack([X[ok], Z[ok]])).imag
+    return -c.real / (amplitude * omega), ref, ok
+
+
+def map_figure(path: Path, fields: tuple, grid, hull: str, draft: float, amplitude: float) -> None:
+    """:func:`map_fields`' ``fields`` drawn on ``grid``: SPH's, the reference's and their
+    difference, the hull's outline over them; written to ``path`` (PNG)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    ex, ez = grid
+    sph, ref, ok = fields
+    fig, axes = plt.subplots(3, 1, figsize=(7.5, 7.5), sharex=True)
+    outline = np.array(contour(hull, draft))
+    for ax, val, title, lim in ((axes[0], sph, "SPH", 300), (axes[1], ref, "reference (linear potential flow)", 300),
+                                (axes[2], sph - ref, "SPH - reference", 100)):
+        im = ax.pcolormesh(ex, ez - DEPTH, np.where(ok, val, np.nan).T, cmap="RdBu_r", vmin=-lim, vmax=lim)
+        ax.plot(outline[:, 0], outline[:, 1], "k-", lw=1.0)
+        ax.set_aspect("equal")
+        ax.set_title(title, fontsize=9)
+        ax.set_ylabel("z [m]")
+        fig.colorbar(im, ax=ax, shrink=0.8, label="Pa s/m")
+    axes[-1].set_xlabel("x [m]")
+    fig.suptitle(f"{hull} drawing {draft:g} R, heave {amplitude * 1000:.1f} mm: pressure in phase with the velocity",
+                 fontsize=10)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
 
 
 def keel_of(hull: str, draft: float) -> float:
@@ -132,7 +198,9 @@ def main(argv=None):
     ap.add_argument("--r-over-dx", type=float, default=8.0)
     ap.add_argument("--amplitude", type=float, default=0.025, help="the heave amplitude in radii")
     ap.add_argument("--periods", type=int, default=8)
-    ap.add_argument("--rows", type=int, default=8, help="rows of water under the keel")
+    ap.add_argument("--rows", type=int, default=8, help="rows of water under the keel (at most down to the bed)")
+    ap.add_argument("--map", type=Path, metavar="PNG", help="also draw the water's pressure in phase with the "
+                    "velocity round the hull, SPH against the reference (map_figure)")
     ap.add_argument("--set", dest="settings", action="append", default=[], metavar="KEY=VALUE",
                     help="a scene value (as cosim run --set), e.g. fluid.h_coef=2.5")
     a = ap.parse_args(argv)
@@ -142,11 +210,12 @@ def main(argv=None):
     dx = RADIUS / a.r_over_dx
     keel = keel_of(a.hull, a.draft)
     half_width = 0.5 * RADIUS
-    heights = row_heights(keel, dx, a.rows)
+    heights = row_heights(keel, dx, min(a.rows, int(round((DEPTH + keel) / dx))))  # rows down to the bed
     print(f"{a.hull}, draft {a.draft:g} R, R/dx {a.r_over_dx:g}, a = {a.amplitude:g} R "
-          f"(R = {RADIUS} m, depth {DEPTH} m, T = {PERIOD:.4f} s) {' '.join(a.settings)}", flush=True)
+          f"(R = {RADIUS} m, depth {DEPTH} m, T = {m.period:.4f} s) {' '.join(a.settings)}", flush=True)
     cpu = time.process_time()
-    ts, forces, pressures, reach = record(s, keel, heights, half_width)
+    r = record(s, keel, heights, half_width, map_grid(keel, dx) if a.map else None)
+    ts, forces, pressures, reach = r["t"], r["forces"], r["rows"], r["reach"]
     fit = ts > (m.ramp + 2.0) * m.period - 1e-9
     print(f"{len(ts)} fluid steps, {time.process_time() - cpu:.0f} CPU s; bands {reach * 1000:.1f} mm high "
           "(the kernel's reach)")
@@ -169,6 +238,11 @@ def main(argv=None):
         A, B = added_mass_damping(ts[fit], pressures[fit, j], m.amplitude, w, 0.0)
         ra, rb = ref_rows[j]
         print(f"| {(keel - z) / dx:.1f} | {B:.1f} | {rb:.1f} | {B / rb:.2f} | {A:.1f} | {ra:.1f} |")
+    if a.map:
+        grid = map_grid(keel, dx)
+        fields = map_fields(ts[fit], r["cells"][fit], grid, sol, a.hull, a.draft, m.amplitude, w)
+        map_figure(a.map, fields, grid, a.hull, a.draft, m.amplitude)
+        print(f"\nmap: {a.map}")
 
 
 if __name__ == "__main__":

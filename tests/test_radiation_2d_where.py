@@ -10,7 +10,8 @@ import pytest
 
 from benchmarks.radiation_2d import DEPTH, PERIOD, RADIUS, contour, section_coefficients, section_field, \
     section_solution
-from benchmarks.radiation_2d_where import BANDS, band_of, reference_by_band, reference_rows, row_heights
+from benchmarks.radiation_2d_where import BANDS, band_of, map_fields, map_grid, reference_by_band, reference_rows, \
+    row_heights
 
 OMEGA = 2.0 * math.pi / PERIOD
 
@@ -77,3 +78,25 @@ def test_bands_and_rows():
         ["keel", "keel", "between", "waterline", "waterline"]
     assert BANDS[band_of(-0.02, -0.03, 0.025)] == "keel"
     assert row_heights(-0.1, 0.01, 3) == pytest.approx([-0.105, -0.115, -0.125])
+
+
+def test_the_map_reads_the_references_own_pressure_back(box):
+    """Cells whose pressure follows the reference's field for a heave ``a sin(omega t)``
+    read back as the reference's in-phase-with-velocity pressure (the signs and phases of
+    the SPH side and the reference side agree); the swept cells and those at the surface
+    are left out."""
+    grid = map_grid(-RADIUS, RADIUS / 4)
+    ex, ez = grid
+    X, Z = np.meshgrid(0.5 * (ex[1:] + ex[:-1]), 0.5 * (ez[1:] + ez[:-1]) - DEPTH, indexing="ij")
+    water = (np.abs(X) > RADIUS) | (Z < -RADIUS)
+    phi = np.zeros(X.shape, complex)
+    phi[water] = section_field(box, np.column_stack([X[water], Z[water]]))
+    a = 0.0025
+    ts = np.linspace(0.0, 3.0 * PERIOD, 241)[:-1]
+    # unit velocity Re(e^(-i w t)) = cos(w t) gives p = Re(i w rho phi e^(-i w t)); the heave's velocity is a w cos
+    cells = a * OMEGA * (1j * OMEGA * 1000.0 * phi[None] * np.exp(-1j * OMEGA * ts)[:, None, None]).real
+    sph, ref, ok = map_fields(ts, cells, grid, box, "box", 1.0, a, OMEGA)
+    assert ok.sum() > 20 and not ok[~water].any() and not ok[Z > -RADIUS / 4].any()
+    assert sph[ok] == pytest.approx(ref[ok], rel=1e-6, abs=1e-6 * np.abs(ref[ok]).max())
+    under = ok & (np.abs(X) < 0.5 * RADIUS)
+    assert ref[under] == pytest.approx(195.0, rel=0.05)  # the keel's mean, B33 / 2R (test above)
