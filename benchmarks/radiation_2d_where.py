@@ -17,7 +17,7 @@ under the keel, each beside the boundary-element reference's on the same places.
 
 A run costs what :mod:`radiation_2d`'s does (about 90 s at R/dx = 8 on one core) and
 takes the bodies' particle forces at every fluid step. Measured:
-docs/validation/nearfield.md, "Where the box's excess sits (session 80)".
+docs/validation/nearfield.md, "Where the box's excess sits: in the water's pressure under the keel".
 
     python benchmarks/radiation_2d_where.py [--hull box|circle|diamond] [--draft 1.0] [--r-over-dx 8]
         [--amplitude 0.025] [--periods 8] [--rows 8] [--map PNG] [--set KEY=VALUE ...]
@@ -219,7 +219,7 @@ def main(argv=None):
     fit = ts > (m.ramp + 2.0) * m.period - 1e-9
     print(f"{len(ts)} fluid steps, {time.process_time() - cpu:.0f} CPU s; bands {reach * 1000:.1f} mm high "
           "(the kernel's reach)")
-    sol = section_solution(contour(a.hull, a.draft), DEPTH, w)
+    sol = section_solution(contour(a.hull, a.draft), DEPTH, w, g=s.world.gravity)
     ref_bands = reference_by_band(sol, keel, reach, w)
     ref_rows = reference_rows(sol, heights, half_width, w)
     print("\n| band | SPH B33 [kg/(m s)] | reference's | SPH - reference |\n|---|---|---|---|")
