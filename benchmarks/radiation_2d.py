@@ -130,16 +130,10 @@ def section_solution(section, depth: float, omega: float, *, g: float = 9.81, ha
     mid, d = 0.5 * (p + q), q - p
     length = np.hypot(d[:, 0], d[:, 1])
     normal = np.stack([-d[:, 1], d[:, 0]], 1) / length[:, None]
-    xg, wg = _GAUSS
-    s = 0.5 * (xg + 1.0)
     n = len(length)
     G, H = np.empty((n, n)), np.empty((n, n))
     for j in range(n):
-        y = p[j] + np.outer(s, d[j])
-        r = mid[:, None, :] - y[None, :, :]
-        r2 = (r**2).sum(-1)
-        G[:, j] = (0.5 * np.log(r2) * wg).sum(1) * 0.5 * length[j] / (2.0 * math.pi)
-        H[:, j] = (-(r @ normal[j]) / r2 * wg).sum(1) * 0.5 * length[j] / (2.0 * math.pi)
+        G[:, j], H[:, j] = _influence(mid, p[j], q[j], normal[j])
         G[j, j] = length[j] * (math.log(0.5 * length[j]) - 1.0) / (2.0 * math.pi)  # ln r over its own panel
         H[j, j] = 0.0  # a straight panel sees itself edge-on
     # (1/2) phi_i = sum_j H_ij phi_j - G_ij dphi/dn_j, dphi/dn given on the body and the bed,
@@ -164,17 +158,22 @@ def section_field(sol: dict, points) -> np.ndarray:
     boundary); 16 Gauss points a panel, so a point nearer a panel than its length reads
     that panel's quadrature error."""
     pts = np.atleast_2d(np.asarray(points, float))
-    xg, wg = _GAUSS
-    s = 0.5 * (xg + 1.0)
     out = np.zeros(len(pts), complex)
-    for a, b, length, normal, phi, dn in zip(sol["p"], sol["q"], sol["length"], sol["normal"], sol["phi"],
-                                             sol["dphi_dn"]):
-        r = pts[:, None, :] - (a + np.outer(s, b - a))[None, :, :]
-        r2 = (r**2).sum(-1)
-        G = (0.5 * np.log(r2) * wg).sum(1) * 0.5 * length / (2.0 * math.pi)
-        H = (-(r @ normal) / r2 * wg).sum(1) * 0.5 * length / (2.0 * math.pi)
+    for a, b, normal, phi, dn in zip(sol["p"], sol["q"], sol["normal"], sol["phi"], sol["dphi_dn"]):
+        G, H = _influence(pts, a, b, normal)
         out += H * phi - G * dn
     return out
+
+
+def _influence(points, a, b, normal) -> tuple:
+    """``(G, H)`` at ``points`` (M, 2) [m] of the straight panel from ``a`` to ``b`` (its
+    unit ``normal``): the integrals over it of the Rankine kernel ``ln(r) / 2 pi`` and of
+    its derivative along the normal at the panel, by 16-point Gauss quadrature."""
+    xg, wg = _GAUSS
+    r = points[:, None, :] - (a + np.outer(0.5 * (xg + 1.0), b - a))[None, :, :]
+    r2 = (r**2).sum(-1)
+    half = 0.5 * math.dist(a, b) / (2.0 * math.pi)
+    return (0.5 * np.log(r2) * wg).sum(1) * half, (-(r @ normal) / r2 * wg).sum(1) * half
 
 
 def scene_2d(hull: str, draft: float, r_over_dx: float, amplitude: float, periods: int, settings=(),
