@@ -80,8 +80,8 @@ def reference_rows(sol: dict, heights, half_width: float, omega: float, rho: flo
 
 
 def record(scene, keel: float, heights, half_width: float, grid=None):
-    """Run ``scene`` (:func:`radiation_2d.scene_2d`) to its end, reading at every fluid
-    step: ``t`` [s]; ``forces``, the vertical force [N] on the body's particles of each band
+    """Run ``scene`` (:func:`radiation_2d.scene_2d`, its keel ``keel`` [m] below the still
+    waterline) to its end, reading at every fluid step: ``t`` [s]; ``forces``, the vertical force [N] on the body's particles of each band
     of :data:`BANDS` (body frame: heights from the mean of the body's particles, which is
     its centre on the still water; the bands' ``reach`` [m] is the fluid's kernel support
     2 h); ``rows``, the fluid's dynamic pressure [Pa] (its pressure less the still water's
@@ -127,7 +127,7 @@ def record(scene, keel: float, heights, half_width: float, grid=None):
     return out | ({"cells": np.array(cells)} if grid is not None else {})
 
 
-def map_grid(keel: float, dx: float) -> tuple:
+def map_grid(dx: float) -> tuple:
     """Cell edges ``(x, z)`` [m] of :func:`map_fields`' map: cells two spacings square from
     the bed to the still water (``z`` from the bed, as the scene's), 3 R each side."""
     x = np.arange(-3.0 * RADIUS, 3.0 * RADIUS + 1e-9, 2.0 * dx)
@@ -214,7 +214,7 @@ def main(argv=None):
     print(f"{a.hull}, draft {a.draft:g} R, R/dx {a.r_over_dx:g}, a = {a.amplitude:g} R "
           f"(R = {RADIUS} m, depth {DEPTH} m, T = {m.period:.4f} s) {' '.join(a.settings)}", flush=True)
     cpu = time.process_time()
-    r = record(s, keel, heights, half_width, map_grid(keel, dx) if a.map else None)
+    r = record(s, keel, heights, half_width, map_grid(dx) if a.map else None)
     ts, forces, pressures, reach = r["t"], r["forces"], r["rows"], r["reach"]
     fit = ts > (m.ramp + 2.0) * m.period - 1e-9
     print(f"{len(ts)} fluid steps, {time.process_time() - cpu:.0f} CPU s; bands {reach * 1000:.1f} mm high "
@@ -239,7 +239,7 @@ def main(argv=None):
         ra, rb = ref_rows[j]
         print(f"| {(keel - z) / dx:.1f} | {B:.1f} | {rb:.1f} | {B / rb:.2f} | {A:.1f} | {ra:.1f} |")
     if a.map:
-        grid = map_grid(keel, dx)
+        grid = map_grid(dx)
         fields = map_fields(ts[fit], r["cells"][fit], grid, sol, a.hull, a.draft, m.amplitude, w)
         map_figure(a.map, fields, grid, a.hull, a.draft, m.amplitude)
         print(f"\nmap: {a.map}")

@@ -85,7 +85,7 @@ def test_the_map_reads_the_references_own_pressure_back(box):
     read back as the reference's in-phase-with-velocity pressure (the signs and phases of
     the SPH side and the reference side agree); the swept cells and those at the surface
     are left out."""
-    grid = map_grid(-RADIUS, RADIUS / 4)
+    grid = map_grid(RADIUS / 4)
     ex, ez = grid
     X, Z = np.meshgrid(0.5 * (ex[1:] + ex[:-1]), 0.5 * (ez[1:] + ez[:-1]) - DEPTH, indexing="ij")
     water = (np.abs(X) > RADIUS) | (Z < -RADIUS)
