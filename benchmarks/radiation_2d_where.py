@@ -27,14 +27,15 @@ from __future__ import annotations
 
 import argparse
 import math
-import sys
 import time
 from pathlib import Path
 
 import numpy as np
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from radiation_2d import DEPTH, HULLS, RADIUS, contour, scene_2d, section_field, section_solution  # noqa: E402
+try:  # imported as a module of benchmarks/ (the tests)
+    from benchmarks.radiation_2d import DEPTH, HULLS, RADIUS, contour, scene_2d, section_field, section_solution
+except ImportError:  # run as a script: benchmarks/radiation_2d.py is beside it on the path
+    from radiation_2d import DEPTH, HULLS, RADIUS, contour, scene_2d, section_field, section_solution
 
 BANDS = ("keel", "between", "waterline")
 
