@@ -249,17 +249,18 @@ def figures(res, scene, reference: dict) -> dict:
     z = harmonics(ts, np.column_stack([res[f"gauge{i + 1}.eta"][fit] for i in range(2 * len(GAUGES))]), w)
     sides = [separate(np.asarray(GAUGES), z[sl], k, "plane") for sl in (slice(len(GAUGES)), slice(len(GAUGES), None))]
     b_wave = sum(rho * g * abs(out)**2 for out, _ in sides) * float(group_velocity(k, DEPTH, g)) / (w * m.amplitude)**2
-    drag = drag_damping(m.amplitude, rho)
+    drag = drag_damping(m.amplitude, rho, w)
     return {"A33": a33, "B33": b33, "B33_per_period": per, "B33_wave": b_wave,
             "reflection": max(abs(back) / abs(out) for out, back in sides),
             "Cd_of_excess": (b33 - reference["B33"]) / drag}
 
 
-def drag_damping(amplitude: float, rho: float = 1000.0) -> float:
+def drag_damping(amplitude: float, rho: float = 1000.0, omega: float = 2.0 * math.pi / PERIOD) -> float:
     """The damping [kg/(m s)] equivalent to a drag of Cd = 1 on the beam 2R at a heave
-    ``amplitude`` [m] at :data:`PERIOD`, by Lorentz's linearisation: ``(8 / 3 pi) (rho / 2)
-    2R omega a``; an excess over it is the drag coefficient that would do the excess's work."""
-    return (8.0 / (3.0 * math.pi)) * 0.5 * rho * 2.0 * RADIUS * (2.0 * math.pi / PERIOD) * amplitude
+    ``amplitude`` [m] at ``omega`` [rad/s] (default: :data:`PERIOD`'s), by Lorentz's
+    linearisation: ``(8 / 3 pi) (rho / 2) 2R omega a``; an excess over it is the drag
+    coefficient that would do the excess's work."""
+    return (8.0 / (3.0 * math.pi)) * 0.5 * rho * 2.0 * RADIUS * omega * amplitude
 
 
 def vorticity_figure(path: Path, r_over_dx: float = 8.0, amplitude: float = 0.2, draft: float = 1.0,
