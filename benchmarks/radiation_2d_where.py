@@ -72,12 +72,9 @@ def reference_rows(sol: dict, heights, half_width: float, omega: float, rho: flo
     B)``, ``A`` the part in phase with the acceleration per unit acceleration [kg/m^2]
     (``rho Re phi``), ``B`` the part in phase with the velocity [Pa s/m] (``omega rho Im
     phi``), signed as a pressure pushing the keel up adds to A33 and B33."""
-    xs = np.linspace(-half_width, half_width, points)
-    out = []
-    for z in heights:
-        phi = section_field(sol, np.column_stack([xs, np.full_like(xs, z)])).mean()
-        out.append((rho * phi.real, omega * rho * phi.imag))
-    return np.array(out)
+    X, Z = np.meshgrid(np.linspace(-half_width, half_width, points), heights)
+    phi = section_field(sol, np.column_stack([X.ravel(), Z.ravel()])).reshape(X.shape).mean(axis=1)
+    return np.column_stack([rho * phi.real, omega * rho * phi.imag])
 
 
 def record(scene, keel: float, heights, half_width: float, grid=None):
